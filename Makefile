@@ -1,0 +1,32 @@
+# The README's two commands: `make demo` and `make test`. Both install dependencies first.
+PRESET ?= release
+JOBS ?= $(shell nproc)
+DEMO_CHART ?= examples/chemical_plant/chemical_plant.st
+
+.PHONY: deps build demo test test-asan clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake --preset $(PRESET) >/dev/null
+	@cmake --build --preset $(PRESET) -j $(JOBS)
+
+demo: build
+	@if [ -f "$(DEMO_CHART)" ]; then \
+	  ./build/$(PRESET)/sfcv check $(DEMO_CHART); status=$$?; \
+	  echo "(sfcv exit code: $$status)"; \
+	else \
+	  echo "demo: the example chart $(DEMO_CHART) does not exist yet"; \
+	  ./build/$(PRESET)/sfcv --help; \
+	fi
+
+test: build
+	@cd build/$(PRESET) && ctest --output-on-failure -j $(JOBS)
+
+# The sanitizer build's tests (AddressSanitizer + UndefinedBehaviorSanitizer).
+test-asan:
+	@$(MAKE) --no-print-directory test PRESET=asan
+
+clean:
+	rm -rf build

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of sfcv from Debian's packages.
+# Idempotent and quiet; fails loudly. Both README commands (make demo, make test) call it.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ninja-build
+  libpugixml-dev libcli11-dev nlohmann-json3-dev
+  libbdd-dev libcadical-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  graphviz spin berkeley-abc gnuplot-nox
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+if ! $SUDO apt-get update -qq >/tmp/sfcv-apt-update.log 2>&1; then
+  cat /tmp/sfcv-apt-update.log >&2
+  echo "install-deps: apt-get update failed" >&2
+  exit 1
+fi
+if ! $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/tmp/sfcv-apt-install.log 2>&1; then
+  cat /tmp/sfcv-apt-install.log >&2
+  echo "install-deps: apt-get install failed for: ${missing[*]}" >&2
+  exit 1
+fi

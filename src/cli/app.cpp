@@ -1,0 +1,48 @@
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
+
+#ifndef SFCV_VERSION
+#define SFCV_VERSION "0.1.0"
+#endif
+
+namespace sfcv::cli {
+
+int run(int argc, char** argv) {
+  CLI::App app{"sfcv: a verifier for Sequential Function Charts (IEC 61131-3) and Grafcet "
+               "(IEC 60848)",
+               "sfcv"};
+  app.set_version_flag("--version", std::string("sfcv ") + SFCV_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or input, "
+      "3 unknown (a resource limit was reached).");
+
+  CommandRunner selected;
+  add_check_command(app, selected);
+  add_info_command(app, selected);
+  add_lint_command(app, selected);
+  add_simulate_command(app, selected);
+  add_rsg_command(app, selected);
+  add_query_command(app, selected);
+  add_export_command(app, selected);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return kBadInput;  // CLI11 uses its own codes; ours are a contract
+  }
+  if (!selected) return kBadInput;
+  return selected();
+}
+
+}  // namespace sfcv::cli

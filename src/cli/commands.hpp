@@ -1,0 +1,26 @@
+#pragma once
+// Each subcommand registers itself on the CLI11 app and, when selected, stores the function that
+// runs it. One file per subcommand: cmd_<name>.cpp.
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace sfcv::cli {
+
+using CommandRunner = std::function<int()>;
+
+void add_check_command(CLI::App& app, CommandRunner& selected);
+void add_info_command(CLI::App& app, CommandRunner& selected);
+void add_lint_command(CLI::App& app, CommandRunner& selected);
+void add_simulate_command(CLI::App& app, CommandRunner& selected);
+void add_rsg_command(CLI::App& app, CommandRunner& selected);
+void add_query_command(CLI::App& app, CommandRunner& selected);
+void add_export_command(CLI::App& app, CommandRunner& selected);
+
+/// Builds the app, parses argv, runs the selected subcommand; returns the exit code.
+int run(int argc, char** argv);
+
+}  // namespace sfcv::cli

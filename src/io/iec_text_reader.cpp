@@ -1,0 +1,14 @@
+#include "io/load.hpp"
+
+namespace sfcv::io {
+
+// Placeholder until the importer lands: an honest error, never a wrong model.
+LoadResult load_iec_text(std::string_view, const std::string& file) {
+  LoadResult r;
+  model::SourceLocation where;
+  where.file = file;
+  r.diagnostics.push_back({model::Severity::Error, where, "the IEC 61131-3 textual SFC importer is not built yet"});
+  return r;
+}
+
+}  // namespace sfcv::io

@@ -1,0 +1,61 @@
+#include "io/load.hpp"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace sfcv::io {
+
+namespace {
+bool ends_with(const std::string& s, std::string_view suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    const char a = static_cast<char>(std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])));
+    if (a != suffix[i]) return false;
+  }
+  return true;
+}
+}  // namespace
+
+Format detect_format(const std::string& path, std::string_view text) {
+  if (ends_with(path, ".g7")) return Format::G7;
+  if (ends_with(path, ".grafcet")) return Format::AgrafeXmi;
+  if (ends_with(path, ".st") || ends_with(path, ".sfc") || ends_with(path, ".txt") ||
+      ends_with(path, ".st.tmpl"))
+    return Format::IecText;
+  if (ends_with(path, ".xml")) {
+    if (text.find("grafcet:Grafcet") != std::string_view::npos) return Format::AgrafeXmi;
+    return Format::PlcopenXml;
+  }
+  // Sniff the content.
+  const auto first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  if (first != std::string_view::npos && text[first] == '<')
+    return text.find("grafcet:Grafcet") != std::string_view::npos ? Format::AgrafeXmi
+                                                                   : Format::PlcopenXml;
+  return Format::IecText;
+}
+
+LoadResult load_file(const std::string& path, Format format) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    LoadResult r;
+    model::SourceLocation where;
+    where.file = path;
+    r.diagnostics.push_back({model::Severity::Error, where, "cannot open file"});
+    return r;
+  }
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  const std::string text = buf.str();
+  if (format == Format::Auto) format = detect_format(path, text);
+  switch (format) {
+    case Format::PlcopenXml: return load_plcopen_xml(text, path);
+    case Format::IecText: return load_iec_text(text, path);
+    case Format::G7: return load_g7(text, path);
+    case Format::AgrafeXmi: return load_agrafe_xmi(text, path);
+    case Format::Auto: break;
+  }
+  return {};
+}
+
+}  // namespace sfcv::io

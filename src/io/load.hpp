@@ -1,0 +1,36 @@
+#pragma once
+// Loading a chart from a file. Importers return the project plus located diagnostics and print
+// nothing (like spot::parsed_formula).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+
+namespace sfcv::io {
+
+enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi };
+
+struct LoadResult {
+  std::optional<model::Project> project;  ///< empty when an error prevented building a model
+  model::Diagnostics diagnostics;
+
+  bool ok() const { return project.has_value() && !model::has_errors(diagnostics); }
+};
+
+/// The format a file is in, from its extension (.xml, .st/.sfc/.txt, .g7, .grafcet) and, for
+/// XML, its root element.
+Format detect_format(const std::string& path, std::string_view text);
+
+/// Reads and parses `path`. A missing or unreadable file is an error diagnostic, not an
+/// exception.
+LoadResult load_file(const std::string& path, Format format = Format::Auto);
+
+LoadResult load_plcopen_xml(std::string_view text, const std::string& file);
+LoadResult load_iec_text(std::string_view text, const std::string& file);
+LoadResult load_g7(std::string_view text, const std::string& file);
+LoadResult load_agrafe_xmi(std::string_view text, const std::string& file);
+
+}  // namespace sfcv::io

@@ -1,0 +1,70 @@
+#include "model/chart.hpp"
+
+#include <array>
+
+#include "model/names.hpp"
+
+namespace sfcv::model {
+
+namespace {
+constexpr std::array<std::pair<Qualifier, std::string_view>, 12> kQualifiers{{
+    {Qualifier::N, "N"},   {Qualifier::R, "R"},   {Qualifier::S, "S"},   {Qualifier::P, "P"},
+    {Qualifier::P0, "P0"}, {Qualifier::P1, "P1"}, {Qualifier::L, "L"},   {Qualifier::D, "D"},
+    {Qualifier::SD, "SD"}, {Qualifier::DS, "DS"}, {Qualifier::SL, "SL"}, {Qualifier::DL, "DL"},
+}};
+
+template <typename T>
+int index_of(const std::vector<T>& v, std::string_view name) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (iequals(v[i].name, name)) return static_cast<int>(i);
+  return -1;
+}
+template <typename T>
+const T* find(const std::vector<T>& v, std::string_view name) {
+  const int i = index_of(v, name);
+  return i < 0 ? nullptr : &v[static_cast<std::size_t>(i)];
+}
+}  // namespace
+
+std::string_view to_string(Qualifier q) {
+  for (const auto& [k, s] : kQualifiers)
+    if (k == q) return s;
+  return "?";
+}
+
+std::optional<Qualifier> parse_qualifier(std::string_view s) {
+  for (const auto& [k, text] : kQualifiers)
+    if (iequals(text, s)) return k;
+  return std::nullopt;
+}
+
+bool is_timed(Qualifier q) {
+  return q == Qualifier::L || q == Qualifier::D || q == Qualifier::SD || q == Qualifier::DS ||
+         q == Qualifier::SL || q == Qualifier::DL;
+}
+
+const Step* Chart::find_step(std::string_view n) const { return find(steps, n); }
+int Chart::step_index(std::string_view n) const { return index_of(steps, n); }
+
+const Variable* Pou::find_variable(std::string_view n) const { return find(variables, n); }
+const Action* Pou::find_action(std::string_view n) const { return find(actions, n); }
+const Chart* Pou::find_chart(std::string_view n) const { return find(charts, n); }
+int Pou::chart_index(std::string_view n) const { return index_of(charts, n); }
+
+const Pou* Project::find_pou(std::string_view n) const { return find(pous, n); }
+
+std::size_t count_steps(const Project& p) {
+  std::size_t n = 0;
+  for (const auto& pou : p.pous)
+    for (const auto& c : pou.charts) n += c.steps.size();
+  return n;
+}
+
+std::size_t count_transitions(const Project& p) {
+  std::size_t n = 0;
+  for (const auto& pou : p.pous)
+    for (const auto& c : pou.charts) n += c.transitions.size();
+  return n;
+}
+
+}  // namespace sfcv::model

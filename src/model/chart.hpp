@@ -1,0 +1,182 @@
+#pragma once
+// The chart IR: one model for IEC 61131-3 SFC and IEC 60848 Grafcet.
+//
+// A Project holds POUs. A POU holds variables, charts (SFC bodies / partial grafcets) and
+// actions. Chart 0 of a POU is not special: `Chart::parent_action` tells whether a chart is a
+// top-level body (empty) or the body of an action (a nested SFC, hierarchy). Step names are
+// unique within one chart; other charts may reuse them (TwinCAT actions each have an "Init").
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/expr.hpp"
+#include "model/source_location.hpp"
+#include "model/statement.hpp"
+#include "model/types.hpp"
+
+namespace sfcv::model {
+
+enum class Dialect { Iec61131, Grafcet };
+
+// ---------------------------------------------------------------------------------- variables
+
+enum class VarDirection { Input, Output, InOut, Local, Global, External };
+
+struct Variable {
+  std::string name;
+  VarDirection direction = VarDirection::Local;
+  Type type;
+  std::optional<std::int64_t> initial;  ///< BOOL as 0/1, TIME in ms
+  std::string address;                  ///< "%IX1" when declared with AT, else empty
+  SourceLocation where;
+};
+
+// ------------------------------------------------------------------------------ steps, transitions
+
+enum class StepKind {
+  Normal,
+  MacroStep,   ///< Grafcet macro-step: `expansion` names the chart holding its expansion
+  Enclosing,   ///< Grafcet enclosing step: `enclosed` names the partial grafcets it encloses
+};
+
+struct Step {
+  std::string name;
+  bool initial = false;
+  StepKind kind = StepKind::Normal;
+  std::string expansion;              ///< MacroStep: chart name of the expansion
+  std::vector<std::string> enclosed;  ///< Enclosing: chart names enclosed
+  SourceLocation where;
+};
+
+struct Transition {
+  std::string name;                  ///< may be empty; Grafcet transitions are numbered
+  std::vector<std::string> sources;  ///< step names in the same chart, >= 1
+  std::vector<std::string> targets;  ///< step names in the same chart, >= 1
+  ExprPtr guard;                     ///< never null (TRUE when absent)
+  std::optional<int> priority;       ///< explicit (PRIORITY := n); smaller number = higher priority
+  int order = 0;                     ///< document order ("left to right") within the chart
+  SourceLocation where;
+};
+
+// ------------------------------------------------------------------------------------- actions
+
+enum class Qualifier { N, R, S, P, P0, P1, L, D, SD, DS, SL, DL };
+
+std::string_view to_string(Qualifier q);
+std::optional<Qualifier> parse_qualifier(std::string_view s);  ///< case-insensitive
+bool is_timed(Qualifier q);  ///< L D SD DS SL DL
+
+enum class ActionBodyKind {
+  Variable,    ///< the action is a Boolean variable: it equals the action's activity
+  Statements,  ///< an ST body
+  Chart,       ///< a nested SFC: `chart` is the index of its chart in Pou::charts
+};
+
+struct Action {
+  std::string name;
+  ActionBodyKind kind = ActionBodyKind::Statements;
+  std::string variable;  ///< kind Variable
+  StmtList body;         ///< kind Statements
+  int chart = -1;        ///< kind Chart
+  SourceLocation where;
+};
+
+/// A step's action block: (step, action, qualifier [, duration] [, indicator]).
+/// For Grafcet continuous actions, the qualifier is N and `condition` is the optional
+/// assignment condition.
+struct ActionAssociation {
+  std::string chart;  ///< chart of the step
+  std::string step;
+  std::string action;
+  Qualifier qualifier = Qualifier::N;
+  std::optional<std::int64_t> duration_ms;  ///< timed qualifiers with a literal duration
+  std::string duration_variable;            ///< timed qualifiers with a TIME variable
+  std::string indicator;
+  ExprPtr condition;  ///< Grafcet assignment condition of a continuous action; null = none
+  SourceLocation where;
+};
+
+// ----------------------------------------------------------------------------- Grafcet extras
+
+/// IEC 60848 stored action: `variable := value` on activation of the step, on its
+/// deactivation, or on an event (`event` true, evaluated while the step is active).
+enum class StoredWhen { Activation, Deactivation, Event };
+
+struct StoredAction {
+  std::string chart;
+  std::string step;
+  StoredWhen when = StoredWhen::Activation;
+  ExprPtr event;  ///< StoredWhen::Event: the event expression (usually an edge)
+  std::string variable;
+  ExprPtr value;  ///< 0/1 for Boolean outputs; an integer expression for internal counters
+  SourceLocation where;
+};
+
+/// IEC 60848 forcing order G{...} held by a step on a partial grafcet.
+enum class ForcingKind {
+  Situation,  ///< G{1,5}: force exactly these steps
+  Current,    ///< G{*}: freeze in the current situation
+  Initial,    ///< G{INIT}: force the initial situation
+  Empty,      ///< G{}: force the empty situation
+};
+
+struct ForcingOrder {
+  std::string chart;       ///< chart of the forcing step
+  std::string step;        ///< the step that holds the order
+  std::string target;      ///< forced partial grafcet (a chart name)
+  ForcingKind kind = ForcingKind::Situation;
+  std::vector<std::string> situation;  ///< ForcingKind::Situation: steps of `target`
+  SourceLocation where;
+};
+
+// ------------------------------------------------------------------------------- charts, POUs
+
+struct Chart {
+  std::string name;
+  std::string parent_action;  ///< empty for a top-level body / partial grafcet
+  std::vector<Step> steps;
+  std::vector<Transition> transitions;
+  SourceLocation where;
+
+  const Step* find_step(std::string_view step_name) const;
+  int step_index(std::string_view step_name) const;  ///< -1 when absent
+};
+
+enum class PouKind { Program, FunctionBlock, Function };
+
+struct Pou {
+  std::string name;
+  PouKind kind = PouKind::Program;
+  std::vector<Variable> variables;
+  std::vector<Chart> charts;
+  std::vector<Action> actions;
+  std::vector<ActionAssociation> associations;
+  std::vector<StoredAction> stored_actions;    ///< Grafcet
+  std::vector<ForcingOrder> forcing_orders;    ///< Grafcet
+  StmtList body;  ///< the POU's ST body, when it has one besides (or instead of) SFC
+  SourceLocation where;
+
+  bool has_sfc() const { return !charts.empty(); }
+  const Variable* find_variable(std::string_view var_name) const;
+  const Action* find_action(std::string_view action_name) const;
+  const Chart* find_chart(std::string_view chart_name) const;
+  int chart_index(std::string_view chart_name) const;  ///< -1 when absent
+};
+
+struct Project {
+  std::string name;
+  Dialect dialect = Dialect::Iec61131;
+  std::string source_format;  ///< "plcopen-xml", "iec-text", "g7", "agrafe-xmi", ...
+  std::vector<Pou> pous;
+  SourceLocation where;
+
+  const Pou* find_pou(std::string_view pou_name) const;
+};
+
+// Counting helpers (sfcv info, tests against the corpus MANIFEST).
+std::size_t count_steps(const Project& p);
+std::size_t count_transitions(const Project& p);
+
+}  // namespace sfcv::model

@@ -1,0 +1,165 @@
+#include "model/expr.hpp"
+
+#include <cctype>
+#include <utility>
+
+namespace sfcv::model {
+
+namespace {
+ExprPtr make(ExprKind kind, SourceLocation where) {
+  auto e = std::make_shared<Expr>();
+  e->kind = kind;
+  e->where = std::move(where);
+  return e;
+}
+
+int precedence(ExprKind k) {
+  switch (k) {
+    case ExprKind::Or: return 1;
+    case ExprKind::Xor: return 2;
+    case ExprKind::And: return 3;
+    case ExprKind::Eq: case ExprKind::Ne: return 4;
+    case ExprKind::Lt: case ExprKind::Le: case ExprKind::Gt: case ExprKind::Ge: return 5;
+    case ExprKind::Add: case ExprKind::Sub: return 6;
+    case ExprKind::Mul: case ExprKind::Div: case ExprKind::Mod: return 7;
+    case ExprKind::Not: case ExprKind::Neg: case ExprKind::Rising: case ExprKind::Falling:
+      return 8;
+    default: return 9;
+  }
+}
+
+const char* op_text(ExprKind k) {
+  switch (k) {
+    case ExprKind::And: return " AND ";
+    case ExprKind::Or: return " OR ";
+    case ExprKind::Xor: return " XOR ";
+    case ExprKind::Add: return " + ";
+    case ExprKind::Sub: return " - ";
+    case ExprKind::Mul: return " * ";
+    case ExprKind::Div: return " / ";
+    case ExprKind::Mod: return " MOD ";
+    case ExprKind::Eq: return " = ";
+    case ExprKind::Ne: return " <> ";
+    case ExprKind::Lt: return " < ";
+    case ExprKind::Le: return " <= ";
+    case ExprKind::Gt: return " > ";
+    case ExprKind::Ge: return " >= ";
+    default: return " ? ";
+  }
+}
+
+std::string time_literal(std::int64_t ms) {
+  if (ms % 1000 == 0) return "T#" + std::to_string(ms / 1000) + "s";
+  return "T#" + std::to_string(ms) + "ms";
+}
+
+std::string print(const Expr& e, int parent_prec, bool right_operand) {
+  const int p = precedence(e.kind);
+  std::string s;
+  switch (e.kind) {
+    case ExprKind::BoolConst: return e.value ? "TRUE" : "FALSE";
+    case ExprKind::IntConst: return std::to_string(e.value);
+    case ExprKind::TimeConst: return time_literal(e.value);
+    case ExprKind::Name: return e.name;
+    case ExprKind::Member: return e.name + "." + e.member;
+    case ExprKind::Not: s = "NOT " + print(*e.args[0], p, false); break;
+    case ExprKind::Neg: s = "-" + print(*e.args[0], p, false); break;
+    case ExprKind::Rising: s = "RE " + print(*e.args[0], p, false); break;
+    case ExprKind::Falling: s = "FE " + print(*e.args[0], p, false); break;
+    case ExprKind::Delay:
+      return time_literal(e.value) + "/" + print(*e.args[0], 9, false) + "/" +
+             time_literal(e.value2);
+    default:
+      for (std::size_t i = 0; i < e.args.size(); ++i) {
+        if (i) s += op_text(e.kind);
+        s += print(*e.args[i], p, i > 0);
+      }
+  }
+  // Binary operators are printed left-associative: a right operand of equal precedence needs
+  // parentheses (a - (b - c)); so do comparisons, which IEC does not chain.
+  const bool needs = p < parent_prec || (p == parent_prec && right_operand && p < 8) ||
+                     (p == parent_prec && (p == 4 || p == 5));
+  return needs ? "(" + s + ")" : s;
+}
+}  // namespace
+
+ExprPtr make_bool(bool v, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::BoolConst, std::move(where)));
+  e->value = v ? 1 : 0;
+  return e;
+}
+ExprPtr make_int(std::int64_t v, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::IntConst, std::move(where)));
+  e->value = v;
+  return e;
+}
+ExprPtr make_time(std::int64_t ms, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::TimeConst, std::move(where)));
+  e->value = ms;
+  return e;
+}
+ExprPtr make_name(std::string name, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Name, std::move(where)));
+  e->name = std::move(name);
+  return e;
+}
+ExprPtr make_member(std::string name, std::string member, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Member, std::move(where)));
+  e->name = std::move(name);
+  e->member = std::move(member);
+  return e;
+}
+ExprPtr make_unary(ExprKind kind, ExprPtr arg, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
+  e->args.push_back(std::move(arg));
+  return e;
+}
+ExprPtr make_binary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
+  e->args.push_back(std::move(lhs));
+  e->args.push_back(std::move(rhs));
+  return e;
+}
+ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
+  e->args = std::move(args);
+  return e;
+}
+ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
+  e->value = t1_ms;
+  e->value2 = t2_ms;
+  e->args.push_back(std::move(arg));
+  return e;
+}
+
+bool equal(const Expr& a, const Expr& b) {
+  if (a.kind != b.kind || a.value != b.value || a.value2 != b.value2 ||
+      a.args.size() != b.args.size())
+    return false;
+  if (a.kind == ExprKind::Name || a.kind == ExprKind::Member) {
+    // Identifiers are case-insensitive.
+    auto ieq = [](const std::string& x, const std::string& y) {
+      if (x.size() != y.size()) return false;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(x[i])) !=
+            std::toupper(static_cast<unsigned char>(y[i])))
+          return false;
+      return true;
+    };
+    if (!ieq(a.name, b.name) || !ieq(a.member, b.member)) return false;
+  }
+  for (std::size_t i = 0; i < a.args.size(); ++i)
+    if (!equal(a.args[i], b.args[i])) return false;
+  return true;
+}
+
+bool equal(const ExprPtr& a, const ExprPtr& b) {
+  if (!a || !b) return !a && !b;
+  return equal(*a, *b);
+}
+
+std::string to_st(const Expr& e) { return print(e, 0, false); }
+std::string to_st(const ExprPtr& e) { return e ? to_st(*e) : "TRUE"; }
+
+}  // namespace sfcv::model

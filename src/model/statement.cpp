@@ -1,0 +1,108 @@
+#include "model/statement.hpp"
+
+#include "model/names.hpp"
+
+namespace sfcv::model {
+
+StmtPtr make_assign(std::string target, ExprPtr value, SourceLocation where) {
+  auto s = std::make_shared<Stmt>();
+  s->kind = StmtKind::Assign;
+  s->target = std::move(target);
+  s->value = std::move(value);
+  s->where = std::move(where);
+  return s;
+}
+
+StmtPtr make_fb_call(std::string instance, std::vector<std::pair<std::string, ExprPtr>> arguments,
+                     SourceLocation where) {
+  auto s = std::make_shared<Stmt>();
+  s->kind = StmtKind::FbCall;
+  s->target = std::move(instance);
+  s->arguments = std::move(arguments);
+  s->where = std::move(where);
+  return s;
+}
+
+bool equal(const Stmt& a, const Stmt& b) {
+  if (a.kind != b.kind || to_upper(a.target) != to_upper(b.target) || !equal(a.value, b.value) ||
+      a.conditions.size() != b.conditions.size() || a.labels != b.labels ||
+      a.bodies.size() != b.bodies.size() || !equal(a.else_body, b.else_body) ||
+      a.arguments.size() != b.arguments.size())
+    return false;
+  for (std::size_t i = 0; i < a.conditions.size(); ++i)
+    if (!equal(a.conditions[i], b.conditions[i])) return false;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i)
+    if (!equal(a.bodies[i], b.bodies[i])) return false;
+  for (std::size_t i = 0; i < a.arguments.size(); ++i)
+    if (to_upper(a.arguments[i].first) != to_upper(b.arguments[i].first) ||
+        !equal(a.arguments[i].second, b.arguments[i].second))
+      return false;
+  return true;
+}
+
+bool equal(const StmtList& a, const StmtList& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!equal(*a[i], *b[i])) return false;
+  return true;
+}
+
+namespace {
+void print(const StmtList& body, int indent, std::string& out) {
+  const std::string pad(static_cast<std::size_t>(indent), ' ');
+  for (const auto& s : body) {
+    switch (s->kind) {
+      case StmtKind::Assign:
+        out += pad + s->target + " := " + to_st(s->value) + ";\n";
+        break;
+      case StmtKind::FbCall: {
+        out += pad + s->target + "(";
+        for (std::size_t i = 0; i < s->arguments.size(); ++i) {
+          if (i) out += ", ";
+          out += s->arguments[i].first + " := " + to_st(s->arguments[i].second);
+        }
+        out += ");\n";
+        break;
+      }
+      case StmtKind::If:
+        for (std::size_t i = 0; i < s->conditions.size(); ++i) {
+          out += pad + (i ? "ELSIF " : "IF ") + to_st(s->conditions[i]) + " THEN\n";
+          print(s->bodies[i], indent + 2, out);
+        }
+        if (!s->else_body.empty()) {
+          out += pad + "ELSE\n";
+          print(s->else_body, indent + 2, out);
+        }
+        out += pad + "END_IF;\n";
+        break;
+      case StmtKind::Case:
+        out += pad + "CASE " + to_st(s->value) + " OF\n";
+        for (std::size_t i = 0; i < s->labels.size(); ++i) {
+          out += pad + "  ";
+          for (std::size_t j = 0; j < s->labels[i].size(); ++j) {
+            if (j) out += ", ";
+            const auto& l = s->labels[i][j];
+            out += std::to_string(l.lo);
+            if (l.hi != l.lo) out += ".." + std::to_string(l.hi);
+          }
+          out += ":\n";
+          print(s->bodies[i], indent + 4, out);
+        }
+        if (!s->else_body.empty()) {
+          out += pad + "ELSE\n";
+          print(s->else_body, indent + 4, out);
+        }
+        out += pad + "END_CASE;\n";
+        break;
+    }
+  }
+}
+}  // namespace
+
+std::string to_st(const StmtList& body, int indent) {
+  std::string out;
+  print(body, indent, out);
+  return out;
+}
+
+}  // namespace sfcv::model

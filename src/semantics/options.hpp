@@ -1,0 +1,43 @@
+#pragma once
+// Options of the two semantics, as plain values filled in by the CLI (like mCRL2's
+// explorer_options); the library reads no global state.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/expr.hpp"
+
+namespace sfcv::semantics {
+
+/// How conflicting alternative transitions (a step with several enabled outgoing transitions)
+/// are resolved.
+enum class PriorityMode {
+  Standard,  ///< explicit priority, then document order ("left to right"): only the first fires
+  None,      ///< no order: each enabled alternative may fire (nondeterminism exposes conflicts)
+};
+
+enum class TimeMode {
+  Abstract,  ///< a running timer may expire at any later cycle (sound over-approximation)
+  Discrete,  ///< exact cycle counters with the given cycle time
+};
+
+/// The order in which active actions execute within a cycle.
+enum class ActionOrder { Declaration, Alphabetical };
+
+struct Iec61131Options {
+  PriorityMode priority = PriorityMode::Standard;
+  TimeMode time = TimeMode::Abstract;
+  std::int64_t cycle_ms = 10;  ///< TimeMode::Discrete only
+  ActionOrder action_order = ActionOrder::Declaration;
+  std::vector<std::string> pous;  ///< POUs run in parallel in one cycle; empty = all SFC POUs
+  std::vector<model::ExprPtr> assumptions;  ///< constraints on inputs and state
+};
+
+struct GrafcetOptions {
+  bool single_input_change = true;  ///< IEC 60848's hypothesis; false = --multi-input-change
+  std::vector<model::ExprPtr> assumptions;
+  std::size_t max_transient_steps = 10000;  ///< bound on one transient evolution's length
+};
+
+}  // namespace sfcv::semantics

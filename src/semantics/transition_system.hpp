@@ -1,0 +1,99 @@
+#pragma once
+// The transition system every engine consumes (explicit, BDD, exports), for both semantics.
+//
+// States are packed bit vectors (StateLayout). From a state, successors come grouped by the
+// condition on the inputs that leads to each: a semantics enumerates the sets of transitions
+// that can fire together and the input condition of each, never all 2^inputs valuations.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/source_location.hpp"
+#include "model/types.hpp"
+#include "semantics/input_condition.hpp"
+#include "semantics/state_layout.hpp"
+
+namespace sfcv::semantics {
+
+enum class SemanticsKind { Iec61131, Grafcet };
+std::string_view to_string(SemanticsKind k);
+
+/// Something a property can talk about: a step's activity, an action's activity, a variable.
+enum class ObservableKind { Step, Action, Variable };
+
+struct Observable {
+  std::string name;                  ///< display name, unique: "MAIN.FILL_A", "V1", "X12"
+  std::vector<std::string> aliases;  ///< other names a property may use: "FILL_A", "FILL_A.X"
+  ObservableKind kind = ObservableKind::Variable;
+  model::Type type;                  ///< Bool for steps and actions
+  bool is_output = false;            ///< an output of the chart (traces show these)
+};
+
+/// A chart transition, numbered across the whole system (for traces and dead-transition checks).
+struct TransitionInfo {
+  std::string name;  ///< "MAIN: S1 -> S2" when the chart does not name it
+  std::string pou;
+  std::string chart;
+  model::SourceLocation where;
+};
+
+struct Successor {
+  StateView target;
+  const InputCondition& condition;     ///< inputs under which this evolution happens
+  std::span<const std::uint32_t> fired;  ///< indices into transitions(), sorted
+};
+
+/// A defect found while computing successors (e.g. a Grafcet instability: transient evolutions
+/// that never reach a stable situation). The engine reports it; it never loops.
+struct Anomaly {
+  enum class Kind { Instability, RangeError } kind = Kind::Instability;
+  std::string message;
+  InputCondition condition;               ///< inputs that trigger it
+  std::vector<std::vector<StateWord>> cycle;  ///< the situations of the cycle (Instability)
+};
+
+class SuccessorSink {
+ public:
+  virtual ~SuccessorSink() = default;
+  virtual void successor(const Successor& s) = 0;
+  virtual void anomaly(const Anomaly&) {}
+};
+
+class TransitionSystem {
+ public:
+  virtual ~TransitionSystem() = default;
+
+  virtual SemanticsKind kind() const = 0;
+  virtual const StateLayout& layout() const = 0;
+  virtual const std::vector<InputVariable>& inputs() const = 0;
+  virtual const std::vector<Observable>& observables() const = 0;
+  virtual const std::vector<TransitionInfo>& transitions() const = 0;
+
+  /// The initial states, each with the condition on the initial inputs that yields it.
+  virtual void initial_states(SuccessorSink& sink) const = 0;
+  /// Every successor of `state`; the conditions of the successors partition the input
+  /// valuations allowed by the assumptions (several may hold at once only when the semantics is
+  /// nondeterministic, e.g. conflicts with no priority order).
+  virtual void successors(StateView state, SuccessorSink& sink) const = 0;
+
+  /// Value of observable `index` in `state` (0/1 for steps and actions).
+  virtual std::int64_t observe(StateView state, std::uint32_t index) const = 0;
+
+  /// "{S1, S5} V1 V3" : active steps and true Boolean outputs, for traces and listings.
+  virtual std::string describe(StateView state) const;
+};
+
+using TransitionSystemPtr = std::unique_ptr<TransitionSystem>;
+
+/// Resolves a name used in a property ("FILL_A", "FILL_A.X", "X12", "MAIN.S1", "V1") to an
+/// observable, case-insensitively, by name then aliases. Returns nullopt and sets `error` when it
+/// is unknown or ambiguous (the message lists the candidates).
+std::optional<std::uint32_t> find_observable(const TransitionSystem& ts, std::string_view name,
+                                             std::string* error = nullptr);
+
+}  // namespace sfcv::semantics
