@@ -1,0 +1,246 @@
+#include "engine/explicit/reachable_situation_graph.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace sfcv::engine {
+
+using semantics::InputCondition;
+using semantics::InputCube;
+
+namespace {
+
+std::uint64_t hash_condition(const InputCondition& c) {
+  std::uint64_t h = 1469598103934665603ULL;
+  auto add = [&h](std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; };
+  for (const auto& cube : c.cubes) {
+    add(0xC0BE);
+    for (const auto& l : cube.literals) {
+      add(l.input);
+      add(static_cast<std::uint64_t>(l.lo));
+      add(static_cast<std::uint64_t>(l.hi));
+    }
+  }
+  return h;
+}
+
+/// Successors of one state, merged by target before they are stored: one edge per
+/// (source, target) pair, as in the seed's RSG, with the union of the conditions.
+struct PendingEdge {
+  std::uint32_t target;
+  std::vector<InputCube> cubes;
+  std::vector<std::uint32_t> fired;
+};
+
+class Collector final : public semantics::SuccessorSink {
+ public:
+  explicit Collector(StateStore& store) : store_(store) {}
+
+  void begin() {
+    pending.clear();
+    ++generation_;
+  }
+
+  void successor(const semantics::Successor& s) override {
+    const std::uint32_t index = store_.insert(s.target).first;
+    // Find this target's pending edge in O(1): a generation-stamped slot per state index.
+    if (index >= stamp_.size()) {
+      stamp_.resize(static_cast<std::size_t>(index) * 2 + 16, 0);
+      slot_.resize(stamp_.size(), 0);
+    }
+    if (stamp_[index] != generation_) {
+      stamp_[index] = generation_;
+      slot_[index] = static_cast<std::uint32_t>(pending.size());
+      pending.push_back({index, {}, {}});
+    }
+    PendingEdge& e = pending[slot_[index]];
+    for (const auto& cube : s.condition.cubes)
+      if (std::find(e.cubes.begin(), e.cubes.end(), cube) == e.cubes.end()) e.cubes.push_back(cube);
+    if (e.fired.empty()) {
+      e.fired.assign(s.fired.begin(), s.fired.end());
+    } else if (!std::equal(e.fired.begin(), e.fired.end(), s.fired.begin(), s.fired.end())) {
+      std::vector<std::uint32_t> merged;
+      std::set_union(e.fired.begin(), e.fired.end(), s.fired.begin(), s.fired.end(),
+                     std::back_inserter(merged));
+      e.fired = std::move(merged);
+    }
+  }
+
+  void anomaly(const semantics::Anomaly& a) override { anomalies.push_back(a); }
+
+  std::vector<PendingEdge> pending;
+  std::vector<semantics::Anomaly> anomalies;
+
+ private:
+  StateStore& store_;
+  std::vector<std::uint32_t> stamp_, slot_;
+  std::uint32_t generation_ = 0;
+};
+
+}  // namespace
+
+ReachableSituationGraph::ReachableSituationGraph(const semantics::TransitionSystem& ts)
+    : ts_(&ts), states_(ts.layout().words()), fired_somewhere_(ts.transitions().size(), false) {}
+
+std::uint32_t ReachableSituationGraph::intern_condition(const InputCondition& c) {
+  const std::uint64_t h = hash_condition(c);
+  const std::size_t bucket = h % 4099;
+  if (condition_buckets_.empty()) condition_buckets_.resize(4099);
+  for (auto id : condition_buckets_[bucket])
+    if (conditions_[id].cubes == c.cubes) return id;
+  conditions_.push_back(c);
+  const auto id = static_cast<std::uint32_t>(conditions_.size() - 1);
+  condition_buckets_[bucket].push_back(id);
+  return id;
+}
+
+const InputCondition& ReachableSituationGraph::condition(std::uint64_t edge) const {
+  static const InputCondition unknown;
+  if (edge >= edge_condition_ids_.size()) return unknown;
+  return conditions_[edge_condition_ids_[edge]];
+}
+
+std::span<const std::uint32_t> ReachableSituationGraph::fired(std::uint64_t edge) const {
+  if (edge + 1 >= fired_offsets_.size()) return {};
+  return {fired_.data() + fired_offsets_[edge], fired_offsets_[edge + 1] - fired_offsets_[edge]};
+}
+
+std::uint32_t ReachableSituationGraph::source(std::uint64_t edge) const {
+  const auto it = std::upper_bound(offsets_.begin(), offsets_.end(), edge);
+  return static_cast<std::uint32_t>(it - offsets_.begin() - 1);
+}
+
+std::vector<std::uint64_t> ReachableSituationGraph::shortest_path_edges(std::uint32_t s) const {
+  std::vector<std::uint64_t> path;
+  while (parent_edge_state_[s] != kNone) {
+    path.push_back(parent_edge_[s]);
+    s = parent_edge_state_[s];
+  }
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+std::uint32_t ReachableSituationGraph::path_initial(std::uint32_t s) const {
+  while (parent_edge_state_[s] != kNone) s = parent_edge_state_[s];
+  return s;
+}
+
+const std::vector<std::uint64_t>& ReachableSituationGraph::predecessor_offsets() const {
+  if (pred_offsets_.empty()) {
+    const std::uint32_t n = num_states();
+    pred_offsets_.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (auto t : targets_) ++pred_offsets_[t + 1];
+    for (std::uint32_t i = 0; i < n; ++i) pred_offsets_[i + 1] += pred_offsets_[i];
+    pred_edges_.resize(targets_.size());
+    std::vector<std::uint64_t> fill(pred_offsets_.begin(), pred_offsets_.end() - 1);
+    for (std::uint64_t e = 0; e < targets_.size(); ++e) pred_edges_[fill[targets_[e]]++] = e;
+  }
+  return pred_offsets_;
+}
+
+const std::vector<std::uint64_t>& ReachableSituationGraph::predecessor_edges() const {
+  predecessor_offsets();
+  return pred_edges_;
+}
+
+std::size_t ReachableSituationGraph::memory_bytes() const {
+  return states_.memory_bytes() + targets_.capacity() * 4 + offsets_.capacity() * 8 +
+         edge_condition_ids_.capacity() * 4 + fired_offsets_.capacity() * 8 +
+         fired_.capacity() * 4 + parent_edge_.capacity() * 8 + parent_edge_state_.capacity() * 4 +
+         depth_.capacity() * 4;
+}
+
+ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem& ts,
+                                                        const ExplorationOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  ReachableSituationGraph g(ts);
+  auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+  // Initial states: merge the conditions of duplicates.
+  {
+    Collector init(g.states_);
+    init.begin();
+    ts.initial_states(init);
+    for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
+    for (const auto& p : init.pending) {
+      g.initial_.push_back(p.target);
+      g.initial_condition_ids_.push_back(g.intern_condition(InputCondition{p.cubes}));
+    }
+    const auto n = g.states_.size();
+    g.parent_edge_state_.assign(n, ReachableSituationGraph::kNone);
+    g.parent_edge_.assign(n, 0);
+    g.depth_.assign(n, 0);
+  }
+
+  Collector collect(g.states_);
+  ExplorationProgress progress;
+  std::uint64_t next_report = options.progress_interval;
+  g.complete_ = true;
+  for (std::uint32_t s = 0; s < g.states_.size(); ++s) {
+    if ((s & 1023U) == 0) {
+      if (options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) {
+        g.limit_ = "time";
+      } else if (options.max_memory_bytes > 0 && g.memory_bytes() > options.max_memory_bytes) {
+        g.limit_ = "memory";
+      }
+      if (!g.limit_.empty()) {
+        g.complete_ = false;
+        break;
+      }
+    }
+    if (options.max_states > 0 && g.states_.size() > options.max_states) {
+      g.limit_ = "states";
+      g.complete_ = false;
+      break;
+    }
+
+    const std::uint32_t known = g.states_.size();
+    collect.begin();
+    ts.successors(g.states_.at(s), collect);
+    // States numbered from `known` on were first reached from s: s is their BFS parent.
+    g.parent_edge_state_.resize(g.states_.size(), ReachableSituationGraph::kNone);
+    g.parent_edge_.resize(g.states_.size(), 0);
+    g.depth_.resize(g.states_.size(), g.depth_[s] + 1);
+    for (auto& a : collect.anomalies) g.anomalies_.push_back(std::move(a));
+    collect.anomalies.clear();
+
+    for (const auto& p : collect.pending) {
+      const std::uint64_t edge = g.targets_.size();
+      g.targets_.push_back(p.target);
+      if (options.keep_conditions)
+        g.edge_condition_ids_.push_back(g.intern_condition(InputCondition{p.cubes}));
+      if (options.keep_fired) {
+        g.fired_.insert(g.fired_.end(), p.fired.begin(), p.fired.end());
+        g.fired_offsets_.push_back(g.fired_.size());
+      }
+      for (auto t : p.fired) g.fired_somewhere_[t] = true;
+      if (p.target >= known) {
+        g.parent_edge_state_[p.target] = s;
+        g.parent_edge_[p.target] = edge;
+      }
+    }
+    g.offsets_.push_back(g.targets_.size());
+
+    progress.depth = g.depth_[s];
+    if (options.progress && s + 1 >= next_report) {
+      next_report += options.progress_interval;
+      progress.states = g.states_.size();
+      progress.edges = g.targets_.size();
+      progress.seconds = elapsed();
+      options.progress(progress);
+    }
+  }
+  if (options.max_states > 0 && g.complete_ && g.states_.size() > options.max_states) {
+    g.complete_ = false;
+    g.limit_ = "states";
+  }
+  // States found but never expanded (frontier of a limit) still need parent entries.
+  g.parent_edge_state_.resize(g.states_.size(), ReachableSituationGraph::kNone);
+  g.parent_edge_.resize(g.states_.size(), 0);
+  g.depth_.resize(g.states_.size(), 0);
+  g.seconds_ = elapsed();
+  return g;
+}
+
+}  // namespace sfcv::engine

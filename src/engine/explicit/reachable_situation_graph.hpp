@@ -1,0 +1,122 @@
+#pragma once
+// The reachable situations graph of a transition system, built explicitly by breadth-first
+// search: for Grafcet its nodes are stable situations (seed 002's RSG), for IEC 61131-3 the
+// configurations after each scan cycle. Edges carry the input condition that causes them and
+// the transitions fired. BFS order makes parent pointers give shortest paths from the initial
+// states, which counterexamples use.
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "engine/explicit/state_store.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::engine {
+
+struct ExplorationProgress {
+  std::uint64_t states = 0;
+  std::uint64_t edges = 0;
+  std::uint32_t depth = 0;
+  double seconds = 0;
+};
+
+struct ExplorationOptions {
+  std::uint64_t max_states = 0;   ///< 0 = unlimited
+  double timeout_seconds = 0;     ///< 0 = unlimited
+  std::uint64_t max_memory_bytes = 0;  ///< 0 = unlimited; approximate (states + edges)
+  bool keep_conditions = true;    ///< store each edge's input condition (RSG listing, traces)
+  bool keep_fired = true;         ///< store each edge's fired transitions
+  /// Called about every `progress_interval` states; may be empty.
+  std::function<void(const ExplorationProgress&)> progress;
+  std::uint64_t progress_interval = 1u << 16;
+};
+
+class ReachableSituationGraph {
+ public:
+  static constexpr std::uint32_t kNone = ~0U;
+
+  explicit ReachableSituationGraph(const semantics::TransitionSystem& ts);
+
+  const semantics::TransitionSystem& system() const { return *ts_; }
+  const StateStore& states() const { return states_; }
+  std::uint32_t num_states() const { return states_.size(); }
+  std::uint64_t num_edges() const { return targets_.size(); }
+
+  const std::vector<std::uint32_t>& initial_states() const { return initial_; }
+  /// Condition on the initial inputs for initial state initial_states()[i].
+  const semantics::InputCondition& initial_condition(std::size_t i) const {
+    return conditions_[initial_condition_ids_[i]];
+  }
+
+  // Out-edges of state s are the edge ids [edges_begin(s), edges_end(s)).
+  std::uint64_t edges_begin(std::uint32_t s) const { return offsets_[s]; }
+  std::uint64_t edges_end(std::uint32_t s) const { return offsets_[s + 1]; }
+  std::uint32_t target(std::uint64_t edge) const { return targets_[edge]; }
+  /// Empty condition list when the graph was built without keep_conditions.
+  const semantics::InputCondition& condition(std::uint64_t edge) const;
+  std::span<const std::uint32_t> fired(std::uint64_t edge) const;
+  bool has_conditions() const { return !edge_condition_ids_.empty() || targets_.empty(); }
+
+  /// Whether a state was fully expanded (false only for the frontier left by a limit).
+  bool expanded(std::uint32_t s) const { return s + 1 < offsets_.size(); }
+
+  /// Shortest path (BFS) from an initial state to s: the edges taken, in order; the initial
+  /// state is path_initial(s).
+  std::vector<std::uint64_t> shortest_path_edges(std::uint32_t s) const;
+  std::uint32_t path_initial(std::uint32_t s) const;
+  std::uint32_t depth(std::uint32_t s) const { return depth_[s]; }
+  /// The source state of an edge (binary search on the offsets).
+  std::uint32_t source(std::uint64_t edge) const;
+
+  /// Predecessor lists, built on first use (backward CTL algorithms).
+  const std::vector<std::uint64_t>& predecessor_offsets() const;
+  const std::vector<std::uint64_t>& predecessor_edges() const;  ///< edge ids, grouped by target
+
+  /// Transitions that fired on at least one edge (dead-transition check), by TS index.
+  const std::vector<bool>& fired_somewhere() const { return fired_somewhere_; }
+
+  const std::vector<semantics::Anomaly>& anomalies() const { return anomalies_; }
+
+  /// True when every reachable state was expanded; false when a limit stopped exploration.
+  bool complete() const { return complete_; }
+  /// Which limit stopped exploration ("states", "time", "memory"), empty when complete.
+  const std::string& limit_reached() const { return limit_; }
+  double build_seconds() const { return seconds_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  friend ReachableSituationGraph build_reachable_situation_graph(
+      const semantics::TransitionSystem&, const ExplorationOptions&);
+  std::uint32_t intern_condition(const semantics::InputCondition& c);
+
+  const semantics::TransitionSystem* ts_;
+  StateStore states_;
+  std::vector<std::uint32_t> initial_;
+  std::vector<std::uint32_t> initial_condition_ids_;
+  std::vector<std::uint64_t> offsets_{0};
+  std::vector<std::uint32_t> targets_;
+  std::vector<std::uint32_t> edge_condition_ids_;
+  std::vector<std::uint64_t> fired_offsets_{0};
+  std::vector<std::uint32_t> fired_;
+  std::vector<semantics::InputCondition> conditions_;
+  std::vector<std::vector<std::uint32_t>> condition_buckets_;  ///< hash -> condition ids
+  std::vector<std::uint32_t> parent_edge_state_;  ///< BFS parent state (kNone for initial)
+  std::vector<std::uint64_t> parent_edge_;        ///< BFS parent edge id
+  std::vector<std::uint32_t> depth_;
+  std::vector<bool> fired_somewhere_;
+  std::vector<semantics::Anomaly> anomalies_;
+  mutable std::vector<std::uint64_t> pred_offsets_, pred_edges_;
+  bool complete_ = false;
+  std::string limit_;
+  double seconds_ = 0;
+};
+
+/// Breadth-first exploration from the initial states. Stops at the first limit reached and then
+/// reports complete() == false: a caller must answer "unknown", never "holds".
+ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem& ts,
+                                                        const ExplorationOptions& options = {});
+
+}  // namespace sfcv::engine

@@ -1,0 +1,110 @@
+#include "engine/explicit/reachable_situation_graph.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/toy_system.hpp"
+
+namespace sfcv::engine {
+namespace {
+
+using test::ToySystem;
+
+// 0 --inc--> 1 --inc--> 2 --inc--> 0, each state stays under !inc; state 3 is unreachable.
+ToySystem counter() {
+  ToySystem ts(4, {"inc"});
+  ts.set_initial({0});
+  for (std::uint32_t s = 0; s < 3; ++s) {
+    ts.add_arc(s, (s + 1) % 3, ToySystem::lit(0, true), {s});
+    ts.add_arc(s, s, ToySystem::lit(0, false));
+  }
+  ts.add_arc(3, 0);
+  return ts;
+}
+
+TEST(ReachableSituationGraph, CountsStatesAndEdges) {
+  const auto ts = counter();
+  const auto g = build_reachable_situation_graph(ts);
+  EXPECT_TRUE(g.complete());
+  EXPECT_EQ(g.num_states(), 3u);
+  EXPECT_EQ(g.num_edges(), 6u);
+  ASSERT_EQ(g.initial_states().size(), 1u);
+  for (std::uint32_t s = 0; s < g.num_states(); ++s)
+    EXPECT_EQ(g.edges_end(s) - g.edges_begin(s), 2u);
+}
+
+TEST(ReachableSituationGraph, KeepsConditionsAndFiredTransitions) {
+  const auto ts = counter();
+  const auto g = build_reachable_situation_graph(ts);
+  const auto e = g.edges_begin(0);
+  EXPECT_EQ(g.condition(e).to_string(ts.inputs()), "inc");
+  ASSERT_EQ(g.fired(e).size(), 1u);
+  EXPECT_EQ(g.fired(e)[0], 0u);
+  EXPECT_EQ(g.condition(e + 1).to_string(ts.inputs()), "!inc");
+  EXPECT_TRUE(g.fired(e + 1).empty());
+  EXPECT_TRUE(g.fired_somewhere()[2]);
+}
+
+TEST(ReachableSituationGraph, ShortestPathsFollowBfsParents) {
+  const auto ts = counter();
+  const auto g = build_reachable_situation_graph(ts);
+  // BFS numbering: 0, 1, 2 are the toy states 0, 1, 2.
+  const auto path = g.shortest_path_edges(2);
+  ASSERT_EQ(path.size(), 2u);
+  EXPECT_EQ(g.source(path[0]), 0u);
+  EXPECT_EQ(g.target(path[1]), 2u);
+  EXPECT_EQ(g.depth(2), 2u);
+  EXPECT_EQ(g.path_initial(2), 0u);
+}
+
+TEST(ReachableSituationGraph, MergesSuccessorsWithTheSameTarget) {
+  ToySystem ts(2, {"a", "b"});
+  ts.set_initial({0});
+  ts.add_arc(0, 1, ToySystem::lit(0, true), {0});
+  ts.add_arc(0, 1, ToySystem::lit(1, true), {1});
+  const auto g = build_reachable_situation_graph(ts);
+  ASSERT_EQ(g.num_edges(), 1u);
+  EXPECT_EQ(g.condition(0).to_string(ts.inputs()), "a | b");
+  EXPECT_EQ(g.fired(0).size(), 2u);
+}
+
+TEST(ReachableSituationGraph, StateLimitGivesIncompleteGraph) {
+  ToySystem ts(100, {});
+  ts.set_initial({0});
+  for (std::uint32_t s = 0; s + 1 < 100; ++s) ts.add_arc(s, s + 1);
+  ExplorationOptions opts;
+  opts.max_states = 10;
+  const auto g = build_reachable_situation_graph(ts, opts);
+  EXPECT_FALSE(g.complete());
+  EXPECT_EQ(g.limit_reached(), "states");
+  const auto full = build_reachable_situation_graph(ts);
+  EXPECT_TRUE(full.complete());
+  EXPECT_EQ(full.num_states(), 100u);
+}
+
+TEST(ReachableSituationGraph, PredecessorsInvertEdges) {
+  const auto ts = counter();
+  const auto g = build_reachable_situation_graph(ts);
+  const auto& off = g.predecessor_offsets();
+  const auto& pe = g.predecessor_edges();
+  for (std::uint32_t s = 0; s < g.num_states(); ++s)
+    for (auto i = off[s]; i < off[s + 1]; ++i) EXPECT_EQ(g.target(pe[i]), s);
+  EXPECT_EQ(off[g.num_states()], g.num_edges());
+}
+
+TEST(StateStore, InsertsFindsAndGrows) {
+  StateStore store(2);
+  for (std::uint64_t i = 0; i < 5000; ++i) {
+    const StateWord w[2] = {i, i * 7};
+    EXPECT_TRUE(store.insert(w).second);
+  }
+  for (std::uint64_t i = 0; i < 5000; ++i) {
+    const StateWord w[2] = {i, i * 7};
+    EXPECT_EQ(store.find(w), static_cast<std::uint32_t>(i));
+    EXPECT_FALSE(store.insert(w).second);
+  }
+  const StateWord absent[2] = {1, 1};
+  EXPECT_EQ(store.find(absent), StateStore::kAbsent);
+}
+
+}  // namespace
+}  // namespace sfcv::engine
