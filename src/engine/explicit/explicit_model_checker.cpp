@@ -1,0 +1,53 @@
+#include "engine/explicit/explicit_model_checker.hpp"
+
+#include <chrono>
+
+namespace sfcv::engine {
+
+bool ExplicitModelChecker::can_handle(const logic::CheckTask& task, std::string* why) const {
+  if (!task.system) {
+    if (why) *why = "no transition system";
+    return false;
+  }
+  return true;
+}
+
+logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) const {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  ExplorationOptions opts;
+  opts.max_states = task.limits.max_states;
+  opts.timeout_seconds = task.limits.timeout_seconds;
+  opts.max_memory_bytes = task.limits.max_memory_bytes;
+  if (task.limits.progress) {
+    opts.progress_interval = 4096;
+    opts.progress = [cb = task.limits.progress](const ExplorationProgress& p) {
+      cb(logic::Progress{p.states, p.edges, p.depth, p.seconds});
+    };
+  }
+  const auto graph = build_reachable_situation_graph(*task.system, opts);
+  logic::CheckReport report;
+  report.engine = "explicit";
+  report.states = graph.num_states();
+  report.edges = graph.num_edges();
+  for (std::uint32_t s = 0; s < graph.num_states(); ++s)
+    report.depth = std::max(report.depth, graph.depth(s));
+  report.complete = graph.complete();
+  report.limit = graph.limit_reached();
+
+  CtlChecker checker(graph, task.fairness);
+  for (const auto& p : task.properties) {
+    const auto t0 = Clock::now();
+    auto r = checker.check(p);
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() +
+                (report.results.empty() ? graph.build_seconds() : 0.0);
+    report.results.push_back(std::move(r));
+  }
+  for (auto& r : run_standard_checks(graph, checker, task)) report.results.push_back(std::move(r));
+  report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return report;
+}
+
+ModelCheckerPtr make_explicit_model_checker() { return std::make_unique<ExplicitModelChecker>(); }
+
+}  // namespace sfcv::engine

@@ -1,0 +1,28 @@
+#pragma once
+// The explicit engine: builds the reachable situations graph (BFS, packed states) and checks
+// CTL properties and the standard checks on it by labelling (ctl_checker.hpp).
+
+#include <vector>
+
+#include "engine/explicit/ctl_checker.hpp"
+#include "engine/explicit/reachable_situation_graph.hpp"
+#include "engine/model_checker.hpp"
+
+namespace sfcv::engine {
+
+class ExplicitModelChecker final : public ModelChecker {
+ public:
+  std::string_view name() const override { return "explicit"; }
+  bool can_handle(const logic::CheckTask& task, std::string* why = nullptr) const override;
+  logic::CheckReport check(const logic::CheckTask& task) const override;
+};
+
+ModelCheckerPtr make_explicit_model_checker();
+
+/// The standard checks of `task.checks` on a built graph; `checker` carries the task's
+/// fairness (used for the AG AF part of re-entry only).
+std::vector<logic::PropertyResult> run_standard_checks(const ReachableSituationGraph& graph,
+                                                       CtlChecker& checker,
+                                                       const logic::CheckTask& task);
+
+}  // namespace sfcv::engine

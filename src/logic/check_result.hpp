@@ -1,0 +1,50 @@
+#pragma once
+// Results of model checking as data (like Storm's CheckResult): a verdict per property, with a
+// counterexample or witness; renderers live in src/report.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "logic/trace.hpp"
+#include "model/source_location.hpp"
+
+namespace sfcv::logic {
+
+enum class Verdict {
+  Holds,
+  Violated,
+  Unknown,     ///< a limit stopped exploration before the answer was certain
+  NotChecked,  ///< a standard check this engine or system cannot evaluate (never "holds")
+};
+std::string_view to_string(Verdict v);
+
+struct PropertyResult {
+  std::string name;      ///< property name, or the standard check's name
+  std::string formula;   ///< CTL text; empty for checks that are not one formula
+  std::string check;     ///< standard check id ("reachable", ...); empty for user properties
+  Verdict verdict = Verdict::Unknown;
+  std::string message;   ///< one readable line (why unknown, what was found)
+  std::vector<std::string> findings;  ///< standard checks: one located line per defect
+  std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
+  double seconds = 0;
+  model::SourceLocation where;  ///< where the property was written
+};
+
+struct CheckReport {
+  std::string engine;      ///< "explicit", "bdd"
+  std::uint64_t states = 0;
+  std::uint64_t edges = 0;
+  std::uint32_t depth = 0;  ///< BFS depth reached
+  bool complete = true;    ///< false when a limit stopped exploration
+  std::string limit;       ///< "states", "time", "memory" when !complete
+  double seconds = 0;      ///< exploration plus checking
+  std::vector<PropertyResult> results;
+};
+
+/// Worst verdict first: Violated > Unknown > Holds (NotChecked does not count).
+int exit_code(const CheckReport& r);
+
+}  // namespace sfcv::logic

@@ -1,0 +1,207 @@
+#include "logic/formula.hpp"
+
+#include <algorithm>
+
+namespace sfcv::logic {
+
+namespace {
+std::shared_ptr<Formula> node(Op op, int line, int column) {
+  auto f = std::make_shared<Formula>();
+  f->op = op;
+  f->line = line;
+  f->column = column;
+  return f;
+}
+
+// Binding strength for printing (NuSMV: <-> weakest, then ->, | xor, &, unary).
+int precedence(Op op) {
+  switch (op) {
+    case Op::Iff: return 1;
+    case Op::Implies: return 2;
+    case Op::Or: case Op::Xor: return 3;
+    case Op::And: return 4;
+    case Op::Compare: return 5;
+    case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
+      return 6;
+    default: return 7;
+  }
+}
+
+std::string_view op_text(Op op) {
+  switch (op) {
+    case Op::Not: return "!";
+    case Op::And: return " & ";
+    case Op::Or: return " | ";
+    case Op::Implies: return " -> ";
+    case Op::Iff: return " <-> ";
+    case Op::Xor: return " xor ";
+    case Op::EX: return "EX ";
+    case Op::AX: return "AX ";
+    case Op::EF: return "EF ";
+    case Op::AF: return "AF ";
+    case Op::EG: return "EG ";
+    case Op::AG: return "AG ";
+    default: return "";
+  }
+}
+
+void print(const Formula& f, int context, std::string& out) {
+  const int p = precedence(f.op);
+  const bool parens = p < context;
+  if (parens) out += '(';
+  switch (f.op) {
+    case Op::True: out += "TRUE"; break;
+    case Op::False: out += "FALSE"; break;
+    case Op::Atom: out += f.name; break;
+    case Op::Compare:
+      out += f.name;
+      out += ' ';
+      out += to_string(f.cmp);
+      out += ' ';
+      out += std::to_string(f.value);
+      break;
+    case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
+      out += op_text(f.op);
+      print(*f.args[0], p, out);
+      break;
+    case Op::EU: case Op::AU:
+      out += f.op == Op::EU ? "E[" : "A[";
+      print(*f.args[0], 0, out);
+      out += " U ";
+      print(*f.args[1], 0, out);
+      out += ']';
+      break;
+    case Op::Implies:  // right associative
+      print(*f.args[0], p + 1, out);
+      out += op_text(f.op);
+      print(*f.args[1], p, out);
+      break;
+    default:  // And, Or, Xor, Iff: left associative
+      print(*f.args[0], p, out);
+      out += op_text(f.op);
+      print(*f.args[1], p + 1, out);
+      break;
+  }
+  if (parens) out += ')';
+}
+
+void collect_names(const Formula& f, std::vector<std::string>& out) {
+  if (f.op == Op::Atom || f.op == Op::Compare) {
+    if (std::find(out.begin(), out.end(), f.name) == out.end()) out.push_back(f.name);
+  }
+  for (const auto& a : f.args) collect_names(*a, out);
+}
+
+void collect_observables(const Formula& f, std::vector<std::uint32_t>& out) {
+  if ((f.op == Op::Atom || f.op == Op::Compare) && f.observable >= 0)
+    out.push_back(static_cast<std::uint32_t>(f.observable));
+  for (const auto& a : f.args) collect_observables(*a, out);
+}
+}  // namespace
+
+FormulaPtr make_const(bool v, int line, int column) {
+  return node(v ? Op::True : Op::False, line, column);
+}
+
+FormulaPtr make_atom(std::string name, int line, int column) {
+  auto f = node(Op::Atom, line, column);
+  f->name = std::move(name);
+  return f;
+}
+
+FormulaPtr make_compare(std::string name, CompareOp cmp, std::int64_t value, int line,
+                        int column) {
+  auto f = node(Op::Compare, line, column);
+  f->name = std::move(name);
+  f->cmp = cmp;
+  f->value = value;
+  return f;
+}
+
+FormulaPtr make_op(Op op, std::vector<FormulaPtr> args, int line, int column) {
+  auto f = node(op, line, column);
+  f->args = std::move(args);
+  return f;
+}
+
+FormulaPtr make_not(FormulaPtr f) {
+  const int l = f->line, c = f->column;
+  return make_op(Op::Not, {std::move(f)}, l, c);
+}
+FormulaPtr make_and(FormulaPtr a, FormulaPtr b) {
+  const int l = a->line, c = a->column;
+  return make_op(Op::And, {std::move(a), std::move(b)}, l, c);
+}
+FormulaPtr make_or(FormulaPtr a, FormulaPtr b) {
+  const int l = a->line, c = a->column;
+  return make_op(Op::Or, {std::move(a), std::move(b)}, l, c);
+}
+
+FormulaPtr with_observable(const Formula& f, std::int32_t index) {
+  auto copy = std::make_shared<Formula>(f);
+  copy->observable = index;
+  return copy;
+}
+
+bool is_temporal(Op op) {
+  switch (op) {
+    case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG: case Op::EU:
+    case Op::AU:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool is_propositional(const Formula& f) {
+  if (is_temporal(f.op)) return false;
+  return std::all_of(f.args.begin(), f.args.end(),
+                     [](const FormulaPtr& a) { return is_propositional(*a); });
+}
+
+std::vector<std::string> atom_names(const Formula& f) {
+  std::vector<std::string> out;
+  collect_names(f, out);
+  return out;
+}
+
+std::vector<std::uint32_t> atom_observables(const Formula& f) {
+  std::vector<std::uint32_t> out;
+  collect_observables(f, out);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::string to_string(const Formula& f) {
+  std::string out;
+  print(f, 0, out);
+  return out;
+}
+std::string to_string(const FormulaPtr& f) { return f ? to_string(*f) : "<null>"; }
+
+std::string_view to_string(CompareOp c) {
+  switch (c) {
+    case CompareOp::Eq: return "=";
+    case CompareOp::Ne: return "!=";
+    case CompareOp::Lt: return "<";
+    case CompareOp::Le: return "<=";
+    case CompareOp::Gt: return ">";
+    case CompareOp::Ge: return ">=";
+  }
+  return "?";
+}
+
+bool compare(CompareOp c, std::int64_t lhs, std::int64_t rhs) {
+  switch (c) {
+    case CompareOp::Eq: return lhs == rhs;
+    case CompareOp::Ne: return lhs != rhs;
+    case CompareOp::Lt: return lhs < rhs;
+    case CompareOp::Le: return lhs <= rhs;
+    case CompareOp::Gt: return lhs > rhs;
+    case CompareOp::Ge: return lhs >= rhs;
+  }
+  return false;
+}
+
+}  // namespace sfcv::logic

@@ -1,0 +1,62 @@
+#pragma once
+// CTL formulas over the observables of a transition system (steps, actions, variables).
+// Immutable: constructors return shared nodes; resolution against a system makes new nodes.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "logic/fwd.hpp"
+
+namespace sfcv::logic {
+
+enum class Op {
+  True, False,
+  Atom,     ///< a Boolean observable: `name`
+  Compare,  ///< `name cmp value` on an integer (or Boolean) observable
+  Not, And, Or, Implies, Iff, Xor,
+  EX, AX, EF, AF, EG, AG,
+  EU, AU,   ///< args[0] U args[1]
+};
+
+enum class CompareOp { Eq, Ne, Lt, Le, Gt, Ge };
+
+struct Formula {
+  Op op = Op::True;
+  std::string name;        ///< Atom, Compare: as written ("FILL_A.X", "level")
+  CompareOp cmp = CompareOp::Eq;
+  std::int64_t value = 0;  ///< Compare: the constant
+  std::int32_t observable = -1;  ///< Atom, Compare: index into observables() once resolved
+  std::vector<FormulaPtr> args;
+  int line = 0;    ///< where it was written (1-based; 0 = unknown)
+  int column = 0;
+};
+
+// Constructors.
+FormulaPtr make_const(bool v, int line = 0, int column = 0);
+FormulaPtr make_atom(std::string name, int line = 0, int column = 0);
+FormulaPtr make_compare(std::string name, CompareOp cmp, std::int64_t value, int line = 0,
+                        int column = 0);
+FormulaPtr make_op(Op op, std::vector<FormulaPtr> args, int line = 0, int column = 0);
+FormulaPtr make_not(FormulaPtr f);
+FormulaPtr make_and(FormulaPtr a, FormulaPtr b);
+FormulaPtr make_or(FormulaPtr a, FormulaPtr b);
+/// A copy of an atom or comparison bound to observable `index`.
+FormulaPtr with_observable(const Formula& f, std::int32_t index);
+
+bool is_temporal(Op op);
+/// No temporal operator anywhere below.
+bool is_propositional(const Formula& f);
+/// Names of the atoms and compared variables, in order of first appearance, without repeats.
+std::vector<std::string> atom_names(const Formula& f);
+/// Indices of the resolved observables used, sorted, without repeats.
+std::vector<std::uint32_t> atom_observables(const Formula& f);
+
+/// NuSMV syntax, fully parenthesised where needed: "AG !(V1 & V3)".
+std::string to_string(const Formula& f);
+std::string to_string(const FormulaPtr& f);
+std::string_view to_string(CompareOp c);
+
+bool compare(CompareOp c, std::int64_t lhs, std::int64_t rhs);
+
+}  // namespace sfcv::logic

@@ -1,0 +1,403 @@
+#include "logic/parser.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <stdexcept>
+#include <vector>
+
+#include "logic/formula.hpp"
+#include "model/names.hpp"
+
+namespace sfcv::logic {
+
+namespace {
+
+enum class Tok {
+  Ident, Int, Not, And, Or, Implies, Iff, LParen, RParen, LBracket, RBracket,
+  Eq, Ne, Lt, Le, Gt, Ge, Semi, Colon, End, Bad,
+};
+
+struct Token {
+  Tok kind = Tok::End;
+  std::string text;
+  std::int64_t value = 0;
+  int line = 1, column = 1;
+};
+
+std::vector<Token> lex(std::string_view s) {
+  std::vector<Token> out;
+  int line = 1, col = 1;
+  std::size_t i = 0;
+  auto advance = [&](std::size_t n) {
+    for (std::size_t k = 0; k < n && i < s.size(); ++k, ++i) {
+      if (s[i] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+  };
+  while (i < s.size()) {
+    const char c = s[i];
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      advance(1);
+      continue;
+    }
+    if ((c == '-' && i + 1 < s.size() && s[i + 1] == '-') ||
+        (c == '/' && i + 1 < s.size() && s[i + 1] == '/')) {
+      while (i < s.size() && s[i] != '\n') advance(1);
+      continue;
+    }
+    Token t;
+    t.line = line;
+    t.column = col;
+    auto sym = [&](Tok k, std::size_t n) {
+      t.kind = k;
+      t.text = std::string(s.substr(i, n));
+      advance(n);
+    };
+    const auto rest = s.substr(i);
+    if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+      std::size_t n = 0;
+      while (n < rest.size() && (std::isalnum(static_cast<unsigned char>(rest[n])) ||
+                                 rest[n] == '_' || rest[n] == '.'))
+        ++n;
+      sym(Tok::Ident, n);
+    } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+               (c == '-' && rest.size() > 1 && std::isdigit(static_cast<unsigned char>(rest[1])))) {
+      std::size_t n = 1;
+      while (n < rest.size() && std::isdigit(static_cast<unsigned char>(rest[n]))) ++n;
+      const auto r = std::from_chars(rest.data(), rest.data() + n, t.value);
+      sym(r.ec == std::errc() ? Tok::Int : Tok::Bad, n);
+    } else if (rest.starts_with("<->")) {
+      sym(Tok::Iff, 3);
+    } else if (rest.starts_with("->")) {
+      sym(Tok::Implies, 2);
+    } else if (rest.starts_with("!=")) {
+      sym(Tok::Ne, 2);
+    } else if (rest.starts_with("<=")) {
+      sym(Tok::Le, 2);
+    } else if (rest.starts_with(">=")) {
+      sym(Tok::Ge, 2);
+    } else if (rest.starts_with("==")) {
+      sym(Tok::Eq, 2);
+    } else {
+      switch (c) {
+        case '!': sym(Tok::Not, 1); break;
+        case '&': sym(Tok::And, 1); break;
+        case '|': sym(Tok::Or, 1); break;
+        case '(': sym(Tok::LParen, 1); break;
+        case ')': sym(Tok::RParen, 1); break;
+        case '[': sym(Tok::LBracket, 1); break;
+        case ']': sym(Tok::RBracket, 1); break;
+        case '=': sym(Tok::Eq, 1); break;
+        case '<': sym(Tok::Lt, 1); break;
+        case '>': sym(Tok::Gt, 1); break;
+        case ';': sym(Tok::Semi, 1); break;
+        case ':': sym(Tok::Colon, 1); break;
+        default: sym(Tok::Bad, 1); break;
+      }
+    }
+    out.push_back(std::move(t));
+  }
+  Token end;
+  end.kind = Tok::End;
+  end.line = line;
+  end.column = col;
+  out.push_back(end);
+  return out;
+}
+
+struct SyntaxError : std::runtime_error {
+  SyntaxError(const Token& t, const std::string& m)
+      : std::runtime_error(m), line(t.line), column(t.column) {}
+  int line, column;
+};
+
+std::string describe(const Token& t) {
+  if (t.kind == Tok::End) return "end of input";
+  return "'" + t.text + "'";
+}
+
+bool is_temporal_keyword(const std::string& s, Op& op) {
+  static const std::pair<const char*, Op> table[] = {{"EX", Op::EX}, {"AX", Op::AX},
+                                                     {"EF", Op::EF}, {"AF", Op::AF},
+                                                     {"EG", Op::EG}, {"AG", Op::AG}};
+  for (const auto& [k, o] : table)
+    if (s == k) {
+      op = o;
+      return true;
+    }
+  return false;
+}
+
+class Parser {
+ public:
+  explicit Parser(const std::vector<Token>& toks, std::size_t pos = 0) : t_(toks), pos_(pos) {}
+
+  FormulaPtr formula() { return iff(); }
+  const Token& peek(std::size_t k = 0) const { return t_[std::min(pos_ + k, t_.size() - 1)]; }
+  const Token& next() { return t_[pos_ < t_.size() - 1 ? pos_++ : pos_]; }
+  std::size_t pos() const { return pos_; }
+  void expect(Tok k, const char* what) {
+    if (peek().kind != k)
+      throw SyntaxError(peek(), std::string("expected ") + what + ", found " + describe(peek()));
+    next();
+  }
+
+ private:
+  FormulaPtr iff() {
+    auto lhs = implies();
+    while (peek().kind == Tok::Iff) {
+      const auto& op = next();
+      lhs = make_op(Op::Iff, {lhs, implies()}, op.line, op.column);
+    }
+    return lhs;
+  }
+  FormulaPtr implies() {
+    auto lhs = disjunction();
+    if (peek().kind == Tok::Implies) {
+      const auto& op = next();
+      return make_op(Op::Implies, {lhs, implies()}, op.line, op.column);
+    }
+    return lhs;
+  }
+  bool is_xor(const Token& t) const { return t.kind == Tok::Ident && model::iequals(t.text, "xor"); }
+  FormulaPtr disjunction() {
+    auto lhs = conjunction();
+    while (peek().kind == Tok::Or || is_xor(peek())) {
+      const auto& op = next();
+      lhs = make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()}, op.line,
+                    op.column);
+    }
+    return lhs;
+  }
+  FormulaPtr conjunction() {
+    auto lhs = unary();
+    while (peek().kind == Tok::And) {
+      const auto& op = next();
+      lhs = make_op(Op::And, {lhs, unary()}, op.line, op.column);
+    }
+    return lhs;
+  }
+  FormulaPtr unary() {
+    const Token& t = peek();
+    if (t.kind == Tok::Not) {
+      next();
+      return make_op(Op::Not, {unary()}, t.line, t.column);
+    }
+    Op op;
+    if (t.kind == Tok::Ident && is_temporal_keyword(t.text, op)) {
+      next();
+      return make_op(op, {unary()}, t.line, t.column);
+    }
+    return primary();
+  }
+  static bool is_cmp(Tok k) {
+    return k == Tok::Eq || k == Tok::Ne || k == Tok::Lt || k == Tok::Le || k == Tok::Gt ||
+           k == Tok::Ge;
+  }
+  static CompareOp cmp_of(Tok k) {
+    switch (k) {
+      case Tok::Eq: return CompareOp::Eq;
+      case Tok::Ne: return CompareOp::Ne;
+      case Tok::Lt: return CompareOp::Lt;
+      case Tok::Le: return CompareOp::Le;
+      case Tok::Gt: return CompareOp::Gt;
+      default: return CompareOp::Ge;
+    }
+  }
+  static CompareOp flip(CompareOp c) {
+    switch (c) {
+      case CompareOp::Lt: return CompareOp::Gt;
+      case CompareOp::Le: return CompareOp::Ge;
+      case CompareOp::Gt: return CompareOp::Lt;
+      case CompareOp::Ge: return CompareOp::Le;
+      default: return c;
+    }
+  }
+  // An integer operand of a comparison: a literal or TRUE/FALSE.
+  bool constant(const Token& t, std::int64_t& v) const {
+    if (t.kind == Tok::Int) {
+      v = t.value;
+      return true;
+    }
+    if (t.kind == Tok::Ident && (model::iequals(t.text, "TRUE") || model::iequals(t.text, "FALSE"))) {
+      v = model::iequals(t.text, "TRUE") ? 1 : 0;
+      return true;
+    }
+    return false;
+  }
+  FormulaPtr primary() {
+    const Token t = peek();
+    if (t.kind == Tok::LParen) {
+      next();
+      auto f = iff();
+      expect(Tok::RParen, "')'");
+      return f;
+    }
+    if (t.kind == Tok::Ident && (t.text == "E" || t.text == "A") &&
+        peek(1).kind == Tok::LBracket) {
+      next();
+      next();
+      auto lhs = iff();
+      if (!(peek().kind == Tok::Ident && peek().text == "U"))
+        throw SyntaxError(peek(), "expected 'U' in " + t.text + "[ p U q ], found " +
+                                      describe(peek()));
+      next();
+      auto rhs = iff();
+      expect(Tok::RBracket, "']'");
+      return make_op(t.text == "E" ? Op::EU : Op::AU, {lhs, rhs}, t.line, t.column);
+    }
+    std::int64_t v = 0;
+    if (constant(t, v)) {
+      next();
+      if (is_cmp(peek().kind)) {
+        const auto c = cmp_of(next().kind);
+        const Token& rhs = next();
+        if (rhs.kind != Tok::Ident || constant(rhs, v))
+          throw SyntaxError(rhs, "expected a variable name in a comparison, found " +
+                                     describe(rhs));
+        return make_compare(rhs.text, flip(c), t.value, t.line, t.column);
+      }
+      if (t.kind == Tok::Int)
+        throw SyntaxError(t, "an integer is not a formula; compare it with a variable, e.g. "
+                             "'level >= " + t.text + "'");
+      return make_const(v != 0, t.line, t.column);
+    }
+    if (t.kind == Tok::Ident) {
+      Op op;
+      if (is_temporal_keyword(t.text, op) || is_xor(t) || t.text == "U")
+        throw SyntaxError(t, "expected an operand, found keyword " + describe(t));
+      next();
+      if (is_cmp(peek().kind)) {
+        const auto c = cmp_of(next().kind);
+        const Token& rhs = next();
+        std::int64_t value = 0;
+        if (!constant(rhs, value))
+          throw SyntaxError(rhs, "expected an integer constant after '" + std::string(to_string(c)) +
+                                     "', found " + describe(rhs));
+        return make_compare(t.text, c, value, t.line, t.column);
+      }
+      return make_atom(t.text, t.line, t.column);
+    }
+    if (t.kind == Tok::Bad) throw SyntaxError(t, "unexpected character " + describe(t));
+    throw SyntaxError(t, "expected a formula, found " + describe(t));
+  }
+
+  const std::vector<Token>& t_;
+  std::size_t pos_;
+};
+
+model::Diagnostic error_at(const std::string& file, int line, int column, std::string message) {
+  model::Diagnostic d;
+  d.severity = model::Severity::Error;
+  d.where.file = file;
+  d.where.line = line;
+  d.where.column = column;
+  d.message = std::move(message);
+  return d;
+}
+
+// The first temporal operator in f, or null.
+const Formula* first_temporal(const Formula& f) {
+  if (is_temporal(f.op)) return &f;
+  for (const auto& a : f.args)
+    if (const auto* t = first_temporal(*a)) return t;
+  return nullptr;
+}
+
+}  // namespace
+
+ParsedFormula parse_formula(std::string_view text, std::string source) {
+  ParsedFormula out;
+  const auto toks = lex(text);
+  Parser p(toks);
+  try {
+    auto f = p.formula();
+    if (p.peek().kind == Tok::Semi && p.peek(1).kind == Tok::End) p.next();
+    if (p.peek().kind != Tok::End)
+      throw SyntaxError(p.peek(), "unexpected " + describe(p.peek()) + " after the formula");
+    out.formula = std::move(f);
+  } catch (const SyntaxError& e) {
+    out.diagnostics.push_back(error_at(source, e.line, e.column, e.what()));
+  }
+  return out;
+}
+
+ParsedFormula parse_propositional(std::string_view text, std::string source) {
+  auto r = parse_formula(text, source);
+  if (r.formula) {
+    if (const auto* t = first_temporal(*r.formula)) {
+      r.diagnostics.push_back(error_at(source, t->line, t->column,
+                                       "temporal operator not allowed here: an assumption or "
+                                       "fairness constraint is a propositional formula"));
+      r.formula.reset();
+    }
+  }
+  return r;
+}
+
+ParsedSpec parse_spec(std::string_view text, std::string file) {
+  ParsedSpec out;
+  const auto toks = lex(text);
+  std::size_t pos = 0;
+  while (toks[pos].kind != Tok::End) {
+    Parser p(toks, pos);
+    const Token head = p.peek();
+    try {
+      NamedFormula nf;
+      nf.where.file = file;
+      nf.where.line = head.line;
+      nf.where.column = head.column;
+      enum { Property, Assume, Fair } kind;
+      if (head.kind == Tok::Ident && model::iequals(head.text, "property")) {
+        kind = Property;
+        p.next();
+        const Token name = p.peek();
+        if (name.kind != Tok::Ident) throw SyntaxError(name, "expected a property name, found " + describe(name));
+        p.next();
+        nf.name = name.text;
+        p.expect(Tok::Colon, "':' after the property name");
+      } else if (head.kind == Tok::Ident && model::iequals(head.text, "assume")) {
+        kind = Assume;
+        p.next();
+      } else if (head.kind == Tok::Ident && model::iequals(head.text, "fair")) {
+        kind = Fair;
+        p.next();
+      } else {
+        throw SyntaxError(head, "expected 'property', 'assume' or 'fair', found " + describe(head));
+      }
+      nf.formula = p.formula();
+      p.expect(Tok::Semi, "';' at the end of the statement");
+      pos = p.pos();
+      if (kind != Property) {
+        if (const auto* t = first_temporal(*nf.formula))
+          throw SyntaxError(Token{Tok::Ident, "", 0, t->line, t->column},
+                            "temporal operator not allowed in '" + head.text +
+                                "': it takes a propositional formula");
+      }
+      if (kind == Property) {
+        for (const auto& other : out.spec.properties)
+          if (model::iequals(other.name, nf.name))
+            throw SyntaxError(head, "property '" + nf.name + "' is defined twice (first at line " +
+                                        std::to_string(other.where.line) + ")");
+        out.spec.properties.push_back(std::move(nf));
+      } else if (kind == Assume) {
+        out.spec.assumptions.push_back(std::move(nf));
+      } else {
+        out.spec.fairness.push_back(std::move(nf));
+      }
+    } catch (const SyntaxError& e) {
+      out.diagnostics.push_back(error_at(file, e.line, e.column, e.what()));
+      // Recover at the next statement.
+      pos = std::max(pos, p.pos());
+      while (toks[pos].kind != Tok::End && toks[pos].kind != Tok::Semi) ++pos;
+      if (toks[pos].kind == Tok::Semi) ++pos;
+    }
+  }
+  return out;
+}
+
+}  // namespace sfcv::logic

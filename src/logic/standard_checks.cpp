@@ -1,0 +1,173 @@
+#include "logic/standard_checks.hpp"
+
+#include <functional>
+#include <map>
+
+#include "logic/formula.hpp"
+#include "model/names.hpp"
+
+namespace sfcv::logic {
+
+const std::vector<StandardCheckInfo>& standard_checks() {
+  static const std::vector<StandardCheckInfo> table = {
+      {StandardCheck::Reachable, "reachable", "every step can become active (EF X)"},
+      {StandardCheck::DeadTransitions, "dead-transitions", "every transition can fire"},
+      {StandardCheck::Reentry, "reentry",
+       "every step of a loop can be re-entered (AG EF X; AG AF X under fairness)"},
+      {StandardCheck::GlobalDeadlock, "global-deadlock",
+       "no reachable situation from which no transition can ever fire"},
+      {StandardCheck::LocalDeadlock, "local-deadlock",
+       "no step that once active is never left, or once inactive never re-entered"},
+      {StandardCheck::InitialReturn, "initial-return",
+       "the initial situation can be reached again from everywhere (AG EF init)"},
+      {StandardCheck::Conflicts, "conflicts",
+       "no alternative transitions enabled together without a priority"},
+      {StandardCheck::StoredActions, "stored-actions",
+       "stored actions: not set and reset together, not set while stored, always reset"},
+      {StandardCheck::OutputConflicts, "output-conflicts",
+       "no output written with different values by two actions in one cycle"},
+      {StandardCheck::Instability, "instability",
+       "no endless transient evolution (Grafcet) and no value out of range"},
+  };
+  return table;
+}
+
+std::string_view to_string(StandardCheck c) {
+  for (const auto& i : standard_checks())
+    if (i.id == c) return i.name;
+  return "?";
+}
+
+std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view text,
+                                                                std::string* error) {
+  std::vector<StandardCheck> out;
+  if (text == "none") return out;
+  if (text == "all") {
+    for (const auto& i : standard_checks()) out.push_back(i.id);
+    return out;
+  }
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    auto end = text.find(',', start);
+    if (end == std::string_view::npos) end = text.size();
+    const auto item = text.substr(start, end - start);
+    bool found = false;
+    for (const auto& i : standard_checks())
+      if (model::iequals(i.name, item)) {
+        found = true;
+        bool dup = false;
+        for (auto c : out) dup |= c == i.id;
+        if (!dup) out.push_back(i.id);
+      }
+    if (!found) {
+      if (error) {
+        *error = "unknown check '" + std::string(item) + "' (expected all, none or a list of:";
+        for (const auto& i : standard_checks()) *error += " " + std::string(i.name);
+        *error += ")";
+      }
+      return std::nullopt;
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+namespace {
+// Steps of `chart` that lie on a cycle of its step -> transition -> step graph.
+std::vector<bool> loop_steps(const model::Chart& chart) {
+  const auto n = chart.steps.size();
+  std::vector<std::vector<std::size_t>> succ(n);
+  for (const auto& t : chart.transitions)
+    for (const auto& s : t.sources)
+      for (const auto& d : t.targets) {
+        const int a = chart.step_index(s), b = chart.step_index(d);
+        if (a >= 0 && b >= 0) succ[static_cast<std::size_t>(a)].push_back(static_cast<std::size_t>(b));
+      }
+  std::vector<bool> on_loop(n, false);
+  for (std::size_t s = 0; s < n; ++s) {
+    std::vector<bool> seen(n, false);
+    std::vector<std::size_t> stack(succ[s].begin(), succ[s].end());
+    while (!stack.empty() && !on_loop[s]) {
+      const auto x = stack.back();
+      stack.pop_back();
+      if (x == s) on_loop[s] = true;
+      if (seen[x]) continue;
+      seen[x] = true;
+      for (auto y : succ[x]) stack.push_back(y);
+    }
+  }
+  return on_loop;
+}
+}  // namespace
+
+std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
+                               const model::Project* project) {
+  const auto& obs = ts.observables();
+  std::map<std::uint32_t, StepRef> matched;
+  if (project) {
+    for (const auto& pou : project->pous)
+      for (const auto& chart : pou.charts) {
+        const auto loops = loop_steps(chart);
+        for (std::size_t i = 0; i < chart.steps.size(); ++i) {
+          const auto& step = chart.steps[i];
+          std::uint32_t idx = 0;
+          bool found = false;
+          for (const auto& candidate :
+               {pou.name + "." + chart.name + "." + step.name, pou.name + "." + step.name,
+                chart.name + "." + step.name, step.name}) {
+            const auto hit = semantics::find_observable(ts, candidate);
+            if (hit && obs[*hit].kind == semantics::ObservableKind::Step) {
+              idx = *hit;
+              found = true;
+              break;
+            }
+          }
+          if (!found || matched.count(idx)) continue;
+          matched[idx] = StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where};
+        }
+      }
+  }
+  std::vector<StepRef> out;
+  for (std::uint32_t i = 0; i < obs.size(); ++i) {
+    if (obs[i].kind != semantics::ObservableKind::Step) continue;
+    auto it = matched.find(i);
+    if (it != matched.end()) {
+      out.push_back(it->second);
+    } else {
+      StepRef r;
+      r.observable = i;
+      r.step = obs[i].name;
+      out.push_back(std::move(r));
+    }
+  }
+  return out;
+}
+
+FormulaPtr observable_atom(const semantics::TransitionSystem& ts, std::uint32_t index) {
+  const auto& o = ts.observables()[index];
+  auto atom = make_atom(o.name);
+  return with_observable(*atom, static_cast<std::int32_t>(index));
+}
+
+FormulaPtr reentry_formula(const semantics::TransitionSystem& ts, std::uint32_t step) {
+  return make_op(Op::AG, {make_op(Op::EF, {observable_atom(ts, step)})});
+}
+
+FormulaPtr reentry_fair_formula(const semantics::TransitionSystem& ts, std::uint32_t step) {
+  return make_op(Op::AG, {make_op(Op::AF, {observable_atom(ts, step)})});
+}
+
+FormulaPtr local_deadlock_formula(const semantics::TransitionSystem& ts, std::uint32_t step) {
+  const auto x = observable_atom(ts, step);
+  auto left = make_op(Op::AG, {make_op(Op::Implies, {x, make_op(Op::EF, {make_not(x)})})});
+  auto back = make_op(Op::AG, {make_op(Op::Implies, {make_not(x), make_op(Op::EF, {x})})});
+  return make_and(std::move(left), std::move(back));
+}
+
+std::string describe_step(const StepRef& s) {
+  std::string out = s.pou.empty() ? s.step : s.pou + "." + s.step;
+  if (s.where.known()) out += " (" + s.where.str() + ")";
+  return out;
+}
+
+}  // namespace sfcv::logic

@@ -1,0 +1,70 @@
+#pragma once
+// The standard checks every chart should pass (run by default when no property is given):
+// their names, the selection parsed from --checks, and what they need from the chart (which
+// observable is which step, which steps lie on a loop). Engines evaluate them; the formulas
+// they use are built here so that every engine checks the same thing.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "logic/fwd.hpp"
+#include "model/chart.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::logic {
+
+enum class StandardCheck {
+  Reachable,        ///< every step can become active: EF X
+  DeadTransitions,  ///< every transition fires at least once
+  Reentry,          ///< AG EF X for the steps of a loop (AG AF X too under fairness)
+  GlobalDeadlock,   ///< no reachable situation from which no transition can ever fire
+  LocalDeadlock,    ///< seed 002: AG (X -> EF !X) & AG (!X -> EF X)
+  InitialReturn,    ///< AG EF init: the initial situation stays reachable
+  Conflicts,        ///< alternative transitions enabled together with no priority
+  StoredActions,    ///< S and R together, S while stored, S never reset
+  OutputConflicts,  ///< one output written with different values in one cycle
+  Instability,      ///< Grafcet: endless transient evolutions (and range errors)
+};
+
+struct StandardCheckInfo {
+  StandardCheck id;
+  std::string_view name;         ///< as used in --checks
+  std::string_view description;  ///< one line for --help and the report
+};
+
+const std::vector<StandardCheckInfo>& standard_checks();
+std::string_view to_string(StandardCheck c);
+
+/// "all", "none" or a comma-separated list of names; nullopt with `error` set on an unknown
+/// name (the message lists the valid ones).
+std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view text,
+                                                                std::string* error);
+
+/// A step of the chart and the observable that shows its activity.
+struct StepRef {
+  std::uint32_t observable = 0;
+  std::string pou, chart, step;
+  bool on_loop = false;  ///< the step lies on a cycle of its chart's step/transition graph
+  model::SourceLocation where;
+};
+
+/// The step observables of `ts`, matched with the chart's steps when `project` is given
+/// (names "POU.STEP", then "STEP"); steps of the system that match no chart step are kept,
+/// with on_loop unknown (false) and no location.
+std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
+                               const model::Project* project);
+
+/// Formulas of the CTL-expressible checks, over a resolved step observable.
+FormulaPtr reentry_formula(const semantics::TransitionSystem& ts, std::uint32_t step);
+FormulaPtr reentry_fair_formula(const semantics::TransitionSystem& ts, std::uint32_t step);
+FormulaPtr local_deadlock_formula(const semantics::TransitionSystem& ts, std::uint32_t step);
+/// A resolved atom for observable `index`.
+FormulaPtr observable_atom(const semantics::TransitionSystem& ts, std::uint32_t index);
+
+/// "MAIN.FILL_A (plant.st:12:3)".
+std::string describe_step(const StepRef& s);
+
+}  // namespace sfcv::logic
