@@ -346,6 +346,7 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
   while (toks[pos].kind != Tok::End) {
     Parser p(toks, pos);
     const Token head = p.peek();
+    bool consumed = false;
     try {
       NamedFormula nf;
       nf.where.file = file;
@@ -372,6 +373,7 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
       nf.formula = p.formula();
       p.expect(Tok::Semi, "';' at the end of the statement");
       pos = p.pos();
+      consumed = true;
       if (kind != Property) {
         if (const auto* t = first_temporal(*nf.formula))
           throw SyntaxError(Token{Tok::Ident, "", 0, t->line, t->column},
@@ -392,6 +394,7 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
     } catch (const SyntaxError& e) {
       out.diagnostics.push_back(error_at(file, e.line, e.column, e.what()));
       // Recover at the next statement.
+      if (consumed) continue;
       pos = std::max(pos, p.pos());
       while (toks[pos].kind != Tok::End && toks[pos].kind != Tok::Semi) ++pos;
       if (toks[pos].kind == Tok::Semi) ++pos;
