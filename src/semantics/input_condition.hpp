@@ -14,6 +14,7 @@ namespace sfcv::semantics {
 struct InputVariable {
   std::string name;
   model::Type type;  ///< Bool or Int (its range bounds the values)
+  bool pseudo = false;
 };
 
 struct InputLiteral {
