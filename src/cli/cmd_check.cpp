@@ -1,18 +1,207 @@
+// sfcv check: CTL properties and the standard checks. This file only maps options to library
+// calls: logic (properties), semantics (the system), engine (checking), report (rendering).
+
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
-#include "cli/not_built.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "logic/check_inputs.hpp"
+#include "model/names.hpp"
+#include "report/check_render.hpp"
+#include "report/trace_render.hpp"
+#include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
 namespace {
+
 struct CheckOptions {
   std::string model;
   std::string format = "auto";
+  std::vector<std::string> ctl;
+  std::string spec;
+  std::string checks;  ///< empty: all when no property is given, else none
+  std::vector<std::string> fair;
+  std::vector<std::string> assume;
+  std::string engine = "explicit";
+  std::string semantics;  ///< empty: from the model's dialect
+  std::vector<std::string> pous;
+  std::string priority = "standard";
+  std::string time = "abstract";
+  std::string cycle = "10ms";
+  bool multi_input_change = false;
+  std::uint64_t max_states = 0;
+  double timeout = 0;
+  bool json = false;
+  std::string trace = "table";
+  std::string trace_file;
+  bool quiet = false;
 };
+
+std::int64_t parse_cycle_ms(const std::string& text) {
+  std::size_t pos = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(text, &pos);
+  } catch (const std::exception&) {
+    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
+  }
+  const auto unit = model::to_upper(text.substr(pos));
+  if (unit == "S") v *= 1000;
+  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
+  if (v <= 0) throw InputError("--cycle must be positive");
+  return v;
+}
+
+report::TraceFormat parse_trace_format(const std::string& s) {
+  if (s == "table") return report::TraceFormat::Table;
+  if (s == "json") return report::TraceFormat::Json;
+  if (s == "vcd") return report::TraceFormat::Vcd;
+  if (s == "csv") return report::TraceFormat::Csv;
+  if (s == "none") return report::TraceFormat::None;
+  throw InputError("bad --trace '" + s + "' (expected table, json, vcd, csv or none)");
+}
+
+void print_diagnostics(const model::Diagnostics& diags, const char* what) {
+  std::size_t errors = 0;
+  for (const auto& d : diags) {
+    std::cerr << d.str() << "\n";
+    errors += d.severity == model::Severity::Error;
+  }
+  if (errors) throw InputError(std::string("sfcv check: ") + what);
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot open the spec file");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+int run_check(const CheckOptions& o) {
+  // Properties first: a typo in a formula should not wait for the model.
+  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
+                            o.assume};
+  auto parsed = logic::parse_check_inputs(inputs);
+  print_diagnostics(parsed.diagnostics, "errors in the properties");
+  const bool has_properties = !parsed.spec.properties.empty();
+  std::string why;
+  const auto checks = logic::parse_check_selection(
+      o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
+  if (!checks) throw InputError(why);
+  const auto trace_format = parse_trace_format(o.trace);
+  if (o.engine == "bdd") throw InputError("sfcv check: the BDD engine is not built yet");
+  if (o.engine != "explicit" && o.engine != "auto")
+    throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd or auto)");
+
+  const auto project = load_model_or_throw(o.model, parse_format(o.format));
+  const bool grafcet = o.semantics.empty() ? project.dialect == model::Dialect::Grafcet
+                                           : o.semantics == "grafcet";
+  if (!o.semantics.empty() && o.semantics != "grafcet" && o.semantics != "iec61131")
+    throw InputError("bad --semantics '" + o.semantics + "' (expected grafcet or iec61131)");
+  model::Diagnostics diags;
+  semantics::TransitionSystemPtr ts;
+  semantics::PriorityMode priority = semantics::PriorityMode::Standard;
+  if (o.priority == "none") priority = semantics::PriorityMode::None;
+  else if (o.priority != "standard")
+    throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
+  if (grafcet) {
+    semantics::GrafcetOptions opts;
+    opts.single_input_change = !o.multi_input_change;
+    opts.assumptions = logic::assumption_exprs(parsed.spec);
+    ts = semantics::make_grafcet_system(project, opts, diags);
+  } else {
+    semantics::Iec61131Options opts;
+    opts.priority = priority;
+    if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
+    else if (o.time != "abstract")
+      throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
+    opts.cycle_ms = parse_cycle_ms(o.cycle);
+    opts.pous = o.pous;
+    opts.assumptions = logic::assumption_exprs(parsed.spec);
+    ts = semantics::make_iec61131_system(project, opts, diags);
+  }
+  print_diagnostics(diags, "the model cannot be checked");
+  if (!ts) throw InputError("sfcv check: the model cannot be checked");
+
+  logic::CheckTask task;
+  task.system = ts.get();
+  task.project = &project;
+  task.checks = *checks;
+  task.priority_resolves_conflicts = priority == semantics::PriorityMode::Standard;
+  model::Diagnostics resolve_diags;
+  logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
+  print_diagnostics(resolve_diags, "errors in the properties");
+  task.limits.max_states = o.max_states;
+  task.limits.timeout_seconds = o.timeout;
+  const bool show_progress = !o.quiet && ::isatty(2);
+  bool progress_shown = false;
+  if (show_progress)
+    task.limits.progress = [&progress_shown](const logic::Progress& p) {
+      if (p.seconds < 1.0) return;
+      progress_shown = true;
+      std::fprintf(stderr, "\r%llu states, %.0f states/s, depth %u   ",
+                   static_cast<unsigned long long>(p.states), p.states / p.seconds, p.depth);
+      std::fflush(stderr);
+    };
+
+  auto checker = engine::make_explicit_model_checker();
+  if (o.engine == "auto" && !o.quiet) std::cerr << "sfcv: --engine auto: using the explicit engine\n";
+  if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+  logic::CheckReport result;
+  try {
+    result = checker->check(task);
+  } catch (const semantics::SemanticsLimitError& e) {
+    if (progress_shown) std::cerr << "\n";
+    std::cerr << "sfcv: " << e.what() << "\n";
+    return kUnknown;
+  }
+  if (progress_shown) std::cerr << "\r" << std::string(60, ' ') << "\r";
+
+  report::RenderOptions render;
+  render.trace = trace_format;
+  render.model = o.model;
+  render.semantics = std::string(semantics::to_string(ts->kind()));
+  if (!o.trace_file.empty()) {
+    const logic::Trace* chosen = nullptr;
+    for (const auto& r : result.results)
+      if (r.trace && (!chosen || r.verdict == logic::Verdict::Violated)) {
+        chosen = &*r.trace;
+        if (r.verdict == logic::Verdict::Violated) break;
+      }
+    std::ofstream f(o.trace_file);
+    if (!f) throw InputError(o.trace_file + ": cannot write the trace file");
+    if (chosen) {
+      switch (trace_format) {
+        case report::TraceFormat::Json: f << report::trace_json(*chosen, *ts); break;
+        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts); break;
+        case report::TraceFormat::Csv: f << report::trace_csv(*chosen, *ts); break;
+        default: f << report::trace_table(*chosen, *ts); break;
+      }
+    }
+  }
+  if (o.json) {
+    std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
+  } else {
+    std::cout << report::check_text(result, *ts, render);
+  }
+  return logic::exit_code(result);
+}
+
 }  // namespace
 
 void add_check_command(CLI::App& app, CommandRunner& selected) {
@@ -21,11 +210,32 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
+  sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;', 'fair e;'");
+  std::string names;
+  for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  sub->add_option("--checks", opts->checks,
+                  "Standard checks: all (default without properties), none, or a list of: " + names);
+  sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
+  sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
+  sub->add_option("--engine", opts->engine, "explicit (default), bdd or auto");
+  sub->add_option("--semantics", opts->semantics, "grafcet or iec61131 (default: from the model)");
+  sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
+  sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");
+  sub->add_option("--time", opts->time, "IEC timers: abstract (default) or discrete");
+  sub->add_option("--cycle", opts->cycle, "IEC cycle time for --time discrete (default 10ms)");
+  sub->add_flag("--multi-input-change", opts->multi_input_change,
+                "Grafcet: several inputs may change at once (default: one per event)");
+  sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
+  sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
+  sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
+  sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
+  sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
+  sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
+  sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
+              "input, 3 unknown (a limit was reached before an answer was certain).");
   sub->callback([opts, &selected] {
-    selected = [opts] {
-      load_model_or_throw(opts->model, parse_format(opts->format));
-      return not_built_yet("'sfcv check'");
-    };
+    selected = [opts] { return run_check(*opts); };
   });
 }
 

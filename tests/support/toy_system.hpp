@@ -45,6 +45,11 @@ class ToySystem final : public semantics::TransitionSystem {
         transitions_.push_back({"t" + std::to_string(transitions_.size()), "P", "C", {}});
   }
   void set_true(std::uint32_t state, std::uint32_t atom) { truth_[state][atom] = true; }
+  /// Makes atom `atom` an action (or a variable) instead of a step; `output` marks outputs.
+  void set_kind(std::uint32_t atom, semantics::ObservableKind kind, bool output = false) {
+    observables_[atom].kind = kind;
+    observables_[atom].is_output = output;
+  }
 
   semantics::SemanticsKind kind() const override { return semantics::SemanticsKind::Iec61131; }
   const semantics::StateLayout& layout() const override { return layout_; }

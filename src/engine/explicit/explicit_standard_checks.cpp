@@ -19,6 +19,7 @@ using logic::Verdict;
 namespace {
 
 constexpr std::size_t kMaxFindings = 20;
+constexpr std::size_t kMaxSituations = 3;  ///< situation findings listed before a summary
 constexpr std::uint32_t kNone = ReachableSituationGraph::kNone;
 
 std::string qualify(const std::string& pou, const std::string& name) {
@@ -257,12 +258,14 @@ class Checks {
     }
     std::size_t count = 0;
     for (std::uint32_t s = 0; s < n; ++s)
-      if (dead[s] && ++count <= kMaxFindings)
+      if (dead[s] && ++count <= kMaxSituations)
         add(r, "situation " + situation(s) + " (after " + std::to_string(g_.depth(s)) +
                    " evolutions): " +
                    (g_.edges_begin(s) == g_.edges_end(s)
                         ? "no successor at all (the assumptions exclude every input)"
                         : "no transition can ever fire again, whatever the inputs"));
+    if (count > kMaxSituations)
+      add(r, "(and " + std::to_string(count - kMaxSituations) + " more deadlocked situations)");
     if (const auto s = shallowest(dead); s != kNone) {
       r.trace = plain_.path_to(s);
       r.trace->note = "the last situation is a global deadlock";
@@ -342,10 +345,12 @@ class Checks {
     std::size_t count = 0;
     for (std::uint32_t s = 0; s < n; ++s) {
       bad[s] = !back[s];
-      if (bad[s] && ++count <= kMaxFindings)
+      if (bad[s] && ++count <= kMaxSituations)
         add(r, "from situation " + situation(s) + " the initial situation " +
                    situation(g_.initial_states().front()) + " can never be reached again");
     }
+    if (count > kMaxSituations)
+      add(r, "(and " + std::to_string(count - kMaxSituations) + " more such situations)");
     if (const auto s = shallowest(bad); s != kNone) {
       r.trace = plain_.path_to(s);
       r.trace->note = "from the last situation the initial situation is unreachable";
@@ -507,9 +512,12 @@ class Checks {
         std::int64_t field = -1;
         const auto& fields = ts_.layout().fields();
         for (std::size_t i = 0; i < fields.size(); ++i)
-          if (fields[i].kind == semantics::FieldKind::ActionStored &&
-              (model::iequals(fields[i].name, name) || model::iequals(fields[i].name, action)))
-            field = static_cast<std::int64_t>(i);
+          if (fields[i].kind == semantics::FieldKind::ActionStored) {
+            std::string fname = fields[i].name;
+            if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
+              fname.resize(fname.size() - 7);
+            if (model::iequals(fname, name) || model::iequals(fname, action)) field = static_cast<std::int64_t>(i);
+          }
         if (field < 0) {
           not_checked.push_back("set again while stored (" + name + "): the system exposes no "
                                 "stored flag for it");

@@ -1,0 +1,66 @@
+#include "logic/check_inputs.hpp"
+
+#include "logic/formula.hpp"
+#include "logic/parser.hpp"
+#include "logic/resolve.hpp"
+#include "logic/to_expr.hpp"
+
+namespace sfcv::logic {
+
+ParsedInputs parse_check_inputs(const CheckInputs& in) {
+  ParsedInputs out;
+  auto append = [&](model::Diagnostics d) {
+    out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
+  };
+  if (!in.spec_text.empty()) {
+    auto r = parse_spec(in.spec_text, in.spec_file.empty() ? "<spec>" : in.spec_file);
+    append(std::move(r.diagnostics));
+    out.spec = std::move(r.spec);
+  }
+  for (const auto& text : in.ctl) {
+    auto r = parse_formula(text, "--ctl '" + text + "'");
+    append(std::move(r.diagnostics));
+    if (r.formula) {
+      NamedFormula nf{text, r.formula, {}};
+      nf.where.file = "--ctl";
+      out.spec.properties.push_back(std::move(nf));
+    }
+  }
+  for (const auto& text : in.fair) {
+    auto r = parse_propositional(text, "--fair '" + text + "'");
+    append(std::move(r.diagnostics));
+    if (r.formula) out.spec.fairness.push_back({"", r.formula, {}});
+  }
+  for (const auto& text : in.assume) {
+    auto r = parse_propositional(text, "--assume '" + text + "'");
+    append(std::move(r.diagnostics));
+    if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}});
+  }
+  return out;
+}
+
+std::vector<model::ExprPtr> assumption_exprs(const Spec& spec) {
+  std::vector<model::ExprPtr> out;
+  for (const auto& a : spec.assumptions) out.push_back(to_expr(*a.formula, a.where.file));
+  return out;
+}
+
+void resolve_into(const Spec& spec, const semantics::TransitionSystem& ts, CheckTask& task,
+                  model::Diagnostics& diagnostics) {
+  auto source = [](const NamedFormula& nf) {
+    return nf.where.file.empty() || nf.where.file == "--ctl" ? "--ctl '" + nf.name + "'"
+                                                             : nf.where.file;
+  };
+  for (const auto& p : spec.properties) {
+    auto r = resolve(p.formula, ts, source(p));
+    diagnostics.insert(diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+    if (r.formula) task.properties.push_back(Property{p.name, r.formula, p.where});
+  }
+  for (const auto& f : spec.fairness) {
+    auto r = resolve(f.formula, ts, f.where.file.empty() ? "--fair" : f.where.file);
+    diagnostics.insert(diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+    if (r.formula) task.fairness.push_back(r.formula);
+  }
+}
+
+}  // namespace sfcv::logic

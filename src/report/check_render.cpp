@@ -1,0 +1,87 @@
+#include "report/check_render.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "report/trace_render.hpp"
+
+namespace sfcv::report {
+
+namespace {
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3fs", s);
+  return buf;
+}
+}  // namespace
+
+std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
+                       const RenderOptions& options) {
+  std::string out;
+  out += std::to_string(report.states) + " states, " + std::to_string(report.edges) +
+         " edges, depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
+         seconds(report.seconds) + ")";
+  if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
+  out += "\n";
+  std::size_t width = 0;
+  for (const auto& r : report.results) width = std::max(width, r.name.size());
+  width = std::min<std::size_t>(width, 48);
+  for (const auto& r : report.results) {
+    std::string name = r.name;
+    if (name.size() < width) name.resize(width, ' ');
+    std::string verdict(logic::to_string(r.verdict));
+    verdict.resize(11, ' ');
+    out += name + "  " + verdict + " " + seconds(r.seconds);
+    if (!r.message.empty()) out += "  " + r.message;
+    out += "\n";
+    if (r.check.empty() && r.formula != r.name) out += "  formula: " + r.formula + "\n";
+    for (const auto& f : r.findings) out += "  - " + f + "\n";
+    if (r.trace && options.trace != TraceFormat::None) {
+      const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
+      out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
+             std::to_string(r.trace->steps.size()) + " situations):\n";
+      switch (options.trace) {
+        case TraceFormat::Table: out += trace_table(*r.trace, ts); break;
+        case TraceFormat::Json: out += trace_json(*r.trace, ts); break;
+        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts); break;
+        case TraceFormat::Csv: out += trace_csv(*r.trace, ts); break;
+        case TraceFormat::None: break;
+      }
+    }
+  }
+  return out;
+}
+
+nlohmann::json check_json(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
+                          const RenderOptions& options) {
+  using nlohmann::json;
+  json j;
+  j["model"] = options.model;
+  j["semantics"] = options.semantics;
+  j["engine"] = report.engine;
+  j["states"] = report.states;
+  j["edges"] = report.edges;
+  j["depth"] = report.depth;
+  j["complete"] = report.complete;
+  j["limit"] = report.complete ? json(nullptr) : json(report.limit);
+  j["seconds"] = report.seconds;
+  j["exit_code"] = logic::exit_code(report);
+  j["properties"] = json::array();
+  for (const auto& r : report.results) {
+    json p;
+    p["name"] = r.name;
+    p["kind"] = r.check.empty() ? "property" : "standard-check";
+    if (!r.check.empty()) p["check"] = r.check;
+    p["formula"] = r.formula;
+    p["verdict"] = std::string(logic::to_string(r.verdict));
+    p["message"] = r.message;
+    p["findings"] = r.findings;
+    p["seconds"] = r.seconds;
+    if (r.where.known()) p["where"] = r.where.str();
+    p["trace"] = r.trace ? trace_to_json(*r.trace, ts) : json(nullptr);
+    j["properties"].push_back(std::move(p));
+  }
+  return j;
+}
+
+}  // namespace sfcv::report

@@ -1,0 +1,28 @@
+#pragma once
+// Renders a CheckReport: human text (one line per property: name, verdict, time; findings and
+// traces below) or JSON (schema in docs/formats.md, "sfcv check --json").
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "logic/check_result.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::report {
+
+enum class TraceFormat { Table, Json, Vcd, Csv, None };
+
+struct RenderOptions {
+  TraceFormat trace = TraceFormat::Table;
+  std::string model;      ///< the model file, for the JSON header
+  std::string semantics;  ///< "iec61131", "grafcet"
+};
+
+std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
+                       const RenderOptions& options);
+nlohmann::json check_json(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
+                          const RenderOptions& options);
+nlohmann::json trace_to_json(const logic::Trace& trace, const semantics::TransitionSystem& ts);
+
+}  // namespace sfcv::report
