@@ -1,0 +1,125 @@
+#include "report/trace_render.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "report/check_render.hpp"
+#include "support/toy_system.hpp"
+
+namespace sfcv::report {
+namespace {
+
+using test::ToySystem;
+
+// Toy states 0 (A), 1 (B, output Y); a lasso 0 -> 1 -> 0 on input go.
+struct Fixture {
+  ToySystem ts{2, {"go", "stop"}, {"A", "B", "Y"}};
+  logic::Trace trace;
+  Fixture() {
+    ts.set_kind(2, semantics::ObservableKind::Variable, true);
+    ts.set_true(0, 0);
+    ts.set_true(1, 1);
+    ts.set_true(1, 2);
+    ts.add_arc(0, 1, ToySystem::lit(0, true), {0});
+    ts.add_arc(1, 0, ToySystem::lit(0, false), {1});
+    auto state = [&](std::uint32_t s) {
+      std::vector<semantics::StateWord> w(ts.layout().words(), 0);
+      ts.layout().set(w, 0, s);
+      return w;
+    };
+    trace.steps.push_back({{0, 0}, state(0), {}});
+    trace.steps.push_back({{1, 0}, state(1), {0}});
+    trace.steps.push_back({{0, 0}, state(0), {1}});
+    trace.loop_start = 0;
+    trace.marked = {1};
+    trace.note = "B is visited forever";
+  }
+};
+
+TEST(TraceRender, TableShowsChangesStepsOutputsAndMarks) {
+  Fixture f;
+  const auto t = trace_table(f.trace, f.ts);
+  EXPECT_NE(t.find("B is visited forever"), std::string::npos);
+  EXPECT_NE(t.find("inputs (changed)"), std::string::npos);
+  EXPECT_NE(t.find("+go"), std::string::npos);
+  EXPECT_NE(t.find("-go"), std::string::npos);
+  EXPECT_EQ(t.find("stop"), std::string::npos);  // never changed
+  EXPECT_NE(t.find("B*"), std::string::npos);   // marked atom
+  EXPECT_NE(t.find("| Y"), std::string::npos) << t;  // output column
+  EXPECT_NE(t.find("t0"), std::string::npos);
+  EXPECT_NE(t.find("->0"), std::string::npos);
+  EXPECT_NE(t.find("repeats rows 0..2 forever"), std::string::npos);
+}
+
+TEST(TraceRender, JsonHasOneObjectPerStep) {
+  Fixture f;
+  const auto j = nlohmann::json::parse(trace_json(f.trace, f.ts));
+  EXPECT_EQ(j["kind"], "counterexample");
+  EXPECT_EQ(j["loop_start"], 0);
+  ASSERT_EQ(j["steps"].size(), 3u);
+  EXPECT_EQ(j["steps"][1]["inputs"]["go"], true);
+  EXPECT_EQ(j["steps"][1]["changed"], nlohmann::json::array({"go"}));
+  EXPECT_EQ(j["steps"][1]["fired"], nlohmann::json::array({"t0"}));
+  EXPECT_EQ(j["steps"][1]["active_steps"], nlohmann::json::array({"B"}));
+  EXPECT_EQ(j["steps"][1]["values"]["Y"], true);
+  EXPECT_EQ(j["marked"], nlohmann::json::array({"B"}));
+}
+
+TEST(TraceRender, VcdDeclaresSignalsAndDumpsChanges) {
+  Fixture f;
+  const auto v = trace_vcd(f.trace, f.ts);
+  EXPECT_NE(v.find("$timescale"), std::string::npos);
+  EXPECT_NE(v.find("$var wire 1 ! go $end"), std::string::npos) << v;
+  EXPECT_NE(v.find(" B $end"), std::string::npos);
+  EXPECT_NE(v.find("$enddefinitions $end"), std::string::npos);
+  EXPECT_NE(v.find("#0\n$dumpvars\n0!"), std::string::npos);
+  EXPECT_NE(v.find("#1\n1!"), std::string::npos);
+  EXPECT_NE(v.find("#2\n0!"), std::string::npos);
+}
+
+TEST(TraceRender, CsvIsTheSimulateInput) {
+  Fixture f;
+  const auto c = trace_csv(f.trace, f.ts);
+  EXPECT_NE(c.find("go,stop\n1,0\n0,0\n"), std::string::npos) << c;
+  EXPECT_EQ(c.front(), '#');
+}
+
+TEST(CheckRender, TextAndJsonReports) {
+  Fixture f;
+  logic::CheckReport report;
+  report.engine = "explicit";
+  report.states = 2;
+  report.edges = 2;
+  logic::PropertyResult p;
+  p.name = "no_b";
+  p.formula = "AG !B";
+  p.verdict = logic::Verdict::Violated;
+  p.trace = f.trace;
+  report.results.push_back(p);
+  logic::PropertyResult c;
+  c.name = c.check = "reachable";
+  c.verdict = logic::Verdict::Holds;
+  c.message = "all 2 steps are reachable";
+  report.results.push_back(c);
+  RenderOptions opts;
+  opts.model = "toy.st";
+  opts.semantics = "iec61131";
+  const auto text = check_text(report, f.ts, opts);
+  EXPECT_NE(text.find("no_b       violated"), std::string::npos) << text;
+  EXPECT_NE(text.find("formula: AG !B"), std::string::npos);
+  EXPECT_NE(text.find("counterexample (3 situations)"), std::string::npos);
+  EXPECT_NE(text.find("reachable  holds"), std::string::npos);
+  const auto j = check_json(report, f.ts, opts);
+  EXPECT_EQ(j["model"], "toy.st");
+  EXPECT_EQ(j["exit_code"], 1);
+  ASSERT_EQ(j["properties"].size(), 2u);
+  EXPECT_EQ(j["properties"][0]["verdict"], "violated");
+  EXPECT_EQ(j["properties"][0]["kind"], "property");
+  EXPECT_EQ(j["properties"][0]["trace"]["steps"].size(), 3u);
+  EXPECT_EQ(j["properties"][1]["kind"], "standard-check");
+  EXPECT_TRUE(j["properties"][1]["trace"].is_null());
+}
+
+}  // namespace
+}  // namespace sfcv::report
