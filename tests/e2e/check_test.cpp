@@ -1,0 +1,117 @@
+// sfcv check end to end: verdicts, exit codes, output formats, and replay of a counterexample
+// with sfcv simulate.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+const std::string kPlant = "'" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st'";
+
+TEST(CheckCommand, ChemicalPlantPaperResults) {
+  const auto r = run_sfcv("check " + kPlant + " --checks reachable --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("reachable      holds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 13 steps are reachable"), std::string::npos);
+  EXPECT_NE(r.out.find("AG !(V1 & V3)  holds"), std::string::npos);
+  EXPECT_NE(r.out.find("AG !(V2 & V4)  violated"), std::string::npos);
+  EXPECT_NE(r.out.find("counterexample"), std::string::npos);
+  EXPECT_NE(r.out.find("V2* V4*"), std::string::npos);
+}
+
+TEST(CheckCommand, DefaultRunsTheStandardChecks) {
+  const auto r = run_sfcv("check " + kPlant + " --trace none");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  for (const char* name : {"reachable", "dead-transitions", "reentry", "global-deadlock",
+                           "local-deadlock", "initial-return", "conflicts", "stored-actions",
+                           "output-conflicts", "instability"})
+    EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n" << r.out;
+  EXPECT_NE(r.out.find("not checked"), std::string::npos);
+}
+
+TEST(CheckCommand, HoldsGivesExitZero) {
+  const auto r = run_sfcv("check " + kPlant + " --ctl 'AG !(V1 & V3)' --ctl 'EF (V2 & V4)'");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("witness"), std::string::npos);
+}
+
+TEST(CheckCommand, JsonOutput) {
+  const auto r = run_sfcv("check " + kPlant + " --json --ctl 'AG !(V2 & V4)' --checks reachable");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["semantics"], "iec61131");
+  EXPECT_EQ(j["engine"], "explicit");
+  EXPECT_GT(j["states"].get<int>(), 0);
+  EXPECT_EQ(j["complete"], true);
+  ASSERT_EQ(j["properties"].size(), 2u);
+  EXPECT_EQ(j["properties"][0]["formula"], "AG !(V2 & V4)");
+  EXPECT_EQ(j["properties"][0]["verdict"], "violated");
+  EXPECT_GT(j["properties"][0]["trace"]["steps"].size(), 1u);
+  EXPECT_EQ(j["properties"][1]["check"], "reachable");
+}
+
+TEST(CheckCommand, TraceFormatsAndReplayWithSimulate) {
+  const auto csv = write_temp("", ".csv");
+  auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V2 & V4)' --trace csv --trace-file '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 1) << r.err;
+  const auto sim = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  ASSERT_EQ(sim.exit_code, 0) << sim.out << sim.err;
+  // The last cycle of the replay has both valves open.
+  const auto last = sim.out.substr(sim.out.rfind('\n', sim.out.size() - 2) + 1);
+  EXPECT_NE(last.find("V2=1"), std::string::npos) << sim.out;
+  EXPECT_NE(last.find("V4=1"), std::string::npos) << sim.out;
+
+  r = run_sfcv("check " + kPlant + " --ctl 'AG !(V2 & V4)' --trace vcd");
+  EXPECT_NE(r.out.find("$enddefinitions $end"), std::string::npos);
+  r = run_sfcv("check " + kPlant + " --ctl 'AG !(V2 & V4)' --trace json");
+  EXPECT_NE(r.out.find("\"active_steps\""), std::string::npos);
+}
+
+TEST(CheckCommand, LimitsGiveUnknownNeverHolds) {
+  const auto r = run_sfcv("check " + kPlant + " --max-states 3 --ctl 'AG !(V1 & V3)'");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("unknown"), std::string::npos);
+  EXPECT_EQ(r.out.find(" holds"), std::string::npos) << r.out;
+}
+
+TEST(CheckCommand, BadInputsExitTwo) {
+  auto r = run_sfcv("check " + kPlant + " --ctl 'AG !(V1 & )'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(":1:11: error: expected a formula"), std::string::npos) << r.err;
+  r = run_sfcv("check " + kPlant + " --ctl 'AG !(V1 & V9)'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown name 'V9'"), std::string::npos) << r.err;
+  r = run_sfcv("check " + kPlant + " --engine bdd");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("the BDD engine is not built yet"), std::string::npos);
+  r = run_sfcv("check " + kPlant + " --checks bogus");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown check 'bogus'"), std::string::npos);
+  const auto spec = write_temp("property p AG V1;\n", ".spec");
+  r = run_sfcv("check " + kPlant + " --spec '" + spec + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(spec + ":1:12: error"), std::string::npos) << r.err;
+}
+
+TEST(CheckCommand, SpecFileAssumptionsAndFairness) {
+  const auto spec = write_temp(
+      "-- the plant with physically consistent level sensors\n"
+      "assume !(LIS1plus & LIS1minus) & !(LIS2plus & LIS2minus);\n"
+      "property no_overfill_T1: AG !(V1 & V3);\n"
+      "property t2_overlap: AG !(V2 & V4);\n",
+      ".spec");
+  auto r = run_sfcv("check " + kPlant + " --spec '" + spec + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("no_overfill_T1  holds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("t2_overlap      violated"), std::string::npos) << r.out;
+  r = run_sfcv("check " + kPlant + " --engine auto --ctl 'AG AF s10' --fair s8");
+  EXPECT_NE(r.err.find("using the explicit engine"), std::string::npos);
+  EXPECT_NE(r.exit_code, 2) << r.err;
+}
+
+}  // namespace
+}  // namespace sfcv::test
