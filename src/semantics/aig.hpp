@@ -60,6 +60,7 @@ class Aig {
 
   /// Safety property: `bad` must never hold in a reachable state (AIGER 1.9 B section).
   void add_bad(std::string name, AigLit bad) { bad_.push_back({std::move(name), bad}); }
+  void clear_bad() { bad_.clear(); }
   /// Invariant constraint on inputs and state (AIGER 1.9 C section): runs leave it never.
   void add_constraint(std::string name, AigLit c) { constraints_.push_back({std::move(name), c}); }
   /// Named signals kept for people (outputs, steps), exported as AIGER outputs / comments.
