@@ -62,6 +62,26 @@ AigLit Aig::make_or(const std::vector<AigLit>& lits) {
   return r;
 }
 
+AigLit Aig::cofactor(AigLit root, AigLit var, bool value) {
+  // Rebuild the cone of `root` bottom-up in node order (which is topological).
+  const std::uint32_t top = node_of(root);
+  std::vector<AigLit> image(top + 1);
+  for (std::uint32_t n = 0; n <= top; ++n) {
+    const AigLit self = n * 2;
+    if (self == (var & ~1U)) {
+      image[n] = value ? kTrue : kFalse;
+    } else if (nodes_[n].kind == NodeKind::And) {
+      const Node node = nodes_[n];  // copy: make_and may grow nodes_
+      const AigLit l = image[node_of(node.left)] ^ (node.left & 1U);
+      const AigLit r = image[node_of(node.right)] ^ (node.right & 1U);
+      image[n] = make_and(l, r);
+    } else {
+      image[n] = self;
+    }
+  }
+  return image[top] ^ (root & 1U);
+}
+
 std::vector<bool> Aig::evaluate(const std::vector<bool>& input_values,
                                 const std::vector<bool>& latch_values) const {
   std::vector<bool> v(nodes_.size(), false);

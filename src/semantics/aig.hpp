@@ -66,6 +66,9 @@ class Aig {
   /// Named signals kept for people (outputs, steps), exported as AIGER outputs / comments.
   void add_output(std::string name, AigLit lit) { outputs_.push_back({std::move(name), lit}); }
 
+  /// `root` with latch or input literal `var` (positive) replaced by the constant `value`.
+  AigLit cofactor(AigLit root, AigLit var, bool value);
+
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Input>& inputs() const { return inputs_; }
   const std::vector<Latch>& latches() const { return latches_; }

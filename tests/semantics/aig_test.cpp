@@ -65,3 +65,20 @@ TEST(Aig, BitVectorArithmeticMatchesIntegers) {
 
 }  // namespace
 }  // namespace sfcv::semantics
+
+namespace sfcv::semantics {
+namespace {
+
+TEST(Aig, CofactorSubstitutesAConstant) {
+  Aig aig;
+  const auto a = aig.add_input("a"), b = aig.add_input("b");
+  const auto q = aig.add_latch("q");
+  const auto f = aig.make_or(aig.make_and(q, a), aig.make_and(Aig::make_not(q), b));
+  EXPECT_EQ(aig.cofactor(f, q, true), a);
+  EXPECT_EQ(aig.cofactor(f, q, false), b);
+  EXPECT_EQ(aig.cofactor(Aig::make_not(f), q, true), Aig::make_not(a));
+  EXPECT_EQ(aig.cofactor(f, a, true), aig.make_or(q, aig.make_and(Aig::make_not(q), b)));
+}
+
+}  // namespace
+}  // namespace sfcv::semantics
