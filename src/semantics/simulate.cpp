@@ -1,0 +1,70 @@
+#include "semantics/simulate.hpp"
+
+#include "semantics/iec_system_impl.hpp"
+
+namespace sfcv::semantics {
+
+namespace {
+struct Pick : SuccessorSink {
+  const std::vector<std::int64_t>* valuation = nullptr;
+  bool found = false;
+  std::vector<StateWord> target;
+  std::vector<std::uint32_t> fired;
+  std::string anomaly_message;
+  void successor(const Successor& s) override {
+    if (found || (valuation && !s.condition.holds(*valuation))) return;
+    found = true;
+    target.assign(s.target.begin(), s.target.end());
+    fired.assign(s.fired.begin(), s.fired.end());
+  }
+  void anomaly(const Anomaly& a) override {
+    if (anomaly_message.empty() && valuation && a.condition.holds(*valuation)) anomaly_message = a.message;
+  }
+};
+}  // namespace
+
+std::vector<StateWord> first_initial_state(const TransitionSystem& ts) {
+  Pick p;
+  ts.initial_states(p);
+  return p.target;
+}
+
+SimulationResult simulate(const TransitionSystem& ts, StateView start,
+                          const std::vector<std::vector<std::int64_t>>& inputs) {
+  SimulationResult r;
+  r.states.emplace_back(start.begin(), start.end());
+  // The IEC system follows a full valuation directly: no successor enumeration, so integer
+  // inputs of any range work.
+  if (const auto* iec = dynamic_cast<const iec::Iec61131System*>(&ts)) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      std::vector<StateWord> next;
+      std::vector<std::uint32_t> fired;
+      std::string error;
+      if (!iec->step_once(r.states.back(), inputs[i], next, &fired, &error)) {
+        r.ok = false;
+        r.failed_cycle = i + 1;
+        r.error = error;
+        return r;
+      }
+      r.states.push_back(std::move(next));
+      r.fired.push_back(std::move(fired));
+    }
+    return r;
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    Pick p;
+    p.valuation = &inputs[i];
+    ts.successors(r.states.back(), p);
+    if (!p.found) {
+      r.ok = false;
+      r.failed_cycle = i + 1;
+      r.error = !p.anomaly_message.empty() ? p.anomaly_message : "no successor: the inputs violate an assumption";
+      return r;
+    }
+    r.states.push_back(std::move(p.target));
+    r.fired.push_back(std::move(p.fired));
+  }
+  return r;
+}
+
+}  // namespace sfcv::semantics
