@@ -8,7 +8,7 @@ struct Pick : SuccessorSink {
   bool found = false;
   std::vector<StateWord> target;
   std::vector<std::uint32_t> fired;
-  std::string anomaly;
+  std::string anomaly_message;
   void successor(const Successor& s) override {
     if (found || (valuation && !s.condition.holds(*valuation))) return;
     found = true;
@@ -16,7 +16,7 @@ struct Pick : SuccessorSink {
     fired.assign(s.fired.begin(), s.fired.end());
   }
   void anomaly(const Anomaly& a) override {
-    if (anomaly.empty() && valuation && a.condition.holds(*valuation)) anomaly = a.message;
+    if (anomaly_message.empty() && valuation && a.condition.holds(*valuation)) anomaly_message = a.message;
   }
 };
 }  // namespace
@@ -38,7 +38,7 @@ SimulationResult simulate(const TransitionSystem& ts, StateView start,
     if (!p.found) {
       r.ok = false;
       r.failed_cycle = i + 1;
-      r.error = !p.anomaly.empty() ? p.anomaly : "no successor: the inputs violate an assumption";
+      r.error = !p.anomaly_message.empty() ? p.anomaly_message : "no successor: the inputs violate an assumption";
       return r;
     }
     r.states.push_back(std::move(p.target));
