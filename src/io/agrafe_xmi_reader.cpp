@@ -109,14 +109,21 @@ class Reader {
         if (s == n) index = count;
         ++count;
       }
+      // EMF numbers the elements of many-valued features even when there is one.
+      static const std::set<std::string_view> kMany{
+          "partialGrafcets", "steps",       "transitions", "synchronizations",     "macrosteps",
+          "arcs",            "actionTypes", "actionLinks", "variableDeclarations", "subterm"};
       std::string seg = "@" + std::string(n.name());
-      if (count > 1 || index > 0) seg += "." + std::to_string(index);
+      if (count > 1 || kMany.count(n.name())) seg += "." + std::to_string(index);
       path = "/" + seg + path;
     }
     return "/" + path;
   }
   SourceLocation where(pugi::xml_node n) const {
-    SourceLocation l = at_offset(static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0)));
+    // pugixml gives the offset of the element's name; the element starts at its '<'.
+    auto offset = static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0));
+    if (offset > 0 && offset <= text_.size() && text_[offset - 1] == '<') --offset;
+    SourceLocation l = at_offset(offset);
     l.element_path = n == root_ ? "/" : xmi_path(n);
     return l;
   }
@@ -218,6 +225,7 @@ class Reader {
       }
       if (pou_.find_variable(name)) throw Failure{decl, "variable '" + name + "' is declared twice"};
       var_names_[decl] = name;
+      if (!decl.attribute("variableDeclarationType")) implicit_inputs_.insert(name);
       pou_.variables.push_back(std::move(v));
     }
   }
@@ -508,7 +516,18 @@ class Reader {
     const auto decl = resolve(v, v.attribute("variableDeclaration").value());
     const auto it = var_names_.find(decl);
     if (it == var_names_.end()) throw Failure{v, "an action assigns a step variable or a delay"};
-    const model::Variable* var = pou_.find_variable(it->second);
+    model::Variable* var = nullptr;
+    for (auto& x : pou_.variables)
+      if (x.name == it->second) var = &x;
+    if (var->direction == model::VarDirection::Input && implicit_inputs_.count(var->name)) {
+      // The declaration left its type out (input by default), yet actions assign it: the
+      // designer meant an output (continuous action) or an internal variable (stored action).
+      var->direction = stored ? model::VarDirection::Local : model::VarDirection::Output;
+      implicit_inputs_.erase(var->name);
+      warn(decl, model::Severity::Warning,
+           "variable '" + var->name + "' has no variableDeclarationType (input by default) but an "
+           "action assigns it: read as " + (stored ? "internal" : "output"));
+    }
     if (var->direction == model::VarDirection::Input)
       throw Failure{v, "an action assigns the input '" + var->name + "'"};
     if (!stored && var->type.kind != model::TypeKind::Bool)
@@ -615,6 +634,7 @@ class Reader {
   pugi::xml_node root_;
   model::Pou pou_;
   std::map<pugi::xml_node, std::string> var_names_;
+  std::set<std::string> implicit_inputs_;  ///< declared without variableDeclarationType
   std::map<pugi::xml_node, pugi::xml_node> step_vars_;
   std::map<pugi::xml_node, Delay> delay_vars_;
   std::map<pugi::xml_node, int> chart_of_;
