@@ -770,10 +770,11 @@ class Parser {
     bool stored;
   };
 
-  bool step_exists_anywhere(std::string_view step) const {
+  int charts_with_step(std::string_view step) const {
+    int n = 0;
     for (const auto& c : pou_.charts)
-      if (c.find_step(step)) return true;
-    return false;
+      if (c.find_step(step)) ++n;
+    return n;
   }
 
   void check() {
@@ -813,9 +814,15 @@ class Parser {
     }
     for (const auto& r : names_) {
       if (pou_.find_variable(r.name)) continue;
-      if (r.name.size() > 1 && (r.name[0] == 'X' || r.name[0] == 'x') &&
-          step_exists_anywhere(std::string_view(r.name).substr(1)))
+      const int steps = r.name.size() > 1 && (r.name[0] == 'X' || r.name[0] == 'x')
+                            ? charts_with_step(std::string_view(r.name).substr(1))
+                            : 0;
+      if (steps == 1) continue;
+      if (steps > 1) {
+        error(r.where, "step variable '" + r.name + "' is ambiguous: several partial grafcets have a step '" +
+                           r.name.substr(1) + "'");
         continue;
+      }
       error(r.where, "unknown name '" + r.name + "' (not a declared variable nor a step variable X<step>)");
     }
     for (const auto& [v, stored] : var_refs_) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "io/g7_writer.hpp"
@@ -381,6 +383,35 @@ TEST(G7Errors, LocatedAtLineAndColumn) {
             "1:18: the expansion 'E' of macro-step 'M' needs an entry step and an exit step");
   EXPECT_EQ(first_error("step 1;"),
             "1:1: expected 'project', 'input', 'output', 'internal' or 'grafcet', found 'step'");
+}
+
+TEST(G7Errors, AmbiguousStepVariable) {
+  EXPECT_EQ(first_error("grafcet G { step 1 initial; transition 1 -> 1 when X1; }\n"
+                        "grafcet H { step 1 initial; }"),
+            "1:52: step variable 'X1' is ambiguous: several partial grafcets have a step '1'");
+  // A declared variable named X1 is the variable.
+  const auto r = load("input X1;\ngrafcet G { step 1 initial; transition 1 -> 1 when X1; }\n"
+                      "grafcet H { step 1 initial; }");
+  EXPECT_TRUE(r.ok()) << messages(r);
+}
+
+TEST(G7, TheDocumentationExampleLoads) {
+  std::ifstream in(test::source_path("docs/formats.md"));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string md = ss.str();
+  const auto section = md.find("### A complete example");
+  ASSERT_NE(section, std::string::npos);
+  const auto begin = md.find("```\n", section) + 4;
+  const auto end = md.find("```", begin);
+  const auto r = load(md.substr(begin, end - begin));
+  ASSERT_TRUE(r.ok()) << messages(r);
+  const auto& p = pou_of(r);
+  EXPECT_EQ(p.charts.size(), 2u);
+  EXPECT_EQ(p.forcing_orders.size(), 1u);
+  EXPECT_EQ(p.stored_actions.size(), 1u);
+  ASSERT_TRUE(p.associations.at(1).condition);
+  round_trip(md.substr(begin, end - begin));
 }
 
 TEST(G7Errors, SeveralErrorsAreAllReportedAndNoModelIsReturned) {
