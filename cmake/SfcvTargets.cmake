@@ -51,8 +51,9 @@ function(sfcv_add_unit_tests layer dir)
   target_include_directories(test_${layer} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_link_libraries(test_${layer} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
   target_compile_definitions(test_${layer} PRIVATE
-      SFCV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" SFCV_BINARY="$<TARGET_FILE:sfcv>")
+      SFCV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" SFCV_BINARY="$<TARGET_FILE:sfcv>"
+      SFCV_GEN="$<TARGET_FILE:sfcv-gen>")
   sfcv_apply_flags(test_${layer})
-  add_dependencies(test_${layer} sfcv)
+  add_dependencies(test_${layer} sfcv sfcv-gen)
   gtest_discover_tests(test_${layer} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
 endfunction()

@@ -1,0 +1,28 @@
+#pragma once
+// Scalable chart families for benchmarks and tests, emitted as text in the formats sfcv reads.
+
+#include <cstdint>
+#include <string>
+
+namespace sfcv::bench {
+
+/// N parallel branches (one simultaneous divergence), each a two-step loop A_i <-> B_i with
+/// output O_i active in B_i. With `selector`, one integer input `sel` (0..N-1) picks the single
+/// branch that may toggle in a cycle (the synchronous analogue of N interleaved toggles:
+/// 2^N + 1 states, N + 1 successors each). Without it, branch i toggles on its own Boolean input
+/// t_i (2^N + 1 states, 2^N successors each: a family for symbolic engines).
+std::string parallel_branches_iec(std::uint32_t n, bool selector);
+
+/// The seed's chemical plant generalised to N reactors sharing one feed valve pair per reactor;
+/// `flawed` keeps the original flaw (the emptying step does not wait for the filling branch),
+/// so that AG !(V2_i & V4_i) is violated for every i.
+std::string tanks_iec(std::uint32_t n, bool flawed);
+
+/// N nested charts: action A_k of level k holds the chart of level k+1, each a two-step loop.
+std::string nested_charts_iec(std::uint32_t n);
+
+/// A random well-formed chart with `steps` steps (sequences, selection and simultaneous
+/// branches) over `inputs` Boolean inputs, reproducible from `seed`.
+std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed);
+
+}  // namespace sfcv::bench

@@ -1,0 +1,296 @@
+#include "engine/external/circuit_export.hpp"
+
+#include <stdexcept>
+
+#include "engine/external/identifiers.hpp"
+
+namespace sfcv::engine {
+
+using semantics::Aig;
+using semantics::AigLit;
+
+namespace {
+
+// Names of every node of the circuit in a target language.
+struct Naming {
+  std::vector<std::string> node;  ///< per node: identifier, "" for the constant
+  IdentifierTable ids;
+
+  Naming(const Aig& aig, std::unordered_set<std::string> reserved, const std::string& input_prefix)
+      : node(aig.nodes().size()), ids(std::move(reserved)) {
+    for (const auto& in : aig.inputs()) node[Aig::node_of(in.literal)] = ids.get(input_prefix, in.name);
+    for (const auto& l : aig.latches()) node[Aig::node_of(l.current)] = ids.get("", l.name);
+    for (std::size_t n = 1; n < aig.nodes().size(); ++n)
+      if (aig.nodes()[n].kind == Aig::NodeKind::And) node[n] = ids.get("g", std::to_string(n));
+  }
+
+  std::string lit(AigLit l, const char* t, const char* f, const char* neg) const {
+    if (l == Aig::kFalse) return f;
+    if (l == Aig::kTrue) return t;
+    return (Aig::is_negated(l) ? std::string(neg) : std::string()) + node[Aig::node_of(l)];
+  }
+};
+
+const std::unordered_set<std::string> kNusmvReserved = {
+    "MODULE", "DEFINE", "MDEFINE", "CONSTANTS", "VAR", "IVAR", "FROZENVAR", "INIT", "TRANS",
+    "INVAR", "SPEC", "CTLSPEC", "LTLSPEC", "PSLSPEC", "COMPUTE", "NAME", "INVARSPEC", "FAIRNESS",
+    "JUSTICE", "COMPASSION", "ISA", "ASSIGN", "CONSTRAINT", "SIMPWFF", "CTLWFF", "LTLWFF",
+    "PSLWFF", "COMPWFF", "IN", "MIN", "MAX", "MIRROR", "PRED", "PREDICATES", "process", "array",
+    "of", "boolean", "integer", "real", "word", "word1", "bool", "signed", "unsigned", "extend",
+    "resize", "sizeof", "uwconst", "swconst", "EX", "AX", "EF", "AF", "EG", "AG", "E", "F", "O",
+    "G", "H", "X", "Y", "Z", "A", "U", "S", "V", "T", "BU", "EBF", "ABF", "EBG", "ABG", "case",
+    "esac", "mod", "next", "init", "union", "in", "xor", "xnor", "self", "TRUE", "FALSE", "count",
+    "abs", "max", "min", "toint", "floor", "running"};
+
+const std::unordered_set<std::string> kPromelaReserved = {
+    "active", "assert", "atomic", "bit", "bool", "break", "byte", "chan", "d_step", "D_proctype",
+    "do", "else", "empty", "enabled", "fi", "full", "goto", "hidden", "if", "init", "int", "len",
+    "mtype", "nempty", "never", "nfull", "od", "of", "pc_value", "printf", "priority",
+    "proctype", "provided", "run", "short", "skip", "timeout", "typedef", "unless", "unsigned",
+    "xr", "xs", "true", "false", "local", "show", "c_code", "c_decl", "c_expr", "c_state",
+    "c_track", "ltl", "select", "for", "in", "eval", "trace", "notrace", "inline", "np_"};
+
+// The identifier of each circuit output: the latch's own name when the output is exactly a
+// latch (a variable, a step's ready bit), else a name of its own for its DEFINE.
+std::vector<std::string> output_identifiers(const Aig& aig, Naming& names) {
+  std::vector<std::string> ids;
+  for (const auto& o : aig.outputs()) {
+    const auto& n = aig.nodes()[Aig::node_of(o.literal)];
+    if (!Aig::is_negated(o.literal) && n.kind == Aig::NodeKind::Latch &&
+        aig.latches()[n.index].name == o.name)
+      ids.push_back(names.node[Aig::node_of(o.literal)]);
+    else
+      ids.push_back(names.ids.get("", o.name));
+  }
+  return ids;
+}
+
+// Replaces each {name} in `text` by the identifier of the circuit output called name.
+std::string resolve_outputs(const std::string& text, const Aig& aig,
+                            const std::vector<std::string>& output_ids) {
+  std::string r;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '{') {
+      r += text[i];
+      continue;
+    }
+    const auto close = text.find('}', i);
+    const std::string name = text.substr(i + 1, close - i - 1);
+    std::string replacement = "FALSE";
+    for (std::size_t o = 0; o < aig.outputs().size(); ++o)
+      if (aig.outputs()[o].name == name) replacement = output_ids[o];
+    r += replacement;
+    i = close;
+  }
+  return r;
+}
+
+bool depends_on_inputs(const Aig& aig, AigLit root) {
+  std::vector<AigLit> stack{root};
+  std::vector<bool> seen(aig.nodes().size(), false);
+  while (!stack.empty()) {
+    const auto n = Aig::node_of(stack.back());
+    stack.pop_back();
+    if (seen[n]) continue;
+    seen[n] = true;
+    const auto& node = aig.nodes()[n];
+    if (node.kind == Aig::NodeKind::Input) return true;
+    if (node.kind == Aig::NodeKind::And) {
+      stack.push_back(node.left);
+      stack.push_back(node.right);
+    }
+  }
+  return false;
+}
+
+void comment_lines(std::ostream& out, const std::vector<std::string>& lines, const char* prefix) {
+  for (const auto& l : lines) out << prefix << l << "\n";
+}
+
+}  // namespace
+
+void write_nusmv(std::ostream& out, const CircuitExport& m) {
+  const Aig& aig = m.aig;
+  Naming names(aig, kNusmvReserved, "in_");
+  auto lit = [&names](AigLit l) { return names.lit(l, "TRUE", "FALSE", "!"); };
+  comment_lines(out, m.header, "-- ");
+  out << "MODULE main\n";
+  if (!aig.inputs().empty()) out << "IVAR\n";
+  for (std::size_t i = 0; i < aig.inputs().size(); ++i)
+    out << "  " << names.node[Aig::node_of(aig.inputs()[i].literal)] << " : boolean;"
+        << (i < m.input_comments.size() ? "  -- " + m.input_comments[i] : "") << "\n";
+  if (!aig.latches().empty()) out << "VAR\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    out << "  " << names.node[Aig::node_of(aig.latches()[l].current)] << " : boolean;"
+        << (l < m.latch_comments.size() ? "  -- " + m.latch_comments[l] : "") << "\n";
+  bool has_gates = false;
+  for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
+    has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
+  if (has_gates || !aig.outputs().empty()) out << "DEFINE\n";
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
+    const auto& node = aig.nodes()[n];
+    if (node.kind == Aig::NodeKind::And)
+      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right)
+          << ";\n";
+  }
+  IdentifierTable& ids = names.ids;
+  const auto output_ids = output_identifiers(aig, names);
+  for (std::size_t o = 0; o < aig.outputs().size(); ++o)
+    if (output_ids[o] != names.node[Aig::node_of(aig.outputs()[o].literal)] ||
+        Aig::is_negated(aig.outputs()[o].literal))
+      out << "  " << output_ids[o] << " := " << lit(aig.outputs()[o].literal) << ";  -- "
+          << aig.outputs()[o].name << "\n";
+  if (!aig.latches().empty()) out << "ASSIGN\n";
+  for (const auto& l : aig.latches()) {
+    const auto& id = names.node[Aig::node_of(l.current)];
+    out << "  init(" << id << ") := " << (l.initial ? "TRUE" : "FALSE") << ";\n";
+    out << "  next(" << id << ") := " << lit(l.next) << ";\n";
+  }
+  for (const auto& c : aig.constraints())
+    out << "TRANS " << lit(c.literal) << "  -- assumption " << c.name << "\n";
+  for (const auto& b : aig.bad())
+    out << "INVARSPEC NAME " << ids.fresh("", b.name) << " := !(" << lit(b.literal) << ");\n";
+  for (const auto& [name, formula] : m.ctl)
+    out << "CTLSPEC NAME " << ids.fresh("", name) << " := "
+        << resolve_outputs(formula, aig, output_ids) << ";\n";
+}
+
+void write_casmv(std::ostream& out, const CircuitExport& m) {
+  Aig aig = m.aig;  // cofactors extend the circuit
+  // Set and reset conditions of each latch, as in the seed's Figure 5.
+  std::vector<std::pair<AigLit, AigLit>> set_reset;
+  for (const auto& l : m.aig.latches())
+    set_reset.emplace_back(aig.cofactor(l.next, l.current, false),
+                           Aig::make_not(aig.cofactor(l.next, l.current, true)));
+  Naming names(aig, {"module", "input", "output", "init", "next", "default", "in", "case",
+                     "assert", "using", "prove", "boolean", "if", "else", "switch", "for",
+                     "G", "F", "X", "U", "SPEC"},
+               "in_");
+  auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "~"); };
+  comment_lines(out, m.header, "-- ");
+  out << "module main()\n{\n";
+  for (std::size_t i = 0; i < aig.inputs().size(); ++i)
+    out << "  input " << names.node[Aig::node_of(aig.inputs()[i].literal)] << " : boolean;"
+        << (i < m.input_comments.size() ? "  -- " + m.input_comments[i] : "") << "\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    out << "  " << names.node[Aig::node_of(aig.latches()[l].current)] << " : boolean;"
+        << (l < m.latch_comments.size() ? "  -- " + m.latch_comments[l] : "") << "\n";
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n)
+    if (aig.nodes()[n].kind == Aig::NodeKind::And)
+      out << "  " << names.node[n] << " : boolean;\n";
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
+    const auto& node = aig.nodes()[n];
+    if (node.kind == Aig::NodeKind::And)
+      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right)
+          << ";\n";
+  }
+  for (std::size_t i = 0; i < aig.latches().size(); ++i) {
+    const auto& l = aig.latches()[i];
+    const auto& id = names.node[Aig::node_of(l.current)];
+    out << "  init(" << id << ") := " << (l.initial ? 1 : 0) << ";\n";
+    out << "  default next(" << id << ") := " << id << ";\n  in case {\n";
+    if (set_reset[i].first != Aig::kFalse)
+      out << "    ~" << id << " & " << lit(set_reset[i].first) << " : next(" << id
+          << ") := 1;\n";
+    if (set_reset[i].second != Aig::kFalse)
+      out << "    " << id << " & " << lit(set_reset[i].second) << " : next(" << id
+          << ") := 0;\n";
+    out << "  }\n";
+  }
+  IdentifierTable& ids = names.ids;
+  for (const auto& c : aig.constraints())
+    out << "  " << ids.get("assume_", c.name) << " : assert G " << lit(c.literal) << ";\n"
+        << "  assume " << ids.get("assume_", c.name) << ";\n";
+  for (const auto& b : aig.bad())
+    out << "  " << ids.get("", b.name) << " : assert G ~" << lit(b.literal) << ";\n";
+  std::vector<std::string> output_exprs;
+  for (const auto& o : aig.outputs()) output_exprs.push_back("(" + lit(o.literal) + ")");
+  for (const auto& [name, formula] : m.ctl)
+    out << "  SPEC " << resolve_outputs(formula, aig, output_exprs) << ";  -- " << name << "\n";
+  out << "}\n";
+}
+
+void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std::size_t> only_bad) {
+  const Aig& aig = m.aig;
+  // The assertion is checked on a state before its inputs are chosen.
+  for (const auto& b : aig.bad())
+    if (depends_on_inputs(aig, b.literal))
+      throw std::invalid_argument("write_promela: invariant " + b.name + " reads inputs");
+  auto reserved = kPromelaReserved;
+  for (const char* internal : {"assumed", "cycle", "end_excluded"}) reserved.insert(internal);
+  for (std::size_t l = 0; l < aig.latches().size(); ++l) reserved.insert("next_" + std::to_string(l));
+  Naming names(aig, std::move(reserved), "in_");
+  auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "!"); };
+  out << "/*\n";
+  comment_lines(out, m.header, " * ");
+  out << " */\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    out << "bit " << names.node[Aig::node_of(aig.latches()[l].current)] << " = "
+        << (aig.latches()[l].initial ? 1 : 0) << ";"
+        << (l < m.latch_comments.size() ? "  /* " + m.latch_comments[l] + " */" : "") << "\n";
+  // Inputs, gates and next values are recomputed every cycle: hidden keeps them out of the
+  // state vector, so Spin's states are exactly the circuit's latch valuations (Spin cannot
+  // hide a bit, hence bytes).
+  for (std::size_t i = 0; i < aig.inputs().size(); ++i)
+    out << "hidden byte " << names.node[Aig::node_of(aig.inputs()[i].literal)] << ";"
+        << (i < m.input_comments.size() ? "  /* " + m.input_comments[i] + " */" : "") << "\n";
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n)
+    if (aig.nodes()[n].kind == Aig::NodeKind::And) out << "hidden byte " << names.node[n] << ";\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
+  if (!aig.constraints().empty()) out << "hidden byte assumed;\n";
+  out << "\nactive proctype cycle()\n{\n  do\n  :: atomic {\n";
+  for (std::size_t b = 0; b < aig.bad().size(); ++b)
+    if (!only_bad || *only_bad == b) {
+      // The bad literal may read gates; evaluate them on the current state first.
+      out << "       d_step {\n";
+      for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
+        const auto& node = aig.nodes()[n];
+        if (node.kind == Aig::NodeKind::And)
+          out << "         " << names.node[n] << " = " << lit(node.left) << " && "
+              << lit(node.right) << ";\n";
+      }
+      out << "       }\n";
+      break;
+    }
+  for (std::size_t b = 0; b < aig.bad().size(); ++b)
+    if (!only_bad || *only_bad == b)
+      out << "       assert(!(" << lit(aig.bad()[b].literal) << "));  /* " << aig.bad()[b].name
+          << " */\n";
+  for (const auto& in : aig.inputs()) {
+    const auto& id = names.node[Aig::node_of(in.literal)];
+    out << "       if :: " << id << " = 0 :: " << id << " = 1 fi;\n";
+  }
+  out << "       d_step {\n";
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
+    const auto& node = aig.nodes()[n];
+    if (node.kind == Aig::NodeKind::And)
+      out << "         " << names.node[n] << " = " << lit(node.left) << " && " << lit(node.right)
+          << ";\n";
+  }
+  if (!aig.constraints().empty()) {
+    // A jump may not leave a d_step: decide inside, cut the run outside.
+    out << "         assumed = ";
+    for (std::size_t c = 0; c < aig.constraints().size(); ++c)
+      out << (c ? " && " : "") << lit(aig.constraints()[c].literal);
+    out << ";\n       }\n"
+           "       if :: assumed -> skip :: else -> goto end_excluded fi;\n"
+           "       d_step {\n";
+  }
+  out << "         printf(\"@cycle";
+  for (const auto& in : aig.inputs()) out << " " << in.name << "=%d";
+  out << "\\n\"";
+  for (const auto& in : aig.inputs()) out << ", " << names.node[Aig::node_of(in.literal)];
+  out << ");\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    out << "         next_" << l << " = " << lit(aig.latches()[l].next) << ";\n";
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    out << "         " << names.node[Aig::node_of(aig.latches()[l].current)] << " = next_" << l
+        << ";\n";
+  out << "       }\n     }\n  od;\n";
+  if (!aig.constraints().empty())
+    out << "end_excluded:  /* an assumption excludes these inputs: the run is cut here */\n"
+           "  false\n";
+  out << "}\n";
+}
+
+}  // namespace sfcv::engine

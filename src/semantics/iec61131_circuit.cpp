@@ -1,0 +1,736 @@
+// The scan cycle of iec_cycle.cpp / iec_machine.cpp, executed symbolically: every value is a
+// 64-bit two's-complement bit vector over the Aig (the explicit machine computes in int64), every
+// branch of the cycle is taken under its path condition, and a range error anywhere on a path
+// raises range_error under that path. The structure follows the explicit machine function by
+// function so that the two can be compared line by line.
+
+#include "semantics/iec61131_circuit.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+#include <optional>
+
+#include "semantics/iec_program.hpp"
+#include "semantics/iec_system_impl.hpp"
+
+namespace sfcv::semantics {
+
+namespace iec {
+namespace {
+
+constexpr std::uint32_t kWidth = 64;
+using Value = BitVector;  // kWidth bits, signed
+
+class SymbolicMachine {
+ public:
+  SymbolicMachine(const Program& p, TransitionCircuit& out) : p_(p), c_(out), aig_(out.aig) {}
+
+  void build(StateView initial_state);
+
+ private:
+  // -------------------------------------------------------------------------- values
+  Value constant(std::int64_t k) const { return bv_constant(k, kWidth); }
+  Value from_bool(AigLit b) const {
+    Value v = bv_constant(0, kWidth);
+    v[0] = b;
+    return v;
+  }
+  AigLit truth(const Value& v) { return aig_.make_or(std::vector<AigLit>(v.begin(), v.end())); }
+  AigLit equal(const Value& a, const Value& b) { return bv_equal(aig_, a, b); }
+  AigLit less(const Value& a, const Value& b) { return bv_less_signed(aig_, a, b); }
+  Value mux(AigLit c, const Value& t, const Value& e) { return bv_mux(aig_, c, t, e); }
+  Value min(const Value& a, const Value& b) { return mux(less(a, b), a, b); }
+  Value max(const Value& a, const Value& b) { return mux(less(a, b), b, a); }
+
+  /// a + b, raising a range error on signed 64-bit overflow (as __builtin_add_overflow).
+  Value add(const Value& a, const Value& b, AigLit guard) {
+    Value r = bv_add(aig_, a, b);
+    const AigLit sa = a.back(), sb = b.back(), sr = r.back();
+    // Overflow: both operands have the same sign and the result the other one.
+    raise(guard, aig_.make_and(aig_.make_xnor(sa, sb), aig_.make_xor(sa, sr)));
+    return r;
+  }
+  Value sub(const Value& a, const Value& b, AigLit guard) {
+    Value r = bv_sub(aig_, a, b);
+    const AigLit sa = a.back(), sb = b.back(), sr = r.back();
+    raise(guard, aig_.make_and(aig_.make_xor(sa, sb), aig_.make_xor(sa, sr)));
+    return r;
+  }
+  Value neg(const Value& a, AigLit guard) {
+    raise(guard, equal(a, constant(std::numeric_limits<std::int64_t>::min())));
+    return bv_neg(aig_, a);
+  }
+  /// a * k for a constant k, by shifts and adds with overflow checks.
+  Value mul_constant(const Value& a, std::int64_t k, AigLit guard) {
+    if (k == 0) return constant(0);
+    if (k == std::numeric_limits<std::int64_t>::min())
+      throw CircuitUnsupported("multiplication by the smallest 64-bit integer");
+    const bool negative = k < 0;
+    auto magnitude = static_cast<std::uint64_t>(negative ? -k : k);
+    Value acc = constant(0);
+    Value shifted = a;
+    while (magnitude) {
+      if (magnitude & 1U) acc = add(acc, shifted, guard);
+      magnitude >>= 1;
+      if (magnitude) {
+        // shifted * 2 overflows when its two top bits differ.
+        raise(guard, aig_.make_xor(shifted[kWidth - 1], shifted[kWidth - 2]));
+        Value doubled(kWidth);
+        doubled[0] = Aig::kFalse;
+        for (std::uint32_t i = 1; i < kWidth; ++i) doubled[i] = shifted[i - 1];
+        shifted = doubled;
+      }
+    }
+    return negative ? neg(acc, guard) : acc;
+  }
+  static std::optional<std::int64_t> as_constant(const Value& v) {
+    std::uint64_t r = 0;
+    for (std::uint32_t i = 0; i < kWidth; ++i) {
+      if (v[i] == Aig::kTrue) r |= 1ULL << i;
+      else if (v[i] != Aig::kFalse) return std::nullopt;
+    }
+    return static_cast<std::int64_t>(r);
+  }
+
+  void raise(AigLit guard, AigLit condition) {
+    c_.range_error = aig_.make_or(c_.range_error, aig_.make_and(guard, condition));
+  }
+
+  // ------------------------------------------------------------------------- state
+  Value decode(const BitVector& encoded, std::int64_t lo) {
+    return bv_add(aig_, bv_resize(encoded, kWidth, false), constant(lo));
+  }
+  BitVector encode(const Value& v, std::uint32_t field) {
+    const auto& f = p_.layout.fields()[field];
+    const Value shifted = bv_sub(aig_, v, constant(f.lo));
+    return BitVector(shifted.begin(), shifted.begin() + f.width);
+  }
+  Value input_value(std::uint32_t input) { return input_values_[input]; }
+
+  AigLit cur_truth(std::uint32_t f) { return truth(cur_[f]); }
+  AigLit nxt_truth(std::uint32_t f) { return truth(nxt_[f]); }
+
+  AigLit chart_active_cur(std::uint32_t chart) {
+    const auto pa = p_.charts[chart].parent_action;
+    return pa == kNone ? Aig::kTrue : cur_truth(p_.actions[static_cast<std::size_t>(pa)].active);
+  }
+  AigLit step_active_cur(std::uint32_t step) {
+    const auto& s = p_.steps[step];
+    return aig_.make_and(cur_truth(s.ready), chart_active_cur(s.chart));
+  }
+  AigLit step_active_next(std::uint32_t step) {
+    const auto& s = p_.steps[step];
+    const auto pa = p_.charts[s.chart].parent_action;
+    const AigLit parent =
+        pa == kNone ? Aig::kTrue : nxt_truth(p_.actions[static_cast<std::size_t>(pa)].active);
+    return aig_.make_and(nxt_truth(s.ready), parent);
+  }
+
+  // ------------------------------------------------------------------ expressions
+  Value eval(std::uint32_t index, AigLit guard);
+  AigLit eval_truth(std::uint32_t index, AigLit guard) { return truth(eval(index, guard)); }
+
+  // ------------------------------------------------------------------- statements
+  void assign(std::uint32_t field, const Value& v, AigLit guard) {
+    raise(guard, aig_.make_or(less(v, constant(p_.field_lo[field])),
+                              less(constant(p_.field_hi[field]), v)));
+    nxt_[field] = mux(guard, v, nxt_[field]);
+  }
+  void set(std::uint32_t field, const Value& v, AigLit guard) {
+    nxt_[field] = mux(guard, v, nxt_[field]);
+  }
+  void set_bool(std::uint32_t field, AigLit b, AigLit guard) { set(field, from_bool(b), guard); }
+  void exec_block(Block b, AigLit guard) {
+    for (std::uint32_t i = 0; i < b.count; ++i)
+      exec_stmt(p_.stmts[p_.block_items[b.first + i]], guard);
+  }
+  void exec_stmt(const Stmt& s, AigLit guard);
+  void fb_call(const Stmt& s, AigLit guard);
+
+  // ----------------------------------------------------------------------- timers
+  AigLit timer_expired(const Timer& t, const Value& v) {
+    if (p_.options.time == TimeMode::Abstract) return equal(v, constant(2));
+    // (v - 1) * cycle >= duration, v != 0  <=>  v >= max(1, 1 + ceil(duration / cycle))
+    const std::int64_t c = p_.options.cycle_ms;
+    const std::int64_t d = t.duration_ms;
+    const std::int64_t need = d <= 0 ? 1 : 1 + (d + c - 1) / c;
+    return aig_.make_not(less(v, constant(need)));
+  }
+  Value timer_next(const Timer& t, AigLit run, AigLit restart) {
+    const Value v = nxt_[t.field];
+    const AigLit idle = equal(v, constant(0));
+    Value running;
+    if (p_.options.time == TimeMode::Abstract) {
+      const Value start = constant(t.duration_ms <= 0 ? 2 : 1);
+      const AigLit timeout = truth(input_value(static_cast<std::uint32_t>(t.timeout_input)));
+      const Value advanced = mux(equal(v, constant(2)), constant(2),
+                                 mux(timeout, constant(2), constant(1)));
+      running = mux(aig_.make_or(idle, restart), start, advanced);
+    } else {
+      const Value bumped = min(bv_add(aig_, v, constant(1)), constant(t.max_value));
+      running = mux(aig_.make_or(idle, restart), constant(1), bumped);
+    }
+    return mux(run, running, constant(0));
+  }
+
+  // -------------------------------------------------------------------- the cycle
+  void cycle_pou(const Pou& pou, AigLit guard);
+  void fire_chart(const Chart& c, AigLit guard);
+  void fire(const Transition& t, AigLit when);
+  void update_pou(const Pou& pou, AigLit guard);
+  void step_times(const Pou& pou);
+
+  const Program& p_;
+  TransitionCircuit& c_;
+  Aig& aig_;
+  std::vector<Value> cur_, nxt_, input_values_;
+  std::vector<AigLit> consumed_, entered_, left_;
+};
+
+Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
+  const Node& n = p_.nodes[index];
+  const std::uint32_t* kid = p_.kids.data() + n.first;
+  switch (n.op) {
+    case Op::Const: return constant(n.k);
+    case Op::Field: return nxt_[n.a];
+    case Op::Input: return input_value(n.a);
+    case Op::InputCmp: {
+      const Value x = input_value(n.a), k = constant(n.k);
+      AigLit r = Aig::kFalse;
+      switch (n.cmp) {
+        case Op::Eq: r = equal(x, k); break;
+        case Op::Ne: r = aig_.make_not(equal(x, k)); break;
+        case Op::Lt: r = less(x, k); break;
+        case Op::Le: r = aig_.make_not(less(k, x)); break;
+        case Op::Gt: r = less(k, x); break;
+        default: r = aig_.make_not(less(x, k)); break;
+      }
+      return from_bool(r);
+    }
+    case Op::StepX: return from_bool(step_active_cur(n.a));
+    case Op::StepT: {
+      const auto& s = p_.steps[n.a];
+      const Value t = mul_constant(cur_[static_cast<std::size_t>(s.t_field)],
+                                   p_.options.cycle_ms, guard);
+      return mux(cur_truth(s.ready), t, constant(0));
+    }
+    case Op::StepTCmp: {
+      const auto& s = p_.steps[n.a];
+      const AigLit r =
+          aig_.make_not(less(cur_[static_cast<std::size_t>(s.t_field)], constant(n.k)));
+      return from_bool(n.negate ? aig_.make_not(r) : r);
+    }
+    case Op::TimerQ: return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
+    case Op::TimerET: {
+      const auto& fb = p_.fbs[n.a];
+      if (fb.timer == kNone) return constant(0);
+      const Value v = nxt_[p_.timers[static_cast<std::size_t>(fb.timer)].field];
+      const Value elapsed = mul_constant(bv_sub(aig_, v, constant(1)), p_.options.cycle_ms, guard);
+      return mux(equal(v, constant(0)), constant(0), min(elapsed, constant(fb.pt_ms)));
+    }
+    case Op::Not: return from_bool(aig_.make_not(eval_truth(kid[0], guard)));
+    case Op::Neg: return neg(eval(kid[0], guard), guard);
+    case Op::And: {
+      // Short-circuit as the explicit machine: kid i is evaluated only if kids before it held.
+      AigLit all = Aig::kTrue;
+      for (std::uint32_t i = 0; i < n.count; ++i)
+        all = aig_.make_and(all, eval_truth(kid[i], aig_.make_and(guard, all)));
+      return from_bool(all);
+    }
+    case Op::Or: {
+      AigLit any = Aig::kFalse;
+      for (std::uint32_t i = 0; i < n.count; ++i)
+        any = aig_.make_or(any, eval_truth(kid[i], aig_.make_and(guard, aig_.make_not(any))));
+      return from_bool(any);
+    }
+    case Op::Xor: {
+      AigLit r = Aig::kFalse;
+      for (std::uint32_t i = 0; i < n.count; ++i) r = aig_.make_xor(r, eval_truth(kid[i], guard));
+      return from_bool(r);
+    }
+    case Op::Add: {
+      const Value x = eval(kid[0], guard);
+      return add(x, eval(kid[1], guard), guard);
+    }
+    case Op::Sub: {
+      const Value x = eval(kid[0], guard);
+      return sub(x, eval(kid[1], guard), guard);
+    }
+    case Op::Mul: {
+      const Value x = eval(kid[0], guard);
+      const Value y = eval(kid[1], guard);
+      if (auto k = as_constant(y)) return mul_constant(x, *k, guard);
+      if (auto k = as_constant(x)) return mul_constant(y, *k, guard);
+      throw CircuitUnsupported("a product of two variables");
+    }
+    case Op::Div:
+    case Op::Mod: {
+      const Value x = eval(kid[0], guard);
+      const Value y = eval(kid[1], guard);
+      const auto kx = as_constant(x), ky = as_constant(y);
+      if (kx && ky) {
+        if (*ky == 0 || (*kx == std::numeric_limits<std::int64_t>::min() && *ky == -1)) {
+          raise(guard, Aig::kTrue);
+          return constant(0);
+        }
+        return constant(n.op == Op::Div ? *kx / *ky : *kx % *ky);
+      }
+      throw CircuitUnsupported(n.op == Op::Div ? "a division of variables"
+                                               : "a MOD of variables");
+    }
+    case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: {
+      const Value x = eval(kid[0], guard);
+      const Value y = eval(kid[1], guard);
+      AigLit r = Aig::kFalse;
+      switch (n.op) {
+        case Op::Eq: r = equal(x, y); break;
+        case Op::Ne: r = aig_.make_not(equal(x, y)); break;
+        case Op::Lt: r = less(x, y); break;
+        case Op::Le: r = aig_.make_not(less(y, x)); break;
+        case Op::Gt: r = less(y, x); break;
+        default: r = aig_.make_not(less(x, y)); break;
+      }
+      return from_bool(r);
+    }
+  }
+  return constant(0);
+}
+
+void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
+  switch (s.op) {
+    case SOp::Assign: assign(s.target, eval(s.expr, guard), guard); return;
+    case SOp::If: {
+      AigLit rest = guard;
+      for (std::uint32_t i = 0; i < s.arm_count; ++i) {
+        const auto& arm = p_.if_arms[s.arm_first + i];
+        const AigLit c = eval_truth(arm.cond, rest);
+        exec_block(arm.body, aig_.make_and(rest, c));
+        rest = aig_.make_and(rest, aig_.make_not(c));
+      }
+      exec_block(s.else_body, rest);
+      return;
+    }
+    case SOp::Case: {
+      const Value sel = eval(s.expr, guard);
+      AigLit rest = guard;
+      for (std::uint32_t i = 0; i < s.arm_count; ++i) {
+        const auto& arm = p_.case_arms[s.arm_first + i];
+        AigLit match = Aig::kFalse;
+        for (std::uint32_t l = 0; l < arm.label_count; ++l) {
+          const auto& lab = p_.case_labels[arm.label_first + l];
+          match = aig_.make_or(match, aig_.make_and(aig_.make_not(less(sel, constant(lab.lo))),
+                                                    aig_.make_not(less(constant(lab.hi), sel))));
+        }
+        exec_block(arm.body, aig_.make_and(rest, match));
+        rest = aig_.make_and(rest, aig_.make_not(match));
+      }
+      exec_block(s.else_body, rest);
+      return;
+    }
+    case SOp::FbCall: fb_call(s, guard); return;
+  }
+}
+
+void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
+  const Fb& fb = p_.fbs[s.target];
+  auto arg = [&](std::int32_t node) {
+    return node == kNone ? constant(0) : eval(static_cast<std::uint32_t>(node), guard);
+  };
+  auto field = [](std::int32_t f) { return static_cast<std::uint32_t>(f); };
+  const auto q = field(fb.q);
+  switch (fb.kind) {
+    case model::StandardFb::R_TRIG:
+    case model::StandardFb::F_TRIG: {
+      const AigLit clk = truth(arg(s.arg1));
+      const AigLit mem = nxt_truth(field(fb.mem));
+      if (fb.kind == model::StandardFb::R_TRIG) {
+        set_bool(q, aig_.make_and(clk, aig_.make_not(mem)), guard);
+        set_bool(field(fb.mem), clk, guard);
+      } else {
+        set_bool(q, aig_.make_and(aig_.make_not(clk), aig_.make_not(mem)), guard);
+        set_bool(field(fb.mem), aig_.make_not(clk), guard);
+      }
+      return;
+    }
+    case model::StandardFb::SR: {
+      const AigLit s1 = truth(arg(s.arg1)), r = truth(arg(s.arg2));
+      set_bool(q, aig_.make_or(s1, aig_.make_and(aig_.make_not(r), nxt_truth(q))), guard);
+      return;
+    }
+    case model::StandardFb::RS: {
+      const AigLit st = truth(arg(s.arg1)), r1 = truth(arg(s.arg2));
+      set_bool(q, aig_.make_and(aig_.make_not(r1), aig_.make_or(st, nxt_truth(q))), guard);
+      return;
+    }
+    case model::StandardFb::CTU:
+    case model::StandardFb::CTD: {
+      const bool up = fb.kind == model::StandardFb::CTU;
+      const AigLit edge_in = truth(arg(s.arg1)), other = truth(arg(s.arg2));
+      const Value pv = arg(s.arg3);
+      const AigLit rise = aig_.make_and(edge_in, aig_.make_not(nxt_truth(field(fb.mem))));
+      set_bool(field(fb.mem), edge_in, guard);
+      const auto cvf = field(fb.cv);
+      const Value cv = nxt_[cvf];
+      Value next_cv;
+      if (up) {
+        const AigLit can = aig_.make_and(rise, less(cv, constant(p_.field_hi[cvf])));
+        next_cv = mux(other, constant(0), mux(can, bv_add(aig_, cv, constant(1)), cv));
+      } else {
+        raise(aig_.make_and(guard, other),
+              aig_.make_or(less(pv, constant(p_.field_lo[cvf])),
+                           less(constant(p_.field_hi[cvf]), pv)));
+        const AigLit can = aig_.make_and(rise, less(constant(p_.field_lo[cvf]), cv));
+        next_cv = mux(other, pv, mux(can, bv_sub(aig_, cv, constant(1)), cv));
+      }
+      set(cvf, next_cv, guard);
+      set_bool(q, up ? aig_.make_not(less(next_cv, pv)) : aig_.make_not(less(constant(0), next_cv)),
+               guard);
+      return;
+    }
+    case model::StandardFb::TON: {
+      const AigLit in = truth(arg(s.arg1));
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      const Value v = timer_next(t, in, Aig::kFalse);
+      set(t.field, v, guard);
+      set_bool(q, aig_.make_and(in, timer_expired(t, v)), guard);
+      return;
+    }
+    case model::StandardFb::TOF: {
+      const AigLit in = truth(arg(s.arg1));
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      const AigLit was = aig_.make_or(nxt_truth(q), aig_.make_not(equal(nxt_[t.field], constant(0))));
+      const Value v = timer_next(t, Aig::kTrue, Aig::kFalse);
+      const AigLit off_running = aig_.make_and(aig_.make_not(in), was);
+      // IN: reset the timer, Q = 1; not IN and running: advance; otherwise unchanged.
+      set(t.field, mux(in, constant(0), mux(off_running, v, nxt_[t.field])), guard);
+      set_bool(q, aig_.make_or(in, aig_.make_and(off_running, aig_.make_not(timer_expired(t, v)))) ,
+               aig_.make_and(guard, aig_.make_or(in, off_running)));
+      return;
+    }
+    case model::StandardFb::TP: {
+      const AigLit in = truth(arg(s.arg1));
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      const AigLit last_in = nxt_truth(field(fb.mem));
+      set_bool(field(fb.mem), in, guard);
+      const AigLit idle = equal(nxt_[t.field], constant(0));
+      const AigLit start = aig_.make_and(idle, aig_.make_and(in, aig_.make_not(last_in)));
+      // Starting: restart the timer; running: advance it. Both end at 0 when done and IN is off.
+      const Value started = timer_next(t, Aig::kTrue, Aig::kTrue);
+      const Value advanced = timer_next(t, Aig::kTrue, Aig::kFalse);
+      const Value v = mux(idle, started, advanced);
+      const AigLit done = timer_expired(t, v);
+      const AigLit q_running = aig_.make_not(done);
+      const AigLit clear = aig_.make_and(done, aig_.make_not(in));
+      const AigLit moving = aig_.make_or(start, aig_.make_not(idle));
+      set(t.field, mux(moving, mux(clear, constant(0), v), nxt_[t.field]), guard);
+      set_bool(q, aig_.make_and(moving, q_running), guard);
+      return;
+    }
+    case model::StandardFb::None: return;
+  }
+}
+
+void SymbolicMachine::fire(const Transition& t, AigLit when) {
+  for (auto s : t.sources) {
+    consumed_[s] = aig_.make_or(consumed_[s], when);
+    left_[s] = aig_.make_or(left_[s], when);
+  }
+  for (auto s : t.targets) entered_[s] = aig_.make_or(entered_[s], when);
+  c_.fired[t.index] = aig_.make_or(c_.fired[t.index], when);
+}
+
+void SymbolicMachine::fire_chart(const Chart& c, AigLit guard) {
+  auto can_fire = [&](const Transition& t) {
+    AigLit can = Aig::kTrue;
+    for (auto s : t.sources)
+      can = aig_.make_and(can, aig_.make_and(aig_.make_not(consumed_[s]), step_active_cur(s)));
+    return can;
+  };
+  auto fire_if_enabled = [&](std::uint32_t ti) {
+    const auto& t = p_.transitions[ti];
+    const AigLit can = aig_.make_and(guard, can_fire(t));
+    fire(t, aig_.make_and(can, eval_truth(t.guard, can)));
+  };
+  if (p_.options.priority == PriorityMode::Standard) {
+    for (auto ti : c.ordered) fire_if_enabled(ti);
+    return;
+  }
+  for (const auto& g : c.groups) {
+    const AigLit active = aig_.make_and(guard, step_active_cur(g.step));
+    // Every guard of the group is evaluated; the choice input picks among the enabled ones
+    // (0 = the first in document order; values past the last enabled pick the last).
+    std::vector<AigLit> enabled;
+    for (auto ti : g.transitions) enabled.push_back(eval_truth(p_.transitions[ti].guard, active));
+    const Value choice = input_value(g.choice_input);
+    Value count = constant(0);
+    std::vector<Value> rank;
+    for (auto e : enabled) {
+      rank.push_back(count);
+      count = bv_add(aig_, count, from_bool(e));
+    }
+    const Value last = bv_sub(aig_, count, constant(1));
+    const Value pick = min(max(choice, constant(0)), last);
+    for (std::size_t j = 0; j < enabled.size(); ++j)
+      fire(p_.transitions[g.transitions[j]],
+           aig_.make_and(active, aig_.make_and(enabled[j], equal(rank[j], pick))));
+  }
+  for (auto ti : c.singles) fire_if_enabled(ti);
+}
+
+void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) {
+      const auto& st = p_.steps[s];
+      set_bool(st.ready,
+               aig_.make_or(aig_.make_and(cur_truth(st.ready), aig_.make_not(left_[s])),
+                            entered_[s]),
+               Aig::kTrue);
+    }
+  for (auto ai : pou.topo_order) {
+    const auto& a = p_.actions[ai];
+    AigLit reset = Aig::kFalse;
+    for (auto x : a.assocs)
+      if (p_.assocs[x].q == model::Qualifier::R)
+        reset = aig_.make_or(reset, step_active_next(p_.assocs[x].step));
+    AigLit act = Aig::kFalse, set_flag = Aig::kFalse;
+    for (auto x : a.assocs) {
+      const auto& as = p_.assocs[x];
+      const auto& st = p_.steps[as.step];
+      const AigLit sa = step_active_next(as.step);
+      const Timer* t = as.timer == kNone ? nullptr : &p_.timers[static_cast<std::size_t>(as.timer)];
+      const AigLit entered = entered_[as.step];
+      switch (as.q) {
+        case model::Qualifier::N: act = aig_.make_or(act, sa); break;
+        case model::Qualifier::S:
+          act = aig_.make_or(act, sa);
+          set_flag = aig_.make_or(set_flag, sa);
+          break;
+        case model::Qualifier::R: break;
+        case model::Qualifier::P:
+        case model::Qualifier::P1:
+          act = aig_.make_or(act, aig_.make_and(aig_.make_not(cur_truth(st.ready)),
+                                                nxt_truth(st.ready)));
+          break;
+        case model::Qualifier::P0:
+          act = aig_.make_or(act, aig_.make_and(cur_truth(st.ready),
+                                                aig_.make_not(nxt_truth(st.ready))));
+          break;
+        case model::Qualifier::L: {
+          const Value v = timer_next(*t, sa, entered);
+          set(t->field, v, Aig::kTrue);
+          act = aig_.make_or(act, aig_.make_and(sa, aig_.make_not(timer_expired(*t, v))));
+          break;
+        }
+        case model::Qualifier::D: {
+          const Value v = timer_next(*t, sa, entered);
+          set(t->field, v, Aig::kTrue);
+          act = aig_.make_or(act, aig_.make_and(sa, timer_expired(*t, v)));
+          break;
+        }
+        case model::Qualifier::DS: {
+          const Value v = timer_next(*t, sa, entered);
+          set(t->field, v, Aig::kTrue);
+          const AigLit fire_now = aig_.make_and(sa, timer_expired(*t, v));
+          set_flag = aig_.make_or(set_flag, fire_now);
+          act = aig_.make_or(act, fire_now);
+          break;
+        }
+        case model::Qualifier::SD: {
+          const auto latch = static_cast<std::uint32_t>(as.latch);
+          const AigLit l =
+              aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
+          set_bool(latch, l, Aig::kTrue);
+          const Value v = timer_next(*t, l, Aig::kFalse);
+          set(t->field, v, Aig::kTrue);
+          act = aig_.make_or(act, aig_.make_and(l, timer_expired(*t, v)));
+          break;
+        }
+        case model::Qualifier::SL: {
+          const auto latch = static_cast<std::uint32_t>(as.latch);
+          const AigLit rising =
+              aig_.make_and(sa, aig_.make_or(aig_.make_not(step_active_cur(as.step)), entered));
+          const AigLit expired_before = timer_expired(*t, cur_[t->field]);
+          const AigLit l = aig_.make_and(
+              aig_.make_or(aig_.make_and(cur_truth(latch), aig_.make_not(expired_before)), rising),
+              aig_.make_not(reset));
+          set_bool(latch, l, Aig::kTrue);
+          const Value v = timer_next(*t, l, rising);
+          set(t->field, v, Aig::kTrue);
+          act = aig_.make_or(act, aig_.make_and(l, aig_.make_not(timer_expired(*t, v))));
+          break;
+        }
+        case model::Qualifier::DL: break;  // rejected by the compiler
+      }
+    }
+    AigLit stored = Aig::kFalse;
+    if (a.stored != kNone) {
+      const auto f = static_cast<std::uint32_t>(a.stored);
+      stored = aig_.make_and(aig_.make_or(set_flag, cur_truth(f)), aig_.make_not(reset));
+      set_bool(f, stored, Aig::kTrue);
+    }
+    const AigLit active = aig_.make_and(aig_.make_or(act, stored), aig_.make_not(reset));
+    set_bool(a.active, active, Aig::kTrue);
+    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, Aig::kTrue);
+  }
+  (void)guard;
+  step_times(pou);
+}
+
+void SymbolicMachine::step_times(const Pou& pou) {
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) {
+      const auto& st = p_.steps[s];
+      if (st.t_field == kNone) continue;
+      const auto f = static_cast<std::uint32_t>(st.t_field);
+      const AigLit restart = aig_.make_or(aig_.make_not(nxt_truth(st.ready)), entered_[s]);
+      const AigLit advance = aig_.make_and(step_active_next(s), step_active_cur(s));
+      const Value v = cur_[f];
+      Value advanced;
+      if (p_.options.time == TimeMode::Discrete) {
+        advanced = min(bv_add(aig_, v, constant(1)), constant(st.t_max));
+      } else {
+        const Value top = constant(static_cast<std::int64_t>(st.thresholds.size()));
+        const Value moved = max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
+        advanced = mux(less(v, top), moved, v);
+      }
+      nxt_[f] = mux(restart, constant(0), mux(advance, advanced, nxt_[f]));
+    }
+}
+
+void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
+  exec_block(pou.body, guard);
+  for (auto a : pou.exec_order) {
+    const auto& act = p_.actions[a];
+    if (act.kind == model::ActionBodyKind::Statements)
+      exec_block(act.body, aig_.make_and(guard, cur_truth(act.active)));
+  }
+  for (auto c : pou.charts) fire_chart(p_.charts[c], aig_.make_and(guard, chart_active_cur(c)));
+  update_pou(pou, guard);
+}
+
+void SymbolicMachine::build(StateView initial_state) {
+  const auto& fields = p_.layout.fields();
+  // Latches: one per field bit, initialised from the explicit initial configuration.
+  c_.field_latches.resize(fields.size());
+  cur_.resize(fields.size());
+  for (std::uint32_t f = 0; f < fields.size(); ++f) {
+    const auto init = static_cast<std::uint64_t>(p_.layout.get(initial_state, f) - fields[f].lo);
+    BitVector bits;
+    for (std::uint32_t k = 0; k < fields[f].width; ++k) {
+      c_.field_latches[f].push_back(static_cast<std::uint32_t>(aig_.latches().size()));
+      bits.push_back(aig_.add_latch(fields[f].name + (fields[f].width > 1 ? "[" + std::to_string(k) + "]" : ""),
+                                    ((init >> k) & 1U) != 0));
+    }
+    cur_[f] = decode(bits, fields[f].lo);
+  }
+  // Inputs: their bits, constrained to the type's range.
+  AigLit allowed = Aig::kTrue;
+  for (const auto& in : p_.inputs) {
+    const std::int64_t lo = in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo;
+    const std::int64_t hi = in.type.kind == model::TypeKind::Bool ? 1 : in.type.hi;
+    const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
+    const std::uint32_t width = span == 0 ? 1 : static_cast<std::uint32_t>(std::bit_width(span));
+    BitVector bits;
+    for (std::uint32_t k = 0; k < width; ++k)
+      bits.push_back(aig_.add_input(in.name + (width > 1 ? "[" + std::to_string(k) + "]" : "")));
+    const BitVector encoded = bv_resize(bits, kWidth, false);
+    if (width < 64)
+      allowed = aig_.make_and(allowed, aig_.make_not(bv_less_unsigned(
+                                           aig_, bv_constant(static_cast<std::int64_t>(span), kWidth),
+                                           encoded)));
+    c_.input_bits.push_back(bits);
+    input_values_.push_back(decode(bits, lo));
+  }
+  consumed_.assign(p_.steps.size(), Aig::kFalse);
+  entered_.assign(p_.steps.size(), Aig::kFalse);
+  left_.assign(p_.steps.size(), Aig::kFalse);
+  c_.fired.assign(p_.transition_infos.size(), Aig::kFalse);
+
+  // The cycle: assumptions on the new inputs and the current state, then the POUs in order.
+  nxt_ = cur_;
+  AigLit assumed = Aig::kTrue;
+  for (auto a : p_.assumptions) assumed = aig_.make_and(assumed, eval_truth(a, assumed));
+  c_.allowed = aig_.make_and(allowed, assumed);
+  for (const auto& pou : p_.pous) cycle_pou(pou, c_.allowed);
+  c_.range_error = aig_.make_and(c_.range_error, c_.allowed);
+
+  for (std::uint32_t f = 0; f < fields.size(); ++f) {
+    const BitVector next = encode(nxt_[f], f);
+    for (std::uint32_t k = 0; k < fields[f].width; ++k) aig_.set_next(c_.field_latches[f][k], next[k]);
+  }
+
+  // Observables, as observe() computes them from a state.
+  for (const auto& r : p_.observable_refs) {
+    switch (r.kind) {
+      case ObservableKind::Step: {
+        const auto& s = p_.steps[r.a];
+        const auto pa = p_.charts[s.chart].parent_action;
+        AigLit v = cur_truth(s.ready);
+        if (pa != kNone) v = aig_.make_and(v, cur_truth(p_.actions[static_cast<std::size_t>(pa)].active));
+        c_.observable_bits.push_back({v});
+        c_.observable_lo.push_back(0);
+        break;
+      }
+      case ObservableKind::Action:
+        c_.observable_bits.push_back({cur_truth(p_.actions[r.a].active)});
+        c_.observable_lo.push_back(0);
+        break;
+      case ObservableKind::Variable: {
+        BitVector bits;
+        for (auto l : c_.field_latches[r.a]) bits.push_back(aig_.latches()[l].current);
+        c_.observable_bits.push_back(bits);
+        c_.observable_lo.push_back(fields[r.a].lo);
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace iec
+
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
+  const auto* sys = dynamic_cast<const iec::Iec61131System*>(&ts);
+  if (!sys) throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
+  struct Initial final : SuccessorSink {
+    std::vector<StateWord> state;
+    void successor(const Successor& s) override { state.assign(s.target.begin(), s.target.end()); }
+  } initial;
+  ts.initial_states(initial);
+  TransitionCircuit c;
+  iec::SymbolicMachine machine(sys->program(), c);
+  machine.build(initial.state);
+  return c;
+}
+
+std::vector<StateWord> state_from_latches(const TransitionSystem& ts, const TransitionCircuit& c,
+                                          const std::vector<bool>& latches) {
+  const auto& layout = ts.layout();
+  std::vector<StateWord> s(layout.words(), 0);
+  for (std::uint32_t f = 0; f < c.field_latches.size(); ++f) {
+    std::uint64_t v = 0;
+    for (std::size_t k = 0; k < c.field_latches[f].size(); ++k)
+      if (latches[c.field_latches[f][k]]) v |= 1ULL << k;
+    layout.set(s, f, static_cast<std::int64_t>(static_cast<std::uint64_t>(layout.fields()[f].lo) + v));
+  }
+  return s;
+}
+
+std::vector<std::int64_t> inputs_from_bits(const TransitionSystem& ts, const TransitionCircuit& c,
+                                           const std::vector<bool>& bits) {
+  std::vector<std::int64_t> values;
+  for (std::size_t i = 0; i < c.input_bits.size(); ++i) {
+    const auto& t = ts.inputs()[i].type;
+    std::uint64_t v = 0;
+    for (std::size_t k = 0; k < c.input_bits[i].size(); ++k) {
+      const auto& node = c.aig.nodes()[Aig::node_of(c.input_bits[i][k])];
+      if (bits[node.index]) v |= 1ULL << k;
+    }
+    const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo;
+    values.push_back(static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + v));
+  }
+  return values;
+}
+
+}  // namespace sfcv::semantics

@@ -1,0 +1,47 @@
+#pragma once
+// The IEC 61131-3 scan cycle as a circuit (an Aig) over exactly the state bits of the explicit
+// transition system: one latch per bit of every StateLayout field, one circuit input per bit of
+// every (pseudo-)input. The BDD engine and the exports (AIGER, NuSMV, Promela) are built from
+// it; differential tests check it against the explicit successor function.
+
+#include <stdexcept>
+#include <vector>
+
+#include "semantics/aig.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::semantics {
+
+struct TransitionCircuit {
+  Aig aig;
+  /// field_latches[f][k]: the latch holding bit k of layout field f (value - lo, LSB first).
+  std::vector<std::vector<std::uint32_t>> field_latches;
+  /// input_bits[i][k]: circuit input literal of bit k of input i (value - lo, LSB first).
+  std::vector<BitVector> input_bits;
+  /// Per observable of the system: its value as an encoded field (value - lo, LSB first) for
+  /// integer variables, one literal for steps, actions and Boolean variables.
+  std::vector<BitVector> observable_bits;
+  std::vector<std::int64_t> observable_lo;
+  std::vector<AigLit> fired;          ///< per transition of the system: it fires in this cycle
+  AigLit allowed = Aig::kTrue;        ///< the inputs are in range and satisfy the assumptions
+  AigLit range_error = Aig::kFalse;   ///< this cycle raises a range error (no successor)
+};
+
+/// A construct the circuit cannot express (a product of two variables, a division): the
+/// message names it. Callers answer with a clear error, never a wrong model.
+class CircuitUnsupported : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// `ts` must come from make_iec61131_system (throws std::invalid_argument otherwise).
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts);
+
+/// The packed state whose field values are the latch values `latches` (one bool per latch).
+std::vector<StateWord> state_from_latches(const TransitionSystem& ts, const TransitionCircuit& c,
+                                          const std::vector<bool>& latches);
+/// The input valuation encoded by circuit input values `bits` (one bool per circuit input).
+std::vector<std::int64_t> inputs_from_bits(const TransitionSystem& ts, const TransitionCircuit& c,
+                                           const std::vector<bool>& bits);
+
+}  // namespace sfcv::semantics

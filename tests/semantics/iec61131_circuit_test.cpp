@@ -1,0 +1,221 @@
+// The circuit of the scan cycle against the explicit successor function: for every reachable
+// state and many input valuations, the circuit's next state must be the explicit successor.
+
+#include "semantics/iec61131_circuit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "chart_families.hpp"
+#include "engine/explicit/reachable_situation_graph.hpp"
+#include "io/load.hpp"
+#include "semantics/iec61131_system.hpp"
+
+namespace sfcv::semantics {
+namespace {
+
+struct Collect final : SuccessorSink {
+  struct Entry {
+    std::vector<StateWord> target;
+    InputCondition condition;
+    std::vector<std::uint32_t> fired;
+  };
+  std::vector<Entry> entries;
+  bool anomalies = false;
+  void successor(const Successor& s) override {
+    entries.push_back({{s.target.begin(), s.target.end()}, s.condition, {s.fired.begin(), s.fired.end()}});
+  }
+  void anomaly(const Anomaly&) override { anomalies = true; }
+};
+
+TransitionSystemPtr system_for(const std::string& text, Iec61131Options options = {}) {
+  auto loaded = io::load_iec_text(text, "test.st");
+  EXPECT_TRUE(loaded.ok());
+  if (!loaded.ok()) {
+    for (const auto& d : loaded.diagnostics) ADD_FAILURE() << d.str();
+    return nullptr;
+  }
+  model::Diagnostics diags;
+  auto ts = make_iec61131_system(*loaded.project, options, diags);
+  for (const auto& d : diags) ADD_FAILURE() << d.str();
+  return ts;
+}
+
+// Compares circuit and explicit successors on every reachable state (up to `max_states`).
+void expect_agreement(const TransitionSystem& ts, std::uint32_t max_states, std::uint64_t seed) {
+  const auto circuit = build_iec61131_circuit(ts);
+
+  engine::ExplorationOptions opts;
+  opts.max_states = max_states;
+  const auto graph = engine::build_reachable_situation_graph(ts, opts);
+  std::mt19937_64 rng(seed);
+  const auto& aig = circuit.aig;
+  const auto& layout = ts.layout();
+
+  // The initial latch values are the explicit initial state.
+  {
+    std::vector<bool> init;
+    for (const auto& l : aig.latches()) init.push_back(l.initial);
+    EXPECT_EQ(state_from_latches(ts, circuit, init),
+              std::vector<StateWord>(graph.states().at(graph.initial_states()[0]).begin(),
+                                     graph.states().at(graph.initial_states()[0]).end()));
+  }
+  for (std::uint32_t s = 0; s < graph.num_states(); ++s) {
+    const auto state = graph.states().at(s);
+    Collect succ;
+    ts.successors(state, succ);
+    std::vector<bool> latches(aig.latches().size());
+    for (std::uint32_t f = 0; f < circuit.field_latches.size(); ++f) {
+      const auto v = static_cast<std::uint64_t>(layout.get(state, f) - layout.fields()[f].lo);
+      for (std::size_t k = 0; k < circuit.field_latches[f].size(); ++k)
+        latches[circuit.field_latches[f][k]] = ((v >> k) & 1U) != 0;
+    }
+    for (int trial = 0; trial < 16; ++trial) {
+      std::vector<bool> bits(aig.inputs().size());
+      for (std::size_t i = 0; i < bits.size(); ++i) bits[i] = (rng() & 1U) != 0;
+      // Half of the trials use the witness of a successor, to cover rare conditions.
+      if (trial % 2 == 1 && !succ.entries.empty()) {
+        const auto& e = succ.entries[rng() % succ.entries.size()];
+        const auto w = e.condition.witness(ts.inputs());
+        for (std::size_t i = 0; i < w.size(); ++i) {
+          const auto& t = ts.inputs()[i].type;
+          const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo;
+          const auto enc = static_cast<std::uint64_t>(w[i] - lo);
+          for (std::size_t k = 0; k < circuit.input_bits[i].size(); ++k)
+            bits[aig.nodes()[Aig::node_of(circuit.input_bits[i][k])].index] = ((enc >> k) & 1U) != 0;
+        }
+      }
+      const auto nodes = aig.evaluate(bits, latches);
+      if (!Aig::value_of(nodes, circuit.allowed)) continue;
+      const auto valuation = inputs_from_bits(ts, circuit, bits);
+      const bool error = Aig::value_of(nodes, circuit.range_error);
+      const Collect::Entry* match = nullptr;
+      for (const auto& e : succ.entries)
+        if (e.condition.holds(valuation)) {
+          ASSERT_EQ(match, nullptr) << "two successors for one valuation";
+          match = &e;
+        }
+      if (error) {
+        EXPECT_EQ(match, nullptr) << "the circuit raises a range error, the machine does not";
+        continue;
+      }
+      ASSERT_NE(match, nullptr) << "no explicit successor in state " << ts.describe(state);
+      std::vector<bool> next(aig.latches().size());
+      for (std::size_t l = 0; l < next.size(); ++l)
+        next[l] = Aig::value_of(nodes, aig.latches()[l].next);
+      EXPECT_EQ(state_from_latches(ts, circuit, next), match->target)
+          << "from " << ts.describe(state) << " expected " << ts.describe(match->target);
+      std::vector<std::uint32_t> fired;
+      for (std::uint32_t t = 0; t < circuit.fired.size(); ++t)
+        if (Aig::value_of(nodes, circuit.fired[t])) fired.push_back(t);
+      EXPECT_EQ(fired, match->fired);
+      for (std::uint32_t o = 0; o < ts.observables().size(); ++o) {
+        std::uint64_t v = 0;
+        for (std::size_t k = 0; k < circuit.observable_bits[o].size(); ++k)
+          if (Aig::value_of(nodes, circuit.observable_bits[o][k])) v |= 1ULL << k;
+        EXPECT_EQ(static_cast<std::int64_t>(v) + circuit.observable_lo[o], ts.observe(state, o))
+            << ts.observables()[o].name;
+      }
+    }
+  }
+}
+
+TEST(Iec61131Circuit, AgreesWithTheMachineOnRandomCharts) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    auto ts = system_for(bench::random_chart_iec(14, 4, seed));
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, seed);
+  }
+}
+
+TEST(Iec61131Circuit, AgreesWithoutPriorities) {
+  for (std::uint64_t seed = 20; seed <= 26; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    Iec61131Options options;
+    options.priority = PriorityMode::None;
+    auto ts = system_for(bench::random_chart_iec(12, 3, seed), options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, seed);
+  }
+}
+
+TEST(Iec61131Circuit, AgreesOnFamilies) {
+  auto tanks = system_for(bench::tanks_iec(2, true));
+  ASSERT_TRUE(tanks);
+  expect_agreement(*tanks, 2000, 7);
+  auto nested = system_for(bench::nested_charts_iec(3));
+  ASSERT_TRUE(nested);
+  expect_agreement(*nested, 2000, 8);
+  auto selector = system_for(bench::parallel_branches_iec(4, true));
+  ASSERT_TRUE(selector);
+  expect_agreement(*selector, 2000, 9);
+}
+
+const char* kTimersAndData = R"(
+PROGRAM Timed
+  VAR_INPUT go, stop : BOOL; level : INT(0..20); END_VAR
+  VAR_OUTPUT lamp, horn, pump, siren, beacon : BOOL; count : INT(0..7); END_VAR
+  VAR t1 : TON; c : CTU; trig : R_TRIG; latch : SR; n : INT(-5..5); END_VAR
+  INITIAL_STEP Idle:
+    Reset(N);
+  END_STEP
+  STEP Run:
+    lamp(D, T#2s);
+    horn(L, T#1s);
+    Work(N);
+    pump(SD, T#3s);
+  END_STEP
+  STEP Wait:
+    pump(R);
+    Tick(P1);
+    siren(SL, T#1s);
+    beacon(DS, T#1s);
+  END_STEP
+  STEP Rest:
+    beacon(R);
+  END_STEP
+  ACTION Reset:
+    n := 0;
+  END_ACTION
+  ACTION Work:
+    t1(IN := go, PT := T#500ms);
+    trig(CLK := go);
+    c(CU := trig.Q, R := stop, PV := 3);
+    latch(S1 := c.Q, R := stop);
+    IF level > 10 THEN
+      n := n + 1;
+    ELSIF level = 3 THEN
+      n := n - 1;
+    ELSE
+      CASE level OF
+        0: n := 0;
+        1..2: n := n * 2;
+      END_CASE;
+    END_IF;
+  END_ACTION
+  ACTION Tick:
+    IF count < 7 THEN count := count + 1; END_IF;
+  END_ACTION
+  TRANSITION FROM Idle TO Run := go AND NOT stop; END_TRANSITION
+  TRANSITION FROM Run TO Wait := t1.Q OR Run.T > T#3s; END_TRANSITION
+  TRANSITION FROM Wait TO Rest := stop OR latch.Q1; END_TRANSITION
+  TRANSITION FROM Rest TO Idle := NOT go; END_TRANSITION
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnTimersCountersAndData) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 250;
+    auto ts = system_for(kTimersAndData, options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 1500, 11);
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::semantics
