@@ -42,6 +42,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     : ts_(ts), circuit_(std::move(circuit)) {
   bdd::configure_manager(options.nodes, options.cache, 4);
   bdd::ensure_manager();
+  bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
   // Static order by the FORCE heuristic: latches (their current and next copies adjacent) and
   // inputs are units; each next-state function ties its latch to the latches and inputs it
@@ -141,6 +142,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   memo_.resize(aig.nodes().size());
   memo_set_.assign(aig.nodes().size(), false);
   current_cube_ = Bdd::cube(current_var_);
+  next_cube_ = Bdd::cube(next_var_);
   input_cube_ = Bdd::cube(input_var_);
 
   initial_ = Bdd::constant(true);
@@ -296,10 +298,8 @@ std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
   // T(from, i, to) over the inputs: every current and next variable is fixed, so each cluster
   // only shrinks the set of inputs.
   Bdd acc = singleton(from) & singleton(to).replace(*current_to_next_);
-  std::vector<int> next_vars(next_var_.begin(), next_var_.end());
-  const Bdd next_cube = Bdd::cube(next_vars);
   for (const auto& c : clusters_) acc = acc & c;
-  const Bdd on_inputs = acc.exist(current_cube_).exist(next_cube);
+  const Bdd on_inputs = acc.exist(current_cube_).exist(next_cube_);
   const Bdd one = on_inputs.sat_one(input_cube_);
   if (one.is_false()) return {};
   std::vector<bool> bits(input_var_.size());

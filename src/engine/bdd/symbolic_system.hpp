@@ -70,7 +70,7 @@ class SymbolicSystem {
   std::vector<int> current_vars_;
   std::vector<Bdd> memo_;
   std::vector<bool> memo_set_;
-  Bdd current_cube_, input_cube_;
+  Bdd current_cube_, next_cube_, input_cube_;
   Bdd initial_, ok_, has_successor_, range_error_states_;
   // Image: clusters of (next_l <-> f_l), each with the current/input variables that can be
   // quantified once it has been conjoined.
