@@ -367,20 +367,33 @@ struct Compiler {
       return id;
     }
     // An integer input against a constant: the successor function splits its interval.
-    if (lhs->kind != ExprKind::Name && rhs->kind == ExprKind::Name) {
+    auto int_input = [&](const model::Expr& x) {
+      if (x.kind != ExprKind::Name) return false;
+      auto it = sc.names.find(model::to_upper(x.name));
+      return it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool;
+    };
+    if (!int_input(*lhs) && int_input(*rhs)) {
       std::swap(lhs, rhs);
       cmp = flip(cmp);
     }
     if (lhs->kind == ExprKind::Name) {
       auto it = sc.names.find(model::to_upper(lhs->name));
       const auto k = literal(*rhs);
-      if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool && k) {
+      if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool) {
         Node n;
-        n.op = Op::InputCmp;
         n.cmp = cmp;
         n.a = it->second.index;
-        n.k = *k;
-        return node(n);
+        if (k) {
+          n.op = Op::InputCmp;
+          n.k = *k;
+          return node(n);
+        }
+        // Against an expression: its value in this run is the split point.
+        VT ot;
+        const auto other = expr(sc, *rhs, context, ot);
+        if (ot != VT::Int) error(e.where, "'" + model::to_st(e) + "' compares a number with a BOOL");
+        n.op = Op::InputCmpExpr;
+        return node(n, {other});
       }
     }
     VT lt, rt;

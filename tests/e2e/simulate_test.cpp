@@ -104,3 +104,30 @@ TEST(Simulate, HelpDocumentsPseudoInputs) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Simulate, ACycleColumnLetsAModelWithoutInputsRun) {
+  const auto st = sfcv::test::write_temp(
+      "PROGRAM Counter\n VAR_OUTPUT n : INT; END_VAR\n INITIAL_STEP S1: Inc(N); END_STEP\n"
+      " ACTION Inc: n := n + 1; END_ACTION\nEND_PROGRAM\n",
+      ".st");
+  const auto csv = sfcv::test::write_temp("cycle\n1\n2\n3\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 | - | Counter.S1 | Counter.Inc | n=3"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, RangeErrorStopsTheRun) {
+  const auto st = sfcv::test::write_temp(
+      "PROGRAM Counter\n VAR_OUTPUT n : INT(0..1); END_VAR\n INITIAL_STEP S1: Inc(N); END_STEP\n"
+      " ACTION Inc: n := n + 1; END_ACTION\nEND_PROGRAM\n",
+      ".st");
+  const auto csv = sfcv::test::write_temp("cycle\n1\n2\n3\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cycle 2: value out of the range"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":4:"), std::string::npos) << r.err;  // where the assignment is
+}
+
+}  // namespace

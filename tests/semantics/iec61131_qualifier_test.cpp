@@ -91,6 +91,20 @@ TEST(Iec61131Qualifier, P1BodyExecutesExactlyOncePerEntry) {
   EXPECT_EQ(r["n"], 2);
 }
 
+TEST(Iec61131Qualifier, ASelfLoopIsNotAReadinessChange) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT v, w : BOOL; END_VAR");
+  b.step("S1", true).trans("S1", "S1", "a");
+  b.action_var("A", "v").assoc("S1", "A", "P1");
+  b.action_var("B", "w").assoc("S1", "B", "P0");
+  auto ts = b.build();
+  Runner r(*ts);
+  EXPECT_EQ(r["v"], 1);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r.fired.size(), 1u);
+  EXPECT_EQ(r["v"], 0);
+  EXPECT_EQ(r["w"], 0);
+}
+
 TEST(Iec61131Qualifier, P0IsActiveOnceWhenTheStepStopsBeingReady) {
   auto b = ring("S2", "P0");
   auto ts = b.build();

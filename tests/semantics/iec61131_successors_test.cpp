@@ -1,6 +1,7 @@
 // Successor generation (docs/semantics.md, Part 1, "Successors"): grouped by exact input
 // conditions, integer inputs split by comparisons, assumptions, POU selection, plant models.
 
+#include <algorithm>
 #include <deque>
 #include <set>
 
@@ -39,6 +40,35 @@ TEST(Iec61131Successors, IntegerInputsSplitIntoTheIntervalsOfTheirComparisons) {
   auto c = successors_of(*ts, Runner(*ts).state());
   EXPECT_EQ(conditions(c), (std::vector<std::string>{"level <= 4 | 6 <= level <= 100", "level = 5",
                                                       "level >= 101"}));
+}
+
+TEST(Iec61131Successors, IntegerInputComparedWithAVariableSplitsAtItsCurrentValue) {
+  IecBuilder b("VAR_INPUT level : INT; END_VAR VAR limit : INT := 50; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "limit < level").trans("S2", "S1", "TRUE");
+  b.action_st("Up", "limit := limit + 10;").assoc("S2", "Up", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  EXPECT_EQ(conditions(successors_of(*ts, r.state())),
+            (std::vector<std::string>{"level <= 50", "level >= 51"}));
+  ASSERT_TRUE(r.cycle({{"level", 51}}));
+  ASSERT_TRUE(r.cycle());  // Up runs: limit = 60
+  EXPECT_EQ(conditions(successors_of(*ts, r.state())),
+            (std::vector<std::string>{"level <= 60", "level >= 61"}));
+}
+
+TEST(Iec61131Successors, ManyDistinctTargetsAreMergedCorrectly) {
+  IecBuilder b("VAR_INPUT sel : INT(0..999); END_VAR VAR_OUTPUT x : INT; END_VAR");
+  b.step("S1", true).action_st("Copy", "x := sel MOD 10;").assoc("S1", "Copy", "N");
+  auto ts = b.build();
+  auto c = successors_of(*ts, Runner(*ts).state());
+  ASSERT_EQ(c.all.size(), 10u);
+  std::size_t cubes = 0;
+  for (const auto& s : c.all) cubes += static_cast<std::size_t>(std::count(s.condition.begin(), s.condition.end(), '|')) + 1;
+  EXPECT_EQ(cubes, 1000u);
+  EXPECT_EQ(c.all[3].condition.substr(0, 22), "sel = 3 | sel = 13 | s");
+  // A second call on the same system gives the same answer (scratch reuse).
+  auto again = successors_of(*ts, Runner(*ts).state());
+  EXPECT_EQ(conditions(again), conditions(c));
 }
 
 TEST(Iec61131Successors, IntegerInputsCopiedIntoTheStateAreEnumeratedWithinTheirRange) {
