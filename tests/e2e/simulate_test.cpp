@@ -131,3 +131,36 @@ TEST(Simulate, RangeErrorStopsTheRun) {
 }
 
 }  // namespace
+
+namespace {
+
+const char* kTimed =
+    "PROGRAM Lamp\n VAR_INPUT button : BOOL; END_VAR\n VAR_OUTPUT light : BOOL; END_VAR\n"
+    " INITIAL_STEP Off: END_STEP\n STEP On: light(L, T#30ms); END_STEP\n"
+    " TRANSITION FROM Off TO On := button; END_TRANSITION\n"
+    " TRANSITION FROM On TO Off := NOT button; END_TRANSITION\nEND_PROGRAM\n";
+
+TEST(Simulate, DiscreteTimeCountsCycles) {
+  const auto st = sfcv::test::write_temp(kTimed, ".st");
+  const auto csv = sfcv::test::write_temp("button\n1\n1\n1\n1\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "' --time discrete --cycle 10ms");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 6u);
+  EXPECT_NE(rows[2].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[4].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[5].find("light=0"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, AbstractTimeTakesTimeoutsFromThePseudoInputColumn) {
+  const auto st = sfcv::test::write_temp(kTimed, ".st");
+  const auto csv = sfcv::test::write_temp("button,timeout:Lamp.On.light.L\n1,0\n1,0\n1,1\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_NE(rows[3].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[4].find("light=0"), std::string::npos) << r.out;
+}
+
+}  // namespace
