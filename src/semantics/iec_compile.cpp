@@ -1021,8 +1021,37 @@ struct Compiler {
     }
   }
 
+  /// Grafcet-only content and duplicates the IEC semantics would otherwise silently merge.
+  void reject_foreign(const std::vector<const model::Pou*>& pous) {
+    if (project.dialect == model::Dialect::Grafcet)
+      error(project.where, "this is a Grafcet (IEC 60848) model; the IEC 61131-3 scan-cycle "
+                           "semantics does not apply to it");
+    for (const auto* pou : pous) {
+      for (const auto& sa : pou->stored_actions)
+        error(sa.where, "Grafcet stored action on activation/deactivation/event in " + pou->name +
+                            " is not IEC 61131-3");
+      for (const auto& fo : pou->forcing_orders)
+        error(fo.where, "Grafcet forcing order in " + pou->name + " is not IEC 61131-3");
+      for (const auto& as : pou->associations)
+        if (as.condition)
+          error(as.where, "action block with an assignment condition (Grafcet) in " + pou->name);
+      std::set<std::string> vars;
+      for (const auto& v : pou->variables)
+        if (!vars.insert(model::to_upper(v.name)).second)
+          error(v.where, "variable '" + v.name + "' is declared twice in " + pou->name);
+      for (const auto& ch : pou->charts) {
+        std::set<std::string> steps;
+        for (const auto& st : ch.steps)
+          if (!steps.insert(model::to_upper(st.name)).second)
+            error(st.where, "step '" + st.name + "' is declared twice in chart '" + ch.name + "'");
+      }
+    }
+  }
+
   bool run() {
     const auto pous = select();
+    if (!ok) return false;
+    reject_foreign(pous);
     if (!ok) return false;
     variables(pous);
     structure();

@@ -220,6 +220,23 @@ TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
     b.step("S1", true).action_st("W", "a := TRUE;").assoc("S1", "W", "N");
     EXPECT_NE(b.build_error().find("an input"), std::string::npos);
   }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).step("S1");
+    EXPECT_NE(b.build_error().find("declared twice"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true);
+    b.project.dialect = model::Dialect::Grafcet;
+    EXPECT_NE(b.build_error().find("Grafcet"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "a");
+    b.pou().charts[0].transitions[0].guard = model::make_unary(model::ExprKind::Rising, model::make_name("a"));
+    EXPECT_NE(b.build_error().find("Grafcet syntax"), std::string::npos);
+  }
 }
 
 }  // namespace
