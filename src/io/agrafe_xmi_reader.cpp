@@ -79,6 +79,7 @@ class Reader {
     pou_.kind = model::PouKind::Program;
     pou_.where = project.where;
     try {
+      check_name(root_, project.name, "grafcet name");
       read_variables();
       read_charts();
     } catch (const Failure& f) {
@@ -174,6 +175,13 @@ class Reader {
     return out;
   }
 
+  /// Names go into located diagnostics and into .g7 text: no control characters.
+  static void check_name(pugi::xml_node n, const std::string& name, const char* what) {
+    for (char c : name)
+      if (static_cast<unsigned char>(c) < 0x20 || c == '\x7F')
+        throw Failure{n, std::string(what) + " contains a control character"};
+  }
+
   // ---- variables
   struct Delay {
     std::int64_t t1;
@@ -234,6 +242,7 @@ class Reader {
                                    : "input";
       const std::string_view sort = type_of(decl.child("sort"));
       if (name.empty()) throw Failure{decl, "variable declaration without a name"};
+      check_name(decl, name, "variable name");
       if (kind == "step") {
         if (!decl.attribute("step")) throw Failure{decl, "step variable '" + name + "' names no step"};
         step_vars_[decl] = resolve(decl, decl.attribute("step").value());
@@ -289,6 +298,7 @@ class Reader {
       model::Chart c;
       c.name = pg.attribute("name") ? pg.attribute("name").value() : "";
       if (c.name.empty()) c.name = "G" + std::to_string(index);
+      check_name(pg, c.name, "partial grafcet name");
       if (pou_.find_chart(c.name)) {
         const std::string renamed = c.name + "_" + std::to_string(index);
         warn(pg, model::Severity::Warning,
@@ -316,8 +326,9 @@ class Reader {
   model::Chart& chart(pugi::xml_node pg) { return pou_.charts[static_cast<std::size_t>(chart_of_.at(pg))]; }
 
   void add_step(pugi::xml_node pg, pugi::xml_node n, model::Step s) {
-    if (!n.attribute("id")) throw Failure{n, "step without an id"};
     s.name = n.attribute("id").value();
+    if (s.name.empty()) throw Failure{n, "step without an id"};
+    check_name(n, s.name, "step id");
     s.initial = n.attribute("initial").as_bool(false);
     s.activation_link = n.attribute("activationLink").as_bool(false);
     s.where = where(n);
@@ -385,6 +396,7 @@ class Reader {
       model::Transition tr;
       if (!t.attribute("id")) throw Failure{t, "transition without an id"};
       tr.name = t.attribute("id").value();
+      check_name(t, tr.name, "transition id");
       tr.where = where(t);
       tr.order = static_cast<int>(c.transitions.size());
       ExprPtr guard = t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);

@@ -361,6 +361,10 @@ TEST(AgrafeXmiErrors, NameTheElement) {
             "t.grafcet:7:94 (//@partialGrafcets.0/@actionTypes.0/@variable): an action assigns the input 'a'");
   EXPECT_EQ(first_error("<grafcet:Grafcet xmlns:grafcet=\"x\">\n  <partialGrafcets>\n</grafcet:Grafcet>"),
             "t.grafcet:3:3: XML error: Start-end tags mismatch");
+  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"\"/></partialGrafcets>")),
+            "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step without an id");
+  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"a&#10;b\"/></partialGrafcets>")),
+            "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step id contains a control character");
   EXPECT_EQ(first_error("<project/>"),
             "t.grafcet:1:1 (/): not an AGRAFE grafcet: the root element is <project>, expected <grafcet:Grafcet>");
 }
