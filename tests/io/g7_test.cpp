@@ -520,6 +520,34 @@ TEST(G7RoundTrip, ExamplesShippedWithSfcv) {
   }
 }
 
+TEST(G7Examples, PalletTransferFixDiffersOnlyInTransition15) {
+  const auto flawed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer.g7"));
+  const auto fixed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer_fixed.g7"));
+  ASSERT_TRUE(flawed.ok() && fixed.ok()) << messages(flawed) << messages(fixed);
+  const auto& p = flawed.project->pous[0];
+  ASSERT_EQ(p.charts.size(), 4u);
+  std::vector<std::string> initial;
+  std::size_t steps = 0;
+  for (const auto& c : p.charts)
+    for (const auto& s : c.steps) {
+      ++steps;
+      if (s.initial) initial.push_back(s.name);
+    }
+  EXPECT_EQ(steps, 24u);  // "the grafcet has only 24 steps"
+  EXPECT_EQ(initial, (std::vector<std::string>{"1", "20", "30", "40"}));
+  EXPECT_EQ(model::count_transitions(*flawed.project), 25u);
+  // Same model once transition 15 gets the fixed receptivity (and the project its name).
+  model::Project patched = *flawed.project;
+  patched.name = fixed.project->name;
+  patched.pous[0].name = fixed.project->pous[0].name;
+  auto& t15 = patched.pous[0].charts[1].transitions[4];
+  ASSERT_EQ(t15.name, "15");
+  EXPECT_EQ(model::to_st(t15.guard), "NOT X10");
+  t15.guard = fixed.project->pous[0].charts[1].transitions[4].guard;
+  EXPECT_EQ(model::to_st(t15.guard), "NOT X10 AND NOT X9");
+  EXPECT_EQ(test::grafcet_difference(patched, *fixed.project), "");
+}
+
 TEST(G7Writer, RefusesWhatTheFormatCannotExpress) {
   auto r = load("output V;\ngrafcet G { step 1 initial; action 1: V; }");
   ASSERT_TRUE(r.ok());
