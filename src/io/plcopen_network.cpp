@@ -82,9 +82,12 @@ ExprPtr Network::fail(pugi::xml_node node, std::string message) {
 
 model::StmtList Network::take_calls() { return std::exchange(calls_, {}); }
 
-ExprPtr Network::input(pugi::xml_node cpi) {
+ExprPtr Network::input(pugi::xml_node cpi, pugi::xml_node owner) {
   const auto connections = children(cpi, "connection");
-  if (connections.empty()) return fail(cpi.parent() ? cpi.parent() : cpi, "input is not connected");
+  if (connections.empty()) {
+    const auto at = owner ? owner : cpi ? cpi.parent() : container_;
+    return fail(at, std::string(local_name(at)) + ": input is not connected");
+  }
   std::vector<ExprPtr> alternatives;
   for (auto c : connections) {
     auto v = value(c);
@@ -136,18 +139,18 @@ ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
     auto var = text_value(node, child(node, "variable"));
     if (!var) return nullptr;
     var = negate_if(attribute_true(node, "negated"), var);
-    auto in = input(child(node, "connectionPointIn"));
+    auto in = input(child(node, "connectionPointIn"), node);
     if (!in) return nullptr;
     if (is_true_const(in)) return var;
     return model::make_nary(ExprKind::And, {in, var}, ctx_.where(node));
   }
-  if (kind == "coil") return input(child(node, "connectionPointIn"));  // power flows through
+  if (kind == "coil") return input(child(node, "connectionPointIn"), node);  // power flows through
   if (kind == "continuation") {
     const auto it = connectors_.find(model::to_upper(node.attribute("name").value()));
     if (it == connectors_.end())
       return fail(node, std::string("continuation '") + node.attribute("name").value() +
                             "' has no connector of that name");
-    return input(child(it->second, "connectionPointIn"));
+    return input(child(it->second, "connectionPointIn"), it->second);
   }
   return fail(node, "unsupported: a " + std::string(kind) + " cannot be used as a value here");
 }
@@ -208,7 +211,7 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     }
     if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
       return fail(v, "unsupported: " + edge + " edge input of block " + type);
-    auto a = input(cpi);
+    auto a = input(cpi, v);
     if (!a) return nullptr;
     args.push_back(negate_if(attribute_true(v, "negated"), std::move(a)));
   }
@@ -303,7 +306,7 @@ ExprPtr Network::output_named(std::string_view name, bool& found) {
     else continue;
     if (!model::iequals(trim(body_text(text, ctx_).text), name)) continue;
     found = true;
-    auto v = input(child(n, "connectionPointIn"));
+    auto v = input(child(n, "connectionPointIn"), n);
     return negate_if(attribute_true(n, "negated"), v);
   }
   return nullptr;

@@ -29,7 +29,7 @@ class Network {
 
   /// The value flowing into `connection_point_in` (several connections are LD parallel
   /// branches: OR). Null after a diagnostic.
-  model::ExprPtr input(pugi::xml_node connection_point_in);
+  model::ExprPtr input(pugi::xml_node connection_point_in, pugi::xml_node owner = {});
 
   /// FB calls the values computed so far need, in call order; the list is emptied.
   model::StmtList take_calls();

@@ -4,6 +4,7 @@
 // walking forward through selection convergences, simultaneous divergences and jumps.
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <map>
 #include <set>

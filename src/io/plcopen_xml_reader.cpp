@@ -189,6 +189,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
   }
 
   int sfc_bodies = 0;
+  std::vector<pugi::xml_node> other_bodies;
   for (auto body : children(node, "body")) {
     const auto lang = body_language(body);
     if (!lang) continue;
@@ -196,9 +197,19 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
       build_sfc_chart(pc, lang, sfc_bodies == 0 ? pou.name : pou.name + "_" + std::to_string(sfc_bodies + 1), "");
       ++sfc_bodies;
     } else {
-      ctx.note(lang, "POU '" + pou.name + "': its " + std::string(local_name(lang)) +
-                         " body is not modelled (only SFC bodies are)");
+      other_bodies.push_back(lang);
     }
+  }
+  for (auto lang : other_bodies) {
+    const std::string what = "POU '" + pou.name + "': its " + std::string(local_name(lang)) +
+                             " body is not modelled (only SFC bodies are)";
+    // TwinCAT FBs start their SFC actions from an ST body (`ACT_Extend();`): those charts
+    // then only run when a step of a modelled chart activates the action.
+    if (!sfc_actions.empty())
+      ctx.warning(lang, what + "; actions with SFC bodies that it may call run only through "
+                               "action associations of modelled charts");
+    else
+      ctx.note(lang, what);
   }
   for (const auto& [index, sfc] : sfc_actions) {
     const std::string name = pou.actions[index].name;

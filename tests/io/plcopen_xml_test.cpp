@@ -187,6 +187,25 @@ TEST(PlcopenXml, InlineConditionInXhtmlElement) {
   EXPECT_EQ(model::to_st(guard0(r)), "a AND b");
 }
 
+TEST(PlcopenXml, NestedMemberChainsInConditionsAreKeptAsMembers) {
+  // TwinCAT (corpus 09): `Table.AtStack.DI_SwitchTrue` reads a member of a member of an FB.
+  const auto extra = "<inVariable localId=\"9\"><connectionPointOut/><expression>"
+                     "Table.AtStack.DI_SwitchTrue AND NOT a.b.c.d AND x.y AND S0.T &lt; T#1.5s</expression></inVariable>";
+  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"9\"/></connectionPointIn></condition>";
+  const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA, "", kNs200), "c.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto g = guard0(r);
+  ASSERT_EQ(g->kind, model::ExprKind::And);
+  ASSERT_EQ(g->args.size(), 4u);
+  EXPECT_EQ(g->args[0]->kind, model::ExprKind::Member);
+  EXPECT_EQ(g->args[0]->name, "Table.AtStack");
+  EXPECT_EQ(g->args[0]->member, "DI_SwitchTrue");
+  EXPECT_EQ(g->args[1]->args[0]->name, "a.b.c");
+  EXPECT_EQ(g->args[1]->args[0]->member, "d");
+  EXPECT_EQ(g->args[2]->name, "x");
+  EXPECT_EQ(g->args[3]->args[1]->value, 1500);
+}
+
 TEST(PlcopenXml, NegatedCondition) {
   const auto cond = "<condition negated=\"true\"><inline><ST>a</ST></inline></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond), kVarA), "c.xml");
@@ -347,6 +366,17 @@ TEST(PlcopenXml, UnsupportedBlockInAConditionIsAPreciseError) {
   const auto* d = find_message(r, Severity::Error, "unsupported: function SQRT");
   ASSERT_NE(d, nullptr) << errors_of(r);
   EXPECT_EQ(d->where.element_path, "/project/types/pous/pou[@name='P']/body/SFC/block[@localId='12']");
+}
+
+TEST(PlcopenXml, ConditionThroughConnectorAndContinuation) {
+  const auto extra = R"(
+    <inVariable localId="10"><connectionPointOut/><expression>a</expression></inVariable>
+    <connector localId="11" name="wire"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></connector>
+    <continuation localId="12" name="WIRE"><connectionPointOut/></continuation>)";
+  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"12\"/></connectionPointIn></condition>";
+  const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA), "c.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(model::to_st(guard0(r)), "a");
 }
 
 // ----------------------------------------------------------------------- divergence, convergence
@@ -655,6 +685,20 @@ TEST(PlcopenXml, PousUnderAddDataAreRead) {
   EXPECT_EQ(chart0(r).transitions[0].where.element_path,
             "/project/addData/data[@name='http://www.3s-software.com/plcopenxml/application']/resource[@name='R']"
             "/addData/data[@name='http://www.3s-software.com/plcopenxml/pou']/pou[@name='P']/body/SFC/transition[@localId='2']");
+}
+
+TEST(PlcopenXml, StBodyCallingSfcActionsIsFlagged) {
+  // TwinCAT: an FB with an ST body and an action written in SFC, started from the ST body.
+  std::string doc = std::string("<?xml version=\"1.0\"?><project xmlns=\"") + kNs200 + "\"><types><pous>"
+      "<pou name=\"Cyl\" pouType=\"functionBlock\"><interface>" + kVarA + "</interface>"
+      "<actions><action name=\"ACT_Extend\"><body><SFC>" + two_steps() + "</SFC></body></action></actions>"
+      "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Extend();</xhtml></ST></body></pou>"
+      "</pous></types></project>";
+  const auto r = load_plcopen_xml(doc, "tc.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(r.project->pous[0].charts.size(), 1u);
+  EXPECT_EQ(r.project->pous[0].charts[0].parent_action, "ACT_Extend");
+  EXPECT_TRUE(has_message(r, Severity::Warning, "POU 'Cyl': its ST body is not modelled"));
 }
 
 TEST(PlcopenXml, InstanceActionReferencesAreKeptAsNames) {
