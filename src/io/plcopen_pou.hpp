@@ -22,10 +22,13 @@ struct PouContext {
   std::map<std::string, model::ExprPtr> transition_guards;
   /// FB calls needed by condition networks (LD/FBD logic wired to transitions).
   model::StmtList condition_calls;
+  /// Inline action bodies read so far (they are named INLINE1, INLINE2, ...).
+  int inline_actions = 0;
 };
 
 /// Reads `sfc` into a new chart of the POU (named `chart_name`, body of `parent_action` when
-/// not empty), with its action associations and inline actions; returns its index in
+/// not empty), with its action associations and inline actions (named INLINE<k>, numbered in
+/// document order over the POU, a suffix added if the name is taken); returns its index in
 /// Pou::charts. Macro-step bodies become further charts.
 int build_sfc_chart(PouContext& pc, pugi::xml_node sfc, const std::string& chart_name,
                     const std::string& parent_action);

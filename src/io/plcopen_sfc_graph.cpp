@@ -302,7 +302,6 @@ class ChartBuilder {
   }
 
   void read_action_blocks() {
-    std::map<std::string, int> inline_count;  // per step (upper-case name)
     for (auto ab : element_children(sfc_)) {
       if (local_name(ab) != "actionBlock") continue;
       const auto conn = child(child(ab, "connectionPointIn"), "connection");
@@ -313,11 +312,11 @@ class ChartBuilder {
         continue;
       }
       const std::string step = trim(it->second.attribute("name").value());
-      for (auto a : children(ab, "action")) read_action(a, step, inline_count[model::to_upper(step)]);
+      for (auto a : children(ab, "action")) read_action(a, step);
     }
   }
 
-  void read_action(pugi::xml_node a, const std::string& step, int& inline_k) {
+  void read_action(pugi::xml_node a, const std::string& step) {
     model::ActionAssociation as;
     as.chart = chart_.name;
     as.step = step;
@@ -353,9 +352,10 @@ class ChartBuilder {
         return;
       }
     } else if (const auto inl = child(a, "inline")) {
-      const std::string prefix = chart_.parent_action.empty() ? "" : chart_.name + "_";
+      // Numbered per POU in document order, as matiec's textual twin of a Beremiz chart names
+      // them (corpus 03/04): INLINE1, INLINE2, ...
       model::Action act;
-      act.name = unique_action_name(prefix + step + "_inline" + std::to_string(++inline_k));
+      act.name = unique_action_name("INLINE" + std::to_string(++pc_.inline_actions));
       act.kind = model::ActionBodyKind::Statements;
       act.where = ctx_.where(inl);
       const auto lang = body_language(inl);

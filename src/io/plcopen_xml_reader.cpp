@@ -155,7 +155,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
   else ctx.warning(node, "unknown pouType '" + type + "': read as a program");
   read_variables(ctx, child(node, "interface"), pou);
 
-  PouContext pc{ctx, node, pou, {}, {}, {}};
+  PouContext pc{ctx, node, pou, {}, {}, {}, 0};
   for (auto t : children(child(node, "transitions"), "transition"))
     pc.named_transitions.emplace(model::to_upper(trim(t.attribute("name").value())), t);
 

@@ -10,6 +10,7 @@
 
 #include "io/load.hpp"
 #include "model/chart.hpp"
+#include "model/compare.hpp"
 #include "model/names.hpp"
 #include "support/sfcv_test.hpp"
 
@@ -537,17 +538,31 @@ TEST(PlcopenXml, InlineActionBodiesBecomeNamedActions) {
   const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs), "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
-  const auto* a1 = pou.find_action("S1_inline1");
-  const auto* a2 = pou.find_action("S1_inline2");
+  const auto* a1 = pou.find_action("INLINE1");
+  const auto* a2 = pou.find_action("INLINE2");
   ASSERT_NE(a1, nullptr);
   ASSERT_NE(a2, nullptr);
   EXPECT_EQ(model::to_st(a1->body), "x := TRUE;\n");
   EXPECT_EQ(a2->body.size(), 1u);
   EXPECT_EQ(a2->body[0]->kind, model::StmtKind::If);
   ASSERT_EQ(pou.associations.size(), 2u);
-  EXPECT_EQ(pou.associations[0].action, "S1_inline1");
+  EXPECT_EQ(pou.associations[0].action, "INLINE1");
   EXPECT_EQ(pou.associations[0].qualifier, model::Qualifier::P);
   EXPECT_EQ(pou.associations[1].qualifier, model::Qualifier::N);
+}
+
+TEST(PlcopenXml, InlineActionNamesAvoidDeclaredNames) {
+  const auto blocks = action_block(20, 1, R"(<action><inline><ST>x := TRUE;</ST></inline></action>)") +
+                      action_block(21, 3, R"(<action><inline><ST>y := TRUE;</ST></inline></action>)");
+  const auto actions = "<actions><action name=\"INLINE1\"><body><ST>n := 1;</ST></body></action></actions>";
+  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions), "act.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous[0];
+  EXPECT_EQ(model::to_st(pou.find_action("INLINE1")->body), "n := 1;\n");
+  ASSERT_NE(pou.find_action("INLINE1_2"), nullptr);
+  EXPECT_EQ(model::to_st(pou.find_action("INLINE1_2")->body), "x := TRUE;\n");
+  ASSERT_NE(pou.find_action("INLINE2"), nullptr);
+  EXPECT_EQ(model::to_st(pou.find_action("INLINE2")->body), "y := TRUE;\n");
 }
 
 TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
@@ -557,11 +572,11 @@ TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
   const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions), "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);  // loads: the semantics refuses the actions instead
   const auto& pou = r.project->pous[0];
-  const auto* inl = pou.find_action("S1_inline1");
+  const auto* inl = pou.find_action("INLINE1");
   ASSERT_NE(inl, nullptr);
   EXPECT_TRUE(inl->body_unsupported);
   EXPECT_TRUE(inl->body.empty());
-  const auto* w = find_message(r, Severity::Warning, "action 'S1_inline1': body not modelled");
+  const auto* w = find_message(r, Severity::Warning, "action 'INLINE1': body not modelled");
   ASSERT_NE(w, nullptr);
   EXPECT_NE(w->where.element_path.find("actionBlock[@localId='20']/action[@localId='0']/inline/ST"), std::string::npos)
       << w->where.element_path;
@@ -893,6 +908,31 @@ INSTANTIATE_TEST_SUITE_P(Manifest, PlcopenCorpus,
                          [](const auto& param_info) {
                            return "file" + std::string(param_info.param.file).substr(0, 2);
                          });
+
+// 03 (XML) and 04 (its textual twin) give the same model, except for the initial values the
+// two files really declare differently (03: QX1 FALSE, QX2 TRUE; 04: QX1 := 1, QX2 := 0).
+TEST(PlcopenCorpusTwin, MatiecXmlAndTextGiveTheSameModel) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const auto xml = load_file((corpus / "03_matiec_SFC_TEST_tc6v1.xml").string());
+  const auto text = load_file((corpus / "04_matiec_sfc_syntax.st").string());
+  ASSERT_TRUE(xml.ok()) << errors_of(xml);
+  ASSERT_TRUE(text.ok()) << errors_of(text);
+  auto a = *xml.project;
+  const auto diff = model::first_difference(a, *text.project);
+  ASSERT_TRUE(diff.has_value());
+  EXPECT_NE(diff->find("variable 'QX1': initial value differs"), std::string::npos) << *diff;
+  const auto* qx1 = text.project->pous[0].find_variable("QX1");
+  const auto* qx2 = text.project->pous[0].find_variable("QX2");
+  ASSERT_TRUE(qx1 && qx2);
+  EXPECT_EQ(a.pous[0].find_variable("QX1")->initial, 0);
+  EXPECT_EQ(a.pous[0].find_variable("QX2")->initial, 1);
+  for (auto& v : a.pous[0].variables) {
+    if (model::iequals(v.name, "QX1")) v.initial = qx1->initial;
+    if (model::iequals(v.name, "QX2")) v.initial = qx2->initial;
+  }
+  const auto rest = model::first_difference(a, *text.project);
+  EXPECT_FALSE(rest.has_value()) << *rest;
+}
 
 }  // namespace
 }  // namespace sfcv::io
