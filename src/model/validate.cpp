@@ -238,18 +238,44 @@ class Validator {
 
     for (const auto& s : chart.steps) check_step_kind(s, where);
 
+    // An undeclared step is one defect however many transitions name it: one error, at the
+    // first transition that names it, listing the others.
+    struct Undeclared {
+      std::string name;
+      const SourceLocation* first;
+      bool as_source;
+      std::vector<const SourceLocation*> others;
+    };
+    std::vector<Undeclared> undeclared;
+    auto note_undeclared = [&](const std::string& name, const SourceLocation& here, bool source) {
+      for (auto& u : undeclared)
+        if (iequals(u.name, name)) {
+          if (u.first != &here &&
+              std::find(u.others.begin(), u.others.end(), &here) == u.others.end())
+            u.others.push_back(&here);
+          return;
+        }
+      undeclared.push_back({name, &here, source, {}});
+    };
     for (const auto& t : chart.transitions) {
       const auto& here = at(t.where, where);
       if (t.sources.empty()) error(here, "transition has no source step");
       if (t.targets.empty()) error(here, "transition has no target step");
-      std::set<std::string> reported;
       for (const auto& s : t.sources)
-        if (!chart.find_step(s) && reported.insert("<" + to_upper(s)).second)
-          error(here, "transition from undeclared step " + quoted(s));
+        if (!chart.find_step(s)) note_undeclared(s, here, true);
       for (const auto& s : t.targets)
-        if (!chart.find_step(s) && reported.insert(">" + to_upper(s)).second)
-          error(here, "transition to undeclared step " + quoted(s));
+        if (!chart.find_step(s)) note_undeclared(s, here, false);
       expect_bool(t.guard, here, "the guard");
+    }
+    for (const auto& u : undeclared) {
+      std::string also;
+      for (const auto* o : u.others) also += (also.empty() ? "" : ", ") + place(*o, *u.first);
+      error(*u.first, std::string("transition ") + (u.as_source ? "from" : "to") +
+                          " undeclared step " + quoted(u.name) +
+                          (also.empty() ? std::string()
+                                        : " (also named by the transition" +
+                                              std::string(u.others.size() > 1 ? "s" : "") +
+                                              " at " + also + ")"));
     }
 
     check_initial_steps(chart, activated_otherwise);
@@ -437,7 +463,7 @@ class Validator {
             continue;
           }
           if (*ctx[g] == out) continue;
-          report_context_clash(chart, tr, chart.steps[g], *ctx[g], out, here);
+          report_context_clash(chart, ti, chart.steps[g], *ctx[g], out, here);
         }
       }
     }
@@ -469,11 +495,17 @@ class Validator {
                               c.back().divergence == first.back().divergence;
       if (!same_level) {
         const auto& a = chart.steps[static_cast<std::size_t>(srcs[0])];
-        const auto& b = chart.steps[static_cast<std::size_t>(s)];
-        error(here, "simultaneous convergence joins steps that are not branches of one "
-                    "simultaneous divergence: step " + quoted(a.name) + " is " +
-                        describe(first, chart, here) + ", step " + quoted(b.name) + " is " +
-                        describe(c, chart, here));
+        const auto& b = chart.steps[static_cast<std::size_t>(s == srcs[0] ? srcs[1] : s)];
+        const Context& cb = *ctx[static_cast<std::size_t>(s == srcs[0] ? srcs[1] : s)];
+        if (cb == first)
+          error(here, "simultaneous convergence joins steps " + quoted(a.name) + " and " +
+                          quoted(b.name) + ", which are not parallel branches: both are " +
+                          describe(first, chart, here));
+        else
+          error(here, "simultaneous convergence joins steps that are not branches of one "
+                      "simultaneous divergence: step " + quoted(a.name) + " is " +
+                          describe(first, chart, here) + ", step " + quoted(b.name) + " is " +
+                          describe(cb, chart, here));
         return common_prefix();
       }
     }
@@ -495,14 +527,20 @@ class Validator {
     return Context(first.begin(), first.end() - 1);
   }
 
-  void report_context_clash(const Chart& chart, const Transition& tr, const Step& target,
-                            const Context& known, const Context& out, const SourceLocation& here) {
+  void report_context_clash(const Chart& chart, int ti, const Step& target, const Context& known,
+                            const Context& out, const SourceLocation& here) {
+    const Transition& tr = chart.transitions[static_cast<std::size_t>(ti)];
     const bool known_is_prefix =
         known.size() < out.size() && std::equal(known.begin(), known.end(), out.begin());
     const bool out_is_prefix =
         out.size() < known.size() && std::equal(out.begin(), out.end(), known.begin());
     const std::string src = tr.sources.empty() ? std::string("?") : tr.sources.front();
-    if (known_is_prefix) {
+    if (known_is_prefix && out.size() == known.size() + 1 && out.back().divergence == ti) {
+      // This transition is the divergence: its branch starts at a step already in use.
+      error(here, "simultaneous divergence into step " + quoted(target.name) + ", which is " +
+                      describe(known, chart, here) +
+                      " on another path: a parallel branch must start a sequence of its own");
+    } else if (known_is_prefix) {
       const Context exited(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(known.size()) + 1);
       error(here, "jump out of a parallel branch: this transition leaves step " + quoted(src) +
                       ", " + describe(exited, chart, here) + ", for step " + quoted(target.name) +

@@ -91,18 +91,24 @@ TEST(Validate, DuplicateVariableAndAction) {
   EXPECT_EQ(count_at(ds, Severity::Error, act_line, "duplicate action 'a'"), 1u) << dump(ds);
 }
 
-TEST(Validate, UndeclaredStepsGiveOneErrorPerNamePerTransition) {
+TEST(Validate, UndeclaredStepIsOneErrorAtItsFirstReference) {
   PouBuilder b;
   b.chart("main").initial("A");
   const int t1 = b.line();
-  b.trans({"A"}, {"B", "B"});  // B named twice: one error
+  b.trans({"A"}, {"B", "B"});  // B named twice
   const int t2 = b.line();
-  b.trans({"B"}, {"C"});
+  b.trans({"b"}, {"C"});       // and again, in another case
+  const int t3 = b.line();
+  b.trans({"C"}, {"A"});
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, t1, "transition to undeclared step 'B'"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, t2, "transition from undeclared step 'B'"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, t2, "transition to undeclared step 'C'"), 1u) << dump(ds);
-  EXPECT_EQ(count(ds, Severity::Error), 3u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, t1, "transition to undeclared step 'B' (also named by the "
+                                              "transition at line " + std::to_string(t2) + ":1)"),
+            1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, t2,
+                     "transition to undeclared step 'C' (also named by the transition at line " +
+                         std::to_string(t3) + ":1)"),
+            1u) << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
 
 // --------------------------------------------------------------------------- initial steps
@@ -256,6 +262,29 @@ TEST(Validate, ConvergenceOfSomeBranchesOnly) {
   b.trans({"A", "B"}, {"J"});
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, join, "joins 2 of the 3 branches"), 1u) << dump(ds);
+}
+
+TEST(Validate, DivergenceIntoAStepOutsideTheBranch) {
+  // S0 -> A; A forks into (B, S0): S0 would hold a second token.
+  PouBuilder b;
+  b.chart("main").initial("S0").step("A").step("B");
+  b.trans({"S0"}, {"A"});
+  const int fork = b.line();
+  b.trans({"A"}, {"B", "S0"});
+  const auto ds = validate(b.project());
+  EXPECT_EQ(count_at(ds, Severity::Error, fork, "simultaneous divergence into step 'S0'"), 1u)
+      << dump(ds);
+}
+
+TEST(Validate, ConvergenceOfStepsOutsideAnyBranch) {
+  PouBuilder b;
+  b.chart("main").initial("S0").step("A").trans({"S0"}, {"A"});
+  const int join = b.line();
+  b.trans({"S0", "A"}, {"S0"});
+  const auto ds = validate(b.project());
+  EXPECT_EQ(count_at(ds, Severity::Error, join,
+                     "joins steps 'S0' and 'A', which are not parallel branches"),
+            1u) << dump(ds);
 }
 
 TEST(Validate, GrafcetIsNotHeldToTheIecParallelRule) {
