@@ -259,8 +259,10 @@ class Validator {
     };
     for (const auto& t : chart.transitions) {
       const auto& here = at(t.where, where);
-      if (t.sources.empty()) error(here, "transition has no source step");
-      if (t.targets.empty()) error(here, "transition has no target step");
+      // IEC 60848 has source transitions (no upstream step) and sink transitions (no
+      // downstream step); IEC 61131-3 has neither.
+      if (!grafcet() && t.sources.empty()) error(here, "transition has no source step");
+      if (!grafcet() && t.targets.empty()) error(here, "transition has no target step");
       for (const auto& s : t.sources)
         if (!chart.find_step(s)) note_undeclared(s, here, true);
       for (const auto& s : t.targets)
@@ -279,7 +281,7 @@ class Validator {
     }
 
     check_initial_steps(chart, activated_otherwise);
-    check_reachability(chart, activated_otherwise);
+    check_reachability(chart);
     if (!grafcet()) check_parallel_structure(chart);
   }
 
@@ -333,7 +335,7 @@ class Validator {
   /// Steps that no sequence of transitions reaches from the initial steps, reading the chart
   /// as a Petri net without guards: a transition can fire once all its source steps can be
   /// active, whatever the guards say.
-  void check_reachability(const Chart& chart, bool activated_otherwise) {
+  void check_reachability(const Chart& chart) {
     std::vector<char> reached(chart.steps.size(), 0);
     bool seeded = false;
     for (std::size_t i = 0; i < chart.steps.size(); ++i)
@@ -342,15 +344,17 @@ class Validator {
       if (iequals(fo.target, chart.name))
         for (const auto& s : fo.situation)
           if (const int i = chart.step_index(s); i >= 0) reached[static_cast<std::size_t>(i)] = seeded = true;
-    // Entry steps of enclosed charts and macro-step expansions are not marked in the IR.
-    if (!seeded && activated_otherwise) return;
-    if (!seeded) return;  // "no initial step" is already an error
+    for (const auto& t : chart.transitions)
+      if (t.sources.empty()) seeded = true;  // a Grafcet source transition
+    // Entry steps of enclosed charts and macro-step expansions are not marked in the IR, and
+    // "no initial step" is already an error otherwise.
+    if (!seeded) return;
 
     for (bool changed = true; changed;) {
       changed = false;
       for (const auto& t : chart.transitions) {
-        const bool enabled = !t.sources.empty() &&
-                             std::all_of(t.sources.begin(), t.sources.end(), [&](const auto& s) {
+        // A Grafcet source transition (no source step) can always fire.
+        const bool enabled = std::all_of(t.sources.begin(), t.sources.end(), [&](const auto& s) {
                                const int i = chart.step_index(s);
                                return i >= 0 && reached[static_cast<std::size_t>(i)];
                              });

@@ -179,6 +179,19 @@ TEST(Validate, ConvergenceNeedsAllItsSourcesReachable) {
   EXPECT_EQ(count_at(ds, Severity::Warning, d, "step 'D' is unreachable"), 1u) << dump(ds);
 }
 
+TEST(Validate, GrafcetSourceAndSinkTransitions) {
+  PouBuilder b;
+  b.input("a", "BOOL").chart("G0").initial("1").step("2");
+  const int source = b.line();
+  b.trans({}, {"2"}, make_unary(ExprKind::Rising, make_name("a")));  // source transition
+  const int sink = b.line();
+  b.trans({"2"}, {}, make_name("a"));                                // sink transition
+  EXPECT_CLEAN(validate(b.project(Dialect::Grafcet)));
+  const auto ds = validate(b.project());
+  EXPECT_EQ(count_at(ds, Severity::Error, source, "transition has no source step"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, sink, "transition has no target step"), 1u) << dump(ds);
+}
+
 TEST(Validate, GrafcetForcingSituationSeedsReachability) {
   PouBuilder b;
   b.chart("G0").initial("1").step("2").trans({"1"}, {"2"}).trans({"2"}, {"1"});
