@@ -22,12 +22,14 @@ namespace {
 
 /// What an expression evaluates to. `Unknown` follows an error already reported (or an
 /// unresolvable part): it is compatible with everything so that one defect gives one diagnostic.
-enum class Ty { Bool, Int, Time, Unknown };
+/// `Bit` is the literal 0 or 1, which IEC 61131-3 also accepts as a BOOL literal.
+enum class Ty { Bool, Int, Time, Bit, Unknown };
 
 std::string ty_name(Ty t) {
   switch (t) {
     case Ty::Bool: return "BOOL";
-    case Ty::Int: return "integer";
+    case Ty::Int:
+    case Ty::Bit: return "integer";
     case Ty::Time: return "TIME";
     case Ty::Unknown: break;
   }
@@ -44,7 +46,15 @@ std::optional<Ty> value_type(const Type& t) {
   return std::nullopt;  // a function block instance is not a value
 }
 
-bool clash(Ty a, Ty b) { return a != Ty::Unknown && b != Ty::Unknown && a != b; }
+bool clash(Ty a, Ty b) {
+  if (a == Ty::Unknown || b == Ty::Unknown || a == b) return false;
+  if (a == Ty::Bit) return b == Ty::Time;
+  if (b == Ty::Bit) return a == Ty::Time;
+  return true;
+}
+
+/// `Bit` read as a number.
+Ty numeric(Ty t) { return t == Ty::Bit ? Ty::Int : t; }
 
 /// The members of the standard function blocks (IEC 61131-3 table 2.5.2.3).
 struct FbMember {
@@ -125,6 +135,7 @@ class Validator {
   const Project& project_;
   const Pou* pou_ = nullptr;
   Diagnostics out_;
+  std::set<std::string> outside_warned_;  ///< per POU: names already reported by outside_model
 
   bool grafcet() const { return project_.dialect == Dialect::Grafcet; }
 
@@ -156,6 +167,7 @@ class Validator {
 
   void check_pou(const Pou& pou) {
     pou_ = &pou;
+    outside_warned_.clear();
     check_duplicates(pou.variables, "variable", pou.where);
     check_duplicates(pou.actions, "action", pou.where);
     const auto activated = charts_activated_by_grafcet_orders();
@@ -295,8 +307,6 @@ class Validator {
                         quoted(s.expansion));
     }
     if (s.kind == StepKind::Enclosing) {
-      if (s.enclosed.empty())
-        error(here, "enclosing step " + quoted(s.name) + " encloses no partial grafcet");
       for (const auto& e : s.enclosed)
         if (!pou_->find_chart(e))
           error(here, "enclosing step " + quoted(s.name) + " encloses undeclared chart " +
@@ -654,7 +664,46 @@ class Validator {
       error(here, who + " drives variable " + quoted(name) + " of type " + v->type.name +
                       ", not BOOL");
     else if (v->direction == VarDirection::Input)
-      error(here, who + " drives input variable " + quoted(name) + " (inputs are read-only)");
+      write_to_input(here, who + " drives input variable " + quoted(name));
+  }
+
+  /// IEC 61131-3 inputs are read-only, but CODESYS and TwinCAT let a POU write its own
+  /// VAR_INPUTs (corpus 07, 09), so for IEC charts this is a warning. A Grafcet input comes from
+  /// the plant: writing it is an error.
+  void write_to_input(const SourceLocation& here, const std::string& what) {
+    if (grafcet())
+      error(here, what + " (inputs are read-only)");
+    else
+      warning(here, what + " (IEC 61131-3 inputs are read-only; CODESYS and TwinCAT accept it)");
+  }
+
+  /// A qualified name whose first part the model does not declare: a global variable list,
+  /// an instance of a function block type sfcv does not model, ... Its value is unknown to sfcv:
+  /// one warning per name and POU, not an error, so that such charts still load.
+  void outside_model(const SourceLocation& here, const std::string& full, const std::string& base) {
+    if (!outside_warned_.insert(to_upper(full)).second) return;
+    warning(here, quoted(full) + " refers to " + quoted(base) +
+                      ", which this model does not declare (a global variable list or an "
+                      "instance of a type sfcv does not model?): its value is unknown to sfcv");
+  }
+
+  /// An association names an action nobody declares. `inst.ACT_x` (TwinCAT: an action of a
+  /// function block instance) whose instance the model does not declare is outside the model.
+  void undeclared_action(const std::string& action, const SourceLocation& here,
+                         const std::string& who) {
+    const auto dot = action.rfind('.');
+    if (dot != std::string::npos) {
+      const std::string owner = action.substr(0, dot);
+      const std::string first = owner.substr(0, owner.find('.'));
+      if (!pou_->find_variable(first)) {
+        if (!outside_warned_.insert(to_upper(action)).second) return;
+        warning(here, who + " activates action " + quoted(action) + " of " + quoted(owner) +
+                          ", which this model does not declare (an instance of a type sfcv "
+                          "does not model?): the action is not modelled");
+        return;
+      }
+    }
+    error(here, who + " names undeclared action " + quoted(action));
   }
 
   void check_association(const ActionAssociation& as) {
@@ -666,7 +715,7 @@ class Validator {
       if (pou_->find_variable(as.action))
         check_driven_variable(as.action, here, who);
       else
-        error(here, who + " names undeclared action " + quoted(as.action));
+        undeclared_action(as.action, here, who);
     }
     if (is_timed(as.qualifier)) {
       if (!as.duration_ms && as.duration_variable.empty())
@@ -702,11 +751,8 @@ class Validator {
       error(here, "stored action on undeclared variable " + quoted(sa.variable));
       return;
     }
-    if (v->direction == VarDirection::Input) {
-      error(here, "stored action assigns input variable " + quoted(sa.variable) +
-                      " (inputs are read-only)");
-      return;
-    }
+    if (v->direction == VarDirection::Input)
+      write_to_input(here, "stored action assigns input variable " + quoted(sa.variable));
     const auto target = value_type(v->type);
     if (!target) {
       error(here, "stored action assigns function block instance " + quoted(sa.variable));
@@ -716,10 +762,7 @@ class Validator {
       error(here, "stored action on " + quoted(sa.variable) + " has no value");
       return;
     }
-    // Grafcet writes x := 1 / x := 0 for Boolean outputs.
-    if (*target == Ty::Bool && sa.value->kind == ExprKind::IntConst &&
-        (sa.value->value == 0 || sa.value->value == 1))
-      return;
+    // Grafcet writes x := 1 / x := 0 for Boolean outputs: Ty::Bit fits BOOL.
     const Ty value = type_of(*sa.value, here);
     if (clash(value, *target))
       error(at(sa.value->where, here), "stored action assigns a " + ty_name(value) +
@@ -761,7 +804,7 @@ class Validator {
     auto op = [&] { return to_st(e); };
     switch (e.kind) {
       case ExprKind::BoolConst: return Ty::Bool;
-      case ExprKind::IntConst: return Ty::Int;
+      case ExprKind::IntConst: return e.value == 0 || e.value == 1 ? Ty::Bit : Ty::Int;
       case ExprKind::TimeConst: return Ty::Time;
       case ExprKind::Name: return resolve_name(e, here);
       case ExprKind::Member: return resolve_member(e, here);
@@ -779,7 +822,7 @@ class Validator {
           error(here, "arithmetic negation of a BOOL value in " + op());
           return Ty::Unknown;
         }
-        return a;
+        return numeric(a);
       }
       case ExprKind::And:
       case ExprKind::Or:
@@ -793,6 +836,7 @@ class Validator {
             unknown = true;
             continue;
           }
+          if (a == Ty::Bit) continue;  // fits BOOL and integer operands alike
           if (a == Ty::Time) {
             error(here, "logical operation on a TIME value in " + op());
             return Ty::Unknown;
@@ -803,7 +847,8 @@ class Validator {
           }
           kind = a;
         }
-        return unknown || !kind ? Ty::Unknown : *kind;
+        if (unknown) return Ty::Unknown;
+        return kind ? *kind : Ty::Bit;
       }
       case ExprKind::Add:
       case ExprKind::Sub:
@@ -836,6 +881,8 @@ class Validator {
 
   Ty arithmetic(ExprKind kind, Ty a, Ty b, const SourceLocation& here, const std::string& op) {
     if (a == Ty::Unknown || b == Ty::Unknown) return Ty::Unknown;
+    a = numeric(a);
+    b = numeric(b);
     if (a == Ty::Int && b == Ty::Int) return Ty::Int;
     if ((kind == ExprKind::Add || kind == ExprKind::Sub) && a == Ty::Time && b == Ty::Time)
       return Ty::Time;
@@ -864,35 +911,72 @@ class Validator {
   }
 
   Ty resolve_member(const Expr& e, const SourceLocation& here) {
+    // Importers may keep a chain a.b.c as name "a.b", member "c".
     const std::string full = e.name + "." + e.member;
-    if (const Variable* v = pou_->find_variable(e.name)) {
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto dot = full.find('.', from);
+      parts.push_back(full.substr(from, dot == std::string::npos ? dot : dot - from));
+      if (dot == std::string::npos) break;
+      from = dot + 1;
+    }
+    return resolve_path(parts, *pou_, true, here, full);
+  }
+
+  /// `parts` (>= 2) looked up in `scope`; `top` when `scope` is the POU being validated (steps
+  /// and actions are only visible there).
+  Ty resolve_path(const std::vector<std::string>& parts, const Pou& scope, bool top,
+                  const SourceLocation& here, const std::string& full) {
+    const std::string& base = parts[0];
+    const std::string& member = parts[1];
+    const bool simple = parts.size() == 2;
+    if (const Variable* v = scope.find_variable(base)) {
       if (v->type.kind == TypeKind::FunctionBlock) {
-        if (auto m = fb_member(v->type.fb, e.member)) return m->type;
-        error(here, "function block " + v->type.name + " has no member " + quoted(e.member) +
+        if (auto m = fb_member(v->type.fb, member); m && simple) return m->type;
+        error(here, "function block " + v->type.name + " has no member " + quoted(member) +
                         " (in " + full + ")");
         return Ty::Unknown;
       }
-      if (v->type.kind == TypeKind::Int && all_digits(e.member)) return Ty::Bool;  // bit access
-      error(here, "variable " + quoted(e.name) + " of type " + v->type.name +
-                      " has no member " + quoted(e.member));
+      if (v->type.kind == TypeKind::Int && simple && all_digits(member)) return Ty::Bool;  // bit
+      error(here, "variable " + quoted(base) + " of type " + v->type.name + " has no member " +
+                      quoted(member) + " (in " + full + ")");
       return Ty::Unknown;
     }
-    if (step_exists(e.name)) {
-      if (iequals(e.member, "X")) return Ty::Bool;
-      if (iequals(e.member, "T")) return Ty::Time;
-      error(here, "step " + quoted(e.name) + " has no member " + quoted(e.member) +
+    if (top && simple && step_exists(base)) {
+      if (iequals(member, "X")) return Ty::Bool;
+      if (iequals(member, "T")) return Ty::Time;
+      error(here, "step " + quoted(base) + " has no member " + quoted(member) +
                       " (a step has X and T)");
       return Ty::Unknown;
     }
-    if (pou_->find_action(e.name)) {
+    if (top && simple && pou_->find_action(base)) {
       // IEC 61131-3 ed. 3 action control: A.A (active) and A.Q.
-      if (iequals(e.member, "A") || iequals(e.member, "Q") || iequals(e.member, "X"))
-        return Ty::Bool;
-      error(here, "action " + quoted(e.name) + " has no member " + quoted(e.member) +
+      if (iequals(member, "A") || iequals(member, "Q") || iequals(member, "X")) return Ty::Bool;
+      error(here, "action " + quoted(base) + " has no member " + quoted(member) +
                       " (an action has A and Q)");
       return Ty::Unknown;
     }
-    error(here, "unknown name " + quoted(e.name) + " in " + full);
+    if (top) {
+      if (const Pou* other = project_.find_pou(base)) {
+        // A program's variable read from elsewhere: Main.x.
+        const std::vector<std::string> rest(parts.begin() + 1, parts.end());
+        if (rest.size() >= 2) return resolve_path(rest, *other, false, here, full);
+        const Variable* v = other->find_variable(member);
+        if (!v) {
+          error(here, "POU " + quoted(other->name) + " declares no variable " + quoted(member));
+          return Ty::Unknown;
+        }
+        if (auto t = value_type(v->type)) return *t;
+        error(here, "function block instance " + quoted(full) + " used as a value");
+        return Ty::Unknown;
+      }
+      // S.X / S.T on an undeclared step is a typo, not an outside reference.
+      if (simple && (iequals(member, "X") || iequals(member, "T"))) {
+        error(here, "unknown step " + quoted(base) + " in " + full);
+        return Ty::Unknown;
+      }
+    }
+    outside_model(here, full, top ? base : full.substr(0, full.rfind('.')));
     return Ty::Unknown;
   }
 
@@ -908,10 +992,8 @@ class Validator {
         error(here, "assignment to undeclared variable " + quoted(target));
         return std::nullopt;
       }
-      if (v->direction == VarDirection::Input) {
-        error(here, "assignment to input variable " + quoted(target) + " (inputs are read-only)");
-        return std::nullopt;
-      }
+      if (v->direction == VarDirection::Input)
+        write_to_input(here, "assignment to input variable " + quoted(target));
       if (auto t = value_type(v->type)) return t;
       error(here, "assignment to function block instance " + quoted(target));
       return std::nullopt;
@@ -930,14 +1012,16 @@ class Validator {
       return m->type;
     }
     if (v && v->type.kind == TypeKind::Int && all_digits(member)) {
-      if (v->direction == VarDirection::Input) {
-        error(here, "assignment to input variable " + quoted(name) + " (inputs are read-only)");
-        return std::nullopt;
-      }
+      if (v->direction == VarDirection::Input)
+        write_to_input(here, "assignment to input variable " + quoted(name));
       return Ty::Bool;
     }
     if (!v && step_exists(name)) {
       error(here, "assignment to step flag " + quoted(target) + " (step flags are read-only)");
+      return std::nullopt;
+    }
+    if (!v && !pou_->find_action(name) && !project_.find_pou(name)) {
+      outside_model(here, target, name);
       return std::nullopt;
     }
     error(here, "assignment to unknown " + quoted(target));

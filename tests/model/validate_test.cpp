@@ -361,8 +361,25 @@ TEST(Validate, AssociationNamesActionOrBooleanVariable) {
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, undeclared, "undeclared action 'Nothing'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, integer, "not BOOL"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, input, "input variable 'go'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, input, "input variable 'go'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, bad_step, "undeclared step 'S9'"), 1u) << dump(ds);
+}
+
+TEST(Validate, ActionOfAnUndeclaredInstanceIsOutsideTheModel) {
+  // TwinCAT: `Motor.ACT_Stop` is an action of an instance of a user function block, which the
+  // importers cannot model: a warning (once per name), not an error.
+  auto b = loop();
+  const int first = b.line();
+  b.assoc("main", "S1", "Table.Motor.ACT_Stop").assoc("main", "S0", "Table.Motor.ACT_Stop");
+  const auto ds = validate(b.project());
+  EXPECT_EQ(count(ds, Severity::Error), 0u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, first, "of 'Table.Motor', which this model does not declare"),
+            1u) << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Warning), 1u) << dump(ds);
+  // A dotted action of a declared variable is still an error.
+  auto c = loop();
+  c.var("n", "INT").assoc("main", "S1", "n.ACT_Stop");
+  EXPECT_EQ(count(validate(c.project()), Severity::Error), 1u);
 }
 
 TEST(Validate, VariableActionMustDriveABooleanNonInput) {
@@ -372,7 +389,12 @@ TEST(Validate, VariableActionMustDriveABooleanNonInput) {
   const int bad = b.line();
   b.action_var("Bad", "go");
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, bad, "drives input variable 'go'"), 1u) << dump(ds);
+  // CODESYS and TwinCAT let a POU write its inputs: a warning for IEC charts, an error for Grafcet.
+  EXPECT_EQ(count_at(ds, Severity::Warning, bad, "drives input variable 'go'"), 1u) << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Error), 0u) << dump(ds);
+  EXPECT_EQ(count_at(validate(b.project(Dialect::Grafcet)), Severity::Error, bad,
+                     "drives input variable 'go' (inputs are read-only)"),
+            1u);
 }
 
 TEST(Validate, TimedQualifierNeedsADuration) {
@@ -412,10 +434,13 @@ TEST(Validate, ComparisonsMustNotMixTypes) {
   PouBuilder b;
   b.input("ok", "BOOL").input("n", "INT").chart("main").initial("A").step("B").step("C");
   const int bool_int = b.line();
-  b.trans({"A"}, {"B"}, make_binary(ExprKind::Eq, make_name("ok"), make_int(1)));
+  b.trans({"A"}, {"B"}, make_binary(ExprKind::Eq, make_name("ok"), make_int(2)));
   const int time_int = b.line();
   b.trans({"B"}, {"C"}, make_binary(ExprKind::Gt, make_member("B", "T"), make_int(500)));
-  b.trans({"C"}, {"A"}, make_binary(ExprKind::Ge, make_member("c", "t"), make_time(500)));
+  b.trans({"C"}, {"A"}, make_nary(ExprKind::And, {make_binary(ExprKind::Ge, make_member("c", "t"),
+                                                                make_time(500)),
+                                                    make_binary(ExprKind::Eq, make_name("ok"),
+                                                                make_int(1))}));  // 1 is a BOOL literal
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, bool_int, "comparison of BOOL with integer"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, time_int, "comparison of TIME with integer"), 1u) << dump(ds);
@@ -483,21 +508,22 @@ TEST(Validate, AssignmentTypesAndTargets) {
   auto b = loop();
   b.output("lamp", "BOOL").var("n", "INT").var("t", "TIME").var("T1", "TON");
   const auto at = [](int line) { return SourceLocation{"test.sfc", line, 3, {}}; };
-  const int act = b.line();
+  b.var("Other", "BOOL");
   b.action_st("Act", {
       make_assign("lamp", make_name("go"), at(100)),                                   // fine
       make_assign("n", make_binary(ExprKind::Add, make_name("n"), make_int(1)), at(101)),  // fine
       make_assign("t", make_binary(ExprKind::Mul, make_time(10), make_int(3)), at(102)),   // fine
       make_assign("T1.PT", make_time(10), at(103)),                                    // fine
-      make_assign("lamp", make_int(1), at(104)),        // INT into BOOL
+      make_assign("lamp", make_int(1), at(111)),        // fine: 1 is a BOOL literal
+      make_assign("lamp", make_int(2), at(104)),        // INT into BOOL
       make_assign("n", make_name("lamp"), at(105)),     // BOOL into INT
       make_assign("go", make_bool(true), at(106)),      // input
       make_assign("T1.Q", make_bool(true), at(107)),    // FB output
       make_assign("S0.X", make_bool(true), at(108)),    // step flag
       make_assign("ghost", make_bool(true), at(109)),   // undeclared
       make_assign("t", make_binary(ExprKind::Add, make_time(10), make_int(3)), at(110)),  // TIME+INT
+      make_assign("GVL.Flag", make_bool(true), at(112)),  // outside the model: warning
   });
-  (void)act;
   const auto ds = validate(b.project());
   for (int line = 100; line <= 103; ++line)
     EXPECT_EQ(count_at(ds, Severity::Error, line, ""), 0u) << line << "\n" << dump(ds);
@@ -505,12 +531,45 @@ TEST(Validate, AssignmentTypesAndTargets) {
       << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 105, "assignment of a BOOL value to integer 'n'"), 1u)
       << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, 106, "assignment to input variable 'go'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, 106, "assignment to input variable 'go'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, 111, ""), 0u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, 112, "'GVL.Flag' refers to 'GVL'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 107, "assignment to output 'T1.Q'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 108, "step flags are read-only"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 109, "undeclared variable 'ghost'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 110, "arithmetic on TIME and integer"), 1u) << dump(ds);
-  EXPECT_EQ(count(ds, Severity::Error), 7u) << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Error), 6u) << dump(ds);
+}
+
+TEST(Validate, QualifiedNamesOutsideTheModelAreWarnings) {
+  // The second POU's variable is readable as Main.flag; GVL.x and inst.y (an instance of a type
+  // the importer dropped) are outside the model; S9.X on an undeclared step is a typo.
+  PouBuilder main("Main");
+  main.var("flag", "BOOL").var("count", "INT");
+  auto b = loop();
+  const int g1 = b.line();
+  b.trans({"S0"}, {"S1"}, make_nary(ExprKind::And, {make_member("main", "FLAG"),
+                                                    make_member("GVL", "IsResetting")}));
+  const int g2 = b.line();
+  b.trans({"S1"}, {"S0"}, make_nary(ExprKind::Or, {make_member("gvl", "isresetting"),
+                                                   make_member("Table.Motor", "Stopped"),
+                                                   make_binary(ExprKind::Gt, make_member("Main", "count"),
+                                                               make_int(3))}));
+  const int g3 = b.line();
+  b.trans({"S1"}, {"S0"}, make_nary(ExprKind::Or, {make_member("S9", "X"),
+                                                   make_member("Main", "nothing"),
+                                                   make_member("Main", "flag")}));
+  auto p = b.project();
+  p.pous.push_back(main.pou());
+  const auto ds = validate(p);
+  EXPECT_EQ(count_at(ds, Severity::Warning, g1, "'GVL.IsResetting' refers to 'GVL'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, g2, "'Table.Motor.Stopped' refers to 'Table'"), 1u)
+      << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Warning), 2u) << dump(ds);  // GVL.IsResetting once
+  EXPECT_EQ(count_at(ds, Severity::Error, g3, "unknown step 'S9' in S9.X"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, g3, "POU 'Main' declares no variable 'nothing'"), 1u)
+      << dump(ds);
+  EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
 
 TEST(Validate, ControlStatementsAndFbCalls) {
@@ -528,7 +587,7 @@ TEST(Validate, ControlStatementsAndFbCalls) {
   case_stmt->labels = {{{1, 1}}};
   case_stmt->bodies = {{}};
   b.action_st("Act", {if_stmt, case_stmt,
-                      make_fb_call("T1", {{"IN", make_int(1)}, {"XX", make_bool(true)}},
+                      make_fb_call("T1", {{"IN", make_int(5)}, {"XX", make_bool(true)}},
                                    {"test.sfc", 202, 1, {}}),
                       make_fb_call("n", {}, {"test.sfc", 203, 1, {}})});
   const auto ds = validate(b.project());
