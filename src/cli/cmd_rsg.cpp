@@ -230,15 +230,17 @@ int run_rsg(const RsgOptions& o) {
     }
   }
 
+  // One line per distinct anomaly (the same cycle is met from many nodes).
+  std::set<std::string> printed;
   for (const auto& a : g.anomalies()) {
-    std::cerr << o.model << ": error: " << a.message << "; inputs: "
-              << engine::simplify(a.condition, inputs).to_string(inputs);
+    std::string line = o.model + ": error: " + a.message + "; inputs: " +
+                       engine::simplify(a.condition, inputs).to_string(inputs);
     if (!a.cycle.empty()) {
-      std::cerr << "; cycle:";
-      for (const auto& c : a.cycle) std::cerr << " " << split_description(ts->describe(c)).first << " ->";
-      std::cerr << " " << split_description(ts->describe(a.cycle.front())).first;
+      line += "; cycle:";
+      for (const auto& c : a.cycle) line += " " + split_description(ts->describe(c)).first + " ->";
+      line += " " + split_description(ts->describe(a.cycle.front())).first;
     }
-    std::cerr << "\n";
+    if (printed.insert(line).second) std::cerr << line << "\n";
   }
   if (!g.complete()) {
     std::cout << "unknown: the " << g.limit_reached() << " limit was reached after "
