@@ -1,5 +1,7 @@
 #include "semantics/simulate.hpp"
 
+#include "semantics/iec_system_impl.hpp"
+
 namespace sfcv::semantics {
 
 namespace {
@@ -31,6 +33,24 @@ SimulationResult simulate(const TransitionSystem& ts, StateView start,
                           const std::vector<std::vector<std::int64_t>>& inputs) {
   SimulationResult r;
   r.states.emplace_back(start.begin(), start.end());
+  // The IEC system follows a full valuation directly: no successor enumeration, so integer
+  // inputs of any range work.
+  if (const auto* iec = dynamic_cast<const iec::Iec61131System*>(&ts)) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      std::vector<StateWord> next;
+      std::vector<std::uint32_t> fired;
+      std::string error;
+      if (!iec->step_once(r.states.back(), inputs[i], next, &fired, &error)) {
+        r.ok = false;
+        r.failed_cycle = i + 1;
+        r.error = error;
+        return r;
+      }
+      r.states.push_back(std::move(next));
+      r.fired.push_back(std::move(fired));
+    }
+    return r;
+  }
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     Pick p;
     p.valuation = &inputs[i];
