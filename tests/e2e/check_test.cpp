@@ -115,3 +115,22 @@ TEST(CheckCommand, SpecFileAssumptionsAndFairness) {
 
 }  // namespace
 }  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+TEST(CheckCommand, PalletTransferCollisionBeforeAndAfterTheFix) {
+  const std::string dir = "'" + std::string(SFCV_SOURCE_DIR) + "/examples/pallet_transfer/";
+  auto r = run_sfcv("check " + dir + "pallet_transfer.g7' --ctl 'AG !(X10 & X25)' --checks reachable");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("AG !(X10 & X25)  violated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("X10* "), std::string::npos) << r.out;
+  // Steps crossed only during transient evolutions are reachable, and said so.
+  EXPECT_NE(r.out.find("only during transient evolutions"), std::string::npos) << r.out;
+  r = run_sfcv("check " + dir + "pallet_transfer_fixed.g7' --ctl 'AG !(X10 & X25)'");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("AG !(X10 & X25)  holds"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sfcv::test
