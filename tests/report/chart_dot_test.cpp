@@ -21,9 +21,9 @@ Project sample() {
   pou.name = "Main";
   Chart c;
   c.name = "Main";
-  c.steps = {{"S0", true, StepKind::Normal, {}, {}, {}},
-             {"A", false, StepKind::Normal, {}, {}, {}},
-             {"B", false, StepKind::Normal, {}, {}, {}}};
+  c.steps = {{"S0", true, StepKind::Normal, {}, {}, {}, {}},
+             {"A", false, StepKind::Normal, {}, {}, {}, {}},
+             {"B", false, StepKind::Normal, {}, {}, {}, {}}};
   Transition fork;
   fork.sources = {"S0"};
   fork.targets = {"A", "B"};
@@ -38,7 +38,7 @@ Project sample() {
   Chart nested;
   nested.name = "Sub";
   nested.parent_action = "Sub";
-  nested.steps = {{"N0", true, StepKind::Normal, {}, {}, {}}};
+  nested.steps = {{"N0", true, StepKind::Normal, {}, {}, {}, {}}};
   pou.charts.push_back(nested);
   ActionAssociation a;
   a.chart = "Main";
