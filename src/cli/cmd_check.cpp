@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/names.hpp"
@@ -92,6 +93,34 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+// --engine auto: explicit for small charts, BDD beyond kAutoBddBits state bits (where explicit
+// enumeration may reach billions of states) when the BDD engine can answer everything asked.
+constexpr std::uint32_t kAutoBddBits = 40;
+
+engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
+                                      std::uint32_t state_bits, bool quiet) {
+  std::string why;
+  if (name == "bdd") {
+    auto bdd = engine::make_bdd_model_checker();
+    if (!bdd->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+    return bdd;
+  }
+  auto explicit_engine = engine::make_explicit_model_checker();
+  if (name == "auto" && state_bits > kAutoBddBits) {
+    auto bdd = engine::make_bdd_model_checker();
+    if (bdd->can_handle(task, &why)) {
+      if (!quiet)
+        std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the bdd engine\n";
+      return bdd;
+    }
+  }
+  if (name == "auto" && !quiet)
+    std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the explicit engine"
+              << (why.empty() ? "" : " (" + why + ")") << "\n";
+  if (!explicit_engine->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+  return explicit_engine;
+}
+
 int run_check(const CheckOptions& o) {
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
@@ -104,8 +133,7 @@ int run_check(const CheckOptions& o) {
       o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
-  if (o.engine == "bdd") throw InputError("sfcv check: the BDD engine is not built yet");
-  if (o.engine != "explicit" && o.engine != "auto")
+  if (o.engine != "explicit" && o.engine != "auto" && o.engine != "bdd")
     throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd or auto)");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
@@ -159,9 +187,7 @@ int run_check(const CheckOptions& o) {
       std::fflush(stderr);
     };
 
-  auto checker = engine::make_explicit_model_checker();
-  if (o.engine == "auto" && !o.quiet) std::cerr << "sfcv: --engine auto: using the explicit engine\n";
-  if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+  auto checker = choose_engine(o.engine, task, ts->layout().bits(), o.quiet);
   logic::CheckReport result;
   try {
     result = checker->check(task);

@@ -16,19 +16,19 @@ namespace {
 using model::ExprKind;
 using model::ExprPtr;
 
-constexpr std::array<std::string_view, 48> kReserved{
+constexpr std::array<std::string_view, 47> kReserved{
     "AND",       "OR",       "XOR",        "NOT",       "MOD",      "TRUE",       "FALSE",
     "IF",        "THEN",     "ELSIF",      "ELSE",      "END_IF",   "CASE",       "OF",
     "END_CASE",  "FOR",      "TO",         "BY",        "DO",       "END_FOR",    "WHILE",
     "END_WHILE", "REPEAT",   "UNTIL",      "END_REPEAT", "RETURN",  "EXIT",       "CONTINUE",
     "VAR",       "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GLOBAL", "VAR_EXTERNAL",
     "VAR_TEMP",  "END_VAR",  "AT",         "END_STEP",  "END_TRANSITION", "END_ACTION",
-    "END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION", "INITIAL_STEP", "JMP", "ARRAY",
+    "END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION", "INITIAL_STEP", "ARRAY",
     "POINTER",   "REF_TO"};
 
 // Statement keywords sfcv does not model.
-constexpr std::array<std::string_view, 7> kUnsupportedStatements{
-    "FOR", "WHILE", "REPEAT", "RETURN", "EXIT", "CONTINUE", "JMP"};
+constexpr std::array<std::string_view, 6> kUnsupportedStatements{
+    "FOR", "WHILE", "REPEAT", "RETURN", "EXIT", "CONTINUE"};
 
 std::string upper(std::string_view s) { return model::to_upper(s); }
 
@@ -303,6 +303,9 @@ model::StmtPtr Parser::statement() {
   DepthGuard guard([this] { leave(); });
   for (auto k : kUnsupportedStatements)
     if (at_word(k)) fail(t, "unsupported: " + upper(t.text) + " statement");
+  // JMP is an IL operator, so a legal name; `JMP label;` is the CODESYS ST jump.
+  if (at_word("JMP") && at(TokenKind::Identifier, 1) && at(TokenKind::Semicolon, 2))
+    fail(t, "unsupported: JMP statement");
   if (at_word("IF")) return if_statement();
   if (at_word("CASE")) return case_statement();
   if (is_reserved(t.text)) fail_unexpected("a statement");
@@ -318,7 +321,8 @@ model::StmtPtr Parser::statement() {
     fail(t, "unsupported: assignment to a member of '" + t.text +
                 "' (pass FB inputs in the call: inst(IN := x))");
   if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
-  if (at(TokenKind::Colon)) fail(t, "unsupported: CASE label '" + t.text + "' (integer literals only)");
+  if (at(TokenKind::Colon))
+    fail(t, "unsupported: label '" + t.text + "' (jump labels; CASE labels must be integer literals)");
   if (at(TokenKind::Arrow)) fail(peek(), "unsupported: output assignment '=>'");
   fail_unexpected("':=' or '(' after '" + t.text + "'");
 }

@@ -85,9 +85,9 @@ TEST(CheckCommand, BadInputsExitTwo) {
   r = run_sfcv("check " + kPlant + " --ctl 'AG !(V1 & V9)'");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown name 'V9'"), std::string::npos) << r.err;
-  r = run_sfcv("check " + kPlant + " --engine bdd");
+  r = run_sfcv("check " + kPlant + " --engine magic");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("the BDD engine is not built yet"), std::string::npos);
+  EXPECT_NE(r.err.find("bad --engine 'magic'"), std::string::npos) << r.err;
   r = run_sfcv("check " + kPlant + " --checks bogus");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown check 'bogus'"), std::string::npos);

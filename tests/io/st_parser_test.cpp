@@ -255,12 +255,18 @@ TEST(StStatements, UnsupportedConstructsAreNamed) {
   EXPECT_EQ(stmt_error("IF a THEN x := 1;"), "1:18: expected END_IF, found end of text");
   EXPECT_EQ(stmt_error("CASE n OF A: x := 1; END_CASE"),
             "1:11: unsupported: symbolic bound 'A' (integer literals only)");
+  EXPECT_EQ(stmt_error("JMP done;"), "1:1: unsupported: JMP statement");
+  EXPECT_EQ(stmt_error("done: x := 1;"),
+            "1:1: unsupported: label 'done' (jump labels; CASE labels must be integer literals)");
   EXPECT_EQ(stmt_error("x = 1;"), "1:3: expected ':=' or '(' after 'x', found '='");
   EXPECT_EQ(stmt_error("x := 1; END_IF"), "1:9: expected a statement, found 'END_IF'");
 }
 
 TEST(StStatements, LastStatementMayOmitItsSemicolon) {
   model::Diagnostics d;
+  // IL operator names are ordinary identifiers in ST.
+  EXPECT_EQ(parse_st_statements("JMP := LD AND ST;", file_start(), d).size(), 1u);
+  EXPECT_TRUE(d.empty());
   auto body = parse_st_statements("x := 1; y := x", file_start(), d);
   EXPECT_TRUE(d.empty());
   EXPECT_EQ(body.size(), 2u);

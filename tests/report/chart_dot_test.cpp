@@ -21,9 +21,13 @@ Project sample() {
   pou.name = "Main";
   Chart c;
   c.name = "Main";
-  c.steps = {{"S0", true, StepKind::Normal, {}, {}, {}, {}},
-             {"A", false, StepKind::Normal, {}, {}, {}, {}},
-             {"B", false, StepKind::Normal, {}, {}, {}, {}}};
+  auto step = [](std::string name, bool initial) {
+    Step s;
+    s.name = std::move(name);
+    s.initial = initial;
+    return s;
+  };
+  c.steps = {step("S0", true), step("A", false), step("B", false)};
   Transition fork;
   fork.sources = {"S0"};
   fork.targets = {"A", "B"};
@@ -38,7 +42,7 @@ Project sample() {
   Chart nested;
   nested.name = "Sub";
   nested.parent_action = "Sub";
-  nested.steps = {{"N0", true, StepKind::Normal, {}, {}, {}, {}}};
+  nested.steps = {step("N0", true)};
   pou.charts.push_back(nested);
   ActionAssociation a;
   a.chart = "Main";

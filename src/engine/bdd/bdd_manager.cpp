@@ -2,12 +2,14 @@
 
 #include <bdd.h>
 
+#include <algorithm>
 #include <string>
 
 // bdd.h maps these names to its C++ layer; the facade uses the C API with explicit reference
 // counting.
 #undef bdd_init
 #undef bdd_ithvar
+#undef bdd_makeset
 
 namespace sfcv::engine::bdd {
 
@@ -19,13 +21,29 @@ void throw_on_error(int code) {
 
 void quiet_gbc(int, bddGbcStat*) {}
 
+// Sizing chosen by configure_manager() before the manager starts; 0 = the defaults.
+int g_nodes = 0, g_cache = 0, g_ratio = 0;
+
 }  // namespace
+
+void configure_manager(int nodes, int cache, int cache_ratio) {
+  if (bdd_isrunning()) return;
+  g_nodes = nodes;
+  g_cache = cache;
+  g_ratio = cache_ratio;
+}
+
+int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }
 
 void ensure_manager(int nodes, int cache) {
   if (bdd_isrunning()) return;
+  if (g_nodes > 0) {
+    nodes = g_nodes;
+    cache = g_cache;
+  }
   bdd_error_hook(throw_on_error);
   if (bdd_init(nodes, cache) < 0) throw BddError("BDD package: initialisation failed");
-  bdd_setcacheratio(64);
+  bdd_setcacheratio(g_ratio > 0 ? g_ratio : 64);
   bdd_gbc_hook(quiet_gbc);
   bdd_setvarnum(1);
 }
@@ -71,6 +89,56 @@ Bdd Bdd::variable(int index) {
 Bdd Bdd::operator&(const Bdd& o) const { return Bdd(bdd_and(root_, o.root_)); }
 Bdd Bdd::operator|(const Bdd& o) const { return Bdd(bdd_or(root_, o.root_)); }
 Bdd Bdd::operator!() const { return Bdd(bdd_not(root_)); }
+
+Bdd Bdd::operator^(const Bdd& o) const { return Bdd(bdd_apply(root_, o.root_, bddop_xor)); }
+Bdd Bdd::iff(const Bdd& o) const { return Bdd(bdd_apply(root_, o.root_, bddop_biimp)); }
+Bdd Bdd::ite(const Bdd& t, const Bdd& e) const { return Bdd(bdd_ite(root_, t.root_, e.root_)); }
+
+Bdd Bdd::cube(const std::vector<int>& vars) {
+  ensure_manager();
+  int max_var = -1;
+  for (int v : vars) max_var = std::max(max_var, v);
+  ensure_variables(max_var + 1);
+  std::vector<int> copy(vars);
+  return Bdd(bdd_makeset(copy.data(), static_cast<int>(copy.size())));
+}
+
+Bdd Bdd::exist(const Bdd& vars) const { return Bdd(bdd_exist(root_, vars.root_)); }
+Bdd Bdd::and_exist(const Bdd& o, const Bdd& vars) const {
+  return Bdd(bdd_appex(root_, o.root_, bddop_and, vars.root_));
+}
+Bdd Bdd::replace(const VarMap& map) const {
+  return Bdd(bdd_replace(root_, static_cast<bddPair*>(map.pair_)));
+}
+Bdd Bdd::compose(const VarMap& map) const {
+  return Bdd(bdd_veccompose(root_, static_cast<bddPair*>(map.pair_)));
+}
+Bdd Bdd::sat_one(const Bdd& vars) const { return Bdd(bdd_satoneset(root_, vars.root_, 0)); }
+int Bdd::value_in_cube(int var) const {
+  int r = root_;
+  while (r > 1) {
+    const int v = bdd_var(r);
+    if (v == var) return bdd_low(r) == 0 ? 1 : 0;
+    r = bdd_low(r) == 0 ? bdd_high(r) : bdd_low(r);
+  }
+  return -1;
+}
+double Bdd::sat_count_log2(const Bdd& vars) const { return bdd_satcountlnset(root_, vars.root_); }
+int Bdd::node_count() const { return bdd_nodecount(root_); }
+
+VarMap::VarMap() : pair_(nullptr) {
+  ensure_manager();
+  pair_ = bdd_newpair();
+}
+VarMap::~VarMap() { bdd_freepair(static_cast<bddPair*>(pair_)); }
+void VarMap::rename(int from, int to) {
+  ensure_variables(std::max(from, to) + 1);
+  bdd_setpair(static_cast<bddPair*>(pair_), from, to);
+}
+void VarMap::substitute(int var, const Bdd& f) {
+  ensure_variables(var + 1);
+  bdd_setbddpair(static_cast<bddPair*>(pair_), var, f.root_);
+}
 
 bool Bdd::is_true() const { return root_ == 1; }
 bool Bdd::is_false() const { return root_ == 0; }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <vector>
 
 namespace sfcv::engine::bdd {
 
@@ -17,6 +18,33 @@ class BddError : public std::runtime_error {
 void ensure_manager(int nodes = 1 << 18, int cache = 1 << 15);
 /// Makes sure variables 0..count-1 exist.
 void ensure_variables(int count);
+
+/// Sizes the node table and cache of the manager; only effective before its first use (BuDDy
+/// keeps one global manager). Measured on this machine: a 200-process example stalls with the
+/// default sizing and runs in 3 s with (4000000, 1000000) and cache ratio 4.
+void configure_manager(int nodes, int cache, int cache_ratio = 4);
+
+/// Nodes currently allocated in the manager's table.
+int allocated_nodes();
+
+class Bdd;
+
+/// A renaming or substitution of variables (BuDDy's bddPair), owned.
+class VarMap {
+ public:
+  VarMap();
+  ~VarMap();
+  VarMap(const VarMap&) = delete;
+  VarMap& operator=(const VarMap&) = delete;
+  /// Variable `from` becomes variable `to` (for Bdd::replace).
+  void rename(int from, int to);
+  /// Variable `var` becomes the function `f` (for Bdd::compose).
+  void substitute(int var, const Bdd& f);
+
+ private:
+  friend class Bdd;
+  void* pair_;
+};
 
 /// A BDD node held with a reference count (copyable value; comparison is canonical equality).
 class Bdd {
@@ -34,6 +62,25 @@ class Bdd {
   Bdd operator&(const Bdd& o) const;
   Bdd operator|(const Bdd& o) const;
   Bdd operator!() const;
+  Bdd operator^(const Bdd& o) const;
+  Bdd iff(const Bdd& o) const;
+  Bdd ite(const Bdd& then, const Bdd& otherwise) const;  ///< *this ? then : otherwise
+
+  /// The conjunction of the positive variables `vars`: a variable set for quantification.
+  static Bdd cube(const std::vector<int>& vars);
+  /// Existential quantification over the variables of `vars` (a cube).
+  Bdd exist(const Bdd& vars) const;
+  /// exist(vars) of (*this & o), computed in one pass (relational product).
+  Bdd and_exist(const Bdd& o, const Bdd& vars) const;
+  Bdd replace(const VarMap& map) const;
+  Bdd compose(const VarMap& map) const;  ///< simultaneous substitution of functions
+  /// One satisfying assignment as a full cube over the variables of `vars`; false if none.
+  Bdd sat_one(const Bdd& vars) const;
+  /// Value of `var` in a cube (sat_one's result): -1 when the cube does not mention it.
+  int value_in_cube(int var) const;
+  /// log2 of the number of assignments of the variables of `vars` that satisfy *this.
+  double sat_count_log2(const Bdd& vars) const;
+  int node_count() const;
   bool operator==(const Bdd& o) const { return root_ == o.root_; }
   bool operator!=(const Bdd& o) const { return root_ != o.root_; }
 
@@ -48,6 +95,7 @@ class Bdd {
   Bdd cofactor(int var, bool value) const;
 
  private:
+  friend class VarMap;
   explicit Bdd(int root);
   int root_;
 };

@@ -1,0 +1,531 @@
+#include "engine/bdd/bdd_model_checker.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <unordered_map>
+
+#include "engine/bdd/symbolic_system.hpp"
+#include "logic/formula.hpp"
+#include "logic/standard_checks.hpp"
+#include "semantics/iec61131_circuit.hpp"
+
+namespace sfcv::engine {
+
+using bdd::Bdd;
+using logic::Op;
+using logic::PropertyResult;
+using logic::StandardCheck;
+using logic::Verdict;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+/// CTL by fixpoints. Paths are maximal (a state without successor ends its paths) unless
+/// fairness constraints are given; then only infinite fair paths count (docs/semantics.md,
+/// Part 3), exactly as the explicit engine.
+class SymbolicCtl {
+ public:
+  SymbolicCtl(SymbolicSystem& sys, const std::vector<logic::FormulaPtr>& fairness)
+      : sys_(sys) {
+    for (const auto& f : fairness) fair_sets_.push_back(sys_.atom(*f));
+    if (!fair_sets_.empty()) fair_ = eg_fair(Bdd::constant(true));
+  }
+
+  Bdd sat(const logic::FormulaPtr& f) {
+    if (auto it = memo_.find(f.get()); it != memo_.end()) return it->second;
+    Bdd r = compute(*f);
+    memo_.emplace(f.get(), r);
+    keep_.push_back(f);
+    return r;
+  }
+
+ private:
+  Bdd compute(const logic::Formula& f) {
+    const bool fair = !fair_sets_.empty();
+    auto arg = [&](std::size_t i) { return sat(f.args[i]); };
+    switch (f.op) {
+      case Op::True: case Op::False: case Op::Atom: case Op::Compare: return sys_.atom(f);
+      case Op::Not: return !arg(0);
+      case Op::And: return arg(0) & arg(1);
+      case Op::Or: return arg(0) | arg(1);
+      case Op::Implies: return (!arg(0)) | arg(1);
+      case Op::Iff: return arg(0).iff(arg(1));
+      case Op::Xor: return arg(0) ^ arg(1);
+      case Op::EX: return ex(arg(0));
+      case Op::AX: return !ex(!arg(0));
+      case Op::EF: return eu(Bdd::constant(true), arg(0));
+      case Op::AG: return !eu(Bdd::constant(true), !arg(0));
+      case Op::EG: return fair ? eg_fair(arg(0)) : eg(arg(0));
+      case Op::AF: return !(fair ? eg_fair(!arg(0)) : eg(!arg(0)));
+      case Op::EU: return eu(arg(0), arg(1));
+      case Op::AU: {
+        const Bdd p = arg(0), q = arg(1);
+        const Bdd g = fair ? eg_fair(!q) : eg(!q);
+        return !(eu(!q, (!p) & (!q)) | g);
+      }
+    }
+    return Bdd::constant(false);
+  }
+
+  Bdd fair_states() const { return fair_sets_.empty() ? Bdd::constant(true) : fair_; }
+  Bdd ex(const Bdd& p) { return sys_.preimage(p & fair_states()); }
+  Bdd eu(const Bdd& p, const Bdd& q) {
+    const Bdd target = q & fair_states();
+    Bdd z = target;
+    for (;;) {
+      const Bdd next = target | (p & sys_.preimage(z));
+      if (next == z) return z;
+      z = next;
+    }
+  }
+  /// Maximal paths: p holds forever, or until a state without successor.
+  Bdd eg(const Bdd& p) {
+    const Bdd dead = !sys_.has_successor();
+    Bdd z = p;
+    for (;;) {
+      const Bdd next = p & (sys_.preimage(z) | dead);
+      if (next == z) return z;
+      z = next;
+    }
+  }
+  /// Emerson-Lei: nu Z. p & AND_i EX E[p U (Z & F_i)].
+  Bdd eg_fair(const Bdd& p) {
+    Bdd z = p;
+    for (;;) {
+      Bdd next = p;
+      for (const auto& fi : fair_sets_) {
+        // Plain EU here: fairness is what this fixpoint computes.
+        const Bdd target = z & fi;
+        Bdd u = target;
+        for (;;) {
+          const Bdd step = target | (p & sys_.preimage(u));
+          if (step == u) break;
+          u = step;
+        }
+        next = next & sys_.preimage(u);
+      }
+      if (next == z) return z;
+      z = next;
+    }
+  }
+
+  SymbolicSystem& sys_;
+  std::vector<Bdd> fair_sets_;
+  Bdd fair_;
+  std::unordered_map<const logic::Formula*, Bdd> memo_;
+  std::vector<logic::FormulaPtr> keep_;
+};
+
+struct Collect final : semantics::SuccessorSink {
+  std::vector<std::vector<semantics::StateWord>> targets;
+  std::vector<semantics::InputCondition> conditions;
+  std::vector<std::vector<std::uint32_t>> fired;
+  void successor(const semantics::Successor& s) override {
+    targets.emplace_back(s.target.begin(), s.target.end());
+    conditions.push_back(s.condition);
+    fired.emplace_back(s.fired.begin(), s.fired.end());
+  }
+};
+
+class Run {
+ public:
+  Run(const logic::CheckTask& task, SymbolicSystem& sys) : task_(task), sys_(sys), ts_(sys.system()) {}
+
+  logic::CheckReport check() {
+    const auto start = Clock::now();
+    logic::CheckReport report;
+    report.engine = "bdd";
+    explore(report, start);
+    SymbolicCtl ctl(sys_, task_.fairness);
+    for (const auto& p : task_.properties) {
+      const auto t0 = Clock::now();
+      auto r = property(p, ctl, report);
+      r.seconds = since(t0);
+      report.results.push_back(std::move(r));
+    }
+    SymbolicCtl plain(sys_, {});
+    for (auto c : task_.checks) {
+      const auto t0 = Clock::now();
+      auto r = standard(c, plain, report);
+      r.seconds = since(t0);
+      report.results.push_back(std::move(r));
+    }
+    report.seconds = since(start);
+    return report;
+  }
+
+ private:
+  void explore(logic::CheckReport& report, Clock::time_point start) {
+    reached_ = sys_.initial();
+    rings_.push_back(reached_);
+    Bdd frontier = reached_;
+    const auto& limits = task_.limits;
+    while (!frontier.is_false()) {
+      const double states = sys_.count(reached_);
+      if (limits.progress) {
+        logic::Progress p;
+        p.states = static_cast<std::uint64_t>(states);
+        p.depth = static_cast<std::uint32_t>(rings_.size() - 1);
+        p.seconds = since(start);
+        limits.progress(p);
+      }
+      if (limits.max_states > 0 && states > static_cast<double>(limits.max_states)) {
+        report.complete = false;
+        report.limit = "states";
+        break;
+      }
+      if (limits.timeout_seconds > 0 && since(start) > limits.timeout_seconds) {
+        report.complete = false;
+        report.limit = "time";
+        break;
+      }
+      if (limits.max_memory_bytes > 0 &&
+          static_cast<std::uint64_t>(bdd::allocated_nodes()) * 20 > limits.max_memory_bytes) {
+        report.complete = false;
+        report.limit = "memory";
+        break;
+      }
+      const Bdd next = sys_.image(frontier) & !reached_;
+      if (next.is_false()) break;
+      reached_ = reached_ | next;
+      rings_.push_back(next);
+      frontier = next;
+    }
+    report.states = static_cast<std::uint64_t>(sys_.count(reached_));
+    report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
+  }
+
+  std::string limit_message(const logic::CheckReport& report) const {
+    return "exploration stopped at the " + report.limit + " limit after " +
+           std::to_string(report.states) + " states";
+  }
+
+  /// A shortest run from an initial state into `target` (which must meet the reached states).
+  logic::Trace path_to(const Bdd& target) {
+    std::size_t k = 0;
+    while (k < rings_.size() && (rings_[k] & target).is_false()) ++k;
+    std::vector<std::vector<semantics::StateWord>> states{sys_.pick(rings_[k] & target)};
+    for (std::size_t j = k; j-- > 0;)
+      states.push_back(sys_.pick(sys_.preimage(sys_.singleton(states.back())) & rings_[j]));
+    std::reverse(states.begin(), states.end());
+    return to_trace(states);
+  }
+
+  /// The explicit successor function labels each hop with its inputs and fired transitions.
+  logic::Trace to_trace(const std::vector<std::vector<semantics::StateWord>>& states) {
+    logic::Trace t;
+    std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
+                                                          ts_.inputs(), {});
+    t.steps.push_back({inputs, states.front(), {}});
+    for (std::size_t k = 1; k < states.size(); ++k) {
+      Collect c;
+      ts_.successors(states[k - 1], c);
+      for (std::size_t i = 0; i < c.targets.size(); ++i)
+        if (c.targets[i] == states[k]) {
+          inputs = logic::pick_inputs(c.conditions[i], ts_.inputs(), inputs);
+          t.steps.push_back({inputs, states[k], c.fired[i]});
+          break;
+        }
+    }
+    return t;
+  }
+
+  bool all_initial(const Bdd& set) const { return (sys_.initial() & !set).is_false(); }
+
+  PropertyResult property(const logic::Property& p, SymbolicCtl& ctl,
+                          const logic::CheckReport& report) {
+    PropertyResult r;
+    r.name = p.name;
+    r.formula = logic::to_string(p.formula);
+    r.where = p.where;
+    const auto marked = logic::atom_observables(*p.formula);
+    const auto& f = p.formula;
+    const bool ag = f->op == Op::AG && logic::is_propositional(*f->args[0]);
+    const bool ef = f->op == Op::EF && logic::is_propositional(*f->args[0]);
+    if (!report.complete) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message(report);
+      // Reached states are real: a bad one refutes AG p, a good one proves EF p.
+      if ((ag && task_.fairness.empty()) || (ef && task_.fairness.empty())) {
+        const Bdd inner = sys_.atom(*f->args[0]);
+        const Bdd hit = reached_ & (ag ? !inner : inner);
+        if (!hit.is_false()) {
+          r.verdict = ag ? Verdict::Violated : Verdict::Holds;
+          r.message.clear();
+          r.trace = path_to(hit);
+          r.trace->kind = ag ? logic::TraceKind::Counterexample : logic::TraceKind::Witness;
+          r.trace->marked = marked;
+        }
+      }
+      return r;
+    }
+    const Bdd holds = ctl.sat(f);
+    r.verdict = all_initial(holds) ? Verdict::Holds : Verdict::Violated;
+    if (r.verdict == Verdict::Violated && ag && task_.fairness.empty()) {
+      r.trace = path_to(reached_ & !sys_.atom(*f->args[0]));
+      r.trace->kind = logic::TraceKind::Counterexample;
+    } else if (r.verdict == Verdict::Holds && ef && task_.fairness.empty()) {
+      r.trace = path_to(reached_ & sys_.atom(*f->args[0]));
+      r.trace->kind = logic::TraceKind::Witness;
+    } else if (r.verdict == Verdict::Violated) {
+      r.message = "the bdd engine gives traces for AG p and EF p (p without temporal "
+                  "operators); use --engine explicit for a trace of this formula";
+    }
+    if (r.trace) r.trace->marked = marked;
+    return r;
+  }
+
+  void finish(PropertyResult& r, const logic::CheckReport& report, const std::string& ok) {
+    if (!r.findings.empty()) {
+      r.verdict = Verdict::Violated;
+    } else if (!report.complete) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message(report);
+    } else {
+      r.verdict = Verdict::Holds;
+      r.message = ok;
+    }
+  }
+
+  PropertyResult standard(StandardCheck c, SymbolicCtl& ctl, const logic::CheckReport& report) {
+    PropertyResult r;
+    r.name = std::string(logic::to_string(c));
+    r.check = r.name;
+    const auto steps = logic::step_refs(ts_, task_.project);
+    switch (c) {
+      case StandardCheck::Reachable: {
+        if (steps.empty()) {
+          r.verdict = Verdict::NotChecked;
+          r.message = "not checked: the system has no steps";
+          break;
+        }
+        std::size_t missing = 0;
+        for (const auto& s : steps)
+          if ((reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
+            ++missing;
+            if (report.complete) r.findings.push_back("step " + logic::describe_step(s) + " is never active");
+          }
+        if (missing && !report.complete) {
+          r.verdict = Verdict::Unknown;
+          r.message = std::to_string(missing) + " of " + std::to_string(steps.size()) +
+                      " steps not reached before the limit; " + limit_message(report);
+          break;
+        }
+        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable");
+        break;
+      }
+      case StandardCheck::DeadTransitions: {
+        const auto& trs = ts_.transitions();
+        if (trs.empty()) {
+          r.verdict = Verdict::NotChecked;
+          r.message = "not checked: the system has no transitions";
+          break;
+        }
+        std::size_t dead = 0;
+        for (std::uint32_t t = 0; t < trs.size(); ++t)
+          if ((reached_ & sys_.fires(t)).is_false()) {
+            ++dead;
+            if (report.complete)
+              r.findings.push_back("transition " + trs[t].name +
+                                   (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
+                                   " never fires");
+          }
+        if (dead && !report.complete) {
+          r.verdict = Verdict::Unknown;
+          r.message = std::to_string(dead) + " transitions not fired before the limit; " +
+                      limit_message(report);
+          break;
+        }
+        finish(r, report, "all " + std::to_string(trs.size()) + " transitions can fire");
+        break;
+      }
+      case StandardCheck::GlobalDeadlock: {
+        if (ts_.transitions().empty()) {
+          r.verdict = Verdict::NotChecked;
+          r.message = "not checked: the system has no transitions";
+          break;
+        }
+        // Dead: no state that fires a transition can be reached any more.
+        const Bdd firing = sys_.fires_any();
+        Bdd live = firing;
+        for (;;) {
+          const Bdd next = firing | sys_.preimage(live);
+          if (next == live) break;
+          live = next;
+        }
+        const Bdd dead = report.complete ? reached_ & !live : reached_ & !sys_.has_successor();
+        if (!dead.is_false()) {
+          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(dead))) +
+                               " reachable situations from which no transition can ever fire, "
+                               "e.g. " + ts_.describe(sys_.pick(dead)));
+          r.trace = path_to(dead);
+          r.trace->note = "the last situation is a global deadlock";
+        }
+        finish(r, report, "no reachable situation is a global deadlock");
+        break;
+      }
+      case StandardCheck::InitialReturn: {
+        if (!report.complete) {
+          r.verdict = Verdict::Unknown;
+          r.message = limit_message(report);
+          break;
+        }
+        r.formula = "AG EF init";
+        // The initial situation is the step activity of the initial state.
+        Bdd target = Bdd::constant(true);
+        if (steps.empty()) {
+          target = sys_.initial();
+        } else {
+          const auto init = sys_.pick(sys_.initial());
+          for (const auto& s : steps) {
+            const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
+            target = target & (ts_.observe(init, s.observable) ? x : !x);
+          }
+        }
+        Bdd back = target;
+        for (;;) {
+          const Bdd next = target | sys_.preimage(back);
+          if (next == back) break;
+          back = next;
+        }
+        const Bdd bad = reached_ & !back;
+        if (!bad.is_false()) {
+          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(bad))) +
+                               " reachable situations from which the initial situation cannot "
+                               "be reached again, e.g. " + ts_.describe(sys_.pick(bad)));
+          r.trace = path_to(bad);
+        }
+        finish(r, report, "the initial situation can be reached again from every situation");
+        break;
+      }
+      case StandardCheck::Reentry:
+      case StandardCheck::LocalDeadlock: {
+        if (steps.empty()) {
+          r.verdict = Verdict::NotChecked;
+          r.message = "not checked: the system has no steps";
+          break;
+        }
+        if (!report.complete) {
+          r.verdict = Verdict::Unknown;
+          r.message = limit_message(report);
+          break;
+        }
+        std::size_t considered = 0;
+        for (const auto& step : steps) {
+          if (c == StandardCheck::Reentry) {
+            if (!step.on_loop && task_.project) continue;
+            ++considered;
+            if (!all_initial(ctl.sat(logic::reentry_formula(ts_, step.observable))))
+              r.findings.push_back("step " + logic::describe_step(step) +
+                                   ": a reachable situation exists from which it can never "
+                                   "become active again (AG EF " +
+                                   ts_.observables()[step.observable].name + " is violated)");
+            continue;
+          }
+          r.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
+          ++considered;
+          const auto x = logic::observable_atom(ts_, step.observable);
+          const auto nx = logic::make_not(x);
+          const auto never_left =
+              logic::make_op(Op::EF, {logic::make_and(x, logic::make_op(Op::AG, {x}))});
+          const auto never_back =
+              logic::make_op(Op::EF, {logic::make_and(nx, logic::make_op(Op::AG, {nx}))});
+          if (!(sys_.initial() & ctl.sat(never_left)).is_false())
+            r.findings.push_back("step " + logic::describe_step(step) + ", once active, is never left");
+          if (!(sys_.initial() & ctl.sat(never_back)).is_false())
+            r.findings.push_back("step " + logic::describe_step(step) +
+                                 ", once inactive, never becomes active again");
+        }
+        if (c == StandardCheck::Reentry && considered == 0) {
+          r.verdict = Verdict::Holds;
+          r.message = "no step lies on a loop";
+          break;
+        }
+        finish(r, report, c == StandardCheck::Reentry
+                              ? "every step of a loop can be re-entered from every situation"
+                              : "no step is locally deadlocked");
+        break;
+      }
+      case StandardCheck::Instability: {
+        // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
+        const Bdd err = reached_ & sys_.range_error_states();
+        if (!err.is_false()) {
+          r.findings.push_back("a range error (integer overflow, division by zero or a value "
+                               "out of its type) can occur in " + ts_.describe(sys_.pick(err)));
+          r.trace = path_to(err);
+        }
+        finish(r, report, "no range error can occur");
+        break;
+      }
+      case StandardCheck::Conflicts:
+      case StandardCheck::StoredActions:
+      case StandardCheck::OutputConflicts:
+        r.verdict = Verdict::NotChecked;
+        r.message = "not checked by the bdd engine (it needs the graph's edges); use --engine "
+                    "explicit";
+        break;
+    }
+    return r;
+  }
+
+  const logic::CheckTask& task_;
+  SymbolicSystem& sys_;
+  const semantics::TransitionSystem& ts_;
+  Bdd reached_;
+  std::vector<Bdd> rings_;
+};
+
+class BddModelChecker final : public ModelChecker {
+ public:
+  std::string_view name() const override { return "bdd"; }
+
+  bool can_handle(const logic::CheckTask& task, std::string* why) const override {
+    if (!task.system || task.system->kind() != semantics::SemanticsKind::Iec61131) {
+      if (why) *why = "the bdd engine encodes the IEC 61131-3 scan cycle only; Grafcet charts "
+                      "are checked by the explicit engine";
+      return false;
+    }
+    try {
+      semantics::build_iec61131_circuit(*task.system);
+    } catch (const semantics::CircuitUnsupported& e) {
+      if (why) *why = std::string("the bdd engine cannot encode ") + e.what();
+      return false;
+    }
+    // The standard checks that need the graph's edges are reported as not checked.
+    return true;
+  }
+
+  logic::CheckReport check(const logic::CheckTask& task) const override {
+    SymbolicSystem sys(*task.system, semantics::build_iec61131_circuit(*task.system));
+    Run run(task, sys);
+    try {
+      return run.check();
+    } catch (const bdd::BddError& e) {
+      logic::CheckReport report;
+      report.engine = "bdd";
+      report.complete = false;
+      report.limit = "memory";
+      for (const auto& p : task.properties) {
+        PropertyResult r;
+        r.name = p.name;
+        r.formula = logic::to_string(p.formula);
+        r.verdict = Verdict::Unknown;
+        r.message = std::string("the BDD package ran out of resources: ") + e.what();
+        report.results.push_back(std::move(r));
+      }
+      return report;
+    }
+  }
+};
+
+}  // namespace
+
+ModelCheckerPtr make_bdd_model_checker() { return std::make_unique<BddModelChecker>(); }
+
+}  // namespace sfcv::engine

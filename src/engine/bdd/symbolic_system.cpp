@@ -1,0 +1,280 @@
+#include "engine/bdd/symbolic_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace sfcv::engine {
+
+using semantics::Aig;
+using semantics::AigLit;
+using Bdd = bdd::Bdd;
+
+namespace {
+
+/// The circuit inputs and latches an Aig literal depends on (structural support).
+void support(const Aig& aig, AigLit root, std::vector<bool>& seen, std::vector<std::uint32_t>& inputs,
+             std::vector<std::uint32_t>& latches) {
+  std::vector<std::uint32_t> stack{Aig::node_of(root)};
+  while (!stack.empty()) {
+    const auto n = stack.back();
+    stack.pop_back();
+    if (seen[n]) continue;
+    seen[n] = true;
+    const auto& node = aig.nodes()[n];
+    switch (node.kind) {
+      case Aig::NodeKind::Input: inputs.push_back(node.index); break;
+      case Aig::NodeKind::Latch: latches.push_back(node.index); break;
+      case Aig::NodeKind::And:
+        stack.push_back(Aig::node_of(node.left));
+        stack.push_back(Aig::node_of(node.right));
+        break;
+      case Aig::NodeKind::Constant: break;
+    }
+  }
+}
+
+}  // namespace
+
+SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
+                               semantics::TransitionCircuit circuit, const SymbolicOptions& options)
+    : ts_(ts), circuit_(std::move(circuit)) {
+  bdd::configure_manager(options.nodes, options.cache, 4);
+  bdd::ensure_manager();
+  const Aig& aig = circuit_.aig;
+  // Static order: inputs first (quantified early), then the latches in layout order with the
+  // current and next copies of each bit adjacent; the layout keeps the bits of one chart
+  // together.
+  int var = 0;
+  for (std::size_t i = 0; i < aig.inputs().size(); ++i) input_var_.push_back(var++);
+  for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+    current_var_.push_back(var++);
+    next_var_.push_back(var++);
+  }
+  bdd::ensure_variables(var);
+  current_vars_ = current_var_;
+  memo_.resize(aig.nodes().size());
+  memo_set_.assign(aig.nodes().size(), false);
+  current_cube_ = Bdd::cube(current_var_);
+  input_cube_ = Bdd::cube(input_var_);
+
+  initial_ = Bdd::constant(true);
+  for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+    const Bdd v = Bdd::variable(current_var_[l]);
+    initial_ = initial_ & (aig.latches()[l].initial ? v : !v);
+  }
+  ok_ = node_bdd(circuit_.allowed) & !node_bdd(circuit_.range_error);
+  has_successor_ = ok_.exist(input_cube_);
+  range_error_states_ = (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
+
+  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in latch
+  // order while small; then each current/input variable is quantified right after the last
+  // cluster that mentions it.
+  std::vector<Bdd> parts;
+  std::vector<std::vector<bool>> part_support;
+  const std::size_t num_vars = static_cast<std::size_t>(var);
+  {
+    std::vector<bool> seen(aig.nodes().size());
+    Bdd cluster = ok_;
+    std::vector<bool> cluster_support(num_vars, false);
+    auto add_support = [&](AigLit lit, std::vector<bool>& into) {
+      std::fill(seen.begin(), seen.end(), false);
+      std::vector<std::uint32_t> ins, lats;
+      support(aig, lit, seen, ins, lats);
+      for (auto i : ins) into[static_cast<std::size_t>(input_var_[i])] = true;
+      for (auto l : lats) into[static_cast<std::size_t>(current_var_[l])] = true;
+    };
+    add_support(circuit_.allowed, cluster_support);
+    add_support(circuit_.range_error, cluster_support);
+    for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+      const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
+      const Bdd merged = cluster & conjunct;
+      if (merged.node_count() > options.cluster_nodes && !cluster.is_true()) {
+        parts.push_back(cluster);
+        part_support.push_back(cluster_support);
+        cluster = conjunct;
+        cluster_support.assign(num_vars, false);
+      } else {
+        cluster = merged;
+      }
+      add_support(aig.latches()[l].next, cluster_support);
+    }
+    parts.push_back(cluster);
+    part_support.push_back(cluster_support);
+  }
+  std::vector<int> last(num_vars, -1);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    for (std::size_t v = 0; v < num_vars; ++v)
+      if (part_support[k][v]) last[v] = static_cast<int>(k);
+  std::vector<std::vector<int>> after(parts.size());
+  std::vector<int> first;
+  auto quantified = [&](int v) {
+    return std::find(input_var_.begin(), input_var_.end(), v) != input_var_.end() ||
+           std::find(current_var_.begin(), current_var_.end(), v) != current_var_.end();
+  };
+  for (std::size_t v = 0; v < num_vars; ++v) {
+    if (!quantified(static_cast<int>(v))) continue;
+    if (last[v] < 0) first.push_back(static_cast<int>(v));
+    else after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
+  }
+  clusters_ = std::move(parts);
+  for (auto& vs : after) quantify_after_.push_back(Bdd::cube(vs));
+  quantify_first_ = Bdd::cube(first);
+
+  next_to_current_ = std::make_unique<bdd::VarMap>();
+  substitute_next_ = std::make_unique<bdd::VarMap>();
+  for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+    next_to_current_->rename(next_var_[l], current_var_[l]);
+    substitute_next_->substitute(current_var_[l], node_bdd(aig.latches()[l].next));
+  }
+  fires_.resize(circuit_.fired.size());
+  fires_set_.assign(circuit_.fired.size(), false);
+}
+
+Bdd SymbolicSystem::node_bdd(AigLit lit) {
+  const Aig& aig = circuit_.aig;
+  const auto root = Aig::node_of(lit);
+  if (!memo_set_[root]) {
+    // Iterative post-order: deep circuits would overflow a recursive walk.
+    std::vector<std::uint32_t> stack{root};
+    while (!stack.empty()) {
+      const auto n = stack.back();
+      if (memo_set_[n]) {
+        stack.pop_back();
+        continue;
+      }
+      const auto& node = aig.nodes()[n];
+      switch (node.kind) {
+        case Aig::NodeKind::Constant: memo_[n] = Bdd::constant(false); break;
+        case Aig::NodeKind::Input: memo_[n] = Bdd::variable(input_var_[node.index]); break;
+        case Aig::NodeKind::Latch: memo_[n] = Bdd::variable(current_var_[node.index]); break;
+        case Aig::NodeKind::And: {
+          const auto l = Aig::node_of(node.left), r = Aig::node_of(node.right);
+          if (!memo_set_[l] || !memo_set_[r]) {
+            if (!memo_set_[l]) stack.push_back(l);
+            if (!memo_set_[r]) stack.push_back(r);
+            continue;
+          }
+          const Bdd a = Aig::is_negated(node.left) ? !memo_[l] : memo_[l];
+          const Bdd b = Aig::is_negated(node.right) ? !memo_[r] : memo_[r];
+          memo_[n] = a & b;
+          break;
+        }
+      }
+      memo_set_[n] = true;
+      stack.pop_back();
+    }
+  }
+  return Aig::is_negated(lit) ? !memo_[root] : memo_[root];
+}
+
+Bdd SymbolicSystem::image(const Bdd& states) const {
+  Bdd acc = states.exist(quantify_first_);
+  for (std::size_t k = 0; k < clusters_.size(); ++k)
+    acc = acc.and_exist(clusters_[k], quantify_after_[k]);
+  return acc.replace(*next_to_current_);
+}
+
+Bdd SymbolicSystem::preimage(const Bdd& states) const {
+  return states.compose(*substitute_next_).and_exist(ok_, input_cube_);
+}
+
+Bdd SymbolicSystem::field_value_equals(std::uint32_t o, std::int64_t value) {
+  const auto& bits = circuit_.observable_bits[o];
+  const auto encoded = static_cast<std::uint64_t>(value - circuit_.observable_lo[o]);
+  if (value < circuit_.observable_lo[o] || (bits.size() < 64 && (encoded >> bits.size()) != 0))
+    return Bdd::constant(false);
+  Bdd r = Bdd::constant(true);
+  for (std::size_t k = 0; k < bits.size(); ++k) {
+    const Bdd b = node_bdd(bits[k]);
+    r = r & (((encoded >> k) & 1U) ? b : !b);
+  }
+  return r;
+}
+
+Bdd SymbolicSystem::atom(const logic::Formula& f) {
+  using logic::Op;
+  switch (f.op) {
+    case Op::True: return Bdd::constant(true);
+    case Op::False: return Bdd::constant(false);
+    case Op::Atom: {
+      const auto o = static_cast<std::uint32_t>(f.observable);
+      const auto& bits = circuit_.observable_bits[o];
+      if (bits.size() == 1 && circuit_.observable_lo[o] == 0) return node_bdd(bits[0]);
+      // An integer used as a Boolean: true when non-zero.
+      return !field_value_equals(o, 0);
+    }
+    case Op::Compare: {
+      // value = lo + bits, compared with the constant as 64-bit integers in the circuit.
+      const auto o = static_cast<std::uint32_t>(f.observable);
+      Aig& aig = circuit_.aig;
+      const auto value = semantics::bv_add(
+          aig, semantics::bv_resize(circuit_.observable_bits[o], 64, false),
+          semantics::bv_constant(circuit_.observable_lo[o], 64));
+      const auto k = semantics::bv_constant(f.value, 64);
+      AigLit r = Aig::kFalse;
+      switch (f.cmp) {
+        case logic::CompareOp::Eq: r = semantics::bv_equal(aig, value, k); break;
+        case logic::CompareOp::Ne: r = Aig::make_not(semantics::bv_equal(aig, value, k)); break;
+        case logic::CompareOp::Lt: r = semantics::bv_less_signed(aig, value, k); break;
+        case logic::CompareOp::Le: r = Aig::make_not(semantics::bv_less_signed(aig, k, value)); break;
+        case logic::CompareOp::Gt: r = semantics::bv_less_signed(aig, k, value); break;
+        case logic::CompareOp::Ge: r = Aig::make_not(semantics::bv_less_signed(aig, value, k)); break;
+      }
+      memo_.resize(aig.nodes().size());
+      memo_set_.resize(aig.nodes().size(), false);
+      return node_bdd(r);
+    }
+    case Op::Not: return !atom(*f.args[0]);
+    case Op::And: return atom(*f.args[0]) & atom(*f.args[1]);
+    case Op::Or: return atom(*f.args[0]) | atom(*f.args[1]);
+    case Op::Implies: return (!atom(*f.args[0])) | atom(*f.args[1]);
+    case Op::Iff: return atom(*f.args[0]).iff(atom(*f.args[1]));
+    case Op::Xor: return atom(*f.args[0]) ^ atom(*f.args[1]);
+    default: throw std::invalid_argument("SymbolicSystem::atom: temporal operator");
+  }
+}
+
+Bdd SymbolicSystem::fires(std::uint32_t t) {
+  if (!fires_set_[t]) {
+    fires_[t] = (node_bdd(circuit_.fired[t]) & ok_).exist(input_cube_);
+    fires_set_[t] = true;
+  }
+  return fires_[t];
+}
+
+Bdd SymbolicSystem::fires_any() {
+  Bdd any = Bdd::constant(false);
+  for (std::uint32_t t = 0; t < circuit_.fired.size(); ++t) any = any | fires(t);
+  return any;
+}
+
+double SymbolicSystem::count(const Bdd& states) const {
+  if (states.is_false()) return 0;
+  return std::round(std::exp2(states.sat_count_log2(current_cube_)));
+}
+
+std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {
+  const Bdd one = states.sat_one(current_cube_);
+  if (one.is_false()) throw std::invalid_argument("SymbolicSystem::pick: empty set");
+  std::vector<bool> latches(current_var_.size());
+  for (std::size_t l = 0; l < current_var_.size(); ++l)
+    latches[l] = one.value_in_cube(current_var_[l]) == 1;
+  return semantics::state_from_latches(ts_, circuit_, latches);
+}
+
+Bdd SymbolicSystem::singleton(semantics::StateView state) const {
+  const auto& layout = ts_.layout();
+  Bdd r = Bdd::constant(true);
+  for (std::uint32_t f = 0; f < circuit_.field_latches.size(); ++f) {
+    const auto v = static_cast<std::uint64_t>(layout.get(state, f) - layout.fields()[f].lo);
+    for (std::size_t k = 0; k < circuit_.field_latches[f].size(); ++k) {
+      const Bdd b = Bdd::variable(current_var_[circuit_.field_latches[f][k]]);
+      r = r & (((v >> k) & 1U) ? b : !b);
+    }
+  }
+  return r;
+}
+
+}  // namespace sfcv::engine

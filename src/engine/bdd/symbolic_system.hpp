@@ -1,0 +1,81 @@
+#pragma once
+// A transition system's circuit (semantics::TransitionCircuit) as BDDs: the set of initial
+// states, a partitioned transition relation with an early-quantification schedule (like SMV's
+// `next(x) := f`, one conjunct per state bit, clustered), images and pre-images, and the sets a
+// property talks about. Every BDD lives in the one global manager of bdd_manager.hpp.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/bdd/bdd_manager.hpp"
+#include "logic/formula.hpp"
+#include "semantics/iec61131_circuit.hpp"
+
+namespace sfcv::engine {
+
+struct SymbolicOptions {
+  int nodes = 4'000'000;   ///< initial node table (BuDDy grows it on demand)
+  int cache = 1'000'000;
+  int cluster_nodes = 2'000;  ///< conjuncts are clustered up to about this many nodes
+};
+
+class SymbolicSystem {
+ public:
+  using Bdd = bdd::Bdd;
+
+  SymbolicSystem(const semantics::TransitionSystem& ts, semantics::TransitionCircuit circuit,
+                 const SymbolicOptions& options = {});
+
+  const semantics::TransitionSystem& system() const { return ts_; }
+  const semantics::TransitionCircuit& circuit() const { return circuit_; }
+
+  const Bdd& initial() const { return initial_; }
+  /// States with at least one allowed input that raises no range error.
+  const Bdd& has_successor() const { return has_successor_; }
+  /// States (current variables) where some allowed input raises a range error.
+  const Bdd& range_error_states() const { return range_error_states_; }
+  Bdd image(const Bdd& states) const;
+  Bdd preimage(const Bdd& states) const;
+
+  /// The states where a propositional formula over observables holds.
+  Bdd atom(const logic::Formula& f);
+  /// States where transition t fires under some allowed, error-free input.
+  Bdd fires(std::uint32_t transition);
+  /// States that fire at least one transition under some allowed, error-free input.
+  Bdd fires_any();
+
+  /// Number of states in `states` (exact below 2^53).
+  double count(const Bdd& states) const;
+  /// One concrete state of a non-empty set.
+  std::vector<semantics::StateWord> pick(const Bdd& states) const;
+  /// The singleton set of a concrete state.
+  Bdd singleton(semantics::StateView state) const;
+
+  std::size_t num_state_variables() const { return current_vars_.size(); }
+
+ private:
+  Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)
+  Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
+
+  const semantics::TransitionSystem& ts_;
+  semantics::TransitionCircuit circuit_;
+  std::vector<int> input_var_;    ///< per circuit input
+  std::vector<int> current_var_;  ///< per latch
+  std::vector<int> next_var_;     ///< per latch
+  std::vector<int> current_vars_;
+  std::vector<Bdd> memo_;
+  std::vector<bool> memo_set_;
+  Bdd current_cube_, input_cube_;
+  Bdd initial_, ok_, has_successor_, range_error_states_;
+  // Image: clusters of (next_l <-> f_l), each with the current/input variables that can be
+  // quantified once it has been conjoined.
+  std::vector<Bdd> clusters_;
+  std::vector<Bdd> quantify_after_;
+  Bdd quantify_first_;
+  std::unique_ptr<bdd::VarMap> next_to_current_;
+  std::unique_ptr<bdd::VarMap> substitute_next_;  ///< current_l -> f_l (pre-image)
+  std::vector<Bdd> fires_;
+  std::vector<bool> fires_set_;
+};
+
+}  // namespace sfcv::engine
