@@ -273,7 +273,9 @@ class Checks {
         add(r, "situation " + situation(s) + " (after " + std::to_string(g_.depth(s)) +
                    " evolutions): " +
                    (g_.edges_begin(s) == g_.edges_end(s)
-                        ? "no successor at all (the assumptions exclude every input)"
+                        ? (ts_.kind() == semantics::SemanticsKind::Grafcet
+                               ? "no successor at all (no input event leads to an evolution)"
+                               : "no successor at all (the assumptions exclude every input)")
                         : "no transition can ever fire again, whatever the inputs"));
     if (count > kMaxSituations)
       add(r, "(and " + std::to_string(count - kMaxSituations) + " more deadlocked situations)");
