@@ -428,7 +428,8 @@ std::string print(const Node& n, int context) {
     case NodeKind::Let:
       s = "let " + n.name + " = " + print(*n.args[0], 0) + "; " + print(*n.args[1], 0);
       break;
-    case NodeKind::Not: s = "!" + print(*n.args[0], p); break;
+    // Parenthesise a negated comparison, although `!` binds looser, for the reader.
+    case NodeKind::Not: s = "!" + print(*n.args[0], 5); break;
     case NodeKind::Count: s = "#" + print(*n.args[0], p); break;
     default:
       // Left-associative: the right operand needs parentheses at equal precedence.
