@@ -14,6 +14,11 @@ namespace sfcv::semantics {
 struct InputVariable {
   std::string name;
   model::Type type;  ///< Bool or Int (its range bounds the values)
+  /// Not a signal of the plant but a nondeterministic choice of the semantics made explicit
+  /// (IEC: `timeout:<timer>` a running timer expires, `choice:<step>` which conflicting
+  /// alternative fires, `elapse:<step>` how far a step's abstract .T advances). Engines treat it
+  /// like any input; traces may hide it.
+  bool pseudo = false;
 };
 
 struct InputLiteral {

@@ -1,0 +1,559 @@
+#include "io/st_parser.hpp"
+
+#include <array>
+#include <limits>
+#include <optional>
+
+#include "model/names.hpp"
+#include "model/types.hpp"
+
+namespace sfcv::io {
+namespace st {
+
+namespace {
+
+using model::ExprKind;
+using model::ExprPtr;
+
+constexpr std::array<std::string_view, 48> kReserved{
+    "AND",       "OR",       "XOR",        "NOT",       "MOD",      "TRUE",       "FALSE",
+    "IF",        "THEN",     "ELSIF",      "ELSE",      "END_IF",   "CASE",       "OF",
+    "END_CASE",  "FOR",      "TO",         "BY",        "DO",       "END_FOR",    "WHILE",
+    "END_WHILE", "REPEAT",   "UNTIL",      "END_REPEAT", "RETURN",  "EXIT",       "CONTINUE",
+    "VAR",       "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GLOBAL", "VAR_EXTERNAL",
+    "VAR_TEMP",  "END_VAR",  "AT",         "END_STEP",  "END_TRANSITION", "END_ACTION",
+    "END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION", "INITIAL_STEP", "JMP", "ARRAY",
+    "POINTER",   "REF_TO"};
+
+// Statement keywords sfcv does not model.
+constexpr std::array<std::string_view, 7> kUnsupportedStatements{
+    "FOR", "WHILE", "REPEAT", "RETURN", "EXIT", "CONTINUE", "JMP"};
+
+std::string upper(std::string_view s) { return model::to_upper(s); }
+
+// A flat n-ary node for associative operators, so that `a AND b AND c` and `(a AND b) AND c`
+// give one model and printing then re-parsing is the identity.
+ExprPtr nary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, const model::SourceLocation& where) {
+  std::vector<ExprPtr> args;
+  for (auto* side : {&lhs, &rhs}) {
+    if ((*side)->kind == kind) args.insert(args.end(), (*side)->args.begin(), (*side)->args.end());
+    else args.push_back(*side);
+  }
+  return model::make_nary(kind, std::move(args), where);
+}
+
+}  // namespace
+
+bool is_reserved(std::string_view word) {
+  for (auto r : kReserved)
+    if (model::iequals(r, word)) return true;
+  return false;
+}
+
+Parser::Parser(std::vector<Token> tokens, Locator locator)
+    : tokens_(std::move(tokens)), locator_(std::move(locator)) {
+  if (tokens_.empty() || tokens_.back().kind != TokenKind::End) tokens_.push_back(Token{});
+}
+
+const Token& Parser::peek(std::size_t k) const {
+  return tokens_[std::min(pos_ + k, tokens_.size() - 1)];
+}
+
+const Token& Parser::next() {
+  const Token& t = peek();
+  if (pos_ < tokens_.size() - 1) ++pos_;
+  return t;
+}
+
+bool Parser::at_word(std::string_view word, std::size_t k) const {
+  const Token& t = peek(k);
+  return t.kind == TokenKind::Identifier && model::iequals(t.text, word);
+}
+
+bool Parser::accept(TokenKind kind) {
+  if (!at(kind)) return false;
+  next();
+  return true;
+}
+
+bool Parser::accept_word(std::string_view word) {
+  if (!at_word(word)) return false;
+  next();
+  return true;
+}
+
+const Token& Parser::expect(TokenKind kind, std::string_view what) {
+  if (!at(kind)) fail_unexpected(what);
+  return next();
+}
+
+void Parser::expect_word(std::string_view word) {
+  if (!at_word(word)) fail_unexpected(word);
+  next();
+}
+
+std::string Parser::identifier(std::string_view what) {
+  const Token& t = peek();
+  if (t.kind != TokenKind::Identifier || is_reserved(t.text)) fail_unexpected(what);
+  return next().text;
+}
+
+void Parser::fail(const Token& t, const std::string& message) const {
+  throw ParseError(where(t), message);
+}
+
+void Parser::fail_unexpected(std::string_view expected) const {
+  const Token& t = peek();
+  if (t.kind == TokenKind::Unsupported) fail(t, "unsupported: literal " + t.text);
+  fail(t, "expected " + std::string(expected) + ", found " + describe(t));
+}
+
+// ------------------------------------------------------------------------------ expressions
+
+ExprPtr Parser::expression() { return or_expr(); }
+
+ExprPtr Parser::or_expr() {
+  ExprPtr e = xor_expr();
+  while (at_word("OR")) {
+    const Token& op = next();
+    e = nary(ExprKind::Or, e, xor_expr(), where(op));
+  }
+  return e;
+}
+
+ExprPtr Parser::xor_expr() {
+  ExprPtr e = and_expr();
+  while (at_word("XOR")) {
+    const Token& op = next();
+    e = nary(ExprKind::Xor, e, and_expr(), where(op));
+  }
+  return e;
+}
+
+ExprPtr Parser::and_expr() {
+  ExprPtr e = eq_expr();
+  while (at_word("AND") || at(TokenKind::Ampersand)) {
+    const Token& op = next();
+    e = nary(ExprKind::And, e, eq_expr(), where(op));
+  }
+  return e;
+}
+
+ExprPtr Parser::eq_expr() {
+  ExprPtr e = cmp_expr();
+  while (at(TokenKind::Eq) || at(TokenKind::Ne)) {
+    const Token& op = next();
+    const auto kind = op.kind == TokenKind::Eq ? ExprKind::Eq : ExprKind::Ne;
+    e = model::make_binary(kind, e, cmp_expr(), where(op));
+  }
+  return e;
+}
+
+ExprPtr Parser::cmp_expr() {
+  ExprPtr e = add_expr();
+  for (;;) {
+    ExprKind kind;
+    if (at(TokenKind::Lt)) kind = ExprKind::Lt;
+    else if (at(TokenKind::Le)) kind = ExprKind::Le;
+    else if (at(TokenKind::Gt)) kind = ExprKind::Gt;
+    else if (at(TokenKind::Ge)) kind = ExprKind::Ge;
+    else return e;
+    const Token& op = next();
+    e = model::make_binary(kind, e, add_expr(), where(op));
+  }
+}
+
+ExprPtr Parser::add_expr() {
+  ExprPtr e = mul_expr();
+  while (at(TokenKind::Plus) || at(TokenKind::Minus)) {
+    const Token& op = next();
+    const auto kind = op.kind == TokenKind::Plus ? ExprKind::Add : ExprKind::Sub;
+    e = model::make_binary(kind, e, mul_expr(), where(op));
+  }
+  return e;
+}
+
+ExprPtr Parser::mul_expr() {
+  ExprPtr e = unary_expr();
+  for (;;) {
+    ExprKind kind;
+    if (at(TokenKind::Star)) kind = ExprKind::Mul;
+    else if (at(TokenKind::Slash)) kind = ExprKind::Div;
+    else if (at_word("MOD")) kind = ExprKind::Mod;
+    else return e;
+    const Token& op = next();
+    e = model::make_binary(kind, e, unary_expr(), where(op));
+  }
+}
+
+ExprPtr Parser::unary_expr() {
+  if (at(TokenKind::Minus)) {
+    const Token& op = next();
+    return model::make_unary(ExprKind::Neg, unary_expr(), where(op));
+  }
+  if (at(TokenKind::Plus)) {
+    next();
+    return unary_expr();
+  }
+  if (at_word("NOT")) {
+    const Token& op = next();
+    return model::make_unary(ExprKind::Not, unary_expr(), where(op));
+  }
+  ExprPtr e = primary();
+  if (at(TokenKind::Power)) fail(peek(), "unsupported: operator '**'");
+  return e;
+}
+
+ExprPtr Parser::primary() {
+  const Token& t = peek();
+  const auto loc = where(t);
+  switch (t.kind) {
+    case TokenKind::Integer:
+    case TokenKind::Time: {
+      next();
+      const bool time = t.kind == TokenKind::Time;
+      const std::int64_t v = t.value < 0 ? -t.value : t.value;
+      ExprPtr lit = time ? model::make_time(v, loc) : model::make_int(v, loc);
+      // INT#-5 is Neg(5), like -5, so that printing and re-reading give the same model.
+      return t.value < 0 ? model::make_unary(ExprKind::Neg, lit, loc) : lit;
+    }
+    case TokenKind::Bool:
+      next();
+      return model::make_bool(t.value != 0, loc);
+    case TokenKind::LParen: {
+      next();
+      ExprPtr e = expression();
+      expect(TokenKind::RParen, "')'");
+      return e;
+    }
+    case TokenKind::Unsupported: fail(t, "unsupported: literal " + t.text);
+    case TokenKind::DirectAddress:
+      fail(t, "unsupported: direct address " + t.text + " in an expression (declare a variable AT it)");
+    case TokenKind::Identifier: break;
+    default: fail_unexpected("an expression");
+  }
+  if (at_word("TRUE") || at_word("FALSE")) {
+    next();
+    return model::make_bool(model::iequals(t.text, "TRUE"), loc);
+  }
+  if (is_reserved(t.text)) fail_unexpected("an expression");
+  next();
+  if (at(TokenKind::LParen)) fail(t, "unsupported: call of function '" + t.text + "'");
+  if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
+  if (at(TokenKind::Caret)) fail(peek(), "unsupported: pointer dereference of '" + t.text + "'");
+  if (!at(TokenKind::Dot)) return model::make_name(t.text, loc);
+  next();
+  if (!at(TokenKind::Identifier))
+    fail_unexpected("a member name after '" + t.text + ".'");
+  const Token& member = next();
+  if (at(TokenKind::Dot))
+    fail(peek(), "unsupported: nested member access '" + t.text + "." + member.text + ".'");
+  if (at(TokenKind::LParen))
+    fail(member, "unsupported: call of method '" + t.text + "." + member.text + "'");
+  return model::make_member(t.text, member.text, loc);
+}
+
+// ------------------------------------------------------------------------------- statements
+
+model::StmtList Parser::statements() {
+  model::StmtList out;
+  for (;;) {
+    if (accept(TokenKind::Semicolon)) continue;  // empty statement
+    if (!at(TokenKind::Identifier)) return out;
+    const std::string w = upper(peek().text);
+    if (w.rfind("END_", 0) == 0 || w == "ELSE" || w == "ELSIF" || w == "STEP" ||
+        w == "INITIAL_STEP" || w == "TRANSITION" || w == "ACTION" || w == "UNTIL")
+      return out;
+    out.push_back(statement());
+  }
+}
+
+void Parser::end_statement(std::string_view what) {
+  if (accept(TokenKind::Semicolon)) return;
+  // The last statement of a text may omit its ';' (seen in exported XML bodies).
+  if (at(TokenKind::End)) return;
+  fail_unexpected("';' after " + std::string(what));
+}
+
+model::StmtPtr Parser::statement() {
+  const Token& t = peek();
+  for (auto k : kUnsupportedStatements)
+    if (at_word(k)) fail(t, "unsupported: " + upper(t.text) + " statement");
+  if (at_word("IF")) return if_statement();
+  if (at_word("CASE")) return case_statement();
+  if (is_reserved(t.text)) fail_unexpected("a statement");
+  next();
+  if (at(TokenKind::Assign)) {
+    next();
+    ExprPtr value = expression();
+    end_statement("the assignment");
+    return model::make_assign(t.text, value, where(t));
+  }
+  if (at(TokenKind::LParen)) return fb_call(t);
+  if (at(TokenKind::Dot))
+    fail(t, "unsupported: assignment to a member of '" + t.text +
+                "' (pass FB inputs in the call: inst(IN := x))");
+  if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
+  if (at(TokenKind::Colon)) fail(t, "unsupported: CASE label '" + t.text + "' (integer literals only)");
+  if (at(TokenKind::Arrow)) fail(peek(), "unsupported: output assignment '=>'");
+  fail_unexpected("':=' or '(' after '" + t.text + "'");
+}
+
+model::StmtPtr Parser::fb_call(const Token& name) {
+  expect(TokenKind::LParen, "'('");
+  std::vector<std::pair<std::string, ExprPtr>> args;
+  if (!at(TokenKind::RParen)) {
+    do {
+      if (at_word("NOT") && at(TokenKind::Identifier, 1) && at(TokenKind::Arrow, 2))
+        fail(peek(), "unsupported: output assignment '=>' in the call of '" + name.text + "'");
+      if (!(at(TokenKind::Identifier) && (at(TokenKind::Assign, 1) || at(TokenKind::Arrow, 1)))) {
+        if (at(TokenKind::RParen)) fail_unexpected("an input name");
+        fail(peek(), "unsupported: positional arguments in the call of '" + name.text +
+                         "' (write IN := value)");
+      }
+      const Token& input = next();
+      if (at(TokenKind::Arrow))
+        fail(peek(), "unsupported: output assignment '=>' in the call of '" + name.text + "'");
+      next();
+      args.emplace_back(input.text, expression());
+    } while (accept(TokenKind::Comma));
+  }
+  expect(TokenKind::RParen, "',' or ')'");
+  end_statement("the call of '" + name.text + "'");
+  return model::make_fb_call(name.text, std::move(args), where(name));
+}
+
+model::StmtPtr Parser::if_statement() {
+  const Token& kw = next();  // IF
+  auto s = std::make_shared<model::Stmt>();
+  s->kind = model::StmtKind::If;
+  s->where = where(kw);
+  do {
+    s->conditions.push_back(expression());
+    expect_word("THEN");
+    s->bodies.push_back(statements());
+  } while (accept_word("ELSIF"));
+  if (accept_word("ELSE")) s->else_body = statements();
+  expect_word("END_IF");
+  accept(TokenKind::Semicolon);
+  return s;
+}
+
+std::int64_t Parser::case_bound() {
+  const bool negative = accept(TokenKind::Minus);
+  const Token& t = peek();
+  if (t.kind == TokenKind::Identifier && !is_reserved(t.text))
+    fail(t, "unsupported: symbolic bound '" + t.text + "' (integer literals only)");
+  if (t.kind != TokenKind::Integer) fail_unexpected("an integer literal");
+  next();
+  return negative ? -t.value : t.value;
+}
+
+model::StmtPtr Parser::case_statement() {
+  const Token& kw = next();  // CASE
+  auto s = std::make_shared<model::Stmt>();
+  s->kind = model::StmtKind::Case;
+  s->where = where(kw);
+  s->value = expression();
+  expect_word("OF");
+  while (at(TokenKind::Integer) || at(TokenKind::Minus) ||
+         (at(TokenKind::Identifier) && !is_reserved(peek().text))) {
+    std::vector<model::CaseLabel> labels;
+    do {
+      model::CaseLabel l;
+      l.lo = l.hi = case_bound();
+      if (accept(TokenKind::DotDot)) l.hi = case_bound();
+      labels.push_back(l);
+    } while (accept(TokenKind::Comma));
+    expect(TokenKind::Colon, "':' after the CASE labels");
+    s->labels.push_back(std::move(labels));
+    s->bodies.push_back(statements());
+  }
+  if (accept_word("ELSE")) s->else_body = statements();
+  expect_word("END_CASE");
+  accept(TokenKind::Semicolon);
+  return s;
+}
+
+// ------------------------------------------------------------------------------ VAR sections
+
+namespace {
+struct SectionKind {
+  std::string_view word;
+  model::VarDirection direction;
+};
+constexpr std::array<SectionKind, 7> kSections{{
+    {"VAR", model::VarDirection::Local},
+    {"VAR_INPUT", model::VarDirection::Input},
+    {"VAR_OUTPUT", model::VarDirection::Output},
+    {"VAR_IN_OUT", model::VarDirection::InOut},
+    {"VAR_GLOBAL", model::VarDirection::Global},
+    {"VAR_EXTERNAL", model::VarDirection::External},
+    {"VAR_TEMP", model::VarDirection::Local},
+}};
+}  // namespace
+
+bool Parser::at_var_section() const {
+  if (!at(TokenKind::Identifier)) return false;
+  for (const auto& s : kSections)
+    if (at_word(s.word)) return true;
+  return at_word("VAR_ACCESS") || at_word("VAR_CONFIG");
+}
+
+model::Type Parser::var_type() {
+  const Token& t = peek();
+  if (t.kind != TokenKind::Identifier) fail_unexpected("a type name");
+  const std::string name = upper(t.text);
+  if (name == "ARRAY" || name == "POINTER" || name == "REF_TO" || name == "STRUCT" ||
+      name == "STRING" || name == "WSTRING" || name == "REAL" || name == "LREAL")
+    fail(t, "unsupported type " + name + " (sfcv models BOOL, integers, TIME and standard FBs)");
+  next();
+  auto type = model::elementary_type(name);
+  if (!type)
+    fail(t, "unsupported type '" + t.text + "' (sfcv models BOOL, integers, TIME and standard FBs)");
+  if (at(TokenKind::LParen)) {
+    if (type->kind != model::TypeKind::Int) fail(peek(), "a subrange needs an integer base type");
+    next();
+    const std::int64_t lo = case_bound();
+    expect(TokenKind::DotDot, "'..' in the subrange");
+    const std::int64_t hi = case_bound();
+    expect(TokenKind::RParen, "')' after the subrange");
+    if (lo > hi || lo < type->lo || hi > type->hi)
+      fail(t, "subrange " + std::to_string(lo) + ".." + std::to_string(hi) + " is empty or outside " +
+                  name);
+    type = model::Type::integer(name + "(" + std::to_string(lo) + ".." + std::to_string(hi) + ")",
+                                lo, hi);
+  }
+  return *type;
+}
+
+void Parser::var_section(std::vector<model::Variable>& out) {
+  const Token& kw = next();
+  std::optional<model::VarDirection> direction;
+  for (const auto& s : kSections)
+    if (model::iequals(s.word, kw.text)) direction = s.direction;
+  if (!direction) fail(kw, "unsupported: " + upper(kw.text) + " section");
+  while (accept_word("CONSTANT") || accept_word("RETAIN") || accept_word("NON_RETAIN") ||
+         accept_word("PERSISTENT")) {
+  }
+  while (!at_word("END_VAR")) {
+    if (at(TokenKind::End)) fail_unexpected("END_VAR");
+    std::vector<const Token*> names;
+    do {
+      const Token& n = peek();
+      identifier("a variable name or END_VAR");
+      names.push_back(&n);
+    } while (accept(TokenKind::Comma));
+    std::string address;
+    if (accept_word("AT")) {
+      if (names.size() > 1) fail(*names[1], "AT can locate only one variable");
+      address = expect(TokenKind::DirectAddress, "a direct address such as %IX1").text;
+    }
+    expect(TokenKind::Colon, "':' and a type");
+    model::Type type = var_type();
+    std::optional<std::int64_t> initial;
+    if (accept(TokenKind::Assign)) {
+      const Token& init_tok = peek();
+      if (type.kind == model::TypeKind::FunctionBlock)
+        fail(init_tok, "unsupported: initial values of function block instances");
+      ExprPtr e = expression();
+      bool negative = false;
+      if (e->kind == ExprKind::Neg) {
+        negative = true;
+        e = e->args[0];
+      }
+      const auto k = e->kind;
+      const bool fits =
+          (type.kind == model::TypeKind::Bool &&
+           (k == ExprKind::BoolConst || (k == ExprKind::IntConst && !negative && e->value <= 1))) ||
+          (type.kind == model::TypeKind::Int && k == ExprKind::IntConst) ||
+          (type.kind == model::TypeKind::Time && k == ExprKind::TimeConst && !negative);
+      if (k != ExprKind::BoolConst && k != ExprKind::IntConst && k != ExprKind::TimeConst)
+        fail(init_tok, "unsupported: initial value that is not a literal");
+      if (!fits) fail(init_tok, "initial value does not match type " + type.name);
+      const std::int64_t v = negative ? -e->value : e->value;
+      if (type.kind == model::TypeKind::Int && (v < type.lo || v > type.hi))
+        fail(init_tok, "initial value " + std::to_string(v) + " is outside " + type.name);
+      initial = v;
+    }
+    if (at(TokenKind::Identifier) && (at_word("R_EDGE") || at_word("F_EDGE")))
+      fail(peek(), "unsupported: " + upper(peek().text) + " declarations");
+    expect(TokenKind::Semicolon, "';' after the declaration");
+    for (const Token* n : names) {
+      model::Variable v;
+      v.name = n->text;
+      v.direction = *direction;
+      v.type = type;
+      v.initial = initial;
+      v.address = address;
+      v.where = where(*n);
+      out.push_back(std::move(v));
+    }
+  }
+  next();  // END_VAR
+}
+
+}  // namespace st
+
+// --------------------------------------------------------------------------- free functions
+
+namespace {
+template <typename F>
+void run(std::string_view text, const model::SourceLocation& start, model::Diagnostics& diags,
+         F&& body) {
+  st::Locator locator(start);
+  model::Diagnostics lexical;
+  auto tokens = st::tokenize(text, locator, lexical);
+  if (!lexical.empty()) {
+    diags.insert(diags.end(), lexical.begin(), lexical.end());
+    return;
+  }
+  st::Parser parser(std::move(tokens), locator);
+  try {
+    body(parser);
+    if (!parser.at(st::TokenKind::End)) parser.fail_unexpected("end of text");
+  } catch (const st::ParseError& e) {
+    diags.push_back({model::Severity::Error, e.where, e.what()});
+  }
+}
+}  // namespace
+
+model::ExprPtr parse_st_expression(std::string_view text, const model::SourceLocation& start,
+                                   model::Diagnostics& diags) {
+  model::ExprPtr result;
+  bool ok = false;
+  const auto before = diags.size();
+  run(text, start, diags, [&](st::Parser& p) {
+    if (p.at(st::TokenKind::End)) p.fail_unexpected("an expression");
+    result = p.expression();
+    p.accept(st::TokenKind::Semicolon);  // some exporters end conditions with ';'
+    ok = true;
+  });
+  if (!ok || diags.size() != before) return nullptr;
+  return result;
+}
+
+model::StmtList parse_st_statements(std::string_view text, const model::SourceLocation& start,
+                                    model::Diagnostics& diags) {
+  model::StmtList result;
+  run(text, start, diags, [&](st::Parser& p) {
+    result = p.statements();
+    if (!p.at(st::TokenKind::End)) {
+      result.clear();
+      p.fail_unexpected("a statement");
+    }
+  });
+  return result;
+}
+
+std::vector<model::Variable> parse_var_sections(std::string_view text,
+                                                const model::SourceLocation& start,
+                                                model::Diagnostics& diags) {
+  std::vector<model::Variable> result;
+  run(text, start, diags, [&](st::Parser& p) {
+    while (p.at_var_section()) p.var_section(result);
+  });
+  return result;
+}
+
+}  // namespace sfcv::io

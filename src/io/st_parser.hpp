@@ -1,0 +1,111 @@
+#pragma once
+// Structured Text parsing shared by the importers: expressions (guards), statement lists (action
+// bodies) and VAR sections. Errors come back as located diagnostics; nothing is printed.
+//
+// Supported: OR XOR AND/& NOT, = <> < <= > >=, + - * / MOD, unary -, parentheses, TRUE/FALSE,
+// integer literals (16#FF, 2#1010, 1_000, INT#5), TIME literals (T#1m30s -> ms), names and
+// `a.b` members; `x := e;`, IF/ELSIF/ELSE, CASE, FB calls `inst(IN := x);`, `;`.
+// Anything else (function calls, FOR/WHILE/REPEAT, REAL, strings, arrays ...) is an error
+// "unsupported: <construct>" at its place.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/st_lexer.hpp"
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+#include "model/expr.hpp"
+#include "model/source_location.hpp"
+#include "model/statement.hpp"
+
+namespace sfcv::io {
+
+/// Parses `text` as one ST expression. `start` is the location of text[0]: a file position
+/// (line/column inside the text are added to it) or an XML element (its element_path is carried
+/// into every diagnostic, with line/column relative to the text). Returns null on error.
+model::ExprPtr parse_st_expression(std::string_view text, const model::SourceLocation& start,
+                                   model::Diagnostics& diags);
+
+/// Parses `text` as an ST statement list (an action body). On error, the diagnostics say why and
+/// the result is empty.
+model::StmtList parse_st_statements(std::string_view text, const model::SourceLocation& start,
+                                    model::Diagnostics& diags);
+
+/// Parses a sequence of VAR ... END_VAR sections (VAR, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT,
+/// VAR_GLOBAL, VAR_EXTERNAL, VAR_TEMP as Local; CONSTANT/RETAIN tolerated).
+std::vector<model::Variable> parse_var_sections(std::string_view text,
+                                                const model::SourceLocation& start,
+                                                model::Diagnostics& diags);
+
+namespace st {
+
+/// Thrown by Parser on the first syntax error of a construct; importers catch it, record it and
+/// resynchronise.
+struct ParseError : std::runtime_error {
+  ParseError(model::SourceLocation w, const std::string& m) : std::runtime_error(m), where(std::move(w)) {}
+  model::SourceLocation where;
+};
+
+/// Recursive-descent parser over a token vector, used directly by the textual SFC importer.
+class Parser {
+ public:
+  Parser(std::vector<Token> tokens, Locator locator);
+
+  // ---- token access
+  const Token& peek(std::size_t k = 0) const;
+  const Token& next();
+  bool at(TokenKind kind, std::size_t k = 0) const { return peek(k).kind == kind; }
+  /// The token k ahead is the identifier `word` (case-insensitive).
+  bool at_word(std::string_view word, std::size_t k = 0) const;
+  bool accept(TokenKind kind);
+  bool accept_word(std::string_view word);
+  const Token& expect(TokenKind kind, std::string_view what);
+  void expect_word(std::string_view word);
+  /// An identifier that is not a reserved ST keyword; `what` names it in the error message.
+  std::string identifier(std::string_view what);
+  std::size_t position() const { return pos_; }
+  void seek(std::size_t pos) { pos_ = pos; }
+
+  model::SourceLocation where(const Token& t) const { return locator_.at(t); }
+  [[noreturn]] void fail(const Token& t, const std::string& message) const;
+  [[noreturn]] void fail_unexpected(std::string_view expected) const;
+
+  // ---- grammar
+  model::ExprPtr expression();
+  /// Statements up to the first token that cannot start one (END_..., ELSE, a CASE label, end).
+  model::StmtList statements();
+  bool at_var_section() const;
+  /// One VAR... END_VAR section; appends its variables.
+  void var_section(std::vector<model::Variable>& out);
+
+ private:
+  model::ExprPtr or_expr();
+  model::ExprPtr xor_expr();
+  model::ExprPtr and_expr();
+  model::ExprPtr eq_expr();
+  model::ExprPtr cmp_expr();
+  model::ExprPtr add_expr();
+  model::ExprPtr mul_expr();
+  model::ExprPtr unary_expr();
+  model::ExprPtr primary();
+  model::StmtPtr statement();
+  model::StmtPtr if_statement();
+  model::StmtPtr case_statement();
+  model::StmtPtr fb_call(const Token& name);
+  std::int64_t case_bound();
+  void end_statement(std::string_view what);
+  model::Type var_type();
+
+  std::vector<Token> tokens_;
+  Locator locator_;
+  std::size_t pos_ = 0;
+};
+
+/// True for words ST reserves (AND, IF, END_IF, ...) which cannot name a variable.
+bool is_reserved(std::string_view word);
+
+}  // namespace st
+}  // namespace sfcv::io

@@ -1,0 +1,1311 @@
+#include "semantics/grafcet_system.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "model/names.hpp"
+
+namespace sfcv::semantics {
+
+namespace {
+
+using model::ExprKind;
+
+// ------------------------------------------------------------------------ compiled expressions
+
+enum class Op : std::uint8_t {
+  Const, Input, Step, Var, Delay,
+  Not, Neg, And, Or, Xor,
+  Add, Sub, Mul, Div, Mod,
+  Eq, Ne, Lt, Le, Gt, Ge,
+  Rise, Fall,
+};
+
+/// An expression whose names are resolved to inputs, steps, memory fields and delays.
+struct CExpr {
+  Op op = Op::Const;
+  std::int32_t ref = 0;
+  std::int64_t value = 0;
+  std::vector<CExpr> args;
+};
+
+/// Three-valued: unknown when it depends on an input the current partial valuation leaves free.
+struct Val {
+  bool known = true;
+  std::int64_t v = 0;
+};
+
+/// A partial input valuation: val[i] is 0/1 for Boolean and pseudo inputs, the region index for
+/// integer inputs.
+struct Partial {
+  std::vector<std::int64_t> val;
+  std::vector<char> known;
+};
+
+struct GStep {
+  std::string name;
+  int chart = -1;
+  model::StepKind kind = model::StepKind::Normal;
+  bool initial = false;
+  int field = -1;                 ///< -1 for a macro-step (derived activity)
+  int expansion = -1;             ///< macro-step: chart id
+  std::vector<int> enclosed;      ///< enclosing step: chart ids
+  int entry = -1, exit = -1;      ///< macro-step: steps of the expansion
+  std::vector<int> derived_from;  ///< macro-step: the fields whose OR is its activity
+};
+
+struct GChart {
+  std::string name;
+  std::string pou;
+  std::vector<int> steps;
+  bool top_level = true;  ///< neither enclosed nor an expansion
+};
+
+struct GTrans {
+  std::vector<int> need;  ///< fields that must be active (and are deactivated)
+  std::vector<int> act;   ///< fields activated
+  CExpr guard;
+  int chart = -1;
+};
+
+struct GStored {
+  int step = -1;
+  model::StoredWhen when = model::StoredWhen::Activation;
+  CExpr event;
+  int var = -1;  ///< index into vars_
+  CExpr value;
+};
+
+struct GForce {
+  int step = -1;
+  int chart = -1;
+  model::ForcingKind kind = model::ForcingKind::Situation;
+  std::vector<int> situation;  ///< step ids
+};
+
+struct GVar {
+  std::string name;
+  int field = -1;
+  model::Type type;
+  bool continuous = false;
+};
+
+struct GContinuous {
+  int step = -1;
+  int var = -1;
+  bool has_condition = false;
+  CExpr condition;
+};
+
+struct GInput {
+  std::string name;
+  model::Type type;
+  std::vector<std::int64_t> thresholds;  ///< integer: the region boundaries
+  std::vector<std::int64_t> region_lo;   ///< integer: first value of each region
+  bool edge = false;                     ///< read under an edge
+  bool pseudo = false;
+  int delay = -1;  ///< pseudo: the delay it elapses
+  int field = -1;  ///< InputMemory field, -1 when not stored
+
+  std::int64_t regions() const {
+    return type.kind == model::TypeKind::Int ? static_cast<std::int64_t>(region_lo.size()) : 2;
+  }
+  std::int64_t region_hi(std::int64_t r) const {
+    return r + 1 < regions() ? region_lo[static_cast<std::size_t>(r + 1)] - 1 : type.hi;
+  }
+};
+
+struct GDelay {
+  CExpr expr;
+  model::ExprPtr source;
+  std::int64_t t1 = 0, t2 = 0;
+  int field = -1;
+  int pseudo = -1;
+};
+
+enum class ObsRef { Step, Field, Input };
+struct ObsInfo {
+  ObsRef ref = ObsRef::Field;
+  int index = 0;
+};
+
+bool all_digits(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
+/// Step names in the usual order: numbers by value, then the others alphabetically.
+bool numeric_less(const std::string& a, const std::string& b) {
+  const bool da = all_digits(a), db = all_digits(b);
+  if (da && db && a.size() != b.size()) return a.size() < b.size();
+  if (da != db) return da;
+  return a < b;
+}
+
+// ------------------------------------------------------------------------------- the system
+
+class GrafcetSystem final : public TransitionSystem {
+ public:
+  GrafcetSystem(const model::Project& project, const GrafcetOptions& options,
+                model::Diagnostics& diagnostics)
+      : options_(options), diags_(diagnostics) {
+    build(project);
+  }
+
+  bool ok() const { return ok_; }
+
+  SemanticsKind kind() const override { return SemanticsKind::Grafcet; }
+  const StateLayout& layout() const override { return layout_; }
+  const std::vector<InputVariable>& inputs() const override { return input_vars_; }
+  const std::vector<Observable>& observables() const override { return observables_; }
+  const std::vector<TransitionInfo>& transitions() const override { return trans_info_; }
+
+  void initial_states(SuccessorSink& sink) const override;
+  void successors(StateView state, SuccessorSink& sink) const override;
+  std::int64_t observe(StateView state, std::uint32_t index) const override;
+  std::string describe(StateView state) const override;
+
+ private:
+  // ---- compilation
+  void build(const model::Project& project);
+  void error(const model::SourceLocation& where, std::string message) {
+    diags_.push_back({model::Severity::Error, where, std::move(message)});
+    ok_ = false;
+  }
+  int find_step(const std::string& pou, std::string_view name) const;
+  int find_chart(const std::string& pou, std::string_view name) const;
+  int input_index(const model::Pou& pou, const std::string& name);
+  bool compile(const model::Pou& pou, const model::Expr& e, CExpr& out, bool under_edge);
+  /// compile() then checks that integer inputs are only compared with constants.
+  bool compile_top(const model::Pou& pou, const model::Expr& e, CExpr& out);
+  bool int_inputs_ok(const CExpr& e, const model::Expr& where);
+  bool constant_value(const model::Expr& e, std::int64_t& v) const;
+  void finish_inputs();
+
+  // ---- evaluation
+  struct Ctx {
+    StateView cur;
+    const Partial* in;
+    StateView prev;
+    const Partial* prev_in;
+    mutable int wanted = -1;  ///< first free input met
+  };
+  bool active(StateView s, int step) const;
+  Val eval(const CExpr& e, const Ctx& c) const;
+  Partial inputs_of(StateView s) const;
+  InputCube cube_of(const Partial& p) const;
+
+  enum class Status { Stable, Split, Anomaly };
+  struct Result {
+    std::vector<StateWord> target;
+    std::vector<std::uint32_t> fired;
+    int split = -1;
+    Anomaly anomaly;
+  };
+  Status evolve(StateView source, const Partial& v, bool initial, Result& r) const;
+  void init_chart(std::vector<StateWord>& s, int chart) const;
+  void clear_chart(std::vector<StateWord>& s, int chart) const;
+  void explore(StateView source, Partial start, bool initial, SuccessorSink& sink) const;
+  void emit(StateView source, const Partial& v, const Result& r, SuccessorSink& sink) const;
+
+  GrafcetOptions options_;
+  model::Diagnostics& diags_;
+  bool ok_ = true;
+
+  std::vector<GStep> steps_;
+  std::vector<GChart> charts_;
+  std::vector<GTrans> trans_;
+  std::vector<GStored> stored_;
+  std::vector<GForce> forces_;
+  std::vector<GVar> vars_;
+  std::vector<GContinuous> continuous_;
+  std::vector<GInput> gin_;
+  std::vector<GDelay> delays_;
+  std::vector<int> enclosing_;  ///< ids of enclosing steps
+
+  std::map<std::string, int> var_index_;    ///< upper "POU.NAME" -> vars_
+  std::map<std::string, int> input_by_name_;  ///< upper "POU.NAME" -> gin_
+
+  StateLayout layout_;
+  std::vector<InputVariable> input_vars_;
+  std::vector<Observable> observables_;
+  std::vector<ObsInfo> obs_info_;
+  std::vector<TransitionInfo> trans_info_;
+  std::vector<StateWord> initial_template_;
+};
+
+// ------------------------------------------------------------------------------- compilation
+
+int GrafcetSystem::find_step(const std::string& pou, std::string_view name) const {
+  int hit = -1, count = 0;
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    if (!model::iequals(charts_[steps_[i].chart].pou, pou)) continue;
+    if (model::iequals(steps_[i].name, name)) {
+      hit = static_cast<int>(i);
+      ++count;
+    }
+  }
+  return count == 1 ? hit : (count > 1 ? -2 : -1);
+}
+
+int GrafcetSystem::find_chart(const std::string& pou, std::string_view name) const {
+  for (std::size_t i = 0; i < charts_.size(); ++i)
+    if (model::iequals(charts_[i].pou, pou) && model::iequals(charts_[i].name, name))
+      return static_cast<int>(i);
+  return -1;
+}
+
+int GrafcetSystem::input_index(const model::Pou& pou, const std::string& name) {
+  const std::string key = model::to_upper(pou.name) + "." + model::to_upper(name);
+  if (auto it = input_by_name_.find(key); it != input_by_name_.end()) return it->second;
+  GInput in;
+  const model::Variable* v = pou.find_variable(name);
+  in.name = v ? v->name : name;
+  in.type = v ? v->type : model::Type::boolean();
+  if (in.type.kind == model::TypeKind::Time) in.type.kind = model::TypeKind::Int;
+  gin_.push_back(in);
+  const int id = static_cast<int>(gin_.size() - 1);
+  input_by_name_[key] = id;
+  return id;
+}
+
+bool GrafcetSystem::constant_value(const model::Expr& e, std::int64_t& v) const {
+  switch (e.kind) {
+    case ExprKind::IntConst:
+    case ExprKind::TimeConst:
+    case ExprKind::BoolConst:
+      v = e.value;
+      return true;
+    case ExprKind::Neg:
+      if (!constant_value(*e.args[0], v)) return false;
+      v = -v;
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool GrafcetSystem::compile(const model::Pou& pou, const model::Expr& e, CExpr& out,
+                            bool under_edge) {
+  auto resolve_step = [&](const std::string& name, CExpr& o) {
+    const int s = find_step(pou.name, name);
+    if (s == -2) {
+      error(e.where, "ambiguous step name '" + name + "': several partial grafcets have it");
+      return false;
+    }
+    if (s < 0) return false;
+    o.op = Op::Step;
+    o.ref = s;
+    return true;
+  };
+  switch (e.kind) {
+    case ExprKind::BoolConst:
+    case ExprKind::IntConst:
+    case ExprKind::TimeConst:
+      out.op = Op::Const;
+      out.value = e.value;
+      return true;
+    case ExprKind::Name: {
+      const std::string key = model::to_upper(pou.name) + "." + model::to_upper(e.name);
+      if (auto it = var_index_.find(key); it != var_index_.end()) {
+        out.op = Op::Var;
+        out.ref = it->second;
+        return true;
+      }
+      const model::Variable* var = pou.find_variable(e.name);
+      // A step variable: "X12" names step "12" unless a variable is called X12.
+      if (!var && e.name.size() > 1 && (e.name[0] == 'X' || e.name[0] == 'x')) {
+        if (resolve_step(e.name.substr(1), out)) return true;
+        if (!ok_) return false;
+      }
+      if (!var && find_step(pou.name, e.name) >= 0) {
+        error(e.where, "'" + e.name + "' is a step: write X" + e.name + " for its activity");
+        return false;
+      }
+      if (var && var->type.kind == model::TypeKind::FunctionBlock) {
+        error(e.where, "function block instance '" + e.name + "' is not part of Grafcet");
+        return false;
+      }
+      out.op = Op::Input;
+      out.ref = input_index(pou, e.name);
+      if (under_edge) gin_[out.ref].edge = true;
+      if (!var && !pou.variables.empty())
+        diags_.push_back({model::Severity::Note, e.where,
+                          "'" + e.name + "' is not declared: read as a Boolean input"});
+      return true;
+    }
+    case ExprKind::Member: {
+      if (model::iequals(e.member, "X") && resolve_step(e.name, out)) return true;
+      if (!ok_) return false;
+      const int chart = find_chart(pou.name, e.name);
+      if (chart >= 0) {
+        for (int s : charts_[chart].steps) {
+          const auto& n = steps_[s].name;
+          if (model::iequals(n, e.member) ||
+              (e.member.size() > 1 && model::iequals(n, std::string_view(e.member).substr(1)))) {
+            out.op = Op::Step;
+            out.ref = s;
+            return true;
+          }
+        }
+      }
+      error(e.where, "unknown step '" + e.name + "." + e.member + "'");
+      return false;
+    }
+    case ExprKind::Delay: {
+      CExpr inner;
+      if (!compile(pou, *e.args[0], inner, under_edge) || !int_inputs_ok(inner, e)) return false;
+      if (e.value < 0 || e.value2 < 0) {
+        error(e.where, "negative delay");
+        return false;
+      }
+      int id = -1;
+      for (std::size_t i = 0; i < delays_.size(); ++i)
+        if (delays_[i].t1 == e.value && delays_[i].t2 == e.value2 &&
+            model::equal(delays_[i].source, e.args[0]))
+          id = static_cast<int>(i);
+      if (id < 0) {
+        GDelay d;
+        d.expr = std::move(inner);
+        d.source = e.args[0];
+        d.t1 = e.value;
+        d.t2 = e.value2;
+        delays_.push_back(std::move(d));
+        id = static_cast<int>(delays_.size() - 1);
+      }
+      out.op = Op::Delay;
+      out.ref = id;
+      return true;
+    }
+    case ExprKind::Eq: case ExprKind::Ne: case ExprKind::Lt:
+    case ExprKind::Le: case ExprKind::Gt: case ExprKind::Ge: {
+      static const std::map<ExprKind, Op> ops{{ExprKind::Eq, Op::Eq}, {ExprKind::Ne, Op::Ne},
+                                              {ExprKind::Lt, Op::Lt}, {ExprKind::Le, Op::Le},
+                                              {ExprKind::Gt, Op::Gt}, {ExprKind::Ge, Op::Ge}};
+      Op op = ops.at(e.kind);
+      CExpr l, r;
+      if (!compile(pou, *e.args[0], l, under_edge) || !compile(pou, *e.args[1], r, under_edge))
+        return false;
+      auto is_int_input = [this](const CExpr& x) {
+        return x.op == Op::Input && gin_[x.ref].type.kind == model::TypeKind::Int;
+      };
+      if (is_int_input(r) && !is_int_input(l)) {  // put the input on the left
+        std::swap(l, r);
+        static const std::map<Op, Op> mirror{{Op::Eq, Op::Eq}, {Op::Ne, Op::Ne}, {Op::Lt, Op::Gt},
+                                             {Op::Le, Op::Ge}, {Op::Gt, Op::Lt}, {Op::Ge, Op::Le}};
+        op = mirror.at(op);
+      }
+      if (is_int_input(l)) {
+        if (r.op != Op::Const) {
+          error(e.where, "integer input '" + gin_[l.ref].name +
+                             "' can only be compared with a constant in the Grafcet semantics");
+          return false;
+        }
+        const std::int64_t c = r.value;
+        auto& th = gin_[l.ref].thresholds;
+        // Values < c / >= c behave alike for Lt and Ge; Le, Gt split at c + 1; Eq, Ne at both.
+        if (op == Op::Lt || op == Op::Ge || op == Op::Eq || op == Op::Ne) th.push_back(c);
+        if (op == Op::Le || op == Op::Gt || op == Op::Eq || op == Op::Ne) th.push_back(c + 1);
+        out.op = op;
+        out.args = {std::move(l), std::move(r)};
+        return true;
+      }
+      out.op = op;
+      out.args = {std::move(l), std::move(r)};
+      return true;
+    }
+    default:
+      break;
+  }
+  // Operators with sub-expressions.
+  static const std::map<ExprKind, Op> ops{
+      {ExprKind::Not, Op::Not}, {ExprKind::Neg, Op::Neg}, {ExprKind::And, Op::And},
+      {ExprKind::Or, Op::Or},   {ExprKind::Xor, Op::Xor}, {ExprKind::Add, Op::Add},
+      {ExprKind::Sub, Op::Sub}, {ExprKind::Mul, Op::Mul}, {ExprKind::Div, Op::Div},
+      {ExprKind::Mod, Op::Mod}, {ExprKind::Rising, Op::Rise}, {ExprKind::Falling, Op::Fall}};
+  const auto it = ops.find(e.kind);
+  if (it == ops.end()) {
+    error(e.where, "expression not supported by the Grafcet semantics: " + model::to_st(e));
+    return false;
+  }
+  out.op = it->second;
+  const bool edge = under_edge || e.kind == ExprKind::Rising || e.kind == ExprKind::Falling;
+  for (const auto& a : e.args) {
+    CExpr c;
+    if (!compile(pou, *a, c, edge)) return false;
+    out.args.push_back(std::move(c));
+  }
+  return true;
+}
+
+bool GrafcetSystem::compile_top(const model::Pou& pou, const model::Expr& e, CExpr& out) {
+  if (!compile(pou, e, out, false)) return false;
+  if (out.op == Op::Input && gin_[out.ref].type.kind == model::TypeKind::Int) {
+    error(e.where, "integer input '" + gin_[out.ref].name + "' used as a Boolean");
+    return false;
+  }
+  return int_inputs_ok(out, e);
+}
+
+bool GrafcetSystem::int_inputs_ok(const CExpr& e, const model::Expr& where) {
+  const bool comparison = e.op == Op::Eq || e.op == Op::Ne || e.op == Op::Lt || e.op == Op::Le ||
+                          e.op == Op::Gt || e.op == Op::Ge;
+  for (std::size_t i = 0; i < e.args.size(); ++i) {
+    const auto& a = e.args[i];
+    if (a.op == Op::Input && gin_[a.ref].type.kind == model::TypeKind::Int) {
+      if (!(comparison && i == 0 && e.args[1].op == Op::Const)) {
+        error(where.where, "integer input '" + gin_[a.ref].name +
+                               "' can only be compared with a constant in the Grafcet semantics: " +
+                               model::to_st(where));
+        return false;
+      }
+      continue;
+    }
+    if (!int_inputs_ok(a, where)) return false;
+  }
+  return true;
+}
+
+void GrafcetSystem::finish_inputs() {
+  for (auto& in : gin_) {
+    if (in.type.kind != model::TypeKind::Int) continue;
+    auto& th = in.thresholds;
+    std::sort(th.begin(), th.end());
+    th.erase(std::unique(th.begin(), th.end()), th.end());
+    in.region_lo = {in.type.lo};
+    for (auto t : th)
+      if (t > in.type.lo && t <= in.type.hi) in.region_lo.push_back(t);
+  }
+}
+
+void GrafcetSystem::build(const model::Project& project) {
+  // Charts and steps.
+  for (const auto& pou : project.pous) {
+    for (const auto& chart : pou.charts) {
+      GChart gc;
+      gc.name = chart.name;
+      gc.pou = pou.name;
+      const int cid = static_cast<int>(charts_.size());
+      for (const auto& st : chart.steps) {
+        GStep gs;
+        gs.name = st.name;
+        gs.chart = cid;
+        gs.kind = st.kind;
+        gs.initial = st.initial;
+        gc.steps.push_back(static_cast<int>(steps_.size()));
+        steps_.push_back(std::move(gs));
+      }
+      charts_.push_back(std::move(gc));
+    }
+  }
+  // Macro-step expansions and enclosures.
+  {
+    std::size_t sid = 0;
+    for (const auto& pou : project.pous)
+      for (const auto& chart : pou.charts)
+        for (const auto& st : chart.steps) {
+          GStep& gs = steps_[sid++];
+          if (st.kind == model::StepKind::MacroStep) {
+            gs.expansion = find_chart(pou.name, st.expansion);
+            if (gs.expansion < 0) {
+              error(st.where, "macro-step " + st.name + ": unknown expansion '" + st.expansion + "'");
+              continue;
+            }
+            charts_[gs.expansion].top_level = false;
+          } else if (st.kind == model::StepKind::Enclosing) {
+            for (const auto& name : st.enclosed) {
+              const int c = find_chart(pou.name, name);
+              if (c < 0) {
+                error(st.where, "enclosing step " + st.name + ": unknown partial grafcet '" + name + "'");
+                continue;
+              }
+              gs.enclosed.push_back(c);
+              charts_[c].top_level = false;
+            }
+            enclosing_.push_back(static_cast<int>(sid - 1));
+          }
+        }
+  }
+  if (!ok_) return;
+  // Entry and exit steps of expansions: "E<macro>"/"S<macro>" by name (IEC 60848's naming),
+  // else the initial-marked step / the steps without outgoing transition.
+  for (auto& gs : steps_) {
+    if (gs.kind != model::StepKind::MacroStep) continue;
+    const auto& ex = charts_[gs.expansion];
+    for (int s : ex.steps) {
+      if (model::iequals(steps_[s].name, "E" + gs.name)) gs.entry = s;
+      if (model::iequals(steps_[s].name, "S" + gs.name)) gs.exit = s;
+    }
+    if (gs.entry < 0)
+      for (int s : ex.steps)
+        if (steps_[s].initial) gs.entry = s;
+    if (gs.entry < 0 && !ex.steps.empty()) gs.entry = ex.steps.front();
+    if (gs.exit < 0 && !ex.steps.empty()) gs.exit = ex.steps.back();
+    if (gs.entry < 0) {
+      error({}, "macro-step " + gs.name + ": empty expansion " + ex.name);
+      return;
+    }
+    if (steps_[gs.entry].kind == model::StepKind::MacroStep ||
+        steps_[gs.exit].kind == model::StepKind::MacroStep) {
+      error({}, "macro-step " + gs.name + ": an entry or exit step that is itself a macro-step is "
+                "not supported");
+      return;
+    }
+  }
+  // Step fields.
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    auto& gs = steps_[i];
+    if (gs.kind == model::StepKind::MacroStep) continue;
+    gs.field = static_cast<int>(layout_.add_field(charts_[gs.chart].name + "." + gs.name,
+                                                   FieldKind::StepActive));
+  }
+  // Derived activity of macro-steps (expansions may hold macro-steps: close transitively).
+  for (auto& gs : steps_) {
+    if (gs.kind != model::StepKind::MacroStep) continue;
+    std::vector<int> todo{gs.expansion}, seen;
+    while (!todo.empty()) {
+      const int c = todo.back();
+      todo.pop_back();
+      if (std::find(seen.begin(), seen.end(), c) != seen.end()) continue;
+      seen.push_back(c);
+      for (int s : charts_[c].steps) {
+        if (steps_[s].field >= 0) gs.derived_from.push_back(steps_[s].field);
+        if (steps_[s].expansion >= 0) todo.push_back(steps_[s].expansion);
+        for (int e : steps_[s].enclosed) todo.push_back(e);
+      }
+    }
+  }
+
+  // Writers: stored actions and continuous actions.
+  for (const auto& pou : project.pous) {
+    auto var_of = [&](const std::string& name, bool continuous,
+                      const model::SourceLocation& where) -> int {
+      const std::string key = model::to_upper(pou.name) + "." + model::to_upper(name);
+      if (auto it = var_index_.find(key); it != var_index_.end()) {
+        if (vars_[it->second].continuous != continuous) {
+          error(where, "variable '" + name +
+                           "' is written by both continuous and stored actions (IEC 60848 forbids "
+                           "it)");
+        }
+        return it->second;
+      }
+      GVar v;
+      const model::Variable* decl = pou.find_variable(name);
+      v.name = decl ? decl->name : name;
+      v.type = decl ? decl->type : model::Type::boolean();
+      if (v.type.kind == model::TypeKind::FunctionBlock) {
+        error(where, "'" + name + "' is a function block instance, not a Grafcet variable");
+        return -1;
+      }
+      if (continuous && v.type.kind != model::TypeKind::Bool) {
+        error(where, "continuous action on non-Boolean variable '" + name + "'");
+        return -1;
+      }
+      v.continuous = continuous;
+      vars_.push_back(v);
+      var_index_[key] = static_cast<int>(vars_.size() - 1);
+      return static_cast<int>(vars_.size() - 1);
+    };
+    for (const auto& sa : pou.stored_actions) var_of(sa.variable, false, sa.where);
+    for (const auto& as : pou.associations) {
+      if (as.qualifier != model::Qualifier::N) {
+        error(as.where, "action qualifier " + std::string(model::to_string(as.qualifier)) +
+                            " is not part of IEC 60848: use a stored action or a delay");
+        continue;
+      }
+      std::string target = as.action;
+      if (const auto* a = pou.find_action(as.action)) {
+        if (a->kind == model::ActionBodyKind::Variable) {
+          target = a->variable;
+        } else {
+          error(as.where, "action '" + as.action + "' has a body: Grafcet actions assign variables");
+          continue;
+        }
+      }
+      var_of(target, true, as.where);
+    }
+  }
+  if (!ok_) return;
+  for (auto& v : vars_) {
+    const auto lo = v.type.kind == model::TypeKind::Bool ? 0 : v.type.lo;
+    const auto hi = v.type.kind == model::TypeKind::Bool ? 1 : v.type.hi;
+    v.field = static_cast<int>(layout_.add_field(v.name, FieldKind::Variable, lo, hi));
+  }
+
+  // Transitions, stored actions, continuous actions, forcing orders.
+  {
+    std::size_t cid = 0;
+    for (const auto& pou : project.pous) {
+      for (const auto& chart : pou.charts) {
+        const int chart_id = static_cast<int>(cid++);
+        for (const auto& t : chart.transitions) {
+          GTrans gt;
+          gt.chart = chart_id;
+          auto step_of = [&](const std::string& n) {
+            for (int s : charts_[chart_id].steps)
+              if (model::iequals(steps_[s].name, n)) return s;
+            return -1;
+          };
+          bool good = true;
+          for (const auto& n : t.sources) {
+            const int s = step_of(n);
+            if (s < 0) { error(t.where, "unknown step '" + n + "'"); good = false; continue; }
+            const auto& gs = steps_[s];
+            gt.need.push_back(gs.field >= 0 ? gs.field : steps_[gs.exit].field);
+          }
+          for (const auto& n : t.targets) {
+            const int s = step_of(n);
+            if (s < 0) { error(t.where, "unknown step '" + n + "'"); good = false; continue; }
+            const auto& gs = steps_[s];
+            gt.act.push_back(gs.field >= 0 ? gs.field : steps_[gs.entry].field);
+          }
+          if (!good || !compile_top(pou, *t.guard, gt.guard)) continue;
+          trans_.push_back(std::move(gt));
+          TransitionInfo info;
+          std::string from, to;
+          for (const auto& n : t.sources) from += (from.empty() ? "" : ",") + n;
+          for (const auto& n : t.targets) to += (to.empty() ? "" : ",") + n;
+          info.name = chart.name + ": " + (t.name.empty() ? "" : t.name + " ") + from + " -> " + to;
+          info.pou = pou.name;
+          info.chart = chart.name;
+          info.where = t.where;
+          trans_info_.push_back(std::move(info));
+        }
+      }
+      auto step_in = [&](const std::string& chart, const std::string& step,
+                         const model::SourceLocation& where) {
+        const int c = chart.empty() ? -1 : find_chart(pou.name, chart);
+        int s = -1;
+        if (c >= 0) {
+          for (int x : charts_[c].steps)
+            if (model::iequals(steps_[x].name, step)) s = x;
+        } else {
+          s = find_step(pou.name, step);
+        }
+        if (s < 0) error(where, "unknown step '" + (chart.empty() ? "" : chart + ".") + step + "'");
+        return s;
+      };
+      for (const auto& sa : pou.stored_actions) {
+        GStored g;
+        g.step = step_in(sa.chart, sa.step, sa.where);
+        g.when = sa.when;
+        g.var = var_index_.at(model::to_upper(pou.name) + "." + model::to_upper(sa.variable));
+        if (g.step < 0) continue;
+        if (sa.when == model::StoredWhen::Event) {
+          if (!sa.event) { error(sa.where, "stored action on event without an event"); continue; }
+          if (!compile_top(pou, *sa.event, g.event)) continue;
+        }
+        if (!sa.value || !compile_top(pou, *sa.value, g.value)) {
+          if (!sa.value) error(sa.where, "stored action without a value");
+          continue;
+        }
+        stored_.push_back(std::move(g));
+      }
+      for (const auto& as : pou.associations) {
+        GContinuous g;
+        g.step = step_in(as.chart, as.step, as.where);
+        std::string target = as.action;
+        if (const auto* a = pou.find_action(as.action)) target = a->variable;
+        g.var = var_index_.at(model::to_upper(pou.name) + "." + model::to_upper(target));
+        if (g.step < 0) continue;
+        if (as.condition) {
+          g.has_condition = true;
+          if (!compile_top(pou, *as.condition, g.condition)) continue;
+        }
+        continuous_.push_back(std::move(g));
+      }
+      for (const auto& fo : pou.forcing_orders) {
+        GForce g;
+        g.step = step_in(fo.chart, fo.step, fo.where);
+        g.chart = find_chart(pou.name, fo.target);
+        g.kind = fo.kind;
+        if (g.chart < 0) {
+          error(fo.where, "forcing order on unknown partial grafcet '" + fo.target + "'");
+          continue;
+        }
+        for (const auto& n : fo.situation) {
+          int s = -1;
+          for (int x : charts_[g.chart].steps)
+            if (model::iequals(steps_[x].name, n)) s = x;
+          if (s < 0) {
+            error(fo.where, "forced step '" + n + "' is not in partial grafcet " + fo.target);
+          } else if (steps_[s].field < 0) {
+            g.situation.push_back(steps_[s].entry);
+          } else {
+            g.situation.push_back(s);
+          }
+        }
+        if (g.step >= 0) forces_.push_back(std::move(g));
+      }
+    }
+  }
+  if (!options_.assumptions.empty())
+    error({}, "assumptions are not supported by the Grafcet semantics yet");
+  if (!ok_) return;
+
+  // Inputs: stored ones get a memory field; each running delay gets a pseudo-input.
+  finish_inputs();
+  for (auto& in : gin_) {
+    if (!options_.single_input_change && !in.edge) continue;
+    in.field = static_cast<int>(layout_.add_field(in.name, FieldKind::InputMemory, 0,
+                                                  in.regions() - 1));
+  }
+  for (std::size_t d = 0; d < delays_.size(); ++d) {
+    auto& dl = delays_[d];
+    dl.field = static_cast<int>(layout_.add_field(
+        std::to_string(dl.t1) + "ms/" + model::to_st(dl.source) + "/" + std::to_string(dl.t2) + "ms",
+        FieldKind::Timer, 0, 3));
+    if (dl.t1 > 0 || dl.t2 > 0) {
+      GInput p;
+      p.name = "elapse(" + std::to_string(dl.t1) + "ms/" + model::to_st(dl.source) + "/" +
+               std::to_string(dl.t2) + "ms)";
+      p.pseudo = true;
+      p.delay = static_cast<int>(d);
+      gin_.push_back(p);
+      dl.pseudo = static_cast<int>(gin_.size() - 1);
+    }
+  }
+  if (layout_.bits() == 0) layout_.add_field("(empty)", FieldKind::Variable, 0, 0);
+  for (const auto& in : gin_) {
+    InputVariable iv;
+    iv.name = in.name;
+    iv.type = in.pseudo ? model::Type::boolean() : in.type;
+    iv.pseudo = in.pseudo;
+    input_vars_.push_back(iv);
+  }
+
+  // Observables.
+  for (std::size_t i = 0; i < steps_.size(); ++i) {
+    const auto& gs = steps_[i];
+    const auto& chart = charts_[gs.chart].name;
+    int same = 0;
+    for (const auto& o : steps_)
+      if (model::iequals(o.name, gs.name)) ++same;
+    Observable o;
+    o.kind = ObservableKind::Step;
+    o.type = model::Type::boolean();
+    o.name = same > 1 ? chart + ".X" + gs.name : "X" + gs.name;
+    o.aliases = {gs.name, chart + "." + gs.name, chart + ".X" + gs.name, "X" + gs.name};
+    observables_.push_back(o);
+    obs_info_.push_back({ObsRef::Step, static_cast<int>(i)});
+  }
+  for (const auto& v : vars_) {
+    Observable o;
+    o.name = v.name;
+    o.type = v.type;
+    o.is_output = true;
+    observables_.push_back(o);
+    obs_info_.push_back({ObsRef::Field, v.field});
+  }
+  for (std::size_t i = 0; i < gin_.size(); ++i) {
+    if (gin_[i].field < 0) continue;
+    Observable o;
+    o.name = gin_[i].name;
+    o.type = gin_[i].type;
+    observables_.push_back(o);
+    obs_info_.push_back({ObsRef::Input, static_cast<int>(i)});
+  }
+
+  // The initial situation before stabilisation: initial steps of the top-level partial
+  // grafcets, closed under enclosure and macro-step entry.
+  initial_template_.assign(layout_.words(), 0);
+  for (std::size_t c = 0; c < charts_.size(); ++c)
+    if (charts_[c].top_level) init_chart(initial_template_, static_cast<int>(c));
+  for (const auto& v : vars_) {
+    std::int64_t init = v.type.kind == model::TypeKind::Bool ? 0 : std::max<std::int64_t>(v.type.lo, 0);
+    for (const auto& pou : project.pous)
+      if (const auto* decl = pou.find_variable(v.name); decl && decl->initial) init = *decl->initial;
+    layout_.set(initial_template_, static_cast<std::uint32_t>(v.field), init);
+  }
+}
+
+// ------------------------------------------------------------------------------- evaluation
+
+bool GrafcetSystem::active(StateView s, int step) const {
+  const auto& gs = steps_[step];
+  if (gs.field >= 0) return layout_.get(s, static_cast<std::uint32_t>(gs.field)) != 0;
+  for (int f : gs.derived_from)
+    if (layout_.get(s, static_cast<std::uint32_t>(f))) return true;
+  return false;
+}
+
+Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
+  switch (e.op) {
+    case Op::Const:
+      return {true, e.value};
+    case Op::Input: {
+      const auto i = static_cast<std::size_t>(e.ref);
+      if (!c.in->known[i]) {
+        if (c.wanted < 0) c.wanted = e.ref;
+        return {false, 0};
+      }
+      const auto v = c.in->val[i];
+      return {true, gin_[i].type.kind == model::TypeKind::Int ? gin_[i].region_lo[static_cast<std::size_t>(v)] : v};
+    }
+    case Op::Step:
+      return {true, active(c.cur, e.ref) ? 1 : 0};
+    case Op::Var:
+      return {true, layout_.get(c.cur, static_cast<std::uint32_t>(vars_[e.ref].field))};
+    case Op::Delay: {
+      const auto ph = layout_.get(c.cur, static_cast<std::uint32_t>(delays_[e.ref].field));
+      return {true, ph >= 2 ? 1 : 0};
+    }
+    case Op::Not: {
+      const Val a = eval(e.args[0], c);
+      return {a.known, a.v ? 0 : 1};
+    }
+    case Op::Neg: {
+      const Val a = eval(e.args[0], c);
+      return {a.known, -a.v};
+    }
+    case Op::And:
+    case Op::Or: {
+      const bool dominant = e.op == Op::Or;  // the value that decides alone
+      bool unknown = false;
+      for (const auto& a : e.args) {
+        const Val x = eval(a, c);
+        if (x.known && (x.v != 0) == dominant) return {true, dominant ? 1 : 0};
+        if (!x.known) unknown = true;
+      }
+      return {!unknown, dominant ? 0 : 1};
+    }
+    case Op::Xor: {
+      std::int64_t r = 0;
+      for (const auto& a : e.args) {
+        const Val x = eval(a, c);
+        if (!x.known) return {false, 0};
+        r ^= (x.v != 0);
+      }
+      return {true, r};
+    }
+    case Op::Rise:
+    case Op::Fall: {
+      const Val now = eval(e.args[0], c);
+      Ctx before{c.prev, c.prev_in, c.prev, c.prev_in};
+      const Val was = eval(e.args[0], before);
+      if (before.wanted >= 0 && c.wanted < 0) c.wanted = before.wanted;
+      const bool want_now = e.op == Op::Rise;
+      if ((now.known && (now.v != 0) != want_now) || (was.known && (was.v != 0) == want_now))
+        return {true, 0};
+      if (!now.known || !was.known) return {false, 0};
+      return {true, 1};
+    }
+    default:
+      break;
+  }
+  const Val a = eval(e.args[0], c);
+  const Val b = eval(e.args[1], c);
+  if (!a.known || !b.known) return {false, 0};
+  switch (e.op) {
+    case Op::Add: return {true, a.v + b.v};
+    case Op::Sub: return {true, a.v - b.v};
+    case Op::Mul: return {true, a.v * b.v};
+    case Op::Div: return {true, b.v == 0 ? 0 : a.v / b.v};
+    case Op::Mod: return {true, b.v == 0 ? 0 : a.v % b.v};
+    case Op::Eq: return {true, a.v == b.v};
+    case Op::Ne: return {true, a.v != b.v};
+    case Op::Lt: return {true, a.v < b.v};
+    case Op::Le: return {true, a.v <= b.v};
+    case Op::Gt: return {true, a.v > b.v};
+    case Op::Ge: return {true, a.v >= b.v};
+    default: return {false, 0};
+  }
+}
+
+Partial GrafcetSystem::inputs_of(StateView s) const {
+  Partial p;
+  p.val.assign(gin_.size(), 0);
+  p.known.assign(gin_.size(), 0);
+  for (std::size_t i = 0; i < gin_.size(); ++i) {
+    if (gin_[i].field < 0) continue;
+    p.val[i] = layout_.get(s, static_cast<std::uint32_t>(gin_[i].field));
+    p.known[i] = 1;
+  }
+  return p;
+}
+
+InputCube GrafcetSystem::cube_of(const Partial& p) const {
+  InputCube cube;
+  for (std::size_t i = 0; i < gin_.size(); ++i) {
+    if (!p.known[i]) continue;
+    InputLiteral l;
+    l.input = static_cast<std::uint32_t>(i);
+    if (gin_[i].type.kind == model::TypeKind::Int && !gin_[i].pseudo) {
+      l.lo = gin_[i].region_lo[static_cast<std::size_t>(p.val[i])];
+      l.hi = gin_[i].region_hi(p.val[i]);
+    } else {
+      l.lo = l.hi = p.val[i];
+    }
+    cube.literals.push_back(l);
+  }
+  return cube;
+}
+
+void GrafcetSystem::init_chart(std::vector<StateWord>& s, int chart) const {
+  for (int id : charts_[chart].steps) {
+    const auto& gs = steps_[id];
+    if (!gs.initial) continue;
+    if (gs.field >= 0) {
+      layout_.set(s, static_cast<std::uint32_t>(gs.field), 1);
+      for (int c : gs.enclosed) init_chart(s, c);
+    } else {
+      layout_.set(s, static_cast<std::uint32_t>(steps_[gs.entry].field), 1);
+    }
+  }
+}
+
+void GrafcetSystem::clear_chart(std::vector<StateWord>& s, int chart) const {
+  for (int id : charts_[chart].steps) {
+    const auto& gs = steps_[id];
+    if (gs.field >= 0) layout_.set(s, static_cast<std::uint32_t>(gs.field), 0);
+    if (gs.expansion >= 0) clear_chart(s, gs.expansion);
+    for (int c : gs.enclosed) clear_chart(s, c);
+  }
+}
+
+GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, bool initial,
+                                             Result& r) const {
+  // Stored inputs must be known: the target remembers them.
+  for (std::size_t i = 0; i < gin_.size(); ++i)
+    if (gin_[i].field >= 0 && !v.known[i]) {
+      r.split = static_cast<int>(i);
+      return Status::Split;
+    }
+  const Partial prev_inputs = initial ? v : inputs_of(source);
+  std::vector<StateWord> cur(source.begin(), source.end());
+  for (std::size_t i = 0; i < gin_.size(); ++i)
+    if (gin_[i].field >= 0) layout_.set(cur, static_cast<std::uint32_t>(gin_[i].field), v.val[i]);
+  // Elapse of running delays (pseudo-inputs): before the evolution the event triggers.
+  if (!initial) {
+    for (const auto& d : delays_) {
+      const auto ph = layout_.get(cur, static_cast<std::uint32_t>(d.field));
+      if (ph != 1 && ph != 3) continue;
+      const auto p = static_cast<std::size_t>(d.pseudo);
+      if (!v.known[p]) {
+        r.split = d.pseudo;
+        return Status::Split;
+      }
+      if (v.val[p]) layout_.set(cur, static_cast<std::uint32_t>(d.field), ph == 1 ? 2 : 0);
+    }
+  }
+  std::vector<StateWord> prev(source.begin(), source.end());
+  const Partial* prev_in = &prev_inputs;
+  std::vector<std::vector<StateWord>> trajectory{cur};
+  std::map<std::vector<StateWord>, std::size_t> seen;  // (prev, cur) -> index in trajectory
+  r.fired.clear();
+
+  std::vector<int> forced(charts_.size(), -1);
+  std::vector<std::uint32_t> cleared;
+  std::vector<const GStored*> events;
+  for (std::size_t k = 0;; ++k) {
+    const Ctx ctx{cur, &v, prev, prev_in};
+    auto need_split = [&](const Ctx& c) {
+      r.split = c.wanted;
+      return Status::Split;
+    };
+    // Forcing orders of the active steps: the forced partial grafcets do not evolve.
+    std::fill(forced.begin(), forced.end(), -1);
+    for (std::size_t f = 0; f < forces_.size(); ++f) {
+      const auto& fo = forces_[f];
+      if (!active(cur, fo.step)) continue;
+      auto& slot = forced[static_cast<std::size_t>(fo.chart)];
+      if (slot >= 0) {
+        const auto& other = forces_[static_cast<std::size_t>(slot)];
+        if (other.kind != fo.kind || other.situation != fo.situation) {
+          r.anomaly.kind = Anomaly::Kind::RangeError;
+          r.anomaly.message = "conflicting forcing orders on partial grafcet " +
+                              charts_[fo.chart].name + " (from steps " + steps_[other.step].name +
+                              " and " + steps_[fo.step].name + ")";
+          r.anomaly.condition.cubes = {cube_of(v)};
+          return Status::Anomaly;
+        }
+      }
+      slot = static_cast<int>(f);
+    }
+    // Clearable transitions: enabled (upstream steps active) and receptivity true.
+    cleared.clear();
+    for (std::size_t t = 0; t < trans_.size(); ++t) {
+      const auto& gt = trans_[t];
+      if (forced[static_cast<std::size_t>(gt.chart)] >= 0) continue;
+      bool enabled = true;
+      for (int f : gt.need)
+        if (!layout_.get(cur, static_cast<std::uint32_t>(f))) enabled = false;
+      if (!enabled) continue;
+      const Val g = eval(gt.guard, ctx);
+      if (!g.known) return need_split(ctx);
+      if (g.v) cleared.push_back(static_cast<std::uint32_t>(t));
+    }
+    events.clear();
+    for (const auto& sa : stored_) {
+      if (sa.when != model::StoredWhen::Event || !active(cur, sa.step)) continue;
+      const Val e = eval(sa.event, ctx);
+      if (!e.known) return need_split(ctx);
+      if (e.v) events.push_back(&sa);
+    }
+    // Simultaneous clearing: deactivate every upstream step, then activate every downstream
+    // step, so that a step both deactivated and activated stays active.
+    std::vector<StateWord> next = cur;
+    for (auto t : cleared)
+      for (int f : trans_[t].need) layout_.set(next, static_cast<std::uint32_t>(f), 0);
+    for (auto t : cleared)
+      for (int f : trans_[t].act) layout_.set(next, static_cast<std::uint32_t>(f), 1);
+    for (std::size_t c = 0; c < charts_.size(); ++c) {
+      if (forced[c] < 0) continue;
+      const auto& fo = forces_[static_cast<std::size_t>(forced[c])];
+      if (fo.kind == model::ForcingKind::Current) continue;
+      clear_chart(next, static_cast<int>(c));
+      if (fo.kind == model::ForcingKind::Initial) init_chart(next, static_cast<int>(c));
+      for (int s : fo.situation) {
+        layout_.set(next, static_cast<std::uint32_t>(steps_[s].field), 1);
+        for (int e : steps_[s].enclosed) init_chart(next, e);
+      }
+    }
+    // Enclosing steps: activation activates the enclosed partial grafcets' initial steps,
+    // deactivation deactivates every step they enclose.
+    for (int e : enclosing_)
+      if (!active(cur, e) && active(next, e))
+        for (int c : steps_[e].enclosed) init_chart(next, c);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int e : enclosing_) {
+        if (active(next, e)) continue;
+        for (int c : steps_[e].enclosed)
+          for (int s : charts_[c].steps)
+            if (steps_[s].field >= 0 && layout_.get(next, static_cast<std::uint32_t>(steps_[s].field))) {
+              clear_chart(next, c);
+              changed = true;
+            }
+      }
+    }
+    // Stored actions: on deactivation, on activation, then on event (later ones win).
+    std::vector<std::pair<int, std::int64_t>> writes;
+    for (int pass = 0; pass < 2; ++pass)
+      for (const auto& sa : stored_) {
+        const auto when = pass == 0 ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
+        if (sa.when != when) continue;
+        const bool was = active(cur, sa.step), is = active(next, sa.step);
+        if (pass == 0 ? !(was && !is) : !(!was && is)) continue;
+        const Val x = eval(sa.value, ctx);
+        if (!x.known) return need_split(ctx);
+        writes.emplace_back(sa.var, x.v);
+      }
+    for (const auto* sa : events) {
+      const Val x = eval(sa->value, ctx);
+      if (!x.known) return need_split(ctx);
+      writes.emplace_back(sa->var, x.v);
+    }
+    for (const auto& [var, value] : writes) {
+      const auto& gv = vars_[static_cast<std::size_t>(var)];
+      std::int64_t val = value;
+      if (gv.type.kind == model::TypeKind::Bool) val = value != 0;
+      if (gv.type.kind == model::TypeKind::Int && (val < gv.type.lo || val > gv.type.hi)) {
+        r.anomaly.kind = Anomaly::Kind::RangeError;
+        r.anomaly.message = "stored action sets " + gv.name + " to " + std::to_string(val) +
+                            ", outside its range [" + std::to_string(gv.type.lo) + ", " +
+                            std::to_string(gv.type.hi) + "]";
+        r.anomaly.condition.cubes = {cube_of(v)};
+        return Status::Anomaly;
+      }
+      layout_.set(next, static_cast<std::uint32_t>(gv.field), val);
+    }
+    // Delay phases follow their expression in the new situation.
+    {
+      const Ctx after{next, &v, cur, &v};
+      for (const auto& d : delays_) {
+        const auto f = static_cast<std::uint32_t>(d.field);
+        const auto ph = layout_.get(next, f);
+        const Val x = eval(d.expr, after);
+        if (!x.known) return need_split(after);
+        std::int64_t np = ph;
+        if (x.v) np = ph == 0 ? (d.t1 > 0 ? 1 : 2) : (ph == 3 ? 2 : ph);
+        else np = ph == 2 ? (d.t2 > 0 ? 3 : 0) : (ph == 1 ? 0 : ph);
+        layout_.set(next, f, np);
+      }
+    }
+    r.fired.insert(r.fired.end(), cleared.begin(), cleared.end());
+    if (next == cur) break;  // stable
+    prev = std::move(cur);
+    prev_in = &v;
+    cur = std::move(next);
+    std::vector<StateWord> key = prev;
+    key.insert(key.end(), cur.begin(), cur.end());
+    const auto [it, fresh] = seen.emplace(std::move(key), trajectory.size());
+    if (!fresh || k + 1 >= options_.max_transient_steps) {
+      r.anomaly.kind = Anomaly::Kind::Instability;
+      r.anomaly.condition.cubes = {cube_of(v)};
+      r.anomaly.cycle.assign(trajectory.begin() + static_cast<std::ptrdiff_t>(fresh ? trajectory.size() - std::min<std::size_t>(trajectory.size(), 16) : it->second),
+                             trajectory.end());
+      r.anomaly.message =
+          fresh ? "no stable situation after " + std::to_string(options_.max_transient_steps) +
+                      " transient evolutions"
+                : "instability: the transient evolutions cycle through " +
+                      std::to_string(r.anomaly.cycle.size()) + " situations and never reach a "
+                      "stable one";
+      return Status::Anomaly;
+    }
+    trajectory.push_back(cur);
+  }
+  // Continuous actions are emitted in the stable situation only.
+  {
+    const Ctx ctx{cur, &v, cur, &v};
+    for (const auto& gv : vars_)
+      if (gv.continuous) layout_.set(cur, static_cast<std::uint32_t>(gv.field), 0);
+    for (const auto& ca : continuous_) {
+      if (!active(cur, ca.step)) continue;
+      if (ca.has_condition) {
+        const Val x = eval(ca.condition, ctx);
+        if (!x.known) {
+          r.split = ctx.wanted;
+          return Status::Split;
+        }
+        if (!x.v) continue;
+      }
+      layout_.set(cur, static_cast<std::uint32_t>(vars_[static_cast<std::size_t>(ca.var)].field), 1);
+    }
+  }
+  std::sort(r.fired.begin(), r.fired.end());
+  r.fired.erase(std::unique(r.fired.begin(), r.fired.end()), r.fired.end());
+  r.target = std::move(cur);
+  return Status::Stable;
+}
+
+void GrafcetSystem::emit(StateView source, const Partial& v, const Result& r,
+                         SuccessorSink& sink) const {
+  if (!source.empty() && std::equal(r.target.begin(), r.target.end(), source.begin(), source.end()))
+    return;  // no evolution and no change of memorised input: stutter is implicit
+  const InputCondition cond{{cube_of(v)}};
+  sink.successor(Successor{StateView(r.target), cond, r.fired});
+}
+
+/// Splits the partial valuation on demand: each leaf decides the whole evolution, so the
+/// number of evolutions computed follows the inputs that matter, not 2^inputs.
+void GrafcetSystem::explore(StateView source, Partial start, bool initial,
+                            SuccessorSink& sink) const {
+  std::vector<Partial> work{std::move(start)};
+  Result r;
+  while (!work.empty()) {
+    Partial p = std::move(work.back());
+    work.pop_back();
+    r.split = -1;
+    switch (evolve(source, p, initial, r)) {
+      case Status::Stable:
+        emit(initial ? StateView{} : source, p, r, sink);
+        break;
+      case Status::Anomaly:
+        sink.anomaly(r.anomaly);
+        r.anomaly = {};
+        break;
+      case Status::Split: {
+        const auto i = static_cast<std::size_t>(r.split);
+        const auto n = gin_[i].regions();
+        for (std::int64_t x = n - 1; x >= 0; --x) {
+          Partial q = p;
+          q.known[i] = 1;
+          q.val[i] = x;
+          work.push_back(std::move(q));
+        }
+        break;
+      }
+    }
+  }
+}
+
+void GrafcetSystem::initial_states(SuccessorSink& sink) const {
+  Partial p;
+  p.val.assign(gin_.size(), 0);
+  p.known.assign(gin_.size(), 0);
+  // Pseudo-inputs play no role at the start: no delay is running yet.
+  for (std::size_t i = 0; i < gin_.size(); ++i)
+    if (gin_[i].pseudo) p.known[i] = 1;
+  explore(initial_template_, p, true, sink);
+}
+
+void GrafcetSystem::successors(StateView state, SuccessorSink& sink) const {
+  if (!options_.single_input_change) {
+    Partial p;
+    p.val.assign(gin_.size(), 0);
+    p.known.assign(gin_.size(), 0);
+    explore(state, p, false, sink);
+    return;
+  }
+  // One event at a time: an input takes another value, or a running delay elapses.
+  const Partial base = [&] {
+    Partial p = inputs_of(state);
+    for (std::size_t i = 0; i < gin_.size(); ++i)
+      if (gin_[i].pseudo) {
+        const auto ph = layout_.get(state, static_cast<std::uint32_t>(delays_[gin_[i].delay].field));
+        p.known[i] = ph == 1 || ph == 3;  // only a running delay's pseudo-input is constrained
+        p.val[i] = 0;
+      }
+    return p;
+  }();
+  for (std::size_t i = 0; i < gin_.size(); ++i) {
+    if (gin_[i].pseudo) {
+      if (!base.known[i]) continue;
+      Partial p = base;
+      p.val[i] = 1;
+      explore(state, p, false, sink);
+      continue;
+    }
+    for (std::int64_t x = 0; x < gin_[i].regions(); ++x) {
+      if (x == base.val[i]) continue;
+      Partial p = base;
+      p.val[i] = x;
+      explore(state, p, false, sink);
+    }
+  }
+}
+
+std::int64_t GrafcetSystem::observe(StateView state, std::uint32_t index) const {
+  const auto& o = obs_info_[index];
+  switch (o.ref) {
+    case ObsRef::Step:
+      return active(state, o.index) ? 1 : 0;
+    case ObsRef::Field:
+      return layout_.get(state, static_cast<std::uint32_t>(o.index));
+    case ObsRef::Input: {
+      const auto& in = gin_[static_cast<std::size_t>(o.index)];
+      const auto v = layout_.get(state, static_cast<std::uint32_t>(in.field));
+      return in.type.kind == model::TypeKind::Int ? in.region_lo[static_cast<std::size_t>(v)] : v;
+    }
+  }
+  return 0;
+}
+
+std::string GrafcetSystem::describe(StateView state) const {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < steps_.size(); ++i)
+    if (active(state, static_cast<int>(i))) {
+      const auto& n = steps_[i].name;
+      int same = 0;
+      for (const auto& o : steps_)
+        if (model::iequals(o.name, n)) ++same;
+      names.push_back(same > 1 ? charts_[steps_[i].chart].name + "." + n : n);
+    }
+  std::sort(names.begin(), names.end(), numeric_less);
+  std::string out = "{";
+  for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + names[i];
+  out += "}";
+  for (const auto& v : vars_) {
+    const auto x = layout_.get(state, static_cast<std::uint32_t>(v.field));
+    if (v.type.kind == model::TypeKind::Bool) {
+      if (x) out += " " + v.name;
+    } else {
+      out += " " + v.name + "=" + std::to_string(x);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TransitionSystemPtr make_grafcet_system(const model::Project& project,
+                                        const GrafcetOptions& options,
+                                        model::Diagnostics& diagnostics) {
+  auto ts = std::make_unique<GrafcetSystem>(project, options, diagnostics);
+  if (!ts->ok()) return nullptr;
+  return ts;
+}
+
+}  // namespace sfcv::semantics

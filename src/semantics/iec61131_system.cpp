@@ -1,0 +1,135 @@
+// The IEC 61131-3 TransitionSystem: successor enumeration over the leaves of the lazy input
+// decisions, merged by target (docs/semantics.md, "Successors").
+
+#include "semantics/iec61131_system.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "semantics/iec_program.hpp"
+#include "semantics/iec_system_impl.hpp"
+
+namespace sfcv::semantics {
+
+namespace iec {
+
+Iec61131System::Iec61131System(std::unique_ptr<Program> p)
+    : p_(std::move(p)), machine_(*p_), scratch_(p_->layout.words()) {}
+
+void Iec61131System::initial_states(SuccessorSink& sink) const {
+  std::vector<StateWord> s(p_->layout.words());
+  machine_.initial(s);
+  static const InputCondition kAlways = InputCondition::always();
+  sink.successor(Successor{s, kAlways, {}});
+}
+
+Iec61131System::Entry& Iec61131System::entry_for(std::span<const std::uint32_t> fired) const {
+  const auto words = p_->layout.words();
+  for (std::size_t i = 0; i < used_; ++i) {
+    auto& e = entries_[i];
+    if (std::equal(e.target.begin(), e.target.end(), scratch_.begin(), scratch_.begin() + words) &&
+        std::equal(e.fired.begin(), e.fired.end(), fired.begin(), fired.end()))
+      return e;
+  }
+  if (used_ == entries_.size()) entries_.emplace_back();
+  auto& e = entries_[used_++];
+  e.target.assign(scratch_.begin(), scratch_.begin() + words);
+  e.fired.assign(fired.begin(), fired.end());
+  e.cubes = 0;
+  return e;
+}
+
+void Iec61131System::add_cube(InputCondition& cond, std::size_t& n) const {
+  if (n == cond.cubes.size()) cond.cubes.emplace_back();
+  machine_.cube(cond.cubes[n]);
+  ++n;
+}
+
+void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
+  used_ = 0;
+  anomalies_used_ = 0;
+  machine_.load(state);
+  machine_.reset_trail();
+  do {
+    try {
+      if (!machine_.run()) continue;  // excluded by an assumption
+    } catch (const RangeAbort& e) {
+      std::string msg = std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
+      AnomalyEntry* a = nullptr;
+      for (std::size_t i = 0; i < anomalies_used_; ++i)
+        if (anomalies_[i].message == msg) a = &anomalies_[i];
+      if (!a) {
+        if (anomalies_used_ == anomalies_.size()) anomalies_.emplace_back();
+        a = &anomalies_[anomalies_used_++];
+        a->message = msg;
+        a->cubes = 0;
+      }
+      add_cube(a->condition, a->cubes);
+      continue;
+    }
+    machine_.pack(scratch_);
+    auto& e = entry_for(machine_.fired());
+    add_cube(e.condition, e.cubes);
+  } while (machine_.next_leaf());
+  for (std::size_t i = 0; i < used_; ++i) {
+    auto& e = entries_[i];
+    e.condition.cubes.resize(e.cubes);
+    sink.successor(Successor{e.target, e.condition, e.fired});
+  }
+  for (std::size_t i = 0; i < anomalies_used_; ++i) {
+    auto& a = anomalies_[i];
+    a.condition.cubes.resize(a.cubes);
+    Anomaly an;
+    an.kind = Anomaly::Kind::RangeError;
+    an.message = a.message;
+    an.condition = a.condition;
+    sink.anomaly(an);
+  }
+}
+
+std::int64_t Iec61131System::observe(StateView state, std::uint32_t index) const {
+  const auto& r = p_->observable_refs[index];
+  const auto& L = p_->layout;
+  switch (r.kind) {
+    case ObservableKind::Step: {
+      const auto& s = p_->steps[r.a];
+      if (!L.get(state, s.ready)) return 0;
+      const auto pa = p_->charts[s.chart].parent_action;
+      return pa == kNone ? 1 : L.get(state, p_->actions[static_cast<std::size_t>(pa)].active);
+    }
+    case ObservableKind::Action: return L.get(state, p_->actions[r.a].active);
+    case ObservableKind::Variable: return L.get(state, r.a);
+  }
+  return 0;
+}
+
+bool Iec61131System::step_once(StateView state, const std::vector<std::int64_t>& valuation,
+                               std::vector<StateWord>& out, std::vector<std::uint32_t>* fired,
+                               std::string* error) const {
+  machine_.load(state);
+  try {
+    if (!machine_.run_fixed(valuation)) {
+      if (error) *error = "the inputs violate an assumption";
+      return false;
+    }
+  } catch (const RangeAbort& e) {
+    if (error) *error = std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
+    return false;
+  }
+  out.assign(p_->layout.words(), 0);
+  machine_.pack(out);
+  if (fired) *fired = machine_.fired();
+  return true;
+}
+
+}  // namespace iec
+
+TransitionSystemPtr make_iec61131_system(const model::Project& project,
+                                         const Iec61131Options& options,
+                                         model::Diagnostics& diagnostics) {
+  auto p = std::make_unique<iec::Program>();
+  if (!iec::compile(project, options, *p, diagnostics)) return nullptr;
+  return std::make_unique<iec::Iec61131System>(std::move(p));
+}
+
+}  // namespace sfcv::semantics

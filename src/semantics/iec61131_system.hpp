@@ -1,0 +1,46 @@
+#pragma once
+// The IEC 61131-3 scan-cycle semantics (docs/semantics.md, Part 1) as a TransitionSystem.
+//
+// A state is the configuration after a cycle: ready steps, active and stored actions, variables,
+// timer and function-block memory. The system is deterministic per input valuation: every
+// nondeterministic choice of the semantics is an explicit pseudo-input (InputVariable::pseudo):
+//   timeout:<timer>  Bool, abstract time: a running timer expires in this cycle;
+//   elapse:<step>    Int,  abstract time: the region a step's .T moves to (see the docs);
+//   choice:<step>    Int,  PriorityMode::None: which of the enabled alternatives leaving <step>
+//                          fires (0 = the first enabled in document order; values beyond the
+//                          last enabled one select the last).
+// So the successor conditions partition the input valuations (minus those the assumptions
+// exclude and those that raise an Anomaly).
+
+#include <cstdint>
+#include <stdexcept>
+
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+#include "semantics/options.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::semantics {
+
+/// Thrown by successors() when an integer input must be enumerated value by value (it is copied
+/// into the state or used in arithmetic) and its remaining range has more than
+/// kMaxEnumeratedValues values: the engine reports it instead of hanging.
+class SemanticsLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+inline constexpr std::int64_t kMaxEnumeratedValues = 4096;
+
+/// Builds the scan-cycle semantics of the POUs `options.pous` of `project` (all run in one cycle,
+/// in the given order). With `options.pous` empty: the single POU with an SFC body (PROGRAMs
+/// preferred). Returns null, with Error diagnostics saying what and where, for anything the
+/// semantics cannot model faithfully.
+///
+/// Not thread-safe: successors() uses scratch memory of the instance; use one instance per
+/// thread.
+TransitionSystemPtr make_iec61131_system(const model::Project& project,
+                                         const Iec61131Options& options,
+                                         model::Diagnostics& diagnostics);
+
+}  // namespace sfcv::semantics

@@ -1,0 +1,274 @@
+#pragma once
+// Internal to the IEC 61131-3 semantics: the chart compiled into flat arrays (expressions as
+// node pools, statements as blocks), and the Machine that runs one scan cycle on them.
+// Every piece of state is a field of the StateLayout; the machine keeps one int64 per field.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+#include "semantics/input_condition.hpp"
+#include "semantics/options.hpp"
+#include "semantics/state_layout.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::semantics::iec {
+
+inline constexpr std::int32_t kNone = -1;
+
+// ------------------------------------------------------------------------------ expressions
+
+enum class Op : std::uint8_t {
+  Const,      ///< k
+  Field,      ///< value of field a (as the cycle's actions left it)
+  Input,      ///< Boolean input a, or an integer input read as a value (enumerated)
+  InputCmp,   ///< integer input a compared (cmp) with constant k: splits the input's interval
+  StepX,      ///< activity of step a in the current configuration
+  StepT,      ///< discrete time: .T of step a in ms
+  StepTCmp,   ///< abstract time: step a's .T region >= k (after `negate`)
+  TimerQ,     ///< Q of timer FB a (its timer state)
+  TimerET,    ///< discrete time: ET of timer FB a in ms
+  Not, Neg, And, Or, Xor, Add, Sub, Mul, Div, Mod, Eq, Ne, Lt, Le, Gt, Ge,
+};
+
+struct Node {
+  Op op = Op::Const;
+  Op cmp = Op::Eq;         ///< InputCmp
+  bool negate = false;     ///< StepTCmp
+  std::uint32_t a = 0;
+  std::uint32_t first = 0;  ///< children in Program::kids
+  std::uint32_t count = 0;
+  std::int64_t k = 0;
+};
+
+// ------------------------------------------------------------------------------- statements
+
+enum class SOp : std::uint8_t { Assign, If, Case, FbCall };
+
+struct Block {
+  std::uint32_t first = 0, count = 0;  ///< in Program::block_items
+};
+
+struct IfArm {
+  std::uint32_t cond = 0;
+  Block body;
+};
+
+struct CaseArm {
+  std::uint32_t label_first = 0, label_count = 0;  ///< in Program::case_labels
+  Block body;
+};
+
+struct Stmt {
+  SOp op = SOp::Assign;
+  std::uint32_t target = 0;  ///< Assign: field; FbCall: FB index
+  std::uint32_t expr = 0;    ///< Assign: value; Case: selector
+  std::uint32_t arm_first = 0, arm_count = 0;
+  Block else_body;
+  std::int32_t arg1 = kNone, arg2 = kNone, arg3 = kNone;  ///< FbCall: expression nodes
+  std::string where;  ///< for range errors
+};
+
+// ------------------------------------------------------------------------------------ timers
+
+/// A timer in one field: 0 idle; abstract time 1 running, 2 expired; discrete time 1 + elapsed
+/// cycles, saturated at 1 + ceil(d / cycle).
+struct Timer {
+  std::uint32_t field = 0;
+  std::int64_t duration_ms = 0;
+  std::int32_t timeout_input = kNone;  ///< abstract time
+  std::int64_t max_value = 2;
+};
+
+struct Fb {
+  std::string name;
+  model::StandardFb kind = model::StandardFb::None;
+  std::uint32_t pou = 0;
+  std::int32_t q = kNone;    ///< Q / Q1 field
+  std::int32_t mem = kNone;  ///< edge memory (R_TRIG, F_TRIG, CTU, CTD, TP's last IN)
+  std::int32_t cv = kNone;   ///< counters
+  std::int32_t timer = kNone;  ///< index into Program::timers
+  std::int64_t pt_ms = -1;     ///< timers: constant PT
+  bool pt_set = false;
+};
+
+// --------------------------------------------------------------------------- chart structure
+
+struct Step {
+  std::string name;  ///< "POU.STEP" or "POU.ACTION.STEP"
+  std::string short_name;
+  std::uint32_t chart = 0;
+  std::uint32_t ready = 0;  ///< field
+  bool initial = false;
+  // .T: discrete: a counter of cycles in a field; abstract: a region index in a field.
+  std::int32_t t_field = kNone;
+  std::int64_t t_max = 0;                ///< discrete: saturation (cycles)
+  std::vector<std::int64_t> thresholds;  ///< abstract: sorted region bounds (2*c, or 2*c+1 for c+)
+  std::int32_t elapse_input = kNone;     ///< abstract
+};
+
+struct Transition {
+  std::uint32_t chart = 0;
+  std::vector<std::uint32_t> sources, targets;  ///< steps
+  std::uint32_t guard = 0;
+  std::int64_t rank = 0;  ///< priority key within the chart
+  std::uint32_t index = 0;  ///< in TransitionSystem::transitions()
+};
+
+struct AltGroup {  ///< PriorityMode::None: the alternatives leaving one step
+  std::uint32_t step = 0;
+  std::vector<std::uint32_t> transitions;  ///< document order
+  std::uint32_t choice_input = 0;
+};
+
+struct Chart {
+  std::uint32_t pou = 0;
+  std::int32_t parent_action = kNone;
+  std::vector<std::uint32_t> steps;
+  std::vector<std::uint32_t> ordered;      ///< transitions by priority (Standard) / order
+  std::vector<AltGroup> groups;            ///< PriorityMode::None
+  std::vector<std::uint32_t> singles;      ///< PriorityMode::None: not in a group
+};
+
+struct Assoc {
+  std::uint32_t step = 0, action = 0;
+  model::Qualifier q = model::Qualifier::N;
+  std::int32_t timer = kNone;  ///< timed qualifiers
+  std::int32_t latch = kNone;  ///< SD, SL: field
+};
+
+struct Action {
+  std::string name;  ///< "POU.ACTION"
+  std::uint32_t pou = 0;
+  std::uint32_t active = 0;          ///< field
+  std::int32_t stored = kNone;       ///< field
+  model::ActionBodyKind kind = model::ActionBodyKind::Statements;
+  std::int32_t variable = kNone;     ///< field of the Boolean variable
+  Block body;
+  std::vector<std::uint32_t> assocs;
+};
+
+struct Pou {
+  std::string name;
+  Block body;
+  std::vector<std::uint32_t> charts;
+  std::vector<std::uint32_t> exec_order;  ///< actions, in execution order
+  std::vector<std::uint32_t> topo_order;  ///< actions, parents before nested ones
+};
+
+struct ObservableRef {
+  ObservableKind kind = ObservableKind::Variable;
+  std::uint32_t a = 0;  ///< Step: step index; Action: action index; Variable: field
+};
+
+struct Program {
+  Iec61131Options options;
+  StateLayout layout;
+  std::vector<std::int64_t> initial;  ///< per field
+  std::vector<InputVariable> inputs;
+  std::vector<Observable> observables;
+  std::vector<ObservableRef> observable_refs;
+  std::vector<TransitionInfo> transition_infos;
+
+  std::vector<Node> nodes;
+  std::vector<std::uint32_t> kids;
+  std::vector<Stmt> stmts;
+  std::vector<std::uint32_t> block_items;
+  std::vector<IfArm> if_arms;
+  std::vector<CaseArm> case_arms;
+  std::vector<model::CaseLabel> case_labels;
+
+  std::vector<Timer> timers;
+  std::vector<Fb> fbs;
+  std::vector<Step> steps;
+  std::vector<Transition> transitions;
+  std::vector<Chart> charts;
+  std::vector<Assoc> assocs;
+  std::vector<Action> actions;
+  std::vector<Pou> pous;
+  std::vector<std::uint32_t> assumptions;  ///< nodes
+  std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
+  std::vector<std::string> field_names;
+};
+
+/// Compiles; returns false with Error diagnostics when something cannot be modelled faithfully.
+bool compile(const model::Project& project, const Iec61131Options& options, Program& program,
+             model::Diagnostics& diagnostics);
+
+// ---------------------------------------------------------------------------------- machine
+
+/// A range error (integer overflow, division by zero, out-of-range assignment): the run stops.
+struct RangeAbort {
+  const char* what;
+  const std::string* where;
+};
+
+/// One decision on an input: which of `n` alternatives this leaf takes.
+struct Decision {
+  std::uint32_t input = 0;
+  std::uint32_t alt = 0, n = 0;
+};
+
+class Machine {
+ public:
+  explicit Machine(const Program& p);
+
+  /// Loads the current configuration.
+  void load(StateView state);
+  /// Runs one cycle under the decisions of the trail (extending it when the run reads an input
+  /// not decided yet). Returns false when the assumptions exclude this leaf.
+  bool run();
+  /// Moves the trail to the next leaf; false when every leaf was visited.
+  bool next_leaf();
+  void reset_trail() { trail_.clear(); }
+  /// The cube of the last run: inputs it constrained.
+  void cube(InputCube& out) const;
+  void pack(MutableStateView out) const;
+  const std::vector<std::uint32_t>& fired() const { return fired_; }
+
+  /// Simulation: runs with every input fixed (no decisions); false when an assumption fails.
+  bool run_fixed(const std::vector<std::int64_t>& valuation);
+  /// Writes the initial configuration.
+  void initial(MutableStateView out);
+
+  // Used by the evaluator.
+  std::int64_t eval(std::uint32_t node);
+  bool step_active_cur(std::uint32_t step) const;
+
+ private:
+  std::uint32_t decide(std::uint32_t input, std::uint32_t n);
+  std::int64_t read_input(std::uint32_t input);
+  bool input_cmp(std::uint32_t input, Op cmp, std::int64_t k);
+  void touch(std::uint32_t input, std::int64_t lo, std::int64_t hi);
+  std::int64_t arith(Op op, std::int64_t x, std::int64_t y) const;
+
+  void exec_block(Block b);
+  void exec_stmt(const Stmt& s);
+  void fb_call(const Stmt& s);
+  void assign(std::uint32_t field, std::int64_t v, const std::string& where);
+  std::int64_t timer_next(const Timer& t, bool run, bool restart);
+  bool timer_expired(const Timer& t, std::int64_t v) const;
+
+  void cycle_pou(const Pou& pou);
+  void fire_chart(const Chart& c);
+  void fire(const Transition& t);
+  void update_pou(const Pou& pou);
+  bool chart_active_cur(std::uint32_t chart) const;
+  bool step_active_next(std::uint32_t step) const;
+
+  const Program& p_;
+  std::vector<std::int64_t> cur_, nxt_;
+  std::vector<std::int64_t> in_lo_, in_hi_;
+  std::vector<std::uint32_t> touched_;
+  std::vector<Decision> trail_;
+  std::size_t pos_ = 0;
+  bool fixed_ = false;
+  std::vector<std::uint8_t> consumed_, entered_, left_;  ///< per step, this cycle
+  std::vector<std::uint32_t> fired_;
+  std::vector<std::uint32_t> enabled_scratch_;
+  std::vector<std::uint8_t> reset_;  ///< per action
+};
+
+}  // namespace sfcv::semantics::iec
