@@ -1,31 +1,336 @@
+// sfcv simulate: runs an IEC 61131-3 chart cycle by cycle on the inputs of a CSV file and
+// prints a table (optionally a VCD waveform).
+
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
-#include "cli/not_built.hpp"
+#include "io/st_parser.hpp"
+#include "model/names.hpp"
+#include "semantics/iec61131_system.hpp"
+#include "semantics/simulate.hpp"
 
 namespace sfcv::cli {
 
 namespace {
+
 struct SimulateOptions {
   std::string model;
   std::string format = "auto";
+  std::string inputs;
+  std::string vcd;
+  std::vector<std::string> pous;
+  std::string priority = "standard";
+  std::string time = "abstract";
+  std::string cycle = "10ms";
+  std::string action_order = "declaration";
+  std::vector<std::string> assumptions;
+  long long max_cycles = -1;
 };
+
+std::int64_t parse_cycle(const std::string& text) {
+  std::size_t pos = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(text, &pos);
+  } catch (const std::exception&) {
+    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
+  }
+  const std::string unit = model::to_upper(text.substr(pos));
+  if (unit == "S") v *= 1000;
+  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
+  if (v <= 0) throw InputError("--cycle must be positive");
+  return v;
+}
+
+std::vector<std::string> split_csv(const std::string& line, std::vector<std::size_t>& columns) {
+  std::vector<std::string> out;
+  columns.clear();
+  std::size_t start = 0;
+  const char sep = line.find(';') != std::string::npos && line.find(',') == std::string::npos ? ';' : ',';
+  while (true) {
+    const auto end = line.find(sep, start);
+    std::string cell = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    std::size_t lead = 0;
+    while (lead < cell.size() && std::isspace(static_cast<unsigned char>(cell[lead]))) ++lead;
+    std::size_t trail = cell.size();
+    while (trail > lead && std::isspace(static_cast<unsigned char>(cell[trail - 1]))) --trail;
+    out.push_back(cell.substr(lead, trail - lead));
+    columns.push_back(start + lead + 1);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+/// The CSV: header of input names, one row per cycle. Pseudo-inputs without a column take
+/// their default (no timeout, first alternative, no elapse); other missing inputs are an error.
+std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
+                                                  const semantics::TransitionSystem& ts,
+                                                  std::vector<int>& shown) {
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot read the input trace");
+  const auto& inputs = ts.inputs();
+  std::vector<int> column_input;
+  std::vector<std::vector<std::int64_t>> rows;
+  std::string line;
+  int lineno = 0;
+  bool header = false;
+  std::vector<std::size_t> cols;
+  while (std::getline(f, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const auto cells = split_csv(line, cols);
+    const std::string at = path + ":" + std::to_string(lineno) + ":";
+    if (!header) {
+      header = true;
+      std::vector<bool> seen(inputs.size());
+      for (std::size_t c = 0; c < cells.size(); ++c) {
+        int found = -1;
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+          if (model::iequals(inputs[i].name, cells[c])) found = static_cast<int>(i);
+        if (found < 0) {
+          std::string known;
+          for (const auto& in : inputs) known += (known.empty() ? "" : ", ") + in.name;
+          throw InputError(at + std::to_string(cols[c]) + ": unknown input '" + cells[c] +
+                           "' (the model's inputs: " + (known.empty() ? "none" : known) + ")");
+        }
+        if (seen[static_cast<std::size_t>(found)])
+          throw InputError(at + std::to_string(cols[c]) + ": input '" + cells[c] + "' appears twice");
+        seen[static_cast<std::size_t>(found)] = true;
+        column_input.push_back(found);
+      }
+      for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (!seen[i] && !inputs[i].pseudo)
+          throw InputError(path + ":" + std::to_string(lineno) + ":1: the header has no column for input '" +
+                           inputs[i].name + "'");
+      for (std::size_t i = 0; i < inputs.size(); ++i)
+        if (seen[i]) shown.push_back(static_cast<int>(i));
+      continue;
+    }
+    if (cells.size() != column_input.size())
+      throw InputError(at + "1: expected " + std::to_string(column_input.size()) + " values, found " +
+                       std::to_string(cells.size()));
+    std::vector<std::int64_t> row(inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+      row[i] = inputs[i].type.kind == model::TypeKind::Bool ? 0 : inputs[i].type.lo;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const auto& in = inputs[static_cast<std::size_t>(column_input[c])];
+      const std::string u = model::to_upper(cells[c]);
+      std::int64_t v = 0;
+      bool good = true;
+      if (u == "TRUE") v = 1;
+      else if (u == "FALSE") v = 0;
+      else {
+        try {
+          std::size_t pos = 0;
+          v = std::stoll(cells[c], &pos);
+          good = pos == cells[c].size();
+        } catch (const std::exception&) {
+          good = false;
+        }
+      }
+      if (!good || v < in.type.lo || v > in.type.hi)
+        throw InputError(at + std::to_string(cols[c]) + ": bad value '" + cells[c] + "' for input '" +
+                         in.name + "' (expected " +
+                         (in.type.kind == model::TypeKind::Bool
+                              ? std::string("0, 1, TRUE or FALSE")
+                              : "an integer in " + std::to_string(in.type.lo) + ".." + std::to_string(in.type.hi)) +
+                         ")");
+      row[static_cast<std::size_t>(column_input[c])] = v;
+    }
+    rows.push_back(std::move(row));
+  }
+  if (!header) throw InputError(path + ":1:1: empty trace (expected a header row of input names)");
+  return rows;
+}
+
+std::string vcd_name(const std::string& s) {
+  std::string r;
+  for (char c : s) r += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+  return r;
+}
+
+std::string vcd_id(std::size_t n) {
+  std::string id;
+  do {
+    id += static_cast<char>('!' + n % 94);
+    n /= 94;
+  } while (n);
+  return id;
+}
+
+void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
+               const semantics::SimulationResult& r,
+               const std::vector<std::vector<std::int64_t>>& rows, const std::vector<int>& shown,
+               std::int64_t cycle_ms) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write the VCD file");
+  const auto& obs = ts.observables();
+  out << "$date sfcv simulate $end\n$version sfcv $end\n$timescale 1ms $end\n";
+  std::size_t next_id = 0;
+  std::vector<std::string> obs_id(obs.size()), in_id(ts.inputs().size());
+  auto scope = [&](const char* name, semantics::ObservableKind kind, bool outputs_only) {
+    out << "$scope module " << name << " $end\n";
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      if (obs[i].kind != kind || (outputs_only && !obs[i].is_output)) continue;
+      obs_id[i] = vcd_id(next_id++);
+      const bool b = obs[i].type.kind == model::TypeKind::Bool;
+      out << "$var " << (b ? "wire 1 " : "integer 64 ") << obs_id[i] << " " << vcd_name(obs[i].name) << " $end\n";
+    }
+    out << "$upscope $end\n";
+  };
+  scope("steps", semantics::ObservableKind::Step, false);
+  scope("actions", semantics::ObservableKind::Action, false);
+  scope("outputs", semantics::ObservableKind::Variable, true);
+  out << "$scope module inputs $end\n";
+  for (int i : shown) {
+    const auto& in = ts.inputs()[static_cast<std::size_t>(i)];
+    in_id[static_cast<std::size_t>(i)] = vcd_id(next_id++);
+    out << "$var " << (in.type.kind == model::TypeKind::Bool ? "wire 1 " : "integer 64 ")
+        << in_id[static_cast<std::size_t>(i)] << " " << vcd_name(in.name) << " $end\n";
+  }
+  out << "$upscope $end\n$enddefinitions $end\n";
+  auto value = [&](bool is_bool, std::int64_t v, const std::string& id) {
+    if (is_bool) {
+      out << (v ? '1' : '0') << id << "\n";
+      return;
+    }
+    std::string bits;
+    auto u = static_cast<std::uint64_t>(v);
+    do {
+      bits.insert(bits.begin(), (u & 1) ? '1' : '0');
+      u >>= 1;
+    } while (u && bits.size() < 64);
+    out << "b" << bits << " " << id << "\n";
+  };
+  for (std::size_t c = 0; c < r.states.size(); ++c) {
+    out << "#" << static_cast<std::int64_t>(c) * cycle_ms << "\n";
+    for (std::size_t i = 0; i < obs.size(); ++i)
+      if (!obs_id[i].empty())
+        value(obs[i].type.kind == model::TypeKind::Bool, ts.observe(r.states[c], static_cast<std::uint32_t>(i)), obs_id[i]);
+    if (c > 0)
+      for (int i : shown) {
+        const auto ui = static_cast<std::size_t>(i);
+        value(ts.inputs()[ui].type.kind == model::TypeKind::Bool, rows[c - 1][ui], in_id[ui]);
+      }
+  }
+}
+
+int run_simulate(const SimulateOptions& o) {
+  auto project = load_model_or_throw(o.model, parse_format(o.format));
+  semantics::Iec61131Options opts;
+  if (o.priority == "standard") opts.priority = semantics::PriorityMode::Standard;
+  else if (o.priority == "none") opts.priority = semantics::PriorityMode::None;
+  else throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
+  if (o.time == "abstract") opts.time = semantics::TimeMode::Abstract;
+  else if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
+  else throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
+  opts.cycle_ms = parse_cycle(o.cycle);
+  if (o.action_order == "declaration") opts.action_order = semantics::ActionOrder::Declaration;
+  else if (o.action_order == "alphabetical") opts.action_order = semantics::ActionOrder::Alphabetical;
+  else throw InputError("bad --action-order '" + o.action_order + "' (expected declaration or alphabetical)");
+  opts.pous = o.pous;
+  for (const auto& a : o.assumptions) {
+    model::Diagnostics d;
+    model::SourceLocation where;
+    where.file = "--assume";
+    where.line = where.column = 1;
+    auto e = io::parse_st_expression(a, where, d);
+    for (const auto& x : d) std::cerr << x.str() << "\n";
+    if (!e) throw InputError("bad --assume '" + a + "'");
+    opts.assumptions.push_back(e);
+  }
+  if (project.dialect != model::Dialect::Iec61131)
+    throw InputError(o.model + ": 'sfcv simulate' runs IEC 61131-3 charts; this is a Grafcet model");
+  model::Diagnostics diags;
+  auto ts = semantics::make_iec61131_system(project, opts, diags);
+  for (const auto& d : diags) std::cerr << d.str() << "\n";
+  if (!ts) throw InputError(o.model + ": the chart cannot be simulated");
+
+  std::vector<int> shown;
+  auto rows = read_trace(o.inputs, *ts, shown);
+  if (o.max_cycles >= 0 && static_cast<std::size_t>(o.max_cycles) < rows.size())
+    rows.resize(static_cast<std::size_t>(o.max_cycles));
+  const auto start = semantics::first_initial_state(*ts);
+  const auto r = semantics::simulate(*ts, start, rows);
+
+  const auto& obs = ts->observables();
+  auto list = [&](std::size_t c, semantics::ObservableKind kind) {
+    std::string s;
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      if (obs[i].kind != kind) continue;
+      const auto v = ts->observe(r.states[c], static_cast<std::uint32_t>(i));
+      if (kind == semantics::ObservableKind::Variable) {
+        if (!obs[i].is_output) continue;
+        s += (s.empty() ? "" : " ") + obs[i].name + "=" + std::to_string(v);
+      } else if (v) {
+        s += (s.empty() ? "" : " ") + obs[i].name;
+      }
+    }
+    return s.empty() ? std::string("-") : s;
+  };
+  std::cout << "cycle | inputs | active steps | active actions | outputs\n";
+  for (std::size_t c = 0; c < r.states.size(); ++c) {
+    std::string ins;
+    if (c == 0) {
+      ins = "(initial)";
+    } else {
+      for (int i : shown)
+        ins += (ins.empty() ? "" : " ") + ts->inputs()[static_cast<std::size_t>(i)].name + "=" +
+               std::to_string(rows[c - 1][static_cast<std::size_t>(i)]);
+      if (ins.empty()) ins = "-";
+    }
+    std::cout << c << " | " << ins << " | " << list(c, semantics::ObservableKind::Step) << " | "
+              << list(c, semantics::ObservableKind::Action) << " | "
+              << list(c, semantics::ObservableKind::Variable) << "\n";
+  }
+  if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, shown, opts.cycle_ms);
+  if (!r.ok) {
+    std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error << "\n";
+    return kBadInput;
+  }
+  return kHolds;
+}
+
 }  // namespace
 
 void add_simulate_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<SimulateOptions>();
-  auto* sub = app.add_subcommand("simulate", "Run a chart cycle by cycle on given inputs");
-  sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
+  auto* sub = app.add_subcommand("simulate", "Run an IEC 61131-3 chart cycle by cycle on given inputs");
+  sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text)")->required();
+  sub->add_option("--inputs", opts->inputs,
+                  "CSV trace: a header row of input names, then one row of values per cycle "
+                  "(0/1, TRUE/FALSE, integers; ',' or ';' separated; '#' comments). Pseudo-inputs "
+                  "(timeout:<timer>, choice:<step>, elapse:<step>) may be given as columns; when "
+                  "absent they default to 0: no timeout, the first enabled alternative, no time "
+                  "elapsing. Every other input needs a column.")
       ->required();
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--vcd", opts->vcd, "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
+  sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
+  sub->add_option("--pou", opts->pous, "POU(s) to run in one cycle, in this order (default: the SFC program)");
+  sub->add_option("--priority", opts->priority, "Conflicting transitions: standard (default) or none");
+  sub->add_option("--time", opts->time, "Timers: abstract (default) or discrete");
+  sub->add_option("--cycle", opts->cycle, "Cycle time for --time discrete (default 10ms)");
+  sub->add_option("--action-order", opts->action_order, "declaration (default) or alphabetical");
+  sub->add_option("--assume", opts->assumptions, "Assumption on inputs and state (ST expression), repeatable");
+  sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");
+  sub->footer("Exit codes: 0 the trace ran to its end; 2 bad usage or input, or a cycle had no "
+              "successor (an assumption is violated, or a range error such as an integer overflow).");
   sub->callback([opts, &selected] {
-    selected = [opts] {
-      load_model_or_throw(opts->model, parse_format(opts->format));
-      return not_built_yet("'sfcv simulate'");
-    };
+    selected = [opts] { return run_simulate(*opts); };
   });
 }
 

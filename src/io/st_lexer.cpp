@@ -244,6 +244,10 @@ class Lexer {
         return false;
       }
       any = true;
+      if (total_ns > static_cast<Int128>(1) << 100) {
+        error(t.line, t.column, "TIME literal too large");
+        return false;
+      }
       if (peek() == '_') advance();
     }
     if (!any) {

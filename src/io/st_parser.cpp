@@ -1,6 +1,7 @@
 #include "io/st_parser.hpp"
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <optional>
 
@@ -186,7 +187,28 @@ ExprPtr Parser::mul_expr() {
   }
 }
 
+void Parser::enter(const Token& t) {
+  constexpr int kMaxDepth = 200;
+  if (++depth_ > kMaxDepth) {
+    --depth_;
+    fail(t, "nesting deeper than " + std::to_string(kMaxDepth) + " levels");
+  }
+}
+
+namespace {
+// Leaves a nesting level on every exit path of a recursive rule.
+struct DepthGuard {
+  explicit DepthGuard(std::function<void()> on_exit) : leave(std::move(on_exit)) {}
+  ~DepthGuard() { leave(); }
+  DepthGuard(const DepthGuard&) = delete;
+  DepthGuard& operator=(const DepthGuard&) = delete;
+  std::function<void()> leave;
+};
+}  // namespace
+
 ExprPtr Parser::unary_expr() {
+  enter(peek());
+  DepthGuard guard([this] { leave(); });
   if (at(TokenKind::Minus)) {
     const Token& op = next();
     return model::make_unary(ExprKind::Neg, unary_expr(), where(op));
@@ -277,6 +299,8 @@ void Parser::end_statement(std::string_view what) {
 
 model::StmtPtr Parser::statement() {
   const Token& t = peek();
+  enter(t);
+  DepthGuard guard([this] { leave(); });
   for (auto k : kUnsupportedStatements)
     if (at_word(k)) fail(t, "unsupported: " + upper(t.text) + " statement");
   if (at_word("IF")) return if_statement();

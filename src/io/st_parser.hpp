@@ -99,9 +99,14 @@ class Parser {
   void end_statement(std::string_view what);
   model::Type var_type();
 
+  /// Bounds recursion so that absurd nesting is an error, not a stack overflow.
+  void enter(const Token& t);
+  void leave() { --depth_; }
+
   std::vector<Token> tokens_;
   Locator locator_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 /// True for words ST reserves (AND, IF, END_IF, ...) which cannot name a variable.

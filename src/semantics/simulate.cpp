@@ -1,5 +1,7 @@
 #include "semantics/simulate.hpp"
 
+#include "semantics/iec_system_impl.hpp"
+
 namespace sfcv::semantics {
 
 namespace {
@@ -8,7 +10,7 @@ struct Pick : SuccessorSink {
   bool found = false;
   std::vector<StateWord> target;
   std::vector<std::uint32_t> fired;
-  std::string anomaly;
+  std::string anomaly_message;
   void successor(const Successor& s) override {
     if (found || (valuation && !s.condition.holds(*valuation))) return;
     found = true;
@@ -16,7 +18,7 @@ struct Pick : SuccessorSink {
     fired.assign(s.fired.begin(), s.fired.end());
   }
   void anomaly(const Anomaly& a) override {
-    if (anomaly.empty() && valuation && a.condition.holds(*valuation)) anomaly = a.message;
+    if (anomaly_message.empty() && valuation && a.condition.holds(*valuation)) anomaly_message = a.message;
   }
 };
 }  // namespace
@@ -31,6 +33,24 @@ SimulationResult simulate(const TransitionSystem& ts, StateView start,
                           const std::vector<std::vector<std::int64_t>>& inputs) {
   SimulationResult r;
   r.states.emplace_back(start.begin(), start.end());
+  // The IEC system follows a full valuation directly: no successor enumeration, so integer
+  // inputs of any range work.
+  if (const auto* iec = dynamic_cast<const iec::Iec61131System*>(&ts)) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      std::vector<StateWord> next;
+      std::vector<std::uint32_t> fired;
+      std::string error;
+      if (!iec->step_once(r.states.back(), inputs[i], next, &fired, &error)) {
+        r.ok = false;
+        r.failed_cycle = i + 1;
+        r.error = error;
+        return r;
+      }
+      r.states.push_back(std::move(next));
+      r.fired.push_back(std::move(fired));
+    }
+    return r;
+  }
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     Pick p;
     p.valuation = &inputs[i];
@@ -38,7 +58,7 @@ SimulationResult simulate(const TransitionSystem& ts, StateView start,
     if (!p.found) {
       r.ok = false;
       r.failed_cycle = i + 1;
-      r.error = !p.anomaly.empty() ? p.anomaly : "no successor: the inputs violate an assumption";
+      r.error = !p.anomaly_message.empty() ? p.anomaly_message : "no successor: the inputs violate an assumption";
       return r;
     }
     r.states.push_back(std::move(p.target));

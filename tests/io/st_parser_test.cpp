@@ -155,6 +155,19 @@ TEST(StExpression, ErrorsAreLocated) {
   EXPECT_EQ(expr_error(""), "1:1: expected an expression, found end of text");
 }
 
+TEST(StExpression, AbsurdNestingIsAnErrorNotACrash) {
+  const std::string deep = std::string(100000, '(') + "a" + std::string(100000, ')');
+  EXPECT_EQ(expr_error(deep), "1:201: nesting deeper than 200 levels");
+  std::string nots;
+  for (int i = 0; i < 50000; ++i) nots += "NOT ";
+  EXPECT_EQ(expr_error(nots + "a"), "1:801: nesting deeper than 200 levels");
+  std::string ifs;
+  for (int i = 0; i < 50000; ++i) ifs += "IF a THEN ";
+  EXPECT_EQ(stmt_error(ifs), "1:1994: nesting deeper than 200 levels");
+  // Moderate nesting is fine.
+  EXPECT_NE(expr(std::string(150, '(') + "a" + std::string(150, ')')), nullptr);
+}
+
 TEST(StExpression, LocationsAreOffsetByTheStart) {
   model::Diagnostics d;
   // Text starting at line 10, column 7 of a file: column shifts on its first line only.
