@@ -1,13 +1,651 @@
+// AGRAFE's XMI (.grafcet) files: the IEC 60848 meta-model of Project-AGRAFE/GRAFCET-meta-model
+// (packages grafcet and terms). Attributes left out of a file take the meta-model's defaults,
+// as EMF does: variableDeclarationType input, initial/activationLink false, BooleanConstant
+// false, IntegerConstant 0, storedActionType activation, forcingOrderType currentSituation.
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
+#include "model/names.hpp"
 
 namespace sfcv::io {
 
-// Placeholder until the importer lands: an honest error, never a wrong model.
-LoadResult load_agrafe_xmi(std::string_view, const std::string& file) {
+namespace {
+
+using model::ExprKind;
+using model::ExprPtr;
+using model::SourceLocation;
+
+struct Failure {
+  pugi::xml_node at;
+  std::string message;
+};
+
+std::string_view local_name(std::string_view qualified) {
+  const auto colon = qualified.find(':');
+  return colon == std::string_view::npos ? qualified : qualified.substr(colon + 1);
+}
+
+/// The xsi:type of a node without its package prefix ("grafcet:Step" -> "Step").
+std::string_view type_of(pugi::xml_node n) { return local_name(n.attribute("xsi:type").value()); }
+
+struct StepInfo {
+  int chart = -1;
+  std::string name;
+};
+
+class Reader {
+ public:
+  Reader(std::string_view text, std::string file, model::Diagnostics& diags)
+      : text_(text), file_(std::move(file)), diags_(diags) {
+    line_starts_.push_back(0);
+    for (std::size_t i = 0; i < text_.size(); ++i)
+      if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+
+  std::optional<model::Project> run() {
+    const auto parsed = doc_.load_buffer(text_.data(), text_.size(),
+                                         pugi::parse_default | pugi::parse_ws_pcdata_single);
+    if (!parsed) {
+      SourceLocation l = at_offset(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
+      diags_.push_back({model::Severity::Error, l, std::string("XML error: ") + parsed.description()});
+      return std::nullopt;
+    }
+    root_ = doc_.document_element();
+    if (local_name(root_.name()) != "Grafcet") {
+      error(root_, "not an AGRAFE grafcet: the root element is <" + std::string(root_.name()) +
+                       ">, expected <grafcet:Grafcet>");
+      return std::nullopt;
+    }
+    model::Project project;
+    project.dialect = model::Dialect::Grafcet;
+    project.source_format = "agrafe-xmi";
+    project.name = root_.attribute("name") ? root_.attribute("name").value()
+                                           : std::filesystem::path(file_).stem().string();
+    if (project.name.empty()) project.name = "grafcet";
+    project.where = where(root_);
+    pou_.name = project.name;
+    pou_.kind = model::PouKind::Program;
+    pou_.where = project.where;
+    try {
+      read_variables();
+      read_charts();
+    } catch (const Failure& f) {
+      error(f.at, f.message);
+    }
+    if (model::has_errors(diags_)) return std::nullopt;
+    project.pous.push_back(std::move(pou_));
+    return project;
+  }
+
+ private:
+  // ---- locations
+  SourceLocation at_offset(std::size_t offset) const {
+    SourceLocation l;
+    l.file = file_;
+    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+    const auto line = static_cast<std::size_t>(it - line_starts_.begin());
+    l.line = static_cast<int>(line);
+    l.column = static_cast<int>(offset - line_starts_[line - 1] + 1);
+    return l;
+  }
+  /// The XMI path of a node, as the file's own references write it: //@partialGrafcets.0/@steps.2
+  std::string xmi_path(pugi::xml_node n) const {
+    std::string path;
+    for (; n && n != root_ && n.type() == pugi::node_element; n = n.parent()) {
+      int index = 0, count = 0;
+      for (auto s = n.parent().child(n.name()); s; s = s.next_sibling(n.name())) {
+        if (s == n) index = count;
+        ++count;
+      }
+      // EMF numbers the elements of many-valued features even when there is one.
+      static const std::set<std::string_view> kMany{
+          "partialGrafcets", "steps",       "transitions", "synchronizations",     "macrosteps",
+          "arcs",            "actionTypes", "actionLinks", "variableDeclarations", "subterm"};
+      std::string seg = "@" + std::string(n.name());
+      if (count > 1 || kMany.count(n.name())) seg += "." + std::to_string(index);
+      path = "/" + seg + path;
+    }
+    return "/" + path;
+  }
+  SourceLocation where(pugi::xml_node n) const {
+    // pugixml gives the offset of the element's name; the element starts at its '<'.
+    auto offset = static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0));
+    if (offset > 0 && offset <= text_.size() && text_[offset - 1] == '<') --offset;
+    SourceLocation l = at_offset(offset);
+    l.element_path = n == root_ ? "/" : xmi_path(n);
+    return l;
+  }
+  void error(pugi::xml_node n, std::string message) {
+    diags_.push_back({model::Severity::Error, where(n), std::move(message)});
+  }
+  void warn(pugi::xml_node n, model::Severity s, std::string message) {
+    diags_.push_back({s, where(n), std::move(message)});
+  }
+
+  /// Resolves one XMI reference ("//@a.0/@b.3/@c") from the root; fails when it leads nowhere.
+  pugi::xml_node resolve(pugi::xml_node from, std::string_view ref) const {
+    if (ref.substr(0, 2) != "//") throw Failure{from, "unsupported reference '" + std::string(ref) + "'"};
+    pugi::xml_node n = root_;
+    std::size_t i = 2;
+    while (i < ref.size()) {
+      std::size_t j = ref.find('/', i);
+      if (j == std::string_view::npos) j = ref.size();
+      std::string_view seg = ref.substr(i, j - i);
+      if (seg.empty() || seg[0] != '@') throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
+      seg.remove_prefix(1);
+      std::size_t index = 0;
+      const auto dot = seg.find('.');
+      std::string child(seg.substr(0, dot));
+      if (dot != std::string_view::npos) {
+        const std::string digits(seg.substr(dot + 1));
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
+          throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
+        index = std::stoul(digits);
+      }
+      pugi::xml_node c = n.child(child.c_str());
+      for (std::size_t k = 0; c && k < index; ++k) c = c.next_sibling(child.c_str());
+      if (!c) throw Failure{from, "reference '" + std::string(ref) + "' leads to no element"};
+      n = c;
+      i = j + 1;
+    }
+    return n;
+  }
+  std::vector<pugi::xml_node> resolve_list(pugi::xml_node from, const char* attr) const {
+    std::vector<pugi::xml_node> out;
+    const std::string v = from.attribute(attr).value();
+    std::size_t i = 0;
+    while (i < v.size()) {
+      const std::size_t j = std::min(v.find(' ', i), v.size());
+      if (j > i) out.push_back(resolve(from, std::string_view(v).substr(i, j - i)));
+      i = j + 1;
+    }
+    return out;
+  }
+
+  // ---- variables
+  void read_variables() {
+    static const std::regex kDelayName(R"(^\s*(\d+)\s*(ms|s|min|h)?\s*/\s*X(\w+)\s*(/\s*(\d+)\s*(ms|s|min|h)?\s*)?$)");
+    auto scale = [](const std::string& unit) -> std::int64_t {
+      return unit == "ms" ? 1 : unit == "min" ? 60000 : unit == "h" ? 3600000 : 1000;
+    };
+    for (auto decl : root_.child("variableDeclarationContainer").children("variableDeclarations")) {
+      const std::string name = decl.attribute("name").value();
+      const std::string kind = decl.attribute("variableDeclarationType")
+                                   ? decl.attribute("variableDeclarationType").value()
+                                   : "input";
+      const std::string_view sort = type_of(decl.child("sort"));
+      if (name.empty()) throw Failure{decl, "variable declaration without a name"};
+      if (kind == "step") {
+        if (!decl.attribute("step")) throw Failure{decl, "step variable '" + name + "' names no step"};
+        step_vars_[decl] = resolve(decl, decl.attribute("step").value());
+        continue;
+      }
+      std::smatch m;
+      if (kind == "internal" && sort == "Bool" && std::regex_match(name, m, kDelayName)) {
+        // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable of
+        // that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
+        const std::int64_t t1 = std::stoll(m[1].str()) * scale(m[2].str());
+        const std::int64_t t2 = m[5].matched ? std::stoll(m[5].str()) * scale(m[6].str()) : 0;
+        delay_vars_[decl] = {t1, "X" + m[3].str(), t2};
+        warn(decl, model::Severity::Warning,
+             "internal variable '" + name + "' is read as the delay " + g7::duration(t1) + "/X" +
+                 m[3].str() + "/" + g7::duration(t2) + " (AGRAFE has no delay term)");
+        continue;
+      }
+      model::Variable v;
+      v.name = name;
+      v.where = where(decl);
+      if (kind == "input") v.direction = model::VarDirection::Input;
+      else if (kind == "output") v.direction = model::VarDirection::Output;
+      else if (kind == "internal") v.direction = model::VarDirection::Local;
+      else throw Failure{decl, "unknown variableDeclarationType '" + kind + "'"};
+      if (sort == "Bool") {
+        v.type = model::Type::boolean();
+      } else if (sort == "Integer") {
+        v.type = model::Type::integer(g7::range_type_name(g7::kDefaultIntLo, g7::kDefaultIntHi),
+                                      g7::kDefaultIntLo, g7::kDefaultIntHi);
+        warn(decl, model::Severity::Note,
+             "integer variable '" + name + "' has no bounds in AGRAFE: range " +
+                 std::to_string(g7::kDefaultIntLo) + ".." + std::to_string(g7::kDefaultIntHi) +
+                 " assumed");
+      } else {
+        throw Failure{decl, "variable '" + name + "' has unsupported sort '" + std::string(sort) + "'"};
+      }
+      if (pou_.find_variable(name)) throw Failure{decl, "variable '" + name + "' is declared twice"};
+      var_names_[decl] = name;
+      if (!decl.attribute("variableDeclarationType")) implicit_inputs_.insert(name);
+      pou_.variables.push_back(std::move(v));
+    }
+  }
+
+  // ---- charts
+  struct Delay {
+    std::int64_t t1;
+    std::string step_var;
+    std::int64_t t2;
+  };
+
+  void read_charts() {
+    // Pass 1: charts and their steps, so that references between charts resolve.
+    std::vector<pugi::xml_node> charts;
+    int index = 0;
+    for (auto pg : root_.children("partialGrafcets")) {
+      const std::string_view t = type_of(pg);
+      if (t != "PartialGrafcet" && t != "MacrostepExpansion" && !t.empty())
+        throw Failure{pg, "unsupported partial grafcet type '" + std::string(t) + "'"};
+      model::Chart c;
+      c.name = pg.attribute("name") ? pg.attribute("name").value() : "";
+      if (c.name.empty()) c.name = "G" + std::to_string(index);
+      if (pou_.find_chart(c.name)) {
+        const std::string renamed = c.name + "_" + std::to_string(index);
+        warn(pg, model::Severity::Warning,
+             "partial grafcet name '" + c.name + "' is used twice: this one is named '" + renamed + "'");
+        c.name = renamed;
+      }
+      c.where = where(pg);
+      chart_of_[pg] = static_cast<int>(pou_.charts.size());
+      pou_.charts.push_back(std::move(c));
+      charts.push_back(pg);
+      ++index;
+    }
+    for (auto pg : charts) read_steps(pg);
+    for (auto pg : charts) read_enclosures(pg);
+    for (auto pg : charts) read_transitions(pg);
+    for (auto pg : charts) read_actions(pg);
+    for (const auto& c : pou_.charts)
+      for (const auto& s : c.steps)
+        if (s.kind == model::StepKind::Enclosing && s.enclosed.empty())
+          diags_.push_back({model::Severity::Warning, s.where,
+                            "enclosing step '" + s.name + "' of '" + c.name +
+                                "' encloses no partial grafcet"});
+  }
+
+  model::Chart& chart(pugi::xml_node pg) { return pou_.charts[static_cast<std::size_t>(chart_of_.at(pg))]; }
+
+  void add_step(pugi::xml_node pg, pugi::xml_node n, model::Step s) {
+    if (!n.attribute("id")) throw Failure{n, "step without an id"};
+    s.name = n.attribute("id").value();
+    s.initial = n.attribute("initial").as_bool(false);
+    s.activation_link = n.attribute("activationLink").as_bool(false);
+    s.where = where(n);
+    model::Chart& c = chart(pg);
+    if (c.find_step(s.name))
+      throw Failure{n, "step id '" + s.name + "' is used twice in partial grafcet '" + c.name + "'"};
+    steps_[n] = {chart_of_.at(pg), s.name};
+    c.steps.push_back(std::move(s));
+  }
+
+  void read_steps(pugi::xml_node pg) {
+    for (auto n : pg.children("steps")) {
+      const std::string_view t = type_of(n);
+      model::Step s;
+      if (t == "EnclosingStep") s.kind = model::StepKind::Enclosing;
+      else if (t != "Step" && !t.empty())
+        throw Failure{n, "unsupported step type '" + std::string(t) + "'"};
+      add_step(pg, n, std::move(s));
+    }
+    if (auto e = pg.child("entryStep")) {
+      add_step(pg, e, {});
+      chart(pg).macro_entry = chart(pg).steps.back().name;
+    }
+    if (auto e = pg.child("exitStep")) {
+      add_step(pg, e, {});
+      chart(pg).macro_exit = chart(pg).steps.back().name;
+    }
+    for (auto n : pg.children("macrosteps")) {
+      model::Step s;
+      s.kind = model::StepKind::MacroStep;
+      if (!n.attribute("expansion")) throw Failure{n, "macro-step without an expansion"};
+      const auto e = resolve(n, n.attribute("expansion").value());
+      if (!chart_of_.count(e) || type_of(e) != "MacrostepExpansion")
+        throw Failure{n, "the expansion of a macro-step must be a MacrostepExpansion"};
+      s.expansion = chart(e).name;
+      add_step(pg, n, std::move(s));
+    }
+  }
+
+  void read_enclosures(pugi::xml_node pg) {
+    auto enclose = [&](pugi::xml_node step_node, pugi::xml_node enclosed, pugi::xml_node at) {
+      const auto it = steps_.find(step_node);
+      if (it == steps_.end() || type_of(step_node) != "EnclosingStep")
+        throw Failure{at, "the enclosing step reference does not lead to an EnclosingStep"};
+      if (!chart_of_.count(enclosed))
+        throw Failure{at, "an enclosing step must enclose partial grafcets"};
+      auto& c = pou_.charts[static_cast<std::size_t>(it->second.chart)];
+      auto& s = c.steps[static_cast<std::size_t>(c.step_index(it->second.name))];
+      const std::string& name = chart(enclosed).name;
+      if (std::find(s.enclosed.begin(), s.enclosed.end(), name) == s.enclosed.end())
+        s.enclosed.push_back(name);
+    };
+    for (auto n : pg.children("steps"))
+      if (type_of(n) == "EnclosingStep")
+        for (auto enclosed : resolve_list(n, "partialGrafcets")) enclose(n, enclosed, n);
+    if (pg.attribute("enclosingStep")) enclose(resolve(pg, pg.attribute("enclosingStep").value()), pg, pg);
+  }
+
+  void read_transitions(pugi::xml_node pg) {
+    model::Chart& c = chart(pg);
+    std::set<pugi::xml_node> syncs;
+    for (auto s : pg.children("synchronizations")) syncs.insert(s);
+    std::map<pugi::xml_node, int> transitions;
+    for (auto t : pg.children("transitions")) {
+      model::Transition tr;
+      if (!t.attribute("id")) throw Failure{t, "transition without an id"};
+      tr.name = t.attribute("id").value();
+      tr.where = where(t);
+      tr.order = static_cast<int>(c.transitions.size());
+      ExprPtr guard = t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);
+      tr.guard = timed(t, guard, {});
+      for (const auto& other : c.transitions)
+        if (other.name == tr.name)
+          warn(t, model::Severity::Warning,
+               "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name + "'");
+      transitions[t] = static_cast<int>(c.transitions.size());
+      c.transitions.push_back(std::move(tr));
+    }
+    // Arcs: step -> transition, transition -> step, and through AND bars (synchronizations):
+    // steps -> bar -> transition (convergence), transition -> bar -> steps (divergence).
+    enum class Kind { Step, Transition, Sync };
+    auto kind_of = [&](pugi::xml_node n, pugi::xml_node arc) {
+      if (n.parent() != pg)
+        throw Failure{arc, "the arc leaves its partial grafcet '" + c.name + "'"};
+      if (steps_.count(n)) return Kind::Step;
+      if (transitions.count(n)) return Kind::Transition;
+      if (syncs.count(n)) return Kind::Sync;
+      throw Failure{arc, "an arc ends at an element that is no step, transition or synchronization"};
+    };
+    std::vector<std::vector<int>> up(c.transitions.size()), down(c.transitions.size());
+    std::map<pugi::xml_node, std::vector<int>> sync_in_steps, sync_out_steps;
+    std::map<pugi::xml_node, std::vector<int>> sync_in_trans, sync_out_trans;
+    for (auto arc : pg.children("arcs")) {
+      if (!arc.attribute("source") || !arc.attribute("target"))
+        throw Failure{arc, "arc without a source or a target"};
+      const auto s = resolve(arc, arc.attribute("source").value());
+      const auto t = resolve(arc, arc.attribute("target").value());
+      const Kind ks = kind_of(s, arc), kt = kind_of(t, arc);
+      auto step_index = [&](pugi::xml_node n) { return c.step_index(steps_.at(n).name); };
+      if (ks == Kind::Step && kt == Kind::Transition) up[transitions.at(t)].push_back(step_index(s));
+      else if (ks == Kind::Transition && kt == Kind::Step) down[transitions.at(s)].push_back(step_index(t));
+      else if (ks == Kind::Step && kt == Kind::Sync) sync_in_steps[t].push_back(step_index(s));
+      else if (ks == Kind::Sync && kt == Kind::Transition) sync_out_trans[s].push_back(transitions.at(t));
+      else if (ks == Kind::Transition && kt == Kind::Sync) sync_in_trans[t].push_back(transitions.at(s));
+      else if (ks == Kind::Sync && kt == Kind::Step) sync_out_steps[s].push_back(step_index(t));
+      else throw Failure{arc, "an arc must join a step and a transition, possibly through a synchronization"};
+    }
+    for (const auto& [sync, trs] : sync_out_trans)
+      for (int tr : trs)
+        for (int st : sync_in_steps[sync]) up[static_cast<std::size_t>(tr)].push_back(st);
+    for (const auto& [sync, trs] : sync_in_trans)
+      for (int tr : trs)
+        for (int st : sync_out_steps[sync]) down[static_cast<std::size_t>(tr)].push_back(st);
+    for (auto s : syncs) {
+      const bool steps_in = !sync_in_steps[s].empty(), steps_out = !sync_out_steps[s].empty();
+      const bool trans_in = !sync_in_trans[s].empty(), trans_out = !sync_out_trans[s].empty();
+      if ((steps_in && steps_out) || (trans_in && trans_out) || (steps_in && trans_in))
+        throw Failure{s, "a synchronization joins either steps to transitions or transitions to steps"};
+    }
+    for (std::size_t i = 0; i < c.transitions.size(); ++i) {
+      auto names = [&](std::vector<int> idx) {
+        std::sort(idx.begin(), idx.end());
+        idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
+        std::vector<std::string> out;
+        for (int k : idx) out.push_back(c.steps[static_cast<std::size_t>(k)].name);
+        return out;
+      };
+      auto& tr = c.transitions[i];
+      tr.sources = names(up[i]);
+      tr.targets = names(down[i]);
+      if (tr.sources.empty())
+        diags_.push_back({model::Severity::Note, tr.where,
+                          "transition " + tr.name + " of '" + c.name + "' is a source transition (no upstream step)"});
+      if (tr.targets.empty())
+        diags_.push_back({model::Severity::Note, tr.where,
+                          "transition " + tr.name + " of '" + c.name + "' is a sink transition (no downstream step)"});
+    }
+  }
+
+  // ---- actions
+  void read_actions(pugi::xml_node pg) {
+    model::Chart& c = chart(pg);
+    for (auto link : pg.children("actionLinks")) {
+      if (!link.attribute("step") || !link.attribute("actionType"))
+        throw Failure{link, "action link without a step or an action"};
+      const auto step_node = resolve(link, link.attribute("step").value());
+      const auto act = resolve(link, link.attribute("actionType").value());
+      const auto it = steps_.find(step_node);
+      if (it == steps_.end()) throw Failure{link, "the action link's step is not a step"};
+      if (it->second.chart != chart_of_.at(pg))
+        throw Failure{link, "the action link's step belongs to another partial grafcet"};
+      const std::string& step = it->second.name;
+      const std::string_view t = type_of(act);
+      if (t == "ContinuousAction") {
+        const std::string var = assigned_variable(act, false);
+        model::ActionAssociation a;
+        a.chart = c.name;
+        a.step = step;
+        a.action = var;
+        a.qualifier = model::Qualifier::N;
+        a.where = where(act);
+        ExprPtr cond = act.child("term") ? condition(act.child("term")) : nullptr;
+        a.condition = timed(act, cond, "X" + step);
+        if (!pou_.find_action(var)) {
+          model::Action action;
+          action.name = var;
+          action.kind = model::ActionBodyKind::Variable;
+          action.variable = var;
+          action.where = a.where;
+          pou_.actions.push_back(std::move(action));
+        }
+        pou_.associations.push_back(std::move(a));
+      } else if (t == "StoredAction") {
+        model::StoredAction sa;
+        sa.chart = c.name;
+        sa.step = step;
+        sa.where = where(act);
+        sa.variable = assigned_variable(act, true);
+        const std::string when = act.attribute("storedActionType")
+                                     ? act.attribute("storedActionType").value()
+                                     : "activation";
+        if (when == "activation") sa.when = model::StoredWhen::Activation;
+        else if (when == "deactivation") sa.when = model::StoredWhen::Deactivation;
+        else if (when == "event") sa.when = model::StoredWhen::Event;
+        else throw Failure{act, "unknown storedActionType '" + when + "'"};
+        if (sa.when == model::StoredWhen::Event) {
+          if (!act.child("term")) throw Failure{act, "a stored action on event needs its event term"};
+          sa.event = condition(act.child("term"));
+        }
+        if (!act.child("value")) throw Failure{act, "stored action without a value"};
+        sa.value = term(act.child("value"));
+        if (pou_.find_variable(sa.variable)->type.kind == model::TypeKind::Bool)
+          sa.value = as_condition(sa.value, act.child("value"));
+        pou_.stored_actions.push_back(std::move(sa));
+      } else if (t == "ForcingOrder") {
+        model::ForcingOrder fo;
+        fo.chart = c.name;
+        fo.step = step;
+        fo.where = where(act);
+        if (!act.attribute("partialGrafcet")) throw Failure{act, "forcing order without a partial grafcet"};
+        const auto target = resolve(act, act.attribute("partialGrafcet").value());
+        if (!chart_of_.count(target)) throw Failure{act, "the forced element is not a partial grafcet"};
+        fo.target = chart(target).name;
+        const std::string kind = act.attribute("forcingOrderType")
+                                     ? act.attribute("forcingOrderType").value()
+                                     : "currentSituation";
+        const auto forced = resolve_list(act, "forcedSteps");
+        if (kind == "currentSituation") fo.kind = model::ForcingKind::Current;
+        else if (kind == "emptySituation") fo.kind = model::ForcingKind::Empty;
+        else if (kind == "initialSituation") fo.kind = model::ForcingKind::Initial;
+        else if (kind == "explicitSituation") fo.kind = model::ForcingKind::Situation;
+        else throw Failure{act, "unknown forcingOrderType '" + kind + "'"};
+        if (fo.kind == model::ForcingKind::Situation) {
+          for (auto s : forced) {
+            const auto st = steps_.find(s);
+            if (st == steps_.end() || st->second.chart != chart_of_.at(target))
+              throw Failure{act, "a forced step is not a step of '" + fo.target + "'"};
+            fo.situation.push_back(st->second.name);
+          }
+        } else if (!forced.empty()) {
+          warn(act, model::Severity::Warning,
+               "forcing order on '" + fo.target + "' lists forced steps but its forcingOrderType is " +
+                   kind + (act.attribute("forcingOrderType") ? "" : " (the meta-model's default)") +
+                   ": the steps are ignored, as AGRAFE does; read as " + fo.target +
+                   (fo.kind == model::ForcingKind::Current ? "{*}" : fo.kind == model::ForcingKind::Empty ? "{}" : "{INIT}"));
+        }
+        pou_.forcing_orders.push_back(std::move(fo));
+      } else {
+        throw Failure{act, "unsupported action type '" + std::string(t) + "'"};
+      }
+    }
+  }
+
+  std::string assigned_variable(pugi::xml_node act, bool stored) {
+    const auto v = act.child("variable");
+    if (!v || !v.attribute("variableDeclaration")) throw Failure{act, "action without a variable"};
+    const auto decl = resolve(v, v.attribute("variableDeclaration").value());
+    const auto it = var_names_.find(decl);
+    if (it == var_names_.end()) throw Failure{v, "an action assigns a step variable or a delay"};
+    model::Variable* var = nullptr;
+    for (auto& x : pou_.variables)
+      if (x.name == it->second) var = &x;
+    if (var->direction == model::VarDirection::Input && implicit_inputs_.count(var->name)) {
+      // The declaration left its type out (input by default), yet actions assign it: the
+      // designer meant an output (continuous action) or an internal variable (stored action).
+      var->direction = stored ? model::VarDirection::Local : model::VarDirection::Output;
+      implicit_inputs_.erase(var->name);
+      warn(decl, model::Severity::Warning,
+           "variable '" + var->name + "' has no variableDeclarationType (input by default) but an "
+           "action assigns it: read as " + (stored ? "internal" : "output"));
+    }
+    if (var->direction == model::VarDirection::Input)
+      throw Failure{v, "an action assigns the input '" + var->name + "'"};
+    if (!stored && var->type.kind != model::TypeKind::Bool)
+      throw Failure{v, "the continuous action '" + var->name + "' needs a Boolean variable"};
+    return var->name;
+  }
+
+  /// The TimeCondition of a transition or continuous action: time-delayed and time-dependent
+  /// conditions become the delay t1/e/t2 of `e` (the term, else the step variable).
+  ExprPtr timed(pugi::xml_node n, ExprPtr e, const std::string& step_var) {
+    const std::string type = n.attribute("timeConditionType").value();
+    if (type.empty() || type == "none") return e;
+    if (type != "timeDelayed" && type != "timeDependent")
+      throw Failure{n, "unsupported time condition '" + type + "' (time-limited actions)"};
+    const std::string unit = n.attribute("unit") ? n.attribute("unit").value() : "s";
+    const std::int64_t scale = unit == "ms" || unit == "millisecond" ? 1 : 1000;
+    const std::int64_t t1 = n.attribute("delayTime").as_llong(0) * scale;
+    const std::int64_t t2 = n.attribute("resetTime").as_llong(0) * scale;
+    if (!e && step_var.empty()) throw Failure{n, "a time condition needs a term"};
+    return model::make_delay(t1, e ? e : model::make_name(step_var, where(n)), t2, where(n));
+  }
+
+  // ---- terms
+  ExprPtr condition(pugi::xml_node n) { return as_condition(term(n), n); }
+
+  /// Integer constants 0 and 1 where a Boolean is expected.
+  ExprPtr as_condition(const ExprPtr& e, pugi::xml_node n) {
+    if (e->kind != ExprKind::IntConst) return e;
+    if (e->value != 0 && e->value != 1) throw Failure{n, "an integer is used as a condition"};
+    return model::make_bool(e->value == 1, e->where);
+  }
+
+  ExprPtr term(pugi::xml_node n) {
+    const std::string_view t = type_of(n);
+    const SourceLocation at = where(n);
+    std::vector<ExprPtr> args;
+    for (auto s : n.children("subterm")) args.push_back(term(s));
+    auto arity = [&](std::size_t k) {
+      if (args.size() != k)
+        throw Failure{n, std::string(t) + " takes " + std::to_string(k) + " subterm(s), found " +
+                             std::to_string(args.size())};
+    };
+    if (t == "Variable") return variable(n);
+    if (t == "BooleanConstant") return model::make_bool(n.attribute("value").as_bool(false), at);
+    if (t == "IntegerConstant") return model::make_int(n.attribute("value").as_llong(0), at);
+    if (t == "And" || t == "Or") {
+      if (args.size() < 2) throw Failure{n, std::string(t) + " takes at least 2 subterms"};
+      for (std::size_t i = 0; i < args.size(); ++i)
+        args[i] = as_condition(args[i], n);
+      return model::make_nary(t == "And" ? ExprKind::And : ExprKind::Or, std::move(args), at);
+    }
+    if (t == "Not" || t == "RisingEdge" || t == "FallingEdge") {
+      arity(1);
+      const ExprKind k = t == "Not" ? ExprKind::Not : t == "RisingEdge" ? ExprKind::Rising : ExprKind::Falling;
+      return model::make_unary(k, as_condition(args[0], n), at);
+    }
+    static const std::pair<std::string_view, ExprKind> kBinary[] = {
+        {"Equality", ExprKind::Eq}, {"LessThan", ExprKind::Lt}, {"GreaterThan", ExprKind::Gt},
+        {"Addition", ExprKind::Add}, {"Substraction", ExprKind::Sub}};
+    for (const auto& [name, kind] : kBinary) {
+      if (t == name) {
+        arity(2);
+        return model::make_binary(kind, args[0], args[1], at);
+      }
+    }
+    throw Failure{n, "unsupported term type '" + std::string(t) + "'"};
+  }
+
+  ExprPtr variable(pugi::xml_node n) {
+    if (!n.attribute("variableDeclaration")) throw Failure{n, "variable term without a declaration"};
+    const auto decl = resolve(n, n.attribute("variableDeclaration").value());
+    const SourceLocation at = where(n);
+    if (auto it = var_names_.find(decl); it != var_names_.end()) return model::make_name(it->second, at);
+    if (auto it = delay_vars_.find(decl); it != delay_vars_.end()) {
+      check_step_variable(n, it->second.step_var.substr(1));
+      return model::make_delay(it->second.t1, model::make_name(it->second.step_var, at), it->second.t2, at);
+    }
+    if (auto it = step_vars_.find(decl); it != step_vars_.end()) {
+      const auto st = steps_.find(it->second);
+      if (st == steps_.end()) throw Failure{decl, "step variable refers to no step"};
+      check_step_variable(n, st->second.name);
+      return model::make_name("X" + st->second.name, at);
+    }
+    throw Failure{n, "the variable term refers to no variable declaration"};
+  }
+
+  /// Step variables are written X<step name> in the IR; the name must then be unambiguous.
+  void check_step_variable(pugi::xml_node n, const std::string& step) {
+    int found = 0;
+    for (const auto& c : pou_.charts)
+      if (c.find_step(step)) ++found;
+    if (found == 0) throw Failure{n, "step variable X" + step + " refers to no step"};
+    if (found > 1)
+      throw Failure{n, "step variable X" + step + " is ambiguous: several partial grafcets have a step " + step};
+    if (pou_.find_variable("X" + step))
+      throw Failure{n, "step variable X" + step + " clashes with a declared variable of that name"};
+  }
+
+  std::string_view text_;
+  std::string file_;
+  model::Diagnostics& diags_;
+  std::vector<std::size_t> line_starts_;
+  pugi::xml_document doc_;
+  pugi::xml_node root_;
+  model::Pou pou_;
+  std::map<pugi::xml_node, std::string> var_names_;
+  std::set<std::string> implicit_inputs_;  ///< declared without variableDeclarationType
+  std::map<pugi::xml_node, pugi::xml_node> step_vars_;
+  std::map<pugi::xml_node, Delay> delay_vars_;
+  std::map<pugi::xml_node, int> chart_of_;
+  std::map<pugi::xml_node, StepInfo> steps_;
+};
+
+}  // namespace
+
+LoadResult load_agrafe_xmi(std::string_view text, const std::string& file) {
   LoadResult r;
-  model::SourceLocation where;
-  where.file = file;
-  r.diagnostics.push_back({model::Severity::Error, where, "the AGRAFE XMI importer is not built yet"});
+  r.project = Reader(text, file, r.diagnostics).run();
   return r;
 }
 

@@ -47,13 +47,18 @@ struct Step {
   StepKind kind = StepKind::Normal;
   std::string expansion;              ///< MacroStep: chart name of the expansion
   std::vector<std::string> enclosed;  ///< Enclosing: chart names enclosed
+  /// Grafcet: a step of an enclosed partial grafcet that is activated when its enclosing step
+  /// is activated (the step marked `*` in IEC 60848; AGRAFE's `activationLink`).
+  bool activation_link = false;
   SourceLocation where;
 };
 
 struct Transition {
   std::string name;                  ///< may be empty; Grafcet transitions are numbered
-  std::vector<std::string> sources;  ///< step names in the same chart, >= 1
-  std::vector<std::string> targets;  ///< step names in the same chart, >= 1
+  /// Step names in the same chart, >= 1 for IEC 61131-3. A Grafcet source transition (IEC 60848)
+  /// has no upstream step and a sink transition no downstream step: these may be empty.
+  std::vector<std::string> sources;
+  std::vector<std::string> targets;
   ExprPtr guard;                     ///< never null (TRUE when absent)
   std::optional<int> priority;       ///< explicit (PRIORITY := n); smaller number = higher priority
   int order = 0;                     ///< document order ("left to right") within the chart
@@ -136,6 +141,10 @@ struct ForcingOrder {
 struct Chart {
   std::string name;
   std::string parent_action;  ///< empty for a top-level body / partial grafcet
+  /// Grafcet macro-step expansion: its entry step (E) and exit step (S); both empty for any
+  /// other chart. The macro-step that owns the expansion names this chart in Step::expansion.
+  std::string macro_entry;
+  std::string macro_exit;
   std::vector<Step> steps;
   std::vector<Transition> transitions;
   SourceLocation where;

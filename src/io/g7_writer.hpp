@@ -1,0 +1,22 @@
+#pragma once
+// Printer for the native Grafcet text format (.g7): load_g7(write_g7(p)) gives a model
+// structurally equal to p (source locations aside).
+
+#include <stdexcept>
+#include <string>
+
+#include "model/chart.hpp"
+
+namespace sfcv::io {
+
+/// Thrown by write_g7 when the model holds what .g7 cannot express (several POUs, ST action
+/// bodies, qualifiers other than N, priorities, TIME or FB variables, ...); the message names
+/// the construct and its place.
+class G7WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::string write_g7(const model::Project& project);
+
+}  // namespace sfcv::io
