@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,8 @@ namespace {
 struct QueryOptions {
   std::string model;
   std::string format = "auto";
-  std::string query;
+  std::vector<std::string> queries;
+  std::uint64_t max_elements = 0;
   std::vector<std::string> uses;
   std::vector<std::string> libraries;
   bool no_default_library = false;
@@ -150,6 +152,7 @@ std::string sort_key(logic::Sort s) {
 struct Printer {
   const engine::ReachableSituationGraph& g;
   const engine::QueryEvaluator& ev;
+  std::uint64_t max_elements = 0;
 
   std::string state(std::uint64_t s) const {
     return describe_state(g.system(), g.states().at(static_cast<std::uint32_t>(s)));
@@ -161,8 +164,19 @@ struct Printer {
   }
   void text(logic::Sort sort, const engine::DynamicBitset& set, std::ostream& out) const {
     const auto n = set.count();
-    out << "  " << n << " " << sort_noun(sort, n) << (n ? ":" : "") << "\n";
+    out << "  " << n << " " << sort_noun(sort, n);
+    if (sort == logic::Sort::States && n) {
+      // RSG states also hold the input values; say how many situations they are.
+      std::set<std::string> situations;
+      set.for_each([&](std::uint64_t i) {
+        situations.insert(g.system().describe(g.states().at(static_cast<std::uint32_t>(i))));
+      });
+      if (situations.size() != n) out << " (" << situations.size() << " distinct step sets)";
+    }
+    out << (n ? ":" : "") << "\n";
+    std::uint64_t shown = 0;
     set.for_each([&](std::uint64_t i) {
+      if (max_elements && shown++ >= max_elements) return;
       switch (sort) {
         case logic::Sort::States: out << "    #" << i << " " << state(i) << "\n"; break;
         case logic::Sort::Evolutions: out << "    " << edge(i) << "\n"; break;
@@ -170,6 +184,8 @@ struct Printer {
         default: break;
       }
     });
+    if (max_elements && n > max_elements)
+      out << "    ... and " << n - max_elements << " more (--max-elements)\n";
   }
   nlohmann::json json(logic::Sort sort, const engine::DynamicBitset& set) const {
     auto arr = nlohmann::json::array();
@@ -236,7 +252,7 @@ int run_query(const QueryOptions& o) {
     std::string text, source;
   };
   std::vector<Item> items;
-  if (!o.query.empty()) items.push_back({o.query, "query"});
+  for (const auto& q : o.queries) items.push_back({q, "query"});
   for (const auto& u : o.uses) items.push_back({u, "--use"});
   if (items.empty()) {
     if (o.list) return kHolds;
@@ -277,7 +293,7 @@ int run_query(const QueryOptions& o) {
     }
   }();
   engine::QueryEvaluator ev(graph);
-  const Printer pr{graph, ev};
+  const Printer pr{graph, ev, o.max_elements};
 
   const bool complete = graph.complete();
   const bool exact = complete && graph.anomalies().empty();
@@ -375,7 +391,9 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   auto* sub = app.add_subcommand(
       "query", "Evaluate set queries over the reachable situations graph (docs/queries.md)");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)");
-  sub->add_option("query", opts->query, "A query, e.g. 'Y - Pred(Y0, T)'");
+  sub->add_option("query", opts->queries, "Queries, e.g. 'Y - Pred(Y0, T)' (each is evaluated)");
+  sub->add_option("--max-elements", opts->max_elements,
+                  "Print at most N elements of each set (0, the default: all)");
   sub->add_option("--use", opts->uses,
                   "A library property, e.g. 'mutex(V1, V2)' (repeatable; each is evaluated)");
   sub->add_option("--library", opts->libraries,
