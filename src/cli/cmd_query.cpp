@@ -285,6 +285,7 @@ int run_query(const QueryOptions& o) {
   eo.max_states = o.max_states;
   eo.timeout_seconds = o.timeout;
   eo.keep_conditions = true;
+  eo.keep_fired = true;  // Tclear
   engine::ReachableSituationGraph graph = [&] {
     try {
       return engine::build_reachable_situation_graph(*ts, eo);

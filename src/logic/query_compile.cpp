@@ -58,7 +58,7 @@ Builtin builtin(std::string_view name) {
 }
 
 bool is_constant(std::string_view n) {
-  return n == "Y" || n == "T" || n == "Y0" || n == "Steps";
+  return n == "Y" || n == "T" || n == "Y0" || n == "Steps" || n == "Tclear";
 }
 
 bool is_set(Sort s) {
@@ -483,6 +483,7 @@ class Compiler {
     if (n.name == "Y") return leaf(Term::Op::AllStates, Sort::States, n);
     if (n.name == "T") return leaf(Term::Op::AllEvolutions, Sort::Evolutions, n);
     if (n.name == "Y0") return leaf(Term::Op::Initial, Sort::States, n);
+    if (n.name == "Tclear") return leaf(Term::Op::Clearing, Sort::Evolutions, n);
     if (n.name == "Steps") return leaf(Term::Op::AllSteps, Sort::Steps, n);
     if (const Definition* d = lib_.find(n.name); d && d->params.empty())
       return expand(*d, n, {}, env, [&](const Node& body, const EnvPtr& e) {

@@ -42,6 +42,7 @@ struct Signal {
 struct Term {
   enum class Op {
     AllStates, AllEvolutions, Initial, AllSteps, Empty,  ///< Y, T, Y0, Steps, {}
+    Clearing,      ///< Tclear: the evolutions that clear at least one transition
     StepLiteral,   ///< steps
     StepVar,       ///< {e} for the set-builder variable in `slot`
     Union, Inter, Diff,

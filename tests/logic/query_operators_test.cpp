@@ -131,6 +131,27 @@ TEST_F(QueryOperators, SetBuilderLocalDeadlock) {
   EXPECT_EQ(f.St("{e | {g | Act({e, g}) != {} } = {e}}"), (StepNames{"X1"}));
 }
 
+TEST(QueryClearing, TclearIsTheEvolutionsThatFireATransition) {
+  // 0 -[t0]-> 1, then 1 and 2 exchange without clearing anything (input events).
+  ToySystem ts(3, {"a"}, {"X1", "X2"});
+  ts.set_true(0, 0);
+  ts.set_true(1, 1);
+  ts.set_true(2, 1);
+  ts.set_initial({0});
+  ts.add_arc(0, 1, ToySystem::lit(0, true), {0});
+  ts.add_arc(1, 2, ToySystem::lit(0, false));
+  ts.add_arc(2, 1, ToySystem::lit(0, true));
+  QueryFixture f{std::move(ts)};
+  using E = std::set<std::pair<std::uint32_t, std::uint32_t>>;
+  EXPECT_EQ(f.E("Tclear"), (E{{0, 1}}));
+  EXPECT_EQ(f.E("T - Tclear"), (E{{1, 2}, {2, 1}}));
+  EXPECT_EQ(f.S("Y - Amont(T)"), States{});
+  EXPECT_EQ(f.S("Y - Pred(Amont(Tclear), T)"), (States{1, 2}));
+  f.library().add_file(std::string(SFCV_SOURCE_DIR) + "/share/sfcv/properties.sfq");
+  EXPECT_EQ(f.S("global_deadlock()"), (States{1, 2}));
+  EXPECT_EQ(f.S("no_successor()"), States{});
+}
+
 TEST(QueryLocalDeadlock, EmptyOnAFreeCycle) {
   ToySystem ts(2, {"a"}, {"X1", "X2"});
   ts.set_true(0, 0);

@@ -68,6 +68,12 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
       return r;
     }
     case Term::Op::Empty: return DynamicBitset(n);
+    case Term::Op::Clearing: {
+      DynamicBitset r(n);
+      for (std::uint64_t e = 0; e < n; ++e)
+        if (!g_.fired(e).empty()) r.set(e);
+      return r;
+    }
     case Term::Op::StepLiteral: {
       DynamicBitset r(n);
       for (auto s : t.steps) r.set(s);
