@@ -1,31 +1,276 @@
+// sfcv rsg: builds the reachable situations graph (Grafcet) or the cycle-level state graph
+// (IEC 61131-3) and prints its size, its listing, a Graphviz or a JSON rendering.
+
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
-#include "cli/not_built.hpp"
+#include "engine/bdd/condition_simplifier.hpp"
+#include "engine/explicit/reachable_situation_graph.hpp"
+#include "model/names.hpp"
+#include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
 namespace {
+
 struct RsgOptions {
   std::string model;
   std::string format = "auto";
+  std::string semantics;  ///< empty: from the file type
+  bool multi_input_change = false;
+  bool list = false;
+  std::string dot;
+  bool json = false;
+  std::uint64_t max_states = 0;
+  double timeout = 0;
 };
+
+std::string default_semantics(const std::string& path, const model::Project& p) {
+  auto ext = model::to_upper(std::filesystem::path(path).extension().string());
+  if (ext == ".G7" || ext == ".GRAFCET") return "grafcet";
+  if (ext.empty() && p.dialect == model::Dialect::Grafcet) return "grafcet";
+  return "iec61131";
+}
+
+/// "{1,10} x y" -> ("{1,10}", "x y"): the situation and what it emits.
+std::pair<std::string, std::string> split_description(const std::string& d) {
+  const auto close = d.find('}');
+  if (d.empty() || d[0] != '{' || close == std::string::npos) return {d, ""};
+  std::string rest = d.substr(close + 1);
+  while (!rest.empty() && rest.front() == ' ') rest.erase(rest.begin());
+  return {d.substr(0, close + 1), rest};
+}
+
+std::string inputs_of(const semantics::TransitionSystem& ts, semantics::StateView s) {
+  std::string out;
+  for (std::uint32_t i = 0; i < ts.observables().size(); ++i) {
+    const auto& o = ts.observables()[i];
+    if (o.kind != semantics::ObservableKind::Variable || o.is_output) continue;
+    bool is_input = false;
+    for (const auto& in : ts.inputs())
+      if (in.name == o.name) is_input = true;
+    if (!is_input) continue;
+    const auto v = ts.observe(s, i);
+    if (!out.empty()) out += " ";
+    out += o.type.kind == model::TypeKind::Bool ? (v ? "" : "!") + o.name
+                                                : o.name + "=" + std::to_string(v);
+  }
+  return out;
+}
+
+std::string dot_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+int run_rsg(const RsgOptions& o) {
+  const model::Project project = load_model_or_throw(o.model, parse_format(o.format));
+  const std::string sem = o.semantics.empty() ? default_semantics(o.model, project) : o.semantics;
+  model::Diagnostics diags;
+  semantics::TransitionSystemPtr ts;
+  if (sem == "grafcet") {
+    semantics::GrafcetOptions g;
+    g.single_input_change = !o.multi_input_change;
+    ts = semantics::make_grafcet_system(project, g, diags);
+  } else if (sem == "iec61131") {
+    if (o.multi_input_change)
+      throw InputError("--multi-input-change applies to the Grafcet semantics only");
+    ts = semantics::make_iec61131_system(project, semantics::Iec61131Options{}, diags);
+  } else {
+    throw InputError("unknown semantics '" + sem + "' (expected grafcet or iec61131)");
+  }
+  for (const auto& d : diags) std::cerr << d.str() << "\n";
+  if (!ts) throw InputError(o.model + ": the " + sem + " semantics cannot be built for this model");
+
+  engine::ExplorationOptions eo;
+  eo.max_states = o.max_states;
+  eo.timeout_seconds = o.timeout;
+  const auto g = engine::build_reachable_situation_graph(*ts, eo);
+  const auto& inputs = ts->inputs();
+  auto state = [&g](std::uint32_t s) { return g.states().at(s); };
+  auto condition = [&](std::uint64_t e) {
+    return engine::simplify(g.condition(e), inputs).to_string(inputs);
+  };
+
+  // Distinct step situations: the states projected on the step fields (the seed's RSG nodes
+  // do not hold the input values).
+  std::set<std::vector<std::int64_t>> situations;
+  std::set<std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>>> moves;
+  const auto& layout = ts->layout();
+  auto project_steps = [&](std::uint32_t s) {
+    std::vector<std::int64_t> v;
+    for (std::uint32_t f = 0; f < layout.fields().size(); ++f) {
+      const auto k = layout.fields()[f].kind;
+      if (k == semantics::FieldKind::StepActive || k == semantics::FieldKind::StepReady ||
+          false)
+        v.push_back(layout.get(state(s), f));
+    }
+    return v;
+  };
+  for (std::uint32_t s = 0; s < g.num_states(); ++s) {
+    const auto p = project_steps(s);
+    situations.insert(p);
+    for (auto e = g.edges_begin(s); g.expanded(s) && e < g.edges_end(s); ++e) {
+      const auto q = project_steps(g.target(e));
+      if (q != p) moves.insert({p, q});
+    }
+  }
+
+  const bool single = sem == "grafcet" && !o.multi_input_change;
+  if (o.json) {
+    nlohmann::json j;
+    j["semantics"] = sem;
+    if (sem == "grafcet") j["single_input_change"] = single;
+    j["complete"] = g.complete();
+    if (!g.complete()) j["limit"] = g.limit_reached();
+    j["build_seconds"] = g.build_seconds();
+    j["inputs"] = nlohmann::json::array();
+    for (const auto& in : inputs) j["inputs"].push_back({{"name", in.name}, {"pseudo", in.pseudo}});
+    j["states"] = nlohmann::json::array();
+    std::vector<bool> initial(g.num_states(), false);
+    for (auto s : g.initial_states()) initial[s] = true;
+    for (std::uint32_t s = 0; s < g.num_states(); ++s) {
+      const auto [sit, out] = split_description(ts->describe(state(s)));
+      j["states"].push_back({{"id", s}, {"situation", sit}, {"outputs", out},
+                             {"inputs", inputs_of(*ts, state(s))}, {"initial", bool(initial[s])},
+                             {"expanded", g.expanded(s)}});
+    }
+    j["edges"] = nlohmann::json::array();
+    for (std::uint32_t s = 0; s < g.num_states(); ++s)
+      for (auto e = g.edges_begin(s); g.expanded(s) && e < g.edges_end(s); ++e) {
+        nlohmann::json fired = nlohmann::json::array();
+        for (auto t : g.fired(e)) fired.push_back(ts->transitions()[t].name);
+        j["edges"].push_back(
+            {{"from", s}, {"to", g.target(e)}, {"condition", condition(e)}, {"fired", fired}});
+      }
+    j["anomalies"] = nlohmann::json::array();
+    for (const auto& a : g.anomalies()) {
+      nlohmann::json cycle = nlohmann::json::array();
+      for (const auto& c : a.cycle) cycle.push_back(ts->describe(c));
+      j["anomalies"].push_back({{"message", a.message},
+                                {"inputs", engine::simplify(a.condition, inputs).to_string(inputs)},
+                                {"cycle", cycle}});
+    }
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << "semantics: " << sem
+              << (sem == "grafcet"
+                      ? (single ? " (IEC 60848, single input change)"
+                                : " (IEC 60848, multiple input changes)")
+                      : " (IEC 61131-3 scan cycle)")
+              << "\n";
+    std::cout << (sem == "grafcet" ? "situations: " : "states: ") << g.num_states();
+    if (sem == "grafcet") std::cout << " (distinct step situations: " << situations.size() << ")";
+    std::cout << "\nevolutions: " << g.num_edges();
+    if (sem == "grafcet")
+      std::cout << " (between distinct step situations: " << moves.size() << ")";
+    std::cout << "\ninitial: " << g.initial_states().size() << "\n";
+    std::cout << "build time: " << std::fixed << std::setprecision(3) << g.build_seconds()
+              << " s\n";
+    std::cout.unsetf(std::ios::fixed);
+    if (o.list) {
+      std::vector<bool> initial(g.num_states(), false);
+      for (auto s : g.initial_states()) initial[s] = true;
+      for (std::uint32_t s = 0; s < g.num_states(); ++s) {
+        const auto [sit, out] = split_description(ts->describe(state(s)));
+        std::cout << "s" << s << (initial[s] ? " (initial)" : "") << ": " << sit;
+        if (!out.empty()) std::cout << " / " << out;
+        const auto in = inputs_of(*ts, state(s));
+        if (!in.empty()) std::cout << "   [inputs: " << in << "]";
+        std::cout << "\n";
+      }
+      for (std::uint32_t s = 0; s < g.num_states(); ++s)
+        for (auto e = g.edges_begin(s); g.expanded(s) && e < g.edges_end(s); ++e) {
+          const auto t = g.target(e);
+          const auto [from, out0] = split_description(ts->describe(state(s)));
+          const auto [to, out] = split_description(ts->describe(state(t)));
+          (void)out0;
+          std::cout << "s" << s << " " << from << " --[" << condition(e) << "]--> s" << t << " "
+                    << to;
+          if (!out.empty()) std::cout << " / " << out;
+          std::cout << "\n";
+        }
+    }
+  }
+
+  if (!o.dot.empty()) {
+    std::ostringstream d;
+    d << "digraph rsg {\n  rankdir=LR;\n  node [shape=box, fontname=\"monospace\"];\n";
+    for (auto s : g.initial_states()) d << "  init" << s << " [shape=point];\n  init" << s << " -> s" << s << ";\n";
+    for (std::uint32_t s = 0; s < g.num_states(); ++s)
+      d << "  s" << s << " [label=\"" << dot_escape(ts->describe(state(s))) << "\"];\n";
+    for (std::uint32_t s = 0; s < g.num_states(); ++s)
+      for (auto e = g.edges_begin(s); g.expanded(s) && e < g.edges_end(s); ++e)
+        d << "  s" << s << " -> s" << g.target(e) << " [label=\"" << dot_escape(condition(e))
+          << "\"];\n";
+    d << "}\n";
+    if (o.dot == "-") {
+      std::cout << d.str();
+    } else {
+      std::ofstream f(o.dot);
+      if (!f) throw InputError("cannot write " + o.dot);
+      f << d.str();
+    }
+  }
+
+  // One line per distinct anomaly (the same cycle is met from many nodes).
+  std::set<std::string> printed;
+  for (const auto& a : g.anomalies()) {
+    std::string line = o.model + ": error: " + a.message + "; inputs: " +
+                       engine::simplify(a.condition, inputs).to_string(inputs);
+    if (!a.cycle.empty()) {
+      line += "; cycle:";
+      for (const auto& c : a.cycle) line += " " + split_description(ts->describe(c)).first + " ->";
+      line += " " + split_description(ts->describe(a.cycle.front())).first;
+    }
+    if (printed.insert(line).second) std::cerr << line << "\n";
+  }
+  if (!g.complete()) {
+    std::cout << "unknown: the " << g.limit_reached() << " limit was reached after "
+              << g.num_states() << " states; the graph is incomplete\n";
+    return kUnknown;
+  }
+  return g.anomalies().empty() ? kHolds : kViolated;
+}
+
 }  // namespace
 
 void add_rsg_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<RsgOptions>();
-  auto* sub = app.add_subcommand("rsg", "Build the reachable situations graph");
+  auto* sub = app.add_subcommand(
+      "rsg", "Build the reachable situations graph (Grafcet) or the cycle state graph (IEC)");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--semantics", opts->semantics,
+                  "grafcet or iec61131 (default: grafcet for .g7/.grafcet files, else iec61131)")
+      ->check(CLI::IsMember({"grafcet", "iec61131"}));
+  sub->add_flag("--multi-input-change", opts->multi_input_change,
+                "Grafcet: lift the single-input-change hypothesis");
+  sub->add_flag("--list", opts->list, "List every situation and evolution");
+  sub->add_option("--dot", opts->dot, "Write the graph as Graphviz to FILE (- for stdout)");
+  sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");
+  sub->add_option("--max-states", opts->max_states, "Stop after N states (verdict unknown)");
+  sub->add_option("--timeout", opts->timeout, "Stop after S seconds (verdict unknown)");
   sub->callback([opts, &selected] {
-    selected = [opts] {
-      load_model_or_throw(opts->model, parse_format(opts->format));
-      return not_built_yet("'sfcv rsg'");
-    };
+    selected = [opts] { return run_rsg(*opts); };
   });
 }
 

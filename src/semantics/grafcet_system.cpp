@@ -105,6 +105,7 @@ struct GInput {
   std::vector<std::int64_t> thresholds;  ///< integer: the region boundaries
   std::vector<std::int64_t> region_lo;   ///< integer: first value of each region
   bool edge = false;                     ///< read under an edge
+  int order = 0;                         ///< declaration order (undeclared: after, by first use)
   bool pseudo = false;
   int delay = -1;  ///< pseudo: the delay it elapses
   int field = -1;  ///< InputMemory field, -1 when not stored
@@ -262,6 +263,9 @@ int GrafcetSystem::input_index(const model::Pou& pou, const std::string& name) {
   GInput in;
   const model::Variable* v = pou.find_variable(name);
   in.name = v ? v->name : name;
+  in.order = static_cast<int>(pou.variables.size() + gin_.size());
+  for (std::size_t i = 0; i < pou.variables.size(); ++i)
+    if (&pou.variables[i] == v) in.order = static_cast<int>(i);
   in.type = v ? v->type : model::Type::boolean();
   if (in.type.kind == model::TypeKind::Time) in.type.kind = model::TypeKind::Int;
   gin_.push_back(in);
@@ -467,7 +471,34 @@ bool GrafcetSystem::int_inputs_ok(const CExpr& e, const model::Expr& where) {
   return true;
 }
 
+namespace {
+void remap_inputs(CExpr& e, const std::vector<int>& to) {
+  if (e.op == Op::Input) e.ref = to[static_cast<std::size_t>(e.ref)];
+  for (auto& a : e.args) remap_inputs(a, to);
+}
+}  // namespace
+
 void GrafcetSystem::finish_inputs() {
+  // Inputs in declaration order, so that conditions read the same whatever the chart order.
+  std::vector<int> perm(gin_.size());
+  for (std::size_t i = 0; i < perm.size(); ++i) perm[i] = static_cast<int>(i);
+  std::stable_sort(perm.begin(), perm.end(),
+                   [this](int x, int y) { return gin_[x].order < gin_[y].order; });
+  std::vector<int> to(gin_.size());
+  std::vector<GInput> sorted;
+  for (std::size_t i = 0; i < perm.size(); ++i) {
+    to[static_cast<std::size_t>(perm[i])] = static_cast<int>(i);
+    sorted.push_back(gin_[static_cast<std::size_t>(perm[i])]);
+  }
+  gin_ = std::move(sorted);
+  for (auto& t : trans_) remap_inputs(t.guard, to);
+  for (auto& a : stored_) {
+    remap_inputs(a.event, to);
+    remap_inputs(a.value, to);
+  }
+  for (auto& c : continuous_) remap_inputs(c.condition, to);
+  for (auto& d : delays_) remap_inputs(d.expr, to);
+  for (auto& [name, id] : input_by_name_) id = to[static_cast<std::size_t>(id)];
   for (auto& in : gin_) {
     if (in.type.kind != model::TypeKind::Int) continue;
     auto& th = in.thresholds;
@@ -533,9 +564,14 @@ void GrafcetSystem::build(const model::Project& project) {
   for (auto& gs : steps_) {
     if (gs.kind != model::StepKind::MacroStep) continue;
     const auto& ex = charts_[gs.expansion];
+    // Macro-step M2 (or 2) has entry step E2 and exit step S2.
+    const std::string number =
+        gs.name.size() > 1 && (gs.name[0] == 'M' || gs.name[0] == 'm') ? gs.name.substr(1) : gs.name;
     for (int s : ex.steps) {
-      if (model::iequals(steps_[s].name, "E" + gs.name)) gs.entry = s;
-      if (model::iequals(steps_[s].name, "S" + gs.name)) gs.exit = s;
+      if (model::iequals(steps_[s].name, "E" + number) || model::iequals(steps_[s].name, "E" + gs.name))
+        gs.entry = s;
+      if (model::iequals(steps_[s].name, "S" + number) || model::iequals(steps_[s].name, "S" + gs.name))
+        gs.exit = s;
     }
     if (gs.entry < 0)
       for (int s : ex.steps)
@@ -794,7 +830,12 @@ void GrafcetSystem::build(const model::Project& project) {
     Observable o;
     o.name = v.name;
     o.type = v.type;
+    // Declared internal variables (counters, flags) are observable but not outputs.
     o.is_output = true;
+    for (const auto& pou : project.pous)
+      if (const auto* decl = pou.find_variable(v.name))
+        o.is_output = decl->direction == model::VarDirection::Output ||
+                      decl->direction == model::VarDirection::InOut;
     observables_.push_back(o);
     obs_info_.push_back({ObsRef::Field, v.field});
   }
@@ -1221,7 +1262,10 @@ void GrafcetSystem::initial_states(SuccessorSink& sink) const {
   explore(initial_template_, p, true, sink);
 }
 
-void GrafcetSystem::successors(StateView state, SuccessorSink& sink) const {
+void GrafcetSystem::successors(StateView stored_state, SuccessorSink& sink) const {
+  // The sink may store new states and move the memory `stored_state` points into: work on a copy.
+  const std::vector<StateWord> copy(stored_state.begin(), stored_state.end());
+  const StateView state(copy);
   if (!options_.single_input_change) {
     Partial p;
     p.val.assign(gin_.size(), 0);
