@@ -4,11 +4,11 @@
 // false, IntegerConstant 0, storedActionType activation, forcingOrderType currentSituation.
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -175,11 +175,58 @@ class Reader {
   }
 
   // ---- variables
-  void read_variables() {
-    static const std::regex kDelayName(R"(^\s*(\d+)\s*(ms|s|min|h)?\s*/\s*X(\w+)\s*(/\s*(\d+)\s*(ms|s|min|h)?\s*)?$)");
-    auto scale = [](const std::string& unit) -> std::int64_t {
-      return unit == "ms" ? 1 : unit == "min" ? 60000 : unit == "h" ? 3600000 : 1000;
+  struct Delay {
+    std::int64_t t1;
+    std::string step_var;
+    std::int64_t t2;
+  };
+
+  /// "2s/X202", "500ms/X3/1s": a duration (unit s when left out), '/', X and a step name, and
+  /// optionally '/' and a second duration. Spaces are allowed around the parts.
+  static std::optional<Delay> delay_name(std::string_view s) {
+    std::size_t i = 0;
+    auto spaces = [&] {
+      while (i < s.size() && s[i] == ' ') ++i;
     };
+    auto duration = [&]() -> std::optional<std::int64_t> {
+      spaces();
+      const std::size_t b = i;
+      std::int64_t v = 0;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && i - b < 12)
+        v = v * 10 + (s[i++] - '0');
+      if (i == b) return std::nullopt;
+      std::int64_t scale = 1000;
+      for (const auto& [unit, ms] : {std::pair<std::string_view, std::int64_t>{"ms", 1},
+                                     {"min", 60000}, {"s", 1000}, {"h", 3600000}})
+        if (s.substr(i, unit.size()) == unit) {
+          scale = ms;
+          i += unit.size();
+          break;
+        }
+      spaces();
+      return v * scale;
+    };
+    const auto t1 = duration();
+    if (!t1 || i >= s.size() || s[i] != '/') return std::nullopt;
+    ++i;
+    spaces();
+    if (i >= s.size() || s[i] != 'X') return std::nullopt;
+    const std::size_t b = ++i;
+    while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_')) ++i;
+    if (i == b) return std::nullopt;
+    Delay d{*t1, "X" + std::string(s.substr(b, i - b)), 0};
+    spaces();
+    if (i < s.size() && s[i] == '/') {
+      ++i;
+      const auto t2 = duration();
+      if (!t2) return std::nullopt;
+      d.t2 = *t2;
+    }
+    if (i != s.size()) return std::nullopt;
+    return d;
+  }
+
+  void read_variables() {
     for (auto decl : root_.child("variableDeclarationContainer").children("variableDeclarations")) {
       const std::string name = decl.attribute("name").value();
       const std::string kind = decl.attribute("variableDeclarationType")
@@ -192,17 +239,16 @@ class Reader {
         step_vars_[decl] = resolve(decl, decl.attribute("step").value());
         continue;
       }
-      std::smatch m;
-      if (kind == "internal" && sort == "Bool" && std::regex_match(name, m, kDelayName)) {
-        // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable of
-        // that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
-        const std::int64_t t1 = std::stoll(m[1].str()) * scale(m[2].str());
-        const std::int64_t t2 = m[5].matched ? std::stoll(m[5].str()) * scale(m[6].str()) : 0;
-        delay_vars_[decl] = {t1, "X" + m[3].str(), t2};
-        warn(decl, model::Severity::Warning,
-             "internal variable '" + name + "' is read as the delay " + g7::duration(t1) + "/X" +
-                 m[3].str() + "/" + g7::duration(t2) + " (AGRAFE has no delay term)");
-        continue;
+      if (kind == "internal" && sort == "Bool") {
+        if (auto d = delay_name(name)) {
+          // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable
+          // of that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
+          warn(decl, model::Severity::Warning,
+               "internal variable '" + name + "' is read as the delay " + g7::duration(d->t1) +
+                   "/" + d->step_var + "/" + g7::duration(d->t2) + " (AGRAFE has no delay term)");
+          delay_vars_[decl] = std::move(*d);
+          continue;
+        }
       }
       model::Variable v;
       v.name = name;
@@ -231,11 +277,6 @@ class Reader {
   }
 
   // ---- charts
-  struct Delay {
-    std::int64_t t1;
-    std::string step_var;
-    std::int64_t t2;
-  };
 
   void read_charts() {
     // Pass 1: charts and their steps, so that references between charts resolve.

@@ -471,6 +471,25 @@ TEST(G7RoundTrip, QuotedNames) {
              " transition \"1a\" -> \"true\" when \"RE\" & RE \"my var\" & \"3x\" = 2; }");
 }
 
+TEST(G7RoundTrip, StepsNamedLikeKeywords) {
+  const std::string printed = round_trip(
+      "grafcet G { step initial initial; step INIT, when, on_enter;\n"
+      " transition when: initial -> when when X_when_ | Xwhen;\n"
+      " transition {when, INIT} -> on_enter; action initial: G{INIT}; action when: G{\"INIT\"}; }\n"
+      "input X_when_;");
+  EXPECT_NE(printed.find("action when: G{\"INIT\"};"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("action initial: G{INIT};"), std::string::npos) << printed;
+}
+
+TEST(G7Errors, DuplicatePartialGrafcetKeepsLaterErrorsPrecise) {
+  const auto r = load("grafcet G { step 1; }\ngrafcet G { step 1;\n transition 1 -> 9; }");
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].message, "partial grafcet 'G' is declared twice");
+  EXPECT_EQ(r.diagnostics[0].where.line, 2);
+  EXPECT_EQ(r.diagnostics[1].where.line, 3);
+  EXPECT_EQ(r.diagnostics[1].where.column, 18);
+}
+
 TEST(G7RoundTrip, SmallSequence) {
   const std::string printed = round_trip(
       "input a;\noutput V;\ngrafcet G { step 0 initial; step 1; transition 0 -> 1 when a;\n"
