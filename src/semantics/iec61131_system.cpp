@@ -40,12 +40,29 @@ Iec61131System::Entry& Iec61131System::entry_for(std::span<const std::uint32_t> 
 }
 
 void Iec61131System::add_cube(InputCondition& cond, std::size_t& n) const {
-  if (n == cond.cubes.size()) cond.cubes.emplace_back();
+  if (n == cond.cubes.size()) {
+    if (spare_cubes_.empty()) {
+      cond.cubes.emplace_back();
+    } else {
+      cond.cubes.push_back(std::move(spare_cubes_.back()));
+      spare_cubes_.pop_back();
+    }
+  }
   machine_.cube(cond.cubes[n]);
   ++n;
 }
 
+void Iec61131System::trim(InputCondition& cond, std::size_t n) const {
+  // Surplus cubes go to the spare pool rather than being freed: steady state allocates nothing.
+  while (cond.cubes.size() > n) {
+    spare_cubes_.push_back(std::move(cond.cubes.back()));
+    cond.cubes.pop_back();
+  }
+}
+
 void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
+  for (std::size_t i = 0; i < used_; ++i) trim(entries_[i].condition, 0);
+  for (std::size_t i = 0; i < anomalies_used_; ++i) trim(anomalies_[i].condition, 0);
   used_ = 0;
   anomalies_used_ = 0;
   machine_.load(state);
@@ -73,12 +90,12 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
   } while (machine_.next_leaf());
   for (std::size_t i = 0; i < used_; ++i) {
     auto& e = entries_[i];
-    e.condition.cubes.resize(e.cubes);
+    trim(e.condition, e.cubes);
     sink.successor(Successor{e.target, e.condition, e.fired});
   }
   for (std::size_t i = 0; i < anomalies_used_; ++i) {
     auto& a = anomalies_[i];
-    a.condition.cubes.resize(a.cubes);
+    trim(a.condition, a.cubes);
     Anomaly an;
     an.kind = Anomaly::Kind::RangeError;
     an.message = a.message;

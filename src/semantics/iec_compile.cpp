@@ -123,18 +123,6 @@ struct Compiler {
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> providers;  // name -> (pou, var)
     std::map<std::string, std::uint32_t> globals;                              // name -> field
     std::map<std::string, int> name_count;
-    for (const auto* pou : pous)
-      for (const auto& v : pou->variables) ++name_count[model::to_upper(v.name)];
-    for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
-      PouScope sc;
-      sc.pou = pous[pi];
-      sc.index = pi;
-      scopes.push_back(std::move(sc));
-      const auto up = model::to_upper(pous[pi]->name);
-      for (const auto& s : pous[pi]->body) (void)s;
-      collect_written(pous[pi]->body, up);
-      for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
-    }
     auto is_input = [](const model::Variable& v) {
       return v.direction == model::VarDirection::Input ||
              (v.direction == model::VarDirection::Local && v.address.rfind("%I", 0) == 0);
@@ -142,6 +130,19 @@ struct Compiler {
     auto is_output = [](const model::Variable& v) {
       return v.direction == model::VarDirection::Output || v.address.rfind("%Q", 0) == 0;
     };
+    // Names of the fields (inputs and connected inputs make none): unique ones display bare.
+    for (const auto* pou : pous)
+      for (const auto& v : pou->variables)
+        if (v.type.kind != TypeKind::FunctionBlock && !is_input(v)) ++name_count[model::to_upper(v.name)];
+    for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
+      PouScope sc;
+      sc.pou = pous[pi];
+      sc.index = pi;
+      scopes.push_back(std::move(sc));
+      const auto up = model::to_upper(pous[pi]->name);
+      collect_written(pous[pi]->body, up);
+      for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
+    }
     // Pass 1: state variables (non-inputs).
     for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
       const auto& pou = *pous[pi];

@@ -46,6 +46,7 @@ class Iec61131System final : public TransitionSystem {
   };
   Entry& entry_for(std::span<const std::uint32_t> fired) const;
   void add_cube(InputCondition& cond, std::size_t& n) const;
+  void trim(InputCondition& cond, std::size_t n) const;
 
   std::unique_ptr<Program> p_;
   // Scratch reused across calls: no heap allocation per successor once warmed up.
@@ -53,6 +54,7 @@ class Iec61131System final : public TransitionSystem {
   mutable std::vector<StateWord> scratch_;
   mutable std::vector<Entry> entries_;
   mutable std::size_t used_ = 0;
+  mutable std::vector<InputCube> spare_cubes_;  ///< cubes (with their capacity) between calls
   mutable std::vector<AnomalyEntry> anomalies_;
   mutable std::size_t anomalies_used_ = 0;
 };

@@ -1,0 +1,106 @@
+// End-to-end: sfcv simulate on the chemical plant example and on bad traces.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/sfcv_test.hpp"
+
+namespace {
+
+using sfcv::test::run_sfcv;
+using sfcv::test::source_path;
+using sfcv::test::write_temp;
+
+const std::string kPlant = "'" + source_path("examples/chemical_plant/chemical_plant.st") + "'";
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string l;
+  while (std::getline(ss, l)) out.push_back(l);
+  return out;
+}
+
+TEST(Simulate, ChemicalPlantTraceOpensV2AndV4AtOnce) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 7u) << r.out;  // header, initial, 5 cycles
+  EXPECT_NE(rows[0].find("active steps"), std::string::npos);
+  bool overlap = false;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const bool both = rows[i].find("V2=1") != std::string::npos && rows[i].find("V4=1") != std::string::npos;
+    if (both) {
+      overlap = true;
+      EXPECT_EQ(rows[i].rfind("5 |", 0), 0u) << rows[i];
+      EXPECT_NE(rows[i].find("ChemicalPlant.a3.s12"), std::string::npos);
+      EXPECT_NE(rows[i].find("ChemicalPlant.s5"), std::string::npos);
+    }
+    EXPECT_FALSE(rows[i].find("V1=1") != std::string::npos && rows[i].find("V3=1") != std::string::npos);
+  }
+  EXPECT_TRUE(overlap) << r.out;
+}
+
+TEST(Simulate, WritesAVcdWaveform) {
+  const auto vcd = std::filesystem::temp_directory_path() / ("sfcv-sim-" + std::to_string(::getpid()) + ".vcd");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --vcd '" +
+                          vcd.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream f(vcd);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const auto text = ss.str();
+  std::filesystem::remove(vcd);
+  for (const char* s : {"$timescale", "$scope module steps", "$scope module inputs", "ChemicalPlant_a3_s12",
+                        " V4 $end", "$enddefinitions $end", "#50"})
+    EXPECT_NE(text.find(s), std::string::npos) << s;
+}
+
+TEST(Simulate, MaxCyclesStopsEarly) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --max-cycles 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines(r.out).size(), 4u);
+}
+
+TEST(Simulate, UnknownColumnIsAnErrorWithItsPosition) {
+  const auto csv = write_temp("start, LIS1plus, bogus\n1,0,0\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(csv + ":1:18: unknown input 'bogus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, BadValueIsAnErrorWithItsPosition) {
+  const auto csv = write_temp("start,LIS1plus,LIS1minus,LIS2plus,LIS2minus,LIS3minus\n1,0,0,0,0,0\n0,0,maybe,0,0,0\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(csv + ":3:5: bad value 'maybe' for input 'LIS1minus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, MissingInputColumnIsAnError) {
+  const auto csv = write_temp("start\n1\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no column for input 'LIS1plus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, AssumptionViolatedByTheTraceIsReported) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") +
+                          "' --assume 'NOT (LIS1minus AND LIS2minus)'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cycle 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("assumption"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, HelpDocumentsPseudoInputs) {
+  const auto r = run_sfcv("simulate --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("timeout:"), std::string::npos);
+  EXPECT_NE(r.out.find("choice:"), std::string::npos);
+}
+
+}  // namespace
