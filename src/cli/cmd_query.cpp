@@ -167,9 +167,15 @@ struct Printer {
     out << "  " << n << " " << sort_noun(sort, n);
     if (sort == logic::Sort::States && n) {
       // RSG states also hold the input values; say how many situations they are.
-      std::set<std::string> situations;
+      std::set<std::vector<std::uint32_t>> situations;
+      const auto& obs = g.system().observables();
       set.for_each([&](std::uint64_t i) {
-        situations.insert(g.system().describe(g.states().at(static_cast<std::uint32_t>(i))));
+        const auto st = g.states().at(static_cast<std::uint32_t>(i));
+        std::vector<std::uint32_t> active;
+        for (std::uint32_t o = 0; o < obs.size(); ++o)
+          if (obs[o].kind == semantics::ObservableKind::Step && g.system().observe(st, o))
+            active.push_back(o);
+        situations.insert(std::move(active));
       });
       if (situations.size() != n) out << " (" << situations.size() << " distinct step sets)";
     }
