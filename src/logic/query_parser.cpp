@@ -208,6 +208,13 @@ class Parser {
   static bool is_keyword(const std::string& s) { return s == "let" || s == "def" || s == "in"; }
 
   NodePtr expr() {
+    // Bound the recursion so that a pathological text is an error, not a stack overflow.
+    struct Depth {
+      int& d;
+      explicit Depth(int& depth) : d(depth) { ++d; }
+      ~Depth() { --d; }
+    } guard(depth_);
+    if (depth_ > 200) throw QueryError(tok_.pos, "expression nested too deeply");
     if (tok_.kind == Tok::Ident && tok_.text == "let") {
       const auto pos = take().pos;
       const auto name = ident("a name after 'let'");
@@ -239,7 +246,7 @@ class Parser {
   NodePtr negation() {
     if (tok_.kind == Tok::Bang) {
       const auto pos = take().pos;
-      return make(NodeKind::Not, pos, {negation()});
+      return make(NodeKind::Not, pos, {expr_level(&Parser::negation)});
     }
     return comparison();
   }
@@ -284,7 +291,7 @@ class Parser {
   NodePtr prefix() {
     if (tok_.kind == Tok::Hash) {
       const auto pos = take().pos;
-      return make(NodeKind::Count, pos, {prefix()});
+      return make(NodeKind::Count, pos, {expr_level(&Parser::prefix)});
     }
     return primary();
   }
@@ -372,8 +379,17 @@ class Parser {
     return make(NodeKind::StepList, open, std::move(elems));
   }
 
+  /// A nested call of `level` that counts towards the nesting bound (prefix operators).
+  NodePtr expr_level(NodePtr (Parser::*level)()) {
+    if (++depth_ > 200) throw QueryError(tok_.pos, "expression nested too deeply");
+    auto n = (this->*level)();
+    --depth_;
+    return n;
+  }
+
   Lexer lex_;
   Token tok_;
+  int depth_ = 0;
 };
 
 int precedence(NodeKind k) {

@@ -44,6 +44,17 @@ TEST(QueryParse, SyntaxErrorsCarryTheirColumn) {
   EXPECT_QUERY_ERROR("12abc", 3, "after a number");
 }
 
+TEST(QueryParse, DeepNestingIsAnErrorNotACrash) {
+  EXPECT_QUERY_ERROR(std::string(5000, '(') + "Y" + std::string(5000, ')'), 201,
+                     "nested too deeply");
+  EXPECT_QUERY_ERROR(std::string(5000, '!') + "Y", 201, "nested too deeply");
+  EXPECT_QUERY_ERROR(std::string(5000, '#') + "Y", 201, "nested too deeply");
+  // Reasonable nesting is fine.
+  const auto ts = make_query_toy();
+  logic::QueryLibrary lib;
+  EXPECT_NO_THROW(logic::compile_query(std::string(50, '(') + "Y" + std::string(50, ')'), lib, ts));
+}
+
 TEST(QueryParse, ErrorsOnLaterLinesCountLines) {
   const auto e = error_of("let a = Y;\n  a + T");
   EXPECT_EQ(e.line, 2u);
