@@ -65,7 +65,7 @@ std::string default_library_path() {
 /// "query:1:5: message" followed by the query line and a caret under the column.
 std::string located(const logic::QueryError& e, const std::string& text,
                     const std::string& source_name) {
-  std::string out = "error: " + std::string(e.what());
+  std::string out = e.what();
   if (!e.pos().source || *e.pos().source != source_name) return out;
   std::size_t line_start = 0;
   for (std::uint32_t l = 1; l < e.pos().line; ++l) {
@@ -237,7 +237,7 @@ int run_query(const QueryOptions& o) {
     }
     for (const auto& f : o.libraries) library.add_file(f);
   } catch (const logic::QueryError& e) {
-    throw InputError(std::string("error: ") + e.what());
+    throw InputError(e.what());
   }
   if (o.list) {
     for (const auto& [key, d] : library.definitions()) {
@@ -296,7 +296,7 @@ int run_query(const QueryOptions& o) {
     try {
       return engine::build_reachable_situation_graph(*ts, eo);
     } catch (const semantics::SemanticsLimitError& e) {
-      throw InputError(std::string("error: ") + e.what());
+      throw InputError(e.what());
     }
   }();
   engine::QueryEvaluator ev(graph);
