@@ -47,6 +47,7 @@ Sys make(const char* text, std::vector<std::string> ctl) {
   logic::CheckInputs in;
   in.ctl = std::move(ctl);
   auto parsed = logic::parse_check_inputs(in);
+  for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
   logic::CheckTask task;
   logic::resolve_into(parsed.spec, *s.ts, task, diags);
   for (const auto& d : diags) ADD_FAILURE() << d.str();
@@ -55,7 +56,7 @@ Sys make(const char* text, std::vector<std::string> ctl) {
 }
 
 TEST(ExportModel, InvariantsBecomeBadLiteralsAndTheRestCtlText) {
-  auto s = make(kChart, {"AG !(Run & level > 3)", "AG EF Idle", "AG lamp -> Run"});
+  auto s = make(kChart, {"AG !(Run & !lamp)", "AG EF Idle", "AG lamp -> Run"});
   ExportRequest r;
   r.properties = s.props;
   const auto e = build_export(*s.ts, r);
@@ -85,7 +86,7 @@ PROGRAM Count
   INITIAL_STEP S: Inc(N); END_STEP
   ACTION Inc: IF up AND n < 5 THEN n := n + 1; END_IF; END_ACTION
 END_PROGRAM
-)", {"AG n < 4", "AG n >= -2", "AG n <> 7"});
+)", {"AG n < 4", "AG n >= -2", "AG n != 7"});
   ExportRequest r;
   r.properties = s.props;
   const auto e = build_export(*s.ts, r);
