@@ -250,7 +250,10 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
   if (!aig.constraints().empty()) out << "hidden byte assumed;\n";
   out << "\nactive proctype cycle()\n{\n  do\n  :: atomic {\n";
-  for (std::size_t b = 0; b < aig.bad().size(); ++b)
+  bool has_gates = false;
+  for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
+    has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
+  for (std::size_t b = 0; b < aig.bad().size() && has_gates; ++b)  // Spin rejects empty d_steps
     if (!only_bad || *only_bad == b) {
       // The bad literal may read gates; evaluate them on the current state first.
       out << "       d_step {\n";
