@@ -149,9 +149,10 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   } else {
     std::string comment;
     for (const auto& h : exported.model.header) comment += h + "\n";
-    comment += "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
-               "constraint; each bad output is `sfcv_valid & bad`.\n";
     const auto& m = exported.model;
+    if (!m.aig.constraints().empty())
+      comment += "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
+                 "constraint; each bad output is `sfcv_valid & bad`.\n";
     for (std::size_t l = 0; l < m.latch_comments.size(); ++l)
       comment += "l" + std::to_string(l) + " " + m.aig.latches()[l].name + ": " +
                  m.latch_comments[l] + "\n";
