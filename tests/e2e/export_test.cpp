@@ -144,5 +144,40 @@ TEST(CheckNusmv, SaysSoWhenNoNusmvIsFound) {
   EXPECT_NE(r.err.find("no NuSMV found on PATH"), std::string::npos) << r.err;
 }
 
+// A stand-in NuSMV (the real one is not packaged in Debian) printing NuSMV 2.6's verdict lines:
+// the verdicts must be mapped back to the properties in order, and NuSMV's exit code 0 ignored.
+TEST(CheckNusmv, MapsVerdictLinesBackToTheProperties) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / ("sfcv-fake-nusmv-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream f(dir / "NuSMV");
+    f << "#!/bin/sh\n"
+         "echo '*** This is NuSMV 2.6.0'\n"
+         "echo '-- specification AG (EF ChemicalPlant_s9)  is true'\n"
+         "echo '-- invariant !(g80)  is true'\n"
+         "echo '-- invariant !(g93)  is false'\n"
+         "echo '-- as demonstrated by the following execution sequence'\n"
+         "exit 0\n";
+  }
+  fs::permissions(dir / "NuSMV", fs::perms::owner_all);
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", dir.c_str(), 1);
+  const auto r = run_sfcv("check " + quoted("examples/chemical_plant/chemical_plant.st") +
+                          " --engine nusmv --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' "
+                          "--ctl 'AG EF s9' --json");
+  ::setenv("PATH", saved.c_str(), 1);
+  fs::remove_all(dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const auto v13 = r.out.find("AG !(V1 & V3)"), v24 = r.out.find("AG !(V2 & V4)");
+  ASSERT_NE(v13, std::string::npos) << r.out;
+  ASSERT_NE(v24, std::string::npos) << r.out;
+  // Each property's verdict follows its name in the JSON report.
+  EXPECT_NE(r.out.substr(v13, v24 - v13).find("\"holds\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.substr(v24).find("\"violated\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"nusmv\""), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace sfcv::test

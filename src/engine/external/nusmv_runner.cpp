@@ -49,6 +49,13 @@ class NusmvModelChecker final : public ModelChecker {
     if (!task.checks.empty())
       return no("--engine nusmv checks properties only (use --checks none)");
     if (task.properties.empty()) return no("--engine nusmv needs at least one property");
+    try {  // what the circuit cannot express is bad input, before NuSMV runs
+      ExportRequest request;
+      request.properties = task.properties;
+      build_export(*task.system, request);
+    } catch (const ExportError& e) {
+      return no(std::string("--engine nusmv: ") + e.what());
+    }
     return true;
   }
 
