@@ -36,11 +36,15 @@ AigLit compare_bits(Aig& aig, const BitVector& bits, std::int64_t lo, logic::Com
                     std::int64_t c) {
   using logic::CompareOp;
   const auto width = static_cast<std::uint32_t>(bits.size());
-  const std::int64_t k = c - lo;
+  std::int64_t k = 0;
+  const bool overflow = __builtin_sub_overflow(c, lo, &k);  // constants far outside the range
   const std::int64_t max = width >= 62 ? INT64_MAX : (std::int64_t{1} << width) - 1;
   // e < k, e == k with k clamped to the representable range.
   AigLit less, equal;
-  if (k < 0) {
+  if (overflow) {
+    less = c > lo ? Aig::kTrue : Aig::kFalse;
+    equal = Aig::kFalse;
+  } else if (k < 0) {
     less = Aig::kFalse;
     equal = Aig::kFalse;
   } else if (k > max) {
