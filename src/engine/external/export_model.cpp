@@ -228,6 +228,11 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       }
     }
   }
+  if (cut != Aig::kTrue && !m.ctl.empty()) {
+    m.header.push_back("CTL: sfcv quantifies over maximal paths (a path may end in a state whose");
+    m.header.push_back("every cycle is cut), NuSMV over infinite ones; invariants agree always,");
+    m.header.push_back("other CTL when every reachable state has an allowed successor.");
+  }
   return out;
 }
 
