@@ -93,6 +93,17 @@ class SymbolicMachine {
     return static_cast<std::int64_t>(r);
   }
 
+  AigLit compare(Op cmp, const Value& x, const Value& k) {
+    switch (cmp) {
+      case Op::Eq: return equal(x, k);
+      case Op::Ne: return aig_.make_not(equal(x, k));
+      case Op::Lt: return less(x, k);
+      case Op::Le: return aig_.make_not(less(k, x));
+      case Op::Gt: return less(k, x);
+      default: return aig_.make_not(less(x, k));
+    }
+  }
+
   void raise(AigLit guard, AigLit condition) {
     c_.range_error = aig_.make_or(c_.range_error, aig_.make_and(guard, condition));
   }
@@ -195,18 +206,10 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
     case Op::Const: return constant(n.k);
     case Op::Field: return nxt_[n.a];
     case Op::Input: return input_value(n.a);
-    case Op::InputCmp: {
-      const Value x = input_value(n.a), k = constant(n.k);
-      AigLit r = Aig::kFalse;
-      switch (n.cmp) {
-        case Op::Eq: r = equal(x, k); break;
-        case Op::Ne: r = aig_.make_not(equal(x, k)); break;
-        case Op::Lt: r = less(x, k); break;
-        case Op::Le: r = aig_.make_not(less(k, x)); break;
-        case Op::Gt: r = less(k, x); break;
-        default: r = aig_.make_not(less(x, k)); break;
-      }
-      return from_bool(r);
+    case Op::InputCmp: return from_bool(compare(n.cmp, input_value(n.a), constant(n.k)));
+    case Op::InputCmpExpr: {
+      const Value k = eval(kid[0], guard);
+      return from_bool(compare(n.cmp, input_value(n.a), k));
     }
     case Op::StepX: return from_bool(step_active_cur(n.a));
     case Op::StepT: {
@@ -282,16 +285,7 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
     case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: {
       const Value x = eval(kid[0], guard);
       const Value y = eval(kid[1], guard);
-      AigLit r = Aig::kFalse;
-      switch (n.op) {
-        case Op::Eq: r = equal(x, y); break;
-        case Op::Ne: r = aig_.make_not(equal(x, y)); break;
-        case Op::Lt: r = less(x, y); break;
-        case Op::Le: r = aig_.make_not(less(y, x)); break;
-        case Op::Gt: r = less(y, x); break;
-        default: r = aig_.make_not(less(x, y)); break;
-      }
-      return from_bool(r);
+      return from_bool(compare(n.op, x, y));
     }
   }
   return constant(0);

@@ -184,7 +184,7 @@ PROGRAM Timed
     trig(CLK := go);
     c(CU := trig.Q, R := stop, PV := 3);
     latch(S1 := c.Q, R := stop);
-    IF level > 10 THEN
+    IF level > n + 8 THEN
       n := n + 1;
     ELSIF level = 3 THEN
       n := n - 1;
