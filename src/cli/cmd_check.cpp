@@ -15,6 +15,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
@@ -52,21 +53,6 @@ struct CheckOptions {
   std::string trace_file;
   bool quiet = false;
 };
-
-std::int64_t parse_cycle_ms(const std::string& text) {
-  std::size_t pos = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(text, &pos);
-  } catch (const std::exception&) {
-    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
-  }
-  const auto unit = model::to_upper(text.substr(pos));
-  if (unit == "S") v *= 1000;
-  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
-  if (v <= 0) throw InputError("--cycle must be positive");
-  return v;
-}
 
 report::TraceFormat parse_trace_format(const std::string& s) {
   if (s == "table") return report::TraceFormat::Table;
@@ -153,10 +139,7 @@ int run_check(const CheckOptions& o) {
     throw InputError("bad --semantics '" + o.semantics + "' (expected grafcet or iec61131)");
   model::Diagnostics diags;
   semantics::TransitionSystemPtr ts;
-  semantics::PriorityMode priority = semantics::PriorityMode::Standard;
-  if (o.priority == "none") priority = semantics::PriorityMode::None;
-  else if (o.priority != "standard")
-    throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
+  const semantics::PriorityMode priority = parse_priority(o.priority);
   if (grafcet) {
     semantics::GrafcetOptions opts;
     opts.single_input_change = !o.multi_input_change;
@@ -165,9 +148,7 @@ int run_check(const CheckOptions& o) {
   } else {
     semantics::Iec61131Options opts;
     opts.priority = priority;
-    if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
-    else if (o.time != "abstract")
-      throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
+    opts.time = parse_time_mode(o.time);
     opts.cycle_ms = parse_cycle_ms(o.cycle);
     opts.pous = o.pous;
     opts.assumptions = logic::assumption_exprs(parsed.spec);

@@ -15,6 +15,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/export_model.hpp"
@@ -61,21 +62,6 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
   if (errors) throw InputError("sfcv export: " + what);
 }
 
-std::int64_t cycle_ms(const std::string& text) {
-  std::size_t pos = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(text, &pos);
-  } catch (const std::exception&) {
-    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
-  }
-  const auto unit = model::to_upper(text.substr(pos));
-  if (unit == "S") v *= 1000;
-  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
-  if (v <= 0) throw InputError("--cycle must be positive");
-  return v;
-}
-
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
 void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume};
@@ -87,13 +73,9 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
 
   semantics::Iec61131Options opts;
-  if (o.priority == "none") opts.priority = semantics::PriorityMode::None;
-  else if (o.priority != "standard")
-    throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
-  if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
-  else if (o.time != "abstract")
-    throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
-  opts.cycle_ms = cycle_ms(o.cycle);
+  opts.priority = parse_priority(o.priority);
+  opts.time = parse_time_mode(o.time);
+  opts.cycle_ms = parse_cycle_ms(o.cycle);
   opts.pous = o.pous;
   opts.assumptions = logic::assumption_exprs(parsed.spec);
   model::Diagnostics diags;

@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
 #include "engine/explicit/query_evaluator.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
@@ -96,9 +97,7 @@ semantics::TransitionSystemPtr build_system(const model::Project& project, const
     if (o.multi_input_change)
       throw InputError("--multi-input-change applies to the Grafcet semantics only");
     semantics::Iec61131Options i;
-    if (o.priority == "standard") i.priority = semantics::PriorityMode::Standard;
-    else if (o.priority == "none") i.priority = semantics::PriorityMode::None;
-    else throw InputError("unknown --priority '" + o.priority + "' (expected standard or none)");
+    i.priority = parse_priority(o.priority);
     i.pous = o.pous;
     ts = semantics::make_iec61131_system(project, i, diags);
   } else {

@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
 #include "io/st_parser.hpp"
 #include "model/names.hpp"
@@ -37,21 +38,6 @@ struct SimulateOptions {
   std::vector<std::string> assumptions;
   long long max_cycles = -1;
 };
-
-std::int64_t parse_cycle(const std::string& text) {
-  std::size_t pos = 0;
-  long long v = 0;
-  try {
-    v = std::stoll(text, &pos);
-  } catch (const std::exception&) {
-    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
-  }
-  const std::string unit = model::to_upper(text.substr(pos));
-  if (unit == "S") v *= 1000;
-  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
-  if (v <= 0) throw InputError("--cycle must be positive");
-  return v;
-}
 
 std::vector<std::string> split_csv(const std::string& line, std::vector<std::size_t>& columns) {
   std::vector<std::string> out;
@@ -237,13 +223,9 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
 int run_simulate(const SimulateOptions& o) {
   auto project = load_model_or_throw(o.model, parse_format(o.format));
   semantics::Iec61131Options opts;
-  if (o.priority == "standard") opts.priority = semantics::PriorityMode::Standard;
-  else if (o.priority == "none") opts.priority = semantics::PriorityMode::None;
-  else throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
-  if (o.time == "abstract") opts.time = semantics::TimeMode::Abstract;
-  else if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
-  else throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
-  opts.cycle_ms = parse_cycle(o.cycle);
+  opts.priority = parse_priority(o.priority);
+  opts.time = parse_time_mode(o.time);
+  opts.cycle_ms = parse_cycle_ms(o.cycle);
   if (o.action_order == "declaration") opts.action_order = semantics::ActionOrder::Declaration;
   else if (o.action_order == "alphabetical") opts.action_order = semantics::ActionOrder::Alphabetical;
   else throw InputError("bad --action-order '" + o.action_order + "' (expected declaration or alphabetical)");
