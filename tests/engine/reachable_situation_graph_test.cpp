@@ -108,3 +108,54 @@ TEST(StateStore, InsertsFindsAndGrows) {
 
 }  // namespace
 }  // namespace sfcv::engine
+
+namespace sfcv::engine {
+namespace {
+
+// A system whose single initial call enumerates a huge number of states: the limits must stop
+// it from inside the sink (a Grafcet stabilised under every initial input valuation does this).
+class Flood final : public semantics::TransitionSystem {
+ public:
+  Flood() { field_ = layout_.add_field("x", semantics::FieldKind::Variable, 0, (1LL << 40)); }
+  semantics::SemanticsKind kind() const override { return semantics::SemanticsKind::Grafcet; }
+  const semantics::StateLayout& layout() const override { return layout_; }
+  const std::vector<semantics::InputVariable>& inputs() const override { return inputs_; }
+  const std::vector<semantics::Observable>& observables() const override { return obs_; }
+  const std::vector<semantics::TransitionInfo>& transitions() const override { return trs_; }
+  void initial_states(semantics::SuccessorSink& sink) const override {
+    std::vector<semantics::StateWord> s(layout_.words());
+    const auto always = semantics::InputCondition::always();
+    for (std::int64_t i = 0; i < (1LL << 40); ++i) {
+      layout_.set(s, field_, i);
+      sink.successor({s, always, {}});
+    }
+  }
+  void successors(semantics::StateView, semantics::SuccessorSink&) const override {}
+  std::int64_t observe(semantics::StateView, std::uint32_t) const override { return 0; }
+
+ private:
+  semantics::StateLayout layout_;
+  std::uint32_t field_;
+  std::vector<semantics::InputVariable> inputs_;
+  std::vector<semantics::Observable> obs_;
+  std::vector<semantics::TransitionInfo> trs_;
+};
+
+TEST(ReachableSituationGraph, LimitsStopAnEnumerationInsideOneCall) {
+  Flood flood;
+  ExplorationOptions by_states;
+  by_states.max_states = 5000;
+  const auto g = build_reachable_situation_graph(flood, by_states);
+  EXPECT_FALSE(g.complete());
+  EXPECT_EQ(g.limit_reached(), "states");
+  EXPECT_LE(g.num_states(), 5002u);
+
+  ExplorationOptions by_time;
+  by_time.timeout_seconds = 0.2;
+  const auto t = build_reachable_situation_graph(flood, by_time);
+  EXPECT_FALSE(t.complete());
+  EXPECT_EQ(t.limit_reached(), "time");
+}
+
+}  // namespace
+}  // namespace sfcv::engine

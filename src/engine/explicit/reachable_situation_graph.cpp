@@ -1,6 +1,7 @@
 #include "engine/explicit/reachable_situation_graph.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <unordered_map>
 
 namespace sfcv::engine {
@@ -32,9 +33,18 @@ struct PendingEdge {
   std::vector<std::uint32_t> fired;
 };
 
+/// Thrown by the sink when a limit is reached in the middle of one state's successors (or of
+/// the initial states): a semantics may enumerate very many of them in one call (a Grafcet
+/// stabilised under every initial input valuation), so limits cannot wait for the next state.
+struct LimitReached {
+  const char* which;
+};
+
 class Collector final : public semantics::SuccessorSink {
  public:
-  explicit Collector(StateStore& store) : store_(store) {}
+  Collector(StateStore& store, const ExplorationOptions& limits,
+            std::chrono::steady_clock::time_point start)
+      : store_(store), limits_(limits), start_(start) {}
 
   void begin() {
     pending.clear();
@@ -42,6 +52,15 @@ class Collector final : public semantics::SuccessorSink {
   }
 
   void successor(const semantics::Successor& s) override {
+    if (limits_.max_states > 0 && store_.size() > limits_.max_states) throw LimitReached{"states"};
+    if ((++calls_ & 1023U) == 0) {
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      if (limits_.timeout_seconds > 0 && seconds > limits_.timeout_seconds)
+        throw LimitReached{"time"};
+      if (limits_.max_memory_bytes > 0 && store_.memory_bytes() > limits_.max_memory_bytes)
+        throw LimitReached{"memory"};
+    }
     const std::uint32_t index = store_.insert(s.target).first;
     // Find this target's pending edge in O(1): a generation-stamped slot per state index.
     if (index >= stamp_.size()) {
@@ -73,6 +92,9 @@ class Collector final : public semantics::SuccessorSink {
 
  private:
   StateStore& store_;
+  const ExplorationOptions& limits_;
+  std::chrono::steady_clock::time_point start_;
+  std::uint64_t calls_ = 0;
   std::vector<std::uint32_t> stamp_, slot_;
   std::uint32_t generation_ = 0;
 };
@@ -159,9 +181,13 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
 
   // Initial states: merge the conditions of duplicates.
   {
-    Collector init(g.states_);
+    Collector init(g.states_, options, start);
     init.begin();
-    ts.initial_states(init);
+    try {
+      ts.initial_states(init);
+    } catch (const LimitReached& stop) {
+      g.limit_ = stop.which;
+    }
     for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
     for (const auto& p : init.pending) {
       g.initial_.push_back(p.target);
@@ -173,12 +199,12 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     g.depth_.assign(n, 0);
   }
 
-  Collector collect(g.states_);
+  Collector collect(g.states_, options, start);
   std::vector<semantics::StateWord> current;
   ExplorationProgress progress;
   std::uint64_t next_report = options.progress_interval;
-  g.complete_ = true;
-  for (std::uint32_t s = 0; s < g.states_.size(); ++s) {
+  g.complete_ = g.limit_.empty();
+  for (std::uint32_t s = 0; g.complete_ && s < g.states_.size(); ++s) {
     if ((s & 1023U) == 0) {
       if (options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) {
         g.limit_ = "time";
@@ -201,7 +227,14 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     // The sink inserts into the store, which may reallocate: the system must read a copy.
     const auto view = g.states_.at(s);
     current.assign(view.begin(), view.end());
-    ts.successors(current, collect);
+    try {
+      ts.successors(current, collect);
+    } catch (const LimitReached& stop) {
+      // State s stays unexpanded: the edges found so far are dropped with it.
+      g.limit_ = stop.which;
+      g.complete_ = false;
+      break;
+    }
     // States numbered from `known` on were first reached from s: s is their BFS parent.
     g.parent_edge_state_.resize(g.states_.size(), ReachableSituationGraph::kNone);
     g.parent_edge_.resize(g.states_.size(), 0);
