@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Turns bench/run's results.csv into a Markdown table (one row per model) with ratios.
+
+sfcv's time for the ratios is its faster engine that finished (explicit or BDD); a tool that did
+not finish is shown with its status and gets no ratio.
+"""
+import csv
+import sys
+from collections import OrderedDict
+
+
+def cell(r):
+    if r is None:
+        return "-"
+    if r["status"] != "ok":
+        return r["status"]
+    mb = f" / {int(r['peak_kb']) / 1024:.0f} MB" if r["peak_kb"] else ""
+    return f"{float(r['seconds']):.2f} s{mb}"
+
+
+def secs(r):
+    return float(r["seconds"]) if r and r["status"] == "ok" and r["seconds"] else None
+
+
+def main(path):
+    cases = OrderedDict()
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            cases.setdefault((r["family"], r["size"], r["variant"]), {})[r["tool"]] = r
+    cols = ["family", "N", "variant", "states", "edges", "sfcv explicit", "sfcv BDD", "sfcv RSG",
+            "Spin (pan)", "Spin states", "ABC pdr", "verdicts", "Spin / sfcv", "ABC / sfcv"]
+    print("| " + " | ".join(cols) + " |")
+    print("|" + "---|" * len(cols))
+    for (fam, size, variant), t in cases.items():
+        ex, bdd, rsg = t.get("sfcv-explicit"), t.get("sfcv-bdd"), t.get("sfcv-rsg")
+        spin, abc = t.get("spin"), t.get("abc-pdr")
+        states = edges = ""
+        for r in (ex, rsg, bdd):
+            if r and r["status"] == "ok" and r["states"]:
+                states, edges = r["states"], r["edges"]
+                break
+        verdicts = {r["verdict"] for r in (ex, bdd, spin, abc) if r and r["verdict"]}
+        verdict = "" if not verdicts else (verdicts.pop() if len(verdicts) == 1 else
+                                           "DISAGREE: " + ",".join(
+                                               f"{k}={r['verdict']}" for k, r in t.items()))
+        sfcv_times = [s for s in (secs(ex), secs(bdd), secs(rsg)) if s is not None]
+        best = min(sfcv_times) if sfcv_times else None
+
+        def ratio(r):
+            s = secs(r)
+            if s is None or best is None:
+                return "-"
+            return f"{s / max(best, 0.01):.1f}"
+
+        spin_cell = cell(spin)
+        if spin and spin["prep_seconds"]:
+            spin_cell += f" (+{float(spin['prep_seconds']):.1f} s build)"
+        row = [fam, size, variant, states, edges, cell(ex), cell(bdd), cell(rsg), spin_cell,
+               spin["states"] if spin and spin["states"] else "-", cell(abc), verdict,
+               ratio(spin), ratio(abc)]
+        print("| " + " | ".join(row) + " |")
+    print()
+    print("Times are wall-clock seconds / peak resident memory (GNU time). Ratios divide the other "
+          "tool's time by sfcv's faster engine (times under 0.01 s count as 0.01 s); Spin's time "
+          "is pan's search, its build (spin -a and the C compiler) is shown apart.")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
