@@ -12,8 +12,8 @@ from collections import OrderedDict
 def cell(r):
     if r is None:
         return "-"
-    if r["status"] != "ok":
-        return r["status"]
+    if r["status"] != "ok" or not r["seconds"]:
+        return r["status"] if r["status"] != "ok" else "?"
     mb = f" / {int(r['peak_kb']) / 1024:.0f} MB" if r["peak_kb"] else ""
     return f"{float(r['seconds']):.2f} s{mb}"
 
