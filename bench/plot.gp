@@ -5,22 +5,22 @@ if (!exists("csv")) csv = 'out/bench-full/results.csv'
 if (!exists("png")) png = 'docs/benchmarks.png'
 set terminal pngcairo size 1400,1000 font ",11"
 set output png
-set datafile separator ','
 set logscale y
 set grid
 set key top left
 set xlabel 'N'
 set ylabel 'wall time (s)'
-sel(f, v, t, x) = (strcol(1) eq f && strcol(3) eq v && strcol(4) eq t && strcol(5) eq "ok" && strcol(7) ne "") ? x : 1/0
+# "N seconds" rows of one family, variant and tool that finished, sorted by N.
+rows(f, v, t) = sprintf("< awk -F, '$1==\"%s\" && $3==\"%s\" && $4==\"%s\" && $5==\"ok\" && $7!=\"\" {print $2, $7}' %s | sort -n", f, v, t, csv)
 tools = "sfcv-explicit sfcv-bdd spin abc-pdr"
 titles = "'sfcv explicit' 'sfcv BDD' 'Spin (pan search)' 'ABC pdr'"
 set multiplot layout 2,2 title 'sfcv against Spin and ABC (bench/run)'
 set title 'parallel N --selector (2^N+1 states)'
-plot for [t in tools] csv using (sel("parallel", "selector", t, $2)):(column(7)) smooth unique with linespoints title t
+plot for [t in tools] rows("parallel", "selector", t) using 1:2 with linespoints title t
 set title 'parallel N, free inputs (2^N+1 states, 2^N successors each)'
-plot for [t in tools] csv using (sel("parallel", "free", t, $2)):(column(7)) smooth unique with linespoints title t
+plot for [t in tools] rows("parallel", "free", t) using 1:2 with linespoints title t
 set title 'tanks N (fixed)'
-plot for [t in tools] csv using (sel("tanks", "fixed", t, $2)):(column(7)) smooth unique with linespoints title t
+plot for [t in tools] rows("tanks", "fixed", t) using 1:2 with linespoints title t
 set title 'transfer N (Grafcet, sfcv rsg)'
-plot csv using (sel("transfer", "", "sfcv-rsg", $2)):(column(7)) smooth unique with linespoints title 'sfcv rsg'
+plot rows("transfer", "", "sfcv-rsg") using 1:2 with linespoints title 'sfcv rsg'
 unset multiplot

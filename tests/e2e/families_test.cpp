@@ -81,6 +81,7 @@ TEST(Families, ParallelSelectorHas2PowNPlus1States) {
   const auto f = generate("parallel 3 --selector", ".st");
   const auto ex = check(f, "explicit", "AG !(A0 & B0)");
   EXPECT_EQ(ex.states, 9u);
+  EXPECT_EQ(ex.edges, 25u);  // Init -> all A; then sel in 0..2 toggles one of 3 branches
   EXPECT_EQ(ex.verdict, "holds");
   const auto bdd = check(f, "bdd", "AG !(A0 & B0)");
   EXPECT_EQ(bdd.states, 9u);
