@@ -1,5 +1,5 @@
 # gnuplot -e "csv='out/bench-full/results.csv'; png='docs/benchmarks.png'" bench/plot.gp
-# Wall time against size per tool (log scale), one panel per family; runs that did not finish
+# CPU time against size per tool (log scale), one panel per family; runs that did not finish
 # (timeout, error) are left out of the curves and listed in the table of docs/benchmarks.md.
 if (!exists("csv")) csv = 'out/bench-full/results.csv'
 if (!exists("png")) png = 'docs/benchmarks.png'
@@ -9,9 +9,9 @@ set logscale y
 set grid
 set key top left
 set xlabel 'N'
-set ylabel 'wall time (s)'
+set ylabel 'CPU time, user + system (s)'
 # "N seconds" rows of one family, variant and tool that finished, sorted by N.
-rows(f, v, t) = sprintf("< awk -F, '$1==\"%s\" && $3==\"%s\" && $4==\"%s\" && $5==\"ok\" && $7!=\"\" {print $2, $7}' %s | sort -n", f, v, t, csv)
+rows(f, v, t) = sprintf("< awk -F, '$1==\"%s\" && $3==\"%s\" && $4==\"%s\" && $5==\"ok\" && $12!=\"\" {print $2, $12}' %s | sort -n", f, v, t, csv)
 tools = "sfcv-explicit sfcv-bdd spin abc-pdr"
 titles = "'sfcv explicit' 'sfcv BDD' 'Spin (pan search)' 'ABC pdr'"
 set multiplot layout 2,2 title 'sfcv against Spin and ABC (bench/run)'
