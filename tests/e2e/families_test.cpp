@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
+#include <vector>
 
+#include "io/load.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace {
@@ -25,7 +27,8 @@ std::string generate(const std::string& args, const std::string& ext) {
 
 /// Whether this build's sfcv has the info command (it lands with the validate-info branch).
 bool info_is_built() {
-  return run_sfcv("info /dev/null").err.find("not built yet") == std::string::npos;
+  const auto r = run_sfcv("info '" + generate("parallel 1", ".st") + "'");
+  return r.err.find("not built yet") == std::string::npos;
 }
 
 /// `sfcv info --json`: total steps and transitions.
@@ -155,20 +158,41 @@ TEST(Families, TransferLineUnusedInputsDoNotChangeTheRsg) {
   EXPECT_EQ(std::get<2>(spare), std::get<2>(plain));
 }
 
-TEST(Families, EveryFamilyLoadsInSfcvInfo) {
-  if (!info_is_built()) GTEST_SKIP() << "sfcv info is not built in this tree";
-  expect_info(generate("parallel 3 --selector", ".st"), 7, 7);  // Init + A_i, B_i
-  expect_info(generate("parallel 4", ".st"), 9, 9);
-  for (const std::uint32_t n : {1u, 2u}) {
-    // Start + 7 steps per reactor; Start's divergence + 7 transitions per reactor.
-    expect_info(generate("tanks " + std::to_string(n), ".st"), 1 + 7 * n, 1 + 7 * n);
-    expect_info(generate("tanks " + std::to_string(n) + " --flawed", ".st"), 1 + 7 * n,
-                1 + 7 * n);
+TEST(Families, EveryFamilyLoadsWithTheHandCountedStructure) {
+  struct Case {
+    std::string args, ext;
+    std::size_t steps, transitions;
+  };
+  const std::vector<Case> cases = {
+      {"parallel 3 --selector", ".st", 7, 7},  // Init + A_i, B_i; Init's divergence + 2 each
+      {"parallel 4", ".st", 9, 9},
+      {"tanks 1", ".st", 8, 8},  // Start + 7 steps, divergence + 7 transitions per reactor
+      {"tanks 2 --flawed", ".st", 15, 15},
+      {"nested 3", ".st", 8, 8},  // two steps and two transitions per level
+      {"transfer 2 --unused 3", ".g7", 8, 8},  // four of each per station
+  };
+  const bool info = info_is_built();
+  for (const auto& c : cases) {
+    const auto f = generate(c.args, c.ext);
+    const auto loaded = sfcv::io::load_file(f);
+    ASSERT_TRUE(loaded.project) << c.args;
+    std::size_t steps = 0, transitions = 0;
+    for (const auto& pou : loaded.project->pous)
+      for (const auto& chart : pou.charts) {
+        steps += chart.steps.size();
+        transitions += chart.transitions.size();
+      }
+    EXPECT_EQ(steps, c.steps) << c.args;
+    EXPECT_EQ(transitions, c.transitions) << c.args;
+    if (info) expect_info(f, c.steps, c.transitions);
   }
-  expect_info(generate("nested 3", ".st"), 8, 8);  // two steps and two transitions per level
-  expect_info(generate("transfer 2 --unused 3", ".g7"), 8, 8);  // four of each per station
-  const auto r = run_sfcv("info --json '" + generate("random 20 --inputs 3 --seed 1", ".st") + "'");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto random = generate("random 20 --inputs 3 --seed 1", ".st");
+  EXPECT_TRUE(sfcv::io::load_file(random).project);
+  if (info) {
+    EXPECT_EQ(run_sfcv("info --json '" + random + "'").exit_code, 0);
+  }
+  // sfcv info lands with the validate-info branch; until then only the library counts ran.
+  if (!info) GTEST_SKIP() << "sfcv info is not built in this tree: library counts only";
 }
 
 }  // namespace
