@@ -40,10 +40,16 @@ def main(path):
             if r and r["status"] == "ok" and r["states"]:
                 states, edges = r["states"], r["edges"]
                 break
-        verdicts = {r["verdict"] for r in (ex, bdd, spin, abc) if r and r["verdict"]}
-        verdict = "" if not verdicts else (verdicts.pop() if len(verdicts) == 1 else
-                                           "DISAGREE: " + ",".join(
-                                               f"{k}={r['verdict']}" for k, r in t.items()))
+        # Definitive verdicts must agree; an "unknown" (e.g. Spin's depth bound) is listed apart.
+        definite = {r["verdict"] for r in (ex, bdd, spin, abc)
+                    if r and r["verdict"] in ("holds", "violated")}
+        unsure = [k for k, r in t.items() if r["verdict"] == "unknown"]
+        if len(definite) > 1:
+            verdict = "DISAGREE: " + ", ".join(f"{k}={r['verdict']}" for k, r in t.items())
+        else:
+            verdict = definite.pop() if definite else ""
+            if unsure:
+                verdict += " (unknown: " + ", ".join(unsure) + ")"
         sfcv_times = [s for s in (secs(ex), secs(bdd), secs(rsg)) if s is not None]
         best = min(sfcv_times) if sfcv_times else None
 
