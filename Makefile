@@ -2,6 +2,8 @@
 PRESET ?= release
 JOBS ?= $(shell nproc)
 DEMO_CHART ?= examples/chemical_plant/chemical_plant.st
+# The paper's checks: every step reachable and re-enterable, T1 safe, T2's valves overlap.
+DEMO_ARGS ?= --checks reachable,dead-transitions,reentry --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)'
 
 .PHONY: deps build demo test test-asan clean
 
@@ -14,7 +16,7 @@ build: deps
 
 demo: build
 	@if [ -f "$(DEMO_CHART)" ]; then \
-	  ./build/$(PRESET)/sfcv check $(DEMO_CHART); status=$$?; \
+	  ./build/$(PRESET)/sfcv check $(DEMO_CHART) $(DEMO_ARGS); status=$$?; \
 	  echo "(sfcv exit code: $$status)"; \
 	else \
 	  echo "demo: the example chart $(DEMO_CHART) does not exist yet"; \

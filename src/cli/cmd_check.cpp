@@ -18,6 +18,7 @@
 #include "cli/load_model.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/names.hpp"
 #include "report/check_render.hpp"
@@ -100,6 +101,15 @@ constexpr std::uint32_t kAutoBddBits = 40;
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       std::uint32_t state_bits, bool quiet) {
   std::string why;
+  if (name == "nusmv") {
+    const auto nusmv = engine::find_nusmv();
+    if (!nusmv)
+      throw InputError("sfcv check --engine nusmv: no NuSMV found on PATH (NuSMV is not packaged "
+                       "in Debian; see docs/exports.md)");
+    auto checker = engine::make_nusmv_model_checker(*nusmv);
+    if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+    return checker;
+  }
   if (name == "bdd") {
     auto bdd = engine::make_bdd_model_checker();
     if (!bdd->can_handle(task, &why)) throw InputError("sfcv check: " + why);
@@ -133,8 +143,8 @@ int run_check(const CheckOptions& o) {
       o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
-  if (o.engine != "explicit" && o.engine != "auto" && o.engine != "bdd")
-    throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd or auto)");
+  if (o.engine != "explicit" && o.engine != "auto" && o.engine != "bdd" && o.engine != "nusmv")
+    throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
   const bool grafcet = o.semantics.empty() ? project.dialect == model::Dialect::Grafcet
@@ -244,7 +254,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "explicit (default), bdd or auto");
+  sub->add_option("--engine", opts->engine, "explicit (default), bdd, auto, or nusmv (a NuSMV on PATH)");
   sub->add_option("--semantics", opts->semantics, "grafcet or iec61131 (default: from the model)");
   sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
   sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");

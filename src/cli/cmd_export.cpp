@@ -1,10 +1,30 @@
+// sfcv export: the chart for outside checkers (NuSMV, Cadence SMV, Promela, AIGER) or people
+// (DOT, IEC text, .g7). The circuit exports mean what sfcv check means: engine/external/
+// export_model.hpp says how.
+
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <fstream>
+#include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
-#include "cli/not_built.hpp"
+#include "engine/external/aiger_writer.hpp"
+#include "engine/external/export_model.hpp"
+#include "io/g7_writer.hpp"
+#include "io/iec_text_writer.hpp"
+#include "logic/check_inputs.hpp"
+#include "logic/formula.hpp"
+#include "model/names.hpp"
+#include "report/chart_dot.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
@@ -12,20 +32,200 @@ namespace {
 struct ExportOptions {
   std::string model;
   std::string format = "auto";
+  std::string to;
+  std::string output;
+  std::vector<std::string> ctl;
+  std::string spec;
+  std::vector<std::string> assume;
+  std::string checks;  ///< empty: reachability when no property is given
+  std::vector<std::string> pous;
+  std::string priority = "standard";
+  std::string time = "abstract";
+  std::string cycle = "10ms";
 };
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot open the spec file");
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
+  bool errors = false;
+  for (const auto& d : diags) {
+    std::cerr << d.str() << "\n";
+    errors = errors || d.severity == model::Severity::Error;
+  }
+  if (errors) throw InputError("sfcv export: " + what);
+}
+
+std::int64_t cycle_ms(const std::string& text) {
+  std::size_t pos = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(text, &pos);
+  } catch (const std::exception&) {
+    throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
+  }
+  const auto unit = model::to_upper(text.substr(pos));
+  if (unit == "S") v *= 1000;
+  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
+  if (v <= 0) throw InputError("--cycle must be positive");
+  return v;
+}
+
+// The circuit exports: nusmv, casmv, promela, aiger, aag.
+void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
+  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume};
+  auto parsed = logic::parse_check_inputs(inputs);
+  print_or_throw(parsed.diagnostics, "errors in the properties");
+  if (!parsed.spec.fairness.empty())
+    throw InputError("sfcv export: fairness constraints are not exported yet");
+  if (project.dialect == model::Dialect::Grafcet)
+    throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
+
+  semantics::Iec61131Options opts;
+  if (o.priority == "none") opts.priority = semantics::PriorityMode::None;
+  else if (o.priority != "standard")
+    throw InputError("bad --priority '" + o.priority + "' (expected standard or none)");
+  if (o.time == "discrete") opts.time = semantics::TimeMode::Discrete;
+  else if (o.time != "abstract")
+    throw InputError("bad --time '" + o.time + "' (expected abstract or discrete)");
+  opts.cycle_ms = cycle_ms(o.cycle);
+  opts.pous = o.pous;
+  opts.assumptions = logic::assumption_exprs(parsed.spec);
+  model::Diagnostics diags;
+  auto ts = semantics::make_iec61131_system(project, opts, diags);
+  print_or_throw(diags, "the model cannot be exported");
+  if (!ts) throw InputError("sfcv export: the model cannot be exported");
+
+  logic::CheckTask task;
+  task.system = ts.get();
+  model::Diagnostics resolve_diags;
+  logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
+  print_or_throw(resolve_diags, "errors in the properties");
+
+  std::string why;
+  const auto checks = logic::parse_check_selection(
+      o.checks.empty() ? (task.properties.empty() ? "reachable" : "none") : o.checks, &why);
+  if (!checks) throw InputError(why);
+  engine::ExportRequest request;
+  const bool smv = o.to == "nusmv" || o.to == "casmv";
+  request.target = smv ? engine::ExportTarget::Smv : engine::ExportTarget::Circuit;
+  request.properties = task.properties;
+  for (auto c : *checks) {
+    if (c == logic::StandardCheck::Reachable) request.reachability = true;
+    else
+      std::cerr << "sfcv export: the standard check '" << logic::to_string(c)
+                << "' is not exported (only 'reachable' is)\n";
+  }
+  request.header = {"Exported by sfcv from " + o.model + " (IEC 61131-3 semantics, priority " +
+                    o.priority + ", time " + o.time +
+                    (o.time == "discrete" ? ", cycle " + o.cycle : "") + ")"};
+  for (const auto& a : parsed.spec.assumptions)
+    request.header.push_back("assumption: " + logic::to_string(a.formula));
+
+  engine::ExportedModel exported;
+  try {
+    exported = engine::build_export(*ts, request);
+  } catch (const engine::ExportError& e) {
+    throw InputError(std::string("sfcv export: ") + e.what());
+  }
+  if (!smv && !exported.ctl_only.empty()) {
+    std::string names;
+    for (const auto& n : exported.ctl_only) names += (names.empty() ? "" : ", ") + n;
+    throw InputError("sfcv export --to " + o.to +
+                     ": only invariants (AG p, p without temporal operators) can be exported "
+                     "there; not: " + names + " (use --to nusmv or --to casmv)");
+  }
+  if (o.to == "nusmv") {
+    engine::write_nusmv(out, exported.model);
+  } else if (o.to == "casmv") {
+    engine::write_casmv(out, exported.model);
+  } else if (o.to == "promela") {
+    engine::write_promela(out, exported.model);
+  } else {
+    std::string comment;
+    for (const auto& h : exported.model.header) comment += h + "\n";
+    const auto& m = exported.model;
+    if (!m.aig.constraints().empty())
+      comment += "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
+                 "constraint; each bad output is `sfcv_valid & bad`.\n";
+    for (std::size_t l = 0; l < m.latch_comments.size(); ++l)
+      comment += "l" + std::to_string(l) + " " + m.aig.latches()[l].name + ": " +
+                 m.latch_comments[l] + "\n";
+    for (std::size_t i = 0; i < m.input_comments.size(); ++i)
+      comment += "i" + std::to_string(i) + " " + m.aig.inputs()[i].name + ": " +
+                 m.input_comments[i] + "\n";
+    engine::write_aiger(out, engine::aiger_circuit(exported.model),
+                        o.to == "aiger" ? engine::AigerMode::Binary : engine::AigerMode::Ascii,
+                        comment);
+  }
+}
+
+int run_export(const ExportOptions& o) {
+  static const std::vector<std::string> kTargets = {"nusmv", "casmv", "promela", "aiger",
+                                                    "aag",   "dot",   "iec",     "g7"};
+  if (std::find(kTargets.begin(), kTargets.end(), o.to) == kTargets.end())
+    throw InputError("bad --to '" + o.to +
+                     "' (expected nusmv, casmv, promela, aiger, aag, dot, iec or g7)");
+  if (o.to == "aiger" && o.output.empty() && ::isatty(1))
+    throw InputError("sfcv export --to aiger writes binary AIGER: give -o FILE or redirect "
+                     "standard output (--to aag writes ASCII)");
+  const auto project = load_model_or_throw(o.model, parse_format(o.format));
+
+  std::ostringstream text;
+  try {
+    if (o.to == "dot") {
+      report::print_chart_dot(text, project);
+    } else if (o.to == "iec") {
+      text << io::write_iec_text(project);
+    } else if (o.to == "g7") {
+      text << io::write_g7(project);
+    } else {
+      export_circuit(o, project, text);
+    }
+  } catch (const io::G7WriteError& e) {
+    throw InputError(std::string("sfcv export --to g7: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw InputError("sfcv export --to " + o.to + ": " + e.what());
+  }
+  if (o.output.empty() || o.output == "-") {
+    std::cout << text.str();
+    std::cout.flush();
+  } else {
+    std::ofstream f(o.output, std::ios::binary);
+    if (!f) throw InputError(o.output + ": cannot write");
+    f << text.str();
+  }
+  return kHolds;
+}
 }  // namespace
 
 void add_export_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<ExportOptions>();
-  auto* sub = app.add_subcommand("export", "Export a chart to NuSMV, Promela, AIGER, DOT or IEC text");
+  auto* sub = app.add_subcommand(
+      "export", "Export a chart to NuSMV, Cadence SMV, Promela, AIGER, DOT, IEC text or .g7");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
+  sub->add_option("--to", opts->to, "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7")
+      ->required();
+  sub->add_option("-o,--output", opts->output, "Output file (default: standard output)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--ctl", opts->ctl, "A CTL property (repeatable); promela/aiger: invariants AG p");
+  sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;'");
+  sub->add_option("--assume", opts->assume, "Assumption on inputs and state (repeatable)");
+  sub->add_option("--checks", opts->checks,
+                  "reachable (default without properties) or none: EF X per step (SMV), "
+                  "invariant AG !X per step (promela/aiger)");
+  sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
+  sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");
+  sub->add_option("--time", opts->time, "IEC timers: abstract (default) or discrete");
+  sub->add_option("--cycle", opts->cycle, "IEC cycle time for --time discrete (default 10ms)");
   sub->callback([opts, &selected] {
-    selected = [opts] {
-      load_model_or_throw(opts->model, parse_format(opts->format));
-      return not_built_yet("'sfcv export'");
-    };
+    selected = [opts] { return run_export(*opts); };
   });
 }
 

@@ -1,10 +1,12 @@
 #include <CLI/CLI.hpp>
+#include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
-#include "cli/not_built.hpp"
 
 namespace sfcv::cli {
 
@@ -12,20 +14,66 @@ namespace {
 struct LintOptions {
   std::string model;
   std::string format = "auto";
+  bool json = false;
 };
+
+std::string_view severity_name(model::Severity s) {
+  switch (s) {
+    case model::Severity::Error: return "error";
+    case model::Severity::Warning: return "warning";
+    case model::Severity::Note: break;
+  }
+  return "note";
+}
+
+nlohmann::ordered_json to_json(const model::Diagnostic& d) {
+  nlohmann::ordered_json j;
+  j["file"] = d.where.file;
+  j["line"] = d.where.line;
+  j["column"] = d.where.column;
+  j["element_path"] = d.where.element_path;
+  j["severity"] = severity_name(d.severity);
+  j["message"] = d.message;
+  return j;
+}
+
+std::string plural(std::size_t n, const char* word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+int lint(const LintOptions& opts) {
+  const auto checked = load_and_validate(opts.model, parse_format(opts.format));
+  std::size_t errors = 0, warnings = 0;
+  for (const auto& d : checked.diagnostics) {
+    if (d.severity == model::Severity::Error) ++errors;
+    if (d.severity == model::Severity::Warning) ++warnings;
+  }
+  // An importer that fails without saying why still fails.
+  if (!checked.project && errors == 0) ++errors;
+  if (opts.json) {
+    auto list = nlohmann::ordered_json::array();
+    for (const auto& d : checked.diagnostics) list.push_back(to_json(d));
+    std::cout << list.dump(2) << "\n";
+  } else {
+    for (const auto& d : checked.diagnostics) std::cout << d.str() << "\n";
+    std::cout << plural(errors, "error") << ", " << plural(warnings, "warning") << "\n";
+  }
+  return errors ? kBadInput : kHolds;
+}
 }  // namespace
 
 void add_lint_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<LintOptions>();
-  auto* sub = app.add_subcommand("lint", "Validate a chart's structure, names and types");
+  auto* sub = app.add_subcommand(
+      "lint", "Validate a chart's structure, names and types (exit 2 on errors, 0 otherwise)");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_flag("--json", opts->json,
+                "Print the diagnostics as a JSON array of {file, line, column, element_path, "
+                "severity, message}");
   sub->callback([opts, &selected] {
-    selected = [opts] {
-      load_model_or_throw(opts->model, parse_format(opts->format));
-      return not_built_yet("'sfcv lint'");
-    };
+    selected = [opts] { return lint(*opts); };
   });
 }
 

@@ -71,6 +71,25 @@ std::string inputs_of(const semantics::TransitionSystem& ts, semantics::StateVie
   return out;
 }
 
+/// Under the single-input-change rule: which input changed between two nodes ("a rises",
+/// "n: 0 -> 5"), or "a delay elapses" when none did.
+std::string event_of(const semantics::TransitionSystem& ts, semantics::StateView from,
+                     semantics::StateView to) {
+  for (std::uint32_t i = 0; i < ts.observables().size(); ++i) {
+    const auto& o = ts.observables()[i];
+    if (o.kind != semantics::ObservableKind::Variable || o.is_output) continue;
+    bool is_input = false;
+    for (const auto& in : ts.inputs())
+      if (in.name == o.name && !in.pseudo) is_input = true;
+    if (!is_input) continue;
+    const auto a = ts.observe(from, i), b = ts.observe(to, i);
+    if (a == b) continue;
+    if (o.type.kind == model::TypeKind::Bool) return o.name + (b ? " rises" : " falls");
+    return o.name + ": " + std::to_string(a) + " -> " + std::to_string(b);
+  }
+  return "a delay elapses";
+}
+
 std::string dot_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -205,6 +224,7 @@ int run_rsg(const RsgOptions& o) {
           std::cout << "s" << s << " " << from << " --[" << condition(e) << "]--> s" << t << " "
                     << to;
           if (!out.empty()) std::cout << " / " << out;
+          if (single) std::cout << "   (" << event_of(*ts, state(s), state(t)) << ")";
           std::cout << "\n";
         }
     }
@@ -230,15 +250,17 @@ int run_rsg(const RsgOptions& o) {
     }
   }
 
+  // One line per distinct anomaly (the same cycle is met from many nodes).
+  std::set<std::string> printed;
   for (const auto& a : g.anomalies()) {
-    std::cerr << o.model << ": error: " << a.message << "; inputs: "
-              << engine::simplify(a.condition, inputs).to_string(inputs);
+    std::string line = o.model + ": error: " + a.message + "; inputs: " +
+                       engine::simplify(a.condition, inputs).to_string(inputs);
     if (!a.cycle.empty()) {
-      std::cerr << "; cycle:";
-      for (const auto& c : a.cycle) std::cerr << " " << split_description(ts->describe(c)).first << " ->";
-      std::cerr << " " << split_description(ts->describe(a.cycle.front())).first;
+      line += "; cycle:";
+      for (const auto& c : a.cycle) line += " " + split_description(ts->describe(c)).first + " ->";
+      line += " " + split_description(ts->describe(a.cycle.front())).first;
     }
-    std::cerr << "\n";
+    if (printed.insert(line).second) std::cerr << line << "\n";
   }
   if (!g.complete()) {
     std::cout << "unknown: the " << g.limit_reached() << " limit was reached after "

@@ -99,6 +99,10 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
       std::vector<bool> seen(inputs.size());
       for (std::size_t c = 0; c < cells.size(); ++c) {
         int found = -1;
+        if (model::iequals(cells[c], "cycle")) {  // a cycle-number column, for readability
+          column_input.push_back(-1);
+          continue;
+        }
         for (std::size_t i = 0; i < inputs.size(); ++i)
           if (model::iequals(inputs[i].name, cells[c])) found = static_cast<int>(i);
         if (found < 0) {
@@ -127,6 +131,7 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
     for (std::size_t i = 0; i < inputs.size(); ++i)
       row[i] = inputs[i].type.kind == model::TypeKind::Bool ? 0 : inputs[i].type.lo;
     for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (column_input[c] < 0) continue;
       const auto& in = inputs[static_cast<std::size_t>(column_input[c])];
       const std::string u = model::to_upper(cells[c]);
       std::int64_t v = 0;
@@ -313,7 +318,8 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text)")->required();
   sub->add_option("--inputs", opts->inputs,
                   "CSV trace: a header row of input names, then one row of values per cycle "
-                  "(0/1, TRUE/FALSE, integers; ',' or ';' separated; '#' comments). Pseudo-inputs "
+                  "(0/1, TRUE/FALSE, integers; ',' or ';' separated; '#' comments; an optional column "
+                  "'cycle' is ignored, which also lets a model without inputs run). Pseudo-inputs "
                   "(timeout:<timer>, choice:<step>, elapse:<step>) may be given as columns; when "
                   "absent they default to 0: no timeout, the first enabled alternative, no time "
                   "elapsing. Every other input needs a column.")

@@ -3,19 +3,36 @@
 #include <iostream>
 
 #include "cli/exit_code.hpp"
+#include "model/validate.hpp"
 
 namespace sfcv::cli {
 
-model::Project load_model_or_throw(const std::string& path, io::Format format) {
-  auto result = io::load_file(path, format);
+CheckedModel load_and_validate(const std::string& path, io::Format format) {
+  auto loaded = io::load_file(path, format);
+  CheckedModel result{std::move(loaded.project), std::move(loaded.diagnostics)};
+  // Validating a half-built model would only repeat the importer's errors in other words.
+  if (result.project && !model::has_errors(result.diagnostics)) {
+    auto more = model::validate(*result.project);
+    result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(more.begin()),
+                              std::make_move_iterator(more.end()));
+  }
+  return result;
+}
+
+model::Project load_model_or_throw(const std::string& path, io::Format format, bool quiet) {
+  auto result = load_and_validate(path, format);
   std::size_t errors = 0;
   for (const auto& d : result.diagnostics) {
-    std::cerr << d.str() << "\n";
-    if (d.severity == model::Severity::Error) ++errors;
+    const bool is_error = d.severity == model::Severity::Error;
+    if (is_error) ++errors;
+    if (is_error || !quiet) std::cerr << d.str() << "\n";
   }
-  if (errors || !result.project)
+  if (!result.project)
     throw InputError(path + ": " + std::to_string(errors ? errors : 1) +
-                     (errors == 1 ? " error" : " errors") + ", no model loaded");
+                     (errors > 1 ? " errors" : " error") + ", no model loaded");
+  if (errors)
+    throw InputError(path + ": " + std::to_string(errors) + (errors == 1 ? " error" : " errors") +
+                     " in the model (see 'sfcv lint')");
   return std::move(*result.project);
 }
 

@@ -1,16 +1,29 @@
 #pragma once
-// Loading the model a subcommand works on: diagnostics go to standard error; errors end the run
-// with exit code 2.
+// Loading the model a subcommand works on: the importer's diagnostics and those of
+// model::validate go to standard error; errors end the run with exit code 2.
 
+#include <optional>
 #include <string>
 
 #include "io/load.hpp"
 #include "model/chart.hpp"
+#include "model/diagnostic.hpp"
 
 namespace sfcv::cli {
 
-/// Loads `path`; prints warnings to stderr; throws InputError when the file has errors.
-model::Project load_model_or_throw(const std::string& path, io::Format format = io::Format::Auto);
+/// A loaded and validated model; prints nothing.
+struct CheckedModel {
+  std::optional<model::Project> project;  ///< empty when the importer could not build one
+  model::Diagnostics diagnostics;         ///< the importer's, then validate's
+};
+
+/// Loads `path` and, when the importer built a model without errors, validates it.
+CheckedModel load_and_validate(const std::string& path, io::Format format = io::Format::Auto);
+
+/// Loads and validates `path`; prints errors to stderr, and warnings unless `quiet`; throws
+/// InputError when the file or the model has errors.
+model::Project load_model_or_throw(const std::string& path, io::Format format = io::Format::Auto,
+                                   bool quiet = false);
 
 /// Parses a --format value ("auto", "xml", "iec", "g7", "agrafe").
 io::Format parse_format(const std::string& name);

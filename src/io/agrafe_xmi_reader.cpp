@@ -4,11 +4,11 @@
 // false, IntegerConstant 0, storedActionType activation, forcingOrderType currentSituation.
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -79,6 +79,7 @@ class Reader {
     pou_.kind = model::PouKind::Program;
     pou_.where = project.where;
     try {
+      check_name(root_, project.name, "grafcet name");
       read_variables();
       read_charts();
     } catch (const Failure& f) {
@@ -174,12 +175,66 @@ class Reader {
     return out;
   }
 
+  /// Names go into located diagnostics and into .g7 text: no control characters.
+  static void check_name(pugi::xml_node n, const std::string& name, const char* what) {
+    for (char c : name)
+      if (static_cast<unsigned char>(c) < 0x20 || c == '\x7F')
+        throw Failure{n, std::string(what) + " contains a control character"};
+  }
+
   // ---- variables
-  void read_variables() {
-    static const std::regex kDelayName(R"(^\s*(\d+)\s*(ms|s|min|h)?\s*/\s*X(\w+)\s*(/\s*(\d+)\s*(ms|s|min|h)?\s*)?$)");
-    auto scale = [](const std::string& unit) -> std::int64_t {
-      return unit == "ms" ? 1 : unit == "min" ? 60000 : unit == "h" ? 3600000 : 1000;
+  struct Delay {
+    std::int64_t t1;
+    std::string step_var;
+    std::int64_t t2;
+  };
+
+  /// "2s/X202", "500ms/X3/1s": a duration (unit s when left out), '/', X and a step name, and
+  /// optionally '/' and a second duration. Spaces are allowed around the parts.
+  static std::optional<Delay> delay_name(std::string_view s) {
+    std::size_t i = 0;
+    auto spaces = [&] {
+      while (i < s.size() && s[i] == ' ') ++i;
     };
+    auto duration = [&]() -> std::optional<std::int64_t> {
+      spaces();
+      const std::size_t b = i;
+      std::int64_t v = 0;
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && i - b < 12)
+        v = v * 10 + (s[i++] - '0');
+      if (i == b) return std::nullopt;
+      std::int64_t scale = 1000;
+      for (const auto& [unit, ms] : {std::pair<std::string_view, std::int64_t>{"ms", 1},
+                                     {"min", 60000}, {"s", 1000}, {"h", 3600000}})
+        if (s.substr(i, unit.size()) == unit) {
+          scale = ms;
+          i += unit.size();
+          break;
+        }
+      spaces();
+      return v * scale;
+    };
+    const auto t1 = duration();
+    if (!t1 || i >= s.size() || s[i] != '/') return std::nullopt;
+    ++i;
+    spaces();
+    if (i >= s.size() || s[i] != 'X') return std::nullopt;
+    const std::size_t b = ++i;
+    while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_')) ++i;
+    if (i == b) return std::nullopt;
+    Delay d{*t1, "X" + std::string(s.substr(b, i - b)), 0};
+    spaces();
+    if (i < s.size() && s[i] == '/') {
+      ++i;
+      const auto t2 = duration();
+      if (!t2) return std::nullopt;
+      d.t2 = *t2;
+    }
+    if (i != s.size()) return std::nullopt;
+    return d;
+  }
+
+  void read_variables() {
     for (auto decl : root_.child("variableDeclarationContainer").children("variableDeclarations")) {
       const std::string name = decl.attribute("name").value();
       const std::string kind = decl.attribute("variableDeclarationType")
@@ -187,22 +242,22 @@ class Reader {
                                    : "input";
       const std::string_view sort = type_of(decl.child("sort"));
       if (name.empty()) throw Failure{decl, "variable declaration without a name"};
+      check_name(decl, name, "variable name");
       if (kind == "step") {
         if (!decl.attribute("step")) throw Failure{decl, "step variable '" + name + "' names no step"};
         step_vars_[decl] = resolve(decl, decl.attribute("step").value());
         continue;
       }
-      std::smatch m;
-      if (kind == "internal" && sort == "Bool" && std::regex_match(name, m, kDelayName)) {
-        // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable of
-        // that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
-        const std::int64_t t1 = std::stoll(m[1].str()) * scale(m[2].str());
-        const std::int64_t t2 = m[5].matched ? std::stoll(m[5].str()) * scale(m[6].str()) : 0;
-        delay_vars_[decl] = {t1, "X" + m[3].str(), t2};
-        warn(decl, model::Severity::Warning,
-             "internal variable '" + name + "' is read as the delay " + g7::duration(t1) + "/X" +
-                 m[3].str() + "/" + g7::duration(t2) + " (AGRAFE has no delay term)");
-        continue;
+      if (kind == "internal" && sort == "Bool") {
+        if (auto d = delay_name(name)) {
+          // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable
+          // of that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
+          warn(decl, model::Severity::Warning,
+               "internal variable '" + name + "' is read as the delay " + g7::duration(d->t1) +
+                   "/" + d->step_var + "/" + g7::duration(d->t2) + " (AGRAFE has no delay term)");
+          delay_vars_[decl] = std::move(*d);
+          continue;
+        }
       }
       model::Variable v;
       v.name = name;
@@ -231,11 +286,6 @@ class Reader {
   }
 
   // ---- charts
-  struct Delay {
-    std::int64_t t1;
-    std::string step_var;
-    std::int64_t t2;
-  };
 
   void read_charts() {
     // Pass 1: charts and their steps, so that references between charts resolve.
@@ -248,6 +298,7 @@ class Reader {
       model::Chart c;
       c.name = pg.attribute("name") ? pg.attribute("name").value() : "";
       if (c.name.empty()) c.name = "G" + std::to_string(index);
+      check_name(pg, c.name, "partial grafcet name");
       if (pou_.find_chart(c.name)) {
         const std::string renamed = c.name + "_" + std::to_string(index);
         warn(pg, model::Severity::Warning,
@@ -275,8 +326,9 @@ class Reader {
   model::Chart& chart(pugi::xml_node pg) { return pou_.charts[static_cast<std::size_t>(chart_of_.at(pg))]; }
 
   void add_step(pugi::xml_node pg, pugi::xml_node n, model::Step s) {
-    if (!n.attribute("id")) throw Failure{n, "step without an id"};
     s.name = n.attribute("id").value();
+    if (s.name.empty()) throw Failure{n, "step without an id"};
+    check_name(n, s.name, "step id");
     s.initial = n.attribute("initial").as_bool(false);
     s.activation_link = n.attribute("activationLink").as_bool(false);
     s.where = where(n);
@@ -344,6 +396,7 @@ class Reader {
       model::Transition tr;
       if (!t.attribute("id")) throw Failure{t, "transition without an id"};
       tr.name = t.attribute("id").value();
+      check_name(t, tr.name, "transition id");
       tr.where = where(t);
       tr.order = static_cast<int>(c.transitions.size());
       ExprPtr guard = t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);

@@ -341,7 +341,7 @@ class Parser {
     while (accept(",")) names.push_back(var_name());
     model::Type type = model::Type::boolean();
     if (accept(":")) {
-      if (is_word("bool") || is_word("BOOL")) {
+      if (peek().kind == Tok::Ident && model::iequals(peek().text, "bool")) {
         next();
       } else {
         const Token& at = peek();
@@ -384,7 +384,8 @@ class Parser {
   void grafcet_block() {
     next();
     NameRef n = name("a partial grafcet name");
-    if (pou_.find_chart(n.name)) fail(toks_[pos_ - 1], "partial grafcet '" + n.name + "' is declared twice");
+    // A duplicate is reported, and its block still parsed, so that later errors stay precise.
+    if (pou_.find_chart(n.name)) error(n.where, "partial grafcet '" + n.name + "' is declared twice");
     model::Chart chart;
     chart.name = n.name;
     chart.where = n.where;
@@ -575,7 +576,7 @@ class Parser {
       if (is_punct("*")) {
         next();
         fo.kind = model::ForcingKind::Current;
-      } else if (is_word("INIT") || is_word("init")) {
+      } else if (peek().kind == Tok::Ident && model::iequals(peek().text, "INIT")) {
         next();
         fo.kind = model::ForcingKind::Initial;
       } else if (is_punct("}")) {

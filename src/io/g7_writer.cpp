@@ -194,8 +194,10 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
       case model::ForcingKind::Initial: out += "INIT"; break;
       case model::ForcingKind::Empty: break;
       case model::ForcingKind::Situation:
-        for (std::size_t i = 0; i < fo.situation.size(); ++i)
-          out += (i ? ", " : "") + name(fo.situation[i]);
+        for (std::size_t i = 0; i < fo.situation.size(); ++i)  // a step named INIT is quoted
+          out += (i ? ", " : "") + (model::iequals(fo.situation[i], "INIT")
+                                        ? g7::quote_name(fo.situation[i], true)
+                                        : name(fo.situation[i]));
         break;
     }
     out += "};\n";

@@ -123,7 +123,7 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
             }
           }
           if (!found || matched.count(idx)) continue;
-          matched[idx] = StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where};
+          matched[idx] = StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where, obs[idx].name};
         }
       }
   }
@@ -137,6 +137,7 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
       StepRef r;
       r.observable = i;
       r.step = obs[i].name;
+      r.display = obs[i].name;
       out.push_back(std::move(r));
     }
   }
@@ -165,7 +166,7 @@ FormulaPtr local_deadlock_formula(const semantics::TransitionSystem& ts, std::ui
 }
 
 std::string describe_step(const StepRef& s) {
-  std::string out = s.pou.empty() ? s.step : s.pou + "." + s.step;
+  std::string out = !s.display.empty() ? s.display : s.pou.empty() ? s.step : s.pou + "." + s.step;
   if (s.where.known()) out += " (" + s.where.str() + ")";
   return out;
 }

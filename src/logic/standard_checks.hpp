@@ -49,6 +49,7 @@ struct StepRef {
   std::string pou, chart, step;
   bool on_loop = false;  ///< the step lies on a cycle of its chart's step/transition graph
   model::SourceLocation where;
+  std::string display;  ///< the observable's name ("MAIN.FILL_A", "X12")
 };
 
 /// The step observables of `ts`, matched with the chart's steps when `project` is given

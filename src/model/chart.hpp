@@ -86,6 +86,9 @@ struct Action {
   StmtList body;         ///< kind Statements
   int chart = -1;        ///< kind Chart
   SourceLocation where;
+  /// The importer could not model the body (an unsupported construct in an exported ST/LD/IL
+  /// body); `body` is empty and the semantics must refuse the action rather than run a no-op.
+  bool body_unsupported = false;
 };
 
 /// A step's action block: (step, action, qualifier [, duration] [, indicator]).

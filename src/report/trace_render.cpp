@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <nlohmann/json.hpp>
 
 #include "report/check_render.hpp"
@@ -58,7 +59,8 @@ std::vector<std::string> short_names(const semantics::TransitionSystem& ts) {
   for (std::uint32_t i = 0; i < obs.size(); ++i) {
     std::string best = obs[i].name;
     for (const auto& a : obs[i].aliases) {
-      if (a.size() >= best.size()) continue;
+      // Bare numbers ("12" for Grafcet step X12) read badly in a table.
+      if (a.size() >= best.size() || std::isdigit(static_cast<unsigned char>(a[0]))) continue;
       const auto hit = semantics::find_observable(ts, a);
       if (hit && *hit == i) best = a;
     }

@@ -63,8 +63,10 @@ class Aig {
   void clear_bad() { bad_.clear(); }
   /// Invariant constraint on inputs and state (AIGER 1.9 C section): runs leave it never.
   void add_constraint(std::string name, AigLit c) { constraints_.push_back({std::move(name), c}); }
+  void clear_constraints() { constraints_.clear(); }
   /// Named signals kept for people (outputs, steps), exported as AIGER outputs / comments.
   void add_output(std::string name, AigLit lit) { outputs_.push_back({std::move(name), lit}); }
+  void clear_outputs() { outputs_.clear(); }
 
   /// `root` with latch or input literal `var` (positive) replaced by the constant `value`.
   AigLit cofactor(AigLit root, AigLit var, bool value);

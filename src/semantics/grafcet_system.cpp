@@ -830,7 +830,12 @@ void GrafcetSystem::build(const model::Project& project) {
     Observable o;
     o.name = v.name;
     o.type = v.type;
+    // Declared internal variables (counters, flags) are observable but not outputs.
     o.is_output = true;
+    for (const auto& pou : project.pous)
+      if (const auto* decl = pou.find_variable(v.name))
+        o.is_output = decl->direction == model::VarDirection::Output ||
+                      decl->direction == model::VarDirection::InOut;
     observables_.push_back(o);
     obs_info_.push_back({ObsRef::Field, v.field});
   }

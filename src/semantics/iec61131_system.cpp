@@ -25,14 +25,32 @@ void Iec61131System::initial_states(SuccessorSink& sink) const {
 
 Iec61131System::Entry& Iec61131System::entry_for(std::span<const std::uint32_t> fired) const {
   const auto words = p_->layout.words();
-  for (std::size_t i = 0; i < used_; ++i) {
-    auto& e = entries_[i];
-    if (std::equal(e.target.begin(), e.target.end(), scratch_.begin(), scratch_.begin() + words) &&
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+  for (std::size_t i = 0; i < words; ++i) h = (h ^ scratch_[i]) * 0x100000001b3ULL + (h >> 29);
+  for (auto f : fired) h = (h ^ f) * 0x100000001b3ULL + (h >> 29);
+  if (table_.size() < 2 * (used_ + 1)) {
+    // Grow and rehash the entries of this call.
+    table_.assign(std::max<std::size_t>(16, table_.size() * 2), 0);
+    for (std::size_t i = 0; i < used_; ++i) {
+      auto slot = entries_[i].hash & (table_.size() - 1);
+      while (table_[slot]) slot = (slot + 1) & (table_.size() - 1);
+      table_[slot] = static_cast<std::uint32_t>(i + 1);
+      entries_[i].slot = slot;
+    }
+  }
+  auto slot = h & (table_.size() - 1);
+  while (const auto t = table_[slot]) {
+    auto& e = entries_[t - 1];
+    if (e.hash == h && std::equal(e.target.begin(), e.target.end(), scratch_.begin(), scratch_.begin() + words) &&
         std::equal(e.fired.begin(), e.fired.end(), fired.begin(), fired.end()))
       return e;
+    slot = (slot + 1) & (table_.size() - 1);
   }
   if (used_ == entries_.size()) entries_.emplace_back();
+  table_[slot] = static_cast<std::uint32_t>(used_ + 1);
   auto& e = entries_[used_++];
+  e.hash = h;
+  e.slot = slot;
   e.target.assign(scratch_.begin(), scratch_.begin() + words);
   e.fired.assign(fired.begin(), fired.end());
   e.cubes = 0;
@@ -40,12 +58,32 @@ Iec61131System::Entry& Iec61131System::entry_for(std::span<const std::uint32_t> 
 }
 
 void Iec61131System::add_cube(InputCondition& cond, std::size_t& n) const {
-  if (n == cond.cubes.size()) cond.cubes.emplace_back();
+  if (n == cond.cubes.size()) {
+    if (spare_cubes_.empty()) {
+      cond.cubes.emplace_back();
+    } else {
+      cond.cubes.push_back(std::move(spare_cubes_.back()));
+      spare_cubes_.pop_back();
+    }
+  }
   machine_.cube(cond.cubes[n]);
   ++n;
 }
 
+void Iec61131System::trim(InputCondition& cond, std::size_t n) const {
+  // Surplus cubes go to the spare pool rather than being freed: steady state allocates nothing.
+  while (cond.cubes.size() > n) {
+    spare_cubes_.push_back(std::move(cond.cubes.back()));
+    cond.cubes.pop_back();
+  }
+}
+
 void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
+  for (std::size_t i = 0; i < used_; ++i) {
+    trim(entries_[i].condition, 0);
+    table_[entries_[i].slot] = 0;
+  }
+  for (std::size_t i = 0; i < anomalies_used_; ++i) trim(anomalies_[i].condition, 0);
   used_ = 0;
   anomalies_used_ = 0;
   machine_.load(state);
@@ -73,12 +111,12 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
   } while (machine_.next_leaf());
   for (std::size_t i = 0; i < used_; ++i) {
     auto& e = entries_[i];
-    e.condition.cubes.resize(e.cubes);
+    trim(e.condition, e.cubes);
     sink.successor(Successor{e.target, e.condition, e.fired});
   }
   for (std::size_t i = 0; i < anomalies_used_; ++i) {
     auto& a = anomalies_[i];
-    a.condition.cubes.resize(a.cubes);
+    trim(a.condition, a.cubes);
     Anomaly an;
     an.kind = Anomaly::Kind::RangeError;
     an.message = a.message;

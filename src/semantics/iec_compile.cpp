@@ -123,18 +123,6 @@ struct Compiler {
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> providers;  // name -> (pou, var)
     std::map<std::string, std::uint32_t> globals;                              // name -> field
     std::map<std::string, int> name_count;
-    for (const auto* pou : pous)
-      for (const auto& v : pou->variables) ++name_count[model::to_upper(v.name)];
-    for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
-      PouScope sc;
-      sc.pou = pous[pi];
-      sc.index = pi;
-      scopes.push_back(std::move(sc));
-      const auto up = model::to_upper(pous[pi]->name);
-      for (const auto& s : pous[pi]->body) (void)s;
-      collect_written(pous[pi]->body, up);
-      for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
-    }
     auto is_input = [](const model::Variable& v) {
       return v.direction == model::VarDirection::Input ||
              (v.direction == model::VarDirection::Local && v.address.rfind("%I", 0) == 0);
@@ -142,6 +130,19 @@ struct Compiler {
     auto is_output = [](const model::Variable& v) {
       return v.direction == model::VarDirection::Output || v.address.rfind("%Q", 0) == 0;
     };
+    // Names of the fields (inputs and connected inputs make none): unique ones display bare.
+    for (const auto* pou : pous)
+      for (const auto& v : pou->variables)
+        if (v.type.kind != TypeKind::FunctionBlock && !is_input(v)) ++name_count[model::to_upper(v.name)];
+    for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
+      PouScope sc;
+      sc.pou = pous[pi];
+      sc.index = pi;
+      scopes.push_back(std::move(sc));
+      const auto up = model::to_upper(pous[pi]->name);
+      collect_written(pous[pi]->body, up);
+      for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
+    }
     // Pass 1: state variables (non-inputs).
     for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
       const auto& pou = *pous[pi];
@@ -366,20 +367,33 @@ struct Compiler {
       return id;
     }
     // An integer input against a constant: the successor function splits its interval.
-    if (lhs->kind != ExprKind::Name && rhs->kind == ExprKind::Name) {
+    auto int_input = [&](const model::Expr& x) {
+      if (x.kind != ExprKind::Name) return false;
+      auto it = sc.names.find(model::to_upper(x.name));
+      return it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool;
+    };
+    if (!int_input(*lhs) && int_input(*rhs)) {
       std::swap(lhs, rhs);
       cmp = flip(cmp);
     }
     if (lhs->kind == ExprKind::Name) {
       auto it = sc.names.find(model::to_upper(lhs->name));
       const auto k = literal(*rhs);
-      if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool && k) {
+      if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool) {
         Node n;
-        n.op = Op::InputCmp;
         n.cmp = cmp;
         n.a = it->second.index;
-        n.k = *k;
-        return node(n);
+        if (k) {
+          n.op = Op::InputCmp;
+          n.k = *k;
+          return node(n);
+        }
+        // Against an expression: its value in this run is the split point.
+        VT ot;
+        const auto other = expr(sc, *rhs, context, ot);
+        if (ot != VT::Int) error(e.where, "'" + model::to_st(e) + "' compares a number with a BOOL");
+        n.op = Op::InputCmpExpr;
+        return node(n, {other});
       }
     }
     VT lt, rt;
@@ -1007,8 +1021,37 @@ struct Compiler {
     }
   }
 
+  /// Grafcet-only content and duplicates the IEC semantics would otherwise silently merge.
+  void reject_foreign(const std::vector<const model::Pou*>& pous) {
+    if (project.dialect == model::Dialect::Grafcet)
+      error(project.where, "this is a Grafcet (IEC 60848) model; the IEC 61131-3 scan-cycle "
+                           "semantics does not apply to it");
+    for (const auto* pou : pous) {
+      for (const auto& sa : pou->stored_actions)
+        error(sa.where, "Grafcet stored action on activation/deactivation/event in " + pou->name +
+                            " is not IEC 61131-3");
+      for (const auto& fo : pou->forcing_orders)
+        error(fo.where, "Grafcet forcing order in " + pou->name + " is not IEC 61131-3");
+      for (const auto& as : pou->associations)
+        if (as.condition)
+          error(as.where, "action block with an assignment condition (Grafcet) in " + pou->name);
+      std::set<std::string> vars;
+      for (const auto& v : pou->variables)
+        if (!vars.insert(model::to_upper(v.name)).second)
+          error(v.where, "variable '" + v.name + "' is declared twice in " + pou->name);
+      for (const auto& ch : pou->charts) {
+        std::set<std::string> steps;
+        for (const auto& st : ch.steps)
+          if (!steps.insert(model::to_upper(st.name)).second)
+            error(st.where, "step '" + st.name + "' is declared twice in chart '" + ch.name + "'");
+      }
+    }
+  }
+
   bool run() {
     const auto pous = select();
+    if (!ok) return false;
+    reject_foreign(pous);
     if (!ok) return false;
     variables(pous);
     structure();

@@ -190,6 +190,10 @@ std::int64_t Machine::eval(std::uint32_t index) {
     case Op::Field: return nxt_[n.a];
     case Op::Input: return read_input(n.a);
     case Op::InputCmp: return input_cmp(n.a, n.cmp, n.k);
+    case Op::InputCmpExpr: {
+      const auto k = eval(kid[0]);
+      return input_cmp(n.a, n.cmp, k);
+    }
     case Op::StepX: return step_active_cur(n.a);
     case Op::StepT: {
       const auto& s = p_.steps[n.a];

@@ -25,6 +25,7 @@ enum class Op : std::uint8_t {
   Field,      ///< value of field a (as the cycle's actions left it)
   Input,      ///< Boolean input a, or an integer input read as a value (enumerated)
   InputCmp,   ///< integer input a compared (cmp) with constant k: splits the input's interval
+  InputCmpExpr,  ///< integer input a compared (cmp) with the value of child 0 (evaluated first)
   StepX,      ///< activity of step a in the current configuration
   StepT,      ///< discrete time: .T of step a in ms
   StepTCmp,   ///< abstract time: step a's .T region >= k (after `negate`)

@@ -34,6 +34,8 @@ class Iec61131System final : public TransitionSystem {
 
  private:
   struct Entry {
+    std::uint64_t hash = 0;
+    std::size_t slot = 0;
     std::vector<StateWord> target;
     std::vector<std::uint32_t> fired;
     InputCondition condition;
@@ -46,6 +48,7 @@ class Iec61131System final : public TransitionSystem {
   };
   Entry& entry_for(std::span<const std::uint32_t> fired) const;
   void add_cube(InputCondition& cond, std::size_t& n) const;
+  void trim(InputCondition& cond, std::size_t n) const;
 
   std::unique_ptr<Program> p_;
   // Scratch reused across calls: no heap allocation per successor once warmed up.
@@ -53,6 +56,8 @@ class Iec61131System final : public TransitionSystem {
   mutable std::vector<StateWord> scratch_;
   mutable std::vector<Entry> entries_;
   mutable std::size_t used_ = 0;
+  mutable std::vector<std::uint32_t> table_;  ///< open addressing: entry index + 1, 0 = empty
+  mutable std::vector<InputCube> spare_cubes_;  ///< cubes (with their capacity) between calls
   mutable std::vector<AnomalyEntry> anomalies_;
   mutable std::size_t anomalies_used_ = 0;
 };

@@ -30,7 +30,9 @@ struct Iec61131Options {
   TimeMode time = TimeMode::Abstract;
   std::int64_t cycle_ms = 10;  ///< TimeMode::Discrete only
   ActionOrder action_order = ActionOrder::Declaration;
-  std::vector<std::string> pous;  ///< POUs run in parallel in one cycle; empty = all SFC POUs
+  /// POUs run one after the other in each cycle (a controller and plant models); empty = the
+  /// single POU with an SFC body (PROGRAMs preferred), several candidates being an error.
+  std::vector<std::string> pous;
   std::vector<model::ExprPtr> assumptions;  ///< constraints on inputs and state
 };
 

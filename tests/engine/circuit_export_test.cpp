@@ -101,6 +101,23 @@ TEST(PromelaExport, KeepsOnlyLatchesInTheStateVector) {
   EXPECT_NE(s.find("goto end_excluded"), std::string::npos);
 }
 
+TEST(PromelaExport, AvoidsTheNamesOfSpinsGeneratedVerifier) {
+  // (No gates at all: an empty d_step was a Spin syntax error.)
+  // A chart output Q0 clashed with pan.h's channel struct Q0 (found by the confirmation test).
+  CircuitExport m;
+  const auto x = m.aig.add_input("P0");
+  const auto q = m.aig.add_latch("Q0");
+  m.aig.set_next(0, x);
+  m.aig.add_bad("q", q);
+  std::ostringstream out;
+  write_promela(out, m, 0);
+  EXPECT_NE(out.str().find("bit Q0_2 = 0;"), std::string::npos) << out.str();
+  const auto spin = find_spin();
+  if (!spin) GTEST_SKIP() << "spin not installed";
+  const auto v = check_with_spin(*spin, m, 0);
+  EXPECT_EQ(v.kind, SpinVerdict::Kind::Violated) << v.log;
+}
+
 TEST(SpinRunner, ConfirmsAndRefutesInvariants) {
   const auto spin = find_spin();
   if (!spin) GTEST_SKIP() << "spin not installed";

@@ -157,6 +157,42 @@ TEST(AgrafeXmi, StepVariablesAndDelayNamedVariables) {
   EXPECT_EQ(warnings, 2);
 }
 
+TEST(AgrafeXmi, TimeConditionsBecomeDelays) {
+  const std::string vars = var("a", "", "Bool") + var("V", "output", "Bool");
+  const auto r = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
+                                    R"(<transitions id="1" timeConditionType="timeDelayed" delayTime="3"><term xsi:type="terms:Variable" )" +
+                                    vref(0) + R"(/></transitions>
+    <transitions id="2" timeConditionType="timeDependent" delayTime="200" resetTime="50" unit="ms"><term xsi:type="terms:Variable" )" +
+                                    vref(0) + R"(/></transitions>
+    <actionTypes xsi:type="grafcet:ContinuousAction" id="1" timeConditionType="timeDelayed" delayTime="2"><variable )" +
+                                    vref(1) + R"(/></actionTypes>
+    <actionLinks step="//@partialGrafcets.0/@steps.1" actionType="//@partialGrafcets.0/@actionTypes.0"/>
+  </partialGrafcets>)"));
+  ASSERT_TRUE(r.ok()) << messages(r);
+  const auto& p = r.project->pous[0];
+  const auto& g1 = p.charts[0].transitions[0].guard;
+  ASSERT_EQ(g1->kind, ExprKind::Delay);
+  EXPECT_EQ(g1->value, 3000);
+  EXPECT_EQ(g1->value2, 0);
+  EXPECT_EQ(g1->args[0]->name, "a");
+  const auto& g2 = p.charts[0].transitions[1].guard;
+  ASSERT_EQ(g2->kind, ExprKind::Delay);
+  EXPECT_EQ(g2->value, 200);
+  EXPECT_EQ(g2->value2, 50);
+  const auto& c = p.associations.at(0).condition;
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->kind, ExprKind::Delay);  // 2s/X2: the action is delayed after its step's activation
+  EXPECT_EQ(c->value, 2000);
+  EXPECT_EQ(c->args[0]->name, "X2");
+
+  const auto bad = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
+                                      R"(<transitions id="1" timeConditionType="timeLimited" delayTime="3"/></partialGrafcets>)"));
+  EXPECT_FALSE(bad.project.has_value());
+  ASSERT_FALSE(bad.diagnostics.empty());
+  EXPECT_EQ(bad.diagnostics.back().message, "unsupported time condition 'timeLimited' (time-limited actions)");
+  EXPECT_EQ(bad.diagnostics.back().where.element_path, "//@partialGrafcets.0/@transitions.0");
+}
+
 TEST(AgrafeXmi, SynchronizationsAreAndDivergencesAndConvergences) {
   const auto r = load(doc("", R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">
     <steps xsi:type="grafcet:Step" id="1" initial="true"/>
@@ -325,6 +361,10 @@ TEST(AgrafeXmiErrors, NameTheElement) {
             "t.grafcet:7:94 (//@partialGrafcets.0/@actionTypes.0/@variable): an action assigns the input 'a'");
   EXPECT_EQ(first_error("<grafcet:Grafcet xmlns:grafcet=\"x\">\n  <partialGrafcets>\n</grafcet:Grafcet>"),
             "t.grafcet:3:3: XML error: Start-end tags mismatch");
+  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"\"/></partialGrafcets>")),
+            "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step without an id");
+  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"a&#10;b\"/></partialGrafcets>")),
+            "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step id contains a control character");
   EXPECT_EQ(first_error("<project/>"),
             "t.grafcet:1:1 (/): not an AGRAFE grafcet: the root element is <project>, expected <grafcet:Grafcet>");
 }

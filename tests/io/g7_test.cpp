@@ -471,6 +471,25 @@ TEST(G7RoundTrip, QuotedNames) {
              " transition \"1a\" -> \"true\" when \"RE\" & RE \"my var\" & \"3x\" = 2; }");
 }
 
+TEST(G7RoundTrip, StepsNamedLikeKeywords) {
+  const std::string printed = round_trip(
+      "grafcet G { step initial initial; step INIT, when, on_enter;\n"
+      " transition when: initial -> when when X_when_ | Xwhen;\n"
+      " transition {when, INIT} -> on_enter; action initial: G{INIT}; action when: G{\"INIT\"}; }\n"
+      "input X_when_;");
+  EXPECT_NE(printed.find("action when: G{\"INIT\"};"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("action initial: G{INIT};"), std::string::npos) << printed;
+}
+
+TEST(G7Errors, DuplicatePartialGrafcetKeepsLaterErrorsPrecise) {
+  const auto r = load("grafcet G { step 1; }\ngrafcet G { step 1;\n transition 1 -> 9; }");
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].message, "partial grafcet 'G' is declared twice");
+  EXPECT_EQ(r.diagnostics[0].where.line, 2);
+  EXPECT_EQ(r.diagnostics[1].where.line, 3);
+  EXPECT_EQ(r.diagnostics[1].where.column, 18);
+}
+
 TEST(G7RoundTrip, SmallSequence) {
   const std::string printed = round_trip(
       "input a;\noutput V;\ngrafcet G { step 0 initial; step 1; transition 0 -> 1 when a;\n"
@@ -499,6 +518,34 @@ TEST(G7RoundTrip, ExamplesShippedWithSfcv) {
     ASSERT_TRUE(again.ok()) << messages(again) << printed;
     EXPECT_EQ(test::grafcet_difference(*r.project, *again.project), "") << path;
   }
+}
+
+TEST(G7Examples, PalletTransferFixDiffersOnlyInTransition15) {
+  const auto flawed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer.g7"));
+  const auto fixed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer_fixed.g7"));
+  ASSERT_TRUE(flawed.ok() && fixed.ok()) << messages(flawed) << messages(fixed);
+  const auto& p = flawed.project->pous[0];
+  ASSERT_EQ(p.charts.size(), 4u);
+  std::vector<std::string> initial;
+  std::size_t steps = 0;
+  for (const auto& c : p.charts)
+    for (const auto& s : c.steps) {
+      ++steps;
+      if (s.initial) initial.push_back(s.name);
+    }
+  EXPECT_EQ(steps, 24u);  // "the grafcet has only 24 steps"
+  EXPECT_EQ(initial, (std::vector<std::string>{"1", "20", "30", "40"}));
+  EXPECT_EQ(model::count_transitions(*flawed.project), 25u);
+  // Same model once transition 15 gets the fixed receptivity (and the project its name).
+  model::Project patched = *flawed.project;
+  patched.name = fixed.project->name;
+  patched.pous[0].name = fixed.project->pous[0].name;
+  auto& t15 = patched.pous[0].charts[1].transitions[4];
+  ASSERT_EQ(t15.name, "15");
+  EXPECT_EQ(model::to_st(t15.guard), "NOT X10");
+  t15.guard = fixed.project->pous[0].charts[1].transitions[4].guard;
+  EXPECT_EQ(model::to_st(t15.guard), "NOT X10 AND NOT X9");
+  EXPECT_EQ(test::grafcet_difference(patched, *fixed.project), "");
 }
 
 TEST(G7Writer, RefusesWhatTheFormatCannotExpress) {

@@ -203,16 +203,16 @@ struct CollectedSuccessor {
 };
 
 struct Collector : semantics::SuccessorSink {
-  explicit Collector(const semantics::TransitionSystem& t) : ts(t) {}
-  const semantics::TransitionSystem& ts;
+  explicit Collector(const semantics::TransitionSystem& t) : ts(&t) {}
+  const semantics::TransitionSystem* ts;
   std::vector<CollectedSuccessor> all;
   std::vector<std::string> anomalies;
   void successor(const semantics::Successor& s) override {
-    all.push_back({{s.target.begin(), s.target.end()}, s.condition.to_string(ts.inputs()),
+    all.push_back({{s.target.begin(), s.target.end()}, s.condition.to_string(ts->inputs()),
                    {s.fired.begin(), s.fired.end()}});
   }
   void anomaly(const semantics::Anomaly& a) override {
-    anomalies.push_back(a.message + " when " + a.condition.to_string(ts.inputs()));
+    anomalies.push_back(a.message + " when " + a.condition.to_string(ts->inputs()));
   }
 };
 

@@ -36,6 +36,22 @@ class ToySystem final : public semantics::TransitionSystem {
     truth_.assign(n, std::vector<bool>(observables_.size(), false));
   }
 
+  /// Adds a Boolean observable that is not a step (an output unless `is_output` is false);
+  /// returns its index for set_true.
+  std::uint32_t add_output(std::string name, bool is_output = true) {
+    semantics::Observable o;
+    o.name = std::move(name);
+    o.kind = semantics::ObservableKind::Variable;
+    o.type = model::Type::boolean();
+    o.is_output = is_output;
+    observables_.push_back(o);
+    for (auto& row : truth_) row.push_back(false);
+    return static_cast<std::uint32_t>(observables_.size() - 1);
+  }
+
+  /// Makes input `i` an integer input (conditions then use intervals of `type`).
+  void set_input_type(std::uint32_t i, model::Type type) { inputs_[i].type = std::move(type); }
+
   void set_initial(std::vector<std::uint32_t> initial) { initial_ = std::move(initial); }
   void add_arc(std::uint32_t from, std::uint32_t to, semantics::InputCondition c = semantics::InputCondition::always(),
                std::vector<std::uint32_t> fired = {}) {

@@ -35,6 +35,10 @@ void configure_manager(int nodes, int cache, int cache_ratio) {
 
 int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }
 
+void reset_operation_caches() {
+  if (bdd_isrunning()) bdd_gbc();  // a garbage collection also empties the caches
+}
+
 void ensure_manager(int nodes, int cache) {
   if (bdd_isrunning()) return;
   if (g_nodes > 0) {

@@ -122,17 +122,6 @@ class SymbolicCtl {
   std::vector<logic::FormulaPtr> keep_;
 };
 
-struct Collect final : semantics::SuccessorSink {
-  std::vector<std::vector<semantics::StateWord>> targets;
-  std::vector<semantics::InputCondition> conditions;
-  std::vector<std::vector<std::uint32_t>> fired;
-  void successor(const semantics::Successor& s) override {
-    targets.emplace_back(s.target.begin(), s.target.end());
-    conditions.push_back(s.condition);
-    fired.emplace_back(s.fired.begin(), s.fired.end());
-  }
-};
-
 class Run {
  public:
   Run(const logic::CheckTask& task, SymbolicSystem& sys) : task_(task), sys_(sys), ts_(sys.system()) {}
@@ -217,21 +206,31 @@ class Run {
     return to_trace(states);
   }
 
-  /// The explicit successor function labels each hop with its inputs and fired transitions.
+  /// Each hop is labelled with inputs found on the BDDs and the transitions the circuit fires
+  /// under them (enumerating explicit successors would cost 2^inputs per hop on wide charts).
   logic::Trace to_trace(const std::vector<std::vector<semantics::StateWord>>& states) {
     logic::Trace t;
+    const auto& circuit = sys_.circuit();
+    const auto& aig = circuit.aig;
     std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
                                                           ts_.inputs(), {});
     t.steps.push_back({inputs, states.front(), {}});
     for (std::size_t k = 1; k < states.size(); ++k) {
-      Collect c;
-      ts_.successors(states[k - 1], c);
-      for (std::size_t i = 0; i < c.targets.size(); ++i)
-        if (c.targets[i] == states[k]) {
-          inputs = logic::pick_inputs(c.conditions[i], ts_.inputs(), inputs);
-          t.steps.push_back({inputs, states[k], c.fired[i]});
-          break;
-        }
+      const auto bits = sys_.inputs_between(states[k - 1], states[k]);
+      if (bits.empty()) break;  // cannot happen: consecutive ring states are related
+      inputs = semantics::inputs_from_bits(ts_, circuit, bits);
+      std::vector<bool> latches(aig.latches().size());
+      const auto& layout = ts_.layout();
+      for (std::uint32_t f = 0; f < circuit.field_latches.size(); ++f) {
+        const auto v = static_cast<std::uint64_t>(layout.get(states[k - 1], f) - layout.fields()[f].lo);
+        for (std::size_t b = 0; b < circuit.field_latches[f].size(); ++b)
+          latches[circuit.field_latches[f][b]] = ((v >> b) & 1U) != 0;
+      }
+      const auto nodes = aig.evaluate(bits, latches);
+      std::vector<std::uint32_t> fired;
+      for (std::uint32_t tr = 0; tr < circuit.fired.size(); ++tr)
+        if (semantics::Aig::value_of(nodes, circuit.fired[tr])) fired.push_back(tr);
+      t.steps.push_back({inputs, states[k], fired});
     }
     return t;
   }

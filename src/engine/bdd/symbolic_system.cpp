@@ -42,21 +42,107 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     : ts_(ts), circuit_(std::move(circuit)) {
   bdd::configure_manager(options.nodes, options.cache, 4);
   bdd::ensure_manager();
+  bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
-  // Static order: inputs first (quantified early), then the latches in layout order with the
-  // current and next copies of each bit adjacent; the layout keeps the bits of one chart
-  // together.
+  // Static order by the FORCE heuristic: latches (their current and next copies adjacent) and
+  // inputs are units; each next-state function ties its latch to the latches and inputs it
+  // reads; a few rounds move every unit to the mean centre of gravity of its ties. Related bits
+  // end up adjacent, which keeps the relation and the reachable sets small (with the layout's
+  // own order, a chart's outputs sit far from its steps: exponential in independent branches).
+  const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
+  const std::size_t units = num_latches + num_inputs;  // latch l = unit l, input i = L + i
+  std::vector<std::vector<std::uint32_t>> ties;
+  {
+    std::vector<bool> seen(aig.nodes().size());
+    for (std::size_t l = 0; l < num_latches; ++l) {
+      std::fill(seen.begin(), seen.end(), false);
+      std::vector<std::uint32_t> ins, lats;
+      support(aig, aig.latches()[l].next, seen, ins, lats);
+      std::vector<std::uint32_t> tie{static_cast<std::uint32_t>(l)};
+      for (auto x : lats)
+        if (x != l) tie.push_back(x);
+      for (auto i : ins) tie.push_back(static_cast<std::uint32_t>(num_latches + i));
+      if (tie.size() > 1) ties.push_back(std::move(tie));
+    }
+  }
+  std::vector<double> position(units);
+  {
+    // Start: the layout order with each input just before the first latch that reads it.
+    std::vector<bool> placed(units, false);
+    double at = 0;
+    for (const auto& tie : ties) {
+      for (std::size_t k = 1; k < tie.size(); ++k)
+        if (tie[k] >= num_latches && !placed[tie[k]]) {
+          position[tie[k]] = at++;
+          placed[tie[k]] = true;
+        }
+      if (!placed[tie[0]]) {
+        position[tie[0]] = at++;
+        placed[tie[0]] = true;
+      }
+    }
+    for (std::size_t u = 0; u < units; ++u)
+      if (!placed[u]) position[u] = at++;
+  }
+  auto span = [&] {
+    double total = 0;
+    for (const auto& tie : ties) {
+      double lo = position[tie[0]], hi = lo;
+      for (auto u : tie) {
+        lo = std::min(lo, position[u]);
+        hi = std::max(hi, position[u]);
+      }
+      total += hi - lo;
+    }
+    return total;
+  };
+  std::vector<std::uint32_t> order(units);
+  for (std::size_t u = 0; u < units; ++u) order[u] = static_cast<std::uint32_t>(u);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return position[a] < position[b]; });
+  double best_span = span();
+  std::vector<std::uint32_t> best_order = order;
+  for (int round = 0; round < 50 && !ties.empty(); ++round) {
+    std::vector<double> sum(units, 0), count(units, 0);
+    for (const auto& tie : ties) {
+      double cog = 0;
+      for (auto u : tie) cog += position[u];
+      cog /= static_cast<double>(tie.size());
+      for (auto u : tie) {
+        sum[u] += cog;
+        count[u] += 1;
+      }
+    }
+    for (std::size_t u = 0; u < units; ++u)
+      if (count[u] > 0) position[u] = sum[u] / count[u];
+    std::stable_sort(order.begin(), order.end(),
+                     [&](auto a, auto b) { return position[a] < position[b]; });
+    for (std::size_t k = 0; k < units; ++k) position[order[k]] = static_cast<double>(k);
+    const double now = span();
+    if (now < best_span) {
+      best_span = now;
+      best_order = order;
+    } else if (round > 5) {
+      break;
+    }
+  }
+  input_var_.assign(num_inputs, -1);
+  current_var_.assign(num_latches, -1);
+  next_var_.assign(num_latches, -1);
   int var = 0;
-  for (std::size_t i = 0; i < aig.inputs().size(); ++i) input_var_.push_back(var++);
-  for (std::size_t l = 0; l < aig.latches().size(); ++l) {
-    current_var_.push_back(var++);
-    next_var_.push_back(var++);
+  for (auto u : best_order) {
+    if (u < num_latches) {
+      current_var_[u] = var++;
+      next_var_[u] = var++;
+    } else {
+      input_var_[u - num_latches] = var++;
+    }
   }
   bdd::ensure_variables(var);
   current_vars_ = current_var_;
   memo_.resize(aig.nodes().size());
   memo_set_.assign(aig.nodes().size(), false);
   current_cube_ = Bdd::cube(current_var_);
+  next_cube_ = Bdd::cube(next_var_);
   input_cube_ = Bdd::cube(input_var_);
 
   initial_ = Bdd::constant(true);
@@ -73,11 +159,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   // cluster that mentions it.
   std::vector<Bdd> parts;
   std::vector<std::vector<bool>> part_support;
+  std::vector<std::vector<int>> part_next_vars;  // next variables defined by each cluster
   const std::size_t num_vars = static_cast<std::size_t>(var);
   {
     std::vector<bool> seen(aig.nodes().size());
     Bdd cluster = ok_;
     std::vector<bool> cluster_support(num_vars, false);
+    std::vector<int> cluster_next;
     auto add_support = [&](AigLit lit, std::vector<bool>& into) {
       std::fill(seen.begin(), seen.end(), false);
       std::vector<std::uint32_t> ins, lats;
@@ -93,15 +181,19 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
       if (merged.node_count() > options.cluster_nodes && !cluster.is_true()) {
         parts.push_back(cluster);
         part_support.push_back(cluster_support);
+        part_next_vars.push_back(cluster_next);
         cluster = conjunct;
         cluster_support.assign(num_vars, false);
+        cluster_next.clear();
       } else {
         cluster = merged;
       }
+      cluster_next.push_back(next_var_[l]);
       add_support(aig.latches()[l].next, cluster_support);
     }
     parts.push_back(cluster);
     part_support.push_back(cluster_support);
+    part_next_vars.push_back(cluster_next);
   }
   std::vector<int> last(num_vars, -1);
   for (std::size_t k = 0; k < parts.size(); ++k)
@@ -118,15 +210,31 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     if (last[v] < 0) first.push_back(static_cast<int>(v));
     else after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
   }
+  // Pre-image: the next variables of a cluster and the inputs it is the last to read.
+  std::vector<int> input_last(num_inputs, -1);
+  for (std::size_t i = 0; i < num_inputs; ++i)
+    input_last[i] = last[static_cast<std::size_t>(input_var_[i])];
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    std::vector<int> vs = part_next_vars[k];
+    for (std::size_t i = 0; i < num_inputs; ++i)
+      if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
+    pre_quantify_after_.push_back(Bdd::cube(vs));
+  }
+  {
+    std::vector<int> unused_inputs;
+    for (std::size_t i = 0; i < num_inputs; ++i)
+      if (input_last[i] < 0) unused_inputs.push_back(input_var_[i]);
+    pre_quantify_first_ = Bdd::cube(unused_inputs);
+  }
   clusters_ = std::move(parts);
   for (auto& vs : after) quantify_after_.push_back(Bdd::cube(vs));
   quantify_first_ = Bdd::cube(first);
 
   next_to_current_ = std::make_unique<bdd::VarMap>();
-  substitute_next_ = std::make_unique<bdd::VarMap>();
+  current_to_next_ = std::make_unique<bdd::VarMap>();
   for (std::size_t l = 0; l < aig.latches().size(); ++l) {
     next_to_current_->rename(next_var_[l], current_var_[l]);
-    substitute_next_->substitute(current_var_[l], node_bdd(aig.latches()[l].next));
+    current_to_next_->rename(current_var_[l], next_var_[l]);
   }
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
@@ -177,7 +285,26 @@ Bdd SymbolicSystem::image(const Bdd& states) const {
 }
 
 Bdd SymbolicSystem::preimage(const Bdd& states) const {
-  return states.compose(*substitute_next_).and_exist(ok_, input_cube_);
+  // exists x', i. T(x, i, x') & S(x'), conjoining the clusters in order; ok_ (inputs allowed,
+  // no range error) is part of the first cluster.
+  Bdd acc = states.replace(*current_to_next_).exist(pre_quantify_first_);
+  for (std::size_t k = 0; k < clusters_.size(); ++k)
+    acc = acc.and_exist(clusters_[k], pre_quantify_after_[k]);
+  return acc;
+}
+
+std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
+                                                 semantics::StateView to) const {
+  // T(from, i, to) over the inputs: every current and next variable is fixed, so each cluster
+  // only shrinks the set of inputs.
+  Bdd acc = singleton(from) & singleton(to).replace(*current_to_next_);
+  for (const auto& c : clusters_) acc = acc & c;
+  const Bdd on_inputs = acc.exist(current_cube_).exist(next_cube_);
+  const Bdd one = on_inputs.sat_one(input_cube_);
+  if (one.is_false()) return {};
+  std::vector<bool> bits(input_var_.size());
+  for (std::size_t i = 0; i < input_var_.size(); ++i) bits[i] = one.value_in_cube(input_var_[i]) == 1;
+  return bits;
 }
 
 Bdd SymbolicSystem::field_value_equals(std::uint32_t o, std::int64_t value) {

@@ -5,6 +5,7 @@
 // property talks about. Every BDD lives in the one global manager of bdd_manager.hpp.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "engine/bdd/bdd_manager.hpp"
@@ -51,6 +52,10 @@ class SymbolicSystem {
   /// The singleton set of a concrete state.
   Bdd singleton(semantics::StateView state) const;
 
+  /// Circuit input values (one bool per circuit input) that lead from `from` to `to` in one
+  /// cycle, allowed and without range error; empty when there are none.
+  std::vector<bool> inputs_between(semantics::StateView from, semantics::StateView to) const;
+
   std::size_t num_state_variables() const { return current_vars_.size(); }
 
  private:
@@ -65,7 +70,7 @@ class SymbolicSystem {
   std::vector<int> current_vars_;
   std::vector<Bdd> memo_;
   std::vector<bool> memo_set_;
-  Bdd current_cube_, input_cube_;
+  Bdd current_cube_, next_cube_, input_cube_;
   Bdd initial_, ok_, has_successor_, range_error_states_;
   // Image: clusters of (next_l <-> f_l), each with the current/input variables that can be
   // quantified once it has been conjoined.
@@ -73,7 +78,9 @@ class SymbolicSystem {
   std::vector<Bdd> quantify_after_;
   Bdd quantify_first_;
   std::unique_ptr<bdd::VarMap> next_to_current_;
-  std::unique_ptr<bdd::VarMap> substitute_next_;  ///< current_l -> f_l (pre-image)
+  std::unique_ptr<bdd::VarMap> current_to_next_;
+  std::vector<Bdd> pre_quantify_after_;  ///< pre-image: next variables and inputs per cluster
+  Bdd pre_quantify_first_;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
 };

@@ -148,9 +148,10 @@ class Checks {
           seen[i] = true;
           ++found;
         }
+    const auto transient = g_.complete() ? transient_steps() : std::map<std::size_t, StateSet>{};
     std::size_t missing = 0;
     for (std::size_t i = 0; i < steps_.size(); ++i)
-      if (!seen[i]) {
+      if (!seen[i] && !transient.count(i)) {
         ++missing;
         if (g_.complete()) add(r, "step " + logic::describe_step(steps_[i]) + " is never active");
       }
@@ -160,7 +161,10 @@ class Checks {
                   " steps not reached before the limit; " + limit_message();
       return;
     }
-    finish(r, "all " + std::to_string(steps_.size()) + " steps are reachable");
+    finish(r, "all " + std::to_string(steps_.size()) + " steps are reachable" +
+                  (transient.empty() ? ""
+                                     : " (" + std::to_string(transient.size()) +
+                                           " only during transient evolutions)"));
   }
 
   void dead_transitions(PropertyResult& r) {
@@ -210,7 +214,14 @@ class Checks {
       r.message = "no initial state";
       return;
     }
+    const auto transient = transient_steps();
     for (const auto* step : loop) {
+      const auto index = static_cast<std::size_t>(step - steps_.data());
+      if (auto it = transient.find(index); it != transient.end()) {
+        if (!af) transient_reentry(r, index, it->second, ": a reachable situation exists from "
+                                                          "which it can never be crossed again");
+        continue;
+      }
       auto f = af ? logic::reentry_fair_formula(ts_, step->observable)
                   : logic::reentry_formula(ts_, step->observable);
       const auto& holds = checker.sat(f);
@@ -262,7 +273,9 @@ class Checks {
         add(r, "situation " + situation(s) + " (after " + std::to_string(g_.depth(s)) +
                    " evolutions): " +
                    (g_.edges_begin(s) == g_.edges_end(s)
-                        ? "no successor at all (the assumptions exclude every input)"
+                        ? (ts_.kind() == semantics::SemanticsKind::Grafcet
+                               ? "no successor at all (no input event leads to an evolution)"
+                               : "no successor at all (the assumptions exclude every input)")
                         : "no transition can ever fire again, whatever the inputs"));
     if (count > kMaxSituations)
       add(r, "(and " + std::to_string(count - kMaxSituations) + " more deadlocked situations)");
@@ -285,7 +298,13 @@ class Checks {
       return;
     }
     r.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
+    const auto transient = transient_steps();
     for (const auto& step : steps_) {
+      const auto index = static_cast<std::size_t>(&step - steps_.data());
+      if (auto it = transient.find(index); it != transient.end()) {
+        transient_reentry(r, index, it->second, ", once crossed, is never crossed again");
+        continue;
+      }
       const auto x = logic::observable_atom(ts_, step.observable);
       const auto never_left =
           logic::make_op(logic::Op::EF, {logic::make_and(x, logic::make_op(logic::Op::AG, {x}))});
@@ -425,10 +444,10 @@ class Checks {
     finish(r, "no two alternative transitions are enabled together");
   }
 
-  /// Upstream step names of each system transition, matched with the chart by location (or
-  /// name); empty when some transition cannot be matched.
-  std::vector<std::vector<std::string>> grafcet_upstream() const {
-    std::vector<std::vector<std::string>> out;
+  /// The chart transition behind each system transition, matched by location (or name);
+  /// empty when some transition cannot be matched.
+  std::vector<const model::Transition*> chart_transitions() const {
+    std::vector<const model::Transition*> out;
     if (!task_.project) return out;
     for (const auto& info : ts_.transitions()) {
       const model::Transition* hit = nullptr;
@@ -444,11 +463,73 @@ class Checks {
         }
       }
       if (!hit) return {};
+      out.push_back(hit);
+    }
+    return out;
+  }
+
+  /// Upstream step names of each system transition (chart-qualified); empty when unmatched.
+  std::vector<std::vector<std::string>> grafcet_upstream() const {
+    std::vector<std::vector<std::string>> out;
+    const auto matched = chart_transitions();
+    for (std::size_t i = 0; i < matched.size(); ++i) {
       std::vector<std::string> ups;
-      for (const auto& s : hit->sources) ups.push_back(qualify(info.chart, s));
+      for (const auto& s : matched[i]->sources) ups.push_back(qualify(ts_.transitions()[i].chart, s));
       out.push_back(std::move(ups));
     }
     return out;
+  }
+
+  /// Grafcet steps never active in a stable situation but entered by a transition that fires
+  /// (they are crossed during transient evolutions): index into steps_ -> the states with an
+  /// evolution entering the step. Empty for IEC 61131-3.
+  std::map<std::size_t, StateSet> transient_steps() {
+    std::map<std::size_t, StateSet> out;
+    if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
+    const auto matched = chart_transitions();
+    if (matched.empty()) return out;
+    const std::uint32_t n = g_.num_states();
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
+      bool stable = false;
+      for (std::uint32_t s = 0; s < n && !stable; ++s) stable = step_active(s, steps_[i]);
+      if (stable) continue;
+      std::vector<bool> enters(matched.size(), false);
+      bool any = false;
+      for (std::size_t t = 0; t < matched.size(); ++t) {
+        if (!model::iequals(ts_.transitions()[t].chart, steps_[i].chart)) continue;
+        for (const auto& d : matched[t]->targets) enters[t] = enters[t] || model::iequals(d, steps_[i].step);
+        any = any || enters[t];
+      }
+      if (!any) continue;
+      StateSet entry(n, 0);
+      bool fired = false;
+      for (std::uint32_t s = 0; s < n; ++s) {
+        if (!g_.expanded(s)) continue;
+        for (auto e = g_.edges_begin(s); e < g_.edges_end(s); ++e)
+          for (auto t : g_.fired(e))
+            if (enters[t]) entry[s] = 1, fired = true;
+      }
+      if (fired) out.emplace(i, std::move(entry));
+    }
+    return out;
+  }
+
+  /// Re-entry of a transient step: from every reachable state an evolution entering it stays
+  /// reachable. Adds a finding and a trace when not.
+  void transient_reentry(PropertyResult& r, std::size_t step, const StateSet& entry,
+                         const std::string& what) {
+    const auto back = backward(entry);
+    StateSet bad(back.size(), 0);
+    bool any = false;
+    for (std::size_t s = 0; s < back.size(); ++s) any |= (bad[s] = !back[s]) != 0;
+    if (!any) return;
+    add(r, "step " + logic::describe_step(steps_[step]) + " (crossed only during transient "
+           "evolutions)" + what);
+    if (!r.trace) {
+      r.trace = plain_.path_to(shallowest(bad));
+      r.trace->note = "from the last situation " + logic::describe_step(steps_[step]) +
+                      " can never be crossed again";
+    }
   }
 
   void stored_actions(PropertyResult& r) {

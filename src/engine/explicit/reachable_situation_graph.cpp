@@ -174,6 +174,7 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   }
 
   Collector collect(g.states_);
+  std::vector<semantics::StateWord> current;
   ExplorationProgress progress;
   std::uint64_t next_report = options.progress_interval;
   g.complete_ = true;
@@ -197,7 +198,10 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
 
     const std::uint32_t known = g.states_.size();
     collect.begin();
-    ts.successors(g.states_.at(s), collect);
+    // The sink inserts into the store, which may reallocate: the system must read a copy.
+    const auto view = g.states_.at(s);
+    current.assign(view.begin(), view.end());
+    ts.successors(current, collect);
     // States numbered from `known` on were first reached from s: s is their BFS parent.
     g.parent_edge_state_.resize(g.states_.size(), ReachableSituationGraph::kNone);
     g.parent_edge_.resize(g.states_.size(), 0);

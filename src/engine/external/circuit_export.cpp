@@ -218,6 +218,17 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
       throw std::invalid_argument("write_promela: invariant " + b.name + " reads inputs");
   auto reserved = kPromelaReserved;
   for (const char* internal : {"assumed", "cycle", "end_excluded"}) reserved.insert(internal);
+  // Names of Spin's generated C verifier (pan.c): struct types P<n>/Q<n> per process and
+  // channel, and its globals; a Promela variable of that name breaks the C compilation.
+  for (int k = 0; k < 1000; ++k) {
+    reserved.insert("P" + std::to_string(k));
+    reserved.insert("Q" + std::to_string(k));
+  }
+  for (const char* pan : {"now", "depth", "trpt", "errors", "nstates", "verbose", "Maxbody",
+                          "Stack", "State", "Trans", "path", "tau", "memlim", "hmax", "mreached",
+                          "A_", "Mask", "vsize", "Uerror", "Nr_Trails", "main", "exit", "abort",
+                          "printf", "memcpy", "memset", "strlen", "signal", "time", "stdout"})
+    reserved.insert(pan);
   for (std::size_t l = 0; l < aig.latches().size(); ++l) reserved.insert("next_" + std::to_string(l));
   Naming names(aig, std::move(reserved), "in_");
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "!"); };
@@ -239,7 +250,10 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
   if (!aig.constraints().empty()) out << "hidden byte assumed;\n";
   out << "\nactive proctype cycle()\n{\n  do\n  :: atomic {\n";
-  for (std::size_t b = 0; b < aig.bad().size(); ++b)
+  bool has_gates = false;
+  for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
+    has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
+  for (std::size_t b = 0; b < aig.bad().size() && has_gates; ++b)  // Spin rejects empty d_steps
     if (!only_bad || *only_bad == b) {
       // The bad literal may read gates; evaluate them on the current state first.
       out << "       d_step {\n";

@@ -1,0 +1,267 @@
+#include "engine/external/export_model.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <map>
+
+#include "logic/formula.hpp"
+
+namespace sfcv::engine {
+
+using semantics::Aig;
+using semantics::AigLit;
+using semantics::BitVector;
+
+namespace {
+
+const char* kDummyInput = "sfcv_dummy";
+
+std::string field_comment(const semantics::StateField& f) {
+  using semantics::FieldKind;
+  switch (f.kind) {
+    case FieldKind::StepReady: return "step " + f.name + " ready";
+    case FieldKind::StepActive: return "step " + f.name + " active";
+    case FieldKind::ActionActive: return "action " + f.name + " active";
+    case FieldKind::ActionStored: return "action " + f.name + " stored (S without R yet)";
+    case FieldKind::Variable: return "variable " + f.name;
+    case FieldKind::InputMemory: return "previous value of input " + f.name;
+    case FieldKind::Timer: return "timer " + f.name;
+    case FieldKind::FbState: return "function block memory " + f.name;
+  }
+  return f.name;
+}
+
+// The encoded value e = v - lo (unsigned, LSB first) compared with constant c.
+AigLit compare_bits(Aig& aig, const BitVector& bits, std::int64_t lo, logic::CompareOp op,
+                    std::int64_t c) {
+  using logic::CompareOp;
+  const auto width = static_cast<std::uint32_t>(bits.size());
+  std::int64_t k = 0;
+  const bool overflow = __builtin_sub_overflow(c, lo, &k);  // constants far outside the range
+  const std::int64_t max = width >= 62 ? INT64_MAX : (std::int64_t{1} << width) - 1;
+  // e < k, e == k with k clamped to the representable range.
+  AigLit less, equal;
+  if (overflow) {
+    less = c > lo ? Aig::kTrue : Aig::kFalse;
+    equal = Aig::kFalse;
+  } else if (k < 0) {
+    less = Aig::kFalse;
+    equal = Aig::kFalse;
+  } else if (k > max) {
+    less = Aig::kTrue;
+    equal = Aig::kFalse;
+  } else {
+    const auto kk = semantics::bv_constant(k, width);
+    less = semantics::bv_less_unsigned(aig, bits, kk);
+    equal = semantics::bv_equal(aig, bits, kk);
+  }
+  switch (op) {
+    case CompareOp::Eq: return equal;
+    case CompareOp::Ne: return Aig::make_not(equal);
+    case CompareOp::Lt: return less;
+    case CompareOp::Le: return aig.make_or(less, equal);
+    case CompareOp::Gt: return Aig::make_not(aig.make_or(less, equal));
+    case CompareOp::Ge: return Aig::make_not(less);
+  }
+  return Aig::kFalse;
+}
+
+class Builder {
+ public:
+  Builder(const semantics::TransitionSystem& ts, ExportedModel& out) : ts_(ts), out_(out) {}
+
+  // The literal of a propositional formula over the latches.
+  AigLit literal(const logic::Formula& f) {
+    Aig& aig = out_.model.aig;
+    using logic::Op;
+    switch (f.op) {
+      case Op::True: return Aig::kTrue;
+      case Op::False: return Aig::kFalse;
+      case Op::Atom:
+      case Op::Compare: return atom(f);
+      case Op::Not: return Aig::make_not(literal(*f.args[0]));
+      case Op::And: return aig.make_and(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Or: return aig.make_or(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Implies: return aig.make_implies(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Iff: return aig.make_xnor(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Xor: return aig.make_xor(literal(*f.args[0]), literal(*f.args[1]));
+      default: throw ExportError("a temporal operator inside a state formula");
+    }
+  }
+
+  // The formula with every atom replaced by `{output name}` (NuSMV syntax via to_string).
+  logic::FormulaPtr with_output_atoms(const logic::Formula& f) {
+    if (f.op == logic::Op::Atom || f.op == logic::Op::Compare) {
+      atom(f);
+      return logic::make_atom("{" + output_name(f) + "}");
+    }
+    auto copy = std::make_shared<logic::Formula>(f);
+    for (auto& a : copy->args) a = with_output_atoms(*a);
+    return copy;
+  }
+
+ private:
+  std::string output_name(const logic::Formula& f) const {
+    const auto& obs = ts_.observables().at(static_cast<std::size_t>(f.observable));
+    if (f.op == logic::Op::Atom) return obs.name;
+    return obs.name + " " + std::string(logic::to_string(f.cmp)) + " " + std::to_string(f.value);
+  }
+
+  AigLit atom(const logic::Formula& f) {
+    if (f.observable < 0) throw ExportError("unresolved atom '" + f.name + "'");
+    const auto o = static_cast<std::size_t>(f.observable);
+    const auto& bits = out_.circuit.observable_bits.at(o);
+    const auto name = output_name(f);
+    if (const auto it = outputs_.find(name); it != outputs_.end()) return it->second;
+    Aig& aig = out_.model.aig;
+    AigLit l;
+    if (f.op == logic::Op::Atom) {
+      if (bits.size() != 1)
+        throw ExportError("'" + f.name + "' is an integer: compare it with a constant");
+      l = bits[0];
+    } else {
+      l = compare_bits(aig, bits, out_.circuit.observable_lo.at(o), f.cmp, f.value);
+    }
+    aig.add_output(name, l);
+    outputs_.emplace(name, l);
+    return l;
+  }
+
+  const semantics::TransitionSystem& ts_;
+  ExportedModel& out_;
+  std::map<std::string, AigLit> outputs_;
+};
+
+}  // namespace
+
+bool is_invariant(const logic::Formula& f) {
+  return f.op == logic::Op::AG && logic::is_propositional(*f.args[0]);
+}
+
+ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRequest& request) {
+  if (ts.kind() != semantics::SemanticsKind::Iec61131)
+    throw ExportError("exports are not supported for Grafcet yet (only IEC 61131-3 charts)");
+  ExportedModel out;
+  try {
+    out.circuit = semantics::build_iec61131_circuit(ts);
+  } catch (const semantics::CircuitUnsupported& e) {
+    throw ExportError(std::string("the chart cannot be exported as a circuit: ") + e.what());
+  }
+  CircuitExport& m = out.model;
+  m.aig = out.circuit.aig;
+  Aig& aig = m.aig;
+
+  // Comments: every latch and input back to the chart.
+  const auto& fields = ts.layout().fields();
+  m.latch_comments.assign(aig.latches().size(), "");
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    const auto& latches = out.circuit.field_latches[f];
+    for (std::size_t k = 0; k < latches.size(); ++k) {
+      std::string c = field_comment(fields[f]);
+      if (latches.size() > 1)
+        c += ", bit " + std::to_string(k) + " of value - " + std::to_string(fields[f].lo) +
+             " (LSB first)";
+      m.latch_comments[latches[k]] = c;
+    }
+  }
+  m.input_comments.assign(aig.inputs().size(), "");
+  for (std::size_t i = 0; i < ts.inputs().size(); ++i) {
+    const auto& in = ts.inputs()[i];
+    const auto& bits = out.circuit.input_bits[i];
+    for (std::size_t k = 0; k < bits.size(); ++k) {
+      std::string c = (in.pseudo ? "pseudo-input " : "input ") + in.name;
+      if (in.pseudo) c += " (a nondeterministic choice of the semantics)";
+      if (bits.size() > 1)
+        c += ", bit " + std::to_string(k) + " of value - " + std::to_string(in.type.lo) +
+             " (LSB first)";
+      m.input_comments[aig.nodes()[Aig::node_of(bits[k])].index] = c;
+    }
+  }
+  if (aig.inputs().empty()) {
+    // ABC's `int` and `dprove` crash on designs without inputs.
+    aig.add_input(kDummyInput);
+    m.input_comments.push_back("dummy input (the chart has none), never read");
+  }
+
+  m.header = request.header;
+  m.header.push_back("IEC 61131-3 scan cycle of sfcv as a circuit: one Boolean variable per state");
+  m.header.push_back("bit of sfcv's transition system, one input per bit of each (pseudo-)input.");
+  const AigLit cut = aig.make_and(out.circuit.allowed, Aig::make_not(out.circuit.range_error));
+  if (cut != Aig::kTrue) {
+    m.header.push_back("A cycle whose inputs break the assumptions or the input ranges, or which");
+    m.header.push_back("raises a range error, has no successor: the constraint cuts it.");
+    aig.add_constraint("assumptions_and_ranges", cut);
+  }
+
+  Builder builder(ts, out);
+  // Observables as named outputs (steps, actions, Boolean variables).
+  for (std::size_t o = 0; o < ts.observables().size(); ++o)
+    if (out.circuit.observable_bits[o].size() == 1) {
+      logic::Formula f;
+      f.op = logic::Op::Atom;
+      f.name = ts.observables()[o].name;
+      f.observable = static_cast<std::int32_t>(o);
+      builder.literal(f);
+    }
+
+  for (std::size_t p = 0; p < request.properties.size(); ++p) {
+    const auto& prop = request.properties[p];
+    if (is_invariant(*prop.formula)) {
+      aig.add_bad(prop.name, Aig::make_not(builder.literal(*prop.formula->args[0])));
+      out.bad_property.push_back(static_cast<std::int32_t>(p));
+    } else {
+      m.ctl.emplace_back(prop.name, logic::to_string(builder.with_output_atoms(*prop.formula)));
+      out.ctl_property.push_back(static_cast<std::int32_t>(p));
+      out.ctl_only.push_back(prop.name);
+    }
+  }
+  if (request.reachability) {
+    for (std::size_t o = 0; o < ts.observables().size(); ++o) {
+      const auto& obs = ts.observables()[o];
+      if (obs.kind != semantics::ObservableKind::Step) continue;
+      if (request.target == ExportTarget::Smv) {
+        m.ctl.emplace_back("reachable_" + obs.name, "EF {" + obs.name + "}");
+        out.ctl_property.push_back(-1);
+      } else {
+        aig.add_bad("unreachable_" + obs.name, out.circuit.observable_bits[o][0]);
+        out.bad_property.push_back(-1);
+      }
+    }
+  }
+  if (cut != Aig::kTrue && !m.ctl.empty()) {
+    m.header.push_back("CTL: sfcv quantifies over maximal paths (a path may end in a state whose");
+    m.header.push_back("every cycle is cut), NuSMV over infinite ones; invariants agree always,");
+    m.header.push_back("other CTL when every reachable state has an allowed successor.");
+  }
+  return out;
+}
+
+semantics::Aig aiger_circuit(const CircuitExport& model) {
+  Aig aig = model.aig;
+  aig.clear_outputs();
+  if (aig.inputs().empty()) aig.add_input(kDummyInput);
+  if (aig.constraints().empty()) return aig;
+  AigLit all = Aig::kTrue;
+  for (const auto& c : aig.constraints()) all = aig.make_and(all, c.literal);
+  aig.clear_constraints();
+  const auto index = static_cast<std::uint32_t>(aig.latches().size());
+  const AigLit valid = aig.add_latch("sfcv_valid", true);
+  aig.set_next(index, aig.make_and(valid, all));
+  const auto bad = aig.bad();
+  aig.clear_bad();
+  for (const auto& b : bad) aig.add_bad(b.name, aig.make_and(valid, b.literal));
+  return aig;
+}
+
+std::vector<std::vector<std::int64_t>> frames_to_inputs(
+    const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& circuit,
+    const std::vector<std::vector<bool>>& frames) {
+  std::vector<std::vector<std::int64_t>> inputs;
+  for (auto frame : frames) {
+    frame.resize(std::max(frame.size(), circuit.aig.inputs().size()), false);
+    inputs.push_back(semantics::inputs_from_bits(ts, circuit, frame));
+  }
+  return inputs;
+}
+
+}  // namespace sfcv::engine

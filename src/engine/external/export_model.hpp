@@ -1,0 +1,73 @@
+#pragma once
+// From a transition system and the properties of a check to a CircuitExport (NuSMV, Cadence
+// SMV, Promela) and an AIGER circuit, meaning exactly what sfcv's engines mean:
+// - the circuit is semantics::build_iec61131_circuit (latches = the explicit state bits);
+// - a cycle whose inputs violate the assumptions, or which raises a range error, has no
+//   successor in sfcv: the export cuts it (constraint `allowed & !range_error`: NuSMV TRANS,
+//   Cadence SMV assume, Promela end state). The state itself stays reachable and is checked;
+// - `AG p` with p propositional becomes a bad-state literal `!p` over the latches;
+// - other CTL properties are kept as text for NuSMV / Cadence SMV only.
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/external/circuit_export.hpp"
+#include "logic/check_task.hpp"
+#include "semantics/iec61131_circuit.hpp"
+
+namespace sfcv::engine {
+
+/// What cannot be exported (Grafcet, an operation the circuit cannot express): the message
+/// says what. Callers answer exit 2.
+class ExportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// NuSMV / Cadence SMV (CTL text allowed) or a circuit checker (AIGER, Promela: invariants).
+enum class ExportTarget { Smv, Circuit };
+
+struct ExportRequest {
+  ExportTarget target = ExportTarget::Smv;
+  std::vector<logic::Property> properties;  ///< resolved against the system
+  /// Add the reachability standard check: `EF X` per step for NuSMV / Cadence SMV, and the
+  /// invariant `AG !X` ("X unreachable", violated = reachable) for AIGER / Promela.
+  bool reachability = false;
+  std::vector<std::string> header;  ///< first comment lines (source file, options)
+};
+
+struct ExportedModel {
+  CircuitExport model;  ///< aig with constraint, bad literals, outputs; comments; CTL text
+  semantics::TransitionCircuit circuit;  ///< for mapping counterexamples back
+  /// Per bad literal of model.aig: the property it checks (index into request.properties), or
+  /// -1 for a reachability invariant.
+  std::vector<std::int32_t> bad_property;
+  /// Per entry of model.ctl: the property (index into request.properties), -1 for reachability.
+  std::vector<std::int32_t> ctl_property;
+  /// Properties that are not invariants (only NuSMV / Cadence SMV can take them).
+  std::vector<std::string> ctl_only;
+};
+
+/// `AG p` with p propositional.
+bool is_invariant(const logic::Formula& f);
+
+/// Throws ExportError for Grafcet systems and for circuits sfcv cannot build.
+ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRequest& request);
+
+/// The circuit to write as AIGER and give to ABC: the cut constraint folded into a latch
+/// `sfcv_valid` (initially 1, next = valid & constraint) and every bad literal b replaced by
+/// `valid & b`. AIGER 1.9 constraints would also have to hold in the last frame, so a bad
+/// state whose every input is cut (assumptions over the state, range errors) would be missed;
+/// the latch keeps exactly sfcv's reachable states. Outputs are dropped (ABC would read them as
+/// properties); at least one input is guaranteed (a dummy one when the chart has none).
+semantics::Aig aiger_circuit(const CircuitExport& model);
+
+/// The input frames of an outside counterexample (frames[k] = circuit inputs of cycle k + 1)
+/// as sfcv input valuations (`semantics::simulate`); extra (dummy) inputs are ignored.
+std::vector<std::vector<std::int64_t>> frames_to_inputs(
+    const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& circuit,
+    const std::vector<std::vector<bool>>& frames);
+
+}  // namespace sfcv::engine

@@ -1,0 +1,377 @@
+#include "io/plcopen_network.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "io/plcopen_st.hpp"
+#include "model/names.hpp"
+#include "model/types.hpp"
+
+namespace sfcv::io::plcopen {
+
+namespace {
+using model::ExprKind;
+using model::ExprPtr;
+
+bool is_true_const(const ExprPtr& e) {
+  return e && e->kind == ExprKind::BoolConst && e->value == 1;
+}
+
+ExprPtr negate_if(bool negated, ExprPtr e) {
+  if (!negated || !e) return e;
+  auto where = e->where;
+  return model::make_unary(ExprKind::Not, std::move(e), std::move(where));
+}
+
+// Functions of the standard library the model can express.
+enum class Fn { None, And, Or, Xor, Not, Move, Cmp, Add, Mul, Sub, Div, Mod };
+
+Fn function_of(std::string_view type, ExprKind& cmp) {
+  const std::string t = model::to_upper(type);
+  if (t == "AND") return Fn::And;
+  if (t == "OR") return Fn::Or;
+  if (t == "XOR") return Fn::Xor;
+  if (t == "NOT") return Fn::Not;
+  if (t == "MOVE") return Fn::Move;
+  if (t == "ADD") return Fn::Add;
+  if (t == "MUL") return Fn::Mul;
+  if (t == "SUB") return Fn::Sub;
+  if (t == "DIV") return Fn::Div;
+  if (t == "MOD") return Fn::Mod;
+  static const std::pair<const char*, ExprKind> cmps[] = {
+      {"GT", ExprKind::Gt}, {"GE", ExprKind::Ge}, {"EQ", ExprKind::Eq},
+      {"NE", ExprKind::Ne}, {"LT", ExprKind::Lt}, {"LE", ExprKind::Le}};
+  for (const auto& [name, kind] : cmps)
+    if (t == name) {
+      cmp = kind;
+      return Fn::Cmp;
+    }
+  return Fn::None;
+}
+
+bool is_output_element(std::string_view n) {
+  return n == "outVariable" || n == "inOutVariable" || n == "coil";
+}
+}  // namespace
+
+model::StmtPtr make_if_assign(model::ExprPtr cond, std::string target, model::ExprPtr value,
+                              model::SourceLocation where) {
+  auto s = std::make_shared<model::Stmt>();
+  s->kind = model::StmtKind::If;
+  s->where = where;
+  s->conditions.push_back(std::move(cond));
+  s->bodies.push_back({model::make_assign(std::move(target), std::move(value), where)});
+  return s;
+}
+
+Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems)
+    : ctx_(ctx), problems_(problems), container_(container) {
+  for (auto n : element_children(container)) {
+    if (const auto id = n.attribute("localId")) by_id_.emplace(id.value(), n);
+    if (local_name(n) == "connector") connectors_.emplace(model::to_upper(n.attribute("name").value()), n);
+  }
+}
+
+ExprPtr Network::fail(pugi::xml_node node, std::string message) {
+  problems_.push_back({model::Severity::Error, ctx_.where(node), std::move(message)});
+  return nullptr;
+}
+
+model::StmtList Network::take_calls() { return std::exchange(calls_, {}); }
+
+ExprPtr Network::input(pugi::xml_node cpi, pugi::xml_node owner) {
+  const auto connections = children(cpi, "connection");
+  if (connections.empty()) {
+    const auto at = owner ? owner : cpi ? cpi.parent() : container_;
+    return fail(at, std::string(local_name(at)) + ": input is not connected");
+  }
+  std::vector<ExprPtr> alternatives;
+  for (auto c : connections) {
+    auto v = value(c);
+    if (!v) return nullptr;
+    alternatives.push_back(std::move(v));
+  }
+  if (alternatives.size() == 1) return alternatives.front();
+  // LD parallel branches; a branch straight from the power rail makes the whole OR true.
+  for (const auto& a : alternatives)
+    if (is_true_const(a)) return a;
+  return model::make_nary(ExprKind::Or, std::move(alternatives), ctx_.where(cpi));
+}
+
+ExprPtr Network::value(pugi::xml_node connection) {
+  const std::string ref = connection.attribute("refLocalId").value();
+  const auto it = by_id_.find(ref);
+  if (ref.empty() || it == by_id_.end())
+    return fail(connection, "connection to unknown localId '" + ref + "'");
+  return node_value(it->second, connection.attribute("formalParameter").value());
+}
+
+ExprPtr Network::text_value(pugi::xml_node holder, pugi::xml_node text_element) {
+  if (!text_element) return fail(holder, std::string(local_name(holder)) + " has no expression");
+  const auto text = body_text(text_element, ctx_);
+  if (trim(text.text).empty()) return fail(holder, std::string(local_name(holder)) + " has an empty expression");
+  return parse_expression_text(text, problems_);
+}
+
+ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
+  const std::string id = node.attribute("localId").value();
+  const auto kind = local_name(node);
+  if (kind == "block") return block_value(node, pin);
+  if (visiting_.count(id))
+    return fail(node, "feedback loop through " + std::string(kind) +
+                          " without a function block: the value is not defined");
+  visiting_.insert(id);
+  struct Leave {
+    std::set<std::string>& s;
+    std::string id;
+    ~Leave() { s.erase(id); }
+  } leave{visiting_, id};
+
+  if (kind == "leftPowerRail") return model::make_bool(true, ctx_.where(node));
+  if (kind == "inVariable" || kind == "inOutVariable")
+    return negate_if(attribute_true(node, "negated"), text_value(node, child(node, "expression")));
+  if (kind == "contact") {
+    if (const auto edge = std::string(node.attribute("edge").value()); !edge.empty() && edge != "none")
+      return fail(node, "unsupported: contact with " + edge + " edge detection (declare an R_TRIG/F_TRIG instead)");
+    auto var = text_value(node, child(node, "variable"));
+    if (!var) return nullptr;
+    var = negate_if(attribute_true(node, "negated"), var);
+    auto in = input(child(node, "connectionPointIn"), node);
+    if (!in) return nullptr;
+    if (is_true_const(in)) return var;
+    return model::make_nary(ExprKind::And, {in, var}, ctx_.where(node));
+  }
+  if (kind == "coil") return input(child(node, "connectionPointIn"), node);  // power flows through
+  if (kind == "continuation") {
+    const auto it = connectors_.find(model::to_upper(node.attribute("name").value()));
+    if (it == connectors_.end())
+      return fail(node, std::string("continuation '") + node.attribute("name").value() +
+                            "' has no connector of that name");
+    return input(child(it->second, "connectionPointIn"), it->second);
+  }
+  return fail(node, "unsupported: a " + std::string(kind) + " cannot be used as a value here");
+}
+
+ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
+  const std::string type = block.attribute("typeName").value();
+  const std::string instance = block.attribute("instanceName").value();
+  const auto outputs = children(child(block, "outputVariables"), "variable");
+  if (model::iequals(pin, "ENO"))
+    return fail(block, "unsupported: ENO output of block " + type);
+  bool out_negated = false;
+  std::string out_pin = pin;
+  for (auto o : outputs) {
+    const std::string f = o.attribute("formalParameter").value();
+    if (pin.empty() || model::iequals(f, pin)) {
+      out_negated = attribute_true(o, "negated");
+      if (out_pin.empty()) out_pin = f;
+      break;
+    }
+  }
+
+  if (!instance.empty() && model::standard_fb(type) != model::StandardFb::None) {
+    if (!call_block(block)) return nullptr;
+    if (out_pin.empty()) return fail(block, "block " + instance + " has no output");
+    return negate_if(out_negated, model::make_member(instance, out_pin, ctx_.where(block)));
+  }
+
+  ExprKind cmp = ExprKind::Eq;
+  const Fn fn = function_of(type, cmp);
+  if (fn == Fn::None) {
+    if (!instance.empty())
+      return fail(block, "unsupported: function block " + type + " (instance " + instance +
+                             "); only the standard function blocks R_TRIG, F_TRIG, SR, RS, TON, "
+                             "TOF, TP, CTU, CTD are modelled");
+    return fail(block, "unsupported: function " + type +
+                           " (AND, OR, XOR, NOT, MOVE, comparisons and ADD, SUB, MUL, DIV, MOD "
+                           "are modelled)");
+  }
+
+  const std::string id = block.attribute("localId").value();
+  if (visiting_.count(id))
+    return fail(block, "feedback loop through function " + type + ": the value is not defined");
+  visiting_.insert(id);
+  struct Leave {
+    std::set<std::string>& s;
+    std::string id;
+    ~Leave() { s.erase(id); }
+  } leave{visiting_, id};
+
+  std::vector<ExprPtr> args;
+  for (auto v : children(child(block, "inputVariables"), "variable")) {
+    const std::string f = v.attribute("formalParameter").value();
+    const auto cpi = child(v, "connectionPointIn");
+    if (model::iequals(f, "EN")) {
+      if (cpi && child(cpi, "connection"))
+        return fail(v, "unsupported: EN input of block " + type);
+      continue;
+    }
+    if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
+      return fail(v, "unsupported: " + edge + " edge input of block " + type);
+    auto a = input(cpi, v);
+    if (!a) return nullptr;
+    args.push_back(negate_if(attribute_true(v, "negated"), std::move(a)));
+  }
+  const auto where = ctx_.where(block);
+  auto arity = [&](std::size_t lo, std::size_t hi) {
+    return args.size() >= lo && args.size() <= hi;
+  };
+  ExprPtr r;
+  switch (fn) {
+    case Fn::And:
+    case Fn::Or:
+    case Fn::Xor: {
+      if (!arity(1, 1000)) return fail(block, type + " block without inputs");
+      const auto k = fn == Fn::And ? ExprKind::And : fn == Fn::Or ? ExprKind::Or : ExprKind::Xor;
+      r = args.size() == 1 ? args[0] : model::make_nary(k, args, where);
+      break;
+    }
+    case Fn::Not:
+    case Fn::Move:
+      if (!arity(1, 1)) return fail(block, type + " block needs exactly one input");
+      r = fn == Fn::Not ? model::make_unary(ExprKind::Not, args[0], where) : args[0];
+      break;
+    case Fn::Cmp: {
+      if (!arity(2, 1000)) return fail(block, type + " block needs at least two inputs");
+      // GT(a, b, c) is a > b AND b > c.
+      std::vector<ExprPtr> parts;
+      for (std::size_t i = 0; i + 1 < args.size(); ++i)
+        parts.push_back(model::make_binary(cmp, args[i], args[i + 1], where));
+      r = parts.size() == 1 ? parts[0] : model::make_nary(ExprKind::And, parts, where);
+      break;
+    }
+    case Fn::Add:
+    case Fn::Mul: {
+      if (!arity(2, 1000)) return fail(block, type + " block needs at least two inputs");
+      r = args[0];
+      for (std::size_t i = 1; i < args.size(); ++i)
+        r = model::make_binary(fn == Fn::Add ? ExprKind::Add : ExprKind::Mul, r, args[i], where);
+      break;
+    }
+    case Fn::Sub:
+    case Fn::Div:
+    case Fn::Mod: {
+      if (!arity(2, 2)) return fail(block, type + " block needs exactly two inputs");
+      const auto k = fn == Fn::Sub ? ExprKind::Sub : fn == Fn::Div ? ExprKind::Div : ExprKind::Mod;
+      r = model::make_binary(k, args[0], args[1], where);
+      break;
+    }
+    case Fn::None: break;
+  }
+  return negate_if(out_negated, r);
+}
+
+bool Network::call_block(pugi::xml_node block) {
+  const std::string id = block.attribute("localId").value();
+  // Already called, or being called (a feedback loop: the output of the previous call is read).
+  if (called_.count(id)) return true;
+  called_.insert(id);
+  const std::string type = block.attribute("typeName").value();
+  std::vector<std::pair<std::string, ExprPtr>> args;
+  for (auto v : children(child(block, "inputVariables"), "variable")) {
+    const std::string f = v.attribute("formalParameter").value();
+    const auto cpi = child(v, "connectionPointIn");
+    if (!cpi || !child(cpi, "connection")) continue;  // unconnected input keeps its value
+    if (model::iequals(f, "EN")) {
+      fail(v, "unsupported: EN input of block " + type);
+      return false;
+    }
+    if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none") {
+      fail(v, "unsupported: " + edge + " edge input of block " + type);
+      return false;
+    }
+    auto a = input(cpi);
+    if (!a) return false;
+    args.emplace_back(f, negate_if(attribute_true(v, "negated"), std::move(a)));
+  }
+  if (child(block, "inOutVariables") && !children(child(block, "inOutVariables"), "variable").empty()) {
+    fail(block, "unsupported: in/out parameters of block " + type);
+    return false;
+  }
+  calls_.push_back(model::make_fb_call(block.attribute("instanceName").value(), std::move(args),
+                                       ctx_.where(block)));
+  return true;
+}
+
+ExprPtr Network::output_named(std::string_view name, bool& found) {
+  found = false;
+  for (auto n : element_children(container_)) {
+    const auto kind = local_name(n);
+    pugi::xml_node text;
+    if (kind == "outVariable" || kind == "inOutVariable") text = child(n, "expression");
+    else if (kind == "coil") text = child(n, "variable");
+    else continue;
+    if (!model::iequals(trim(body_text(text, ctx_).text), name)) continue;
+    found = true;
+    auto v = input(child(n, "connectionPointIn"), n);
+    return negate_if(attribute_true(n, "negated"), v);
+  }
+  return nullptr;
+}
+
+std::optional<model::StmtList> Network::statements() {
+  std::vector<pugi::xml_node> outputs;
+  for (auto n : element_children(container_)) {
+    const auto kind = local_name(n);
+    if (!is_output_element(kind)) continue;
+    const auto cpi = child(n, "connectionPointIn");
+    if (!cpi || !child(cpi, "connection")) continue;
+    outputs.push_back(n);
+  }
+  // FBD execution order, when the tool gave one to every output.
+  const bool ordered = !outputs.empty() && std::all_of(outputs.begin(), outputs.end(), [](auto n) {
+    return std::atoi(n.attribute("executionOrderId").value()) > 0;
+  });
+  if (ordered)
+    std::stable_sort(outputs.begin(), outputs.end(), [](auto a, auto b) {
+      return std::atoi(a.attribute("executionOrderId").value()) <
+             std::atoi(b.attribute("executionOrderId").value());
+    });
+
+  model::StmtList body;
+  for (auto n : outputs) {
+    const auto kind = local_name(n);
+    const auto where = ctx_.where(n);
+    const auto text = body_text(child(n, kind == "coil" ? "variable" : "expression"), ctx_);
+    const std::string target = trim(text.text);
+    if (target.empty()) {
+      fail(n, std::string(kind) + " has no variable");
+      return std::nullopt;
+    }
+    auto v = input(child(n, "connectionPointIn"));
+    if (!v) return std::nullopt;
+    for (auto& c : take_calls()) body.push_back(std::move(c));
+    const bool negated = attribute_true(n, "negated");
+    const std::string storage = n.attribute("storage").value();
+    if (kind == "coil") {
+      if (const std::string edge = n.attribute("edge").value(); !edge.empty() && edge != "none") {
+        fail(n, "unsupported: coil with " + edge + " edge detection");
+        return std::nullopt;
+      }
+      if (storage == "set" || storage == "reset") {
+        body.push_back(make_if_assign(negate_if(negated, v), target,
+                                      model::make_bool(storage == "set", where), where));
+        continue;
+      }
+    }
+    body.push_back(model::make_assign(target, negate_if(negated, v), where));
+  }
+  // Function blocks whose outputs nobody reads still run.
+  for (auto n : element_children(container_)) {
+    if (local_name(n) != "block" || !*n.attribute("instanceName").value()) continue;
+    if (called_.count(n.attribute("localId").value())) continue;
+    if (model::standard_fb(n.attribute("typeName").value()) == model::StandardFb::None) {
+      fail(n, std::string("unsupported: function block ") + n.attribute("typeName").value() +
+                  " (instance " + n.attribute("instanceName").value() + ")");
+      return std::nullopt;
+    }
+    if (!call_block(n)) return std::nullopt;
+    for (auto& c : take_calls()) body.push_back(std::move(c));
+  }
+  return body;
+}
+
+}  // namespace sfcv::io::plcopen

@@ -1,0 +1,67 @@
+#pragma once
+// FBD/LD networks of PLCopen XML as ST: the value on a wire as an expression (transition
+// conditions wired to logic, transitions written in FBD/LD), and whole FBD/LD bodies as
+// statements (actions). Internal to src/io.
+//
+// Functions (AND, OR, XOR, NOT, MOVE, comparisons, arithmetic) become expressions. A standard
+// function block (TON, SR, R_TRIG, ...) becomes an FbCall statement, emitted before the first
+// use of one of its outputs, which reads `instance.OUTPUT`; a feedback loop through an FB
+// reads the output of the previous call, as PLCs do. Anything else is an "unsupported"
+// diagnostic naming the block.
+
+#include <pugixml.hpp>
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "io/plcopen_xml_dom.hpp"
+#include "model/expr.hpp"
+#include "model/statement.hpp"
+
+namespace sfcv::io::plcopen {
+
+class Network {
+ public:
+  /// `container`: the element holding the network (SFC, FBD, LD). Problems go to `problems`.
+  Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems);
+
+  /// The value flowing into `connection_point_in` (several connections are LD parallel
+  /// branches: OR). Null after a diagnostic.
+  model::ExprPtr input(pugi::xml_node connection_point_in, pugi::xml_node owner = {});
+
+  /// FB calls the values computed so far need, in call order; the list is emptied.
+  model::StmtList take_calls();
+
+  /// A whole FBD/LD body as statements: every output (outVariable, inOutVariable, coil) in
+  /// execution order, FB calls before their first use. nullopt after a diagnostic.
+  std::optional<model::StmtList> statements();
+
+  /// Outputs (outVariable expression / coil variable) named `name`: the value driving it.
+  /// Used for transitions written in FBD/LD. Null when absent (no diagnostic) or on error.
+  model::ExprPtr output_named(std::string_view name, bool& found);
+
+ private:
+  model::ExprPtr value(pugi::xml_node connection);
+  model::ExprPtr node_value(pugi::xml_node node, const std::string& pin);
+  model::ExprPtr block_value(pugi::xml_node block, const std::string& pin);
+  model::ExprPtr text_value(pugi::xml_node holder, pugi::xml_node text_element);
+  bool call_block(pugi::xml_node block);
+  model::ExprPtr fail(pugi::xml_node node, std::string message);
+
+  const XmlContext& ctx_;
+  model::Diagnostics& problems_;
+  std::map<std::string, pugi::xml_node> by_id_;
+  std::map<std::string, pugi::xml_node> connectors_;  ///< connector name -> element
+  std::set<std::string> called_;                       ///< FB blocks (localId) already called
+  std::set<std::string> visiting_;                     ///< localIds on the evaluation path
+  model::StmtList calls_;
+  pugi::xml_node container_;
+};
+
+/// The IF statement `IF cond THEN target := value; END_IF` (set/reset coils).
+model::StmtPtr make_if_assign(model::ExprPtr cond, std::string target, model::ExprPtr value,
+                              model::SourceLocation where);
+
+}  // namespace sfcv::io::plcopen

@@ -1,0 +1,45 @@
+#pragma once
+// Building one POU of a PLCopen TC6 document: what the SFC graph builder shares with the POU
+// reader. Internal to src/io.
+
+#include <pugixml.hpp>
+
+#include <map>
+#include <string>
+
+#include "io/plcopen_xml_dom.hpp"
+#include "model/chart.hpp"
+
+namespace sfcv::io::plcopen {
+
+struct PouContext {
+  XmlContext& ctx;
+  pugi::xml_node pou_node;
+  model::Pou& pou;
+  /// pou/transitions/transition by upper-case name (conditions given by reference).
+  std::map<std::string, pugi::xml_node> named_transitions;
+  /// Guards of named transitions already read, by upper-case name.
+  std::map<std::string, model::ExprPtr> transition_guards;
+  /// FB calls needed by condition networks (LD/FBD logic wired to transitions).
+  model::StmtList condition_calls;
+  /// Inline action bodies read so far (they are named INLINE1, INLINE2, ...).
+  int inline_actions = 0;
+};
+
+/// Reads `sfc` into a new chart of the POU (named `chart_name`, body of `parent_action` when
+/// not empty), with its action associations and inline actions (named INLINE<k>, numbered in
+/// document order over the POU, a suffix added if the name is taken); returns its index in
+/// Pou::charts. Macro-step bodies become further charts.
+int build_sfc_chart(PouContext& pc, pugi::xml_node sfc, const std::string& chart_name,
+                    const std::string& parent_action);
+
+/// Sets `action`'s body from a language element (ST, FBD, LD; IL and others are not modelled).
+/// A body that cannot be modelled does not block loading: a warning with the element path,
+/// `body_unsupported` set and the reasons as notes.
+void read_action_body(PouContext& pc, model::Action& action, pugi::xml_node language);
+
+/// The first element child that is a body language (ST, IL, FBD, LD, SFC), skipping
+/// documentation and addData.
+pugi::xml_node body_language(pugi::xml_node body);
+
+}  // namespace sfcv::io::plcopen

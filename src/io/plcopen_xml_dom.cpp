@@ -1,0 +1,292 @@
+#include "io/plcopen_xml_dom.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <limits>
+
+#include "model/names.hpp"
+
+namespace sfcv::io::plcopen {
+
+std::string_view local_name(pugi::xml_node node) {
+  std::string_view n = node.name();
+  const auto colon = n.find(':');
+  return colon == std::string_view::npos ? n : n.substr(colon + 1);
+}
+
+pugi::xml_node child(pugi::xml_node node, std::string_view name) {
+  for (auto c = node.first_child(); c; c = c.next_sibling())
+    if (c.type() == pugi::node_element && local_name(c) == name) return c;
+  return {};
+}
+
+std::vector<pugi::xml_node> children(pugi::xml_node node, std::string_view name) {
+  std::vector<pugi::xml_node> r;
+  for (auto c = node.first_child(); c; c = c.next_sibling())
+    if (c.type() == pugi::node_element && local_name(c) == name) r.push_back(c);
+  return r;
+}
+
+std::vector<pugi::xml_node> element_children(pugi::xml_node node) {
+  std::vector<pugi::xml_node> r;
+  for (auto c = node.first_child(); c; c = c.next_sibling())
+    if (c.type() == pugi::node_element) r.push_back(c);
+  return r;
+}
+
+std::string element_path(pugi::xml_node node) {
+  std::vector<std::string> parts;
+  for (auto n = node; n && n.type() == pugi::node_element; n = n.parent()) {
+    std::string part(local_name(n));
+    const auto name = n.attribute("name");
+    const auto id = n.attribute("localId");
+    const auto formal = n.attribute("formalParameter");
+    if (name && *name.value()) {
+      part += "[@name='" + std::string(name.value()) + "']";
+    } else if (id) {
+      part += "[@localId='" + std::string(id.value()) + "']";
+    } else if (formal && *formal.value()) {
+      part += "[@formalParameter='" + std::string(formal.value()) + "']";
+    }
+    // Elements without a distinguishing attribute (or with a repeated localId such as the
+    // localId="0" Beremiz gives every action of a block) get their position among same-named
+    // siblings.
+    if (!(name && *name.value()) && n.parent()) {
+      int index = 0, count = 0, same_id = 0;
+      for (auto s = n.parent().first_child(); s; s = s.next_sibling()) {
+        if (s.type() != pugi::node_element || local_name(s) != local_name(n)) continue;
+        ++count;
+        if (id && std::strcmp(s.attribute("localId").value(), id.value()) == 0) ++same_id;
+        if (s == n) index = count;
+      }
+      if (count > 1 && (!id || same_id > 1)) part += "[" + std::to_string(index) + "]";
+    }
+    parts.push_back(std::move(part));
+  }
+  std::string path;
+  for (auto it = parts.rbegin(); it != parts.rend(); ++it) path += "/" + *it;
+  return path;
+}
+
+// ---------------------------------------------------------------------------------- XmlContext
+
+XmlContext::XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics)
+    : file_(std::move(file)), diagnostics_(diagnostics) {
+  line_starts_.push_back(0);
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') line_starts_.push_back(i + 1);
+}
+
+model::SourceLocation XmlContext::where_offset(std::ptrdiff_t offset) const {
+  model::SourceLocation w;
+  w.file = file_;
+  if (offset >= 0) {
+    const auto off = static_cast<std::size_t>(offset);
+    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), off);
+    const auto line = static_cast<std::size_t>(it - line_starts_.begin());  // 1-based
+    w.line = static_cast<int>(line);
+    w.column = static_cast<int>(off - line_starts_[line - 1]) + 1;
+  }
+  return w;
+}
+
+model::SourceLocation XmlContext::where(pugi::xml_node node) const {
+  auto w = where_offset(node ? node.offset_debug() : -1);
+  if (node) w.element_path = element_path(node);
+  return w;
+}
+
+void XmlContext::error(pugi::xml_node node, std::string message) {
+  diagnostics_.push_back({model::Severity::Error, where(node), std::move(message)});
+}
+void XmlContext::warning(pugi::xml_node node, std::string message) {
+  diagnostics_.push_back({model::Severity::Warning, where(node), std::move(message)});
+}
+void XmlContext::note(pugi::xml_node node, std::string message) {
+  diagnostics_.push_back({model::Severity::Note, where(node), std::move(message)});
+}
+
+// ------------------------------------------------------------------------------------ body text
+
+namespace {
+void collect_text(pugi::xml_node node, std::string& out, std::ptrdiff_t& first_offset,
+                  bool& first) {
+  for (auto c = node.first_child(); c; c = c.next_sibling()) {
+    if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
+      if (first) {
+        first = false;
+        const auto off = c.offset_debug();
+        // A CDATA node starts at "<![CDATA["; its text 9 characters later.
+        first_offset = off < 0 ? -1 : off + (c.type() == pugi::node_cdata ? 9 : 0);
+      }
+      out += c.value();
+    } else if (c.type() == pugi::node_element) {
+      const auto n = local_name(c);
+      if (n == "br") {
+        out += "\n";
+        continue;
+      }
+      collect_text(c, out, first_offset, first);
+      // Paragraphs are lines.
+      if (n == "p" || n == "div") out += "\n";
+    }
+  }
+}
+}  // namespace
+
+BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx) {
+  BodyText r;
+  std::ptrdiff_t offset = -1;
+  bool first = true;
+  collect_text(language_element, r.text, offset, first);
+  r.start = ctx.where_offset(offset >= 0 ? offset : language_element.offset_debug());
+  r.start.element_path = element_path(language_element);
+  return r;
+}
+
+// ------------------------------------------------------------------------------------- literals
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return std::string(s.substr(b, e - b + 1));
+}
+
+bool attribute_true(pugi::xml_node node, const char* name) {
+  const std::string v = model::to_upper(trim(node.attribute(name).value()));
+  return v == "TRUE" || v == "1";
+}
+
+namespace {
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
+  return s.size() >= prefix.size() && model::iequals(s.substr(0, prefix.size()), prefix);
+}
+
+// Digits with optional '_' separators in `base`; nullopt on anything else or overflow.
+std::optional<std::int64_t> parse_digits(std::string_view s, int base) {
+  if (s.empty() || s.front() == '_') return std::nullopt;
+  std::int64_t v = 0;
+  bool any = false;
+  for (char ch : s) {
+    if (ch == '_') continue;
+    int d;
+    if (ch >= '0' && ch <= '9') d = ch - '0';
+    else if (ch >= 'a' && ch <= 'f') d = ch - 'a' + 10;
+    else if (ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
+    else return std::nullopt;
+    if (d >= base) return std::nullopt;
+    if (v > (std::numeric_limits<std::int64_t>::max() - d) / base) return std::nullopt;
+    v = v * base + d;
+    any = true;
+  }
+  if (!any) return std::nullopt;
+  return v;
+}
+}  // namespace
+
+std::optional<std::int64_t> parse_time_literal(std::string_view text) {
+  std::string s = trim(text);
+  std::string_view v = s;
+  if (starts_with_ci(v, "TIME#")) v.remove_prefix(5);
+  else if (starts_with_ci(v, "LTIME#")) v.remove_prefix(6);
+  else if (starts_with_ci(v, "LT#")) v.remove_prefix(3);
+  else if (starts_with_ci(v, "T#")) v.remove_prefix(2);
+  else return std::nullopt;
+  bool negative = false;
+  if (!v.empty() && (v.front() == '-' || v.front() == '+')) {
+    negative = v.front() == '-';
+    v.remove_prefix(1);
+  }
+  if (v.empty()) return std::nullopt;
+  // Components "<number><unit>", largest unit first; the value is accumulated in microseconds
+  // so that T#1.5s and T#500us are exact until the final conversion.
+  std::int64_t total_us = 0;
+  while (!v.empty()) {
+    if (v.front() == '_') {
+      v.remove_prefix(1);
+      continue;
+    }
+    std::size_t i = 0;
+    while (i < v.size() && (std::isdigit(static_cast<unsigned char>(v[i])) || v[i] == '_')) ++i;
+    const auto int_part = parse_digits(v.substr(0, i), 10);
+    if (!int_part) return std::nullopt;
+    std::string_view frac;
+    if (i < v.size() && v[i] == '.') {
+      const std::size_t f = ++i;
+      while (i < v.size() && std::isdigit(static_cast<unsigned char>(v[i]))) ++i;
+      frac = v.substr(f, i - f);
+    }
+    v.remove_prefix(i);
+    std::int64_t unit_us;
+    auto eat = [&](std::string_view u) {
+      if (starts_with_ci(v, u)) {
+        v.remove_prefix(u.size());
+        return true;
+      }
+      return false;
+    };
+    if (eat("ms")) unit_us = 1000;
+    else if (eat("us")) unit_us = 1;
+    else if (eat("ns")) return std::nullopt;  // below the model's resolution
+    else if (eat("d")) unit_us = 86'400'000'000LL;
+    else if (eat("h")) unit_us = 3'600'000'000LL;
+    else if (eat("m")) unit_us = 60'000'000LL;
+    else if (eat("s")) unit_us = 1'000'000LL;
+    else return std::nullopt;
+    total_us += *int_part * unit_us;
+    std::int64_t scale = unit_us;
+    for (char ch : frac) {
+      scale /= 10;
+      if (scale == 0) {
+        if (ch != '0') return std::nullopt;
+        continue;
+      }
+      total_us += (ch - '0') * scale;
+    }
+  }
+  if (total_us % 1000 != 0) return std::nullopt;  // sub-millisecond durations: not modelled
+  const std::int64_t ms = total_us / 1000;
+  return negative ? -ms : ms;
+}
+
+std::optional<std::int64_t> parse_int_literal(std::string_view text) {
+  std::string s = trim(text);
+  std::string_view v = s;
+  // A type prefix such as INT# or UDINT# (letters before '#').
+  if (const auto hash = v.find('#'); hash != std::string_view::npos) {
+    const auto prefix = v.substr(0, hash);
+    if (!prefix.empty() && std::all_of(prefix.begin(), prefix.end(), [](char c) {
+          return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+        }))
+      v.remove_prefix(hash + 1);
+  }
+  bool negative = false;
+  if (!v.empty() && (v.front() == '-' || v.front() == '+')) {
+    negative = v.front() == '-';
+    v.remove_prefix(1);
+  }
+  int base = 10;
+  if (const auto hash = v.find('#'); hash != std::string_view::npos) {
+    const auto b = v.substr(0, hash);
+    if (b == "2") base = 2;
+    else if (b == "8") base = 8;
+    else if (b == "16") base = 16;
+    else return std::nullopt;
+    v.remove_prefix(hash + 1);
+  }
+  const auto d = parse_digits(v, base);
+  if (!d) return std::nullopt;
+  return negative ? -*d : *d;
+}
+
+std::optional<bool> parse_bool_literal(std::string_view text) {
+  std::string s = model::to_upper(trim(text));
+  if (starts_with_ci(s, "BOOL#")) s = s.substr(5);
+  if (s == "TRUE" || s == "1") return true;
+  if (s == "FALSE" || s == "0") return false;
+  return std::nullopt;
+}
+
+}  // namespace sfcv::io::plcopen

@@ -1,0 +1,72 @@
+#pragma once
+// Helpers shared by the PLCopen TC6 XML importer: namespace-blind element access, element paths
+// for diagnostics, text of ST elements, and IEC literals in attributes (durations, initial
+// values). Internal to src/io.
+
+#include <pugixml.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/diagnostic.hpp"
+#include "model/source_location.hpp"
+
+namespace sfcv::io::plcopen {
+
+/// The element's name without its namespace prefix ("xhtml:p" -> "p").
+std::string_view local_name(pugi::xml_node node);
+
+/// The first child element with local name `name` (any prefix), or an empty node.
+pugi::xml_node child(pugi::xml_node node, std::string_view name);
+
+/// All child elements with local name `name`, in document order.
+std::vector<pugi::xml_node> children(pugi::xml_node node, std::string_view name);
+
+/// All child elements, in document order.
+std::vector<pugi::xml_node> element_children(pugi::xml_node node);
+
+/// "/project/types/pous/pou[@name='P']/body/SFC/step[@localId='3']".
+std::string element_path(pugi::xml_node node);
+
+/// Where diagnostics go, and how XML nodes map to file:line:col.
+class XmlContext {
+ public:
+  XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics);
+
+  const std::string& file() const { return file_; }
+  model::SourceLocation where(pugi::xml_node node) const;
+  model::SourceLocation where_offset(std::ptrdiff_t offset) const;
+
+  void error(pugi::xml_node node, std::string message);
+  void warning(pugi::xml_node node, std::string message);
+  void note(pugi::xml_node node, std::string message);
+  void add(model::Diagnostic d) { diagnostics_.push_back(std::move(d)); }
+  model::Diagnostics& diagnostics() { return diagnostics_; }
+
+ private:
+  std::string file_;
+  std::vector<std::size_t> line_starts_;
+  model::Diagnostics& diagnostics_;
+};
+
+/// Text of a textual body element (`ST`, `IL`, `inline/ST`): raw text, CDATA, `xhtml:p` or an
+/// `xhtml` element; `start` is set to where the text begins.
+struct BodyText {
+  std::string text;
+  model::SourceLocation start;
+};
+BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx);
+
+/// IEC literals, as written in attributes: `T#2s`, `TIME#1h2m`, `t#500ms`; `TRUE`, `FALSE`;
+/// `42`, `-3`, `16#FF`, `INT#5`, `1_000`. nullopt when the text is not such a literal.
+std::optional<std::int64_t> parse_time_literal(std::string_view text);
+std::optional<std::int64_t> parse_int_literal(std::string_view text);
+std::optional<bool> parse_bool_literal(std::string_view text);
+
+std::string trim(std::string_view s);
+bool attribute_true(pugi::xml_node node, const char* name);
+
+}  // namespace sfcv::io::plcopen

@@ -1,0 +1,200 @@
+// The IEC 61131-3 machine, part 2: timers, ST statements and the standard function blocks
+// (phase 2 of a cycle).
+
+#include <algorithm>
+
+#include "semantics/iec_program.hpp"
+
+namespace sfcv::semantics::iec {
+
+using model::StandardFb;
+
+// ------------------------------------------------------------------------------------ timers
+
+bool Machine::timer_expired(const Timer& t, std::int64_t v) const {
+  if (v == 0) return false;
+  if (p_.options.time == TimeMode::Abstract) return v == 2;
+  return (v - 1) * p_.options.cycle_ms >= t.duration_ms;
+}
+
+std::int64_t Machine::timer_next(const Timer& t, bool run, bool restart) {
+  const auto v = nxt_[t.field];
+  if (!run) return 0;
+  if (p_.options.time == TimeMode::Abstract) {
+    if (v == 0 || restart) return t.duration_ms <= 0 ? 2 : 1;
+    if (v == 2) return 2;
+    // Running: the timeout pseudo-input says whether it expires in this cycle.
+    std::int64_t timeout = 0;
+    const auto in = static_cast<std::uint32_t>(t.timeout_input);
+    if (fixed_ || in_lo_[in] == in_hi_[in]) {
+      timeout = in_lo_[in];
+    } else {
+      timeout = decide(in, 2);
+      touch(in, timeout, timeout);
+    }
+    return timeout ? 2 : 1;
+  }
+  if (v == 0 || restart) return 1;
+  return std::min(v + 1, t.max_value);
+}
+
+// -------------------------------------------------------------------------------- statements
+
+void Machine::assign(std::uint32_t field, std::int64_t v, const std::string& where) {
+  if (v < p_.field_lo[field] || v > p_.field_hi[field])
+    throw RangeAbort{"value out of the range of the variable's type", &where};
+  nxt_[field] = v;
+}
+
+void Machine::exec_block(Block b) {
+  for (std::uint32_t i = 0; i < b.count; ++i) exec_stmt(p_.stmts[p_.block_items[b.first + i]]);
+}
+
+void Machine::exec_stmt(const Stmt& s) {
+  switch (s.op) {
+    case SOp::Assign: {
+      std::int64_t v = 0;
+      try {
+        v = eval(s.expr);
+      } catch (const RangeAbort& e) {
+        throw RangeAbort{e.what, &s.where};
+      }
+      assign(s.target, v, s.where);
+      return;
+    }
+    case SOp::If:
+      for (std::uint32_t i = 0; i < s.arm_count; ++i) {
+        const auto& arm = p_.if_arms[s.arm_first + i];
+        if (eval(arm.cond)) {
+          exec_block(arm.body);
+          return;
+        }
+      }
+      exec_block(s.else_body);
+      return;
+    case SOp::Case: {
+      const auto sel = eval(s.expr);
+      for (std::uint32_t i = 0; i < s.arm_count; ++i) {
+        const auto& arm = p_.case_arms[s.arm_first + i];
+        for (std::uint32_t l = 0; l < arm.label_count; ++l) {
+          const auto& lab = p_.case_labels[arm.label_first + l];
+          if (sel >= lab.lo && sel <= lab.hi) {
+            exec_block(arm.body);
+            return;
+          }
+        }
+      }
+      exec_block(s.else_body);
+      return;
+    }
+    case SOp::FbCall:
+      fb_call(s);
+      return;
+  }
+}
+
+void Machine::fb_call(const Stmt& s) {
+  const Fb& fb = p_.fbs[s.target];
+  auto arg = [&](std::int32_t node) { return node == kNone ? 0 : eval(static_cast<std::uint32_t>(node)); };
+  auto field = [](std::int32_t f) { return static_cast<std::uint32_t>(f); };
+  const auto q = field(fb.q);
+  switch (fb.kind) {
+    case StandardFb::R_TRIG: {
+      const bool clk = arg(s.arg1) != 0;
+      nxt_[q] = clk && !nxt_[field(fb.mem)];
+      nxt_[field(fb.mem)] = clk;
+      return;
+    }
+    case StandardFb::F_TRIG: {  // IEC: Q := NOT CLK AND NOT M; M := NOT CLK
+      const bool clk = arg(s.arg1) != 0;
+      nxt_[q] = !clk && !nxt_[field(fb.mem)];
+      nxt_[field(fb.mem)] = !clk;
+      return;
+    }
+    case StandardFb::SR: {  // Q1 := S1 OR (NOT R AND Q1)
+      const bool s1 = arg(s.arg1) != 0, r = arg(s.arg2) != 0;
+      nxt_[q] = s1 || (!r && nxt_[q]);
+      return;
+    }
+    case StandardFb::RS: {  // Q1 := NOT R1 AND (S OR Q1)
+      const bool set = arg(s.arg1) != 0, r1 = arg(s.arg2) != 0;
+      nxt_[q] = !r1 && (set || nxt_[q]);
+      return;
+    }
+    case StandardFb::CTU: {
+      const bool cu = arg(s.arg1) != 0, r = arg(s.arg2) != 0;
+      const auto pv = arg(s.arg3);
+      const bool rise = cu && !nxt_[field(fb.mem)];
+      nxt_[field(fb.mem)] = cu;
+      auto& cv = nxt_[field(fb.cv)];
+      if (r) cv = 0;
+      else if (rise && cv < p_.field_hi[field(fb.cv)]) ++cv;
+      nxt_[q] = cv >= pv;
+      return;
+    }
+    case StandardFb::CTD: {
+      const bool cd = arg(s.arg1) != 0, ld = arg(s.arg2) != 0;
+      const auto pv = arg(s.arg3);
+      const bool rise = cd && !nxt_[field(fb.mem)];
+      nxt_[field(fb.mem)] = cd;
+      auto& cv = nxt_[field(fb.cv)];
+      if (ld) {
+        if (pv < p_.field_lo[field(fb.cv)] || pv > p_.field_hi[field(fb.cv)])
+          throw RangeAbort{"PV out of the range of CV", &s.where};
+        cv = pv;
+      } else if (rise && cv > p_.field_lo[field(fb.cv)]) {
+        --cv;
+      }
+      nxt_[q] = cv <= 0;
+      return;
+    }
+    case StandardFb::TON: {
+      const bool in = arg(s.arg1) != 0;
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      const auto v = timer_next(t, in, false);
+      nxt_[t.field] = v;
+      nxt_[q] = in && timer_expired(t, v);
+      return;
+    }
+    case StandardFb::TOF: {
+      const bool in = arg(s.arg1) != 0;
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      if (in) {
+        nxt_[t.field] = 0;
+        nxt_[q] = 1;
+      } else if (nxt_[q] || nxt_[t.field] != 0) {
+        const auto v = timer_next(t, true, false);
+        nxt_[t.field] = v;
+        nxt_[q] = !timer_expired(t, v);
+      }
+      return;
+    }
+    case StandardFb::TP: {
+      const bool in = arg(s.arg1) != 0;
+      const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      const bool last_in = nxt_[field(fb.mem)] != 0;
+      nxt_[field(fb.mem)] = in;
+      if (nxt_[t.field] == 0) {
+        if (in && !last_in) {
+          const auto v = timer_next(t, true, true);
+          nxt_[t.field] = v;
+          nxt_[q] = !timer_expired(t, v);
+          if (!nxt_[q] && !in) nxt_[t.field] = 0;
+        } else {
+          nxt_[q] = 0;
+        }
+      } else {
+        const auto v = timer_next(t, true, false);
+        nxt_[t.field] = v;
+        const bool done = timer_expired(t, v);
+        nxt_[q] = !done;
+        if (done && !in) nxt_[t.field] = 0;
+      }
+      return;
+    }
+    case StandardFb::None:
+      return;
+  }
+}
+
+}  // namespace sfcv::semantics::iec

@@ -1,0 +1,183 @@
+// sfcv export: golden files for NuSMV and Cadence SMV, the DOT picture rendered by Graphviz,
+// refusals with exit 2, and `check --engine nusmv` without a NuSMV.
+// Regenerate the golden files with SFCV_UPDATE_GOLDEN=1 (then review the diff).
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+std::string quoted(const std::string& relative) { return "'" + source_path(relative) + "'"; }
+
+// The export of `chart` with `args`, compared with tests/data/exports/<golden>.
+void expect_golden(const std::string& chart, const std::string& args, const std::string& golden) {
+  const auto r = run_sfcv("export " + chart + " " + args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto path = source_path("tests/data/exports/" + golden);
+  if (const char* u = std::getenv("SFCV_UPDATE_GOLDEN"); u && *u) {
+    std::ofstream(path, std::ios::binary) << r.out;
+    return;
+  }
+  EXPECT_EQ(r.out, slurp(path)) << "golden file " << golden
+                                << " differs (SFCV_UPDATE_GOLDEN=1 regenerates it)";
+}
+
+// The charts copied to a fixed temporary directory (the header comment names the model).
+std::string staged(const std::string& name) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / "sfcv-export-golden";
+  fs::create_directories(dir);
+  fs::copy_file(source_path("tests/data/exports/" + name), dir / name,
+                fs::copy_options::overwrite_existing);
+  return (dir / name).string();
+}
+
+class Golden : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // The header names the model as given: run from its directory with a bare file name.
+    namespace fs = std::filesystem;
+    old_ = fs::current_path();
+    fs::current_path(fs::path(staged("light.st")).parent_path());
+    staged("mixer.st");
+  }
+  void TearDown() override { std::filesystem::current_path(old_); }
+  std::filesystem::path old_;
+};
+
+TEST_F(Golden, LightNusmv) {
+  expect_golden("light.st", "--to nusmv --ctl 'AG (lamp -> On)' --ctl 'AG EF Off'",
+                "light.smv");
+}
+TEST_F(Golden, LightCadenceSmv) {
+  expect_golden("light.st", "--to casmv --ctl 'AG (lamp -> On)' --ctl 'AG EF Off'",
+                "light.casmv.smv");
+}
+TEST_F(Golden, MixerNusmv) {
+  expect_golden("mixer.st",
+                "--to nusmv --ctl 'AG !(VA & VB)' --ctl 'AG batches <= 3' --checks reachable "
+                "--assume '!(full & empty)'",
+                "mixer.smv");
+}
+TEST_F(Golden, MixerCadenceSmv) {
+  expect_golden("mixer.st",
+                "--to casmv --ctl 'AG !(VA & VB)' --ctl 'AG batches <= 3' --checks reachable "
+                "--assume '!(full & empty)'",
+                "mixer.casmv.smv");
+}
+
+TEST(Export, DotRendersWithGraphviz) {
+  if (std::system("command -v dot >/dev/null 2>&1") != 0) GTEST_SKIP() << "graphviz not installed";
+  const auto dot = write_temp("", ".dot");
+  const auto r = run_sfcv("export " + quoted("examples/chemical_plant/chemical_plant.st") +
+                          " --to dot -o '" + dot + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto svg = dot + ".svg";
+  ASSERT_EQ(std::system(("dot -Tsvg '" + dot + "' -o '" + svg + "'").c_str()), 0) << slurp(dot);
+  EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
+  EXPECT_NE(slurp(svg).find("s12"), std::string::npos);  // a step of the chart is drawn
+  std::filesystem::remove(dot);
+  std::filesystem::remove(svg);
+}
+
+TEST(Export, IecTextAndPromelaAndAag) {
+  const auto plant = quoted("examples/chemical_plant/chemical_plant.st");
+  const auto iec = run_sfcv("export " + plant + " --to iec");
+  ASSERT_EQ(iec.exit_code, 0) << iec.err;
+  EXPECT_NE(iec.out.find("PROGRAM ChemicalPlant"), std::string::npos);
+  const auto pml = run_sfcv("export " + plant + " --to promela --ctl 'AG !(V2 & V4)'");
+  ASSERT_EQ(pml.exit_code, 0) << pml.err;
+  EXPECT_NE(pml.out.find("active proctype cycle()"), std::string::npos);
+  EXPECT_NE(pml.out.find("assert(!("), std::string::npos);
+  const auto aag = run_sfcv("export " + plant + " --to aag --ctl 'AG !(V2 & V4)'");
+  ASSERT_EQ(aag.exit_code, 0) << aag.err;
+  EXPECT_EQ(aag.out.rfind("aag ", 0), 0u);
+  EXPECT_EQ(aag.out.find("sfcv_valid"), std::string::npos);  // nothing to cut
+  const auto cut = run_sfcv("export " + plant +
+                            " --to aag --ctl 'AG !(V2 & V4)' --assume '!(LIS1plus & LIS1minus)'");
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  EXPECT_NE(cut.out.find("\nl27 sfcv_valid\n"), std::string::npos) << cut.out;
+  EXPECT_NE(cut.out.find("l8 ChemicalPlant.s2: step ChemicalPlant.s2 ready"), std::string::npos);
+  const auto aig = run_sfcv("export " + plant + " --to aiger --ctl 'AG !(V2 & V4)'");
+  ASSERT_EQ(aig.exit_code, 0) << aig.err;
+  EXPECT_EQ(aig.out.rfind("aig ", 0), 0u);
+}
+
+TEST(Export, RefusesWhatTheTargetCannotSay) {
+  const auto plant = quoted("examples/chemical_plant/chemical_plant.st");
+  const auto ctl = run_sfcv("export " + plant + " --to promela --ctl 'AG EF s9'");
+  EXPECT_EQ(ctl.exit_code, 2);
+  EXPECT_NE(ctl.err.find("only invariants"), std::string::npos) << ctl.err;
+  const auto aiger = run_sfcv("export " + plant + " --to aiger --ctl 'AF s9'");
+  EXPECT_EQ(aiger.exit_code, 2);
+  const auto grafcet = run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to nusmv");
+  EXPECT_EQ(grafcet.exit_code, 2);
+  EXPECT_NE(grafcet.err.find("not supported for Grafcet yet"), std::string::npos) << grafcet.err;
+  const auto bad = run_sfcv("export " + plant + " --to lustre");
+  EXPECT_EQ(bad.exit_code, 2);
+  // The picture of a Grafcet is fine.
+  EXPECT_EQ(run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to g7").exit_code, 0);
+}
+
+TEST(CheckNusmv, SaysSoWhenNoNusmvIsFound) {
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", "/nonexistent-sfcv-test", 1);
+  const auto r = run_sfcv("check " + quoted("examples/chemical_plant/chemical_plant.st") +
+                          " --engine nusmv --ctl 'AG !(V1 & V3)'");
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no NuSMV found on PATH"), std::string::npos) << r.err;
+}
+
+// A stand-in NuSMV (the real one is not packaged in Debian) printing NuSMV 2.6's verdict lines:
+// the verdicts must be mapped back to the properties in order, and NuSMV's exit code 0 ignored.
+TEST(CheckNusmv, MapsVerdictLinesBackToTheProperties) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / ("sfcv-fake-nusmv-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream f(dir / "NuSMV");
+    f << "#!/bin/sh\n"
+         "echo '*** This is NuSMV 2.6.0'\n"
+         "echo '-- specification AG (EF ChemicalPlant_s9)  is true'\n"
+         "echo '-- invariant !(g80)  is true'\n"
+         "echo '-- invariant !(g93)  is false'\n"
+         "echo '-- as demonstrated by the following execution sequence'\n"
+         "exit 0\n";
+  }
+  fs::permissions(dir / "NuSMV", fs::perms::owner_all);
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", dir.c_str(), 1);
+  const auto r = run_sfcv("check " + quoted("examples/chemical_plant/chemical_plant.st") +
+                          " --engine nusmv --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' "
+                          "--ctl 'AG EF s9' --json");
+  ::setenv("PATH", saved.c_str(), 1);
+  fs::remove_all(dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const auto v13 = r.out.find("AG !(V1 & V3)"), v24 = r.out.find("AG !(V2 & V4)");
+  ASSERT_NE(v13, std::string::npos) << r.out;
+  ASSERT_NE(v24, std::string::npos) << r.out;
+  // Each property's verdict follows its name in the JSON report.
+  EXPECT_NE(r.out.substr(v13, v24 - v13).find("\"holds\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.substr(v24).find("\"violated\""), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"nusmv\""), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sfcv::test

@@ -1,0 +1,86 @@
+// End-to-end: sfcv rsg on small .g7 documents (summary, listing, dot, json, anomalies, limits).
+
+#include <nlohmann/json.hpp>
+
+#include "support/sfcv_test.hpp"
+
+namespace {
+
+using sfcv::test::run_sfcv;
+using sfcv::test::source_path;
+using sfcv::test::write_temp;
+
+const char* kToggle = R"(project toggle;
+input a;
+output y;
+grafcet G {
+  step 1 initial;
+  step 2;
+  transition 1: 1 -> 2 when a;
+  transition 2: 2 -> 1 when !a;
+  action 2: y;
+}
+)";
+
+const char* kUnstable = R"(project unstable;
+input a;
+grafcet G {
+  step 1 initial;
+  step 2;
+  transition 1: 1 -> 2 when a;
+  transition 2: 2 -> 1 when a;
+}
+)";
+
+TEST(RsgCli, SummaryAndListing) {
+  const auto path = write_temp(kToggle, ".g7");
+  const auto r = run_sfcv("rsg --list " + path);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("semantics: grafcet (IEC 60848, single input change)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("situations: 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("evolutions: 2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("build time:"), std::string::npos);
+  EXPECT_NE(r.out.find("{1} --[a]--> s1 {2} / y"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("{2} --[!a]--> s0 {1}"), std::string::npos) << r.out;
+}
+
+TEST(RsgCli, DotAndJson) {
+  const auto path = write_temp(kToggle, ".g7");
+  const auto dot = run_sfcv("rsg --dot - " + path);
+  EXPECT_EQ(dot.exit_code, 0);
+  EXPECT_NE(dot.out.find("digraph rsg"), std::string::npos);
+  EXPECT_NE(dot.out.find("label=\"a\""), std::string::npos) << dot.out;
+  const auto js = run_sfcv("rsg --json " + path);
+  ASSERT_EQ(js.exit_code, 0) << js.err;
+  const auto j = nlohmann::json::parse(js.out);
+  EXPECT_EQ(j["semantics"], "grafcet");
+  EXPECT_EQ(j["states"].size(), 2u);
+  EXPECT_EQ(j["edges"].size(), 2u);
+  EXPECT_EQ(j["edges"][0]["condition"], "a");
+}
+
+TEST(RsgCli, InstabilityIsAnErrorWithItsCycle) {
+  const auto path = write_temp(kUnstable, ".g7");
+  const auto r = run_sfcv("rsg " + path);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(path + ": error: instability"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cycle: {2} -> {1} -> {2}"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("inputs: a"), std::string::npos) << r.err;
+}
+
+TEST(RsgCli, MultiInputChangeAndLimits) {
+  const auto pallet = source_path("examples/pallet_transfer/pallet_transfer.g7");
+  const auto multi = run_sfcv("rsg --multi-input-change " + pallet);
+  EXPECT_EQ(multi.exit_code, 0);
+  EXPECT_NE(multi.out.find("multiple input changes"), std::string::npos);
+  const auto limited = run_sfcv("rsg --max-states 100 " + pallet);
+  EXPECT_EQ(limited.exit_code, 3);
+  EXPECT_NE(limited.out.find("unknown"), std::string::npos) << limited.out;
+}
+
+TEST(RsgCli, UnknownSemanticsIsBadUsage) {
+  const auto path = write_temp(kToggle, ".g7");
+  EXPECT_EQ(run_sfcv("rsg --semantics petri " + path).exit_code, 2);
+}
+
+}  // namespace

@@ -1,0 +1,166 @@
+// End-to-end: sfcv simulate on the chemical plant example and on bad traces.
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/sfcv_test.hpp"
+
+namespace {
+
+using sfcv::test::run_sfcv;
+using sfcv::test::source_path;
+using sfcv::test::write_temp;
+
+const std::string kPlant = "'" + source_path("examples/chemical_plant/chemical_plant.st") + "'";
+
+std::vector<std::string> lines(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string l;
+  while (std::getline(ss, l)) out.push_back(l);
+  return out;
+}
+
+TEST(Simulate, ChemicalPlantTraceOpensV2AndV4AtOnce) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 7u) << r.out;  // header, initial, 5 cycles
+  EXPECT_NE(rows[0].find("active steps"), std::string::npos);
+  bool overlap = false;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const bool both = rows[i].find("V2=1") != std::string::npos && rows[i].find("V4=1") != std::string::npos;
+    if (both) {
+      overlap = true;
+      EXPECT_EQ(rows[i].rfind("5 |", 0), 0u) << rows[i];
+      EXPECT_NE(rows[i].find("ChemicalPlant.a3.s12"), std::string::npos);
+      EXPECT_NE(rows[i].find("ChemicalPlant.s5"), std::string::npos);
+    }
+    EXPECT_FALSE(rows[i].find("V1=1") != std::string::npos && rows[i].find("V3=1") != std::string::npos);
+  }
+  EXPECT_TRUE(overlap) << r.out;
+}
+
+TEST(Simulate, WritesAVcdWaveform) {
+  const auto vcd = std::filesystem::temp_directory_path() / ("sfcv-sim-" + std::to_string(::getpid()) + ".vcd");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --vcd '" +
+                          vcd.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream f(vcd);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const auto text = ss.str();
+  std::filesystem::remove(vcd);
+  for (const char* s : {"$timescale", "$scope module steps", "$scope module inputs", "ChemicalPlant_a3_s12",
+                        " V4 $end", "$enddefinitions $end", "#50"})
+    EXPECT_NE(text.find(s), std::string::npos) << s;
+}
+
+TEST(Simulate, MaxCyclesStopsEarly) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --max-cycles 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines(r.out).size(), 4u);
+}
+
+TEST(Simulate, UnknownColumnIsAnErrorWithItsPosition) {
+  const auto csv = write_temp("start, LIS1plus, bogus\n1,0,0\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(csv + ":1:18: unknown input 'bogus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, BadValueIsAnErrorWithItsPosition) {
+  const auto csv = write_temp("start,LIS1plus,LIS1minus,LIS2plus,LIS2minus,LIS3minus\n1,0,0,0,0,0\n0,0,maybe,0,0,0\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(csv + ":3:5: bad value 'maybe' for input 'LIS1minus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, MissingInputColumnIsAnError) {
+  const auto csv = write_temp("start\n1\n", ".csv");
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no column for input 'LIS1plus'"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, AssumptionViolatedByTheTraceIsReported) {
+  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
+                          source_path("examples/chemical_plant/v2_v4_overlap.csv") +
+                          "' --assume 'NOT (LIS1minus AND LIS2minus)'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cycle 2"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("assumption"), std::string::npos) << r.err;
+}
+
+TEST(Simulate, HelpDocumentsPseudoInputs) {
+  const auto r = run_sfcv("simulate --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("timeout:"), std::string::npos);
+  EXPECT_NE(r.out.find("choice:"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Simulate, ACycleColumnLetsAModelWithoutInputsRun) {
+  const auto st = sfcv::test::write_temp(
+      "PROGRAM Counter\n VAR_OUTPUT n : INT; END_VAR\n INITIAL_STEP S1: Inc(N); END_STEP\n"
+      " ACTION Inc: n := n + 1; END_ACTION\nEND_PROGRAM\n",
+      ".st");
+  const auto csv = sfcv::test::write_temp("cycle\n1\n2\n3\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 | - | Counter.S1 | Counter.Inc | n=3"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, RangeErrorStopsTheRun) {
+  const auto st = sfcv::test::write_temp(
+      "PROGRAM Counter\n VAR_OUTPUT n : INT(0..1); END_VAR\n INITIAL_STEP S1: Inc(N); END_STEP\n"
+      " ACTION Inc: n := n + 1; END_ACTION\nEND_PROGRAM\n",
+      ".st");
+  const auto csv = sfcv::test::write_temp("cycle\n1\n2\n3\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cycle 2: value out of the range"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":4:"), std::string::npos) << r.err;  // where the assignment is
+}
+
+}  // namespace
+
+namespace {
+
+const char* kTimed =
+    "PROGRAM Lamp\n VAR_INPUT button : BOOL; END_VAR\n VAR_OUTPUT light : BOOL; END_VAR\n"
+    " INITIAL_STEP Off: END_STEP\n STEP On: light(L, T#30ms); END_STEP\n"
+    " TRANSITION FROM Off TO On := button; END_TRANSITION\n"
+    " TRANSITION FROM On TO Off := NOT button; END_TRANSITION\nEND_PROGRAM\n";
+
+TEST(Simulate, DiscreteTimeCountsCycles) {
+  const auto st = sfcv::test::write_temp(kTimed, ".st");
+  const auto csv = sfcv::test::write_temp("button\n1\n1\n1\n1\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "' --time discrete --cycle 10ms");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 6u);
+  EXPECT_NE(rows[2].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[4].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[5].find("light=0"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, AbstractTimeTakesTimeoutsFromThePseudoInputColumn) {
+  const auto st = sfcv::test::write_temp(kTimed, ".st");
+  const auto csv = sfcv::test::write_temp("button,timeout:Lamp.On.light.L\n1,0\n1,0\n1,1\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_NE(rows[3].find("light=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[4].find("light=0"), std::string::npos) << r.out;
+}
+
+}  // namespace

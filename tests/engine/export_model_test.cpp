@@ -1,0 +1,185 @@
+// build_export: what goes into the circuit exports, what is refused; aiger_circuit's valid latch;
+// NuSMV's verdict lines.
+
+#include "engine/external/export_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "engine/external/nusmv_runner.hpp"
+#include "io/load.hpp"
+#include "logic/check_inputs.hpp"
+#include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_system.hpp"
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::engine {
+namespace {
+
+using semantics::Aig;
+
+const char* kChart = R"(
+PROGRAM Small
+  VAR_INPUT go : BOOL; level : INT(0..5); END_VAR
+  VAR_OUTPUT lamp : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Run: lamp(N); END_STEP
+  TRANSITION FROM Idle TO Run := go AND level > 2; END_TRANSITION
+  TRANSITION FROM Run TO Idle := NOT go; END_TRANSITION
+END_PROGRAM
+)";
+
+struct Sys {
+  model::Project project;
+  semantics::TransitionSystemPtr ts;
+  std::vector<logic::Property> props;
+};
+
+Sys make(const char* text, std::vector<std::string> ctl) {
+  Sys s;
+  auto loaded = io::load_iec_text(text, "small.st");
+  EXPECT_TRUE(loaded.ok());
+  s.project = std::move(*loaded.project);
+  model::Diagnostics diags;
+  s.ts = semantics::make_iec61131_system(s.project, {}, diags);
+  EXPECT_TRUE(s.ts);
+  logic::CheckInputs in;
+  in.ctl = std::move(ctl);
+  auto parsed = logic::parse_check_inputs(in);
+  for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
+  logic::CheckTask task;
+  logic::resolve_into(parsed.spec, *s.ts, task, diags);
+  for (const auto& d : diags) ADD_FAILURE() << d.str();
+  s.props = task.properties;
+  return s;
+}
+
+TEST(ExportModel, InvariantsBecomeBadLiteralsAndTheRestCtlText) {
+  auto s = make(kChart, {"AG !(Run & !lamp)", "AG EF Idle", "AG lamp -> Run"});
+  ExportRequest r;
+  r.properties = s.props;
+  const auto e = build_export(*s.ts, r);
+  // "AG lamp -> Run" parses as (AG lamp) -> Run: not an invariant.
+  ASSERT_EQ(e.model.aig.bad().size(), 1u);
+  EXPECT_EQ(e.bad_property, std::vector<std::int32_t>{0});
+  ASSERT_EQ(e.model.ctl.size(), 2u);
+  EXPECT_EQ(e.model.ctl[0].second, "AG EF {Small.Idle}");
+  EXPECT_EQ(e.ctl_only.size(), 2u);
+  // Every latch and input has a comment naming the chart element.
+  for (const auto& c : e.model.latch_comments) EXPECT_FALSE(c.empty());
+  for (const auto& c : e.model.input_comments) EXPECT_FALSE(c.empty());
+  // The integer input's range (0..5 in 3 bits) is a constraint.
+  ASSERT_EQ(e.model.aig.constraints().size(), 1u);
+  std::ostringstream out;
+  write_nusmv(out, e.model);
+  EXPECT_NE(out.str().find("CTLSPEC NAME"), std::string::npos);
+  EXPECT_NE(out.str().find("IVAR\n  in_go : boolean;  -- input go\n"), std::string::npos) << out.str();
+}
+
+TEST(ExportModel, ComparisonsAreEvaluatedOnTheEncodedBits) {
+  // level is an input, not observable: compare a variable instead.
+  auto s = make(R"(
+PROGRAM Count
+  VAR_INPUT up : BOOL; END_VAR
+  VAR_OUTPUT n : INT(-2..5); END_VAR
+  INITIAL_STEP S: Inc(N); END_STEP
+  ACTION Inc: IF up AND n < 5 THEN n := n + 1; END_IF; END_ACTION
+END_PROGRAM
+)", {"AG n < 4", "AG n >= -2", "AG n != 7"});
+  ExportRequest r;
+  r.properties = s.props;
+  const auto e = build_export(*s.ts, r);
+  ASSERT_EQ(e.model.aig.bad().size(), 3u);
+  const auto& aig = e.model.aig;
+  // Evaluate each bad literal on every value of n.
+  const auto& field = e.circuit.field_latches;
+  std::uint32_t nf = 0;
+  for (std::uint32_t f = 0; f < s.ts->layout().fields().size(); ++f)
+    if (s.ts->layout().fields()[f].name == "n") nf = f;
+  for (std::int64_t n = -2; n <= 5; ++n) {
+    std::vector<bool> latches(aig.latches().size()), inputs(aig.inputs().size());
+    for (std::size_t k = 0; k < field[nf].size(); ++k) latches[field[nf][k]] = (((n + 2) >> k) & 1) != 0;
+    const auto v = aig.evaluate(inputs, latches);
+    EXPECT_EQ(Aig::value_of(v, aig.bad()[0].literal), !(n < 4)) << n;
+    EXPECT_FALSE(Aig::value_of(v, aig.bad()[1].literal)) << n;
+    EXPECT_FALSE(Aig::value_of(v, aig.bad()[2].literal)) << n;
+  }
+}
+
+TEST(ExportModel, AigerCircuitFoldsTheConstraintIntoAValidLatch) {
+  auto s = make(kChart, {"AG !(Run & Idle)"});
+  ExportRequest r;
+  r.target = ExportTarget::Circuit;
+  r.properties = s.props;
+  r.reachability = true;
+  const auto e = build_export(*s.ts, r);
+  ASSERT_EQ(e.model.aig.bad().size(), 3u);  // the invariant, then "Idle", "Run" unreachable
+  EXPECT_EQ(e.bad_property, (std::vector<std::int32_t>{0, -1, -1}));
+  const auto aig = aiger_circuit(e.model);
+  EXPECT_TRUE(aig.constraints().empty());
+  EXPECT_TRUE(aig.outputs().empty());
+  ASSERT_EQ(aig.latches().size(), e.model.aig.latches().size() + 1);
+  EXPECT_EQ(aig.latches().back().name, "sfcv_valid");
+  EXPECT_TRUE(aig.latches().back().initial);
+  // With valid = 0, no bad literal holds.
+  std::vector<bool> latches(aig.latches().size(), true), inputs(aig.inputs().size(), true);
+  latches.back() = false;
+  const auto v = aig.evaluate(inputs, latches);
+  for (const auto& b : aig.bad()) EXPECT_FALSE(Aig::value_of(v, b.literal)) << b.name;
+}
+
+TEST(ExportModel, AChartWithoutInputsGetsADummyOne) {
+  auto s = make(R"(
+PROGRAM Blink
+  VAR_OUTPUT lamp : BOOL; END_VAR
+  INITIAL_STEP A: lamp(N); END_STEP
+  STEP B: END_STEP
+  TRANSITION FROM A TO B := TRUE; END_TRANSITION
+  TRANSITION FROM B TO A := TRUE; END_TRANSITION
+END_PROGRAM
+)", {});
+  ASSERT_TRUE(s.ts->inputs().empty());
+  const auto e = build_export(*s.ts, {});
+  ASSERT_EQ(e.model.aig.inputs().size(), 1u);
+  EXPECT_EQ(e.model.aig.inputs()[0].name, "sfcv_dummy");
+  EXPECT_EQ(aiger_circuit(e.model).inputs().size(), 1u);
+}
+
+TEST(ExportModel, RefusesGrafcet) {
+  auto loaded = io::load_file(test::source_path("examples/pistons/pistons.g7"));
+  ASSERT_TRUE(loaded.project);
+  model::Diagnostics diags;
+  auto ts = semantics::make_grafcet_system(*loaded.project, {}, diags);
+  ASSERT_TRUE(ts);
+  try {
+    build_export(*ts, {});
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_NE(std::string(e.what()).find("not supported for Grafcet yet"), std::string::npos);
+  }
+}
+
+TEST(NusmvOutput, ReadsVerdictLinesByKindInFileOrder) {
+  // NuSMV 2.6 prints CTL verdicts, then invariants, each with its trace when false.
+  const std::string text = R"(*** This is NuSMV 2.6.0 (compiled on Wed Oct 14 15:37:51 2015)
+*** Enabled addons are: compass
+-- specification EF Small_Run  is true
+-- specification AG (EF Small_Idle)  is false
+-- as demonstrated by the following execution sequence
+Trace Description: CTL Counterexample
+Trace Type: Counterexample
+  -> State: 1.1 <-
+    Small_Idle = TRUE
+-- invariant !(g12)  is true
+-- invariant !(g15)  is false
+-- as demonstrated by the following execution sequence
+  -> State: 2.1 <-
+)";
+  const auto v = parse_nusmv_output(text);
+  EXPECT_EQ(v.ctl, (std::vector<bool>{true, false}));
+  EXPECT_EQ(v.invariants, (std::vector<bool>{true, false}));
+}
+
+}  // namespace
+}  // namespace sfcv::engine

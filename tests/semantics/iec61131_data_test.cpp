@@ -1,0 +1,243 @@
+// Data and action bodies (docs/semantics.md, Part 1, "Actions and data"): action order, ST
+// statements, integer ranges, standard function blocks, step .T.
+
+#include "semantics/iec_builder.hpp"
+
+namespace sfcv::test {
+namespace {
+
+IecBuilder two_writers() {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT out : INT; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a");
+  b.action_st("Zeta", "out := 1;").action_st("Alpha", "out := 2;");
+  b.assoc("S1", "Zeta", "N").assoc("S1", "Alpha", "N");
+  return b;
+}
+
+TEST(Iec61131Data, AnOutputWrittenByTwoActionsKeepsTheLastWriteInActionOrder) {
+  {
+    auto b = two_writers();
+    auto ts = b.build();  // declaration order: Zeta, then Alpha
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["out"], 2);
+  }
+  auto b = two_writers();
+  semantics::Iec61131Options o;
+  o.action_order = semantics::ActionOrder::Alphabetical;  // Alpha, then Zeta
+  auto ts = b.build(o);
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["out"], 1);
+}
+
+TEST(Iec61131Data, GuardsSeeVariablesAsTheCycleActionsLeftThem) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR n : INT; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "n >= 2");
+  b.action_st("Inc", "IF a THEN n := n + 1; END_IF;").assoc("S1", "Inc", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["S1"], 1);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));  // n becomes 2 in this cycle and the guard sees it
+  EXPECT_EQ(r["S2"], 1);
+  EXPECT_EQ(r["n"], 2);
+}
+
+TEST(Iec61131Data, CaseStatement) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT n : INT; m : INT; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a");
+  b.action_st("Cnt", "n := n + 1; CASE n OF 1: m := 10; 2..3: m := 20; ELSE m := 0; END_CASE;");
+  b.assoc("S1", "Cnt", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  std::string seq;
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(r.cycle());
+    seq += std::to_string(r["m"]) + " ";
+  }
+  EXPECT_EQ(seq, "10 20 20 0 ");
+}
+
+TEST(Iec61131Data, IntegerOverflowIsARangeErrorAnomaly) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT n : SINT := 120; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "FALSE");
+  b.action_st("Inc", "IF a THEN n := n + 5; END_IF;").assoc("S1", "Inc", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["n"], 125);
+  auto c = successors_of(*ts, r.state());
+  ASSERT_EQ(c.anomalies.size(), 1u);
+  EXPECT_NE(c.anomalies[0].find("out of the range"), std::string::npos);
+  EXPECT_NE(c.anomalies[0].find("when a"), std::string::npos);
+  EXPECT_EQ(conditions(c), (std::vector<std::string>{"!a"}));  // the overflowing input has no successor
+  EXPECT_FALSE(r.cycle({{"a", 1}}));
+  EXPECT_NE(r.error.find("out of the range"), std::string::npos);
+}
+
+TEST(Iec61131Data, SubrangeAssignmentOutsideTheRangeIsARangeError) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR n : INT(0..3); END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a");
+  b.action_st("Inc", "n := n + 1;").assoc("S1", "Inc", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(r.cycle());
+  EXPECT_FALSE(r.cycle());
+}
+
+TEST(Iec61131Data, DivisionByZeroIsARangeError) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR n : INT := 4; d : INT; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a");
+  b.action_st("Div", "n := n / d;").assoc("S1", "Div", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  EXPECT_FALSE(r.cycle());
+  EXPECT_NE(r.error.find("division by zero"), std::string::npos);
+}
+
+TEST(Iec61131Data, EdgeDetectionLatchesAndCounters) {
+  IecBuilder b(
+      "VAR_INPUT a, r : BOOL; END_VAR VAR_OUTPUT rises, falls, latch, done : BOOL; cv : INT; END_VAR "
+      "VAR rt : R_TRIG; ft : F_TRIG; sr1 : SR; c : CTU; END_VAR");
+  b.step("S1", true);
+  b.action_st("Body",
+              "rt(CLK := a); ft(CLK := a); rises := rt.Q; falls := ft.Q; sr1(S1 := rt.Q, R := r); "
+              "latch := sr1.Q1; c(CU := a, R := r, PV := 2); done := c.Q; cv := c.CV;");
+  b.assoc("S1", "Body", "N");
+  auto ts = b.build();
+  Runner x(*ts);
+  ASSERT_TRUE(x.cycle({{"a", 0}}));
+  EXPECT_EQ(x["falls"], 1);  // IEC F_TRIG: M starts FALSE, so a first FALSE counts as an edge
+  ASSERT_TRUE(x.cycle({{"a", 1}}));
+  EXPECT_EQ(x["rises"], 1);
+  EXPECT_EQ(x["latch"], 1);
+  EXPECT_EQ(x["cv"], 1);
+  ASSERT_TRUE(x.cycle({{"a", 1}}));
+  EXPECT_EQ(x["rises"], 0);
+  EXPECT_EQ(x["latch"], 1);
+  EXPECT_EQ(x["cv"], 1);
+  ASSERT_TRUE(x.cycle({{"a", 0}}));
+  EXPECT_EQ(x["falls"], 1);
+  EXPECT_EQ(x["done"], 0);
+  ASSERT_TRUE(x.cycle({{"a", 1}}));
+  EXPECT_EQ(x["cv"], 2);
+  EXPECT_EQ(x["done"], 1);
+  ASSERT_TRUE(x.cycle({{"r", 1}}));
+  EXPECT_EQ(x["latch"], 0);
+  EXPECT_EQ(x["cv"], 0);
+  EXPECT_EQ(x["done"], 0);
+}
+
+TEST(Iec61131Data, TonInAbstractTimeExpiresThroughItsTimeoutInput) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; END_VAR VAR t1 : TON; END_VAR");
+  b.step("S1", true).action_st("Body", "t1(IN := a, PT := T#5s); q := t1.Q;").assoc("S1", "Body", "N");
+  auto ts = b.build();
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}, {"timeout:MAIN.t1", 1}}));  // starting: cannot expire yet
+  EXPECT_EQ(r["q"], 0);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["q"], 0);
+  ASSERT_TRUE(r.cycle({{"a", 1}, {"timeout:MAIN.t1", 1}}));
+  EXPECT_EQ(r["q"], 1);
+  ASSERT_TRUE(r.cycle({{"a", 0}}));
+  EXPECT_EQ(r["q"], 0);
+}
+
+TEST(Iec61131Data, TimersInDiscreteTime) {
+  IecBuilder b(
+      "VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q_on, q_off, q_p : BOOL; et : TIME; END_VAR "
+      "VAR t1 : TON; t2 : TOF; t3 : TP; END_VAR");
+  b.step("S1", true);
+  b.action_st("Body",
+              "t1(IN := a, PT := T#20ms); t2(IN := a, PT := T#20ms); t3(IN := a, PT := T#20ms); "
+              "q_on := t1.Q; q_off := t2.Q; q_p := t3.Q; et := t1.ET;");
+  b.assoc("S1", "Body", "N");
+  auto ts = b.build(discrete(10));
+  Runner r(*ts);
+  const int in[] = {1, 1, 1, 1, 0, 0, 0, 0};
+  std::string on, off, p, et;
+  for (int v : in) {
+    ASSERT_TRUE(r.cycle({{"a", v}}));
+    on += std::to_string(r["q_on"]);
+    off += std::to_string(r["q_off"]);
+    p += std::to_string(r["q_p"]);
+    et += std::to_string(r["et"]) + " ";
+  }
+  EXPECT_EQ(on, "00110000");
+  EXPECT_EQ(off, "11111100");
+  EXPECT_EQ(p, "11000000");
+  EXPECT_EQ(et, "0 10 20 20 0 0 0 0 ");
+}
+
+TEST(Iec61131Data, StepTimeInDiscreteTime) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "S1.T >= T#30ms").trans("S2", "S1", "a");
+  auto ts = b.build(discrete(10));
+  Runner r(*ts);
+  std::string s;
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(r.cycle());
+    s += std::to_string(r["S2"]);
+  }
+  EXPECT_EQ(s, "00011");  // .T is 0, 10, 20, 30 in the configurations after entry
+}
+
+TEST(Iec61131Data, StepTimeInAbstractTimeMovesThroughRegions) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+  b.step("S1", true).step("S2").step("S3");
+  b.trans("S1", "S3", "S1.T > T#5s").trans("S1", "S2", "S1.T >= T#1s AND a");
+  auto ts = b.build();
+  const auto e = input_index(*ts, "elapse:MAIN.S1");
+  EXPECT_EQ(ts->inputs()[e].type.hi, 2);  // regions: < 1s, [1s, 5s], > 5s
+  Runner r(*ts);
+  auto c = successors_of(*ts, r.state());
+  EXPECT_EQ(conditions(c), (std::vector<std::string>{"elapse:MAIN.S1 = 0", "elapse:MAIN.S1 = 1",
+                                                      "elapse:MAIN.S1 = 2"}));
+  ASSERT_TRUE(r.cycle({{"elapse:MAIN.S1", 1}}));
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["S2"], 1);
+}
+
+TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR x : INT; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "S1.T > x");
+    EXPECT_NE(b.build_error().find("compared with a constant"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR t1 : TON; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "t1.ET > T#1s");
+    EXPECT_NE(b.build_error().find("abstract time"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "nosuch");
+    EXPECT_NE(b.build_error().find("unknown name 'nosuch'"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).action_st("W", "a := TRUE;").assoc("S1", "W", "N");
+    EXPECT_NE(b.build_error().find("an input"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).step("S1");
+    EXPECT_NE(b.build_error().find("declared twice"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true);
+    b.project.dialect = model::Dialect::Grafcet;
+    EXPECT_NE(b.build_error().find("Grafcet"), std::string::npos);
+  }
+  {
+    IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "a");
+    b.pou().charts[0].transitions[0].guard = model::make_unary(model::ExprKind::Rising, model::make_name("a"));
+    EXPECT_NE(b.build_error().find("Grafcet syntax"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
