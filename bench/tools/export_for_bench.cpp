@@ -1,7 +1,7 @@
 // export_for_bench: writes the Promela and AIGER exports of one invariant of an IEC 61131-3
 // chart, for bench/run to time Spin and ABC on the same circuit sfcv's BDD engine uses. The
 // invariant is "never all of these observables at once" (--never A,B), i.e. AG !(A & B).
-// A stop-gap until `sfcv export --to promela|aiger` lands; it only calls library functions.
+// Written before `sfcv export --to promela|aiger` landed; it only calls library functions.
 
 #include <CLI/CLI.hpp>
 #include <fstream>
