@@ -25,4 +25,12 @@ std::string nested_charts_iec(std::uint32_t n);
 /// branches) over `inputs` Boolean inputs, reproducible from `seed`.
 std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed);
 
+/// An N-station transfer line in the spirit of seed 002's pallet transfer, as a Grafcet `.g7`:
+/// one partial grafcet per station (steps 10i empty, 10i+1 machining, 10i+2 done, 10i+3
+/// releasing). A pallet arrives on RE pal_i, is machined until done_i, is released only when
+/// station i+1 is empty (X10(i+1); the last station releases freely) and has left on FE pal_i.
+/// The stopper stop_i is a stored action (raised on entering 10i, lowered on entering 10i+3).
+/// `unused` adds that many declared inputs the grafcet never reads (the RSG must not grow).
+std::string transfer_line_g7(std::uint32_t n, std::uint32_t unused);
+
 }  // namespace sfcv::bench

@@ -1,5 +1,5 @@
 // sfcv-gen: writes a chart of a scalable family (bench/gen/chart_families.hpp) to standard output
-// or a file.
+// or a file: IEC textual SFC, or a Grafcet .g7 for the transfer line.
 
 #include <CLI/CLI.hpp>
 #include <fstream>
@@ -10,16 +10,18 @@
 int main(int argc, char** argv) {
   CLI::App app{"sfcv-gen: scalable chart families for benchmarks", "sfcv-gen"};
   std::string family, output;
-  std::uint32_t n = 4, inputs = 4;
+  std::uint32_t n = 4, inputs = 4, unused = 0;
   std::uint64_t seed = 1;
   bool flawed = false, selector = false;
-  app.add_option("family", family, "parallel | tanks | nested | random")->required()
-      ->check(CLI::IsMember({"parallel", "tanks", "nested", "random"}));
-  app.add_option("n", n, "Size: branches, reactors, nesting depth, or steps (random)");
+  app.add_option("family", family, "parallel | tanks | nested | random | transfer")
+      ->required()
+      ->check(CLI::IsMember({"parallel", "tanks", "nested", "random", "transfer"}));
+  app.add_option("n", n, "Size: branches, reactors, nesting depth, steps (random), stations");
   app.add_flag("--selector", selector, "parallel: one integer input selects the toggling branch");
   app.add_flag("--flawed", flawed, "tanks: keep the seed's V2/V4 flaw");
   app.add_option("--inputs", inputs, "random: number of Boolean inputs");
   app.add_option("--seed", seed, "random: seed");
+  app.add_option("--unused", unused, "transfer: extra inputs the grafcet never reads");
   app.add_option("-o,--output", output, "Output file (default: standard output)");
   try {
     app.parse(argc, argv);
@@ -30,6 +32,7 @@ int main(int argc, char** argv) {
   if (family == "parallel") text = sfcv::bench::parallel_branches_iec(n, selector);
   else if (family == "tanks") text = sfcv::bench::tanks_iec(n, flawed);
   else if (family == "nested") text = sfcv::bench::nested_charts_iec(n);
+  else if (family == "transfer") text = sfcv::bench::transfer_line_g7(n, unused);
   else text = sfcv::bench::random_chart_iec(n, inputs, seed);
   if (output.empty()) {
     std::cout << text;

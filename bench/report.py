@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Turns bench/run's results.csv into a Markdown table (one row per model) with ratios.
+
+sfcv's time for the ratios is its faster engine that finished (explicit or BDD); a tool that did
+not finish is shown with its status and gets no ratio.
+"""
+import csv
+import sys
+from collections import OrderedDict
+
+
+def cell(r):
+    if r is None:
+        return "-"
+    if r["status"] != "ok" or not r["seconds"]:
+        return r["status"] if r["status"] != "ok" else "?"
+    mb = f", {int(r['peak_kb']) / 1024:.0f} MB" if r["peak_kb"] else ""
+    return f"{float(r['cpu_seconds']):.2f} s ({float(r['seconds']):.2f} s wall{mb})"
+
+
+def secs(r):
+    """CPU seconds (user + system) of a finished run."""
+    return float(r["cpu_seconds"]) if r and r["status"] == "ok" and r["cpu_seconds"] else None
+
+
+def main(path):
+    cases = OrderedDict()
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            cases.setdefault((r["family"], r["size"], r["variant"]), {})[r["tool"]] = r
+    cols = ["family", "N", "variant", "states", "edges", "sfcv explicit", "sfcv BDD", "sfcv RSG",
+            "Spin (pan)", "Spin states", "ABC pdr", "verdicts", "Spin / sfcv", "ABC / sfcv"]
+    print("| " + " | ".join(cols) + " |")
+    print("|" + "---|" * len(cols))
+    for (fam, size, variant), t in cases.items():
+        ex, bdd, rsg = t.get("sfcv-explicit"), t.get("sfcv-bdd"), t.get("sfcv-rsg")
+        spin, abc = t.get("spin"), t.get("abc-pdr")
+        states = edges = ""
+        for r in (ex, rsg, bdd):
+            if r and r["status"] == "ok" and r["states"]:
+                states, edges = r["states"], r["edges"]
+                break
+        # Definitive verdicts must agree; an "unknown" (e.g. Spin's depth bound) is listed apart.
+        definite = {r["verdict"] for r in (ex, bdd, spin, abc)
+                    if r and r["verdict"] in ("holds", "violated")}
+        unsure = [k for k, r in t.items() if r["verdict"] == "unknown"]
+        if len(definite) > 1:
+            verdict = "DISAGREE: " + ", ".join(f"{k}={r['verdict']}" for k, r in t.items())
+        else:
+            verdict = definite.pop() if definite else ""
+            if unsure:
+                verdict += " (unknown: " + ", ".join(unsure) + ")"
+        sfcv_times = [s for s in (secs(ex), secs(bdd), secs(rsg)) if s is not None]
+        best = min(sfcv_times) if sfcv_times else None
+
+        def ratio(r):
+            s = secs(r)
+            if s is None or best is None:
+                return "-"
+            return f"{s / max(best, 0.01):.1f}"
+
+        spin_cell = cell(spin)
+        if spin and spin["prep_seconds"]:
+            spin_cell += f" (+{float(spin['prep_seconds']):.1f} s build)"
+        row = [fam, size, variant, states, edges, cell(ex), cell(bdd), cell(rsg), spin_cell,
+               spin["states"] if spin and spin["states"] else "-", cell(abc), verdict,
+               ratio(spin), ratio(abc)]
+        print("| " + " | ".join(row) + " |")
+    print()
+    print("Cells: CPU seconds (user + system) (wall-clock seconds, peak resident memory), from "
+          "GNU time. Ratios divide the other tool's CPU time by sfcv's faster engine's (times "
+          "under 0.01 s count as 0.01 s). Spin's time is pan's search; its build (spin -a and "
+          "the C compiler, wall time) is shown apart.")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
