@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/external_tool.hpp"
@@ -47,6 +48,11 @@ std::vector<std::vector<bool>> read_cex(const std::string& text, const Aig& aig)
 
 AbcVerdict check_with_abc(const std::string& abc, const Aig& aig, std::size_t bad_index,
                           const std::string& command, double timeout_seconds) {
+  // Debian's ABC reads AIGER constraints as extra outputs (plain `pdr` then reports them as
+  // violated) and `fold` applies them in the last frame too: constraints must be encoded as a
+  // validity latch instead (engine/external/export_model.hpp does).
+  if (!aig.constraints().empty())
+    throw std::invalid_argument("check_with_abc: encode the circuit's constraints as a latch");
   TempDir dir;
   {
     std::ofstream f(dir.path() + "/model.aig", std::ios::binary);

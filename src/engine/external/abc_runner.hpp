@@ -22,7 +22,8 @@ std::optional<std::string> find_abc();
 
 /// Checks bad-state property `bad_index` of `aig` with ABC's `command` ("pdr", "bmc3 -F 50",
 /// "dprove"): writes an Aig with that single property, runs ABC, reads the verdict and, when it
-/// is violated, the counterexample from `write_cex -n`.
+/// is violated, the counterexample from `write_cex -n`. Throws std::invalid_argument when the
+/// Aig has constraints (ABC would misread them; encode them as a validity latch).
 AbcVerdict check_with_abc(const std::string& abc, const semantics::Aig& aig, std::size_t bad_index,
                           const std::string& command = "pdr", double timeout_seconds = 60);
 
