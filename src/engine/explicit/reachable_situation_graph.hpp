@@ -51,9 +51,14 @@ class ReachableSituationGraph {
     return conditions_[initial_condition_ids_[i]];
   }
 
-  // Out-edges of state s are the edge ids [edges_begin(s), edges_end(s)).
-  std::uint64_t edges_begin(std::uint32_t s) const { return offsets_[s]; }
-  std::uint64_t edges_end(std::uint32_t s) const { return offsets_[s + 1]; }
+  // Out-edges of state s are the edge ids [edges_begin(s), edges_end(s)); a state left
+  // unexpanded by a limit has no known edges (an empty range).
+  std::uint64_t edges_begin(std::uint32_t s) const {
+    return s + 1 < offsets_.size() ? offsets_[s] : targets_.size();
+  }
+  std::uint64_t edges_end(std::uint32_t s) const {
+    return s + 1 < offsets_.size() ? offsets_[s + 1] : targets_.size();
+  }
   std::uint32_t target(std::uint64_t edge) const { return targets_[edge]; }
   /// Empty condition list when the graph was built without keep_conditions.
   const semantics::InputCondition& condition(std::uint64_t edge) const;
