@@ -77,8 +77,11 @@ TEST(ReachableSituationGraph, StateLimitGivesIncompleteGraph) {
   EXPECT_FALSE(g.complete());
   EXPECT_EQ(g.limit_reached(), "states");
   // States the limit left unexpanded have no known edges.
-  for (std::uint32_t s = 0; s < g.num_states(); ++s)
-    if (!g.expanded(s)) EXPECT_EQ(g.edges_begin(s), g.edges_end(s));
+  for (std::uint32_t s = 0; s < g.num_states(); ++s) {
+    if (!g.expanded(s)) {
+      EXPECT_EQ(g.edges_begin(s), g.edges_end(s));
+    }
+  }
   const auto full = build_reachable_situation_graph(ts);
   EXPECT_TRUE(full.complete());
   EXPECT_EQ(full.num_states(), 100u);
