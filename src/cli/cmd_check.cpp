@@ -17,6 +17,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
@@ -24,8 +25,7 @@
 #include "model/names.hpp"
 #include "report/check_render.hpp"
 #include "report/trace_render.hpp"
-#include "semantics/grafcet_system.hpp"
-#include "semantics/iec61131_system.hpp"
+#include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 namespace sfcv::cli {
 
@@ -40,12 +40,7 @@ struct CheckOptions {
   std::vector<std::string> fair;
   std::vector<std::string> assume;
   std::string engine = "explicit";
-  std::string semantics;  ///< empty: from the model's dialect
-  std::vector<std::string> pous;
-  std::string priority = "standard";
-  std::string time = "abstract";
-  std::string cycle = "10ms";
-  bool multi_input_change = false;
+  SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
   bool json = false;
@@ -133,35 +128,15 @@ int run_check(const CheckOptions& o) {
     throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  const bool grafcet = o.semantics.empty() ? project.dialect == model::Dialect::Grafcet
-                                           : o.semantics == "grafcet";
-  if (!o.semantics.empty() && o.semantics != "grafcet" && o.semantics != "iec61131")
-    throw InputError("bad --semantics '" + o.semantics + "' (expected grafcet or iec61131)");
-  model::Diagnostics diags;
-  semantics::TransitionSystemPtr ts;
-  const semantics::PriorityMode priority = parse_priority(o.priority);
-  if (grafcet) {
-    semantics::GrafcetOptions opts;
-    opts.single_input_change = !o.multi_input_change;
-    opts.assumptions = logic::assumption_exprs(parsed.spec);
-    ts = semantics::make_grafcet_system(project, opts, diags);
-  } else {
-    semantics::Iec61131Options opts;
-    opts.priority = priority;
-    opts.time = parse_time_mode(o.time);
-    opts.cycle_ms = parse_cycle_ms(o.cycle);
-    opts.pous = o.pous;
-    opts.assumptions = logic::assumption_exprs(parsed.spec);
-    ts = semantics::make_iec61131_system(project, opts, diags);
-  }
-  print_diagnostics(diags, "the model cannot be checked");
-  if (!ts) throw InputError("sfcv check: the model cannot be checked");
+  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
+  const auto& ts = built.system;
 
   logic::CheckTask task;
   task.system = ts.get();
   task.project = &project;
   task.checks = *checks;
-  task.priority_resolves_conflicts = priority == semantics::PriorityMode::Standard;
+  task.priority_resolves_conflicts =
+      built.semantics == "iec61131" && parse_priority(o.system.priority) == semantics::PriorityMode::Standard;
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
@@ -236,13 +211,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
   sub->add_option("--engine", opts->engine, "explicit (default), bdd, auto, or nusmv (a NuSMV on PATH)");
-  sub->add_option("--semantics", opts->semantics, "grafcet or iec61131 (default: from the model)");
-  sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
-  sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");
-  sub->add_option("--time", opts->time, "IEC timers: abstract (default) or discrete");
-  sub->add_option("--cycle", opts->cycle, "IEC cycle time for --time discrete (default 10ms)");
-  sub->add_flag("--multi-input-change", opts->multi_input_change,
-                "Grafcet: several inputs may change at once (default: one per event)");
+  add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");

@@ -14,13 +14,12 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
-#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/explicit/query_evaluator.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
-#include "semantics/grafcet_system.hpp"
-#include "semantics/iec61131_system.hpp"
+#include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 #ifndef SFCV_SHARE_DIR
 #define SFCV_SHARE_DIR ""
@@ -41,10 +40,7 @@ struct QueryOptions {
   bool list = false;
   bool json = false;
   bool assert_empty = false;
-  std::string semantics = "auto";
-  bool multi_input_change = false;
-  std::string priority = "standard";
-  std::vector<std::string> pous;
+  SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
 };
@@ -79,34 +75,6 @@ std::string located(const logic::QueryError& e, const std::string& text,
                                                                         : line_end - line_start);
   out += "\n  " + std::string(e.pos().column > 0 ? e.pos().column - 1 : 0, ' ') + "^";
   return out;
-}
-
-semantics::TransitionSystemPtr build_system(const model::Project& project, const QueryOptions& o,
-                                            std::string& kind) {
-  kind = o.semantics;
-  if (kind == "auto")
-    kind = project.dialect == model::Dialect::Grafcet ? "grafcet" : "iec61131";
-  model::Diagnostics diags;
-  semantics::TransitionSystemPtr ts;
-  if (kind == "grafcet") {
-    semantics::GrafcetOptions g;
-    g.single_input_change = !o.multi_input_change;
-    ts = semantics::make_grafcet_system(project, g, diags);
-  } else if (kind == "iec61131" || kind == "iec") {
-    kind = "iec61131";
-    if (o.multi_input_change)
-      throw InputError("--multi-input-change applies to the Grafcet semantics only");
-    semantics::Iec61131Options i;
-    i.priority = parse_priority(o.priority);
-    i.pous = o.pous;
-    ts = semantics::make_iec61131_system(project, i, diags);
-  } else {
-    throw InputError("unknown --semantics '" + o.semantics +
-                     "' (expected auto, grafcet or iec61131)");
-  }
-  for (const auto& d : diags) std::cerr << d.str() << "\n";
-  if (!ts) throw InputError(o.model + ": the " + kind + " semantics cannot model this chart");
-  return ts;
 }
 
 /// Steps and true Boolean outputs (TransitionSystem::describe), then the other true Boolean
@@ -267,8 +235,9 @@ int run_query(const QueryOptions& o) {
   if (o.model.empty()) throw InputError("a model file is required");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  std::string kind;
-  const auto ts = build_system(project, o, kind);
+  const auto built = build_system(project, o.system, {}, "sfcv query");
+  const auto& ts = built.system;
+  const std::string& kind = built.semantics;
 
   // Compile every query before exploring: name and sort errors come without waiting.
   std::vector<logic::CompiledQuery> compiled;
@@ -412,11 +381,7 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--assert", opts->assert_empty,
                 "Verdicts: a test must be true, a set must be empty (exit 0 holds, 1 violated, "
                 "3 unknown)");
-  sub->add_option("--semantics", opts->semantics, "auto (default), grafcet or iec61131");
-  sub->add_flag("--multi-input-change", opts->multi_input_change,
-                "Grafcet: let several inputs change at once");
-  sub->add_option("--priority", opts->priority, "IEC: conflicting transitions: standard or none");
-  sub->add_option("--pou", opts->pous, "IEC: the POU(s) to run in one cycle");
+  add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop exploring after N situations");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
