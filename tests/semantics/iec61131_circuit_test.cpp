@@ -141,6 +141,22 @@ TEST(Iec61131Circuit, AgreesWithoutPriorities) {
   }
 }
 
+// Timed qualifiers (L, D, SD, DS, SL) and a nested chart started and stopped by steps, in
+// abstract and in discrete time.
+TEST(Iec61131Circuit, AgreesWithTimedQualifiersAndNesting) {
+  bench::RandomChartFeatures features;
+  features.timed_qualifiers = true;
+  features.nested_chart = true;
+  for (std::uint64_t seed = 40; seed <= 51; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    Iec61131Options options;
+    options.time = seed % 2 == 0 ? TimeMode::Abstract : TimeMode::Discrete;
+    auto ts = system_for(bench::random_chart_iec(12, 3, seed, features), options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, seed);
+  }
+}
+
 TEST(Iec61131Circuit, AgreesOnFamilies) {
   auto tanks = system_for(bench::tanks_iec(2, true));
   ASSERT_TRUE(tanks);
