@@ -23,6 +23,7 @@
 #include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/names.hpp"
+#include "report/check_junit.hpp"
 #include "report/check_render.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
@@ -46,6 +47,7 @@ struct CheckOptions {
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
+  std::string junit;
   bool quiet = false;
 };
 
@@ -186,6 +188,11 @@ int run_check(const CheckOptions& o) {
       }
     }
   }
+  if (!o.junit.empty()) {
+    std::ofstream f(o.junit);
+    if (!f) throw InputError(o.junit + ": cannot write the JUnit report");
+    f << report::check_junit(result, *ts, render);
+  }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
   } else {
@@ -217,6 +224,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
   sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
+  sub->add_option("--junit", opts->junit,
+                  "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");
