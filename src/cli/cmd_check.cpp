@@ -40,7 +40,7 @@ struct CheckOptions {
   std::string checks;  ///< empty: all when no property is given, else none
   std::vector<std::string> fair;
   std::vector<std::string> assume;
-  std::string engine = "explicit";
+  std::string engine = "auto";
   SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
@@ -217,7 +217,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "explicit (default), bdd, auto, or nusmv (a NuSMV on PATH)");
+  sub->add_option("--engine", opts->engine, "auto (default: explicit, or bdd above 40 state bits), explicit, bdd, or nusmv (a NuSMV on PATH)");
   add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
