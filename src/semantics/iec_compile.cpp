@@ -399,10 +399,18 @@ struct Compiler {
     VT lt, rt;
     const auto a = expr(sc, *e.args[0], context, lt);
     const auto b = expr(sc, *e.args[1], context, rt);
+    if (lt == VT::Bool) rt = bool_if_literal(*e.args[1], rt);
+    if (rt == VT::Bool) lt = bool_if_literal(*e.args[0], lt);
     if (lt != rt) error(e.where, "'" + model::to_st(e) + "' compares a BOOL with a number");
     else if (lt == VT::Bool && cmp != Op::Eq && cmp != Op::Ne)
       error(e.where, "'" + model::to_st(e) + "': ordering comparison of BOOL values");
     return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, {a, b});
+  }
+
+  // IEC 61131-3 (2.2.1): Boolean data may be written as the integer literals 0 and 1
+  // (Beremiz exports `ORANGE_LIGHT := 1;`). Called only where a BOOL is expected.
+  static VT bool_if_literal(const model::Expr& e, VT t) {
+    return t == VT::Int && e.kind == ExprKind::IntConst && (e.value == 0 || e.value == 1) ? VT::Bool : t;
   }
 
   std::uint32_t expr(const PouScope& sc, const model::Expr& e, int context, VT& type) {
@@ -438,6 +446,7 @@ struct Compiler {
       case ExprKind::Not: case ExprKind::Neg: {
         VT t;
         const auto a = expr(sc, *e.args[0], context, t);
+        if (e.kind == ExprKind::Not) t = bool_if_literal(*e.args[0], t);
         if (e.kind == ExprKind::Not && t != VT::Bool)
           error(e.where, "'" + model::to_st(e) + "': bitwise NOT on integers is not supported");
         if (e.kind == ExprKind::Neg && t != VT::Int) error(e.where, "'" + model::to_st(e) + "': negation of a BOOL");
@@ -449,7 +458,7 @@ struct Compiler {
         for (const auto& a : e.args) {
           VT t;
           kids.push_back(expr(sc, *a, context, t));
-          if (t != VT::Bool)
+          if (bool_if_literal(*a, t) != VT::Bool)
             error(a->where.known() ? a->where : e.where,
                   "'" + model::to_st(e) + "': bitwise AND/OR/XOR on integers is not supported");
         }
@@ -541,7 +550,7 @@ struct Compiler {
     if (!e) return constant(1);
     VT t;
     const auto n = expr(sc, *e, context, t);
-    if (t != VT::Bool) error(e->where.known() ? e->where : where, std::string(what) + " '" + model::to_st(e) + "' is not Boolean");
+    if (bool_if_literal(*e, t) != VT::Bool) error(e->where.known() ? e->where : where, std::string(what) + " '" + model::to_st(e) + "' is not Boolean");
     return n;
   }
 
@@ -572,6 +581,7 @@ struct Compiler {
                              (it->second.kind == Ref::Input ? "an input" : "a function block instance"));
         } else {
           out.target = it->second.index;
+          if (field_is_bool[out.target] && s.value) t = bool_if_literal(*s.value, t);
           if ((t == VT::Bool) != static_cast<bool>(field_is_bool[out.target]))
             error(s.where, "type mismatch in the assignment to '" + s.target + "'");
         }
@@ -668,6 +678,7 @@ struct Compiler {
       VT t;
       nodes[i] = static_cast<std::int32_t>(expr(sc, *value, -1, t));
       const bool want_int = up == "PV";
+      if (!want_int) t = bool_if_literal(*value, t);
       if ((t == VT::Int) != want_int)
         error(value->where.known() ? value->where : s.where,
               "input " + name + " of '" + s.target + "' has the wrong type");

@@ -199,6 +199,27 @@ TEST(Iec61131Data, StepTimeInAbstractTimeMovesThroughRegions) {
   EXPECT_EQ(r["S2"], 1);
 }
 
+// IEC 61131-3 2.2.1: the integer literals 0 and 1 are also Boolean literals (Beremiz's
+// traffic light writes `ORANGE_LIGHT := 1;`); other integers stay type errors.
+TEST(Iec61131Data, ZeroAndOneAreBooleanLiterals) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; r : BOOL; END_VAR VAR t : TON; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a = 1 AND NOT 0").trans("S2", "S1", "q = 0 OR a");
+  b.action_st("On", "q := 1; t(IN := 1, PT := T#1s); r := t.Q;").assoc("S2", "On", "N");
+  b.action_st("Off", "q := 0;").assoc("S1", "Off", "N");
+  auto ts = b.build();
+  ASSERT_TRUE(ts);
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["S2"], 1);
+  EXPECT_EQ(r["q"], 0);  // q is written by the action of S2 from the next cycle on
+  ASSERT_TRUE(r.cycle({{"a", 0}}));
+  EXPECT_EQ(r["q"], 1);
+  EXPECT_EQ(r["S2"], 1);  // q = 0 is false, a is false
+  IecBuilder bad("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; END_VAR");
+  bad.step("S1", true).action_st("W", "q := 2;").assoc("S1", "W", "N");
+  EXPECT_NE(bad.build_error().find("type mismatch in the assignment to 'q'"), std::string::npos);
+}
+
 TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
   {
     IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR x : INT; END_VAR");
