@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -77,12 +78,13 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-// --engine auto: explicit for small charts, BDD beyond kAutoBddBits state bits (where explicit
-// enumeration may reach billions of states) when the BDD engine can answer everything asked.
-constexpr std::uint32_t kAutoBddBits = 40;
+// --engine auto. The explicit engine answers every standard check and counts edges, so it runs
+// first, within kAutoExplicitStates states. Beyond that budget, or when a state cannot be
+// enumerated explicitly (an integer input copied into a variable), the BDD engine takes over if
+// it can answer the task. A time or memory limit of the user's ends the run as it is: unknown.
+constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
-engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
-                                      std::uint32_t state_bits, bool quiet) {
+engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -93,25 +95,47 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
   }
-  if (name == "bdd") {
-    auto bdd = engine::make_bdd_model_checker();
-    if (!bdd->can_handle(task, &why)) throw InputError("sfcv check: " + why);
-    return bdd;
-  }
+  auto checker = name == "bdd" ? engine::make_bdd_model_checker() : engine::make_explicit_model_checker();
+  if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+  return checker;
+}
+
+logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet) {
+  auto note = [quiet](const std::string& text) {
+    if (!quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
+  };
   auto explicit_engine = engine::make_explicit_model_checker();
-  if (name == "auto" && state_bits > kAutoBddBits) {
-    auto bdd = engine::make_bdd_model_checker();
-    if (bdd->can_handle(task, &why)) {
-      if (!quiet)
-        std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the bdd engine\n";
-      return bdd;
-    }
+  auto bdd = engine::make_bdd_model_checker();
+  std::string why;
+  if (!bdd->can_handle(task, &why)) {
+    note("using the explicit engine (the bdd engine cannot: " + why + ")");
+    return explicit_engine->check(task);
   }
-  if (name == "auto" && !quiet)
-    std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the explicit engine"
-              << (why.empty() ? "" : " (" + why + ")") << "\n";
-  if (!explicit_engine->can_handle(task, &why)) throw InputError("sfcv check: " + why);
-  return explicit_engine;
+  if (!explicit_engine->can_handle(task, &why)) {
+    note("using the bdd engine (the explicit engine cannot: " + why + ")");
+    return bdd->check(task);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  logic::CheckTask probe = task;
+  const bool user_bound = task.limits.max_states > 0 && task.limits.max_states <= kAutoExplicitStates;
+  if (!user_bound) probe.limits.max_states = kAutoExplicitStates;
+  try {
+    auto report = explicit_engine->check(probe);
+    if (report.complete || user_bound || report.limit != "states") {
+      note("using the explicit engine");
+      return report;
+    }
+    note("more than " + std::to_string(kAutoExplicitStates) +
+         " states: switching to the bdd engine");
+  } catch (const semantics::SemanticsLimitError& e) {
+    note(std::string(e.what()) + ": switching to the bdd engine");
+  }
+  logic::CheckTask rest = task;
+  if (task.limits.timeout_seconds > 0) {
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
+    rest.limits.timeout_seconds = std::max(0.001, task.limits.timeout_seconds - spent.count());
+  }
+  return bdd->check(rest);
 }
 
 int run_check(const CheckOptions& o) {
@@ -155,10 +179,9 @@ int run_check(const CheckOptions& o) {
       std::fflush(stderr);
     };
 
-  auto checker = choose_engine(o.engine, task, ts->layout().bits(), o.quiet);
   logic::CheckReport result;
   try {
-    result = checker->check(task);
+    result = o.engine == "auto" ? check_auto(task, o.quiet) : choose_engine(o.engine, task)->check(task);
   } catch (const semantics::SemanticsLimitError& e) {
     if (progress_shown) std::cerr << "\n";
     std::cerr << "sfcv: " << e.what() << "\n";
@@ -217,7 +240,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "auto (default: explicit, or bdd above 40 state bits), explicit, bdd, or nusmv (a NuSMV on PATH)");
+  sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, or nusmv (a NuSMV on PATH)");
   add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
