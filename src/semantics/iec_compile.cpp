@@ -32,6 +32,9 @@ struct PouScope {
   std::map<std::string, Ref> names;                // upper-case variable names
   std::vector<std::uint32_t> chart_ids;            // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;    // upper name -> global action index
+  // Inputs the POU's own code writes: a field holds the program's copy, loaded from the input
+  // at the start of the POU's cycle (field, input).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> input_copies;
 };
 
 enum class VT { Bool, Int };
@@ -205,6 +208,25 @@ struct Compiler {
         auto it = inputs_by_name.find(up);
         if (it == inputs_by_name.end())
           it = inputs_by_name.emplace(up, add_input(v.name, value_type(v.type), false)).first;
+        if (written.count(model::to_upper(pous[pi]->name) + "|" + up)) {
+          // A PLC reads its inputs into memory at the start of a cycle, and code may overwrite
+          // that memory (a %I variable, or a function block's VAR_INPUT that CODESYS code sets
+          // itself): the write is seen until the next cycle reads the input again.
+          const auto t = value_type(v.type);
+          const bool is_bool = t.kind == TypeKind::Bool;
+          const auto f = add_field(v.name, FieldKind::Variable, t.lo, t.hi,
+                                   v.initial.value_or(std::clamp<std::int64_t>(0, t.lo, t.hi)), is_bool);
+          sc.names[up] = Ref{Ref::Field, f, is_bool};
+          sc.input_copies.emplace_back(f, it->second);
+          Observable o;
+          o.name = v.name;
+          o.aliases = {pous[pi]->name + "." + v.name};
+          o.kind = ObservableKind::Variable;
+          o.type = t;
+          p.observables.push_back(std::move(o));
+          p.observable_refs.push_back(ObservableRef{ObservableKind::Variable, f});
+          continue;
+        }
         sc.names[up] = Ref{Ref::Input, it->second, v.type.kind == TypeKind::Bool};
       }
     }
@@ -555,8 +577,21 @@ struct Compiler {
   }
 
   // ------------------------------------------------------------------------ statements
-  Block block(const PouScope& sc, const model::StmtList& body) {
+  Block block(const PouScope& sc, const model::StmtList& body,
+              const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies = {}) {
     std::vector<std::uint32_t> items;
+    for (const auto& [field, input] : input_copies) {
+      Stmt copy;
+      copy.op = SOp::Assign;
+      copy.where = sc.pou->where.str();
+      copy.target = field;
+      Node n;
+      n.op = Op::Input;
+      n.a = input;
+      copy.expr = node(n);
+      p.stmts.push_back(copy);
+      items.push_back(static_cast<std::uint32_t>(p.stmts.size() - 1));
+    }
     for (const auto& s : body) items.push_back(stmt(sc, *s));
     Block b;
     b.first = static_cast<std::uint32_t>(p.block_items.size());
@@ -667,10 +702,18 @@ struct Compiler {
                 "PT of '" + s.target + "' must be a constant (a literal or a variable no statement writes)");
           continue;
         }
-        if (fb.pt_set && fb.pt_ms != *pt) {
-          error(s.where, "'" + s.target + "' is called with different PT values; sfcv needs one");
+        // Abstract time only distinguishes PT = 0 (at once) from PT > 0 (some later cycle), so
+        // calls with different positive PTs (CODESYS's PPU) share one timer; discrete time
+        // counts cycles and needs one PT.
+        const bool same_abstract = p.options.time == TimeMode::Abstract && (fb.pt_ms > 0) == (*pt > 0);
+        if (fb.pt_set && fb.pt_ms != *pt && !same_abstract) {
+          error(s.where, "'" + s.target + "' is called with different PT values" +
+                             std::string(p.options.time == TimeMode::Abstract
+                                             ? " (zero and positive)"
+                                             : "; discrete time needs one (--time abstract accepts several positive ones)"));
           continue;
         }
+        if (fb.pt_set) continue;
         fb.pt_ms = *pt;
         fb.pt_set = true;
         continue;
@@ -796,7 +839,7 @@ struct Compiler {
     for (auto& sc : scopes) {
       const auto& pou = *sc.pou;
       auto& cp = p.pous[sc.index];
-      cp.body = block(sc, pou.body);
+      cp.body = block(sc, pou.body, sc.input_copies);
       // Action bodies.
       for (const auto& a : pou.actions) {
         auto& ca = p.actions[sc.actions[model::to_upper(a.name)]];
