@@ -219,6 +219,7 @@ class Writer {
           cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       case model::ActionBodyKind::Statements:
+        if (a.body_unsupported) cannot("action '" + a.name + "', whose body sfcv does not model");
         check_body(a.body, "action '" + a.name + "'");
         out += "\n  ACTION " + ident(a.name, "action name") + ":\n" + model::to_st(a.body, 4) +
                "  END_ACTION\n";
