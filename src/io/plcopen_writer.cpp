@@ -231,7 +231,10 @@ class PouWriter {
         if (a.body_unsupported) {
           if (a.unsupported_language != "ST" && a.unsupported_language != "IL")
             cannot("action '" + a.name + "', whose graphical body sfcv does not model");
-          text_language(b, a.unsupported_language.c_str(), a.unsupported_text);
+          // The importer ends a paragraph with a line break: drop it, or every round trip adds one.
+          std::string text = a.unsupported_text;
+          while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+          text_language(b, a.unsupported_language.c_str(), text);
           return;
         }
         check_body(a.body, "action '" + a.name + "'");
