@@ -215,7 +215,9 @@ class Writer {
     switch (a.kind) {
       case model::ActionBodyKind::Variable:
         // Re-created on loading from the association naming the variable.
-        if (!model::iequals(a.name, a.variable) || !pou_.find_variable(a.variable))
+        if (!model::iequals(a.name, a.variable) || !pou_.find_variable(a.variable) ||
+            std::none_of(pou_.associations.begin(), pou_.associations.end(),
+                         [&](const auto& x) { return model::iequals(x.action, a.name); }))
           cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       case model::ActionBodyKind::Statements:

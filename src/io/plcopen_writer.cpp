@@ -373,7 +373,8 @@ class PouWriter {
       e.append_attribute("localId") = out_port[i];
       position(e);
       connect(e, {step_id[i]});
-      for (int k = 0; k < consumers[i]; ++k) e.append_child("connectionPointOut");
+      for (int k = 0; k < consumers[i]; ++k)
+        e.append_child("connectionPointOut").append_attribute("formalParameter") = "";
     }
     for (std::size_t k : order) {
       const auto& t = c.transitions[k];
@@ -382,8 +383,8 @@ class PouWriter {
         auto e = sfc.append_child("simultaneousConvergence");
         e.append_attribute("localId") = p.convergence;
         position(e);
-        auto cpi = e.append_child("connectionPointIn");
-        for (auto i : p.sources) cpi.append_child("connection").append_attribute("refLocalId") = out_port[i];
+        // One input per branch, as for the selection convergence.
+        for (auto i : p.sources) connect(e, {out_port[i]});
         e.append_child("connectionPointOut");
       }
       auto e = sfc.append_child("transition");
@@ -400,7 +401,8 @@ class PouWriter {
         d.append_attribute("localId") = p.divergence;
         position(d);
         connect(d, {p.id});
-        for (std::size_t x = 0; x < p.targets.size(); ++x) d.append_child("connectionPointOut");
+        for (std::size_t x = 0; x < p.targets.size(); ++x)
+          d.append_child("connectionPointOut").append_attribute("formalParameter") = "";
       }
     }
     for (std::size_t i = 0; i < n; ++i) {

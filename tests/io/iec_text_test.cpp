@@ -387,6 +387,25 @@ TEST(IecText, WriterRejectsWhatIecTextCannotSay) {
     q.dialect = model::Dialect::Grafcet;
     expect_throw(q, "Grafcet");
   }
+  {
+    // Printing an empty action would run a no-op where the semantics must refuse.
+    auto q = p;
+    model::Action a;
+    a.name = "Opaque";
+    a.body_unsupported = true;
+    q.pous[0].actions.push_back(a);
+    expect_throw(q, "action 'Opaque', whose body sfcv does not model");
+  }
+  {
+    // A Boolean action is printed as the association naming its variable: it needs one.
+    auto q = p;
+    model::Action a;
+    a.name = "x";
+    a.kind = model::ActionBodyKind::Variable;
+    a.variable = "x";
+    q.pous[0].actions.push_back(a);
+    expect_throw(q, "action 'x' standing for variable 'x'");
+  }
 }
 
 TEST(Compare, FindsStructuralDifferences) {
