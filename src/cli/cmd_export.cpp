@@ -1,5 +1,5 @@
 // sfcv export: the chart for outside checkers (NuSMV, Cadence SMV, Promela, AIGER) or people
-// (DOT, IEC text, .g7). The circuit exports mean what sfcv check means: engine/external/
+// (DOT, IEC text, .g7, PLCopen XML). The circuit exports mean what sfcv check means: engine/external/
 // export_model.hpp says how.
 
 #include <unistd.h>
@@ -22,6 +22,7 @@
 #include "engine/external/export_model.hpp"
 #include "io/g7_writer.hpp"
 #include "io/iec_text_writer.hpp"
+#include "io/plcopen_writer.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/formula.hpp"
 #include "model/names.hpp"
@@ -139,10 +140,11 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
 
 int run_export(const ExportOptions& o) {
   static const std::vector<std::string> kTargets = {"nusmv", "casmv", "promela", "aiger",
-                                                    "aag",   "dot",   "iec",     "g7"};
+                                                    "aag",   "dot",   "iec",     "g7",
+                                                    "plcopen"};
   if (std::find(kTargets.begin(), kTargets.end(), o.to) == kTargets.end())
     throw InputError("bad --to '" + o.to +
-                     "' (expected nusmv, casmv, promela, aiger, aag, dot, iec or g7)");
+                     "' (expected nusmv, casmv, promela, aiger, aag, dot, iec, g7 or plcopen)");
   if (o.to == "aiger" && o.output.empty() && ::isatty(1))
     throw InputError("sfcv export --to aiger writes binary AIGER: give -o FILE or redirect "
                      "standard output (--to aag writes ASCII)");
@@ -156,6 +158,8 @@ int run_export(const ExportOptions& o) {
       text << io::write_iec_text(project);
     } else if (o.to == "g7") {
       text << io::write_g7(project);
+    } else if (o.to == "plcopen") {
+      text << io::write_plcopen_xml(project);
     } else {
       export_circuit(o, project, text);
     }
@@ -179,10 +183,10 @@ int run_export(const ExportOptions& o) {
 void add_export_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<ExportOptions>();
   auto* sub = app.add_subcommand(
-      "export", "Export a chart to NuSMV, Cadence SMV, Promela, AIGER, DOT, IEC text or .g7");
+      "export", "Export a chart to NuSMV, Cadence SMV, Promela, AIGER, DOT, IEC text, .g7 or PLCopen XML");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--to", opts->to, "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7")
+  sub->add_option("--to", opts->to, "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7, plcopen")
       ->required();
   sub->add_option("-o,--output", opts->output, "Output file (default: standard output)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");

@@ -215,10 +215,13 @@ class Writer {
     switch (a.kind) {
       case model::ActionBodyKind::Variable:
         // Re-created on loading from the association naming the variable.
-        if (!model::iequals(a.name, a.variable) || !pou_.find_variable(a.variable))
+        if (!model::iequals(a.name, a.variable) || !pou_.find_variable(a.variable) ||
+            std::none_of(pou_.associations.begin(), pou_.associations.end(),
+                         [&](const auto& x) { return model::iequals(x.action, a.name); }))
           cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       case model::ActionBodyKind::Statements:
+        if (a.body_unsupported) cannot("action '" + a.name + "', whose body sfcv does not model");
         check_body(a.body, "action '" + a.name + "'");
         out += "\n  ACTION " + ident(a.name, "action name") + ":\n" + model::to_st(a.body, 4) +
                "  END_ACTION\n";

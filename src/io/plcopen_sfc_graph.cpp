@@ -186,6 +186,9 @@ class ChartBuilder {
       if (local_name(n) != "transition") continue;
       model::Transition t;
       t.name = trim(n.attribute("name").value());
+      // TC6 gives an SFC transition no name attribute; the name of its inline condition
+      // (`<inline name="T1">`, empty in Beremiz exports) is where a named transition's name goes.
+      if (t.name.empty()) t.name = trim(child(child(n, "condition"), "inline").attribute("name").value());
       t.order = order++;
       t.where = ctx_.where(n);
       const std::string id = n.attribute("localId").value();
@@ -474,6 +477,10 @@ void read_action_body(PouContext& pc, model::Action& action, pugi::xml_node lang
   action.kind = model::ActionBodyKind::Statements;
   action.body.clear();
   action.body_unsupported = true;
+  if (k == "ST" || k == "IL") {
+    action.unsupported_language = std::string(k);
+    action.unsupported_text = body_text(language, pc.ctx).text;
+  }
   std::string reason;
   for (const auto& p : problems)
     if (p.severity == model::Severity::Error) {

@@ -12,6 +12,7 @@
 
 #include "io/load.hpp"
 #include "io/plcopen_pou.hpp"
+#include "io/plcopen_st.hpp"
 #include "io/plcopen_xml_dom.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
@@ -201,6 +202,17 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     }
   }
   for (auto lang : other_bodies) {
+    // An ST body beside an SFC body runs with the chart every cycle (as sfcv writes Pou::body
+    // of an SFC POU); read it when it parses. ST-only POUs stay unmodelled: sfcv runs SFC POUs.
+    if (sfc_bodies > 0 && local_name(lang) == "ST") {
+      model::Diagnostics problems;
+      auto stmts = parse_statements_text(body_text(lang, ctx), problems);
+      if (stmts && !model::has_errors(problems)) {
+        for (auto& st : *stmts) pou.body.push_back(std::move(st));
+        for (auto& d : problems) ctx.add(std::move(d));
+        continue;
+      }
+    }
     const std::string what = "POU '" + pou.name + "': its " + std::string(local_name(lang)) +
                              " body is not modelled (only SFC bodies are)";
     // TwinCAT FBs start their SFC actions from an ST body (`ACT_Extend();`): those charts

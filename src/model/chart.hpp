@@ -89,6 +89,10 @@ struct Action {
   /// The importer could not model the body (an unsupported construct in an exported ST/LD/IL
   /// body); `body` is empty and the semantics must refuse the action rather than run a no-op.
   bool body_unsupported = false;
+  /// With body_unsupported: the body as written when it is text ("ST" or "IL" and its text),
+  /// so that writers can give it back unchanged; both empty for graphical bodies.
+  std::string unsupported_language;
+  std::string unsupported_text;
 };
 
 /// A step's action block: (step, action, qualifier [, duration] [, indicator]).

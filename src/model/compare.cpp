@@ -194,6 +194,8 @@ Diff compare_pous(const Pou& a, const Pou& b) {
     const Action* xb = b.find_action(xa.name);
     if (!xb) return "action " + q(xa.name) + " only in the first";
     if (xa.kind != xb->kind) return "action " + q(xa.name) + ": kind differs";
+    if (xa.body_unsupported != xb->body_unsupported)
+      return "action " + q(xa.name) + ": body modelled in only one";
     if (xa.kind == ActionBodyKind::Variable && !iequals(xa.variable, xb->variable))
       return "action " + q(xa.name) + ": variable differs";
     if (xa.kind == ActionBodyKind::Statements && !equal(xa.body, xb->body))

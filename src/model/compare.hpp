@@ -15,7 +15,8 @@ namespace sfcv::model {
 /// of a POU's only top-level chart, transition names when either side has none, and type names
 /// (types compare by kind, range and FB). Transitions are matched by sources, targets, guard
 /// (model::equal) and priority; their document order must agree between transitions that share
-/// a source step. Associations compare in order per step.
+/// a source step. Associations compare in order per step. An action whose body is not modelled
+/// (Action::body_unsupported) differs from one whose body is.
 std::optional<std::string> first_difference(const Project& a, const Project& b);
 
 }  // namespace sfcv::model

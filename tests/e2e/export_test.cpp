@@ -117,6 +117,24 @@ TEST(Export, IecTextAndPromelaAndAag) {
   EXPECT_EQ(aig.out.rfind("aig ", 0), 0u);
 }
 
+TEST(Export, PlcopenXmlReadsBackToTheSameChart) {
+  const auto plant = quoted("examples/chemical_plant/chemical_plant.st");
+  const auto xml = run_sfcv("export " + plant + " --to plcopen");
+  ASSERT_EQ(xml.exit_code, 0) << xml.err;
+  EXPECT_NE(xml.out.find("xmlns=\"http://www.plcopen.org/xml/tc6_0201\""), std::string::npos);
+  const auto file = sfcv::test::write_temp(xml.out, ".xml");
+  // Printed as IEC text, the re-loaded XML is the chart printed directly.
+  const auto direct = run_sfcv("export " + plant + " --to iec");
+  const auto via_xml = run_sfcv("export '" + file + "' --to iec");
+  ASSERT_EQ(via_xml.exit_code, 0) << via_xml.err;
+  EXPECT_EQ(via_xml.out, direct.out);
+  std::filesystem::remove(file);
+  const auto grafcet = run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to plcopen");
+  EXPECT_EQ(grafcet.exit_code, 2);
+  EXPECT_NE(grafcet.err.find("cannot write as PLCopen XML: a Grafcet (IEC 60848) project"),
+            std::string::npos) << grafcet.err;
+}
+
 TEST(Export, RefusesWhatTheTargetCannotSay) {
   const auto plant = quoted("examples/chemical_plant/chemical_plant.st");
   const auto ctl = run_sfcv("export " + plant + " --to promela --ctl 'AG EF s9'");

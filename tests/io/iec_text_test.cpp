@@ -9,6 +9,7 @@
 #include "model/compare.hpp"
 #include "model/names.hpp"
 #include "support/sfcv_test.hpp"
+#include "round_trip.hpp"
 
 namespace sfcv::io {
 namespace {
@@ -41,15 +42,7 @@ std::string errors(std::string_view text) {
 }
 
 // Prints, re-loads and compares; returns the printed text.
-std::string round_trip(const model::Project& p) {
-  const std::string text = write_iec_text(p);
-  auto again = load_iec_text(text, "printed.sfc");
-  EXPECT_TRUE(again.ok()) << all(again.diagnostics) << text;
-  if (!again.project) return text;
-  const auto diff = model::first_difference(p, *again.project);
-  EXPECT_FALSE(diff.has_value()) << *diff << "\n" << text;
-  return text;
-}
+std::string round_trip(const model::Project& p) { return test::iec_round_trip(p); }
 
 const char* const kFeatures = R"((* all features of the textual form *)
 FUNCTION_BLOCK Press
@@ -393,6 +386,25 @@ TEST(IecText, WriterRejectsWhatIecTextCannotSay) {
     auto q = p;
     q.dialect = model::Dialect::Grafcet;
     expect_throw(q, "Grafcet");
+  }
+  {
+    // Printing an empty action would run a no-op where the semantics must refuse.
+    auto q = p;
+    model::Action a;
+    a.name = "Opaque";
+    a.body_unsupported = true;
+    q.pous[0].actions.push_back(a);
+    expect_throw(q, "action 'Opaque', whose body sfcv does not model");
+  }
+  {
+    // A Boolean action is printed as the association naming its variable: it needs one.
+    auto q = p;
+    model::Action a;
+    a.name = "x";
+    a.kind = model::ActionBodyKind::Variable;
+    a.variable = "x";
+    q.pous[0].actions.push_back(a);
+    expect_throw(q, "action 'x' standing for variable 'x'");
   }
 }
 

@@ -173,6 +173,32 @@ TEST(PlcopenXml, InlineConditionInXhtmlParagraph) {
   EXPECT_EQ(model::to_st(guard0(r)), "a AND NOT b");
 }
 
+TEST(PlcopenXml, NameOfAnInlineConditionNamesTheTransition) {
+  const auto named = "<condition><inline name=\"T_go\"><ST><xhtml:p>a</xhtml:p></ST></inline></condition>";
+  const auto r = load_plcopen_xml(project(two_steps(named), kVarA), "c.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(chart0(r).transitions.at(0).name, "T_go");
+  EXPECT_EQ(chart0(r).transitions.at(1).name, "");  // inline name="" (Beremiz): no name
+}
+
+TEST(PlcopenXml, StBodyBesideAnSfcBodyIsThePouBody) {
+  const std::string doc = project(two_steps(), kVarA + "<localVars><variable name=\"x\"><type><BOOL/></type></variable></localVars>");
+  std::string with_st = doc;
+  with_st.insert(with_st.find("</pou>"), "<body><ST><xhtml:p><![CDATA[x := a AND b;]]></xhtml:p></ST></body>");
+  const auto r = load_plcopen_xml(with_st, "st.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  ASSERT_EQ(r.project->pous.at(0).body.size(), 1u);
+  EXPECT_EQ(model::to_st(r.project->pous.at(0).body), "x := a AND b;\n");
+  EXPECT_FALSE(has_message(r, Severity::Note, "not modelled"));
+  // One that does not parse stays unmodelled, with the note as before.
+  std::string bad = doc;
+  bad.insert(bad.find("</pou>"), "<body><ST><xhtml:p><![CDATA[x := SQRT(a);]]></xhtml:p></ST></body>");
+  const auto b = load_plcopen_xml(bad, "st.xml");
+  ASSERT_TRUE(b.ok()) << errors_of(b);
+  EXPECT_TRUE(b.project->pous.at(0).body.empty());
+  EXPECT_TRUE(has_message(b, Severity::Note, "its ST body is not modelled"));
+}
+
 TEST(PlcopenXml, InlineConditionAsRawText) {
   const auto cond = "<condition><inline name=\"\"><ST>a OR b</ST></inline></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond), kVarA, "", kNs10), "c.xml");
