@@ -188,6 +188,7 @@ class Run {
     }
     report.states = static_cast<std::uint64_t>(sys_.count(reached_));
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
+    sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
   }
 
   std::string limit_message(const logic::CheckReport& report) const {
@@ -211,7 +212,6 @@ class Run {
   logic::Trace to_trace(const std::vector<std::vector<semantics::StateWord>>& states) {
     logic::Trace t;
     const auto& circuit = sys_.circuit();
-    const auto& aig = circuit.aig;
     std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
                                                           ts_.inputs(), {});
     t.steps.push_back({inputs, states.front(), {}});
@@ -219,18 +219,7 @@ class Run {
       const auto bits = sys_.inputs_between(states[k - 1], states[k]);
       if (bits.empty()) break;  // cannot happen: consecutive ring states are related
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
-      std::vector<bool> latches(aig.latches().size());
-      const auto& layout = ts_.layout();
-      for (std::uint32_t f = 0; f < circuit.field_latches.size(); ++f) {
-        const auto v = static_cast<std::uint64_t>(layout.get(states[k - 1], f) - layout.fields()[f].lo);
-        for (std::size_t b = 0; b < circuit.field_latches[f].size(); ++b)
-          latches[circuit.field_latches[f][b]] = ((v >> b) & 1U) != 0;
-      }
-      const auto nodes = aig.evaluate(bits, latches);
-      std::vector<std::uint32_t> fired;
-      for (std::uint32_t tr = 0; tr < circuit.fired.size(); ++tr)
-        if (semantics::Aig::value_of(nodes, circuit.fired[tr])) fired.push_back(tr);
-      t.steps.push_back({inputs, states[k], fired});
+      t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
     return t;
   }
@@ -278,6 +267,31 @@ class Run {
     }
     if (r.trace) r.trace->marked = marked;
     return r;
+  }
+
+  /// Grafcet anomalies (docs/semantics.md 2.11): events whose transient evolutions never
+  /// stabilise or raise a range error, from reached situations or at the start.
+  void grafcet_instability(PropertyResult& r, const logic::CheckReport& report) {
+    if (sys_.initial_unstable())
+      r.findings.push_back("instability: under some initial input valuation the transient "
+                           "evolutions never reach a stable situation");
+    if (sys_.initial_range_error())
+      r.findings.push_back("range error: under some initial input valuation an evolution raises "
+                           "a range error or a forcing conflict");
+    const Bdd unstable = reached_ & sys_.unstable_states();
+    if (!unstable.is_false()) {
+      r.findings.push_back("instability: from " + ts_.describe(sys_.pick(unstable)) +
+                           " an input event starts transient evolutions that never reach a "
+                           "stable situation");
+      r.trace = path_to(unstable);
+    }
+    const Bdd err = reached_ & sys_.range_error_states();
+    if (!err.is_false()) {
+      r.findings.push_back("range error: from " + ts_.describe(sys_.pick(err)) +
+                           " an input event raises a range error or a forcing conflict");
+      if (!r.trace) r.trace = path_to(err);
+    }
+    finish(r, report, "every evolution reaches a stable situation");
   }
 
   void finish(PropertyResult& r, const logic::CheckReport& report, const std::string& ok) {
@@ -454,6 +468,10 @@ class Run {
       case StandardCheck::Instability: {
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         const Bdd err = reached_ & sys_.range_error_states();
+        if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
+          grafcet_instability(r, report);
+          break;
+        }
         if (!err.is_false()) {
           r.findings.push_back("a range error (integer overflow, division by zero or a value "
                                "out of its type) can occur in " + ts_.describe(sys_.pick(err)));
@@ -485,13 +503,15 @@ class BddModelChecker final : public ModelChecker {
   std::string_view name() const override { return "bdd"; }
 
   bool can_handle(const logic::CheckTask& task, std::string* why) const override {
-    if (!task.system || task.system->kind() != semantics::SemanticsKind::Iec61131) {
-      if (why) *why = "the bdd engine encodes the IEC 61131-3 scan cycle only; Grafcet charts "
-                      "are checked by the explicit engine";
+    if (!task.system) {
+      if (why) *why = "no system to check";
       return false;
     }
     try {
-      semantics::build_iec61131_circuit(*task.system);
+      if (task.system->kind() == semantics::SemanticsKind::Grafcet)
+        semantics::build_grafcet_circuit(*task.system);
+      else
+        semantics::build_iec61131_circuit(*task.system);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = std::string("the bdd engine cannot encode ") + e.what();
       return false;
@@ -501,7 +521,8 @@ class BddModelChecker final : public ModelChecker {
   }
 
   logic::CheckReport check(const logic::CheckTask& task) const override {
-    SymbolicSystem sys(*task.system, semantics::build_iec61131_circuit(*task.system));
+    const auto symbolic = make_symbolic_system(*task.system);
+    SymbolicSystem& sys = *symbolic;
     Run run(task, sys);
     try {
       return run.check();
