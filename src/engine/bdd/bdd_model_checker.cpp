@@ -9,6 +9,7 @@
 #include "engine/bdd/symbolic_system.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "model/names.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
 namespace sfcv::engine {
@@ -269,6 +270,64 @@ class Run {
     return r;
   }
 
+  /// Grafcet steps never active in a reached stable situation but entered by a transition that
+  /// fires (crossed during transient evolutions), as the explicit checks treat them: index into
+  /// `steps` -> the reached situations with an evolution entering the step.
+  std::map<std::size_t, Bdd> transient_steps(const std::vector<logic::StepRef>& steps) {
+    std::map<std::size_t, Bdd> out;
+    if (ts_.kind() != semantics::SemanticsKind::Grafcet || !task_.project) return out;
+    std::vector<const model::Transition*> matched;
+    for (const auto& info : ts_.transitions()) {
+      const model::Transition* hit = nullptr;
+      for (const auto& pou : task_.project->pous) {
+        if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
+        for (const auto& chart : pou.charts) {
+          if (!info.chart.empty() && !model::iequals(chart.name, info.chart)) continue;
+          for (const auto& t : chart.transitions)
+            if (info.where.known() ? t.where.str() == info.where.str()
+                                   : (!t.name.empty() && t.name == info.name))
+              hit = &t;
+        }
+      }
+      if (!hit) return out;
+      matched.push_back(hit);
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (!(reached_ & sys_.atom(*logic::observable_atom(ts_, steps[i].observable))).is_false())
+        continue;
+      Bdd entry = Bdd::constant(false);
+      for (std::uint32_t t = 0; t < matched.size(); ++t) {
+        if (!model::iequals(ts_.transitions()[t].chart, steps[i].chart)) continue;
+        bool enters = false;
+        for (const auto& d : matched[t]->targets) enters = enters || model::iequals(d, steps[i].step);
+        if (enters) entry = entry | (reached_ & sys_.fires(t));
+      }
+      if (!entry.is_false()) out.emplace(i, entry);
+    }
+    return out;
+  }
+
+  /// Re-entry of a transient step: from every reached situation an evolution entering it stays
+  /// reachable.
+  void transient_reentry(PropertyResult& r, const logic::StepRef& step, const Bdd& entry,
+                         const std::string& what) {
+    Bdd back = entry;
+    for (;;) {
+      const Bdd next = entry | sys_.preimage(back);
+      if (next == back) break;
+      back = next;
+    }
+    const Bdd bad = reached_ & !back;
+    if (bad.is_false()) return;
+    r.findings.push_back("step " + logic::describe_step(step) +
+                         " (crossed only during transient evolutions)" + what);
+    if (!r.trace) {
+      r.trace = path_to(bad);
+      r.trace->note = "from the last situation " + logic::describe_step(step) +
+                      " can never be crossed again";
+    }
+  }
+
   /// Grafcet anomalies (docs/semantics.md 2.11): events whose transient evolutions never
   /// stabilise or raise a range error, from reached situations or at the start.
   void grafcet_instability(PropertyResult& r, const logic::CheckReport& report) {
@@ -319,8 +378,11 @@ class Run {
           break;
         }
         std::size_t missing = 0;
-        for (const auto& s : steps)
-          if ((reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
+        const auto transient = report.complete ? transient_steps(steps) : std::map<std::size_t, Bdd>{};
+        for (std::size_t i = 0; i < steps.size(); ++i)
+          if (const auto& s = steps[i];
+              !transient.count(i) &&
+              (reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
             ++missing;
             if (report.complete) r.findings.push_back("step " + logic::describe_step(s) + " is never active");
           }
@@ -330,7 +392,9 @@ class Run {
                       " steps not reached before the limit; " + limit_message(report);
           break;
         }
-        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable");
+        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable" +
+                              (transient.empty() ? "" : " (" + std::to_string(transient.size()) +
+                                                            " only during transient evolutions)"));
         break;
       }
       case StandardCheck::DeadTransitions: {
@@ -430,9 +494,20 @@ class Run {
           break;
         }
         std::size_t considered = 0;
-        for (const auto& step : steps) {
+        const auto transient = transient_steps(steps);
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+          const auto& step = steps[i];
+          if (c == StandardCheck::Reentry && !step.on_loop && task_.project) continue;
+          if (auto it = transient.find(i); it != transient.end()) {
+            ++considered;
+            transient_reentry(r, step, it->second,
+                              c == StandardCheck::Reentry
+                                  ? ": a reachable situation exists from which it can never be "
+                                    "crossed again"
+                                  : ", once crossed, is never crossed again");
+            continue;
+          }
           if (c == StandardCheck::Reentry) {
-            if (!step.on_loop && task_.project) continue;
             ++considered;
             if (!all_initial(ctl.sat(logic::reentry_formula(ts_, step.observable))))
               r.findings.push_back("step " + logic::describe_step(step) +
