@@ -459,10 +459,18 @@ class Run {
         if (steps.empty()) {
           target = sys_.initial();
         } else {
-          const auto init = sys_.pick(sys_.initial());
-          for (const auto& s : steps) {
-            const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
-            target = target & (ts_.observe(init, s.observable) ? x : !x);
+          // Any initial state's step activity (a Grafcet has one per initial valuation), as the
+          // explicit check: one pattern per distinct activity.
+          target = Bdd::constant(false);
+          for (Bdd rest = sys_.initial(); !rest.is_false();) {
+            const auto init = sys_.pick(rest);
+            Bdd pattern = Bdd::constant(true);
+            for (const auto& s : steps) {
+              const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
+              pattern = pattern & (ts_.observe(init, s.observable) ? x : !x);
+            }
+            target = target | pattern;
+            rest = rest & !pattern;
           }
         }
         Bdd back = target;
