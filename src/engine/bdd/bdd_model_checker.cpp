@@ -604,22 +604,32 @@ class BddModelChecker final : public ModelChecker {
   }
 
   logic::CheckReport check(const logic::CheckTask& task) const override {
-    const auto symbolic = make_symbolic_system(*task.system);
-    SymbolicSystem& sys = *symbolic;
-    Run run(task, sys);
     try {
+      SymbolicOptions options;
+      options.timeout_seconds = task.limits.timeout_seconds;
+      const auto symbolic = make_symbolic_system(*task.system, options);
+      Run run(task, *symbolic);
       return run.check();
     } catch (const bdd::BddError& e) {
       logic::CheckReport report;
       report.engine = "bdd";
       report.complete = false;
-      report.limit = "memory";
+      report.limit = std::string(e.what()).find("time limit") != std::string::npos ? "time" : "memory";
       for (const auto& p : task.properties) {
         PropertyResult r;
         r.name = p.name;
         r.formula = logic::to_string(p.formula);
         r.verdict = Verdict::Unknown;
-        r.message = std::string("the BDD package ran out of resources: ") + e.what();
+        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
+        report.results.push_back(std::move(r));
+      }
+      // Checks too: a check left without a result must not read as holding.
+      for (auto c : task.checks) {
+        PropertyResult r;
+        r.name = std::string(logic::to_string(c));
+        r.check = r.name;
+        r.verdict = Verdict::Unknown;
+        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
         report.results.push_back(std::move(r));
       }
       return report;

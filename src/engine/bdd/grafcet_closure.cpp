@@ -12,8 +12,15 @@ using semantics::AigLit;
 using Bdd = bdd::Bdd;
 
 GrafcetClosure::GrafcetClosure(const semantics::GrafcetCircuit& circuit, GrafcetVariables vars,
-                               const std::function<Bdd(AigLit)>& state_bdd, int cluster_nodes)
+                               const std::function<Bdd(AigLit)>& state_bdd, int cluster_nodes,
+                               double timeout_seconds)
     : circuit_(circuit), v_(std::move(vars)), num_state_(circuit.num_state_latches) {
+  if (timeout_seconds > 0) {
+    has_deadline_ = true;
+    deadline_ = std::chrono::steady_clock::now() +
+                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                    std::chrono::duration<double>(timeout_seconds));
+  }
   const Aig& aig = circuit_.aig;
   c_to_n_ = std::make_unique<bdd::VarMap>();
   n_to_c_ = std::make_unique<bdd::VarMap>();
@@ -98,6 +105,7 @@ GrafcetClosure::GrafcetClosure(const semantics::GrafcetCircuit& circuit, Grafcet
       reads.push_back(v_.n[circuit_.prev_of[p]]);
       defined = v_.qp[p];
     }
+    check_time();
     const Bdd merged = cur.bdd & conjunct;
     if (!cur.defines.empty() && merged.node_count() > cluster_nodes) {
       flush();
@@ -131,7 +139,13 @@ GrafcetClosure::GrafcetClosure(const semantics::GrafcetCircuit& circuit, Grafcet
   fires_set_.assign(cleared_.size(), false);
 }
 
+void GrafcetClosure::check_time() const {
+  if (has_deadline_ && std::chrono::steady_clock::now() > deadline_)
+    throw bdd::BddError("time limit reached while closing the Grafcet transient evolutions");
+}
+
 Bdd GrafcetClosure::micro_image(const Bdd& configs) const {
+  check_time();
   Bdd acc = configs.exist(quantify_first_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
     acc = acc.and_exist(clusters_[k], quantify_after_[k]);
@@ -139,6 +153,7 @@ Bdd GrafcetClosure::micro_image(const Bdd& configs) const {
 }
 
 Bdd GrafcetClosure::micro_preimage(const Bdd& configs) const {
+  check_time();
   Bdd acc = configs.replace(*n_to_m_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
     acc = acc.and_exist(clusters_[k], pre_quantify_after_[k]);
@@ -167,7 +182,10 @@ Bdd GrafcetClosure::backward(const Bdd& targets, const Bdd& within) const {
 
 Bdd GrafcetClosure::starts(const Bdd& sources, bool keep_all_inputs) const {
   Bdd acc = sources & valid_ & event_;
-  for (std::size_t l = 0; l < num_state_; ++l) acc = acc & Bdd::variable(v_.n[l]).iff(start_[l]);
+  for (std::size_t l = 0; l < num_state_; ++l) {
+    check_time();
+    acc = acc & Bdd::variable(v_.n[l]).iff(start_[l]);
+  }
   for (std::size_t p = 0; p < v_.q.size(); ++p)
     acc = acc & Bdd::variable(v_.q[p]).iff(Bdd::variable(v_.c[circuit_.prev_of[p]]));
   return keep_all_inputs ? acc : acc.exist(dropped_inputs_cube_);

@@ -15,6 +15,7 @@
 // The relation R(C, N) relates C to the emitted situation of every end (continuous outputs
 // computed), without stutter (the explicit graph omits edges to the source itself).
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -36,7 +37,8 @@ class GrafcetClosure {
   /// `state_bdd(lit)`: the BDD of a circuit literal with state latches as C, prev latches as Q,
   /// inputs as I.
   GrafcetClosure(const semantics::GrafcetCircuit& circuit, GrafcetVariables vars,
-                 const std::function<Bdd(semantics::AigLit)>& state_bdd, int cluster_nodes);
+                 const std::function<Bdd(semantics::AigLit)>& state_bdd, int cluster_nodes,
+                 double timeout_seconds = 0);
 
   /// Initial stable situations (over C), and whether some initial valuation is anomalous.
   Bdd initial();
@@ -59,6 +61,7 @@ class GrafcetClosure {
   std::vector<bool> inputs_between(const Bdd& from, const Bdd& to);
 
  private:
+  void check_time() const;  ///< throws bdd::BddError past the deadline
   Bdd micro_image(const Bdd& configs) const;
   Bdd micro_preimage(const Bdd& configs) const;
   Bdd forward(const Bdd& start) const;  ///< every configuration reached from `start`
@@ -73,6 +76,8 @@ class GrafcetClosure {
 
   const semantics::GrafcetCircuit& circuit_;
   GrafcetVariables v_;
+  bool has_deadline_ = false;
+  std::chrono::steady_clock::time_point deadline_;
   std::size_t num_state_ = 0;
   std::vector<Bdd> start_;    ///< per state latch, over C and I
   std::vector<Bdd> initial_;  ///< per state latch, over I

@@ -199,7 +199,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   next_cube_ = Bdd::cube(v.n);
   input_cube_ = Bdd::cube(v.in);
   grafcet_ = std::make_unique<GrafcetClosure>(
-      gc, std::move(v), [this](AigLit lit) { return node_bdd(lit); }, options.cluster_nodes);
+      gc, std::move(v), [this](AigLit lit) { return node_bdd(lit); }, options.cluster_nodes,
+      options.timeout_seconds);
   initial_ = grafcet_->initial();
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);

@@ -19,6 +19,9 @@ struct SymbolicOptions {
   int nodes = 4'000'000;   ///< initial node table (BuDDy grows it on demand)
   int cache = 1'000'000;
   int cluster_nodes = 2'000;  ///< conjuncts are clustered up to about this many nodes
+  /// Grafcet: the closure stops with bdd::BddError ("time limit ...") after this many seconds
+  /// (0: no limit), so that a check with --timeout ends with unknown.
+  double timeout_seconds = 0;
 };
 
 class GrafcetClosure;
