@@ -607,10 +607,16 @@ class BddModelChecker final : public ModelChecker {
     try {
       SymbolicOptions options;
       options.timeout_seconds = task.limits.timeout_seconds;
+      // A single BDD operation that blows up is stopped at a garbage collection; a little
+      // later than the exploration's own limit, which reports more.
+      bdd::set_time_limit(task.limits.timeout_seconds > 0 ? task.limits.timeout_seconds * 1.5 : 0);
       const auto symbolic = make_symbolic_system(*task.system, options);
       Run run(task, *symbolic);
-      return run.check();
+      auto report = run.check();
+      bdd::set_time_limit(0);
+      return report;
     } catch (const bdd::BddError& e) {
+      bdd::set_time_limit(0);
       logic::CheckReport report;
       report.engine = "bdd";
       report.complete = false;
