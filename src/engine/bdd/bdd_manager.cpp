@@ -3,6 +3,7 @@
 #include <bdd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
 // bdd.h maps these names to its C++ layer; the facade uses the C API with explicit reference
@@ -19,7 +20,16 @@ void throw_on_error(int code) {
   throw BddError(std::string("BDD package error: ") + bdd_errstring(code));
 }
 
-void quiet_gbc(int, bddGbcStat*) {}
+bool g_has_deadline = false;
+std::chrono::steady_clock::time_point g_deadline;
+
+void quiet_gbc(int pre, bddGbcStat*) {
+  // Before the collection starts (the node table is still consistent).
+  if (pre && g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
+    g_has_deadline = false;
+    throw BddError("time limit reached in the BDD package");
+  }
+}
 
 // Sizing chosen by configure_manager() before the manager starts; 0 = the defaults.
 int g_nodes = 0, g_cache = 0, g_ratio = 0;
@@ -31,6 +41,14 @@ void configure_manager(int nodes, int cache, int cache_ratio) {
   g_nodes = nodes;
   g_cache = cache;
   g_ratio = cache_ratio;
+}
+
+void set_time_limit(double seconds) {
+  g_has_deadline = seconds > 0;
+  if (g_has_deadline)
+    g_deadline = std::chrono::steady_clock::now() +
+                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                     std::chrono::duration<double>(seconds));
 }
 
 int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }

@@ -24,6 +24,11 @@ void ensure_variables(int count);
 /// default sizing and runs in 3 s with (4000000, 1000000) and cache ratio 4.
 void configure_manager(int nodes, int cache, int cache_ratio = 4);
 
+/// Makes the manager throw BddError("time limit ...") at its next garbage collection once
+/// `seconds` have passed (0: no limit): a single operation that blows up is otherwise not
+/// interruptible. Garbage collections happen whenever the node table fills.
+void set_time_limit(double seconds);
+
 /// Nodes currently allocated in the manager's table.
 int allocated_nodes();
 

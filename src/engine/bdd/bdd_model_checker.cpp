@@ -9,6 +9,7 @@
 #include "engine/bdd/symbolic_system.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "model/names.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
 namespace sfcv::engine {
@@ -188,6 +189,7 @@ class Run {
     }
     report.states = static_cast<std::uint64_t>(sys_.count(reached_));
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
+    sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
   }
 
   std::string limit_message(const logic::CheckReport& report) const {
@@ -211,7 +213,6 @@ class Run {
   logic::Trace to_trace(const std::vector<std::vector<semantics::StateWord>>& states) {
     logic::Trace t;
     const auto& circuit = sys_.circuit();
-    const auto& aig = circuit.aig;
     std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
                                                           ts_.inputs(), {});
     t.steps.push_back({inputs, states.front(), {}});
@@ -219,18 +220,7 @@ class Run {
       const auto bits = sys_.inputs_between(states[k - 1], states[k]);
       if (bits.empty()) break;  // cannot happen: consecutive ring states are related
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
-      std::vector<bool> latches(aig.latches().size());
-      const auto& layout = ts_.layout();
-      for (std::uint32_t f = 0; f < circuit.field_latches.size(); ++f) {
-        const auto v = static_cast<std::uint64_t>(layout.get(states[k - 1], f) - layout.fields()[f].lo);
-        for (std::size_t b = 0; b < circuit.field_latches[f].size(); ++b)
-          latches[circuit.field_latches[f][b]] = ((v >> b) & 1U) != 0;
-      }
-      const auto nodes = aig.evaluate(bits, latches);
-      std::vector<std::uint32_t> fired;
-      for (std::uint32_t tr = 0; tr < circuit.fired.size(); ++tr)
-        if (semantics::Aig::value_of(nodes, circuit.fired[tr])) fired.push_back(tr);
-      t.steps.push_back({inputs, states[k], fired});
+      t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
     return t;
   }
@@ -280,6 +270,89 @@ class Run {
     return r;
   }
 
+  /// Grafcet steps never active in a reached stable situation but entered by a transition that
+  /// fires (crossed during transient evolutions), as the explicit checks treat them: index into
+  /// `steps` -> the reached situations with an evolution entering the step.
+  std::map<std::size_t, Bdd> transient_steps(const std::vector<logic::StepRef>& steps) {
+    std::map<std::size_t, Bdd> out;
+    if (ts_.kind() != semantics::SemanticsKind::Grafcet || !task_.project) return out;
+    std::vector<const model::Transition*> matched;
+    for (const auto& info : ts_.transitions()) {
+      const model::Transition* hit = nullptr;
+      for (const auto& pou : task_.project->pous) {
+        if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
+        for (const auto& chart : pou.charts) {
+          if (!info.chart.empty() && !model::iequals(chart.name, info.chart)) continue;
+          for (const auto& t : chart.transitions)
+            if (info.where.known() ? t.where.str() == info.where.str()
+                                   : (!t.name.empty() && t.name == info.name))
+              hit = &t;
+        }
+      }
+      if (!hit) return out;
+      matched.push_back(hit);
+    }
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (!(reached_ & sys_.atom(*logic::observable_atom(ts_, steps[i].observable))).is_false())
+        continue;
+      Bdd entry = Bdd::constant(false);
+      for (std::uint32_t t = 0; t < matched.size(); ++t) {
+        if (!model::iequals(ts_.transitions()[t].chart, steps[i].chart)) continue;
+        bool enters = false;
+        for (const auto& d : matched[t]->targets) enters = enters || model::iequals(d, steps[i].step);
+        if (enters) entry = entry | (reached_ & sys_.fires(t));
+      }
+      if (!entry.is_false()) out.emplace(i, entry);
+    }
+    return out;
+  }
+
+  /// Re-entry of a transient step: from every reached situation an evolution entering it stays
+  /// reachable.
+  void transient_reentry(PropertyResult& r, const logic::StepRef& step, const Bdd& entry,
+                         const std::string& what) {
+    Bdd back = entry;
+    for (;;) {
+      const Bdd next = entry | sys_.preimage(back);
+      if (next == back) break;
+      back = next;
+    }
+    const Bdd bad = reached_ & !back;
+    if (bad.is_false()) return;
+    r.findings.push_back("step " + logic::describe_step(step) +
+                         " (crossed only during transient evolutions)" + what);
+    if (!r.trace) {
+      r.trace = path_to(bad);
+      r.trace->note = "from the last situation " + logic::describe_step(step) +
+                      " can never be crossed again";
+    }
+  }
+
+  /// Grafcet anomalies (docs/semantics.md 2.11): events whose transient evolutions never
+  /// stabilise or raise a range error, from reached situations or at the start.
+  void grafcet_instability(PropertyResult& r, const logic::CheckReport& report) {
+    if (sys_.initial_unstable())
+      r.findings.push_back("instability: under some initial input valuation the transient "
+                           "evolutions never reach a stable situation");
+    if (sys_.initial_range_error())
+      r.findings.push_back("range error: under some initial input valuation an evolution raises "
+                           "a range error or a forcing conflict");
+    const Bdd unstable = reached_ & sys_.unstable_states();
+    if (!unstable.is_false()) {
+      r.findings.push_back("instability: from " + ts_.describe(sys_.pick(unstable)) +
+                           " an input event starts transient evolutions that never reach a "
+                           "stable situation");
+      r.trace = path_to(unstable);
+    }
+    const Bdd err = reached_ & sys_.range_error_states();
+    if (!err.is_false()) {
+      r.findings.push_back("range error: from " + ts_.describe(sys_.pick(err)) +
+                           " an input event raises a range error or a forcing conflict");
+      if (!r.trace) r.trace = path_to(err);
+    }
+    finish(r, report, "every evolution reaches a stable situation");
+  }
+
   void finish(PropertyResult& r, const logic::CheckReport& report, const std::string& ok) {
     if (!r.findings.empty()) {
       r.verdict = Verdict::Violated;
@@ -305,8 +378,11 @@ class Run {
           break;
         }
         std::size_t missing = 0;
-        for (const auto& s : steps)
-          if ((reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
+        const auto transient = report.complete ? transient_steps(steps) : std::map<std::size_t, Bdd>{};
+        for (std::size_t i = 0; i < steps.size(); ++i)
+          if (const auto& s = steps[i];
+              !transient.count(i) &&
+              (reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
             ++missing;
             if (report.complete) r.findings.push_back("step " + logic::describe_step(s) + " is never active");
           }
@@ -316,7 +392,9 @@ class Run {
                       " steps not reached before the limit; " + limit_message(report);
           break;
         }
-        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable");
+        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable" +
+                              (transient.empty() ? "" : " (" + std::to_string(transient.size()) +
+                                                            " only during transient evolutions)"));
         break;
       }
       case StandardCheck::DeadTransitions: {
@@ -381,10 +459,18 @@ class Run {
         if (steps.empty()) {
           target = sys_.initial();
         } else {
-          const auto init = sys_.pick(sys_.initial());
-          for (const auto& s : steps) {
-            const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
-            target = target & (ts_.observe(init, s.observable) ? x : !x);
+          // Any initial state's step activity (a Grafcet has one per initial valuation), as the
+          // explicit check: one pattern per distinct activity.
+          target = Bdd::constant(false);
+          for (Bdd rest = sys_.initial(); !rest.is_false();) {
+            const auto init = sys_.pick(rest);
+            Bdd pattern = Bdd::constant(true);
+            for (const auto& s : steps) {
+              const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
+              pattern = pattern & (ts_.observe(init, s.observable) ? x : !x);
+            }
+            target = target | pattern;
+            rest = rest & !pattern;
           }
         }
         Bdd back = target;
@@ -416,9 +502,20 @@ class Run {
           break;
         }
         std::size_t considered = 0;
-        for (const auto& step : steps) {
+        const auto transient = transient_steps(steps);
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+          const auto& step = steps[i];
+          if (c == StandardCheck::Reentry && !step.on_loop && task_.project) continue;
+          if (auto it = transient.find(i); it != transient.end()) {
+            ++considered;
+            transient_reentry(r, step, it->second,
+                              c == StandardCheck::Reentry
+                                  ? ": a reachable situation exists from which it can never be "
+                                    "crossed again"
+                                  : ", once crossed, is never crossed again");
+            continue;
+          }
           if (c == StandardCheck::Reentry) {
-            if (!step.on_loop && task_.project) continue;
             ++considered;
             if (!all_initial(ctl.sat(logic::reentry_formula(ts_, step.observable))))
               r.findings.push_back("step " + logic::describe_step(step) +
@@ -454,6 +551,10 @@ class Run {
       case StandardCheck::Instability: {
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         const Bdd err = reached_ & sys_.range_error_states();
+        if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
+          grafcet_instability(r, report);
+          break;
+        }
         if (!err.is_false()) {
           r.findings.push_back("a range error (integer overflow, division by zero or a value "
                                "out of its type) can occur in " + ts_.describe(sys_.pick(err)));
@@ -485,13 +586,15 @@ class BddModelChecker final : public ModelChecker {
   std::string_view name() const override { return "bdd"; }
 
   bool can_handle(const logic::CheckTask& task, std::string* why) const override {
-    if (!task.system || task.system->kind() != semantics::SemanticsKind::Iec61131) {
-      if (why) *why = "the bdd engine encodes the IEC 61131-3 scan cycle only; Grafcet charts "
-                      "are checked by the explicit engine";
+    if (!task.system) {
+      if (why) *why = "no system to check";
       return false;
     }
     try {
-      semantics::build_iec61131_circuit(*task.system);
+      if (task.system->kind() == semantics::SemanticsKind::Grafcet)
+        semantics::build_grafcet_circuit(*task.system);
+      else
+        semantics::build_iec61131_circuit(*task.system);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = std::string("the bdd engine cannot encode ") + e.what();
       return false;
@@ -501,21 +604,38 @@ class BddModelChecker final : public ModelChecker {
   }
 
   logic::CheckReport check(const logic::CheckTask& task) const override {
-    SymbolicSystem sys(*task.system, semantics::build_iec61131_circuit(*task.system));
-    Run run(task, sys);
     try {
-      return run.check();
+      SymbolicOptions options;
+      options.timeout_seconds = task.limits.timeout_seconds;
+      // A single BDD operation that blows up is stopped at a garbage collection; a little
+      // later than the exploration's own limit, which reports more.
+      bdd::set_time_limit(task.limits.timeout_seconds > 0 ? task.limits.timeout_seconds * 1.5 : 0);
+      const auto symbolic = make_symbolic_system(*task.system, options);
+      Run run(task, *symbolic);
+      auto report = run.check();
+      bdd::set_time_limit(0);
+      return report;
     } catch (const bdd::BddError& e) {
+      bdd::set_time_limit(0);
       logic::CheckReport report;
       report.engine = "bdd";
       report.complete = false;
-      report.limit = "memory";
+      report.limit = std::string(e.what()).find("time limit") != std::string::npos ? "time" : "memory";
       for (const auto& p : task.properties) {
         PropertyResult r;
         r.name = p.name;
         r.formula = logic::to_string(p.formula);
         r.verdict = Verdict::Unknown;
-        r.message = std::string("the BDD package ran out of resources: ") + e.what();
+        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
+        report.results.push_back(std::move(r));
+      }
+      // Checks too: a check left without a result must not read as holding.
+      for (auto c : task.checks) {
+        PropertyResult r;
+        r.name = std::string(logic::to_string(c));
+        r.check = r.name;
+        r.verdict = Verdict::Unknown;
+        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
         report.results.push_back(std::move(r));
       }
       return report;

@@ -1,5 +1,8 @@
 #include "engine/bdd/symbolic_system.hpp"
 
+#include "engine/bdd/grafcet_closure.hpp"
+#include "engine/bdd/variable_order.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -11,32 +14,6 @@ using semantics::Aig;
 using semantics::AigLit;
 using Bdd = bdd::Bdd;
 
-namespace {
-
-/// The circuit inputs and latches an Aig literal depends on (structural support).
-void support(const Aig& aig, AigLit root, std::vector<bool>& seen, std::vector<std::uint32_t>& inputs,
-             std::vector<std::uint32_t>& latches) {
-  std::vector<std::uint32_t> stack{Aig::node_of(root)};
-  while (!stack.empty()) {
-    const auto n = stack.back();
-    stack.pop_back();
-    if (seen[n]) continue;
-    seen[n] = true;
-    const auto& node = aig.nodes()[n];
-    switch (node.kind) {
-      case Aig::NodeKind::Input: inputs.push_back(node.index); break;
-      case Aig::NodeKind::Latch: latches.push_back(node.index); break;
-      case Aig::NodeKind::And:
-        stack.push_back(Aig::node_of(node.left));
-        stack.push_back(Aig::node_of(node.right));
-        break;
-      case Aig::NodeKind::Constant: break;
-    }
-  }
-}
-
-}  // namespace
-
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(std::move(circuit)) {
@@ -44,87 +21,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   bdd::ensure_manager();
   bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
-  // Static order by the FORCE heuristic: latches (their current and next copies adjacent) and
-  // inputs are units; each next-state function ties its latch to the latches and inputs it
-  // reads; a few rounds move every unit to the mean centre of gravity of its ties. Related bits
-  // end up adjacent, which keeps the relation and the reachable sets small (with the layout's
-  // own order, a chart's outputs sit far from its steps: exponential in independent branches).
   const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
-  const std::size_t units = num_latches + num_inputs;  // latch l = unit l, input i = L + i
-  std::vector<std::vector<std::uint32_t>> ties;
-  {
-    std::vector<bool> seen(aig.nodes().size());
-    for (std::size_t l = 0; l < num_latches; ++l) {
-      std::fill(seen.begin(), seen.end(), false);
-      std::vector<std::uint32_t> ins, lats;
-      support(aig, aig.latches()[l].next, seen, ins, lats);
-      std::vector<std::uint32_t> tie{static_cast<std::uint32_t>(l)};
-      for (auto x : lats)
-        if (x != l) tie.push_back(x);
-      for (auto i : ins) tie.push_back(static_cast<std::uint32_t>(num_latches + i));
-      if (tie.size() > 1) ties.push_back(std::move(tie));
-    }
-  }
-  std::vector<double> position(units);
-  {
-    // Start: the layout order with each input just before the first latch that reads it.
-    std::vector<bool> placed(units, false);
-    double at = 0;
-    for (const auto& tie : ties) {
-      for (std::size_t k = 1; k < tie.size(); ++k)
-        if (tie[k] >= num_latches && !placed[tie[k]]) {
-          position[tie[k]] = at++;
-          placed[tie[k]] = true;
-        }
-      if (!placed[tie[0]]) {
-        position[tie[0]] = at++;
-        placed[tie[0]] = true;
-      }
-    }
-    for (std::size_t u = 0; u < units; ++u)
-      if (!placed[u]) position[u] = at++;
-  }
-  auto span = [&] {
-    double total = 0;
-    for (const auto& tie : ties) {
-      double lo = position[tie[0]], hi = lo;
-      for (auto u : tie) {
-        lo = std::min(lo, position[u]);
-        hi = std::max(hi, position[u]);
-      }
-      total += hi - lo;
-    }
-    return total;
-  };
-  std::vector<std::uint32_t> order(units);
-  for (std::size_t u = 0; u < units; ++u) order[u] = static_cast<std::uint32_t>(u);
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return position[a] < position[b]; });
-  double best_span = span();
-  std::vector<std::uint32_t> best_order = order;
-  for (int round = 0; round < 50 && !ties.empty(); ++round) {
-    std::vector<double> sum(units, 0), count(units, 0);
-    for (const auto& tie : ties) {
-      double cog = 0;
-      for (auto u : tie) cog += position[u];
-      cog /= static_cast<double>(tie.size());
-      for (auto u : tie) {
-        sum[u] += cog;
-        count[u] += 1;
-      }
-    }
-    for (std::size_t u = 0; u < units; ++u)
-      if (count[u] > 0) position[u] = sum[u] / count[u];
-    std::stable_sort(order.begin(), order.end(),
-                     [&](auto a, auto b) { return position[a] < position[b]; });
-    for (std::size_t k = 0; k < units; ++k) position[order[k]] = static_cast<double>(k);
-    const double now = span();
-    if (now < best_span) {
-      best_span = now;
-      best_order = order;
-    } else if (round > 5) {
-      break;
-    }
-  }
+  const std::vector<std::uint32_t> best_order = force_order(aig);
   input_var_.assign(num_inputs, -1);
   current_var_.assign(num_latches, -1);
   next_var_.assign(num_latches, -1);
@@ -169,7 +67,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     auto add_support = [&](AigLit lit, std::vector<bool>& into) {
       std::fill(seen.begin(), seen.end(), false);
       std::vector<std::uint32_t> ins, lats;
-      support(aig, lit, seen, ins, lats);
+      aig_support(aig, lit, seen, ins, lats);
       for (auto i : ins) into[static_cast<std::size_t>(input_var_[i])] = true;
       for (auto l : lats) into[static_cast<std::size_t>(current_var_[l])] = true;
     };
@@ -240,6 +138,146 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   fires_set_.assign(circuit_.fired.size(), false);
 }
 
+SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
+                               semantics::GrafcetCircuit circuit, const SymbolicOptions& options)
+    : ts_(ts), circuit_(circuit) {
+  bdd::configure_manager(options.nodes, options.cache, 4);
+  bdd::ensure_manager();
+  bdd::reset_operation_caches();
+  grafcet_circuit_ = std::make_unique<semantics::GrafcetCircuit>(std::move(circuit));
+  const semantics::GrafcetCircuit& gc = *grafcet_circuit_;
+  const Aig& aig = circuit_.aig;
+  const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
+  const std::size_t num_state = gc.num_state_latches;
+  // The FORCE order also ties each state latch to what its first value reads (an input memory
+  // to its input, a delay phase to its elapse).
+  std::vector<std::vector<std::uint32_t>> ties;
+  {
+    std::vector<bool> seen(aig.nodes().size());
+    for (std::size_t l = 0; l < num_state; ++l) {
+      std::fill(seen.begin(), seen.end(), false);
+      std::vector<std::uint32_t> ins, lats;
+      aig_support(aig, gc.start_next[l], seen, ins, lats);
+      std::vector<std::uint32_t> tie{static_cast<std::uint32_t>(l)};
+      for (auto x : lats)
+        if (x != l) tie.push_back(x);
+      for (auto i : ins) tie.push_back(static_cast<std::uint32_t>(num_latches + i));
+      if (tie.size() > 1) ties.push_back(std::move(tie));
+    }
+  }
+  const std::vector<std::uint32_t> order = force_order(aig, ties);
+  GrafcetVariables v;
+  v.c.assign(num_state, -1);
+  v.n.assign(num_state, -1);
+  v.m.assign(num_state, -1);
+  v.q.assign(num_latches - num_state, -1);
+  v.qp.assign(num_latches - num_state, -1);
+  v.in.assign(num_inputs, -1);
+  int var = 0;
+  for (auto u : order) {
+    if (u < num_state) {
+      v.c[u] = var++;
+      v.n[u] = var++;
+      v.m[u] = var++;
+    } else if (u < num_latches) {
+      v.q[u - num_state] = var++;
+      v.qp[u - num_state] = var++;
+    } else {
+      v.in[u - num_latches] = var++;
+    }
+  }
+  bdd::ensure_variables(var);
+  input_var_ = v.in;
+  current_var_ = v.c;
+  next_var_ = v.n;
+  current_var_.insert(current_var_.end(), v.q.begin(), v.q.end());
+  next_var_.insert(next_var_.end(), v.qp.begin(), v.qp.end());
+  current_vars_ = v.c;
+  memo_.resize(aig.nodes().size());
+  memo_set_.assign(aig.nodes().size(), false);
+  current_cube_ = Bdd::cube(v.c);
+  next_cube_ = Bdd::cube(v.n);
+  input_cube_ = Bdd::cube(v.in);
+  grafcet_ = std::make_unique<GrafcetClosure>(
+      gc, std::move(v), [this](AigLit lit) { return node_bdd(lit); }, options.cluster_nodes,
+      options.timeout_seconds);
+  initial_ = grafcet_->initial();
+  fires_.resize(circuit_.fired.size());
+  fires_set_.assign(circuit_.fired.size(), false);
+}
+
+SymbolicSystem::~SymbolicSystem() = default;
+
+const Bdd& SymbolicSystem::has_successor() const {
+  if (!grafcet_) return has_successor_;
+  grafcet_has_successor_ = grafcet_->has_successor();
+  return grafcet_has_successor_;
+}
+
+const Bdd& SymbolicSystem::range_error_states() const {
+  if (!grafcet_) return range_error_states_;
+  grafcet_range_error_ = grafcet_->range_error_states();
+  return grafcet_range_error_;
+}
+
+Bdd SymbolicSystem::unstable_states() const {
+  return grafcet_ ? grafcet_->unstable_states() : Bdd::constant(false);
+}
+
+bool SymbolicSystem::initial_unstable() const {
+  return grafcet_ && grafcet_->initial_anomaly() && !grafcet_->initial_range_error();
+}
+
+void SymbolicSystem::restrict_sources(const Bdd& states) {
+  if (grafcet_) grafcet_->set_sources(states);
+}
+
+bool SymbolicSystem::initial_range_error() const {
+  return grafcet_ && grafcet_->initial_range_error();
+}
+
+std::vector<std::uint32_t> SymbolicSystem::fired_between(semantics::StateView from,
+                                                         const std::vector<bool>& inputs) const {
+  const Aig& aig = circuit_.aig;
+  const auto& layout = ts_.layout();
+  std::vector<bool> latches(aig.latches().size());
+  for (std::uint32_t f = 0; f < circuit_.field_latches.size(); ++f) {
+    const auto v = static_cast<std::uint64_t>(layout.get(from, f) - layout.fields()[f].lo);
+    for (std::size_t b = 0; b < circuit_.field_latches[f].size(); ++b)
+      latches[circuit_.field_latches[f][b]] = ((v >> b) & 1U) != 0;
+  }
+  std::vector<bool> on(circuit_.fired.size(), false);
+  auto collect = [&](const std::vector<bool>& nodes) {
+    for (std::size_t t = 0; t < circuit_.fired.size(); ++t)
+      if (Aig::value_of(nodes, circuit_.fired[t])) on[t] = true;
+  };
+  if (!grafcet_) {
+    collect(aig.evaluate(inputs, latches));
+  } else {
+    // Run the evolutions concretely: the first situation, then micro-steps until stable.
+    const auto& gc = *grafcet_circuit_;
+    const std::size_t n = gc.num_state_latches;
+    std::vector<bool> nodes = aig.evaluate(inputs, latches);
+    std::vector<bool> x(latches.size());
+    for (std::size_t l = 0; l < n; ++l) x[l] = Aig::value_of(nodes, gc.start_next[l]);
+    for (std::size_t p = 0; p < gc.prev_of.size(); ++p) x[n + p] = latches[gc.prev_of[p]];
+    for (std::size_t k = 0; k <= gc.max_transient_steps; ++k) {
+      nodes = aig.evaluate(inputs, x);
+      if (Aig::value_of(nodes, gc.range_error)) break;
+      collect(nodes);
+      if (Aig::value_of(nodes, gc.stable)) break;
+      std::vector<bool> y(x.size());
+      for (std::size_t l = 0; l < n; ++l) y[l] = Aig::value_of(nodes, aig.latches()[l].next);
+      for (std::size_t p = 0; p < gc.prev_of.size(); ++p) y[n + p] = x[gc.prev_of[p]];
+      x = std::move(y);
+    }
+  }
+  std::vector<std::uint32_t> fired;
+  for (std::uint32_t t = 0; t < on.size(); ++t)
+    if (on[t]) fired.push_back(t);
+  return fired;
+}
+
 Bdd SymbolicSystem::node_bdd(AigLit lit) {
   const Aig& aig = circuit_.aig;
   const auto root = Aig::node_of(lit);
@@ -278,6 +316,7 @@ Bdd SymbolicSystem::node_bdd(AigLit lit) {
 }
 
 Bdd SymbolicSystem::image(const Bdd& states) const {
+  if (grafcet_) return grafcet_->image(states);
   Bdd acc = states.exist(quantify_first_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
     acc = acc.and_exist(clusters_[k], quantify_after_[k]);
@@ -285,6 +324,7 @@ Bdd SymbolicSystem::image(const Bdd& states) const {
 }
 
 Bdd SymbolicSystem::preimage(const Bdd& states) const {
+  if (grafcet_) return grafcet_->preimage(states);
   // exists x', i. T(x, i, x') & S(x'), conjoining the clusters in order; ok_ (inputs allowed,
   // no range error) is part of the first cluster.
   Bdd acc = states.replace(*current_to_next_).exist(pre_quantify_first_);
@@ -295,6 +335,7 @@ Bdd SymbolicSystem::preimage(const Bdd& states) const {
 
 std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
                                                  semantics::StateView to) const {
+  if (grafcet_) return grafcet_->inputs_between(singleton(from), singleton(to));
   // T(from, i, to) over the inputs: every current and next variable is fixed, so each cluster
   // only shrinks the set of inputs.
   Bdd acc = singleton(from) & singleton(to).replace(*current_to_next_);
@@ -364,6 +405,7 @@ Bdd SymbolicSystem::atom(const logic::Formula& f) {
 }
 
 Bdd SymbolicSystem::fires(std::uint32_t t) {
+  if (grafcet_) return grafcet_->fires(t);
   if (!fires_set_[t]) {
     fires_[t] = (node_bdd(circuit_.fired[t]) & ok_).exist(input_cube_);
     fires_set_[t] = true;
@@ -402,6 +444,16 @@ Bdd SymbolicSystem::singleton(semantics::StateView state) const {
     }
   }
   return r;
+}
+
+std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::TransitionSystem& ts,
+                                                     const SymbolicOptions& options) {
+  // Before any Bdd exists: the members of SymbolicSystem would start the manager with the
+  // default (small) sizing.
+  bdd::configure_manager(options.nodes, options.cache, 4);
+  if (ts.kind() == semantics::SemanticsKind::Grafcet)
+    return std::make_unique<SymbolicSystem>(ts, semantics::build_grafcet_circuit(ts), options);
+  return std::make_unique<SymbolicSystem>(ts, semantics::build_iec61131_circuit(ts), options);
 }
 
 }  // namespace sfcv::engine

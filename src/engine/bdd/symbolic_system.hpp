@@ -10,6 +10,7 @@
 
 #include "engine/bdd/bdd_manager.hpp"
 #include "logic/formula.hpp"
+#include "semantics/grafcet_circuit.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
 namespace sfcv::engine {
@@ -18,7 +19,12 @@ struct SymbolicOptions {
   int nodes = 4'000'000;   ///< initial node table (BuDDy grows it on demand)
   int cache = 1'000'000;
   int cluster_nodes = 2'000;  ///< conjuncts are clustered up to about this many nodes
+  /// Grafcet: the closure stops with bdd::BddError ("time limit ...") after this many seconds
+  /// (0: no limit), so that a check with --timeout ends with unknown.
+  double timeout_seconds = 0;
 };
+
+class GrafcetClosure;
 
 class SymbolicSystem {
  public:
@@ -26,15 +32,34 @@ class SymbolicSystem {
 
   SymbolicSystem(const semantics::TransitionSystem& ts, semantics::TransitionCircuit circuit,
                  const SymbolicOptions& options = {});
+  /// Grafcet: the relation between stable situations, the closure of the transient evolutions
+  /// of `circuit` (grafcet_closure.hpp). Same interface; image, preimage, fires, has_successor
+  /// and inputs_between follow the explicit graph's edges (no stutter edges).
+  SymbolicSystem(const semantics::TransitionSystem& ts, semantics::GrafcetCircuit circuit,
+                 const SymbolicOptions& options = {});
+  ~SymbolicSystem();
+  SymbolicSystem(const SymbolicSystem&) = delete;
+  SymbolicSystem& operator=(const SymbolicSystem&) = delete;
 
   const semantics::TransitionSystem& system() const { return ts_; }
   const semantics::TransitionCircuit& circuit() const { return circuit_; }
 
   const Bdd& initial() const { return initial_; }
   /// States with at least one allowed input that raises no range error.
-  const Bdd& has_successor() const { return has_successor_; }
-  /// States (current variables) where some allowed input raises a range error.
-  const Bdd& range_error_states() const { return range_error_states_; }
+  const Bdd& has_successor() const;
+  /// States (current variables) where some allowed input raises a range error (Grafcet: an
+  /// event whose evolutions raise a range error or a forcing conflict).
+  const Bdd& range_error_states() const;
+  /// Grafcet: states with an event whose transient evolutions never stabilise (empty for
+  /// IEC 61131-3); initial_unstable(): some initial input valuation never stabilises, and
+  /// initial_range_error(): some raises a range error.
+  Bdd unstable_states() const;
+  bool initial_unstable() const;
+  bool initial_range_error() const;
+  /// Grafcet: the situations whose successors preimage, has_successor, fires and the anomaly
+  /// sets describe (the reached set); without it the system computes the reachable set itself.
+  /// Does nothing for IEC 61131-3, whose relation is exact everywhere.
+  void restrict_sources(const Bdd& states);
   Bdd image(const Bdd& states) const;
   Bdd preimage(const Bdd& states) const;
 
@@ -55,6 +80,10 @@ class SymbolicSystem {
   /// Circuit input values (one bool per circuit input) that lead from `from` to `to` in one
   /// cycle, allowed and without range error; empty when there are none.
   std::vector<bool> inputs_between(semantics::StateView from, semantics::StateView to) const;
+  /// The transitions fired from `from` under circuit input values `inputs` (Grafcet: along the
+  /// whole transient evolution), sorted.
+  std::vector<std::uint32_t> fired_between(semantics::StateView from,
+                                           const std::vector<bool>& inputs) const;
 
   std::size_t num_state_variables() const { return current_vars_.size(); }
 
@@ -83,6 +112,15 @@ class SymbolicSystem {
   Bdd pre_quantify_first_;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
+  // Grafcet mode.
+  std::unique_ptr<semantics::GrafcetCircuit> grafcet_circuit_;
+  std::unique_ptr<GrafcetClosure> grafcet_;
+  mutable Bdd grafcet_has_successor_, grafcet_range_error_;
 };
+
+/// The symbolic system of `ts` by its semantics (IEC 61131-3 scan cycle or Grafcet stable
+/// situations). Throws semantics::CircuitUnsupported for constructs the circuits cannot express.
+std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::TransitionSystem& ts,
+                                                     const SymbolicOptions& options = {});
 
 }  // namespace sfcv::engine

@@ -1,0 +1,244 @@
+#pragma once
+// Internal: the compiled Grafcet model and the GrafcetSystem class (make_grafcet_system returns
+// it). Shared with grafcet_circuit.cpp, which builds the micro-step circuit from the same model.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+#include "semantics/options.hpp"
+#include "semantics/state_layout.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::semantics::grafcet {
+
+using model::ExprKind;
+
+// ------------------------------------------------------------------------ compiled expressions
+
+enum class Op : std::uint8_t {
+  Const, Input, Step, Var, Delay,
+  Not, Neg, And, Or, Xor,
+  Add, Sub, Mul, Div, Mod,
+  Eq, Ne, Lt, Le, Gt, Ge,
+  Rise, Fall,
+};
+
+/// An expression whose names are resolved to inputs, steps, memory fields and delays.
+struct CExpr {
+  Op op = Op::Const;
+  std::int32_t ref = 0;
+  std::int64_t value = 0;
+  std::vector<CExpr> args;
+};
+
+/// Three-valued: unknown when it depends on an input the current partial valuation leaves free.
+struct Val {
+  bool known = true;
+  std::int64_t v = 0;
+};
+
+/// A partial input valuation: val[i] is 0/1 for Boolean and pseudo inputs, the region index for
+/// integer inputs.
+struct Partial {
+  std::vector<std::int64_t> val;
+  std::vector<char> known;
+};
+
+struct GStep {
+  std::string name;
+  int chart = -1;
+  model::StepKind kind = model::StepKind::Normal;
+  bool initial = false;
+  int field = -1;                 ///< -1 for a macro-step (derived activity)
+  int expansion = -1;             ///< macro-step: chart id
+  std::vector<int> enclosed;      ///< enclosing step: chart ids
+  int entry = -1, exit = -1;      ///< macro-step: steps of the expansion
+  std::vector<int> derived_from;  ///< macro-step: the fields whose OR is its activity
+};
+
+struct GChart {
+  std::string name;
+  std::string pou;
+  std::vector<int> steps;
+  bool top_level = true;  ///< neither enclosed nor an expansion
+};
+
+struct GTrans {
+  std::vector<int> need;  ///< fields that must be active (and are deactivated)
+  std::vector<int> act;   ///< fields activated
+  CExpr guard;
+  int chart = -1;
+};
+
+struct GStored {
+  int step = -1;
+  model::StoredWhen when = model::StoredWhen::Activation;
+  CExpr event;
+  int var = -1;  ///< index into vars_
+  CExpr value;
+};
+
+struct GForce {
+  int step = -1;
+  int chart = -1;
+  model::ForcingKind kind = model::ForcingKind::Situation;
+  std::vector<int> situation;  ///< step ids
+};
+
+struct GVar {
+  std::string name;
+  int field = -1;
+  model::Type type;
+  bool continuous = false;
+};
+
+struct GContinuous {
+  int step = -1;
+  int var = -1;
+  bool has_condition = false;
+  CExpr condition;
+};
+
+struct GInput {
+  std::string name;
+  model::Type type;
+  std::vector<std::int64_t> thresholds;  ///< integer: the region boundaries
+  std::vector<std::int64_t> region_lo;   ///< integer: first value of each region
+  bool edge = false;                     ///< read under an edge
+  int order = 0;                         ///< declaration order (undeclared: after, by first use)
+  bool pseudo = false;
+  int delay = -1;  ///< pseudo: the delay it elapses
+  int field = -1;  ///< InputMemory field, -1 when not stored
+
+  std::int64_t regions() const {
+    return type.kind == model::TypeKind::Int ? static_cast<std::int64_t>(region_lo.size()) : 2;
+  }
+  std::int64_t region_hi(std::int64_t r) const {
+    return r + 1 < regions() ? region_lo[static_cast<std::size_t>(r + 1)] - 1 : type.hi;
+  }
+};
+
+struct GDelay {
+  CExpr expr;
+  model::ExprPtr source;
+  std::int64_t t1 = 0, t2 = 0;
+  int field = -1;
+  int pseudo = -1;
+};
+
+enum class ObsRef { Step, Field, Input };
+struct ObsInfo {
+  ObsRef ref = ObsRef::Field;
+  int index = 0;
+};
+
+inline bool all_digits(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+}
+
+/// Step names in the usual order: numbers by value, then the others alphabetically.
+inline bool numeric_less(const std::string& a, const std::string& b) {
+  const bool da = all_digits(a), db = all_digits(b);
+  if (da && db && a.size() != b.size()) return a.size() < b.size();
+  if (da != db) return da;
+  return a < b;
+}
+
+// ------------------------------------------------------------------------------- the system
+
+class GrafcetSystem final : public TransitionSystem {
+ public:
+  GrafcetSystem(const model::Project& project, const GrafcetOptions& options,
+                model::Diagnostics& diagnostics)
+      : options_(options), diags_(diagnostics) {
+    build(project);
+  }
+
+  bool ok() const { return ok_; }
+
+  SemanticsKind kind() const override { return SemanticsKind::Grafcet; }
+  const StateLayout& layout() const override { return layout_; }
+  const std::vector<InputVariable>& inputs() const override { return input_vars_; }
+  const std::vector<Observable>& observables() const override { return observables_; }
+  const std::vector<TransitionInfo>& transitions() const override { return trans_info_; }
+
+  void initial_states(SuccessorSink& sink) const override;
+  void successors(StateView state, SuccessorSink& sink) const override;
+  std::int64_t observe(StateView state, std::uint32_t index) const override;
+  std::string describe(StateView state) const override;
+
+ private:
+  friend class CircuitBuilder;
+  // ---- compilation
+  void build(const model::Project& project);
+  void error(const model::SourceLocation& where, std::string message) {
+    diags_.push_back({model::Severity::Error, where, std::move(message)});
+    ok_ = false;
+  }
+  int find_step(const std::string& pou, std::string_view name) const;
+  int find_chart(const std::string& pou, std::string_view name) const;
+  int input_index(const model::Pou& pou, const std::string& name);
+  bool compile(const model::Pou& pou, const model::Expr& e, CExpr& out, bool under_edge);
+  /// compile() then checks that integer inputs are only compared with constants.
+  bool compile_top(const model::Pou& pou, const model::Expr& e, CExpr& out);
+  bool int_inputs_ok(const CExpr& e, const model::Expr& where);
+  bool constant_value(const model::Expr& e, std::int64_t& v) const;
+  void finish_inputs();
+
+  // ---- evaluation
+  struct Ctx {
+    StateView cur;
+    const Partial* in;
+    StateView prev;
+    const Partial* prev_in;
+    mutable int wanted = -1;  ///< first free input met
+  };
+  bool active(StateView s, int step) const;
+  Val eval(const CExpr& e, const Ctx& c) const;
+  Partial inputs_of(StateView s) const;
+  InputCube cube_of(const Partial& p) const;
+
+  enum class Status { Stable, Split, Anomaly };
+  struct Result {
+    std::vector<StateWord> target;
+    std::vector<std::uint32_t> fired;
+    int split = -1;
+    Anomaly anomaly;
+  };
+  Status evolve(StateView source, const Partial& v, bool initial, Result& r) const;
+  void init_chart(std::vector<StateWord>& s, int chart) const;
+  void clear_chart(std::vector<StateWord>& s, int chart) const;
+  void explore(StateView source, Partial start, bool initial, SuccessorSink& sink) const;
+  void emit(StateView source, const Partial& v, const Result& r, SuccessorSink& sink) const;
+
+  GrafcetOptions options_;
+  model::Diagnostics& diags_;
+  bool ok_ = true;
+
+  std::vector<GStep> steps_;
+  std::vector<GChart> charts_;
+  std::vector<GTrans> trans_;
+  std::vector<GStored> stored_;
+  std::vector<GForce> forces_;
+  std::vector<GVar> vars_;
+  std::vector<GContinuous> continuous_;
+  std::vector<GInput> gin_;
+  std::vector<GDelay> delays_;
+  std::vector<int> enclosing_;  ///< ids of enclosing steps
+
+  std::map<std::string, int> var_index_;    ///< upper "POU.NAME" -> vars_
+  std::map<std::string, int> input_by_name_;  ///< upper "POU.NAME" -> gin_
+
+  StateLayout layout_;
+  std::vector<InputVariable> input_vars_;
+  std::vector<Observable> observables_;
+  std::vector<ObsInfo> obs_info_;
+  std::vector<TransitionInfo> trans_info_;
+  std::vector<StateWord> initial_template_;
+};
+
+}  // namespace sfcv::semantics::grafcet
