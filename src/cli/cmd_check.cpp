@@ -48,6 +48,8 @@ struct CheckOptions {
   bool multi_input_change = false;
   std::uint64_t max_states = 0;
   double timeout = 0;
+  std::string memory;  ///< empty: no limit
+  bool reorder = false;
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
@@ -80,12 +82,33 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+/// "2G", "512M", "64K", "1000000" (bytes) -> bytes; decimal suffixes are binary multiples.
+std::uint64_t parse_memory(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  double factor = 1;
+  if (unit == "K" || unit == "k" || unit == "KB" || unit == "KiB") factor = 1024.0;
+  else if (unit == "M" || unit == "MB" || unit == "MiB") factor = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GB" || unit == "GiB") factor = 1024.0 * 1024 * 1024;
+  else if (!unit.empty() && unit != "B") used = 0;
+  if (used == 0 || !(value > 0) || value * factor > 1e15)
+    throw InputError("bad --memory '" + text + "' (expected a size such as 2G, 512M or 64K)");
+  return static_cast<std::uint64_t>(value * factor);
+}
+
 // --engine auto: explicit for small charts, BDD beyond kAutoBddBits state bits (where explicit
 // enumeration may reach billions of states) when the BDD engine can answer everything asked.
 constexpr std::uint32_t kAutoBddBits = 40;
 
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
-                                      std::uint32_t state_bits, bool quiet) {
+                                      std::uint32_t state_bits, bool quiet,
+                                      const engine::BddEngineOptions& bdd_options) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -97,13 +120,13 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     return checker;
   }
   if (name == "bdd") {
-    auto bdd = engine::make_bdd_model_checker();
+    auto bdd = engine::make_bdd_model_checker(bdd_options);
     if (!bdd->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return bdd;
   }
   auto explicit_engine = engine::make_explicit_model_checker();
   if (name == "auto" && state_bits > kAutoBddBits) {
-    auto bdd = engine::make_bdd_model_checker();
+    auto bdd = engine::make_bdd_model_checker(bdd_options);
     if (bdd->can_handle(task, &why)) {
       if (!quiet)
         std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the bdd engine\n";
@@ -167,6 +190,9 @@ int run_check(const CheckOptions& o) {
   print_diagnostics(resolve_diags, "errors in the properties");
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
+  if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
+  engine::BddEngineOptions bdd_options;
+  bdd_options.reorder = o.reorder;
   const bool show_progress = !o.quiet && ::isatty(2);
   bool progress_shown = false;
   if (show_progress)
@@ -178,7 +204,7 @@ int run_check(const CheckOptions& o) {
       std::fflush(stderr);
     };
 
-  auto checker = choose_engine(o.engine, task, ts->layout().bits(), o.quiet);
+  auto checker = choose_engine(o.engine, task, ts->layout().bits(), o.quiet, bdd_options);
   logic::CheckReport result;
   try {
     result = checker->check(task);
@@ -245,6 +271,11 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                 "Grafcet: several inputs may change at once (default: one per event)");
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
+  sub->add_option("--memory", opts->memory,
+                  "Memory budget, e.g. 2G: the explicit graph, or the bdd engine's node table; "
+                  "past it answers become unknown");
+  sub->add_flag("--reorder", opts->reorder,
+                "bdd engine: dynamic variable reordering (sifting; off by default)");
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
   sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");

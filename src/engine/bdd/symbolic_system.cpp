@@ -40,8 +40,7 @@ void support(const Aig& aig, AigLit root, std::vector<bool>& seen, std::vector<s
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(std::move(circuit)) {
-  bdd::configure_manager(options.nodes, options.cache, 4);
-  bdd::ensure_manager();
+  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
   bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
   // Static order by the FORCE heuristic: latches (their current and next copies adjacent) and
@@ -138,6 +137,12 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
+  if (options.reorder) {
+    // Blocks before any reordering: a current/next pair moves as one, inputs alone.
+    for (std::size_t l = 0; l < num_latches; ++l) bdd::add_variable_block(current_var_[l], next_var_[l]);
+    for (int v : input_var_) bdd::add_variable_block(v, v);
+    bdd::set_reordering(true);
+  }
   current_vars_ = current_var_;
   memo_.resize(aig.nodes().size());
   memo_set_.assign(aig.nodes().size(), false);
@@ -225,6 +230,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     for (std::size_t i = 0; i < num_inputs; ++i)
       if (input_last[i] < 0) unused_inputs.push_back(input_var_[i]);
     pre_quantify_first_ = Bdd::cube(unused_inputs);
+    inputs_first_ = pre_quantify_first_;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      std::vector<int> vs;
+      for (std::size_t i = 0; i < num_inputs; ++i)
+        if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
+      inputs_after_.push_back(Bdd::cube(vs));
+    }
   }
   clusters_ = std::move(parts);
   for (auto& vs : after) quantify_after_.push_back(Bdd::cube(vs));
@@ -379,7 +391,18 @@ Bdd SymbolicSystem::fires_any() {
 
 double SymbolicSystem::count(const Bdd& states) const {
   if (states.is_false()) return 0;
-  return std::round(std::exp2(states.sat_count_log2(current_cube_)));
+  if (const auto exact = states.sat_count_exact(current_var_)) return static_cast<double>(*exact);
+  return std::exp2(states.sat_count_log2(current_cube_));
+}
+
+std::optional<std::uint64_t> SymbolicSystem::count_edges(const Bdd& from) const {
+  // exists i. T(x, i, x') & from(x), quantifying each input after the last cluster reading it.
+  Bdd acc = from.exist(inputs_first_);
+  for (std::size_t k = 0; k < clusters_.size(); ++k)
+    acc = acc.and_exist(clusters_[k], inputs_after_[k]);
+  std::vector<int> vars = current_var_;
+  vars.insert(vars.end(), next_var_.begin(), next_var_.end());
+  return acc.sat_count_exact(vars);
 }
 
 std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {

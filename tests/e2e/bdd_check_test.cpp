@@ -1,0 +1,125 @@
+// sfcv check --engine bdd end to end: counterexamples of every shape replay in sfcv simulate,
+// --reorder changes no answer, --memory too small gives unknown (exit 3), the report counts
+// states and edges as the explicit engine does, on our examples and on the shared corpus.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+const std::string kPlant =
+    "'" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st'";
+
+nlohmann::json check_json(const std::string& args, int* exit_code = nullptr) {
+  const auto r = run_sfcv("check " + args + " --json --quiet");
+  if (exit_code) *exit_code = r.exit_code;
+  try {
+    return nlohmann::json::parse(r.out);
+  } catch (const std::exception&) {
+    ADD_FAILURE() << "not JSON: " << r.out << r.err;
+    return {};
+  }
+}
+
+TEST(BddCheck, EveryCounterexampleReplaysInSimulate) {
+  // A lasso (AF), a nested one (AG EF), an EX step, an until, and a witness (EG under fairness).
+  for (const char* ctl : {"AF s8", "AG EF s9", "AG (s2 -> AX s2)", "A[!V2 U s8]", "EG !s8"}) {
+    SCOPED_TRACE(ctl);
+    const auto csv = write_temp("", ".csv");
+    const auto r = run_sfcv("check " + kPlant + " --engine bdd --quiet --ctl '" + ctl +
+                            "' --trace csv --trace-file '" + csv + "'");
+    ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.out << r.err;
+    const auto sim = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
+    EXPECT_EQ(sim.exit_code, 0) << sim.out << sim.err;
+    // The explicit engine gives the same verdict.
+    const auto ex = run_sfcv("check " + kPlant + " --quiet --trace none --ctl '" + ctl + "'");
+    EXPECT_EQ(ex.exit_code, r.exit_code);
+  }
+  const auto lasso = run_sfcv("check " + kPlant + " --engine bdd --ctl 'AF s8'");
+  EXPECT_EQ(lasso.exit_code, 1);
+  EXPECT_NE(lasso.out.find("counterexample"), std::string::npos) << lasso.out;
+}
+
+TEST(BddCheck, ReorderingChangesNoAnswer) {
+  const std::string props =
+      " --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' --ctl 'AG EF s9' --ctl 'AF s8' "
+      "--ctl 'EG !s8' --fair s1 --checks none";
+  const auto plain = check_json(kPlant + " --engine bdd" + props);
+  const auto sifted = check_json(kPlant + " --engine bdd --reorder" + props);
+  ASSERT_TRUE(plain.contains("properties") && sifted.contains("properties"));
+  EXPECT_EQ(plain["states"], sifted["states"]);
+  EXPECT_EQ(plain["edges"], sifted["edges"]);
+  ASSERT_EQ(plain["properties"].size(), sifted["properties"].size());
+  for (std::size_t i = 0; i < plain["properties"].size(); ++i)
+    EXPECT_EQ(plain["properties"][i]["verdict"], sifted["properties"][i]["verdict"]) << i;
+}
+
+TEST(BddCheck, TinyMemoryBudgetIsUnknown) {
+  const auto r = run_sfcv("check " + kPlant +
+                          " --engine bdd --memory 64K --ctl 'AG !(V1 & V3)' --checks reachable");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("unknown"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" holds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("memory"), std::string::npos) << r.out;
+  // A budget that fits answers.
+  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bdd --memory 1G --ctl 'AG !(V1 & V3)'").exit_code, 0);
+  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bdd --memory lots --ctl 'AG !(V1 & V3)'").exit_code, 2);
+}
+
+TEST(BddCheck, ReportCountsStatesAndEdgesLikeExplicit) {
+  const auto ex = check_json(kPlant + " --ctl 'AG !(V1 & V3)' --checks none");
+  const auto bdd = check_json(kPlant + " --engine bdd --ctl 'AG !(V1 & V3)' --checks none");
+  ASSERT_TRUE(ex.contains("states") && bdd.contains("states"));
+  EXPECT_EQ(ex["states"], bdd["states"]);
+  EXPECT_EQ(ex["edges"], bdd["edges"]);
+  EXPECT_GT(bdd["edges"].get<std::uint64_t>(), bdd["states"].get<std::uint64_t>());
+  const auto text = run_sfcv("check " + kPlant + " --engine bdd --ctl 'AG !(V1 & V3)'");
+  EXPECT_NE(text.out.find(std::to_string(ex["states"].get<std::uint64_t>()) + " states, " +
+                          std::to_string(ex["edges"].get<std::uint64_t>()) + " edges"),
+            std::string::npos)
+      << text.out;
+}
+
+// The IEC charts of the corpus that the semantics supports: the BDD engine counts their
+// reachable states and edges, equal to the explicit engine's wherever that one finishes; the
+// xPPU (19 SFC bodies) gets a count from the BDD engine alone.
+TEST(BddCheck, CorpusReachableStateCounts) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  struct Chart {
+    const char* file;
+    bool explicit_finishes;
+  };
+  int compared = 0;
+  for (const Chart c : {Chart{"01_beremiz_traffic_light.xml", true},
+                        Chart{"02_beremiz_first_steps.xml", true},
+                        Chart{"03_matiec_SFC_TEST_tc6v1.xml", true},
+                        Chart{"04_matiec_sfc_syntax.st", true},
+                        Chart{"06_codesys_nested_sfc_action.xml", true},
+                        Chart{"07_codesys_ppu_scenario3v1.xml", true},
+                        Chart{"13_verifaps_loopunwinding1_left.sfc", true},
+                        Chart{"15_verifaps_transition2_left.sfc", true},
+                        Chart{"09_twincat_xppu_scenario1.xml", false}}) {
+    SCOPED_TRACE(c.file);
+    const std::string file = "'" + (corpus / c.file).string() + "'";
+    int code = -1;
+    const auto bdd = check_json(file + " --engine bdd --timeout 300 --ctl TRUE --checks none", &code);
+    ASSERT_EQ(code, 0) << bdd.dump();
+    EXPECT_TRUE(bdd["complete"].get<bool>());
+    EXPECT_GT(bdd["states"].get<std::uint64_t>(), 0u);
+    ASSERT_FALSE(bdd["edges"].is_null());
+    if (!c.explicit_finishes) continue;
+    const auto ex = check_json(file + " --timeout 300 --ctl TRUE --checks none", &code);
+    ASSERT_EQ(code, 0) << ex.dump();
+    EXPECT_EQ(ex["states"], bdd["states"]);
+    EXPECT_EQ(ex["edges"], bdd["edges"]);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 8);
+}
+
+}  // namespace
+}  // namespace sfcv::test
