@@ -112,8 +112,11 @@ class Run {
     frontier_ = reached_;
     const auto& limits = task_.limits;
     while (!frontier_.is_false()) {
-      const double states = sys_.count(reached_);
-      last_count_ = static_cast<std::uint64_t>(states);
+      // Counting walks the whole set: only when a limit or the progress line needs it (a
+      // counter chart takes tens of thousands of rings).
+      const bool counting = limits.progress || limits.max_states > 0;
+      const double states = counting ? sys_.count(reached_) : 0;
+      if (counting) last_count_ = static_cast<std::uint64_t>(states);
       if (limits.progress) {
         logic::Progress p;
         p.states = static_cast<std::uint64_t>(states);
