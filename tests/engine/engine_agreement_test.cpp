@@ -363,6 +363,7 @@ END_PROGRAM
 TEST(EngineAgreement, ReorderingOnAndOff) {
   BddEngineOptions reorder;
   reorder.reorder = true;
+  const int before = bdd::reorderings();
   for (std::uint64_t seed = 50; seed <= 53; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const auto s = load(bench::random_chart_iec(14, 3, seed));
@@ -373,6 +374,7 @@ TEST(EngineAgreement, ReorderingOnAndOff) {
   const auto s = load(bench::parallel_branches_iec(6, true));
   ASSERT_TRUE(s.ts);
   compare_engines(s, 9, false, reorder);
+  EXPECT_GE(bdd::reorderings(), before + 9);  // sifting ran under every one of them
 }
 
 // A node table too small for the relation: every answer unknown, no crash, no "holds"; the

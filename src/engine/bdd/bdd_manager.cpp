@@ -32,7 +32,10 @@ void throw_on_error(int code) {
 }
 
 void quiet_gbc(int, bddGbcStat*) {}
-void quiet_reorder(int) {}
+int g_reorderings = 0;
+void count_reorder(int before) {
+  if (!before) ++g_reorderings;
+}
 
 // Sizing chosen by configure_manager() before the manager starts; 0 = the defaults.
 int g_nodes = 0, g_cache = 0, g_ratio = 0;
@@ -45,7 +48,7 @@ void init_manager(int nodes, int cache, int ratio, int max_nodes) {
   g_reordering_used = false;
   bdd_setcacheratio(ratio > 0 ? ratio : 64);
   bdd_gbc_hook(quiet_gbc);
-  bdd_reorder_hook(quiet_reorder);
+  bdd_reorder_hook(count_reorder);
   bdd_reorder_verbose(0);
   bdd_autoreorder(BDD_REORDER_NONE);
   // BuDDy rounds the table up to a prime and refuses a limit not above it.
@@ -111,6 +114,14 @@ void set_reordering(bool on) {
   bdd_autoreorder(on ? BDD_REORDER_SIFT : BDD_REORDER_NONE);
   if (on) g_reordering_used = true;
 }
+
+void reorder_now() {
+  g_reordering_used = true;
+  bdd_reorder(BDD_REORDER_SIFT);
+  ++g_reorderings;  // BuDDy calls the hook for automatic reorderings only
+}
+
+int reorderings() { return g_reorderings; }
 
 int level_of(int var) { return bdd_var2level(var); }
 

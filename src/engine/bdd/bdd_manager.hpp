@@ -52,6 +52,10 @@ void start_manager(const ManagerOptions& options);
 void add_variable_block(int first, int last);
 /// Dynamic reordering by sifting of the blocks, whenever the node table fills (off: none).
 void set_reordering(bool on);
+/// Sifts the blocks once, now (a first order for the relation just built).
+void reorder_now();
+/// Reorderings done since the program started (each sifting pass counts once).
+int reorderings();
 
 /// Position of variable `var` in the current order (0 = top).
 int level_of(int var);

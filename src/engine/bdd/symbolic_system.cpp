@@ -250,6 +250,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   }
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
+  // Automatic reordering waits for a full table; sift once for the relation just built.
+  if (options.reorder) bdd::reorder_now();
 }
 
 Bdd SymbolicSystem::node_bdd(AigLit lit) {
