@@ -155,8 +155,8 @@ void SymbolicCtl::explain_eu(const Bdd& through, const Bdd& target, const Formul
 
 void SymbolicCtl::close_loop(const Bdd& region, const std::vector<Bdd>& fair, SymbolicRun& run) {
   // Each failed round ends in a state that cannot reach the round's start: a strictly lower
-  // strongly connected component of `region`, so the search ends (like NuSMV's fair EG
-  // witnesses).
+  // strongly connected component of `region`, so the search ends (Clarke, Grumberg, McMillan
+  // and Zhao's fair EG witnesses, as in NuSMV).
   for (;;) {
     const std::size_t loop_at = run.states.size() - 1;
     const Bdd start = sys_.singleton(run.states.back());
@@ -176,26 +176,12 @@ void SymbolicCtl::close_loop(const Bdd& region, const std::vector<Bdd>& fair, Sy
       run.loop_start = loop_at;
       return;
     }
-    // Go down: to a state of the deepest forward ring from here, inside the region.
-    std::vector<Bdd> rings{here};
-    Bdd seen = here;
-    for (;;) {
-      const Bdd next = sys_.image(rings.back()) & region & !seen;
-      if (next.is_false()) break;
-      seen = seen | next;
-      rings.push_back(next);
-    }
-    if (rings.size() == 1) {
-      // Every successor was seen already: take one step (it cannot lead back to the start).
-      const Bdd succ = sys_.image(here) & region;
-      if (succ.is_false()) return;
-      run.states.push_back(sys_.pick(succ));
-      continue;
-    }
-    std::vector<State> back{sys_.pick(rings.back())};
-    for (std::size_t j = rings.size() - 1; j-- > 1;)
-      back.push_back(sys_.pick(sys_.preimage(sys_.singleton(back.back())) & rings[j]));
-    for (auto it = back.rbegin(); it != back.rend(); ++it) run.states.push_back(std::move(*it));
+    // Start the next round here: this state cannot reach the round's start. When the round
+    // did not move (the start is in every fair set), take one step first.
+    if (!(here == start)) continue;
+    const Bdd succ = sys_.image(here) & region;
+    if (succ.is_false()) return;
+    run.states.push_back(sys_.pick(succ));
   }
 }
 
