@@ -45,6 +45,8 @@ struct CheckOptions {
   SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
+  std::string memory;  ///< empty: no limit
+  bool reorder = false;
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
@@ -78,13 +80,34 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+/// "2G", "512M", "64K", "1000000" (bytes) -> bytes; decimal suffixes are binary multiples.
+std::uint64_t parse_memory(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  double factor = 1;
+  if (unit == "K" || unit == "k" || unit == "KB" || unit == "KiB") factor = 1024.0;
+  else if (unit == "M" || unit == "MB" || unit == "MiB") factor = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GB" || unit == "GiB") factor = 1024.0 * 1024 * 1024;
+  else if (!unit.empty() && unit != "B") used = 0;
+  if (used == 0 || !(value > 0) || value * factor > 1e15)
+    throw InputError("bad --memory '" + text + "' (expected a size such as 2G, 512M or 64K)");
+  return static_cast<std::uint64_t>(value * factor);
+}
+
 // --engine auto. The explicit engine answers every standard check and counts edges, so it runs
 // first, within kAutoExplicitStates states. Beyond that budget, or when a state cannot be
 // enumerated explicitly (an integer input copied into a variable), the BDD engine takes over if
 // it can answer the task. A time or memory limit of the user's ends the run as it is: unknown.
 constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
-engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task) {
+engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
+                                      const engine::BddEngineOptions& bdd_options) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -95,17 +118,19 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
   }
-  auto checker = name == "bdd" ? engine::make_bdd_model_checker() : engine::make_explicit_model_checker();
+  auto checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
+                               : engine::make_explicit_model_checker();
   if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
   return checker;
 }
 
-logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet) {
+logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet,
+                              const engine::BddEngineOptions& bdd_options) {
   auto note = [quiet](const std::string& text) {
     if (!quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
   auto explicit_engine = engine::make_explicit_model_checker();
-  auto bdd = engine::make_bdd_model_checker();
+  auto bdd = engine::make_bdd_model_checker(bdd_options);
   std::string why;
   if (!bdd->can_handle(task, &why)) {
     note("using the explicit engine (the bdd engine cannot: " + why + ")");
@@ -168,6 +193,9 @@ int run_check(const CheckOptions& o) {
   print_diagnostics(resolve_diags, "errors in the properties");
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
+  if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
+  engine::BddEngineOptions bdd_options;
+  bdd_options.reorder = o.reorder;
   const bool show_progress = !o.quiet && ::isatty(2);
   bool progress_shown = false;
   if (show_progress)
@@ -181,7 +209,8 @@ int run_check(const CheckOptions& o) {
 
   logic::CheckReport result;
   try {
-    result = o.engine == "auto" ? check_auto(task, o.quiet) : choose_engine(o.engine, task)->check(task);
+    result = o.engine == "auto" ? check_auto(task, o.quiet, bdd_options)
+                                : choose_engine(o.engine, task, bdd_options)->check(task);
   } catch (const semantics::SemanticsLimitError& e) {
     if (progress_shown) std::cerr << "\n";
     std::cerr << "sfcv: " << e.what() << "\n";
@@ -244,6 +273,11 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
+  sub->add_option("--memory", opts->memory,
+                  "Memory budget, e.g. 2G: the explicit graph, or the bdd engine's node table; "
+                  "past it answers become unknown");
+  sub->add_flag("--reorder", opts->reorder,
+                "bdd engine: dynamic variable reordering (sifting; off by default)");
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
   sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");

@@ -37,6 +37,7 @@ struct CheckReport {
   std::string engine;      ///< "explicit", "bdd"
   std::uint64_t states = 0;
   std::uint64_t edges = 0;
+  bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
   std::uint32_t depth = 0;  ///< BFS depth reached
   bool complete = true;    ///< false when a limit stopped exploration
   std::string limit;       ///< "states", "time", "memory" when !complete

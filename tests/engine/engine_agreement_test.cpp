@@ -1,7 +1,9 @@
 // The explicit and the BDD engine on the same tasks (like Storm's typed suites, and mCRL2's
-// random tests): identical reachable-state counts and verdicts on generated charts, for random
-// CTL formulas with and without fairness and for the standard checks both answer; every BDD
-// trace replays through `simulate` to the state it claims.
+// random tests): identical reachable-state and edge counts and verdicts on generated charts,
+// for random CTL formulas (every operator) with and without fairness and for the standard
+// checks both answer; every BDD trace starts in an initial state, replays through `simulate`,
+// and is a genuine counterexample or witness: judged against the explicit engine's labelling,
+// step by step along the structure both engines explain.
 
 #include <gtest/gtest.h>
 
@@ -11,7 +13,10 @@
 
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
+#include "engine/bdd/bdd_manager.hpp"
+#include "engine/explicit/ctl_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "logic/formula.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -25,12 +30,20 @@ struct Setup {
   semantics::TransitionSystemPtr ts;
 };
 
-Setup load(const std::string& text, semantics::Iec61131Options options = {}) {
+Setup load(const std::string& text, semantics::Iec61131Options options = {},
+           const std::vector<std::string>& assume = {}) {
   Setup s;
   auto loaded = io::load_iec_text(text, "generated.st");
   EXPECT_TRUE(loaded.ok());
   s.project = std::move(*loaded.project);
   model::Diagnostics diags;
+  if (!assume.empty()) {
+    logic::CheckInputs in;
+    in.assume = assume;
+    auto parsed = logic::parse_check_inputs(in);
+    for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
+    options.assumptions = logic::assumption_exprs(parsed.spec);
+  }
   s.ts = semantics::make_iec61131_system(s.project, options, diags);
   EXPECT_TRUE(s.ts) << (diags.empty() ? "" : diags.front().str());
   return s;
@@ -88,14 +101,147 @@ void expect_replays(const semantics::TransitionSystem& ts, const logic::Trace& t
   ASSERT_EQ(run.states.size(), trace.steps.size());
   for (std::size_t k = 0; k < trace.steps.size(); ++k)
     EXPECT_EQ(run.states[k], trace.steps[k].state) << "cycle " << k;
+  if (trace.loop_start) {
+    ASSERT_LT(*trace.loop_start, trace.steps.size() - 1);
+    EXPECT_EQ(trace.steps.back().state, trace.steps[*trace.loop_start].state);
+  }
 }
 
-void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness) {
+/// Judges a trace against the explicit labelling: it must explain `f` from its first state the
+/// way CtlChecker::explain() does (EX: the next state; E[p U q]: p states up to the first q
+/// state; EG p: p states to the end, which loops through every fair set or is a deadlock).
+class TraceJudge {
+ public:
+  TraceJudge(const ReachableSituationGraph& g, CtlChecker& c) : g_(g), c_(c) {}
+
+  std::string judge(const logic::FormulaPtr& f, const logic::Trace& t) {
+    t_ = &t;
+    index_.clear();
+    for (const auto& step : t.steps) {
+      const auto i = g_.states().find(step.state);
+      if (i == StateStore::kAbsent) return "a trace state is not reachable";
+      index_.push_back(i);
+    }
+    const auto& init = g_.initial_states();
+    if (std::find(init.begin(), init.end(), index_.front()) == init.end())
+      return "the trace does not start in an initial state";
+    lasso_seen_ = false;
+    end_ = 0;
+    auto why = at(f, 0, 0);
+    if (!why.empty()) return why;
+    if ((t.loop_start || t.ends_in_deadlock) && !lasso_seen_) return "a lasso no EG asked for";
+    if (end_ + 1 != t.steps.size())
+      return "the trace goes on after its explanation ends (at step " + std::to_string(end_) + ")";
+    return "";
+  }
+
+ private:
+  bool holds(const logic::FormulaPtr& f, std::size_t i) { return c_.sat(f)[index_[i]] != 0; }
+  bool fair(std::size_t i) { return !c_.has_fairness() || c_.fair_states()[index_[i]] != 0; }
+
+  std::string at(const logic::FormulaPtr& f, std::size_t i, int depth) {
+    using logic::Op;
+    end_ = i;
+    if (!holds(f, i))
+      return "step " + std::to_string(i) + " does not satisfy " + logic::to_string(f);
+    if (depth > 8) return "";
+    const auto& a = f->args;
+    switch (f->op) {
+      case Op::Not: {
+        auto pushed = push_negation(a[0]);
+        if (pushed->op == Op::Not) return "";
+        keep_.push_back(pushed);
+        return at(pushed, i, depth + 1);
+      }
+      case Op::And: {
+        const auto& pick = logic::is_propositional(*a[0]) ? a[1] : a[0];
+        return logic::is_propositional(*pick) ? "" : at(pick, i, depth + 1);
+      }
+      case Op::Or:
+      case Op::Implies: {
+        auto first = f->op == Op::Implies ? logic::make_not(a[0]) : a[0];
+        keep_.push_back(first);
+        std::vector<logic::FormulaPtr> order = {first, a[1]};
+        if (logic::is_propositional(*first)) std::swap(order[0], order[1]);
+        for (const auto& cand : order)
+          if (holds(cand, i)) return logic::is_propositional(*cand) ? "" : at(cand, i, depth + 1);
+        return "no disjunct holds";
+      }
+      case Op::EX:
+        if (i + 1 >= index_.size()) return "EX: the trace ends";
+        if (!fair(i + 1)) return "EX: the next state is not fair";
+        return at(a[0], i + 1, depth + 1);
+      case Op::EF:
+      case Op::EU: {
+        const auto& target = f->op == Op::EF ? a[0] : a[1];
+        for (std::size_t j = i; j < index_.size(); ++j) {
+          if (holds(target, j) && fair(j)) return at(target, j, depth + 1);
+          if (f->op == Op::EU && !holds(a[0], j))
+            return "E[p U q]: step " + std::to_string(j) + " satisfies neither";
+        }
+        return "E[p U q] / EF: the trace ends before its target";
+      }
+      case Op::EG: {
+        for (std::size_t j = i; j < index_.size(); ++j)
+          if (!holds(a[0], j)) return "EG: step " + std::to_string(j) + " leaves p";
+        lasso_seen_ = true;
+        end_ = index_.size() - 1;
+        if (t_->loop_start) {
+          if (*t_->loop_start < i) return "EG: the loop starts before the EG state";
+          if (c_.has_fairness()) {
+            const auto& fairness = fairness_;
+            for (const auto& fs : fairness) {
+              bool met = false;
+              for (std::size_t j = *t_->loop_start; j < index_.size(); ++j) met |= holds(fs, j);
+              if (!met) return "EG: the loop misses a fairness constraint";
+            }
+          }
+          return "";
+        }
+        if (t_->ends_in_deadlock) {
+          if (c_.has_fairness()) return "EG: a finite run under fairness";
+          const auto last = index_.back();
+          if (g_.edges_end(last) > g_.edges_begin(last)) return "EG: the last state has a successor";
+          return "";
+        }
+        return "EG: neither a loop nor a deadlock";
+      }
+      default:
+        return "";
+    }
+  }
+
+ public:
+  std::vector<logic::FormulaPtr> fairness_;
+
+ private:
+  const ReachableSituationGraph& g_;
+  CtlChecker& c_;
+  const logic::Trace* t_ = nullptr;
+  std::vector<std::uint32_t> index_;
+  std::vector<logic::FormulaPtr> keep_;
+  bool lasso_seen_ = false;
+  std::size_t end_ = 0;
+};
+
+struct Tally {
+  int traces = 0, lassos = 0, deadlocks = 0;
+};
+Tally g_tally;
+
+void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
+                     const BddEngineOptions& bdd_options = {},
+                     const std::vector<std::string>& extra = {}) {
   FormulaGenerator gen(*s.ts, seed);
   std::vector<std::string> ctl;
   for (int i = 0; i < 12; ++i) ctl.push_back(gen.formula(3));
   ctl.push_back("AG !(" + gen.atom() + " & " + gen.atom() + ")");
   ctl.push_back("EF (" + gen.atom() + " & " + gen.atom() + ")");
+  ctl.push_back("AF " + gen.atom());
+  ctl.push_back("EG " + gen.atom());
+  ctl.push_back("A[" + gen.atom() + " U " + gen.atom() + "]");
+  ctl.push_back("AG (" + gen.atom() + " -> AX EX " + gen.atom() + ")");
+  for (const auto& e : extra) ctl.push_back(e);
   std::vector<std::string> fair;
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(s, ctl, fair);
@@ -104,22 +250,46 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness) {
                    logic::StandardCheck::Reentry, logic::StandardCheck::GlobalDeadlock,
                    logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn};
   const auto explicit_report = make_explicit_model_checker()->check(task);
-  const auto bdd = make_bdd_model_checker();
+  const auto bdd = make_bdd_model_checker(bdd_options);
   ASSERT_TRUE(bdd->can_handle(task));
   const auto bdd_report = bdd->check(task);
   EXPECT_EQ(explicit_report.states, bdd_report.states);
+  EXPECT_TRUE(bdd_report.edges_known);
+  EXPECT_EQ(explicit_report.edges, bdd_report.edges);
+  const auto graph = build_reachable_situation_graph(*s.ts);
+  CtlChecker labelling(graph, task.fairness);
+  TraceJudge judge(graph, labelling);
+  judge.fairness_ = task.fairness;
   ASSERT_EQ(explicit_report.results.size(), bdd_report.results.size());
   for (std::size_t i = 0; i < explicit_report.results.size(); ++i) {
     const auto& e = explicit_report.results[i];
     const auto& b = bdd_report.results[i];
-    EXPECT_EQ(e.verdict, b.verdict) << e.name << " " << e.formula << ": explicit "
-                                    << logic::to_string(e.verdict) << ", bdd "
+    SCOPED_TRACE(e.name + " " + e.formula);
+    EXPECT_EQ(e.verdict, b.verdict) << "explicit " << logic::to_string(e.verdict) << ", bdd "
                                     << logic::to_string(b.verdict);
     if (b.trace) expect_replays(*s.ts, *b.trace);
+    if (i >= task.properties.size()) continue;  // standard checks: replay only
+    // Both engines give a trace for the same verdicts, and the BDD's explains the formula.
+    EXPECT_EQ(e.trace.has_value(), b.trace.has_value());
+    if (!b.trace) continue;
+    const auto& f = task.properties[i].formula;
+    const bool violated = b.verdict == logic::Verdict::Violated;
+    EXPECT_EQ(b.trace->kind, violated ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
+    const auto explained = violated ? push_negation(f) : f;
+    EXPECT_EQ(judge.judge(explained, *b.trace), "");
+    ++g_tally.traces;
+    g_tally.lassos += b.trace->loop_start.has_value();
+    g_tally.deadlocks += b.trace->ends_in_deadlock;
+    // Shortest runs to a state: the same length as the explicit engine's BFS.
+    if ((f->op == logic::Op::AG || f->op == logic::Op::EF) && logic::is_propositional(*f->args[0]) &&
+        e.trace) {
+      EXPECT_EQ(e.trace->steps.size(), b.trace->steps.size());
+    }
   }
 }
 
 TEST(EngineAgreement, RandomChartsAndFormulas) {
+  g_tally = {};
   for (std::uint64_t seed = 1; seed <= 15; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const auto s = load(bench::random_chart_iec(10 + static_cast<std::uint32_t>(seed % 7), 3, seed));
@@ -127,6 +297,9 @@ TEST(EngineAgreement, RandomChartsAndFormulas) {
     compare_engines(s, seed, false);
     compare_engines(s, seed + 100, true);
   }
+  // The judge saw every kind of trace: runs to a state, and lassos.
+  EXPECT_GT(g_tally.traces, 200);
+  EXPECT_GT(g_tally.lassos, 10);
 }
 
 TEST(EngineAgreement, NondeterministicConflicts) {
@@ -164,6 +337,81 @@ TEST(EngineAgreement, Families) {
     compare_engines(s, 77, false);
     compare_engines(s, 78, true);
   }
+}
+
+// Assumptions on the state leave some reachable states without successor: maximal finite runs,
+// EG witnesses that end in a deadlock.
+TEST(EngineAgreement, DeadlocksEndRuns) {
+  g_tally = {};
+  const std::string cycle = R"(PROGRAM Cycle
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  INITIAL_STEP S0: END_STEP
+  STEP S1: q(N); END_STEP
+  STEP S2: END_STEP
+  STEP S3: END_STEP
+  TRANSITION FROM S0 TO S1 := go; END_TRANSITION
+  TRANSITION FROM S1 TO S2 := go; END_TRANSITION
+  TRANSITION FROM S1 TO S3 := NOT go; END_TRANSITION
+  TRANSITION FROM S3 TO S0 := go; END_TRANSITION
+  TRANSITION FROM S2 TO S0 := go; END_TRANSITION
+END_PROGRAM
+)";
+  const auto s = load(cycle, {}, {"!S2"});
+  ASSERT_TRUE(s.ts);
+  const std::vector<std::string> extra = {"AG AF S1", "EG !S1", "AF S0", "AG EX TRUE",
+                                          "E[!S1 U S2]", "EF EG q", "AG (S1 -> EX EG !q)",
+                                          "EF EG S2", "AG AF !S2", "AG (S1 -> AX AF S0)"};
+  compare_engines(s, 1, false, {}, extra);
+  compare_engines(s, 2, true, {}, extra);
+  for (std::uint64_t seed = 40; seed <= 45; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto r = load(bench::random_chart_iec(9, 2, seed), {}, {"!(S3 & i0)", "!S4"});
+    ASSERT_TRUE(r.ts);
+    compare_engines(r, seed, false, {}, {"AG AF S0", "EG !S0", "AG EF S4"});
+    compare_engines(r, seed + 7, true);
+  }
+  EXPECT_GT(g_tally.deadlocks, 1);
+}
+
+// Reordering changes the variable order, never an answer, a count or a trace's validity.
+TEST(EngineAgreement, ReorderingOnAndOff) {
+  BddEngineOptions reorder;
+  reorder.reorder = true;
+  const int before = bdd::reorderings();
+  for (std::uint64_t seed = 50; seed <= 53; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto s = load(bench::random_chart_iec(14, 3, seed));
+    ASSERT_TRUE(s.ts);
+    compare_engines(s, seed, false, reorder);
+    compare_engines(s, seed + 1, true, reorder);
+  }
+  const auto s = load(bench::parallel_branches_iec(6, true));
+  ASSERT_TRUE(s.ts);
+  compare_engines(s, 9, false, reorder);
+  EXPECT_GE(bdd::reorderings(), before + 9);  // sifting ran under every one of them
+}
+
+// A node table too small for the relation: every answer unknown, no crash, no "holds"; the
+// manager recovers for the next system.
+TEST(EngineAgreement, TinyMemoryBudgetGivesUnknown) {
+  const auto s = load(bench::parallel_branches_iec(8, true));
+  ASSERT_TRUE(s.ts);
+  auto task = task_for(s, {"AG !(B1 & B2)", "EF (B3 & O4)"}, {});
+  task.checks = {logic::StandardCheck::Reachable};
+  task.limits.max_memory_bytes = 64 * 1024;
+  const auto r = make_bdd_model_checker()->check(task);
+  EXPECT_FALSE(r.complete);
+  EXPECT_EQ(r.limit, "memory");
+  EXPECT_FALSE(r.edges_known);
+  ASSERT_EQ(r.results.size(), 3u);
+  for (const auto& p : r.results) EXPECT_EQ(p.verdict, logic::Verdict::Unknown) << p.name;
+  EXPECT_EQ(logic::exit_code(r), 3);
+  task.limits.max_memory_bytes = 0;
+  const auto again = make_bdd_model_checker()->check(task);
+  EXPECT_TRUE(again.complete);
+  EXPECT_EQ(again.results[2].verdict, logic::Verdict::Holds);
+  EXPECT_EQ(bdd::live_bdds(), 0);
 }
 
 TEST(EngineAgreement, ChemicalPlantVerdicts) {

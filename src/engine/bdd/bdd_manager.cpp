@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
+#include <unordered_map>
 
 // bdd.h maps these names to its C++ layer; the facade uses the C API with explicit reference
 // counting.
@@ -16,23 +17,57 @@ namespace sfcv::engine::bdd {
 
 namespace {
 
+// After an error BuDDy's tables are in doubt (the error may come from the middle of a resize
+// or a reordering): reference counts are no longer touched, and the next start_manager()
+// replaces the manager.
+bool g_failed = false;
+bool g_reordering_used = false;  ///< the variable order may differ from the identity
+long g_live = 0;
+
 void throw_on_error(int code) {
-  throw BddError(std::string("BDD package error: ") + bdd_errstring(code));
+  g_failed = true;
+  const bool out_of_nodes = code == BDD_NODENUM || code == BDD_MEMORY;
+  throw BddError(std::string(out_of_nodes ? "the BDD node table is full (--memory): "
+                                          : "BDD package error: ") +
+                 bdd_errstring(code));
 }
 
 bool g_has_deadline = false;
 std::chrono::steady_clock::time_point g_deadline;
 
 void quiet_gbc(int pre, bddGbcStat*) {
-  // Before the collection starts (the node table is still consistent).
+  // Before the collection starts (the node table is still consistent). The manager is replaced
+  // at the next start all the same, as after any error.
   if (pre && g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
     g_has_deadline = false;
+    g_failed = true;
     throw BddError("time limit reached in the BDD package");
   }
 }
 
+int g_reorderings = 0;
+void count_reorder(int before) {
+  if (!before) ++g_reorderings;
+}
+
 // Sizing chosen by configure_manager() before the manager starts; 0 = the defaults.
 int g_nodes = 0, g_cache = 0, g_ratio = 0;
+
+void init_manager(int nodes, int cache, int ratio, int max_nodes) {
+  if (bdd_init(nodes, cache) < 0) throw BddError("BDD package: initialisation failed");
+  // bdd_init installs BuDDy's own handler, which exits the process: replace it after.
+  bdd_error_hook(throw_on_error);
+  g_failed = false;
+  g_reordering_used = false;
+  bdd_setcacheratio(ratio > 0 ? ratio : 64);
+  bdd_gbc_hook(quiet_gbc);
+  bdd_reorder_hook(count_reorder);
+  bdd_reorder_verbose(0);
+  bdd_autoreorder(BDD_REORDER_NONE);
+  // BuDDy rounds the table up to a prime and refuses a limit not above it.
+  bdd_setmaxnodenum(max_nodes > 0 ? std::max(max_nodes, bdd_getallocnum() + 1) : 0);
+  bdd_setvarnum(1);
+}
 
 }  // namespace
 
@@ -63,12 +98,55 @@ void ensure_manager(int nodes, int cache) {
     nodes = g_nodes;
     cache = g_cache;
   }
-  bdd_error_hook(throw_on_error);
-  if (bdd_init(nodes, cache) < 0) throw BddError("BDD package: initialisation failed");
-  bdd_setcacheratio(g_ratio > 0 ? g_ratio : 64);
-  bdd_gbc_hook(quiet_gbc);
-  bdd_setvarnum(1);
+  init_manager(nodes, cache, g_ratio, 0);
 }
+
+void start_manager(const ManagerOptions& o) {
+  const int nodes = o.max_nodes > 0 ? std::min(o.nodes, o.max_nodes) : o.nodes;
+  const int cache = std::max(1, std::min(o.cache, nodes / std::max(1, o.cache_ratio)));
+  if (bdd_isrunning()) {
+    const bool unfit = g_failed || g_reordering_used ||
+                       (o.max_nodes > 0 && bdd_getallocnum() > o.max_nodes);
+    if (!unfit) {
+      bdd_setmaxnodenum(o.max_nodes > 0 ? std::max(o.max_nodes, bdd_getallocnum() + 1) : 0);
+      bdd_clrvarblocks();
+      bdd_autoreorder(BDD_REORDER_NONE);
+      return;
+    }
+    if (g_live > 0) {
+      if (g_failed) throw BddError("BDD package: a failed manager is still in use");
+      // Cannot replace it: keep the order it has and bound its growth from here on.
+      if (o.max_nodes == 0 || o.max_nodes > bdd_getallocnum()) bdd_setmaxnodenum(o.max_nodes);
+      bdd_clrvarblocks();
+      return;
+    }
+    bdd_done();
+  }
+  init_manager(nodes, cache, o.cache_ratio, o.max_nodes);
+}
+
+void add_variable_block(int first, int last) {
+  ensure_variables(last + 1);
+  bdd_intaddvarblock(first, last, BDD_REORDER_FIXED);
+}
+
+void set_reordering(bool on) {
+  ensure_manager();
+  bdd_autoreorder(on ? BDD_REORDER_SIFT : BDD_REORDER_NONE);
+  if (on) g_reordering_used = true;
+}
+
+void reorder_now() {
+  g_reordering_used = true;
+  bdd_reorder(BDD_REORDER_SIFT);
+  ++g_reorderings;  // BuDDy calls the hook for automatic reorderings only
+}
+
+int reorderings() { return g_reorderings; }
+
+int level_of(int var) { return bdd_var2level(var); }
+
+long live_bdds() { return g_live; }  // references to non-constant nodes
 
 void ensure_variables(int count) {
   ensure_manager();
@@ -76,27 +154,42 @@ void ensure_variables(int count) {
   if (count > have) bdd_extvarnum(count - have);
 }
 
-Bdd::Bdd() : root_(0) { ensure_manager(); }
-Bdd::Bdd(int root) : root_(root) { bdd_addref(root_); }
-Bdd::Bdd(const Bdd& other) : root_(other.root_) { bdd_addref(root_); }
+// g_live counts references to non-constant nodes: constants need no manager, so a Bdd holding
+// one survives a replaced manager.
+namespace {
+void add_ref(int root) {
+  if (root <= 1) return;
+  ++g_live;
+  if (!g_failed) bdd_addref(root);
+}
+void del_ref(int root) noexcept {
+  if (root <= 1) return;
+  --g_live;
+  if (!g_failed) bdd_delref(root);
+}
+}  // namespace
+
+Bdd::Bdd() : root_(0) {}
+Bdd::Bdd(int root) : root_(root) { add_ref(root_); }
+Bdd::Bdd(const Bdd& other) : root_(other.root_) { add_ref(root_); }
 Bdd::Bdd(Bdd&& other) noexcept : root_(other.root_) { other.root_ = 0; }
 Bdd& Bdd::operator=(const Bdd& other) {
   if (this != &other) {
-    bdd_addref(other.root_);
-    bdd_delref(root_);
+    add_ref(other.root_);
+    del_ref(root_);
     root_ = other.root_;
   }
   return *this;
 }
 Bdd& Bdd::operator=(Bdd&& other) noexcept {
   if (this != &other) {
-    bdd_delref(root_);
+    del_ref(root_);
     root_ = other.root_;
     other.root_ = 0;
   }
   return *this;
 }
-Bdd::~Bdd() { bdd_delref(root_); }
+Bdd::~Bdd() { del_ref(root_); }
 
 Bdd Bdd::constant(bool value) {
   ensure_manager();
@@ -146,6 +239,56 @@ int Bdd::value_in_cube(int var) const {
   return -1;
 }
 double Bdd::sat_count_log2(const Bdd& vars) const { return bdd_satcountlnset(root_, vars.root_); }
+
+std::optional<std::uint64_t> Bdd::sat_count_exact(const std::vector<int>& vars) const {
+  // below[l]: how many counted variables lie above level l. count(n) counts the assignments of
+  // the counted variables at or below n's level; a skipped counted variable doubles it.
+  __extension__ typedef unsigned __int128 Wide;
+  const int levels = bdd_varnum();
+  std::vector<int> below(static_cast<std::size_t>(levels) + 1, 0);
+  std::vector<char> counted(static_cast<std::size_t>(levels), 0);
+  for (int v : vars) counted[static_cast<std::size_t>(bdd_var2level(v))] = 1;
+  for (int l = 0; l < levels; ++l) below[l + 1] = below[l] + counted[l];
+  const Wide limit = ~std::uint64_t{0};
+  bool overflow = false;
+  auto level = [&](int n) { return n <= 1 ? levels : bdd_var2level(bdd_var(n)); };
+  auto scale = [&](Wide c, int from_level, int to_level) -> Wide {
+    const int skipped = below[to_level] - below[from_level];
+    if (c == 0) return 0;
+    if (skipped >= 64 || (c << skipped) >> skipped != c || (c << skipped) > limit) {
+      overflow = true;
+      return limit;
+    }
+    return c << skipped;
+  };
+  std::unordered_map<int, Wide> memo;
+  std::vector<int> stack{root_};
+  while (!stack.empty() && !overflow) {
+    const int n = stack.back();
+    if (n <= 1 || memo.count(n)) {
+      stack.pop_back();
+      continue;
+    }
+    const int lo = bdd_low(n), hi = bdd_high(n);
+    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
+    if (!lo_done || !hi_done) {
+      if (!lo_done) stack.push_back(lo);
+      if (!hi_done) stack.push_back(hi);
+      continue;
+    }
+    auto value = [&](int c) -> Wide { return c <= 1 ? Wide(c) : memo[c]; };
+    const int l = level(n);
+    const Wide sum = scale(value(lo), l + 1, level(lo)) + scale(value(hi), l + 1, level(hi));
+    if (sum > limit) overflow = true;
+    memo[n] = sum;
+    stack.pop_back();
+  }
+  if (overflow) return std::nullopt;
+  const Wide top = root_ <= 1 ? Wide(root_) : memo[root_];
+  const Wide total = scale(top, 0, level(root_));
+  if (overflow || total > limit) return std::nullopt;
+  return static_cast<std::uint64_t>(total);
+}
 int Bdd::node_count() const { return bdd_nodecount(root_); }
 
 VarMap::VarMap() : pair_(nullptr) {

@@ -4,6 +4,7 @@
 // would exit the process) stay behind this interface: errors become BddError exceptions.
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -31,6 +32,42 @@ void set_time_limit(double seconds);
 
 /// Nodes currently allocated in the manager's table.
 int allocated_nodes();
+
+/// What one symbolic system asks of the manager.
+struct ManagerOptions {
+  int nodes = 4'000'000;  ///< initial node table
+  int cache = 1'000'000;
+  int cache_ratio = 4;
+  int max_nodes = 0;      ///< 0 = unlimited; past it an operation throws BddError
+};
+
+/// Approximate bytes per node of the table, with its share of the operation caches (20 bytes
+/// a node, six caches of 16-byte entries at one entry per 4 nodes, and slack for reordering):
+/// `--memory` divides its budget by this.
+constexpr std::uint64_t kBytesPerNode = 64;
+
+/// Starts the manager for a new symbolic system. The running manager is replaced by a fresh one
+/// (identity variable order, no blocks) when no Bdd is alive and it cannot serve as it is: after
+/// an error (BuDDy's state is then in doubt), after dynamic reordering was enabled, or when its
+/// table is larger than `max_nodes`. Throws BddError when a failed manager cannot be replaced.
+void start_manager(const ManagerOptions& options);
+
+/// Makes variables first..last (adjacent levels) one block for dynamic reordering, in a fixed
+/// order inside (a current/next pair). Without blocks BuDDy's reordering moves nothing.
+void add_variable_block(int first, int last);
+/// Dynamic reordering by sifting of the blocks, whenever the node table fills (off: none).
+void set_reordering(bool on);
+/// Sifts the blocks once, now (a first order for the relation just built).
+void reorder_now();
+/// Reorderings done since the program started (each sifting pass counts once).
+int reorderings();
+
+/// Position of variable `var` in the current order (0 = top).
+int level_of(int var);
+
+/// Number of Bdd values alive that hold a non-constant node (a manager can only be replaced
+/// when there are none).
+long live_bdds();
 
 /// Empties BuDDy's operation caches (by a garbage collection). Their keys include node numbers and
 /// the ids of renamings; entries left by a previous, destroyed system gave wrong results for
@@ -60,7 +97,7 @@ class VarMap {
 /// A BDD node held with a reference count (copyable value; comparison is canonical equality).
 class Bdd {
  public:
-  Bdd();  ///< false
+  Bdd();  ///< false (needs no manager)
   Bdd(const Bdd& other);
   Bdd(Bdd&& other) noexcept;
   Bdd& operator=(const Bdd& other);
@@ -91,18 +128,22 @@ class Bdd {
   int value_in_cube(int var) const;
   /// log2 of the number of assignments of the variables of `vars` that satisfy *this.
   double sat_count_log2(const Bdd& vars) const;
+  /// The exact number of assignments of `vars` (every variable *this mentions must be among
+  /// them) that satisfy *this; nullopt when it does not fit in 64 bits.
+  std::optional<std::uint64_t> sat_count_exact(const std::vector<int>& vars) const;
   int node_count() const;
   bool operator==(const Bdd& o) const { return root_ == o.root_; }
   bool operator!=(const Bdd& o) const { return root_ != o.root_; }
 
   bool is_true() const;
   bool is_false() const;
-  /// Top variable (precondition: not constant); low/high cofactors of the top node.
+  /// Top variable (precondition: not constant; its level is level_of(top())); low/high
+  /// cofactors of the top node.
   int top() const;
   Bdd low() const;
   Bdd high() const;
   /// Cofactor with respect to `var` when it is the top variable, else *this (the caller walks
-  /// variables in order, so a non-top variable does not occur above the root).
+  /// variables in level order, so a non-top variable does not occur above the root).
   Bdd cofactor(int var, bool value) const;
 
  private:

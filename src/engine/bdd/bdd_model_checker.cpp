@@ -1,12 +1,16 @@
 #include "engine/bdd/bdd_model_checker.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <unordered_map>
 
+#include "engine/bdd/symbolic_ctl.hpp"
 #include "engine/bdd/symbolic_system.hpp"
+#include "engine/explicit/ctl_checker.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
 #include "model/names.hpp"
@@ -27,102 +31,6 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-/// CTL by fixpoints. Paths are maximal (a state without successor ends its paths) unless
-/// fairness constraints are given; then only infinite fair paths count (docs/semantics.md,
-/// Part 3), exactly as the explicit engine.
-class SymbolicCtl {
- public:
-  SymbolicCtl(SymbolicSystem& sys, const std::vector<logic::FormulaPtr>& fairness)
-      : sys_(sys) {
-    for (const auto& f : fairness) fair_sets_.push_back(sys_.atom(*f));
-    if (!fair_sets_.empty()) fair_ = eg_fair(Bdd::constant(true));
-  }
-
-  Bdd sat(const logic::FormulaPtr& f) {
-    if (auto it = memo_.find(f.get()); it != memo_.end()) return it->second;
-    Bdd r = compute(*f);
-    memo_.emplace(f.get(), r);
-    keep_.push_back(f);
-    return r;
-  }
-
- private:
-  Bdd compute(const logic::Formula& f) {
-    const bool fair = !fair_sets_.empty();
-    auto arg = [&](std::size_t i) { return sat(f.args[i]); };
-    switch (f.op) {
-      case Op::True: case Op::False: case Op::Atom: case Op::Compare: return sys_.atom(f);
-      case Op::Not: return !arg(0);
-      case Op::And: return arg(0) & arg(1);
-      case Op::Or: return arg(0) | arg(1);
-      case Op::Implies: return (!arg(0)) | arg(1);
-      case Op::Iff: return arg(0).iff(arg(1));
-      case Op::Xor: return arg(0) ^ arg(1);
-      case Op::EX: return ex(arg(0));
-      case Op::AX: return !ex(!arg(0));
-      case Op::EF: return eu(Bdd::constant(true), arg(0));
-      case Op::AG: return !eu(Bdd::constant(true), !arg(0));
-      case Op::EG: return fair ? eg_fair(arg(0)) : eg(arg(0));
-      case Op::AF: return !(fair ? eg_fair(!arg(0)) : eg(!arg(0)));
-      case Op::EU: return eu(arg(0), arg(1));
-      case Op::AU: {
-        const Bdd p = arg(0), q = arg(1);
-        const Bdd g = fair ? eg_fair(!q) : eg(!q);
-        return !(eu(!q, (!p) & (!q)) | g);
-      }
-    }
-    return Bdd::constant(false);
-  }
-
-  Bdd fair_states() const { return fair_sets_.empty() ? Bdd::constant(true) : fair_; }
-  Bdd ex(const Bdd& p) { return sys_.preimage(p & fair_states()); }
-  Bdd eu(const Bdd& p, const Bdd& q) {
-    const Bdd target = q & fair_states();
-    Bdd z = target;
-    for (;;) {
-      const Bdd next = target | (p & sys_.preimage(z));
-      if (next == z) return z;
-      z = next;
-    }
-  }
-  /// Maximal paths: p holds forever, or until a state without successor.
-  Bdd eg(const Bdd& p) {
-    const Bdd dead = !sys_.has_successor();
-    Bdd z = p;
-    for (;;) {
-      const Bdd next = p & (sys_.preimage(z) | dead);
-      if (next == z) return z;
-      z = next;
-    }
-  }
-  /// Emerson-Lei: nu Z. p & AND_i EX E[p U (Z & F_i)].
-  Bdd eg_fair(const Bdd& p) {
-    Bdd z = p;
-    for (;;) {
-      Bdd next = p;
-      for (const auto& fi : fair_sets_) {
-        // Plain EU here: fairness is what this fixpoint computes.
-        const Bdd target = z & fi;
-        Bdd u = target;
-        for (;;) {
-          const Bdd step = target | (p & sys_.preimage(u));
-          if (step == u) break;
-          u = step;
-        }
-        next = next & sys_.preimage(u);
-      }
-      if (next == z) return z;
-      z = next;
-    }
-  }
-
-  SymbolicSystem& sys_;
-  std::vector<Bdd> fair_sets_;
-  Bdd fair_;
-  std::unordered_map<const logic::Formula*, Bdd> memo_;
-  std::vector<logic::FormulaPtr> keep_;
-};
-
 class Run {
  public:
   Run(const logic::CheckTask& task, SymbolicSystem& sys) : task_(task), sys_(sys), ts_(sys.system()) {}
@@ -131,33 +39,85 @@ class Run {
     const auto start = Clock::now();
     logic::CheckReport report;
     report.engine = "bdd";
-    explore(report, start);
-    SymbolicCtl ctl(sys_, task_.fairness);
+    // A BDD package error (the node table full under --memory) leaves the package unusable:
+    // what is decided stays, everything after it is unknown.
+    try {
+      explore(report, start);
+    } catch (const bdd::BddError& e) {
+      failed_ = e.what();
+      report.complete = false;
+      report.limit = failed_.find("time limit") != std::string::npos ? "time" : "memory";
+      report.states = last_count_;
+      report.depth = static_cast<std::uint32_t>(rings_.empty() ? 0 : rings_.size() - 1);
+    }
+    std::optional<SymbolicCtl> ctl, plain;
     for (const auto& p : task_.properties) {
       const auto t0 = Clock::now();
-      auto r = property(p, ctl, report);
+      auto r = guarded(p.name, logic::to_string(p.formula), "", [&] {
+        if (!ctl) ctl.emplace(sys_, task_.fairness);
+        return property(p, *ctl, report);
+      });
+      r.where = p.where;
       r.seconds = since(t0);
       report.results.push_back(std::move(r));
     }
-    SymbolicCtl plain(sys_, {});
     for (auto c : task_.checks) {
       const auto t0 = Clock::now();
-      auto r = standard(c, plain, report);
+      const std::string name(logic::to_string(c));
+      auto r = guarded(name, "", name, [&] {
+        if (!plain) plain.emplace(sys_, std::vector<logic::FormulaPtr>{});
+        return standard(c, *plain, report);
+      });
       r.seconds = since(t0);
       report.results.push_back(std::move(r));
+    }
+    // Edges last: on a huge model their relation may not fit where the verdicts did.
+    report.edges_known = false;
+    if (failed_.empty()) {
+      try {
+        if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
+          report.edges = *edges;
+          report.edges_known = true;
+        }
+      } catch (const bdd::BddError&) {
+        // Not counted: the report leaves the number out rather than print a wrong one.
+      }
     }
     report.seconds = since(start);
     return report;
   }
 
  private:
+  template <class F>
+  PropertyResult guarded(const std::string& name, const std::string& formula,
+                         const std::string& check, F&& compute) {
+    if (failed_.empty()) {
+      try {
+        return compute();
+      } catch (const bdd::BddError& e) {
+        failed_ = e.what();
+      }
+    }
+    PropertyResult r;
+    r.name = name;
+    r.formula = formula;
+    r.check = check;
+    r.verdict = Verdict::Unknown;
+    r.message = "the BDD package ran out of resources: " + failed_;
+    return r;
+  }
+
   void explore(logic::CheckReport& report, Clock::time_point start) {
     reached_ = sys_.initial();
     rings_.push_back(reached_);
-    Bdd frontier = reached_;
+    frontier_ = reached_;
     const auto& limits = task_.limits;
-    while (!frontier.is_false()) {
-      const double states = sys_.count(reached_);
+    while (!frontier_.is_false()) {
+      // Counting walks the whole set: only when a limit or the progress line needs it (a
+      // counter chart takes tens of thousands of rings).
+      const bool counting = limits.progress || limits.max_states > 0;
+      const double states = counting ? sys_.count(reached_) : 0;
+      if (counting) last_count_ = static_cast<std::uint64_t>(states);
       if (limits.progress) {
         logic::Progress p;
         p.states = static_cast<std::uint64_t>(states);
@@ -175,19 +135,17 @@ class Run {
         report.limit = "time";
         break;
       }
-      if (limits.max_memory_bytes > 0 &&
-          static_cast<std::uint64_t>(bdd::allocated_nodes()) * 20 > limits.max_memory_bytes) {
-        report.complete = false;
-        report.limit = "memory";
+      const Bdd next = sys_.image(frontier_) & !reached_;
+      if (next.is_false()) {
+        frontier_ = next;
         break;
       }
-      const Bdd next = sys_.image(frontier) & !reached_;
-      if (next.is_false()) break;
       reached_ = reached_ | next;
       rings_.push_back(next);
-      frontier = next;
+      frontier_ = next;
     }
     report.states = static_cast<std::uint64_t>(sys_.count(reached_));
+    last_count_ = report.states;
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
     sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
   }
@@ -205,20 +163,25 @@ class Run {
     for (std::size_t j = k; j-- > 0;)
       states.push_back(sys_.pick(sys_.preimage(sys_.singleton(states.back())) & rings_[j]));
     std::reverse(states.begin(), states.end());
-    return to_trace(states);
+    return to_trace(SymbolicRun{std::move(states), std::nullopt, false});
   }
 
   /// Each hop is labelled with inputs found on the BDDs and the transitions the circuit fires
   /// under them (enumerating explicit successors would cost 2^inputs per hop on wide charts).
-  logic::Trace to_trace(const std::vector<std::vector<semantics::StateWord>>& states) {
+  logic::Trace to_trace(const SymbolicRun& run) {
+    const auto& states = run.states;
     logic::Trace t;
+    t.loop_start = run.loop_start;
+    t.ends_in_deadlock = run.ends_in_deadlock;
+    if (states.empty()) return t;
     const auto& circuit = sys_.circuit();
     std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
                                                           ts_.inputs(), {});
     t.steps.push_back({inputs, states.front(), {}});
     for (std::size_t k = 1; k < states.size(); ++k) {
       const auto bits = sys_.inputs_between(states[k - 1], states[k]);
-      if (bits.empty()) break;  // cannot happen: consecutive ring states are related
+      // Consecutive states of a run are related by construction: a gap is a bug, never a trace.
+      if (bits.empty()) throw std::logic_error("bdd engine: a trace step without a transition");
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
       t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
@@ -255,16 +218,21 @@ class Run {
       return r;
     }
     const Bdd holds = ctl.sat(f);
-    r.verdict = all_initial(holds) ? Verdict::Holds : Verdict::Violated;
-    if (r.verdict == Verdict::Violated && ag && task_.fairness.empty()) {
-      r.trace = path_to(reached_ & !sys_.atom(*f->args[0]));
+    const Bdd bad = sys_.initial() & !holds;
+    if (bad.is_false()) {
+      r.verdict = Verdict::Holds;
+      if (!logic::is_propositional(*f)) {
+        auto t = to_trace(ctl.explain(f, sys_.initial()));
+        if (t.steps.size() > 1 || t.loop_start) {
+          t.kind = logic::TraceKind::Witness;
+          r.trace = std::move(t);
+        }
+      }
+    } else {
+      r.verdict = Verdict::Violated;
+      const auto neg = push_negation(f);
+      r.trace = to_trace(ctl.explain(neg, bad));
       r.trace->kind = logic::TraceKind::Counterexample;
-    } else if (r.verdict == Verdict::Holds && ef && task_.fairness.empty()) {
-      r.trace = path_to(reached_ & sys_.atom(*f->args[0]));
-      r.trace->kind = logic::TraceKind::Witness;
-    } else if (r.verdict == Verdict::Violated) {
-      r.message = "the bdd engine gives traces for AG p and EF p (p without temporal "
-                  "operators); use --engine explicit for a trace of this formula";
     }
     if (r.trace) r.trace->marked = marked;
     return r;
@@ -578,11 +546,16 @@ class Run {
   SymbolicSystem& sys_;
   const semantics::TransitionSystem& ts_;
   Bdd reached_;
+  Bdd frontier_;  ///< the last ring, not expanded when a limit stopped exploration
   std::vector<Bdd> rings_;
+  std::uint64_t last_count_ = 0;
+  std::string failed_;  ///< the BDD package error that ended the run, if any
 };
 
 class BddModelChecker final : public ModelChecker {
  public:
+  explicit BddModelChecker(BddEngineOptions options) : options_(options) {}
+
   std::string_view name() const override { return "bdd"; }
 
   bool can_handle(const logic::CheckTask& task, std::string* why) const override {
@@ -604,29 +577,46 @@ class BddModelChecker final : public ModelChecker {
   }
 
   logic::CheckReport check(const logic::CheckTask& task) const override {
+    SymbolicOptions so;
+    so.reorder = options_.reorder;
+    if (so.reorder) {
+      // Sifting works on the whole table, and automatic reordering starts when it is full: a
+      // small table that grows on demand (measured: the 4M-node default makes one sifting
+      // pass of a 60-variable chart take 3 s).
+      so.nodes = 1 << 18;
+      so.cache = 1 << 16;
+    }
+    if (task.limits.max_memory_bytes > 0) {
+      const auto nodes = task.limits.max_memory_bytes / bdd::kBytesPerNode;
+      so.max_nodes = static_cast<int>(std::clamp<std::uint64_t>(nodes, 1, 2'000'000'000));
+    }
+    so.timeout_seconds = task.limits.timeout_seconds;
+    // A single BDD operation that blows up is stopped at a garbage collection; a little later
+    // than the exploration's own limit, which reports more.
+    bdd::set_time_limit(task.limits.timeout_seconds > 0 ? task.limits.timeout_seconds * 1.5 : 0);
     try {
-      SymbolicOptions options;
-      options.timeout_seconds = task.limits.timeout_seconds;
-      // A single BDD operation that blows up is stopped at a garbage collection; a little
-      // later than the exploration's own limit, which reports more.
-      bdd::set_time_limit(task.limits.timeout_seconds > 0 ? task.limits.timeout_seconds * 1.5 : 0);
-      const auto symbolic = make_symbolic_system(*task.system, options);
+      const auto symbolic = make_symbolic_system(*task.system, so);
       Run run(task, *symbolic);
       auto report = run.check();
       bdd::set_time_limit(0);
       return report;
     } catch (const bdd::BddError& e) {
+      // The relation (or the Grafcet closure) does not fit: every answer is unknown.
       bdd::set_time_limit(0);
       logic::CheckReport report;
       report.engine = "bdd";
       report.complete = false;
-      report.limit = std::string(e.what()).find("time limit") != std::string::npos ? "time" : "memory";
+      const bool time = std::string(e.what()).find("time limit") != std::string::npos;
+      report.limit = time ? "time" : "memory";
+      report.edges_known = false;
+      const std::string why = (time ? std::string() : "the BDD package ran out of resources: ") + e.what();
       for (const auto& p : task.properties) {
         PropertyResult r;
         r.name = p.name;
         r.formula = logic::to_string(p.formula);
+        r.where = p.where;
         r.verdict = Verdict::Unknown;
-        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
+        r.message = why;
         report.results.push_back(std::move(r));
       }
       // Checks too: a check left without a result must not read as holding.
@@ -635,16 +625,21 @@ class BddModelChecker final : public ModelChecker {
         r.name = std::string(logic::to_string(c));
         r.check = r.name;
         r.verdict = Verdict::Unknown;
-        r.message = (report.limit == "time" ? std::string() : "the BDD package ran out of resources: ") + e.what();
+        r.message = why;
         report.results.push_back(std::move(r));
       }
       return report;
     }
   }
+
+ private:
+  BddEngineOptions options_;
 };
 
 }  // namespace
 
-ModelCheckerPtr make_bdd_model_checker() { return std::make_unique<BddModelChecker>(); }
+ModelCheckerPtr make_bdd_model_checker(const BddEngineOptions& options) {
+  return std::make_unique<BddModelChecker>(options);
+}
 
 }  // namespace sfcv::engine

@@ -1,13 +1,19 @@
 #pragma once
 // The symbolic engine (`--engine bdd`): forward reachability with frontier sets (onion rings),
 // CTL by fixpoints over BDDs (EX, EU, EG; fairness by Emerson-Lei), counterexamples and
-// witnesses cut out of the onion rings and replayed through the explicit successor function, so
-// that they read exactly like the explicit engine's. Same CheckTask, same CheckReport.
+// witnesses for every formula cut out of the onion rings and fixpoint approximants
+// (symbolic_ctl.hpp), in the explicit engine's trace format. Same CheckTask, same CheckReport.
 
 #include "engine/model_checker.hpp"
 
 namespace sfcv::engine {
 
-ModelCheckerPtr make_bdd_model_checker();
+struct BddEngineOptions {
+  bool reorder = false;  ///< BuDDy's dynamic reordering (sifting of current/next pairs)
+};
+
+/// The node table is sized from CheckTask::limits.max_memory_bytes (`--memory`): when it is
+/// full, the answers not yet decided are unknown.
+ModelCheckerPtr make_bdd_model_checker(const BddEngineOptions& options = {});
 
 }  // namespace sfcv::engine

@@ -25,8 +25,10 @@ Bdd isop(const Bdd& lower, const Bdd& upper, std::vector<VarCube>& out) {
     out.emplace_back();
     return Bdd::constant(true);
   }
+  // The top variable of the two (by level: the order need not be the index order).
   int x = lower.is_true() ? upper.top() : lower.top();
-  if (!upper.is_false() && !upper.is_true()) x = std::min(x, upper.top());
+  if (!upper.is_false() && !upper.is_true() && bdd::level_of(upper.top()) < bdd::level_of(x))
+    x = upper.top();
   const Bdd l0 = lower.cofactor(x, false), l1 = lower.cofactor(x, true);
   const Bdd u0 = upper.cofactor(x, false), u1 = upper.cofactor(x, true);
 

@@ -17,8 +17,7 @@ using Bdd = bdd::Bdd;
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(std::move(circuit)) {
-  bdd::configure_manager(options.nodes, options.cache, 4);
-  bdd::ensure_manager();
+  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
   bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
   const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
@@ -36,6 +35,12 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
+  if (options.reorder) {
+    // Blocks before any reordering: a current/next pair moves as one, inputs alone.
+    for (std::size_t l = 0; l < num_latches; ++l) bdd::add_variable_block(current_var_[l], next_var_[l]);
+    for (int v : input_var_) bdd::add_variable_block(v, v);
+    bdd::set_reordering(true);
+  }
   current_vars_ = current_var_;
   memo_.resize(aig.nodes().size());
   memo_set_.assign(aig.nodes().size(), false);
@@ -123,6 +128,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     for (std::size_t i = 0; i < num_inputs; ++i)
       if (input_last[i] < 0) unused_inputs.push_back(input_var_[i]);
     pre_quantify_first_ = Bdd::cube(unused_inputs);
+    inputs_first_ = pre_quantify_first_;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      std::vector<int> vs;
+      for (std::size_t i = 0; i < num_inputs; ++i)
+        if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
+      inputs_after_.push_back(Bdd::cube(vs));
+    }
   }
   clusters_ = std::move(parts);
   for (auto& vs : after) quantify_after_.push_back(Bdd::cube(vs));
@@ -136,13 +148,14 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   }
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
+  // Automatic reordering waits for a full table; sift once for the relation just built.
+  if (options.reorder) bdd::reorder_now();
 }
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::GrafcetCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(circuit) {
-  bdd::configure_manager(options.nodes, options.cache, 4);
-  bdd::ensure_manager();
+  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
   bdd::reset_operation_caches();
   grafcet_circuit_ = std::make_unique<semantics::GrafcetCircuit>(std::move(circuit));
   const semantics::GrafcetCircuit& gc = *grafcet_circuit_;
@@ -187,6 +200,14 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
+  if (options.reorder) {
+    // Blocks before any reordering: a state latch's current, next and transient copies move as
+    // one (they are consecutive), an output's pair too, inputs alone.
+    for (std::size_t l = 0; l < num_state; ++l) bdd::add_variable_block(v.c[l], v.m[l]);
+    for (std::size_t q = 0; q < v.q.size(); ++q) bdd::add_variable_block(v.q[q], v.qp[q]);
+    for (int x : v.in) bdd::add_variable_block(x, x);
+    bdd::set_reordering(true);
+  }
   input_var_ = v.in;
   current_var_ = v.c;
   next_var_ = v.n;
@@ -204,6 +225,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   initial_ = grafcet_->initial();
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
+  if (options.reorder) bdd::reorder_now();
 }
 
 SymbolicSystem::~SymbolicSystem() = default;
@@ -421,7 +443,21 @@ Bdd SymbolicSystem::fires_any() {
 
 double SymbolicSystem::count(const Bdd& states) const {
   if (states.is_false()) return 0;
-  return std::round(std::exp2(states.sat_count_log2(current_cube_)));
+  if (const auto exact = states.sat_count_exact(current_var_)) return static_cast<double>(*exact);
+  return std::exp2(states.sat_count_log2(current_cube_));
+}
+
+std::optional<std::uint64_t> SymbolicSystem::count_edges(const Bdd& from) const {
+  // Grafcet: the closure computes images, never the pair relation; the count stays unknown
+  // rather than wrong.
+  if (grafcet_) return std::nullopt;
+  // exists i. T(x, i, x') & from(x), quantifying each input after the last cluster reading it.
+  Bdd acc = from.exist(inputs_first_);
+  for (std::size_t k = 0; k < clusters_.size(); ++k)
+    acc = acc.and_exist(clusters_[k], inputs_after_[k]);
+  std::vector<int> vars = current_var_;
+  vars.insert(vars.end(), next_var_.begin(), next_var_.end());
+  return acc.sat_count_exact(vars);
 }
 
 std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "engine/bdd/bdd_manager.hpp"
@@ -22,6 +23,8 @@ struct SymbolicOptions {
   /// Grafcet: the closure stops with bdd::BddError ("time limit ...") after this many seconds
   /// (0: no limit), so that a check with --timeout ends with unknown.
   double timeout_seconds = 0;
+  int max_nodes = 0;       ///< node table limit (0 = none): past it operations throw BddError
+  bool reorder = false;    ///< dynamic reordering (sifting of current/next pairs)
 };
 
 class GrafcetClosure;
@@ -70,8 +73,11 @@ class SymbolicSystem {
   /// States that fire at least one transition under some allowed, error-free input.
   Bdd fires_any();
 
-  /// Number of states in `states` (exact below 2^53).
+  /// Number of states in `states` (exact below 2^64, else an approximation).
   double count(const Bdd& states) const;
+  /// Number of pairs (s, s') with s in `from` and s' a successor of s: the explicit graph's
+  /// edges (one per source and target); nullopt past 2^64.
+  std::optional<std::uint64_t> count_edges(const Bdd& from) const;
   /// One concrete state of a non-empty set.
   std::vector<semantics::StateWord> pick(const Bdd& states) const;
   /// The singleton set of a concrete state.
@@ -110,6 +116,8 @@ class SymbolicSystem {
   std::unique_ptr<bdd::VarMap> current_to_next_;
   std::vector<Bdd> pre_quantify_after_;  ///< pre-image: next variables and inputs per cluster
   Bdd pre_quantify_first_;
+  std::vector<Bdd> inputs_after_;  ///< inputs a cluster is the last to read (edge counting)
+  Bdd inputs_first_;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
   // Grafcet mode.
