@@ -1,6 +1,7 @@
 #include "engine/explicit/canonical_order.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <numeric>
 
 #include "engine/state_order.hpp"
@@ -30,6 +31,37 @@ CanonicalNumbering canonical_numbering(const ReachableSituationGraph& g,
   n.edge.resize(edges.size());
   for (std::size_t k = 0; k < edges.size(); ++k) n.edge[edges[k]] = k;
   return n;
+}
+
+EvolutionLabel evolution_label(const semantics::TransitionSystem& ts, semantics::StateView source,
+                               semantics::StateView target) {
+  // The same merge as the graph's successor collector.
+  struct Sink final : semantics::SuccessorSink {
+    semantics::StateView target;
+    EvolutionLabel label;
+    bool seen = false;
+    void successor(const semantics::Successor& s) override {
+      if (!std::equal(s.target.begin(), s.target.end(), target.begin(), target.end())) return;
+      for (const auto& cube : s.condition.cubes)
+        if (std::find(label.condition.cubes.begin(), label.condition.cubes.end(), cube) ==
+            label.condition.cubes.end())
+          label.condition.cubes.push_back(cube);
+      if (!seen || label.fired.empty()) {
+        label.fired.assign(s.fired.begin(), s.fired.end());
+      } else if (!std::equal(label.fired.begin(), label.fired.end(), s.fired.begin(),
+                             s.fired.end())) {
+        std::vector<std::uint32_t> merged;
+        std::set_union(label.fired.begin(), label.fired.end(), s.fired.begin(), s.fired.end(),
+                       std::back_inserter(merged));
+        label.fired = std::move(merged);
+      }
+      seen = true;
+    }
+  } sink;
+  sink.target = target;
+  const std::vector<semantics::StateWord> copy(source.begin(), source.end());
+  ts.successors(copy, sink);
+  return std::move(sink.label);
 }
 
 }  // namespace sfcv::engine

@@ -20,4 +20,15 @@ struct CanonicalNumbering {
 CanonicalNumbering canonical_numbering(const ReachableSituationGraph& g,
                                        const std::vector<std::uint32_t>& sources);
 
+/// The label of the evolution source -> target as the graph stores it: the union of the
+/// conditions of every successor of `source` that reaches `target` (cubes in the order the
+/// semantics gives them) and the union of their fired transitions (sorted). For listing an
+/// evolution found by another engine exactly as the explicit one shows it.
+struct EvolutionLabel {
+  semantics::InputCondition condition;
+  std::vector<std::uint32_t> fired;
+};
+EvolutionLabel evolution_label(const semantics::TransitionSystem& ts, semantics::StateView source,
+                               semantics::StateView target);
+
 }  // namespace sfcv::engine
