@@ -577,5 +577,39 @@ END_PROGRAM
   EXPECT_EQ(compare_on(s, 99, 80), 80);
 }
 
+// A timer and a step duration (pseudo-inputs in abstract time, counters in discrete time),
+// bounded integers with a negative range, timed, stored and pulse qualifiers.
+const char* kTimersAndData = R"(
+PROGRAM Timed
+  VAR_INPUT go, stop : BOOL; level : INT(0..4); END_VAR
+  VAR_OUTPUT lamp, pump : BOOL; count : INT(0..3); END_VAR
+  VAR t1 : TON; n : INT(-2..2); END_VAR
+  INITIAL_STEP Idle: Reset(N); END_STEP
+  STEP Run: lamp(D, T#1s); Work(N); pump(S); END_STEP
+  STEP Wait: pump(R); Tick(P1); END_STEP
+  ACTION Reset: n := 0; END_ACTION
+  ACTION Work:
+    t1(IN := go, PT := T#500ms);
+    IF level > 2 AND n < 2 THEN n := n + 1; ELSIF level = 0 AND n > -2 THEN n := n - 1; END_IF;
+  END_ACTION
+  ACTION Tick: IF count < 3 THEN count := count + 1; END_IF; END_ACTION
+  TRANSITION FROM Idle TO Run := go AND NOT stop; END_TRANSITION
+  TRANSITION FROM Run TO Wait := t1.Q OR Run.T > T#1s; END_TRANSITION
+  TRANSITION FROM Wait TO Idle := stop; END_TRANSITION
+END_PROGRAM
+)";
+
+TEST(SymbolicQueryAgreement, TimersCountersAndData) {
+  for (auto time : {semantics::TimeMode::Abstract, semantics::TimeMode::Discrete}) {
+    SCOPED_TRACE(time == semantics::TimeMode::Abstract ? "abstract time" : "discrete time");
+    semantics::Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 250;
+    const auto s = load(kTimersAndData, options);
+    ASSERT_TRUE(s.ts);
+    EXPECT_EQ(compare_on(s, 5 + static_cast<std::uint64_t>(time), 60), 60);
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::engine
