@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <random>
 #include <set>
@@ -449,6 +450,10 @@ void expect_same_set(logic::Sort sort, const Explicit& x, const DynamicBitset& x
   }
 }
 
+/// Random queries whose answer is a non-empty set, a true test or a non-zero count: the
+/// generator must not only produce trivial queries.
+int g_nontrivial = 0;
+
 /// Evaluates `count` random queries both ways; returns how many were compared.
 int compare_on(const Chart& s, std::uint64_t seed, int count) {
   Explicit x(*s.ts);
@@ -481,6 +486,9 @@ int compare_on(const Chart& s, std::uint64_t seed, int count) {
     const auto a = x.ev.evaluate(q);
     const auto b = y.ev.evaluate(q);
     ++compared;
+    g_nontrivial += a.sort == logic::Sort::Bool ? a.truth
+                    : a.sort == logic::Sort::Int ? a.number != 0
+                                                 : !a.set.none();
     if (a.sort != b.sort) {
       ADD_FAILURE() << "sorts differ: " << text;
       continue;
@@ -500,6 +508,7 @@ int compare_on(const Chart& s, std::uint64_t seed, int count) {
 
 TEST(SymbolicQueryAgreement, RandomChartsAndQueries) {
   int compared = 0;
+  g_nontrivial = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     const auto s = load(bench::random_chart_iec(8 + static_cast<std::uint32_t>(seed % 7), 3, seed));
@@ -507,6 +516,8 @@ TEST(SymbolicQueryAgreement, RandomChartsAndQueries) {
     compared += compare_on(s, seed, 60);
   }
   EXPECT_EQ(compared, 12 * 60);
+  EXPECT_GT(g_nontrivial, compared / 3) << "mostly trivial queries";
+  std::cout << "[ info ] " << g_nontrivial << " of " << compared << " answers are non-trivial\n";
 }
 
 TEST(SymbolicQueryAgreement, NondeterministicConflicts) {
