@@ -82,15 +82,11 @@ Bdd SymbolicSystem::signal(const logic::Signal& s, const std::vector<std::uint32
   using logic::Signal;
   switch (s.op) {
     case Signal::Op::Const: return Bdd::constant(s.value != 0);
-    case Signal::Op::Input: {
-      // A Boolean input is one circuit bit (value - lo with lo = 0).
-      const auto& bits = circuit_.input_bits[s.index];
-      Bdd any = Bdd::constant(false);
-      for (const auto b : bits) any = any | node_bdd(b);
-      const auto lo = ts_.inputs()[s.index].type.lo;
-      if (ts_.inputs()[s.index].type.kind == model::TypeKind::Bool || lo == 0) return any;
-      throw std::invalid_argument("SymbolicSystem::signal: integer input used as a Boolean");
-    }
+    case Signal::Op::Input:
+      // A Boolean input is one circuit bit; an integer one is only ever compared (Cmp).
+      if (ts_.inputs()[s.index].type.kind != model::TypeKind::Bool)
+        throw std::invalid_argument("SymbolicSystem::signal: integer input used as a Boolean");
+      return node_bdd(circuit_.input_bits[s.index].at(0));
     case Signal::Op::Observable: return observable_nonzero(s.index);
     case Signal::Op::StepVar: return observable_nonzero(slots.at(s.index));
     case Signal::Op::Not: return !signal(s.args[0], slots);
