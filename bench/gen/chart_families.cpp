@@ -155,7 +155,8 @@ struct Block {
 
 class RandomChart {
  public:
-  RandomChart(std::uint32_t inputs, std::uint64_t seed) : inputs_(inputs), rng_(seed) {}
+  RandomChart(std::uint32_t inputs, std::uint64_t seed, const RandomChartFeatures& features)
+      : inputs_(inputs), features_(features), rng_(seed) {}
 
   std::unique_ptr<Block> make(std::uint32_t budget, int depth) {
     auto b = std::make_unique<Block>();
@@ -219,15 +220,35 @@ class RandomChart {
     o << "  END_VAR\n  VAR_OUTPUT\n";
     for (std::uint32_t i = 0; i < outputs_; ++i) o << "    " << idx("Q", i) << " : BOOL;\n";
     o << "  END_VAR\n";
+    // The nested chart's action is started by one step and, when stored, reset by another.
+    const std::uint32_t starter = step_count_ > 1 ? 1 + pick(step_count_ - 1) : 0;
+    const std::uint32_t stopper = step_count_ > 1 ? 1 + pick(step_count_ - 1) : 0;
+    const bool stored = pick(2) == 0;
     for (std::uint32_t s = 0; s < step_count_; ++s) {
       o << "  " << (s == 0 ? "INITIAL_STEP" : "STEP") << " S" << s << ":\n";
       if (s > 0 && pick(3) == 0) {
-        static const char* qualifiers[] = {"N", "N", "N", "S", "R", "P1", "P0"};
-        o << "    " << idx("Q", pick(outputs_)) << "(" << qualifiers[pick(7)] << ");\n";
+        static const char* untimed[] = {"N", "N", "N", "S", "R", "P1", "P0"};
+        static const char* timed[] = {"L", "D", "SD", "DS", "SL"};
+        const bool with_time = features_.timed_qualifiers && pick(2) == 0;
+        o << "    " << idx("Q", pick(outputs_)) << "(";
+        if (with_time) o << timed[pick(5)] << ", T#" << 10 * (1 + pick(4)) << "ms";
+        else o << untimed[pick(7)];
+        o << ");\n";
       }
+      if (features_.nested_chart && s == starter) o << "    Sub(" << (stored ? "S" : "N") << ");\n";
+      if (features_.nested_chart && stored && s == stopper && s != starter) o << "    Sub(R);\n";
       o << "  END_STEP\n";
     }
-    o << transitions_.str() << "END_PROGRAM\n";
+    o << transitions_.str();
+    if (features_.nested_chart) {
+      // A three-step loop whose last step writes an output the main chart may also write.
+      o << "  ACTION Sub :\n    INITIAL_STEP U0 : END_STEP\n    STEP U1 : END_STEP\n"
+        << "    STEP U2 : " << idx("Q", pick(outputs_)) << "(N); END_STEP\n"
+        << "    TRANSITION FROM U0 TO U1 := " << guard() << "; END_TRANSITION\n"
+        << "    TRANSITION FROM U1 TO U2 := " << guard() << "; END_TRANSITION\n"
+        << "    TRANSITION FROM U2 TO U0 := " << guard() << "; END_TRANSITION\n  END_ACTION\n";
+    }
+    o << "END_PROGRAM\n";
     return o.str();
   }
 
@@ -253,6 +274,7 @@ class RandomChart {
   }
 
   std::uint32_t inputs_;
+  RandomChartFeatures features_;
   std::uint32_t outputs_ = 3;
   std::uint32_t step_count_ = 1;  // S0 exists
   std::mt19937_64 rng_;
@@ -261,8 +283,9 @@ class RandomChart {
 
 }  // namespace
 
-std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed) {
-  RandomChart chart(inputs, seed);
+std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed,
+                             const RandomChartFeatures& features) {
+  RandomChart chart(inputs, seed, features);
   return chart.text(steps);
 }
 

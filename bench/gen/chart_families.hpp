@@ -21,9 +21,16 @@ std::string tanks_iec(std::uint32_t n, bool flawed);
 /// N nested charts: action A_k of level k holds the chart of level k+1, each a two-step loop.
 std::string nested_charts_iec(std::uint32_t n);
 
+/// What random_chart_iec may use beyond the untimed qualifiers N, S, R, P1 and P0.
+struct RandomChartFeatures {
+  bool timed_qualifiers = false;  ///< also L, D, SD, DS and SL with durations of 10 to 40 ms
+  bool nested_chart = false;      ///< an action holding its own chart, started and stopped by steps
+};
+
 /// A random well-formed chart with `steps` steps (sequences, selection and simultaneous
 /// branches) over `inputs` Boolean inputs, reproducible from `seed`.
-std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed);
+std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed,
+                             const RandomChartFeatures& features = {});
 
 /// An N-station transfer line in the spirit of seed 002's pallet transfer, as a Grafcet `.g7`:
 /// one partial grafcet per station (steps 10i empty, 10i+1 machining, 10i+2 done, 10i+3

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -17,15 +18,16 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/names.hpp"
+#include "report/check_junit.hpp"
 #include "report/check_render.hpp"
 #include "report/trace_render.hpp"
-#include "semantics/grafcet_system.hpp"
-#include "semantics/iec61131_system.hpp"
+#include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 namespace sfcv::cli {
 
@@ -39,18 +41,14 @@ struct CheckOptions {
   std::string checks;  ///< empty: all when no property is given, else none
   std::vector<std::string> fair;
   std::vector<std::string> assume;
-  std::string engine = "explicit";
-  std::string semantics;  ///< empty: from the model's dialect
-  std::vector<std::string> pous;
-  std::string priority = "standard";
-  std::string time = "abstract";
-  std::string cycle = "10ms";
-  bool multi_input_change = false;
+  std::string engine = "auto";
+  SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
+  std::string junit;
   bool quiet = false;
 };
 
@@ -80,12 +78,13 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-// --engine auto: explicit for small charts, BDD beyond kAutoBddBits state bits (where explicit
-// enumeration may reach billions of states) when the BDD engine can answer everything asked.
-constexpr std::uint32_t kAutoBddBits = 40;
+// --engine auto. The explicit engine answers every standard check and counts edges, so it runs
+// first, within kAutoExplicitStates states. Beyond that budget, or when a state cannot be
+// enumerated explicitly (an integer input copied into a variable), the BDD engine takes over if
+// it can answer the task. A time or memory limit of the user's ends the run as it is: unknown.
+constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
-engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
-                                      std::uint32_t state_bits, bool quiet) {
+engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -96,25 +95,47 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
   }
-  if (name == "bdd") {
-    auto bdd = engine::make_bdd_model_checker();
-    if (!bdd->can_handle(task, &why)) throw InputError("sfcv check: " + why);
-    return bdd;
-  }
+  auto checker = name == "bdd" ? engine::make_bdd_model_checker() : engine::make_explicit_model_checker();
+  if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
+  return checker;
+}
+
+logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet) {
+  auto note = [quiet](const std::string& text) {
+    if (!quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
+  };
   auto explicit_engine = engine::make_explicit_model_checker();
-  if (name == "auto" && state_bits > kAutoBddBits) {
-    auto bdd = engine::make_bdd_model_checker();
-    if (bdd->can_handle(task, &why)) {
-      if (!quiet)
-        std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the bdd engine\n";
-      return bdd;
-    }
+  auto bdd = engine::make_bdd_model_checker();
+  std::string why;
+  if (!bdd->can_handle(task, &why)) {
+    note("using the explicit engine (the bdd engine cannot: " + why + ")");
+    return explicit_engine->check(task);
   }
-  if (name == "auto" && !quiet)
-    std::cerr << "sfcv: --engine auto: " << state_bits << " state bits, using the explicit engine"
-              << (why.empty() ? "" : " (" + why + ")") << "\n";
-  if (!explicit_engine->can_handle(task, &why)) throw InputError("sfcv check: " + why);
-  return explicit_engine;
+  if (!explicit_engine->can_handle(task, &why)) {
+    note("using the bdd engine (the explicit engine cannot: " + why + ")");
+    return bdd->check(task);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  logic::CheckTask probe = task;
+  const bool user_bound = task.limits.max_states > 0 && task.limits.max_states <= kAutoExplicitStates;
+  if (!user_bound) probe.limits.max_states = kAutoExplicitStates;
+  try {
+    auto report = explicit_engine->check(probe);
+    if (report.complete || user_bound || report.limit != "states") {
+      note("using the explicit engine");
+      return report;
+    }
+    note("more than " + std::to_string(kAutoExplicitStates) +
+         " states: switching to the bdd engine");
+  } catch (const semantics::SemanticsLimitError& e) {
+    note(std::string(e.what()) + ": switching to the bdd engine");
+  }
+  logic::CheckTask rest = task;
+  if (task.limits.timeout_seconds > 0) {
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
+    rest.limits.timeout_seconds = std::max(0.001, task.limits.timeout_seconds - spent.count());
+  }
+  return bdd->check(rest);
 }
 
 int run_check(const CheckOptions& o) {
@@ -133,35 +154,15 @@ int run_check(const CheckOptions& o) {
     throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  const bool grafcet = o.semantics.empty() ? project.dialect == model::Dialect::Grafcet
-                                           : o.semantics == "grafcet";
-  if (!o.semantics.empty() && o.semantics != "grafcet" && o.semantics != "iec61131")
-    throw InputError("bad --semantics '" + o.semantics + "' (expected grafcet or iec61131)");
-  model::Diagnostics diags;
-  semantics::TransitionSystemPtr ts;
-  const semantics::PriorityMode priority = parse_priority(o.priority);
-  if (grafcet) {
-    semantics::GrafcetOptions opts;
-    opts.single_input_change = !o.multi_input_change;
-    opts.assumptions = logic::assumption_exprs(parsed.spec);
-    ts = semantics::make_grafcet_system(project, opts, diags);
-  } else {
-    semantics::Iec61131Options opts;
-    opts.priority = priority;
-    opts.time = parse_time_mode(o.time);
-    opts.cycle_ms = parse_cycle_ms(o.cycle);
-    opts.pous = o.pous;
-    opts.assumptions = logic::assumption_exprs(parsed.spec);
-    ts = semantics::make_iec61131_system(project, opts, diags);
-  }
-  print_diagnostics(diags, "the model cannot be checked");
-  if (!ts) throw InputError("sfcv check: the model cannot be checked");
+  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
+  const auto& ts = built.system;
 
   logic::CheckTask task;
   task.system = ts.get();
   task.project = &project;
   task.checks = *checks;
-  task.priority_resolves_conflicts = priority == semantics::PriorityMode::Standard;
+  task.priority_resolves_conflicts =
+      built.semantics == "iec61131" && parse_priority(o.system.priority) == semantics::PriorityMode::Standard;
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
@@ -178,10 +179,9 @@ int run_check(const CheckOptions& o) {
       std::fflush(stderr);
     };
 
-  auto checker = choose_engine(o.engine, task, ts->layout().bits(), o.quiet);
   logic::CheckReport result;
   try {
-    result = checker->check(task);
+    result = o.engine == "auto" ? check_auto(task, o.quiet) : choose_engine(o.engine, task)->check(task);
   } catch (const semantics::SemanticsLimitError& e) {
     if (progress_shown) std::cerr << "\n";
     std::cerr << "sfcv: " << e.what() << "\n";
@@ -211,6 +211,11 @@ int run_check(const CheckOptions& o) {
       }
     }
   }
+  if (!o.junit.empty()) {
+    std::ofstream f(o.junit);
+    if (!f) throw InputError(o.junit + ": cannot write the JUnit report");
+    f << report::check_junit(result, *ts, render);
+  }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
   } else {
@@ -235,19 +240,15 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "explicit (default), bdd, auto, or nusmv (a NuSMV on PATH)");
-  sub->add_option("--semantics", opts->semantics, "grafcet or iec61131 (default: from the model)");
-  sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
-  sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");
-  sub->add_option("--time", opts->time, "IEC timers: abstract (default) or discrete");
-  sub->add_option("--cycle", opts->cycle, "IEC cycle time for --time discrete (default 10ms)");
-  sub->add_flag("--multi-input-change", opts->multi_input_change,
-                "Grafcet: several inputs may change at once (default: one per event)");
+  sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, or nusmv (a NuSMV on PATH)");
+  add_system_options(*sub, opts->system);
   sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
   sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
+  sub->add_option("--junit", opts->junit,
+                  "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");

@@ -17,6 +17,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/export_model.hpp"
 #include "io/g7_writer.hpp"
@@ -39,10 +40,7 @@ struct ExportOptions {
   std::string spec;
   std::vector<std::string> assume;
   std::string checks;  ///< empty: reachability when no property is given
-  std::vector<std::string> pous;
-  std::string priority = "standard";
-  std::string time = "abstract";
-  std::string cycle = "10ms";
+  SystemOptions system;
 };
 
 std::string read_text(const std::string& path) {
@@ -72,16 +70,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   if (project.dialect == model::Dialect::Grafcet)
     throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
 
-  semantics::Iec61131Options opts;
-  opts.priority = parse_priority(o.priority);
-  opts.time = parse_time_mode(o.time);
-  opts.cycle_ms = parse_cycle_ms(o.cycle);
-  opts.pous = o.pous;
-  opts.assumptions = logic::assumption_exprs(parsed.spec);
-  model::Diagnostics diags;
-  auto ts = semantics::make_iec61131_system(project, opts, diags);
-  print_or_throw(diags, "the model cannot be exported");
-  if (!ts) throw InputError("sfcv export: the model cannot be exported");
+  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export");
+  const auto& ts = built.system;
 
   logic::CheckTask task;
   task.system = ts.get();
@@ -104,8 +94,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
                 << "' is not exported (only 'reachable' is)\n";
   }
   request.header = {"Exported by sfcv from " + o.model + " (IEC 61131-3 semantics, priority " +
-                    o.priority + ", time " + o.time +
-                    (o.time == "discrete" ? ", cycle " + o.cycle : "") + ")"};
+                    o.system.priority + ", time " + o.system.time +
+                    (o.system.time == "discrete" ? ", cycle " + o.system.cycle : "") + ")"};
   for (const auto& a : parsed.spec.assumptions)
     request.header.push_back("assumption: " + logic::to_string(a.formula));
 
@@ -202,10 +192,7 @@ void add_export_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--checks", opts->checks,
                   "reachable (default without properties) or none: EF X per step (SMV), "
                   "invariant AG !X per step (promela/aiger)");
-  sub->add_option("--pou", opts->pous, "IEC: POU(s) run in one cycle (default: the SFC program)");
-  sub->add_option("--priority", opts->priority, "IEC conflicts: standard (default) or none");
-  sub->add_option("--time", opts->time, "IEC timers: abstract (default) or discrete");
-  sub->add_option("--cycle", opts->cycle, "IEC cycle time for --time discrete (default 10ms)");
+  add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
   sub->callback([opts, &selected] {
     selected = [opts] { return run_export(*opts); };
   });

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -18,17 +19,16 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
-#include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/bdd/bdd_manager.hpp"
 #include "engine/bdd/symbolic_query_evaluator.hpp"
 #include "engine/explicit/canonical_order.hpp"
 #include "engine/explicit/query_evaluator.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
-#include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_circuit.hpp"
-#include "semantics/iec61131_system.hpp"
+#include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 #ifndef SFCV_SHARE_DIR
 #define SFCV_SHARE_DIR ""
@@ -49,17 +49,14 @@ struct QueryOptions {
   bool list = false;
   bool json = false;
   bool assert_empty = false;
-  std::string semantics = "auto";
-  bool multi_input_change = false;
-  std::string priority = "standard";
-  std::vector<std::string> pous;
+  SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
   std::string engine = "explicit";
 };
 
-// --engine auto: as `check`, the symbolic engine beyond this many state bits.
-constexpr std::uint32_t kAutoBddBits = 40;
+// --engine auto: as `sfcv check`, the explicit graph up to this many situations, then BDDs.
+constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
 /// The shipped library: <prefix>/share/sfcv next to an installed binary, else the source tree.
 std::string default_library_path() {
@@ -91,34 +88,6 @@ std::string located(const logic::QueryError& e, const std::string& text,
                                                                         : line_end - line_start);
   out += "\n  " + std::string(e.pos().column > 0 ? e.pos().column - 1 : 0, ' ') + "^";
   return out;
-}
-
-semantics::TransitionSystemPtr build_system(const model::Project& project, const QueryOptions& o,
-                                            std::string& kind) {
-  kind = o.semantics;
-  if (kind == "auto")
-    kind = project.dialect == model::Dialect::Grafcet ? "grafcet" : "iec61131";
-  model::Diagnostics diags;
-  semantics::TransitionSystemPtr ts;
-  if (kind == "grafcet") {
-    semantics::GrafcetOptions g;
-    g.single_input_change = !o.multi_input_change;
-    ts = semantics::make_grafcet_system(project, g, diags);
-  } else if (kind == "iec61131" || kind == "iec") {
-    kind = "iec61131";
-    if (o.multi_input_change)
-      throw InputError("--multi-input-change applies to the Grafcet semantics only");
-    semantics::Iec61131Options i;
-    i.priority = parse_priority(o.priority);
-    i.pous = o.pous;
-    ts = semantics::make_iec61131_system(project, i, diags);
-  } else {
-    throw InputError("unknown --semantics '" + o.semantics +
-                     "' (expected auto, grafcet or iec61131)");
-  }
-  for (const auto& d : diags) std::cerr << d.str() << "\n";
-  if (!ts) throw InputError(o.model + ": the " + kind + " semantics cannot model this chart");
-  return ts;
 }
 
 /// Steps and true Boolean outputs (TransitionSystem::describe), then the other true Boolean
@@ -423,8 +392,9 @@ int run_query(const QueryOptions& o) {
   if (o.model.empty()) throw InputError("a model file is required");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  std::string kind;
-  const auto ts = build_system(project, o, kind);
+  const auto built = build_system(project, o.system, {}, "sfcv query");
+  const auto& ts = built.system;
+  const std::string& kind = built.semantics;
 
   // Compile every query before exploring: name and sort errors come without waiting.
   std::vector<logic::CompiledQuery> compiled;
@@ -460,21 +430,56 @@ int run_query(const QueryOptions& o) {
     }
     if (engine_name == "bdd" && !circuit)
       throw InputError("sfcv query --engine bdd: " + why + " (use --engine explicit)");
-    if (engine_name == "auto") {
-      const auto bits = ts->layout().bits();
-      engine_name = circuit && bits > kAutoBddBits ? "bdd" : "explicit";
-      std::cerr << "sfcv: --engine auto: " << bits << " state bits, using the " << engine_name
-                << " engine" << (why.empty() ? "" : " (" + why + ")") << "\n";
+  }
+
+  // --engine auto, as `sfcv check`: the explicit graph within kAutoExplicitStates situations,
+  // the symbolic engine beyond (or when the semantics cannot enumerate a state explicitly).
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto explore = [&](std::uint64_t max_states) {
+    engine::ExplorationOptions eo;
+    eo.max_states = max_states;
+    eo.timeout_seconds = o.timeout;
+    eo.keep_conditions = true;
+    eo.keep_fired = true;  // Tclear
+    return std::make_unique<ExplicitEngine>(engine::build_reachable_situation_graph(*ts, eo));
+  };
+  std::unique_ptr<ExplicitEngine> explicit_engine;
+  if (engine_name == "auto") {
+    auto note = [](const std::string& text) { std::cerr << "sfcv: --engine auto: " << text << "\n"; };
+    engine_name = "explicit";
+    if (!circuit) {
+      note("using the explicit engine (" + why + ")");
+    } else {
+      const bool user_bound = o.max_states > 0 && o.max_states <= kAutoExplicitStates;
+      try {
+        explicit_engine = explore(user_bound ? o.max_states : kAutoExplicitStates);
+        const auto& g = explicit_engine->graph;
+        if (g.complete() || user_bound || g.limit_reached() != "states") {
+          note("using the explicit engine");
+        } else {
+          note("more than " + std::to_string(kAutoExplicitStates) +
+               " situations: switching to the bdd engine");
+          explicit_engine.reset();
+          engine_name = "bdd";
+        }
+      } catch (const semantics::SemanticsLimitError& e) {
+        note(std::string(e.what()) + ": switching to the bdd engine");
+        engine_name = "bdd";
+      }
     }
   }
 
   QueryEngine qe;
-  std::unique_ptr<ExplicitEngine> explicit_engine;
   std::unique_ptr<SymbolicEngine> symbolic_engine;
   if (engine_name == "bdd") {
     engine::SymbolicQueryOptions so;
     so.max_states = o.max_states;
     so.timeout_seconds = o.timeout;
+    if (o.timeout > 0) {  // what --engine auto spent exploring explicitly counts
+      const std::chrono::duration<double> spent = Clock::now() - start;
+      so.timeout_seconds = std::max(0.001, o.timeout - spent.count());
+    }
     try {
       symbolic_engine = std::make_unique<SymbolicEngine>(*ts, std::move(*circuit), so);
       qe.anomalies = symbolic_engine->anomalies();
@@ -490,13 +495,8 @@ int run_query(const QueryOptions& o) {
     qe.evolutions = static_cast<std::uint64_t>(symbolic_engine->ev.num_evolutions());
     qe.answer = [&](const logic::CompiledQuery& q) { return symbolic_engine->answer(q); };
   } else {
-    engine::ExplorationOptions eo;
-    eo.max_states = o.max_states;
-    eo.timeout_seconds = o.timeout;
-    eo.keep_conditions = true;
-    eo.keep_fired = true;  // Tclear
     try {
-      explicit_engine = std::make_unique<ExplicitEngine>(engine::build_reachable_situation_graph(*ts, eo));
+      if (!explicit_engine) explicit_engine = explore(o.max_states);
     } catch (const semantics::SemanticsLimitError& e) {
       throw InputError(e.what());
     }
@@ -629,14 +629,10 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--assert", opts->assert_empty,
                 "Verdicts: a test must be true, a set must be empty (exit 0 holds, 1 violated, "
                 "3 unknown)");
-  sub->add_option("--semantics", opts->semantics, "auto (default), grafcet or iec61131");
-  sub->add_flag("--multi-input-change", opts->multi_input_change,
-                "Grafcet: let several inputs change at once");
-  sub->add_option("--priority", opts->priority, "IEC: conflicting transitions: standard or none");
-  sub->add_option("--pou", opts->pous, "IEC: the POU(s) to run in one cycle");
+  add_system_options(*sub, opts->system);
   sub->add_option("--engine", opts->engine,
-                  "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto (bdd "
-                  "beyond " + std::to_string(kAutoBddBits) + " state bits)");
+                  "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
+                  "(explicit up to " + std::to_string(kAutoExplicitStates) + " situations, then bdd)");
   sub->add_option("--max-states", opts->max_states, "Stop exploring after N situations");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");

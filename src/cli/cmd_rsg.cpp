@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "engine/bdd/condition_simplifier.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "model/names.hpp"
@@ -29,21 +30,13 @@ namespace {
 struct RsgOptions {
   std::string model;
   std::string format = "auto";
-  std::string semantics;  ///< empty: from the file type
-  bool multi_input_change = false;
+  SystemOptions system;
   bool list = false;
   std::string dot;
   bool json = false;
   std::uint64_t max_states = 0;
   double timeout = 0;
 };
-
-std::string default_semantics(const std::string& path, const model::Project& p) {
-  auto ext = model::to_upper(std::filesystem::path(path).extension().string());
-  if (ext == ".G7" || ext == ".GRAFCET") return "grafcet";
-  if (ext.empty() && p.dialect == model::Dialect::Grafcet) return "grafcet";
-  return "iec61131";
-}
 
 /// "{1,10} x y" -> ("{1,10}", "x y"): the situation and what it emits.
 std::pair<std::string, std::string> split_description(const std::string& d) {
@@ -101,22 +94,9 @@ std::string dot_escape(const std::string& s) {
 
 int run_rsg(const RsgOptions& o) {
   const model::Project project = load_model_or_throw(o.model, parse_format(o.format));
-  const std::string sem = o.semantics.empty() ? default_semantics(o.model, project) : o.semantics;
-  model::Diagnostics diags;
-  semantics::TransitionSystemPtr ts;
-  if (sem == "grafcet") {
-    semantics::GrafcetOptions g;
-    g.single_input_change = !o.multi_input_change;
-    ts = semantics::make_grafcet_system(project, g, diags);
-  } else if (sem == "iec61131") {
-    if (o.multi_input_change)
-      throw InputError("--multi-input-change applies to the Grafcet semantics only");
-    ts = semantics::make_iec61131_system(project, semantics::Iec61131Options{}, diags);
-  } else {
-    throw InputError("unknown semantics '" + sem + "' (expected grafcet or iec61131)");
-  }
-  for (const auto& d : diags) std::cerr << d.str() << "\n";
-  if (!ts) throw InputError(o.model + ": the " + sem + " semantics cannot be built for this model");
+  const auto built = build_system(project, o.system, {}, "sfcv rsg");
+  const auto& ts = built.system;
+  const std::string& sem = built.semantics;
 
   engine::ExplorationOptions eo;
   eo.max_states = o.max_states;
@@ -152,7 +132,7 @@ int run_rsg(const RsgOptions& o) {
     }
   }
 
-  const bool single = sem == "grafcet" && !o.multi_input_change;
+  const bool single = sem == "grafcet" && !o.system.multi_input_change;
   if (o.json) {
     nlohmann::json j;
     j["semantics"] = sem;
@@ -279,11 +259,7 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
-  sub->add_option("--semantics", opts->semantics,
-                  "grafcet or iec61131 (default: grafcet for .g7/.grafcet files, else iec61131)")
-      ->check(CLI::IsMember({"grafcet", "iec61131"}));
-  sub->add_flag("--multi-input-change", opts->multi_input_change,
-                "Grafcet: lift the single-input-change hypothesis");
+  add_system_options(*sub, opts->system);
   sub->add_flag("--list", opts->list, "List every situation and evolution");
   sub->add_option("--dot", opts->dot, "Write the graph as Graphviz to FILE (- for stdout)");
   sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");

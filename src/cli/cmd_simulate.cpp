@@ -16,6 +16,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
 #include "model/names.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -30,10 +31,7 @@ struct SimulateOptions {
   std::string format = "auto";
   std::string inputs;
   std::string vcd;
-  std::vector<std::string> pous;
-  std::string priority = "standard";
-  std::string time = "abstract";
-  std::string cycle = "10ms";
+  SystemOptions system;
   std::string action_order = "declaration";
   std::vector<std::string> assumptions;
   long long max_cycles = -1;
@@ -222,14 +220,11 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
 
 int run_simulate(const SimulateOptions& o) {
   auto project = load_model_or_throw(o.model, parse_format(o.format));
-  semantics::Iec61131Options opts;
-  opts.priority = parse_priority(o.priority);
-  opts.time = parse_time_mode(o.time);
-  opts.cycle_ms = parse_cycle_ms(o.cycle);
-  if (o.action_order == "declaration") opts.action_order = semantics::ActionOrder::Declaration;
-  else if (o.action_order == "alphabetical") opts.action_order = semantics::ActionOrder::Alphabetical;
-  else throw InputError("bad --action-order '" + o.action_order + "' (expected declaration or alphabetical)");
-  opts.pous = o.pous;
+  semantics::ActionOrder action_order = semantics::ActionOrder::Declaration;
+  if (o.action_order == "alphabetical") action_order = semantics::ActionOrder::Alphabetical;
+  else if (o.action_order != "declaration")
+    throw InputError("bad --action-order '" + o.action_order + "' (expected declaration or alphabetical)");
+  std::vector<model::ExprPtr> assumptions;
   for (const auto& a : o.assumptions) {
     model::Diagnostics d;
     model::SourceLocation where;
@@ -238,14 +233,13 @@ int run_simulate(const SimulateOptions& o) {
     auto e = io::parse_st_expression(a, where, d);
     for (const auto& x : d) std::cerr << x.str() << "\n";
     if (!e) throw InputError("bad --assume '" + a + "'");
-    opts.assumptions.push_back(e);
+    assumptions.push_back(e);
   }
   if (project.dialect != model::Dialect::Iec61131)
     throw InputError(o.model + ": 'sfcv simulate' runs IEC 61131-3 charts; this is a Grafcet model");
-  model::Diagnostics diags;
-  auto ts = semantics::make_iec61131_system(project, opts, diags);
-  for (const auto& d : diags) std::cerr << d.str() << "\n";
-  if (!ts) throw InputError(o.model + ": the chart cannot be simulated");
+  const auto built = build_system(project, o.system, assumptions, "sfcv simulate", action_order);
+  const auto& ts = built.system;
+  const std::int64_t cycle_ms = parse_cycle_ms(o.system.cycle);
 
   std::vector<int> shown;
   auto rows = read_trace(o.inputs, *ts, shown);
@@ -284,7 +278,7 @@ int run_simulate(const SimulateOptions& o) {
               << list(c, semantics::ObservableKind::Action) << " | "
               << list(c, semantics::ObservableKind::Variable) << "\n";
   }
-  if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, shown, opts.cycle_ms);
+  if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, shown, cycle_ms);
   if (!r.ok) {
     std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error << "\n";
     return kBadInput;
@@ -308,10 +302,7 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--vcd", opts->vcd, "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
-  sub->add_option("--pou", opts->pous, "POU(s) to run in one cycle, in this order (default: the SFC program)");
-  sub->add_option("--priority", opts->priority, "Conflicting transitions: standard (default) or none");
-  sub->add_option("--time", opts->time, "Timers: abstract (default) or discrete");
-  sub->add_option("--cycle", opts->cycle, "Cycle time for --time discrete (default 10ms)");
+  add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
   sub->add_option("--action-order", opts->action_order, "declaration (default) or alphabetical");
   sub->add_option("--assume", opts->assumptions, "Assumption on inputs and state (ST expression), repeatable");
   sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");

@@ -32,6 +32,9 @@ struct PouScope {
   std::map<std::string, Ref> names;                // upper-case variable names
   std::vector<std::uint32_t> chart_ids;            // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;    // upper name -> global action index
+  // Inputs the POU's own code writes: a field holds the program's copy, loaded from the input
+  // at the start of the POU's cycle (field, input).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> input_copies;
 };
 
 enum class VT { Bool, Int };
@@ -205,6 +208,25 @@ struct Compiler {
         auto it = inputs_by_name.find(up);
         if (it == inputs_by_name.end())
           it = inputs_by_name.emplace(up, add_input(v.name, value_type(v.type), false)).first;
+        if (written.count(model::to_upper(pous[pi]->name) + "|" + up)) {
+          // A PLC reads its inputs into memory at the start of a cycle, and code may overwrite
+          // that memory (a %I variable, or a function block's VAR_INPUT that CODESYS code sets
+          // itself): the write is seen until the next cycle reads the input again.
+          const auto t = value_type(v.type);
+          const bool is_bool = t.kind == TypeKind::Bool;
+          const auto f = add_field(v.name, FieldKind::Variable, t.lo, t.hi,
+                                   v.initial.value_or(std::clamp<std::int64_t>(0, t.lo, t.hi)), is_bool);
+          sc.names[up] = Ref{Ref::Field, f, is_bool};
+          sc.input_copies.emplace_back(f, it->second);
+          Observable o;
+          o.name = v.name;
+          o.aliases = {pous[pi]->name + "." + v.name};
+          o.kind = ObservableKind::Variable;
+          o.type = t;
+          p.observables.push_back(std::move(o));
+          p.observable_refs.push_back(ObservableRef{ObservableKind::Variable, f});
+          continue;
+        }
         sc.names[up] = Ref{Ref::Input, it->second, v.type.kind == TypeKind::Bool};
       }
     }
@@ -399,10 +421,18 @@ struct Compiler {
     VT lt, rt;
     const auto a = expr(sc, *e.args[0], context, lt);
     const auto b = expr(sc, *e.args[1], context, rt);
+    if (lt == VT::Bool) rt = bool_if_literal(*e.args[1], rt);
+    if (rt == VT::Bool) lt = bool_if_literal(*e.args[0], lt);
     if (lt != rt) error(e.where, "'" + model::to_st(e) + "' compares a BOOL with a number");
     else if (lt == VT::Bool && cmp != Op::Eq && cmp != Op::Ne)
       error(e.where, "'" + model::to_st(e) + "': ordering comparison of BOOL values");
     return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, {a, b});
+  }
+
+  // IEC 61131-3 (2.2.1): Boolean data may be written as the integer literals 0 and 1
+  // (Beremiz exports `ORANGE_LIGHT := 1;`). Called only where a BOOL is expected.
+  static VT bool_if_literal(const model::Expr& e, VT t) {
+    return t == VT::Int && e.kind == ExprKind::IntConst && (e.value == 0 || e.value == 1) ? VT::Bool : t;
   }
 
   std::uint32_t expr(const PouScope& sc, const model::Expr& e, int context, VT& type) {
@@ -438,6 +468,7 @@ struct Compiler {
       case ExprKind::Not: case ExprKind::Neg: {
         VT t;
         const auto a = expr(sc, *e.args[0], context, t);
+        if (e.kind == ExprKind::Not) t = bool_if_literal(*e.args[0], t);
         if (e.kind == ExprKind::Not && t != VT::Bool)
           error(e.where, "'" + model::to_st(e) + "': bitwise NOT on integers is not supported");
         if (e.kind == ExprKind::Neg && t != VT::Int) error(e.where, "'" + model::to_st(e) + "': negation of a BOOL");
@@ -449,7 +480,7 @@ struct Compiler {
         for (const auto& a : e.args) {
           VT t;
           kids.push_back(expr(sc, *a, context, t));
-          if (t != VT::Bool)
+          if (bool_if_literal(*a, t) != VT::Bool)
             error(a->where.known() ? a->where : e.where,
                   "'" + model::to_st(e) + "': bitwise AND/OR/XOR on integers is not supported");
         }
@@ -541,13 +572,26 @@ struct Compiler {
     if (!e) return constant(1);
     VT t;
     const auto n = expr(sc, *e, context, t);
-    if (t != VT::Bool) error(e->where.known() ? e->where : where, std::string(what) + " '" + model::to_st(e) + "' is not Boolean");
+    if (bool_if_literal(*e, t) != VT::Bool) error(e->where.known() ? e->where : where, std::string(what) + " '" + model::to_st(e) + "' is not Boolean");
     return n;
   }
 
   // ------------------------------------------------------------------------ statements
-  Block block(const PouScope& sc, const model::StmtList& body) {
+  Block block(const PouScope& sc, const model::StmtList& body,
+              const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies = {}) {
     std::vector<std::uint32_t> items;
+    for (const auto& [field, input] : input_copies) {
+      Stmt copy;
+      copy.op = SOp::Assign;
+      copy.where = sc.pou->where.str();
+      copy.target = field;
+      Node n;
+      n.op = Op::Input;
+      n.a = input;
+      copy.expr = node(n);
+      p.stmts.push_back(copy);
+      items.push_back(static_cast<std::uint32_t>(p.stmts.size() - 1));
+    }
     for (const auto& s : body) items.push_back(stmt(sc, *s));
     Block b;
     b.first = static_cast<std::uint32_t>(p.block_items.size());
@@ -572,6 +616,7 @@ struct Compiler {
                              (it->second.kind == Ref::Input ? "an input" : "a function block instance"));
         } else {
           out.target = it->second.index;
+          if (field_is_bool[out.target] && s.value) t = bool_if_literal(*s.value, t);
           if ((t == VT::Bool) != static_cast<bool>(field_is_bool[out.target]))
             error(s.where, "type mismatch in the assignment to '" + s.target + "'");
         }
@@ -657,10 +702,18 @@ struct Compiler {
                 "PT of '" + s.target + "' must be a constant (a literal or a variable no statement writes)");
           continue;
         }
-        if (fb.pt_set && fb.pt_ms != *pt) {
-          error(s.where, "'" + s.target + "' is called with different PT values; sfcv needs one");
+        // Abstract time only distinguishes PT = 0 (at once) from PT > 0 (some later cycle), so
+        // calls with different positive PTs (CODESYS's PPU) share one timer; discrete time
+        // counts cycles and needs one PT.
+        const bool same_abstract = p.options.time == TimeMode::Abstract && (fb.pt_ms > 0) == (*pt > 0);
+        if (fb.pt_set && fb.pt_ms != *pt && !same_abstract) {
+          error(s.where, "'" + s.target + "' is called with different PT values" +
+                             std::string(p.options.time == TimeMode::Abstract
+                                             ? " (zero and positive)"
+                                             : "; discrete time needs one (--time abstract accepts several positive ones)"));
           continue;
         }
+        if (fb.pt_set) continue;
         fb.pt_ms = *pt;
         fb.pt_set = true;
         continue;
@@ -668,6 +721,7 @@ struct Compiler {
       VT t;
       nodes[i] = static_cast<std::int32_t>(expr(sc, *value, -1, t));
       const bool want_int = up == "PV";
+      if (!want_int) t = bool_if_literal(*value, t);
       if ((t == VT::Int) != want_int)
         error(value->where.known() ? value->where : s.where,
               "input " + name + " of '" + s.target + "' has the wrong type");
@@ -785,7 +839,7 @@ struct Compiler {
     for (auto& sc : scopes) {
       const auto& pou = *sc.pou;
       auto& cp = p.pous[sc.index];
-      cp.body = block(sc, pou.body);
+      cp.body = block(sc, pou.body, sc.input_copies);
       // Action bodies.
       for (const auto& a : pou.actions) {
         auto& ca = p.actions[sc.actions[model::to_upper(a.name)]];

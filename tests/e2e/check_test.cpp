@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "support/sfcv_test.hpp"
@@ -69,6 +71,21 @@ TEST(CheckCommand, TraceFormatsAndReplayWithSimulate) {
   EXPECT_NE(r.out.find("$enddefinitions $end"), std::string::npos);
   r = run_sfcv("check " + kPlant + " --ctl 'AG !(V2 & V4)' --trace json");
   EXPECT_NE(r.out.find("\"active_steps\""), std::string::npos);
+}
+
+TEST(CheckCommand, JunitReportForCi) {
+  const auto xml = write_temp("", ".xml");
+  const auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' "
+                          "--junit '" + xml + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  std::ifstream f(xml);
+  const std::string report((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("<testsuites name=\"sfcv check\" tests=\"2\" failures=\"1\" errors=\"0\""),
+            std::string::npos) << report;
+  EXPECT_NE(report.find("<testcase classname=\"chemical_plant.st.properties\" name=\"AG !(V1 &amp; V3)\""),
+            std::string::npos) << report;
+  EXPECT_NE(report.find("<failure message=\"violated"), std::string::npos) << report;
+  EXPECT_NE(report.find("counterexample ("), std::string::npos) << report;
 }
 
 TEST(CheckCommand, LimitsGiveUnknownNeverHolds) {

@@ -84,3 +84,22 @@ TEST(RsgCli, UnknownSemanticsIsBadUsage) {
 }
 
 }  // namespace
+
+namespace {
+
+// Corpus 22 stabilises its initial situation under every input valuation: hundreds of thousands
+// of initial situations, each with its own condition. A time limit must end the run with
+// "unknown" (exit 3), in rsg and in check; interning the conditions in a fixed-size table used to
+// make it quadratic and ignore the limit.
+TEST(RsgCorpus, TimeLimitEndsTheExplosiveQualityControlPlant) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  const auto rsg = run_sfcv("rsg " + path + " --timeout 2");
+  EXPECT_EQ(rsg.exit_code, 3) << rsg.out << rsg.err;
+  EXPECT_NE(rsg.out.find("time limit"), std::string::npos) << rsg.out;
+  const auto check = run_sfcv("check " + path + " --engine explicit --timeout 2 --checks reachable --trace none");
+  EXPECT_EQ(check.exit_code, 3) << check.out << check.err;
+  EXPECT_NE(check.out.find("unknown"), std::string::npos) << check.out;
+}
+
+}  // namespace

@@ -140,6 +140,21 @@ TEST(EngineAgreement, NondeterministicConflicts) {
   }
 }
 
+TEST(EngineAgreement, TimedQualifiersAndNestedCharts) {
+  bench::RandomChartFeatures features;
+  features.timed_qualifiers = true;
+  features.nested_chart = true;
+  for (std::uint64_t seed = 40; seed <= 49; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    semantics::Iec61131Options options;
+    options.time = seed % 2 == 0 ? semantics::TimeMode::Abstract : semantics::TimeMode::Discrete;
+    const auto s = load(bench::random_chart_iec(12, 3, seed, features), options);
+    ASSERT_TRUE(s.ts);
+    compare_engines(s, seed, false);
+    compare_engines(s, seed + 100, true);
+  }
+}
+
 TEST(EngineAgreement, Families) {
   for (const auto& text : {bench::tanks_iec(2, true), bench::tanks_iec(2, false),
                            bench::nested_charts_iec(3), bench::parallel_branches_iec(5, true),

@@ -141,6 +141,43 @@ TEST(Iec61131Circuit, AgreesWithoutPriorities) {
   }
 }
 
+// Timed qualifiers (L, D, SD, DS, SL) and a nested chart started and stopped by steps, in
+// abstract and in discrete time.
+TEST(Iec61131Circuit, AgreesWithTimedQualifiersAndNesting) {
+  bench::RandomChartFeatures features;
+  features.timed_qualifiers = true;
+  features.nested_chart = true;
+  for (std::uint64_t seed = 40; seed <= 51; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    Iec61131Options options;
+    options.time = seed % 2 == 0 ? TimeMode::Abstract : TimeMode::Discrete;
+    auto ts = system_for(bench::random_chart_iec(12, 3, seed, features), options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, seed);
+  }
+}
+
+// Inputs overwritten by the chart's code (corpus 03/04 and CODESYS's PPU do it) and a timer
+// called with two positive PTs in abstract time.
+TEST(Iec61131Circuit, AgreesOnWrittenInputsAndSharedTimers) {
+  auto ts = system_for(R"(FUNCTION_BLOCK fb
+  VAR_INPUT go : BOOL; n : INT (0..3); END_VAR
+  VAR_OUTPUT seen : BOOL; m : INT (0..3); END_VAR
+  VAR t : TON; IX1 AT %IX1 : BOOL; END_VAR
+  INITIAL_STEP S1 : Force(N); END_STEP
+  STEP S2 : Look(N); END_STEP
+  STEP S3 : END_STEP
+  TRANSITION FROM S1 TO S2 := go AND IX1; END_TRANSITION
+  TRANSITION FROM S2 TO S3 := t.Q OR n = 2; END_TRANSITION
+  TRANSITION FROM S3 TO S1 := t.Q; END_TRANSITION
+  ACTION Force : go := TRUE; IX1 := NOT IX1; t(IN := TRUE, PT := T#1s); END_ACTION
+  ACTION Look : seen := go; n := n + 1; m := n; t(IN := go, PT := T#3s); END_ACTION
+END_FUNCTION_BLOCK
+)");
+  ASSERT_TRUE(ts);
+  expect_agreement(*ts, 3000, 99);
+}
+
 TEST(Iec61131Circuit, AgreesOnFamilies) {
   auto tanks = system_for(bench::tanks_iec(2, true));
   ASSERT_TRUE(tanks);

@@ -105,14 +105,27 @@ ReachableSituationGraph::ReachableSituationGraph(const semantics::TransitionSyst
     : ts_(&ts), states_(ts.layout().words()), fired_somewhere_(ts.transitions().size(), false) {}
 
 std::uint32_t ReachableSituationGraph::intern_condition(const InputCondition& c) {
+  if (2 * (conditions_.size() + 1) > condition_table_.size()) {
+    std::vector<std::uint32_t> table(std::max<std::size_t>(1024, 2 * condition_table_.size()), 0);
+    const std::size_t mask = table.size() - 1;
+    for (std::uint32_t id = 0; id < conditions_.size(); ++id) {
+      std::size_t i = condition_hashes_[id] & mask;
+      while (table[i] != 0) i = (i + 1) & mask;
+      table[i] = id + 1;
+    }
+    condition_table_ = std::move(table);
+  }
   const std::uint64_t h = hash_condition(c);
-  const std::size_t bucket = h % 4099;
-  if (condition_buckets_.empty()) condition_buckets_.resize(4099);
-  for (auto id : condition_buckets_[bucket])
-    if (conditions_[id].cubes == c.cubes) return id;
+  const std::size_t mask = condition_table_.size() - 1;
+  std::size_t i = h & mask;
+  for (; condition_table_[i] != 0; i = (i + 1) & mask) {
+    const auto id = condition_table_[i] - 1;
+    if (condition_hashes_[id] == h && conditions_[id].cubes == c.cubes) return id;
+  }
   conditions_.push_back(c);
+  condition_hashes_.push_back(h);
   const auto id = static_cast<std::uint32_t>(conditions_.size() - 1);
-  condition_buckets_[bucket].push_back(id);
+  condition_table_[i] = id + 1;
   return id;
 }
 

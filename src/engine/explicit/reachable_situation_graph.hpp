@@ -107,7 +107,10 @@ class ReachableSituationGraph {
   std::vector<std::uint64_t> fired_offsets_{0};
   std::vector<std::uint32_t> fired_;
   std::vector<semantics::InputCondition> conditions_;
-  std::vector<std::vector<std::uint32_t>> condition_buckets_;  ///< hash -> condition ids
+  // Interning of conditions: open addressing over condition ids + 1 (0 = empty), grown at half
+  // load, because a Grafcet start can bring millions of distinct conditions (corpus 22).
+  std::vector<std::uint32_t> condition_table_;
+  std::vector<std::uint64_t> condition_hashes_;  ///< per condition id
   std::vector<std::uint32_t> parent_edge_state_;  ///< BFS parent state (kNone for initial)
   std::vector<std::uint64_t> parent_edge_;        ///< BFS parent edge id
   std::vector<std::uint32_t> depth_;

@@ -1,0 +1,46 @@
+#pragma once
+// The options that choose and parametrise the semantics (--semantics, --pou, --priority, --time,
+// --cycle, --multi-input-change), registered and turned into a transition system in one place,
+// so that check, query, rsg, simulate and export build the same system from the same flags.
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "model/chart.hpp"
+#include "model/expr.hpp"
+#include "semantics/options.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::cli {
+
+struct SystemOptions {
+  std::string semantics;  ///< empty or "auto": from the model's dialect
+  std::vector<std::string> pous;
+  std::string priority = "standard";
+  std::string time = "abstract";
+  std::string cycle = "10ms";
+  bool multi_input_change = false;
+};
+
+/// Which semantics a subcommand offers: simulate and the circuit exports run IEC 61131-3 only.
+enum class SemanticsChoice { Both, IecOnly };
+
+void add_system_options(CLI::App& sub, SystemOptions& options,
+                        SemanticsChoice choice = SemanticsChoice::Both);
+
+/// "grafcet" or "iec61131": --semantics, else the model's dialect. Bad values throw InputError.
+std::string chosen_semantics(const model::Project& project, const SystemOptions& options);
+
+struct BuiltSystem {
+  semantics::TransitionSystemPtr system;
+  std::string semantics;  ///< "grafcet" or "iec61131"
+};
+
+/// Builds the system the options describe. Diagnostics go to standard error; a model the
+/// semantics cannot express (or bad option values) throws InputError naming `command`.
+BuiltSystem build_system(const model::Project& project, const SystemOptions& options,
+                         const std::vector<model::ExprPtr>& assumptions, const std::string& command,
+                         semantics::ActionOrder action_order = semantics::ActionOrder::Declaration);
+
+}  // namespace sfcv::cli
