@@ -27,8 +27,11 @@ TEST(QueryBddCli, PrintsWhatTheExplicitEnginePrints) {
   EXPECT_EQ(x.out, b.out);
   EXPECT_NE(b.out.find("(iec61131, complete)"), std::string::npos) << b.out;
   EXPECT_NE(b.out.find("query: Tclear\n"), std::string::npos) << b.out;
-  // The default stays explicit.
+  // The default stays explicit; auto keeps a small chart explicit and says so.
   EXPECT_EQ(run_sfcv("query " + plant() + kQueries).out, x.out);
+  const auto a = run_sfcv("query " + plant() + kQueries + " --engine auto");
+  EXPECT_EQ(a.out, x.out);
+  EXPECT_NE(a.err.find("--engine auto: using the explicit engine"), std::string::npos) << a.err;
 }
 
 TEST(QueryBddCli, JsonAndAssertAgree) {
