@@ -4,7 +4,12 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -16,9 +21,13 @@
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/system_options.hpp"
+#include "engine/bdd/bdd_manager.hpp"
+#include "engine/bdd/symbolic_query_evaluator.hpp"
+#include "engine/explicit/canonical_order.hpp"
 #include "engine/explicit/query_evaluator.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
+#include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 #ifndef SFCV_SHARE_DIR
@@ -43,7 +52,11 @@ struct QueryOptions {
   SystemOptions system;
   std::uint64_t max_states = 0;
   double timeout = 0;
+  std::string engine = "explicit";
 };
+
+// --engine auto: as `sfcv check`, the explicit graph up to this many situations, then BDDs.
+constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
 /// The shipped library: <prefix>/share/sfcv next to an installed binary, else the source tree.
 std::string default_library_path() {
@@ -116,80 +129,224 @@ std::string sort_key(logic::Sort s) {
   return "?";
 }
 
+/// A set ready to print, the same whichever engine computed it: situations numbered by
+/// (breadth-first depth, canonical order), evolutions by (source, target) number, both sorted.
+struct Listing {
+  struct State {
+    std::uint64_t id = 0;
+    std::vector<semantics::StateWord> state;
+  };
+  struct Edge {
+    std::uint64_t id = 0;
+    State source, target;
+    semantics::InputCondition condition;
+    std::vector<std::uint32_t> fired;
+  };
+  logic::Sort sort = logic::Sort::Empty;
+  std::vector<State> states;
+  std::vector<Edge> edges;
+  std::vector<std::uint32_t> steps;
+  std::uint64_t count() const { return states.size() + edges.size() + steps.size(); }
+};
+
 struct Printer {
-  const engine::ReachableSituationGraph& g;
-  const engine::QueryEvaluator& ev;
+  const semantics::TransitionSystem& ts;
   std::uint64_t max_elements = 0;
 
-  std::string state(std::uint64_t s) const {
-    return describe_state(g.system(), g.states().at(static_cast<std::uint32_t>(s)));
+  std::string state(const Listing::State& s) const {
+    return "#" + std::to_string(s.id) + " " + describe_state(ts, s.state);
   }
-  std::string edge(std::uint64_t e) const {
-    return "#" + std::to_string(ev.source(e)) + " " + state(ev.source(e)) + " --[" +
-           g.condition(e).to_string(g.system().inputs()) + "]--> #" +
-           std::to_string(g.target(e)) + " " + state(g.target(e));
+  std::string edge(const Listing::Edge& e) const {
+    return state(e.source) + " --[" + e.condition.to_string(ts.inputs()) + "]--> " +
+           state(e.target);
   }
-  void text(logic::Sort sort, const engine::DynamicBitset& set, std::ostream& out) const {
-    const auto n = set.count();
-    out << "  " << n << " " << sort_noun(sort, n);
-    if (sort == logic::Sort::States && n) {
+  void text(const Listing& l, std::ostream& out) const {
+    const auto n = l.count();
+    out << "  " << n << " " << sort_noun(l.sort, n);
+    if (l.sort == logic::Sort::States && n) {
       // RSG states also hold the input values; say how many situations they are.
       std::set<std::vector<std::uint32_t>> situations;
-      const auto& obs = g.system().observables();
-      set.for_each([&](std::uint64_t i) {
-        const auto st = g.states().at(static_cast<std::uint32_t>(i));
+      const auto& obs = ts.observables();
+      for (const auto& s : l.states) {
         std::vector<std::uint32_t> active;
         for (std::uint32_t o = 0; o < obs.size(); ++o)
-          if (obs[o].kind == semantics::ObservableKind::Step && g.system().observe(st, o))
+          if (obs[o].kind == semantics::ObservableKind::Step && ts.observe(s.state, o))
             active.push_back(o);
         situations.insert(std::move(active));
-      });
+      }
       if (situations.size() != n) out << " (" << situations.size() << " distinct step sets)";
     }
     out << (n ? ":" : "") << "\n";
     std::uint64_t shown = 0;
-    set.for_each([&](std::uint64_t i) {
-      if (max_elements && shown++ >= max_elements) return;
-      switch (sort) {
-        case logic::Sort::States: out << "    #" << i << " " << state(i) << "\n"; break;
-        case logic::Sort::Evolutions: out << "    " << edge(i) << "\n"; break;
-        case logic::Sort::Steps: out << "    " << g.system().observables()[i].name << "\n"; break;
-        default: break;
-      }
-    });
+    auto room = [&] { return !max_elements || shown++ < max_elements; };
+    for (const auto& s : l.states)
+      if (room()) out << "    " << state(s) << "\n";
+    for (const auto& e : l.edges)
+      if (room()) out << "    " << edge(e) << "\n";
+    for (const auto o : l.steps)
+      if (room()) out << "    " << ts.observables()[o].name << "\n";
     if (max_elements && n > max_elements)
       out << "    ... and " << n - max_elements << " more (--max-elements)\n";
   }
-  nlohmann::json json(logic::Sort sort, const engine::DynamicBitset& set) const {
+  nlohmann::json json(const Listing& l) const {
     auto arr = nlohmann::json::array();
-    const auto& ts = g.system();
     const auto& obs = ts.observables();
+    for (const auto& s : l.states) {
+      nlohmann::json steps = nlohmann::json::array(), outputs = nlohmann::json::object();
+      for (std::uint32_t o = 0; o < obs.size(); ++o) {
+        if (obs[o].kind == semantics::ObservableKind::Step) {
+          if (ts.observe(s.state, o)) steps.push_back(obs[o].name);
+        } else if (obs[o].is_output) {
+          outputs[obs[o].name] = ts.observe(s.state, o);
+        }
+      }
+      arr.push_back({{"id", s.id}, {"steps", steps}, {"outputs", outputs}, {"text", state(s)}});
+    }
+    for (const auto& e : l.edges) {
+      nlohmann::json fired = nlohmann::json::array();
+      for (auto t : e.fired) fired.push_back(ts.transitions()[t].name);
+      arr.push_back({{"id", e.id},
+                     {"source", e.source.id},
+                     {"target", e.target.id},
+                     {"condition", e.condition.to_string(ts.inputs())},
+                     {"fired", fired},
+                     {"text", edge(e)}});
+    }
+    for (const auto o : l.steps) arr.push_back(obs[o].name);
+    return arr;
+  }
+};
+
+/// A query's answer, with its sets as listings.
+struct Answer {
+  logic::Sort sort = logic::Sort::Empty;
+  Listing set;
+  bool truth = false;
+  std::int64_t number = 0;
+  std::optional<logic::Sort> witness_sort;
+  Listing witness;
+};
+
+/// What an engine says about the whole graph, and how it answers one query.
+struct QueryEngine {
+  std::uint64_t situations = 0, evolutions = 0;
+  bool complete = true;
+  std::string limit;
+  std::vector<semantics::Anomaly> anomalies;
+  std::function<Answer(const logic::CompiledQuery&)> answer;
+};
+
+/// The explicit engine: the RSG, bitsets, listings in canonical order.
+struct ExplicitEngine {
+  engine::ReachableSituationGraph graph;
+  engine::QueryEvaluator ev;
+  engine::CanonicalNumbering numbering;
+
+  ExplicitEngine(engine::ReachableSituationGraph g)
+      : graph(std::move(g)), ev(graph), numbering(engine::canonical_numbering(graph, ev.sources())) {}
+
+  Listing::State state(std::uint32_t s) const {
+    const auto v = graph.states().at(s);
+    return {numbering.state[s], {v.begin(), v.end()}};
+  }
+  Listing listing(logic::Sort sort, const engine::DynamicBitset& set) const {
+    Listing l;
+    l.sort = sort;
     set.for_each([&](std::uint64_t i) {
       if (sort == logic::Sort::States) {
-        const auto st = g.states().at(static_cast<std::uint32_t>(i));
-        nlohmann::json steps = nlohmann::json::array(), outputs = nlohmann::json::object();
-        for (std::uint32_t o = 0; o < obs.size(); ++o) {
-          if (obs[o].kind == semantics::ObservableKind::Step) {
-            if (ts.observe(st, o)) steps.push_back(obs[o].name);
-          } else if (obs[o].is_output) {
-            outputs[obs[o].name] = ts.observe(st, o);
-          }
-        }
-        arr.push_back({{"id", i}, {"steps", steps}, {"outputs", outputs}, {"text", state(i)}});
+        l.states.push_back(state(static_cast<std::uint32_t>(i)));
       } else if (sort == logic::Sort::Evolutions) {
-        nlohmann::json fired = nlohmann::json::array();
-        for (auto t : g.fired(i)) fired.push_back(ts.transitions()[t].name);
-        arr.push_back({{"id", i},
-                       {"source", ev.source(i)},
-                       {"target", g.target(i)},
-                       {"condition", g.condition(i).to_string(ts.inputs())},
-                       {"fired", fired},
-                       {"text", edge(i)}});
+        const auto f = graph.fired(i);
+        l.edges.push_back({numbering.edge[i], state(ev.source(i)), state(graph.target(i)),
+                           graph.condition(i), {f.begin(), f.end()}});
       } else if (sort == logic::Sort::Steps) {
-        arr.push_back(obs[i].name);
+        l.steps.push_back(static_cast<std::uint32_t>(i));
       }
     });
-    return arr;
+    std::sort(l.states.begin(), l.states.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    std::sort(l.edges.begin(), l.edges.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    return l;
+  }
+  Answer answer(const logic::CompiledQuery& q) {
+    engine::QueryResult r;
+    r = ev.evaluate(q);
+    Answer a;
+    a.sort = r.sort;
+    a.truth = r.truth;
+    a.number = r.number;
+    if (r.sort != logic::Sort::Bool && r.sort != logic::Sort::Int) a.set = listing(r.sort, r.set);
+    a.witness_sort = r.witness_sort;
+    if (r.witness_sort) a.witness = listing(*r.witness_sort, r.witness);
+    return a;
+  }
+};
+
+/// The symbolic engine: BDD sets, enumerated for listing; labels come from the semantics.
+struct SymbolicEngine {
+  static constexpr std::uint64_t kMaxListed = 10'000'000;
+  engine::SymbolicSystem sys;
+  engine::SymbolicQueryEvaluator ev;
+
+  SymbolicEngine(const semantics::TransitionSystem& ts, semantics::TransitionCircuit circuit,
+                 const engine::SymbolicQueryOptions& options)
+      : sys(ts, std::move(circuit)), ev(sys, options) {}
+
+  Listing listing(logic::Sort sort, const engine::SymbolicSet& set) const {
+    const auto& ts = sys.system();
+    Listing l;
+    l.sort = sort;
+    if (sort == logic::Sort::States) {
+      for (auto& s : ev.states_of(set.bdd, kMaxListed))
+        l.states.push_back({ev.state_id(s), std::move(s)});
+    } else if (sort == logic::Sort::Evolutions) {
+      std::map<std::vector<semantics::StateWord>, std::uint64_t> ids;
+      auto id = [&](const std::vector<semantics::StateWord>& s) {
+        auto it = ids.find(s);
+        if (it == ids.end()) it = ids.emplace(s, ev.state_id(s)).first;
+        return it->second;
+      };
+      for (auto& [src, dst] : ev.evolutions_of(set.bdd, kMaxListed)) {
+        auto label = engine::evolution_label(ts, src, dst);
+        l.edges.push_back({ev.evolution_id(src, dst),
+                           {id(src), src},
+                           {id(dst), dst},
+                           std::move(label.condition),
+                           std::move(label.fired)});
+      }
+    } else if (sort == logic::Sort::Steps) {
+      set.steps.for_each([&](std::uint64_t o) { l.steps.push_back(static_cast<std::uint32_t>(o)); });
+    }
+    std::sort(l.states.begin(), l.states.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    std::sort(l.edges.begin(), l.edges.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    return l;
+  }
+  Answer answer(const logic::CompiledQuery& q) {
+    const auto r = ev.evaluate(q);
+    Answer a;
+    a.sort = r.sort;
+    a.truth = r.truth;
+    a.number = r.number;
+    if (r.sort != logic::Sort::Bool && r.sort != logic::Sort::Int) a.set = listing(r.sort, r.set);
+    a.witness_sort = r.witness_sort;
+    if (r.witness_sort) a.witness = listing(*r.witness_sort, r.witness);
+    return a;
+  }
+  /// The anomalies the explicit graph would record: those of the initial states and of every
+  /// reachable situation that raises a range error, from the semantics itself.
+  std::vector<semantics::Anomaly> anomalies() const {
+    struct Sink final : semantics::SuccessorSink {
+      std::vector<semantics::Anomaly> found;
+      void successor(const semantics::Successor&) override {}
+      void anomaly(const semantics::Anomaly& a) override { found.push_back(a); }
+    } sink;
+    const auto& ts = sys.system();
+    ts.initial_states(sink);
+    auto errors = ev.states_of(ev.range_error_states(), kMaxListed);
+    std::vector<std::pair<std::uint64_t, std::vector<semantics::StateWord>>> ordered;
+    for (auto& s : errors) ordered.emplace_back(ev.state_id(s), std::move(s));
+    std::sort(ordered.begin(), ordered.end());
+    for (const auto& [id, s] : ordered) ts.successors(s, sink);
+    return std::move(sink.found);
   }
 };
 
@@ -255,28 +412,111 @@ int run_query(const QueryOptions& o) {
       throw InputError("--assert: '" + it.text + "' is a number; assert a test or a set");
   }
 
-  engine::ExplorationOptions eo;
-  eo.max_states = o.max_states;
-  eo.timeout_seconds = o.timeout;
-  eo.keep_conditions = true;
-  eo.keep_fired = true;  // Tclear
-  engine::ReachableSituationGraph graph = [&] {
+  // The engine: explicit (the RSG) or symbolic (BDDs, IEC 61131-3 only for now).
+  std::string engine_name = o.engine;
+  if (engine_name != "explicit" && engine_name != "bdd" && engine_name != "auto")
+    throw InputError("unknown --engine '" + o.engine + "' (expected explicit, bdd or auto)");
+  std::optional<semantics::TransitionCircuit> circuit;
+  std::string why;
+  if (engine_name != "explicit") {
+    if (ts->kind() != semantics::SemanticsKind::Iec61131) {
+      why = "the BDD engine does not support the Grafcet semantics yet";
+    } else {
+      try {
+        circuit = semantics::build_iec61131_circuit(*ts);
+      } catch (const semantics::CircuitUnsupported& e) {
+        why = std::string("the BDD engine cannot encode ") + e.what();
+      }
+    }
+    if (engine_name == "bdd" && !circuit)
+      throw InputError("sfcv query --engine bdd: " + why + " (use --engine explicit)");
+  }
+
+  // --engine auto, as `sfcv check`: the explicit graph within kAutoExplicitStates situations,
+  // the symbolic engine beyond (or when the semantics cannot enumerate a state explicitly).
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto explore = [&](std::uint64_t max_states) {
+    engine::ExplorationOptions eo;
+    eo.max_states = max_states;
+    eo.timeout_seconds = o.timeout;
+    eo.keep_conditions = true;
+    eo.keep_fired = true;  // Tclear
+    return std::make_unique<ExplicitEngine>(engine::build_reachable_situation_graph(*ts, eo));
+  };
+  std::unique_ptr<ExplicitEngine> explicit_engine;
+  if (engine_name == "auto") {
+    auto note = [](const std::string& text) { std::cerr << "sfcv: --engine auto: " << text << "\n"; };
+    engine_name = "explicit";
+    if (!circuit) {
+      note("using the explicit engine (" + why + ")");
+    } else {
+      const bool user_bound = o.max_states > 0 && o.max_states <= kAutoExplicitStates;
+      try {
+        explicit_engine = explore(user_bound ? o.max_states : kAutoExplicitStates);
+        const auto& g = explicit_engine->graph;
+        if (g.complete() || user_bound || g.limit_reached() != "states") {
+          note("using the explicit engine");
+        } else {
+          note("more than " + std::to_string(kAutoExplicitStates) +
+               " situations: switching to the bdd engine");
+          explicit_engine.reset();
+          engine_name = "bdd";
+        }
+      } catch (const semantics::SemanticsLimitError& e) {
+        note(std::string(e.what()) + ": switching to the bdd engine");
+        engine_name = "bdd";
+      }
+    }
+  }
+
+  QueryEngine qe;
+  std::unique_ptr<SymbolicEngine> symbolic_engine;
+  if (engine_name == "bdd") {
+    engine::SymbolicQueryOptions so;
+    so.max_states = o.max_states;
+    so.timeout_seconds = o.timeout;
+    if (o.timeout > 0) {  // what --engine auto spent exploring explicitly counts
+      const std::chrono::duration<double> spent = Clock::now() - start;
+      so.timeout_seconds = std::max(0.001, o.timeout - spent.count());
+    }
     try {
-      return engine::build_reachable_situation_graph(*ts, eo);
+      symbolic_engine = std::make_unique<SymbolicEngine>(*ts, std::move(*circuit), so);
+      qe.anomalies = symbolic_engine->anomalies();
+    } catch (const engine::SymbolicQueryError& e) {
+      std::cerr << "sfcv query: unknown: " << e.what() << "\n";
+      return kUnknown;
+    } catch (const engine::bdd::BddError& e) {
+      std::cerr << "sfcv query: unknown: the BDD package ran out of resources: " << e.what()
+                << "\n";
+      return kUnknown;
+    }
+    qe.situations = static_cast<std::uint64_t>(symbolic_engine->ev.num_states());
+    qe.evolutions = static_cast<std::uint64_t>(symbolic_engine->ev.num_evolutions());
+    qe.answer = [&](const logic::CompiledQuery& q) { return symbolic_engine->answer(q); };
+  } else {
+    try {
+      if (!explicit_engine) explicit_engine = explore(o.max_states);
     } catch (const semantics::SemanticsLimitError& e) {
       throw InputError(e.what());
     }
-  }();
-  engine::QueryEvaluator ev(graph);
-  const Printer pr{graph, ev, o.max_elements};
+    const auto& graph = explicit_engine->graph;
+    qe.situations = graph.num_states();
+    qe.evolutions = graph.num_edges();
+    qe.complete = graph.complete();
+    qe.limit = graph.limit_reached();
+    qe.anomalies = graph.anomalies();
+    qe.answer = [&](const logic::CompiledQuery& q) { return explicit_engine->answer(q); };
+  }
+  const Printer pr{*ts, o.max_elements};
 
-  const bool complete = graph.complete();
-  const bool exact = complete && graph.anomalies().empty();
+  const bool complete = qe.complete;
+  const bool exact = complete && qe.anomalies.empty();
   if (!complete)
-    std::cerr << "warning: the graph is incomplete (limit reached: " << graph.limit_reached()
+    std::cerr << "warning: the graph is incomplete (limit reached: " << qe.limit
               << "): the sets below are computed on a partial graph and may be wrong in both "
                  "directions\n";
-  for (const auto& a : graph.anomalies())
+  for (const auto& a : qe.anomalies)
     std::cerr << "warning: " << a.message << " (under " << a.condition.to_string(ts->inputs())
               << "): the evolutions it cuts are missing from the graph\n";
 
@@ -284,14 +524,14 @@ int run_query(const QueryOptions& o) {
   if (o.json) {
     jout["model"] = o.model;
     jout["semantics"] = kind;
-    jout["graph"] = {{"situations", graph.num_states()},
-                     {"evolutions", graph.num_edges()},
+    jout["graph"] = {{"situations", qe.situations},
+                     {"evolutions", qe.evolutions},
                      {"complete", complete},
-                     {"limit", graph.limit_reached()},
-                     {"anomalies", graph.anomalies().size()}};
+                     {"limit", qe.limit},
+                     {"anomalies", qe.anomalies.size()}};
     jout["queries"] = nlohmann::json::array();
   } else {
-    std::cout << "graph: " << graph.num_states() << " situations, " << graph.num_edges()
+    std::cout << "graph: " << qe.situations << " situations, " << qe.evolutions
               << " evolutions (" << kind << (complete ? ", complete" : ", INCOMPLETE") << ")\n";
   }
 
@@ -299,17 +539,25 @@ int run_query(const QueryOptions& o) {
   bool any_violated = false, any_unknown = false;
   for (std::size_t i = 0; i < compiled.size(); ++i) {
     const auto& q = compiled[i];
-    engine::QueryResult r;
+    Answer r;
     try {
-      r = ev.evaluate(q);
+      r = qe.answer(q);
     } catch (const engine::QueryEvaluationError& e) {
       throw InputError(items[i].text + ": " + e.what());
+    } catch (const engine::SymbolicQueryError& e) {
+      throw InputError(items[i].text + ": " + e.what());
+    } catch (const std::length_error& e) {
+      throw InputError(items[i].text + ": the set is too large to list (" + e.what() + ")");
+    } catch (const engine::bdd::BddError& e) {
+      std::cerr << "sfcv query: unknown: the BDD package ran out of resources: " << e.what()
+                << "\n";
+      return kUnknown;
     }
     // --assert: a test gives its verdict; a set is asserted empty (library properties are the
     // sets of faulty elements). Only an exact graph gives a verdict.
     std::string verdict;
     if (o.assert_empty) {
-      const bool holds = r.sort == logic::Sort::Bool ? r.truth : r.set.none();
+      const bool holds = r.sort == logic::Sort::Bool ? r.truth : r.set.count() == 0;
       verdict = !exact ? "unknown" : holds ? "holds" : "violated";
       any_violated |= verdict == "violated";
       any_unknown |= verdict == "unknown";
@@ -323,13 +571,13 @@ int run_query(const QueryOptions& o) {
         if (r.witness_sort) {
           jq["witness_sort"] = sort_key(*r.witness_sort);
           jq["count"] = r.witness.count();
-          jq["elements"] = pr.json(*r.witness_sort, r.witness);
+          jq["elements"] = pr.json(r.witness);
         }
       } else if (r.sort == logic::Sort::Int) {
         jq["value"] = r.number;
       } else {
         jq["count"] = r.set.count();
-        jq["elements"] = pr.json(r.sort, r.set);
+        jq["elements"] = pr.json(r.set);
       }
       if (!verdict.empty()) jq["verdict"] = verdict;
       jout["queries"].push_back(jq);
@@ -338,11 +586,11 @@ int run_query(const QueryOptions& o) {
     std::cout << "query: " << items[i].text << "\n";
     if (r.sort == logic::Sort::Bool) {
       std::cout << "  " << (r.truth ? "true" : "false") << "\n";
-      if (r.witness_sort) pr.text(*r.witness_sort, r.witness, std::cout);
+      if (r.witness_sort) pr.text(r.witness, std::cout);
     } else if (r.sort == logic::Sort::Int) {
       std::cout << "  " << r.number << "\n";
     } else {
-      pr.text(r.sort, r.set, std::cout);
+      pr.text(r.set, std::cout);
     }
     if (verdict == "holds") std::cout << "  holds\n";
     if (verdict == "violated")
@@ -382,6 +630,9 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
                 "Verdicts: a test must be true, a set must be empty (exit 0 holds, 1 violated, "
                 "3 unknown)");
   add_system_options(*sub, opts->system);
+  sub->add_option("--engine", opts->engine,
+                  "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
+                  "(explicit up to " + std::to_string(kAutoExplicitStates) + " situations, then bdd)");
   sub->add_option("--max-states", opts->max_states, "Stop exploring after N situations");
   sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");

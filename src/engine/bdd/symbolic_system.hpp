@@ -11,6 +11,7 @@
 
 #include "engine/bdd/bdd_manager.hpp"
 #include "logic/formula.hpp"
+#include "logic/query_compile.hpp"
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
@@ -92,6 +93,37 @@ class SymbolicSystem {
                                            const std::vector<bool>& inputs) const;
 
   std::size_t num_state_variables() const { return current_vars_.size(); }
+
+  // Evolutions, for the query language (symbolic_evolutions.cpp). An evolution is a pair
+  // (x, x') over the current and next variables, as the explicit graph merges all inputs that
+  // lead from x to x' into one edge.
+
+  /// Pairs (x, x') with x in `from` such that some allowed, error-free input satisfying
+  /// `on_inputs` (a BDD over current and input variables) leads from x to x' in one cycle.
+  Bdd evolutions(const Bdd& from, const Bdd& on_inputs = Bdd::constant(true)) const;
+  /// The pairs of `pairs` all of whose allowed, error-free inputs satisfy `on_inputs`.
+  Bdd evolutions_only_under(const Bdd& pairs, const Bdd& on_inputs) const;
+  /// Current and input valuations under which at least one transition fires.
+  Bdd fires_any_under_inputs();
+  Bdd to_next(const Bdd& states) const;      ///< current variables renamed to next ones
+  Bdd to_current(const Bdd& on_next) const;  ///< next variables renamed to current ones
+  Bdd sources(const Bdd& pairs) const;       ///< the x of the pairs
+  Bdd targets(const Bdd& pairs) const;       ///< the x' of the pairs, over current variables
+  /// Number of pairs (exact below 2^53).
+  double count_pairs(const Bdd& pairs) const;
+  /// Whether a BDD mentions circuit input variables.
+  bool depends_on_inputs(const Bdd& f) const;
+  /// States where an observable is non-zero (a step or action is active, a Boolean is true).
+  Bdd observable_nonzero(std::uint32_t observable);
+  /// The current and input valuations where an input/output expression of a query holds;
+  /// `slots` gives the step (observable) bound to each set-builder variable.
+  Bdd signal(const logic::Signal& s, const std::vector<std::uint32_t>& slots);
+  /// Every state of a set, in no particular order; throws std::length_error above `limit`.
+  std::vector<std::vector<semantics::StateWord>> enumerate(const Bdd& states,
+                                                           std::uint64_t limit) const;
+  /// The states that come before `state` in the canonical order (layout fields in order, each
+  /// compared by value), over current variables.
+  Bdd canonically_before(semantics::StateView state) const;
 
  private:
   Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)

@@ -38,6 +38,7 @@ class QueryEvaluator {
 
   /// The upstream situation of an edge.
   std::uint32_t source(std::uint64_t edge) const { return sources_[edge]; }
+  const std::vector<std::uint32_t>& sources() const { return sources_; }
   const ReachableSituationGraph& graph() const { return g_; }
 
  private:
