@@ -443,7 +443,7 @@ Bdd SymbolicSystem::fires_any() {
 
 double SymbolicSystem::count(const Bdd& states) const {
   if (states.is_false()) return 0;
-  if (const auto exact = states.sat_count_exact(current_var_)) return static_cast<double>(*exact);
+  if (const auto exact = states.sat_count_exact(current_vars_)) return static_cast<double>(*exact);
   return std::exp2(states.sat_count_log2(current_cube_));
 }
 
