@@ -686,6 +686,14 @@ const Definition* QueryLibrary::find(std::string_view name) const {
   return it == defs_.end() ? nullptr : &it->second;
 }
 
+const Term* emptiness_tested_set(const Term& t) {
+  if (t.op != Term::Op::SetCmp) return nullptr;
+  const bool left_empty = t.args[0].op == Term::Op::Empty;
+  const bool right_empty = t.args[1].op == Term::Op::Empty;
+  if (left_empty == right_empty) return nullptr;
+  return left_empty ? &t.args[1] : &t.args[0];
+}
+
 CompiledQuery compile_query(const NodePtr& query, const QueryLibrary& library,
                             const semantics::TransitionSystem& ts) {
   Compiler c(library, ts);

@@ -86,6 +86,10 @@ struct CompiledQuery {
   std::uint32_t slots = 0;  ///< set-builder variables (evaluation scratch size)
 };
 
+/// For a test `A = {}` or `A != {}` (either side `{}`): A, whose elements are what a user wants
+/// to see; null for any other term.
+const Term* emptiness_tested_set(const Term& t);
+
 /// Compiles `query` against `ts`. Throws QueryError (unknown names, sort errors, wrong arity).
 CompiledQuery compile_query(const NodePtr& query, const QueryLibrary& library,
                             const semantics::TransitionSystem& ts);

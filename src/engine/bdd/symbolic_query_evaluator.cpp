@@ -50,14 +50,9 @@ SymbolicQueryResult SymbolicQueryEvaluator::evaluate(const logic::CompiledQuery&
     switch (t.sort) {
       case Sort::Bool:
         r.truth = test(t);
-        if (t.op == Term::Op::SetCmp) {
-          const bool left_empty = t.args[0].op == Term::Op::Empty;
-          const bool right_empty = t.args[1].op == Term::Op::Empty;
-          if (left_empty != right_empty) {
-            const Term& a = left_empty ? t.args[1] : t.args[0];
-            r.witness_sort = a.sort;
-            r.witness = set(a);
-          }
+        if (const Term* a = logic::emptiness_tested_set(t)) {
+          r.witness_sort = a->sort;
+          r.witness = set(*a);
         }
         break;
       case Sort::Int: r.number = number(t); break;
