@@ -21,6 +21,7 @@
 #include "logic/check_inputs.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/ctl_task.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -49,47 +50,11 @@ Setup load(const std::string& text, semantics::Iec61131Options options = {},
   return s;
 }
 
-// Random CTL over the chart's step and Boolean output observables.
-class FormulaGenerator {
- public:
-  FormulaGenerator(const semantics::TransitionSystem& ts, std::uint64_t seed) : rng_(seed) {
-    for (const auto& o : ts.observables())
-      if (o.type.kind == model::TypeKind::Bool) atoms_.push_back(o.name);
-  }
-  std::string formula(int depth) {
-    if (depth == 0 || pick(4) == 0) return atom();
-    static const char* unary[] = {"!", "EX ", "AX ", "EF ", "AF ", "EG ", "AG "};
-    static const char* binary[] = {" & ", " | ", " -> "};
-    switch (pick(3)) {
-      case 0: return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
-      case 1: return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
-      default:
-        return std::string(pick(2) ? "E[" : "A[") + formula(depth - 1) + " U " +
-               formula(depth - 1) + "]";
-    }
-  }
-  std::string atom() { return atoms_.empty() ? "TRUE" : atoms_[pick(static_cast<std::uint32_t>(atoms_.size()))]; }
-
- private:
-  std::uint32_t pick(std::uint32_t n) { return static_cast<std::uint32_t>(rng_() % n); }
-  std::mt19937_64 rng_;
-  std::vector<std::string> atoms_;
-};
+using test::FormulaGenerator;
 
 logic::CheckTask task_for(const Setup& s, const std::vector<std::string>& ctl,
                           const std::vector<std::string>& fair) {
-  logic::CheckInputs in;
-  in.ctl = ctl;
-  in.fair = fair;
-  auto parsed = logic::parse_check_inputs(in);
-  for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
-  logic::CheckTask task;
-  task.system = s.ts.get();
-  task.project = &s.project;
-  model::Diagnostics diags;
-  logic::resolve_into(parsed.spec, *s.ts, task, diags);
-  for (const auto& d : diags) ADD_FAILURE() << d.str();
-  return task;
+  return test::task_for(s.project, *s.ts, ctl, fair);
 }
 
 void expect_replays(const semantics::TransitionSystem& ts, const logic::Trace& trace) {

@@ -19,6 +19,7 @@
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/ctl_task.hpp"
 #include "support/grafcet_builder.hpp"
 #include "support/random_grafcet.hpp"
 #include "support/sfcv_test.hpp"
@@ -30,48 +31,12 @@ using test::GrafcetBuilder;
 using model::ExprKind;
 using model::ExprPtr;
 
-class FormulaGenerator {
- public:
-  FormulaGenerator(const semantics::TransitionSystem& ts, std::uint64_t seed) : rng_(seed) {
-    for (const auto& o : ts.observables())
-      if (o.type.kind == model::TypeKind::Bool &&
-          (o.kind == semantics::ObservableKind::Step || o.is_output))
-        atoms_.push_back(o.name);
-  }
-  std::string formula(int depth) {
-    if (depth == 0 || pick(4) == 0) return atom();
-    static const char* unary[] = {"!", "EX ", "AX ", "EF ", "AF ", "EG ", "AG "};
-    static const char* binary[] = {" & ", " | ", " -> "};
-    switch (pick(3)) {
-      case 0: return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
-      case 1: return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
-      default:
-        return std::string(pick(2) ? "E[" : "A[") + formula(depth - 1) + " U " +
-               formula(depth - 1) + "]";
-    }
-  }
-  std::string atom() { return atoms_.empty() ? "TRUE" : atoms_[pick(static_cast<std::uint32_t>(atoms_.size()))]; }
+using test::FormulaGenerator;
+using test::task_for;
 
- private:
-  std::uint32_t pick(std::uint32_t n) { return static_cast<std::uint32_t>(rng_() % n); }
-  std::mt19937_64 rng_;
-  std::vector<std::string> atoms_;
-};
-
-logic::CheckTask task_for(const model::Project& p, const semantics::TransitionSystem& ts,
-                          const std::vector<std::string>& ctl, const std::vector<std::string>& fair) {
-  logic::CheckInputs in;
-  in.ctl = ctl;
-  in.fair = fair;
-  auto parsed = logic::parse_check_inputs(in);
-  for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
-  logic::CheckTask task;
-  task.system = &ts;
-  task.project = &p;
-  model::Diagnostics diags;
-  logic::resolve_into(parsed.spec, ts, task, diags);
-  for (const auto& d : diags) ADD_FAILURE() << d.str();
-  return task;
+// Atoms: steps and outputs (the input memory and internal variables make dull formulas).
+bool step_or_output(const semantics::Observable& o) {
+  return o.kind == semantics::ObservableKind::Step || o.is_output;
 }
 
 /// Replays a trace through the explicit system: its first state is initial, and each row's
@@ -118,7 +83,7 @@ struct Tally {
 
 /// Explicit and BDD reports on the same task: equal states and verdicts, BDD traces replay.
 void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tally) {
-  FormulaGenerator gen(*b.ts, seed);
+  FormulaGenerator gen(*b.ts, seed, step_or_output);
   std::vector<std::string> ctl;
   for (int i = 0; i < 10; ++i) ctl.push_back(gen.formula(3));
   ctl.push_back("AG !(" + gen.atom() + " & " + gen.atom() + ")");
