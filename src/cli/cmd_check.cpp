@@ -52,6 +52,7 @@ struct CheckOptions {
   std::string trace_file;
   std::string junit;
   bool quiet = false;
+  bool all_findings = false;
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -191,6 +192,7 @@ int run_check(const CheckOptions& o) {
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
+  task.max_findings = o.all_findings ? 0 : task.max_findings;
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
   if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
@@ -222,6 +224,7 @@ int run_check(const CheckOptions& o) {
   render.trace = trace_format;
   render.model = o.model;
   render.semantics = std::string(semantics::to_string(ts->kind()));
+  render.cycle_ms = parse_cycle_ms(o.system.cycle);
   if (!o.trace_file.empty()) {
     const logic::Trace* chosen = nullptr;
     for (const auto& r : result.results)
@@ -234,7 +237,7 @@ int run_check(const CheckOptions& o) {
     if (chosen) {
       switch (trace_format) {
         case report::TraceFormat::Json: f << report::trace_json(*chosen, *ts); break;
-        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts); break;
+        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts, {render.cycle_ms}); break;
         case report::TraceFormat::Csv: f << report::trace_csv(*chosen, *ts); break;
         default: f << report::trace_table(*chosen, *ts); break;
       }
@@ -284,6 +287,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--junit", opts->junit,
                   "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
+  sub->add_flag("--all", opts->all_findings,
+                "Every finding of the standard checks (else the first 20 of each, with a count)");
   sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");
   sub->callback([opts, &selected] {
