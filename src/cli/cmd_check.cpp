@@ -26,6 +26,7 @@
 #include "model/names.hpp"
 #include "report/check_junit.hpp"
 #include "report/check_render.hpp"
+#include "report/check_sarif.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
@@ -51,6 +52,7 @@ struct CheckOptions {
   std::string trace = "table";
   std::string trace_file;
   std::string junit;
+  std::string sarif;
   bool quiet = false;
   bool all_findings = false;
 };
@@ -248,6 +250,11 @@ int run_check(const CheckOptions& o) {
     if (!f) throw InputError(o.junit + ": cannot write the JUnit report");
     f << report::check_junit(result, *ts, render);
   }
+  if (!o.sarif.empty()) {
+    std::ofstream f(o.sarif);
+    if (!f) throw InputError(o.sarif + ": cannot write the SARIF report");
+    f << report::check_sarif(result, *ts, &project, render).dump(2) << "\n";
+  }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
   } else {
@@ -286,6 +293,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
   sub->add_option("--junit", opts->junit,
                   "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
+  sub->add_option("--sarif", opts->sarif,
+                  "Also write a SARIF 2.1.0 log there, for code-scanning views (docs/reports.md)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");

@@ -194,5 +194,38 @@ TEST(CheckCommand, FindingsCutWithACountAndAll) {
   EXPECT_NE(r.out.find("X26"), std::string::npos) << r.out;
 }
 
+// SARIF: a rule per check and property, a located result per violation, the trace as a code flow.
+TEST(CheckCommand, SarifLocatesViolationsAndTheirTraces) {
+  const auto sarif = write_temp("", ".sarif");
+  const auto run = run_sfcv("check '" + source_path("examples/chemical_plant/chemical_plant.st") +
+                            "' --quiet --checks local-deadlock --ctl 'AG !(V2 & V4)' --trace none --sarif '" +
+                            sarif + "'");
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  std::ifstream f(sarif);
+  const auto log = nlohmann::json::parse(f);
+  EXPECT_EQ(log["version"], "2.1.0");
+  const auto& rules = log["runs"][0]["tool"]["driver"]["rules"];
+  ASSERT_EQ(rules.size(), 2u);
+  EXPECT_EQ(rules[0]["id"], "property/AG !(V2 & V4)");
+  EXPECT_EQ(rules[1]["id"], "check/local-deadlock");
+  const auto& results = log["runs"][0]["results"];
+  ASSERT_EQ(results.size(), 2u);
+  // The deadlocked step S9 is at line 39, column 3 of the chart.
+  const auto& deadlock = results[1]["locations"][0]["physicalLocation"];
+  EXPECT_EQ(deadlock["artifactLocation"]["uri"], "file://" + source_path("examples/chemical_plant/chemical_plant.st"));
+  EXPECT_EQ(deadlock["region"]["startLine"], 39);
+  EXPECT_EQ(deadlock["region"]["startColumn"], 3);
+  const auto& v2v4 = results[0];
+  EXPECT_EQ(v2v4["level"], "error");
+  const auto& flow = v2v4["codeFlows"][0]["threadFlows"][0]["locations"];
+  ASSERT_GE(flow.size(), 2u);
+  const std::string last = flow.back()["location"]["message"]["text"];
+  EXPECT_NE(last.find("outputs"), std::string::npos) << last;
+  EXPECT_NE(last.find("V2"), std::string::npos) << last;
+  EXPECT_NE(last.find("V4"), std::string::npos) << last;
+  EXPECT_GE(v2v4["relatedLocations"].size(), 3u);
+  EXPECT_GT(v2v4["locations"][0]["physicalLocation"]["region"]["startLine"].get<int>(), 0);
+}
+
 }  // namespace
 }  // namespace sfcv::test
