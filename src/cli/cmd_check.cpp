@@ -25,6 +25,7 @@
 #include "logic/check_inputs.hpp"
 #include "model/names.hpp"
 #include "report/check_junit.hpp"
+#include "report/check_html.hpp"
 #include "report/check_render.hpp"
 #include "report/check_sarif.hpp"
 #include "report/trace_render.hpp"
@@ -53,6 +54,7 @@ struct CheckOptions {
   std::string trace_file;
   std::string junit;
   std::string sarif;
+  std::string html;
   bool quiet = false;
   bool all_findings = false;
 };
@@ -255,6 +257,11 @@ int run_check(const CheckOptions& o) {
     if (!f) throw InputError(o.sarif + ": cannot write the SARIF report");
     f << report::check_sarif(result, *ts, &project, render).dump(2) << "\n";
   }
+  if (!o.html.empty()) {
+    std::ofstream f(o.html);
+    if (!f) throw InputError(o.html + ": cannot write the HTML report");
+    f << report::check_html(report::html_report(report::check_json(result, *ts, render), project, *ts));
+  }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
   } else {
@@ -295,6 +302,9 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
   sub->add_option("--sarif", opts->sarif,
                   "Also write a SARIF 2.1.0 log there, for code-scanning views (docs/reports.md)");
+  sub->add_option("--html", opts->html,
+                  "Also write a self-contained HTML report there: summary, chart, trace player "
+                  "(docs/reports.md)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
