@@ -134,25 +134,29 @@ class ChartPrinter {
     std::string label = model::to_st(tr.guard);
     if (tr.priority) label = "(" + std::to_string(*tr.priority) + ") " + label;
     if (!tr.name.empty()) label = tr.name + ": " + label;
-    out_ << "    " << id
-         << " [id=\"" << id << "\", class=\"transition\", shape=box, style=filled, fillcolor=black, "
-            "height=0.04, width=0.5, label=\"\", xlabel=\""
-         << escape(label) << "\"];\n";
+    // The bar and its guard in one node (an HTML table: the bar cell is the port the edges
+    // meet): the layout then reserves room for the guard, so that guards never overlap, which
+    // external labels (xlabel) placed after the layout did.
+    out_ << "    " << id << " [id=\"" << id
+         << "\", class=\"transition\", shape=plain, label=<<table border=\"0\" cellborder=\"0\" "
+            "cellspacing=\"0\" cellpadding=\"0\"><tr><td port=\"bar\" width=\"36\" height=\"4\" "
+            "fixedsize=\"true\" bgcolor=\"black\"></td><td align=\"left\"> "
+         << html_escape(label) << "</td></tr></table>>];\n";
     // Simultaneous convergence / divergence: a double bar between the steps and the transition.
-    std::string from = id, to = id;
+    std::string from = id + ":bar", to = id + ":bar";
     if (tr.sources.size() > 1) {
       from = id + "join";
       out_ << "    " << from
            << " [shape=box, style=filled, fillcolor=white, peripheries=2, height=0.02, "
               "width=1.0, label=\"\"];\n    "
-           << from << " -> " << id << " [arrowhead=none];\n";
+           << from << " -> " << id << ":bar [arrowhead=none];\n";
     }
     if (tr.targets.size() > 1) {
       to = id + "fork";
       out_ << "    " << to
            << " [shape=box, style=filled, fillcolor=white, peripheries=2, height=0.02, "
               "width=1.0, label=\"\"];\n    "
-           << id << " -> " << to << " [arrowhead=none];\n";
+           << id << ":bar -> " << to << " [arrowhead=none];\n";
     }
     for (const auto& s : tr.sources) {
       const int i = chart.step_index(s);
