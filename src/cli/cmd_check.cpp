@@ -180,10 +180,14 @@ int run_check(const CheckOptions& o) {
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
   const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
-  const auto& ts = built.system;
+  // Inputs and previous values named by a property are kept in the state only then.
+  model::Diagnostics history_diags;
+  const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
+  print_diagnostics(history_diags, "errors in the properties");
+  const semantics::TransitionSystem* ts = history ? history.get() : built.system.get();
 
   logic::CheckTask task;
-  task.system = ts.get();
+  task.system = ts;
   task.project = &project;
   task.checks = *checks;
   task.priority_resolves_conflicts =
