@@ -23,6 +23,7 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/vacuity.hpp"
 #include "model/names.hpp"
 #include "report/check_junit.hpp"
 #include "report/check_render.hpp"
@@ -52,6 +53,7 @@ struct CheckOptions {
   std::string trace_file;
   std::string junit;
   bool quiet = false;
+  bool coverage = false;
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -195,6 +197,10 @@ int run_check(const CheckOptions& o) {
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
+  // AG (a -> f): also ask EF a, to tell a vacuous pass.
+  const auto num_properties = task.properties.size();
+  const auto vacuity = logic::add_vacuity_questions(task);
+  task.coverage = o.coverage;
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
   if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
@@ -221,6 +227,10 @@ int run_check(const CheckOptions& o) {
     return kUnknown;
   }
   if (progress_shown) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  logic::answer_vacuity(result, vacuity, num_properties);
+  if (o.coverage && !result.coverage && !o.quiet)
+    std::cerr << "sfcv: --coverage: the " << result.engine
+              << " engine does not measure coverage (use --engine explicit)\n";
 
   report::RenderOptions render;
   render.trace = trace_format;
@@ -287,8 +297,13 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
   sub->add_option("--junit", opts->junit,
                   "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
+  sub->add_flag("--coverage", opts->coverage,
+                "Also report the steps, transitions and actions the reachable states visit "
+                "(explicit engine)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
-  sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
+  sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
+              "AG (a -> f) reports whether it holds vacuously. Cookbook: docs/properties.md.\n"
+              "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");
   sub->callback([opts, &selected] {
     selected = [opts] { return run_check(*opts); };

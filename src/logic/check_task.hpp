@@ -45,6 +45,8 @@ struct CheckTask {
   /// (PriorityMode::Standard): conflicts are then invisible in the graph.
   bool priority_resolves_conflicts = true;
   CheckLimits limits;
+  /// Also measure the coverage of steps, transitions and actions (explicit engine).
+  bool coverage = false;
 };
 
 }  // namespace sfcv::logic
