@@ -23,6 +23,7 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/vacuity.hpp"
 #include "model/names.hpp"
 #include "report/check_junit.hpp"
 #include "report/check_html.hpp"
@@ -57,6 +58,7 @@ struct CheckOptions {
   std::string html;
   bool quiet = false;
   bool all_findings = false;
+  bool coverage = false;
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -185,10 +187,14 @@ int run_check(const CheckOptions& o) {
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
   const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
-  const auto& ts = built.system;
+  // Inputs and previous values named by a property are kept in the state only then.
+  model::Diagnostics history_diags;
+  const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
+  print_diagnostics(history_diags, "errors in the properties");
+  const semantics::TransitionSystem* ts = history ? history.get() : built.system.get();
 
   logic::CheckTask task;
-  task.system = ts.get();
+  task.system = ts;
   task.project = &project;
   task.checks = *checks;
   task.priority_resolves_conflicts =
@@ -197,6 +203,10 @@ int run_check(const CheckOptions& o) {
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
   task.max_findings = o.all_findings ? 0 : task.max_findings;
+  // AG (a -> f): also ask EF a, to tell a vacuous pass.
+  const auto num_properties = task.properties.size();
+  const auto vacuity = logic::add_vacuity_questions(task);
+  task.coverage = o.coverage;
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
   if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
@@ -223,6 +233,10 @@ int run_check(const CheckOptions& o) {
     return kUnknown;
   }
   if (progress_shown) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  logic::answer_vacuity(result, vacuity, num_properties);
+  if (o.coverage && !result.coverage && !o.quiet)
+    std::cerr << "sfcv: --coverage: the " << result.engine
+              << " engine does not measure coverage (use --engine explicit)\n";
 
   report::RenderOptions render;
   render.trace = trace_format;
@@ -305,10 +319,15 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--html", opts->html,
                   "Also write a self-contained HTML report there: summary, chart, trace player "
                   "(docs/reports.md)");
+  sub->add_flag("--coverage", opts->coverage,
+                "Also report the steps, transitions and actions the reachable states visit "
+                "(explicit engine)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
-  sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
+  sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
+              "AG (a -> f) reports whether it holds vacuously. Cookbook: docs/properties.md.\n"
+              "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");
   sub->callback([opts, &selected] {
     selected = [opts] { return run_check(*opts); };

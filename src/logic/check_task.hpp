@@ -47,6 +47,8 @@ struct CheckTask {
   /// Findings kept per standard check (0 = every one); PropertyResult::findings_total counts all.
   std::size_t max_findings = 20;
   CheckLimits limits;
+  /// Also measure the coverage of steps, transitions and actions (explicit engine).
+  bool coverage = false;
 };
 
 }  // namespace sfcv::logic

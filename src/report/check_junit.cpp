@@ -90,6 +90,9 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
       tc.append_attribute("file") = file.c_str();
       if (from_spec && r.where.line > 0) tc.append_attribute("line") = r.where.line;
     }
+    // A vacuous pass is still a pass; CI servers show system-out with the test case.
+    if (!r.vacuity.empty())
+      tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(r.vacuity.c_str());
     const char* element = nullptr;
     switch (r.verdict) {
       case logic::Verdict::Holds: break;
