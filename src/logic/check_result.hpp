@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "logic/big_count.hpp"
 #include "logic/trace.hpp"
 #include "model/source_location.hpp"
 
@@ -35,8 +36,8 @@ struct PropertyResult {
 
 struct CheckReport {
   std::string engine;      ///< "explicit", "bdd"
-  std::uint64_t states = 0;
-  std::uint64_t edges = 0;
+  BigCount states;          ///< exact, also beyond 2^64 (symbolic engines)
+  BigCount edges;
   bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
   std::uint32_t depth = 0;  ///< BFS depth reached
   bool complete = true;    ///< false when a limit stopped exploration

@@ -144,7 +144,7 @@ class Run {
       rings_.push_back(next);
       frontier_ = next;
     }
-    report.states = static_cast<std::uint64_t>(sys_.count(reached_));
+    report.states = sys_.count_exact(reached_);
     last_count_ = report.states;
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
     sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
@@ -152,7 +152,7 @@ class Run {
 
   std::string limit_message(const logic::CheckReport& report) const {
     return "exploration stopped at the " + report.limit + " limit after " +
-           std::to_string(report.states) + " states";
+           report.states.str() + " states";
   }
 
   /// A shortest run from an initial state into `target` (which must meet the reached states).
@@ -406,7 +406,7 @@ class Run {
         }
         const Bdd dead = report.complete ? reached_ & !live : reached_ & !sys_.has_successor();
         if (!dead.is_false()) {
-          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(dead))) +
+          r.findings.push_back(sys_.count_exact(dead).str() +
                                " reachable situations from which no transition can ever fire, "
                                "e.g. " + ts_.describe(sys_.pick(dead)));
           r.trace = path_to(dead);
@@ -449,7 +449,7 @@ class Run {
         }
         const Bdd bad = reached_ & !back;
         if (!bad.is_false()) {
-          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(bad))) +
+          r.findings.push_back(sys_.count_exact(bad).str() +
                                " reachable situations from which the initial situation cannot "
                                "be reached again, e.g. " + ts_.describe(sys_.pick(bad)));
           r.trace = path_to(bad);
@@ -548,7 +548,7 @@ class Run {
   Bdd reached_;
   Bdd frontier_;  ///< the last ring, not expanded when a limit stopped exploration
   std::vector<Bdd> rings_;
-  std::uint64_t last_count_ = 0;
+  logic::BigCount last_count_;
   std::string failed_;  ///< the BDD package error that ended the run, if any
 };
 

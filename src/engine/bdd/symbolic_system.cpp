@@ -443,11 +443,15 @@ Bdd SymbolicSystem::fires_any() {
 
 double SymbolicSystem::count(const Bdd& states) const {
   if (states.is_false()) return 0;
-  if (const auto exact = states.sat_count_exact(current_vars_)) return static_cast<double>(*exact);
+  if (const auto exact = states.sat_count_u64(current_vars_)) return static_cast<double>(*exact);
   return std::exp2(states.sat_count_log2(current_cube_));
 }
 
-std::optional<std::uint64_t> SymbolicSystem::count_edges(const Bdd& from) const {
+logic::BigCount SymbolicSystem::count_exact(const Bdd& states) const {
+  return states.sat_count_exact(current_vars_);
+}
+
+std::optional<logic::BigCount> SymbolicSystem::count_edges(const Bdd& from) const {
   // Grafcet: the closure computes images, never the pair relation; the count stays unknown
   // rather than wrong.
   if (grafcet_) return std::nullopt;

@@ -76,9 +76,12 @@ class SymbolicSystem {
 
   /// Number of states in `states` (exact below 2^64, else an approximation).
   double count(const Bdd& states) const;
+  /// Number of states in `states`, exactly.
+  logic::BigCount count_exact(const Bdd& states) const;
   /// Number of pairs (s, s') with s in `from` and s' a successor of s: the explicit graph's
-  /// edges (one per source and target); nullopt past 2^64.
-  std::optional<std::uint64_t> count_edges(const Bdd& from) const;
+  /// edges (one per source and target), exactly; nullopt when the engine cannot count them
+  /// (Grafcet).
+  std::optional<logic::BigCount> count_edges(const Bdd& from) const;
   /// One concrete state of a non-empty set.
   std::vector<semantics::StateWord> pick(const Bdd& states) const;
   /// The singleton set of a concrete state.
