@@ -60,6 +60,9 @@ void init_manager(int nodes, int cache, int ratio, int max_nodes) {
   g_failed = false;
   g_reordering_used = false;
   bdd_setcacheratio(ratio > 0 ? ratio : 64);
+  // Grow by doubling (BuDDy's default adds at most 50 000 nodes per resize: a table started
+  // small would be collected and resized thousands of times on a large model).
+  bdd_setmaxincrease(1 << 26);
   bdd_gbc_hook(quiet_gbc);
   bdd_reorder_hook(count_reorder);
   bdd_reorder_verbose(0);

@@ -37,8 +37,8 @@ int allocated_nodes();
 
 /// What one symbolic system asks of the manager.
 struct ManagerOptions {
-  int nodes = 4'000'000;  ///< initial node table
-  int cache = 1'000'000;
+  int nodes = 1 << 16;  ///< initial node table (grows on demand, doubling)
+  int cache = 1 << 14;
   int cache_ratio = 4;
   int max_nodes = 0;      ///< 0 = unlimited; past it an operation throws BddError
 };

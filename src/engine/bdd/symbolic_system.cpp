@@ -486,14 +486,32 @@ Bdd SymbolicSystem::singleton(semantics::StateView state) const {
   return r;
 }
 
+namespace {
+
+// The node table a circuit starts with: a few dozen BDD nodes per circuit node (the relation's
+// conjuncts and the first rings fit without a resize), between 16 K and 1 M nodes.
+SymbolicOptions sized_for(SymbolicOptions o, const Aig& aig) {
+  if (o.nodes <= 0)
+    o.nodes = static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32, 1 << 14, 1 << 20));
+  if (o.cache <= 0) o.cache = std::max(1, o.nodes / 4);
+  // Before any Bdd exists: the members of SymbolicSystem would start the manager with the
+  // default sizing.
+  bdd::configure_manager(o.nodes, o.cache, 4);
+  return o;
+}
+
+}  // namespace
+
 std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::TransitionSystem& ts,
                                                      const SymbolicOptions& options) {
-  // Before any Bdd exists: the members of SymbolicSystem would start the manager with the
-  // default (small) sizing.
-  bdd::configure_manager(options.nodes, options.cache, 4);
-  if (ts.kind() == semantics::SemanticsKind::Grafcet)
-    return std::make_unique<SymbolicSystem>(ts, semantics::build_grafcet_circuit(ts), options);
-  return std::make_unique<SymbolicSystem>(ts, semantics::build_iec61131_circuit(ts), options);
+  if (ts.kind() == semantics::SemanticsKind::Grafcet) {
+    auto circuit = semantics::build_grafcet_circuit(ts);
+    const auto sized = sized_for(options, circuit.aig);
+    return std::make_unique<SymbolicSystem>(ts, std::move(circuit), sized);
+  }
+  auto circuit = semantics::build_iec61131_circuit(ts);
+  const auto sized = sized_for(options, circuit.aig);
+  return std::make_unique<SymbolicSystem>(ts, std::move(circuit), sized);
 }
 
 }  // namespace sfcv::engine

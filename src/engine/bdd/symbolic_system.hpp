@@ -18,8 +18,10 @@
 namespace sfcv::engine {
 
 struct SymbolicOptions {
-  int nodes = 4'000'000;   ///< initial node table (BuDDy grows it on demand)
-  int cache = 1'000'000;
+  /// Initial node table, 0: sized from the circuit (make_symbolic_system). BuDDy grows it on
+  /// demand, doubling; a preallocated 4M-node table cost every run 0.16 s and 220 MB.
+  int nodes = 0;
+  int cache = 0;  ///< operation cache entries, 0: a quarter of the table
   int cluster_nodes = 2'000;  ///< conjuncts are clustered up to about this many nodes
   /// Grafcet: the closure stops with bdd::BddError ("time limit ...") after this many seconds
   /// (0: no limit), so that a check with --timeout ends with unknown.
