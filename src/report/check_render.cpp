@@ -22,6 +22,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
          (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
+  if (report.stopped_early) out += " -- stopped early: every invariant is violated";
   out += "\n";
   std::size_t width = 0;
   for (const auto& r : report.results) width = std::max(width, r.name.size());
@@ -68,6 +69,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["edges"] = report.edges_known ? count(report.edges) : json(nullptr);
   j["depth"] = report.depth;
   j["complete"] = report.complete;
+  j["stopped_early"] = report.stopped_early;
   j["limit"] = report.complete ? json(nullptr) : json(report.limit);
   j["seconds"] = report.seconds;
   j["exit_code"] = logic::exit_code(report);

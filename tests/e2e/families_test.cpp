@@ -174,7 +174,8 @@ TEST(Families, RandomChartsLoadAndEnginesAgree) {
     const auto ex = check(f, "explicit", "AG !(S1 & S2)");
     const auto bdd = check(f, "bdd", "AG !(S1 & S2)");
     EXPECT_GT(ex.states, 1u) << seed;
-    EXPECT_EQ(bdd.states, ex.states) << seed;
+    // (A violated invariant alone may stop the bdd engine early: count with EF, which does not.)
+    EXPECT_EQ(check(f, "bdd", "EF S1").states, ex.states) << seed;
     EXPECT_EQ(bdd.verdict, ex.verdict) << seed;
   }
 }

@@ -75,7 +75,9 @@ class Run {
     report.edges_known = false;
     if (failed_.empty()) {
       try {
-        if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
+        if (report.stopped_early) {
+          // Only rings so far: the edges out of the last one are not known.
+        } else if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
           report.edges = *edges;
           report.edges_known = true;
         }
@@ -107,12 +109,35 @@ class Run {
     return r;
   }
 
+  // The bad states of each property when every property is an invariant AG p (without
+  // fairness: a bad state must then also be fair, which needs the whole set) and no standard
+  // check needs the whole reachable set; empty otherwise.
+  std::vector<Bdd> invariant_bad_states() {
+    std::vector<Bdd> bad;
+    if (!task_.checks.empty() || !task_.fairness.empty()) return {};
+    for (const auto& p : task_.properties) {
+      const auto& f = *p.formula;
+      if (f.op != Op::AG || !logic::is_propositional(*f.args[0])) return {};
+      bad.push_back(!sys_.atom(*f.args[0]));
+    }
+    return bad;
+  }
+
   void explore(logic::CheckReport& report, Clock::time_point start) {
     reached_ = sys_.initial();
     rings_.push_back(reached_);
     frontier_ = reached_;
     const auto& limits = task_.limits;
-    while (!frontier_.is_false()) {
+    // Invariants ring by ring: once each has met a bad state, the rings so far hold a shortest
+    // counterexample for each (path_to) and the rest of the reachable set changes nothing.
+    auto undecided = invariant_bad_states();
+    auto every_invariant_violated = [&](const Bdd& ring) {
+      std::erase_if(undecided, [&](const Bdd& bad) { return !(ring & bad).is_false(); });
+      return undecided.empty() && !task_.properties.empty();
+    };
+    const bool early = !undecided.empty();
+    bool stopped = early && every_invariant_violated(reached_);
+    while (!stopped && !frontier_.is_false()) {
       // Counting walks the whole set: only when a limit or the progress line needs it (a
       // counter chart takes tens of thousands of rings).
       const bool counting = limits.progress || limits.max_states > 0;
@@ -143,7 +168,9 @@ class Run {
       reached_ = reached_ | next;
       rings_.push_back(next);
       frontier_ = next;
+      stopped = early && every_invariant_violated(next);
     }
+    report.stopped_early = stopped;
     report.states = sys_.count_exact(reached_);
     last_count_ = report.states;
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
@@ -200,7 +227,7 @@ class Run {
     const auto& f = p.formula;
     const bool ag = f->op == Op::AG && logic::is_propositional(*f->args[0]);
     const bool ef = f->op == Op::EF && logic::is_propositional(*f->args[0]);
-    if (!report.complete) {
+    if (!report.complete || report.stopped_early) {
       r.verdict = Verdict::Unknown;
       r.message = limit_message(report);
       // Reached states are real: a bad one refutes AG p, a good one proves EF p.
