@@ -141,11 +141,11 @@ class Run {
       // Counting walks the whole set: only when a limit or the progress line needs it (a
       // counter chart takes tens of thousands of rings).
       const bool counting = limits.progress || limits.max_states > 0;
-      const double states = counting ? sys_.count(reached_) : 0;
-      if (counting) last_count_ = static_cast<std::uint64_t>(states);
+      if (counting) last_count_ = sys_.count_exact(reached_);
+      const double states = counting ? last_count_.to_double() : 0;
       if (limits.progress) {
         logic::Progress p;
-        p.states = static_cast<std::uint64_t>(states);
+        p.states = last_count_.to_u64().value_or(~std::uint64_t{0});
         p.depth = static_cast<std::uint32_t>(rings_.size() - 1);
         p.seconds = since(start);
         limits.progress(p);

@@ -14,10 +14,28 @@ using semantics::Aig;
 using semantics::AigLit;
 using Bdd = bdd::Bdd;
 
+namespace {
+
+// The node table a circuit starts with when the options leave it at 0: a few dozen BDD nodes
+// per circuit node (the relation's conjuncts and the first rings fit without a resize),
+// between 16 K and 1 M nodes.
+bdd::ManagerOptions manager_options(const SymbolicOptions& o, const Aig& aig) {
+  bdd::ManagerOptions m;
+  m.nodes = o.nodes > 0 ? o.nodes
+                        : static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32,
+                                                                   1 << 14, 1 << 20));
+  m.cache = o.cache > 0 ? o.cache : std::max(1, m.nodes / 4);
+  m.cache_ratio = 4;
+  m.max_nodes = o.max_nodes;
+  return m;
+}
+
+}  // namespace
+
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(std::move(circuit)) {
-  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
+  bdd::start_manager(manager_options(options, circuit_.aig));
   bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
   const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
@@ -155,7 +173,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::GrafcetCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(circuit) {
-  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
+  bdd::start_manager(manager_options(options, circuit_.aig));
   bdd::reset_operation_caches();
   grafcet_circuit_ = std::make_unique<semantics::GrafcetCircuit>(std::move(circuit));
   const semantics::GrafcetCircuit& gc = *grafcet_circuit_;
@@ -486,32 +504,21 @@ Bdd SymbolicSystem::singleton(semantics::StateView state) const {
   return r;
 }
 
-namespace {
-
-// The node table a circuit starts with: a few dozen BDD nodes per circuit node (the relation's
-// conjuncts and the first rings fit without a resize), between 16 K and 1 M nodes.
-SymbolicOptions sized_for(SymbolicOptions o, const Aig& aig) {
-  if (o.nodes <= 0)
-    o.nodes = static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32, 1 << 14, 1 << 20));
-  if (o.cache <= 0) o.cache = std::max(1, o.nodes / 4);
-  // Before any Bdd exists: the members of SymbolicSystem would start the manager with the
-  // default sizing.
-  bdd::configure_manager(o.nodes, o.cache, 4);
-  return o;
-}
-
-}  // namespace
-
 std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::TransitionSystem& ts,
                                                      const SymbolicOptions& options) {
+  // Before any Bdd exists (a member's VarMap would start the manager with the default sizing).
+  auto configure = [&options](const Aig& aig) {
+    const auto m = manager_options(options, aig);
+    bdd::configure_manager(m.nodes, m.cache, m.cache_ratio);
+  };
   if (ts.kind() == semantics::SemanticsKind::Grafcet) {
     auto circuit = semantics::build_grafcet_circuit(ts);
-    const auto sized = sized_for(options, circuit.aig);
-    return std::make_unique<SymbolicSystem>(ts, std::move(circuit), sized);
+    configure(circuit.aig);
+    return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
   }
   auto circuit = semantics::build_iec61131_circuit(ts);
-  const auto sized = sized_for(options, circuit.aig);
-  return std::make_unique<SymbolicSystem>(ts, std::move(circuit), sized);
+  configure(circuit.aig);
+  return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
 }
 
 }  // namespace sfcv::engine
