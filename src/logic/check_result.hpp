@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "logic/big_count.hpp"
 #include "logic/trace.hpp"
 #include "model/source_location.hpp"
 
@@ -50,10 +51,13 @@ struct Coverage {
 
 struct CheckReport {
   std::string engine;      ///< "explicit", "bdd"
-  std::uint64_t states = 0;
-  std::uint64_t edges = 0;
+  BigCount states;          ///< exact, also beyond 2^64 (symbolic engines)
+  BigCount edges;
   bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
-  std::uint32_t depth = 0;  ///< BFS depth reached
+  std::uint32_t depth = 0;  ///< BFS depth reached (the rings computed, less one)
+  /// Every property was an invariant and each met a bad state before the reachable set was
+  /// complete (bdd engine): states, edges and depth count the rings explored, edges unknown.
+  bool stopped_early = false;
   bool complete = true;    ///< false when a limit stopped exploration
   std::string limit;       ///< "states", "time", "memory" when !complete
   double seconds = 0;      ///< exploration plus checking

@@ -72,7 +72,7 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   property("model", options.model);
   property("semantics", options.semantics);
   property("engine", report.engine);
-  property("states", std::to_string(report.states));
+  property("states", report.states.str());
   property("complete", report.complete ? "true" : "false");
   if (!report.complete) property("limit", report.limit);
 

@@ -24,10 +24,11 @@ std::string findings_cut_note(const logic::PropertyResult& r) {
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
-  out += std::to_string(report.states) + " states, " +
-         (report.edges_known ? std::to_string(report.edges) + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
+  out += report.states.str() + " states, " +
+         (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
+  if (report.stopped_early) out += " -- stopped early: every invariant is violated";
   out += "\n";
   if (const auto& c = report.coverage) {
     out += "coverage: " + std::to_string(c->steps_visited) + "/" + std::to_string(c->steps) +
@@ -75,10 +76,16 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["model"] = options.model;
   j["semantics"] = options.semantics;
   j["engine"] = report.engine;
-  j["states"] = report.states;
-  j["edges"] = report.edges_known ? json(report.edges) : json(nullptr);
+  // A number while it fits in 64 bits (JSON readers take those exactly), else a decimal string.
+  auto count = [](const logic::BigCount& c) {
+    const auto small = c.to_u64();
+    return small ? json(*small) : json(c.str());
+  };
+  j["states"] = count(report.states);
+  j["edges"] = report.edges_known ? count(report.edges) : json(nullptr);
   j["depth"] = report.depth;
   j["complete"] = report.complete;
+  j["stopped_early"] = report.stopped_early;
   j["limit"] = report.complete ? json(nullptr) : json(report.limit);
   j["seconds"] = report.seconds;
   j["exit_code"] = logic::exit_code(report);

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -195,6 +197,88 @@ TEST(CheckNusmv, MapsVerdictLinesBackToTheProperties) {
   EXPECT_NE(r.out.substr(v13, v24 - v13).find("\"holds\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.substr(v24).find("\"violated\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"nusmv\""), std::string::npos) << r.out;
+}
+
+// A stand-in NuSMV in `dir` printing `script` (a shell script body); PATH points at it while
+// `args` run.
+RunResult run_with_fake_nusmv(const std::string& script, const std::string& args) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() / ("sfcv-fake-nusmv-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream f(dir / "NuSMV");
+    f << "#!/bin/sh\n" << script;
+  }
+  fs::permissions(dir / "NuSMV", fs::perms::owner_all);
+  {
+    std::ofstream f(dir / "small.st");
+    f << "PROGRAM Small\n  VAR_INPUT go : BOOL; stop : BOOL; END_VAR\n"
+         "  INITIAL_STEP Idle: END_STEP\n  STEP Run: END_STEP\n"
+         "  TRANSITION FROM Idle TO Run := go AND NOT stop; END_TRANSITION\n"
+         "  TRANSITION FROM Run TO Idle := stop; END_TRANSITION\nEND_PROGRAM\n";
+  }
+  const char* old = std::getenv("PATH");
+  const std::string saved = old ? old : "";
+  ::setenv("PATH", dir.c_str(), 1);
+  auto r = run_sfcv("check '" + (dir / "small.st").string() + "' " + args);
+  ::setenv("PATH", saved.c_str(), 1);
+  fs::remove_all(dir);
+  return r;
+}
+
+// NuSMV's counterexample (values printed only when they change) replayed into sfcv's table.
+TEST(CheckNusmv, MapsTheCounterexampleBackToTheTraceTable) {
+  const auto r = run_with_fake_nusmv(
+      "echo '-- invariant !(o_Small_Run)  is false'\n"
+      "echo '-- as demonstrated by the following execution sequence'\n"
+      "echo 'Trace Type: Counterexample '\n"
+      "echo '  -> State: 1.1 <-'\n"
+      "echo '    s_Small_Idle = TRUE'\n"
+      "echo '  -> Input: 1.2 <-'\n"
+      "echo '    in_go = FALSE'\n"
+      "echo '    in_stop = FALSE'\n"
+      "echo '  -> State: 1.2 <-'\n"
+      "echo '  -> Input: 1.3 <-'\n"
+      "echo '    in_go = TRUE'\n"
+      "echo '  -> State: 1.3 <-'\n"
+      "echo '    s_Small_Idle = FALSE'\n"
+      "echo '    s_Small_Run = TRUE'\n",
+      "--engine nusmv --checks none --ctl 'AG !Run' --json");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& p = j.at("properties").at(0);
+  EXPECT_EQ(p.at("verdict"), "violated") << r.out;
+  ASSERT_TRUE(p.contains("trace")) << r.out;
+  const auto& steps = p.at("trace").at("steps");
+  ASSERT_EQ(steps.size(), 3u) << r.out;
+  EXPECT_NE(steps.at(2).dump().find("\"go\":true"), std::string::npos) << steps.dump();
+  EXPECT_NE(steps.at(1).dump().find("\"go\":false"), std::string::npos) << steps.dump();
+}
+
+// A trace that does not replay (go never rises, so Run is never entered) is not shown as one.
+TEST(CheckNusmv, SaysSoWhenItsTraceDoesNotReplay) {
+  const auto r = run_with_fake_nusmv(
+      "echo '-- invariant !(o_Small_Run)  is false'\n"
+      "echo '  -> State: 1.1 <-'\n"
+      "echo '  -> Input: 1.2 <-'\n"
+      "echo '    in_go = FALSE'\n"
+      "echo '  -> State: 1.2 <-'\n",
+      "--engine nusmv --checks none --ctl 'AG !Run'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.out.find("counterexample ("), std::string::npos) << r.out;
+}
+
+// NuSMV's own error line, not the last 400 bytes of its output.
+TEST(CheckNusmv, ReportsNusmvsErrorLine) {
+  const auto r = run_with_fake_nusmv(
+      "echo '*** This is NuSMV 2.6.0'\n"
+      "echo 'file model.smv: line 40: multiple declaration of identifier: s_x'\nexit 1\n",
+      "--engine nusmv --checks none --ctl 'AG !Run'");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("NuSMV gave no verdict for every property (exit code 1): file model.smv: "
+                       "line 40: multiple declaration of identifier: s_x"),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -44,25 +44,44 @@ TEST(NusmvExport, DeclaresInputsAsIvarAndPropertiesAsSpecs) {
             "IVAR\n"
             "  in_x : boolean;  -- input x\n"
             "VAR\n"
-            "  MAIN_q : boolean;  -- step MAIN.q ready\n"
-            "  p : boolean;  -- latch p\n"
-            "  r : boolean;  -- latch r\n"
+            "  s_MAIN_q : boolean;  -- step MAIN.q ready\n"
+            "  s_p : boolean;  -- latch p\n"
+            "  s_r : boolean;  -- latch r\n"
             "DEFINE\n"
-            "  g5 := in_x & r;\n"
-            "  g6 := MAIN_q & p;\n"
-            "  g7 := MAIN_q & !p;\n"
-            "  both := g6;  -- both\n"
+            "  g_5 := in_x & s_r;\n"
+            "  g_6 := s_MAIN_q & s_p;\n"
+            "  g_7 := s_MAIN_q & !s_p;\n"
+            "  o_MAIN_q := s_MAIN_q;  -- MAIN.q\n"
+            "  o_both := g_6;  -- both\n"
             "ASSIGN\n"
-            "  init(MAIN_q) := FALSE;\n"
-            "  next(MAIN_q) := in_x;\n"
-            "  init(p) := FALSE;\n"
-            "  next(p) := MAIN_q;\n"
-            "  init(r) := FALSE;\n"
-            "  next(r) := g5;\n"
-            "INVARSPEC NAME just_rose := !(g7);\n"
-            "INVARSPEC NAME r_2 := !(r);\n"
-            "CTLSPEC NAME q_reachable := EF MAIN_q;\n"
-            "CTLSPEC NAME both_2 := AG !both;\n");
+            "  init(s_MAIN_q) := FALSE;\n"
+            "  next(s_MAIN_q) := in_x;\n"
+            "  init(s_p) := FALSE;\n"
+            "  next(s_p) := s_MAIN_q;\n"
+            "  init(s_r) := FALSE;\n"
+            "  next(s_r) := g_5;\n"
+            "INVARSPEC NAME p_just_rose := !(g_7);\n"
+            "INVARSPEC NAME p_r := !(s_r);\n"
+            "CTLSPEC NAME p_q_reachable := EF o_MAIN_q;\n"
+            "CTLSPEC NAME p_both := AG !o_both;\n");
+}
+
+// A latch, an output and a property all called "p", and an output that is a latch's negation
+// under the latch's own name (a nested step's activity): one identifier each.
+TEST(NusmvExport, GivesEveryKindOfBitItsOwnIdentifier) {
+  CircuitExport m;
+  const auto x = m.aig.add_input("p");
+  const auto p = m.aig.add_latch("p");
+  m.aig.set_next(0, x);
+  m.aig.add_output("p", Aig::make_not(p));
+  m.aig.add_bad("p", p);
+  m.ctl = {{"p", "EF {p}"}};
+  std::ostringstream out;
+  write_nusmv(out, m);
+  const std::string s = out.str();
+  for (const char* line : {"  in_p : boolean;", "  s_p : boolean;", "  o_p := !s_p;",
+                           "INVARSPEC NAME p_p := !(s_p);", "CTLSPEC NAME p_p_2 := EF o_p;"})
+    EXPECT_NE(s.find(line), std::string::npos) << line << "\n" << s;
 }
 
 TEST(CasmvExport, UsesTheSeedsDefaultCaseForm) {
@@ -70,17 +89,17 @@ TEST(CasmvExport, UsesTheSeedsDefaultCaseForm) {
   write_casmv(out, follower(false));
   const std::string s = out.str();
   EXPECT_NE(s.find("module main()\n{\n  input in_x : boolean;  -- input x\n"), std::string::npos) << s;
-  EXPECT_NE(s.find("  default next(MAIN_q) := MAIN_q;\n  in case {\n"
-                   "    ~MAIN_q & in_x : next(MAIN_q) := 1;\n"
-                   "    MAIN_q & ~in_x : next(MAIN_q) := 0;\n  }\n"),
+  EXPECT_NE(s.find("  default next(s_MAIN_q) := s_MAIN_q;\n  in case {\n"
+                   "    ~s_MAIN_q & in_x : next(s_MAIN_q) := 1;\n"
+                   "    s_MAIN_q & ~in_x : next(s_MAIN_q) := 0;\n  }\n"),
             std::string::npos)
       << s;
   // r can only be reset: its set condition r & x under r = 0 folds to FALSE.
-  EXPECT_NE(s.find("  default next(r) := r;\n  in case {\n    r & ~in_x : next(r) := 0;\n  }\n"),
+  EXPECT_NE(s.find("  default next(s_r) := s_r;\n  in case {\n    s_r & ~in_x : next(s_r) := 0;\n  }\n"),
             std::string::npos)
       << s;
-  EXPECT_NE(s.find("just_rose : assert G ~g7;"), std::string::npos) << s;
-  EXPECT_NE(s.find("SPEC EF (MAIN_q);  -- q_reachable"), std::string::npos) << s;
+  EXPECT_NE(s.find("p_just_rose : assert G ~g_7;"), std::string::npos) << s;
+  EXPECT_NE(s.find("SPEC EF (s_MAIN_q);  -- q_reachable"), std::string::npos) << s;
 }
 
 TEST(PromelaExport, RefusesInvariantsThatReadInputs) {
@@ -94,10 +113,10 @@ TEST(PromelaExport, KeepsOnlyLatchesInTheStateVector) {
   std::ostringstream out;
   write_promela(out, follower(true), 0);
   const std::string s = out.str();
-  EXPECT_NE(s.find("bit MAIN_q = 0;"), std::string::npos) << s;
+  EXPECT_NE(s.find("bit s_MAIN_q = 0;"), std::string::npos) << s;
   EXPECT_NE(s.find("hidden byte in_x;"), std::string::npos);
-  EXPECT_NE(s.find("assert(!(g7));"), std::string::npos) << s;
-  EXPECT_EQ(s.find("assert(!(r));"), std::string::npos);  // only the chosen property
+  EXPECT_NE(s.find("assert(!(g_7));"), std::string::npos) << s;
+  EXPECT_EQ(s.find("assert(!(s_r));"), std::string::npos);  // only the chosen property
   EXPECT_NE(s.find("goto end_excluded"), std::string::npos);
 }
 
@@ -111,7 +130,8 @@ TEST(PromelaExport, AvoidsTheNamesOfSpinsGeneratedVerifier) {
   m.aig.add_bad("q", q);
   std::ostringstream out;
   write_promela(out, m, 0);
-  EXPECT_NE(out.str().find("bit Q0_2 = 0;"), std::string::npos) << out.str();
+  // (The s_ prefix of latches keeps them apart from those names; the reserved list stays.)
+  EXPECT_NE(out.str().find("bit s_Q0 = 0;"), std::string::npos) << out.str();
   const auto spin = find_spin();
   if (!spin) GTEST_SKIP() << "spin not installed";
   const auto v = check_with_spin(*spin, m, 0);

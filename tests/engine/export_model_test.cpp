@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <sstream>
 
 #include "engine/external/nusmv_runner.hpp"
@@ -179,6 +180,55 @@ Trace Type: Counterexample
   const auto v = parse_nusmv_output(text);
   EXPECT_EQ(v.ctl, (std::vector<bool>{true, false}));
   EXPECT_EQ(v.invariants, (std::vector<bool>{true, false}));
+  ASSERT_EQ(v.ctl_traces.size(), 2u);
+  EXPECT_FALSE(v.ctl_traces[0]);
+  ASSERT_TRUE(v.ctl_traces[1]);
+  EXPECT_EQ(v.ctl_traces[1]->states, 1u);
+  EXPECT_TRUE(v.errors.empty());
+}
+
+TEST(NusmvOutput, ReadsTracesWithCarriedOverInputsAndLoops) {
+  // NuSMV prints only the values that changed; a lasso marks its loop state.
+  const std::string text = R"(-- specification AG (s_x -> AF s_y)  is false
+-- as demonstrated by the following execution sequence
+Trace Description: CTL Counterexample
+Trace Type: Counterexample
+  -> State: 1.1 <-
+    s_x = FALSE
+  -> Input: 1.2 <-
+    in_a = TRUE
+    in_b = FALSE
+  -- Loop starts here
+  -> State: 1.2 <-
+    s_x = TRUE
+  -> Input: 1.3 <-
+    in_b = TRUE
+  -> State: 1.3 <-
+  -> Input: 1.4 <-
+    in_a = FALSE
+  -> State: 1.4 <-
+-- invariant !(g_3)  is true
+)";
+  const auto v = parse_nusmv_output(text);
+  ASSERT_EQ(v.ctl_traces.size(), 1u);
+  ASSERT_TRUE(v.ctl_traces[0]);
+  const auto& t = *v.ctl_traces[0];
+  EXPECT_EQ(t.states, 4u);
+  EXPECT_EQ(t.loop_start, std::optional<std::size_t>(1));
+  ASSERT_EQ(t.inputs.size(), 3u);
+  EXPECT_EQ(t.inputs[0], (std::map<std::string, bool>{{"in_a", true}, {"in_b", false}}));
+  EXPECT_EQ(t.inputs[1], (std::map<std::string, bool>{{"in_a", true}, {"in_b", true}}));
+  EXPECT_EQ(t.inputs[2], (std::map<std::string, bool>{{"in_a", false}, {"in_b", true}}));
+  EXPECT_EQ(v.invariants, (std::vector<bool>{true}));
+}
+
+TEST(NusmvOutput, KeepsErrorLines) {
+  const auto v = parse_nusmv_output(
+      "*** This is NuSMV 2.6.0\n"
+      "file model.smv: line 40: multiple declaration of identifier: P_A3_N1\n");
+  EXPECT_TRUE(v.ctl.empty());
+  EXPECT_EQ(v.errors, (std::vector<std::string>{
+                          "file model.smv: line 40: multiple declaration of identifier: P_A3_N1"}));
 }
 
 }  // namespace

@@ -60,6 +60,9 @@ void init_manager(int nodes, int cache, int ratio, int max_nodes) {
   g_failed = false;
   g_reordering_used = false;
   bdd_setcacheratio(ratio > 0 ? ratio : 64);
+  // Grow by doubling (BuDDy's default adds at most 50 000 nodes per resize: a table started
+  // small would be collected and resized thousands of times on a large model).
+  bdd_setmaxincrease(1 << 26);
   bdd_gbc_hook(quiet_gbc);
   bdd_reorder_hook(count_reorder);
   bdd_reorder_verbose(0);
@@ -240,7 +243,7 @@ int Bdd::value_in_cube(int var) const {
 }
 double Bdd::sat_count_log2(const Bdd& vars) const { return bdd_satcountlnset(root_, vars.root_); }
 
-std::optional<std::uint64_t> Bdd::sat_count_exact(const std::vector<int>& vars) const {
+std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) const {
   // below[l]: how many counted variables lie above level l. count(n) counts the assignments of
   // the counted variables at or below n's level; a skipped counted variable doubles it.
   __extension__ typedef unsigned __int128 Wide;
@@ -289,6 +292,44 @@ std::optional<std::uint64_t> Bdd::sat_count_exact(const std::vector<int>& vars) 
   if (overflow || total > limit) return std::nullopt;
   return static_cast<std::uint64_t>(total);
 }
+logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
+  if (const auto small = sat_count_u64(vars)) return *small;
+  // As sat_count_u64, with big integers: counted[l] marks the levels of `vars`, above[l] how
+  // many of them lie above level l.
+  const int levels = bdd_varnum();
+  std::vector<int> above(static_cast<std::size_t>(levels) + 1, 0);
+  std::vector<char> counted(static_cast<std::size_t>(levels), 0);
+  for (int v : vars) counted[static_cast<std::size_t>(bdd_var2level(v))] = 1;
+  for (int l = 0; l < levels; ++l) above[l + 1] = above[l] + counted[l];
+  auto level = [&](int n) { return n <= 1 ? levels : bdd_var2level(bdd_var(n)); };
+  auto scale = [&](const logic::BigCount& c, int from_level, int to_level) {
+    return c.shifted_left(static_cast<unsigned>(above[to_level] - above[from_level]));
+  };
+  std::unordered_map<int, logic::BigCount> memo;
+  auto value = [&](int c) { return c <= 1 ? logic::BigCount(static_cast<std::uint64_t>(c)) : memo.at(c); };
+  std::vector<int> stack{root_};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    if (n <= 1 || memo.count(n)) {
+      stack.pop_back();
+      continue;
+    }
+    const int lo = bdd_low(n), hi = bdd_high(n);
+    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
+    if (!lo_done || !hi_done) {
+      if (!lo_done) stack.push_back(lo);
+      if (!hi_done) stack.push_back(hi);
+      continue;
+    }
+    const int l = level(n);
+    auto sum = scale(value(lo), l + 1, level(lo));
+    sum += scale(value(hi), l + 1, level(hi));
+    memo.emplace(n, std::move(sum));
+    stack.pop_back();
+  }
+  return scale(value(root_), 0, level(root_));
+}
+
 int Bdd::node_count() const { return bdd_nodecount(root_); }
 
 VarMap::VarMap() : pair_(nullptr) {

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <optional>
+
+#include "logic/big_count.hpp"
 #include <stdexcept>
 #include <vector>
 
@@ -35,8 +37,8 @@ int allocated_nodes();
 
 /// What one symbolic system asks of the manager.
 struct ManagerOptions {
-  int nodes = 4'000'000;  ///< initial node table
-  int cache = 1'000'000;
+  int nodes = 1 << 16;  ///< initial node table (grows on demand, doubling)
+  int cache = 1 << 14;
   int cache_ratio = 4;
   int max_nodes = 0;      ///< 0 = unlimited; past it an operation throws BddError
 };
@@ -130,7 +132,10 @@ class Bdd {
   double sat_count_log2(const Bdd& vars) const;
   /// The exact number of assignments of `vars` (every variable *this mentions must be among
   /// them) that satisfy *this; nullopt when it does not fit in 64 bits.
-  std::optional<std::uint64_t> sat_count_exact(const std::vector<int>& vars) const;
+  std::optional<std::uint64_t> sat_count_u64(const std::vector<int>& vars) const;
+  /// The same count exactly, of any size (64-bit arithmetic first, big integers when that
+  /// overflows).
+  logic::BigCount sat_count_exact(const std::vector<int>& vars) const;
   int node_count() const;
   bool operator==(const Bdd& o) const { return root_ == o.root_; }
   bool operator!=(const Bdd& o) const { return root_ != o.root_; }

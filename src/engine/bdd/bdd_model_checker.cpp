@@ -75,7 +75,9 @@ class Run {
     report.edges_known = false;
     if (failed_.empty()) {
       try {
-        if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
+        if (report.stopped_early) {
+          // Only rings so far: the edges out of the last one are not known.
+        } else if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
           report.edges = *edges;
           report.edges_known = true;
         }
@@ -107,20 +109,43 @@ class Run {
     return r;
   }
 
+  // The bad states of each property when every property is an invariant AG p (without
+  // fairness: a bad state must then also be fair, which needs the whole set) and no standard
+  // check needs the whole reachable set; empty otherwise.
+  std::vector<Bdd> invariant_bad_states() {
+    std::vector<Bdd> bad;
+    if (!task_.checks.empty() || !task_.fairness.empty()) return {};
+    for (const auto& p : task_.properties) {
+      const auto& f = *p.formula;
+      if (f.op != Op::AG || !logic::is_propositional(*f.args[0])) return {};
+      bad.push_back(!sys_.atom(*f.args[0]));
+    }
+    return bad;
+  }
+
   void explore(logic::CheckReport& report, Clock::time_point start) {
     reached_ = sys_.initial();
     rings_.push_back(reached_);
     frontier_ = reached_;
     const auto& limits = task_.limits;
-    while (!frontier_.is_false()) {
+    // Invariants ring by ring: once each has met a bad state, the rings so far hold a shortest
+    // counterexample for each (path_to) and the rest of the reachable set changes nothing.
+    auto undecided = invariant_bad_states();
+    auto every_invariant_violated = [&](const Bdd& ring) {
+      std::erase_if(undecided, [&](const Bdd& bad) { return !(ring & bad).is_false(); });
+      return undecided.empty() && !task_.properties.empty();
+    };
+    const bool early = !undecided.empty();
+    bool stopped = early && every_invariant_violated(reached_);
+    while (!stopped && !frontier_.is_false()) {
       // Counting walks the whole set: only when a limit or the progress line needs it (a
       // counter chart takes tens of thousands of rings).
       const bool counting = limits.progress || limits.max_states > 0;
-      const double states = counting ? sys_.count(reached_) : 0;
-      if (counting) last_count_ = static_cast<std::uint64_t>(states);
+      if (counting) last_count_ = sys_.count_exact(reached_);
+      const double states = counting ? last_count_.to_double() : 0;
       if (limits.progress) {
         logic::Progress p;
-        p.states = static_cast<std::uint64_t>(states);
+        p.states = last_count_.to_u64().value_or(~std::uint64_t{0});
         p.depth = static_cast<std::uint32_t>(rings_.size() - 1);
         p.seconds = since(start);
         limits.progress(p);
@@ -143,8 +168,10 @@ class Run {
       reached_ = reached_ | next;
       rings_.push_back(next);
       frontier_ = next;
+      stopped = early && every_invariant_violated(next);
     }
-    report.states = static_cast<std::uint64_t>(sys_.count(reached_));
+    report.stopped_early = stopped;
+    report.states = sys_.count_exact(reached_);
     last_count_ = report.states;
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
     sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
@@ -152,7 +179,7 @@ class Run {
 
   std::string limit_message(const logic::CheckReport& report) const {
     return "exploration stopped at the " + report.limit + " limit after " +
-           std::to_string(report.states) + " states";
+           report.states.str() + " states";
   }
 
   /// A shortest run from an initial state into `target` (which must meet the reached states).
@@ -200,7 +227,7 @@ class Run {
     const auto& f = p.formula;
     const bool ag = f->op == Op::AG && logic::is_propositional(*f->args[0]);
     const bool ef = f->op == Op::EF && logic::is_propositional(*f->args[0]);
-    if (!report.complete) {
+    if (!report.complete || report.stopped_early) {
       r.verdict = Verdict::Unknown;
       r.message = limit_message(report);
       // Reached states are real: a bad one refutes AG p, a good one proves EF p.
@@ -406,7 +433,7 @@ class Run {
         }
         const Bdd dead = report.complete ? reached_ & !live : reached_ & !sys_.has_successor();
         if (!dead.is_false()) {
-          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(dead))) +
+          r.findings.push_back(sys_.count_exact(dead).str() +
                                " reachable situations from which no transition can ever fire, "
                                "e.g. " + ts_.describe(sys_.pick(dead)));
           r.trace = path_to(dead);
@@ -449,7 +476,7 @@ class Run {
         }
         const Bdd bad = reached_ & !back;
         if (!bad.is_false()) {
-          r.findings.push_back(std::to_string(static_cast<std::uint64_t>(sys_.count(bad))) +
+          r.findings.push_back(sys_.count_exact(bad).str() +
                                " reachable situations from which the initial situation cannot "
                                "be reached again, e.g. " + ts_.describe(sys_.pick(bad)));
           r.trace = path_to(bad);
@@ -548,7 +575,7 @@ class Run {
   Bdd reached_;
   Bdd frontier_;  ///< the last ring, not expanded when a limit stopped exploration
   std::vector<Bdd> rings_;
-  std::uint64_t last_count_ = 0;
+  logic::BigCount last_count_;
   std::string failed_;  ///< the BDD package error that ended the run, if any
 };
 

@@ -14,10 +14,28 @@ using semantics::Aig;
 using semantics::AigLit;
 using Bdd = bdd::Bdd;
 
+namespace {
+
+// The node table a circuit starts with when the options leave it at 0: a few dozen BDD nodes
+// per circuit node (the relation's conjuncts and the first rings fit without a resize),
+// between 16 K and 1 M nodes.
+bdd::ManagerOptions manager_options(const SymbolicOptions& o, const Aig& aig) {
+  bdd::ManagerOptions m;
+  m.nodes = o.nodes > 0 ? o.nodes
+                        : static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32,
+                                                                   1 << 14, 1 << 20));
+  m.cache = o.cache > 0 ? o.cache : std::max(1, m.nodes / 4);
+  m.cache_ratio = 4;
+  m.max_nodes = o.max_nodes;
+  return m;
+}
+
+}  // namespace
+
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(std::move(circuit)) {
-  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
+  bdd::start_manager(manager_options(options, circuit_.aig));
   bdd::reset_operation_caches();
   const Aig& aig = circuit_.aig;
   const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
@@ -155,7 +173,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::GrafcetCircuit circuit, const SymbolicOptions& options)
     : ts_(ts), circuit_(circuit) {
-  bdd::start_manager({options.nodes, options.cache, 4, options.max_nodes});
+  bdd::start_manager(manager_options(options, circuit_.aig));
   bdd::reset_operation_caches();
   grafcet_circuit_ = std::make_unique<semantics::GrafcetCircuit>(std::move(circuit));
   const semantics::GrafcetCircuit& gc = *grafcet_circuit_;
@@ -443,11 +461,15 @@ Bdd SymbolicSystem::fires_any() {
 
 double SymbolicSystem::count(const Bdd& states) const {
   if (states.is_false()) return 0;
-  if (const auto exact = states.sat_count_exact(current_vars_)) return static_cast<double>(*exact);
+  if (const auto exact = states.sat_count_u64(current_vars_)) return static_cast<double>(*exact);
   return std::exp2(states.sat_count_log2(current_cube_));
 }
 
-std::optional<std::uint64_t> SymbolicSystem::count_edges(const Bdd& from) const {
+logic::BigCount SymbolicSystem::count_exact(const Bdd& states) const {
+  return states.sat_count_exact(current_vars_);
+}
+
+std::optional<logic::BigCount> SymbolicSystem::count_edges(const Bdd& from) const {
   // Grafcet: the closure computes images, never the pair relation; the count stays unknown
   // rather than wrong.
   if (grafcet_) return std::nullopt;
@@ -484,12 +506,19 @@ Bdd SymbolicSystem::singleton(semantics::StateView state) const {
 
 std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::TransitionSystem& ts,
                                                      const SymbolicOptions& options) {
-  // Before any Bdd exists: the members of SymbolicSystem would start the manager with the
-  // default (small) sizing.
-  bdd::configure_manager(options.nodes, options.cache, 4);
-  if (ts.kind() == semantics::SemanticsKind::Grafcet)
-    return std::make_unique<SymbolicSystem>(ts, semantics::build_grafcet_circuit(ts), options);
-  return std::make_unique<SymbolicSystem>(ts, semantics::build_iec61131_circuit(ts), options);
+  // Before any Bdd exists (a member's VarMap would start the manager with the default sizing).
+  auto configure = [&options](const Aig& aig) {
+    const auto m = manager_options(options, aig);
+    bdd::configure_manager(m.nodes, m.cache, m.cache_ratio);
+  };
+  if (ts.kind() == semantics::SemanticsKind::Grafcet) {
+    auto circuit = semantics::build_grafcet_circuit(ts);
+    configure(circuit.aig);
+    return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
+  }
+  auto circuit = semantics::build_iec61131_circuit(ts);
+  configure(circuit.aig);
+  return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
 }
 
 }  // namespace sfcv::engine

@@ -11,17 +11,28 @@ using semantics::AigLit;
 
 namespace {
 
+// One naming scheme for every kind of bit: each kind has a prefix of its own (in_ inputs, s_
+// latches, g_ gates, o_ outputs, p_ properties, a_ assumptions) that no other kind's identifiers start with, so
+// identifiers of different kinds never meet (a nested step's ready latch and its activity
+// output once did); within a kind, chart names that sanitize alike get _2, _3 (IdentifierTable).
+constexpr const char* kInputPrefix = "in_";
+constexpr const char* kLatchPrefix = "s_";
+constexpr const char* kGatePrefix = "g_";
+constexpr const char* kOutputPrefix = "o_";
+constexpr const char* kPropertyPrefix = "p_";
+constexpr const char* kAssumptionPrefix = "a_";
+
 // Names of every node of the circuit in a target language.
 struct Naming {
   std::vector<std::string> node;  ///< per node: identifier, "" for the constant
   IdentifierTable ids;
 
-  Naming(const Aig& aig, std::unordered_set<std::string> reserved, const std::string& input_prefix)
+  Naming(const Aig& aig, std::unordered_set<std::string> reserved)
       : node(aig.nodes().size()), ids(std::move(reserved)) {
-    for (const auto& in : aig.inputs()) node[Aig::node_of(in.literal)] = ids.get(input_prefix, in.name);
-    for (const auto& l : aig.latches()) node[Aig::node_of(l.current)] = ids.get("", l.name);
+    for (const auto& in : aig.inputs()) node[Aig::node_of(in.literal)] = ids.get(kInputPrefix, in.name);
+    for (const auto& l : aig.latches()) node[Aig::node_of(l.current)] = ids.get(kLatchPrefix, l.name);
     for (std::size_t n = 1; n < aig.nodes().size(); ++n)
-      if (aig.nodes()[n].kind == Aig::NodeKind::And) node[n] = ids.get("g", std::to_string(n));
+      if (aig.nodes()[n].kind == Aig::NodeKind::And) node[n] = ids.get(kGatePrefix, std::to_string(n));
   }
 
   std::string lit(AigLit l, const char* t, const char* f, const char* neg) const {
@@ -50,18 +61,11 @@ const std::unordered_set<std::string> kPromelaReserved = {
     "xr", "xs", "true", "false", "local", "show", "c_code", "c_decl", "c_expr", "c_state",
     "c_track", "ltl", "select", "for", "in", "eval", "trace", "notrace", "inline", "np_"};
 
-// The identifier of each circuit output: the latch's own name when the output is exactly a
-// latch (a variable, a step's ready bit), else a name of its own for its DEFINE.
+// The identifier of each circuit output: always a DEFINE of its own, also when the output is
+// exactly a latch.
 std::vector<std::string> output_identifiers(const Aig& aig, Naming& names) {
   std::vector<std::string> ids;
-  for (const auto& o : aig.outputs()) {
-    const auto& n = aig.nodes()[Aig::node_of(o.literal)];
-    if (!Aig::is_negated(o.literal) && n.kind == Aig::NodeKind::Latch &&
-        aig.latches()[n.index].name == o.name)
-      ids.push_back(names.node[Aig::node_of(o.literal)]);
-    else
-      ids.push_back(names.ids.get("", o.name));
-  }
+  for (const auto& o : aig.outputs()) ids.push_back(names.ids.get(kOutputPrefix, o.name));
   return ids;
 }
 
@@ -109,9 +113,16 @@ void comment_lines(std::ostream& out, const std::vector<std::string>& lines, con
 
 }  // namespace
 
+std::vector<std::string> nusmv_input_identifiers(const CircuitExport& model) {
+  const Naming names(model.aig, kNusmvReserved);
+  std::vector<std::string> ids;
+  for (const auto& in : model.aig.inputs()) ids.push_back(names.node[Aig::node_of(in.literal)]);
+  return ids;
+}
+
 void write_nusmv(std::ostream& out, const CircuitExport& m) {
   const Aig& aig = m.aig;
-  Naming names(aig, kNusmvReserved, "in_");
+  Naming names(aig, kNusmvReserved);
   auto lit = [&names](AigLit l) { return names.lit(l, "TRUE", "FALSE", "!"); };
   comment_lines(out, m.header, "-- ");
   out << "MODULE main\n";
@@ -136,8 +147,6 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   IdentifierTable& ids = names.ids;
   const auto output_ids = output_identifiers(aig, names);
   for (std::size_t o = 0; o < aig.outputs().size(); ++o)
-    if (output_ids[o] != names.node[Aig::node_of(aig.outputs()[o].literal)] ||
-        Aig::is_negated(aig.outputs()[o].literal))
       out << "  " << output_ids[o] << " := " << lit(aig.outputs()[o].literal) << ";  -- "
           << aig.outputs()[o].name << "\n";
   if (!aig.latches().empty()) out << "ASSIGN\n";
@@ -149,9 +158,9 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   for (const auto& c : aig.constraints())
     out << "TRANS " << lit(c.literal) << "  -- assumption " << c.name << "\n";
   for (const auto& b : aig.bad())
-    out << "INVARSPEC NAME " << ids.fresh("", b.name) << " := !(" << lit(b.literal) << ");\n";
+    out << "INVARSPEC NAME " << ids.fresh(kPropertyPrefix, b.name) << " := !(" << lit(b.literal) << ");\n";
   for (const auto& [name, formula] : m.ctl)
-    out << "CTLSPEC NAME " << ids.fresh("", name) << " := "
+    out << "CTLSPEC NAME " << ids.fresh(kPropertyPrefix, name) << " := "
         << resolve_outputs(formula, aig, output_ids) << ";\n";
 }
 
@@ -164,8 +173,7 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
                            Aig::make_not(aig.cofactor(l.next, l.current, true)));
   Naming names(aig, {"module", "input", "output", "init", "next", "default", "in", "case",
                      "assert", "using", "prove", "boolean", "if", "else", "switch", "for",
-                     "G", "F", "X", "U", "SPEC"},
-               "in_");
+                     "G", "F", "X", "U", "SPEC"});
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "~"); };
   comment_lines(out, m.header, "-- ");
   out << "module main()\n{\n";
@@ -198,11 +206,12 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
     out << "  }\n";
   }
   IdentifierTable& ids = names.ids;
-  for (const auto& c : aig.constraints())
-    out << "  " << ids.get("assume_", c.name) << " : assert G " << lit(c.literal) << ";\n"
-        << "  assume " << ids.get("assume_", c.name) << ";\n";
+  for (const auto& c : aig.constraints()) {
+    const auto id = ids.fresh(kAssumptionPrefix, c.name);
+    out << "  " << id << " : assert G " << lit(c.literal) << ";\n  assume " << id << ";\n";
+  }
   for (const auto& b : aig.bad())
-    out << "  " << ids.get("", b.name) << " : assert G ~" << lit(b.literal) << ";\n";
+    out << "  " << ids.fresh(kPropertyPrefix, b.name) << " : assert G ~" << lit(b.literal) << ";\n";
   std::vector<std::string> output_exprs;
   for (const auto& o : aig.outputs()) output_exprs.push_back("(" + lit(o.literal) + ")");
   for (const auto& [name, formula] : m.ctl)
@@ -230,7 +239,7 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
                           "printf", "memcpy", "memset", "strlen", "signal", "time", "stdout"})
     reserved.insert(pan);
   for (std::size_t l = 0; l < aig.latches().size(); ++l) reserved.insert("next_" + std::to_string(l));
-  Naming names(aig, std::move(reserved), "in_");
+  Naming names(aig, std::move(reserved));
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "!"); };
   out << "/*\n";
   comment_lines(out, m.header, " * ");

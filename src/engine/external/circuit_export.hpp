@@ -24,9 +24,16 @@ struct CircuitExport {
   std::vector<std::pair<std::string, std::string>> ctl;
 };
 
+/// Identifiers in all three languages: in_<input>, s_<latch>, g_<gate node>, o_<output>,
+/// p_<property>, a_<assumption>; a prefix per kind keeps them unique by construction.
+
 /// NuSMV 2.6: inputs as IVAR, latches as VAR with init/next, gates and outputs as DEFINE,
 /// assumptions as TRANS, invariants (the Aig bad literals) as INVARSPEC, CTL as CTLSPEC.
 void write_nusmv(std::ostream& out, const CircuitExport& model);
+
+/// The NuSMV identifier of each circuit input (aig.inputs() order), as write_nusmv declares it
+/// (to read NuSMV's traces back).
+std::vector<std::string> nusmv_input_identifiers(const CircuitExport& model);
 
 /// Cadence SMV, in the seed's `default next(x) := x in case { set : ...; reset : ...; }` form.
 void write_casmv(std::ostream& out, const CircuitExport& model);

@@ -7,6 +7,7 @@
 #include "engine/external/export_model.hpp"
 #include "engine/external/external_tool.hpp"
 #include "logic/formula.hpp"
+#include "semantics/simulate.hpp"
 
 namespace sfcv::engine {
 
@@ -16,21 +17,144 @@ NusmvVerdicts parse_nusmv_output(const std::string& text) {
   NusmvVerdicts v;
   std::istringstream in(text);
   std::string line;
+  NusmvTrace* trace = nullptr;  // the trace being read, after a "false" verdict
+  bool in_inputs = false;
+  bool loop_next = false;
   while (std::getline(in, line)) {
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    const auto first = line.find_first_not_of(' ');
+    const std::string body = first == std::string::npos ? "" : line.substr(first);
     const bool spec = line.rfind("-- specification ", 0) == 0;
     const bool invar = line.rfind("-- invariant ", 0) == 0;
-    if (!spec && !invar) continue;
-    bool value;
-    if (line.size() >= 8 && line.compare(line.size() - 8, 8, " is true") == 0) value = true;
-    else if (line.size() >= 9 && line.compare(line.size() - 9, 9, " is false") == 0) value = false;
-    else continue;
-    (spec ? v.ctl : v.invariants).push_back(value);
+    if (spec || invar) {
+      bool value;
+      if (line.size() >= 8 && line.compare(line.size() - 8, 8, " is true") == 0) value = true;
+      else if (line.size() >= 9 && line.compare(line.size() - 9, 9, " is false") == 0) value = false;
+      else continue;
+      (spec ? v.ctl : v.invariants).push_back(value);
+      auto& traces = spec ? v.ctl_traces : v.invariant_traces;
+      traces.emplace_back();
+      trace = nullptr;
+      if (!value) {
+        traces.back().emplace();
+        trace = &*traces.back();
+      }
+      in_inputs = loop_next = false;
+      continue;
+    }
+    if (!trace) {  // (inside a trace, a variable's name may contain "error")
+      if (body.rfind("file ", 0) == 0 || body.rfind("ERROR", 0) == 0 ||
+          body.find("error") != std::string::npos)
+        v.errors.push_back(body);
+      continue;
+    }
+    if (body == "-- Loop starts here") {
+      loop_next = true;
+    } else if (body.rfind("-> State:", 0) == 0) {
+      if (loop_next) trace->loop_start = trace->states;
+      loop_next = false;
+      ++trace->states;
+      in_inputs = false;
+    } else if (body.rfind("-> Input:", 0) == 0) {
+      trace->inputs.push_back(trace->inputs.empty() ? std::map<std::string, bool>{}
+                                                    : trace->inputs.back());
+      in_inputs = true;
+    } else if (in_inputs) {
+      const auto eq = body.find(" = ");
+      if (eq != std::string::npos) trace->inputs.back()[body.substr(0, eq)] = body.substr(eq + 3) == "TRUE";
+    }
   }
   return v;
 }
 
 namespace {
+
+// A propositional formula in one state.
+bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
+              semantics::StateView s) {
+  using logic::Op;
+  auto arg = [&](std::size_t k) { return holds_in(ts, *f.args[k], s); };
+  switch (f.op) {
+    case Op::True: return true;
+    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::Compare:
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
+    case Op::Not: return !arg(0);
+    case Op::And: return arg(0) && arg(1);
+    case Op::Or: return arg(0) || arg(1);
+    case Op::Implies: return !arg(0) || arg(1);
+    case Op::Iff: return arg(0) == arg(1);
+    case Op::Xor: return arg(0) != arg(1);
+    default: return false;
+  }
+}
+
+// NuSMV's trace replayed through the chart, or nullopt with `why` when it does not replay (or,
+// for an invariant AG p, does not end in a state violating p).
+std::optional<logic::Trace> to_sfcv_trace(const semantics::TransitionSystem& ts,
+                                          const ExportedModel& exported, const NusmvTrace& t,
+                                          const logic::Formula& property, std::string& why) {
+  const auto ids = nusmv_input_identifiers(exported.model);
+  std::vector<std::vector<bool>> frames;
+  for (const auto& values : t.inputs) {
+    std::vector<bool> frame(ids.size(), false);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+      if (const auto it = values.find(ids[i]); it != values.end()) frame[i] = it->second;
+    frames.push_back(std::move(frame));
+  }
+  if (t.states == 0 || frames.size() + 1 != t.states) {
+    why = "NuSMV's trace has " + std::to_string(t.states) + " states and " +
+          std::to_string(frames.size()) + " input steps";
+    return std::nullopt;
+  }
+  const auto inputs = frames_to_inputs(ts, exported.circuit, frames);
+  const auto sim = semantics::simulate(ts, semantics::first_initial_state(ts), inputs);
+  if (!sim.ok) {
+    why = "NuSMV's trace does not replay in sfcv at cycle " + std::to_string(sim.failed_cycle) +
+          ": " + sim.error;
+    return std::nullopt;
+  }
+  logic::Trace trace;
+  trace.kind = logic::TraceKind::Counterexample;
+  trace.loop_start = t.loop_start;
+  for (std::size_t k = 0; k < sim.states.size(); ++k) {
+    logic::TraceStep step;
+    step.state = sim.states[k];
+    if (k == 0) {
+      step.inputs = logic::pick_inputs(semantics::InputCondition::always(), ts.inputs(), {});
+    } else {
+      step.inputs = inputs[k - 1];
+      step.fired = sim.fired[k - 1];
+    }
+    trace.steps.push_back(std::move(step));
+  }
+  if (trace.loop_start && (*trace.loop_start >= trace.steps.size() ||
+                           trace.steps[*trace.loop_start].state != trace.steps.back().state)) {
+    why = "NuSMV's loop does not close in sfcv's replay";
+    return std::nullopt;
+  }
+  if (is_invariant(property) && holds_in(ts, *property.args[0], trace.steps.back().state)) {
+    why = "NuSMV's trace replays in sfcv to a state that satisfies the invariant";
+    return std::nullopt;
+  }
+  trace.note = "NuSMV's counterexample, replayed through the chart";
+  return trace;
+}
+
+// NuSMV's error lines, or the last line it printed.
+std::string nusmv_failure(const ToolRun& run, const NusmvVerdicts& verdicts) {
+  std::string why;
+  for (std::size_t i = 0; i < verdicts.errors.size() && i < 3; ++i)
+    why += (i ? "; " : "") + verdicts.errors[i];
+  if (why.empty()) {
+    std::istringstream in(run.output);
+    for (std::string line; std::getline(in, line);)
+      if (line.find_first_not_of(" \t\r") != std::string::npos) why = line;
+  }
+  if (why.empty()) why = "no output";
+  return "NuSMV gave no verdict for every property (exit code " + std::to_string(run.exit_code) +
+         "): " + why;
+}
 
 class NusmvModelChecker final : public ModelChecker {
  public:
@@ -84,27 +208,30 @@ class NusmvModelChecker final : public ModelChecker {
       results[p].message = run.timed_out ? "NuSMV reached the time limit"
                                          : "no verdict in NuSMV's output";
     }
-    auto set = [&](std::int32_t p, bool holds) {
+    auto set = [&](std::int32_t p, bool holds, const std::optional<NusmvTrace>& trace) {
       if (p < 0) return;
+      const auto& prop = task.properties[static_cast<std::size_t>(p)];
       auto& r = results[static_cast<std::size_t>(p)];
       r.verdict = holds ? logic::Verdict::Holds : logic::Verdict::Violated;
-      r.message = holds ? "NuSMV: true" : "NuSMV: false (its trace is not mapped back; run "
-                                          "sfcv check for one)";
+      r.message = holds ? "NuSMV: true" : "NuSMV: false";
+      if (holds) return;
+      std::string why = "NuSMV printed no trace";
+      if (trace) r.trace = to_sfcv_trace(*task.system, exported, *trace, *prop.formula, why);
+      if (r.trace) r.trace->marked = logic::atom_observables(*prop.formula);
+      else r.message += " (" + why + ")";
     };
     const bool complete = verdicts.ctl.size() == exported.ctl_property.size() &&
                           verdicts.invariants.size() == exported.bad_property.size();
     if (complete && !run.timed_out) {
       for (std::size_t i = 0; i < verdicts.ctl.size(); ++i)
-        set(exported.ctl_property[i], verdicts.ctl[i]);
+        set(exported.ctl_property[i], verdicts.ctl[i], verdicts.ctl_traces[i]);
       for (std::size_t i = 0; i < verdicts.invariants.size(); ++i)
-        set(exported.bad_property[i], verdicts.invariants[i]);
+        set(exported.bad_property[i], verdicts.invariants[i], verdicts.invariant_traces[i]);
     } else {
       report.complete = false;
       report.limit = run.timed_out ? "time" : "";
-      if (!run.timed_out) {
-        auto tail = run.output.substr(run.output.size() > 400 ? run.output.size() - 400 : 0);
-        for (auto& r : results) r.message = "NuSMV gave no verdict for every property: " + tail;
-      }
+      if (!run.timed_out)
+        for (auto& r : results) r.message = nusmv_failure(run, verdicts);
     }
     report.results = std::move(results);
     report.seconds =
