@@ -885,6 +885,11 @@ struct Compiler {
           p.actions[id].variable = static_cast<std::int32_t>(v->second.index);
           it = sc.actions.find(model::to_upper(as.action));
         }
+        if (const auto* ma = pou.find_action(as.action); ma && ma->body_unsupported) {
+          error(as.where, "step '" + as.step + "' activates action '" + ma->name +
+                              "', whose body sfcv does not model (" + ma->unsupported_reason + ")");
+          continue;
+        }
         Assoc ca;
         ca.step = *step;
         ca.action = it->second;
@@ -1102,9 +1107,19 @@ struct Compiler {
     }
   }
 
+  /// A POU with a body the importer could not model would run as an empty program: refuse it.
+  void reject_unmodelled(const std::vector<const model::Pou*>& pous) {
+    for (const auto* pou : pous)
+      for (const auto& b : pou->unmodelled_bodies)
+        error(b.where, "POU '" + pou->name + "' has a " + b.language +
+                           " body that sfcv does not model (" + b.reason +
+                           "): it cannot be run");
+  }
+
   bool run() {
     const auto pous = select();
     if (!ok) return false;
+    reject_unmodelled(pous);
     reject_foreign(pous);
     if (!ok) return false;
     variables(pous);
