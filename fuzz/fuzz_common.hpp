@@ -10,8 +10,10 @@
 
 #include "io/load.hpp"
 #include "model/validate.hpp"
+#ifndef SFCV_FUZZ_NO_SEMANTICS  // a lighter build: parse and validate only
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
+#endif
 
 namespace sfcv::fuzz {
 
@@ -23,6 +25,7 @@ inline void load_validate_build(io::LoadResult (*load)(std::string_view, const s
     if (!r.ok()) return;
     const auto diags = model::validate(*r.project);
     if (model::has_errors(diags)) return;
+#ifndef SFCV_FUZZ_NO_SEMANTICS
     model::Diagnostics d;
     if (r.project->dialect == model::Dialect::Grafcet) {
       semantics::make_grafcet_system(*r.project, semantics::GrafcetOptions{}, d);
@@ -34,6 +37,7 @@ inline void load_validate_build(io::LoadResult (*load)(std::string_view, const s
         semantics::make_iec61131_system(*r.project, o, d);
       }
     }
+#endif
   } catch (const std::exception&) {
     // A reported error, not a crash.
   }
