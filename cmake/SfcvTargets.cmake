@@ -21,6 +21,12 @@ function(sfcv_apply_flags target)
                                              -Wno-maybe-uninitialized)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(SFCV_FUZZ)
+    # Coverage instrumentation for libFuzzer in every library; the harnesses link the driver.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined
+                                             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
 endfunction()
 
 # sfcv_add_library(<name> <dir> [DEPS ...]): every .cpp below <dir> (not below a nested layer

@@ -10,6 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz spin berkeley-abc gnuplot-nox
   python3-jsonschema chromium  # tests: SARIF schema validation, the HTML report in a browser
+  clang libclang-rt-14-dev  # the libFuzzer harnesses of fuzz/ (.ci/run)
 )
 
 missing=()

@@ -1,4 +1,5 @@
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -7,6 +8,8 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
@@ -41,8 +44,41 @@ std::string plural(std::size_t n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
+/// What the semantics refuses (a POU body or an action it does not model, an unknown name):
+/// lint's exit 0 must mean that `check` can model the file. Each POU that `check --pou` could
+/// run is compiled on its own (files hold several SFC POUs beside ST ones check never runs).
+model::Diagnostics semantic_diagnostics(const model::Project& project) {
+  model::Diagnostics out;
+  auto add = [&](model::Diagnostics d) {
+    for (auto& x : d) {
+      const bool seen = std::any_of(out.begin(), out.end(), [&](const model::Diagnostic& y) {
+        return y.severity == x.severity && y.message == x.message && y.where.str() == x.where.str();
+      });
+      if (!seen && x.severity != model::Severity::Note) out.push_back(std::move(x));
+    }
+  };
+  if (project.dialect == model::Dialect::Grafcet) {
+    model::Diagnostics d;
+    semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, d);
+    add(std::move(d));
+    return out;
+  }
+  for (const auto& pou : project.pous) {
+    if (!pou.has_sfc()) continue;
+    semantics::Iec61131Options options;
+    options.pous = {pou.name};
+    model::Diagnostics d;
+    semantics::make_iec61131_system(project, options, d);
+    add(std::move(d));
+  }
+  return out;
+}
+
 int lint(const LintOptions& opts) {
-  const auto checked = load_and_validate(opts.model, parse_format(opts.format));
+  auto checked = load_and_validate(opts.model, parse_format(opts.format));
+  if (checked.project && !model::has_errors(checked.diagnostics))
+    for (auto& d : semantic_diagnostics(*checked.project))
+      checked.diagnostics.push_back(std::move(d));
   std::size_t errors = 0, warnings = 0;
   for (const auto& d : checked.diagnostics) {
     if (d.severity == model::Severity::Error) ++errors;

@@ -18,6 +18,7 @@
 #include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 
 namespace sfcv::io {
 
@@ -103,7 +104,7 @@ class Reader {
   }
   /// The XMI path of a node, as the file's own references write it: //@partialGrafcets.0/@steps.2
   std::string xmi_path(pugi::xml_node n) const {
-    std::string path;
+    std::vector<std::string> segments;  // innermost first; joined once (linear in the depth)
     for (; n && n != root_ && n.type() == pugi::node_element; n = n.parent()) {
       int index = 0, count = 0;
       for (auto s = n.parent().child(n.name()); s; s = s.next_sibling(n.name())) {
@@ -116,9 +117,11 @@ class Reader {
           "arcs",            "actionTypes", "actionLinks", "variableDeclarations", "subterm"};
       std::string seg = "@" + std::string(n.name());
       if (count > 1 || kMany.count(n.name())) seg += "." + std::to_string(index);
-      path = "/" + seg + path;
+      segments.push_back(std::move(seg));
     }
-    return "/" + path;
+    std::string path = "/";
+    for (auto it = segments.rbegin(); it != segments.rend(); ++it) path += "/" + *it;
+    return path;
   }
   SourceLocation where(pugi::xml_node n) const {
     // pugixml gives the offset of the element's name; the element starts at its '<'.
@@ -614,6 +617,9 @@ class Reader {
   }
 
   ExprPtr term(pugi::xml_node n) {
+    const model::NestingLevel level(term_depth_);
+    if (level.too_deep())
+      throw Failure{n, "term nested deeper than " + std::to_string(model::kMaxNesting) + " levels"};
     const std::string_view t = type_of(n);
     const SourceLocation at = where(n);
     std::vector<ExprPtr> args;
@@ -684,6 +690,7 @@ class Reader {
   model::Diagnostics& diags_;
   std::vector<std::size_t> line_starts_;
   pugi::xml_document doc_;
+  int term_depth_ = 0;  ///< nesting of term() (model::kMaxNesting)
   pugi::xml_node root_;
   model::Pou pou_;
   std::map<pugi::xml_node, std::string> var_names_;

@@ -16,6 +16,7 @@
 #include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 
 namespace sfcv::io {
 
@@ -661,6 +662,11 @@ class Parser {
     }
     return lhs;
   }
+  // `a + b + c ...` is built by a loop: bound the height of the tree it makes, too.
+  void bound_height(const ExprPtr& e) const {
+    if (e->height > static_cast<std::uint32_t>(model::kMaxNesting))
+      fail(peek(), "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
+  }
   ExprPtr parse_add() {
     const SourceLocation at = loc(peek());
     ExprPtr e = parse_mul();
@@ -668,6 +674,7 @@ class Parser {
       if (accept("+")) e = model::make_binary(ExprKind::Add, e, parse_mul(), at);
       else if (accept("-")) e = model::make_binary(ExprKind::Sub, e, parse_mul(), at);
       else return e;
+      bound_height(e);
     }
   }
   ExprPtr parse_mul() {
@@ -680,11 +687,16 @@ class Parser {
         next();
         e = model::make_binary(ExprKind::Mod, e, parse_unary(), at);
       } else return e;
+      bound_height(e);
     }
   }
+  // Every recursion of the expression grammar passes here (operators and parentheses).
   ExprPtr parse_unary() {
     const Token& t = peek();
     const SourceLocation at = loc(t);
+    const model::NestingLevel level(depth_);
+    if (level.too_deep())
+      fail(t, "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
     if (accept("!")) return model::make_unary(ExprKind::Not, parse_unary(), at);
     if (is_punct("-")) {
       next();
@@ -850,6 +862,7 @@ class Parser {
 
   std::vector<Token> toks_;
   std::size_t pos_ = 0;
+  int depth_ = 0;  ///< expression nesting (model::kMaxNesting)
   std::string file_;
   model::Diagnostics& diags_;
   int errors_ = 0;

@@ -8,6 +8,7 @@
 
 #include "io/plcopen_st.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 #include "model/types.hpp"
 
 namespace sfcv::io::plcopen {
@@ -119,6 +120,10 @@ ExprPtr Network::text_value(pugi::xml_node holder, pugi::xml_node text_element) 
 ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
   const std::string id = node.attribute("localId").value();
   const auto kind = local_name(node);
+  // The evaluation path is the recursion depth (and the height of the expression it builds).
+  if (visiting_.size() >= static_cast<std::size_t>(model::kMaxNesting))
+    return fail(node, "the network is wired deeper than " + std::to_string(model::kMaxNesting) +
+                          " elements from this value: not modelled");
   if (kind == "block") return block_value(node, pin);
   if (visiting_.count(id))
     return fail(node, "feedback loop through " + std::string(kind) +

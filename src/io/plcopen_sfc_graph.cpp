@@ -538,6 +538,7 @@ void read_action_body(PouContext& pc, model::Action& action, pugi::xml_node lang
       reason = p.message;
       break;
     }
+  action.unsupported_reason = reason;
   pc.ctx.warning(language, "action '" + action.name + "': body not modelled (" + reason +
                                "); checks that need this action will be refused");
   for (auto& p : problems) {

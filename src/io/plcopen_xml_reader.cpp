@@ -204,6 +204,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
   for (auto lang : other_bodies) {
     // An ST body beside an SFC body runs with the chart every cycle (as sfcv writes Pou::body
     // of an SFC POU); read it when it parses. ST-only POUs stay unmodelled: sfcv runs SFC POUs.
+    std::string reason = "only SFC bodies are modelled";
     if (sfc_bodies > 0 && local_name(lang) == "ST") {
       model::Diagnostics problems;
       auto stmts = parse_statements_text(body_text(lang, ctx), problems);
@@ -212,9 +213,16 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
         for (auto& d : problems) ctx.add(std::move(d));
         continue;
       }
+      for (const auto& d : problems)
+        if (d.severity == model::Severity::Error) {
+          reason = d.message;
+          break;
+        }
     }
     const std::string what = "POU '" + pou.name + "': its " + std::string(local_name(lang)) +
-                             " body is not modelled (only SFC bodies are)";
+                             " body is not modelled (" + reason + ")";
+    // The POU loads (other POUs of the file stay checkable); the semantics refuses to run it.
+    pou.unmodelled_bodies.push_back({std::string(local_name(lang)), reason, ctx.where(lang)});
     // TwinCAT FBs start their SFC actions from an ST body (`ACT_Extend();`): those charts
     // then only run when a step of a modelled chart activates the action.
     if (!sfc_actions.empty())

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 #include "model/types.hpp"
 
 namespace sfcv::io {
@@ -135,7 +136,7 @@ ExprPtr Parser::and_expr() {
   ExprPtr e = eq_expr();
   while (at_word("AND") || at(TokenKind::Ampersand)) {
     const Token& op = next();
-    e = nary(ExprKind::And, e, eq_expr(), where(op));
+    e = bounded(nary(ExprKind::And, e, eq_expr(), where(op)), op);
   }
   return e;
 }
@@ -145,7 +146,7 @@ ExprPtr Parser::eq_expr() {
   while (at(TokenKind::Eq) || at(TokenKind::Ne)) {
     const Token& op = next();
     const auto kind = op.kind == TokenKind::Eq ? ExprKind::Eq : ExprKind::Ne;
-    e = model::make_binary(kind, e, cmp_expr(), where(op));
+    e = bounded(model::make_binary(kind, e, cmp_expr(), where(op)), op);
   }
   return e;
 }
@@ -160,7 +161,7 @@ ExprPtr Parser::cmp_expr() {
     else if (at(TokenKind::Ge)) kind = ExprKind::Ge;
     else return e;
     const Token& op = next();
-    e = model::make_binary(kind, e, add_expr(), where(op));
+    e = bounded(model::make_binary(kind, e, add_expr(), where(op)), op);
   }
 }
 
@@ -169,7 +170,7 @@ ExprPtr Parser::add_expr() {
   while (at(TokenKind::Plus) || at(TokenKind::Minus)) {
     const Token& op = next();
     const auto kind = op.kind == TokenKind::Plus ? ExprKind::Add : ExprKind::Sub;
-    e = model::make_binary(kind, e, mul_expr(), where(op));
+    e = bounded(model::make_binary(kind, e, mul_expr(), where(op)), op);
   }
   return e;
 }
@@ -183,16 +184,22 @@ ExprPtr Parser::mul_expr() {
     else if (at_word("MOD")) kind = ExprKind::Mod;
     else return e;
     const Token& op = next();
-    e = model::make_binary(kind, e, unary_expr(), where(op));
+    e = bounded(model::make_binary(kind, e, unary_expr(), where(op)), op);
   }
 }
 
 void Parser::enter(const Token& t) {
-  constexpr int kMaxDepth = 200;
-  if (++depth_ > kMaxDepth) {
+  if (++depth_ > model::kMaxNesting) {
     --depth_;
-    fail(t, "nesting deeper than " + std::to_string(kMaxDepth) + " levels");
+    fail(t, "nesting deeper than " + std::to_string(model::kMaxNesting) + " levels");
   }
+}
+
+// A chain `a + b + c ...` is built by a loop, not by recursion: bound the tree's height too.
+ExprPtr Parser::bounded(ExprPtr e, const Token& op) {
+  if (e->height > static_cast<std::uint32_t>(model::kMaxNesting))
+    fail(op, "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
+  return e;
 }
 
 namespace {

@@ -101,6 +101,7 @@ class Parser {
 
   /// Bounds recursion so that absurd nesting is an error, not a stack overflow.
   void enter(const Token& t);
+  model::ExprPtr bounded(model::ExprPtr e, const Token& op);
   void leave() { --depth_; }
 
   std::vector<Token> tokens_;

@@ -7,6 +7,15 @@
 
 namespace sfcv::logic {
 
+namespace {
+// A diagnostic names the option and its text; a hostile text of 100 KB is cut short.
+std::string option_source(const char* option, const std::string& text) {
+  constexpr std::size_t kShown = 60;
+  return std::string(option) + " '" +
+         (text.size() <= kShown ? text : text.substr(0, kShown) + "...") + "'";
+}
+}  // namespace
+
 ParsedInputs parse_check_inputs(const CheckInputs& in) {
   ParsedInputs out;
   auto append = [&](model::Diagnostics d) {
@@ -18,7 +27,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     out.spec = std::move(r.spec);
   }
   for (const auto& text : in.ctl) {
-    auto r = parse_formula(text, "--ctl '" + text + "'");
+    auto r = parse_formula(text, option_source("--ctl", text));
     append(std::move(r.diagnostics));
     if (r.formula) {
       NamedFormula nf{text, r.formula, {}};
@@ -27,12 +36,12 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     }
   }
   for (const auto& text : in.fair) {
-    auto r = parse_propositional(text, "--fair '" + text + "'");
+    auto r = parse_propositional(text, option_source("--fair", text));
     append(std::move(r.diagnostics));
     if (r.formula) out.spec.fairness.push_back({"", r.formula, {}});
   }
   for (const auto& text : in.assume) {
-    auto r = parse_propositional(text, "--assume '" + text + "'");
+    auto r = parse_propositional(text, option_source("--assume", text));
     append(std::move(r.diagnostics));
     if (r.formula && reads_previous(*r.formula)) {
       model::Diagnostic d;

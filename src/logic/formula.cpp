@@ -127,6 +127,7 @@ FormulaPtr make_compare(std::string name, CompareOp cmp, std::int64_t value, int
 FormulaPtr make_op(Op op, std::vector<FormulaPtr> args, int line, int column) {
   auto f = node(op, line, column);
   f->args = std::move(args);
+  for (const auto& a : f->args) f->height = std::max(f->height, a->height + 1);
   return f;
 }
 

@@ -32,6 +32,9 @@ struct Formula {
   std::vector<FormulaPtr> args;
   int line = 0;    ///< where it was written (1-based; 0 = unknown)
   int column = 0;
+  /// 1 for a leaf, else 1 + the largest height of `args` (set by make_op): the parser refuses
+  /// formulas higher than model::kMaxNesting, so recursive passes stay shallow.
+  std::uint32_t height = 1;
 };
 
 // Constructors.

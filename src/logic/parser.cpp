@@ -7,6 +7,7 @@
 
 #include "logic/formula.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 
 namespace sfcv::logic {
 
@@ -155,19 +156,34 @@ class Parser {
   }
 
  private:
+  // Recursion (parentheses, unary and temporal operators, `->`) and the height of chains built
+  // by loops (`a & b & c ...`) are both bounded by model::kMaxNesting.
+  void enter(const model::NestingLevel& level, const Token& t) const {
+    if (level.too_deep())
+      throw SyntaxError(t, "formula nested deeper than " + std::to_string(model::kMaxNesting) +
+                               " levels");
+  }
+  FormulaPtr bounded(FormulaPtr f, const Token& op) const {
+    if (f->height > static_cast<std::uint32_t>(model::kMaxNesting))
+      throw SyntaxError(op, "formula nested deeper than " + std::to_string(model::kMaxNesting) +
+                                " levels");
+    return f;
+  }
   FormulaPtr iff() {
     auto lhs = implies();
     while (peek().kind == Tok::Iff) {
       const auto& op = next();
-      lhs = make_op(Op::Iff, {lhs, implies()}, op.line, op.column);
+      lhs = bounded(make_op(Op::Iff, {lhs, implies()}, op.line, op.column), op);
     }
     return lhs;
   }
   FormulaPtr implies() {
+    const model::NestingLevel level(depth_);
+    enter(level, peek());
     auto lhs = disjunction();
     if (peek().kind == Tok::Implies) {
       const auto& op = next();
-      return make_op(Op::Implies, {lhs, implies()}, op.line, op.column);
+      return bounded(make_op(Op::Implies, {lhs, implies()}, op.line, op.column), op);
     }
     return lhs;
   }
@@ -176,8 +192,9 @@ class Parser {
     auto lhs = conjunction();
     while (peek().kind == Tok::Or || is_xor(peek())) {
       const auto& op = next();
-      lhs = make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()}, op.line,
-                    op.column);
+      lhs = bounded(make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()},
+                            op.line, op.column),
+                    op);
     }
     return lhs;
   }
@@ -185,12 +202,14 @@ class Parser {
     auto lhs = unary();
     while (peek().kind == Tok::And) {
       const auto& op = next();
-      lhs = make_op(Op::And, {lhs, unary()}, op.line, op.column);
+      lhs = bounded(make_op(Op::And, {lhs, unary()}, op.line, op.column), op);
     }
     return lhs;
   }
   FormulaPtr unary() {
     const Token& t = peek();
+    const model::NestingLevel level(depth_);
+    enter(level, t);
     if (t.kind == Tok::Not) {
       next();
       return make_op(Op::Not, {unary()}, t.line, t.column);
@@ -327,6 +346,7 @@ class Parser {
 
   const std::vector<Token>& t_;
   std::size_t pos_;
+  int depth_ = 0;
 };
 
 model::Diagnostic error_at(const std::string& file, int line, int column, std::string message) {

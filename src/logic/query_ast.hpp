@@ -57,6 +57,7 @@ struct Node {
   std::int64_t value = 0;
   std::vector<NodePtr> args;
   QueryPos pos;
+  std::uint32_t height = 1;  ///< 1 + the largest height of `args` (at most model::kMaxNesting)
 };
 
 /// Prints a node back in the concrete syntax, fully parenthesised where needed.

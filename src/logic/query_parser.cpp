@@ -2,10 +2,12 @@
 //   let x = e; e   |   &   !   = != < <= > >=   + -   *   #   primary
 // so that `A + B = {}` is a test on a union and `V1 & n > 3` a conjunction with a comparison.
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 
 #include "logic/query_ast.hpp"
+#include "model/nesting.hpp"
 
 namespace sfcv::logic {
 
@@ -142,6 +144,10 @@ NodePtr make(NodeKind k, QueryPos pos, std::vector<NodePtr> args = {}, std::stri
   n->args = std::move(args);
   n->name = std::move(name);
   n->value = value;
+  for (const auto& a : n->args) n->height = std::max(n->height, a->height + 1);
+  // Chains (`a | b | c ...`) are built by loops: bound the tree's height as the recursion is.
+  if (n->height > static_cast<std::uint32_t>(model::kMaxNesting))
+    throw QueryError(n->pos, "expression nested too deeply");
   return n;
 }
 
@@ -214,7 +220,7 @@ class Parser {
       explicit Depth(int& depth) : d(depth) { ++d; }
       ~Depth() { --d; }
     } guard(depth_);
-    if (depth_ > 200) throw QueryError(tok_.pos, "expression nested too deeply");
+    if (depth_ > model::kMaxNesting) throw QueryError(tok_.pos, "expression nested too deeply");
     if (tok_.kind == Tok::Ident && tok_.text == "let") {
       const auto pos = take().pos;
       const auto name = ident("a name after 'let'");
@@ -381,7 +387,7 @@ class Parser {
 
   /// A nested call of `level` that counts towards the nesting bound (prefix operators).
   NodePtr expr_level(NodePtr (Parser::*level)()) {
-    if (++depth_ > 200) throw QueryError(tok_.pos, "expression nested too deeply");
+    if (++depth_ > model::kMaxNesting) throw QueryError(tok_.pos, "expression nested too deeply");
     auto n = (this->*level)();
     --depth_;
     return n;

@@ -93,6 +93,7 @@ struct Action {
   /// so that writers can give it back unchanged; both empty for graphical bodies.
   std::string unsupported_language;
   std::string unsupported_text;
+  std::string unsupported_reason;  ///< with body_unsupported: why, for the semantics' error
 };
 
 /// A step's action block: (step, action, qualifier [, duration] [, indicator]).
@@ -162,6 +163,15 @@ struct Chart {
 
 enum class PouKind { Program, FunctionBlock, Function };
 
+/// A POU body the importer could not model (an LD/FBD/IL body, an ST body that does not parse).
+/// The POU still loads, so that other POUs of the file can be checked; the semantics refuses to
+/// run it (never as an empty program).
+struct UnmodelledBody {
+  std::string language;  ///< "ST", "FBD", "LD", "IL", ...
+  std::string reason;
+  SourceLocation where;
+};
+
 struct Pou {
   std::string name;
   PouKind kind = PouKind::Program;
@@ -172,6 +182,7 @@ struct Pou {
   std::vector<StoredAction> stored_actions;    ///< Grafcet
   std::vector<ForcingOrder> forcing_orders;    ///< Grafcet
   StmtList body;  ///< the POU's ST body, when it has one besides (or instead of) SFC
+  std::vector<UnmodelledBody> unmodelled_bodies;
   SourceLocation where;
 
   bool has_sfc() const { return !charts.empty(); }

@@ -1,5 +1,6 @@
 #include "model/expr.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <utility>
 
@@ -46,6 +47,12 @@ const char* op_text(ExprKind k) {
     case ExprKind::Ge: return " >= ";
     default: return " ? ";
   }
+}
+
+void set_height(Expr& e) {
+  std::uint32_t h = 0;
+  for (const auto& a : e.args) h = std::max(h, a->height);
+  e.height = h + 1;
 }
 
 std::string time_literal(std::int64_t ms) {
@@ -112,17 +119,20 @@ ExprPtr make_member(std::string name, std::string member, SourceLocation where) 
 ExprPtr make_unary(ExprKind kind, ExprPtr arg, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
   e->args.push_back(std::move(arg));
+  set_height(*e);
   return e;
 }
 ExprPtr make_binary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
   e->args.push_back(std::move(lhs));
   e->args.push_back(std::move(rhs));
+  set_height(*e);
   return e;
 }
 ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
   e->args = std::move(args);
+  set_height(*e);
   return e;
 }
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
@@ -130,6 +140,7 @@ ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLo
   e->value = t1_ms;
   e->value2 = t2_ms;
   e->args.push_back(std::move(arg));
+  set_height(*e);
   return e;
 }
 

@@ -38,6 +38,9 @@ struct Expr {
   std::string member;  ///< Member: the part after the dot, as written ("X", "T", "Q")
   std::vector<ExprPtr> args;
   SourceLocation where;
+  /// 1 for a leaf, else 1 + the largest height of `args` (set by the constructors below):
+  /// parsers refuse trees higher than model::kMaxNesting, so recursive passes stay shallow.
+  std::uint32_t height = 1;
 };
 
 // Constructors (free functions returning shared immutable nodes).

@@ -1,6 +1,10 @@
 #include "model/networks.hpp"
 
 #include <numeric>
+#include <string>
+#include <unordered_map>
+
+#include "model/names.hpp"
 
 namespace sfcv::model {
 
@@ -19,11 +23,15 @@ std::vector<int> step_networks(const Chart& chart) {
   const std::size_t n = chart.steps.size();
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
+  // Indexed once: a linear Chart::step_index per transition is quadratic on long charts.
+  std::unordered_map<std::string, int> index;
+  for (std::size_t i = 0; i < n; ++i) index.try_emplace(to_upper(chart.steps[i].name), static_cast<int>(i));
   for (const auto& t : chart.transitions) {
     int first = -1;
     auto join = [&](const std::string& name) {
-      const int i = chart.step_index(name);
-      if (i < 0) return;
+      const auto found = index.find(to_upper(name));
+      if (found == index.end()) return;
+      const int i = found->second;
       if (first < 0) {
         first = i;
         return;

@@ -4,11 +4,13 @@
 #include <array>
 #include <cctype>
 #include <deque>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "model/names.hpp"
@@ -121,6 +123,11 @@ class Validator {
   explicit Validator(const Project& project) : project_(project) {}
 
   Diagnostics run() {
+    // An empty file (or one of comments only) is no model: nothing could be checked in it.
+    bool any_chart = false;
+    for (const auto& pou : project_.pous) any_chart = any_chart || pou.has_sfc();
+    if (!any_chart)
+      error(project_.where, "the model has no chart (no step in any POU): nothing to check");
     check_duplicates(project_.pous, "POU", project_.where);
     for (const auto& pou : project_.pous) check_pou(pou);
     std::stable_sort(out_.begin(), out_.end(), [](const Diagnostic& a, const Diagnostic& b) {
@@ -137,7 +144,21 @@ class Validator {
   Diagnostics out_;
   std::set<std::string> outside_warned_;  ///< per POU: names already reported by outside_model
 
+  /// Step indices by upper-case name (the first declaration), built once per chart: checks look
+  /// steps up per transition and association, and a linear search each time is quadratic.
+  mutable std::map<const Chart*, std::unordered_map<std::string, int>> step_indices_;
+
   bool grafcet() const { return project_.dialect == Dialect::Grafcet; }
+
+  int step_index(const Chart& chart, std::string_view name) const {
+    auto [it, fresh] = step_indices_.try_emplace(&chart);
+    if (fresh)
+      for (std::size_t i = 0; i < chart.steps.size(); ++i)
+        it->second.try_emplace(to_upper(chart.steps[i].name), static_cast<int>(i));
+    const auto found = it->second.find(to_upper(std::string(name)));
+    return found == it->second.end() ? -1 : found->second;
+  }
+  bool has_step(const Chart& chart, std::string_view name) const { return step_index(chart, name) >= 0; }
 
   void error(const SourceLocation& where, std::string message) {
     out_.push_back({Severity::Error, where, std::move(message)});
@@ -183,7 +204,7 @@ class Validator {
 
   bool step_exists(std::string_view name) const {
     for (const auto& c : pou_->charts)
-      if (c.find_step(name)) return true;
+      if (has_step(c, name)) return true;
     return false;
   }
 
@@ -192,7 +213,7 @@ class Validator {
   const Chart* chart_of(const std::string& chart_name, const std::string& step,
                         const SourceLocation& where, std::string_view what) {
     if (const Chart* c = pou_->find_chart(chart_name)) {
-      if (!c->find_step(step))
+      if (!has_step(*c, step))
         error(where, std::string(what) + " names undeclared step " + quoted(step) +
                          (chart_name.empty() ? std::string() : " of chart " + quoted(chart_name)));
       return c;
@@ -201,7 +222,7 @@ class Validator {
       const Chart* found = nullptr;
       int count = 0;
       for (const auto& c : pou_->charts)
-        if (c.find_step(step)) {
+        if (has_step(c, step)) {
           found = &c;
           ++count;
         }
@@ -276,9 +297,9 @@ class Validator {
       if (!grafcet() && t.sources.empty()) error(here, "transition has no source step");
       if (!grafcet() && t.targets.empty()) error(here, "transition has no target step");
       for (const auto& s : t.sources)
-        if (!chart.find_step(s)) note_undeclared(s, here, true);
+        if (!has_step(chart, s)) note_undeclared(s, here, true);
       for (const auto& s : t.targets)
-        if (!chart.find_step(s)) note_undeclared(s, here, false);
+        if (!has_step(chart, s)) note_undeclared(s, here, false);
       expect_bool(t.guard, here, "the guard");
     }
     for (const auto& u : undeclared) {
@@ -353,31 +374,51 @@ class Validator {
     for (const auto& fo : pou_->forcing_orders)
       if (iequals(fo.target, chart.name))
         for (const auto& s : fo.situation)
-          if (const int i = chart.step_index(s); i >= 0) reached[static_cast<std::size_t>(i)] = seeded = true;
+          if (const int i = step_index(chart, s); i >= 0) reached[static_cast<std::size_t>(i)] = seeded = true;
     for (const auto& t : chart.transitions)
       if (t.sources.empty()) seeded = true;  // a Grafcet source transition
     // Entry steps of enclosed charts and macro-step expansions are not marked in the IR, and
     // "no initial step" is already an error otherwise.
     if (!seeded) return;
 
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (const auto& t : chart.transitions) {
-        // A Grafcet source transition (no source step) can always fire.
-        const bool enabled = std::all_of(t.sources.begin(), t.sources.end(), [&](const auto& s) {
-                               const int i = chart.step_index(s);
-                               return i >= 0 && reached[static_cast<std::size_t>(i)];
-                             });
-        if (!enabled) continue;
-        for (const auto& s : t.targets)
-          if (const int i = chart.step_index(s); i >= 0 && !reached[static_cast<std::size_t>(i)])
-            reached[static_cast<std::size_t>(i)] = changed = true;
+    // A worklist (linear in the chart): a transition fires once its last source is reached.
+    const std::size_t n_trans = chart.transitions.size();
+    std::vector<std::vector<std::size_t>> leaving(chart.steps.size());
+    std::vector<std::size_t> missing(n_trans, 0);  // source steps not reached yet
+    std::vector<std::size_t> work;
+    auto reach = [&](int i) {
+      if (i < 0 || reached[static_cast<std::size_t>(i)]) return;
+      reached[static_cast<std::size_t>(i)] = 1;
+      work.push_back(static_cast<std::size_t>(i));
+    };
+    std::vector<std::size_t> ready;
+    for (std::size_t t = 0; t < n_trans; ++t) {
+      bool undeclared = false;
+      for (const int i : declared_steps(chart, chart.transitions[t].sources)) {
+        leaving[static_cast<std::size_t>(i)].push_back(t);
+        ++missing[t];
       }
+      for (const auto& s : chart.transitions[t].sources) undeclared = undeclared || !has_step(chart, s);
+      if (undeclared) missing[t] = std::numeric_limits<std::size_t>::max();  // can never fire
+      // A Grafcet source transition (no source step) can always fire.
+      else if (missing[t] == 0) ready.push_back(t);
+    }
+    for (std::size_t i = 0; i < chart.steps.size(); ++i)
+      if (reached[i]) work.push_back(i);
+    auto fire = [&](std::size_t t) {
+      for (const auto& s : chart.transitions[t].targets) reach(step_index(chart, s));
+    };
+    for (const auto t : ready) fire(t);
+    while (!work.empty()) {
+      const auto s = work.back();
+      work.pop_back();
+      for (const auto t : leaving[s])
+        if (missing[t] != std::numeric_limits<std::size_t>::max() && --missing[t] == 0) fire(t);
     }
     const auto& where = at(chart.where, pou_->where);
     for (std::size_t i = 0; i < chart.steps.size(); ++i) {
       const Step& s = chart.steps[i];
-      if (reached[i] || chart.step_index(s.name) != static_cast<int>(i)) continue;  // dup
+      if (reached[i] || step_index(chart, s.name) != static_cast<int>(i)) continue;  // dup
       warning(at(s.where, where), "step " + quoted(s.name) +
                                       " is unreachable: no sequence of transitions leads to it "
                                       "from an initial step");
@@ -423,10 +464,10 @@ class Validator {
            (d.where.known() ? " at " + place(d.where, here) : std::string());
   }
 
-  static std::vector<int> declared_steps(const Chart& chart, const std::vector<std::string>& names) {
+  std::vector<int> declared_steps(const Chart& chart, const std::vector<std::string>& names) {
     std::vector<int> result;
     for (const auto& n : names) {
-      const int i = chart.step_index(n);
+      const int i = step_index(chart, n);
       if (i >= 0 && std::find(result.begin(), result.end(), i) == result.end())
         result.push_back(i);
     }
@@ -448,7 +489,7 @@ class Validator {
     std::vector<char> done(n_trans, 0);
     std::deque<int> queue;
     for (std::size_t i = 0; i < n_steps; ++i)
-      if (chart.steps[i].initial && chart.step_index(chart.steps[i].name) == static_cast<int>(i)) {
+      if (chart.steps[i].initial && step_index(chart, chart.steps[i].name) == static_cast<int>(i)) {
         ctx[i] = Context{};
         queue.push_back(static_cast<int>(i));
       }
@@ -632,7 +673,7 @@ class Validator {
     if (const int i = pou_->chart_index(chart_name); i >= 0) return i;
     if (!chart_name.empty()) return -1;
     for (std::size_t c = 0; c < pou_->charts.size(); ++c)
-      if (pou_->charts[c].find_step(step)) return static_cast<int>(c);
+      if (has_step(pou_->charts[c], step)) return static_cast<int>(c);
     return -1;
   }
 
@@ -780,7 +821,7 @@ class Validator {
     }
     if (fo.kind != ForcingKind::Situation) return;
     for (const auto& s : fo.situation)
-      if (!target->find_step(s))
+      if (!has_step(*target, s))
         error(here, "forcing order names step " + quoted(s) + ", which partial grafcet " +
                         quoted(fo.target) + " does not declare");
   }

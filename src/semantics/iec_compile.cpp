@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 #include "model/names.hpp"
 #include "semantics/iec_program.hpp"
@@ -885,6 +886,11 @@ struct Compiler {
           p.actions[id].variable = static_cast<std::int32_t>(v->second.index);
           it = sc.actions.find(model::to_upper(as.action));
         }
+        if (const auto* ma = pou.find_action(as.action); ma && ma->body_unsupported) {
+          error(as.where, "step '" + as.step + "' activates action '" + ma->name +
+                              "', whose body sfcv does not model (" + ma->unsupported_reason + ")");
+          continue;
+        }
         Assoc ca;
         ca.step = *step;
         ca.action = it->second;
@@ -921,13 +927,18 @@ struct Compiler {
       for (std::size_t ci = 0; ci < pou.charts.size(); ++ci) {
         const auto& ch = pou.charts[ci];
         const auto cid = sc.chart_ids[ci];
+        // Indexed once per chart: Chart::step_index per transition is quadratic on long charts.
+        std::unordered_map<std::string, int> step_of;
+        for (std::size_t i = 0; i < ch.steps.size(); ++i)
+          step_of.try_emplace(model::to_upper(ch.steps[i].name), static_cast<int>(i));
         for (const auto& t : ch.transitions) {
           Transition ct;
           ct.chart = cid;
           bool good = true;
           auto resolve = [&](const std::vector<std::string>& names, std::vector<std::uint32_t>& out) {
             for (const auto& n : names) {
-              const int si = ch.step_index(n);
+              const auto found = step_of.find(model::to_upper(n));
+              const int si = found == step_of.end() ? -1 : found->second;
               if (si < 0) {
                 error(t.where, "transition refers to unknown step '" + n + "' of chart '" + ch.name + "'");
                 good = false;
@@ -1102,9 +1113,19 @@ struct Compiler {
     }
   }
 
+  /// A POU with a body the importer could not model would run as an empty program: refuse it.
+  void reject_unmodelled(const std::vector<const model::Pou*>& pous) {
+    for (const auto* pou : pous)
+      for (const auto& b : pou->unmodelled_bodies)
+        error(b.where, "POU '" + pou->name + "' has a " + b.language +
+                           " body that sfcv does not model (" + b.reason +
+                           "): it cannot be run");
+  }
+
   bool run() {
     const auto pous = select();
     if (!ok) return false;
+    reject_unmodelled(pous);
     reject_foreign(pous);
     if (!ok) return false;
     variables(pous);

@@ -1,0 +1,7 @@
+// libFuzzer harness: io::load_agrafe_xmi, then validation and the semantics' compilation.
+#include "fuzz_common.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  sfcv::fuzz::load_validate_build(&sfcv::io::load_agrafe_xmi, data, size);
+  return 0;
+}
