@@ -69,6 +69,11 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
   return out;
 }
 
+nlohmann::json count_json(const logic::BigCount& count) {
+  const auto small = count.to_u64();
+  return small ? nlohmann::json(*small) : nlohmann::json(count.str());
+}
+
 nlohmann::json check_json(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                           const RenderOptions& options) {
   using nlohmann::json;
@@ -77,12 +82,8 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["semantics"] = options.semantics;
   j["engine"] = report.engine;
   // A number while it fits in 64 bits (JSON readers take those exactly), else a decimal string.
-  auto count = [](const logic::BigCount& c) {
-    const auto small = c.to_u64();
-    return small ? json(*small) : json(c.str());
-  };
-  j["states"] = count(report.states);
-  j["edges"] = report.edges_known ? count(report.edges) : json(nullptr);
+  j["states"] = count_json(report.states);
+  j["edges"] = report.edges_known ? count_json(report.edges) : json(nullptr);
   j["depth"] = report.depth;
   j["complete"] = report.complete;
   j["stopped_early"] = report.stopped_early;

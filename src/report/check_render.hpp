@@ -27,6 +27,9 @@ std::string findings_cut_note(const logic::PropertyResult& r);
 
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options);
+/// A state or edge count as JSON: a number while it fits in 64 bits, else its decimal string.
+nlohmann::json count_json(const logic::BigCount& count);
+
 nlohmann::json check_json(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                           const RenderOptions& options);
 nlohmann::json trace_to_json(const logic::Trace& trace, const semantics::TransitionSystem& ts);

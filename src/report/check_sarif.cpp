@@ -1,5 +1,7 @@
 #include "report/check_sarif.hpp"
 
+#include "report/check_render.hpp"
+
 #include <map>
 #include <regex>
 
@@ -182,7 +184,7 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
   run["results"] = results;
   run["columnKind"] = "unicodeCodePoints";
   run["properties"] = {{"engine", report.engine},
-                       {"states", report.states},
+                       {"states", count_json(report.states)},
                        {"complete", report.complete},
                        {"semantics", options.semantics}};
   json log;
