@@ -598,12 +598,14 @@ void CircuitBuilder::build() {
 
 }  // namespace grafcet
 
-GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts) {
+GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
   const auto* sys = dynamic_cast<const grafcet::GrafcetSystem*>(&ts);
   if (!sys) throw std::invalid_argument("build_grafcet_circuit: not a Grafcet system");
   GrafcetCircuit c;
+  c.aig.set_deadline(deadline);
   grafcet::CircuitBuilder builder(*sys, c);
   builder.build();
+  c.aig.set_deadline(std::nullopt);
   return c;
 }
 

@@ -684,7 +684,7 @@ void SymbolicMachine::build(StateView initial_state) {
 }  // namespace
 }  // namespace iec
 
-TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
   const auto* sys = dynamic_cast<const iec::Iec61131System*>(&ts);
   if (!sys) throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
   struct Initial final : SuccessorSink {
@@ -693,8 +693,10 @@ TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
   } initial;
   ts.initial_states(initial);
   TransitionCircuit c;
+  c.aig.set_deadline(deadline);
   iec::SymbolicMachine machine(sys->program(), c);
   machine.build(initial.state);
+  c.aig.set_deadline(std::nullopt);
   return c;
 }
 

@@ -488,8 +488,10 @@ std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::Transition
   // default (small) sizing.
   bdd::configure_manager(options.nodes, options.cache, 4);
   if (ts.kind() == semantics::SemanticsKind::Grafcet)
-    return std::make_unique<SymbolicSystem>(ts, semantics::build_grafcet_circuit(ts), options);
-  return std::make_unique<SymbolicSystem>(ts, semantics::build_iec61131_circuit(ts), options);
+    return std::make_unique<SymbolicSystem>(
+        ts, semantics::build_grafcet_circuit(ts, options.deadline), options);
+  return std::make_unique<SymbolicSystem>(
+      ts, semantics::build_iec61131_circuit(ts, options.deadline), options);
 }
 
 }  // namespace sfcv::engine
