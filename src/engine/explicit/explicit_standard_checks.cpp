@@ -19,7 +19,6 @@ using logic::Verdict;
 
 namespace {
 
-constexpr std::size_t kMaxFindings = 20;
 constexpr std::size_t kMaxSituations = 3;  ///< situation findings listed before a summary
 constexpr std::uint32_t kNone = ReachableSituationGraph::kNone;
 
@@ -81,7 +80,9 @@ class Checks {
            std::to_string(g_.num_states()) + " states";
   }
   void add(PropertyResult& r, std::string finding) const {
-    if (r.findings.size() < kMaxFindings) r.findings.push_back(std::move(finding));
+    ++r.findings_total;
+    if (task_.max_findings == 0 || r.findings.size() < task_.max_findings)
+      r.findings.push_back(std::move(finding));
   }
   /// Throws LimitReached(Time) once the run's deadline has passed (polled in the loops below).
   void poll() { poll_.tick_or_throw("running the standard checks"); }
