@@ -8,15 +8,24 @@
 
 namespace sfcv::cli {
 
+namespace {
+GlobalOptions g_options;
+}  // namespace
+
+const GlobalOptions& global_options() { return g_options; }
+
 int run(int argc, char** argv) {
   CLI::App app{"sfcv: a verifier for Sequential Function Charts (IEC 61131-3) and Grafcet "
                "(IEC 60848)",
                "sfcv"};
   app.set_version_flag("--version", std::string("sfcv ") + SFCV_VERSION);
   app.require_subcommand(1);
+  app.add_flag("-q,--quiet", g_options.quiet,
+               "No progress, notes or warnings on standard error (errors still)");
+  app.fallthrough();  // `sfcv check m.g7 --quiet` as well as `sfcv --quiet check m.g7`
   app.footer(
       "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or input, "
-      "3 unknown (a resource limit was reached).");
+      "3 unknown (a resource limit was reached), 4 internal error (a bug: please report it).");
 
   CommandRunner selected;
   add_check_command(app, selected);

@@ -1,8 +1,6 @@
 // sfcv check: CTL properties and the standard checks. This file only maps options to library
 // calls: logic (properties), semantics (the system), engine (checking), report (rendering).
 
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -18,6 +16,8 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/progress_line.hpp"
+#include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
@@ -30,7 +30,6 @@
 #include "report/check_render.hpp"
 #include "report/check_sarif.hpp"
 #include "report/trace_render.hpp"
-#include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 namespace sfcv::cli {
 
@@ -46,9 +45,7 @@ struct CheckOptions {
   std::vector<std::string> assume;
   std::string engine = "auto";
   SystemOptions system;
-  std::uint64_t max_states = 0;
-  double timeout = 0;
-  std::string memory;  ///< empty: no limit
+  LimitOptions limits;
   bool reorder = false;
   bool json = false;
   std::string trace = "table";
@@ -56,7 +53,6 @@ struct CheckOptions {
   std::string junit;
   std::string sarif;
   std::string html;
-  bool quiet = false;
   bool all_findings = false;
   bool coverage = false;
 };
@@ -67,7 +63,7 @@ report::TraceFormat parse_trace_format(const std::string& s) {
   if (s == "vcd") return report::TraceFormat::Vcd;
   if (s == "csv") return report::TraceFormat::Csv;
   if (s == "none") return report::TraceFormat::None;
-  throw InputError("bad --trace '" + s + "' (expected table, json, vcd, csv or none)");
+  throw UsageError("bad --trace '" + s + "' (expected table, json, vcd, csv or none)");
 }
 
 void print_diagnostics(const model::Diagnostics& diags, const char* what) {
@@ -87,30 +83,12 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-/// "2G", "512M", "64K", "1000000" (bytes) -> bytes; decimal suffixes are binary multiples.
-std::uint64_t parse_memory(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  std::string unit = text.substr(used);
-  double factor = 1;
-  if (unit == "K" || unit == "k" || unit == "KB" || unit == "KiB") factor = 1024.0;
-  else if (unit == "M" || unit == "MB" || unit == "MiB") factor = 1024.0 * 1024;
-  else if (unit == "G" || unit == "GB" || unit == "GiB") factor = 1024.0 * 1024 * 1024;
-  else if (!unit.empty() && unit != "B") used = 0;
-  if (used == 0 || !(value > 0) || value * factor > 1e15)
-    throw InputError("bad --memory '" + text + "' (expected a size such as 2G, 512M or 64K)");
-  return static_cast<std::uint64_t>(value * factor);
-}
-
 // --engine auto. The explicit engine answers every standard check and counts edges, so it runs
 // first, within kAutoExplicitStates states. Beyond that budget, or when a state cannot be
 // enumerated explicitly (an integer input copied into a variable), the BDD engine takes over if
-// it can answer the task. A time or memory limit of the user's ends the run as it is: unknown.
+// it can answer the task, within what is left of the run's one budget. A time or memory limit
+// of the user's ends the run as it is: unknown. Verdicts the explicit phase decided on its
+// partial graph (a violation it found) are kept: the BDD engine fills in only the rest.
 constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
@@ -131,15 +109,40 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
   return checker;
 }
 
-logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet,
-                              const engine::BddEngineOptions& bdd_options) {
-  auto note = [quiet](const std::string& text) {
-    if (!quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
+/// The BDD report with the explicit phase's decided verdicts kept: a result the explicit engine
+/// decided (violated, or holds) replaces the BDD engine's unknown for the same property.
+logic::CheckReport keep_decided(logic::CheckReport bdd_report, const logic::CheckReport& first) {
+  auto decided = [](const logic::PropertyResult& r) {
+    return r.verdict == logic::Verdict::Violated || r.verdict == logic::Verdict::Holds;
+  };
+  for (auto& r : bdd_report.results) {
+    if (decided(r)) continue;
+    for (const auto& e : first.results)
+      if (decided(e) && e.name == r.name && e.check == r.check && e.formula == r.formula) {
+        r = e;
+        break;
+      }
+  }
+  return bdd_report;
+}
+
+logic::CheckReport check_auto(const logic::CheckTask& task,
+                              const engine::BddEngineOptions& bdd_options, ProgressLine& progress) {
+  auto note = [&progress](const std::string& text) {
+    if (global_options().quiet) return;
+    progress.clear();
+    std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
   auto explicit_engine = engine::make_explicit_model_checker();
   auto bdd = engine::make_bdd_model_checker(bdd_options);
   std::string why;
-  if (!bdd->can_handle(task, &why)) {
+  bool bdd_can = false;
+  try {
+    bdd_can = bdd->can_handle(task, &why);  // builds the circuit: within the budget too
+  } catch (const LimitReached& e) {
+    why = e.what();
+  }
+  if (!bdd_can) {
     note("using the explicit engine (the bdd engine cannot: " + why + ")");
     return explicit_engine->check(task);
   }
@@ -147,30 +150,29 @@ logic::CheckReport check_auto(const logic::CheckTask& task, bool quiet,
     note("using the bdd engine (the explicit engine cannot: " + why + ")");
     return bdd->check(task);
   }
-  const auto start = std::chrono::steady_clock::now();
   logic::CheckTask probe = task;
   const bool user_bound = task.limits.max_states > 0 && task.limits.max_states <= kAutoExplicitStates;
   if (!user_bound) probe.limits.max_states = kAutoExplicitStates;
-  try {
-    auto report = explicit_engine->check(probe);
-    if (report.complete || user_bound || report.limit != "states") {
-      note("using the explicit engine");
-      return report;
-    }
-    note("more than " + std::to_string(kAutoExplicitStates) +
-         " states: switching to the bdd engine");
-  } catch (const semantics::SemanticsLimitError& e) {
-    note(std::string(e.what()) + ": switching to the bdd engine");
+  auto first = explicit_engine->check(probe);
+  const bool too_many = first.limit == to_string(Limit::States) && !user_bound;
+  const bool not_enumerable = first.limit == to_string(Limit::Enumeration);
+  if (first.complete || !(too_many || not_enumerable)) {
+    note("using the explicit engine");
+    return first;
   }
-  logic::CheckTask rest = task;
-  if (task.limits.timeout_seconds > 0) {
-    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - start;
-    rest.limits.timeout_seconds = std::max(0.001, task.limits.timeout_seconds - spent.count());
-  }
-  return bdd->check(rest);
+  if (task.limits.expired()) return first;  // no time left for the bdd engine
+  note(too_many ? "more than " + std::to_string(kAutoExplicitStates) +
+                      " states: switching to the bdd engine"
+                : (first.results.empty() ? std::string("the explicit engine cannot enumerate")
+                                         : first.results.front().message) +
+                      ": switching to the bdd engine");
+  // The same task and budget: one deadline for both engines.
+  return keep_decided(bdd->check(task), first);
 }
 
 int run_check(const CheckOptions& o) {
+  // The budget starts now and holds for every phase below.
+  const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
                             o.assume};
@@ -183,10 +185,16 @@ int run_check(const CheckOptions& o) {
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
   if (o.engine != "explicit" && o.engine != "auto" && o.engine != "bdd" && o.engine != "nusmv")
-    throw InputError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
+    throw UsageError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
 
+  ProgressLine progress(!global_options().quiet);
+  progress.phase("load");
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
+  budget.check_time("loading the model");
+  progress.phase("build");
+  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check",
+                                  semantics::ActionOrder::Declaration, &budget);
+  budget.check_time("building the system");
   // Inputs and previous values named by a property are kept in the state only then.
   model::Diagnostics history_diags;
   const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
@@ -207,36 +215,22 @@ int run_check(const CheckOptions& o) {
   const auto num_properties = task.properties.size();
   const auto vacuity = logic::add_vacuity_questions(task);
   task.coverage = o.coverage;
-  task.limits.max_states = o.max_states;
-  task.limits.timeout_seconds = o.timeout;
-  if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
+  task.limits = budget;
+  task.limits.progress = progress.callback();
   engine::BddEngineOptions bdd_options;
   bdd_options.reorder = o.reorder;
-  const bool show_progress = !o.quiet && ::isatty(2);
-  bool progress_shown = false;
-  if (show_progress)
-    task.limits.progress = [&progress_shown](const logic::Progress& p) {
-      if (p.seconds < 1.0) return;
-      progress_shown = true;
-      std::fprintf(stderr, "\r%llu states, %.0f states/s, depth %u   ",
-                   static_cast<unsigned long long>(p.states), p.states / p.seconds, p.depth);
-      std::fflush(stderr);
-    };
 
-  logic::CheckReport result;
-  try {
-    result = o.engine == "auto" ? check_auto(task, o.quiet, bdd_options)
-                                : choose_engine(o.engine, task, bdd_options)->check(task);
-  } catch (const semantics::SemanticsLimitError& e) {
-    if (progress_shown) std::cerr << "\n";
-    std::cerr << "sfcv: " << e.what() << "\n";
-    return kUnknown;
-  }
-  if (progress_shown) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  progress.phase("explore");
+  logic::CheckReport result = o.engine == "auto"
+                                  ? check_auto(task, bdd_options, progress)
+                                  : choose_engine(o.engine, task, bdd_options)->check(task);
+  progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
-  if (o.coverage && !result.coverage && !o.quiet)
+  if (o.coverage && !result.coverage && !global_options().quiet) {
+    progress.clear();
     std::cerr << "sfcv: --coverage: the " << result.engine
               << " engine does not measure coverage (use --engine explicit)\n";
+  }
 
   report::RenderOptions render;
   render.trace = trace_format;
@@ -302,11 +296,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
   sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, or nusmv (a NuSMV on PATH)");
   add_system_options(*sub, opts->system);
-  sub->add_option("--max-states", opts->max_states, "Stop after N states: answers become unknown");
-  sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds: answers become unknown");
-  sub->add_option("--memory", opts->memory,
-                  "Memory budget, e.g. 2G: the explicit graph, or the bdd engine's node table; "
-                  "past it answers become unknown");
+  add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
   sub->add_flag("--reorder", opts->reorder,
                 "bdd engine: dynamic variable reordering (sifting; off by default)");
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
@@ -322,13 +312,13 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--coverage", opts->coverage,
                 "Also report the steps, transitions and actions the reachable states visit "
                 "(explicit engine)");
-  sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
   sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
               "AG (a -> f) reports whether it holds vacuously. Cookbook: docs/properties.md.\n"
               "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
-              "input, 3 unknown (a limit was reached before an answer was certain).");
+              "input, 3 unknown (a limit was reached before an answer was certain), 4 internal "
+              "error.");
   sub->callback([opts, &selected] {
     selected = [opts] { return run_check(*opts); };
   });

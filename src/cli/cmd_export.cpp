@@ -167,10 +167,8 @@ int run_export(const ExportOptions& o) {
     } else {
       export_circuit(o, project, text);
     }
-  } catch (const io::G7WriteError& e) {
-    throw InputError(std::string("sfcv export --to g7: ") + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw InputError("sfcv export --to " + o.to + ": " + e.what());
+  } catch (const UnsupportedConstruct& e) {  // the writers' (G7WriteError among them)
+    throw UnsupportedConstruct("sfcv export --to " + o.to + ": " + e.what());
   }
   if (o.output.empty() || o.output == "-") {
     std::cout << text.str();

@@ -175,10 +175,9 @@ void add_info_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_flag("--json", opts->json, "Print the summary as JSON (schema: docs/formats.md)");
-  sub->add_flag("-q,--quiet", opts->quiet, "Do not print the model's warnings");
   sub->callback([opts, &selected] {
     selected = [opts] {
-      const auto project = load_model_or_throw(opts->model, parse_format(opts->format), opts->quiet);
+      const auto project = load_model_or_throw(opts->model, parse_format(opts->format));
       const auto info = project_info(opts->model, project);
       if (opts->json)
         std::cout << info.dump(2) << "\n";

@@ -20,6 +20,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
 #include "engine/bdd/bdd_manager.hpp"
 #include "engine/bdd/symbolic_query_evaluator.hpp"
@@ -50,8 +51,7 @@ struct QueryOptions {
   bool json = false;
   bool assert_empty = false;
   SystemOptions system;
-  std::uint64_t max_states = 0;
-  double timeout = 0;
+  LimitOptions limits;
   std::string engine = "explicit";
 };
 
@@ -351,6 +351,7 @@ struct SymbolicEngine {
 };
 
 int run_query(const QueryOptions& o) {
+  const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
   // Library first: its errors are the user's files, independent of the model.
   logic::QueryLibrary library;
   std::string default_lib;
@@ -392,7 +393,8 @@ int run_query(const QueryOptions& o) {
   if (o.model.empty()) throw InputError("a model file is required");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  const auto built = build_system(project, o.system, {}, "sfcv query");
+  const auto built = build_system(project, o.system, {}, "sfcv query", semantics::ActionOrder::Declaration,
+                                  &budget);
   const auto& ts = built.system;
   const std::string& kind = built.semantics;
 
@@ -434,12 +436,10 @@ int run_query(const QueryOptions& o) {
 
   // --engine auto, as `sfcv check`: the explicit graph within kAutoExplicitStates situations,
   // the symbolic engine beyond (or when the semantics cannot enumerate a state explicitly).
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
   auto explore = [&](std::uint64_t max_states) {
     engine::ExplorationOptions eo;
     eo.max_states = max_states;
-    eo.timeout_seconds = o.timeout;
+    eo.deadline = budget.deadline;
     eo.keep_conditions = true;
     eo.keep_fired = true;  // Tclear
     return std::make_unique<ExplicitEngine>(engine::build_reachable_situation_graph(*ts, eo));
@@ -451,9 +451,9 @@ int run_query(const QueryOptions& o) {
     if (!circuit) {
       note("using the explicit engine (" + why + ")");
     } else {
-      const bool user_bound = o.max_states > 0 && o.max_states <= kAutoExplicitStates;
+      const bool user_bound = budget.max_states > 0 && budget.max_states <= kAutoExplicitStates;
       try {
-        explicit_engine = explore(user_bound ? o.max_states : kAutoExplicitStates);
+        explicit_engine = explore(user_bound ? budget.max_states : kAutoExplicitStates);
         const auto& g = explicit_engine->graph;
         if (g.complete() || user_bound || g.limit_reached() != "states") {
           note("using the explicit engine");
@@ -474,21 +474,13 @@ int run_query(const QueryOptions& o) {
   std::unique_ptr<SymbolicEngine> symbolic_engine;
   if (engine_name == "bdd") {
     engine::SymbolicQueryOptions so;
-    so.max_states = o.max_states;
-    so.timeout_seconds = o.timeout;
-    if (o.timeout > 0) {  // what --engine auto spent exploring explicitly counts
-      const std::chrono::duration<double> spent = Clock::now() - start;
-      so.timeout_seconds = std::max(0.001, o.timeout - spent.count());
-    }
+    so.max_states = budget.max_states;
+    so.timeout_seconds = budget.seconds_left();  // what is left of the one budget
     try {
       symbolic_engine = std::make_unique<SymbolicEngine>(*ts, std::move(*circuit), so);
       qe.anomalies = symbolic_engine->anomalies();
-    } catch (const engine::SymbolicQueryError& e) {
+    } catch (const LimitReached& e) {
       std::cerr << "sfcv query: unknown: " << e.what() << "\n";
-      return kUnknown;
-    } catch (const engine::bdd::BddError& e) {
-      std::cerr << "sfcv query: unknown: the BDD package ran out of resources: " << e.what()
-                << "\n";
       return kUnknown;
     }
     qe.situations = static_cast<std::uint64_t>(symbolic_engine->ev.num_states());
@@ -496,7 +488,7 @@ int run_query(const QueryOptions& o) {
     qe.answer = [&](const logic::CompiledQuery& q) { return symbolic_engine->answer(q); };
   } else {
     try {
-      if (!explicit_engine) explicit_engine = explore(o.max_states);
+      if (!explicit_engine) explicit_engine = explore(budget.max_states);
     } catch (const semantics::SemanticsLimitError& e) {
       throw InputError(e.what());
     }
@@ -548,9 +540,8 @@ int run_query(const QueryOptions& o) {
       throw InputError(items[i].text + ": " + e.what());
     } catch (const std::length_error& e) {
       throw InputError(items[i].text + ": the set is too large to list (" + e.what() + ")");
-    } catch (const engine::bdd::BddError& e) {
-      std::cerr << "sfcv query: unknown: the BDD package ran out of resources: " << e.what()
-                << "\n";
+    } catch (const LimitReached& e) {
+      std::cerr << "sfcv query: unknown: " << e.what() << "\n";
       return kUnknown;
     }
     // --assert: a test gives its verdict; a set is asserted empty (library properties are the
@@ -633,8 +624,7 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--engine", opts->engine,
                   "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
                   "(explicit up to " + std::to_string(kAutoExplicitStates) + " situations, then bdd)");
-  sub->add_option("--max-states", opts->max_states, "Stop exploring after N situations");
-  sub->add_option("--timeout", opts->timeout, "Stop exploring after S seconds");
+  add_limit_options(*sub, opts->limits, "the graph is incomplete", MemoryLimit::NotOffered);
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->callback([opts, &selected] {
     selected = [opts] { return run_query(*opts); };

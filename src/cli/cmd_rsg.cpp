@@ -16,6 +16,8 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/progress_line.hpp"
+#include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
 #include "engine/bdd/condition_simplifier.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
@@ -34,8 +36,7 @@ struct RsgOptions {
   bool list = false;
   std::string dot;
   bool json = false;
-  std::uint64_t max_states = 0;
-  double timeout = 0;
+  LimitOptions limits;
 };
 
 /// "{1,10} x y" -> ("{1,10}", "x y"): the situation and what it emits.
@@ -93,15 +94,35 @@ std::string dot_escape(const std::string& s) {
 }
 
 int run_rsg(const RsgOptions& o) {
+  const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
+  ProgressLine progress(!global_options().quiet);
+  progress.phase("load");
   const model::Project project = load_model_or_throw(o.model, parse_format(o.format));
-  const auto built = build_system(project, o.system, {}, "sfcv rsg");
+  budget.check_time("loading the model");
+  progress.phase("build");
+  const auto built = build_system(project, o.system, {}, "sfcv rsg", semantics::ActionOrder::Declaration,
+                                  &budget);
+  budget.check_time("building the system");
   const auto& ts = built.system;
   const std::string& sem = built.semantics;
 
+  progress.phase("explore");
   engine::ExplorationOptions eo;
-  eo.max_states = o.max_states;
-  eo.timeout_seconds = o.timeout;
+  eo.max_states = budget.max_states;
+  eo.deadline = budget.deadline;
+  if (auto report = progress.callback())
+    eo.progress = [report](const engine::ExplorationProgress& p) {
+      model::Progress q;
+      q.phase = "explore";
+      q.states = p.states;
+      q.edges = p.edges;
+      q.depth = p.depth;
+      q.seconds = p.seconds;
+      report(q);
+    };
+  eo.progress_interval = 4096;
   const auto g = engine::build_reachable_situation_graph(*ts, eo);
+  progress.phase("render");
   const auto& inputs = ts->inputs();
   auto state = [&g](std::uint32_t s) { return g.states().at(s); };
   auto condition = [&](std::uint64_t e) {
@@ -263,8 +284,7 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--list", opts->list, "List every situation and evolution");
   sub->add_option("--dot", opts->dot, "Write the graph as Graphviz to FILE (- for stdout)");
   sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");
-  sub->add_option("--max-states", opts->max_states, "Stop after N states (verdict unknown)");
-  sub->add_option("--timeout", opts->timeout, "Stop after S seconds (verdict unknown)");
+  add_limit_options(*sub, opts->limits, "verdict unknown", MemoryLimit::NotOffered);
   sub->callback([opts, &selected] {
     selected = [opts] { return run_rsg(*opts); };
   });

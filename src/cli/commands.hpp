@@ -12,6 +12,13 @@ namespace sfcv::cli {
 
 using CommandRunner = std::function<int()>;
 
+/// Options of every subcommand alike, given before or after the subcommand's name.
+struct GlobalOptions {
+  bool quiet = false;  ///< --quiet: no progress, notes or warnings on standard error
+};
+/// The options of this run (set while parsing argv).
+const GlobalOptions& global_options();
+
 void add_check_command(CLI::App& app, CommandRunner& selected);
 void add_info_command(CLI::App& app, CommandRunner& selected);
 void add_lint_command(CLI::App& app, CommandRunner& selected);

@@ -1,18 +1,16 @@
 #pragma once
 // Exit codes are a contract (README): 0 every property holds, 1 some property is violated,
-// 2 bad usage or input, 3 unknown (a resource limit was reached).
+// 2 bad usage or input, 3 unknown (a resource limit was reached), 4 an internal error (a bug).
+// The error kinds (model/errors.hpp) map to them in one place: src/main.cpp.
 
-#include <stdexcept>
-#include <string>
+#include "model/errors.hpp"
 
 namespace sfcv::cli {
 
-enum ExitCode : int { kHolds = 0, kViolated = 1, kBadInput = 2, kUnknown = 3 };
+enum ExitCode : int { kHolds = 0, kViolated = 1, kBadInput = 2, kUnknown = 3, kInternalError = 4 };
 
-/// Bad usage or input: the message is printed as is, exit code 2.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+// The CLI's own errors are the library's kinds: bad usage or input, exit code 2.
+using sfcv::InputError;
+using sfcv::UsageError;
 
 }  // namespace sfcv::cli

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "model/validate.hpp"
 
@@ -25,7 +26,7 @@ model::Project load_model_or_throw(const std::string& path, io::Format format, b
   for (const auto& d : result.diagnostics) {
     const bool is_error = d.severity == model::Severity::Error;
     if (is_error) ++errors;
-    if (is_error || !quiet) std::cerr << d.str() << "\n";
+    if (is_error || !(quiet || global_options().quiet)) std::cerr << d.str() << "\n";
   }
   if (!result.project)
     throw InputError(path + ": " + std::to_string(errors ? errors : 1) +

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "semantics/grafcet_system.hpp"
@@ -31,7 +32,7 @@ std::string chosen_semantics(const model::Project& project, const SystemOptions&
 
 BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
                          const std::vector<model::ExprPtr>& assumptions, const std::string& command,
-                         semantics::ActionOrder action_order) {
+                         semantics::ActionOrder action_order, const model::Budget* budget) {
   BuiltSystem built;
   built.semantics = chosen_semantics(project, o);
   model::Diagnostics diags;
@@ -43,6 +44,7 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     semantics::GrafcetOptions g;
     g.single_input_change = !o.multi_input_change;
     g.assumptions = assumptions;
+    if (budget) g.deadline = budget->deadline;
     built.system = semantics::make_grafcet_system(project, g, diags);
   } else {
     if (o.multi_input_change)
@@ -58,8 +60,9 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
   }
   bool errors = false;
   for (const auto& d : diags) {
-    std::cerr << d.str() << "\n";
-    errors = errors || d.severity == model::Severity::Error;
+    const bool error = d.severity == model::Severity::Error;
+    if (error || !global_options().quiet) std::cerr << d.str() << "\n";
+    errors = errors || error;
   }
   if (errors || !built.system)
     throw InputError(command + ": the " + built.semantics + " semantics cannot model this chart");

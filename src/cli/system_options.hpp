@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model/budget.hpp"
 #include "model/chart.hpp"
 #include "model/expr.hpp"
 #include "semantics/options.hpp"
@@ -41,6 +42,7 @@ struct BuiltSystem {
 /// semantics cannot express (or bad option values) throws InputError naming `command`.
 BuiltSystem build_system(const model::Project& project, const SystemOptions& options,
                          const std::vector<model::ExprPtr>& assumptions, const std::string& command,
-                         semantics::ActionOrder action_order = semantics::ActionOrder::Declaration);
+                         semantics::ActionOrder action_order = semantics::ActionOrder::Declaration,
+                         const model::Budget* budget = nullptr);
 
 }  // namespace sfcv::cli

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/errors.hpp"
 #include "model/chart.hpp"
 
 namespace sfcv::io {
@@ -12,9 +13,9 @@ namespace sfcv::io {
 /// Thrown by write_g7 when the model holds what .g7 cannot express (several POUs, ST action
 /// bodies, qualifiers other than N, priorities, TIME or FB variables, ...); the message names
 /// the construct and its place.
-class G7WriteError : public std::runtime_error {
+class G7WriteError : public UnsupportedConstruct {
  public:
-  using std::runtime_error::runtime_error;
+  using UnsupportedConstruct::UnsupportedConstruct;
 };
 
 std::string write_g7(const model::Project& project);

@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "io/iec_text_writer.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ namespace {
 using model::ExprKind;
 
 [[noreturn]] void cannot(const std::string& what) {
-  throw std::invalid_argument("cannot print as IEC 61131-3 text: " + what);
+  throw UnsupportedConstruct("cannot print as IEC 61131-3 text: " + what);
 }
 
 bool is_identifier(std::string_view s) {

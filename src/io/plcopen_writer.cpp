@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "io/plcopen_writer.hpp"
 
 #include <pugixml.hpp>
@@ -24,7 +25,7 @@ constexpr const char* kNamespace = "http://www.plcopen.org/xml/tc6_0201";
 constexpr const char* kXhtml = "http://www.w3.org/1999/xhtml";
 
 [[noreturn]] void cannot(const std::string& what) {
-  throw std::invalid_argument("cannot write as PLCopen XML: " + what);
+  throw UnsupportedConstruct("cannot write as PLCopen XML: " + what);
 }
 
 void check_expr(const model::ExprPtr& e, const std::string& where) {

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/errors.hpp"
 #include "io/st_lexer.hpp"
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
@@ -44,8 +45,8 @@ namespace st {
 
 /// Thrown by Parser on the first syntax error of a construct; importers catch it, record it and
 /// resynchronise.
-struct ParseError : std::runtime_error {
-  ParseError(model::SourceLocation w, const std::string& m) : std::runtime_error(m), where(std::move(w)) {}
+struct ParseError : InputError {
+  ParseError(model::SourceLocation w, const std::string& m) : InputError(m), where(std::move(w)) {}
   model::SourceLocation where;
 };
 

@@ -2,13 +2,12 @@
 // What an engine is asked to check, as a value (like Storm's CheckTask): the system, the
 // resolved properties, fairness, the standard checks, and the limits.
 
-#include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "logic/fwd.hpp"
 #include "logic/standard_checks.hpp"
+#include "model/budget.hpp"
 #include "model/chart.hpp"
 #include "model/source_location.hpp"
 #include "semantics/transition_system.hpp"
@@ -21,19 +20,12 @@ struct Property {
   model::SourceLocation where;
 };
 
-struct Progress {
-  std::uint64_t states = 0;
-  std::uint64_t edges = 0;
-  std::uint32_t depth = 0;
-  double seconds = 0;
-};
+/// Progress of a long run, for the CLI's progress line.
+using Progress = model::Progress;
 
-struct CheckLimits {
-  std::uint64_t max_states = 0;     ///< 0 = unlimited
-  double timeout_seconds = 0;       ///< 0 = unlimited
-  std::uint64_t max_memory_bytes = 0;
-  std::function<void(const Progress&)> progress;  ///< may be empty
-};
+/// --timeout, --memory, --max-states and the progress callback: one budget for the whole run,
+/// shared by every phase and, under --engine auto, by both engines.
+using CheckLimits = model::Budget;
 
 struct CheckTask {
   const semantics::TransitionSystem* system = nullptr;

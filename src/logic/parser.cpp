@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "logic/parser.hpp"
 
 #include <cctype>
@@ -110,9 +111,9 @@ std::vector<Token> lex(std::string_view s) {
   return out;
 }
 
-struct SyntaxError : std::runtime_error {
+struct SyntaxError : InputError {
   SyntaxError(const Token& t, const std::string& m)
-      : std::runtime_error(m), line(t.line), column(t.column) {}
+      : InputError(m), line(t.line), column(t.column) {}
   int line, column;
 };
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/errors.hpp"
 namespace sfcv::logic {
 
 /// Where a piece of query text comes from: "query" (the command line), a library file name.
@@ -22,10 +23,10 @@ struct QueryPos {
 };
 
 /// A syntax, name or sort error, located in the query text or a library file.
-class QueryError : public std::runtime_error {
+class QueryError : public InputError {
  public:
   QueryError(const QueryPos& pos, const std::string& message)
-      : std::runtime_error(pos.str() + ": " + message), pos_(pos), message_(message) {}
+      : InputError(pos.str() + ": " + message), pos_(pos), message_(message) {}
   const QueryPos& pos() const { return pos_; }
   const std::string& message() const { return message_; }
 

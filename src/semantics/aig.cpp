@@ -1,4 +1,5 @@
 #include "semantics/aig.hpp"
+#include "model/errors.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -27,6 +28,8 @@ void Aig::set_next(std::uint32_t latch_index, AigLit next) {
 }
 
 AigLit Aig::make_and(AigLit a, AigLit b) {
+  if (deadline_ && (++calls_ & 0xFFFFU) == 0 && std::chrono::steady_clock::now() > *deadline_)
+    throw LimitReached(Limit::Time, "time limit reached while building the circuit");
   if (a > b) std::swap(a, b);
   if (a == kFalse) return kFalse;
   if (a == kTrue) return b;

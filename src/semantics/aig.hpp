@@ -6,7 +6,9 @@
 // A literal is 2 * node + negation bit; node 0 is the constant FALSE (literal 0), so literal 1 is
 // TRUE. Nodes are numbered in creation order; the AIGER writer renumbers them.
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -49,6 +51,11 @@ class Aig {
   void set_next(std::uint32_t latch_index, AigLit next);
 
   AigLit make_and(AigLit a, AigLit b);  ///< constant folding + structural hashing
+  /// Past `deadline`, make_and throws LimitReached(Time) (polled every 64k calls): building the
+  /// circuit of a large chart must hold the run's budget too. None: no limit.
+  void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
+    deadline_ = deadline;
+  }
   static AigLit make_not(AigLit a) { return a ^ 1U; }
   AigLit make_or(AigLit a, AigLit b) { return make_not(make_and(make_not(a), make_not(b))); }
   AigLit make_xor(AigLit a, AigLit b);
@@ -96,6 +103,8 @@ class Aig {
   std::vector<Named> bad_, constraints_, outputs_;
   std::unordered_map<std::uint64_t, AigLit> strash_;
   std::size_t num_ands_ = 0;
+  std::optional<std::chrono::steady_clock::time_point> deadline_;
+  std::uint32_t calls_ = 0;
 };
 
 /// Little-endian two's-complement bit vectors over an Aig, for bounded integers.

@@ -599,15 +599,17 @@ void CircuitBuilder::build() {
 
 }  // namespace grafcet
 
-GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts) {
+GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
   if (as_history(ts))
     throw CircuitUnsupported("prev(), rise() and fall() in a property: the Grafcet circuit does "
                              "not keep previous situations yet (use --engine explicit)");
   const auto* sys = dynamic_cast<const grafcet::GrafcetSystem*>(&ts);
   if (!sys) throw std::invalid_argument("build_grafcet_circuit: not a Grafcet system");
   GrafcetCircuit c;
+  c.aig.set_deadline(deadline);
   grafcet::CircuitBuilder builder(*sys, c);
   builder.build();
+  c.aig.set_deadline(std::nullopt);
   return c;
 }
 

@@ -48,6 +48,8 @@ struct GrafcetCircuit : TransitionCircuit {
 /// `ts` must come from make_grafcet_system (throws std::invalid_argument otherwise). Throws
 /// CircuitUnsupported for expressions the circuit cannot express (a product or quotient of
 /// two non-constant values).
-GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts);
+/// Past `deadline` it throws LimitReached(Time).
+GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts,
+                                     std::optional<Deadline> deadline = std::nullopt);
 
 }  // namespace sfcv::semantics

@@ -5,6 +5,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "semantics/grafcet_system_impl.hpp"
 
@@ -826,6 +827,8 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
   std::vector<std::uint32_t> cleared;
   std::vector<const GStored*> events;
   for (std::size_t k = 0;; ++k) {
+    if (options_.deadline && (k & 63U) == 63U && std::chrono::steady_clock::now() > *options_.deadline)
+      throw LimitReached(Limit::Time, "time limit reached during a transient evolution");
     const Ctx ctx{cur, &v, prev, prev_in};
     auto need_split = [&](const Ctx& c) {
       r.split = c.wanted;

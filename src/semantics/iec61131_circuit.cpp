@@ -734,11 +734,11 @@ TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit 
 
 }  // namespace
 
-TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
   if (const auto* h = as_history(ts)) {
     if (h->kind() != SemanticsKind::Iec61131)
       throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
-    return extend_with_history(*h, build_iec61131_circuit(h->base()));
+    return extend_with_history(*h, build_iec61131_circuit(h->base(), deadline));
   }
   const auto* sys = dynamic_cast<const iec::Iec61131System*>(&ts);
   if (!sys) throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
@@ -748,8 +748,10 @@ TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
   } initial;
   ts.initial_states(initial);
   TransitionCircuit c;
+  c.aig.set_deadline(deadline);
   iec::SymbolicMachine machine(sys->program(), c);
   machine.build(initial.state);
+  c.aig.set_deadline(std::nullopt);
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/errors.hpp"
 #include "semantics/aig.hpp"
 #include "semantics/transition_system.hpp"
 
@@ -29,13 +30,16 @@ struct TransitionCircuit {
 
 /// A construct the circuit cannot express (a product of two variables, a division): the
 /// message names it. Callers answer with a clear error, never a wrong model.
-class CircuitUnsupported : public std::runtime_error {
+class CircuitUnsupported : public UnsupportedConstruct {
  public:
-  using std::runtime_error::runtime_error;
+  using UnsupportedConstruct::UnsupportedConstruct;
 };
 
 /// `ts` must come from make_iec61131_system (throws std::invalid_argument otherwise).
-TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts);
+/// Past `deadline` (the run's budget) it throws LimitReached(Time).
+using Deadline = std::chrono::steady_clock::time_point;
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts,
+                                         std::optional<Deadline> deadline = std::nullopt);
 
 /// The packed state whose field values are the latch values `latches` (one bool per latch).
 std::vector<StateWord> state_from_latches(const TransitionSystem& ts, const TransitionCircuit& c,

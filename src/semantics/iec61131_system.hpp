@@ -17,6 +17,7 @@
 
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
+#include "model/errors.hpp"
 #include "semantics/options.hpp"
 #include "semantics/transition_system.hpp"
 
@@ -25,9 +26,12 @@ namespace sfcv::semantics {
 /// Thrown by successors() when an integer input must be enumerated value by value (it is copied
 /// into the state or used in arithmetic) and its remaining range has more than
 /// kMaxEnumeratedValues values: the engine reports it instead of hanging.
-class SemanticsLimitError : public std::runtime_error {
+/// A LimitReached (Limit::Enumeration): the explicit engine answers unknown, or --engine auto
+/// switches to the bdd engine.
+class SemanticsLimitError : public LimitReached {
  public:
-  using std::runtime_error::runtime_error;
+  explicit SemanticsLimitError(const std::string& message)
+      : LimitReached(Limit::Enumeration, message) {}
 };
 
 inline constexpr std::int64_t kMaxEnumeratedValues = 4096;

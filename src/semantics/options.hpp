@@ -2,7 +2,9 @@
 // Options of the two semantics, as plain values filled in by the CLI (like mCRL2's
 // explorer_options); the library reads no global state.
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,9 @@ struct GrafcetOptions {
   bool single_input_change = true;  ///< IEC 60848's hypothesis; false = --multi-input-change
   std::vector<model::ExprPtr> assumptions;
   std::size_t max_transient_steps = 10000;  ///< bound on one transient evolution's length
+  /// The run's deadline (model::Budget): a transient evolution past it throws
+  /// LimitReached(Time) (one evolution may take seconds on a long chain).
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 }  // namespace sfcv::semantics

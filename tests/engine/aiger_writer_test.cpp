@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "engine/external/aiger_writer.hpp"
 
 #include <gtest/gtest.h>
@@ -59,7 +60,7 @@ TEST(AigerWriter, RefusesCircuitsWithoutInputs) {
   Aig aig;
   aig.add_latch("q");
   std::ostringstream out;
-  EXPECT_THROW(write_aiger(out, aig, AigerMode::Binary), std::invalid_argument);
+  EXPECT_THROW(write_aiger(out, aig, AigerMode::Binary), sfcv::UnsupportedConstruct);
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 
 #include <gtest/gtest.h>
@@ -106,7 +107,7 @@ TEST(PromelaExport, RefusesInvariantsThatReadInputs) {
   auto m = follower(false);
   m.aig.add_bad("reads_x", m.aig.inputs()[0].literal);
   std::ostringstream out;
-  EXPECT_THROW(write_promela(out, m, 2), std::invalid_argument);
+  EXPECT_THROW(write_promela(out, m, 2), sfcv::UnsupportedConstruct);
 }
 
 TEST(PromelaExport, KeepsOnlyLatchesInTheStateVector) {

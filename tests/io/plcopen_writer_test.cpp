@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "model/errors.hpp"
 #include "grafcet_compare.hpp"
 #include "io/g7_writer.hpp"
 #include "io/iec_text_writer.hpp"
@@ -236,7 +237,7 @@ TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
   EXPECT_TRUE(il2->body_unsupported);
   EXPECT_EQ(il2->unsupported_language, "IL");
   // IEC text cannot carry such a body: refused, not printed as an empty action.
-  EXPECT_THROW(write_iec_text(p), std::invalid_argument);
+  EXPECT_THROW(write_iec_text(p), sfcv::UnsupportedConstruct);
 }
 
 TEST(PlcopenWriter, DottedActionNamesBooleanActionsAndCodesysStepActions) {
@@ -300,7 +301,7 @@ TEST(PlcopenWriter, OutputIsAWellFormedTc6Document) {
 std::string refusal(const model::Project& p) {
   try {
     write_plcopen_xml(p);
-  } catch (const std::invalid_argument& e) {
+  } catch (const sfcv::UnsupportedConstruct& e) {
     return e.what();
   }
   return "(written)";
@@ -436,7 +437,7 @@ TEST(RoundTripCorpus, EveryManifestFilePrintsAndReloadsToTheSameModel) {
       const auto diff = model::first_difference(p, *again.project);
       EXPECT_FALSE(diff.has_value()) << *diff;
       EXPECT_EQ(test::grafcet_difference(p, *again.project), "");
-      EXPECT_THROW(write_plcopen_xml(p), std::invalid_argument);
+      EXPECT_THROW(write_plcopen_xml(p), sfcv::UnsupportedConstruct);
     } else if (f.rfind("14_", 0) == 0) {
       // The ill-formed file keeps its defects for validation: IEC text says them again; a
       // PLCopen graph cannot wire a transition to an undeclared step, and the writer says so.

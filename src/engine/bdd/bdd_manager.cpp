@@ -7,6 +7,8 @@
 #include <string>
 #include <unordered_map>
 
+#include "model/errors.hpp"
+
 // bdd.h maps these names to its C++ layer; the facade uses the C API with explicit reference
 // counting.
 #undef bdd_init
@@ -26,10 +28,10 @@ long g_live = 0;
 
 void throw_on_error(int code) {
   g_failed = true;
-  const bool out_of_nodes = code == BDD_NODENUM || code == BDD_MEMORY;
-  throw BddError(std::string(out_of_nodes ? "the BDD node table is full (--memory): "
-                                          : "BDD package error: ") +
-                 bdd_errstring(code));
+  if (code == BDD_NODENUM || code == BDD_MEMORY)
+    throw LimitReached(Limit::Memory,
+                       std::string("the BDD node table is full (--memory): ") + bdd_errstring(code));
+  throw BddError(std::string("BDD package error: ") + bdd_errstring(code));
 }
 
 bool g_has_deadline = false;
@@ -41,8 +43,19 @@ void quiet_gbc(int pre, bddGbcStat*) {
   if (pre && g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
     g_has_deadline = false;
     g_failed = true;
-    throw BddError("time limit reached in the BDD package");
+    throw LimitReached(Limit::Time, "time limit reached in the BDD package");
   }
+}
+
+// Between operations the tables are consistent: past the deadline the next operation throws
+// without failing the manager. Fixpoint loops are made of many operations, so this bounds them
+// to about one operation past the deadline; the garbage-collection hook above stops a single
+// operation that blows up.
+unsigned g_operations = 0;
+void check_deadline() {
+  if (g_has_deadline && (++g_operations & 15U) == 0 &&
+      std::chrono::steady_clock::now() > g_deadline)
+    throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
 }
 
 int g_reorderings = 0;
@@ -81,12 +94,9 @@ void configure_manager(int nodes, int cache, int cache_ratio) {
   g_ratio = cache_ratio;
 }
 
-void set_time_limit(double seconds) {
-  g_has_deadline = seconds > 0;
-  if (g_has_deadline)
-    g_deadline = std::chrono::steady_clock::now() +
-                 std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                     std::chrono::duration<double>(seconds));
+void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
+  g_has_deadline = deadline.has_value();
+  if (deadline) g_deadline = *deadline;
 }
 
 int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }
@@ -204,13 +214,23 @@ Bdd Bdd::variable(int index) {
   return Bdd(bdd_ithvar(index));
 }
 
-Bdd Bdd::operator&(const Bdd& o) const { return Bdd(bdd_and(root_, o.root_)); }
-Bdd Bdd::operator|(const Bdd& o) const { return Bdd(bdd_or(root_, o.root_)); }
+Bdd Bdd::operator&(const Bdd& o) const {
+  check_deadline();
+  return Bdd(bdd_and(root_, o.root_)); }
+Bdd Bdd::operator|(const Bdd& o) const {
+  check_deadline();
+  return Bdd(bdd_or(root_, o.root_)); }
 Bdd Bdd::operator!() const { return Bdd(bdd_not(root_)); }
 
-Bdd Bdd::operator^(const Bdd& o) const { return Bdd(bdd_apply(root_, o.root_, bddop_xor)); }
-Bdd Bdd::iff(const Bdd& o) const { return Bdd(bdd_apply(root_, o.root_, bddop_biimp)); }
-Bdd Bdd::ite(const Bdd& t, const Bdd& e) const { return Bdd(bdd_ite(root_, t.root_, e.root_)); }
+Bdd Bdd::operator^(const Bdd& o) const {
+  check_deadline();
+  return Bdd(bdd_apply(root_, o.root_, bddop_xor)); }
+Bdd Bdd::iff(const Bdd& o) const {
+  check_deadline();
+  return Bdd(bdd_apply(root_, o.root_, bddop_biimp)); }
+Bdd Bdd::ite(const Bdd& t, const Bdd& e) const {
+  check_deadline();
+  return Bdd(bdd_ite(root_, t.root_, e.root_)); }
 
 Bdd Bdd::cube(const std::vector<int>& vars) {
   ensure_manager();
@@ -221,14 +241,19 @@ Bdd Bdd::cube(const std::vector<int>& vars) {
   return Bdd(bdd_makeset(copy.data(), static_cast<int>(copy.size())));
 }
 
-Bdd Bdd::exist(const Bdd& vars) const { return Bdd(bdd_exist(root_, vars.root_)); }
+Bdd Bdd::exist(const Bdd& vars) const {
+  check_deadline();
+  return Bdd(bdd_exist(root_, vars.root_)); }
 Bdd Bdd::and_exist(const Bdd& o, const Bdd& vars) const {
+  check_deadline();
   return Bdd(bdd_appex(root_, o.root_, bddop_and, vars.root_));
 }
 Bdd Bdd::replace(const VarMap& map) const {
+  check_deadline();
   return Bdd(bdd_replace(root_, static_cast<bddPair*>(map.pair_)));
 }
 Bdd Bdd::compose(const VarMap& map) const {
+  check_deadline();
   return Bdd(bdd_veccompose(root_, static_cast<bddPair*>(map.pair_)));
 }
 Bdd Bdd::sat_one(const Bdd& vars) const { return Bdd(bdd_satoneset(root_, vars.root_, 0)); }

@@ -3,6 +3,7 @@
 // class. No other file includes bdd.h, so BuDDy's global state and its error handling (which
 // would exit the process) stay behind this interface: errors become BddError exceptions.
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 
@@ -10,11 +11,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/errors.hpp"
+
 namespace sfcv::engine::bdd {
 
-class BddError : public std::runtime_error {
+/// BuDDy reported an error other than running out of nodes: a bug (the node table full under
+/// --memory, and the deadline, are LimitReached).
+class BddError : public InternalError {
  public:
-  using std::runtime_error::runtime_error;
+  using InternalError::InternalError;
 };
 
 /// Initialises BuDDy once (later calls do nothing): node table, cache, hooks.
@@ -27,10 +32,23 @@ void ensure_variables(int count);
 /// default sizing and runs in 3 s with (4000000, 1000000) and cache ratio 4.
 void configure_manager(int nodes, int cache, int cache_ratio = 4);
 
-/// Makes the manager throw BddError("time limit ...") at its next garbage collection once
-/// `seconds` have passed (0: no limit): a single operation that blows up is otherwise not
-/// interruptible. Garbage collections happen whenever the node table fills.
-void set_time_limit(double seconds);
+/// Past `deadline` (none: no limit) the next operation throws LimitReached(Time), and so does
+/// the next garbage collection (a single operation that blows up is otherwise not
+/// interruptible; collections happen whenever the node table fills). The run's one deadline
+/// (model::Budget), not a timeout of its own.
+void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
+
+/// Sets the deadline for its lifetime (the manager is global: a deadline must not outlive the
+/// check that set it).
+class DeadlineScope {
+ public:
+  explicit DeadlineScope(std::optional<std::chrono::steady_clock::time_point> deadline) {
+    set_deadline(deadline);
+  }
+  ~DeadlineScope() { set_deadline(std::nullopt); }
+  DeadlineScope(const DeadlineScope&) = delete;
+  DeadlineScope& operator=(const DeadlineScope&) = delete;
+};
 
 /// Nodes currently allocated in the manager's table.
 int allocated_nodes();

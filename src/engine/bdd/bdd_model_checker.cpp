@@ -39,14 +39,15 @@ class Run {
     const auto start = Clock::now();
     logic::CheckReport report;
     report.engine = "bdd";
-    // A BDD package error (the node table full under --memory) leaves the package unusable:
-    // what is decided stays, everything after it is unknown.
+    // A limit (the node table full under --memory, the deadline) ends the work: what is
+    // decided stays, everything after it is unknown.
     try {
       explore(report, start);
-    } catch (const bdd::BddError& e) {
+    } catch (const LimitReached& e) {
       failed_ = e.what();
+      failed_limit_ = e.which();
       report.complete = false;
-      report.limit = failed_.find("time limit") != std::string::npos ? "time" : "memory";
+      report.limit = to_string(e.which());
       report.states = last_count_;
       report.depth = static_cast<std::uint32_t>(rings_.empty() ? 0 : rings_.size() - 1);
     }
@@ -81,7 +82,7 @@ class Run {
           report.edges = *edges;
           report.edges_known = true;
         }
-      } catch (const bdd::BddError&) {
+      } catch (const LimitReached&) {
         // Not counted: the report leaves the number out rather than print a wrong one.
       }
     }
@@ -96,8 +97,9 @@ class Run {
     if (failed_.empty()) {
       try {
         return compute();
-      } catch (const bdd::BddError& e) {
+      } catch (const LimitReached& e) {
         failed_ = e.what();
+        failed_limit_ = e.which();
       }
     }
     PropertyResult r;
@@ -105,7 +107,8 @@ class Run {
     r.formula = formula;
     r.check = check;
     r.verdict = Verdict::Unknown;
-    r.message = "the BDD package ran out of resources: " + failed_;
+    r.message = failed_limit_ == Limit::Time ? failed_
+                                             : "the BDD package ran out of resources: " + failed_;
     return r;
   }
 
@@ -145,6 +148,7 @@ class Run {
       const double states = counting ? last_count_.to_double() : 0;
       if (limits.progress) {
         logic::Progress p;
+        p.phase = "explore (bdd)";
         p.states = last_count_.to_u64().value_or(~std::uint64_t{0});
         p.depth = static_cast<std::uint32_t>(rings_.size() - 1);
         p.seconds = since(start);
@@ -155,7 +159,7 @@ class Run {
         report.limit = "states";
         break;
       }
-      if (limits.timeout_seconds > 0 && since(start) > limits.timeout_seconds) {
+      if (limits.expired()) {
         report.complete = false;
         report.limit = "time";
         break;
@@ -576,7 +580,8 @@ class Run {
   Bdd frontier_;  ///< the last ring, not expanded when a limit stopped exploration
   std::vector<Bdd> rings_;
   logic::BigCount last_count_;
-  std::string failed_;  ///< the BDD package error that ended the run, if any
+  std::string failed_;  ///< the limit that ended the run, if any
+  Limit failed_limit_ = Limit::Memory;
 };
 
 class BddModelChecker final : public ModelChecker {
@@ -592,9 +597,9 @@ class BddModelChecker final : public ModelChecker {
     }
     try {
       if (task.system->kind() == semantics::SemanticsKind::Grafcet)
-        semantics::build_grafcet_circuit(*task.system);
+        semantics::build_grafcet_circuit(*task.system, task.limits.deadline);
       else
-        semantics::build_iec61131_circuit(*task.system);
+        semantics::build_iec61131_circuit(*task.system, task.limits.deadline);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = std::string("the bdd engine cannot encode ") + e.what();
       return false;
@@ -617,24 +622,22 @@ class BddModelChecker final : public ModelChecker {
       const auto nodes = task.limits.max_memory_bytes / bdd::kBytesPerNode;
       so.max_nodes = static_cast<int>(std::clamp<std::uint64_t>(nodes, 1, 2'000'000'000));
     }
-    so.timeout_seconds = task.limits.timeout_seconds;
-    // A single BDD operation that blows up is stopped at a garbage collection; a little later
-    // than the exploration's own limit, which reports more.
-    bdd::set_time_limit(task.limits.timeout_seconds > 0 ? task.limits.timeout_seconds * 1.5 : 0);
+    so.timeout_seconds = task.limits.seconds_left();
+    so.deadline = task.limits.deadline;
+    // The run's one deadline, in every BDD operation (the fixpoints are loops of them).
+    const bdd::DeadlineScope deadline(task.limits.deadline);
     try {
       const auto symbolic = make_symbolic_system(*task.system, so);
       Run run(task, *symbolic);
-      auto report = run.check();
-      bdd::set_time_limit(0);
-      return report;
-    } catch (const bdd::BddError& e) {
-      // The relation (or the Grafcet closure) does not fit: every answer is unknown.
-      bdd::set_time_limit(0);
+      return run.check();
+    } catch (const LimitReached& e) {
+      // The relation (or the Grafcet closure) does not fit, or the deadline passed while it
+      // was built: every answer is unknown.
       logic::CheckReport report;
       report.engine = "bdd";
       report.complete = false;
-      const bool time = std::string(e.what()).find("time limit") != std::string::npos;
-      report.limit = time ? "time" : "memory";
+      const bool time = e.which() == Limit::Time;
+      report.limit = to_string(e.which());
       report.edges_known = false;
       const std::string why = (time ? std::string() : "the BDD package ran out of resources: ") + e.what();
       for (const auto& p : task.properties) {

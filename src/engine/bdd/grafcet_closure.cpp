@@ -141,7 +141,8 @@ GrafcetClosure::GrafcetClosure(const semantics::GrafcetCircuit& circuit, Grafcet
 
 void GrafcetClosure::check_time() const {
   if (has_deadline_ && std::chrono::steady_clock::now() > deadline_)
-    throw bdd::BddError("time limit reached while closing the Grafcet transient evolutions");
+    throw LimitReached(Limit::Time,
+                       "time limit reached while closing the Grafcet transient evolutions");
 }
 
 Bdd GrafcetClosure::micro_image(const Bdd& configs) const {

@@ -21,12 +21,13 @@ SymbolicQueryEvaluator::SymbolicQueryEvaluator(SymbolicSystem& sys,
     layers_.push_back(frontier);
     layer_counts_.push_back(sys_.count(frontier));
     if (options.max_states > 0 && sys_.count(reached_) > static_cast<double>(options.max_states))
-      throw SymbolicQueryError("more than " + std::to_string(options.max_states) +
-                               " reachable situations (--max-states)");
+      throw LimitReached(Limit::States, "more than " + std::to_string(options.max_states) +
+                                            " reachable situations (--max-states)");
     if (options.timeout_seconds > 0 &&
         std::chrono::duration<double>(Clock::now() - start).count() > options.timeout_seconds)
-      throw SymbolicQueryError("the reachable situations were not all found within " +
-                               std::to_string(options.timeout_seconds) + " s (--timeout)");
+      throw LimitReached(Limit::Time, "the reachable situations were not all found within " +
+                                          std::to_string(options.timeout_seconds) +
+                                          " s (--timeout)");
     frontier = sys_.image(frontier) & !reached_;
     reached_ = reached_ | frontier;
   }

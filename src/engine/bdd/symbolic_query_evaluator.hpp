@@ -19,9 +19,10 @@
 namespace sfcv::engine {
 
 /// A query or a system the symbolic evaluator cannot answer exactly (it never guesses).
-class SymbolicQueryError : public std::runtime_error {
+/// (Its limits, --max-states and --timeout, are LimitReached.)
+class SymbolicQueryError : public UnsupportedConstruct {
  public:
-  using std::runtime_error::runtime_error;
+  using UnsupportedConstruct::UnsupportedConstruct;
 };
 
 /// A set of one sort: `bdd` for situations and evolutions, `steps` (observable ids) for steps.

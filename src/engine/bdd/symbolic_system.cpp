@@ -512,11 +512,11 @@ std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::Transition
     bdd::configure_manager(m.nodes, m.cache, m.cache_ratio);
   };
   if (ts.kind() == semantics::SemanticsKind::Grafcet) {
-    auto circuit = semantics::build_grafcet_circuit(ts);
+    auto circuit = semantics::build_grafcet_circuit(ts, options.deadline);
     configure(circuit.aig);
     return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
   }
-  auto circuit = semantics::build_iec61131_circuit(ts);
+  auto circuit = semantics::build_iec61131_circuit(ts, options.deadline);
   configure(circuit.aig);
   return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
 }

@@ -2,7 +2,42 @@
 
 #include <chrono>
 
+#include "logic/formula.hpp"
+#include "model/errors.hpp"
+
 namespace sfcv::engine {
+
+namespace {
+
+/// The report of a run the semantics stopped before a graph existed (an integer input too wide
+/// to enumerate): every answer is unknown, the limit says why.
+logic::CheckReport all_unknown(const logic::CheckTask& task, const LimitReached& stop) {
+  logic::CheckReport report;
+  report.engine = "explicit";
+  report.complete = false;
+  report.limit = to_string(stop.which());
+  report.edges_known = false;
+  for (const auto& p : task.properties) {
+    logic::PropertyResult r;
+    r.name = p.name;
+    r.formula = logic::to_string(p.formula);
+    r.where = p.where;
+    r.verdict = logic::Verdict::Unknown;
+    r.message = stop.what();
+    report.results.push_back(std::move(r));
+  }
+  for (auto c : task.checks) {
+    logic::PropertyResult r;
+    r.name = std::string(logic::to_string(c));
+    r.check = r.name;
+    r.verdict = logic::Verdict::Unknown;
+    r.message = stop.what();
+    report.results.push_back(std::move(r));
+  }
+  return report;
+}
+
+}  // namespace
 
 bool ExplicitModelChecker::can_handle(const logic::CheckTask& task, std::string* why) const {
   if (!task.system) {
@@ -53,15 +88,29 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   const auto start = Clock::now();
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
-  opts.timeout_seconds = task.limits.timeout_seconds;
+  opts.deadline = task.limits.deadline;
   opts.max_memory_bytes = task.limits.max_memory_bytes;
   if (task.limits.progress) {
     opts.progress_interval = 4096;
     opts.progress = [cb = task.limits.progress](const ExplorationProgress& p) {
-      cb(logic::Progress{p.states, p.edges, p.depth, p.seconds});
+      logic::Progress q;
+      q.phase = "explore";
+      q.states = p.states;
+      q.edges = p.edges;
+      q.depth = p.depth;
+      q.seconds = p.seconds;
+      cb(q);
     };
   }
-  const auto graph = build_reachable_situation_graph(*task.system, opts);
+  std::optional<ReachableSituationGraph> built;
+  try {
+    built.emplace(build_reachable_situation_graph(*task.system, opts));
+  } catch (const LimitReached& stop) {
+    auto report = all_unknown(task, stop);
+    report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return report;
+  }
+  const auto& graph = *built;
   logic::CheckReport report;
   report.engine = "explicit";
   report.states = graph.num_states();
@@ -74,7 +123,20 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   CtlChecker checker(graph, task.fairness);
   for (const auto& p : task.properties) {
     const auto t0 = Clock::now();
-    auto r = checker.check(p);
+    logic::PropertyResult r;
+    try {
+      // Each property is linear in the graph: checking the deadline between them bounds the
+      // overrun by one property.
+      task.limits.check_time("checking the properties");
+      r = checker.check(p);
+    } catch (const LimitReached& stop) {
+      r = logic::PropertyResult{};
+      r.name = p.name;
+      r.formula = logic::to_string(p.formula);
+      r.where = p.where;
+      r.verdict = logic::Verdict::Unknown;
+      r.message = stop.what();
+    }
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count() +
                 (report.results.empty() ? graph.build_seconds() : 0.0);
     report.results.push_back(std::move(r));

@@ -7,6 +7,7 @@
 
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "logic/formula.hpp"
+#include "model/budget.hpp"
 #include "model/names.hpp"
 
 namespace sfcv::engine {
@@ -43,7 +44,7 @@ class Checks {
  public:
   Checks(const ReachableSituationGraph& g, CtlChecker& fair, const logic::CheckTask& task)
       : g_(g), ts_(g.system()), fair_(fair), plain_(g), task_(task),
-        steps_(logic::step_refs(g.system(), task.project)) {}
+        steps_(logic::step_refs(g.system(), task.project)), poll_(task.limits, 64) {}
 
   PropertyResult run(StandardCheck id) {
     PropertyResult r;
@@ -83,6 +84,8 @@ class Checks {
     if (task_.max_findings == 0 || r.findings.size() < task_.max_findings)
       r.findings.push_back(std::move(finding));
   }
+  /// Throws LimitReached(Time) once the run's deadline has passed (polled in the loops below).
+  void poll() { poll_.tick_or_throw("running the standard checks"); }
   bool step_active(std::uint32_t s, const StepRef& step) const {
     return ts_.observe(g_.states().at(s), step.observable) != 0;
   }
@@ -95,7 +98,7 @@ class Checks {
     return nullptr;
   }
   /// Backward closure of `seeds` over all edges.
-  StateSet backward(StateSet seeds) const {
+  StateSet backward(StateSet seeds) {
     const auto& po = g_.predecessor_offsets();
     const auto& pe = g_.predecessor_edges();
     std::vector<std::uint32_t> queue;
@@ -104,6 +107,7 @@ class Checks {
     while (!queue.empty()) {
       const auto t = queue.back();
       queue.pop_back();
+      poll();
       for (auto i = po[t]; i < po[t + 1]; ++i) {
         const auto s = g_.source(pe[i]);
         if (!seeds[s]) {
@@ -145,7 +149,7 @@ class Checks {
     std::size_t found = 0;
     for (std::uint32_t s = 0; s < g_.num_states() && found < steps_.size(); ++s)
       for (std::size_t i = 0; i < steps_.size(); ++i)
-        if (!seen[i] && step_active(s, steps_[i])) {
+        if (poll(), !seen[i] && step_active(s, steps_[i])) {
           seen[i] = true;
           ++found;
         }
@@ -217,6 +221,7 @@ class Checks {
     }
     const auto transient = transient_steps();
     for (const auto* step : loop) {
+      poll();
       const auto index = static_cast<std::size_t>(step - steps_.data());
       if (auto it = transient.find(index); it != transient.end()) {
         if (!af) transient_reentry(r, index, it->second, ": a reachable situation exists from "
@@ -264,6 +269,7 @@ class Checks {
     const auto live = backward(firing);
     StateSet dead(n, 0);
     for (std::uint32_t s = 0; s < n; ++s) {
+      poll();
       const bool stuck = g_.expanded(s) && g_.edges_begin(s) == g_.edges_end(s);
       // On an incomplete graph only a state without any successor is certainly dead.
       dead[s] = g_.complete() ? !live[s] : stuck;
@@ -301,6 +307,7 @@ class Checks {
     r.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
     const auto transient = transient_steps();
     for (const auto& step : steps_) {
+      poll();
       const auto index = static_cast<std::size_t>(&step - steps_.data());
       if (auto it = transient.find(index); it != transient.end()) {
         transient_reentry(r, index, it->second, ", once crossed, is never crossed again");
@@ -364,6 +371,7 @@ class Checks {
     StateSet bad(n, 0);
     std::size_t count = 0;
     for (std::uint32_t s = 0; s < n; ++s) {
+      poll();
       bad[s] = !back[s];
       if (bad[s] && ++count <= kMaxSituations)
         add(r, "from situation " + situation(s) + " the initial situation " +
@@ -400,6 +408,7 @@ class Checks {
         if (!g_.expanded(s)) continue;
         for (auto a = g_.edges_begin(s); a < g_.edges_end(s); ++a)
           for (auto b = a + 1; b < g_.edges_end(s); ++b) {
+            poll();
             if (!conditions_intersect(g_.condition(a), g_.condition(b))) continue;
             const auto text = names(g_.fired(a)) + " and " + names(g_.fired(b));
             if (!seen.insert(text).second) continue;
@@ -424,6 +433,7 @@ class Checks {
           const auto fired = g_.fired(e);
           for (std::size_t i = 0; i < fired.size(); ++i)
             for (std::size_t j = i + 1; j < fired.size(); ++j) {
+              poll();
               std::vector<std::string> common;
               for (const auto& x : upstream[fired[i]])
                 for (const auto& y : upstream[fired[j]])
@@ -447,10 +457,11 @@ class Checks {
 
   /// The chart transition behind each system transition, matched by location (or name);
   /// empty when some transition cannot be matched.
-  std::vector<const model::Transition*> chart_transitions() const {
+  std::vector<const model::Transition*> chart_transitions() {
     std::vector<const model::Transition*> out;
     if (!task_.project) return out;
     for (const auto& info : ts_.transitions()) {
+      poll();
       const model::Transition* hit = nullptr;
       for (const auto& pou : task_.project->pous) {
         if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
@@ -470,7 +481,7 @@ class Checks {
   }
 
   /// Upstream step names of each system transition (chart-qualified); empty when unmatched.
-  std::vector<std::vector<std::string>> grafcet_upstream() const {
+  std::vector<std::vector<std::string>> grafcet_upstream() {
     std::vector<std::vector<std::string>> out;
     const auto matched = chart_transitions();
     for (std::size_t i = 0; i < matched.size(); ++i) {
@@ -491,12 +502,14 @@ class Checks {
     if (matched.empty()) return out;
     const std::uint32_t n = g_.num_states();
     for (std::size_t i = 0; i < steps_.size(); ++i) {
+      poll();
       bool stable = false;
       for (std::uint32_t s = 0; s < n && !stable; ++s) stable = step_active(s, steps_[i]);
       if (stable) continue;
       std::vector<bool> enters(matched.size(), false);
       bool any = false;
       for (std::size_t t = 0; t < matched.size(); ++t) {
+        poll();
         if (!model::iequals(ts_.transitions()[t].chart, steps_[i].chart)) continue;
         for (const auto& d : matched[t]->targets) enters[t] = enters[t] || model::iequals(d, steps_[i].step);
         any = any || enters[t];
@@ -575,6 +588,7 @@ class Checks {
                      " and never reset (no R qualifier anywhere)");
         // Set and reset in one situation.
         for (std::uint32_t s = 0; s < g_.num_states(); ++s) {
+          poll();
           const auto* on = [&]() -> const StepRef* {
             for (const auto* x : sets)
               if (step_active(s, *x)) return x;
@@ -607,6 +621,7 @@ class Checks {
         }
         bool found = false;
         for (std::uint32_t s = 0; s < g_.num_states() && !found; ++s) {
+          poll();
           if (!g_.expanded(s) || !ts_.layout().get(g_.states().at(s), static_cast<std::uint32_t>(field)))
             continue;
           for (auto e = g_.edges_begin(s); e < g_.edges_end(s) && !found; ++e)
@@ -654,6 +669,7 @@ class Checks {
             }
             bool found = false;
             for (std::uint32_t s = 0; s < g_.num_states() && !found; ++s) {
+              poll();
               if (!g_.expanded(s)) continue;
               for (auto e = g_.edges_begin(s); e < g_.edges_end(s) && !found; ++e) {
                 const auto t = g_.target(e);
@@ -759,6 +775,7 @@ class Checks {
               continue;
             }
             for (std::uint32_t s = 0; s < g_.num_states(); ++s) {
+              poll();
               const auto st = g_.states().at(s);
               if (ts_.observe(st, ia) && ts_.observe(st, ib)) {
                 auto show = [](const Write& w) {
@@ -804,6 +821,7 @@ class Checks {
   CtlChecker plain_;
   const logic::CheckTask& task_;
   std::vector<StepRef> steps_;
+  model::BudgetPoll poll_;
 };
 
 }  // namespace
@@ -815,15 +833,37 @@ std::vector<PropertyResult> run_standard_checks(const ReachableSituationGraph& g
   std::vector<PropertyResult> out;
   if (task.checks.empty()) return out;
   Checks checks(graph, checker, task);
-  for (auto id : task.checks) {
+  std::uint64_t done = 0;
+  const auto started = Clock::now();
+  // A check the deadline interrupts (or that the deadline leaves no time for) is unknown; the
+  // verdicts of the checks before it stay.
+  auto timed = [&](const std::string& name, StandardCheck id, auto&& compute) {
     const auto t0 = Clock::now();
-    out.push_back(checks.run(id));
-    out.back().seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (id == StandardCheck::Reentry && checker.has_fairness()) {
-      const auto t1 = Clock::now();
-      out.push_back(checks.reentry_fair());
-      out.back().seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+    PropertyResult r;
+    try {
+      task.limits.check_time("starting the standard check");
+      r = compute();
+    } catch (const LimitReached& stop) {
+      r = PropertyResult{};
+      r.name = name;
+      r.check = std::string(logic::to_string(id));
+      r.verdict = Verdict::Unknown;
+      r.message = stop.what();
     }
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+  };
+  for (auto id : task.checks) {
+    out.push_back(timed(std::string(logic::to_string(id)), id, [&] { return checks.run(id); }));
+    if (id == StandardCheck::Reentry && checker.has_fairness())
+      out.push_back(timed("reentry-fair", id, [&] { return checks.reentry_fair(); }));
+    model::Progress p;
+    p.phase = "standard checks";
+    p.states = graph.num_states();
+    p.done = ++done;
+    p.total = task.checks.size();
+    p.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+    task.limits.report(p);
   }
   return out;
 }

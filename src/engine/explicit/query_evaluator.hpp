@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "model/errors.hpp"
 #include "engine/explicit/dynamic_bitset.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
@@ -15,9 +16,9 @@
 namespace sfcv::engine {
 
 /// A query that cannot be evaluated on this graph (e.g. Nec on a graph built without conditions).
-class QueryEvaluationError : public std::runtime_error {
+class QueryEvaluationError : public UsageError {
  public:
-  using std::runtime_error::runtime_error;
+  using UsageError::UsageError;
 };
 
 struct QueryResult {

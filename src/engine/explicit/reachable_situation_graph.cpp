@@ -4,6 +4,8 @@
 #include <chrono>
 #include <unordered_map>
 
+#include "model/errors.hpp"
+
 namespace sfcv::engine {
 
 using semantics::InputCondition;
@@ -36,7 +38,7 @@ struct PendingEdge {
 /// Thrown by the sink when a limit is reached in the middle of one state's successors (or of
 /// the initial states): a semantics may enumerate very many of them in one call (a Grafcet
 /// stabilised under every initial input valuation), so limits cannot wait for the next state.
-struct LimitReached {
+struct StopExploring {
   const char* which;
 };
 
@@ -52,14 +54,15 @@ class Collector final : public semantics::SuccessorSink {
   }
 
   void successor(const semantics::Successor& s) override {
-    if (limits_.max_states > 0 && store_.size() > limits_.max_states) throw LimitReached{"states"};
+    if (limits_.max_states > 0 && store_.size() > limits_.max_states) throw StopExploring{"states"};
     if ((++calls_ & 1023U) == 0) {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-      if (limits_.timeout_seconds > 0 && seconds > limits_.timeout_seconds)
-        throw LimitReached{"time"};
+      if ((limits_.timeout_seconds > 0 && seconds > limits_.timeout_seconds) ||
+          (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline))
+        throw StopExploring{"time"};
       if (limits_.max_memory_bytes > 0 && store_.memory_bytes() > limits_.max_memory_bytes)
-        throw LimitReached{"memory"};
+        throw StopExploring{"memory"};
     }
     const std::uint32_t index = store_.insert(s.target).first;
     // Find this target's pending edge in O(1): a generation-stamped slot per state index.
@@ -198,8 +201,11 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     init.begin();
     try {
       ts.initial_states(init);
-    } catch (const LimitReached& stop) {
+    } catch (const StopExploring& stop) {
       g.limit_ = stop.which;
+    } catch (const LimitReached& stop) {
+      if (stop.which() == Limit::Enumeration) throw;  // the caller says which input
+      g.limit_ = to_string(stop.which());
     }
     for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
     for (const auto& p : init.pending) {
@@ -219,7 +225,8 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   g.complete_ = g.limit_.empty();
   for (std::uint32_t s = 0; g.complete_ && s < g.states_.size(); ++s) {
     if ((s & 1023U) == 0) {
-      if (options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) {
+      if ((options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) ||
+          (options.deadline && Clock::now() > *options.deadline)) {
         g.limit_ = "time";
       } else if (options.max_memory_bytes > 0 && g.memory_bytes() > options.max_memory_bytes) {
         g.limit_ = "memory";
@@ -242,9 +249,15 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     current.assign(view.begin(), view.end());
     try {
       ts.successors(current, collect);
-    } catch (const LimitReached& stop) {
+    } catch (const StopExploring& stop) {
       // State s stays unexpanded: the edges found so far are dropped with it.
       g.limit_ = stop.which;
+      g.complete_ = false;
+      break;
+    } catch (const LimitReached& stop) {
+      // The semantics' own poll of the deadline (a long transient evolution): the same.
+      if (stop.which() == Limit::Enumeration) throw;
+      g.limit_ = to_string(stop.which());
       g.complete_ = false;
       break;
     }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct ExplorationProgress {
 struct ExplorationOptions {
   std::uint64_t max_states = 0;   ///< 0 = unlimited
   double timeout_seconds = 0;     ///< 0 = unlimited
+  /// The run's deadline (model::Budget), beside timeout_seconds: whichever comes first.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
   std::uint64_t max_memory_bytes = 0;  ///< 0 = unlimited; approximate (states + edges)
   bool keep_conditions = true;    ///< store each edge's input condition (RSG listing, traces)
   bool keep_fired = true;         ///< store each edge's fired transitions

@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "engine/external/aiger_writer.hpp"
 
 #include <stdexcept>
@@ -31,7 +32,7 @@ void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::s
   const std::uint32_t num_inputs = static_cast<std::uint32_t>(aig.inputs().size());
   const std::uint32_t num_latches = static_cast<std::uint32_t>(aig.latches().size());
   if (num_inputs == 0)
-    throw std::invalid_argument("write_aiger: the circuit needs at least one input");
+    throw UnsupportedConstruct("write_aiger: the circuit needs at least one input");
 
   // AIGER numbering: inputs 1..I, latches I+1..I+L, and gates after, in creation order (which is
   // topological, so every gate's fan-ins get smaller numbers, as the binary format requires).

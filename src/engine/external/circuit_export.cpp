@@ -1,3 +1,4 @@
+#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 
 #include <stdexcept>
@@ -224,7 +225,7 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   // The assertion is checked on a state before its inputs are chosen.
   for (const auto& b : aig.bad())
     if (depends_on_inputs(aig, b.literal))
-      throw std::invalid_argument("write_promela: invariant " + b.name + " reads inputs");
+      throw UnsupportedConstruct("write_promela: invariant " + b.name + " reads inputs");
   auto reserved = kPromelaReserved;
   for (const char* internal : {"assumed", "cycle", "end_excluded"}) reserved.insert(internal);
   // Names of Spin's generated C verifier (pan.c): struct types P<n>/Q<n> per process and

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 #include "logic/check_task.hpp"
 #include "semantics/iec61131_circuit.hpp"
@@ -21,9 +22,9 @@ namespace sfcv::engine {
 
 /// What cannot be exported (Grafcet, an operation the circuit cannot express): the message
 /// says what. Callers answer exit 2.
-class ExportError : public std::runtime_error {
+class ExportError : public UnsupportedConstruct {
  public:
-  using std::runtime_error::runtime_error;
+  using UnsupportedConstruct::UnsupportedConstruct;
 };
 
 /// NuSMV / Cadence SMV (CTL text allowed) or a circuit checker (AIGER, Promela: invariants).

@@ -194,7 +194,7 @@ class NusmvModelChecker final : public ModelChecker {
       std::ofstream f(dir.path() + "/model.smv");
       write_nusmv(f, exported.model);
     }
-    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.timeout_seconds);
+    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.seconds_left());
     const auto verdicts = parse_nusmv_output(run.output);
 
     logic::CheckReport report;

@@ -1,0 +1,32 @@
+#pragma once
+// --timeout, --max-states, --memory: registered and validated in one place, turned into the one
+// model::Budget a run shares across its phases. An invalid value is a usage error (exit 2),
+// never "no limit".
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
+
+#include "model/budget.hpp"
+
+namespace sfcv::cli {
+
+struct LimitOptions {
+  std::string timeout;     ///< seconds, > 0; empty: none
+  std::string max_states;  ///< a count, > 0; empty: none
+  std::string memory;      ///< e.g. 2G, 512M, 64K; empty: none
+};
+
+/// Which limits a subcommand offers (rsg and query have no --memory).
+enum class MemoryLimit { Offered, NotOffered };
+
+void add_limit_options(CLI::App& sub, LimitOptions& options, const std::string& what_stops,
+                       MemoryLimit memory = MemoryLimit::Offered);
+
+/// The budget of a run starting now; throws UsageError for a bad value.
+model::Budget make_budget(const LimitOptions& options);
+
+/// "2G", "512M", "64K", "1000000" (bytes) -> bytes; throws UsageError.
+std::uint64_t parse_memory(const std::string& text);
+
+}  // namespace sfcv::cli

@@ -1,0 +1,142 @@
+// One budget for the whole run (--timeout, --max-states, --memory): invalid values are usage
+// errors; a deadline holds in every phase and ends with "unknown" (exit 3), keeping what was
+// decided; progress lines go to standard error off a terminal, and nothing under --quiet.
+// The time bounds are correctness bounds (a 2 s budget must not take minutes), generous for a
+// loaded machine, never speed targets.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+
+#include "support/sfcv_test.hpp"
+
+namespace {
+
+using sfcv::test::run_sfcv;
+using sfcv::test::write_temp;
+
+/// A Grafcet chain of `n` steps all crossed in one transient evolution: exploration finds few
+/// situations, while the checks after it walk every step and transition.
+std::string transient_chain(int n) {
+  std::string text = "project chain;\ninput a;\noutput o;\ngrafcet g {\n  step 0 initial;\n  step 1";
+  for (int i = 2; i <= n; ++i) text += ", " + std::to_string(i);
+  text += ";\n";
+  for (int i = 0; i < n; ++i)
+    text += "  transition " + std::to_string(i + 1) + ": " + std::to_string(i) + " -> " +
+            std::to_string(i + 1) + " when a;\n";
+  text += "  action " + std::to_string(n) + ": o;\n}\n";
+  return write_temp(text, ".g7");
+}
+
+/// `depth` partial grafcets, each enclosed by a step of the one before.
+std::string nested_enclosing(int depth) {
+  std::string text = "project nest;\ninput a;\noutput o;\n";
+  for (int i = 0; i < depth; ++i) {
+    text += "grafcet G" + std::to_string(i) + " {\n";
+    text += i == 0 ? "  step 1 initial;\n" : "  step 1 linked;\n";
+    text += i + 1 < depth ? "  step 2 encloses G" + std::to_string(i + 1) + ";\n" : "  step 2;\n";
+    text += "  transition t1: 1 -> 2 when a;\n  transition t2: 2 -> 1 when !a;\n}\n";
+  }
+  return write_temp(text, ".g7");
+}
+
+struct Timed {
+  sfcv::test::RunResult run;
+  double seconds = 0;
+};
+
+Timed timed_run(const std::string& args) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Timed t;
+  t.run = run_sfcv(args);
+  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return t;
+}
+
+TEST(Budget, InvalidLimitValuesAreUsageErrors) {
+  const std::string pistons = sfcv::test::source_path("examples/pistons/pistons.g7");
+  for (const std::string bad : {"--timeout -1", "--timeout 0", "--timeout abc", "--max-states 0",
+                                "--max-states -5", "--max-states 1.5", "--memory 12Q",
+                                "--memory 0", "--memory -1G"}) {
+    const auto check = run_sfcv("check " + pistons + " " + bad);
+    EXPECT_EQ(check.exit_code, 2) << bad << "\n" << check.err;
+    EXPECT_NE(check.err.find("bad --"), std::string::npos) << bad << "\n" << check.err;
+    if (bad.rfind("--memory", 0) == 0) continue;  // rsg and query have no --memory
+    EXPECT_EQ(run_sfcv("rsg " + pistons + " " + bad).exit_code, 2) << bad;
+    EXPECT_EQ(run_sfcv("query " + pistons + " Y0 " + bad).exit_code, 2) << bad;
+  }
+  // Valid values still work.
+  EXPECT_EQ(run_sfcv("check " + pistons + " --timeout 60 --max-states 100000 --memory 1G --quiet")
+                .exit_code,
+            0);
+}
+
+TEST(Budget, TimeoutHoldsInTheChecksAfterExploration) {
+  // Before the budget, the checks after exploration ran unbounded (a 10,001-step chain with
+  // --timeout 10 took 81 s).
+  const auto chain = transient_chain(3000);
+  const auto t = timed_run("check " + chain + " --engine explicit --timeout 2 --trace none");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("unknown"), std::string::npos) << t.run.out;
+  EXPECT_NE(t.run.out.find("time limit reached"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
+TEST(Budget, TimeoutHoldsWhileBuildingTheCircuitUnderAuto) {
+  // --engine auto builds the bdd engine's circuit to know whether it could take over: 1,000
+  // nested enclosing steps took > 40 s and 1.7 GB with --timeout 5.
+  const auto nest = nested_enclosing(1000);
+  const auto t = timed_run("check " + nest + " --timeout 2 --trace none");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("unknown"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
+TEST(Budget, TimeoutHoldsOnTheBddEngine) {
+  const auto nest = nested_enclosing(1000);
+  const auto t = timed_run("check " + nest + " --engine bdd --timeout 2 --trace none");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE((t.run.out + t.run.err).find("unknown"), std::string::npos) << t.run.out << t.run.err;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
+TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
+  // A violation on the first evolution, then a state space far beyond --max-states (4^11
+  // situations, 2^12 of them initial): the violation stays, what is not decided is unknown.
+  std::string text = "project wide;\ninput a0";
+  for (int i = 1; i < 12; ++i) text += ", a" + std::to_string(i);
+  text += ";\ninternal x : 0..1 := 0;\n"
+          "grafcet G0 { step 1 initial; step 2; step 3; transition t0a: 1 -> {2, 3} when a0;\n"
+          "  transition t0b: {2, 3} -> 1 when !a0;\n"
+          "  action 2 on_enter: x := 1; action 3 on_enter: x := 0; }\n";
+  for (int i = 1; i < 12; ++i) {
+    const auto n = std::to_string(i);
+    text += "grafcet G" + n + " { step 1 initial; step 2, 3, 4; transition p" + n + ": 1 -> 2 when a" +
+            n + "; transition q" + n + ": 2 -> 3 when !a" + n + "; transition r" + n +
+            ": 3 -> 4 when a" + n + "; transition s" + n + ": 4 -> 1 when !a" + n + "; }\n";
+  }
+  const auto wide = write_temp(text, ".g7");
+  const auto r = run_sfcv("check " + wide + " --engine explicit --max-states 6000 --checks "
+                          "stored-actions,reachable --trace none --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("stored-actions  violated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("reachable       unknown"), std::string::npos) << r.out;
+}
+
+TEST(Progress, LinesOffTerminalForALongRunAndNoneUnderQuiet) {
+  const auto chain = transient_chain(3000);
+  const auto loud = run_sfcv("check " + chain + " --engine explicit --timeout 4 --trace none");
+  EXPECT_EQ(loud.exit_code, 3);
+  // Off a terminal: whole lines (no carriage return), naming the phase.
+  EXPECT_NE(loud.err.find("sfcv: explore: "), std::string::npos) << loud.err;
+  EXPECT_EQ(loud.err.find('\r'), std::string::npos) << loud.err;
+  const auto quiet = run_sfcv("check " + chain + " --engine explicit --timeout 4 --trace none --quiet");
+  EXPECT_EQ(quiet.exit_code, 3);
+  EXPECT_EQ(quiet.err, "") << quiet.err;
+  // The global option, before the subcommand, for every subcommand alike.
+  const auto rsg = run_sfcv("--quiet rsg " + chain + " --timeout 4");
+  EXPECT_EQ(rsg.err.find("sfcv: explore"), std::string::npos) << rsg.err;
+}
+
+}  // namespace
