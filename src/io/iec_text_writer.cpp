@@ -89,6 +89,7 @@ class Writer {
 
   void write(std::string& out) {
     if (pou_.kind == model::PouKind::Function) cannot("FUNCTION '" + pou_.name + "'");
+    if (pou_.body_unsupported) cannot("POU '" + pou_.name + "', whose body sfcv does not model");
     if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
     if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
     const bool program = pou_.kind == model::PouKind::Program;

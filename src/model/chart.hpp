@@ -171,7 +171,15 @@ struct Pou {
   std::vector<ActionAssociation> associations;
   std::vector<StoredAction> stored_actions;    ///< Grafcet
   std::vector<ForcingOrder> forcing_orders;    ///< Grafcet
-  StmtList body;  ///< the POU's ST body, when it has one besides (or instead of) SFC
+  /// The POU's own body (ST, or FBD/LD read as statements), run every cycle before its charts;
+  /// a POU without charts is a program whose body is the whole scan cycle.
+  StmtList body;
+  /// The importer could not model the body (IL, or an unsupported construct): `body` is empty
+  /// and the semantics refuses to run the POU rather than run a no-op.
+  bool body_unsupported = false;
+  std::string unsupported_language;  ///< with body_unsupported: "ST", "IL", "FBD", "LD"
+  std::string unsupported_text;      ///< the text (ST, IL) or the element as XML (FBD, LD)
+  std::string unsupported_reason;    ///< the importer's first reason, with its location
   SourceLocation where;
 
   bool has_sfc() const { return !charts.empty(); }
