@@ -1218,6 +1218,9 @@ struct Compiler {
       if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
     step_timers();
     step_observables();
+    // A program without steps may keep no state at all (it only maps inputs to outputs of
+    // dropped types); the engines store states as words, so give it one constant bit.
+    if (p.layout.fields().empty()) add_field("(no state)", FieldKind::Variable, 0, 1, 0, true);
     // Steps first in the observable list reads best in traces.
     std::vector<std::size_t> idx(p.observables.size());
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;

@@ -196,5 +196,15 @@ TEST(Programs, CallOfAnSfcActionIsRefused) {
   EXPECT_NE(r.err.find("call of action 'ACT_Extend'"), std::string::npos) << r.err;
 }
 
+
+// A program that keeps no state (TwinCAT sensor FBs whose outputs have types sfcv drops): one
+// situation, not a crash.
+TEST(Programs, ProgramWithoutStateHasOneSituation) {
+  const auto file = write_temp(plcopen(st_pou("Probe", bool_vars("inputVars", {"a"}), "")), ".xml");
+  const auto r = run_sfcv("check " + file + " --pou Probe --ctl 'AG TRUE' --trace none");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 states"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace sfcv::test
