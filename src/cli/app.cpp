@@ -4,9 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 
-#ifndef SFCV_VERSION
-#define SFCV_VERSION "0.1.0"
-#endif
+// SFCV_VERSION comes from the CMake project version.
 
 namespace sfcv::cli {
 
@@ -28,6 +26,7 @@ int run(int argc, char** argv) {
   add_rsg_command(app, selected);
   add_query_command(app, selected);
   add_export_command(app, selected);
+  add_report_command(app, selected);
 
   try {
     app.parse(argc, argv);

@@ -28,6 +28,8 @@ struct PropertyResult {
   Verdict verdict = Verdict::Unknown;
   std::string message;   ///< one readable line (why unknown, what was found)
   std::vector<std::string> findings;  ///< standard checks: one located line per defect
+  /// Every finding the check made; more than findings.size() when CheckTask::max_findings cut them.
+  std::size_t findings_total = 0;
   std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
   double seconds = 0;
   model::SourceLocation where;  ///< where the property was written

@@ -15,6 +15,12 @@ std::string seconds(double s) {
 }
 }  // namespace
 
+std::string findings_cut_note(const logic::PropertyResult& r) {
+  if (r.findings_total <= r.findings.size()) return {};
+  return std::to_string(r.findings.size()) + " of " + std::to_string(r.findings_total) +
+         " findings shown; --all for every one";
+}
+
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
@@ -36,6 +42,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     out += "\n";
     if (r.check.empty() && r.formula != r.name) out += "  formula: " + r.formula + "\n";
     for (const auto& f : r.findings) out += "  - " + f + "\n";
+    if (const auto cut = findings_cut_note(r); !cut.empty()) out += "  (" + cut + ")\n";
     if (r.trace && options.trace != TraceFormat::None) {
       const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
       out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
@@ -43,7 +50,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
       switch (options.trace) {
         case TraceFormat::Table: out += trace_table(*r.trace, ts); break;
         case TraceFormat::Json: out += trace_json(*r.trace, ts); break;
-        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts); break;
+        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts, {options.cycle_ms}); break;
         case TraceFormat::Csv: out += trace_csv(*r.trace, ts); break;
         case TraceFormat::None: break;
       }
@@ -76,6 +83,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["verdict"] = std::string(logic::to_string(r.verdict));
     p["message"] = r.message;
     p["findings"] = r.findings;
+    p["findings_total"] = std::max(r.findings_total, r.findings.size());
     p["seconds"] = r.seconds;
     if (r.where.known()) p["where"] = r.where.str();
     p["trace"] = r.trace ? trace_to_json(*r.trace, ts) : json(nullptr);
