@@ -16,7 +16,7 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
     sub.add_flag("--multi-input-change", o.multi_input_change,
                  "Grafcet: several inputs may change at once (default: one per event)");
   }
-  sub.add_option("--pou", o.pous, "IEC: POU(s) run in one cycle, in this order (default: the SFC program)");
+  sub.add_option("--pou", o.pous, "IEC: POU(s) run in one cycle, in this order (default: every PROGRAM, else the SFC POU)");
   sub.add_option("--priority", o.priority, "IEC conflicts: standard (default) or none");
   sub.add_option("--time", o.time, "IEC timers: abstract (default) or discrete");
   sub.add_option("--cycle", o.cycle, "IEC cycle time for --time discrete (default 10ms)");

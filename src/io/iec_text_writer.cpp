@@ -90,12 +90,9 @@ class Writer {
 
   void write(std::string& out) {
     if (pou_.kind == model::PouKind::Function) cannot("FUNCTION '" + pou_.name + "'");
+    if (pou_.body_unsupported) cannot("POU '" + pou_.name + "', whose body sfcv does not model");
     if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
     if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
-    // Written without it, the POU would read back as an empty program.
-    if (!pou_.unmodelled_bodies.empty())
-      cannot("POU '" + pou_.name + "', whose " + pou_.unmodelled_bodies.front().language +
-             " body sfcv does not model");
     const bool program = pou_.kind == model::PouKind::Program;
     out += std::string(program ? "PROGRAM " : "FUNCTION_BLOCK ") + ident(pou_.name, "POU name") + "\n";
     variables(out);

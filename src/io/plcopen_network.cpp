@@ -68,8 +68,9 @@ model::StmtPtr make_if_assign(model::ExprPtr cond, std::string target, model::Ex
   return s;
 }
 
-Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems)
-    : ctx_(ctx), problems_(problems), container_(container) {
+Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems,
+                 std::string edge_prefix)
+    : ctx_(ctx), problems_(problems), edge_prefix_(std::move(edge_prefix)), container_(container) {
   for (auto n : element_children(container)) {
     if (const auto id = n.attribute("localId")) by_id_.emplace(id.value(), n);
     if (local_name(n) == "connector") connectors_.emplace(model::to_upper(n.attribute("name").value()), n);
@@ -82,6 +83,27 @@ ExprPtr Network::fail(pugi::xml_node node, std::string message) {
 }
 
 model::StmtList Network::take_calls() { return std::exchange(calls_, {}); }
+
+std::vector<model::Variable> Network::take_edge_instances() { return std::exchange(edge_instances_, {}); }
+
+// IEC 61131-3 (4.2.3, 4.2.4): a positive/negative transition-sensing contact or coil passes
+// power for one evaluation when its operand rises/falls: an R_TRIG/F_TRIG of the operand,
+// called where the element is evaluated.
+ExprPtr Network::edge_of(pugi::xml_node node, const std::string& edge, ExprPtr value) {
+  if (edge != "rising" && edge != "falling")
+    return fail(node, "unsupported: " + std::string(local_name(node)) + " with edge '" + edge + "'");
+  const std::string name = "SFCV_EDGE_" + (edge_prefix_.empty() ? "" : edge_prefix_ + "_") +
+                           node.attribute("localId").value();
+  model::Variable v;
+  v.name = name;
+  v.direction = model::VarDirection::Local;
+  v.type = model::Type::function_block(edge == "rising" ? model::StandardFb::R_TRIG
+                                                        : model::StandardFb::F_TRIG);
+  v.where = ctx_.where(node);
+  edge_instances_.push_back(std::move(v));
+  calls_.push_back(model::make_fb_call(name, {{"CLK", std::move(value)}}, ctx_.where(node)));
+  return model::make_member(name, "Q", ctx_.where(node));
+}
 
 ExprPtr Network::input(pugi::xml_node cpi, pugi::xml_node owner) {
   const auto connections = children(cpi, "connection");
@@ -139,11 +161,13 @@ ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
   if (kind == "inVariable" || kind == "inOutVariable")
     return negate_if(attribute_true(node, "negated"), text_value(node, child(node, "expression")));
   if (kind == "contact") {
-    if (const auto edge = std::string(node.attribute("edge").value()); !edge.empty() && edge != "none")
-      return fail(node, "unsupported: contact with " + edge + " edge detection (declare an R_TRIG/F_TRIG instead)");
     auto var = text_value(node, child(node, "variable"));
     if (!var) return nullptr;
     var = negate_if(attribute_true(node, "negated"), var);
+    if (const auto edge = std::string(node.attribute("edge").value()); !edge.empty() && edge != "none") {
+      var = edge_of(node, edge, var);
+      if (!var) return nullptr;
+    }
     auto in = input(child(node, "connectionPointIn"), node);
     if (!in) return nullptr;
     if (is_true_const(in)) return var;
@@ -353,8 +377,9 @@ std::optional<model::StmtList> Network::statements() {
     const std::string storage = n.attribute("storage").value();
     if (kind == "coil") {
       if (const std::string edge = n.attribute("edge").value(); !edge.empty() && edge != "none") {
-        fail(n, "unsupported: coil with " + edge + " edge detection");
-        return std::nullopt;
+        v = edge_of(n, edge, v);
+        if (!v) return std::nullopt;
+        for (auto& c : take_calls()) body.push_back(std::move(c));
       }
       if (storage == "set" || storage == "reset") {
         body.push_back(make_if_assign(negate_if(negated, v), target,

@@ -15,8 +15,10 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "io/plcopen_xml_dom.hpp"
+#include "model/chart.hpp"
 #include "model/expr.hpp"
 #include "model/statement.hpp"
 
@@ -25,7 +27,10 @@ namespace sfcv::io::plcopen {
 class Network {
  public:
   /// `container`: the element holding the network (SFC, FBD, LD). Problems go to `problems`.
-  Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems);
+  /// `edge_prefix` names the R_TRIG/F_TRIG instances that LD edge contacts and coils need
+  /// (`SFCV_EDGE_<prefix>_<localId>`); it must differ between the networks of one POU.
+  Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems,
+          std::string edge_prefix = "");
 
   /// The value flowing into `connection_point_in` (several connections are LD parallel
   /// branches: OR). Null after a diagnostic.
@@ -33,6 +38,10 @@ class Network {
 
   /// FB calls the values computed so far need, in call order; the list is emptied.
   model::StmtList take_calls();
+
+  /// The R_TRIG/F_TRIG instances created for edge contacts and coils so far, as local
+  /// variables the caller adds to the POU; the list is emptied.
+  std::vector<model::Variable> take_edge_instances();
 
   /// A whole FBD/LD body as statements: every output (outVariable, inOutVariable, coil) in
   /// execution order, FB calls before their first use. nullopt after a diagnostic.
@@ -48,6 +57,8 @@ class Network {
   model::ExprPtr block_value(pugi::xml_node block, const std::string& pin);
   model::ExprPtr text_value(pugi::xml_node holder, pugi::xml_node text_element);
   bool call_block(pugi::xml_node block);
+  /// `edge` ("rising"/"falling") of `value`, through a new R_TRIG/F_TRIG instance called first.
+  model::ExprPtr edge_of(pugi::xml_node node, const std::string& edge, model::ExprPtr value);
   model::ExprPtr fail(pugi::xml_node node, std::string message);
 
   const XmlContext& ctx_;
@@ -57,6 +68,8 @@ class Network {
   std::set<std::string> called_;                       ///< FB blocks (localId) already called
   std::set<std::string> visiting_;                     ///< localIds on the evaluation path
   model::StmtList calls_;
+  std::vector<model::Variable> edge_instances_;
+  std::string edge_prefix_;
   pugi::xml_node container_;
 };
 

@@ -5,6 +5,7 @@
 #include <pugixml.hpp>
 
 #include <map>
+#include <optional>
 #include <string>
 
 #include "io/plcopen_xml_dom.hpp"
@@ -32,6 +33,13 @@ struct PouContext {
 /// Pou::charts. Macro-step bodies become further charts.
 int build_sfc_chart(PouContext& pc, pugi::xml_node sfc, const std::string& chart_name,
                     const std::string& parent_action);
+
+/// A body in ST, FBD or LD as statements (the R_TRIG/F_TRIG instances of LD edge elements,
+/// named with `edge_prefix`, are added to the POU's variables); nullopt with the reasons in
+/// `problems` when it cannot be modelled (IL, unsupported constructs).
+std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_node language,
+                                                   const std::string& edge_prefix,
+                                                   model::Diagnostics& problems);
 
 /// Sets `action`'s body from a language element (ST, FBD, LD; IL and others are not modelled).
 /// A body that cannot be modelled does not block loading: a warning with the element path,

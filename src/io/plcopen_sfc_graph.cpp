@@ -56,7 +56,7 @@ void add_unique(std::vector<std::string>& v, const std::string& s) {
 class ChartBuilder {
  public:
   ChartBuilder(PouContext& pc, pugi::xml_node sfc, model::Chart& chart)
-      : pc_(pc), ctx_(pc.ctx), sfc_(sfc), chart_(chart), net_(sfc, pc.ctx, pc.ctx.diagnostics()) {}
+      : pc_(pc), ctx_(pc.ctx), sfc_(sfc), chart_(chart), net_(sfc, pc.ctx, pc.ctx.diagnostics(), chart.name) {}
 
   void build() {
     index();
@@ -65,6 +65,7 @@ class ChartBuilder {
     read_action_blocks();
     read_codesys_step_actions();
     for (auto& c : net_.take_calls()) pc_.condition_calls.push_back(std::move(c));
+    for (auto& v : net_.take_edge_instances()) pc_.pou.variables.push_back(std::move(v));
   }
 
  private:
@@ -237,6 +238,12 @@ class ChartBuilder {
         if (!v) ctx_.error(n, "priority '" + p + "' is not an integer");
         else t.priority = static_cast<int>(*v);
       }
+      // Beremiz: a transition wired to nothing (no input, nothing reads its output) is left
+      // over from editing; Beremiz's code generator ignores it, and so does sfcv.
+      if (!child(child(n, "connectionPointIn"), "connection") && successors_[id].empty()) {
+        ctx_.warning(n, "transition (localId " + id + ") is connected to nothing: ignored");
+        continue;
+      }
       std::set<std::string> seen_back, seen_fwd;
       SourceSets source_sets;
       bool ok = walk_back(n, n, true, source_sets, seen_back);
@@ -332,13 +339,14 @@ class ChartBuilder {
       text.text = s;
       guard = st_condition(text, decl);
     } else if (k == "FBD" || k == "LD") {
-      Network net(lang, ctx_, ctx_.diagnostics());
+      Network net(lang, ctx_, ctx_.diagnostics(), "T_" + name);
       bool found = false;
       guard = net.output_named(name, found);
       if (!found)
         ctx_.error(decl, "transition '" + name + "' in " + std::string(k) +
                              ": no output variable or coil named '" + name + "'");
       for (auto& c : net.take_calls()) pc_.condition_calls.push_back(std::move(c));
+      for (auto& v : net.take_edge_instances()) pc_.pou.variables.push_back(std::move(v));
     } else {
       ctx_.error(decl, "unsupported: transition '" + name + "' written in " +
                            (lang ? std::string(k) : std::string("no language")) +
@@ -504,20 +512,32 @@ int build_sfc_chart(PouContext& pc, pugi::xml_node sfc, const std::string& chart
   return index;
 }
 
-void read_action_body(PouContext& pc, model::Action& action, pugi::xml_node language) {
+std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_node language,
+                                                   const std::string& edge_prefix,
+                                                   model::Diagnostics& problems) {
   const auto k = local_name(language);
-  model::Diagnostics problems;
   std::optional<model::StmtList> body;
+  std::vector<model::Variable> edges;
   if (k == "ST") {
     body = parse_statements_text(body_text(language, pc.ctx), problems);
   } else if (k == "FBD" || k == "LD") {
-    Network net(language, pc.ctx, problems);
+    Network net(language, pc.ctx, problems, edge_prefix);
     body = net.statements();
+    edges = net.take_edge_instances();
   } else {
     problems.push_back({model::Severity::Error, pc.ctx.where(language),
                         "bodies in " + std::string(k) + " are not modelled"});
   }
-  if (body && !model::has_errors(problems)) {
+  if (!body || model::has_errors(problems)) return std::nullopt;
+  for (auto& v : edges) pc.pou.variables.push_back(std::move(v));
+  return body;
+}
+
+void read_action_body(PouContext& pc, model::Action& action, pugi::xml_node language) {
+  const auto k = local_name(language);
+  model::Diagnostics problems;
+  auto body = read_statement_body(pc, language, action.name, problems);
+  if (body) {
     action.kind = model::ActionBodyKind::Statements;
     action.body = std::move(*body);
     for (auto& p : problems) pc.ctx.add(std::move(p));

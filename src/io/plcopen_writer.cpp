@@ -162,16 +162,27 @@ class PouWriter {
           cannot("SFC body '" + pou_.charts[bodies[k]].name + "' of POU '" + pou_.name +
                  "' would be read back as '" + expected + "'");
       }
-    if (bodies.empty() && !pou_.body.empty())
-      cannot("the ST body of POU '" + pou_.name +
-             "', which has no SFC body (the importer models the ST bodies of SFC POUs only)");
 
     if (!pou_.actions.empty()) {
       auto actions = node.append_child("actions");
       for (const auto& a : pou_.actions) action(actions, a);
     }
     for (std::size_t i : bodies) chart(node.append_child("body").append_child("SFC"), i);
-    if (!pou_.body.empty()) {
+    if (pou_.body_unsupported) {
+      // Given back as read: the text of an ST/IL body, the element of a graphical one.
+      auto b = node.append_child("body");
+      if (pou_.unsupported_language == "ST" || pou_.unsupported_language == "IL") {
+        std::string text = pou_.unsupported_text;
+        while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+        text_language(b, pou_.unsupported_language.c_str(), text);
+      } else {
+        pugi::xml_document fragment;
+        if (!fragment.load_string(pou_.unsupported_text.c_str()) || !fragment.document_element())
+          cannot("the " + pou_.unsupported_language + " body of POU '" + pou_.name +
+                 "', which sfcv does not model");
+        b.append_copy(fragment.document_element());
+      }
+    } else if (!pou_.body.empty()) {
       check_body(pou_.body, "the body of '" + pou_.name + "'");
       text_language(node.append_child("body"), "ST", model::to_st(pou_.body));
     }

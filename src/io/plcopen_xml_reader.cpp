@@ -7,6 +7,7 @@
 #include <pugixml.hpp>
 
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "io/plcopen_xml_dom.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
+#include "model/validate.hpp"
 
 namespace sfcv::io {
 
@@ -139,6 +141,12 @@ void find_addData_pous(pugi::xml_node node, std::vector<pugi::xml_node>& out) {
   }
 }
 
+std::string problems_message(const model::Diagnostics& problems, const std::string& fallback) {
+  for (const auto& d : problems)
+    if (d.severity == model::Severity::Error) return d.message;
+  return fallback;
+}
+
 std::string list_instances(const model::StmtList& calls) {
   std::string s;
   for (const auto& c : calls) s += (s.empty() ? "" : ", ") + c->target;
@@ -201,35 +209,65 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
       other_bodies.push_back(lang);
     }
   }
-  for (auto lang : other_bodies) {
-    // An ST body beside an SFC body runs with the chart every cycle (as sfcv writes Pou::body
-    // of an SFC POU); read it when it parses. ST-only POUs stay unmodelled: sfcv runs SFC POUs.
-    std::string reason = "only SFC bodies are modelled";
-    if (sfc_bodies > 0 && local_name(lang) == "ST") {
-      model::Diagnostics problems;
-      auto stmts = parse_statements_text(body_text(lang, ctx), problems);
-      if (stmts && !model::has_errors(problems)) {
-        for (auto& st : *stmts) pou.body.push_back(std::move(st));
-        for (auto& d : problems) ctx.add(std::move(d));
-        continue;
+  // Every other body (ST, FBD, LD) runs every cycle before the POU's charts; a POU without an
+  // SFC body is a program whose body is its whole scan cycle.
+  for (std::size_t bi = 0; bi < other_bodies.size(); ++bi) {
+    const auto lang = other_bodies[bi];
+    const std::string k(local_name(lang));
+    model::Diagnostics problems;
+    auto stmts = read_statement_body(pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems);
+    if (stmts) {
+      // Vendor bodies call instances of user function blocks (whose variables were dropped
+      // above) and read global lists: a body that does not validate against the POU's own
+      // declarations is not modelled, and the file still loads.
+      model::Project alone;
+      model::Pou scope;
+      scope.name = pou.name;
+      scope.kind = pou.kind;
+      scope.variables = pou.variables;
+      for (const auto& a : pou.actions) {  // their names only: SFC bodies are not read yet
+        model::Action named;
+        named.name = a.name;
+        scope.actions.push_back(std::move(named));
       }
-      for (const auto& d : problems)
-        if (d.severity == model::Severity::Error) {
-          reason = d.message;
-          break;
-        }
+      scope.body = *stmts;
+      scope.where = pou.where;
+      alone.pous.push_back(std::move(scope));
+      for (auto& d : model::validate(alone))
+        if (d.severity == model::Severity::Error) problems.push_back(std::move(d));
+      if (model::has_errors(problems)) stmts.reset();
     }
-    const std::string what = "POU '" + pou.name + "': its " + std::string(local_name(lang)) +
-                             " body is not modelled (" + reason + ")";
-    // The POU loads (other POUs of the file stay checkable); the semantics refuses to run it.
-    pou.unmodelled_bodies.push_back({std::string(local_name(lang)), reason, ctx.where(lang)});
-    // TwinCAT FBs start their SFC actions from an ST body (`ACT_Extend();`): those charts
-    // then only run when a step of a modelled chart activates the action.
-    if (!sfc_actions.empty())
-      ctx.warning(lang, what + "; actions with SFC bodies that it may call run only through "
-                               "action associations of modelled charts");
-    else
-      ctx.note(lang, what);
+    if (stmts && !pou.body_unsupported) {
+      for (auto& st : *stmts) pou.body.push_back(std::move(st));
+      for (auto& d : problems) ctx.add(std::move(d));
+      continue;
+    }
+    // The POU still loads (other POUs may be checked), but running it is refused.
+    std::string reason = "bodies in " + k + " are not modelled";
+    for (const auto& d : problems)
+      if (d.severity == model::Severity::Error) {
+        reason = d.where.str() + ": " + d.message;
+        break;
+      }
+    if (!pou.body_unsupported) {
+      pou.body_unsupported = true;
+      pou.unsupported_language = k;
+      if (k == "ST" || k == "IL") {
+        pou.unsupported_text = body_text(lang, ctx).text;
+      } else {
+        std::ostringstream xml;
+        lang.print(xml, "", pugi::format_raw);
+        pou.unsupported_text = xml.str();
+      }
+      pou.unsupported_reason = reason;
+    }
+    pou.body.clear();
+    ctx.warning(lang, "POU '" + pou.name + "': its " + k + " body is not modelled (" +
+                          problems_message(problems, reason) + "); running it is refused");
+    for (auto& d : problems) {
+      d.severity = model::Severity::Note;
+      ctx.add(std::move(d));
+    }
   }
   for (const auto& [index, sfc] : sfc_actions) {
     const std::string name = pou.actions[index].name;

@@ -163,15 +163,6 @@ struct Chart {
 
 enum class PouKind { Program, FunctionBlock, Function };
 
-/// A POU body the importer could not model (an LD/FBD/IL body, an ST body that does not parse).
-/// The POU still loads, so that other POUs of the file can be checked; the semantics refuses to
-/// run it (never as an empty program).
-struct UnmodelledBody {
-  std::string language;  ///< "ST", "FBD", "LD", "IL", ...
-  std::string reason;
-  SourceLocation where;
-};
-
 struct Pou {
   std::string name;
   PouKind kind = PouKind::Program;
@@ -181,8 +172,15 @@ struct Pou {
   std::vector<ActionAssociation> associations;
   std::vector<StoredAction> stored_actions;    ///< Grafcet
   std::vector<ForcingOrder> forcing_orders;    ///< Grafcet
-  StmtList body;  ///< the POU's ST body, when it has one besides (or instead of) SFC
-  std::vector<UnmodelledBody> unmodelled_bodies;
+  /// The POU's own body (ST, or FBD/LD read as statements), run every cycle before its charts;
+  /// a POU without charts is a program whose body is the whole scan cycle.
+  StmtList body;
+  /// The importer could not model the body (IL, or an unsupported construct): `body` is empty
+  /// and the semantics refuses to run the POU rather than run a no-op.
+  bool body_unsupported = false;
+  std::string unsupported_language;  ///< with body_unsupported: "ST", "IL", "FBD", "LD"
+  std::string unsupported_text;      ///< the text (ST, IL) or the element as XML (FBD, LD)
+  std::string unsupported_reason;    ///< the importer's first reason, with its location
   SourceLocation where;
 
   bool has_sfc() const { return !charts.empty(); }

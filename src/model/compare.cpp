@@ -176,6 +176,7 @@ Diff compare_pous(const Pou& a, const Pou& b) {
     if (!iequals(va.address, vb->address)) return "variable " + q(va.name) + ": address differs";
   }
   if (!equal(a.body, b.body)) return std::string("ST body differs");
+  if (a.body_unsupported != b.body_unsupported) return std::string("body modelled in only one");
   // Charts.
   if (a.charts.size() != b.charts.size())
     return std::to_string(a.charts.size()) + " charts against " + std::to_string(b.charts.size());

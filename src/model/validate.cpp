@@ -91,6 +91,9 @@ std::optional<FbMember> fb_member(StandardFb fb, std::string_view member) {
   // CV is common to both counters; kept out of the table to keep it one row per member.
   if ((fb == StandardFb::CTU || fb == StandardFb::CTD) && iequals(member, "CV"))
     return FbMember{Ty::Int, false};
+  // CODESYS and TwinCAT name the counters' reset and load inputs RESET and LOAD.
+  if (fb == StandardFb::CTU && iequals(member, "RESET")) return FbMember{Ty::Bool, true};
+  if (fb == StandardFb::CTD && iequals(member, "LOAD")) return FbMember{Ty::Bool, true};
   for (const auto& r : rows)
     if (r.fb == fb && iequals(r.name, member)) return FbMember{r.type, r.input};
   return std::nullopt;
@@ -1103,6 +1106,8 @@ class Validator {
 
   void check_fb_call(const Stmt& s, const SourceLocation& here) {
     const Variable* v = pou_->find_variable(s.target);
+    // `ACT();`: a call of an action of the POU (IEC 61131-3 lets a body call its actions).
+    if (!v && s.arguments.empty() && pou_->find_action(s.target)) return;
     if (!v) {
       error(here, "call of undeclared function block instance " + quoted(s.target));
       return;

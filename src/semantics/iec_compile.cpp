@@ -51,6 +51,9 @@ struct Compiler {
   std::map<std::string, std::uint32_t> inputs_by_name;
   std::vector<std::uint8_t> field_is_bool;
   std::set<std::string> written;  // "POU|VAR" upper-case: variables some statement assigns
+  std::set<std::string> inlining;  // upper-case actions whose call is being compiled
+  std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
+  std::set<std::uint32_t> called_timers;                      // FB indices of called timers
   // Step .T: constants compared with, and nodes to patch once regions are known.
   std::map<std::uint32_t, std::set<std::int64_t>> t_keys;  // step -> keys (2c or 2c+1)
   std::vector<std::uint32_t> t_nodes;
@@ -92,13 +95,37 @@ struct Compiler {
       }
       return out;
     }
-    std::vector<const model::Pou*> programs, others;
-    for (const auto& q : project.pous)
-      if (q.has_sfc()) (q.kind == model::PouKind::Program ? programs : others).push_back(&q);
-    const auto& cands = programs.empty() ? others : programs;
-    if (cands.size() == 1) return {cands.front()};
+    // Without --pou: every PROGRAM in document order (a PLC task runs its programs one after
+    // another in one cycle), when all of them can be modelled; else, as before, the one POU
+    // with an SFC body (a function block then runs alone, its inputs free).
+    std::vector<const model::Pou*> programs, sfc_programs, sfc_others;
+    bool programs_modelled = true;
+    for (const auto& q : project.pous) {
+      const bool runs = q.has_sfc() || !q.body.empty() || q.body_unsupported;
+      if (q.kind == model::PouKind::Program && runs) {
+        programs.push_back(&q);
+        programs_modelled = programs_modelled && !q.body_unsupported;
+      }
+      if (q.has_sfc()) (q.kind == model::PouKind::Program ? sfc_programs : sfc_others).push_back(&q);
+    }
+    if (!programs.empty() && programs_modelled) return programs;
+    const auto& cands = sfc_programs.empty() ? sfc_others : sfc_programs;
+    if (cands.size() == 1) {
+      for (const auto* q : programs)
+        if (q->body_unsupported)
+          diags.push_back({model::Severity::Note, q->where,
+                           "program '" + q->name + "' is not run (its body is not modelled); '" +
+                               cands.front()->name + "' runs alone"});
+      return {cands.front()};
+    }
     if (cands.empty()) {
-      error(project.where, "the model has no POU with an SFC body");
+      std::string list;
+      for (const auto* q : programs) list += (list.empty() ? "" : ", ") + q->name;
+      error(project.where, programs.empty()
+                               ? "the model has no PROGRAM and no POU with an SFC body: choose the "
+                                 "POU(s) to run with --pou"
+                               : "no program can be run (" + list +
+                                     ": a body sfcv does not model); choose other POU(s) with --pou");
     } else {
       std::string list;
       for (const auto* q : cands) list += (list.empty() ? "" : ", ") + q->name;
@@ -654,6 +681,28 @@ struct Compiler {
         break;
       }
       case model::StmtKind::FbCall:
+        if (const auto* act = called_action(sc, s)) {
+          // `ACT();` runs the action's statements at that point of the body (IEC 61131-3
+          // allows calling an action of the same POU): an IF TRUE around them.
+          out.op = SOp::If;
+          if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
+            error(s.where, "call of action '" + act->name + "' of " + sc.pou->name + ": " +
+                               (act->body_unsupported ? "its body is not modelled"
+                                                      : "only actions with an ST/FBD/LD body can be called"));
+            break;
+          }
+          if (!inlining.insert(model::to_upper(act->name)).second) {
+            error(s.where, "action '" + act->name + "' calls itself (recursion)");
+            break;
+          }
+          IfArm arm{constant(1), block(sc, act->body)};
+          inlining.erase(model::to_upper(act->name));
+          out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+          out.arm_count = 1;
+          p.if_arms.push_back(arm);
+          out.else_body = block(sc, {});
+          break;
+        }
         out.op = SOp::FbCall;
         fb_call(sc, s, out);
         break;
@@ -662,10 +711,18 @@ struct Compiler {
     return static_cast<std::uint32_t>(p.stmts.size() - 1);
   }
 
+  /// The action of the POU a call statement `NAME();` names (no variable of that name).
+  const model::Action* called_action(const PouScope& sc, const model::Stmt& s) const {
+    if (!s.arguments.empty() || sc.names.count(model::to_upper(s.target))) return nullptr;
+    return sc.pou->find_action(s.target);
+  }
+
   void fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
     auto it = sc.names.find(model::to_upper(s.target));
     if (it == sc.names.end() || it->second.kind != Ref::FbInst) {
-      error(s.where, "call of '" + s.target + "', which is not a standard function block instance");
+      error(s.where, "call of '" + s.target + "', which is not an instance of a standard function "
+                     "block (instances of user function blocks are not modelled; check the function "
+                     "block's own POU with --pou)");
       return;
     }
     out.target = it->second.index;
@@ -681,8 +738,20 @@ struct Compiler {
       default: return;
     }
     std::vector<std::int32_t> nodes(params.size(), kNone);
-    for (const auto& [name, value] : s.arguments) {
-      const auto up = model::to_upper(name);
+    // CODESYS's reset idiom `T(IN := FALSE, PT := T#0MS)` beside `T(IN := x, PT := T#5S)`: a
+    // TON with IN = FALSE is idle whatever PT is (Q = FALSE, ET = 0), so the PT of such a call
+    // is not one of the instance's PT values. (TOF and TP do use PT while IN is FALSE.)
+    bool pt_irrelevant = false;
+    if (fb.kind == StandardFb::TON)
+      for (const auto& [name, value] : s.arguments)
+        if (model::iequals(name, "IN") && value && literal(*value) == 0) pt_irrelevant = true;
+    bool pt_given = false;
+    for (const auto& [written_name, value] : s.arguments) {
+      auto up = model::to_upper(written_name);
+      // CODESYS and TwinCAT name the counters' reset/load inputs RESET and LOAD (IEC: R, LD).
+      if (fb.kind == StandardFb::CTU && up == "RESET") up = "R";
+      if (fb.kind == StandardFb::CTD && up == "LOAD") up = "LD";
+      const auto& name = written_name;
       auto pos = std::find(params.begin(), params.end(), up);
       if (pos == params.end()) {
         error(s.where, "'" + s.target + "' (" + std::string(model::to_string(fb.kind)) +
@@ -690,7 +759,9 @@ struct Compiler {
         continue;
       }
       const auto i = static_cast<std::size_t>(pos - params.begin());
+      if (up == "PT" && pt_irrelevant) continue;
       if (up == "PT") {
+        pt_given = true;
         std::optional<std::int64_t> pt = literal(*value);
         if (!pt && value->kind == ExprKind::Name) {
           const auto* var = sc.pou->find_variable(value->name);
@@ -732,12 +803,40 @@ struct Compiler {
         error(s.where, "call of '" + s.target + "' must give " + params[i] +
                            " (sfcv does not keep function block inputs between calls)");
     if (params.size() == 2 && params[1] == "PT") {
-      if (!fb.pt_set) error(s.where, "call of '" + s.target + "' must give PT");
-      else if (fb.timer == kNone) fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
+      // A call without PT keeps the PT of the previous call, T#0s before any (TwinCAT code
+      // often gives none): decided once every call is compiled (finish_timers).
+      if (!pt_given && !pt_irrelevant) omitted_pt.emplace(out.target, s.where);
+      called_timers.insert(out.target);
+      if (fb.pt_set && fb.timer == kNone) fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
     }
     out.arg1 = nodes[0];
     if (nodes.size() > 1) out.arg2 = nodes[1];
     if (nodes.size() > 2) out.arg3 = nodes[2];
+  }
+
+  /// Timers some call leaves without PT: sound only when no call gives a PT other than T#0s
+  /// (then PT is T#0s throughout); timers only called with IN = FALSE get T#0s too.
+  void finish_timers() {
+    for (const auto& [index, where] : omitted_pt) {
+      auto& fb = p.fbs[index];
+      if (fb.pt_set && fb.pt_ms != 0) {
+        error(where, "a call of '" + fb.name + "' gives no PT while another gives " +
+                         std::to_string(fb.pt_ms) + " ms: PT is then T#0s or that value depending "
+                         "on the order of the calls; give PT in every call");
+        continue;
+      }
+      fb.pt_ms = 0;
+      fb.pt_set = true;
+    }
+    for (const auto index : called_timers) {
+      auto& fb = p.fbs[index];
+      if (fb.timer != kNone) continue;
+      if (!fb.pt_set) {  // never called, or only with IN = FALSE
+        fb.pt_ms = 0;
+        fb.pt_set = true;
+      }
+      fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
+    }
   }
 
   std::int32_t make_timer(const std::string& field_name, std::int64_t d, const std::string& timeout_name) {
@@ -1092,6 +1191,9 @@ struct Compiler {
       error(project.where, "this is a Grafcet (IEC 60848) model; the IEC 61131-3 scan-cycle "
                            "semantics does not apply to it");
     for (const auto* pou : pous) {
+      if (pou->body_unsupported)
+        error(pou->where, "POU '" + pou->name + "': its " + pou->unsupported_language +
+                              " body is not modelled (" + pou->unsupported_reason + ")");
       for (const auto& sa : pou->stored_actions)
         error(sa.where, "Grafcet stored action on activation/deactivation/event in " + pou->name +
                             " is not IEC 61131-3");
@@ -1113,29 +1215,23 @@ struct Compiler {
     }
   }
 
-  /// A POU with a body the importer could not model would run as an empty program: refuse it.
-  void reject_unmodelled(const std::vector<const model::Pou*>& pous) {
-    for (const auto* pou : pous)
-      for (const auto& b : pou->unmodelled_bodies)
-        error(b.where, "POU '" + pou->name + "' has a " + b.language +
-                           " body that sfcv does not model (" + b.reason +
-                           "): it cannot be run");
-  }
-
   bool run() {
     const auto pous = select();
     if (!ok) return false;
-    reject_unmodelled(pous);
     reject_foreign(pous);
     if (!ok) return false;
     variables(pous);
     structure();
     actions_and_transitions();
+    finish_timers();
     orders();
     for (const auto& a : p.options.assumptions)
       if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
     step_timers();
     step_observables();
+    // A program without steps may keep no state at all (it only maps inputs to outputs of
+    // dropped types); the engines store states as words, so give it one constant bit.
+    if (p.layout.fields().empty()) add_field("(no state)", FieldKind::Variable, 0, 1, 0, true);
     // Steps first in the observable list reads best in traces.
     std::vector<std::size_t> idx(p.observables.size());
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;

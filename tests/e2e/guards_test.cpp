@@ -52,16 +52,26 @@ std::string sfc_pou(const std::string& action_name = "", const std::string& acti
          block + "</SFC></body>\n</pou>\n";
 }
 
-// The motor interlock of the issue: an ST program that energises both motors.
-const std::string kDrivePou =
-    "<pou name=\"drive\" pouType=\"program\">\n<interface>" +
-    bool_vars("inputVars", {"start"}) + bool_vars("outputVars", {"motor_fwd", "motor_rev"}) +
-    "</interface>\n<body><ST><xhtml:p><![CDATA[\n"
-    "IF start THEN\n  motor_fwd := TRUE;\n  motor_rev := TRUE;\nEND_IF;\n"
-    "]]></xhtml:p></ST></body>\n</pou>\n";
+// The motor interlock of the issue: a program that energises both motors, in ST (modelled)
+// and in IL (not modelled).
+std::string drive_pou(const std::string& language, const std::string& body) {
+  return "<pou name=\"drive\" pouType=\"program\">\n<interface>" + bool_vars("inputVars", {"start"}) +
+         bool_vars("outputVars", {"motor_fwd", "motor_rev"}) + "</interface>\n<body><" + language +
+         "><xhtml:p><![CDATA[\n" + body + "]]></xhtml:p></" + language + "></body>\n</pou>\n";
+}
+const std::string kDriveSt =
+    drive_pou("ST", "IF start THEN\n  motor_fwd := TRUE;\n  motor_rev := TRUE;\nEND_IF;\n");
+const std::string kDriveIl = drive_pou("IL", "LD start\nST motor_fwd\nST motor_rev\n");
 
-TEST(NeverASilentModel, StBodiedPouUnderPouIsAnErrorInEverySubcommand) {
-  const auto path = write_temp(kHeader + sfc_pou() + kDrivePou + kFooter, ".xml");
+TEST(NeverASilentModel, StBodiedPouUnderPouIsCheckedNotEmpty) {
+  const auto path = write_temp(kHeader + sfc_pou() + kDriveSt + kFooter, ".xml");
+  const auto r = run_sfcv("check " + q(path) + " --pou drive --ctl 'AG !(motor_fwd & motor_rev)'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
+}
+
+TEST(NeverASilentModel, UnmodelledPouBodyUnderPouIsAnErrorInEverySubcommand) {
+  const auto path = write_temp(kHeader + sfc_pou() + kDriveIl + kFooter, ".xml");
   const std::string file = q(path);
   const auto inputs = write_temp("start\n1\n0\n", ".csv");
   for (const std::string& cmd :
@@ -72,11 +82,10 @@ TEST(NeverASilentModel, StBodiedPouUnderPouIsAnErrorInEverySubcommand) {
     const auto r = run_sfcv(cmd);
     EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.out << r.err;
     EXPECT_EQ(r.out.find("holds"), std::string::npos) << cmd << "\n" << r.out;
-    // Located at the ST body (file:line:column).
     EXPECT_NE(r.err.find(path + ":"), std::string::npos) << cmd << "\n" << r.err;
     const bool iec_text = cmd.find("--to iec") != std::string::npos;
-    EXPECT_NE(r.err.find(iec_text ? "POU 'drive', whose ST body sfcv does not model"
-                                  : "POU 'drive' has a ST body that sfcv does not model"),
+    EXPECT_NE(r.err.find(iec_text ? "POU 'drive', whose body sfcv does not model"
+                                  : "POU 'drive': its IL body is not modelled"),
               std::string::npos)
         << cmd << "\n" << r.err;
   }
@@ -86,12 +95,12 @@ TEST(NeverASilentModel, StBodiedPouUnderPouIsAnErrorInEverySubcommand) {
 }
 
 TEST(NeverASilentModel, LintFailsWhenNoPouCanBeModelled) {
-  // Only an ST program: check has nothing it can run, so lint is not clean.
-  const auto path = write_temp(kHeader + kDrivePou + kFooter, ".xml");
+  // Only an IL program: check has nothing it can run, so lint is not clean.
+  const auto path = write_temp(kHeader + kDriveIl + kFooter, ".xml");
   const auto r = run_sfcv("lint " + q(path));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   // With an SFC program beside it, lint is clean: `check --pou seq` models the file.
-  const auto both = write_temp(kHeader + sfc_pou() + kDrivePou + kFooter, ".xml");
+  const auto both = write_temp(kHeader + sfc_pou() + kDriveIl + kFooter, ".xml");
   const auto r2 = run_sfcv("lint " + q(both));
   EXPECT_EQ(r2.exit_code, 0) << r2.out << r2.err;
 }

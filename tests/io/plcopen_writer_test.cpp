@@ -347,10 +347,16 @@ END_PROGRAM
     u.actions[0].body.clear();
   }, "action 'Act', whose graphical body sfcv does not model");
   expect([](model::Pou& u) {
-    u.charts.clear();
-    u.associations.clear();
-    u.body.push_back(model::make_assign("x", model::make_bool(true)));
-  }, "the ST body of POU 'r', which has no SFC body");
+    u.body_unsupported = true;
+    u.unsupported_language = "FBD";
+    u.unsupported_text = "not xml <";
+  }, "the FBD body of POU 'r', which sfcv does not model");
+  // A POU whose only body is ST is a program (issue 18): written, and read back the same.
+  auto st_only = base;
+  st_only.pous[0].charts.clear();
+  st_only.pous[0].associations.clear();
+  st_only.pous[0].body.push_back(model::make_assign("x", model::make_bool(true)));
+  plcopen_round_trip(st_only);
   auto grafcet = base;
   grafcet.dialect = model::Dialect::Grafcet;
   EXPECT_NE(refusal(grafcet).find("a Grafcet (IEC 60848) project"), std::string::npos);

@@ -190,13 +190,15 @@ TEST(PlcopenXml, StBodyBesideAnSfcBodyIsThePouBody) {
   ASSERT_EQ(r.project->pous.at(0).body.size(), 1u);
   EXPECT_EQ(model::to_st(r.project->pous.at(0).body), "x := a AND b;\n");
   EXPECT_FALSE(has_message(r, Severity::Note, "not modelled"));
-  // One that does not parse stays unmodelled, with the note as before.
+  // One that does not parse is marked unmodelled (running the POU is refused), with a warning.
   std::string bad = doc;
   bad.insert(bad.find("</pou>"), "<body><ST><xhtml:p><![CDATA[x := SQRT(a);]]></xhtml:p></ST></body>");
   const auto b = load_plcopen_xml(bad, "st.xml");
   ASSERT_TRUE(b.ok()) << errors_of(b);
   EXPECT_TRUE(b.project->pous.at(0).body.empty());
-  EXPECT_TRUE(has_message(b, Severity::Note, "its ST body is not modelled"));
+  EXPECT_TRUE(b.project->pous.at(0).body_unsupported);
+  EXPECT_EQ(b.project->pous.at(0).unsupported_text.rfind("x := SQRT(a);", 0), 0u);
+  EXPECT_TRUE(has_message(b, Severity::Warning, "its ST body is not modelled"));
 }
 
 TEST(PlcopenXml, InlineConditionAsRawText) {
@@ -791,7 +793,7 @@ TEST(PlcopenXml, PousUnderAddDataAreRead) {
             "/addData/data[@name='http://www.3s-software.com/plcopenxml/pou']/pou[@name='P']/body/SFC/transition[@localId='2']");
 }
 
-TEST(PlcopenXml, StBodyCallingSfcActionsIsFlagged) {
+TEST(PlcopenXml, StBodyCallingSfcActionsIsRead) {
   // TwinCAT: an FB with an ST body and an action written in SFC, started from the ST body.
   std::string doc = std::string("<?xml version=\"1.0\"?><project xmlns=\"") + kNs200 + "\"><types><pous>"
       "<pou name=\"Cyl\" pouType=\"functionBlock\"><interface>" + kVarA + "</interface>"
@@ -802,7 +804,11 @@ TEST(PlcopenXml, StBodyCallingSfcActionsIsFlagged) {
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(r.project->pous[0].charts.size(), 1u);
   EXPECT_EQ(r.project->pous[0].charts[0].parent_action, "ACT_Extend");
-  EXPECT_TRUE(has_message(r, Severity::Warning, "POU 'Cyl': its ST body is not modelled"));
+  // The body is read (a call of the POU's action); the semantics refuses calling an SFC action
+  // (Programs.CallOfAnSfcActionIsRefused).
+  EXPECT_FALSE(r.project->pous[0].body_unsupported);
+  ASSERT_EQ(r.project->pous[0].body.size(), 1u);
+  EXPECT_EQ(r.project->pous[0].body[0]->target, "ACT_Extend");
 }
 
 TEST(PlcopenXml, InstanceActionReferencesAreKeptAsNames) {
@@ -954,6 +960,73 @@ TEST(PlcopenXml, LoadFileDetectsPlcopenXml) {
   std::filesystem::remove(path);
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::count_steps(*r.project), 2u);
+}
+
+
+// ------------------------------------------------------------------- POU bodies (issue 18)
+
+// Beremiz leaves transitions wired to nothing in its files; its code generator ignores them.
+TEST(PlcopenXml, StrayTransitionIsAWarningAndIgnored) {
+  const std::string stray = "<transition localId=\"9\"><connectionPointIn/><connectionPointOut/>" +
+                            inline_st("b") + "</transition>\n";
+  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), stray), kVarA), "stray.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_TRUE(has_message(r, Severity::Warning, "connected to nothing: ignored"));
+  EXPECT_EQ(chart0(r).transitions.size(), 2u);
+}
+
+std::string body_project(const std::string& body, const std::string& interface = kVarA) {
+  return "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"" + std::string(kNs201) +
+         "\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">\n<contentHeader name=\"demo\"/>\n"
+         "<types><dataTypes/><pous>\n<pou name=\"P\" pouType=\"program\">\n<interface>" + interface +
+         "<outputVars><variable name=\"x\"><type><BOOL/></type></variable></outputVars></interface>\n"
+         "<body>" + body + "</body>\n</pou>\n</pous></types>\n</project>\n";
+}
+
+TEST(PlcopenXml, StBodyOfAPouWithoutSfcIsItsProgram) {
+  const auto r = load_plcopen_xml(body_project("<ST><xhtml:p>x := a AND NOT b;</xhtml:p></ST>"), "st.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous.at(0);
+  EXPECT_FALSE(pou.has_sfc());
+  EXPECT_FALSE(pou.body_unsupported);
+  ASSERT_EQ(pou.body.size(), 1u);
+  EXPECT_EQ(model::to_st(pou.body), "x := a AND NOT b;\n");
+}
+
+TEST(PlcopenXml, LdEdgeContactBecomesAnRTrigInstance) {
+  const std::string ld =
+      "<LD><leftPowerRail localId=\"1\"><connectionPointOut/></leftPowerRail>"
+      "<contact localId=\"2\" edge=\"rising\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
+      "<variable>a</variable></contact>"
+      "<contact localId=\"3\" negated=\"true\"><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn>"
+      "<variable>b</variable></contact>"
+      "<coil localId=\"4\"><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn>"
+      "<variable>x</variable></coil></LD>";
+  const auto r = load_plcopen_xml(body_project(ld), "ld.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous.at(0);
+  const auto* edge = pou.find_variable("SFCV_EDGE_BODY_2");
+  ASSERT_NE(edge, nullptr);
+  EXPECT_EQ(edge->type.fb, model::StandardFb::R_TRIG);
+  EXPECT_EQ(model::to_st(pou.body), "SFCV_EDGE_BODY_2(CLK := a);\nx := SFCV_EDGE_BODY_2.Q AND NOT b;\n");
+}
+
+// An IL body, and an ST body calling an instance of a user function block (its variable was
+// dropped), load but are marked: running the POU is refused, never an empty program.
+TEST(PlcopenXml, BodiesThatCannotBeModelledAreMarked) {
+  auto r = load_plcopen_xml(body_project("<IL><xhtml:p>LD a\nST x</xhtml:p></IL>"), "il.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_TRUE(r.project->pous.at(0).body_unsupported);
+  EXPECT_EQ(r.project->pous.at(0).unsupported_language, "IL");
+  EXPECT_TRUE(has_message(r, Severity::Warning, "its IL body is not modelled"));
+  const std::string user_fb =
+      kVarA + std::string("<localVars><variable name=\"m\"><type><derived name=\"Motor\"/></type></variable></localVars>");
+  r = load_plcopen_xml(body_project("<ST><xhtml:p>m(go := a); x := a;</xhtml:p></ST>", user_fb), "fb.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_TRUE(r.project->pous.at(0).body_unsupported);
+  EXPECT_TRUE(r.project->pous.at(0).body.empty());
+  EXPECT_NE(r.project->pous.at(0).unsupported_reason.find("'m'"), std::string::npos)
+      << r.project->pous.at(0).unsupported_reason;
 }
 
 // --------------------------------------------------------------------------------- the corpus

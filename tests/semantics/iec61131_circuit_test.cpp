@@ -254,5 +254,43 @@ TEST(Iec61131Circuit, AgreesOnTimersCountersAndData) {
   }
 }
 
+
+// Programs without steps (ST bodies that run every cycle), two programs in one cycle in
+// document order sharing a global, a timer without PT (T#0s), the
+// CODESYS timer reset idiom (IN := FALSE with another PT) and CTU's RESET input.
+const char* kBodyPrograms = R"(
+PROGRAM Producer
+  VAR_INPUT start, stop : BOOL; END_VAR
+  VAR_GLOBAL run : BOOL; n : INT(0..3); END_VAR
+  VAR t : TON; z : TON; c : CTU; e : R_TRIG; END_VAR
+  IF start AND NOT stop THEN run := TRUE; ELSIF stop THEN run := FALSE; END_IF;
+  IF stop THEN t(IN := FALSE, PT := T#0ms); ELSE t(IN := run, PT := T#2s); END_IF;
+  z(IN := run);
+  e(CLK := t.Q);
+  c(CU := e.Q, RESET := stop, PV := 2);
+  IF c.Q AND n < 3 THEN n := n + 1; END_IF;
+END_PROGRAM
+PROGRAM Consumer
+  VAR_EXTERNAL run : BOOL; n : INT(0..3); END_VAR
+  VAR_OUTPUT M1, M2, fast : BOOL; END_VAR
+  M1 := run;
+  M2 := run AND n = 3;
+  fast := M1 AND NOT M2;
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnProgramsWithoutSteps) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 500;
+    auto ts = system_for(kBodyPrograms, options);
+    ASSERT_TRUE(ts);
+    EXPECT_GT(ts->layout().fields().size(), 5u);
+    expect_agreement(*ts, 1500, 21);
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::semantics

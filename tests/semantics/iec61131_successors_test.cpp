@@ -130,6 +130,17 @@ TEST(Iec61131Successors, PouSelection) {
   model::Pou second = b.pou();
   second.name = "P2";
   b.project.pous.push_back(second);
+  // Two PROGRAMs: both run, in document order.
+  {
+    auto both = b.build();
+    ASSERT_TRUE(both);
+    int steps = 0;
+    for (const auto& o : both->observables())
+      if (o.kind == semantics::ObservableKind::Step) ++steps;
+    EXPECT_EQ(steps, 2);
+  }
+  // Two function blocks with SFC bodies: which one runs is the user's choice.
+  for (auto& q : b.project.pous) q.kind = model::PouKind::FunctionBlock;
   const auto err = b.build_error();
   EXPECT_NE(err.find("P1, P2"), std::string::npos);
   EXPECT_NE(err.find("--pou"), std::string::npos);
