@@ -29,6 +29,9 @@ struct PropertyResult {
   std::string message;   ///< one readable line (why unknown, what was found)
   std::vector<std::string> findings;  ///< standard checks: one located line per defect
   std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
+  /// SAT engines: the re-checked proof of a Holds (an inductive invariant as readable clauses
+  /// over latch names, or a k-induction depth); empty otherwise.
+  std::string certificate;
   double seconds = 0;
   model::SourceLocation where;  ///< where the property was written
 };
@@ -37,6 +40,7 @@ struct CheckReport {
   std::string engine;      ///< "explicit", "bdd"
   std::uint64_t states = 0;
   std::uint64_t edges = 0;
+  bool states_known = true;  ///< false: the engine did not count states (SAT engines)
   bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
   std::uint32_t depth = 0;  ///< BFS depth reached
   bool complete = true;    ///< false when a limit stopped exploration

@@ -18,7 +18,7 @@ std::string seconds(double s) {
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
-  out += std::to_string(report.states) + " states, " +
+  out += (report.states_known ? std::to_string(report.states) + " states, " : std::string()) +
          (report.edges_known ? std::to_string(report.edges) + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
@@ -59,7 +59,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["model"] = options.model;
   j["semantics"] = options.semantics;
   j["engine"] = report.engine;
-  j["states"] = report.states;
+  j["states"] = report.states_known ? json(report.states) : json(nullptr);
   j["edges"] = report.edges_known ? json(report.edges) : json(nullptr);
   j["depth"] = report.depth;
   j["complete"] = report.complete;
