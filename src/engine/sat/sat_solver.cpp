@@ -32,6 +32,7 @@ struct Solver::Impl {
   DeadlineTerminator terminator;
   Deadline deadline;
   explicit Impl(Deadline d) : terminator(d), deadline(d) {
+    solver.set("quiet", 1);  // library code prints nothing
     if (d.at) solver.connect_terminator(&terminator);
   }
   ~Impl() {
