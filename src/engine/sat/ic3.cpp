@@ -118,6 +118,7 @@ class Ic3 {
         }
         if (blocked_[i].empty()) {
           r.kind = ReachResult::Kind::Unreachable;
+          r.depth = static_cast<std::uint32_t>(k);  // the frames it took
           r.certificate.kind = Certificate::Kind::Invariant;
           for (std::size_t j = i + 1; j < blocked_.size(); ++j)
             for (const auto& c : blocked_[j]) {
