@@ -27,6 +27,11 @@ struct RandomChartFeatures {
   bool nested_chart = false;      ///< an action holding its own chart, started and stopped by steps
 };
 
+/// A deep counter: an n-bit variable `c` (INT(0..2^n - 1)) counts up by one on `tick`, every
+/// second cycle, while below 2^n - 2, so AG c <= 2^n - 2 holds and its runs are 2^(n+1) cycles
+/// deep (the BDD engine's breadth-first rings grow with the depth, IC3 needs none of them).
+std::string counter_iec(std::uint32_t n);
+
 /// A random well-formed chart with `steps` steps (sequences, selection and simultaneous
 /// branches) over `inputs` Boolean inputs, reproducible from `seed`.
 std::string random_chart_iec(std::uint32_t steps, std::uint32_t inputs, std::uint64_t seed,

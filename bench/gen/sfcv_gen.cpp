@@ -13,9 +13,9 @@ int main(int argc, char** argv) {
   std::uint32_t n = 4, inputs = 4, unused = 0;
   std::uint64_t seed = 1;
   bool flawed = false, selector = false;
-  app.add_option("family", family, "parallel | tanks | nested | random | transfer")
+  app.add_option("family", family, "parallel | tanks | nested | random | transfer | counter")
       ->required()
-      ->check(CLI::IsMember({"parallel", "tanks", "nested", "random", "transfer"}));
+      ->check(CLI::IsMember({"parallel", "tanks", "nested", "random", "transfer", "counter"}));
   app.add_option("n", n, "Size: branches, reactors, nesting depth, steps (random), stations");
   app.add_flag("--selector", selector, "parallel: one integer input selects the toggling branch");
   app.add_flag("--flawed", flawed, "tanks: keep the seed's V2/V4 flaw");
@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   std::string text;
   if (family == "parallel") text = sfcv::bench::parallel_branches_iec(n, selector);
   else if (family == "tanks") text = sfcv::bench::tanks_iec(n, flawed);
+  else if (family == "counter") text = sfcv::bench::counter_iec(n);
   else if (family == "nested") text = sfcv::bench::nested_charts_iec(n);
   else if (family == "transfer") text = sfcv::bench::transfer_line_g7(n, unused);
   else text = sfcv::bench::random_chart_iec(n, inputs, seed, features);

@@ -22,6 +22,7 @@
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
+#include "engine/sat/sat_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/vacuity.hpp"
 #include "model/names.hpp"
@@ -47,6 +48,8 @@ struct CheckOptions {
   SystemOptions system;
   LimitOptions limits;
   bool reorder = false;
+  std::uint32_t depth = 200;
+  std::string certificate;
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
@@ -92,7 +95,8 @@ std::string read_file(const std::string& path) {
 constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
-                                      const engine::BddEngineOptions& bdd_options) {
+                                      const engine::BddEngineOptions& bdd_options,
+                                      std::uint32_t depth) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -103,8 +107,18 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
   }
-  auto checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
-                               : engine::make_explicit_model_checker();
+  engine::ModelCheckerPtr checker;
+  if (name == "bmc" || name == "kind" || name == "ic3") {
+    engine::SatEngineOptions sat;
+    sat.algorithm = name == "bmc"    ? engine::SatAlgorithm::Bmc
+                    : name == "kind" ? engine::SatAlgorithm::KInduction
+                                     : engine::SatAlgorithm::Ic3;
+    sat.max_depth = depth;
+    checker = engine::make_sat_model_checker(sat);
+  } else {
+    checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
+                            : engine::make_explicit_model_checker();
+  }
   if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
   return checker;
 }
@@ -184,8 +198,10 @@ int run_check(const CheckOptions& o) {
       o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
-  if (o.engine != "explicit" && o.engine != "auto" && o.engine != "bdd" && o.engine != "nusmv")
-    throw UsageError("bad --engine '" + o.engine + "' (expected explicit, bdd, auto or nusmv)");
+  static const std::vector<std::string> engines = {"auto", "explicit", "bdd", "bmc", "kind", "ic3", "nusmv"};
+  if (std::find(engines.begin(), engines.end(), o.engine) == engines.end())
+    throw UsageError("bad --engine '" + o.engine +
+                     "' (expected auto, explicit, bdd, bmc, kind, ic3 or nusmv)");
 
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
@@ -223,7 +239,7 @@ int run_check(const CheckOptions& o) {
   progress.phase("explore");
   logic::CheckReport result = o.engine == "auto"
                                   ? check_auto(task, bdd_options, progress)
-                                  : choose_engine(o.engine, task, bdd_options)->check(task);
+                                  : choose_engine(o.engine, task, bdd_options, o.depth)->check(task);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   if (o.coverage && !result.coverage && !global_options().quiet) {
@@ -254,6 +270,12 @@ int run_check(const CheckOptions& o) {
         default: f << report::trace_table(*chosen, *ts); break;
       }
     }
+  }
+  if (!o.certificate.empty()) {
+    std::ofstream f(o.certificate);
+    if (!f) throw InputError(o.certificate + ": cannot write the certificate file");
+    for (const auto& r : result.results)
+      if (!r.certificate.empty()) f << "# " << r.name << "\n" << r.certificate;
   }
   if (!o.junit.empty()) {
     std::ofstream f(o.junit);
@@ -294,7 +316,12 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, or nusmv (a NuSMV on PATH)");
+  sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, bmc, kind, ic3 "
+                  "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
+  sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
+  sub->add_option("--certificate", opts->certificate,
+                  "kind and ic3: write the re-checked proof of each result there (inductive "
+                  "invariant clauses over latch names, or the k of k-induction)");
   add_system_options(*sub, opts->system);
   add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
   sub->add_flag("--reorder", opts->reorder,

@@ -32,6 +32,9 @@ struct PropertyResult {
   /// Every finding the check made; more than findings.size() when CheckTask::max_findings cut them.
   std::size_t findings_total = 0;
   std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
+  /// SAT engines: the re-checked proof of a Holds (an inductive invariant as readable clauses
+  /// over latch names, or a k-induction depth); empty otherwise.
+  std::string certificate;
   /// AG (a -> f) that holds: whether `a` is never reachable (logic/vacuity.hpp), and the
   /// answer to the witness question EF a in one line; unset for other properties.
   std::optional<bool> vacuous;
@@ -53,6 +56,7 @@ struct CheckReport {
   std::string engine;      ///< "explicit", "bdd"
   BigCount states;          ///< exact, also beyond 2^64 (symbolic engines)
   BigCount edges;
+  bool states_known = true;  ///< false: the engine did not count states (SAT engines)
   bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
   std::uint32_t depth = 0;  ///< BFS depth reached (the rings computed, less one)
   /// Every property was an invariant and each met a bad state before the reachable set was

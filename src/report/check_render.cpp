@@ -24,7 +24,7 @@ std::string findings_cut_note(const logic::PropertyResult& r) {
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
-  out += report.states.str() + " states, " +
+  out += (report.states_known ? report.states.str() + " states, " : std::string()) +
          (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
@@ -82,7 +82,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["semantics"] = options.semantics;
   j["engine"] = report.engine;
   // A number while it fits in 64 bits (JSON readers take those exactly), else a decimal string.
-  j["states"] = count_json(report.states);
+  j["states"] = report.states_known ? count_json(report.states) : json(nullptr);
   j["edges"] = report.edges_known ? count_json(report.edges) : json(nullptr);
   j["depth"] = report.depth;
   j["complete"] = report.complete;

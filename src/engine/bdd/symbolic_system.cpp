@@ -2,6 +2,7 @@
 
 #include "engine/bdd/grafcet_closure.hpp"
 #include "engine/bdd/variable_order.hpp"
+#include "logic/circuit_atom.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -402,46 +403,12 @@ Bdd SymbolicSystem::field_value_equals(std::uint32_t o, std::int64_t value) {
 }
 
 Bdd SymbolicSystem::atom(const logic::Formula& f) {
-  using logic::Op;
-  switch (f.op) {
-    case Op::True: return Bdd::constant(true);
-    case Op::False: return Bdd::constant(false);
-    case Op::Atom: {
-      const auto o = static_cast<std::uint32_t>(f.observable);
-      const auto& bits = circuit_.observable_bits[o];
-      if (bits.size() == 1 && circuit_.observable_lo[o] == 0) return node_bdd(bits[0]);
-      // An integer used as a Boolean: true when non-zero.
-      return !field_value_equals(o, 0);
-    }
-    case Op::Compare: {
-      // value = lo + bits, compared with the constant as 64-bit integers in the circuit.
-      const auto o = static_cast<std::uint32_t>(f.observable);
-      Aig& aig = circuit_.aig;
-      const auto value = semantics::bv_add(
-          aig, semantics::bv_resize(circuit_.observable_bits[o], 64, false),
-          semantics::bv_constant(circuit_.observable_lo[o], 64));
-      const auto k = semantics::bv_constant(f.value, 64);
-      AigLit r = Aig::kFalse;
-      switch (f.cmp) {
-        case logic::CompareOp::Eq: r = semantics::bv_equal(aig, value, k); break;
-        case logic::CompareOp::Ne: r = Aig::make_not(semantics::bv_equal(aig, value, k)); break;
-        case logic::CompareOp::Lt: r = semantics::bv_less_signed(aig, value, k); break;
-        case logic::CompareOp::Le: r = Aig::make_not(semantics::bv_less_signed(aig, k, value)); break;
-        case logic::CompareOp::Gt: r = semantics::bv_less_signed(aig, k, value); break;
-        case logic::CompareOp::Ge: r = Aig::make_not(semantics::bv_less_signed(aig, value, k)); break;
-      }
-      memo_.resize(aig.nodes().size());
-      memo_set_.resize(aig.nodes().size(), false);
-      return node_bdd(r);
-    }
-    case Op::Not: return !atom(*f.args[0]);
-    case Op::And: return atom(*f.args[0]) & atom(*f.args[1]);
-    case Op::Or: return atom(*f.args[0]) | atom(*f.args[1]);
-    case Op::Implies: return (!atom(*f.args[0])) | atom(*f.args[1]);
-    case Op::Iff: return atom(*f.args[0]).iff(atom(*f.args[1]));
-    case Op::Xor: return atom(*f.args[0]) ^ atom(*f.args[1]);
-    default: throw std::invalid_argument("SymbolicSystem::atom: temporal operator");
-  }
+  // The shared mapping to circuit literals (logic/circuit_atom.hpp), which the SAT engines use
+  // too; comparisons may add nodes to the circuit.
+  const AigLit lit = logic::circuit_literal(circuit_, f);
+  memo_.resize(circuit_.aig.nodes().size());
+  memo_set_.resize(circuit_.aig.nodes().size(), false);
+  return node_bdd(lit);
 }
 
 Bdd SymbolicSystem::fires(std::uint32_t t) {

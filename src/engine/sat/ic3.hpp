@@ -1,0 +1,30 @@
+#pragma once
+// IC3 / property-directed reachability (Bradley 2011; Eén, Mishchenko, Brayton 2011) for one
+// target: frames F_0 = init, F_1 ... F_k as sets of blocked cubes over the latches of the
+// target's cone of influence, one incremental solver per frame, proof obligations in a priority
+// queue (lowest frame first), inductive generalisation (failed assumptions, then MIC-style
+// literal dropping), propagation of blocked cubes forward, and predecessors lifted by a
+// failed-assumption query before they become obligations.
+
+#include "engine/sat/reachability.hpp"
+#include "engine/sat/sat_solver.hpp"
+
+namespace sfcv::engine::sat {
+
+struct Ic3Options {
+  Deadline deadline;
+  std::uint32_t max_frames = 100000;
+};
+
+struct Ic3Stats {
+  std::size_t frames = 0, obligations = 0, cubes = 0, sat_calls = 0;
+};
+
+/// Whether `query.targets[target]` is reachable: Unreachable comes with the inductive invariant
+/// (a Certificate::Invariant, not yet re-checked: certificate.hpp does that); Reached with the
+/// depth of the run IC3 found (its inputs are left for BMC to rebuild: the caller replays a
+/// shortest run up to that depth).
+ReachResult ic3(const ReachQuery& query, std::size_t target, const Ic3Options& options,
+                Ic3Stats* stats = nullptr);
+
+}  // namespace sfcv::engine::sat

@@ -1,0 +1,112 @@
+#include "engine/sat/k_induction.hpp"
+
+#include <memory>
+
+#include "engine/sat/certificate.hpp"
+#include "engine/sat/unrolling.hpp"
+
+namespace sfcv::engine::sat {
+
+namespace {
+
+/// The step case of one target, grown one frame per call: frames 0..n with step_ok and no
+/// target in frames 0..n-1, pairwise distinct on the cone latches.
+class StepCase {
+ public:
+  StepCase(const ReachQuery& q, semantics::AigLit target, Deadline deadline)
+      : query_(q), target_(target), solver_(deadline), frames_(*q.aig, solver_, false),
+        cone_(cone_latches(*q.aig, {target, q.step_ok})) {}
+
+  /// Is there such a run with n = depth non-target frames followed by a target frame?
+  /// Frames are added in order: call with depth 1, 2, 3, ...
+  SatResult solve(std::uint32_t depth) {
+    const std::uint32_t last = depth - 1;  // the newest non-target frame
+    solver_.add_clause({-frames_.literal(target_, last)});
+    solver_.add_clause({frames_.literal(query_.step_ok, last)});
+    for (std::uint32_t j = 0; j < depth; ++j) distinct(j, depth);
+    return solver_.solve({frames_.literal(target_, depth)});
+  }
+
+ private:
+  void distinct(std::uint32_t a, std::uint32_t b) { add_frames_differ(frames_, cone_, a, b); }
+
+  const ReachQuery& query_;
+  semantics::AigLit target_;
+  Solver solver_;
+  Unrolling frames_;
+  std::vector<std::uint32_t> cone_;
+};
+
+}  // namespace
+
+std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions& options) {
+  Solver base(options.deadline);
+  Unrolling frames(*query.aig, base, true);
+  std::vector<ReachResult> results(query.targets.size());
+  std::vector<std::unique_ptr<StepCase>> steps(query.targets.size());
+  std::size_t open = results.size();
+  auto give_up = [&](std::uint32_t depth, const std::string& why) {
+    for (auto& r : results)
+      if (r.kind == ReachResult::Kind::Unknown && r.why.empty()) {
+        r.depth = depth;
+        r.why = why;
+      }
+  };
+  for (std::uint32_t k = 0; open > 0; ++k) {
+    if (k > options.max_depth) {
+      give_up(options.max_depth, "neither reached nor " + std::to_string(options.max_depth) +
+                                     "-inductive (the bound)");
+      break;
+    }
+    bool interrupted = false;
+    for (std::size_t t = 0; t < results.size() && !interrupted; ++t) {
+      auto& r = results[t];
+      if (r.kind != ReachResult::Kind::Unknown) continue;
+      // Base case at depth k: the frames before were refuted already.
+      switch (base.solve({frames.literal(query.targets[t], k)})) {
+        case SatResult::Sat:
+          r.kind = ReachResult::Kind::Reached;
+          r.depth = k;
+          for (std::uint32_t j = 0; j <= k; ++j) r.inputs.push_back(frames.input_values(j));
+          --open;
+          continue;
+        case SatResult::Unsat: break;
+        case SatResult::Interrupted: interrupted = true; continue;
+      }
+      // Step case with k + 1 non-target frames: together with the base cases 0..k a proof.
+      if (!steps[t]) steps[t] = std::make_unique<StepCase>(query, query.targets[t], options.deadline);
+      switch (steps[t]->solve(k + 1)) {
+        case SatResult::Unsat:
+          r.kind = ReachResult::Kind::Unreachable;
+          r.depth = k + 1;
+          r.certificate.kind = Certificate::Kind::KInduction;
+          r.certificate.depth = k + 1;
+          steps[t].reset();
+          --open;
+          break;
+        case SatResult::Sat: break;
+        case SatResult::Interrupted: interrupted = true; break;
+      }
+    }
+    if (interrupted) {
+      give_up(k, "the time limit passed at depth " + std::to_string(k));
+      break;
+    }
+    base.add_clause({frames.literal(query.step_ok, k)});
+  }
+  // Every proof is re-checked by fresh solvers.
+  for (std::size_t t = 0; t < results.size(); ++t) {
+    auto& r = results[t];
+    if (r.kind != ReachResult::Kind::Unreachable) continue;
+    const auto check = recheck(query, t, r.certificate, options.deadline);
+    if (!check.ok) {
+      r.kind = ReachResult::Kind::Unknown;
+      r.why = check.failed == "time" ? "the time limit passed while re-checking the proof"
+                                     : "the proof failed its re-check (" + check.failed +
+                                           "): an engine error, please report it";
+    }
+  }
+  return results;
+}
+
+}  // namespace sfcv::engine::sat

@@ -1,0 +1,357 @@
+#include "engine/sat/sat_model_checker.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "engine/sat/bmc.hpp"
+#include "engine/sat/certificate.hpp"
+#include "engine/sat/ic3.hpp"
+#include "engine/sat/k_induction.hpp"
+#include "logic/circuit_atom.hpp"
+#include "logic/formula.hpp"
+#include "logic/standard_checks.hpp"
+#include "semantics/iec61131_circuit.hpp"
+
+namespace sfcv::engine {
+
+using logic::PropertyResult;
+using logic::StandardCheck;
+using logic::Verdict;
+using sat::ReachResult;
+using semantics::Aig;
+using semantics::AigLit;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string_view algorithm_name(SatAlgorithm a) {
+  switch (a) {
+    case SatAlgorithm::Bmc: return "bmc";
+    case SatAlgorithm::KInduction: return "kind";
+    case SatAlgorithm::Ic3: return "ic3";
+  }
+  return "sat";
+}
+
+/// How a property or check reads the answers for its targets.
+struct Question {
+  enum class Shape { Invariant, Reach, Check, Unsupported } shape = Shape::Unsupported;
+  std::vector<std::size_t> targets;  ///< indices into the query's targets
+  std::vector<std::string> labels;   ///< Check: per target, the finding when it is unreachable
+};
+
+class Run {
+ public:
+  Run(const logic::CheckTask& task, const SatEngineOptions& options)
+      : task_(task), options_(options), ts_(*task.system),
+        circuit_(semantics::build_iec61131_circuit(ts_)) {
+    step_ok_ = circuit_.aig.make_and(circuit_.allowed, Aig::make_not(circuit_.range_error));
+  }
+
+  logic::CheckReport check() {
+    const auto start = Clock::now();
+    logic::CheckReport report;
+    report.engine = std::string(algorithm_name(options_.algorithm));
+    report.states_known = false;
+    report.edges_known = false;
+    deadline_ = sat::Deadline::after_seconds(task_.limits.timeout_seconds);
+
+    std::vector<Question> questions;
+    for (const auto& p : task_.properties) questions.push_back(property_question(p));
+    for (auto c : task_.checks) questions.push_back(check_question(c));
+    answers_ = solve();
+
+    std::size_t q = 0;
+    for (const auto& p : task_.properties) {
+      auto r = property_result(p, questions[q++]);
+      r.where = p.where;
+      report.results.push_back(std::move(r));
+    }
+    for (auto c : task_.checks) report.results.push_back(check_result(c, questions[q++]));
+    for (const auto& a : answers_) {
+      report.depth = std::max(report.depth, a.depth);
+      if (a.kind == ReachResult::Kind::Unknown && a.why.find("time") != std::string::npos) {
+        report.complete = false;
+        report.limit = "time";
+      }
+    }
+    report.seconds = since(start);
+    for (auto& r : report.results) r.seconds = report.seconds;
+    return report;
+  }
+
+ private:
+  std::size_t add_target(AigLit lit) {
+    targets_.push_back(lit);
+    return targets_.size() - 1;
+  }
+
+  Question property_question(const logic::Property& p) {
+    Question q;
+    const auto& f = *p.formula;
+    if (!task_.fairness.empty()) return q;
+    if ((f.op == logic::Op::AG || f.op == logic::Op::EF) && logic::is_propositional(*f.args[0])) {
+      const AigLit inner = logic::circuit_literal(circuit_, *f.args[0]);
+      q.shape = f.op == logic::Op::AG ? Question::Shape::Invariant : Question::Shape::Reach;
+      q.targets.push_back(add_target(f.op == logic::Op::AG ? Aig::make_not(inner) : inner));
+    }
+    return q;
+  }
+
+  Question check_question(StandardCheck c) {
+    Question q;
+    switch (c) {
+      case StandardCheck::Reachable:
+        for (const auto& s : logic::step_refs(ts_, task_.project)) {
+          q.targets.push_back(add_target(logic::circuit_literal(
+              circuit_, *logic::observable_atom(ts_, s.observable))));
+          q.labels.push_back("step " + logic::describe_step(s) + " is never active");
+        }
+        q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
+        break;
+      case StandardCheck::DeadTransitions: {
+        const auto& trs = ts_.transitions();
+        for (std::uint32_t t = 0; t < trs.size(); ++t) {
+          q.targets.push_back(add_target(circuit_.aig.make_and(circuit_.fired[t], step_ok_)));
+          q.labels.push_back("transition " + trs[t].name +
+                             (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
+                             " never fires");
+        }
+        q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
+        break;
+      }
+      case StandardCheck::Instability:
+        // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
+        q.shape = Question::Shape::Invariant;
+        q.targets.push_back(add_target(circuit_.aig.make_and(circuit_.allowed, circuit_.range_error)));
+        break;
+      default: break;
+    }
+    return q;
+  }
+
+  std::vector<ReachResult> solve() {
+    sat::ReachQuery query;
+    query.aig = &circuit_.aig;
+    query.step_ok = step_ok_;
+    query.targets = targets_;
+    sat::BoundOptions bounds;
+    bounds.max_depth = options_.max_depth;
+    bounds.deadline = deadline_;
+    switch (options_.algorithm) {
+      case SatAlgorithm::Bmc: return sat::bmc(query, bounds);
+      case SatAlgorithm::KInduction: return sat::k_induction(query, bounds);
+      case SatAlgorithm::Ic3: break;
+    }
+    std::vector<ReachResult> out;
+    sat::Ic3Options io;
+    io.deadline = deadline_;
+    for (std::size_t t = 0; t < targets_.size(); ++t) {
+      auto r = sat::ic3(query, t, io);
+      if (r.kind == ReachResult::Kind::Reached) {
+        // IC3 knows that a run of r.depth cycles exists; BMC up to that depth rebuilds a
+        // shortest one with its inputs (and double-checks IC3's claim).
+        sat::ReachQuery one = query;
+        one.targets = {targets_[t]};
+        sat::BoundOptions b;
+        b.max_depth = r.depth;
+        b.deadline = deadline_;
+        auto run = sat::bmc(one, b).front();
+        if (run.kind == ReachResult::Kind::Unknown && run.why.find("time") == std::string::npos)
+          throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
+        r = std::move(run);
+      }
+      out.push_back(std::move(r));
+    }
+    // Every proof is re-checked by fresh solvers before it may read as "holds".
+    for (std::size_t t = 0; t < out.size(); ++t) {
+      if (out[t].kind != ReachResult::Kind::Unreachable) continue;
+      const auto verdict = sat::recheck(query, t, out[t].certificate, deadline_);
+      if (!verdict.ok) {
+        out[t].kind = ReachResult::Kind::Unknown;
+        out[t].why = verdict.failed == "time"
+                         ? "the time limit passed while re-checking the certificate"
+                         : "the certificate failed its re-check (" + verdict.failed +
+                               "): an engine error, please report it";
+      }
+    }
+    return out;
+  }
+
+  logic::Trace trace_of(const ReachResult& r, logic::TraceKind kind) const {
+    const Aig& aig = circuit_.aig;
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    logic::Trace t;
+    t.kind = kind;
+    t.steps.push_back({logic::pick_inputs(semantics::InputCondition::always(), ts_.inputs(), {}),
+                       semantics::state_from_latches(ts_, circuit_, latches), {}});
+    // The run is replayed on the circuit itself: a model that is not a run is an engine bug.
+    for (std::uint32_t j = 0; j < r.depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      if (!Aig::value_of(nodes, step_ok_)) throw std::logic_error("sat engine: a run without a step");
+      logic::TraceStep step;
+      step.inputs = semantics::inputs_from_bits(ts_, circuit_, r.inputs[j]);
+      for (std::uint32_t tr = 0; tr < circuit_.fired.size(); ++tr)
+        if (Aig::value_of(nodes, circuit_.fired[tr])) step.fired.push_back(tr);
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+      step.state = semantics::state_from_latches(ts_, circuit_, latches);
+      t.steps.push_back(std::move(step));
+    }
+    return t;
+  }
+
+  std::string certificates(const Question& q) const {
+    std::string out;
+    for (auto t : q.targets)
+      if (answers_[t].kind == ReachResult::Kind::Unreachable)
+        out += sat::certificate_text(circuit_.aig, answers_[t].certificate);
+    return out;
+  }
+
+  std::string not_checked() const {
+    return "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+           " engine (it decides AG p and EF p for propositional p without fairness); use "
+           "--engine explicit or bdd";
+  }
+
+  PropertyResult property_result(const logic::Property& p, const Question& q) {
+    PropertyResult r;
+    r.name = p.name;
+    r.formula = logic::to_string(p.formula);
+    if (q.shape == Question::Shape::Unsupported) {
+      r.verdict = Verdict::Unknown;
+      r.message = not_checked();
+      return r;
+    }
+    const auto& a = answers_[q.targets.front()];
+    const bool invariant = q.shape == Question::Shape::Invariant;
+    switch (a.kind) {
+      case ReachResult::Kind::Reached:
+        r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
+        r.trace = trace_of(a, invariant ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
+        r.trace->marked = logic::atom_observables(*p.formula);
+        break;
+      case ReachResult::Kind::Unreachable:
+        r.verdict = invariant ? Verdict::Holds : Verdict::Violated;
+        r.certificate = certificates(q);
+        break;
+      case ReachResult::Kind::Unknown:
+        r.verdict = Verdict::Unknown;
+        r.message = a.why;
+        break;
+    }
+    return r;
+  }
+
+  PropertyResult check_result(StandardCheck c, const Question& q) {
+    PropertyResult r;
+    r.name = std::string(logic::to_string(c));
+    r.check = r.name;
+    if (q.shape == Question::Shape::Unsupported) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                  " engine; use --engine explicit or bdd";
+      return r;
+    }
+    if (q.shape == Question::Shape::Invariant) {  // Instability: a reachable range error
+      const auto& a = answers_[q.targets.front()];
+      if (a.kind == ReachResult::Kind::Reached) {
+        r.verdict = Verdict::Violated;
+        r.trace = trace_of(a, logic::TraceKind::Counterexample);
+        r.findings.push_back("a range error (integer overflow, division by zero or a value out "
+                             "of its type) can occur in " + ts_.describe(r.trace->steps.back().state));
+      } else if (a.kind == ReachResult::Kind::Unreachable) {
+        r.verdict = Verdict::Holds;
+        r.message = "no range error can occur";
+        r.certificate = certificates(q);
+      } else {
+        r.verdict = Verdict::Unknown;
+        r.message = a.why;
+      }
+      return r;
+    }
+    std::size_t unknown = 0;
+    std::string why;
+    for (std::size_t k = 0; k < q.targets.size(); ++k) {
+      const auto& a = answers_[q.targets[k]];
+      if (a.kind == ReachResult::Kind::Unreachable) r.findings.push_back(q.labels[k]);
+      if (a.kind == ReachResult::Kind::Unknown) {
+        ++unknown;
+        why = a.why;
+      }
+    }
+    if (!r.findings.empty()) {
+      r.verdict = Verdict::Violated;
+      r.certificate = certificates(q);
+    } else if (unknown > 0) {
+      r.verdict = Verdict::Unknown;
+      r.message = std::to_string(unknown) + " of " + std::to_string(q.targets.size()) +
+                  " undecided: " + why;
+    } else {
+      r.verdict = Verdict::Holds;
+      r.message = c == StandardCheck::Reachable
+                      ? "all " + std::to_string(q.targets.size()) + " steps are reachable"
+                      : "all " + std::to_string(q.targets.size()) + " transitions can fire";
+    }
+    if (r.verdict == Verdict::Violated && unknown > 0)
+      r.message = std::to_string(unknown) + " more undecided: " + why;
+    return r;
+  }
+
+  const logic::CheckTask& task_;
+  SatEngineOptions options_;
+  const semantics::TransitionSystem& ts_;
+  semantics::TransitionCircuit circuit_;
+  AigLit step_ok_ = Aig::kTrue;
+  std::vector<AigLit> targets_;
+  std::vector<ReachResult> answers_;
+  sat::Deadline deadline_;
+};
+
+class SatModelChecker final : public ModelChecker {
+ public:
+  explicit SatModelChecker(SatEngineOptions options) : options_(options) {}
+  std::string_view name() const override { return algorithm_name(options_.algorithm); }
+
+  bool can_handle(const logic::CheckTask& task, std::string* why) const override {
+    if (!task.system) {
+      if (why) *why = "no system to check";
+      return false;
+    }
+    if (task.system->kind() == semantics::SemanticsKind::Grafcet) {
+      // Grafcet's stable-situation relation is the closure of transient evolutions (a fixpoint
+      // per event), not one circuit step; the SAT engines do not unroll it.
+      if (why)
+        *why = "the " + std::string(name()) + " engine does not check Grafcet charts (their "
+               "stable-situation relation is not one circuit step); use --engine explicit or bdd";
+      return false;
+    }
+    try {
+      semantics::build_iec61131_circuit(*task.system);
+    } catch (const semantics::CircuitUnsupported& e) {
+      if (why) *why = "the " + std::string(name()) + " engine cannot encode " + e.what();
+      return false;
+    }
+    return true;
+  }
+
+  logic::CheckReport check(const logic::CheckTask& task) const override {
+    Run run(task, options_);
+    return run.check();
+  }
+
+ private:
+  SatEngineOptions options_;
+};
+
+}  // namespace
+
+ModelCheckerPtr make_sat_model_checker(const SatEngineOptions& options) {
+  return std::make_unique<SatModelChecker>(options);
+}
+
+}  // namespace sfcv::engine

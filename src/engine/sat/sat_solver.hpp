@@ -1,0 +1,54 @@
+#pragma once
+// A thin facade over CaDiCaL (like bdd_manager.hpp over BuDDy): one incremental solver per
+// value, DIMACS-style literals (a variable is a positive int, its negation the negative one),
+// assumptions, failed assumptions for cores, and a deadline that interrupts a running solve.
+// No other file includes cadical.hpp.
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace sfcv::engine::sat {
+
+using Clock = std::chrono::steady_clock;
+
+/// A point in time after which work stops (none: never).
+struct Deadline {
+  std::optional<Clock::time_point> at;
+  static Deadline after_seconds(double seconds);  ///< 0 or less: none
+  bool passed() const { return at && Clock::now() >= *at; }
+};
+
+enum class SatResult { Sat, Unsat, Interrupted };
+
+class Solver {
+ public:
+  explicit Solver(Deadline deadline = {});
+  ~Solver();
+  Solver(const Solver&) = delete;
+  Solver& operator=(const Solver&) = delete;
+
+  int new_var();
+  /// A literal that is always true (its variable is fixed by a unit clause).
+  int true_lit();
+  void add_clause(const std::vector<int>& lits);
+  void add_clause(std::initializer_list<int> lits) { add_clause(std::vector<int>(lits)); }
+  /// Solves under the assumptions (they hold only for this call). Interrupted when the
+  /// deadline passed before or during the search.
+  SatResult solve(const std::vector<int>& assumptions = {});
+  /// After Sat: the value of a literal in the model.
+  bool value(int lit) const;
+  /// After Unsat: whether assumption `lit` is part of the reason (the core).
+  bool failed(int lit) const;
+  std::size_t calls() const { return calls_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int vars_ = 0;
+  int true_ = 0;
+  std::size_t calls_ = 0;
+};
+
+}  // namespace sfcv::engine::sat

@@ -1,0 +1,295 @@
+// The SAT engines (bmc, kind, ic3) against the explicit engine on random charts (timers,
+// priorities off, assumptions): every verdict the SAT engine gives agrees, every trace
+// replays through `simulate` from the initial state and ends where the property fails (BMC's
+// is as short as the explicit engine's BFS run), every proof of kind and ic3 comes with a
+// certificate that fresh solvers re-check; and a certificate with a planted bug is rejected.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "chart_families.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/sat/certificate.hpp"
+#include "engine/sat/ic3.hpp"
+#include "engine/sat/k_induction.hpp"
+#include "engine/sat/sat_model_checker.hpp"
+#include "io/load.hpp"
+#include "logic/check_inputs.hpp"
+#include "logic/circuit_atom.hpp"
+#include "semantics/iec61131_circuit.hpp"
+#include "semantics/iec61131_system.hpp"
+#include "semantics/simulate.hpp"
+#include "support/ctl_task.hpp"
+
+namespace sfcv::engine {
+namespace {
+
+struct Setup {
+  model::Project project;
+  semantics::TransitionSystemPtr ts;
+};
+
+Setup load(const std::string& text, semantics::Iec61131Options options = {},
+           const std::vector<std::string>& assume = {}) {
+  Setup s;
+  auto loaded = io::load_iec_text(text, "generated.st");
+  EXPECT_TRUE(loaded.ok());
+  s.project = std::move(*loaded.project);
+  if (!assume.empty()) {
+    logic::CheckInputs in;
+    in.assume = assume;
+    auto parsed = logic::parse_check_inputs(in);
+    for (const auto& d : parsed.diagnostics) ADD_FAILURE() << d.str();
+    options.assumptions = logic::assumption_exprs(parsed.spec);
+  }
+  model::Diagnostics diags;
+  s.ts = semantics::make_iec61131_system(s.project, options, diags);
+  EXPECT_TRUE(s.ts) << (diags.empty() ? "" : diags.front().str());
+  return s;
+}
+
+void expect_replays(const semantics::TransitionSystem& ts, const logic::Trace& trace) {
+  ASSERT_FALSE(trace.steps.empty());
+  ASSERT_EQ(semantics::first_initial_state(ts), trace.steps.front().state);
+  std::vector<std::vector<std::int64_t>> inputs;
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) inputs.push_back(trace.steps[k].inputs);
+  const auto run = semantics::simulate(ts, trace.steps.front().state, inputs);
+  ASSERT_TRUE(run.ok) << run.error;
+  ASSERT_EQ(run.states.size(), trace.steps.size());
+  for (std::size_t k = 0; k < trace.steps.size(); ++k)
+    EXPECT_EQ(run.states[k], trace.steps[k].state) << "cycle " << k;
+}
+
+/// A propositional formula in a state, on the circuit (the mapping the engines share).
+bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
+              const std::vector<semantics::StateWord>& state) {
+  auto circuit = semantics::build_iec61131_circuit(ts);
+  const auto lit = logic::circuit_literal(circuit, f);
+  std::vector<bool> latches(circuit.aig.latches().size());
+  const auto& layout = ts.layout();
+  for (std::uint32_t k = 0; k < circuit.field_latches.size(); ++k) {
+    const auto v = static_cast<std::uint64_t>(layout.get(state, k) - layout.fields()[k].lo);
+    for (std::size_t b = 0; b < circuit.field_latches[k].size(); ++b)
+      latches[circuit.field_latches[k][b]] = ((v >> b) & 1U) != 0;
+  }
+  const std::vector<bool> inputs(circuit.aig.inputs().size(), false);
+  return semantics::Aig::value_of(circuit.aig.evaluate(inputs, latches), lit);
+}
+
+struct Tally {
+  int decided = 0, holds = 0, violated = 0, traces = 0, certificates = 0, unsupported = 0;
+};
+
+void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
+  test::FormulaGenerator gen(*s.ts, seed);
+  std::vector<std::string> ctl = {
+      "AG !(" + gen.atom() + " & " + gen.atom() + ")", "AG (" + gen.atom() + " | " + gen.atom() + ")",
+      "EF (" + gen.atom() + " & " + gen.atom() + ")", "EF " + gen.atom(), "AF " + gen.atom()};
+  auto task = test::task_for(s.project, *s.ts, ctl, {});
+  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
+                 logic::StandardCheck::Instability, logic::StandardCheck::GlobalDeadlock};
+  const auto reference = make_explicit_model_checker()->check(task);
+  ASSERT_TRUE(reference.complete);
+  for (auto algorithm : {SatAlgorithm::Bmc, SatAlgorithm::KInduction, SatAlgorithm::Ic3}) {
+    SatEngineOptions options;
+    options.algorithm = algorithm;
+    options.max_depth = 12;
+    const auto checker = make_sat_model_checker(options);
+    ASSERT_TRUE(checker->can_handle(task));
+    const auto report = checker->check(task);
+    ASSERT_EQ(report.results.size(), reference.results.size());
+    for (std::size_t i = 0; i < report.results.size(); ++i) {
+      const auto& e = reference.results[i];
+      const auto& r = report.results[i];
+      SCOPED_TRACE(std::string(checker->name()) + ": " + e.name + " " + e.formula);
+      if (i == 4 || e.check == "global-deadlock") {  // AF, global deadlock: not theirs
+        EXPECT_NE(r.verdict, logic::Verdict::Holds);
+        EXPECT_NE(r.verdict, logic::Verdict::Violated);
+        ++tally.unsupported;
+        continue;
+      }
+      if (r.verdict == logic::Verdict::Unknown) {
+        // BMC proves nothing and k-induction may need a k beyond the bound; IC3 decides all.
+        EXPECT_NE(algorithm, SatAlgorithm::Ic3) << r.message;
+        continue;
+      }
+      ++tally.decided;
+      EXPECT_EQ(e.verdict, r.verdict) << "explicit " << logic::to_string(e.verdict) << ", sat "
+                                      << logic::to_string(r.verdict) << " " << r.message;
+      tally.holds += r.verdict == logic::Verdict::Holds;
+      tally.violated += r.verdict == logic::Verdict::Violated;
+      if (r.trace) {
+        ++tally.traces;
+        expect_replays(*s.ts, *r.trace);
+        if (i < task.properties.size()) {
+          // The last state is where AG fails or EF holds.
+          const auto& inner = *task.properties[i].formula->args[0];
+          const auto& last = r.trace->steps.back().state;
+          const bool ag = task.properties[i].formula->op == logic::Op::AG;
+          EXPECT_EQ(holds_in(*s.ts, inner, last), !ag);
+          if (algorithm == SatAlgorithm::Bmc && e.trace) {
+            EXPECT_EQ(e.trace->steps.size(), r.trace->steps.size()) << "BMC's run is not shortest";
+          }
+        }
+      }
+      // A proof from kind or ic3 carries its certificate (re-checked inside the engine).
+      const bool proved = (r.verdict == logic::Verdict::Holds && !r.trace && i < 2) ||
+                          (r.verdict == logic::Verdict::Violated && !r.trace && i >= 2);
+      if (algorithm != SatAlgorithm::Bmc && proved && i < task.properties.size()) {
+        EXPECT_FALSE(r.certificate.empty());
+        ++tally.certificates;
+      }
+    }
+  }
+}
+
+TEST(SatEngineAgreement, RandomCharts) {
+  Tally tally;
+  int charts = 0;
+  const std::uint64_t last = std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : 500;
+  for (std::uint64_t seed = 1; seed <= last; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    bench::RandomChartFeatures features;
+    features.timed_qualifiers = seed % 3 == 0;
+    semantics::Iec61131Options options;
+    if (seed % 4 == 1) options.priority = semantics::PriorityMode::None;
+    options.time = seed % 2 == 0 ? semantics::TimeMode::Abstract : semantics::TimeMode::Discrete;
+    std::vector<std::string> assume;
+    if (seed % 5 == 2) assume = {"!(S3 & i0)"};
+    const auto s = load(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
+                        options, assume);
+    ASSERT_TRUE(s.ts);
+    compare(s, seed, tally);
+    ++charts;
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_EQ(charts, 500);
+  // Enough of every kind of answer was compared.
+  EXPECT_GT(tally.decided, 6000);
+  EXPECT_GT(tally.holds, 3000);
+  EXPECT_GT(tally.violated, 2000);
+  EXPECT_GT(tally.traces, 2000);
+  EXPECT_GT(tally.certificates, 1000);
+}
+
+}  // namespace
+}  // namespace sfcv::engine
+
+namespace sfcv::engine {
+namespace {
+
+// A certificate with a planted bug is rejected by the fresh re-check: IC3's invariant for a
+// property that is not inductive on its own, with a clause dropped, weakened, or one added
+// that the initial state violates; and a k-induction depth one too small.
+TEST(SatCertificate, PlantedBugsAreRejected) {
+  const auto s = load(bench::tanks_iec(1, false));
+  ASSERT_TRUE(s.ts);
+  auto circuit = semantics::build_iec61131_circuit(*s.ts);
+  auto task = test::task_for(s.project, *s.ts, {"AG !(V2_0 & V4_0)"}, {});
+  sat::ReachQuery query;
+  query.aig = &circuit.aig;
+  query.step_ok = circuit.aig.make_and(circuit.allowed, semantics::Aig::make_not(circuit.range_error));
+  query.targets = {semantics::Aig::make_not(
+      logic::circuit_literal(circuit, *task.properties[0].formula->args[0]))};
+  const auto proof = sat::ic3(query, 0, {});
+  ASSERT_EQ(proof.kind, sat::ReachResult::Kind::Unreachable);
+  const auto& good = proof.certificate;
+  ASSERT_EQ(good.kind, sat::Certificate::Kind::Invariant);
+  EXPECT_TRUE(sat::recheck(query, 0, good).ok);
+  ASSERT_GE(good.clauses.size(), 2u);  // the property alone is not inductive
+  int rejected_drops = 0;
+  for (std::size_t k = 0; k < good.clauses.size(); ++k) {
+    auto bad = good;
+    bad.clauses.erase(bad.clauses.begin() + static_cast<std::ptrdiff_t>(k));
+    rejected_drops += !sat::recheck(query, 0, bad).ok;
+  }
+  EXPECT_GT(rejected_drops, 0);
+  {  // Weakened to nothing: the property alone is not inductive.
+    auto bad = good;
+    bad.clauses.clear();
+    const auto r = sat::recheck(query, 0, bad);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.failed, "property");
+  }
+  {  // A clause the initial state violates.
+    auto bad = good;
+    sat::LatchClause wrong;
+    for (std::uint32_t l = 0; l < circuit.aig.latches().size() && wrong.size() < 2; ++l)
+      wrong.push_back({l, !circuit.aig.latches()[l].initial});
+    bad.clauses.push_back(wrong);
+    const auto r = sat::recheck(query, 0, bad);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.failed, "initiation");
+  }
+  {  // Each clause with one literal dropped (weakened to a stronger, non-inductive claim) or
+     // the property clause removed from the invariant: at least one is caught.
+    int caught = 0;
+    for (std::size_t k = 0; k < good.clauses.size(); ++k) {
+      if (good.clauses[k].size() < 2) continue;
+      auto bad = good;
+      bad.clauses[k].pop_back();
+      caught += !sat::recheck(query, 0, bad).ok;
+    }
+    EXPECT_GT(caught, 0);
+  }
+  // k-induction: the depth k-induction needs passes, one less fails its step case.
+  const auto results = sat::k_induction(query, {});
+  ASSERT_EQ(results.front().kind, sat::ReachResult::Kind::Unreachable);
+  const auto k = results.front().certificate.depth;
+  EXPECT_TRUE(sat::recheck(query, 0, results.front().certificate).ok);
+  if (k > 1) {
+    auto bad = results.front().certificate;
+    bad.depth = k - 1;
+    const auto r = sat::recheck(query, 0, bad);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.failed, "step");
+  }
+}
+
+// Unsupported questions are never answered: fairness, CTL beyond invariants, Grafcet.
+TEST(SatEngine, RefusesWhatItCannotDecide) {
+  const auto s = load(bench::tanks_iec(1, true));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {"AG !(V2_0 & V4_0)", "AG EF V1_0"}, {"V1_0"});
+  task.checks = {logic::StandardCheck::InitialReturn};
+  SatEngineOptions options;
+  const auto r = make_sat_model_checker(options)->check(task);
+  ASSERT_EQ(r.results.size(), 3u);
+  EXPECT_EQ(r.results[0].verdict, logic::Verdict::Unknown);  // fairness
+  EXPECT_EQ(r.results[1].verdict, logic::Verdict::Unknown);
+  EXPECT_EQ(r.results[2].verdict, logic::Verdict::NotChecked);
+  EXPECT_EQ(logic::exit_code(r), 3);
+}
+
+// The counter family: IC3 proves the bound, BMC finds the overflow of a bound one too tight at
+// exactly the depth the explicit engine needs, and --timeout stops a deep BMC with unknown.
+TEST(SatEngine, DeepCounter) {
+  const auto s = load(bench::counter_iec(5));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {"AG c <= 30", "AG c <= 29"}, {});
+  SatEngineOptions ic3;
+  const auto r = make_sat_model_checker(ic3)->check(task);
+  ASSERT_EQ(r.results.size(), 2u);
+  EXPECT_EQ(r.results[0].verdict, logic::Verdict::Holds);
+  EXPECT_FALSE(r.results[0].certificate.empty());
+  EXPECT_EQ(r.results[1].verdict, logic::Verdict::Violated);
+  ASSERT_TRUE(r.results[1].trace);
+  expect_replays(*s.ts, *r.results[1].trace);
+  const auto e = make_explicit_model_checker()->check(task);
+  ASSERT_TRUE(e.results[1].trace);
+  EXPECT_EQ(e.results[1].trace->steps.size(), r.results[1].trace->steps.size());
+  SatEngineOptions bmc;
+  bmc.algorithm = SatAlgorithm::Bmc;
+  bmc.max_depth = 1000000;
+  const auto big = load(bench::counter_iec(16));
+  auto deep = test::task_for(big.project, *big.ts, {"AG c <= 65533"}, {});
+  deep.limits.timeout_seconds = 0.5;
+  const auto t = make_sat_model_checker(bmc)->check(deep);
+  EXPECT_EQ(t.results[0].verdict, logic::Verdict::Unknown);
+  EXPECT_FALSE(t.complete);
+  EXPECT_EQ(t.limit, "time");
+}
+
+}  // namespace
+}  // namespace sfcv::engine
