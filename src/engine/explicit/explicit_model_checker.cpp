@@ -2,6 +2,9 @@
 
 #include <chrono>
 
+#include "engine/explicit/compiled_successors.hpp"
+#include "engine/explicit/invariant_search.hpp"
+
 namespace sfcv::engine {
 
 bool ExplicitModelChecker::can_handle(const logic::CheckTask& task, std::string* why) const {
@@ -15,6 +18,11 @@ bool ExplicitModelChecker::can_handle(const logic::CheckTask& task, std::string*
 logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  // Invariants alone need neither the edges nor their labels: decided during the search.
+  if (invariants_only(task)) {
+    const auto compiled = make_compiled_enumerator(*task.system);
+    return check_invariants(task, compiled.get());
+  }
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
   opts.timeout_seconds = task.limits.timeout_seconds;
