@@ -4,6 +4,8 @@
 #include <bit>
 #include <cstdint>
 #include <vector>
+#include <cstdio>
+#include <cstdlib>
 
 #include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -44,13 +46,15 @@ class CompiledEnumerator final : public TargetEnumerator {
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
       : fallback_(make_interpreted_enumerator(ts)), words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
+    if (std::getenv("SFCV_DEBUG_COMPILED"))
+      std::fprintf(stderr, "gates %zu static %zu dynamic bits %zu static bits %zu inputs %zu\n", gates_.size(), static_state_gates_, dynamic_bits_.size(), static_bits_.size(), input_ids_.size());
   }
 
   void targets(StateView state, std::vector<StateWord>& out) override {
     // Latches, then the gates that read no input: once per state.
     for (std::size_t i = 0; i < latch_pos_.size(); ++i) {
       const auto& p = latch_pos_[i];
-      val_[first_latch_ + i] = Word{0} - ((state[p.word] & p.bit) != 0);
+      set(first_latch_ + i, Word{0} - ((state[p.word] & p.bit) != 0));
     }
     run(0, static_state_gates_);
     base_.assign(words_, 0);
@@ -60,7 +64,7 @@ class CompiledEnumerator final : public TargetEnumerator {
 
     const auto inputs = static_cast<std::uint32_t>(input_ids_.size());
     if (inputs <= 6) {
-      for (std::uint32_t k = 0; k < inputs; ++k) val_[input_ids_[k]] = kLane[k];
+      for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], kLane[k]);
       run(static_state_gates_, gates_.size());
       emit(lanes(inputs), out);
       return;
@@ -74,10 +78,10 @@ class CompiledEnumerator final : public TargetEnumerator {
       const Word ma = mask_[gt.a >> 1], mb = mask_[gt.b >> 1];
       if ((ma == 0 && value(gt.a) == 0) || (mb == 0 && value(gt.b) == 0)) {
         mask_[out_id] = 0;
-        val_[out_id] = 0;
+        set(out_id, 0);
       } else {
         mask_[out_id] = ma | mb;
-        if ((ma | mb) == 0) val_[out_id] = ~Word{0};
+        if ((ma | mb) == 0) set(out_id, ~Word{0});
       }
     }
     Word relevant = mask_[allowed_ >> 1] | mask_[range_error_ >> 1];
@@ -90,13 +94,13 @@ class CompiledEnumerator final : public TargetEnumerator {
     std::uint32_t order[64];
     std::uint32_t n = 0;
     for (Word m = relevant; m; m &= m - 1) order[n++] = static_cast<std::uint32_t>(std::countr_zero(m));
-    for (std::uint32_t k = 0; k < inputs; ++k) val_[input_ids_[k]] = 0;  // not read: any value
+    for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], 0);  // not read: any value
     const std::uint32_t low = std::min<std::uint32_t>(r, 6);
-    for (std::uint32_t k = 0; k < low; ++k) val_[input_ids_[order[k]]] = kLane[k];
+    for (std::uint32_t k = 0; k < low; ++k) set(input_ids_[order[k]], kLane[k]);
     const std::uint32_t passes = r > 6 ? 1U << (r - 6) : 1U;
     for (std::uint32_t pass = 0; pass < passes; ++pass) {
       for (std::uint32_t k = 6; k < r; ++k)
-        val_[input_ids_[order[k]]] = Word{0} - ((pass >> (k - 6)) & 1U);
+        set(input_ids_[order[k]], Word{0} - ((pass >> (k - 6)) & 1U));
       run(static_state_gates_, gates_.size());
       emit(lanes(low), out);
     }
@@ -107,30 +111,61 @@ class CompiledEnumerator final : public TargetEnumerator {
     std::uint32_t word;
     Word bit;
   };
+  struct Exception {
+    Word lanes;  ///< the valid lanes where the bit differs from the common part
+    std::uint32_t word;
+    Word bit;
+  };
 
   static Word lanes(std::uint32_t bits) { return bits >= 6 ? ~Word{0} : (Word{1} << (1U << bits)) - 1; }
-  Word value(std::uint32_t lit) const { return val_[lit >> 1] ^ (Word{0} - (lit & 1U)); }
-  void run(std::size_t from, std::size_t to) {
-    Word* v = val_.data();
-    const Gate* g = gates_.data();
-    for (std::size_t i = from; i < to; ++i)
-      v[first_gate_ + i] = (v[g[i].a >> 1] ^ (Word{0} - (g[i].a & 1U))) &
-                           (v[g[i].b >> 1] ^ (Word{0} - (g[i].b & 1U)));
+  // val_ holds both polarities of every node, indexed by literal: a gate is one AND.
+  Word value(std::uint32_t lit) const { return val_[lit]; }
+  void set(std::uint32_t id, Word w) {
+    val_[2 * id] = w;
+    val_[2 * id + 1] = ~w;
   }
-  void emit(Word lane_mask, std::vector<StateWord>& out) {
-    Word valid = value(allowed_) & ~value(range_error_) & lane_mask;
-    const std::size_t first = out.size();
-    while (valid) {
-      const auto lane = static_cast<unsigned>(std::countr_zero(valid));
-      valid &= valid - 1;
-      const std::size_t at = out.size();
-      out.insert(out.end(), base_.begin(), base_.end());
-      StateWord* t = out.data() + at;
-      for (const auto& d : dynamic_bits_)
-        if ((value(d.lit) >> lane) & 1U) t[d.word] |= d.bit;
-      // Neighbouring valuations often lead to the same target: drop the repeat here.
-      if (at > first && std::equal(t, t + words_, t - words_)) out.resize(at);
+  void run(std::size_t from, std::size_t to) {
+    Word* v = val_.data() + 2 * first_gate_;
+    const Word* in = val_.data();
+    const Gate* g = gates_.data();
+    for (std::size_t i = from; i < to; ++i) {
+      const Word x = in[g[i].a] & in[g[i].b];
+      v[2 * i] = x;
+      v[2 * i + 1] = ~x;
     }
+  }
+  /// Appends the targets of the valid lanes. Most input-reading latches take one value in
+  /// almost every lane (a selector changes one branch per valuation): each bit goes into the
+  /// common part with its majority value, and only the lanes where it differs are patched.
+  void emit(Word lane_mask, std::vector<StateWord>& out) {
+    const Word valid = value(allowed_) & ~value(range_error_) & lane_mask;
+    if (!valid) return;
+    // Where each valid lane's target goes: its rank among the valid lanes.
+    std::uint32_t lanes = 0;
+    if ((valid & (valid + 1)) == 0) {
+      lanes = static_cast<std::uint32_t>(std::countr_one(valid));
+      for (std::uint32_t l = 0; l < lanes; ++l) rank_[l] = l;
+    } else {
+      for (Word m = valid; m; m &= m - 1) rank_[std::countr_zero(m)] = lanes++;
+    }
+    const auto first_lane = static_cast<unsigned>(std::countr_zero(valid));
+    common_ = base_;
+    exceptions_.clear();
+    for (const auto& d : dynamic_bits_) {
+      const Word v = value(d.lit);
+      Word differ = v & valid;
+      if ((v >> first_lane) & 1U) {
+        common_[d.word] |= d.bit;
+        differ = valid & ~v;
+      }
+      if (differ) exceptions_.push_back({differ, d.word, d.bit});
+    }
+    const std::size_t first = out.size();
+    for (std::uint32_t l = 0; l < lanes; ++l) out.insert(out.end(), common_.begin(), common_.end());
+    StateWord* t = out.data() + first;
+    for (const auto& e : exceptions_)
+      for (Word m = e.lanes; m; m &= m - 1)
+        t[static_cast<std::size_t>(rank_[std::countr_zero(m)]) * words_ + e.word] ^= e.bit;
   }
 
   void compile(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c) {
@@ -175,7 +210,8 @@ class CompiledEnumerator final : public TargetEnumerator {
           gates_.push_back({compact(nodes[n].left), compact(nodes[n].right)});
           if (pass == 0) static_state_gates_ = gates_.size();
         }
-    val_.assign(next, 0);
+    val_.assign(2 * static_cast<std::size_t>(next), 0);
+    val_[1] = ~Word{0};  // TRUE
     mask_.assign(next, 0);
     // Where each latch lives in the packed state.
     latch_pos_.resize(c.aig.latches().size());
@@ -205,7 +241,9 @@ class CompiledEnumerator final : public TargetEnumerator {
   std::uint32_t allowed_ = 1, range_error_ = 0;
   bool allowed_static_ = false;
   std::vector<Word> val_, mask_;
-  std::vector<StateWord> base_;
+  std::vector<StateWord> base_, common_;
+  std::vector<Exception> exceptions_;
+  std::uint32_t rank_[64] = {};
 };
 
 }  // namespace

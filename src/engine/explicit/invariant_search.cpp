@@ -135,7 +135,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::vector<double> decided_at(n, 0);
   std::size_t open = n;
   StateStore store(ts.layout().words());
-  std::vector<std::uint32_t> parent, depth;
+  std::vector<std::uint32_t> parent;
   // Checks a newly stored state against every invariant still open.
   std::vector<std::size_t> just_violated;  ///< properties violated while expanding this state
   auto judge = [&](std::uint32_t s) {
@@ -158,7 +158,6 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   ts.initial_states(initial);
   const std::uint32_t initial_count = store.size();
   parent.assign(initial_count, kNone);
-  depth.assign(initial_count, 0);
   for (std::uint32_t s = 0; s < initial_count && open > 0; ++s) judge(s);
 
   std::string limit;
@@ -166,9 +165,15 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::vector<StateWord> current, targets;
   std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it
   const std::uint32_t words = std::max<std::uint32_t>(ts.layout().words(), 1);
-  auto memory = [&] { return store.memory_bytes() + (parent.capacity() + depth.capacity() + stamp.capacity()) * 4; };
+  auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
+  // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
+  std::uint32_t level = 0, level_end = initial_count;
   std::uint32_t s = 0;
   for (; open > 0 && s < store.size(); ++s) {
+    if (s == level_end) {
+      ++level;
+      level_end = store.size();
+    }
     if (limits.max_states > 0 && store.size() > limits.max_states) {
       limit = "states";
       break;
@@ -178,7 +183,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes) limit = "memory";
       if (!limit.empty()) break;
       if (limits.progress && (s & 4095U) == 0)
-        limits.progress(logic::Progress{store.size(), edges, depth[s], elapsed()});
+        limits.progress(logic::Progress{store.size(), edges, level, elapsed()});
     }
     const auto view = store.at(s);
     current.assign(view.begin(), view.end());
@@ -194,10 +199,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         break;
       }
       const auto [t, fresh] = store.insert(StateView(targets.data() + k, words));
-      if (fresh) {
-        parent.push_back(s);
-        depth.push_back(depth[s] + 1);
-      }
+      if (fresh) parent.push_back(s);
       if (t >= stamp.size()) stamp.resize(std::max<std::size_t>(t + 1, 2 * stamp.size()), 0);
       if (stamp[t] == s + 1) continue;  // the same target again: one edge per (source, target)
       stamp[t] = s + 1;
@@ -218,7 +220,8 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   report.engine = "explicit";
   report.states = store.size();
   report.edges = edges;
-  for (auto d : depth) report.depth = std::max(report.depth, d);
+  // The deepest state stored: the last one, one level below the one expanded when it was found.
+  report.depth = store.size() > level_end ? level + 1 : level;
   report.complete = complete || open == 0;
   report.limit = limit;
   for (std::size_t i = 0; i < n; ++i) {
