@@ -4,8 +4,6 @@
 #include <bit>
 #include <cstdint>
 #include <vector>
-#include <cstdio>
-#include <cstdlib>
 
 #include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -46,8 +44,6 @@ class CompiledEnumerator final : public TargetEnumerator {
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
       : fallback_(make_interpreted_enumerator(ts)), words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
-    if (std::getenv("SFCV_DEBUG_COMPILED"))
-      std::fprintf(stderr, "gates %zu static %zu dynamic bits %zu static bits %zu inputs %zu\n", gates_.size(), static_state_gates_, dynamic_bits_.size(), static_bits_.size(), input_ids_.size());
   }
 
   void targets(StateView state, std::vector<StateWord>& out) override {
@@ -57,7 +53,7 @@ class CompiledEnumerator final : public TargetEnumerator {
       set(first_latch_ + i, Word{0} - ((state[p.word] & p.bit) != 0));
     }
     run(0, static_state_gates_);
-    base_.assign(words_, 0);
+    std::fill(base_.begin(), base_.end(), 0);
     for (const auto& s : static_bits_)
       if (value(s.lit) & 1U) base_[s.word] |= s.bit;
     if (!(value(allowed_) & ~value(range_error_) & 1U) && allowed_static_) return;  // no lane
@@ -149,7 +145,7 @@ class CompiledEnumerator final : public TargetEnumerator {
       for (Word m = valid; m; m &= m - 1) rank_[std::countr_zero(m)] = lanes++;
     }
     const auto first_lane = static_cast<unsigned>(std::countr_zero(valid));
-    common_ = base_;
+    std::copy(base_.begin(), base_.end(), common_.begin());
     exceptions_.clear();
     for (const auto& d : dynamic_bits_) {
       const Word v = value(d.lit);
@@ -161,8 +157,13 @@ class CompiledEnumerator final : public TargetEnumerator {
       if (differ) exceptions_.push_back({differ, d.word, d.bit});
     }
     const std::size_t first = out.size();
-    for (std::uint32_t l = 0; l < lanes; ++l) out.insert(out.end(), common_.begin(), common_.end());
+    out.resize(first + static_cast<std::size_t>(lanes) * words_);
     StateWord* t = out.data() + first;
+    if (words_ == 1) {
+      std::fill(t, t + lanes, common_[0]);
+    } else {
+      for (std::uint32_t l = 0; l < lanes; ++l) std::copy(common_.begin(), common_.end(), t + l * words_);
+    }
     for (const auto& e : exceptions_)
       for (Word m = e.lanes; m; m &= m - 1)
         t[static_cast<std::size_t>(rank_[std::countr_zero(m)]) * words_ + e.word] ^= e.bit;
@@ -212,6 +213,9 @@ class CompiledEnumerator final : public TargetEnumerator {
         }
     val_.assign(2 * static_cast<std::size_t>(next), 0);
     val_[1] = ~Word{0};  // TRUE
+    base_.assign(words_, 0);
+    common_.assign(words_, 0);
+    exceptions_.reserve(dynamic_bits_.size());
     mask_.assign(next, 0);
     // Where each latch lives in the packed state.
     latch_pos_.resize(c.aig.latches().size());
