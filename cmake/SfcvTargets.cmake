@@ -55,8 +55,16 @@ function(sfcv_add_unit_tests layer dir)
   target_link_libraries(test_${layer} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main GTest::gmock)
   target_compile_definitions(test_${layer} PRIVATE
       SFCV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" SFCV_BINARY="$<TARGET_FILE:sfcv>"
-      SFCV_GEN="$<TARGET_FILE:sfcv-gen>")
+      SFCV_GEN="$<TARGET_FILE:sfcv-gen>" SFCV_VERSION="${PROJECT_VERSION}")
   sfcv_apply_flags(test_${layer})
   add_dependencies(test_${layer} sfcv sfcv-gen)
-  gtest_discover_tests(test_${layer} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
+  # Labels: `ctest -L unit` is the quick loop (the libraries on in-memory inputs); `e2e` runs the
+  # binary on files.
+  if(layer STREQUAL "e2e")
+    set(kind e2e)
+  else()
+    set(kind unit)
+  endif()
+  gtest_discover_tests(test_${layer} DISCOVERY_TIMEOUT 60
+                       PROPERTIES TIMEOUT 600 LABELS "${kind};${layer}")
 endfunction()

@@ -4,9 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 
-#ifndef SFCV_VERSION
-#define SFCV_VERSION "0.1.0"
-#endif
+// SFCV_VERSION comes from the CMake project version.
 
 namespace sfcv::cli {
 

@@ -117,10 +117,20 @@ class ChartBuilder {
     }
   }
 
-  // Source steps reaching `n`'s inputs.
-  bool walk_back(pugi::xml_node n, pugi::xml_node transition, std::vector<std::string>& out,
+  // The alternative source-step sets of a transition whose input is `n`'s input. A selection
+  // divergence passes its one input on; a simultaneous convergence joins its inputs (every
+  // combination of their alternatives); a selection convergence, which TwinCAT puts between
+  // the last steps of alternative branches and the transition they share, offers each input's
+  // alternatives separately, so that the transition becomes one transition per source set. A
+  // jump step ends its branch at its target: when TwinCAT wires it into a convergence, that
+  // branch offers no source here.
+  using SourceSets = std::vector<std::vector<std::string>>;
+
+  bool walk_back(pugi::xml_node n, pugi::xml_node transition, bool join, SourceSets& out,
                  std::set<std::string>& seen) {
     bool ok = true;
+    SourceSets acc;
+    bool first = true;
     for (auto cpi : children(n, "connectionPointIn"))
       for (auto c : children(cpi, "connection")) {
         const auto it = by_id_.find(c.attribute("refLocalId").value());
@@ -130,19 +140,50 @@ class ChartBuilder {
         }
         const auto src = it->second;
         const auto k = local_name(src);
+        SourceSets here;
         if (is_step(k)) {
-          add_unique(out, trim(src.attribute("name").value()));
-        } else if (k == "selectionDivergence" || k == "simultaneousConvergence") {
-          if (seen.insert(it->first).second) ok = walk_back(src, transition, out, seen) && ok;
+          here.push_back({trim(src.attribute("name").value())});
+        } else if (k == "jumpStep" && local_name(n) == "selectionConvergence") {
+          // this branch ends in its jump
+        } else if (k == "selectionDivergence" || k == "simultaneousConvergence" ||
+                   k == "selectionConvergence") {
+          if (!seen.insert(it->first).second) {
+            ctx_.error(transition, "transition (localId " +
+                                       std::string(transition.attribute("localId").value()) +
+                                       ") is reached through a cycle of " + describe(src));
+            ok = false;
+            continue;
+          }
+          ok = walk_back(src, transition, k == "simultaneousConvergence", here, seen) && ok;
+          seen.erase(it->first);
         } else {
           ctx_.error(transition, "transition (localId " +
                                      std::string(transition.attribute("localId").value()) +
                                      ") follows " + describe(src) +
-                                     ": expected a step, a selection divergence or a simultaneous "
-                                     "convergence before a transition");
+                                     ": expected a step, a selection divergence or convergence, "
+                                     "or a simultaneous convergence before a transition");
           ok = false;
+          continue;
         }
+        if (!join) {
+          for (auto& set : here) acc.push_back(std::move(set));
+          continue;
+        }
+        if (first) {
+          acc = std::move(here);
+        } else {
+          SourceSets product;
+          for (const auto& a : acc)
+            for (const auto& b : here) {
+              auto joined = a;
+              for (const auto& step : b) add_unique(joined, step);
+              product.push_back(std::move(joined));
+            }
+          acc = std::move(product);
+        }
+        first = false;
       }
+    for (auto& set : acc) out.push_back(std::move(set));
     return ok;
   }
 
@@ -189,7 +230,6 @@ class ChartBuilder {
       // TC6 gives an SFC transition no name attribute; the name of its inline condition
       // (`<inline name="T1">`, empty in Beremiz exports) is where a named transition's name goes.
       if (t.name.empty()) t.name = trim(child(child(n, "condition"), "inline").attribute("name").value());
-      t.order = order++;
       t.where = ctx_.where(n);
       const std::string id = n.attribute("localId").value();
       if (const std::string p = trim(n.attribute("priority").value()); !p.empty()) {
@@ -198,11 +238,12 @@ class ChartBuilder {
         else t.priority = static_cast<int>(*v);
       }
       std::set<std::string> seen_back, seen_fwd;
-      bool ok = walk_back(n, n, t.sources, seen_back);
+      SourceSets source_sets;
+      bool ok = walk_back(n, n, true, source_sets, seen_back);
       ok = walk_forward(id, n, t.targets, seen_fwd) && ok;
       t.guard = condition(n);
       if (!t.guard) ok = false;
-      if (ok && t.sources.empty()) {
+      if (ok && source_sets.empty()) {
         ctx_.error(n, "transition (localId " + id + ") has no source step");
         ok = false;
       }
@@ -210,7 +251,17 @@ class ChartBuilder {
         ctx_.error(n, "dangling transition (localId " + id + "): it leads to no step");
         ok = false;
       }
-      if (ok) chart_.transitions.push_back(std::move(t));
+      if (!ok) continue;
+      // One transition per source set (several only after a selection convergence); each keeps
+      // the name, guard and priority, numbered apart when named so that names stay unique.
+      for (std::size_t i = 0; i < source_sets.size(); ++i) {
+        model::Transition copy = t;
+        copy.sources = std::move(source_sets[i]);
+        copy.order = order++;
+        if (source_sets.size() > 1 && !t.name.empty())
+          copy.name = t.name + "_" + std::to_string(i + 1);
+        chart_.transitions.push_back(std::move(copy));
+      }
     }
   }
 

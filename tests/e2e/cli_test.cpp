@@ -18,10 +18,10 @@ TEST(Cli, HelpListsSubcommands) {
   EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
 }
 
-TEST(Cli, VersionPrintsName) {
+TEST(Cli, VersionPrintsNameAndProjectVersion) {
   const auto r = run_sfcv("--version");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_NE(r.out.find("sfcv"), std::string::npos);
+  EXPECT_EQ(r.out, "sfcv " SFCV_VERSION "\n");
 }
 
 TEST(Cli, MissingFileIsBadInput) {

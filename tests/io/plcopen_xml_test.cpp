@@ -449,6 +449,69 @@ TEST(PlcopenXml, SimultaneousDivergenceAndConvergence) {
   EXPECT_EQ(t[1].targets, std::vector<std::string>{"A"});
 }
 
+// TwinCAT 3 (corpus 11): alternative branches that end in a step meet in a selection
+// convergence, and the transition after it leaves whichever of those steps is active; a branch
+// that ends in a jump is still wired into the convergence, though control leaves it by the jump.
+TEST(PlcopenXml, TransitionAfterASelectionConvergenceLeavesEachBranchStep) {
+  const std::string sfc = step(1, "A", -1, true) +
+      R"(<selectionDivergence localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+         <connectionPointOut/><connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
+      transition(3, 2, inline_st("a")) + transition(4, 2, inline_st("b")) +
+      transition(5, 2, inline_st("NOT a AND NOT b")) +
+      step(6, "B", 3) + step(7, "C", 4) + jump(8, 5, "A") +
+      R"(<selectionConvergence localId="9"><connectionPointIn><connection refLocalId="6"/></connectionPointIn>
+         <connectionPointIn><connection refLocalId="7"/></connectionPointIn>
+         <connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/></selectionConvergence>)" +
+      transition(10, 9, inline_st("a AND b")) + step(11, "D", 10) + transition(12, 11, inline_st("TRUE")) +
+      jump(13, 12, "A");
+  const auto r = load_plcopen_xml(project(sfc, kVarA), "twincat.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& t = chart0(r).transitions;
+  ASSERT_EQ(t.size(), 6u);
+  EXPECT_EQ(t[2].sources, std::vector<std::string>{"A"});
+  EXPECT_EQ(t[2].targets, std::vector<std::string>{"A"});
+  EXPECT_EQ(t[3].sources, std::vector<std::string>{"B"});
+  EXPECT_EQ(t[3].targets, std::vector<std::string>{"D"});
+  EXPECT_EQ(t[4].sources, std::vector<std::string>{"C"});
+  EXPECT_EQ(t[4].targets, std::vector<std::string>{"D"});
+  EXPECT_EQ(model::to_st(t[3].guard), model::to_st(t[4].guard));
+  EXPECT_EQ(t[5].sources, std::vector<std::string>{"D"});
+  for (std::size_t i = 0; i < t.size(); ++i) EXPECT_EQ(t[i].order, static_cast<int>(i));
+}
+
+// A simultaneous convergence joins its branches; a selection convergence on one of them
+// multiplies the joined source sets.
+TEST(PlcopenXml, SimultaneousConvergenceOfASelectionConvergenceJoinsEachAlternative) {
+  const std::string sfc = step(1, "A", -1, true) + transition(2, 1, inline_st("a")) +
+      R"(<simultaneousDivergence localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn>
+         <connectionPointOut/><connectionPointOut/></simultaneousDivergence>)" +
+      step(4, "P", 3) + step(5, "Q", 3) +
+      R"(<selectionDivergence localId="6"><connectionPointIn><connection refLocalId="5"/></connectionPointIn>
+         <connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
+      transition(7, 6, inline_st("a")) + transition(8, 6, inline_st("b")) + step(9, "Q1", 7) + step(10, "Q2", 8) +
+      R"(<selectionConvergence localId="11"><connectionPointIn><connection refLocalId="9"/></connectionPointIn>
+         <connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/></selectionConvergence>)" +
+      R"(<simultaneousConvergence localId="12"><connectionPointIn><connection refLocalId="4"/></connectionPointIn>
+         <connectionPointIn><connection refLocalId="11"/></connectionPointIn><connectionPointOut/></simultaneousConvergence>)" +
+      transition(13, 12, inline_st("b")) + jump(14, 13, "A");
+  const auto r = load_plcopen_xml(project(sfc, kVarA), "join.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& t = chart0(r).transitions;
+  ASSERT_EQ(t.size(), 5u);
+  EXPECT_EQ(t[3].sources, (std::vector<std::string>{"P", "Q1"}));
+  EXPECT_EQ(t[4].sources, (std::vector<std::string>{"P", "Q2"}));
+  EXPECT_EQ(t[4].targets, std::vector<std::string>{"A"});
+}
+
+// A jump ends its branch: a transition wired directly after one has no source step.
+TEST(PlcopenXml, TransitionAfterAJumpIsAnError) {
+  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) + jump(3, 2, "S0") +
+                          transition(4, 3, inline_st("b")) + step(5, "S1", 4);
+  const auto r = load_plcopen_xml(project(sfc, kVarA), "afterjump.xml");
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(has_message(r, Severity::Error, "follows jumpStep")) << errors_of(r);
+}
+
 TEST(PlcopenXml, PriorityAttribute) {
   const std::string sfc = step(1, "S0", -1, true) +
       R"(<transition localId="2" priority="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>)" +
