@@ -149,18 +149,27 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       }
   };
 
+  // A Grafcet may start in very many situations: the state limit applies to them too.
   class Initial final : public semantics::SuccessorSink {
    public:
-    explicit Initial(StateStore& st) : store(st) {}
-    void successor(const semantics::Successor& s) override { store.insert(s.target); }
+    Initial(StateStore& st, std::uint64_t max) : store(st), max_states(max) {}
+    void successor(const semantics::Successor& s) override {
+      if (max_states > 0 && store.size() > max_states) {
+        stopped = true;
+        return;
+      }
+      store.insert(s.target);
+    }
     StateStore& store;
-  } initial(store);
+    std::uint64_t max_states;
+    bool stopped = false;
+  } initial(store, limits.max_states);
   ts.initial_states(initial);
   const std::uint32_t initial_count = store.size();
   parent.assign(initial_count, kNone);
   for (std::uint32_t s = 0; s < initial_count && open > 0; ++s) judge(s);
 
-  std::string limit;
+  std::string limit = initial.stopped ? "states" : "";
   std::uint64_t edges = 0;
   std::vector<StateWord> current, targets;
   std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it
@@ -169,7 +178,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
   std::uint32_t level = 0, level_end = initial_count;
   std::uint32_t s = 0;
-  for (; open > 0 && s < store.size(); ++s) {
+  for (; limit.empty() && open > 0 && s < store.size(); ++s) {
     if (s == level_end) {
       ++level;
       level_end = store.size();
