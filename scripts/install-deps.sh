@@ -9,6 +9,7 @@ PACKAGES=(
   libbdd-dev libcadical-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz spin berkeley-abc gnuplot-nox
+  python3-jsonschema chromium  # tests: SARIF schema validation, the HTML report in a browser
 )
 
 missing=()

@@ -26,6 +26,7 @@ int run(int argc, char** argv) {
   add_rsg_command(app, selected);
   add_query_command(app, selected);
   add_export_command(app, selected);
+  add_report_command(app, selected);
 
   try {
     app.parse(argc, argv);

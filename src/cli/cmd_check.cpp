@@ -23,9 +23,12 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/vacuity.hpp"
 #include "model/names.hpp"
 #include "report/check_junit.hpp"
+#include "report/check_html.hpp"
 #include "report/check_render.hpp"
+#include "report/check_sarif.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
@@ -51,7 +54,11 @@ struct CheckOptions {
   std::string trace = "table";
   std::string trace_file;
   std::string junit;
+  std::string sarif;
+  std::string html;
   bool quiet = false;
+  bool all_findings = false;
+  bool coverage = false;
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -180,10 +187,14 @@ int run_check(const CheckOptions& o) {
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
   const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check");
-  const auto& ts = built.system;
+  // Inputs and previous values named by a property are kept in the state only then.
+  model::Diagnostics history_diags;
+  const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
+  print_diagnostics(history_diags, "errors in the properties");
+  const semantics::TransitionSystem* ts = history ? history.get() : built.system.get();
 
   logic::CheckTask task;
-  task.system = ts.get();
+  task.system = ts;
   task.project = &project;
   task.checks = *checks;
   task.priority_resolves_conflicts =
@@ -191,6 +202,11 @@ int run_check(const CheckOptions& o) {
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
+  task.max_findings = o.all_findings ? 0 : task.max_findings;
+  // AG (a -> f): also ask EF a, to tell a vacuous pass.
+  const auto num_properties = task.properties.size();
+  const auto vacuity = logic::add_vacuity_questions(task);
+  task.coverage = o.coverage;
   task.limits.max_states = o.max_states;
   task.limits.timeout_seconds = o.timeout;
   if (!o.memory.empty()) task.limits.max_memory_bytes = parse_memory(o.memory);
@@ -217,11 +233,16 @@ int run_check(const CheckOptions& o) {
     return kUnknown;
   }
   if (progress_shown) std::cerr << "\r" << std::string(60, ' ') << "\r";
+  logic::answer_vacuity(result, vacuity, num_properties);
+  if (o.coverage && !result.coverage && !o.quiet)
+    std::cerr << "sfcv: --coverage: the " << result.engine
+              << " engine does not measure coverage (use --engine explicit)\n";
 
   report::RenderOptions render;
   render.trace = trace_format;
   render.model = o.model;
   render.semantics = std::string(semantics::to_string(ts->kind()));
+  render.cycle_ms = parse_cycle_ms(o.system.cycle);
   if (!o.trace_file.empty()) {
     const logic::Trace* chosen = nullptr;
     for (const auto& r : result.results)
@@ -234,7 +255,7 @@ int run_check(const CheckOptions& o) {
     if (chosen) {
       switch (trace_format) {
         case report::TraceFormat::Json: f << report::trace_json(*chosen, *ts); break;
-        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts); break;
+        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts, {render.cycle_ms}); break;
         case report::TraceFormat::Csv: f << report::trace_csv(*chosen, *ts); break;
         default: f << report::trace_table(*chosen, *ts); break;
       }
@@ -244,6 +265,16 @@ int run_check(const CheckOptions& o) {
     std::ofstream f(o.junit);
     if (!f) throw InputError(o.junit + ": cannot write the JUnit report");
     f << report::check_junit(result, *ts, render);
+  }
+  if (!o.sarif.empty()) {
+    std::ofstream f(o.sarif);
+    if (!f) throw InputError(o.sarif + ": cannot write the SARIF report");
+    f << report::check_sarif(result, *ts, &project, render).dump(2) << "\n";
+  }
+  if (!o.html.empty()) {
+    std::ofstream f(o.html);
+    if (!f) throw InputError(o.html + ": cannot write the HTML report");
+    f << report::check_html(report::html_report(report::check_json(result, *ts, render), project, *ts));
   }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
@@ -283,8 +314,20 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
   sub->add_option("--junit", opts->junit,
                   "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
+  sub->add_option("--sarif", opts->sarif,
+                  "Also write a SARIF 2.1.0 log there, for code-scanning views (docs/reports.md)");
+  sub->add_option("--html", opts->html,
+                  "Also write a self-contained HTML report there: summary, chart, trace player "
+                  "(docs/reports.md)");
+  sub->add_flag("--coverage", opts->coverage,
+                "Also report the steps, transitions and actions the reachable states visit "
+                "(explicit engine)");
   sub->add_flag("--quiet", opts->quiet, "No progress or notes on standard error");
-  sub->footer("Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
+  sub->add_flag("--all", opts->all_findings,
+                "Every finding of the standard checks (else the first 20 of each, with a count)");
+  sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
+              "AG (a -> f) reports whether it holds vacuously. Cookbook: docs/properties.md.\n"
+              "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain).");
   sub->callback([opts, &selected] {
     selected = [opts] { return run_check(*opts); };

@@ -72,10 +72,14 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
 
   const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export");
-  const auto& ts = built.system;
+  // Inputs and previous values named by a property are kept in the state only then.
+  model::Diagnostics history_diags;
+  const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
+  print_or_throw(history_diags, "errors in the properties");
+  const semantics::TransitionSystem* ts = history ? history.get() : built.system.get();
 
   logic::CheckTask task;
-  task.system = ts.get();
+  task.system = ts;
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_or_throw(resolve_diags, "errors in the properties");

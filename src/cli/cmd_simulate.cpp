@@ -18,7 +18,9 @@
 #include "cli/load_model.hpp"
 #include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
+#include "logic/trace.hpp"
 #include "model/names.hpp"
+#include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 
@@ -146,76 +148,25 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
   return rows;
 }
 
-std::string vcd_name(const std::string& s) {
-  std::string r;
-  for (char c : s) r += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
-  return r;
-}
-
-std::string vcd_id(std::size_t n) {
-  std::string id;
-  do {
-    id += static_cast<char>('!' + n % 94);
-    n /= 94;
-  } while (n);
-  return id;
+/// The run as a trace, for the one VCD writer in src/report. The start state has no cycle
+/// before it: its inputs are the defaults (false, the lowest value).
+logic::Trace run_as_trace(const semantics::TransitionSystem& ts, const semantics::SimulationResult& r,
+                          const std::vector<std::vector<std::int64_t>>& rows) {
+  logic::Trace trace;
+  std::vector<std::int64_t> defaults;
+  for (const auto& in : ts.inputs()) defaults.push_back(in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo);
+  for (std::size_t c = 0; c < r.states.size(); ++c)
+    trace.steps.push_back({c == 0 ? defaults : rows[c - 1], r.states[c],
+                           c == 0 || c > r.fired.size() ? std::vector<std::uint32_t>{} : r.fired[c - 1]});
+  return trace;
 }
 
 void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
                const semantics::SimulationResult& r,
-               const std::vector<std::vector<std::int64_t>>& rows, const std::vector<int>& shown,
-               std::int64_t cycle_ms) {
+               const std::vector<std::vector<std::int64_t>>& rows, std::int64_t cycle_ms) {
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write the VCD file");
-  const auto& obs = ts.observables();
-  out << "$date sfcv simulate $end\n$version sfcv $end\n$timescale 1ms $end\n";
-  std::size_t next_id = 0;
-  std::vector<std::string> obs_id(obs.size()), in_id(ts.inputs().size());
-  auto scope = [&](const char* name, semantics::ObservableKind kind, bool outputs_only) {
-    out << "$scope module " << name << " $end\n";
-    for (std::size_t i = 0; i < obs.size(); ++i) {
-      if (obs[i].kind != kind || (outputs_only && !obs[i].is_output)) continue;
-      obs_id[i] = vcd_id(next_id++);
-      const bool b = obs[i].type.kind == model::TypeKind::Bool;
-      out << "$var " << (b ? "wire 1 " : "integer 64 ") << obs_id[i] << " " << vcd_name(obs[i].name) << " $end\n";
-    }
-    out << "$upscope $end\n";
-  };
-  scope("steps", semantics::ObservableKind::Step, false);
-  scope("actions", semantics::ObservableKind::Action, false);
-  scope("outputs", semantics::ObservableKind::Variable, true);
-  out << "$scope module inputs $end\n";
-  for (int i : shown) {
-    const auto& in = ts.inputs()[static_cast<std::size_t>(i)];
-    in_id[static_cast<std::size_t>(i)] = vcd_id(next_id++);
-    out << "$var " << (in.type.kind == model::TypeKind::Bool ? "wire 1 " : "integer 64 ")
-        << in_id[static_cast<std::size_t>(i)] << " " << vcd_name(in.name) << " $end\n";
-  }
-  out << "$upscope $end\n$enddefinitions $end\n";
-  auto value = [&](bool is_bool, std::int64_t v, const std::string& id) {
-    if (is_bool) {
-      out << (v ? '1' : '0') << id << "\n";
-      return;
-    }
-    std::string bits;
-    auto u = static_cast<std::uint64_t>(v);
-    do {
-      bits.insert(bits.begin(), (u & 1) ? '1' : '0');
-      u >>= 1;
-    } while (u && bits.size() < 64);
-    out << "b" << bits << " " << id << "\n";
-  };
-  for (std::size_t c = 0; c < r.states.size(); ++c) {
-    out << "#" << static_cast<std::int64_t>(c) * cycle_ms << "\n";
-    for (std::size_t i = 0; i < obs.size(); ++i)
-      if (!obs_id[i].empty())
-        value(obs[i].type.kind == model::TypeKind::Bool, ts.observe(r.states[c], static_cast<std::uint32_t>(i)), obs_id[i]);
-    if (c > 0)
-      for (int i : shown) {
-        const auto ui = static_cast<std::size_t>(i);
-        value(ts.inputs()[ui].type.kind == model::TypeKind::Bool, rows[c - 1][ui], in_id[ui]);
-      }
-  }
+  out << report::trace_vcd(run_as_trace(ts, r, rows), ts, {cycle_ms});
 }
 
 int run_simulate(const SimulateOptions& o) {
@@ -278,7 +229,7 @@ int run_simulate(const SimulateOptions& o) {
               << list(c, semantics::ObservableKind::Action) << " | "
               << list(c, semantics::ObservableKind::Variable) << "\n";
   }
-  if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, shown, cycle_ms);
+  if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, cycle_ms);
   if (!r.ok) {
     std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error << "\n";
     return kBadInput;

@@ -34,6 +34,16 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
   for (const auto& text : in.assume) {
     auto r = parse_propositional(text, "--assume '" + text + "'");
     append(std::move(r.diagnostics));
+    if (r.formula && reads_previous(*r.formula)) {
+      model::Diagnostic d;
+      d.where.file = "--assume '" + text + "'";
+      d.where.line = r.formula->line;
+      d.where.column = r.formula->column;
+      d.message = "prev(), rise() and fall() are not allowed in an assumption: it constrains "
+                  "one cycle's inputs and state";
+      out.diagnostics.push_back(std::move(d));
+      continue;
+    }
     if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}});
   }
   return out;

@@ -32,6 +32,14 @@ ParsedInputs parse_check_inputs(const CheckInputs& in);
 /// The assumptions as chart expressions, for semantics::*Options::assumptions.
 std::vector<model::ExprPtr> assumption_exprs(const Spec& spec);
 
+/// The system to resolve against when a property or fairness constraint names an input or a
+/// previous value (prev, rise, fall): `ts` with exactly that history (semantics/
+/// history_system.hpp); null when none is needed or when some name cannot be kept (the
+/// error, at the atom, goes to `diagnostics`). `ts` must outlive the result.
+semantics::TransitionSystemPtr history_system_for(const Spec& spec,
+                                                  const semantics::TransitionSystem& ts,
+                                                  model::Diagnostics& diagnostics);
+
 /// Resolves properties and fairness against `ts`; errors go to `diagnostics`.
 void resolve_into(const Spec& spec, const semantics::TransitionSystem& ts, CheckTask& task,
                   model::Diagnostics& diagnostics);

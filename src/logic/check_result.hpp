@@ -28,9 +28,24 @@ struct PropertyResult {
   Verdict verdict = Verdict::Unknown;
   std::string message;   ///< one readable line (why unknown, what was found)
   std::vector<std::string> findings;  ///< standard checks: one located line per defect
+  /// Every finding the check made; more than findings.size() when CheckTask::max_findings cut them.
+  std::size_t findings_total = 0;
   std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
+  /// AG (a -> f) that holds: whether `a` is never reachable (logic/vacuity.hpp), and the
+  /// answer to the witness question EF a in one line; unset for other properties.
+  std::optional<bool> vacuous;
+  std::string vacuity;
   double seconds = 0;
   model::SourceLocation where;  ///< where the property was written
+};
+
+/// What the reachable state space visits (--coverage, explicit engine): steps active in some
+/// reachable state, transitions fired on some edge, actions active in some reachable state.
+struct Coverage {
+  std::uint32_t steps = 0, steps_visited = 0;
+  std::uint32_t transitions = 0, transitions_fired = 0;
+  std::uint32_t actions = 0, actions_active = 0;
+  std::vector<std::string> unvisited;  ///< "step MAIN.S3", "transition MAIN: S1 -> S2", "action A"
 };
 
 struct CheckReport {
@@ -43,6 +58,7 @@ struct CheckReport {
   std::string limit;       ///< "states", "time", "memory" when !complete
   double seconds = 0;      ///< exploration plus checking
   std::vector<PropertyResult> results;
+  std::optional<Coverage> coverage;  ///< when asked for (CheckTask::coverage) and computed
 };
 
 /// Worst verdict first: Violated > Unknown > Holds (NotChecked does not count).

@@ -44,7 +44,11 @@ struct CheckTask {
   /// True when the semantics resolves alternative conflicts by a priority order
   /// (PriorityMode::Standard): conflicts are then invisible in the graph.
   bool priority_resolves_conflicts = true;
+  /// Findings kept per standard check (0 = every one); PropertyResult::findings_total counts all.
+  std::size_t max_findings = 20;
   CheckLimits limits;
+  /// Also measure the coverage of steps, transitions and actions (explicit engine).
+  bool coverage = false;
 };
 
 }  // namespace sfcv::logic

@@ -45,6 +45,12 @@ std::string_view op_text(Op op) {
   }
 }
 
+void print_name(const Formula& f, std::string& out) {
+  for (std::uint32_t k = 0; k < f.prev; ++k) out += "prev(";
+  out += f.name;
+  out.append(f.prev, ')');
+}
+
 void print(const Formula& f, int context, std::string& out) {
   const int p = precedence(f.op);
   const bool parens = p < context;
@@ -52,9 +58,9 @@ void print(const Formula& f, int context, std::string& out) {
   switch (f.op) {
     case Op::True: out += "TRUE"; break;
     case Op::False: out += "FALSE"; break;
-    case Op::Atom: out += f.name; break;
+    case Op::Atom: print_name(f, out); break;
     case Op::Compare:
-      out += f.name;
+      print_name(f, out);
       out += ' ';
       out += to_string(f.cmp);
       out += ' ';
@@ -141,6 +147,32 @@ FormulaPtr with_observable(const Formula& f, std::int32_t index) {
   auto copy = std::make_shared<Formula>(f);
   copy->observable = index;
   return copy;
+}
+
+FormulaPtr shifted_back(const FormulaPtr& f, std::uint32_t n) {
+  if (f->op == Op::Atom || f->op == Op::Compare) {
+    auto copy = std::make_shared<Formula>(*f);
+    copy->prev += n;
+    return copy;
+  }
+  if (f->args.empty()) return f;
+  std::vector<FormulaPtr> args;
+  for (const auto& a : f->args) args.push_back(shifted_back(a, n));
+  return make_op(f->op, std::move(args), f->line, f->column);
+}
+
+FormulaPtr make_rise(const FormulaPtr& p, int line, int column) {
+  return make_op(Op::And, {p, make_op(Op::Not, {shifted_back(p)}, line, column)}, line, column);
+}
+
+FormulaPtr make_fall(const FormulaPtr& p, int line, int column) {
+  return make_op(Op::And, {make_op(Op::Not, {p}, line, column), shifted_back(p)}, line, column);
+}
+
+bool reads_previous(const Formula& f) {
+  if ((f.op == Op::Atom || f.op == Op::Compare) && f.prev > 0) return true;
+  return std::any_of(f.args.begin(), f.args.end(),
+                     [](const FormulaPtr& a) { return reads_previous(*a); });
 }
 
 bool is_temporal(Op op) {

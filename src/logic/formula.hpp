@@ -27,6 +27,8 @@ struct Formula {
   CompareOp cmp = CompareOp::Eq;
   std::int64_t value = 0;  ///< Compare: the constant
   std::int32_t observable = -1;  ///< Atom, Compare: index into observables() once resolved
+  /// Atom, Compare: the value `prev` cycles back (0 = now): prev(x) is 1, prev(prev(x)) is 2.
+  std::uint32_t prev = 0;
   std::vector<FormulaPtr> args;
   int line = 0;    ///< where it was written (1-based; 0 = unknown)
   int column = 0;
@@ -43,6 +45,13 @@ FormulaPtr make_and(FormulaPtr a, FormulaPtr b);
 FormulaPtr make_or(FormulaPtr a, FormulaPtr b);
 /// A copy of an atom or comparison bound to observable `index`.
 FormulaPtr with_observable(const Formula& f, std::int32_t index);
+/// prev(f) for a propositional `f`: every atom and comparison `n` cycles further back.
+FormulaPtr shifted_back(const FormulaPtr& f, std::uint32_t n = 1);
+/// rise(p) = p & !prev(p), fall(p) = !p & prev(p), for a propositional `p`.
+FormulaPtr make_rise(const FormulaPtr& p, int line = 0, int column = 0);
+FormulaPtr make_fall(const FormulaPtr& p, int line = 0, int column = 0);
+/// Some atom or comparison below reads a previous value (prev, rise, fall).
+bool reads_previous(const Formula& f);
 
 bool is_temporal(Op op);
 /// No temporal operator anywhere below.

@@ -132,6 +132,14 @@ bool is_temporal_keyword(const std::string& s, Op& op) {
   return false;
 }
 
+// The first temporal operator in f, or null.
+const Formula* first_temporal(const Formula& f) {
+  if (is_temporal(f.op)) return &f;
+  for (const auto& a : f.args)
+    if (const auto* t = first_temporal(*a)) return t;
+  return nullptr;
+}
+
 class Parser {
  public:
   explicit Parser(const std::vector<Token>& toks, std::size_t pos = 0) : t_(toks), pos_(pos) {}
@@ -266,6 +274,9 @@ class Parser {
                              "'level >= " + t.text + "'");
       return make_const(v != 0, t.line, t.column);
     }
+    if (t.kind == Tok::Ident && peek(1).kind == Tok::LParen &&
+        (t.text == "prev" || t.text == "rise" || t.text == "fall"))
+      return history_term(t);
     if (t.kind == Tok::Ident) {
       Op op;
       if (is_temporal_keyword(t.text, op) || is_xor(t) || t.text == "U")
@@ -286,6 +297,34 @@ class Parser {
     throw SyntaxError(t, "expected a formula, found " + describe(t));
   }
 
+  // prev(p), rise(p), fall(p) of a propositional p; `prev(level) > 3` compares a previous value.
+  FormulaPtr history_term(const Token& t) {
+    next();
+    next();
+    auto inner = iff();
+    expect(Tok::RParen, "')'");
+    if (const auto* temporal = first_temporal(*inner))
+      throw SyntaxError(Token{Tok::Ident, "", 0, temporal->line, temporal->column},
+                        t.text + "() takes a propositional formula, not a temporal operator");
+    if (t.text == "rise") return make_rise(inner, t.line, t.column);
+    if (t.text == "fall") return make_fall(inner, t.line, t.column);
+    auto shifted = shifted_back(inner);
+    if (is_cmp(peek().kind)) {
+      if (shifted->op != Op::Atom)
+        throw SyntaxError(peek(), "a comparison needs a variable on its left, e.g. 'prev(level) > 3'");
+      const auto c = cmp_of(next().kind);
+      const Token& rhs = next();
+      std::int64_t value = 0;
+      if (!constant(rhs, value))
+        throw SyntaxError(rhs, "expected an integer constant after '" + std::string(to_string(c)) +
+                                   "', found " + describe(rhs));
+      auto cmp = std::make_shared<Formula>(*make_compare(shifted->name, c, value, t.line, t.column));
+      cmp->prev = shifted->prev;
+      return cmp;
+    }
+    return shifted;
+  }
+
   const std::vector<Token>& t_;
   std::size_t pos_;
 };
@@ -300,13 +339,6 @@ model::Diagnostic error_at(const std::string& file, int line, int column, std::s
   return d;
 }
 
-// The first temporal operator in f, or null.
-const Formula* first_temporal(const Formula& f) {
-  if (is_temporal(f.op)) return &f;
-  for (const auto& a : f.args)
-    if (const auto* t = first_temporal(*a)) return t;
-  return nullptr;
-}
 
 }  // namespace
 
@@ -380,6 +412,9 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
                             "temporal operator not allowed in '" + head.text +
                                 "': it takes a propositional formula");
       }
+      if (kind == Assume && reads_previous(*nf.formula))
+        throw SyntaxError(head, "prev(), rise() and fall() are not allowed in 'assume': an "
+                                "assumption constrains one cycle's inputs and state");
       if (kind == Property) {
         for (const auto& other : out.spec.properties)
           if (model::iequals(other.name, nf.name))

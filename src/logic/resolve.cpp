@@ -33,7 +33,16 @@ FormulaPtr bind(const FormulaPtr& f, const semantics::TransitionSystem& ts,
     if (f->op == Op::Atom && obs.type.kind != model::TypeKind::Bool)
       return error("'" + f->name + "' is an integer (" + obs.type.name +
                    "): compare it with a constant, e.g. '" + f->name + " > 0'");
-    return with_observable(*f, static_cast<std::int32_t>(*index));
+    // prev(x): the observable that keeps x's previous value (logic::history_system_for).
+    auto bound = *index;
+    for (std::uint32_t d = 0; d < f->prev; ++d) {
+      const auto previous = ts.previous_observable(bound);
+      if (!previous)
+        return error("prev(" + f->name + "): this system does not keep previous values "
+                     "(resolve against logic::history_system_for)");
+      bound = *previous;
+    }
+    return with_observable(*f, static_cast<std::int32_t>(bound));
   }
   if (f->args.empty()) return f;
   std::vector<FormulaPtr> args;

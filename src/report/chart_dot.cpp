@@ -1,8 +1,11 @@
 #include "report/chart_dot.hpp"
 
+#include <map>
 #include <string>
 
+#include "logic/standard_checks.hpp"
 #include "model/expr.hpp"
+#include "model/names.hpp"
 
 namespace sfcv::report {
 
@@ -44,15 +47,18 @@ std::string qualifier_text(const model::ActionAssociation& a) {
 
 class ChartPrinter {
  public:
-  explicit ChartPrinter(std::ostream& out) : out_(out) {}
+  ChartPrinter(std::ostream& out, bool grafcet) : out_(out), grafcet_(grafcet) {}
 
   void pou(std::size_t pou_index, const model::Pou& pou) {
     for (std::size_t c = 0; c < pou.charts.size(); ++c) {
       const auto& chart = pou.charts[c];
       const std::string prefix = "p" + std::to_string(pou_index) + "c" + std::to_string(c);
-      const std::string title = pou.name + (chart.parent_action.empty()
-                                                ? std::string()
-                                                : " / action " + chart.parent_action);
+      // A Grafcet partial grafcet is named after itself (G1, G2), not after the project.
+      const std::string title =
+          grafcet_ && !chart.name.empty()
+              ? chart.name
+              : pou.name + (chart.parent_action.empty() ? std::string()
+                                                        : " / action " + chart.parent_action);
       out_ << "  subgraph cluster_" << prefix << " {\n    label=\"" << escape(title)
            << "\";\n    style=rounded;\n";
       for (std::size_t s = 0; s < chart.steps.size(); ++s) step(pou, chart, prefix, s);
@@ -77,7 +83,9 @@ class ChartPrinter {
             std::size_t s) {
     const auto& st = chart.steps[s];
     const std::string id = prefix + "s" + std::to_string(s);
-    out_ << "    " << id << " [shape=box, label=\"" << escape(st.name) << "\""
+    // id= survives into the SVG (<g id="p0c0s3" class="node step">): the HTML report's player
+    // highlights steps through it.
+    out_ << "    " << id << " [id=\"" << id << "\", class=\"step\", shape=box, label=\"" << escape(st.name) << "\""
          << (st.initial ? ", peripheries=2" : "")
          << (st.kind == model::StepKind::MacroStep ? ", style=\"dashed\"" : "")
          << (st.kind == model::StepKind::Enclosing ? ", style=\"rounded\"" : "") << "];\n";
@@ -126,25 +134,29 @@ class ChartPrinter {
     std::string label = model::to_st(tr.guard);
     if (tr.priority) label = "(" + std::to_string(*tr.priority) + ") " + label;
     if (!tr.name.empty()) label = tr.name + ": " + label;
-    out_ << "    " << id
-         << " [shape=box, style=filled, fillcolor=black, height=0.04, width=0.5, label=\"\", "
-            "xlabel=\""
-         << escape(label) << "\"];\n";
+    // The bar and its guard in one node (an HTML table: the bar cell is the port the edges
+    // meet): the layout then reserves room for the guard, so that guards never overlap, which
+    // external labels (xlabel) placed after the layout did.
+    out_ << "    " << id << " [id=\"" << id
+         << "\", class=\"transition\", shape=plain, label=<<table border=\"0\" cellborder=\"0\" "
+            "cellspacing=\"0\" cellpadding=\"0\"><tr><td port=\"bar\" width=\"36\" height=\"4\" "
+            "fixedsize=\"true\" bgcolor=\"black\"></td><td align=\"left\"> "
+         << html_escape(label) << "</td></tr></table>>];\n";
     // Simultaneous convergence / divergence: a double bar between the steps and the transition.
-    std::string from = id, to = id;
+    std::string from = id + ":bar", to = id + ":bar";
     if (tr.sources.size() > 1) {
       from = id + "join";
       out_ << "    " << from
            << " [shape=box, style=filled, fillcolor=white, peripheries=2, height=0.02, "
               "width=1.0, label=\"\"];\n    "
-           << from << " -> " << id << " [arrowhead=none];\n";
+           << from << " -> " << id << ":bar [arrowhead=none];\n";
     }
     if (tr.targets.size() > 1) {
       to = id + "fork";
       out_ << "    " << to
            << " [shape=box, style=filled, fillcolor=white, peripheries=2, height=0.02, "
               "width=1.0, label=\"\"];\n    "
-           << id << " -> " << to << " [arrowhead=none];\n";
+           << id << ":bar -> " << to << " [arrowhead=none];\n";
     }
     for (const auto& s : tr.sources) {
       const int i = chart.step_index(s);
@@ -157,16 +169,57 @@ class ChartPrinter {
   }
 
   std::ostream& out_;
+  bool grafcet_;
   std::vector<std::pair<std::string, std::string>> action_nodes_;
 };
 
 }  // namespace
 
+ChartNodeIds chart_node_ids(const model::Project& project, const semantics::TransitionSystem& ts) {
+  ChartNodeIds ids;
+  auto node = [](std::size_t p, std::size_t c, char kind, std::size_t i) {
+    return "p" + std::to_string(p) + "c" + std::to_string(c) + kind + std::to_string(i);
+  };
+  auto find_chart = [&](const std::string& pou, const std::string& chart) -> std::pair<int, int> {
+    for (std::size_t p = 0; p < project.pous.size(); ++p) {
+      if (!model::iequals(project.pous[p].name, pou)) continue;
+      for (std::size_t c = 0; c < project.pous[p].charts.size(); ++c)
+        if (model::iequals(project.pous[p].charts[c].name, chart))
+          return {static_cast<int>(p), static_cast<int>(c)};
+    }
+    return {-1, -1};
+  };
+  for (const auto& ref : logic::step_refs(ts, &project)) {
+    const auto [p, c] = find_chart(ref.pou, ref.chart);
+    if (p < 0) continue;
+    const int s = project.pous[p].charts[c].step_index(ref.step);
+    if (s >= 0) ids.steps[ts.observables()[ref.observable].name] = node(p, c, 's', s);
+  }
+  // A compiled transition is the chart's transition written at the same place; without a
+  // location, the n-th one compiled from a chart is its n-th transition.
+  std::map<std::pair<int, int>, std::size_t> seen;
+  for (const auto& info : ts.transitions()) {
+    const auto [p, c] = find_chart(info.pou, info.chart);
+    if (p < 0) continue;
+    const auto& chart = project.pous[p].charts[c];
+    const auto ordinal = seen[{p, c}]++;
+    std::size_t found = ordinal;
+    for (std::size_t t = 0; t < chart.transitions.size(); ++t) {
+      const auto& w = chart.transitions[t].where;
+      if (info.where.known() && w.file == info.where.file && w.line == info.where.line &&
+          w.column == info.where.column && w.element_path == info.where.element_path)
+        found = t;
+    }
+    if (found < chart.transitions.size()) ids.transitions[info.name] = node(p, c, 't', found);
+  }
+  return ids;
+}
+
 void print_chart_dot(std::ostream& out, const model::Project& project) {
   out << "digraph \"" << escape(project.name.empty() ? "chart" : project.name)
       << "\" {\n  compound=true;\n  rankdir=TB;\n  node [fontname=\"Helvetica\", "
          "fontsize=11];\n  edge [fontname=\"Helvetica\", fontsize=10];\n";
-  ChartPrinter printer(out);
+  ChartPrinter printer(out, project.dialect == model::Dialect::Grafcet);
   for (std::size_t p = 0; p < project.pous.size(); ++p)
     if (project.pous[p].has_sfc()) printer.pou(p, project.pous[p]);
   out << "}\n";

@@ -23,6 +23,7 @@ std::string details(const logic::PropertyResult& r, const semantics::TransitionS
   if (!r.formula.empty()) out += "formula: " + r.formula + "\n";
   if (!r.message.empty()) out += r.message + "\n";
   for (const auto& f : r.findings) out += "- " + f + "\n";
+  if (const auto cut = findings_cut_note(r); !cut.empty()) out += "(" + cut + ")\n";
   if (r.trace) {
     const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
     out += std::string(cex ? "counterexample" : "witness") + " (" +
@@ -81,10 +82,17 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
         (suite + (r.check.empty() ? ".properties" : ".standard_checks")).c_str();
     tc.append_attribute("name") = r.name.c_str();
     tc.append_attribute("time") = seconds(r.seconds).c_str();
-    if (!r.where.file.empty()) {
-      tc.append_attribute("file") = r.where.file.c_str();
-      if (r.where.line > 0) tc.append_attribute("line") = r.where.line;
+    // A property from the command line (where.file "--ctl") or a standard check belongs to
+    // the model file; a spec file property to its line there.
+    const bool from_spec = !r.where.file.empty() && r.where.file != "--ctl";
+    const std::string file = from_spec ? r.where.file : options.model;
+    if (!file.empty()) {
+      tc.append_attribute("file") = file.c_str();
+      if (from_spec && r.where.line > 0) tc.append_attribute("line") = r.where.line;
     }
+    // A vacuous pass is still a pass; CI servers show system-out with the test case.
+    if (!r.vacuity.empty())
+      tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(r.vacuity.c_str());
     const char* element = nullptr;
     switch (r.verdict) {
       case logic::Verdict::Holds: break;

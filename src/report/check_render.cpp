@@ -15,6 +15,12 @@ std::string seconds(double s) {
 }
 }  // namespace
 
+std::string findings_cut_note(const logic::PropertyResult& r) {
+  if (r.findings_total <= r.findings.size()) return {};
+  return std::to_string(r.findings.size()) + " of " + std::to_string(r.findings_total) +
+         " findings shown; --all for every one";
+}
+
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
@@ -23,6 +29,14 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
   out += "\n";
+  if (const auto& c = report.coverage) {
+    out += "coverage: " + std::to_string(c->steps_visited) + "/" + std::to_string(c->steps) +
+           " steps active, " + std::to_string(c->transitions_fired) + "/" +
+           std::to_string(c->transitions) + " transitions fired, " +
+           std::to_string(c->actions_active) + "/" + std::to_string(c->actions) +
+           " actions active" + (report.complete ? "" : " (so far)") + "\n";
+    for (const auto& u : c->unvisited) out += "  never: " + u + "\n";
+  }
   std::size_t width = 0;
   for (const auto& r : report.results) width = std::max(width, r.name.size());
   width = std::min<std::size_t>(width, 48);
@@ -35,7 +49,9 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     if (!r.message.empty()) out += "  " + r.message;
     out += "\n";
     if (r.check.empty() && r.formula != r.name) out += "  formula: " + r.formula + "\n";
+    if (!r.vacuity.empty()) out += "  " + r.vacuity + "\n";
     for (const auto& f : r.findings) out += "  - " + f + "\n";
+    if (const auto cut = findings_cut_note(r); !cut.empty()) out += "  (" + cut + ")\n";
     if (r.trace && options.trace != TraceFormat::None) {
       const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
       out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
@@ -43,7 +59,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
       switch (options.trace) {
         case TraceFormat::Table: out += trace_table(*r.trace, ts); break;
         case TraceFormat::Json: out += trace_json(*r.trace, ts); break;
-        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts); break;
+        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts, {options.cycle_ms}); break;
         case TraceFormat::Csv: out += trace_csv(*r.trace, ts); break;
         case TraceFormat::None: break;
       }
@@ -66,6 +82,14 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["limit"] = report.complete ? json(nullptr) : json(report.limit);
   j["seconds"] = report.seconds;
   j["exit_code"] = logic::exit_code(report);
+  if (const auto& c = report.coverage)
+    j["coverage"] = {{"steps", c->steps},
+                     {"steps_visited", c->steps_visited},
+                     {"transitions", c->transitions},
+                     {"transitions_fired", c->transitions_fired},
+                     {"actions", c->actions},
+                     {"actions_active", c->actions_active},
+                     {"unvisited", c->unvisited}};
   j["properties"] = json::array();
   for (const auto& r : report.results) {
     json p;
@@ -76,6 +100,9 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["verdict"] = std::string(logic::to_string(r.verdict));
     p["message"] = r.message;
     p["findings"] = r.findings;
+    p["findings_total"] = std::max(r.findings_total, r.findings.size());
+    if (r.check.empty()) p["vacuous"] = r.vacuous ? json(*r.vacuous) : json(nullptr);
+    if (!r.vacuity.empty()) p["vacuity"] = r.vacuity;
     p["seconds"] = r.seconds;
     if (r.where.known()) p["where"] = r.where.str();
     p["trace"] = r.trace ? trace_to_json(*r.trace, ts) : json(nullptr);

@@ -2,6 +2,7 @@
 // Renders a CheckReport: human text (one line per property: name, verdict, time; findings and
 // traces below) or JSON (schema in docs/formats.md, "sfcv check --json").
 
+#include <cstdint>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -17,7 +18,12 @@ struct RenderOptions {
   TraceFormat trace = TraceFormat::Table;
   std::string model;      ///< the model file, for the JSON header
   std::string semantics;  ///< "iec61131", "grafcet"
+  std::int64_t cycle_ms = 1;  ///< IEC 61131-3 scan cycle, the VCD time step
 };
+
+/// "20 of 137 findings shown; --all for every one" when the engine kept fewer findings than it
+/// made, else empty.
+std::string findings_cut_note(const logic::PropertyResult& r);
 
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options);

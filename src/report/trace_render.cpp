@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <functional>
 #include <nlohmann/json.hpp>
 
 #include "report/check_render.hpp"
@@ -19,16 +20,6 @@ bool marked(const logic::Trace& t, std::uint32_t obs) {
   return std::find(t.marked.begin(), t.marked.end(), obs) != t.marked.end();
 }
 
-/// Observables a trace shows: steps, outputs and the marked atoms.
-std::vector<std::uint32_t> shown_observables(const logic::Trace& t,
-                                             const semantics::TransitionSystem& ts) {
-  std::vector<std::uint32_t> out;
-  const auto& obs = ts.observables();
-  for (std::uint32_t i = 0; i < obs.size(); ++i)
-    if (obs[i].kind == ObservableKind::Step || obs[i].is_output || marked(t, i)) out.push_back(i);
-  return out;
-}
-
 std::string input_change(const semantics::InputVariable& in, std::int64_t v) {
   if (is_bool(in)) return (v ? "+" : "-") + in.name;
   return in.name + "=" + std::to_string(v);
@@ -43,10 +34,19 @@ std::string vcd_id(std::size_t i) {
   return id;
 }
 
+/// A VCD reference is an identifier: letters, digits and '_' ("ChemicalPlant.s1" becomes
+/// "ChemicalPlant_s1", "timeout:T1" becomes "timeout_T1").
+std::string vcd_name(const std::string& name) {
+  std::string r;
+  for (char c : name) r += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+  return r;
+}
+
+/// Two's complement, 64 bits, leading zeros dropped.
 std::string binary(std::int64_t v) {
   std::string s;
   auto u = static_cast<std::uint64_t>(v);
-  for (int b = 31; b >= 0; --b) s += ((u >> b) & 1U) ? '1' : '0';
+  for (int b = 63; b >= 0; --b) s += ((u >> b) & 1U) ? '1' : '0';
   const auto first = s.find('1');
   return first == std::string::npos ? "0" : s.substr(first);
 }
@@ -83,7 +83,9 @@ std::string trace_table(const logic::Trace& trace, const semantics::TransitionSy
     std::array<std::string, 6> row;
     row[0] = (trace.loop_start && *trace.loop_start == i ? "->" : "") + std::to_string(i);
     for (std::size_t k = 0; k < inputs.size() && k < st.inputs.size(); ++k) {
-      const bool changed = i == 0 ? (st.inputs[k] != (is_bool(inputs[k]) ? 0 : inputs[k].type.lo))
+      // Row 0 shows every integer input (its value matters even if it never changes) and the
+      // Boolean inputs that are true; later rows show what changed.
+      const bool changed = i == 0 ? (!is_bool(inputs[k]) || st.inputs[k] != 0)
                                   : st.inputs[k] != trace.steps[i - 1].inputs[k];
       if (changed) row[1] += (row[1].empty() ? "" : " ") + input_change(inputs[k], st.inputs[k]);
     }
@@ -109,22 +111,20 @@ std::string trace_table(const logic::Trace& trace, const semantics::TransitionSy
     for (std::size_t c = 0; c < 6; ++c) width[c] = std::max(width[c], r[c].size());
   std::string out;
   if (!trace.note.empty()) out += "  " + trace.note + "\n";
+  const std::size_t columns = trace.marked.empty() ? 5 : 6;  // the atoms column when marked
   for (std::size_t r = 0; r < rows.size(); ++r) {
     std::string line = "  ";
-    for (std::size_t c = 0; c < 6; ++c) {
-      if (c == 5 && trace.marked.empty()) break;
+    for (std::size_t c = 0; c < columns; ++c) {
       auto cell = rows[r][c];
-      if (c + 1 < 6) cell.resize(width[c], ' ');
-      line += cell + (c + 1 < 6 ? " | " : "");
+      if (c + 1 < columns) cell.resize(width[c], ' ');
+      line += cell + (c + 1 < columns ? " | " : "");
     }
     while (!line.empty() && (line.back() == ' ' || line.back() == '|')) line.pop_back();
     out += line + "\n";
     if (r == 0) {
       std::string rule = "  ";
-      for (std::size_t c = 0; c < 6; ++c) {
-        if (c == 5 && trace.marked.empty()) break;
-        rule += std::string(width[c], '-') + (c + 1 < 6 ? "-+-" : "");
-      }
+      for (std::size_t c = 0; c < columns; ++c)
+        rule += std::string(width[c], '-') + (c + 1 < columns ? "-+-" : "");
       out += rule + "\n";
     }
   }
@@ -182,58 +182,81 @@ std::string trace_json(const logic::Trace& trace, const semantics::TransitionSys
   return trace_to_json(trace, ts).dump(2) + "\n";
 }
 
-std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSystem& ts) {
+std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSystem& ts,
+                      const VcdOptions& options) {
   const auto& obs = ts.observables();
   const auto& inputs = ts.inputs();
-  const auto shown = shown_observables(trace, ts);
-  std::string out;
-  out += "$comment sfcv trace: one time unit per cycle (IEC 61131-3) or stable situation "
-         "(Grafcet) $end\n";
-  out += "$timescale 1 ns $end\n$scope module inputs $end\n";
-  auto var = [&](std::size_t id, const model::Type& type, const std::string& name) {
-    const bool b = type.kind == model::TypeKind::Bool;
-    std::string safe = name;
-    for (auto& c : safe)
-      if (c == ' ' || c == ':') c = '_';
-    out += std::string("$var ") + (b ? "wire 1 " : "integer 32 ") + vcd_id(id) + " " + safe +
-           " $end\n";
+  const bool grafcet = ts.kind() == semantics::SemanticsKind::Grafcet;
+  struct Signal {
+    std::string scope, name;
+    bool is_bool;
+    std::function<std::int64_t(const logic::TraceStep&)> value;
   };
-  for (std::size_t k = 0; k < inputs.size(); ++k) var(k, inputs[k].type, inputs[k].name);
-  out += "$upscope $end\n$scope module state $end\n";
-  for (std::size_t i = 0; i < shown.size(); ++i)
-    var(inputs.size() + i, obs[shown[i]].type, obs[shown[i]].name);
-  out += "$upscope $end\n$enddefinitions $end\n";
-  auto value = [&](std::size_t id, bool b, std::int64_t v) {
-    if (b) return std::string(v ? "1" : "0") + vcd_id(id) + "\n";
-    return "b" + binary(v) + " " + vcd_id(id) + "\n";
+  std::vector<Signal> signals;
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    signals.push_back({"inputs", inputs[k].name, is_bool(inputs[k]), [k](const logic::TraceStep& st) {
+                         return k < st.inputs.size() ? st.inputs[k] : 0;
+                       }});
+  auto observed = [&ts](std::uint32_t o) {
+    return [&ts, o](const logic::TraceStep& st) { return ts.observe(st.state, o); };
   };
+  for (std::uint32_t o = 0; o < obs.size(); ++o) {
+    const char* scope = obs[o].kind == ObservableKind::Step     ? "steps"
+                        : obs[o].kind == ObservableKind::Action ? "actions"
+                        : obs[o].is_output                      ? "outputs"
+                        : marked(trace, o)                      ? "atoms"
+                                                                : nullptr;
+    if (scope)
+      signals.push_back({scope, obs[o].name, obs[o].type.kind == model::TypeKind::Bool, observed(o)});
+  }
+  std::string out = "$comment sfcv trace: ";
+  out += grafcet ? "one time unit per stable situation (Grafcet has no scan cycle)"
+                 : "one scan cycle of " + std::to_string(options.step_ms) + " ms per step";
+  out += " $end\n$version sfcv $end\n$timescale 1 ms $end\n";
+  std::string scope;
+  for (std::size_t i = 0; i < signals.size(); ++i) {
+    if (signals[i].scope != scope) {
+      if (!scope.empty()) out += "$upscope $end\n";
+      scope = signals[i].scope;
+      out += "$scope module " + scope + " $end\n";
+    }
+    out += std::string("$var ") + (signals[i].is_bool ? "wire 1 " : "integer 64 ") + vcd_id(i) +
+           " " + vcd_name(signals[i].name) + " $end\n";
+  }
+  if (!scope.empty()) out += "$upscope $end\n";
+  out += "$enddefinitions $end\n";
+  const std::int64_t unit = grafcet ? 1 : std::max<std::int64_t>(1, options.step_ms);
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
-    const auto& st = trace.steps[i];
-    out += "#" + std::to_string(i) + "\n";
+    out += "#" + std::to_string(static_cast<std::int64_t>(i) * unit) + "\n";
     if (i == 0) out += "$dumpvars\n";
-    for (std::size_t k = 0; k < inputs.size() && k < st.inputs.size(); ++k)
-      if (i == 0 || st.inputs[k] != trace.steps[i - 1].inputs[k])
-        out += value(k, is_bool(inputs[k]), st.inputs[k]);
-    for (std::size_t s = 0; s < shown.size(); ++s) {
-      const auto v = ts.observe(st.state, shown[s]);
-      if (i == 0 || v != ts.observe(trace.steps[i - 1].state, shown[s]))
-        out += value(inputs.size() + s, obs[shown[s]].type.kind == model::TypeKind::Bool, v);
+    for (std::size_t k = 0; k < signals.size(); ++k) {
+      const auto v = signals[k].value(trace.steps[i]);
+      if (i > 0 && v == signals[k].value(trace.steps[i - 1])) continue;
+      out += signals[k].is_bool ? std::string(v ? "1" : "0") + vcd_id(k) + "\n"
+                                : "b" + binary(v) + " " + vcd_id(k) + "\n";
     }
     if (i == 0) out += "$end\n";
   }
-  out += "#" + std::to_string(trace.steps.size()) + "\n";
+  out += "#" + std::to_string(static_cast<std::int64_t>(trace.steps.size()) * unit) + "\n";
   return out;
 }
 
 std::string trace_csv(const logic::Trace& trace, const semantics::TransitionSystem& ts) {
   const auto& inputs = ts.inputs();
-  std::string out = "# sfcv check trace: one row per cycle after the initial situation";
+  // IEC 61131-3: the initial situation is reached before any scan, so row 1 is the first
+  // cycle's inputs. Grafcet: the initial situation already reacted to the initial inputs
+  // (stabilisation), so they are the first row.
+  const bool grafcet = ts.kind() == semantics::SemanticsKind::Grafcet;
+  const std::size_t first = grafcet ? 0 : 1;
+  std::string out = grafcet ? "# sfcv check trace: one row per stable situation, the first the initial inputs"
+                            : "# sfcv check trace: one row per cycle after the initial situation";
   if (trace.loop_start)
-    out += "; rows from cycle " + std::to_string(*trace.loop_start + 1) + " on repeat forever";
+    out += "; rows from " + std::string(grafcet ? "situation " : "cycle ") +
+           std::to_string(*trace.loop_start + (grafcet ? 0 : 1)) + " on repeat forever";
   out += "\n";
   for (std::size_t k = 0; k < inputs.size(); ++k) out += (k ? "," : "") + inputs[k].name;
   out += "\n";
-  for (std::size_t i = 1; i < trace.steps.size(); ++i) {
+  for (std::size_t i = first; i < trace.steps.size(); ++i) {
     for (std::size_t k = 0; k < inputs.size(); ++k)
       out += (k ? "," : "") + std::to_string(k < trace.steps[i].inputs.size() ? trace.steps[i].inputs[k] : 0);
     out += "\n";

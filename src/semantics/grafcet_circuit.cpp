@@ -4,6 +4,7 @@
 // 64-bit two's-complement bit vectors (the explicit system computes in int64).
 
 #include "semantics/grafcet_circuit.hpp"
+#include "semantics/history_system.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -599,6 +600,9 @@ void CircuitBuilder::build() {
 }  // namespace grafcet
 
 GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts) {
+  if (as_history(ts))
+    throw CircuitUnsupported("prev(), rise() and fall() in a property: the Grafcet circuit does "
+                             "not keep previous situations yet (use --engine explicit)");
   const auto* sys = dynamic_cast<const grafcet::GrafcetSystem*>(&ts);
   if (!sys) throw std::invalid_argument("build_grafcet_circuit: not a Grafcet system");
   GrafcetCircuit c;

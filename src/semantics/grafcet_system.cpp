@@ -477,10 +477,18 @@ void GrafcetSystem::build(const model::Project& project) {
           if (!good || !compile_top(pou, *t.guard, gt.guard)) continue;
           trans_.push_back(std::move(gt));
           TransitionInfo info;
+          // As IEC 60848 writes it: "(5) X2 -> X4", "X1 -> X2,X3" when unnumbered; a step
+          // name that several charts use keeps its chart ("G1.X2"), like the observables.
+          auto step_text = [&](const std::string& n) {
+            int same = 0;
+            for (const auto& o : steps_)
+              if (model::iequals(o.name, n)) ++same;
+            return same > 1 ? chart.name + ".X" + n : "X" + n;
+          };
           std::string from, to;
-          for (const auto& n : t.sources) from += (from.empty() ? "" : ",") + n;
-          for (const auto& n : t.targets) to += (to.empty() ? "" : ",") + n;
-          info.name = chart.name + ": " + (t.name.empty() ? "" : t.name + " ") + from + " -> " + to;
+          for (const auto& n : t.sources) from += (from.empty() ? "" : ",") + step_text(n);
+          for (const auto& n : t.targets) to += (to.empty() ? "" : ",") + step_text(n);
+          info.name = (t.name.empty() ? "" : "(" + t.name + ") ") + from + " -> " + to;
           info.pou = pou.name;
           info.chart = chart.name;
           info.where = t.where;

@@ -5,6 +5,7 @@
 // function so that the two can be compared line by line.
 
 #include "semantics/iec61131_circuit.hpp"
+#include "semantics/history_system.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -684,7 +685,61 @@ void SymbolicMachine::build(StateView initial_state) {
 }  // namespace
 }  // namespace iec
 
+namespace {
+
+/// The base circuit of a HistorySystem plus one latch per bit of each history field: a
+/// recorded input's next value is the input, a previous value's is the observable now.
+TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit c) {
+  Aig& aig = c.aig;
+  const auto& fields = h.layout().fields();
+  auto add_field_latches = [&](std::uint32_t f, const BitVector& next, const std::vector<bool>& init) {
+    if (c.field_latches.size() <= f) c.field_latches.resize(f + 1);
+    BitVector current;
+    for (std::uint32_t k = 0; k < fields[f].width; ++k) {
+      const auto lit = aig.add_latch(fields[f].name + "[" + std::to_string(k) + "]", init[k]);
+      const auto index = static_cast<std::uint32_t>(aig.latches().size() - 1);
+      aig.set_next(index, next[k]);
+      c.field_latches[f].push_back(index);
+      current.push_back(lit);
+    }
+    return current;
+  };
+  for (std::size_t k = 0; k < h.request().inputs.size(); ++k) {
+    const auto& in = c.input_bits[h.request().inputs[k]];
+    c.observable_bits.push_back(add_field_latches(h.input_field(k), {in[0]}, {false}));
+    c.observable_lo.push_back(0);
+  }
+  // Initial values: the observable in the initial latch values (observables of the scan
+  // cycle read latches only), so that prev(x) = x in the initial state.
+  auto initial_value = [&](const BitVector& bits) {
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    const auto values = aig.evaluate(std::vector<bool>(aig.inputs().size(), false), latches);
+    std::vector<bool> out;
+    for (auto b : bits) out.push_back(Aig::value_of(values, b));
+    return out;
+  };
+  for (std::size_t k = 0; k < h.request().previous.size(); ++k) {
+    const auto j = h.request().previous[k];
+    const auto f = h.previous_field(k);
+    if (c.observable_lo[j] != fields[f].lo)
+      throw CircuitUnsupported("prev(" + h.observables()[j].name + "): its encoding differs from "
+                               "its type's range");
+    const BitVector now = bv_resize(c.observable_bits[j], fields[f].width, false);
+    c.observable_bits.push_back(add_field_latches(f, now, initial_value(now)));
+    c.observable_lo.push_back(fields[f].lo);
+  }
+  return c;
+}
+
+}  // namespace
+
 TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts) {
+  if (const auto* h = as_history(ts)) {
+    if (h->kind() != SemanticsKind::Iec61131)
+      throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
+    return extend_with_history(*h, build_iec61131_circuit(h->base()));
+  }
   const auto* sys = dynamic_cast<const iec::Iec61131System*>(&ts);
   if (!sys) throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
   struct Initial final : SuccessorSink {

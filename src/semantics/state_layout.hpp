@@ -38,6 +38,10 @@ class StateLayout {
   std::uint32_t add_field(std::string name, FieldKind kind, std::int64_t lo = 0,
                           std::int64_t hi = 1);
 
+  /// The next field starts in a fresh word (so that a prefix of the words is a whole state of
+  /// a system this layout extends).
+  void align_to_word() { bits_ = words() * 64; }
+
   const std::vector<StateField>& fields() const { return fields_; }
   std::uint32_t bits() const { return bits_; }
   std::uint32_t words() const { return (bits_ + 63) / 64; }

@@ -86,6 +86,12 @@ class TransitionSystem {
 
   /// "{S1, S5} V1 V3" : active steps and true Boolean outputs, for traces and listings.
   virtual std::string describe(StateView state) const;
+
+  /// The observable holding the previous value of observable `index` (prev(x) in a property),
+  /// when the system keeps it (a HistorySystem, history_system.hpp); nullopt otherwise.
+  virtual std::optional<std::uint32_t> previous_observable(std::uint32_t) const {
+    return std::nullopt;
+  }
 };
 
 using TransitionSystemPtr = std::unique_ptr<TransitionSystem>;

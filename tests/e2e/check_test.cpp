@@ -85,6 +85,9 @@ TEST(CheckCommand, JunitReportForCi) {
   EXPECT_NE(report.find("<testcase classname=\"chemical_plant.st.properties\" name=\"AG !(V1 &amp; V3)\""),
             std::string::npos) << report;
   EXPECT_NE(report.find("<failure message=\"violated"), std::string::npos) << report;
+  EXPECT_EQ(report.find("file=\"--ctl\""), std::string::npos) << report;
+  EXPECT_NE(report.find("file=\"" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st\""),
+            std::string::npos) << report;
   EXPECT_NE(report.find("counterexample ("), std::string::npos) << report;
 }
 
@@ -152,6 +155,81 @@ TEST(CheckCommand, PalletTransferCollisionBeforeAndAfterTheFix) {
   r = run_sfcv("check " + dir + "pallet_transfer_fixed.g7' --ctl 'AG !(X10 & X25)'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("AG !(X10 & X25)  holds"), std::string::npos) << r.out;
+}
+
+// Grafcet traces: transitions as IEC 60848 writes them, the CSV starts with the initial inputs.
+TEST(CheckCommand, GrafcetTraceNamesAndCsv) {
+  const auto path = write_temp(R"(project three;
+input a, b;
+output y;
+grafcet G {
+  step 1 initial;
+  step 2;
+  step 3;
+  transition 5: 1 -> 2 when a;
+  transition 6: 2 -> 3 when !a;
+  transition 7: 3 -> 1 when b;
+  action 3: y;
+}
+)", ".g7");
+  auto r = run_sfcv("check " + path + " --quiet --ctl 'AG !y'");
+  ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("| (6) X2 -> X3 |"), std::string::npos) << r.out;
+  r = run_sfcv("check " + path + " --quiet --ctl 'AG !y' --trace csv");
+  EXPECT_NE(r.out.find("one row per stable situation, the first the initial inputs\na,b\n1,0\n0,0\n"),
+            std::string::npos)
+      << r.out;
+}
+
+// More than 20 findings: a count and --all.
+TEST(CheckCommand, FindingsCutWithACountAndAll) {
+  std::string g7 = "project many;\ninput a;\ngrafcet G {\n  step 1 initial;\n";
+  for (int s = 2; s <= 26; ++s) g7 += "  step " + std::to_string(s) + ";\n";
+  g7 += "  transition 1: 1 -> 2 when a & !a;\n";
+  for (int s = 2; s <= 25; ++s)
+    g7 += "  transition " + std::to_string(s) + ": " + std::to_string(s) + " -> " +
+          std::to_string(s + 1) + " when a;\n";
+  g7 += "}\n";
+  const auto path = write_temp(g7, ".g7");
+  auto r = run_sfcv("check " + path + " --quiet --checks reachable");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("  (20 of 25 findings shown; --all for every one)\n"), std::string::npos) << r.out;
+  r = run_sfcv("check " + path + " --quiet --checks reachable --all");
+  EXPECT_EQ(r.out.find("findings shown"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("X26"), std::string::npos) << r.out;
+}
+
+// SARIF: a rule per check and property, a located result per violation, the trace as a code flow.
+TEST(CheckCommand, SarifLocatesViolationsAndTheirTraces) {
+  const auto sarif = write_temp("", ".sarif");
+  const auto run = run_sfcv("check '" + source_path("examples/chemical_plant/chemical_plant.st") +
+                            "' --quiet --checks local-deadlock --ctl 'AG !(V2 & V4)' --trace none --sarif '" +
+                            sarif + "'");
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  std::ifstream f(sarif);
+  const auto log = nlohmann::json::parse(f);
+  EXPECT_EQ(log["version"], "2.1.0");
+  const auto& rules = log["runs"][0]["tool"]["driver"]["rules"];
+  ASSERT_EQ(rules.size(), 2u);
+  EXPECT_EQ(rules[0]["id"], "property/AG !(V2 & V4)");
+  EXPECT_EQ(rules[1]["id"], "check/local-deadlock");
+  const auto& results = log["runs"][0]["results"];
+  ASSERT_EQ(results.size(), 2u);
+  // The deadlocked step S9 is at line 39, column 3 of the chart.
+  const auto& deadlock = results[1]["locations"][0]["physicalLocation"];
+  EXPECT_EQ(deadlock["artifactLocation"]["uri"], "file://" + source_path("examples/chemical_plant/chemical_plant.st"));
+  EXPECT_EQ(deadlock["region"]["startLine"], 39);
+  EXPECT_EQ(deadlock["region"]["startColumn"], 3);
+  const auto& v2v4 = results[0];
+  EXPECT_EQ(v2v4["level"], "error");
+  const auto& flow = v2v4["codeFlows"][0]["threadFlows"][0]["locations"];
+  ASSERT_GE(flow.size(), 2u);
+  const std::string last = flow.back()["location"]["message"]["text"];
+  EXPECT_NE(last.find("outputs"), std::string::npos) << last;
+  EXPECT_NE(last.find("V2"), std::string::npos) << last;
+  EXPECT_NE(last.find("V4"), std::string::npos) << last;
+  EXPECT_GE(v2v4["relatedLocations"].size(), 3u);
+  EXPECT_GT(v2v4["locations"][0]["physicalLocation"]["region"]["startLine"].get<int>(), 0);
 }
 
 }  // namespace

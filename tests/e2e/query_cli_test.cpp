@@ -85,7 +85,7 @@ TEST(QueryCli, Json) {
   ASSERT_GT(e["count"].get<int>(), 0);
   for (const auto& ev : e["elements"]) {
     EXPECT_NE(ev["condition"].get<std::string>().find("in1"), std::string::npos) << ev;
-    EXPECT_EQ(ev["fired"][0], "piston1: 3 12 -> 13") << ev;
+    EXPECT_EQ(ev["fired"][0], "(3) X12 -> X13") << ev;
   }
 }
 

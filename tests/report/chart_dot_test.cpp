@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "report/graphviz_svg.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::report {
@@ -64,8 +65,11 @@ TEST(ChartDot, DrawsStepsTransitionsBarsAndActionBlocks) {
   print_chart_dot(out, sample());
   const std::string dot = out.str();
   EXPECT_NE(dot.find("label=\"S0\", peripheries=2"), std::string::npos) << dot;
-  EXPECT_NE(dot.find("xlabel=\"start\""), std::string::npos);
-  EXPECT_NE(dot.find("xlabel=\"(1) A.T > T#2s\""), std::string::npos);
+  // The guard sits in the transition's node beside its bar, so the layout keeps guards apart.
+  EXPECT_NE(dot.find("bgcolor=\"black\"></td><td align=\"left\"> start</td>"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("<td align=\"left\"> (1) A.T &gt; T#2s</td>"), std::string::npos);
+  EXPECT_NE(dot.find("p0c0s0 -> p0c0t0:bar [arrowhead=none]"), std::string::npos);
+  EXPECT_EQ(dot.find("xlabel"), std::string::npos);
   EXPECT_NE(dot.find("p0c0t0fork"), std::string::npos);  // simultaneous divergence
   EXPECT_NE(dot.find("p0c0t1join"), std::string::npos);  // simultaneous convergence
   EXPECT_NE(dot.find("<td>N</td><td>V1</td>"), std::string::npos);
@@ -87,6 +91,25 @@ TEST(ChartDot, RendersWithGraphviz) {
   EXPECT_NE(ss.str().find("<svg"), std::string::npos);
   std::remove(in.c_str());
   std::remove(svg.c_str());
+}
+
+TEST(ChartDot, NodeIdsSurviveIntoTheSvg) {
+  std::ostringstream out;
+  print_chart_dot(out, sample());
+  EXPECT_NE(out.str().find("p0c0s1 [id=\"p0c0s1\", class=\"step\""), std::string::npos) << out.str();
+  if (std::system("command -v dot >/dev/null 2>&1") != 0) GTEST_SKIP() << "graphviz not installed";
+  const auto svg = dot_to_svg(out.str());
+  ASSERT_TRUE(svg.error.empty()) << svg.error;
+  EXPECT_EQ(svg.svg.rfind("<svg", 0), 0u);  // the element, without prolog or DOCTYPE
+  EXPECT_NE(svg.svg.find("<g id=\"p0c0s1\" class=\"node step\">"), std::string::npos) << svg.svg;
+  EXPECT_NE(svg.svg.find("<g id=\"p0c0t0\" class=\"node transition\">"), std::string::npos);
+}
+
+TEST(ChartDot, GrafcetFramesAreNamedAfterTheirPartialGrafcet) {
+  const auto r = test::run_sfcv("export '" + test::source_path("examples/pistons/pistons.g7") + "' --to dot");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("label=\"piston1\";"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("label=\"piston2\";"), std::string::npos) << r.out;
 }
 
 }  // namespace

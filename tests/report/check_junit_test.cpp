@@ -39,6 +39,7 @@ struct Fixture {
     violated.formula = "AG !B";
     violated.verdict = logic::Verdict::Violated;
     violated.findings = {"B & <reached> in 1 cycle"};
+    violated.where.file = "--ctl";
     logic::Trace trace;
     trace.kind = logic::TraceKind::Counterexample;
     trace.steps.push_back({{0}, state(0), {}});
@@ -90,6 +91,11 @@ TEST(CheckJunit, OneTestCasePerResultWithItsVerdict) {
   EXPECT_NE(body.find("- B & <reached> in 1 cycle"), std::string::npos) << body;  // escaped and back
   EXPECT_NE(body.find("counterexample (2 situations)"), std::string::npos) << body;
   EXPECT_NE(body.find("+go"), std::string::npos) << body;
+
+  // A command-line property belongs to the model file, with no line.
+  const auto never_b = suite.find_child_by_attribute("testcase", "name", "never B");
+  EXPECT_STREQ(never_b.attribute("file").value(), "/some/dir/plant.st");
+  EXPECT_FALSE(never_b.attribute("line"));
 
   const auto error = suite.find_child_by_attribute("testcase", "name", "live").child("error");
   ASSERT_TRUE(error);

@@ -78,11 +78,97 @@ TEST(TraceRender, VcdDeclaresSignalsAndDumpsChanges) {
   EXPECT_NE(v.find("#2\n0!"), std::string::npos);
 }
 
+TEST(TraceRender, VcdGolden) {
+  Fixture f;
+  EXPECT_EQ(trace_vcd(f.trace, f.ts, {10}),
+            "$comment sfcv trace: one scan cycle of 10 ms per step $end\n"
+            "$version sfcv $end\n"
+            "$timescale 1 ms $end\n"
+            "$scope module inputs $end\n"
+            "$var wire 1 ! go $end\n"
+            "$var wire 1 \" stop $end\n"
+            "$upscope $end\n"
+            "$scope module steps $end\n"
+            "$var wire 1 # A $end\n"
+            "$var wire 1 $ B $end\n"
+            "$upscope $end\n"
+            "$scope module outputs $end\n"
+            "$var wire 1 % Y $end\n"
+            "$upscope $end\n"
+            "$enddefinitions $end\n"
+            "#0\n$dumpvars\n0!\n0\"\n1#\n0$\n0%\n$end\n"
+            "#10\n1!\n0#\n1$\n1%\n"
+            "#20\n0!\n1#\n0$\n0%\n"
+            "#30\n");
+}
+
+TEST(TraceRender, VcdNamesAreIdentifiersAndIntegersBinary) {
+  ToySystem ts{1, {"timeout:T1"}, {"Plant.s1"}};
+  ts.set_input_type(0, model::Type::integer("INT", -2, 5));
+  logic::Trace trace;
+  std::vector<semantics::StateWord> w(ts.layout().words(), 0);
+  trace.steps.push_back({{5}, w, {}});
+  trace.steps.push_back({{-1}, w, {}});
+  const auto v = trace_vcd(trace, ts);
+  EXPECT_NE(v.find("$var integer 64 ! timeout_T1 $end\n"), std::string::npos) << v;
+  EXPECT_NE(v.find("$var wire 1 \" Plant_s1 $end\n"), std::string::npos) << v;
+  EXPECT_NE(v.find("#0\n$dumpvars\nb101 !\n"), std::string::npos) << v;
+  EXPECT_NE(v.find("#1\nb" + std::string(64, '1') + " !\n"), std::string::npos) << v;
+}
+
+TEST(TraceRender, TableShowsIntegerInputsThatNeverChange) {
+  ToySystem ts{2, {"level", "go"}, {"A", "B"}};
+  ts.set_input_type(0, model::Type::integer("INT", 0, 9));
+  ts.set_true(0, 0);
+  ts.set_true(1, 1);
+  auto state = [&](std::uint32_t s) {
+    std::vector<semantics::StateWord> w(ts.layout().words(), 0);
+    ts.layout().set(w, 0, s);
+    return w;
+  };
+  logic::Trace trace;
+  trace.steps.push_back({{0, 0}, state(0), {}});
+  trace.steps.push_back({{0, 1}, state(1), {}});
+  EXPECT_EQ(trace_table(trace, ts),
+            "  # | inputs (changed) | fired | active steps | outputs\n"
+            "  --+------------------+-------+--------------+--------\n"
+            "  0 | level=0          |       | A\n"
+            "  1 | +go              |       | B\n");
+}
+
+TEST(TraceRender, GrafcetCsvStartsWithTheInitialInputs) {
+  Fixture f;
+  f.ts.set_semantics(semantics::SemanticsKind::Grafcet);
+  f.trace.steps[0].inputs = {0, 1};
+  EXPECT_EQ(trace_csv(f.trace, f.ts),
+            "# sfcv check trace: one row per stable situation, the first the initial inputs; rows "
+            "from situation 0 on repeat forever\n"
+            "go,stop\n0,1\n1,0\n0,0\n");
+}
+
 TEST(TraceRender, CsvIsTheSimulateInput) {
   Fixture f;
   const auto c = trace_csv(f.trace, f.ts);
   EXPECT_NE(c.find("go,stop\n1,0\n0,0\n"), std::string::npos) << c;
   EXPECT_EQ(c.front(), '#');
+}
+
+TEST(CheckRender, SaysHowManyFindingsWereCut) {
+  Fixture f;
+  logic::CheckReport report;
+  logic::PropertyResult c;
+  c.name = c.check = "dead-transitions";
+  c.verdict = logic::Verdict::Violated;
+  c.findings = {"transition t1 never fires", "transition t2 never fires"};
+  c.findings_total = 137;
+  report.results.push_back(c);
+  const auto text = check_text(report, f.ts, {});
+  EXPECT_NE(text.find("  - transition t2 never fires\n  (2 of 137 findings shown; --all for every one)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(check_json(report, f.ts, {})["properties"][0]["findings_total"], 137);
+  report.results[0].findings_total = 2;
+  EXPECT_EQ(check_text(report, f.ts, {}).find("findings shown"), std::string::npos);
 }
 
 TEST(CheckRender, TextAndJsonReports) {

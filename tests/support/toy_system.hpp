@@ -67,7 +67,9 @@ class ToySystem final : public semantics::TransitionSystem {
     observables_[atom].is_output = output;
   }
 
-  semantics::SemanticsKind kind() const override { return semantics::SemanticsKind::Iec61131; }
+  semantics::SemanticsKind kind() const override { return kind_; }
+  /// Renderers read traces differently per semantics (a Grafcet trace's first step has inputs).
+  void set_semantics(semantics::SemanticsKind k) { kind_ = k; }
   const semantics::StateLayout& layout() const override { return layout_; }
   const std::vector<semantics::InputVariable>& inputs() const override { return inputs_; }
   const std::vector<semantics::Observable>& observables() const override { return observables_; }
@@ -95,6 +97,7 @@ class ToySystem final : public semantics::TransitionSystem {
   }
 
  private:
+  semantics::SemanticsKind kind_ = semantics::SemanticsKind::Iec61131;
   void emit(std::uint32_t to, const semantics::InputCondition& c,
             const std::vector<std::uint32_t>& fired, semantics::SuccessorSink& sink) const {
     std::vector<semantics::StateWord> buf(layout_.words(), 0);

@@ -15,6 +15,42 @@ bool ExplicitModelChecker::can_handle(const logic::CheckTask& task, std::string*
   return true;
 }
 
+namespace {
+
+logic::Coverage measure_coverage(const ReachableSituationGraph& graph) {
+  const auto& ts = graph.system();
+  logic::Coverage c;
+  const auto& obs = ts.observables();
+  std::vector<bool> seen(obs.size(), false);
+  for (std::uint32_t s = 0; s < graph.num_states(); ++s) {
+    const auto state = graph.states().at(s);
+    for (std::uint32_t o = 0; o < obs.size(); ++o)
+      if (!seen[o] && obs[o].kind != semantics::ObservableKind::Variable && ts.observe(state, o))
+        seen[o] = true;
+  }
+  for (std::uint32_t o = 0; o < obs.size(); ++o) {
+    if (obs[o].kind == semantics::ObservableKind::Step) {
+      ++c.steps;
+      c.steps_visited += seen[o];
+      if (!seen[o]) c.unvisited.push_back("step " + obs[o].name);
+    } else if (obs[o].kind == semantics::ObservableKind::Action) {
+      ++c.actions;
+      c.actions_active += seen[o];
+      if (!seen[o]) c.unvisited.push_back("action " + obs[o].name);
+    }
+  }
+  const auto& fired = graph.fired_somewhere();
+  c.transitions = static_cast<std::uint32_t>(ts.transitions().size());
+  for (std::uint32_t t = 0; t < c.transitions; ++t) {
+    const bool f = t < fired.size() && fired[t];
+    c.transitions_fired += f;
+    if (!f) c.unvisited.push_back("transition " + ts.transitions()[t].name);
+  }
+  return c;
+}
+
+}  // namespace
+
 logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -52,6 +88,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
     report.results.push_back(std::move(r));
   }
   for (auto& r : run_standard_checks(graph, checker, task)) report.results.push_back(std::move(r));
+  if (task.coverage) report.coverage = measure_coverage(graph);
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return report;
 }

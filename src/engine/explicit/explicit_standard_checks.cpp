@@ -18,7 +18,6 @@ using logic::Verdict;
 
 namespace {
 
-constexpr std::size_t kMaxFindings = 20;
 constexpr std::size_t kMaxSituations = 3;  ///< situation findings listed before a summary
 constexpr std::uint32_t kNone = ReachableSituationGraph::kNone;
 
@@ -80,7 +79,9 @@ class Checks {
            std::to_string(g_.num_states()) + " states";
   }
   void add(PropertyResult& r, std::string finding) const {
-    if (r.findings.size() < kMaxFindings) r.findings.push_back(std::move(finding));
+    ++r.findings_total;
+    if (task_.max_findings == 0 || r.findings.size() < task_.max_findings)
+      r.findings.push_back(std::move(finding));
   }
   bool step_active(std::uint32_t s, const StepRef& step) const {
     return ts_.observe(g_.states().at(s), step.observable) != 0;

@@ -1,0 +1,66 @@
+// sfcv report: renders a saved `sfcv check --json` result. The chart comes from the model the
+// result names (or --model), built with the same system options as the check.
+
+#include <CLI/CLI.hpp>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "cli/exit_code.hpp"
+#include "cli/load_model.hpp"
+#include "cli/system_options.hpp"
+#include "report/check_html.hpp"
+
+namespace sfcv::cli {
+
+namespace {
+
+struct ReportOptions {
+  std::string result;
+  std::string html;
+  std::string model;  ///< empty: the result's "model"
+  std::string format = "auto";
+  SystemOptions system;
+};
+
+int run_report(const ReportOptions& o) {
+  std::ifstream in(o.result);
+  if (!in) throw InputError(o.result + ": cannot read the result");
+  nlohmann::json result;
+  try {
+    result = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(o.result + ": not a JSON result of 'sfcv check --json': " + e.what());
+  }
+  if (!result.contains("properties") || !result["properties"].is_array())
+    throw InputError(o.result + ": not a JSON result of 'sfcv check --json' (no \"properties\")");
+  const std::string model = !o.model.empty() ? o.model : result.value("model", std::string());
+  if (model.empty()) throw InputError(o.result + ": names no model: give --model");
+  const auto project = load_model_or_throw(model, parse_format(o.format), true);
+  SystemOptions system = o.system;
+  if (system.semantics.empty()) system.semantics = result.value("semantics", std::string());
+  const auto built = build_system(project, system, {}, "sfcv report");
+  std::ofstream out(o.html);
+  if (!out) throw InputError(o.html + ": cannot write the HTML report");
+  out << report::check_html(report::html_report(std::move(result), project, *built.system));
+  return kHolds;
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app, CommandRunner& selected) {
+  auto opts = std::make_shared<ReportOptions>();
+  auto* sub = app.add_subcommand("report", "Render a saved 'sfcv check --json' result as an HTML report");
+  sub->add_option("result", opts->result, "The JSON result of 'sfcv check --json'")->required();
+  sub->add_option("--html", opts->html, "The HTML file to write")->required();
+  sub->add_option("--model", opts->model, "The chart file (default: the one the result names)");
+  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  add_system_options(*sub, opts->system);
+  sub->callback([opts, &selected] {
+    selected = [opts] { return run_report(*opts); };
+  });
+}
+
+}  // namespace sfcv::cli
