@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "semantics/iec61131_circuit.hpp"
@@ -267,6 +268,8 @@ std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::Tran
     return std::make_unique<CompiledEnumerator>(ts, circuit);
   } catch (const semantics::CircuitUnsupported&) {
     return nullptr;
+  } catch (const std::invalid_argument&) {
+    return nullptr;  // an IEC system wrapped by another (e.g. the history system): no circuit
   }
 }
 

@@ -111,7 +111,8 @@ std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::T
 }
 
 bool invariants_only(const logic::CheckTask& task) {
-  if (!task.system || !task.checks.empty() || !task.fairness.empty() || task.properties.empty())
+  if (!task.system || !task.checks.empty() || !task.fairness.empty() || task.properties.empty() ||
+      task.coverage)
     return false;
   for (const auto& p : task.properties)
     if (p.formula->op != Op::AG || !logic::is_propositional(*p.formula->args[0])) return false;

@@ -30,7 +30,7 @@ class TargetEnumerator {
 std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts);
 
 /// Whether `task` asks only for invariants (every property AG p with p propositional, no
-/// fairness, no standard check), which check_invariants decides without the graph.
+/// fairness, no standard check, no coverage), which check_invariants decides without the graph.
 bool invariants_only(const logic::CheckTask& task);
 
 /// Decides the invariants of `task` (precondition: invariants_only(task)) with `enumerator`
