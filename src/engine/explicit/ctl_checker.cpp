@@ -499,9 +499,11 @@ logic::PropertyResult CtlChecker::check(const logic::Property& p) {
       const auto& inner = sat(f->args[0]);
       std::uint32_t best = ReachableSituationGraph::kNone;
       for (std::uint32_t s = 0; s < g_.num_states(); ++s)
-        if ((inner[s] != 0) == ef && (best == ReachableSituationGraph::kNone || g_.depth(s) < g_.depth(best)))
+        if ((inner[s] != 0) == ef && g_.has_path(s) &&
+            (best == ReachableSituationGraph::kNone || g_.depth(s) < g_.depth(best)))
           best = s;
-      // Under fairness a violating state must also be fair, which needs the whole graph.
+      // Under fairness a violating state must also be fair, which needs the whole graph. A state
+      // without a known path (found from a state left unexpanded) cannot be shown: not used.
       if (best != ReachableSituationGraph::kNone && (ef || fairness_.empty())) {
         r.verdict = ef ? logic::Verdict::Holds : logic::Verdict::Violated;
         r.message.clear();

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "engine/explicit/compiled_successors.hpp"
+#include "engine/explicit/invariant_search.hpp"
 #include "logic/formula.hpp"
 #include "model/errors.hpp"
 
@@ -86,6 +88,11 @@ logic::Coverage measure_coverage(const ReachableSituationGraph& graph) {
 logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) const {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  // Invariants alone need neither the edges nor their labels: decided during the search.
+  if (invariants_only(task)) {
+    const auto compiled = make_compiled_enumerator(*task.system);
+    return check_invariants(task, compiled.get());
+  }
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
   opts.deadline = task.limits.deadline;

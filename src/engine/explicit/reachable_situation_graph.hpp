@@ -5,6 +5,7 @@
 // the transitions fired. BFS order makes parent pointers give shortest paths from the initial
 // states, which counterexamples use.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -75,6 +76,12 @@ class ReachableSituationGraph {
   /// state is path_initial(s).
   std::vector<std::uint64_t> shortest_path_edges(std::uint32_t s) const;
   std::uint32_t path_initial(std::uint32_t s) const;
+  /// Whether a BFS path to s is known: false only for a state first found while expanding the
+  /// state a limit then left unexpanded (its edges, and so the path, were dropped).
+  bool has_path(std::uint32_t s) const {
+    return parent_edge_state_[s] != kNone ||
+           std::find(initial_.begin(), initial_.end(), s) != initial_.end();
+  }
   std::uint32_t depth(std::uint32_t s) const { return depth_[s]; }
   /// The source state of an edge (binary search on the offsets).
   std::uint32_t source(std::uint64_t edge) const;

@@ -37,13 +37,15 @@ std::uint32_t StateStore::find(StateView state) const {
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
-    if (hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
+    if (words_ == 1 ? data_[s - 1] == state[0]
+                    : hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
       return s - 1;
   }
 }
 
 std::pair<std::uint32_t, bool> StateStore::insert(StateView state) {
   if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
+  if (words_ == 1) return insert_word(state[0]);
   const std::uint64_t h = hash(state);
   const auto tag = static_cast<std::uint32_t>(h >> 32);
   const std::size_t mask = slots_.size() - 1;
@@ -57,6 +59,21 @@ std::pair<std::uint32_t, bool> StateStore::insert(StateView state) {
       return {size_ - 1, true};
     }
     if (hashes_[s - 1] == tag && equal_at(s - 1, state)) return {s - 1, false};
+  }
+}
+
+// A one-word state is its own key: no stored hash tag, no call to compare.
+std::pair<std::uint32_t, bool> StateStore::insert_word(StateWord word) {
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = mix(0x9e3779b97f4a7c15ULL ^ word) & mask;; i = (i + 1) & mask) {
+    const std::uint32_t s = slots_[i];
+    if (s == 0) {
+      if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
+      data_.push_back(word);
+      slots_[i] = ++size_;
+      return {size_ - 1, true};
+    }
+    if (data_[s - 1] == word) return {s - 1, false};
   }
 }
 

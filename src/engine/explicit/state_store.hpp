@@ -1,7 +1,8 @@
 #pragma once
 // Open-addressing hash set of fixed-width packed states. States live contiguously in one vector
 // (no per-state heap allocation) and are numbered in insertion order, so BFS numbering is the
-// state index.
+// state index. A state of at most 64 bits is one word compared directly: 16 bytes per state at
+// the table's half load (8 for the word, 8 for two slots).
 
 #include <cstdint>
 #include <utility>
@@ -35,13 +36,15 @@ class StateStore {
  private:
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
+  std::pair<std::uint32_t, bool> insert_word(StateWord word);
   void grow();
 
   std::uint32_t words_;
   std::uint32_t size_ = 0;
   std::vector<StateWord> data_;
   std::vector<std::uint32_t> slots_;  ///< state index + 1; 0 = empty
-  std::vector<std::uint32_t> hashes_;  ///< low bits of each state's hash, to skip most compares
+  std::vector<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
+                                       ///< (not kept for one-word states: compared directly)
 };
 
 }  // namespace sfcv::engine

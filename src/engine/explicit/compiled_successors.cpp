@@ -1,0 +1,276 @@
+#include "engine/explicit/compiled_successors.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "semantics/iec61131_circuit.hpp"
+#include "semantics/iec61131_system.hpp"
+
+namespace sfcv::engine {
+
+using semantics::Aig;
+using semantics::AigLit;
+using semantics::StateView;
+using semantics::StateWord;
+
+namespace {
+
+using Word = std::uint64_t;
+
+/// Input bits enumerated per state at most (2^12 valuations, 64 passes); beyond that the lazy
+/// decisions of the interpreter are cheaper.
+constexpr std::uint32_t kMaxRelevantBits = 12;
+
+/// Lane patterns: bit l of kLane[i] is bit i of l, so 64 lanes hold all valuations of 6 bits.
+constexpr Word kLane[6] = {0xAAAAAAAAAAAAAAAAULL, 0xCCCCCCCCCCCCCCCCULL, 0xF0F0F0F0F0F0F0F0ULL,
+                           0xFF00FF00FF00FF00ULL, 0xFFFF0000FFFF0000ULL, 0xFFFFFFFF00000000ULL};
+
+/// A gate: value = (val[a] ^ neg a) & (val[b] ^ neg b), on compact literals (2 * id + negation).
+struct Gate {
+  std::uint32_t a, b;
+};
+
+/// A latch whose next-state function reads inputs: copied lane by lane into the targets.
+struct DynamicBit {
+  std::uint32_t lit;
+  std::uint32_t word;
+  Word bit;
+};
+
+class CompiledEnumerator final : public TargetEnumerator {
+ public:
+  CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
+      : fallback_(make_interpreted_enumerator(ts)), words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
+    compile(ts, c);
+  }
+
+  void targets(StateView state, std::vector<StateWord>& out) override {
+    // Latches, then the gates that read no input: once per state.
+    for (std::size_t i = 0; i < latch_pos_.size(); ++i) {
+      const auto& p = latch_pos_[i];
+      set(first_latch_ + i, Word{0} - ((state[p.word] & p.bit) != 0));
+    }
+    run(0, static_state_gates_);
+    std::fill(base_.begin(), base_.end(), 0);
+    for (const auto& s : static_bits_)
+      if (value(s.lit) & 1U) base_[s.word] |= s.bit;
+    if (!(value(allowed_) & ~value(range_error_) & 1U) && allowed_static_) return;  // no lane
+
+    const auto inputs = static_cast<std::uint32_t>(input_ids_.size());
+    if (inputs <= 6) {
+      for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], kLane[k]);
+      run(static_state_gates_, gates_.size());
+      emit(lanes(inputs), out);
+      return;
+    }
+    // Which input bits this state's cycle reads: an AND with a FALSE fan-in needs neither side.
+    std::fill(mask_.begin() + first_input_, mask_.begin() + first_input_ + inputs, 0);
+    for (std::uint32_t k = 0; k < inputs; ++k) mask_[input_ids_[k]] = Word{1} << k;
+    for (std::size_t g = static_state_gates_; g < gates_.size(); ++g) {
+      const auto& gt = gates_[g];
+      const auto out_id = first_gate_ + g;
+      const Word ma = mask_[gt.a >> 1], mb = mask_[gt.b >> 1];
+      if ((ma == 0 && value(gt.a) == 0) || (mb == 0 && value(gt.b) == 0)) {
+        mask_[out_id] = 0;
+        set(out_id, 0);
+      } else {
+        mask_[out_id] = ma | mb;
+        if ((ma | mb) == 0) set(out_id, ~Word{0});
+      }
+    }
+    Word relevant = mask_[allowed_ >> 1] | mask_[range_error_ >> 1];
+    for (const auto& d : dynamic_bits_) relevant |= mask_[d.lit >> 1];
+    const auto r = static_cast<std::uint32_t>(std::popcount(relevant));
+    if (r > kMaxRelevantBits) {
+      fallback_->targets(state, out);
+      return;
+    }
+    std::uint32_t order[64];
+    std::uint32_t n = 0;
+    for (Word m = relevant; m; m &= m - 1) order[n++] = static_cast<std::uint32_t>(std::countr_zero(m));
+    for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], 0);  // not read: any value
+    const std::uint32_t low = std::min<std::uint32_t>(r, 6);
+    for (std::uint32_t k = 0; k < low; ++k) set(input_ids_[order[k]], kLane[k]);
+    const std::uint32_t passes = r > 6 ? 1U << (r - 6) : 1U;
+    for (std::uint32_t pass = 0; pass < passes; ++pass) {
+      for (std::uint32_t k = 6; k < r; ++k)
+        set(input_ids_[order[k]], Word{0} - ((pass >> (k - 6)) & 1U));
+      run(static_state_gates_, gates_.size());
+      emit(lanes(low), out);
+    }
+  }
+
+ private:
+  struct Position {
+    std::uint32_t word;
+    Word bit;
+  };
+  struct Exception {
+    Word lanes;  ///< the valid lanes where the bit differs from the common part
+    std::uint32_t word;
+    Word bit;
+  };
+
+  static Word lanes(std::uint32_t bits) { return bits >= 6 ? ~Word{0} : (Word{1} << (1U << bits)) - 1; }
+  // val_ holds both polarities of every node, indexed by literal: a gate is one AND.
+  Word value(std::uint32_t lit) const { return val_[lit]; }
+  void set(std::uint32_t id, Word w) {
+    val_[2 * id] = w;
+    val_[2 * id + 1] = ~w;
+  }
+  void run(std::size_t from, std::size_t to) {
+    Word* v = val_.data() + 2 * first_gate_;
+    const Word* in = val_.data();
+    const Gate* g = gates_.data();
+    for (std::size_t i = from; i < to; ++i) {
+      const Word x = in[g[i].a] & in[g[i].b];
+      v[2 * i] = x;
+      v[2 * i + 1] = ~x;
+    }
+  }
+  /// Appends the targets of the valid lanes. Most input-reading latches take one value in
+  /// almost every lane (a selector changes one branch per valuation): each bit goes into the
+  /// common part with its majority value, and only the lanes where it differs are patched.
+  void emit(Word lane_mask, std::vector<StateWord>& out) {
+    const Word valid = value(allowed_) & ~value(range_error_) & lane_mask;
+    if (!valid) return;
+    // Where each valid lane's target goes: its rank among the valid lanes.
+    std::uint32_t lanes = 0;
+    if ((valid & (valid + 1)) == 0) {
+      lanes = static_cast<std::uint32_t>(std::countr_one(valid));
+      for (std::uint32_t l = 0; l < lanes; ++l) rank_[l] = l;
+    } else {
+      for (Word m = valid; m; m &= m - 1) rank_[std::countr_zero(m)] = lanes++;
+    }
+    const auto first_lane = static_cast<unsigned>(std::countr_zero(valid));
+    std::copy(base_.begin(), base_.end(), common_.begin());
+    exceptions_.clear();
+    for (const auto& d : dynamic_bits_) {
+      const Word v = value(d.lit);
+      Word differ = v & valid;
+      if ((v >> first_lane) & 1U) {
+        common_[d.word] |= d.bit;
+        differ = valid & ~v;
+      }
+      if (differ) exceptions_.push_back({differ, d.word, d.bit});
+    }
+    const std::size_t first = out.size();
+    out.resize(first + static_cast<std::size_t>(lanes) * words_);
+    StateWord* t = out.data() + first;
+    if (words_ == 1) {
+      std::fill(t, t + lanes, common_[0]);
+    } else {
+      for (std::uint32_t l = 0; l < lanes; ++l) std::copy(common_.begin(), common_.end(), t + l * words_);
+    }
+    for (const auto& e : exceptions_)
+      for (Word m = e.lanes; m; m &= m - 1)
+        t[static_cast<std::size_t>(rank_[std::countr_zero(m)]) * words_ + e.word] ^= e.bit;
+  }
+
+  void compile(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c) {
+    const auto& nodes = c.aig.nodes();
+    const auto& fields = ts.layout().fields();
+    std::vector<AigLit> roots{c.allowed, c.range_error};
+    for (const auto& l : c.aig.latches()) roots.push_back(l.next);
+    // Cone of influence; node order is topological, so one backward sweep marks it.
+    std::vector<std::uint8_t> needed(nodes.size(), 0), reads_input(nodes.size(), 0);
+    for (auto r : roots) needed[Aig::node_of(r)] = 1;
+    for (std::size_t n = nodes.size(); n-- > 1;)
+      if (needed[n] && nodes[n].kind == Aig::NodeKind::And) {
+        needed[Aig::node_of(nodes[n].left)] = 1;
+        needed[Aig::node_of(nodes[n].right)] = 1;
+      }
+    for (std::size_t n = 1; n < nodes.size(); ++n) {
+      if (nodes[n].kind == Aig::NodeKind::Input) reads_input[n] = 1;
+      if (nodes[n].kind == Aig::NodeKind::And)
+        reads_input[n] = reads_input[Aig::node_of(nodes[n].left)] | reads_input[Aig::node_of(nodes[n].right)];
+    }
+    // Compact ids: 0 the constant, then every latch, every input, the static gates, the
+    // input-reading gates.
+    std::vector<std::uint32_t> id(nodes.size(), 0);
+    std::uint32_t next = 1;
+    first_latch_ = next;
+    std::vector<std::uint32_t> latch_node(c.aig.latches().size());
+    for (std::size_t i = 0; i < c.aig.latches().size(); ++i) {
+      latch_node[i] = Aig::node_of(c.aig.latches()[i].current);
+      id[latch_node[i]] = next++;
+    }
+    first_input_ = next;
+    for (const auto& in : c.aig.inputs()) {
+      id[Aig::node_of(in.literal)] = next;
+      input_ids_.push_back(next++);
+    }
+    first_gate_ = next;
+    auto compact = [&](AigLit l) { return id[Aig::node_of(l)] * 2 + (l & 1U); };
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t n = 1; n < nodes.size(); ++n)
+        if (needed[n] && nodes[n].kind == Aig::NodeKind::And && reads_input[n] == pass) {
+          id[n] = next++;
+          gates_.push_back({compact(nodes[n].left), compact(nodes[n].right)});
+          if (pass == 0) static_state_gates_ = gates_.size();
+        }
+    val_.assign(2 * static_cast<std::size_t>(next), 0);
+    val_[1] = ~Word{0};  // TRUE
+    base_.assign(words_, 0);
+    common_.assign(words_, 0);
+    exceptions_.reserve(dynamic_bits_.size());
+    mask_.assign(next, 0);
+    // Where each latch lives in the packed state.
+    latch_pos_.resize(c.aig.latches().size());
+    for (std::uint32_t f = 0; f < c.field_latches.size(); ++f)
+      for (std::uint32_t k = 0; k < c.field_latches[f].size(); ++k) {
+        const auto bit = fields[f].offset + k;
+        latch_pos_[c.field_latches[f][k]] = {bit / 64, Word{1} << (bit % 64)};
+      }
+    for (std::size_t i = 0; i < c.aig.latches().size(); ++i) {
+      const auto& next_lit = c.aig.latches()[i].next;
+      const DynamicBit d{compact(next_lit), latch_pos_[i].word, latch_pos_[i].bit};
+      (reads_input[Aig::node_of(next_lit)] ? dynamic_bits_ : static_bits_).push_back(d);
+    }
+    allowed_ = compact(c.allowed);
+    range_error_ = compact(c.range_error);
+    allowed_static_ = !reads_input[Aig::node_of(c.allowed)] && !reads_input[Aig::node_of(c.range_error)];
+  }
+
+  std::unique_ptr<TargetEnumerator> fallback_;
+  std::uint32_t words_;
+  std::uint32_t first_latch_ = 0, first_input_ = 0, first_gate_ = 0;
+  std::vector<Position> latch_pos_;
+  std::vector<std::uint32_t> input_ids_;
+  std::vector<Gate> gates_;
+  std::size_t static_state_gates_ = 0;  ///< gates_[0, this) read no input
+  std::vector<DynamicBit> static_bits_, dynamic_bits_;
+  std::uint32_t allowed_ = 1, range_error_ = 0;
+  bool allowed_static_ = false;
+  std::vector<Word> val_, mask_;
+  std::vector<StateWord> base_, common_;
+  std::vector<Exception> exceptions_;
+  std::uint32_t rank_[64] = {};
+};
+
+}  // namespace
+
+std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts) {
+  if (ts.kind() != semantics::SemanticsKind::Iec61131) return nullptr;
+  // An input the interpreter would refuse to enumerate (SemanticsLimitError) must still be
+  // refused: leave such systems to it.
+  for (const auto& in : ts.inputs())
+    if (in.type.kind != model::TypeKind::Bool &&
+        static_cast<std::uint64_t>(in.type.hi) - static_cast<std::uint64_t>(in.type.lo) >=
+            static_cast<std::uint64_t>(semantics::kMaxEnumeratedValues))
+      return nullptr;
+  try {
+    const auto circuit = semantics::build_iec61131_circuit(ts);
+    if (circuit.aig.inputs().size() > 64) return nullptr;
+    return std::make_unique<CompiledEnumerator>(ts, circuit);
+  } catch (const semantics::CircuitUnsupported&) {
+    return nullptr;
+  } catch (const std::invalid_argument&) {
+    return nullptr;  // an IEC system wrapped by another (e.g. the history system): no circuit
+  }
+}
+
+}  // namespace sfcv::engine

@@ -1,0 +1,272 @@
+#include "engine/explicit/invariant_search.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "engine/explicit/state_store.hpp"
+#include "logic/formula.hpp"
+
+namespace sfcv::engine {
+
+using logic::Op;
+using semantics::StateView;
+using semantics::StateWord;
+
+namespace {
+
+constexpr std::uint32_t kNone = ~0U;
+
+class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
+ public:
+  explicit InterpretedEnumerator(const semantics::TransitionSystem& ts) : ts_(ts) {}
+  void targets(StateView state, std::vector<StateWord>& out) override {
+    out_ = &out;
+    ts_.successors(state, *this);
+  }
+
+ private:
+  void successor(const semantics::Successor& s) override {
+    out_->insert(out_->end(), s.target.begin(), s.target.end());
+  }
+  const semantics::TransitionSystem& ts_;
+  std::vector<StateWord>* out_ = nullptr;
+};
+
+/// The label of the edge source -> `target` as the graph builder merges it: the cubes of every
+/// successor reaching `target` (first occurrence order, no repeats) and the union of their fired
+/// transitions.
+class EdgeLabel final : public semantics::SuccessorSink {
+ public:
+  explicit EdgeLabel(StateView target) : target_(target) {}
+  void successor(const semantics::Successor& s) override {
+    if (!std::equal(s.target.begin(), s.target.end(), target_.begin(), target_.end())) return;
+    for (const auto& cube : s.condition.cubes)
+      if (std::find(condition.cubes.begin(), condition.cubes.end(), cube) == condition.cubes.end())
+        condition.cubes.push_back(cube);
+    std::vector<std::uint32_t> merged;
+    std::set_union(fired.begin(), fired.end(), s.fired.begin(), s.fired.end(),
+                   std::back_inserter(merged));
+    fired = std::move(merged);
+  }
+  semantics::InputCondition condition;
+  std::vector<std::uint32_t> fired;
+
+ private:
+  StateView target_;
+};
+
+bool holds(const logic::Formula& f, const semantics::TransitionSystem& ts, StateView s) {
+  const auto& a = f.args;
+  switch (f.op) {
+    case Op::True: return true;
+    case Op::False: return false;
+    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::Compare:
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
+    case Op::Not: return !holds(*a[0], ts, s);
+    case Op::And: return holds(*a[0], ts, s) && holds(*a[1], ts, s);
+    case Op::Or: return holds(*a[0], ts, s) || holds(*a[1], ts, s);
+    case Op::Implies: return !holds(*a[0], ts, s) || holds(*a[1], ts, s);
+    case Op::Iff: return holds(*a[0], ts, s) == holds(*a[1], ts, s);
+    case Op::Xor: return holds(*a[0], ts, s) != holds(*a[1], ts, s);
+    default: return false;  // temporal: excluded by invariants_only
+  }
+}
+
+/// The run from an initial state to `s` through BFS parents, with the inputs of each edge
+/// picked as the graph-based engine picks them.
+logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateStore& store,
+                            const std::vector<std::uint32_t>& parent, std::uint32_t s) {
+  std::vector<std::uint32_t> path;
+  for (auto x = s; x != kNone; x = parent[x]) path.push_back(x);
+  std::reverse(path.begin(), path.end());
+  logic::Trace trace;
+  trace.kind = logic::TraceKind::Counterexample;
+  std::vector<std::int64_t> previous;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const auto view = store.at(path[i]);
+    logic::TraceStep step;
+    step.state.assign(view.begin(), view.end());
+    EdgeLabel label(step.state);
+    if (i == 0) {
+      ts.initial_states(label);
+      step.inputs = logic::pick_inputs(label.condition, ts.inputs(), {});
+    } else {
+      const auto from = store.at(path[i - 1]);
+      const std::vector<StateWord> source(from.begin(), from.end());
+      ts.successors(source, label);
+      step.inputs = logic::pick_inputs(label.condition, ts.inputs(), previous);
+      step.fired = label.fired;
+    }
+    previous = step.inputs;
+    trace.steps.push_back(std::move(step));
+  }
+  return trace;
+}
+
+}  // namespace
+
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts) {
+  return std::make_unique<InterpretedEnumerator>(ts);
+}
+
+bool invariants_only(const logic::CheckTask& task) {
+  if (!task.system || !task.checks.empty() || !task.fairness.empty() || task.properties.empty() ||
+      task.coverage)
+    return false;
+  for (const auto& p : task.properties)
+    if (p.formula->op != Op::AG || !logic::is_propositional(*p.formula->args[0])) return false;
+  return true;
+}
+
+logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerator* enumerator) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const auto& ts = *task.system;
+  const auto& limits = task.limits;
+  std::unique_ptr<TargetEnumerator> own;
+  if (!enumerator) {
+    own = make_interpreted_enumerator(ts);
+    enumerator = own.get();
+  }
+
+  const std::size_t n = task.properties.size();
+  std::vector<std::uint32_t> violation(n, kNone);  ///< first violating state per property
+  std::vector<double> decided_at(n, 0);
+  std::size_t open = n;
+  StateStore store(ts.layout().words());
+  std::vector<std::uint32_t> parent;
+  // Checks a newly stored state against every invariant still open.
+  std::vector<std::size_t> just_violated;  ///< properties violated while expanding this state
+  auto judge = [&](std::uint32_t s) {
+    const auto view = store.at(s);
+    for (std::size_t i = 0; i < n; ++i)
+      if (violation[i] == kNone && !holds(*task.properties[i].formula->args[0], ts, view)) {
+        violation[i] = s;
+        decided_at[i] = elapsed();
+        just_violated.push_back(i);
+        --open;
+      }
+  };
+
+  // A Grafcet may start in very many situations: the state limit applies to them too.
+  class Initial final : public semantics::SuccessorSink {
+   public:
+    Initial(StateStore& st, std::uint64_t max) : store(st), max_states(max) {}
+    void successor(const semantics::Successor& s) override {
+      if (max_states > 0 && store.size() > max_states) {
+        stopped = true;
+        return;
+      }
+      store.insert(s.target);
+    }
+    StateStore& store;
+    std::uint64_t max_states;
+    bool stopped = false;
+  } initial(store, limits.max_states);
+  ts.initial_states(initial);
+  const std::uint32_t initial_count = store.size();
+  parent.assign(initial_count, kNone);
+  for (std::uint32_t s = 0; s < initial_count && open > 0; ++s) judge(s);
+
+  std::string limit = initial.stopped ? "states" : "";
+  std::uint64_t edges = 0;
+  std::vector<StateWord> current, targets;
+  std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it
+  const std::uint32_t words = std::max<std::uint32_t>(ts.layout().words(), 1);
+  auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
+  // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
+  std::uint32_t level = 0, level_end = initial_count;
+  std::uint32_t s = 0;
+  for (; limit.empty() && open > 0 && s < store.size(); ++s) {
+    if (s == level_end) {
+      ++level;
+      level_end = store.size();
+    }
+    if (limits.max_states > 0 && store.size() > limits.max_states) {
+      limit = "states";
+      break;
+    }
+    if ((s & 1023U) == 0 && s > 0) {
+      if (limits.expired()) limit = "time";
+      else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes) limit = "memory";
+      if (!limit.empty()) break;
+      if (limits.progress && (s & 4095U) == 0)
+        {
+        logic::Progress p;
+        p.states = store.size();
+        p.edges = edges;
+        p.depth = level;
+        p.seconds = elapsed();
+        p.phase = "explore (invariants)";
+        limits.progress(p);
+      }
+    }
+    const auto view = store.at(s);
+    current.assign(view.begin(), view.end());
+    targets.clear();
+    enumerator->targets(current, targets);
+    std::uint64_t out_edges = 0;
+    just_violated.clear();
+    for (std::size_t k = 0; k < targets.size(); k += words) {
+      // As the graph builder: no state is stored beyond the limit, and the state being expanded
+      // when it is reached stays unexpanded.
+      if (limits.max_states > 0 && store.size() > limits.max_states) {
+        limit = "states";
+        break;
+      }
+      const auto [t, fresh] = store.insert(StateView(targets.data() + k, words));
+      if (fresh) parent.push_back(s);
+      if (t >= stamp.size()) stamp.resize(std::max<std::size_t>(t + 1, 2 * stamp.size()), 0);
+      if (stamp[t] == s + 1) continue;  // the same target again: one edge per (source, target)
+      stamp[t] = s + 1;
+      ++out_edges;
+      if (fresh && open > 0) judge(t);
+    }
+    if (!limit.empty()) {
+      // As in the graph, the state stays unexpanded and what it reached has no known path.
+      for (auto i : just_violated) violation[i] = kNone;
+      open += just_violated.size();
+      break;
+    }
+    edges += out_edges;
+  }
+  const bool complete = limit.empty() && s >= store.size();
+
+  logic::CheckReport report;
+  report.engine = "explicit";
+  report.states = store.size();
+  report.edges = edges;
+  // The deepest state stored: the last one, one level below the one expanded when it was found.
+  report.depth = store.size() > level_end ? level + 1 : level;
+  report.complete = complete || open == 0;
+  report.limit = limit;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = task.properties[i];
+    logic::PropertyResult r;
+    r.name = p.name;
+    r.formula = logic::to_string(p.formula);
+    r.where = p.where;
+    if (initial_count == 0) {
+      r.verdict = logic::Verdict::Unknown;
+      r.message = "no initial state: the assumptions exclude every initial situation";
+    } else if (violation[i] != kNone) {
+      r.verdict = logic::Verdict::Violated;
+      r.trace = counterexample(ts, store, parent, violation[i]);
+      r.trace->marked = logic::atom_observables(*p.formula);
+    } else if (complete) {
+      r.verdict = logic::Verdict::Holds;
+    } else {
+      r.verdict = logic::Verdict::Unknown;
+      r.message = "exploration stopped at the " + limit + " limit after " +
+                  std::to_string(store.size()) + " states";
+    }
+    r.seconds = violation[i] != kNone ? decided_at[i] : elapsed();
+    report.results.push_back(std::move(r));
+  }
+  report.seconds = elapsed();
+  return report;
+}
+
+}  // namespace sfcv::engine

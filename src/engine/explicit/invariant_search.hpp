@@ -1,0 +1,41 @@
+#pragma once
+// Invariants (AG p, p propositional) decided on the fly, as Spin does: breadth-first search with
+// parent pointers that stops at the first state violating every property it still has to
+// decide, and keeps neither edges nor their labels (the conditions and fired transitions of the
+// few edges on a counterexample are recomputed from their source state).
+//
+// Results equal those of the graph-based engine (explicit_model_checker.hpp): same verdicts, the
+// same shortest counterexamples (the first violating state in BFS order, reached through its BFS
+// parents), and the same state and edge counts whenever the whole space is explored. When the
+// search stops early, the counts are those of the part explored.
+
+#include <memory>
+
+#include "logic/check_result.hpp"
+#include "logic/check_task.hpp"
+#include "semantics/transition_system.hpp"
+
+namespace sfcv::engine {
+
+/// Distinct successor states of a state, without their conditions or fired transitions: what a
+/// reachability search needs. The default enumerator asks TransitionSystem::successors; a
+/// compiled one (compiled_successors.hpp) evaluates the scan cycle's circuit bit-parallel.
+class TargetEnumerator {
+ public:
+  virtual ~TargetEnumerator() = default;
+  /// Appends the successors of `state` to `out` (words_per_state words each, duplicates allowed).
+  virtual void targets(semantics::StateView state, std::vector<semantics::StateWord>& out) = 0;
+};
+
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts);
+
+/// Whether `task` asks only for invariants (every property AG p with p propositional, no
+/// fairness, no standard check, no coverage), which check_invariants decides without the graph.
+bool invariants_only(const logic::CheckTask& task);
+
+/// Decides the invariants of `task` (precondition: invariants_only(task)) with `enumerator`
+/// generating successors (null: the interpreted one).
+logic::CheckReport check_invariants(const logic::CheckTask& task,
+                                    TargetEnumerator* enumerator = nullptr);
+
+}  // namespace sfcv::engine
