@@ -45,32 +45,15 @@ std::string plural(std::size_t n, const char* word) {
 }
 
 /// What the semantics refuses (a POU body or an action it does not model, an unknown name):
-/// lint's exit 0 must mean that `check` can model the file. Each POU that `check --pou` could
-/// run is compiled on its own (files hold several SFC POUs beside ST ones check never runs).
+/// lint's exit 0 must mean that `check` can model the file, so the system is built exactly as
+/// `check` without `--pou` builds it (its default choice of programs).
 model::Diagnostics semantic_diagnostics(const model::Project& project) {
   model::Diagnostics out;
-  auto add = [&](model::Diagnostics d) {
-    for (auto& x : d) {
-      const bool seen = std::any_of(out.begin(), out.end(), [&](const model::Diagnostic& y) {
-        return y.severity == x.severity && y.message == x.message && y.where.str() == x.where.str();
-      });
-      if (!seen && x.severity != model::Severity::Note) out.push_back(std::move(x));
-    }
-  };
-  if (project.dialect == model::Dialect::Grafcet) {
-    model::Diagnostics d;
-    semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, d);
-    add(std::move(d));
-    return out;
-  }
-  for (const auto& pou : project.pous) {
-    if (!pou.has_sfc()) continue;
-    semantics::Iec61131Options options;
-    options.pous = {pou.name};
-    model::Diagnostics d;
-    semantics::make_iec61131_system(project, options, d);
-    add(std::move(d));
-  }
+  if (project.dialect == model::Dialect::Grafcet)
+    semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, out);
+  else
+    semantics::make_iec61131_system(project, semantics::Iec61131Options{}, out);
+  std::erase_if(out, [](const model::Diagnostic& d) { return d.severity == model::Severity::Note; });
   return out;
 }
 

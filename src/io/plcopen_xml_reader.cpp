@@ -216,7 +216,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     const std::string k(local_name(lang));
     model::Diagnostics problems;
     auto stmts = read_statement_body(pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems);
-    if (stmts) {
+    if (stmts && !stmts->empty()) {
       // Vendor bodies call instances of user function blocks (whose variables were dropped
       // above) and read global lists: a body that does not validate against the POU's own
       // declarations is not modelled, and the file still loads.

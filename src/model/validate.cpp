@@ -127,10 +127,14 @@ class Validator {
 
   Diagnostics run() {
     // An empty file (or one of comments only) is no model: nothing could be checked in it.
-    bool any_chart = false;
-    for (const auto& pou : project_.pous) any_chart = any_chart || pou.has_sfc();
-    if (!any_chart)
-      error(project_.where, "the model has no chart (no step in any POU): nothing to check");
+    // A Grafcet needs a step; an IEC 61131-3 POU without steps is a program that runs its body
+    // (possibly empty) every cycle.
+    bool any_program = project_.dialect != Dialect::Grafcet && !project_.pous.empty();
+    for (const auto& pou : project_.pous) any_program = any_program || pou.has_sfc();
+    if (!any_program)
+      error(project_.where, project_.dialect == Dialect::Grafcet
+                                ? "the model has no chart (no step in any partial grafcet): nothing to check"
+                                : "the model has no chart and no POU: nothing to check");
     check_duplicates(project_.pous, "POU", project_.where);
     for (const auto& pou : project_.pous) check_pou(pou);
     std::stable_sort(out_.begin(), out_.end(), [](const Diagnostic& a, const Diagnostic& b) {

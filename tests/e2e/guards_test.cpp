@@ -126,7 +126,7 @@ TEST(NeverASilentModel, ActionWithUnmodelledBodyIsRefusedWhereAStepUsesIt) {
 
 TEST(NeverASilentModel, UnboundNamesInPropertiesAreLocatedErrors) {
   // `motor_fwd` is a variable of another POU (not run): not a free input.
-  const auto path = write_temp(kHeader + sfc_pou() + kDrivePou + kFooter, ".xml");
+  const auto path = write_temp(kHeader + sfc_pou() + kDriveSt + kFooter, ".xml");
   const std::string file = q(path);
   for (const char* opt :
        {"--ctl 'AG !motor_fwd'", "--assume '!motor_fwd'", "--fair 'motor_fwd'"}) {

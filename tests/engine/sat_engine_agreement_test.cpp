@@ -284,7 +284,7 @@ TEST(SatEngine, DeepCounter) {
   bmc.max_depth = 1000000;
   const auto big = load(bench::counter_iec(16));
   auto deep = test::task_for(big.project, *big.ts, {"AG c <= 65533"}, {});
-  deep.limits.timeout_seconds = 0.5;
+  deep.limits.set_timeout(0.5);
   const auto t = make_sat_model_checker(bmc)->check(deep);
   EXPECT_EQ(t.results[0].verdict, logic::Verdict::Unknown);
   EXPECT_FALSE(t.complete);
