@@ -1,6 +1,8 @@
 // sfcv HTML report: plays a counterexample on the chart. Plain JavaScript, no framework.
-// Data: <script id="sfcv-data"> holds {result: <sfcv check --json>, nodes: {steps, transitions}}
-// where nodes map observable and transition names to the ids of the chart's SVG nodes.
+// Data: <script id="sfcv-data"> holds {result: <sfcv check --json>, nodes: {steps, transitions,
+// situations}} where nodes map observable and transition names to the ids of the chart's SVG
+// nodes, and a Grafcet step situation (its step names sorted, joined by ",") to its node on the
+// situation graph.
 // URL hash "#trace=I&cycle=K" selects a trace and a cycle (bookmarks, the browser test).
 (function () {
   "use strict";
@@ -46,6 +48,11 @@
     });
     mark(step.active_steps, data.nodes.steps, "active");
     mark(step.fired, data.nodes.transitions, "fired");
+    // Grafcet: the cycle's step situation on the situation graph.
+    document.querySelectorAll("#situations-svg g.active").forEach((g) => g.classList.remove("active"));
+    const situation = (data.nodes.situations || {})[step.active_steps.slice().sort().join(",")];
+    const node = situation && document.getElementById(situation);
+    if (node) node.classList.add("active");
   }
 
   // A qualified name ("Plant.V2") whose short form ("V2", the property's atom) is also a value

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
@@ -28,6 +29,7 @@
 #include "engine/explicit/query_evaluator.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
+#include "report/check_html.hpp"
 #include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
@@ -49,6 +51,7 @@ struct QueryOptions {
   bool no_default_library = false;
   bool list = false;
   bool json = false;
+  std::string html;
   bool assert_empty = false;
   SystemOptions system;
   LimitOptions limits;
@@ -513,7 +516,8 @@ int run_query(const QueryOptions& o) {
               << "): the evolutions it cuts are missing from the graph\n";
 
   nlohmann::json jout;
-  if (o.json) {
+  const bool want_json = o.json || !o.html.empty();  // --html renders the JSON answers
+  if (want_json) {
     jout["model"] = o.model;
     jout["semantics"] = kind;
     jout["graph"] = {{"situations", qe.situations},
@@ -522,7 +526,8 @@ int run_query(const QueryOptions& o) {
                      {"limit", qe.limit},
                      {"anomalies", qe.anomalies.size()}};
     jout["queries"] = nlohmann::json::array();
-  } else {
+  }
+  if (!o.json) {
     std::cout << "graph: " << qe.situations << " situations, " << qe.evolutions
               << " evolutions (" << kind << (complete ? ", complete" : ", INCOMPLETE") << ")\n";
   }
@@ -553,7 +558,7 @@ int run_query(const QueryOptions& o) {
       any_violated |= verdict == "violated";
       any_unknown |= verdict == "unknown";
     }
-    if (o.json) {
+    if (want_json) {
       nlohmann::json jq;
       jq["query"] = items[i].text;
       jq["sort"] = sort_key(r.sort);
@@ -572,7 +577,7 @@ int run_query(const QueryOptions& o) {
       }
       if (!verdict.empty()) jq["verdict"] = verdict;
       jout["queries"].push_back(jq);
-      continue;
+      if (o.json) continue;
     }
     std::cout << "query: " << items[i].text << "\n";
     if (r.sort == logic::Sort::Bool) {
@@ -593,6 +598,11 @@ int run_query(const QueryOptions& o) {
                 << "\n";
   }
   if (o.json) std::cout << jout.dump(2) << "\n";
+  if (!o.html.empty()) {
+    std::ofstream f(o.html);
+    if (!f) throw InputError(o.html + ": cannot write the HTML report");
+    f << report::query_html(jout, report::html_pictures(project, *ts));
+  }
   if (o.assert_empty) exit_code = any_violated ? kViolated : any_unknown ? kUnknown : kHolds;
   if (!complete && exit_code == kHolds) exit_code = kUnknown;
   return exit_code;
@@ -617,6 +627,8 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
                 "Do not load the shipped share/sfcv/properties.sfq");
   sub->add_flag("--list", opts->list, "List the library definitions");
   sub->add_flag("--json", opts->json, "Print the results as JSON");
+  sub->add_option("--html", opts->html,
+                  "Write the answers, the chart and the situation graph as one HTML page");
   sub->add_flag("--assert", opts->assert_empty,
                 "Verdicts: a test must be true, a set must be empty (exit 0 holds, 1 violated, "
                 "3 unknown)");
