@@ -130,7 +130,7 @@ std::string chart_section(const HtmlReport& report) {
 /// One query's answer: its value or its set, the elements listed (the first ones shown, the
 /// rest folded away).
 std::string query_row(const json& q) {
-  constexpr std::size_t kShown = 10;
+  constexpr std::size_t kShown = 10, kListed = 200;  // shown, then folded; the JSON has all
   const std::string sort = str(q, "sort");
   std::string answer;
   if (sort == "test") {
@@ -146,12 +146,17 @@ std::string query_row(const json& q) {
   std::size_t n = 0;
   if (q.contains("elements"))
     for (const auto& e : q["elements"]) {
+      if (n == kListed) break;
       const std::string text = e.is_string() ? e.get<std::string>() : str(e, "text");
       (n++ < kShown ? shown : more) += "<li><code>" + escape(text) + "</code></li>";
     }
+  const std::size_t total = q.contains("elements") ? q["elements"].size() : 0;
+  if (total > kListed)
+    more += "<li>" + std::to_string(total - kListed) +
+            " more not listed here; sfcv query --json lists every one</li>";
   if (!more.empty())
-    shown += "<li><details><summary>" + std::to_string(n - kShown) + " more</summary><ul>" + more +
-             "</ul></details></li>";
+    shown += "<li><details><summary>" + std::to_string(total - kShown) + " more</summary><ul>" +
+             more + "</ul></details></li>";
   const std::string verdict = str(q, "verdict");
   return "<tr class=\"query\"><td class=\"name\"><code>" + escape(str(q, "query")) +
          "</code></td><td class=\"answer\">" + answer + "</td><td>" +
@@ -163,12 +168,25 @@ std::string query_row(const json& q) {
 
 HtmlReport html_report(nlohmann::json result, const model::Project& project,
                        const semantics::TransitionSystem& ts) {
-  HtmlReport r = html_pictures(project, ts);
+  // The situations the traces visit are drawn on the situation graph whatever its cap.
+  std::set<std::string> visited;
+  if (result.contains("properties"))
+    for (const auto& p : result["properties"])
+      if (p.contains("trace") && p["trace"].is_object())
+        for (const auto& step : p["trace"]["steps"]) {
+          std::set<std::string> names;
+          for (const auto& n : step["active_steps"]) names.insert(n.get<std::string>());
+          std::string key;
+          for (const auto& n : names) key += (key.empty() ? "" : ",") + n;
+          visited.insert(key);
+        }
+  HtmlReport r = html_pictures(project, ts, visited);
   r.result = std::move(result);
   return r;
 }
 
-HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts) {
+HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep) {
   HtmlReport r;
   std::ostringstream dot;
   print_chart_dot(dot, project);
@@ -176,11 +194,12 @@ HtmlReport html_pictures(const model::Project& project, const semantics::Transit
   r.chart_svg = std::move(svg.svg);
   r.chart_note = std::move(svg.error);
   r.node_ids = chart_node_ids(project, ts);
-  add_situation_graph(r, ts);
+  add_situation_graph(r, ts, keep);
   return r;
 }
 
-void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts) {
+void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep) {
   if (ts.kind() != semantics::SemanticsKind::Grafcet) return;
   engine::ExplorationOptions eo;
   eo.max_states = kReportMaxSituations;
@@ -195,14 +214,16 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
     return;
   }
   SituationGraphOptions so;
+  so.max_nodes = kReportMaxNodes;
   so.option_name = "sfcv rsg --dot FILE --max-nodes";
+  so.keep = keep;
   const auto grouped = situation_graph_dot(graph, so);
   auto svg = dot_to_svg(grouped.dot);
   report.situation_graph_svg = std::move(svg.svg);
   if (!report.situation_graph_svg.empty()) report.situation_node_ids = grouped.node_ids;
   report.situation_graph_note = svg.error.empty() ? grouped.truncation_note : svg.error;
-  std::string counts = std::to_string(grouped.step_situations) + " step situations (" +
-                       std::to_string(grouped.stable_situations) + " stable situations)";
+  std::string counts = std::to_string(grouped.step_situations) + " step situations, " +
+                       std::to_string(grouped.stable_situations) + " stable situations";
   report.situation_graph_note = counts + (report.situation_graph_note.empty() ? "" : "; ") +
                                 report.situation_graph_note;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -33,15 +34,20 @@ std::string check_html(const HtmlReport& report);
 std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures);
 
 /// The situation graph of a Grafcet system for a report: explored within kReportMaxSituations
-/// stable situations (a larger graph is not drawn and the note says so), grouped and laid out.
-void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts);
+/// stable situations (a larger graph is not drawn and the note says so), grouped and laid out:
+/// the first kReportMaxNodes step situations breadth-first and those in `keep`.
+void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep = {});
 inline constexpr std::uint64_t kReportMaxSituations = 100'000;
+inline constexpr std::size_t kReportMaxNodes = 40;  ///< step situations drawn on a report
 
 /// The report of `result` on `project`: the chart DOT laid out once by graphviz (a missing
 /// `dot` is said on the page), the node ids of `ts`'s steps and transitions, and for Grafcet
 /// the situation graph (add_situation_graph).
 /// The pictures of a report without a result: the chart, its node ids, the situation graph.
-HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts);
+/// `keep`: step situations to draw on the situation graph even beyond its cap.
+HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep = {});
 
 HtmlReport html_report(nlohmann::json result, const model::Project& project,
                        const semantics::TransitionSystem& ts);

@@ -58,7 +58,22 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
   }
   for (auto s : graph.initial_states()) groups[group_of[s]].initial = true;
   r.step_situations = groups.size();
-  r.shown = options.max_nodes == 0 ? groups.size() : std::min(groups.size(), options.max_nodes);
+  // The first max_nodes breadth-first, and every one the caller must see (a trace's).
+  std::vector<bool> drawn(groups.size(), false);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    std::set<std::string> names;
+    for (auto o : groups[i].steps) names.insert(obs[o].name);
+    std::string key;
+    for (const auto& n : names) key += (key.empty() ? "" : ",") + n;
+    const bool first = options.max_nodes == 0 || i < options.max_nodes;
+    const bool keep = options.keep.count(key) > 0;
+    if (!first && !keep) continue;
+    drawn[i] = true;
+    kept += !first;
+    r.node_ids[key] = "sg" + std::to_string(i);
+    ++r.shown;
+  }
 
   // Edges between distinct groups, each with the distinct sets of transitions fired (one line
   // per transition of a set, the transient situations crossed inside it; "or" between sets).
@@ -79,7 +94,8 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
   d << "digraph rsg {\n  id=\"situations\";\n  rankdir=TB;\n  nodesep=0.4;\n  ranksep=0.5;\n"
        "  node [shape=box, style=rounded, fontname=\"Helvetica\", fontsize=11];\n"
        "  edge [fontname=\"Helvetica\", fontsize=9];\n";
-  for (std::size_t i = 0; i < r.shown; ++i) {
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    if (!drawn[i]) continue;
     const auto& g = groups[i];
     std::string steps, emitted;
     for (auto o : g.steps) steps += (steps.empty() ? "" : ", ") + obs[o].name;
@@ -88,19 +104,13 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
     std::string label = "{" + steps + "}";
     if (!emitted.empty()) label += "\\n" + dot_escape(emitted);
     if (g.members > 1) label += "\\n" + std::to_string(g.members) + " stable situations";
-    std::set<std::string> names;
-    for (auto o : g.steps) names.insert(obs[o].name);
-    std::string key;
-    for (const auto& n : names) key += (key.empty() ? "" : ",") + n;
-    r.node_ids[key] = "sg" + std::to_string(i);
     d << "  g" << i << " [id=\"sg" << i << "\", label=\"" << label << "\""
       << (g.initial ? ", peripheries=2" : "") << "];\n";
     if (g.initial) d << "  init" << i << " [shape=point, label=\"\"];\n  init" << i << " -> g" << i << ";\n";
   }
   for (const auto& [key, firings] : edges) {
     const auto [from, to] = key;
-    if (from >= r.shown) continue;
-    if (to >= r.shown) continue;
+    if (!drawn[from] || !drawn[to]) continue;
     std::string label;
     std::size_t n = 0;
     for (const auto& f : firings) {
@@ -119,13 +129,14 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
       << " more step situations\\n(" << dot_escape(options.option_name) << ")\"];\n";
     std::set<std::size_t> sources;
     for (const auto& [key, firings] : edges)
-      if (key.first < r.shown && key.second >= r.shown) sources.insert(key.first);
+      if (drawn[key.first] && !drawn[key.second]) sources.insert(key.first);
     for (auto s : sources) d << "  g" << s << " -> omitted [id=\"so" << s << "\", style=dashed];\n";
-    r.truncation_note = "the graph has " + std::to_string(groups.size()) +
-                        " step situations; the first " + std::to_string(r.shown) +
-                        " (breadth-first) are drawn and " + std::to_string(r.omitted()) +
-                        " left out; " + options.option_name + " N draws N (" +
-                        options.option_name + " 0 every one)";
+    r.truncation_note = std::to_string(r.shown) + " of " + std::to_string(groups.size()) +
+                        " step situations are drawn (the first " +
+                        std::to_string(r.shown - kept) + " breadth-first" +
+                        (kept ? ", and " + std::to_string(kept) + " a trace visits" : "") + "), " +
+                        std::to_string(r.omitted()) + " left out; " + options.option_name +
+                        " N draws N, " + options.option_name + " 0 every one";
   }
   d << "}\n";
   r.dot = d.str();

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
 
 #include "engine/explicit/reachable_situation_graph.hpp"
@@ -16,6 +17,8 @@ namespace sfcv::report {
 struct SituationGraphOptions {
   std::size_t max_nodes = 60;  ///< step situations drawn (breadth-first order); 0: all of them
   std::string option_name = "--max-nodes";  ///< named in the truncation note
+  /// Step situations drawn beyond the cap (the ones a trace visits), as node_ids keys.
+  std::set<std::string> keep;
 };
 
 struct SituationGraphDot {
@@ -24,7 +27,7 @@ struct SituationGraphDot {
   std::size_t step_situations = 0;    ///< distinct sets of active steps among them
   std::size_t shown = 0;              ///< step situations drawn
   std::size_t edges = 0;              ///< edges drawn between step situations
-  /// Empty unless the cap left situations out: "the graph has 96 step situations; ...".
+  /// Empty unless the cap left situations out: "60 of 159 step situations are drawn ...".
   std::string truncation_note;
   /// DOT (and SVG) id of each drawn node ("sg3"), by its active steps' observable names,
   /// sorted and joined by ",": how a page finds a trace's situation.

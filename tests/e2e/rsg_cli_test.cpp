@@ -84,9 +84,8 @@ TEST(RsgCli, DotGroupsByStepSituationWithACap) {
   ASSERT_EQ(cut.exit_code, 0) << cut.err;
   EXPECT_EQ(situation_nodes(cut.out), 2u) << cut.out;
   EXPECT_NE(cut.out.find("3 more step situations"), std::string::npos) << cut.out;
-  EXPECT_NE(cut.err.find("sfcv rsg --dot: the graph has 5 step situations; the first 2 "
-                         "(breadth-first) are drawn and 3 left out; --max-nodes N draws N "
-                         "(--max-nodes 0 every one)"),
+  EXPECT_NE(cut.err.find("sfcv rsg --dot: 2 of 5 step situations are drawn (the first 2 "
+                         "breadth-first), 3 left out; --max-nodes N draws N, --max-nodes 0 every one"),
             std::string::npos)
       << cut.err;
 }

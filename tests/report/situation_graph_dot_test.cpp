@@ -56,13 +56,13 @@ TEST(SituationGraphDot, OneNodePerStepSituationWithItsFirings) {
 
 TEST(SituationGraphDot, CapDrawsTheFirstAndSaysHowManyAreLeftOut) {
   const auto built = build_rsg(ring(8));
-  const auto all = situation_graph_dot(built.graph, {0, "--max-nodes"});
+  const auto all = situation_graph_dot(built.graph, {0, "--max-nodes", {}});
   EXPECT_EQ(all.step_situations, 8u);
   EXPECT_EQ(all.shown, 8u);
   EXPECT_EQ(situation_nodes(all.dot), 8u);
   EXPECT_TRUE(all.truncation_note.empty());
 
-  const auto cut = situation_graph_dot(built.graph, {3, "--max-nodes"});
+  const auto cut = situation_graph_dot(built.graph, {3, "--max-nodes", {}});
   EXPECT_EQ(cut.shown, 3u);
   EXPECT_EQ(cut.omitted(), 5u);
   EXPECT_EQ(situation_nodes(cut.dot), 3u) << cut.dot;
@@ -70,8 +70,19 @@ TEST(SituationGraphDot, CapDrawsTheFirstAndSaysHowManyAreLeftOut) {
   EXPECT_NE(cut.dot.find("5 more step situations"), std::string::npos) << cut.dot;
   EXPECT_NE(cut.dot.find("g2 -> omitted"), std::string::npos) << cut.dot;
   EXPECT_EQ(cut.truncation_note,
-            "the graph has 8 step situations; the first 3 (breadth-first) are drawn and 5 left "
-            "out; --max-nodes N draws N (--max-nodes 0 every one)");
+            "3 of 8 step situations are drawn (the first 3 breadth-first), 5 left out; "
+            "--max-nodes N draws N, --max-nodes 0 every one");
+
+  // A situation a trace visits is drawn beyond the cap.
+  SituationGraphOptions keep{3, "--max-nodes", {"X6"}};
+  const auto kept = situation_graph_dot(built.graph, keep);
+  EXPECT_EQ(kept.shown, 4u);
+  EXPECT_EQ(situation_nodes(kept.dot), 4u);
+  ASSERT_TRUE(kept.node_ids.count("X6"));
+  EXPECT_NE(kept.dot.find("[id=\"" + kept.node_ids.at("X6") + "\", label=\"{X6}\""), std::string::npos) << kept.dot;
+  EXPECT_NE(kept.truncation_note.find("(the first 3 breadth-first, and 1 a trace visits), 4 left out"),
+            std::string::npos)
+      << kept.truncation_note;
 }
 
 }  // namespace
