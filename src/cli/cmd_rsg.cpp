@@ -156,6 +156,8 @@ int run_rsg(const RsgOptions& o) {
   }
 
   const bool single = sem == "grafcet" && !o.system.multi_input_change;
+  // A graph written to stdout is the whole output (dot reads it from a pipe).
+  const bool dot_to_stdout = o.dot == "-" || o.dot_states == "-";
   if (o.json) {
     nlohmann::json j;
     j["semantics"] = sem;
@@ -191,7 +193,7 @@ int run_rsg(const RsgOptions& o) {
                                 {"cycle", cycle}});
     }
     std::cout << j.dump(2) << "\n";
-  } else {
+  } else if (!dot_to_stdout || o.list) {
     std::cout << "semantics: " << sem
               << (sem == "grafcet"
                       ? (single ? " (IEC 60848, single input change)"
@@ -276,7 +278,7 @@ int run_rsg(const RsgOptions& o) {
     if (printed.insert(line).second) std::cerr << line << "\n";
   }
   if (!g.complete()) {
-    std::cout << "unknown: the " << g.limit_reached() << " limit was reached after "
+    (dot_to_stdout ? std::cerr : std::cout) << "unknown: the " << g.limit_reached() << " limit was reached after "
               << g.num_states() << " states; the graph is incomplete\n";
     return kUnknown;
   }

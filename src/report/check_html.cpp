@@ -53,6 +53,10 @@ std::string script_json(const json& j) {
   return out;
 }
 
+/// The one place the summary takes a property's English from: a "description" string of its
+/// result (e.g. a requirement pattern's text), shown under its name; empty when there is none.
+std::string description_of(const json& property) { return str(property, "description"); }
+
 std::string summary(const json& result) {
   std::string rows;
   const std::string engine = str(result, "engine");
@@ -85,7 +89,10 @@ std::string summary(const json& result) {
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
               escape(str(p["trace"], "kind")) + " (" + std::to_string(p["trace"]["steps"].size()) +
               " situations)</a>";
-    rows += "<tr><td class=\"name\">" + escape(str(p, "name")) + "</td><td><span class=\"verdict " + escape(cls) +
+    const std::string description = description_of(p);
+    rows += "<tr><td class=\"name\">" + escape(str(p, "name")) +
+            (description.empty() ? "" : "<div class=\"description\">" + escape(description) + "</div>") +
+            "</td><td><span class=\"verdict " + escape(cls) +
             "\">" + escape(verdict) + "</span></td><td>" + escape(engine) + "</td><td class=\"time\">" +
             seconds(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +

@@ -75,6 +75,7 @@ TEST(RsgCli, DotGroupsByStepSituationWithACap) {
   const auto pistons = source_path("examples/pistons/pistons.g7");
   const auto r = run_sfcv("rsg --dot - " + pistons);
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("digraph rsg {", 0), 0u) << r.out;  // the graph alone, for a pipe into dot
   EXPECT_EQ(situation_nodes(r.out), 5u) << r.out;
   EXPECT_NE(r.out.find("label=\"{X10, X20}\\n32 stable situations\", peripheries=2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("g1 -> g3 [id=\"se4\", label=\"(2) X11 -> X12\\l\"]"), std::string::npos) << r.out;
