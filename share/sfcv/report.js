@@ -11,12 +11,10 @@
     .map((p, i) => ({ property: p, index: i }))
     .filter((x) => x.property.trace && x.property.trace.steps.length > 0);
   const player = document.getElementById("player");
-  // The chart and the situation graph: fitted to their boxes; a click toggles the natural size.
+  // The chart and the situation graph come fitted to their boxes; a click toggles the natural size.
   ["chart-svg", "situations-svg"].forEach((id) => {
     const box = document.getElementById(id);
-    if (!box) return;
-    box.classList.add("fit");
-    box.addEventListener("click", () => box.classList.toggle("fit"));
+    if (box) box.addEventListener("click", () => box.classList.toggle("fit"));
   });
   const situations = document.getElementById("situations-svg");
   if (traces.length === 0) return;

@@ -116,7 +116,7 @@ std::string situation_graph_section(const HtmlReport& report) {
     out += "<p class=\"note" + std::string(report.situation_graph_svg.empty() ? " warn" : "") +
            "\" id=\"situations-note\">" + escape(report.situation_graph_note) + "</p>\n";
   if (!report.situation_graph_svg.empty())
-    out += "<div id=\"situations-svg\">\n" + report.situation_graph_svg + "\n</div>\n";
+    out += "<div id=\"situations-svg\" class=\"fit\">\n" + report.situation_graph_svg + "\n</div>\n";
   return out + "</section>\n";
 }
 
@@ -128,7 +128,8 @@ std::string page_head(const std::string& title) {
 }
 
 std::string chart_section(const HtmlReport& report) {
-  std::string out = "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\">\n";
+  // Fitted to their boxes; a click toggles the natural size (the pages' scripts).
+  std::string out = "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\" class=\"fit\">\n";
   out += report.chart_svg.empty() ? "<p class=\"note warn\">" + escape(report.chart_note) + "</p>\n"
                                   : report.chart_svg + "\n";
   return out + "</div>\n</section>\n";
@@ -303,6 +304,8 @@ std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures
          "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" + rows + "</table>\n";
   out += situation_graph_section(pictures);
   out += chart_section(pictures);
+  out += "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
+         "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
   return out + "</body>\n</html>\n";
 }
 

@@ -64,7 +64,7 @@ TEST(CheckHtml, SituationGraphSectionAndQueryPage) {
   r.situation_graph_note = "5 step situations, 96 stable situations";
   r.situation_node_ids["X10,X20"] = "sg0";
   const auto html = check_html(r);
-  EXPECT_NE(html.find("<div id=\"situations-svg\">\n<svg id=\"rsg\"></svg>"), std::string::npos);
+  EXPECT_NE(html.find("<div id=\"situations-svg\" class=\"fit\">\n<svg id=\"rsg\"></svg>"), std::string::npos);
   EXPECT_NE(html.find("5 step situations, 96 stable situations"), std::string::npos);
   EXPECT_NE(html.find("\"situations\":{\"X10,X20\":\"sg0\"}"), std::string::npos);
 

@@ -43,7 +43,6 @@ class Dom(HTMLParser):
         self.texts = {}   # key -> list of texts
         self.groups = []  # [(id, classes, [texts])] of the situation graph's <g> nodes
         self.rows = []    # query table rows: [[cell texts]]
-        self.in_situations = False
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
         classes = (a.get("class") or "").split()
@@ -56,10 +55,7 @@ class Dom(HTMLParser):
             self.rows[-1].append("")
     def handle_endtag(self, tag):
         while self.stack:
-            t, i, c = self.stack.pop()
-            if t == tag:
-                if tag == "g" and "node" in c and self.groups and self.groups[-1][0] == i:
-                    pass
+            if self.stack.pop()[0] == tag:
                 break
     def handle_data(self, data):
         tags = [t for t, _, _ in self.stack]
