@@ -374,7 +374,9 @@ class PatternReader {
                    " comes), " + sentence;
         break;
     }
-    sentence[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(sentence[0])));
+    // A sentence that starts with a word starts with a capital; one that starts with a name not.
+    if (!sentence.empty() && !(scope.kind == ScopeKind::Global && templ.starts_with("{")))
+      sentence[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(sentence[0])));
     sentence += ".";
 
     ParsedPattern out;
@@ -399,7 +401,7 @@ class PatternReader {
     const auto unit = view(trimmed({i, p.end}));
     std::int64_t count = n;
     if (unit == "cycle" || unit == "cycles") {
-      english = "within the next " + std::to_string(n) + (n == 1 ? " cycle" : " cycles");
+      english = n == 1 ? "within the next cycle" : "within the next " + std::to_string(n) + " cycles";
     } else if (unit == "ms" || unit == "s") {
       const std::int64_t ms = unit == "s" ? n * 1000 : n;
       if (!options_.cycle_ms || *options_.cycle_ms <= 0)
