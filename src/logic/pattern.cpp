@@ -42,23 +42,43 @@ const std::vector<PatternInfo> kCatalogue = {
     {"universality", "P", "{P} is always true", "AG P", true, false},
     {"existence", "P", "{P} becomes true", "AF P", true, false},
     {"precedence", "S, P", "{P} is never true before {S} is", "A[!P W S]", true, false},
-    {"response", "P, S", "whenever {P} is true, {S} is true then or later", "AG (P -> AF S)",
-     true, true},
+    {"response", "P, S", "whenever {P} is true, {S} is true then or later", "AG (P -> AF S)", true,
+     true},
 };
 
 // --- building CTL ---
 
-FormulaPtr op1(Op op, FormulaPtr a) { return make_op(op, {std::move(a)}); }
-FormulaPtr op2(Op op, FormulaPtr a, FormulaPtr b) { return make_op(op, {std::move(a), std::move(b)}); }
+FormulaPtr op1(Op op, FormulaPtr a) {
+  return make_op(op, {std::move(a)});
+}
+FormulaPtr op2(Op op, FormulaPtr a, FormulaPtr b) {
+  return make_op(op, {std::move(a), std::move(b)});
+}
 // !!x is x: the formulas stay as readable as the mappings they come from.
-FormulaPtr neg(FormulaPtr a) { return a->op == Op::Not ? a->args[0] : op1(Op::Not, std::move(a)); }
-FormulaPtr conj(FormulaPtr a, FormulaPtr b) { return op2(Op::And, std::move(a), std::move(b)); }
-FormulaPtr disj(FormulaPtr a, FormulaPtr b) { return op2(Op::Or, std::move(a), std::move(b)); }
-FormulaPtr imp(FormulaPtr a, FormulaPtr b) { return op2(Op::Implies, std::move(a), std::move(b)); }
-FormulaPtr AG(FormulaPtr a) { return op1(Op::AG, std::move(a)); }
-FormulaPtr AF(FormulaPtr a) { return op1(Op::AF, std::move(a)); }
-FormulaPtr AX(FormulaPtr a) { return op1(Op::AX, std::move(a)); }
-FormulaPtr AU(FormulaPtr a, FormulaPtr b) { return op2(Op::AU, std::move(a), std::move(b)); }
+FormulaPtr neg(FormulaPtr a) {
+  return a->op == Op::Not ? a->args[0] : op1(Op::Not, std::move(a));
+}
+FormulaPtr conj(FormulaPtr a, FormulaPtr b) {
+  return op2(Op::And, std::move(a), std::move(b));
+}
+FormulaPtr disj(FormulaPtr a, FormulaPtr b) {
+  return op2(Op::Or, std::move(a), std::move(b));
+}
+FormulaPtr imp(FormulaPtr a, FormulaPtr b) {
+  return op2(Op::Implies, std::move(a), std::move(b));
+}
+FormulaPtr AG(FormulaPtr a) {
+  return op1(Op::AG, std::move(a));
+}
+FormulaPtr AF(FormulaPtr a) {
+  return op1(Op::AF, std::move(a));
+}
+FormulaPtr AX(FormulaPtr a) {
+  return op1(Op::AX, std::move(a));
+}
+FormulaPtr AU(FormulaPtr a, FormulaPtr b) {
+  return op2(Op::AU, std::move(a), std::move(b));
+}
 // A[x W y] = (x U y) | G x on every path = !E[!y U (!x & !y)].
 FormulaPtr AW(const FormulaPtr& x, const FormulaPtr& y) {
   return neg(op2(Op::EU, neg(y), conj(neg(x), neg(y))));
@@ -102,14 +122,18 @@ FormulaPtr dwyer(std::string_view name, const std::vector<FormulaPtr>& a, const 
   const FormulaPtr P = name == "precedence" ? a[1] : a[0];
   const FormulaPtr S = name == "precedence" ? a[0] : (a.size() > 1 ? a[1] : nullptr);
   switch (s.kind) {
-    case ScopeKind::Global: return global(P, S);
-    case ScopeKind::Before: return up_to_r(P, S);
+    case ScopeKind::Global:
+      return global(P, S);
+    case ScopeKind::Before:
+      return up_to_r(P, S);
     case ScopeKind::After:
       // From the first Q on. For absence and universality, from every Q is the same.
       if (name == "absence" || name == "universality") return AG(imp(Q, global(P, S)));
       return AW(neg(Q), conj(Q, global(P, S)));
-    case ScopeKind::Between: return AG(imp(conj(Q, neg(R)), up_to_r(P, S)));
-    case ScopeKind::AfterUntil: return AG(imp(conj(Q, neg(R)), until_r(P, S)));
+    case ScopeKind::Between:
+      return AG(imp(conj(Q, neg(R)), up_to_r(P, S)));
+    case ScopeKind::AfterUntil:
+      return AG(imp(conj(Q, neg(R)), until_r(P, S)));
   }
   return nullptr;
 }
@@ -135,7 +159,9 @@ FormulaPtr within(const FormulaPtr& S, std::int64_t n) {
 
 // --- scanning the text ---
 
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
+bool ident_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+}
 
 struct Piece {
   std::size_t begin = 0, end = 0;  ///< offsets into the text
@@ -145,7 +171,10 @@ class PatternReader {
  public:
   PatternReader(std::string_view text, std::string source, const PatternOptions& options, int line,
                 int column)
-      : text_(blank_comments(text)), source_(std::move(source)), options_(options), line_(line),
+      : text_(blank_comments(text)),
+        source_(std::move(source)),
+        options_(options),
+        line_(line),
         column_(column) {}
 
   ParsedPattern read() {
@@ -203,7 +232,9 @@ class PatternReader {
     while (p.end > p.begin && std::isspace(static_cast<unsigned char>(text_[p.end - 1]))) --p.end;
     return p;
   }
-  std::string_view view(Piece p) const { return std::string_view(text_).substr(p.begin, p.end - p.begin); }
+  std::string_view view(Piece p) const {
+    return std::string_view(text_).substr(p.begin, p.end - p.begin);
+  }
 
   // The first word of `p` if it is one of the scope or bound keywords and something follows it
   // (`globally` stands alone); else empty.
@@ -255,7 +286,9 @@ class PatternReader {
     // name ( argument, ... )
     std::size_t i = skip_space(0);
     const std::size_t name_at = i;
-    while (i < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_')) ++i;
+    while (i < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[i])) || text_[i] == '_'))
+      ++i;
     const std::string name(view({name_at, i}));
     if (name.empty()) fail(name_at, "expected a pattern name, e.g. 'response(start, V1)'");
     const PatternInfo* info = nullptr;
@@ -288,7 +321,8 @@ class PatternReader {
     }
     i = skip_space(i + 1);
     if (i < text_.size() && text_[i] == ';') i = skip_space(i + 1);
-    if (i < text_.size()) fail(i, "unexpected '" + std::string(1, text_[i]) + "' after the pattern");
+    if (i < text_.size())
+      fail(i, "unexpected '" + std::string(1, text_[i]) + "' after the pattern");
     if (args.size() == 1 && trimmed(args[0]).begin == trimmed(args[0]).end) args.clear();
 
     // The last argument may be a scope or a bound.
@@ -305,14 +339,14 @@ class PatternReader {
     const std::size_t arity = (letters.size() + 2) / 3;  // "A", "A, B", "A, B, C"
     const std::string usage = name + "(" + letters +
                               (info->scoped && info->bounded ? "[, scope | within N cycles]"
-                               : info->scoped               ? "[, scope]"
-                                                            : "") +
+                               : info->scoped                ? "[, scope]"
+                                                             : "") +
                               ")";
     if (args.size() != arity)
       fail(args.size() > arity ? trimmed(args[arity]).begin : name_at,
            "pattern '" + std::string(info->name) + "' takes " + std::to_string(arity) +
-               (arity == 1 ? " argument" : " arguments") + ", found " + std::to_string(args.size()) +
-               ": " + usage);
+               (arity == 1 ? " argument" : " arguments") + ", found " +
+               std::to_string(args.size()) + ": " + usage);
     std::vector<FormulaPtr> values;
     for (std::size_t k = 0; k < args.size(); ++k)
       values.push_back(expression(args[k], "the argument " + std::string(1, letters[3 * k])));
@@ -350,8 +384,9 @@ class PatternReader {
     std::map<char, std::string> text_of;
     for (std::size_t k = 0; k < values.size(); ++k) text_of[letters[3 * k]] = to_string(values[k]);
     std::string sentence;
-    const std::string_view templ = bound_cycles ? std::string_view("whenever {P} is true, {S} is true then or")
-                                                : info->english;
+    const std::string_view templ =
+        bound_cycles ? std::string_view("whenever {P} is true, {S} is true then or")
+                     : info->english;
     for (std::size_t k = 0; k < templ.size(); ++k) {
       if (templ[k] == '{' && k + 2 < templ.size() && templ[k + 2] == '}') {
         sentence += text_of[templ[k + 1]];
@@ -363,9 +398,14 @@ class PatternReader {
     if (bound_cycles) sentence += " " + bound_english;
     const std::string q = scope.q ? to_string(scope.q) : "", r = scope.r ? to_string(scope.r) : "";
     switch (scope.kind) {
-      case ScopeKind::Global: break;
-      case ScopeKind::Before: sentence = "before the first " + r + " (if " + r + " comes), " + sentence; break;
-      case ScopeKind::After: sentence = "from the first " + q + " on, " + sentence; break;
+      case ScopeKind::Global:
+        break;
+      case ScopeKind::Before:
+        sentence = "before the first " + r + " (if " + r + " comes), " + sentence;
+        break;
+      case ScopeKind::After:
+        sentence = "from the first " + q + " on, " + sentence;
+        break;
       case ScopeKind::Between:
         sentence = "from each " + q + " up to the next " + r + " (if " + r + " comes), " + sentence;
         break;
@@ -401,18 +441,21 @@ class PatternReader {
     const auto unit = view(trimmed({i, p.end}));
     std::int64_t count = n;
     if (unit == "cycle" || unit == "cycles") {
-      english = n == 1 ? "within the next cycle" : "within the next " + std::to_string(n) + " cycles";
+      english =
+          n == 1 ? "within the next cycle" : "within the next " + std::to_string(n) + " cycles";
     } else if (unit == "ms" || unit == "s") {
       const std::int64_t ms = unit == "s" ? n * 1000 : n;
       if (!options_.cycle_ms || *options_.cycle_ms <= 0)
-        fail(p.begin, "a bound in time needs a cycle time: use --time discrete (and --cycle, "
-                      "10ms by default), or give the bound in cycles ('within N cycles')");
+        fail(p.begin,
+             "a bound in time needs a cycle time: use --time discrete (and --cycle, "
+             "10ms by default), or give the bound in cycles ('within N cycles')");
       count = ms / *options_.cycle_ms;
       english = "within " + std::to_string(n) + " " + std::string(unit) + " (the next " +
                 std::to_string(count) + (count == 1 ? " cycle" : " cycles") + " of " +
                 std::to_string(*options_.cycle_ms) + " ms)";
     } else {
-      fail(trimmed({i, p.end}).begin, "expected 'cycles', 'ms' or 's' after the number in 'within'");
+      fail(trimmed({i, p.end}).begin,
+           "expected 'cycles', 'ms' or 's' after the number in 'within'");
     }
     if (count > kMaxBoundCycles)
       fail(p.begin, "a bounded response is checked for at most " + std::to_string(kMaxBoundCycles) +
@@ -429,10 +472,12 @@ class PatternReader {
 
 }  // namespace
 
-const std::vector<PatternInfo>& pattern_catalogue() { return kCatalogue; }
+const std::vector<PatternInfo>& pattern_catalogue() {
+  return kCatalogue;
+}
 
-ParsedPattern parse_pattern(std::string_view text, std::string source, const PatternOptions& options,
-                            int line, int column) {
+ParsedPattern parse_pattern(std::string_view text, std::string source,
+                            const PatternOptions& options, int line, int column) {
   return PatternReader(text, std::move(source), options, line, column).read();
 }
 

@@ -83,84 +83,118 @@ END_PROGRAM
 // S2 & S3 is never true: a scope bound that never comes.
 TEST(PatternVerdicts, CycleTemplatesOnALine) {
   expect_verdicts(kLine, {
-      {"always(S0 | S1 | S2 | S3 | S4)", true}, {"always(S0)", false},
-      {"never(S2 & S3)", true}, {"never(S2)", false},
-      {"implies(S2, !S3)", true}, {"implies(S2, S3)", false},
-      {"next_cycle(S2, S3)", true}, {"next_cycle(S2, S4)", false},
-      {"between_cycles(S2, S3, !S1)", true}, {"between_cycles(S2, S3, S4)", false},
-      {"infinitely_often(S4)", true}, {"infinitely_often(S3)", false},
-      {"never_before(S3, S1)", true}, {"never_before(S1, S3)", false},
-      {"reachable(S3)", true}, {"reachable(S2 & S3)", false},
-      {"repeatable(S4)", true}, {"repeatable(S0)", false},
-      {"response(S1, S3, within 2 cycles)", true}, {"response(S1, S3, within 1 cycle)", false},
-      {"response(S0, S0, within 0 cycles)", true}, {"response(S0, S4, within 3 cycles)", false},
-  });
+                             {"always(S0 | S1 | S2 | S3 | S4)", true},
+                             {"always(S0)", false},
+                             {"never(S2 & S3)", true},
+                             {"never(S2)", false},
+                             {"implies(S2, !S3)", true},
+                             {"implies(S2, S3)", false},
+                             {"next_cycle(S2, S3)", true},
+                             {"next_cycle(S2, S4)", false},
+                             {"between_cycles(S2, S3, !S1)", true},
+                             {"between_cycles(S2, S3, S4)", false},
+                             {"infinitely_often(S4)", true},
+                             {"infinitely_often(S3)", false},
+                             {"never_before(S3, S1)", true},
+                             {"never_before(S1, S3)", false},
+                             {"reachable(S3)", true},
+                             {"reachable(S2 & S3)", false},
+                             {"repeatable(S4)", true},
+                             {"repeatable(S0)", false},
+                             {"response(S1, S3, within 2 cycles)", true},
+                             {"response(S1, S3, within 1 cycle)", false},
+                             {"response(S0, S0, within 0 cycles)", true},
+                             {"response(S0, S4, within 3 cycles)", false},
+                         });
 }
 
 TEST(PatternVerdicts, GlobalScopeOnALine) {
   expect_verdicts(kLine, {
-      {"absence(S2 & S3)", true}, {"absence(S2)", false},
-      {"universality(!(S2 & S3))", true}, {"universality(!S3)", false},
-      {"existence(S3)", true}, {"existence(S2 & S3)", false},
-      {"precedence(S1, S3)", true}, {"precedence(S3, S1)", false},
-      {"response(S1, S3)", true}, {"response(S4, S0)", false},
-      {"absence(S2, globally)", false},
-  });
+                             {"absence(S2 & S3)", true},
+                             {"absence(S2)", false},
+                             {"universality(!(S2 & S3))", true},
+                             {"universality(!S3)", false},
+                             {"existence(S3)", true},
+                             {"existence(S2 & S3)", false},
+                             {"precedence(S1, S3)", true},
+                             {"precedence(S3, S1)", false},
+                             {"response(S1, S3)", true},
+                             {"response(S4, S0)", false},
+                             {"absence(S2, globally)", false},
+                         });
 }
 
 TEST(PatternVerdicts, BeforeScopeOnALine) {
-  expect_verdicts(kLine, {
-      {"absence(S4, before S3)", true}, {"absence(S1, before S3)", false},
-      {"absence(S1, before S0)", true},       // the scope is empty: R at once
-      {"absence(S1, before S2 & S3)", true},  // R never comes: nothing is required
-      {"universality(!S3, before S3)", true}, {"universality(S0, before S2)", false},
-      {"existence(S1, before S3)", true}, {"existence(S4, before S3)", false},
-      {"existence(S4, before S2 & S3)", true},
-      {"precedence(S1, S2, before S3)", true}, {"precedence(S2, S1, before S3)", false},
-      {"precedence(S2, S1, before S1)", true},
-      {"response(S1, S2, before S3)", true}, {"response(S1, S3, before S3)", false},
-  });
+  expect_verdicts(kLine,
+                  {
+                      {"absence(S4, before S3)", true},
+                      {"absence(S1, before S3)", false},
+                      {"absence(S1, before S0)", true},       // the scope is empty: R at once
+                      {"absence(S1, before S2 & S3)", true},  // R never comes: nothing is required
+                      {"universality(!S3, before S3)", true},
+                      {"universality(S0, before S2)", false},
+                      {"existence(S1, before S3)", true},
+                      {"existence(S4, before S3)", false},
+                      {"existence(S4, before S2 & S3)", true},
+                      {"precedence(S1, S2, before S3)", true},
+                      {"precedence(S2, S1, before S3)", false},
+                      {"precedence(S2, S1, before S1)", true},
+                      {"response(S1, S2, before S3)", true},
+                      {"response(S1, S3, before S3)", false},
+                  });
 }
 
 TEST(PatternVerdicts, AfterScopeOnALine) {
   expect_verdicts(kLine, {
-      {"absence(S1, after S2)", true}, {"absence(S3, after S2)", false},
-      {"absence(S0, after S2 & S3)", true},  // Q never comes
-      {"universality(S3 | S4, after S3)", true}, {"universality(S3, after S3)", false},
-      {"existence(S4, after S3)", true}, {"existence(S1, after S2)", false},
-      {"precedence(S3, S4, after S2)", true}, {"precedence(S4, S3, after S2)", false},
-      {"response(S3, S4, after S2)", true}, {"response(S3, S1, after S2)", false},
-  });
+                             {"absence(S1, after S2)", true},
+                             {"absence(S3, after S2)", false},
+                             {"absence(S0, after S2 & S3)", true},  // Q never comes
+                             {"universality(S3 | S4, after S3)", true},
+                             {"universality(S3, after S3)", false},
+                             {"existence(S4, after S3)", true},
+                             {"existence(S1, after S2)", false},
+                             {"precedence(S3, S4, after S2)", true},
+                             {"precedence(S4, S3, after S2)", false},
+                             {"response(S3, S4, after S2)", true},
+                             {"response(S3, S1, after S2)", false},
+                         });
 }
 
 TEST(PatternVerdicts, BetweenScopeOnALine) {
-  expect_verdicts(kLine, {
-      {"absence(S4, between S1 and S3)", true}, {"absence(S2, between S1 and S3)", false},
-      {"absence(S2, between S1 and S2 & S3)", true},  // R never comes: no interval
-      {"universality(S1 | S2, between S1 and S3)", true},
-      {"universality(S1, between S1 and S3)", false},
-      {"existence(S2, between S1 and S3)", true}, {"existence(S4, between S1 and S3)", false},
-      {"existence(S4, between S1 and S2 & S3)", true},
-      {"precedence(S1, S2, between S1 and S3)", true},
-      {"precedence(S2, S1, between S0 and S3)", false},
-      {"response(S1, S2, between S0 and S3)", true}, {"response(S2, S4, between S1 and S3)", false},
-  });
+  expect_verdicts(kLine,
+                  {
+                      {"absence(S4, between S1 and S3)", true},
+                      {"absence(S2, between S1 and S3)", false},
+                      {"absence(S2, between S1 and S2 & S3)", true},  // R never comes: no interval
+                      {"universality(S1 | S2, between S1 and S3)", true},
+                      {"universality(S1, between S1 and S3)", false},
+                      {"existence(S2, between S1 and S3)", true},
+                      {"existence(S4, between S1 and S3)", false},
+                      {"existence(S4, between S1 and S2 & S3)", true},
+                      {"precedence(S1, S2, between S1 and S3)", true},
+                      {"precedence(S2, S1, between S0 and S3)", false},
+                      {"response(S1, S2, between S0 and S3)", true},
+                      {"response(S2, S4, between S1 and S3)", false},
+                  });
 }
 
 TEST(PatternVerdicts, AfterUntilScopeOnALine) {
   expect_verdicts(kLine, {
-      {"absence(S4, after S1 until S3)", true}, {"absence(S2, after S1 until S3)", false},
-      {"absence(S4, after S1 until S2 & S3)", false},  // R never comes: the scope lasts for ever
-      {"universality(S1 | S2, after S1 until S3)", true},
-      {"universality(S1 | S2, after S1 until S2 & S3)", false},
-      {"existence(S2, after S1 until S3)", true}, {"existence(S4, after S1 until S3)", false},
-      {"existence(S4, after S1 until S2 & S3)", true},
-      {"precedence(S1, S2, after S1 until S3)", true},
-      {"precedence(S2, S1, after S0 until S3)", false},
-      {"response(S1, S2, after S0 until S3)", true},
-      {"response(S2, S4, after S1 until S2 & S3)", true},
-      {"response(S2, S4, after S1 until S3)", false},
-  });
+                             {"absence(S4, after S1 until S3)", true},
+                             {"absence(S2, after S1 until S3)", false},
+                             {"absence(S4, after S1 until S2 & S3)",
+                              false},  // R never comes: the scope lasts for ever
+                             {"universality(S1 | S2, after S1 until S3)", true},
+                             {"universality(S1 | S2, after S1 until S2 & S3)", false},
+                             {"existence(S2, after S1 until S3)", true},
+                             {"existence(S4, after S1 until S3)", false},
+                             {"existence(S4, after S1 until S2 & S3)", true},
+                             {"precedence(S1, S2, after S1 until S3)", true},
+                             {"precedence(S2, S1, after S0 until S3)", false},
+                             {"response(S1, S2, after S0 until S3)", true},
+                             {"response(S2, S4, after S1 until S2 & S3)", true},
+                             {"response(S2, S4, after S1 until S3)", false},
+                         });
 }
 
 // Branching on an input: S0 waits for x, S1 moves on, S2 waits for x and returns to S0.
@@ -178,18 +212,25 @@ END_PROGRAM
 
 TEST(PatternVerdicts, BranchingLoop) {
   expect_verdicts(kLoop, {
-      {"existence(S1)", false},  // a run may wait in S0 for ever
-      {"reachable(S1)", true}, {"repeatable(S1)", true}, {"infinitely_often(S1)", false},
-      {"response(S1, S2, within 1 cycle)", true}, {"response(S0, S1)", false},
-      {"precedence(S1, S2)", true}, {"precedence(S2, S1)", false},
-      {"absence(S2, before S1)", true}, {"existence(S2, after S1)", true},
-      {"universality(S1 | S2, after S1 until S0)", true},
-      {"next_cycle(S1, S2)", true}, {"next_cycle(S0, S1)", false},
-      {"implies(rise(S1), prev(S0))", true},
-      {"implies(S1, x)", true},  // S1 is entered in a cycle that read x, and left in the next
-      {"implies(S2, x)", false},
-      {"never_before(S2, S1)", true},
-  });
+                             {"existence(S1)", false},  // a run may wait in S0 for ever
+                             {"reachable(S1)", true},
+                             {"repeatable(S1)", true},
+                             {"infinitely_often(S1)", false},
+                             {"response(S1, S2, within 1 cycle)", true},
+                             {"response(S0, S1)", false},
+                             {"precedence(S1, S2)", true},
+                             {"precedence(S2, S1)", false},
+                             {"absence(S2, before S1)", true},
+                             {"existence(S2, after S1)", true},
+                             {"universality(S1 | S2, after S1 until S0)", true},
+                             {"next_cycle(S1, S2)", true},
+                             {"next_cycle(S0, S1)", false},
+                             {"implies(rise(S1), prev(S0))", true},
+                             {"implies(S1, x)",
+                              true},  // S1 is entered in a cycle that read x, and left in the next
+                             {"implies(S2, x)", false},
+                             {"never_before(S2, S1)", true},
+                         });
 }
 
 // The BDD engine's traces on a chart without inputs (every hop has no input bits to pick).
@@ -203,11 +244,11 @@ TEST(PatternVerdicts, BddTracesOnAChartWithoutInputs) {
 }
 
 TEST(PatternVerdicts, EnginesAgreeOnRandomPatterns) {
-  static const char* unary[] = {"always", "never", "infinitely_often", "reachable", "repeatable",
-                                "absence", "universality", "existence"};
+  static const char* unary[] = {"always",     "never",   "infinitely_often", "reachable",
+                                "repeatable", "absence", "universality",     "existence"};
   static const char* binary[] = {"implies", "next_cycle", "never_before", "precedence", "response"};
-  static const char* scopes[] = {"", ", before R", ", after Q", ", between Q and R",
-                                 ", after Q until R", ", within 2 cycles"};
+  static const char* scopes[] = {
+      "", ", before R", ", after Q", ", between Q and R", ", after Q until R", ", within 2 cycles"};
   int verdicts = 0, holds = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -236,7 +277,8 @@ TEST(PatternVerdicts, EnginesAgreeOnRandomPatterns) {
       const std::string name = two ? binary[rng() % 5] : unary[rng() % 8];
       const bool scoped = name == "absence" || name == "universality" || name == "existence" ||
                           name == "precedence" || name == "response";
-      if (!scoped || (scope.find("within") != std::string::npos && name != "response")) scope.clear();
+      if (!scoped || (scope.find("within") != std::string::npos && name != "response"))
+        scope.clear();
       scope = with(with(scope, "R", atom()), "Q", atom());  // R first: names contain R
       patterns.push_back(name + "(" + atom() + (two ? ", " + atom() : "") + scope + ")");
     }
