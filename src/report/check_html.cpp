@@ -72,6 +72,7 @@ std::string summary(const json& result) {
       what = "<code>" + escape(str(p, "formula")) + "</code> " + escape(what);
     else
       what = escape(what);
+    if (p.contains("description")) what = escape(str(p, "description")) + " " + what;
     // Two findings in the table, the rest folded away.
     std::string findings, more;
     std::size_t n = 0;
