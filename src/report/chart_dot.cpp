@@ -6,6 +6,7 @@
 #include "logic/standard_checks.hpp"
 #include "model/expr.hpp"
 #include "model/names.hpp"
+#include "report/markup.hpp"
 
 namespace sfcv::report {
 
@@ -20,20 +21,6 @@ std::string escape(const std::string& s) {
       continue;
     }
     r += c;
-  }
-  return r;
-}
-
-std::string html_escape(const std::string& s) {
-  std::string r;
-  for (char c : s) {
-    switch (c) {
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '&': r += "&amp;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += c;
-    }
   }
   return r;
 }

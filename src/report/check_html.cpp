@@ -5,6 +5,7 @@
 
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "report/graphviz_svg.hpp"
+#include "report/markup.hpp"
 #include "report/report_assets.hpp"
 #include "report/situation_graph_dot.hpp"
 
@@ -13,20 +14,6 @@ namespace sfcv::report {
 namespace {
 
 using nlohmann::json;
-
-std::string escape(const std::string& s) {
-  std::string r;
-  for (char c : s) {
-    switch (c) {
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '&': r += "&amp;"; break;
-      case '"': r += "&quot;"; break;
-      default: r += c;
-    }
-  }
-  return r;
-}
 
 std::string str(const json& j, const char* key) {
   return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
@@ -69,15 +56,15 @@ std::string summary(const json& result) {
       if (c == ' ') c = '-';
     std::string what = str(p, "message");
     if (p["kind"] == "property" && str(p, "formula") != str(p, "name"))
-      what = "<code>" + escape(str(p, "formula")) + "</code> " + escape(what);
+      what = "<code>" + html_escape(str(p, "formula")) + "</code> " + html_escape(what);
     else
-      what = escape(what);
-    if (p.contains("description")) what = escape(str(p, "description")) + " " + what;
+      what = html_escape(what);
+    if (p.contains("description")) what = html_escape(str(p, "description")) + " " + what;
     // Two findings in the table, the rest folded away.
     std::string findings, more;
     std::size_t n = 0;
     for (const auto& f : p["findings"])
-      (n++ < 2 ? findings : more) += "<li>" + escape(f.get<std::string>()) + "</li>";
+      (n++ < 2 ? findings : more) += "<li>" + html_escape(f.get<std::string>()) + "</li>";
     if (!more.empty())
       findings += "<li><details><summary>" + std::to_string(n - 2) + " more</summary><ul>" + more +
                   "</ul></details></li>";
@@ -88,13 +75,13 @@ std::string summary(const json& result) {
     std::string trace;
     if (p["trace"].is_object())
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
-              escape(str(p["trace"], "kind")) + " (" + std::to_string(p["trace"]["steps"].size()) +
+              html_escape(str(p["trace"], "kind")) + " (" + std::to_string(p["trace"]["steps"].size()) +
               " situations)</a>";
     const std::string description = description_of(p);
-    rows += "<tr><td class=\"name\">" + escape(str(p, "name")) +
-            (description.empty() ? "" : "<div class=\"description\">" + escape(description) + "</div>") +
-            "</td><td><span class=\"verdict " + escape(cls) +
-            "\">" + escape(verdict) + "</span></td><td>" + escape(engine) + "</td><td class=\"time\">" +
+    rows += "<tr><td class=\"name\">" + html_escape(str(p, "name")) +
+            (description.empty() ? "" : "<div class=\"description\">" + html_escape(description) + "</div>") +
+            "</td><td><span class=\"verdict " + html_escape(cls) +
+            "\">" + html_escape(verdict) + "</span></td><td>" + html_escape(engine) + "</td><td class=\"time\">" +
             seconds(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +
             trace + "</td></tr>\n";
@@ -115,7 +102,7 @@ std::string situation_graph_section(const HtmlReport& report) {
       "with ? is emitted in some of the node's stable situations only.</p>\n";
   if (!report.situation_graph_note.empty())
     out += "<p class=\"note" + std::string(report.situation_graph_svg.empty() ? " warn" : "") +
-           "\" id=\"situations-note\">" + escape(report.situation_graph_note) + "</p>\n";
+           "\" id=\"situations-note\">" + html_escape(report.situation_graph_note) + "</p>\n";
   if (!report.situation_graph_svg.empty())
     out += "<div id=\"situations-svg\" class=\"fit\">\n" + report.situation_graph_svg + "\n</div>\n";
   return out + "</section>\n";
@@ -124,14 +111,14 @@ std::string situation_graph_section(const HtmlReport& report) {
 std::string page_head(const std::string& title) {
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         escape(title) + "</title>\n<style>\n" + std::string(report_style()) +
+         html_escape(title) + "</title>\n<style>\n" + std::string(report_style()) +
          "</style>\n</head>\n<body>\n";
 }
 
 std::string chart_section(const HtmlReport& report) {
   // Fitted to their boxes; a click toggles the natural size (the pages' scripts).
   std::string out = "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\" class=\"fit\">\n";
-  out += report.chart_svg.empty() ? "<p class=\"note warn\">" + escape(report.chart_note) + "</p>\n"
+  out += report.chart_svg.empty() ? "<p class=\"note warn\">" + html_escape(report.chart_note) + "</p>\n"
                                   : report.chart_svg + "\n";
   return out + "</div>\n</section>\n";
 }
@@ -145,11 +132,11 @@ std::string query_row(const json& q) {
   if (sort == "test") {
     answer = q.value("value", false) ? "true" : "false";
     if (q.contains("count"))
-      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " + escape(str(q, "witness_sort"));
+      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " + html_escape(str(q, "witness_sort"));
   } else if (sort == "number") {
     answer = std::to_string(q["value"].get<std::int64_t>());
   } else {
-    answer = std::to_string(q.value("count", 0ULL)) + " " + escape(sort);
+    answer = std::to_string(q.value("count", 0ULL)) + " " + html_escape(sort);
   }
   std::string shown, more;
   std::size_t n = 0;
@@ -157,7 +144,7 @@ std::string query_row(const json& q) {
     for (const auto& e : q["elements"]) {
       if (n == kListed) break;
       const std::string text = e.is_string() ? e.get<std::string>() : str(e, "text");
-      (n++ < kShown ? shown : more) += "<li><code>" + escape(text) + "</code></li>";
+      (n++ < kShown ? shown : more) += "<li><code>" + html_escape(text) + "</code></li>";
     }
   const std::size_t total = q.contains("elements") ? q["elements"].size() : 0;
   if (total > kListed)
@@ -167,9 +154,9 @@ std::string query_row(const json& q) {
     shown += "<li><details><summary>" + std::to_string(total - kShown) + " more</summary><ul>" +
              more + "</ul></details></li>";
   const std::string verdict = str(q, "verdict");
-  return "<tr class=\"query\"><td class=\"name\"><code>" + escape(str(q, "query")) +
+  return "<tr class=\"query\"><td class=\"name\"><code>" + html_escape(str(q, "query")) +
          "</code></td><td class=\"answer\">" + answer + "</td><td>" +
-         (verdict.empty() ? "" : "<span class=\"verdict " + escape(verdict) + "\">" + escape(verdict) + "</span>") +
+         (verdict.empty() ? "" : "<span class=\"verdict " + html_escape(verdict) + "\">" + html_escape(verdict) + "</span>") +
          "</td><td>" + (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") + "</td></tr>\n";
 }
 
@@ -240,13 +227,13 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
 std::string check_html(const HtmlReport& report) {
   const auto& r = report.result;
   const std::string model = str(r, "model");
-  std::string meta = escape(str(r, "semantics")) + " semantics &middot; " + escape(str(r, "engine")) +
+  std::string meta = html_escape(str(r, "semantics")) + " semantics &middot; " + html_escape(str(r, "engine")) +
                      " engine &middot; " + std::to_string(r.value("states", 0ULL)) + " states";
   if (r.contains("edges") && r["edges"].is_number())
     meta += " &middot; " + std::to_string(r["edges"].get<std::uint64_t>()) + " edges";
   meta += " &middot; " + seconds(r["seconds"]);
   if (r.contains("complete") && !r["complete"].get<bool>())
-    meta += " &middot; <strong>incomplete: the " + escape(str(r, "limit")) + " limit was reached</strong>";
+    meta += " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) + " limit was reached</strong>";
 
   json nodes;
   nodes["steps"] = report.node_ids.steps;
@@ -257,7 +244,7 @@ std::string check_html(const HtmlReport& report) {
   data["nodes"] = nodes;
 
   std::string out = page_head("sfcv report: " + model);
-  out += "<h1>sfcv check: " + escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
+  out += "<h1>sfcv check: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
   out += "<h2>Properties and standard checks</h2>\n" + summary(r);
   out += "<div class=\"layout\">\n" + chart_section(report);
   out += R"html(<section id="player" hidden>
@@ -285,13 +272,13 @@ std::string check_html(const HtmlReport& report) {
 
 std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures) {
   const std::string model = str(answers, "model");
-  std::string meta = escape(str(answers, "semantics")) + " semantics";
+  std::string meta = html_escape(str(answers, "semantics")) + " semantics";
   if (answers.contains("graph")) {
     const auto& g = answers["graph"];
     meta += " &middot; " + std::to_string(g.value("situations", 0ULL)) + " situations &middot; " +
             std::to_string(g.value("evolutions", 0ULL)) + " evolutions";
     if (!g.value("complete", true))
-      meta += " &middot; <strong>incomplete: the " + escape(str(g, "limit")) +
+      meta += " &middot; <strong>incomplete: the " + html_escape(str(g, "limit")) +
               " limit was reached; the sets may be wrong in both directions</strong>";
     if (g.value("anomalies", 0ULL) > 0)
       meta += " &middot; <strong>" + std::to_string(g["anomalies"].get<std::uint64_t>()) +
@@ -300,7 +287,7 @@ std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures
   std::string rows;
   for (const auto& q : answers["queries"]) rows += query_row(q);
   std::string out = page_head("sfcv query: " + model);
-  out += "<h1>sfcv query: " + escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
+  out += "<h1>sfcv query: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
   out += "<h2>Query answers</h2>\n<table class=\"summary\" id=\"query-table\">\n<tr><th>query</th>"
          "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" + rows + "</table>\n";
   out += situation_graph_section(pictures);

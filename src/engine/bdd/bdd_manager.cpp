@@ -268,6 +268,34 @@ int Bdd::value_in_cube(int var) const {
 }
 double Bdd::sat_count_log2(const Bdd& vars) const { return bdd_satcountlnset(root_, vars.root_); }
 
+namespace {
+
+/// Calls `combine(n, low, high)` once for every internal node below `root`, children first,
+/// with an explicit stack (a BDD may be deeper than the call stack); `combine` stores n's value
+/// in `memo` and returns false to stop the walk.
+template <typename T, typename Combine>
+void fold_post_order(int root, std::unordered_map<int, T>& memo, Combine&& combine) {
+  std::vector<int> stack{root};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    if (n <= 1 || memo.count(n)) {
+      stack.pop_back();
+      continue;
+    }
+    const int lo = bdd_low(n), hi = bdd_high(n);
+    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
+    if (!lo_done || !hi_done) {
+      if (!lo_done) stack.push_back(lo);
+      if (!hi_done) stack.push_back(hi);
+      continue;
+    }
+    if (!combine(n, lo, hi)) return;
+    stack.pop_back();
+  }
+}
+
+}  // namespace
+
 std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) const {
   // below[l]: how many counted variables lie above level l. count(n) counts the assignments of
   // the counted variables at or below n's level; a skipped counted variable doubles it.
@@ -290,27 +318,14 @@ std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) co
     return c << skipped;
   };
   std::unordered_map<int, Wide> memo;
-  std::vector<int> stack{root_};
-  while (!stack.empty() && !overflow) {
-    const int n = stack.back();
-    if (n <= 1 || memo.count(n)) {
-      stack.pop_back();
-      continue;
-    }
-    const int lo = bdd_low(n), hi = bdd_high(n);
-    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
-    if (!lo_done || !hi_done) {
-      if (!lo_done) stack.push_back(lo);
-      if (!hi_done) stack.push_back(hi);
-      continue;
-    }
-    auto value = [&](int c) -> Wide { return c <= 1 ? Wide(c) : memo[c]; };
+  auto value = [&](int c) -> Wide { return c <= 1 ? Wide(c) : memo[c]; };
+  fold_post_order(root_, memo, [&](int n, int lo, int hi) {
     const int l = level(n);
     const Wide sum = scale(value(lo), l + 1, level(lo)) + scale(value(hi), l + 1, level(hi));
     if (sum > limit) overflow = true;
     memo[n] = sum;
-    stack.pop_back();
-  }
+    return !overflow;
+  });
   if (overflow) return std::nullopt;
   const Wide top = root_ <= 1 ? Wide(root_) : memo[root_];
   const Wide total = scale(top, 0, level(root_));
@@ -332,26 +347,13 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
   };
   std::unordered_map<int, logic::BigCount> memo;
   auto value = [&](int c) { return c <= 1 ? logic::BigCount(static_cast<std::uint64_t>(c)) : memo.at(c); };
-  std::vector<int> stack{root_};
-  while (!stack.empty()) {
-    const int n = stack.back();
-    if (n <= 1 || memo.count(n)) {
-      stack.pop_back();
-      continue;
-    }
-    const int lo = bdd_low(n), hi = bdd_high(n);
-    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
-    if (!lo_done || !hi_done) {
-      if (!lo_done) stack.push_back(lo);
-      if (!hi_done) stack.push_back(hi);
-      continue;
-    }
+  fold_post_order(root_, memo, [&](int n, int lo, int hi) {
     const int l = level(n);
     auto sum = scale(value(lo), l + 1, level(lo));
     sum += scale(value(hi), l + 1, level(hi));
     memo.emplace(n, std::move(sum));
-    stack.pop_back();
-  }
+    return true;
+  });
   return scale(value(root_), 0, level(root_));
 }
 

@@ -24,6 +24,19 @@ void sort_by_id(QueryListing& l) {
   std::sort(l.edges.begin(), l.edges.end(), [](auto& a, auto& b) { return a.id < b.id; });
 }
 
+/// An evaluator's result (explicit bitsets or BDD sets) with its sets listed by `listing`.
+template <typename Result, typename Listing>
+QueryAnswer to_answer(const Result& r, Listing&& listing) {
+  QueryAnswer a;
+  a.sort = r.sort;
+  a.truth = r.truth;
+  a.number = r.number;
+  if (r.sort != logic::Sort::Bool && r.sort != logic::Sort::Int) a.set = listing(r.sort, r.set);
+  a.witness_sort = r.witness_sort;
+  if (r.witness_sort) a.witness = listing(*r.witness_sort, r.witness);
+  return a;
+}
+
 /// The explicit engine: the RSG, bitsets, listings in canonical order.
 class ExplicitQueryService final : public QueryService {
  public:
@@ -41,15 +54,9 @@ class ExplicitQueryService final : public QueryService {
   const ReachableSituationGraph& situation_graph() const { return graph_; }
 
   QueryAnswer answer(const logic::CompiledQuery& q) override {
-    const QueryResult r = ev_.evaluate(q);
-    QueryAnswer a;
-    a.sort = r.sort;
-    a.truth = r.truth;
-    a.number = r.number;
-    if (r.sort != logic::Sort::Bool && r.sort != logic::Sort::Int) a.set = listing(r.sort, r.set);
-    a.witness_sort = r.witness_sort;
-    if (r.witness_sort) a.witness = listing(*r.witness_sort, r.witness);
-    return a;
+    return to_answer(ev_.evaluate(q), [this](logic::Sort sort, const auto& set) {
+      return listing(sort, set);
+    });
   }
 
  private:
@@ -98,15 +105,9 @@ class SymbolicQueryService final : public QueryService {
   const logic::QueryGraphSummary& graph() const override { return summary_; }
 
   QueryAnswer answer(const logic::CompiledQuery& q) override {
-    const auto r = ev_.evaluate(q);
-    QueryAnswer a;
-    a.sort = r.sort;
-    a.truth = r.truth;
-    a.number = r.number;
-    if (r.sort != logic::Sort::Bool && r.sort != logic::Sort::Int) a.set = listing(r.sort, r.set);
-    a.witness_sort = r.witness_sort;
-    if (r.witness_sort) a.witness = listing(*r.witness_sort, r.witness);
-    return a;
+    return to_answer(ev_.evaluate(q), [this](logic::Sort sort, const auto& set) {
+      return listing(sort, set);
+    });
   }
 
  private:

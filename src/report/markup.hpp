@@ -1,0 +1,12 @@
+#pragma once
+// Escaping shared by the writers of markup: the HTML report, graphviz HTML-like labels.
+
+#include <string>
+#include <string_view>
+
+namespace sfcv::report {
+
+/// `<`, `>`, `&` and `"` as character references: safe in HTML text and attribute values.
+std::string html_escape(std::string_view s);
+
+}  // namespace sfcv::report
