@@ -17,4 +17,14 @@ std::string html_escape(std::string_view s) {
   return r;
 }
 
+std::string dot_escape(std::string_view s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 }  // namespace sfcv::report

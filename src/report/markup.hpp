@@ -9,4 +9,7 @@ namespace sfcv::report {
 /// `<`, `>`, `&` and `"` as character references: safe in HTML text and attribute values.
 std::string html_escape(std::string_view s);
 
+/// `"` and `\` backslash-escaped: the inside of a quoted DOT string.
+std::string dot_escape(std::string_view s);
+
 }  // namespace sfcv::report

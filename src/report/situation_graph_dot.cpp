@@ -5,18 +5,11 @@
 #include <sstream>
 #include <vector>
 
+#include "report/markup.hpp"
+
 namespace sfcv::report {
 
 namespace {
-
-std::string dot_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out;
-}
 
 /// One node of the grouped graph: a set of active steps and what its stable situations emit.
 struct Group {
