@@ -40,6 +40,7 @@ struct CheckOptions {
   std::string model;
   std::string format = "auto";
   std::vector<std::string> ctl;
+  std::vector<std::string> ltl;
   std::string spec;
   std::string checks;  ///< empty: all when no property is given, else none
   std::vector<std::string> fair;
@@ -189,7 +190,7 @@ int run_check(const CheckOptions& o) {
   const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
-                            o.assume};
+                            o.assume, o.ltl};
   auto parsed = logic::parse_check_inputs(inputs);
   print_diagnostics(parsed.diagnostics, "errors in the properties");
   const bool has_properties = !parsed.spec.properties.empty();
@@ -309,6 +310,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
+  sub->add_option("--ltl", opts->ltl,
+                  "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
   sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;', 'fair e;'");
   std::string names;
   for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);

@@ -35,6 +35,15 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
       out.spec.properties.push_back(std::move(nf));
     }
   }
+  for (const auto& text : in.ltl) {
+    auto r = parse_ltl(text, option_source("--ltl", text));
+    append(std::move(r.diagnostics));
+    if (r.formula) {
+      NamedFormula nf{text, r.formula, {}};
+      nf.where.file = "--ltl";
+      out.spec.properties.push_back(std::move(nf));
+    }
+  }
   for (const auto& text : in.fair) {
     auto r = parse_propositional(text, option_source("--fair", text));
     append(std::move(r.diagnostics));
@@ -67,6 +76,7 @@ std::vector<model::ExprPtr> assumption_exprs(const Spec& spec) {
 void resolve_into(const Spec& spec, const semantics::TransitionSystem& ts, CheckTask& task,
                   model::Diagnostics& diagnostics) {
   auto source = [](const NamedFormula& nf) {
+    if (nf.where.file == "--ltl") return "--ltl '" + nf.name + "'";
     return nf.where.file.empty() || nf.where.file == "--ctl" ? "--ctl '" + nf.name + "'"
                                                              : nf.where.file;
   };

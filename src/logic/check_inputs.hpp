@@ -19,6 +19,7 @@ struct CheckInputs {
   std::string spec_file;             ///< its name, for diagnostics
   std::vector<std::string> fair;     ///< --fair
   std::vector<std::string> assume;   ///< --assume
+  std::vector<std::string> ltl;      ///< --ltl formulas
 };
 
 struct ParsedInputs {
@@ -26,7 +27,7 @@ struct ParsedInputs {
   model::Diagnostics diagnostics;
 };
 
-/// Parses everything; properties from --ctl are named by their text.
+/// Parses everything; properties from --ctl and --ltl are named by their text.
 ParsedInputs parse_check_inputs(const CheckInputs& in);
 
 /// The assumptions as chart expressions, for semantics::*Options::assumptions.
