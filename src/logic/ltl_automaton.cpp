@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "logic/formula.hpp"
@@ -28,13 +29,13 @@ class Nnf {
     if (is_propositional(*f)) {
       if (f->op == Op::True || f->op == Op::False)
         return make((f->op == Op::True) != negated ? Kind::True : Kind::False);
-      const auto key = std::make_pair(f.get(), negated);
+      // Keyed by text: `a & !a` parses `a` twice, and equal text resolves to one observable.
+      const auto key = std::make_pair(to_string(*f), negated);
       if (auto it = leaves_.find(key); it != leaves_.end()) return it->second;
       NnfNode n;
       n.kind = Kind::Leaf;
       n.leaf = negated ? make_not(f) : f;
       nodes_.push_back(std::move(n));
-      keep_.push_back(f);
       const int id = static_cast<int>(nodes_.size() - 1);
       leaves_.emplace(key, id);
       return id;
@@ -113,8 +114,7 @@ class Nnf {
 
   std::vector<NnfNode> nodes_;
   std::map<std::tuple<Kind, int, int>, int> ids_;
-  std::map<std::pair<const Formula*, bool>, int> leaves_;
-  std::vector<FormulaPtr> keep_;  ///< keeps the leaves' keys alive
+  std::map<std::pair<std::string, bool>, int> leaves_;
 };
 
 using IdSet = std::set<int>;
