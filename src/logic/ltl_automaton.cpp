@@ -26,6 +26,7 @@ struct NnfNode {
 class Nnf {
  public:
   int of(const FormulaPtr& f, bool negated) {
+    if (f->op == Op::Not) return of(f->args[0], !negated);  // so that !a is a's complement
     if (is_propositional(*f)) {
       if (f->op == Op::True || f->op == Op::False)
         return make((f->op == Op::True) != negated ? Kind::True : Kind::False);
