@@ -247,6 +247,10 @@ TEST(LtlChecker, LimitsGiveUnknown) {
   budget.max_states = 3;
   const auto r = check(s, {}, {"G F S1"}, {}, budget);
   EXPECT_NE(r.results[0].verdict, logic::Verdict::Holds);
+  model::Budget memory;
+  memory.max_memory_bytes = 1;
+  const auto m = check(s, {}, {"G F S1"}, {}, memory);
+  EXPECT_EQ(m.results[0].verdict, logic::Verdict::Unknown);
   const auto ok = check(s, {}, {"G TRUE"}, {}, budget);
   EXPECT_EQ(ok.results[0].verdict, logic::Verdict::Unknown);
   model::Budget past = model::Budget::with_timeout(1e-9);

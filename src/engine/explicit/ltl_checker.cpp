@@ -89,9 +89,12 @@ class Product {
     auto [it, fresh] = ids_.try_emplace(key, static_cast<std::uint32_t>(pairs_.size()));
     if (fresh) {
       pairs_.emplace_back(s, q);
-      if (budget_.max_states > 0 && pairs_.size() > budget_.max_states)
-        throw LimitReached(Limit::States, "the LTL product exceeded " +
-                                              std::to_string(budget_.max_states) + " states");
+      // --max-states bounds the graph, and so the product (at most states x nodes); memory is
+      // what the product can still exhaust (a pair, its hash entry and the search's arrays).
+      constexpr std::uint64_t kBytesPerPair = 64;
+      if (budget_.max_memory_bytes > 0 && pairs_.size() * kBytesPerPair > budget_.max_memory_bytes)
+        throw LimitReached(Limit::Memory, "the LTL product exceeded the memory limit at " +
+                                              std::to_string(pairs_.size()) + " states");
     }
     return it->second;
   }

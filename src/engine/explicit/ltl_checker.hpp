@@ -19,8 +19,8 @@
 namespace sfcv::engine {
 
 /// Verdict and counterexample of the LTL property `p` on `checker`'s graph; `fairness` are the
-/// task's (resolved, propositional) fairness constraints. Limits of `budget` (time, and
-/// max_states for the product's states) end in LimitReached.
+/// task's (resolved, propositional) fairness constraints. The budget's time and memory limits
+/// end in LimitReached (the graph was built within its state limit).
 logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
                                 const std::vector<logic::FormulaPtr>& fairness,
                                 const model::Budget& budget);
