@@ -43,7 +43,8 @@ class Nnf {
     }
     const auto& x = f->args;
     switch (f->op) {
-      case Op::Not: return of(x[0], !negated);
+      case Op::Not:
+        return of(x[0], !negated);
       case Op::And:
         return make(negated ? Kind::Or : Kind::And, of(x[0], negated), of(x[1], negated));
       case Op::Or:
@@ -58,7 +59,8 @@ class Nnf {
         return make(Kind::Or, make(Kind::And, of(x[0], false), of(x[1], !same)),
                     make(Kind::And, of(x[0], true), of(x[1], same)));
       }
-      case Op::X: return make(Kind::Next, of(x[0], negated));
+      case Op::X:
+        return make(Kind::Next, of(x[0], negated));
       case Op::F:  // F a = true U a;  !F a = false R !a
         return negated ? make(Kind::Release, make(Kind::False), of(x[0], true))
                        : make(Kind::Until, make(Kind::True), of(x[0], false));

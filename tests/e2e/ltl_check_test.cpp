@@ -33,8 +33,10 @@ TEST(LtlCheck, JsonHasTheLoopStart) {
 }
 
 TEST(LtlCheck, SpecFileForm) {
-  const auto spec = write_temp("ltl fills: G (V1 -> F !V1);\nfair LIS1plus;\n"
-                               "property safe: AG !(V1 & V3);\n", ".spec");
+  const auto spec = write_temp(
+      "ltl fills: G (V1 -> F !V1);\nfair LIS1plus;\n"
+      "property safe: AG !(V1 & V3);\n",
+      ".spec");
   auto r = run_sfcv("check " + kPlant + " --spec '" + spec + "'");
   EXPECT_NE(r.out.find("fills"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.out.find("holds"), std::string::npos) << r.out;

@@ -42,18 +42,30 @@ class LtlGenerator {
   std::string ltl(int depth) {
     if (depth == 0) return (pick(2) ? "F " : "G ") + prop(1);  // temporal at the top
     switch (pick(12)) {
-      case 0: return "G (" + prop(1) + " -> F " + prop(1) + ")";
-      case 1: return "G F " + prop(1);
-      case 2: return "F G " + prop(1);
-      case 3: return "G " + prop(2);
-      case 4: return "(" + prop(1) + " W " + prop(1) + ")";
-      case 5: return "!(" + ltl(depth - 1) + ")";
-      case 6: return "G (" + prop(1) + " -> (" + ltl(depth - 1) + "))";
-      case 7: return "(" + ltl(depth - 1) + " U " + ltl(depth - 1) + ")";
-      case 8: return "(" + ltl(depth - 1) + " R " + ltl(depth - 1) + ")";
-      case 9: return "(" + ltl(depth - 1) + (pick(2) ? " & " : " | ") + ltl(depth - 1) + ")";
-      case 10: return "F (" + ltl(depth - 1) + ")";
-      default: return "G (" + ltl(depth - 1) + ")";
+      case 0:
+        return "G (" + prop(1) + " -> F " + prop(1) + ")";
+      case 1:
+        return "G F " + prop(1);
+      case 2:
+        return "F G " + prop(1);
+      case 3:
+        return "G " + prop(2);
+      case 4:
+        return "(" + prop(1) + " W " + prop(1) + ")";
+      case 5:
+        return "!(" + ltl(depth - 1) + ")";
+      case 6:
+        return "G (" + prop(1) + " -> (" + ltl(depth - 1) + "))";
+      case 7:
+        return "(" + ltl(depth - 1) + " U " + ltl(depth - 1) + ")";
+      case 8:
+        return "(" + ltl(depth - 1) + " R " + ltl(depth - 1) + ")";
+      case 9:
+        return "(" + ltl(depth - 1) + (pick(2) ? " & " : " | ") + ltl(depth - 1) + ")";
+      case 10:
+        return "F (" + ltl(depth - 1) + ")";
+      default:
+        return "G (" + ltl(depth - 1) + ")";
     }
   }
 
@@ -126,17 +138,19 @@ TEST(LtlSpinDifferential, RandomChartsAndFormulasAgree) {
       std::ofstream f(dir.path() + "/model.pml");
       write_promela(f, model);
     }
-    auto run = [&](const std::vector<std::string>& argv) { return run_tool(argv, dir.path(), 120); };
+    auto run = [&](const std::vector<std::string>& argv) {
+      return run_tool(argv, dir.path(), 120);
+    };
     const auto a = run({*spin, "-a", "model.pml"});
     ASSERT_EQ(a.exit_code, 0) << a.output;
     const auto c = run({*cc, "-O0", "-DNOREDUCE", "-DMEMLIM=2048", "-w", "-o", "pan", "pan.c"});
     ASSERT_EQ(c.exit_code, 0) << c.output;
-    const auto cycle_starts = run({dir.path() + "/pan", "-a", "-N",
-                                   "sfcv_ltl_" + std::to_string(in.ltl.size())});
+    const auto cycle_starts =
+        run({dir.path() + "/pan", "-a", "-N", "sfcv_ltl_" + std::to_string(in.ltl.size())});
     ASSERT_NE(cycle_starts.output.find("errors: 0"), std::string::npos) << cycle_starts.output;
     for (std::size_t k = 0; k < in.ltl.size(); ++k) {
-      const auto pan = run({dir.path() + "/pan", "-a", "-m1000000", "-N",
-                            "sfcv_ltl_" + std::to_string(k)});
+      const auto pan =
+          run({dir.path() + "/pan", "-a", "-m1000000", "-N", "sfcv_ltl_" + std::to_string(k)});
       const auto& out = pan.output;
       ASSERT_FALSE(pan.timed_out);
       ASSERT_EQ(out.find("max search depth too small"), std::string::npos) << out;
@@ -156,16 +170,16 @@ TEST(LtlSpinDifferential, RandomChartsAndFormulasAgree) {
       const bool sfcv_violated = r.verdict == logic::Verdict::Violated;
       EXPECT_EQ(sfcv_violated, spin_violated)
           << "disagreement on '" << in.ltl[k] << "': sfcv " << logic::to_string(r.verdict)
-          << ", spin " << (spin_violated ? "violated" : "holds") << "\nclaim: "
-          << exported.model.ltl[k].second;
+          << ", spin " << (spin_violated ? "violated" : "holds")
+          << "\nclaim: " << exported.model.ltl[k].second;
       ++pairs;
       (sfcv_violated ? violated : holds) += 1;
     }
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cerr << "[ NOTE ] " << pairs << " (chart, formula) pairs: " << holds << " hold, "
-            << violated << " violated; " << seconds << " s\n";
+  std::cerr << "[ NOTE ] " << pairs << " (chart, formula) pairs: " << holds << " hold, " << violated
+            << " violated; " << seconds << " s\n";
   EXPECT_GE(pairs, 300u);
   EXPECT_GE(holds, 60u);
   EXPECT_GE(violated, 60u);

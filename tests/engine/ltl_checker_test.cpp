@@ -68,18 +68,30 @@ logic::CheckReport check(const Setup& s, const std::vector<std::string>& ctl,
 
 bool holds_in(const semantics::TransitionSystem& ts, const Formula& f, semantics::StateView s) {
   switch (f.op) {
-    case Op::True: return true;
-    case Op::False: return false;
-    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::True:
+      return true;
+    case Op::False:
+      return false;
+    case Op::Atom:
+      return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
     case Op::Compare:
-      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
-    case Op::Not: return !holds_in(ts, *f.args[0], s);
-    case Op::And: return holds_in(ts, *f.args[0], s) && holds_in(ts, *f.args[1], s);
-    case Op::Or: return holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
-    case Op::Implies: return !holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
-    case Op::Iff: return holds_in(ts, *f.args[0], s) == holds_in(ts, *f.args[1], s);
-    case Op::Xor: return holds_in(ts, *f.args[0], s) != holds_in(ts, *f.args[1], s);
-    default: ADD_FAILURE() << "not propositional"; return false;
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
+                            f.value);
+    case Op::Not:
+      return !holds_in(ts, *f.args[0], s);
+    case Op::And:
+      return holds_in(ts, *f.args[0], s) && holds_in(ts, *f.args[1], s);
+    case Op::Or:
+      return holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
+    case Op::Implies:
+      return !holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
+    case Op::Iff:
+      return holds_in(ts, *f.args[0], s) == holds_in(ts, *f.args[1], s);
+    case Op::Xor:
+      return holds_in(ts, *f.args[0], s) != holds_in(ts, *f.args[1], s);
+    default:
+      ADD_FAILURE() << "not propositional";
+      return false;
   }
 }
 
@@ -103,19 +115,40 @@ std::vector<bool> on_lasso(const semantics::TransitionSystem& ts, const logic::T
     return x;
   };
   switch (f.op) {
-    case Op::Not: for (std::size_t i = 0; i < n; ++i) v[i] = !a[i]; return v;
-    case Op::And: for (std::size_t i = 0; i < n; ++i) v[i] = a[i] && b[i]; return v;
-    case Op::Or: for (std::size_t i = 0; i < n; ++i) v[i] = a[i] || b[i]; return v;
-    case Op::Implies: for (std::size_t i = 0; i < n; ++i) v[i] = !a[i] || b[i]; return v;
-    case Op::Iff: for (std::size_t i = 0; i < n; ++i) v[i] = a[i] == b[i]; return v;
-    case Op::Xor: for (std::size_t i = 0; i < n; ++i) v[i] = a[i] != b[i]; return v;
-    case Op::X: for (std::size_t i = 0; i < n; ++i) v[i] = a[succ(i)]; return v;
-    case Op::F: return fix(false, [&](std::size_t i, bool next) { return a[i] || next; });
-    case Op::G: return fix(true, [&](std::size_t i, bool next) { return a[i] && next; });
-    case Op::U: return fix(false, [&](std::size_t i, bool next) { return b[i] || (a[i] && next); });
-    case Op::W: return fix(true, [&](std::size_t i, bool next) { return b[i] || (a[i] && next); });
-    case Op::R: return fix(true, [&](std::size_t i, bool next) { return b[i] && (a[i] || next); });
-    default: ADD_FAILURE() << "CTL in an LTL formula"; return v;
+    case Op::Not:
+      for (std::size_t i = 0; i < n; ++i) v[i] = !a[i];
+      return v;
+    case Op::And:
+      for (std::size_t i = 0; i < n; ++i) v[i] = a[i] && b[i];
+      return v;
+    case Op::Or:
+      for (std::size_t i = 0; i < n; ++i) v[i] = a[i] || b[i];
+      return v;
+    case Op::Implies:
+      for (std::size_t i = 0; i < n; ++i) v[i] = !a[i] || b[i];
+      return v;
+    case Op::Iff:
+      for (std::size_t i = 0; i < n; ++i) v[i] = a[i] == b[i];
+      return v;
+    case Op::Xor:
+      for (std::size_t i = 0; i < n; ++i) v[i] = a[i] != b[i];
+      return v;
+    case Op::X:
+      for (std::size_t i = 0; i < n; ++i) v[i] = a[succ(i)];
+      return v;
+    case Op::F:
+      return fix(false, [&](std::size_t i, bool next) { return a[i] || next; });
+    case Op::G:
+      return fix(true, [&](std::size_t i, bool next) { return a[i] && next; });
+    case Op::U:
+      return fix(false, [&](std::size_t i, bool next) { return b[i] || (a[i] && next); });
+    case Op::W:
+      return fix(true, [&](std::size_t i, bool next) { return b[i] || (a[i] && next); });
+    case Op::R:
+      return fix(true, [&](std::size_t i, bool next) { return b[i] && (a[i] || next); });
+    default:
+      ADD_FAILURE() << "CTL in an LTL formula";
+      return v;
   }
 }
 
@@ -171,12 +204,11 @@ TEST(LtlChecker, AgreesWithCtlEquivalents) {
     std::vector<std::string> ctl, ltl;
     for (int k = 0; k < 6; ++k) {
       const auto p = gen.prop(2), q = gen.prop(2);
-      ltl.insert(ltl.end(), {"G " + p, "F " + p, "X " + p, "(" + p + ") U (" + q + ")",
-                             "G F " + p, "G (" + p + " -> F " + q + ")",
-                             "G (" + p + " -> X " + q + ")"});
-      ctl.insert(ctl.end(), {"AG " + p, "AF " + p, "AX " + p, "A[" + p + " U " + q + "]",
-                             "AG AF " + p, "AG (" + p + " -> AF " + q + ")",
-                             "AG (" + p + " -> AX " + q + ")"});
+      ltl.insert(ltl.end(), {"G " + p, "F " + p, "X " + p, "(" + p + ") U (" + q + ")", "G F " + p,
+                             "G (" + p + " -> F " + q + ")", "G (" + p + " -> X " + q + ")"});
+      ctl.insert(ctl.end(),
+                 {"AG " + p, "AF " + p, "AX " + p, "A[" + p + " U " + q + "]", "AG AF " + p,
+                  "AG (" + p + " -> AF " + q + ")", "AG (" + p + " -> AX " + q + ")"});
     }
     const auto report = check(s, ctl, ltl);
     ASSERT_EQ(report.results.size(), 2 * ltl.size());

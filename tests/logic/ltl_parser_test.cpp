@@ -30,8 +30,8 @@ TEST(LtlParser, PrecedenceAndPrinting) {
   EXPECT_EQ(f->args[0]->op, Op::G);
   EXPECT_TRUE(is_ltl(*f));
   // What it prints parses back to the same formula.
-  for (const char* text : {"G (a -> F b)", "a & b U c", "X X !(a W b)", "F G (x >= 3)",
-                           "G (rise(a) -> X b)"}) {
+  for (const char* text :
+       {"G (a -> F b)", "a & b U c", "X X !(a W b)", "F G (x >= 3)", "G (rise(a) -> X b)"}) {
     const auto once = round_trip(text);
     EXPECT_EQ(round_trip(once), once) << text;
   }

@@ -222,8 +222,8 @@ std::vector<Hop> bfs(Product& product, const std::vector<std::uint32_t>& sources
 
 /// The lasso as a trace: graph states with the inputs read and the transitions fired on the
 /// way into each; the last step repeats steps[loop_start].
-logic::Trace to_trace(const ReachableSituationGraph& g, const Product& product,
-                      std::uint32_t first, const std::vector<Hop>& hops, std::size_t loop_start) {
+logic::Trace to_trace(const ReachableSituationGraph& g, const Product& product, std::uint32_t first,
+                      const std::vector<Hop>& hops, std::size_t loop_start) {
   const auto& inputs = g.system().inputs();
   logic::Trace t;
   t.kind = logic::TraceKind::Counterexample;
@@ -254,7 +254,8 @@ logic::Trace to_trace(const ReachableSituationGraph& g, const Product& product,
   push(first, kNoEdge);
   for (const auto& h : hops) push(h.v, h.edge);
   t.loop_start = loop_start;
-  if (stutters) t.note = "the loop stays in a state without a successor: a deadlock repeats forever";
+  if (stutters)
+    t.note = "the loop stays in a state without a successor: a deadlock repeats forever";
   return t;
 }
 
@@ -305,15 +306,18 @@ logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
   auto at = entry;
   for (std::uint32_t j = 0; j < product.num_sets(); ++j) {
     bool met = product.in_set(entry, j);
-    for (std::size_t k = loop_start; k < hops.size() && !met; ++k) met = product.in_set(hops[k].v, j);
+    for (std::size_t k = loop_start; k < hops.size() && !met; ++k)
+      met = product.in_set(hops[k].v, j);
     if (met) continue;
     std::uint32_t src = kNone;
-    auto leg = bfs(product, {at}, inside, [&](std::uint32_t v) { return product.in_set(v, j); }, src);
+    auto leg = bfs(
+        product, {at}, inside, [&](std::uint32_t v) { return product.in_set(v, j); }, src);
     hops.insert(hops.end(), leg.begin(), leg.end());
     at = hops.back().v;
   }
   std::uint32_t src = kNone;
-  auto back = bfs(product, {at}, inside, [&](std::uint32_t v) { return v == entry; }, src);
+  auto back = bfs(
+      product, {at}, inside, [&](std::uint32_t v) { return v == entry; }, src);
   if (back.empty()) throw InternalError("check_ltl: no cycle in the accepting SCC");
   hops.insert(hops.end(), back.begin(), back.end());
   r.verdict = logic::Verdict::Violated;
