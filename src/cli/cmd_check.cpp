@@ -312,7 +312,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
   sub->add_option("--ltl", opts->ltl,
                   "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
-  sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;', 'fair e;'");
+  sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'ltl name: formula;', 'assume e;', 'fair e;'");
   std::string names;
   for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);
   sub->add_option("--checks", opts->checks,

@@ -149,8 +149,8 @@ TEST(LtlSpinDifferential, RandomChartsAndFormulasAgree) {
         run({dir.path() + "/pan", "-a", "-N", "sfcv_ltl_" + std::to_string(in.ltl.size())});
     ASSERT_NE(cycle_starts.output.find("errors: 0"), std::string::npos) << cycle_starts.output;
     for (std::size_t k = 0; k < in.ltl.size(); ++k) {
-      const auto pan =
-          run({dir.path() + "/pan", "-a", "-m100000", "-w18", "-N", "sfcv_ltl_" + std::to_string(k)});
+      const auto pan = run(
+          {dir.path() + "/pan", "-a", "-m100000", "-w18", "-N", "sfcv_ltl_" + std::to_string(k)});
       const auto& out = pan.output;
       ASSERT_FALSE(pan.timed_out);
       ASSERT_EQ(out.find("max search depth too small"), std::string::npos) << out;
