@@ -1,6 +1,8 @@
 // sfcv HTML report: plays a counterexample on the chart. Plain JavaScript, no framework.
-// Data: <script id="sfcv-data"> holds {result: <sfcv check --json>, nodes: {steps, transitions}}
-// where nodes map observable and transition names to the ids of the chart's SVG nodes.
+// Data: <script id="sfcv-data"> holds {result: <sfcv check --json>, nodes: {steps, transitions,
+// situations}} where nodes map observable and transition names to the ids of the chart's SVG
+// nodes, and a Grafcet step situation (its step names sorted, joined by ",") to its node on the
+// situation graph.
 // URL hash "#trace=I&cycle=K" selects a trace and a cycle (bookmarks, the browser test).
 (function () {
   "use strict";
@@ -9,6 +11,12 @@
     .map((p, i) => ({ property: p, index: i }))
     .filter((x) => x.property.trace && x.property.trace.steps.length > 0);
   const player = document.getElementById("player");
+  // The chart and the situation graph come fitted to their boxes; a click toggles the natural size.
+  ["chart-svg", "situations-svg"].forEach((id) => {
+    const box = document.getElementById(id);
+    if (box) box.addEventListener("click", () => box.classList.toggle("fit"));
+  });
+  const situations = document.getElementById("situations-svg");
   if (traces.length === 0) return;
   player.hidden = false;
 
@@ -46,14 +54,27 @@
     });
     mark(step.active_steps, data.nodes.steps, "active");
     mark(step.fired, data.nodes.transitions, "fired");
+    // Grafcet: the cycle's step situation on the situation graph.
+    document.querySelectorAll("#situations-svg g.active").forEach((g) => g.classList.remove("active"));
+    const situation = (data.nodes.situations || {})[step.active_steps.slice().sort().join(",")];
+    const node = situation && document.getElementById(situation);
+    if (node) {
+      node.classList.add("active");
+      if (situations.classList.contains("fit")) return;
+      // Scroll the graph's own box (not the page) to the situation.
+      const box = $("situations-svg"), r = node.getBoundingClientRect(), b = box.getBoundingClientRect();
+      if (r.left < b.left || r.right > b.right) box.scrollLeft += r.left - b.left - (b.width - r.width) / 2;
+      if (r.top < b.top || r.bottom > b.bottom) box.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+    }
   }
 
   // A qualified name ("Plant.V2") whose short form ("V2", the property's atom) is also a value
   // is the same signal: show it once.
-  function shownValues(values) {
+  // An input is shown with the inputs, not again among the values (a Grafcet state holds them).
+  function shownValues(values, inputs) {
     return Object.keys(values).filter((n) => {
       const dot = n.lastIndexOf(".");
-      return dot < 0 || !(n.slice(dot + 1) in values);
+      return !(n in inputs) && (dot < 0 || !(n.slice(dot + 1) in values));
     });
   }
   function pick(obj, names) {
@@ -64,7 +85,7 @@
   function signals(t) {
     const s0 = t.steps[0];
     return Object.keys(s0.inputs).map((n) => ({ name: n, kind: "input" }))
-      .concat(shownValues(s0.values).map((n) => ({ name: n, kind: "value" })));
+      .concat(shownValues(s0.values, s0.inputs).map((n) => ({ name: n, kind: "value" })));
   }
   function valueOf(step, sig) { return sig.kind === "input" ? step.inputs[sig.name] : step.values[sig.name]; }
 
@@ -89,7 +110,7 @@
       });
     };
     fill("inputs", step.inputs, k > 0 ? step.changed : null);
-    const values = pick(step.values, shownValues(step.values));
+    const values = pick(step.values, shownValues(step.values, step.inputs));
     fill("values", values, null);
     const on = Object.keys(values).filter((n) => values[n] === true);
     $("values").dataset.on = on.join(" ");

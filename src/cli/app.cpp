@@ -36,6 +36,7 @@ int run(int argc, char** argv) {
   add_query_command(app, selected);
   add_export_command(app, selected);
   add_report_command(app, selected);
+  add_patterns_command(app, selected);
 
   try {
     app.parse(argc, argv);

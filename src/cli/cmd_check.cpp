@@ -41,6 +41,7 @@ struct CheckOptions {
   std::string format = "auto";
   std::vector<std::string> ctl;
   std::vector<std::string> ltl;
+  std::vector<std::string> patterns;
   std::string spec;
   std::string checks;  ///< empty: all when no property is given, else none
   std::vector<std::string> fair;
@@ -72,8 +73,12 @@ report::TraceFormat parse_trace_format(const std::string& s) {
 
 void print_diagnostics(const model::Diagnostics& diags, const char* what) {
   std::size_t errors = 0;
+  std::vector<std::string> printed;  // a pattern's argument used twice is reported once
   for (const auto& d : diags) {
-    std::cerr << d.str() << "\n";
+    const auto line = d.str();
+    if (std::find(printed.begin(), printed.end(), line) != printed.end()) continue;
+    printed.push_back(line);
+    std::cerr << line << "\n";
     errors += d.severity == model::Severity::Error;
   }
   if (errors) throw InputError(std::string("sfcv check: ") + what);
@@ -190,7 +195,9 @@ int run_check(const CheckOptions& o) {
   const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
-                            o.assume, o.ltl};
+                            o.assume, o.patterns, {}, o.ltl};
+  // A bound in time ("within 2 s") counts cycles of --cycle when time is discrete.
+  if (o.system.time == "discrete") inputs.pattern_options.cycle_ms = parse_cycle_ms(o.system.cycle);
   auto parsed = logic::parse_check_inputs(inputs);
   print_diagnostics(parsed.diagnostics, "errors in the properties");
   const bool has_properties = !parsed.spec.properties.empty();
@@ -243,6 +250,7 @@ int run_check(const CheckOptions& o) {
                                   : choose_engine(o.engine, task, bdd_options, o.depth)->check(task);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
+  logic::describe_results(result, parsed.spec);
   if (o.coverage && !result.coverage && !global_options().quiet) {
     progress.clear();
     std::cerr << "sfcv: --coverage: the " << result.engine
@@ -312,7 +320,12 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
   sub->add_option("--ltl", opts->ltl,
                   "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
-  sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'ltl name: formula;', 'assume e;', 'fair e;'");
+  sub->add_option("--pattern", opts->patterns,
+                  "A requirement pattern, e.g. 'response(start, V1, within 5 cycles)' or "
+                  "'absence(V1 & V3, after start)' (repeatable; list: sfcv patterns)");
+  sub->add_option("--spec", opts->spec,
+                  "A file of 'property name: formula;', 'pattern name: pattern;', "
+                  "'ltl name: formula;', 'assume e;', 'fair e;'");
   std::string names;
   for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);
   sub->add_option("--checks", opts->checks,
@@ -345,7 +358,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
   sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
-              "AG (a -> f) reports whether it holds vacuously. Cookbook: docs/properties.md.\n"
+              "AG (a -> f) reports whether it holds vacuously. Patterns (--pattern, 'sfcv "
+              "patterns' lists them) and a cookbook: docs/properties.md.\n"
               "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
               "input, 3 unknown (a limit was reached before an answer was certain), 4 internal "
               "error.");

@@ -64,7 +64,7 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
 
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
 void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
-  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, o.ltl};
+  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}, o.ltl};
   auto parsed = logic::parse_check_inputs(inputs);
   print_or_throw(parsed.diagnostics, "errors in the properties");
   if (!parsed.spec.fairness.empty())

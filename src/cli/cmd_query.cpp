@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <iostream>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "engine/explicit/query_evaluator.hpp"      // QueryEvaluationError
 #include "engine/query/query_service.hpp"
 #include "logic/query_compile.hpp"
+#include "report/check_html.hpp"
 #include "report/query_render.hpp"
 
 #ifndef SFCV_SHARE_DIR
@@ -39,6 +41,7 @@ struct QueryOptions {
   bool no_default_library = false;
   bool list = false;
   bool json = false;
+  std::string html;
   bool assert_empty = false;
   SystemOptions system;
   LimitOptions limits;
@@ -168,14 +171,14 @@ int run_query(const QueryOptions& o) {
   for (const auto& line : pr.graph_warnings(graph)) std::cerr << line << "\n";
 
   nlohmann::json jout;
-  if (o.json) {
+  const bool want_json = o.json || !o.html.empty();  // --html renders the JSON answers
+  if (want_json) {
     jout["model"] = o.model;
     jout["semantics"] = kind;
     jout["graph"] = pr.graph_json(graph);
     jout["queries"] = nlohmann::json::array();
-  } else {
-    std::cout << pr.graph_line(graph, kind) << "\n";
   }
+  if (!o.json) std::cout << pr.graph_line(graph, kind) << "\n";
 
   bool any_violated = false, any_unknown = false;
   for (std::size_t i = 0; i < compiled.size(); ++i) {
@@ -200,12 +203,15 @@ int run_query(const QueryOptions& o) {
       any_violated |= verdict == logic::Verdict::Violated;
       any_unknown |= verdict == logic::Verdict::Unknown;
     }
-    if (o.json)
-      jout["queries"].push_back(pr.answer_json(items[i].text, r, verdict));
-    else
-      pr.answer_text(items[i].text, r, verdict, graph, std::cout);
+    if (want_json) jout["queries"].push_back(pr.answer_json(items[i].text, r, verdict));
+    if (!o.json) pr.answer_text(items[i].text, r, verdict, graph, std::cout);
   }
   if (o.json) std::cout << jout.dump(2) << "\n";
+  if (!o.html.empty()) {
+    std::ofstream f(o.html);
+    if (!f) throw InputError(o.html + ": cannot write the HTML report");
+    f << report::query_html(jout, report::html_pictures(project, *ts));
+  }
   int exit_code = kHolds;
   if (o.assert_empty) exit_code = any_violated ? kViolated : any_unknown ? kUnknown : kHolds;
   if (!graph.complete && exit_code == kHolds) exit_code = kUnknown;
@@ -231,6 +237,8 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
                 "Do not load the shipped share/sfcv/properties.sfq");
   sub->add_flag("--list", opts->list, "List the library definitions");
   sub->add_flag("--json", opts->json, "Print the results as JSON");
+  sub->add_option("--html", opts->html,
+                  "Write the answers, the chart and the situation graph as one HTML page");
   sub->add_flag("--assert", opts->assert_empty,
                 "Verdicts: a test must be true, a set must be empty (exit 0 holds, 1 violated, "
                 "3 unknown)");

@@ -22,6 +22,7 @@
 #include "engine/bdd/condition_simplifier.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "model/names.hpp"
+#include "report/situation_graph_dot.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
 
@@ -34,7 +35,8 @@ struct RsgOptions {
   std::string format = "auto";
   SystemOptions system;
   bool list = false;
-  std::string dot;
+  std::string dot, dot_states;
+  std::size_t max_nodes = report::SituationGraphOptions{}.max_nodes;
   bool json = false;
   LimitOptions limits;
 };
@@ -154,6 +156,8 @@ int run_rsg(const RsgOptions& o) {
   }
 
   const bool single = sem == "grafcet" && !o.system.multi_input_change;
+  // A graph written to stdout is the whole output (dot reads it from a pipe).
+  const bool dot_to_stdout = o.dot == "-" || o.dot_states == "-";
   if (o.json) {
     nlohmann::json j;
     j["semantics"] = sem;
@@ -189,7 +193,7 @@ int run_rsg(const RsgOptions& o) {
                                 {"cycle", cycle}});
     }
     std::cout << j.dump(2) << "\n";
-  } else {
+  } else if (!dot_to_stdout || o.list) {
     std::cout << "semantics: " << sem
               << (sem == "grafcet"
                       ? (single ? " (IEC 60848, single input change)"
@@ -231,7 +235,23 @@ int run_rsg(const RsgOptions& o) {
     }
   }
 
+  auto write = [](const std::string& path, const std::string& text) {
+    if (path == "-") {
+      std::cout << text;
+      return;
+    }
+    std::ofstream f(path);
+    if (!f) throw InputError("cannot write " + path);
+    f << text;
+  };
   if (!o.dot.empty()) {
+    report::SituationGraphOptions so;
+    so.max_nodes = o.max_nodes;
+    const auto grouped = report::situation_graph_dot(g, so);
+    write(o.dot, grouped.dot);
+    if (!grouped.truncation_note.empty()) std::cerr << "sfcv rsg --dot: " << grouped.truncation_note << "\n";
+  }
+  if (!o.dot_states.empty()) {
     std::ostringstream d;
     d << "digraph rsg {\n  rankdir=LR;\n  node [shape=box, fontname=\"monospace\"];\n";
     for (auto s : g.initial_states()) d << "  init" << s << " [shape=point];\n  init" << s << " -> s" << s << ";\n";
@@ -242,13 +262,7 @@ int run_rsg(const RsgOptions& o) {
         d << "  s" << s << " -> s" << g.target(e) << " [label=\"" << dot_escape(condition(e))
           << "\"];\n";
     d << "}\n";
-    if (o.dot == "-") {
-      std::cout << d.str();
-    } else {
-      std::ofstream f(o.dot);
-      if (!f) throw InputError("cannot write " + o.dot);
-      f << d.str();
-    }
+    write(o.dot_states, d.str());
   }
 
   // One line per distinct anomaly (the same cycle is met from many nodes).
@@ -264,7 +278,7 @@ int run_rsg(const RsgOptions& o) {
     if (printed.insert(line).second) std::cerr << line << "\n";
   }
   if (!g.complete()) {
-    std::cout << "unknown: the " << g.limit_reached() << " limit was reached after "
+    (dot_to_stdout ? std::cerr : std::cout) << "unknown: the " << g.limit_reached() << " limit was reached after "
               << g.num_states() << " states; the graph is incomplete\n";
     return kUnknown;
   }
@@ -282,7 +296,12 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   add_system_options(*sub, opts->system);
   sub->add_flag("--list", opts->list, "List every situation and evolution");
-  sub->add_option("--dot", opts->dot, "Write the graph as Graphviz to FILE (- for stdout)");
+  sub->add_option("--dot", opts->dot,
+                  "Write the graph grouped by step situation as Graphviz to FILE (- for stdout)");
+  sub->add_option("--max-nodes", opts->max_nodes,
+                  "Step situations drawn by --dot, breadth-first (0: all; default 60)");
+  sub->add_option("--dot-states", opts->dot_states,
+                  "Write every stable situation and its input conditions as Graphviz (- for stdout)");
   sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");
   add_limit_options(*sub, opts->limits, "verdict unknown", MemoryLimit::NotOffered);
   sub->callback([opts, &selected] {

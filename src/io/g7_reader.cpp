@@ -10,7 +10,9 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <utility>
+#include <unordered_map>
 #include <vector>
 
 #include "io/g7_lexicon.hpp"
@@ -386,10 +388,11 @@ class Parser {
     next();
     NameRef n = name("a partial grafcet name");
     // A duplicate is reported, and its block still parsed, so that later errors stay precise.
-    if (pou_.find_chart(n.name)) error(n.where, "partial grafcet '" + n.name + "' is declared twice");
+    if (chart_named(n.name)) error(n.where, "partial grafcet '" + n.name + "' is declared twice");
     model::Chart chart;
     chart.name = n.name;
     chart.where = n.where;
+    chart_by_name_.emplace(model::to_upper(n.name), pou_.charts.size());
     pou_.charts.push_back(std::move(chart));
     chart_ = static_cast<int>(pou_.charts.size()) - 1;
     expect("{", "after the partial grafcet name");
@@ -798,10 +801,10 @@ class Parser {
           error(r.where, "undeclared step '" + r.name + "' in grafcet '" + c.name + "'");
     }
     for (const auto& r : chart_refs_)
-      if (!pou_.find_chart(r.name)) error(r.where, "undeclared partial grafcet '" + r.name + "'");
+      if (!chart_named(r.name)) error(r.where, "undeclared partial grafcet '" + r.name + "'");
     for (const auto& [oi, refs] : forced_refs_) {
       const auto& fo = pou_.forcing_orders[static_cast<std::size_t>(oi)];
-      const model::Chart* target = pou_.find_chart(fo.target);
+      const model::Chart* target = chart_named(fo.target);
       if (!target) continue;
       for (const auto& r : refs)
         if (!target->find_step(r.name))
@@ -814,7 +817,7 @@ class Parser {
                "enclosing step '" + s.name + "' encloses no partial grafcet");
       for (const auto& s : c.steps)
         if (s.kind == model::StepKind::MacroStep)
-          if (const model::Chart* e = pou_.find_chart(s.expansion))
+          if (const model::Chart* e = chart_named(s.expansion))
             if (e->macro_entry.empty() || e->macro_exit.empty())
               error(s.where, "the expansion '" + e->name + "' of macro-step '" + s.name +
                                  "' needs an entry step and an exit step");
@@ -867,6 +870,13 @@ class Parser {
   model::Diagnostics& diags_;
   int errors_ = 0;
   model::Pou pou_;
+  /// Upper-cased partial grafcet name -> its first chart: thousands of charts are looked up by
+  /// name without a linear search each.
+  std::unordered_map<std::string, std::size_t> chart_by_name_;
+  const model::Chart* chart_named(std::string_view name) const {
+    const auto it = chart_by_name_.find(model::to_upper(name));
+    return it == chart_by_name_.end() ? nullptr : &pou_.charts[it->second];
+  }
   int chart_ = -1;
   std::vector<std::pair<int, std::vector<NameRef>>> step_refs_;
   std::vector<NameRef> chart_refs_;

@@ -22,7 +22,8 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
   };
   if (!in.spec_text.empty()) {
-    auto r = parse_spec(in.spec_text, in.spec_file.empty() ? "<spec>" : in.spec_file);
+    auto r = parse_spec(in.spec_text, in.spec_file.empty() ? "<spec>" : in.spec_file,
+                        in.pattern_options);
     append(std::move(r.diagnostics));
     out.spec = std::move(r.spec);
   }
@@ -30,7 +31,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     auto r = parse_formula(text, option_source("--ctl", text));
     append(std::move(r.diagnostics));
     if (r.formula) {
-      NamedFormula nf{text, r.formula, {}};
+      NamedFormula nf{text, r.formula, {}, {}};
       nf.where.file = "--ctl";
       out.spec.properties.push_back(std::move(nf));
     }
@@ -39,15 +40,24 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     auto r = parse_ltl(text, option_source("--ltl", text));
     append(std::move(r.diagnostics));
     if (r.formula) {
-      NamedFormula nf{text, r.formula, {}};
+      NamedFormula nf{text, r.formula, {}, {}};
       nf.where.file = "--ltl";
+      out.spec.properties.push_back(std::move(nf));
+    }
+  }
+  for (const auto& text : in.patterns) {
+    auto r = parse_pattern(text, option_source("--pattern", text), in.pattern_options);
+    append(std::move(r.diagnostics));
+    if (r.ok()) {
+      NamedFormula nf{text, r.formula, {}, r.english};
+      nf.where.file = "--pattern";
       out.spec.properties.push_back(std::move(nf));
     }
   }
   for (const auto& text : in.fair) {
     auto r = parse_propositional(text, option_source("--fair", text));
     append(std::move(r.diagnostics));
-    if (r.formula) out.spec.fairness.push_back({"", r.formula, {}});
+    if (r.formula) out.spec.fairness.push_back({"", r.formula, {}, {}});
   }
   for (const auto& text : in.assume) {
     auto r = parse_propositional(text, option_source("--assume", text));
@@ -62,7 +72,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
       out.diagnostics.push_back(std::move(d));
       continue;
     }
-    if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}});
+    if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}, {}});
   }
   return out;
 }
@@ -73,15 +83,28 @@ std::vector<model::ExprPtr> assumption_exprs(const Spec& spec) {
   return out;
 }
 
+std::string property_source(const std::string& name, const model::SourceLocation& where) {
+  if (where.file.empty() || where.file == "--ctl") return "--ctl '" + name + "'";
+  if (where.file == "--pattern") return "--pattern '" + name + "'";
+  if (where.file == "--ltl") return "--ltl '" + name + "'";
+  return where.file;
+}
+
+void describe_results(CheckReport& report, const Spec& spec) {
+  for (auto& r : report.results) {
+    if (!r.check.empty()) continue;
+    for (const auto& p : spec.properties)
+      if (p.name == r.name && !p.description.empty()) {
+        r.description = p.description;
+        break;
+      }
+  }
+}
+
 void resolve_into(const Spec& spec, const semantics::TransitionSystem& ts, CheckTask& task,
                   model::Diagnostics& diagnostics) {
-  auto source = [](const NamedFormula& nf) {
-    if (nf.where.file == "--ltl") return "--ltl '" + nf.name + "'";
-    return nf.where.file.empty() || nf.where.file == "--ctl" ? "--ctl '" + nf.name + "'"
-                                                             : nf.where.file;
-  };
   for (const auto& p : spec.properties) {
-    auto r = resolve(p.formula, ts, source(p));
+    auto r = resolve(p.formula, ts, property_source(p.name, p.where));
     diagnostics.insert(diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
     if (r.formula) task.properties.push_back(Property{p.name, r.formula, p.where});
   }

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "logic/check_result.hpp"
 #include "logic/check_task.hpp"
+#include "logic/pattern.hpp"
 #include "logic/spec.hpp"
 #include "model/diagnostic.hpp"
 #include "model/expr.hpp"
@@ -19,6 +21,8 @@ struct CheckInputs {
   std::string spec_file;             ///< its name, for diagnostics
   std::vector<std::string> fair;     ///< --fair
   std::vector<std::string> assume;   ///< --assume
+  std::vector<std::string> patterns;  ///< --pattern (logic/pattern.hpp)
+  PatternOptions pattern_options;     ///< for --pattern and the spec's `pattern` statements
   std::vector<std::string> ltl;      ///< --ltl formulas
 };
 
@@ -27,7 +31,7 @@ struct ParsedInputs {
   model::Diagnostics diagnostics;
 };
 
-/// Parses everything; properties from --ctl and --ltl are named by their text.
+/// Parses everything; properties from --ctl, --pattern and --ltl are named by their text.
 ParsedInputs parse_check_inputs(const CheckInputs& in);
 
 /// The assumptions as chart expressions, for semantics::*Options::assumptions.
@@ -42,6 +46,13 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
                                                   model::Diagnostics& diagnostics);
 
 /// Resolves properties and fairness against `ts`; errors go to `diagnostics`.
+/// Names a property in diagnostics: "--ctl 'AG p'", "--pattern '...'", or its spec file.
+std::string property_source(const std::string& name, const model::SourceLocation& where);
+
+/// Carries the patterns' English sentences (NamedFormula::description) to the results of the
+/// properties of the same name.
+void describe_results(CheckReport& report, const Spec& spec);
+
 void resolve_into(const Spec& spec, const semantics::TransitionSystem& ts, CheckTask& task,
                   model::Diagnostics& diagnostics);
 

@@ -35,11 +35,7 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
                                                   model::Diagnostics& diagnostics) {
   std::vector<Use> uses;
   for (const auto& p : spec.properties)
-    collect(p.formula,
-            p.where.file == "--ltl"                                ? "--ltl '" + p.name + "'"
-            : p.where.file.empty() || p.where.file == "--ctl" ? "--ctl '" + p.name + "'"
-                                                                : p.where.file,
-            uses);
+    collect(p.formula, property_source(p.name, p.where), uses);
   for (const auto& f : spec.fairness)
     collect(f.formula, f.where.file.empty() ? "--fair" : f.where.file, uses);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "logic/formula.hpp"
+#include "logic/pattern.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -24,6 +25,7 @@ struct Token {
   std::string text;
   std::int64_t value = 0;
   int line = 1, column = 1;
+  std::size_t offset = 0;  ///< into the text: a `pattern` statement is read from its text
 };
 
 std::vector<Token> lex(std::string_view s) {
@@ -54,6 +56,7 @@ std::vector<Token> lex(std::string_view s) {
     Token t;
     t.line = line;
     t.column = col;
+    t.offset = i;
     auto sym = [&](Tok k, std::size_t n) {
       t.kind = k;
       t.text = std::string(s.substr(i, n));
@@ -107,6 +110,7 @@ std::vector<Token> lex(std::string_view s) {
   end.kind = Tok::End;
   end.line = line;
   end.column = col;
+  end.offset = s.size();
   out.push_back(end);
   return out;
 }
@@ -443,7 +447,7 @@ ParsedFormula parse_propositional(std::string_view text, std::string source) {
   return r;
 }
 
-ParsedSpec parse_spec(std::string_view text, std::string file) {
+ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOptions& patterns) {
   ParsedSpec out;
   const auto toks = lex(text);
   std::size_t pos = 0;
@@ -467,6 +471,33 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
         p.next();
         nf.name = name.text;
         p.expect(Tok::Colon, "':' after the property name");
+      } else if (head.kind == Tok::Ident && model::iequals(head.text, "pattern")) {
+        // pattern name: response(a, b, within 5 cycles);  -- read by logic/pattern.hpp
+        p.next();
+        const Token name = p.peek();
+        if (name.kind != Tok::Ident) throw SyntaxError(name, "expected a pattern name, found " + describe(name));
+        p.next();
+        p.expect(Tok::Colon, "':' after the property name");
+        const Token body = p.peek();
+        std::size_t end = p.pos();
+        while (toks[end].kind != Tok::Semi && toks[end].kind != Tok::End) ++end;
+        if (toks[end].kind == Tok::End) throw SyntaxError(toks[end], "expected ';' at the end of the statement");
+        pos = end + 1;
+        consumed = true;
+        auto r = parse_pattern(text.substr(body.offset, toks[end].offset - body.offset), file, patterns,
+                               body.line, body.column);
+        out.diagnostics.insert(out.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+        for (const auto& other : out.spec.properties)
+          if (model::iequals(other.name, name.text))
+            throw SyntaxError(head, "property '" + name.text + "' is defined twice (first at line " +
+                                        std::to_string(other.where.line) + ")");
+        if (r.ok()) {
+          nf.name = name.text;
+          nf.formula = r.formula;
+          nf.description = r.english;
+          out.spec.properties.push_back(std::move(nf));
+        }
+        continue;
       } else if (head.kind == Tok::Ident && model::iequals(head.text, "assume")) {
         kind = Assume;
         p.next();
@@ -474,7 +505,7 @@ ParsedSpec parse_spec(std::string_view text, std::string file) {
         kind = Fair;
         p.next();
       } else {
-        throw SyntaxError(head, "expected 'property', 'ltl', 'assume' or 'fair', found " +
+        throw SyntaxError(head, "expected 'property', 'ltl', 'pattern', 'assume' or 'fair', found " +
                                     describe(head));
       }
       nf.formula = p.formula();

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "logic/fwd.hpp"
+#include "logic/pattern.hpp"
 #include "logic/spec.hpp"
 #include "model/diagnostic.hpp"
 
@@ -38,6 +39,8 @@ struct ParsedSpec {
   bool ok() const { return !model::has_errors(diagnostics); }
 };
 
-ParsedSpec parse_spec(std::string_view text, std::string file = "<spec>");
+/// `pattern name: ...;` statements are read by parse_pattern with `patterns`.
+ParsedSpec parse_spec(std::string_view text, std::string file = "<spec>",
+                      const PatternOptions& patterns = {});
 
 }  // namespace sfcv::logic

@@ -4,6 +4,7 @@
 //   -- comments start with -- or //
 //   property no_overfill_T1: AG !(V1 & V3);
 //   ltl drains: G (V3 -> F !V3);  -- an LTL property (X F G U R W), over every path
+//   pattern fills_T1: response(start, V1, within 5 cycles);   -- logic/pattern.hpp
 //   assume !(LIS1 & LIS2);      -- an assumption over inputs and state (propositional)
 //   fair S1;                    -- runs that visit S1 infinitely often
 
@@ -19,6 +20,7 @@ struct NamedFormula {
   std::string name;  ///< property name; empty for assumptions and fairness
   FormulaPtr formula;
   model::SourceLocation where;
+  std::string description;  ///< a pattern's English sentence; empty for a formula
 };
 
 struct Spec {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 #include "model/networks.hpp"
 
 namespace sfcv::model {
@@ -148,6 +149,9 @@ class Validator {
  private:
   const Project& project_;
   const Pou* pou_ = nullptr;
+  /// The charts of pou_ by upper-cased name (the first of equal names, as Pou::chart_index):
+  /// 10,000 nested macro-steps must not cost 10,000 linear searches.
+  std::unordered_map<std::string, int> chart_by_name_;
   Diagnostics out_;
   std::set<std::string> outside_warned_;  ///< per POU: names already reported by outside_model
 
@@ -195,6 +199,9 @@ class Validator {
 
   void check_pou(const Pou& pou) {
     pou_ = &pou;
+    chart_by_name_.clear();
+    for (std::size_t i = 0; i < pou.charts.size(); ++i)
+      chart_by_name_.emplace(to_upper(pou.charts[i].name), static_cast<int>(i));
     outside_warned_.clear();
     check_duplicates(pou.variables, "variable", pou.where);
     check_duplicates(pou.actions, "action", pou.where);
@@ -219,7 +226,7 @@ class Validator {
   /// accepted when exactly one chart declares the step.
   const Chart* chart_of(const std::string& chart_name, const std::string& step,
                         const SourceLocation& where, std::string_view what) {
-    if (const Chart* c = pou_->find_chart(chart_name)) {
+    if (const Chart* c = find_chart(chart_name)) {
       if (!has_step(*c, step))
         error(where, std::string(what) + " names undeclared step " + quoted(step) +
                          (chart_name.empty() ? std::string() : " of chart " + quoted(chart_name)));
@@ -247,7 +254,7 @@ class Validator {
   std::set<std::size_t> charts_activated_by_grafcet_orders() const {
     std::set<std::size_t> result;
     auto add = [&](const std::string& name) {
-      const int i = pou_->chart_index(name);
+      const int i = chart_index(name);
       if (i >= 0) result.insert(static_cast<std::size_t>(i));
     };
     for (const auto& c : pou_->charts)
@@ -330,13 +337,13 @@ class Validator {
     if (s.kind == StepKind::MacroStep) {
       if (s.expansion.empty())
         error(here, "macro-step " + quoted(s.name) + " has no expansion");
-      else if (!pou_->find_chart(s.expansion))
+      else if (!find_chart(s.expansion))
         error(here, "macro-step " + quoted(s.name) + " expands into undeclared chart " +
                         quoted(s.expansion));
     }
     if (s.kind == StepKind::Enclosing) {
       for (const auto& e : s.enclosed)
-        if (!pou_->find_chart(e))
+        if (!find_chart(e))
           error(here, "enclosing step " + quoted(s.name) + " encloses undeclared chart " +
                           quoted(e));
     }
@@ -643,7 +650,7 @@ class Validator {
         if (s.kind == StepKind::MacroStep) below.push_back(s.expansion);
         if (s.kind == StepKind::Enclosing) below = s.enclosed;
         for (const auto& name : below)
-          if (const int i = pou_->chart_index(name); i >= 0)
+          if (const int i = chart_index(name); i >= 0)
             edges[c].push_back({static_cast<std::size_t>(i), &s.where});
       }
 
@@ -654,10 +661,22 @@ class Validator {
       return ch.parent_action.empty() ? quoted(ch.name.empty() ? pou_->name : ch.name)
                                       : quoted(ch.parent_action);
     };
+    bool too_deep = false;
     auto dfs = [&](auto&& self, std::size_t c) -> void {
       color[c] = 1;
       path.push_back(c);
       for (const auto& e : edges[c]) {
+        if (path.size() >= static_cast<std::size_t>(kMaxNesting) && color[e.to] != 2) {
+          // Deeper than any real chart: refused, so that no pass over the hierarchy (this
+          // search, the macro-steps' derived activity) recurses or grows with its square.
+          if (!too_deep)
+            error(at(*e.where, pou_->where),
+                  "charts nested more than " + std::to_string(kMaxNesting) +
+                      " levels deep (macro-steps, enclosing steps or SFC actions inside "
+                      "each other, from " + name_of(path.front()) + ")");
+          too_deep = true;
+          continue;
+        }
         if (color[e.to] == 1) {
           std::string cycle;
           auto it = std::find(path.begin(), path.end(), e.to);
@@ -676,8 +695,17 @@ class Validator {
       if (color[c] == 0) dfs(dfs, c);
   }
 
+  int chart_index(std::string_view name) const {
+    const auto it = chart_by_name_.find(to_upper(name));
+    return it == chart_by_name_.end() ? -1 : it->second;
+  }
+  const Chart* find_chart(std::string_view name) const {
+    const int i = chart_index(name);
+    return i < 0 ? nullptr : &pou_->charts[static_cast<std::size_t>(i)];
+  }
+
   int chart_index_of_step(const std::string& chart_name, const std::string& step) const {
-    if (const int i = pou_->chart_index(chart_name); i >= 0) return i;
+    if (const int i = chart_index(chart_name); i >= 0) return i;
     if (!chart_name.empty()) return -1;
     for (std::size_t c = 0; c < pou_->charts.size(); ++c)
       if (has_step(pou_->charts[c], step)) return static_cast<int>(c);
@@ -821,7 +849,7 @@ class Validator {
   void check_forcing_order(const ForcingOrder& fo) {
     const auto& here = at(fo.where, pou_->where);
     chart_of(fo.chart, fo.step, here, "forcing order");
-    const Chart* target = pou_->find_chart(fo.target);
+    const Chart* target = find_chart(fo.target);
     if (!target) {
       error(here, "forcing order names undeclared partial grafcet " + quoted(fo.target));
       return;

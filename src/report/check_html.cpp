@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <sstream>
 
+#include "engine/explicit/reachable_situation_graph.hpp"
 #include "report/graphviz_svg.hpp"
 #include "report/report_assets.hpp"
+#include "report/situation_graph_dot.hpp"
 
 namespace sfcv::report {
 
@@ -51,6 +53,10 @@ std::string script_json(const json& j) {
   return out;
 }
 
+/// The one place the summary takes a property's English from: a "description" string of its
+/// result (e.g. a requirement pattern's text), shown under its name; empty when there is none.
+std::string description_of(const json& property) { return str(property, "description"); }
+
 std::string summary(const json& result) {
   std::string rows;
   const std::string engine = str(result, "engine");
@@ -66,6 +72,7 @@ std::string summary(const json& result) {
       what = "<code>" + escape(str(p, "formula")) + "</code> " + escape(what);
     else
       what = escape(what);
+    if (p.contains("description")) what = escape(str(p, "description")) + " " + what;
     // Two findings in the table, the rest folded away.
     std::string findings, more;
     std::size_t n = 0;
@@ -83,7 +90,10 @@ std::string summary(const json& result) {
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
               escape(str(p["trace"], "kind")) + " (" + std::to_string(p["trace"]["steps"].size()) +
               " situations)</a>";
-    rows += "<tr><td class=\"name\">" + escape(str(p, "name")) + "</td><td><span class=\"verdict " + escape(cls) +
+    const std::string description = description_of(p);
+    rows += "<tr><td class=\"name\">" + escape(str(p, "name")) +
+            (description.empty() ? "" : "<div class=\"description\">" + escape(description) + "</div>") +
+            "</td><td><span class=\"verdict " + escape(cls) +
             "\">" + escape(verdict) + "</span></td><td>" + escape(engine) + "</td><td class=\"time\">" +
             seconds(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +
@@ -94,19 +104,137 @@ std::string summary(const json& result) {
          rows + "</table>\n";
 }
 
+/// The Grafcet situation graph's section; nothing for IEC 61131-3.
+std::string situation_graph_section(const HtmlReport& report) {
+  if (report.situation_graph_svg.empty() && report.situation_graph_note.empty()) return "";
+  std::string out =
+      "<section id=\"situations\">\n<h2>Reachable situations, grouped by step situation</h2>\n"
+      "<p class=\"note\">One node per set of active steps (a doubled border: initial), the stable "
+      "situations that differ only in their inputs folded into it; an edge lists the transitions "
+      "fired between two step situations, the transient situations crossed included. An output "
+      "with ? is emitted in some of the node's stable situations only.</p>\n";
+  if (!report.situation_graph_note.empty())
+    out += "<p class=\"note" + std::string(report.situation_graph_svg.empty() ? " warn" : "") +
+           "\" id=\"situations-note\">" + escape(report.situation_graph_note) + "</p>\n";
+  if (!report.situation_graph_svg.empty())
+    out += "<div id=\"situations-svg\" class=\"fit\">\n" + report.situation_graph_svg + "\n</div>\n";
+  return out + "</section>\n";
+}
+
+std::string page_head(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+         escape(title) + "</title>\n<style>\n" + std::string(report_style()) +
+         "</style>\n</head>\n<body>\n";
+}
+
+std::string chart_section(const HtmlReport& report) {
+  // Fitted to their boxes; a click toggles the natural size (the pages' scripts).
+  std::string out = "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\" class=\"fit\">\n";
+  out += report.chart_svg.empty() ? "<p class=\"note warn\">" + escape(report.chart_note) + "</p>\n"
+                                  : report.chart_svg + "\n";
+  return out + "</div>\n</section>\n";
+}
+
+/// One query's answer: its value or its set, the elements listed (the first ones shown, the
+/// rest folded away).
+std::string query_row(const json& q) {
+  constexpr std::size_t kShown = 10, kListed = 200;  // shown, then folded; the JSON has all
+  const std::string sort = str(q, "sort");
+  std::string answer;
+  if (sort == "test") {
+    answer = q.value("value", false) ? "true" : "false";
+    if (q.contains("count"))
+      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " + escape(str(q, "witness_sort"));
+  } else if (sort == "number") {
+    answer = std::to_string(q["value"].get<std::int64_t>());
+  } else {
+    answer = std::to_string(q.value("count", 0ULL)) + " " + escape(sort);
+  }
+  std::string shown, more;
+  std::size_t n = 0;
+  if (q.contains("elements"))
+    for (const auto& e : q["elements"]) {
+      if (n == kListed) break;
+      const std::string text = e.is_string() ? e.get<std::string>() : str(e, "text");
+      (n++ < kShown ? shown : more) += "<li><code>" + escape(text) + "</code></li>";
+    }
+  const std::size_t total = q.contains("elements") ? q["elements"].size() : 0;
+  if (total > kListed)
+    more += "<li>" + std::to_string(total - kListed) +
+            " more not listed here; sfcv query --json lists every one</li>";
+  if (!more.empty())
+    shown += "<li><details><summary>" + std::to_string(total - kShown) + " more</summary><ul>" +
+             more + "</ul></details></li>";
+  const std::string verdict = str(q, "verdict");
+  return "<tr class=\"query\"><td class=\"name\"><code>" + escape(str(q, "query")) +
+         "</code></td><td class=\"answer\">" + answer + "</td><td>" +
+         (verdict.empty() ? "" : "<span class=\"verdict " + escape(verdict) + "\">" + escape(verdict) + "</span>") +
+         "</td><td>" + (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") + "</td></tr>\n";
+}
+
 }  // namespace
 
 HtmlReport html_report(nlohmann::json result, const model::Project& project,
                        const semantics::TransitionSystem& ts) {
-  HtmlReport r;
+  // The situations the traces visit are drawn on the situation graph whatever its cap.
+  std::set<std::string> visited;
+  if (result.contains("properties"))
+    for (const auto& p : result["properties"])
+      if (p.contains("trace") && p["trace"].is_object())
+        for (const auto& step : p["trace"]["steps"]) {
+          std::set<std::string> names;
+          for (const auto& n : step["active_steps"]) names.insert(n.get<std::string>());
+          std::string key;
+          for (const auto& n : names) key += (key.empty() ? "" : ",") + n;
+          visited.insert(key);
+        }
+  HtmlReport r = html_pictures(project, ts, visited);
   r.result = std::move(result);
+  return r;
+}
+
+HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep) {
+  HtmlReport r;
   std::ostringstream dot;
   print_chart_dot(dot, project);
   auto svg = dot_to_svg(dot.str());
   r.chart_svg = std::move(svg.svg);
   r.chart_note = std::move(svg.error);
   r.node_ids = chart_node_ids(project, ts);
+  add_situation_graph(r, ts, keep);
   return r;
+}
+
+void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts,
+                         const std::set<std::string>& keep) {
+  if (ts.kind() != semantics::SemanticsKind::Grafcet) return;
+  engine::ExplorationOptions eo;
+  eo.max_states = kReportMaxSituations;
+  eo.timeout_seconds = 60;
+  eo.keep_conditions = false;
+  const auto graph = engine::build_reachable_situation_graph(ts, eo);
+  if (!graph.complete()) {
+    report.situation_graph_note = "the reachable situations graph was not drawn: its " +
+                                  graph.limit_reached() + " limit (" +
+                                  std::to_string(kReportMaxSituations) +
+                                  " stable situations, 60 s) was reached";
+    return;
+  }
+  SituationGraphOptions so;
+  so.max_nodes = kReportMaxNodes;
+  so.option_name = "sfcv rsg --dot FILE --max-nodes";
+  so.keep = keep;
+  const auto grouped = situation_graph_dot(graph, so);
+  auto svg = dot_to_svg(grouped.dot);
+  report.situation_graph_svg = std::move(svg.svg);
+  if (!report.situation_graph_svg.empty()) report.situation_node_ids = grouped.node_ids;
+  report.situation_graph_note = svg.error.empty() ? grouped.truncation_note : svg.error;
+  std::string counts = std::to_string(grouped.step_situations) + " step situations, " +
+                       std::to_string(grouped.stable_situations) + " stable situations";
+  report.situation_graph_note = counts + (report.situation_graph_note.empty() ? "" : "; ") +
+                                report.situation_graph_note;
 }
 
 std::string check_html(const HtmlReport& report) {
@@ -123,21 +251,15 @@ std::string check_html(const HtmlReport& report) {
   json nodes;
   nodes["steps"] = report.node_ids.steps;
   nodes["transitions"] = report.node_ids.transitions;
+  nodes["situations"] = report.situation_node_ids;
   json data;
   data["result"] = r;
   data["nodes"] = nodes;
 
-  std::string out;
-  out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
-  out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  out += "<title>sfcv report: " + escape(model) + "</title>\n<style>\n" + std::string(report_style()) +
-         "</style>\n</head>\n<body>\n";
+  std::string out = page_head("sfcv report: " + model);
   out += "<h1>sfcv check: " + escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
   out += "<h2>Properties and standard checks</h2>\n" + summary(r);
-  out += "<div class=\"layout\">\n<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\">\n";
-  out += report.chart_svg.empty() ? "<p class=\"note warn\">" + escape(report.chart_note) + "</p>\n"
-                                  : report.chart_svg + "\n";
-  out += "</div>\n</section>\n";
+  out += "<div class=\"layout\">\n" + chart_section(report);
   out += R"html(<section id="player" hidden>
 <h2>Trace player</h2>
 <p><select id="trace-select" aria-label="trace"></select></p>
@@ -155,9 +277,37 @@ std::string check_html(const HtmlReport& report) {
 </section>
 </div>
 )html";
+  out += situation_graph_section(report);
   out += "<script type=\"application/json\" id=\"sfcv-data\">" + script_json(data) + "</script>\n";
   out += "<script>\n" + std::string(report_script()) + "</script>\n</body>\n</html>\n";
   return out;
+}
+
+std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures) {
+  const std::string model = str(answers, "model");
+  std::string meta = escape(str(answers, "semantics")) + " semantics";
+  if (answers.contains("graph")) {
+    const auto& g = answers["graph"];
+    meta += " &middot; " + std::to_string(g.value("situations", 0ULL)) + " situations &middot; " +
+            std::to_string(g.value("evolutions", 0ULL)) + " evolutions";
+    if (!g.value("complete", true))
+      meta += " &middot; <strong>incomplete: the " + escape(str(g, "limit")) +
+              " limit was reached; the sets may be wrong in both directions</strong>";
+    if (g.value("anomalies", 0ULL) > 0)
+      meta += " &middot; <strong>" + std::to_string(g["anomalies"].get<std::uint64_t>()) +
+              " anomalies: the evolutions they cut are missing</strong>";
+  }
+  std::string rows;
+  for (const auto& q : answers["queries"]) rows += query_row(q);
+  std::string out = page_head("sfcv query: " + model);
+  out += "<h1>sfcv query: " + escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
+  out += "<h2>Query answers</h2>\n<table class=\"summary\" id=\"query-table\">\n<tr><th>query</th>"
+         "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" + rows + "</table>\n";
+  out += situation_graph_section(pictures);
+  out += chart_section(pictures);
+  out += "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
+         "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
+  return out + "</body>\n</html>\n";
 }
 
 }  // namespace sfcv::report

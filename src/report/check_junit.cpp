@@ -84,15 +84,18 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     tc.append_attribute("time") = seconds(r.seconds).c_str();
     // A property from the command line (where.file "--ctl") or a standard check belongs to
     // the model file; a spec file property to its line there.
-    const bool from_spec = !r.where.file.empty() && r.where.file != "--ctl";
+    const bool from_spec =
+        !r.where.file.empty() && r.where.file != "--ctl" && r.where.file != "--pattern";
     const std::string file = from_spec ? r.where.file : options.model;
     if (!file.empty()) {
       tc.append_attribute("file") = file.c_str();
       if (from_spec && r.where.line > 0) tc.append_attribute("line") = r.where.line;
     }
     // A vacuous pass is still a pass; CI servers show system-out with the test case.
-    if (!r.vacuity.empty())
-      tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(r.vacuity.c_str());
+    // A pattern's English sentence goes there too, first.
+    const std::string out = r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
+    if (!out.empty())
+      tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(out.c_str());
     const char* element = nullptr;
     switch (r.verdict) {
       case logic::Verdict::Holds: break;

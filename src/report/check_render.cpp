@@ -49,6 +49,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     out += name + "  " + verdict + " " + seconds(r.seconds);
     if (!r.message.empty()) out += "  " + r.message;
     out += "\n";
+    if (!r.description.empty()) out += "  requirement: " + r.description + "\n";
     if (r.check.empty() && r.formula != r.name) out += "  formula: " + r.formula + "\n";
     if (!r.vacuity.empty()) out += "  " + r.vacuity + "\n";
     for (const auto& f : r.findings) out += "  - " + f + "\n";
@@ -105,6 +106,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["kind"] = r.check.empty() ? "property" : "standard-check";
     if (!r.check.empty()) p["check"] = r.check;
     p["formula"] = r.formula;
+    if (!r.description.empty()) p["description"] = r.description;
     p["verdict"] = std::string(logic::to_string(r.verdict));
     p["message"] = r.message;
     p["findings"] = r.findings;

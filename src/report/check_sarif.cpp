@@ -73,8 +73,9 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
     rule["name"] = r.name;
     const auto d = descriptions.find(r.check);
     rule["shortDescription"]["text"] =
-        r.check.empty() ? "CTL property " + r.formula
-                        : std::string(d != descriptions.end() ? d->second : r.name);
+        !r.description.empty() ? r.description + " (CTL " + r.formula + ")"
+        : r.check.empty()      ? "CTL property " + r.formula
+                               : std::string(d != descriptions.end() ? d->second : r.name);
     rule["defaultConfiguration"]["level"] = "error";
     rules.push_back(std::move(rule));
     if (r.verdict != logic::Verdict::Violated && r.verdict != logic::Verdict::Unknown) continue;
@@ -84,7 +85,8 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
     base["ruleIndex"] = i;
     base["level"] = r.verdict == logic::Verdict::Violated ? "error" : "warning";
     // Where the property was written (a spec file), else the model.
-    const bool from_spec = !r.where.file.empty() && r.where.file != "--ctl";
+    const bool from_spec =
+        !r.where.file.empty() && r.where.file != "--ctl" && r.where.file != "--pattern";
     model::SourceLocation primary = from_spec ? r.where : model::SourceLocation{};
 
     if (r.trace) {
@@ -158,7 +160,9 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
       results.push_back(std::move(res));
     };
     const std::string verdict(logic::to_string(r.verdict));
-    const std::string head = r.check.empty() ? "'" + r.formula + "' is " + verdict : r.name + ": " + verdict;
+    const std::string head = !r.description.empty() ? "'" + r.description + "' is " + verdict
+                             : r.check.empty()       ? "'" + r.formula + "' is " + verdict
+                                                     : r.name + ": " + verdict;
     if (r.findings.empty()) {
       emit(head + (r.message.empty() ? "" : ": " + r.message), primary);
     } else {

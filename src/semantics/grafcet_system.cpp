@@ -18,22 +18,21 @@ using model::ExprKind;
 // ------------------------------------------------------------------------------- compilation
 
 int GrafcetSystem::find_step(const std::string& pou, std::string_view name) const {
-  int hit = -1, count = 0;
-  for (std::size_t i = 0; i < steps_.size(); ++i) {
-    if (!model::iequals(charts_[steps_[i].chart].pou, pou)) continue;
-    if (model::iequals(steps_[i].name, name)) {
-      hit = static_cast<int>(i);
-      ++count;
-    }
-  }
-  return count == 1 ? hit : (count > 1 ? -2 : -1);
+  // Indexed: every identifier of every receptivity is looked up here.
+  const auto it = step_index_.find(model::to_upper(pou) + "." + model::to_upper(std::string(name)));
+  if (it == step_index_.end()) return -1;
+  return it->second.count == 1 ? it->second.step : -2;
+}
+
+int GrafcetSystem::steps_named(std::string_view name) const {
+  const auto it = step_name_count_.find(model::to_upper(name));
+  return it == step_name_count_.end() ? 0 : it->second;
 }
 
 int GrafcetSystem::find_chart(const std::string& pou, std::string_view name) const {
-  for (std::size_t i = 0; i < charts_.size(); ++i)
-    if (model::iequals(charts_[i].pou, pou) && model::iequals(charts_[i].name, name))
-      return static_cast<int>(i);
-  return -1;
+  // Indexed: a chain of 10,000 nested macro-steps looks up 10,000 expansions.
+  const auto it = chart_index_.find(model::to_upper(pou) + "." + model::to_upper(std::string(name)));
+  return it == chart_index_.end() ? -1 : it->second;
 }
 
 int GrafcetSystem::input_index(const model::Pou& pou, const std::string& name) {
@@ -303,9 +302,15 @@ void GrafcetSystem::build(const model::Project& project) {
         gs.chart = cid;
         gs.kind = st.kind;
         gs.initial = st.initial;
+        auto& entry = step_index_[model::to_upper(pou.name) + "." + model::to_upper(st.name)];
+        entry.step = static_cast<int>(steps_.size());
+        ++entry.count;
+        ++step_name_count_[model::to_upper(st.name)];
         gc.steps.push_back(static_cast<int>(steps_.size()));
         steps_.push_back(std::move(gs));
       }
+      chart_index_.emplace(model::to_upper(gc.pou) + "." + model::to_upper(gc.name),
+                           static_cast<int>(charts_.size()));
       charts_.push_back(std::move(gc));
     }
   }
@@ -378,12 +383,13 @@ void GrafcetSystem::build(const model::Project& project) {
   // Derived activity of macro-steps (expansions may hold macro-steps: close transitively).
   for (auto& gs : steps_) {
     if (gs.kind != model::StepKind::MacroStep) continue;
-    std::vector<int> todo{gs.expansion}, seen;
+    std::vector<int> todo{gs.expansion};
+    std::vector<bool> seen(charts_.size());
     while (!todo.empty()) {
       const int c = todo.back();
       todo.pop_back();
-      if (std::find(seen.begin(), seen.end(), c) != seen.end()) continue;
-      seen.push_back(c);
+      if (seen[static_cast<std::size_t>(c)]) continue;
+      seen[static_cast<std::size_t>(c)] = true;
       for (int s : charts_[c].steps) {
         if (steps_[s].field >= 0) gs.derived_from.push_back(steps_[s].field);
         if (steps_[s].expansion >= 0) todo.push_back(steps_[s].expansion);
@@ -481,10 +487,7 @@ void GrafcetSystem::build(const model::Project& project) {
           // As IEC 60848 writes it: "(5) X2 -> X4", "X1 -> X2,X3" when unnumbered; a step
           // name that several charts use keeps its chart ("G1.X2"), like the observables.
           auto step_text = [&](const std::string& n) {
-            int same = 0;
-            for (const auto& o : steps_)
-              if (model::iequals(o.name, n)) ++same;
-            return same > 1 ? chart.name + ".X" + n : "X" + n;
+            return steps_named(n) > 1 ? chart.name + ".X" + n : "X" + n;
           };
           std::string from, to;
           for (const auto& n : t.sources) from += (from.empty() ? "" : ",") + step_text(n);
@@ -602,9 +605,7 @@ void GrafcetSystem::build(const model::Project& project) {
   for (std::size_t i = 0; i < steps_.size(); ++i) {
     const auto& gs = steps_[i];
     const auto& chart = charts_[gs.chart].name;
-    int same = 0;
-    for (const auto& o : steps_)
-      if (model::iequals(o.name, gs.name)) ++same;
+    const int same = steps_named(gs.name);
     Observable o;
     o.kind = ObservableKind::Step;
     o.type = model::Type::boolean();
@@ -1111,10 +1112,7 @@ std::string GrafcetSystem::describe(StateView state) const {
   for (std::size_t i = 0; i < steps_.size(); ++i)
     if (active(state, static_cast<int>(i))) {
       const auto& n = steps_[i].name;
-      int same = 0;
-      for (const auto& o : steps_)
-        if (model::iequals(o.name, n)) ++same;
-      names.push_back(same > 1 ? charts_[steps_[i].chart].name + "." + n : n);
+      names.push_back(steps_named(n) > 1 ? charts_[steps_[i].chart].name + "." + n : n);
     }
   std::sort(names.begin(), names.end(), numeric_less);
   std::string out = "{";

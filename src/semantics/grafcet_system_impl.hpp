@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "model/chart.hpp"
@@ -181,6 +182,7 @@ class GrafcetSystem final : public TransitionSystem {
   }
   int find_step(const std::string& pou, std::string_view name) const;
   int find_chart(const std::string& pou, std::string_view name) const;
+  int steps_named(std::string_view name) const;
   int input_index(const model::Pou& pou, const std::string& name);
   bool compile(const model::Pou& pou, const model::Expr& e, CExpr& out, bool under_edge);
   /// compile() then checks that integer inputs are only compared with constants.
@@ -221,6 +223,15 @@ class GrafcetSystem final : public TransitionSystem {
 
   std::vector<GStep> steps_;
   std::vector<GChart> charts_;
+  /// "POU.CHART" upper-cased -> index in charts_ (first of equal names), for find_chart.
+  std::unordered_map<std::string, int> chart_index_;
+  /// "POU.STEP" upper-cased -> the step and how many steps of the POU have that name.
+  struct StepEntry {
+    int step = -1, count = 0;
+  };
+  std::unordered_map<std::string, StepEntry> step_index_;
+  /// Upper-cased step name -> how many steps, in every POU, have it (observable names).
+  std::unordered_map<std::string, int> step_name_count_;
   std::vector<GTrans> trans_;
   std::vector<GStored> stored_;
   std::vector<GForce> forces_;

@@ -286,5 +286,46 @@ TEST(SizeLimits, LintOnALongChainIsLinear) {
   EXPECT_NE(r.out.find("0 errors"), std::string::npos) << r.out.substr(0, 2000);
 }
 
+/// A chain of `n` partial grafcets nested in G0 by macro-steps (`enclosing`: by enclosing
+/// steps instead), each with its own steps and transitions.
+std::string nested_g7(int n, bool enclosing) {
+  std::string g7 = "input a;\noutput o;\n";
+  auto child = [&](int i) {
+    return enclosing ? "step M" + std::to_string(i) + " encloses G" + std::to_string(i + 1) + ";"
+                     : "step M" + std::to_string(i) + " macro G" + std::to_string(i + 1) + ";";
+  };
+  g7 += "grafcet G0 { step 1 initial; " + child(0) + " transition t0: 1 -> M0 when a; "
+        "transition u0: M0 -> 1 when !a; }\n";
+  for (int i = 1; i <= n; ++i) {
+    const auto k = std::to_string(i);
+    const std::string entry = enclosing ? "step E" + k + " linked;" : "step E" + k + " entry;";
+    const std::string exit = enclosing ? "step S" + k + ";" : "step S" + k + " exit;";
+    if (i < n)
+      g7 += "grafcet G" + k + " { " + entry + " " + child(i) + " " + exit + " transition a" + k +
+            ": E" + k + " -> M" + k + " when a; transition b" + k + ": M" + k + " -> S" + k +
+            " when !a; }\n";
+    else
+      g7 += "grafcet G" + k + " { " + entry + " " + exit + " transition a" + k + ": E" + k +
+            " -> S" + k + " when a; action S" + k + ": o; }\n";
+  }
+  return g7;
+}
+
+TEST(SizeLimits, ChartsNestedDeeperThanTheLimitAreALocatedError) {
+  // 10,000 nested macro-steps took > 60 s under `rsg --timeout 5`, 1,000 nested enclosing
+  // steps 40 s and 1.7 GB under `check --timeout 5`; lint was quadratic in the depth.
+  for (const bool enclosing : {false, true}) {
+    SCOPED_TRACE(enclosing ? "enclosing steps" : "macro-steps");
+    const auto deep = write_temp(nested_g7(enclosing ? 1000 : 10000, enclosing), ".g7");
+    for (const char* sub : {"lint", "rsg --timeout 5", "check --timeout 5"})
+      expect_located_error(std::string(sub) + " " + q(deep), deep + ":",
+                           "charts nested more than 200 levels deep");
+    // At the limit the chart loads and is decided.
+    const auto ok = write_temp(nested_g7(199, enclosing), ".g7");
+    const auto r = run_sfcv("lint " + q(ok));
+    EXPECT_EQ(r.exit_code, 0) << r.out.substr(0, 2000) << r.err.substr(0, 2000);
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -44,9 +44,19 @@ TEST(RsgCli, SummaryAndListing) {
   EXPECT_NE(r.out.find("{2} --[!a]--> s0 {1}"), std::string::npos) << r.out;
 }
 
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+/// The grouped graph's situation nodes ("  g3 [id=\"sg3\", ..."; edges are \"se0\").
+std::size_t situation_nodes(const std::string& dot) { return count(dot, " [id=\"sg"); }
+
 TEST(RsgCli, DotAndJson) {
   const auto path = write_temp(kToggle, ".g7");
-  const auto dot = run_sfcv("rsg --dot - " + path);
+  // Every stable situation, its edges labelled with their input conditions.
+  const auto dot = run_sfcv("rsg --dot-states - " + path);
   EXPECT_EQ(dot.exit_code, 0);
   EXPECT_NE(dot.out.find("digraph rsg"), std::string::npos);
   EXPECT_NE(dot.out.find("label=\"a\""), std::string::npos) << dot.out;
@@ -57,6 +67,28 @@ TEST(RsgCli, DotAndJson) {
   EXPECT_EQ(j["states"].size(), 2u);
   EXPECT_EQ(j["edges"].size(), 2u);
   EXPECT_EQ(j["edges"][0]["condition"], "a");
+}
+
+// The pistons' RSG has 96 stable situations in 5 step situations: --dot draws 5 nodes (the
+// 96-node graph took graphviz minutes), and a cap says what it left out.
+TEST(RsgCli, DotGroupsByStepSituationWithACap) {
+  const auto pistons = source_path("examples/pistons/pistons.g7");
+  const auto r = run_sfcv("rsg --dot - " + pistons);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("digraph rsg {", 0), 0u) << r.out;  // the graph alone, for a pipe into dot
+  EXPECT_EQ(situation_nodes(r.out), 5u) << r.out;
+  EXPECT_NE(r.out.find("label=\"{X10, X20}\\n32 stable situations\", peripheries=2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("g1 -> g3 [id=\"se4\", label=\"(2) X11 -> X12\\l\"]"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find("left out"), std::string::npos) << r.err;
+
+  const auto cut = run_sfcv("rsg --dot - --max-nodes 2 " + pistons);
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  EXPECT_EQ(situation_nodes(cut.out), 2u) << cut.out;
+  EXPECT_NE(cut.out.find("3 more step situations"), std::string::npos) << cut.out;
+  EXPECT_NE(cut.err.find("sfcv rsg --dot: 2 of 5 step situations are drawn (the first 2 "
+                         "breadth-first), 3 left out; --max-nodes N draws N, --max-nodes 0 every one"),
+            std::string::npos)
+      << cut.err;
 }
 
 TEST(RsgCli, InstabilityIsAnErrorWithItsCycle) {

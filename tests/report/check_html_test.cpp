@@ -44,6 +44,55 @@ TEST(CheckHtml, SummaryChartAndPlayerData) {
   EXPECT_NE(html.find("document.getElementById(\"sfcv-data\")"), std::string::npos);  // the script
 }
 
+TEST(CheckHtml, ShowsAPropertysDescriptionUnderItsName) {
+  HtmlReport r;
+  r.result = result();
+  r.result["properties"][0]["description"] = "a & b never hold <together>";
+  const auto html = check_html(r);
+  EXPECT_NE(html.find("AG !(a &amp; b)<div class=\"description\">a &amp; b never hold &lt;together&gt;</div>"),
+            std::string::npos);
+  EXPECT_EQ(check_html(HtmlReport{result(), "", "", {}, "", "", {}}).find("class=\"description\""),
+            std::string::npos);
+}
+
+TEST(CheckHtml, SituationGraphSectionAndQueryPage) {
+  HtmlReport r;
+  r.result = result();
+  const auto iec = check_html(r);
+  EXPECT_EQ(iec.find("id=\"situations\""), std::string::npos);  // IEC 61131-3: no situation graph
+  r.situation_graph_svg = "<svg id=\"rsg\"></svg>";
+  r.situation_graph_note = "5 step situations, 96 stable situations";
+  r.situation_node_ids["X10,X20"] = "sg0";
+  const auto html = check_html(r);
+  EXPECT_NE(html.find("<div id=\"situations-svg\" class=\"fit\">\n<svg id=\"rsg\"></svg>"), std::string::npos);
+  EXPECT_NE(html.find("5 step situations, 96 stable situations"), std::string::npos);
+  EXPECT_NE(html.find("\"situations\":{\"X10,X20\":\"sg0\"}"), std::string::npos);
+
+  const auto answers = nlohmann::json::parse(R"json({
+    "model": "p.g7", "semantics": "grafcet",
+    "graph": {"situations": 96, "evolutions": 480, "complete": true, "limit": "", "anomalies": 0},
+    "queries": [
+      {"query": "Y0", "sort": "situations", "count": 12,
+       "elements": [{"text": "#0 {X10, X20}"}, {"text": "#1"}, {"text": "#2"}, {"text": "#3"},
+                    {"text": "#4"}, {"text": "#5"}, {"text": "#6"}, {"text": "#7"}, {"text": "#8"},
+                    {"text": "#9"}, {"text": "#10"}, {"text": "#11 <last>"}]},
+      {"query": "card(Y)", "sort": "number", "value": 96},
+      {"query": "Y0 = {}", "sort": "test", "value": false, "verdict": "violated"}
+    ]})json");
+  const auto page = query_html(answers, r);
+  EXPECT_NE(page.find("<h1>sfcv query: p.g7</h1>"), std::string::npos);
+  EXPECT_NE(page.find("96 situations &middot; 480 evolutions"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"name\"><code>Y0</code></td><td class=\"answer\">12 situations</td>"),
+            std::string::npos) << page;
+  EXPECT_NE(page.find("<summary>2 more</summary>"), std::string::npos);
+  EXPECT_NE(page.find("<code>#11 &lt;last&gt;</code>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"answer\">96</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"answer\">false</td><td><span class=\"verdict violated\">violated</span>"),
+            std::string::npos);
+  EXPECT_NE(page.find("<svg id=\"rsg\"></svg>"), std::string::npos);
+  EXPECT_EQ(page.find("src=\"http"), std::string::npos);
+}
+
 TEST(CheckHtml, SaysWhyThereIsNoChart) {
   HtmlReport r;
   r.result = result();

@@ -212,7 +212,10 @@ class Run {
     for (std::size_t k = 1; k < states.size(); ++k) {
       const auto bits = sys_.inputs_between(states[k - 1], states[k]);
       // Consecutive states of a run are related by construction: a gap is a bug, never a trace.
-      if (bits.empty()) throw std::logic_error("bdd engine: a trace step without a transition");
+      // No bits is also the answer of a system without inputs: then the relation decides.
+      if (bits.empty() &&
+          (sys_.preimage(sys_.singleton(states[k])) & sys_.singleton(states[k - 1])).is_false())
+        throw std::logic_error("bdd engine: a trace step without a transition");
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
       t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
