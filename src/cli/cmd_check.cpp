@@ -40,6 +40,7 @@ struct CheckOptions {
   std::string model;
   std::string format = "auto";
   std::vector<std::string> ctl;
+  std::vector<std::string> ltl;
   std::vector<std::string> patterns;
   std::string spec;
   std::string checks;  ///< empty: all when no property is given, else none
@@ -194,7 +195,7 @@ int run_check(const CheckOptions& o) {
   const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
-                            o.assume, o.patterns, {}};
+                            o.assume, o.patterns, {}, o.ltl};
   // A bound in time ("within 2 s") counts cycles of --cycle when time is discrete.
   if (o.system.time == "discrete") inputs.pattern_options.cycle_ms = parse_cycle_ms(o.system.cycle);
   auto parsed = logic::parse_check_inputs(inputs);
@@ -317,11 +318,14 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
+  sub->add_option("--ltl", opts->ltl,
+                  "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
   sub->add_option("--pattern", opts->patterns,
                   "A requirement pattern, e.g. 'response(start, V1, within 5 cycles)' or "
                   "'absence(V1 & V3, after start)' (repeatable; list: sfcv patterns)");
   sub->add_option("--spec", opts->spec,
-                  "A file of 'property name: formula;', 'pattern name: pattern;', 'assume e;', 'fair e;'");
+                  "A file of 'property name: formula;', 'pattern name: pattern;', "
+                  "'ltl name: formula;', 'assume e;', 'fair e;'");
   std::string names;
   for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);
   sub->add_option("--checks", opts->checks,

@@ -38,6 +38,7 @@ struct ExportOptions {
   std::string to;
   std::string output;
   std::vector<std::string> ctl;
+  std::vector<std::string> ltl;
   std::string spec;
   std::vector<std::string> assume;
   std::string checks;  ///< empty: reachability when no property is given
@@ -63,7 +64,7 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
 
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
 void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
-  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}};
+  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}, o.ltl};
   auto parsed = logic::parse_check_inputs(inputs);
   print_or_throw(parsed.diagnostics, "errors in the properties");
   if (!parsed.spec.fairness.empty())
@@ -110,6 +111,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   } catch (const engine::ExportError& e) {
     throw InputError(std::string("sfcv export: ") + e.what());
   }
+  if (o.to != "promela" && !exported.model.ltl.empty())
+    throw InputError("sfcv export --to " + o.to + ": LTL properties are exported to promela only");
   if (!smv && !exported.ctl_only.empty()) {
     std::string names;
     for (const auto& n : exported.ctl_only) names += (names.empty() ? "" : ", ") + n;
@@ -193,6 +196,7 @@ void add_export_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("-o,--output", opts->output, "Output file (default: standard output)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_option("--ctl", opts->ctl, "A CTL property (repeatable); promela/aiger: invariants AG p");
+  sub->add_option("--ltl", opts->ltl, "An LTL property (repeatable); promela only: an ltl claim");
   sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;'");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state (repeatable)");
   sub->add_option("--checks", opts->checks,

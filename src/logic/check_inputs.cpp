@@ -36,6 +36,15 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
       out.spec.properties.push_back(std::move(nf));
     }
   }
+  for (const auto& text : in.ltl) {
+    auto r = parse_ltl(text, option_source("--ltl", text));
+    append(std::move(r.diagnostics));
+    if (r.formula) {
+      NamedFormula nf{text, r.formula, {}, {}};
+      nf.where.file = "--ltl";
+      out.spec.properties.push_back(std::move(nf));
+    }
+  }
   for (const auto& text : in.patterns) {
     auto r = parse_pattern(text, option_source("--pattern", text), in.pattern_options);
     append(std::move(r.diagnostics));
@@ -77,6 +86,7 @@ std::vector<model::ExprPtr> assumption_exprs(const Spec& spec) {
 std::string property_source(const std::string& name, const model::SourceLocation& where) {
   if (where.file.empty() || where.file == "--ctl") return "--ctl '" + name + "'";
   if (where.file == "--pattern") return "--pattern '" + name + "'";
+  if (where.file == "--ltl") return "--ltl '" + name + "'";
   return where.file;
 }
 

@@ -23,6 +23,7 @@ struct CheckInputs {
   std::vector<std::string> assume;   ///< --assume
   std::vector<std::string> patterns;  ///< --pattern (logic/pattern.hpp)
   PatternOptions pattern_options;     ///< for --pattern and the spec's `pattern` statements
+  std::vector<std::string> ltl;      ///< --ltl formulas
 };
 
 struct ParsedInputs {
@@ -30,7 +31,7 @@ struct ParsedInputs {
   model::Diagnostics diagnostics;
 };
 
-/// Parses everything; properties from --ctl and --pattern are named by their text.
+/// Parses everything; properties from --ctl, --pattern and --ltl are named by their text.
 ParsedInputs parse_check_inputs(const CheckInputs& in);
 
 /// The assumptions as chart expressions, for semantics::*Options::assumptions.

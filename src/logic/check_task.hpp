@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "logic/formula.hpp"
 #include "logic/fwd.hpp"
 #include "logic/standard_checks.hpp"
 #include "model/budget.hpp"
@@ -42,5 +43,17 @@ struct CheckTask {
   /// Also measure the coverage of steps, transitions and actions (explicit engine).
   bool coverage = false;
 };
+
+/// The first LTL property of `task`, or null: engines that check CTL only refuse the task with
+/// ltl_refusal(), never skip the property.
+inline const Property* first_ltl_property(const CheckTask& task) {
+  for (const auto& p : task.properties)
+    if (p.formula && is_ltl(*p.formula)) return &p;
+  return nullptr;
+}
+inline std::string ltl_refusal(std::string_view engine, const Property& p) {
+  return "the " + std::string(engine) + " engine does not check LTL properties ('" + p.name +
+         "'); use --engine explicit (or auto)";
+}
 
 }  // namespace sfcv::logic

@@ -22,6 +22,7 @@ int precedence(Op op) {
     case Op::And: return 4;
     case Op::Compare: return 5;
     case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
+    case Op::X: case Op::F: case Op::G:
       return 6;
     default: return 7;
   }
@@ -41,6 +42,12 @@ std::string_view op_text(Op op) {
     case Op::AF: return "AF ";
     case Op::EG: return "EG ";
     case Op::AG: return "AG ";
+    case Op::X: return "X ";
+    case Op::F: return "F ";
+    case Op::G: return "G ";
+    case Op::U: return " U ";
+    case Op::R: return " R ";
+    case Op::W: return " W ";
     default: return "";
   }
 }
@@ -67,8 +74,16 @@ void print(const Formula& f, int context, std::string& out) {
       out += std::to_string(f.value);
       break;
     case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
+    case Op::X: case Op::F: case Op::G:
       out += op_text(f.op);
       print(*f.args[0], p, out);
+      break;
+    case Op::U: case Op::R: case Op::W:  // always parenthesised: (p U q)
+      out += '(';
+      print(*f.args[0], 0, out);
+      out += op_text(f.op);
+      print(*f.args[1], 0, out);
+      out += ')';
       break;
     case Op::EU: case Op::AU:
       out += f.op == Op::EU ? "E[" : "A[";
@@ -182,8 +197,22 @@ bool is_temporal(Op op) {
     case Op::AU:
       return true;
     default:
+      return is_ltl_op(op);
+  }
+}
+
+bool is_ltl_op(Op op) {
+  switch (op) {
+    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+      return true;
+    default:
       return false;
   }
+}
+
+bool is_ltl(const Formula& f) {
+  if (is_ltl_op(f.op)) return true;
+  return std::any_of(f.args.begin(), f.args.end(), [](const FormulaPtr& a) { return is_ltl(*a); });
 }
 
 bool is_propositional(const Formula& f) {

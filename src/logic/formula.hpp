@@ -1,5 +1,7 @@
 #pragma once
-// CTL formulas over the observables of a transition system (steps, actions, variables).
+// CTL and LTL formulas over the observables of a transition system (steps, actions, variables).
+// A property is either CTL (path quantifiers E/A on every temporal operator) or LTL (the linear
+// operators X F G U R W, implicitly for all paths); the parsers never mix the two.
 // Immutable: constructors return shared nodes; resolution against a system makes new nodes.
 
 #include <cstdint>
@@ -17,6 +19,9 @@ enum class Op {
   Not, And, Or, Implies, Iff, Xor,
   EX, AX, EF, AF, EG, AG,
   EU, AU,   ///< args[0] U args[1]
+  // LTL (logic/ltl_parser): X next, F eventually, G always; args[0] U/R/W args[1] are until,
+  // release and weak until.
+  X, F, G, U, R, W,
 };
 
 enum class CompareOp { Eq, Ne, Lt, Le, Gt, Ge };
@@ -57,6 +62,9 @@ FormulaPtr make_fall(const FormulaPtr& p, int line = 0, int column = 0);
 bool reads_previous(const Formula& f);
 
 bool is_temporal(Op op);
+bool is_ltl_op(Op op);
+/// Some LTL operator below: an LTL property (checked on paths, not by CTL labelling).
+bool is_ltl(const Formula& f);
 /// No temporal operator anywhere below.
 bool is_propositional(const Formula& f);
 /// Names of the atoms and compared variables, in order of first appearance, without repeats.

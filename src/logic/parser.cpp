@@ -148,7 +148,9 @@ const Formula* first_temporal(const Formula& f) {
 
 class Parser {
  public:
-  explicit Parser(const std::vector<Token>& toks, std::size_t pos = 0) : t_(toks), pos_(pos) {}
+  /// `ltl`: the linear operators X F G U R W are keywords and the CTL ones are refused.
+  explicit Parser(const std::vector<Token>& toks, std::size_t pos = 0, bool ltl = false)
+      : t_(toks), pos_(pos), ltl_(ltl) {}
 
   FormulaPtr formula() { return iff(); }
   const Token& peek(std::size_t k = 0) const { return t_[std::min(pos_ + k, t_.size() - 1)]; }
@@ -204,10 +206,40 @@ class Parser {
     return lhs;
   }
   FormulaPtr conjunction() {
-    auto lhs = unary();
+    auto lhs = until();
     while (peek().kind == Tok::And) {
       const auto& op = next();
-      lhs = bounded(make_op(Op::And, {lhs, unary()}, op.line, op.column), op);
+      lhs = bounded(make_op(Op::And, {lhs, until()}, op.line, op.column), op);
+    }
+    return lhs;
+  }
+  // LTL's binary operators bind tighter than & and weaker than the unary ones (as in Spot):
+  // `a & b U c` is `a & (b U c)`, `G a U b` is `(G a) U b`; right associative.
+  static bool ltl_binary(const Token& t, Op& op) {
+    if (t.kind != Tok::Ident) return false;
+    if (t.text == "U") op = Op::U;
+    else if (t.text == "R") op = Op::R;
+    else if (t.text == "W") op = Op::W;
+    else return false;
+    return true;
+  }
+  static bool ltl_unary(const Token& t, Op& op) {
+    if (t.kind != Tok::Ident) return false;
+    if (t.text == "X") op = Op::X;
+    else if (t.text == "F") op = Op::F;
+    else if (t.text == "G") op = Op::G;
+    else return false;
+    return true;
+  }
+  FormulaPtr until() {
+    if (!ltl_) return unary();
+    const model::NestingLevel level(depth_);
+    enter(level, peek());
+    auto lhs = unary();
+    Op op;
+    if (ltl_binary(peek(), op)) {
+      const auto& t = next();
+      return bounded(make_op(op, {lhs, until()}, t.line, t.column), t);
     }
     return lhs;
   }
@@ -220,7 +252,14 @@ class Parser {
       return make_op(Op::Not, {unary()}, t.line, t.column);
     }
     Op op;
+    if (ltl_ && ltl_unary(t, op)) {
+      next();
+      return make_op(op, {unary()}, t.line, t.column);
+    }
     if (t.kind == Tok::Ident && is_temporal_keyword(t.text, op)) {
+      if (ltl_)
+        throw SyntaxError(t, "CTL operator " + describe(t) + " in an LTL formula (write " +
+                                 t.text.substr(1) + "; every LTL path is universal)");
       next();
       return make_op(op, {unary()}, t.line, t.column);
     }
@@ -269,7 +308,7 @@ class Parser {
       expect(Tok::RParen, "')'");
       return f;
     }
-    if (t.kind == Tok::Ident && (t.text == "E" || t.text == "A") &&
+    if (!ltl_ && t.kind == Tok::Ident && (t.text == "E" || t.text == "A") &&
         peek(1).kind == Tok::LBracket) {
       next();
       next();
@@ -303,7 +342,8 @@ class Parser {
       return history_term(t);
     if (t.kind == Tok::Ident) {
       Op op;
-      if (is_temporal_keyword(t.text, op) || is_xor(t) || t.text == "U")
+      if (is_temporal_keyword(t.text, op) || is_xor(t) || t.text == "U" ||
+          (ltl_ && (ltl_unary(t, op) || ltl_binary(t, op))))
         throw SyntaxError(t, "expected an operand, found keyword " + describe(t));
       next();
       if (is_cmp(peek().kind)) {
@@ -351,6 +391,7 @@ class Parser {
 
   const std::vector<Token>& t_;
   std::size_t pos_;
+  bool ltl_ = false;
   int depth_ = 0;
 };
 
@@ -367,10 +408,11 @@ model::Diagnostic error_at(const std::string& file, int line, int column, std::s
 
 }  // namespace
 
-ParsedFormula parse_formula(std::string_view text, std::string source) {
+namespace {
+ParsedFormula parse_one(std::string_view text, std::string source, bool ltl) {
   ParsedFormula out;
   const auto toks = lex(text);
-  Parser p(toks);
+  Parser p(toks, 0, ltl);
   try {
     auto f = p.formula();
     if (p.peek().kind == Tok::Semi && p.peek(1).kind == Tok::End) p.next();
@@ -381,6 +423,15 @@ ParsedFormula parse_formula(std::string_view text, std::string source) {
     out.diagnostics.push_back(error_at(source, e.line, e.column, e.what()));
   }
   return out;
+}
+}  // namespace
+
+ParsedFormula parse_formula(std::string_view text, std::string source) {
+  return parse_one(text, std::move(source), false);
+}
+
+ParsedFormula parse_ltl(std::string_view text, std::string source) {
+  return parse_one(text, std::move(source), true);
 }
 
 ParsedFormula parse_propositional(std::string_view text, std::string source) {
@@ -401,8 +452,9 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
   const auto toks = lex(text);
   std::size_t pos = 0;
   while (toks[pos].kind != Tok::End) {
-    Parser p(toks, pos);
-    const Token head = p.peek();
+    const Token head = toks[pos];
+    const bool ltl_entry = head.kind == Tok::Ident && model::iequals(head.text, "ltl");
+    Parser p(toks, pos, ltl_entry);
     bool consumed = false;
     try {
       NamedFormula nf;
@@ -410,7 +462,8 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
       nf.where.line = head.line;
       nf.where.column = head.column;
       enum { Property, Assume, Fair } kind;
-      if (head.kind == Tok::Ident && model::iequals(head.text, "property")) {
+      if (head.kind == Tok::Ident &&
+          (model::iequals(head.text, "property") || ltl_entry)) {
         kind = Property;
         p.next();
         const Token name = p.peek();
@@ -452,7 +505,8 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
         kind = Fair;
         p.next();
       } else {
-        throw SyntaxError(head, "expected 'property', 'pattern', 'assume' or 'fair', found " + describe(head));
+        throw SyntaxError(head, "expected 'property', 'ltl', 'pattern', 'assume' or 'fair', found " +
+                                    describe(head));
       }
       nf.formula = p.formula();
       p.expect(Tok::Semi, "';' at the end of the statement");

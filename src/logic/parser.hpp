@@ -25,6 +25,10 @@ struct ParsedFormula {
 /// Parses one formula; `source` names it in diagnostics ("--ctl", a file name).
 ParsedFormula parse_formula(std::string_view text, std::string source = "<formula>");
 
+/// Parses one LTL formula: X F G (unary, like !) and U R W (binary, tighter than &, right
+/// associative) over the same atoms; the CTL operators are errors.
+ParsedFormula parse_ltl(std::string_view text, std::string source = "<ltl>");
+
 /// Parses a formula that must be propositional (assumptions, fairness): a temporal operator is
 /// an error pointing at it.
 ParsedFormula parse_propositional(std::string_view text, std::string source = "<expr>");

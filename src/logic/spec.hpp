@@ -3,6 +3,7 @@
 //
 //   -- comments start with -- or //
 //   property no_overfill_T1: AG !(V1 & V3);
+//   ltl drains: G (V3 -> F !V3);  -- an LTL property (X F G U R W), over every path
 //   pattern fills_T1: response(start, V1, within 5 cycles);   -- logic/pattern.hpp
 //   assume !(LIS1 & LIS2);      -- an assumption over inputs and state (propositional)
 //   fair S1;                    -- runs that visit S1 infinitely often

@@ -598,6 +598,10 @@ class BddModelChecker final : public ModelChecker {
       if (why) *why = "no system to check";
       return false;
     }
+    if (const auto* ltl = logic::first_ltl_property(task)) {
+      if (why) *why = logic::ltl_refusal("bdd", *ltl);
+      return false;
+    }
     try {
       if (task.system->kind() == semantics::SemanticsKind::Grafcet)
         semantics::build_grafcet_circuit(*task.system, task.limits.deadline);

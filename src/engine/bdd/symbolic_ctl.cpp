@@ -48,8 +48,10 @@ Bdd SymbolicCtl::compute(const logic::Formula& f) {
       const Bdd g = fair ? eg_fair(!q) : eg(!q);
       return !(eu(!q, (!p) & (!q)) | g);
     }
+    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+      break;  // LTL: can_handle refuses it (logic::first_ltl_property)
   }
-  return Bdd::constant(false);
+  throw std::logic_error("symbolic CTL labelling of an LTL operator: " + logic::to_string(f));
 }
 
 Bdd SymbolicCtl::fair_states() const {

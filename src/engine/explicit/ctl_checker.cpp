@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "logic/formula.hpp"
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 
@@ -127,8 +128,10 @@ StateSet CtlChecker::compute(const Formula& f) {
       const auto np = negate(arg(0));
       return negate(disj(eu(nq, fair_and(conj(np, nq))), eg(nq)));
     }
+    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+      break;  // LTL: path formulas, checked by ltl_checker.hpp, never labelled on states
   }
-  return StateSet(n, 0);
+  throw InternalError("CTL labelling of an LTL operator: " + logic::to_string(f));
 }
 
 StateSet CtlChecker::ex(const StateSet& p) {

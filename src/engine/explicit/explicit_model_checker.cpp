@@ -4,6 +4,7 @@
 
 #include "engine/explicit/compiled_successors.hpp"
 #include "engine/explicit/invariant_search.hpp"
+#include "engine/explicit/ltl_checker.hpp"
 #include "logic/formula.hpp"
 #include "model/errors.hpp"
 
@@ -135,7 +136,8 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
       // Each property is linear in the graph: checking the deadline between them bounds the
       // overrun by one property.
       task.limits.check_time("checking the properties");
-      r = checker.check(p);
+      r = logic::is_ltl(*p.formula) ? check_ltl(checker, p, task.fairness, task.limits)
+                                    : checker.check(p);
     } catch (const LimitReached& stop) {
       r = logic::PropertyResult{};
       r.name = p.name;

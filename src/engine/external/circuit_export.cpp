@@ -220,6 +220,54 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
   out << "}\n";
 }
 
+// The LTL claims' atoms as macros over the latches only: a claim reads the state between two
+// statements, when the hidden gate bytes hold the previous cycle's values. Each AND gate of an
+// atom's cone becomes a macro sfcv_g<n>; sfcv_start is "at the start of a cycle" (the label
+// sfcv_cycle before the loop, where the latches hold the state at the end of the last cycle).
+namespace {
+void write_ltl_atoms(std::ostream& out, const CircuitExport& m, const Naming& names) {
+  const Aig& aig = m.aig;
+  std::vector<bool> defined(aig.nodes().size(), false);
+  auto ref = [&](AigLit l) -> std::string {
+    if (l == Aig::kFalse) return "0";
+    if (l == Aig::kTrue) return "1";
+    const auto n = Aig::node_of(l);
+    const auto& id = aig.nodes()[n].kind == Aig::NodeKind::And ? "sfcv_g" + std::to_string(n)
+                                                               : names.node[n];
+    return (Aig::is_negated(l) ? "!" : "") + id;
+  };
+  std::vector<std::size_t> stack;
+  auto define = [&](AigLit root) {
+    stack.push_back(Aig::node_of(root));
+    while (!stack.empty()) {
+      const auto n = stack.back();
+      const auto& node = aig.nodes()[n];
+      if (node.kind == Aig::NodeKind::Input)
+        throw UnsupportedConstruct("write_promela: an LTL atom reads inputs");
+      if (node.kind != Aig::NodeKind::And || defined[n]) {
+        stack.pop_back();
+        continue;
+      }
+      const auto l = Aig::node_of(node.left), r = Aig::node_of(node.right);
+      const bool ready_l = aig.nodes()[l].kind != Aig::NodeKind::And || defined[l];
+      const bool ready_r = aig.nodes()[r].kind != Aig::NodeKind::And || defined[r];
+      if (!ready_l) stack.push_back(l);
+      if (!ready_r) stack.push_back(r);
+      if (!ready_l || !ready_r) continue;
+      out << "#define sfcv_g" << n << " (" << ref(node.left) << " && " << ref(node.right) << ")\n";
+      defined[n] = true;
+      stack.pop_back();
+    }
+  };
+  out << "\n";
+  for (std::size_t k = 0; k < m.ltl_atoms.size(); ++k) {
+    define(m.ltl_atoms[k]);
+    out << "#define sfcv_atom_" << k << " (" << ref(m.ltl_atoms[k]) << ")\n";
+  }
+  out << "#define sfcv_start (cycle@sfcv_cycle)\n";
+}
+}  // namespace
+
 void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std::size_t> only_bad) {
   const Aig& aig = m.aig;
   // The assertion is checked on a state before its inputs are chosen.
@@ -259,7 +307,9 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
     if (aig.nodes()[n].kind == Aig::NodeKind::And) out << "hidden byte " << names.node[n] << ";\n";
   for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
   if (!aig.constraints().empty()) out << "hidden byte assumed;\n";
-  out << "\nactive proctype cycle()\n{\n  do\n  :: atomic {\n";
+  if (!m.ltl.empty()) write_ltl_atoms(out, m, names);
+  out << "\nactive proctype cycle()\n{\n" << (m.ltl.empty() ? "" : "sfcv_cycle:\n")
+      << "  do\n  :: atomic {\n";
   bool has_gates = false;
   for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
     has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
@@ -315,6 +365,21 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
     out << "end_excluded:  /* an assumption excludes these inputs: the run is cut here */\n"
            "  false\n";
   out << "}\n";
+  for (std::size_t k = 0; k < m.ltl.size(); ++k) {
+    std::string claim;
+    const auto& text = m.ltl[k].second;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] != '{') {
+        claim += text[i];
+        continue;
+      }
+      const auto close = text.find('}', i);
+      const auto key = text.substr(i + 1, close - i - 1);
+      claim += key == "b" ? "sfcv_start" : "sfcv_atom_" + key;
+      i = close;
+    }
+    out << "\n/* " << m.ltl[k].first << " */\nltl sfcv_ltl_" << k << " { " << claim << " }\n";
+  }
 }
 
 }  // namespace sfcv::engine

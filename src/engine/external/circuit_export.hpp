@@ -22,6 +22,11 @@ struct CircuitExport {
   /// CTL properties (NuSMV/Cadence SMV only): name and formula in NuSMV syntax, where `{x}`
   /// stands for the circuit output named x (a step, an action, a variable).
   std::vector<std::pair<std::string, std::string>> ctl;
+  /// LTL properties (Promela only): name and claim in Spin's LTL syntax, where `{k}` stands for
+  /// the state literal ltl_atoms[k] and `{b}` for "the process is at the start of a cycle"
+  /// (the only states Spin's claim reads: export_model.cpp, ltl_claim).
+  std::vector<std::pair<std::string, std::string>> ltl;
+  std::vector<semantics::AigLit> ltl_atoms;
 };
 
 /// Identifiers in all three languages: in_<input>, s_<latch>, g_<gate node>, o_<output>,
@@ -39,7 +44,8 @@ std::vector<std::string> nusmv_input_identifiers(const CircuitExport& model);
 void write_casmv(std::ostream& out, const CircuitExport& model);
 
 /// Promela: one process running the cycle (inputs chosen nondeterministically, the circuit
-/// evaluated in a d_step), invariants as assertions. With `only_bad`, only that invariant is
+/// evaluated in a d_step), invariants as assertions, LTL properties as `ltl sfcv_ltl_<k>`
+/// claims (select one with `pan -a -N sfcv_ltl_<k>`). With `only_bad`, only that invariant is
 /// asserted (a violated assertion ends Spin's search). Each cycle prints its inputs so that a
 /// Spin trail can be mapped back (`@cycle name=value ...`).
 void write_promela(std::ostream& out, const CircuitExport& model,

@@ -134,6 +134,51 @@ class Builder {
 
 }  // namespace
 
+namespace {
+// An LTL formula over the cycle-end states as a Spin claim. The cycle is one atomic sequence
+// ending in the d_step that writes the latches, and Spin's claim moves once per atomic
+// sequence, so the states the claim reads are exactly the states at the start of a cycle (the
+// latches then hold the state at the end of the last one): sfcv's states, one per cycle. The
+// differential test checks this reading with the claim `[] {b}` ({b}: the process is at the
+// start of a cycle). X is refused: Debian's Spin parses no X in ltl claims.
+std::string ltl_claim(const logic::Formula& f, Builder& builder, std::vector<AigLit>& atoms) {
+  using logic::Op;
+  if (logic::is_propositional(f)) {
+    atoms.push_back(builder.literal(f));
+    return "{" + std::to_string(atoms.size() - 1) + "}";
+  }
+  auto t = [&](std::size_t i) { return ltl_claim(*f.args[i], builder, atoms); };
+  switch (f.op) {
+    case Op::Not: return "!(" + t(0) + ")";
+    case Op::And: return "(" + t(0) + " && " + t(1) + ")";
+    case Op::Or: return "(" + t(0) + " || " + t(1) + ")";
+    case Op::Implies: return "(" + t(0) + " -> " + t(1) + ")";
+    case Op::Iff: return "(" + t(0) + " <-> " + t(1) + ")";
+    case Op::Xor: return "!(" + t(0) + " <-> " + t(1) + ")";
+    case Op::F: return "<> " + t(0);
+    case Op::G: return "[] " + t(0);
+    case Op::U: {
+      const auto a = t(0), c = t(1);
+      return "(" + a + " U " + c + ")";
+    }
+    case Op::R: {
+      const auto a = t(0), c = t(1);
+      return "(" + a + " V " + c + ")";
+    }
+    case Op::W: {  // a W b = (a U b) | G a
+      const auto a = t(0), c = t(1);
+      return "((" + a + " U " + c + ") || [] " + a + ")";
+    }
+    default: throw ExportError("a CTL operator in an LTL property");
+  }
+}
+}  // namespace
+
+static bool has_next(const logic::Formula& f) {
+  if (f.op == logic::Op::X) return true;
+  return std::any_of(f.args.begin(), f.args.end(), [](const auto& a) { return has_next(*a); });
+}
+
 bool is_invariant(const logic::Formula& f) {
   return f.op == logic::Op::AG && logic::is_propositional(*f.args[0]);
 }
@@ -206,6 +251,20 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
 
   for (std::size_t p = 0; p < request.properties.size(); ++p) {
     const auto& prop = request.properties[p];
+    if (logic::is_ltl(*prop.formula)) {
+      if (request.target == ExportTarget::Smv)
+        throw ExportError("LTL property '" + prop.name + "' is exported to Promela only");
+      // Spin extends a run cut inside a cycle (end_excluded) by stuttering there, a path sfcv
+      // does not have; and Debian's Spin parses no X in ltl claims.
+      if (cut != Aig::kTrue)
+        throw ExportError("LTL property '" + prop.name + "': not exported for a chart whose "
+                          "assumptions or input ranges cut cycles (Spin would extend the cut runs)");
+      if (has_next(*prop.formula))
+        throw ExportError("LTL property '" + prop.name + "': X is not exported (Spin's ltl "
+                          "claims take no X)");
+      m.ltl.emplace_back(prop.name, ltl_claim(*prop.formula, builder, m.ltl_atoms));
+      continue;
+    }
     if (is_invariant(*prop.formula)) {
       aig.add_bad(prop.name, Aig::make_not(builder.literal(*prop.formula->args[0])));
       out.bad_property.push_back(static_cast<std::int32_t>(p));

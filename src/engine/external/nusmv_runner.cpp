@@ -167,6 +167,10 @@ class NusmvModelChecker final : public ModelChecker {
       if (why) *why = std::move(w);
       return false;
     };
+    if (const auto* ltl = logic::first_ltl_property(task)) {
+      if (why) *why = logic::ltl_refusal("nusmv", *ltl);
+      return false;
+    }
     if (!task.system || task.system->kind() != semantics::SemanticsKind::Iec61131)
       return no("--engine nusmv: exports are not supported for Grafcet yet");
     if (!task.fairness.empty()) return no("--engine nusmv does not take fairness constraints yet");

@@ -322,6 +322,10 @@ class SatModelChecker final : public ModelChecker {
       if (why) *why = "no system to check";
       return false;
     }
+    if (const auto* ltl = logic::first_ltl_property(task)) {
+      if (why) *why = logic::ltl_refusal(name(), *ltl);
+      return false;
+    }
     if (task.system->kind() == semantics::SemanticsKind::Grafcet) {
       // Grafcet's stable-situation relation is the closure of transient evolutions (a fixpoint
       // per event), not one circuit step; the SAT engines do not unroll it.
