@@ -155,6 +155,18 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
         ++tally.unsupported;
         continue;
       }
+      if (r.verdict == logic::Verdict::Unknown &&
+          r.message.find("initial situations and EF p needs a run from each") != std::string::npos) {
+        // A Grafcet with several initial situations: EF is not a reachability question.
+        EXPECT_TRUE(grafcet);
+        EXPECT_EQ(task.properties[i].formula->op, logic::Op::EF);
+        ++tally.unsupported;
+        continue;
+      }
+      if (r.verdict == logic::Verdict::Unknown && e.verdict == logic::Verdict::Unknown) {
+        EXPECT_TRUE(grafcet);  // no initial situation: nothing to judge
+        continue;
+      }
       if (r.verdict == logic::Verdict::Unknown) {
         // BMC proves nothing and k-induction may need a k beyond the bound; IC3 decides all.
         EXPECT_NE(algorithm, SatAlgorithm::Ic3) << r.message;
@@ -162,7 +174,8 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
       }
       ++tally.decided;
       EXPECT_EQ(e.verdict, r.verdict) << "explicit " << logic::to_string(e.verdict) << ", sat "
-                                      << logic::to_string(r.verdict) << " " << r.message;
+                                      << logic::to_string(r.verdict) << " " << r.message
+                                      << " (explicit: " << e.message << ")";
       EXPECT_EQ(symbolic.results[i].verdict, r.verdict)
           << "bdd " << logic::to_string(symbolic.results[i].verdict) << ", sat "
           << logic::to_string(r.verdict) << " " << r.message;
@@ -227,7 +240,8 @@ TEST(SatEngineAgreement, RandomGrafcets) {
   Tally tally;
   int charts = 0;
   const std::uint64_t last = std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : 100;
-  for (std::uint64_t seed = 1; seed <= last; ++seed) {
+  const std::uint64_t first = std::getenv("SAT_FIRST") ? std::stoull(std::getenv("SAT_FIRST")) : 1;
+  for (std::uint64_t seed = first; seed <= last; ++seed) {
     for (bool single : {true, false}) {
       SCOPED_TRACE("seed " + std::to_string(seed) + (single ? "" : " --multi-input-change"));
       engine::Setup s;

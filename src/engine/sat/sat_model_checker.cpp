@@ -1,6 +1,8 @@
 #include "engine/sat/sat_model_checker.hpp"
 
 #include <chrono>
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "engine/sat/bmc.hpp"
@@ -290,8 +292,22 @@ class Run {
       r.message = not_checked();
       return r;
     }
+    if (initial_situations() == 0) {  // as the explicit engine: no state to judge
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state: every initial valuation's evolutions end in an anomaly";
+      return r;
+    }
     const auto& a = answers_[q.targets.front()];
     const bool invariant = q.shape == Question::Shape::Invariant;
+    if (!invariant && a.kind == ReachResult::Kind::Reached && initial_situations() != 1) {
+      // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
+      // situations (one per initial valuation) does not show it for the others.
+      r.verdict = Verdict::Unknown;
+      r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                  " engine: this Grafcet has " + std::to_string(initial_situations()) +
+                  " initial situations and EF p needs a run from each; use --engine explicit or bdd";
+      return r;
+    }
     switch (a.kind) {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
@@ -308,6 +324,23 @@ class Run {
         break;
     }
     return r;
+  }
+
+  /// The number of distinct initial states (IEC: one; Grafcet: one per stable situation some
+  /// initial valuation leads to).
+  std::size_t initial_situations() {
+    if (!grafcet_) return 1;
+    if (!initial_count_) {
+      struct Collect final : semantics::SuccessorSink {
+        std::set<std::vector<semantics::StateWord>> states;
+        void successor(const semantics::Successor& s) override {
+          states.emplace(s.target.begin(), s.target.end());
+        }
+      } init;
+      ts_.initial_states(init);
+      initial_count_ = init.states.size();
+    }
+    return *initial_count_;
   }
 
   PropertyResult check_result(StandardCheck c, const Question& q) {
@@ -375,6 +408,7 @@ class Run {
   std::optional<sat::GrafcetMachine> machine_;  ///< over *grafcet_
   AigLit step_ok_ = Aig::kTrue;
   std::vector<AigLit> targets_;
+  std::optional<std::size_t> initial_count_;
   std::vector<ReachResult> answers_;
   sat::Deadline deadline_;
 };
