@@ -164,12 +164,27 @@ class Run {
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
+    // Every proof is re-checked by fresh solvers before it may read as "holds".
+    auto recheck = [&](std::size_t t, ReachResult& r) {
+      if (r.kind != ReachResult::Kind::Unreachable) return;
+      const auto verdict = sat::recheck(query, t, r.certificate, deadline_);
+      if (!verdict.ok) {
+        r.kind = ReachResult::Kind::Unknown;
+        r.why = verdict.failed == "time"
+                    ? "the time limit passed while re-checking the certificate"
+                    : "the certificate failed its re-check (" + verdict.failed +
+                          "): an engine error, please report it";
+      }
+    };
+    std::vector<ReachResult> out;
     switch (options_.algorithm) {
       case SatAlgorithm::Bmc: return sat::bmc(query, bounds);
-      case SatAlgorithm::KInduction: return sat::k_induction(query, bounds);
+      case SatAlgorithm::KInduction:
+        out = sat::k_induction(query, bounds);
+        for (std::size_t t = 0; t < out.size(); ++t) recheck(t, out[t]);
+        return out;
       case SatAlgorithm::Ic3: break;
     }
-    std::vector<ReachResult> out;
     sat::Ic3Options io;
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
@@ -187,19 +202,9 @@ class Run {
           throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
         r = std::move(run);
       }
+      // At once: a later target that runs out of time must not cost this proof.
+      recheck(t, r);
       out.push_back(std::move(r));
-    }
-    // Every proof is re-checked by fresh solvers before it may read as "holds".
-    for (std::size_t t = 0; t < out.size(); ++t) {
-      if (out[t].kind != ReachResult::Kind::Unreachable) continue;
-      const auto verdict = sat::recheck(query, t, out[t].certificate, deadline_);
-      if (!verdict.ok) {
-        out[t].kind = ReachResult::Kind::Unknown;
-        out[t].why = verdict.failed == "time"
-                         ? "the time limit passed while re-checking the certificate"
-                         : "the certificate failed its re-check (" + verdict.failed +
-                               "): an engine error, please report it";
-      }
     }
     return out;
   }
@@ -292,19 +297,21 @@ class Run {
       r.message = not_checked();
       return r;
     }
-    if (initial_situations() == 0) {  // as the explicit engine: no state to judge
+    const auto initial = initial_situations();
+    if (initial == 0u) {  // as the explicit engine: no state to judge
       r.verdict = Verdict::Unknown;
       r.message = "no initial state: every initial valuation's evolutions end in an anomaly";
       return r;
     }
     const auto& a = answers_[q.targets.front()];
     const bool invariant = q.shape == Question::Shape::Invariant;
-    if (!invariant && a.kind == ReachResult::Kind::Reached && initial_situations() != 1) {
+    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u) {
       // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
       // situations (one per initial valuation) does not show it for the others.
       r.verdict = Verdict::Unknown;
       r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-                  " engine: this Grafcet has " + std::to_string(initial_situations()) +
+                  " engine: this Grafcet has " +
+                  (initial ? std::to_string(*initial) : std::string("maybe several")) +
                   " initial situations and EF p needs a run from each; use --engine explicit or bdd";
       return r;
     }
@@ -327,9 +334,12 @@ class Run {
   }
 
   /// The number of distinct initial states (IEC: one; Grafcet: one per stable situation some
-  /// initial valuation leads to).
-  std::size_t initial_situations() {
+  /// initial valuation leads to), counted explicitly on charts of at most kCountedInputs
+  /// inputs (the enumeration is exponential in them); nullopt when not counted.
+  static constexpr std::size_t kCountedInputs = 10;
+  std::optional<std::size_t> initial_situations() {
     if (!grafcet_) return 1;
+    if (ts_.inputs().size() > kCountedInputs) return std::nullopt;
     if (!initial_count_) {
       struct Collect final : semantics::SuccessorSink {
         std::set<std::vector<semantics::StateWord>> states;
@@ -340,7 +350,7 @@ class Run {
       ts_.initial_states(init);
       initial_count_ = init.states.size();
     }
-    return *initial_count_;
+    return initial_count_;
   }
 
   PropertyResult check_result(StandardCheck c, const Question& q) {
