@@ -16,6 +16,7 @@
 #include "engine/bdd/symbolic_query_evaluator.hpp"
 #include "engine/explicit/canonical_order.hpp"
 #include "engine/explicit/query_evaluator.hpp"
+#include "engine/query/query_service.hpp"
 #include "io/load.hpp"
 #include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -620,6 +621,80 @@ TEST(SymbolicQueryAgreement, TimersCountersAndData) {
     ASSERT_TRUE(s.ts);
     EXPECT_EQ(compare_on(s, 5 + static_cast<std::uint64_t>(time), 60), 60);
   }
+}
+
+// The query service (engine/query/query_service.hpp) gives the same answers through either
+// engine, listed alike: ids, states, conditions and fired transitions; `auto` says which it took.
+void expect_same_listing(const logic::QueryListing& a, const logic::QueryListing& b,
+                         const std::string& q) {
+  EXPECT_EQ(a.sort, b.sort) << q;
+  ASSERT_EQ(a.states.size(), b.states.size()) << q;
+  for (std::size_t i = 0; i < a.states.size(); ++i) {
+    EXPECT_EQ(a.states[i].id, b.states[i].id) << q;
+    EXPECT_EQ(a.states[i].state, b.states[i].state) << q;
+  }
+  ASSERT_EQ(a.edges.size(), b.edges.size()) << q;
+  for (std::size_t i = 0; i < a.edges.size(); ++i) {
+    EXPECT_EQ(a.edges[i].id, b.edges[i].id) << q;
+    EXPECT_EQ(a.edges[i].source.id, b.edges[i].source.id) << q;
+    EXPECT_EQ(a.edges[i].target.state, b.edges[i].target.state) << q;
+    EXPECT_EQ(a.edges[i].fired, b.edges[i].fired) << q;
+  }
+  EXPECT_EQ(a.steps, b.steps) << q;
+}
+
+TEST(QueryService, ExplicitAndBddListTheSameAnswers) {
+  const auto s = load(bench::random_chart_iec(9, 3, 77));
+  ASSERT_TRUE(s.ts);
+  std::vector<std::string> notes;
+  QueryServiceOptions xo;
+  xo.engine = QueryEngineChoice::Auto;
+  xo.note = [&](const std::string& n) { notes.push_back(n); };
+  auto x = make_query_service(*s.ts, xo);
+  EXPECT_EQ(x->name(), "explicit");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "using the explicit engine");
+  QueryGenerator gen(*s.ts, 77);
+  logic::QueryLibrary lib;
+  std::vector<logic::CompiledQuery> queries;
+  for (int i = 0; i < 40; ++i) queries.push_back(logic::compile_query(gen.query(), lib, *s.ts));
+  std::vector<logic::QueryAnswer> explicit_answers;
+  for (const auto& q : queries) explicit_answers.push_back(x->answer(q));
+  const auto summary = x->graph();
+  x.reset();  // one BuDDy manager at a time
+
+  QueryServiceOptions yo;
+  yo.engine = QueryEngineChoice::Bdd;
+  auto y = make_query_service(*s.ts, yo);
+  EXPECT_EQ(y->name(), "bdd");
+  EXPECT_EQ(y->graph().situations, summary.situations);
+  EXPECT_EQ(y->graph().evolutions, summary.evolutions);
+  EXPECT_TRUE(summary.exact());
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const auto b = y->answer(queries[i]);
+    const auto& a = explicit_answers[i];
+    const std::string q = "query " + std::to_string(i);
+    EXPECT_EQ(a.sort, b.sort) << q;
+    EXPECT_EQ(a.truth, b.truth) << q;
+    EXPECT_EQ(a.number, b.number) << q;
+    expect_same_listing(a.set, b.set, q);
+    expect_same_listing(a.witness, b.witness, q);
+  }
+}
+
+TEST(QueryService, AutoSwitchesToBddBeyondTheStateBudget) {
+  // 2^18 situations: more than kAutoQueryExplicitStates.
+  const auto s = load(bench::parallel_branches_iec(18, false));
+  ASSERT_TRUE(s.ts);
+  std::vector<std::string> notes;
+  QueryServiceOptions o;
+  o.engine = QueryEngineChoice::Auto;
+  o.note = [&](const std::string& n) { notes.push_back(n); };
+  auto svc = make_query_service(*s.ts, o);
+  EXPECT_EQ(svc->name(), "bdd");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("switching to the bdd engine"), std::string::npos) << notes[0];
+  EXPECT_GT(svc->graph().situations, kAutoQueryExplicitStates);
 }
 
 }  // namespace
