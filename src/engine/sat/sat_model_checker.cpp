@@ -1,15 +1,19 @@
 #include "engine/sat/sat_model_checker.hpp"
 
 #include <chrono>
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "engine/sat/bmc.hpp"
 #include "engine/sat/certificate.hpp"
+#include "engine/sat/grafcet_machine.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
 #include "logic/circuit_atom.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "semantics/grafcet_circuit.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
 namespace sfcv::engine {
@@ -45,9 +49,15 @@ struct Question {
 class Run {
  public:
   Run(const logic::CheckTask& task, const SatEngineOptions& options)
-      : task_(task), options_(options), ts_(*task.system),
-        circuit_(semantics::build_iec61131_circuit(ts_)) {
-    step_ok_ = circuit_.aig.make_and(circuit_.allowed, Aig::make_not(circuit_.range_error));
+      : task_(task), options_(options), ts_(*task.system) {
+    if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
+      grafcet_.emplace(semantics::build_grafcet_circuit(ts_));
+      machine_.emplace(*grafcet_);
+      step_ok_ = machine_->step_ok();
+    } else {
+      iec_.emplace(semantics::build_iec61131_circuit(ts_));
+      step_ok_ = iec_->aig.make_and(iec_->allowed, Aig::make_not(iec_->range_error));
+    }
   }
 
   logic::CheckReport check() {
@@ -83,8 +93,18 @@ class Run {
   }
 
  private:
-  std::size_t add_target(AigLit lit) {
-    targets_.push_back(lit);
+  /// The circuit observables and properties are read on.
+  semantics::TransitionCircuit& circuit() {
+    return grafcet_ ? static_cast<semantics::TransitionCircuit&>(*grafcet_) : *iec_;
+  }
+  /// The circuit the engines unroll: the IEC scan cycle, or the Grafcet machine whose steps
+  /// are micro-steps of the stable-situation relation.
+  const Aig& engine_aig() const { return machine_ ? machine_->aig() : iec_->aig; }
+
+  /// A target read in the situations the property judges: every IEC cycle, Grafcet's stable
+  /// situations only (grafcet_machine.hpp).
+  std::size_t add_target(AigLit circuit_lit) {
+    targets_.push_back(machine_ ? machine_->in_stable_situation(circuit_lit) : circuit_lit);
     return targets_.size() - 1;
   }
 
@@ -93,7 +113,7 @@ class Run {
     const auto& f = *p.formula;
     if (!task_.fairness.empty()) return q;
     if ((f.op == logic::Op::AG || f.op == logic::Op::EF) && logic::is_propositional(*f.args[0])) {
-      const AigLit inner = logic::circuit_literal(circuit_, *f.args[0]);
+      const AigLit inner = logic::circuit_literal(circuit(), *f.args[0]);
       q.shape = f.op == logic::Op::AG ? Question::Shape::Invariant : Question::Shape::Reach;
       q.targets.push_back(add_target(f.op == logic::Op::AG ? Aig::make_not(inner) : inner));
     }
@@ -102,11 +122,15 @@ class Run {
 
   Question check_question(StandardCheck c) {
     Question q;
+    // Grafcet's standard checks judge transient evolutions too (steps crossed only during
+    // them, events that never stabilise): not invariants of the stable situations.
+    if (grafcet_) return q;
+    auto& iec = *iec_;
     switch (c) {
       case StandardCheck::Reachable:
         for (const auto& s : logic::step_refs(ts_, task_.project)) {
           q.targets.push_back(add_target(logic::circuit_literal(
-              circuit_, *logic::observable_atom(ts_, s.observable))));
+              iec, *logic::observable_atom(ts_, s.observable))));
           q.labels.push_back("step " + logic::describe_step(s) + " is never active");
         }
         q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
@@ -114,7 +138,7 @@ class Run {
       case StandardCheck::DeadTransitions: {
         const auto& trs = ts_.transitions();
         for (std::uint32_t t = 0; t < trs.size(); ++t) {
-          q.targets.push_back(add_target(circuit_.aig.make_and(circuit_.fired[t], step_ok_)));
+          q.targets.push_back(add_target(iec.aig.make_and(iec.fired[t], step_ok_)));
           q.labels.push_back("transition " + trs[t].name +
                              (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
                              " never fires");
@@ -125,7 +149,7 @@ class Run {
       case StandardCheck::Instability:
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         q.shape = Question::Shape::Invariant;
-        q.targets.push_back(add_target(circuit_.aig.make_and(circuit_.allowed, circuit_.range_error)));
+        q.targets.push_back(add_target(iec.aig.make_and(iec.allowed, iec.range_error)));
         break;
       default: break;
     }
@@ -134,18 +158,33 @@ class Run {
 
   std::vector<ReachResult> solve() {
     sat::ReachQuery query;
-    query.aig = &circuit_.aig;
+    query.aig = &engine_aig();
     query.step_ok = step_ok_;
     query.targets = targets_;
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
+    // Every proof is re-checked by fresh solvers before it may read as "holds".
+    auto recheck = [&](std::size_t t, ReachResult& r) {
+      if (r.kind != ReachResult::Kind::Unreachable) return;
+      const auto verdict = sat::recheck(query, t, r.certificate, deadline_);
+      if (!verdict.ok) {
+        r.kind = ReachResult::Kind::Unknown;
+        r.why = verdict.failed == "time"
+                    ? "the time limit passed while re-checking the certificate"
+                    : "the certificate failed its re-check (" + verdict.failed +
+                          "): an engine error, please report it";
+      }
+    };
+    std::vector<ReachResult> out;
     switch (options_.algorithm) {
       case SatAlgorithm::Bmc: return sat::bmc(query, bounds);
-      case SatAlgorithm::KInduction: return sat::k_induction(query, bounds);
+      case SatAlgorithm::KInduction:
+        out = sat::k_induction(query, bounds);
+        for (std::size_t t = 0; t < out.size(); ++t) recheck(t, out[t]);
+        return out;
       case SatAlgorithm::Ic3: break;
     }
-    std::vector<ReachResult> out;
     sat::Ic3Options io;
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
@@ -163,44 +202,75 @@ class Run {
           throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
         r = std::move(run);
       }
+      // At once: a later target that runs out of time must not cost this proof.
+      recheck(t, r);
       out.push_back(std::move(r));
-    }
-    // Every proof is re-checked by fresh solvers before it may read as "holds".
-    for (std::size_t t = 0; t < out.size(); ++t) {
-      if (out[t].kind != ReachResult::Kind::Unreachable) continue;
-      const auto verdict = sat::recheck(query, t, out[t].certificate, deadline_);
-      if (!verdict.ok) {
-        out[t].kind = ReachResult::Kind::Unknown;
-        out[t].why = verdict.failed == "time"
-                         ? "the time limit passed while re-checking the certificate"
-                         : "the certificate failed its re-check (" + verdict.failed +
-                               "): an engine error, please report it";
-      }
     }
     return out;
   }
 
   logic::Trace trace_of(const ReachResult& r, logic::TraceKind kind) const {
-    const Aig& aig = circuit_.aig;
+    if (machine_) return grafcet_trace_of(r, kind);
+    const auto& iec = *iec_;
+    const Aig& aig = iec.aig;
     std::vector<bool> latches;
     for (const auto& l : aig.latches()) latches.push_back(l.initial);
     logic::Trace t;
     t.kind = kind;
     t.steps.push_back({logic::pick_inputs(semantics::InputCondition::always(), ts_.inputs(), {}),
-                       semantics::state_from_latches(ts_, circuit_, latches), {}});
+                       semantics::state_from_latches(ts_, iec, latches), {}});
     // The run is replayed on the circuit itself: a model that is not a run is an engine bug.
     for (std::uint32_t j = 0; j < r.depth; ++j) {
       const auto nodes = aig.evaluate(r.inputs[j], latches);
       if (!Aig::value_of(nodes, step_ok_)) throw std::logic_error("sat engine: a run without a step");
       logic::TraceStep step;
-      step.inputs = semantics::inputs_from_bits(ts_, circuit_, r.inputs[j]);
-      for (std::uint32_t tr = 0; tr < circuit_.fired.size(); ++tr)
-        if (Aig::value_of(nodes, circuit_.fired[tr])) step.fired.push_back(tr);
+      step.inputs = semantics::inputs_from_bits(ts_, iec, r.inputs[j]);
+      for (std::uint32_t tr = 0; tr < iec.fired.size(); ++tr)
+        if (Aig::value_of(nodes, iec.fired[tr])) step.fired.push_back(tr);
       for (std::size_t l = 0; l < latches.size(); ++l)
         latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
-      step.state = semantics::state_from_latches(ts_, circuit_, latches);
+      step.state = semantics::state_from_latches(ts_, iec, latches);
       t.steps.push_back(std::move(step));
     }
+    return t;
+  }
+
+  /// The machine's run as a run of stable situations: each Stable frame is a row, with the
+  /// inputs of the event that left the previous one and every transition cleared on the way;
+  /// an event back to the same situation (a stutter, no edge of the explicit graph) is dropped.
+  logic::Trace grafcet_trace_of(const ReachResult& r, logic::TraceKind kind) const {
+    const Aig& aig = machine_->aig();
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    logic::Trace t;
+    t.kind = kind;
+    std::vector<bool> event, fired(machine_->fired().size(), false);
+    for (std::uint32_t j = 0; j <= r.depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      if (Aig::value_of(nodes, machine_->at_stable()) || Aig::value_of(nodes, machine_->at_boot())) {
+        if (Aig::value_of(nodes, machine_->at_stable())) {
+          std::vector<bool> state_latches(latches.begin(),
+                                          latches.begin() + static_cast<std::ptrdiff_t>(
+                                                                machine_->num_state_latches()));
+          logic::TraceStep step;
+          step.inputs = semantics::inputs_from_bits(ts_, *grafcet_, event);
+          step.state = semantics::state_from_latches(ts_, *grafcet_, state_latches);
+          for (std::uint32_t tr = 0; tr < fired.size(); ++tr)
+            if (fired[tr]) step.fired.push_back(tr);
+          if (t.steps.empty() || step.state != t.steps.back().state) t.steps.push_back(std::move(step));
+        }
+        event = r.inputs[j];
+        fired.assign(fired.size(), false);
+      } else {
+        for (std::size_t tr = 0; tr < fired.size(); ++tr)
+          if (Aig::value_of(nodes, machine_->fired()[tr])) fired[tr] = true;
+      }
+      if (j == r.depth) break;
+      if (!Aig::value_of(nodes, step_ok_)) throw std::logic_error("sat engine: a run without a step");
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    if (t.steps.empty()) throw std::logic_error("sat engine: a Grafcet run without a stable situation");
     return t;
   }
 
@@ -208,7 +278,7 @@ class Run {
     std::string out;
     for (auto t : q.targets)
       if (answers_[t].kind == ReachResult::Kind::Unreachable)
-        out += sat::certificate_text(circuit_.aig, answers_[t].certificate);
+        out += sat::certificate_text(engine_aig(), answers_[t].certificate);
     return out;
   }
 
@@ -227,8 +297,24 @@ class Run {
       r.message = not_checked();
       return r;
     }
+    const auto initial = initial_situations();
+    if (initial == 0u) {  // as the explicit engine: no state to judge
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state: every initial valuation's evolutions end in an anomaly";
+      return r;
+    }
     const auto& a = answers_[q.targets.front()];
     const bool invariant = q.shape == Question::Shape::Invariant;
+    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u) {
+      // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
+      // situations (one per initial valuation) does not show it for the others.
+      r.verdict = Verdict::Unknown;
+      r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                  " engine: this Grafcet has " +
+                  (initial ? std::to_string(*initial) : std::string("maybe several")) +
+                  " initial situations and EF p needs a run from each; use --engine explicit or bdd";
+      return r;
+    }
     switch (a.kind) {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
@@ -247,6 +333,26 @@ class Run {
     return r;
   }
 
+  /// The number of distinct initial states (IEC: one; Grafcet: one per stable situation some
+  /// initial valuation leads to), counted explicitly on charts of at most kCountedInputs
+  /// inputs (the enumeration is exponential in them); nullopt when not counted.
+  static constexpr std::size_t kCountedInputs = 10;
+  std::optional<std::size_t> initial_situations() {
+    if (!grafcet_) return 1;
+    if (ts_.inputs().size() > kCountedInputs) return std::nullopt;
+    if (!initial_count_) {
+      struct Collect final : semantics::SuccessorSink {
+        std::set<std::vector<semantics::StateWord>> states;
+        void successor(const semantics::Successor& s) override {
+          states.emplace(s.target.begin(), s.target.end());
+        }
+      } init;
+      ts_.initial_states(init);
+      initial_count_ = init.states.size();
+    }
+    return initial_count_;
+  }
+
   PropertyResult check_result(StandardCheck c, const Question& q) {
     PropertyResult r;
     r.name = std::string(logic::to_string(c));
@@ -254,7 +360,8 @@ class Run {
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::NotChecked;
       r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-                  " engine; use --engine explicit or bdd";
+                  " engine" + (grafcet_ ? " on a Grafcet chart" : "") +
+                  "; use --engine explicit or bdd";
       return r;
     }
     if (q.shape == Question::Shape::Invariant) {  // Instability: a reachable range error
@@ -263,7 +370,8 @@ class Run {
         r.verdict = Verdict::Violated;
         r.trace = trace_of(a, logic::TraceKind::Counterexample);
         r.findings.push_back("a range error (integer overflow, division by zero or a value out "
-                             "of its type) can occur in " + ts_.describe(r.trace->steps.back().state));
+                             "of its type) can occur in " +
+                             ts_.describe(r.trace->steps.back().state));
       } else if (a.kind == ReachResult::Kind::Unreachable) {
         r.verdict = Verdict::Holds;
         r.message = "no range error can occur";
@@ -305,9 +413,12 @@ class Run {
   const logic::CheckTask& task_;
   SatEngineOptions options_;
   const semantics::TransitionSystem& ts_;
-  semantics::TransitionCircuit circuit_;
+  std::optional<semantics::TransitionCircuit> iec_;
+  std::optional<semantics::GrafcetCircuit> grafcet_;
+  std::optional<sat::GrafcetMachine> machine_;  ///< over *grafcet_
   AigLit step_ok_ = Aig::kTrue;
   std::vector<AigLit> targets_;
+  std::optional<std::size_t> initial_count_;
   std::vector<ReachResult> answers_;
   sat::Deadline deadline_;
 };
@@ -326,16 +437,11 @@ class SatModelChecker final : public ModelChecker {
       if (why) *why = logic::ltl_refusal(name(), *ltl);
       return false;
     }
-    if (task.system->kind() == semantics::SemanticsKind::Grafcet) {
-      // Grafcet's stable-situation relation is the closure of transient evolutions (a fixpoint
-      // per event), not one circuit step; the SAT engines do not unroll it.
-      if (why)
-        *why = "the " + std::string(name()) + " engine does not check Grafcet charts (their "
-               "stable-situation relation is not one circuit step); use --engine explicit or bdd";
-      return false;
-    }
     try {
-      semantics::build_iec61131_circuit(*task.system);
+      if (task.system->kind() == semantics::SemanticsKind::Grafcet)
+        semantics::build_grafcet_circuit(*task.system);
+      else
+        semantics::build_iec61131_circuit(*task.system);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = "the " + std::string(name()) + " engine cannot encode " + e.what();
       return false;

@@ -1,0 +1,59 @@
+#pragma once
+// The Grafcet stable-situation relation as a circuit the SAT engines unroll
+// (docs/engines.md, "Grafcet on the SAT engines"). The Grafcet circuit
+// (semantics/grafcet_circuit.hpp) computes ONE transient evolution; a stable step is the
+// closure of a sequence of them. The machine makes each of its steps one micro-step of that
+// closure and records in a mode where it is:
+//
+//   Boot   (initially):  the initial valuation is read      -> Trans, N := initial_next(I)
+//   Stable (N is a stable situation, the one the property reads):
+//                        an input event I                    -> Trans, N := start_next(N, I)
+//   Trans  (N is a transient situation):
+//            range error / forcing conflict                  -> no step (the event has no end)
+//            stable                                          -> Stable, N := final_next(N)
+//            otherwise                                       -> Trans,  N := evolve(N, Q)
+//
+// Q copies the bits read under an edge (the previous situation), K holds the event's inputs
+// that the evolutions read (they stay fixed during the event). An invariant p of the chart
+// becomes the machine invariant "Stable -> p(N)": transient situations are never judged, as
+// in the explicit and BDD engines. An event that never stabilises loops in Trans forever and
+// so reaches no stable situation, as it has no successor in the explicit graph.
+
+#include <cstdint>
+#include <vector>
+
+#include "semantics/grafcet_circuit.hpp"
+
+namespace sfcv::engine::sat {
+
+class GrafcetMachine {
+ public:
+  explicit GrafcetMachine(const semantics::GrafcetCircuit& circuit);
+
+  const semantics::Aig& aig() const { return aig_; }
+  semantics::AigLit step_ok() const { return step_ok_; }
+  /// The mode literals over the machine's latches (exactly one holds).
+  semantics::AigLit at_boot() const { return boot_; }
+  semantics::AigLit at_stable() const { return stable_; }
+  semantics::AigLit at_transient() const { return transient_; }
+  /// "A stable situation where `circuit_lit` holds": a literal of the Grafcet circuit over its
+  /// state latches (an observable, a property) read on the machine's situation N, in Stable.
+  semantics::AigLit in_stable_situation(semantics::AigLit circuit_lit);
+  /// Per transition of the system: it is cleared by this micro-step (meaningful in Trans).
+  const std::vector<semantics::AigLit>& fired() const { return fired_; }
+  /// Machine latches [0, num_state_latches) are the circuit's state latches, same order.
+  std::size_t num_state_latches() const { return circuit_.num_state_latches; }
+
+ private:
+  /// Copies the cone of `lit` from the circuit into the machine, with circuit latches and
+  /// inputs replaced by `subst` (per circuit node; 0 = not yet translated for AND nodes).
+  semantics::AigLit translate(semantics::AigLit lit, std::vector<semantics::AigLit>& memo);
+
+  const semantics::GrafcetCircuit& circuit_;
+  semantics::Aig aig_;
+  std::vector<semantics::AigLit> on_n_, on_source_, on_boot_;  ///< translation memos
+  semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0;
+  std::vector<semantics::AigLit> fired_;
+};
+
+}  // namespace sfcv::engine::sat
