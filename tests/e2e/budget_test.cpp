@@ -103,6 +103,20 @@ TEST(Budget, TimeoutHoldsOnTheBddEngine) {
   EXPECT_LT(t.seconds, 15.0);
 }
 
+TEST(Budget, TimeoutHoldsUnderAutoOnTheQualityControlPlant) {
+  // Corpus 22: the explicit probe stops at 200,000 states, then BDD operations of a second or
+  // more each. The BDD facade read the clock every 16th operation only: --timeout 20 ended
+  // after 42 s, and --timeout 60 was killed at 120 s.
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  for (const char* engine : {"auto", "bdd"}) {
+    const auto t = timed_run("check " + path + " --engine " + engine + " --timeout 5 --trace none --quiet");
+    EXPECT_NE(t.run.exit_code, 0) << engine << "\n" << t.run.out << t.run.err;
+    EXPECT_NE(t.run.out.find("unknown"), std::string::npos) << engine << "\n" << t.run.out;
+    EXPECT_LT(t.seconds, 30.0) << engine;
+  }
+}
+
 TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
   // A violation on the first evolution, then a state space far beyond --max-states (4^11
   // situations, 2^12 of them initial): the violation stays, what is not decided is unknown.

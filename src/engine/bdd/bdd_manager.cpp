@@ -47,14 +47,24 @@ void quiet_gbc(int pre, bddGbcStat*) {
   }
 }
 
+// A table that grows by doubling is rarely collected: one operation can run for seconds
+// between collections, so each resize polls the deadline too (after it, the tables are
+// consistent; the manager is replaced all the same).
+void deadline_on_resize(int, int) {
+  if (g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
+    g_has_deadline = false;
+    g_failed = true;
+    throw LimitReached(Limit::Time, "time limit reached in the BDD package");
+  }
+}
+
 // Between operations the tables are consistent: past the deadline the next operation throws
 // without failing the manager. Fixpoint loops are made of many operations, so this bounds them
-// to about one operation past the deadline; the garbage-collection hook above stops a single
-// operation that blows up.
-unsigned g_operations = 0;
+// to about one operation past the deadline (every operation reads the clock: one operation on
+// a large model can take a second, and sampling every 16th overshot a 20 s limit by 22 s); the
+// garbage-collection and resize hooks above stop a single operation that blows up.
 void check_deadline() {
-  if (g_has_deadline && (++g_operations & 15U) == 0 &&
-      std::chrono::steady_clock::now() > g_deadline)
+  if (g_has_deadline && std::chrono::steady_clock::now() > g_deadline)
     throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
 }
 
@@ -77,6 +87,7 @@ void init_manager(int nodes, int cache, int ratio, int max_nodes) {
   // small would be collected and resized thousands of times on a large model).
   bdd_setmaxincrease(1 << 26);
   bdd_gbc_hook(quiet_gbc);
+  bdd_resize_hook(deadline_on_resize);
   bdd_reorder_hook(count_reorder);
   bdd_reorder_verbose(0);
   bdd_autoreorder(BDD_REORDER_NONE);
