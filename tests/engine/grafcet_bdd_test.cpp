@@ -9,6 +9,7 @@
 #include <functional>
 #include <random>
 
+#include "support/trace_replay.hpp"
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/bdd/symbolic_system.hpp"
@@ -37,28 +38,6 @@ using test::task_for;
 // Atoms: steps and outputs (the input memory and internal variables make dull formulas).
 bool step_or_output(const semantics::Observable& o) {
   return o.kind == semantics::ObservableKind::Step || o.is_output;
-}
-
-/// Replays a trace through the explicit system: its first state is initial, and each row's
-/// inputs lead from the previous state to the row's state.
-void expect_replays(const semantics::TransitionSystem& ts, const logic::Trace& trace) {
-  ASSERT_FALSE(trace.steps.empty());
-  struct Initial final : semantics::SuccessorSink {
-    std::vector<std::vector<semantics::StateWord>> states;
-    void successor(const semantics::Successor& s) override {
-      states.emplace_back(s.target.begin(), s.target.end());
-    }
-  } init;
-  ts.initial_states(init);
-  EXPECT_NE(std::find(init.states.begin(), init.states.end(), trace.steps.front().state),
-            init.states.end())
-      << "the trace does not start in an initial situation";
-  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
-    const auto run = semantics::simulate(ts, trace.steps[k - 1].state, {trace.steps[k].inputs});
-    ASSERT_TRUE(run.ok) << "row " << k << ": " << run.error;
-    EXPECT_EQ(run.states.back(), trace.steps[k].state) << "row " << k;
-    EXPECT_EQ(run.fired.back(), trace.steps[k].fired) << "row " << k;
-  }
 }
 
 struct Built {
@@ -114,7 +93,7 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
         << (s.results[i].findings.empty() ? "" : " (bdd: " + s.results[i].findings.front() + ")");
     if (s.results[i].trace) {
       ++tally.traces;
-      expect_replays(*b.ts, *s.results[i].trace);
+      test::expect_trace_replays(*b.ts, *s.results[i].trace);
     }
     tally.violated += s.results[i].verdict == logic::Verdict::Violated;
     tally.unstable += s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
@@ -255,7 +234,7 @@ TEST(GrafcetBdd, PalletTransferExample) {
     ASSERT_EQ(e.results.size(), s.results.size());
     for (std::size_t i = 0; i < e.results.size(); ++i) {
       EXPECT_EQ(e.results[i].verdict, s.results[i].verdict) << e.results[i].name;
-      if (s.results[i].trace) expect_replays(*b.ts, *s.results[i].trace);
+      if (s.results[i].trace) test::expect_trace_replays(*b.ts, *s.results[i].trace);
     }
   }
   expect_same_counts(load_file(test::source_path("examples/pistons/pistons.g7")));

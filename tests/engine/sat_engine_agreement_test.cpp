@@ -11,6 +11,7 @@
 
 #include <cstdlib>
 
+#include "support/trace_replay.hpp"
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
@@ -56,30 +57,8 @@ Setup load(const std::string& text, semantics::Iec61131Options options = {},
   return s;
 }
 
-/// A Grafcet trace: its first situation is initial, and each row's inputs lead from the
-/// previous situation to the row's, firing the row's transitions.
-void expect_grafcet_replays(const semantics::TransitionSystem& ts, const logic::Trace& trace) {
-  ASSERT_FALSE(trace.steps.empty());
-  struct Initial final : semantics::SuccessorSink {
-    std::vector<std::vector<semantics::StateWord>> states;
-    void successor(const semantics::Successor& s) override {
-      states.emplace_back(s.target.begin(), s.target.end());
-    }
-  } init;
-  ts.initial_states(init);
-  EXPECT_NE(std::find(init.states.begin(), init.states.end(), trace.steps.front().state),
-            init.states.end())
-      << "the trace does not start in an initial situation";
-  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
-    const auto run = semantics::simulate(ts, trace.steps[k - 1].state, {trace.steps[k].inputs});
-    ASSERT_TRUE(run.ok) << "row " << k << ": " << run.error;
-    EXPECT_EQ(run.states.back(), trace.steps[k].state) << "row " << k;
-    EXPECT_EQ(run.fired.back(), trace.steps[k].fired) << "row " << k;
-  }
-}
-
 void expect_replays(const semantics::TransitionSystem& ts, const logic::Trace& trace) {
-  if (ts.kind() == semantics::SemanticsKind::Grafcet) return expect_grafcet_replays(ts, trace);
+  if (ts.kind() == semantics::SemanticsKind::Grafcet) return test::expect_trace_replays(ts, trace);
   ASSERT_FALSE(trace.steps.empty());
   ASSERT_EQ(semantics::first_initial_state(ts), trace.steps.front().state);
   std::vector<std::vector<std::int64_t>> inputs;

@@ -4,17 +4,7 @@
 # together; the highlighted steps and the shown outputs must be the trace's. Keeps a screenshot.
 # Usage: html_browser_test.sh SFCV SOURCE_DIR OUT_DIR. Exit 77 (skipped) without chromium.
 set -eu
-sfcv=$1
-src=$2
-out=$3
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$browser" ]; then
-  echo "chromium is not installed (scripts/install-deps.sh installs it): browser test skipped"
-  exit 77
-fi
-mkdir -p "$out"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+. "$(dirname "$0")/browser_common.sh"
 plant="$src/examples/chemical_plant/chemical_plant.st"
 "$sfcv" check "$plant" --quiet --ctl 'AG !(V2 & V4)' --json --html "$dir/check.html" >"$dir/result.json" || [ $? -eq 1 ]
 # The saved result renders to the same page.

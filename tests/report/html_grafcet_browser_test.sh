@@ -5,17 +5,7 @@
 # answers `sfcv query --json` gives. Keeps screenshots.
 # Usage: html_grafcet_browser_test.sh SFCV SOURCE_DIR OUT_DIR. Exit 77 (skipped) without chromium.
 set -eu
-sfcv=$1
-src=$2
-out=$3
-browser=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$browser" ]; then
-  echo "chromium is not installed (scripts/install-deps.sh installs it): browser test skipped"
-  exit 77
-fi
-mkdir -p "$out"
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+. "$(dirname "$0")/browser_common.sh"
 pallet="$src/examples/pallet_transfer/pallet_transfer.g7"
 "$sfcv" check "$pallet" --quiet --ctl 'AG !(X10 & X25)' --json --html "$out/grafcet.html" >"$dir/result.json" || [ $? -eq 1 ]
 q1='Act({10, 25})'
