@@ -10,7 +10,7 @@
 #include <unordered_map>
 
 #include "model/names.hpp"
-#include "semantics/grafcet_system_impl.hpp"
+#include "semantics/detail/grafcet_system_impl.hpp"
 
 namespace sfcv::semantics::grafcet {
 

@@ -7,7 +7,7 @@
 
 #include "model/errors.hpp"
 #include "model/names.hpp"
-#include "semantics/grafcet_system_impl.hpp"
+#include "semantics/detail/grafcet_system_impl.hpp"
 
 namespace sfcv::semantics {
 

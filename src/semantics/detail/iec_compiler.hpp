@@ -1,5 +1,5 @@
 // The IEC 61131-3 compiler's shared state (internal to sfcv_semantics): one Compiler object
-// turns a model::Project into the flat Program of semantics/iec_program.hpp. Its member
+// turns a model::Project into the flat Program of semantics/detail/iec_program.hpp. Its member
 // functions live in one file per concept: iec_compile.cpp (POU selection, variables, the driver),
 // iec_compile_expr.cpp (expressions), iec_compile_stmt.cpp (statements),
 // iec_compile_fb.cpp (standard function block instances: timers, counters, edges) and
@@ -17,7 +17,7 @@
 
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
-#include "semantics/iec_program.hpp"
+#include "semantics/detail/iec_program.hpp"
 
 namespace sfcv::semantics::iec::detail {
 using model::ExprKind;

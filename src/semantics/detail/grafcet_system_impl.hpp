@@ -2,6 +2,7 @@
 // Internal: the compiled Grafcet model and the GrafcetSystem class (make_grafcet_system returns
 // it). Shared with grafcet_circuit.cpp, which builds the micro-step circuit from the same model.
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>

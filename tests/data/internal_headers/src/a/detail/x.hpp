@@ -1,0 +1,2 @@
+#pragma once
+inline int detail_x() { return 1; }
