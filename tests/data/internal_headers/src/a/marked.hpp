@@ -1,3 +1,5 @@
 #pragma once
 // Internal header of sfcv_a: only src/a includes it.
-inline int marked() { return 2; }
+inline int marked() {
+  return 2;
+}

@@ -1,2 +1,4 @@
 #pragma once
-inline int detail_x() { return 1; }
+inline int detail_x() {
+  return 1;
+}
