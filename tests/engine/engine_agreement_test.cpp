@@ -16,6 +16,7 @@
 #include "engine/bdd/bdd_manager.hpp"
 #include "engine/explicit/ctl_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "logic/push_negation.hpp"
 #include "logic/formula.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
@@ -113,7 +114,7 @@ class TraceJudge {
     const auto& a = f->args;
     switch (f->op) {
       case Op::Not: {
-        auto pushed = push_negation(a[0]);
+        auto pushed = logic::push_negation(a[0]);
         if (pushed->op == Op::Not) return "";
         keep_.push_back(pushed);
         return at(pushed, i, depth + 1);
@@ -240,7 +241,7 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
     const auto& f = task.properties[i].formula;
     const bool violated = b.verdict == logic::Verdict::Violated;
     EXPECT_EQ(b.trace->kind, violated ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
-    const auto explained = violated ? push_negation(f) : f;
+    const auto explained = violated ? logic::push_negation(f) : f;
     EXPECT_EQ(judge.judge(explained, *b.trace), "");
     ++g_tally.traces;
     g_tally.lassos += b.trace->loop_start.has_value();
