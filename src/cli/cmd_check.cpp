@@ -237,6 +237,9 @@ int run_check(const CheckOptions& o) {
   print_diagnostics(resolve_diags, "errors in the properties");
   if (o.deadlock_paths != "stutter" && o.deadlock_paths != "drop")
     throw UsageError("bad --deadlock-paths '" + o.deadlock_paths + "' (expected stutter or drop)");
+  if (o.deadlock_paths == "drop" && o.engine != "auto" && o.engine != "explicit" && o.engine != "bdd")
+    throw UsageError("--deadlock-paths drop: the " + o.engine +
+                     " engine does not check it; use --engine explicit, bdd or auto");
   logic::set_deadlock_paths(task, o.deadlock_paths == "drop" ? logic::DeadlockPaths::Drop
                                                              : logic::DeadlockPaths::Stutter);
   task.max_findings = o.all_findings ? 0 : task.max_findings;

@@ -92,6 +92,9 @@ TEST(LtlCheck, DeadlockPathsStutterOrDrop) {
   auto bad = run_sfcv("check " + door + " --ltl 'G !Jammed' --deadlock-paths never");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--deadlock-paths"), std::string::npos) << bad.err;
+  bad = run_sfcv("check " + door + " --ctl 'AG !Jammed' --deadlock-paths drop --engine ic3");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("does not check it"), std::string::npos) << bad.err;
 }
 
 TEST(LtlCheck, RefusalsAndErrors) {
