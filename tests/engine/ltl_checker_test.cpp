@@ -397,6 +397,13 @@ TEST(LtlChecker, LimitsGiveUnknown) {
   model::Budget past = model::Budget::with_timeout(1e-9);
   const auto late = check(s, {}, {"G F S1"}, {}, past);
   EXPECT_EQ(late.results[0].verdict, logic::Verdict::Unknown);
+  // The BDD engine: a state limit or the deadline leaves LTL unknown, never holds.
+  const auto bdd = make_bdd_model_checker();
+  for (const auto& b : {budget, past}) {
+    const auto limited = bdd->check(task_of(s, {}, {"G TRUE", "G F S1"}, {}, b));
+    ASSERT_EQ(limited.results.size(), 2u);
+    for (const auto& x : limited.results) EXPECT_EQ(x.verdict, logic::Verdict::Unknown) << x.formula;
+  }
 }
 
 TEST(LtlAutomaton, SmallTableaux) {
