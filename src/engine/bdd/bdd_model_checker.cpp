@@ -625,6 +625,14 @@ class BddModelChecker final : public ModelChecker {
       if (why) *why = "no system to check";
       return false;
     }
+    // Grafcet lassos are not built symbolically yet: BuDDy's node table was seen corrupted
+    // (a crash in a later garbage collection) after them, so the explicit engine checks LTL.
+    if (const auto* ltl = logic::first_ltl_property(task);
+        ltl && task.system->kind() == semantics::SemanticsKind::Grafcet) {
+      if (why) *why = "the bdd engine checks LTL on IEC 61131-3 charts only ('" + ltl->name +
+                      "' on a Grafcet); use --engine explicit (or auto)";
+      return false;
+    }
     try {
       if (task.system->kind() == semantics::SemanticsKind::Grafcet)
         semantics::build_grafcet_circuit(*task.system, task.limits.deadline);
