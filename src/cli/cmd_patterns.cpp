@@ -7,8 +7,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/shipped_files.hpp"
-#include "model/errors.hpp"
 #include "logic/pattern.hpp"
+#include "model/errors.hpp"
 #include "report/pattern_list.hpp"
 
 namespace sfcv::cli {
@@ -25,7 +25,8 @@ void add_patterns_command(CLI::App& app, CommandRunner& selected) {
     selected = [library] {
       if (*library) {
         const auto path = shipped_file("patterns.spec");
-        if (path.empty()) throw InputError("sfcv patterns: the shipped share/sfcv/patterns.spec was not found");
+        if (path.empty())
+          throw InputError("sfcv patterns: the shipped share/sfcv/patterns.spec was not found");
         std::cout << path << "\n";
         return 0;
       }

@@ -63,7 +63,8 @@ inline const Property* first_ltl_property(const CheckTask& task) {
 /// without any is then outside every quantifier's reach, as in docs/properties.md).
 inline void set_deadlock_paths(CheckTask& task, DeadlockPaths paths) {
   task.deadlock_paths = paths;
-  if (paths == DeadlockPaths::Drop && task.fairness.empty()) task.fairness.push_back(make_const(true));
+  if (paths == DeadlockPaths::Drop && task.fairness.empty())
+    task.fairness.push_back(make_const(true));
 }
 
 inline std::string ltl_refusal(std::string_view engine, const Property& p) {

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <map>
-
 #include <nlohmann/json.hpp>
 
 #include "support/sfcv_test.hpp"
@@ -63,12 +62,13 @@ TEST(LtlCheck, TheBddEngineChecksLtl) {
 // Stuttering, the door stays jammed forever (G !Jammed and AG !Jammed violated); dropping
 // deadlocks as NuSMV does, no path passes through Jammed (both hold, and EF Jammed fails).
 TEST(LtlCheck, DeadlockPathsStutterOrDrop) {
-  const std::string door =
-      "'" + std::string(SFCV_SOURCE_DIR) + "/tests/data/door_jam.st' --assume '!Jammed' "
-      "--trace none --json";
+  const std::string door = "'" + std::string(SFCV_SOURCE_DIR) +
+                           "/tests/data/door_jam.st' --assume '!Jammed' "
+                           "--trace none --json";
   for (const std::string engine : {"explicit", "bdd"}) {
     SCOPED_TRACE(engine);
-    const std::string props = " --ltl 'G !Jammed' --ltl 'G F Closed' --ctl 'EF Jammed' --engine " + engine;
+    const std::string props =
+        " --ltl 'G !Jammed' --ltl 'G F Closed' --ctl 'EF Jammed' --engine " + engine;
     auto stutter = run_sfcv("check " + door + props);
     auto drop = run_sfcv("check " + door + props + " --deadlock-paths drop");
     EXPECT_EQ(stutter.exit_code, 1) << stutter.out << stutter.err;

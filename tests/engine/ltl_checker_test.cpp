@@ -53,9 +53,9 @@ Setup load(const std::string& text, const std::vector<std::string>& assume = {})
 }
 
 logic::CheckTask task_of(const Setup& s, const std::vector<std::string>& ctl,
-                        const std::vector<std::string>& ltl,
-                        const std::vector<std::string>& fair = {},
-                        const model::Budget& budget = {}) {
+                         const std::vector<std::string>& ltl,
+                         const std::vector<std::string>& fair = {},
+                         const model::Budget& budget = {}) {
   logic::CheckInputs in;
   in.ctl = ctl;
   in.ltl = ltl;
@@ -420,7 +420,8 @@ TEST(LtlChecker, LimitsGiveUnknown) {
   for (const auto& b : {budget, past}) {
     const auto limited = bdd->check(task_of(s, {}, {"G TRUE", "G F S1"}, {}, b));
     ASSERT_EQ(limited.results.size(), 2u);
-    for (const auto& x : limited.results) EXPECT_EQ(x.verdict, logic::Verdict::Unknown) << x.formula;
+    for (const auto& x : limited.results)
+      EXPECT_EQ(x.verdict, logic::Verdict::Unknown) << x.formula;
   }
 }
 
