@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "engine/bdd/symbolic_ctl.hpp"
+#include "engine/bdd/symbolic_ltl.hpp"
 #include "engine/bdd/symbolic_system.hpp"
 #include "engine/standard_check_runner.hpp"
 #include "logic/formula.hpp"
@@ -208,8 +209,15 @@ class Run {
       // Consecutive states of a run are related by construction: a gap is a bug, never a trace.
       // No bits is also the answer of a system without inputs: then the relation decides.
       if (bits.empty() &&
-          (sys_.preimage(sys_.singleton(states[k])) & sys_.singleton(states[k - 1])).is_false())
-        throw std::logic_error("bdd engine: a trace step without a transition");
+          (sys_.preimage(sys_.singleton(states[k])) & sys_.singleton(states[k - 1])).is_false()) {
+        // An LTL lasso may repeat a state without a successor (symbolic_ltl.hpp).
+        const bool stutter = states[k] == states[k - 1] &&
+                             (sys_.singleton(states[k]) & sys_.has_successor()).is_false();
+        if (!stutter) throw std::logic_error("bdd engine: a trace step without a transition");
+        t.steps.push_back({inputs, states[k], {}});
+        t.note = "the loop stays in a state without a successor: a deadlock repeats forever";
+        continue;
+      }
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
       t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
@@ -243,6 +251,7 @@ class Run {
       }
       return r;
     }
+    if (logic::is_ltl(*f)) return ltl_property(p, ctl, std::move(r));
     const Bdd holds = ctl.sat(f);
     const Bdd bad = sys_.initial() & !holds;
     if (bad.is_false()) {
@@ -261,6 +270,24 @@ class Run {
       r.trace->kind = logic::TraceKind::Counterexample;
     }
     if (r.trace) r.trace->marked = marked;
+    return r;
+  }
+
+  PropertyResult ltl_property(const logic::Property& p, SymbolicCtl& ctl, PropertyResult r) {
+    if (sys_.initial().is_false()) {
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state: the assumptions exclude every initial situation";
+      return r;
+    }
+    const SymbolicLtlQuery q{p.formula, task_.fairness,
+                             task_.deadlock_paths == logic::DeadlockPaths::Stutter};
+    const auto run = symbolic_ltl_counterexample(sys_, ctl, reached_, q, task_.limits);
+    r.verdict = run ? Verdict::Violated : Verdict::Holds;
+    if (run) {
+      r.trace = to_trace(*run);
+      r.trace->kind = logic::TraceKind::Counterexample;
+      r.trace->marked = logic::atom_observables(*p.formula);
+    }
     return r;
   }
 
@@ -417,8 +444,12 @@ class BddModelChecker final : public ModelChecker {
       if (why) *why = "no system to check";
       return false;
     }
-    if (const auto* ltl = logic::first_ltl_property(task)) {
-      if (why) *why = logic::ltl_refusal("bdd", *ltl);
+    // Grafcet lassos are not built symbolically yet: BuDDy's node table was seen corrupted
+    // (a crash in a later garbage collection) after them, so the explicit engine checks LTL.
+    if (const auto* ltl = logic::first_ltl_property(task);
+        ltl && task.system->kind() == semantics::SemanticsKind::Grafcet) {
+      if (why) *why = "the bdd engine checks LTL on IEC 61131-3 charts only ('" + ltl->name +
+                      "' on a Grafcet); use --engine explicit (or auto)";
       return false;
     }
     try {
