@@ -280,7 +280,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
   sub->add_option("--engine", opts->engine,
                   "auto (default: explicit up to " + std::to_string(engine::kAutoProbeStates) +
-                      " states, then bdd and ic3 side by side), explicit, bdd, bmc, kind, ic3 "
+                      " states, then bdd, ic3 and bmc side by side), explicit, bdd, bmc, kind, ic3 "
                       "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
   sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
   sub->add_option("--certificate", opts->certificate,
