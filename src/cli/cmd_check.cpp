@@ -53,6 +53,7 @@ struct CheckOptions {
   LimitOptions limits;
   bool reorder = false;
   std::uint32_t depth = 200;
+  unsigned threads = 0;
   std::string certificate;
   bool json = false;
   std::string trace = "table";
@@ -96,6 +97,7 @@ std::string read_file(const std::string& path) {
 
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       const engine::BddEngineOptions& bdd_options,
+                                      const engine::ExplicitEngineOptions& explicit_options,
                                       std::uint32_t depth) {
   std::string why;
   if (name == "nusmv") {
@@ -117,7 +119,7 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     checker = engine::make_sat_model_checker(sat);
   } else {
     checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
-                            : engine::make_explicit_model_checker();
+                            : engine::make_explicit_model_checker(explicit_options);
   }
   if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
   return checker;
@@ -125,9 +127,12 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
 
 /// --engine auto: the portfolio (engine/portfolio), its notes on stderr unless --quiet.
 logic::CheckReport check_auto(const logic::CheckTask& task,
-                              const engine::BddEngineOptions& bdd_options, ProgressLine& progress) {
+                              const engine::BddEngineOptions& bdd_options,
+                              const engine::ExplicitEngineOptions& explicit_options,
+                              ProgressLine& progress) {
   engine::PortfolioOptions options;
   options.bdd = bdd_options;
+  options.explicit_engine = explicit_options;
   options.note = [&progress](const std::string& text) {
     if (global_options().quiet) return;
     progress.clear();
@@ -189,11 +194,14 @@ int run_check(const CheckOptions& o) {
   task.limits.progress = progress.callback();
   engine::BddEngineOptions bdd_options;
   bdd_options.reorder = o.reorder;
+  engine::ExplicitEngineOptions explicit_options;
+  explicit_options.threads = o.threads;
 
   progress.phase("explore");
   logic::CheckReport result = o.engine == "auto"
-                                  ? check_auto(task, bdd_options, progress)
-                                  : choose_engine(o.engine, task, bdd_options, o.depth)->check(task);
+                                  ? check_auto(task, bdd_options, explicit_options, progress)
+                                  : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)
+                                        ->check(task);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   logic::describe_results(result, parsed.spec);
@@ -283,6 +291,9 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                       " states, then bdd, ic3 and bmc side by side), explicit, bdd, bmc, kind, ic3 "
                       "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
   sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
+  sub->add_option("--threads", opts->threads,
+                  "explicit engine: threads generating successors when only invariants are asked "
+                  "(default 0: one per core; results do not depend on it)");
   sub->add_option("--certificate", opts->certificate,
                   "kind and ic3: write the re-checked proof of each result there (inductive "
                   "invariant clauses over latch names, or the k of k-induction)");

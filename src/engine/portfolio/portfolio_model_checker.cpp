@@ -100,7 +100,7 @@ class PortfolioModelChecker final : public ModelChecker {
  public:
   explicit PortfolioModelChecker(PortfolioOptions options)
       : options_(std::move(options)),
-        explicit_(make_explicit_model_checker()),
+        explicit_(make_explicit_model_checker(options_.explicit_engine)),
         bdd_(make_bdd_model_checker(options_.bdd)),
         ic3_(make_sat_model_checker({SatAlgorithm::Ic3, 200})),
         bmc_(make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}

@@ -12,12 +12,14 @@
 
 #include "engine/auto_policy.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/model_checker.hpp"
 
 namespace sfcv::engine {
 
 struct PortfolioOptions {
   BddEngineOptions bdd;
+  ExplicitEngineOptions explicit_engine;  ///< the probe's (--threads)
   /// How auto decided, one line each ("using the explicit engine", ...); may be empty.
   std::function<void(const std::string&)> note;
   /// The explicit probe's bound: kAutoProbeStates (engine/auto_policy.hpp), the one policy;
