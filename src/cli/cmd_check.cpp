@@ -21,7 +21,9 @@
 #include "cli/system_options.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/auto_policy.hpp"
 #include "engine/external/nusmv_runner.hpp"
+#include "engine/portfolio/portfolio_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/vacuity.hpp"
@@ -94,14 +96,6 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-// --engine auto. The explicit engine answers every standard check and counts edges, so it runs
-// first, within kAutoExplicitStates states. Beyond that budget, or when a state cannot be
-// enumerated explicitly (an integer input copied into a variable), the BDD engine takes over if
-// it can answer the task, within what is left of the run's one budget. A time or memory limit
-// of the user's ends the run as it is: unknown. Verdicts the explicit phase decided on its
-// partial graph (a violation it found) are kept: the BDD engine fills in only the rest.
-constexpr std::uint64_t kAutoExplicitStates = 200'000;
-
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       const engine::BddEngineOptions& bdd_options,
                                       const engine::ExplicitEngineOptions& explicit_options,
@@ -132,67 +126,20 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
   return checker;
 }
 
-/// The BDD report with the explicit phase's decided verdicts kept: a result the explicit engine
-/// decided (violated, or holds) replaces the BDD engine's unknown for the same property.
-logic::CheckReport keep_decided(logic::CheckReport bdd_report, const logic::CheckReport& first) {
-  auto decided = [](const logic::PropertyResult& r) {
-    return r.verdict == logic::Verdict::Violated || r.verdict == logic::Verdict::Holds;
-  };
-  for (auto& r : bdd_report.results) {
-    if (decided(r)) continue;
-    for (const auto& e : first.results)
-      if (decided(e) && e.name == r.name && e.check == r.check && e.formula == r.formula) {
-        r = e;
-        break;
-      }
-  }
-  return bdd_report;
-}
-
+/// --engine auto: the portfolio (engine/portfolio), its notes on stderr unless --quiet.
 logic::CheckReport check_auto(const logic::CheckTask& task,
                               const engine::BddEngineOptions& bdd_options,
                               const engine::ExplicitEngineOptions& explicit_options,
                               ProgressLine& progress) {
-  auto note = [&progress](const std::string& text) {
+  engine::PortfolioOptions options;
+  options.bdd = bdd_options;
+  options.explicit_engine = explicit_options;
+  options.note = [&progress](const std::string& text) {
     if (global_options().quiet) return;
     progress.clear();
     std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
-  auto explicit_engine = engine::make_explicit_model_checker(explicit_options);
-  auto bdd = engine::make_bdd_model_checker(bdd_options);
-  std::string why;
-  bool bdd_can = false;
-  try {
-    bdd_can = bdd->can_handle(task, &why);  // builds the circuit: within the budget too
-  } catch (const LimitReached& e) {
-    why = e.what();
-  }
-  if (!bdd_can) {
-    note("using the explicit engine (the bdd engine cannot: " + why + ")");
-    return explicit_engine->check(task);
-  }
-  if (!explicit_engine->can_handle(task, &why)) {
-    note("using the bdd engine (the explicit engine cannot: " + why + ")");
-    return bdd->check(task);
-  }
-  logic::CheckTask probe = task;
-  const bool user_bound = task.limits.max_states > 0 && task.limits.max_states <= kAutoExplicitStates;
-  if (!user_bound) probe.limits.max_states = kAutoExplicitStates;
-  auto first = explicit_engine->check(probe);
-  const bool too_many = first.limit == to_string(Limit::States) && !user_bound;
-  const bool not_enumerable = first.limit == to_string(Limit::Enumeration);
-  if (first.complete || !(too_many || not_enumerable)) {
-    note("using the explicit engine");
-    return first;
-  }
-  if (task.limits.expired()) return first;  // no time left for the bdd engine
-  note(too_many ? "more than " + std::to_string(kAutoExplicitStates) +
-                      " states: switching to the bdd engine"
-                : (first.results.empty() ? std::string("the explicit engine cannot enumerate")
-                                         : first.results.front().message) +
-                      ": switching to the bdd engine");
-  // The same task and budget: one deadline for both engines.
-  return keep_decided(bdd->check(task), first);
+  return engine::make_portfolio_model_checker(options)->check(task);
 }
 
 int run_check(const CheckOptions& o) {
@@ -347,8 +294,10 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "Standard checks: all (default without properties), none, or a list of: " + names);
   sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
-  sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, bmc, kind, ic3 "
-                  "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
+  sub->add_option("--engine", opts->engine,
+                  "auto (default: explicit up to " + std::to_string(engine::kAutoProbeStates) +
+                      " states, then bdd, ic3 and bmc side by side), explicit, bdd, bmc, kind, ic3 "
+                      "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
   sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
   sub->add_option("--threads", opts->threads,
                   "explicit engine: threads generating successors when only invariants are asked "

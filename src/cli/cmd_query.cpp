@@ -235,7 +235,7 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   add_system_options(*sub, opts->system);
   sub->add_option("--engine", opts->engine,
                   "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
-                  "(explicit up to " + std::to_string(engine::kAutoQueryExplicitStates) + " situations, then bdd)");
+                  "(explicit up to " + std::to_string(engine::kAutoProbeStates) + " situations, then bdd)");
   add_limit_options(*sub, opts->limits, "the graph is incomplete", MemoryLimit::NotOffered);
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->callback([opts, &selected] {

@@ -42,6 +42,9 @@ struct PropertyResult {
   std::string vacuity;
   double seconds = 0;
   model::SourceLocation where;  ///< where the property was written
+  /// --engine auto: the engine whose answer this is ("explicit", "bdd", "ic3"); empty when the
+  /// report's own engine answered.
+  std::string decided_by;
 };
 
 /// What the reachable state space visits (--coverage, explicit engine): steps active in some

@@ -5,9 +5,11 @@
 // no global state; it polls expired() every so many iterations and reports progress through
 // the callback, which the CLI renders.
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -33,6 +35,10 @@ struct Budget {
   std::uint64_t max_states = 0;                ///< 0 = unlimited
   std::uint64_t max_memory_bytes = 0;          ///< 0 = unlimited
   std::function<void(const Progress&)> progress;  ///< may be empty
+  /// Raised by another thread to stop the run (the portfolio of --engine auto cancels the
+  /// engines that lost): every engine reads it where it reads the deadline, so a cancelled run
+  /// ends as one past its deadline would, with unknown answers. Shared by copies; may be null.
+  std::shared_ptr<std::atomic<bool>> cancel;
 
   /// A budget whose deadline is `seconds` from now (0 or less: no deadline).
   static Budget with_timeout(double seconds) {
@@ -49,7 +55,9 @@ struct Budget {
   }
 
   bool has_deadline() const { return deadline.has_value(); }
-  bool expired() const { return deadline && Clock::now() > *deadline; }
+  bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
+  /// Past the deadline, or cancelled.
+  bool expired() const { return cancelled() || (deadline && Clock::now() > *deadline); }
   /// Seconds until the deadline (at least a millisecond while one is set); 0 = no deadline.
   double seconds_left() const {
     if (!deadline) return 0;
@@ -59,6 +67,7 @@ struct Budget {
   /// Throws LimitReached(Time) once the deadline has passed; `while_doing` completes
   /// "time limit reached while ...".
   void check_time(const char* while_doing) const {
+    if (cancelled()) throw LimitReached(Limit::Time, std::string("cancelled while ") + while_doing);
     if (expired())
       throw LimitReached(Limit::Time, std::string("time limit reached while ") + while_doing);
   }

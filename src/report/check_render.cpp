@@ -47,6 +47,8 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     std::string verdict(logic::to_string(r.verdict));
     verdict.resize(11, ' ');
     out += name + "  " + verdict + " " + seconds(r.seconds);
+    // --engine auto past its explicit probe: which engine answered.
+    if (!r.decided_by.empty() && r.decided_by != report.engine) out += "  [" + r.decided_by + "]";
     if (!r.message.empty()) out += "  " + r.message;
     out += "\n";
     if (!r.description.empty()) out += "  requirement: " + r.description + "\n";
@@ -108,6 +110,8 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["formula"] = r.formula;
     if (!r.description.empty()) p["description"] = r.description;
     p["verdict"] = std::string(logic::to_string(r.verdict));
+    const bool definite = r.verdict == logic::Verdict::Holds || r.verdict == logic::Verdict::Violated;
+    p["decided_by"] = !definite ? json(nullptr) : json(r.decided_by.empty() ? report.engine : r.decided_by);
     p["message"] = r.message;
     p["findings"] = r.findings;
     p["findings_total"] = std::max(r.findings_total, r.findings.size());

@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
+#include "chart_families.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -66,6 +70,31 @@ END_PROGRAM
   for (const char* engine : {"bmc", "ic3"})
     EXPECT_EQ(run_sfcv("check " + pistons + " --engine " + engine + " --quiet --ctl 'AG !X22'").exit_code, 1)
         << engine;
+}
+
+// --engine auto past its explicit probe: a 30-bit counter (2^31 states) whose bound IC3 proves
+// in the race; the JSON names the deciding engine, the text marks it; a bound violated 2^31
+// cycles deep stays unknown within --timeout.
+TEST(SatCheck, AutoRacesPastTheProbeAndSaysWhoDecided) {
+  const auto counter = write_temp(bench::counter_iec(30), ".st");
+  const std::string bound = std::to_string((std::uint64_t{1} << 30) - 2);
+  auto r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c <= " + bound + "' --json --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["engine"], "auto");
+  EXPECT_EQ(j["properties"][0]["verdict"], "holds");
+  EXPECT_EQ(j["properties"][0]["decided_by"], "ic3");
+  r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c <= " + bound + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("holds       "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[ic3]"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("--engine auto: more than 200000 states"), std::string::npos) << r.err;
+  const auto t0 = std::chrono::steady_clock::now();
+  r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c < " + bound + "' --timeout 3 --quiet");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE(r.out.find("INCOMPLETE: the time limit"), std::string::npos) << r.out;
+  EXPECT_LT(seconds, 20.0);
 }
 
 }  // namespace

@@ -683,7 +683,7 @@ TEST(QueryService, ExplicitAndBddListTheSameAnswers) {
 }
 
 TEST(QueryService, AutoSwitchesToBddBeyondTheStateBudget) {
-  // 2^18 situations: more than kAutoQueryExplicitStates.
+  // 2^18 situations: more than kAutoProbeStates.
   const auto s = load(bench::parallel_branches_iec(18, false));
   ASSERT_TRUE(s.ts);
   std::vector<std::string> notes;
@@ -694,7 +694,7 @@ TEST(QueryService, AutoSwitchesToBddBeyondTheStateBudget) {
   EXPECT_EQ(svc->name(), "bdd");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("switching to the bdd engine"), std::string::npos) << notes[0];
-  EXPECT_GT(svc->graph().situations, kAutoQueryExplicitStates);
+  EXPECT_GT(svc->graph().situations, kAutoProbeStates);
 }
 
 }  // namespace

@@ -171,6 +171,35 @@ TEST(CheckRender, SaysHowManyFindingsWereCut) {
   EXPECT_EQ(check_text(report, f.ts, {}).find("findings shown"), std::string::npos);
 }
 
+TEST(CheckRender, NamesTheEngineThatDecided) {
+  // --engine auto: the text marks an answer given by another engine than the report's; JSON
+  // names the engine of every definite answer, and none for an unknown one.
+  Fixture f;
+  logic::CheckReport report;
+  report.engine = "auto";
+  logic::PropertyResult p;
+  p.name = p.formula = "AG !go";
+  p.verdict = logic::Verdict::Holds;
+  p.decided_by = "ic3";
+  report.results.push_back(p);
+  p.name = p.formula = "AF go";
+  p.verdict = logic::Verdict::Unknown;
+  p.decided_by.clear();
+  report.results.push_back(p);
+  const auto text = check_text(report, f.ts, {});
+  EXPECT_NE(text.find("AG !go  holds       0.000s  [ic3]\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("AF go   unknown     0.000s  ["), std::string::npos) << text;
+  const auto j = check_json(report, f.ts, {});
+  EXPECT_EQ(j["properties"][0]["decided_by"], "ic3");
+  EXPECT_TRUE(j["properties"][1]["decided_by"].is_null());
+  // The report's own engine is not repeated in the text; JSON still names it.
+  report.engine = "explicit";
+  report.results[0].decided_by = "explicit";
+  EXPECT_EQ(check_text(report, f.ts, {}).find("[explicit]"), std::string::npos);
+  report.results[0].decided_by.clear();
+  EXPECT_EQ(check_json(report, f.ts, {})["properties"][0]["decided_by"], "explicit");
+}
+
 TEST(CheckRender, TextAndJsonReports) {
   Fixture f;
   logic::CheckReport report;

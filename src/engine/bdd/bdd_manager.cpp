@@ -36,11 +36,17 @@ void throw_on_error(int code) {
 
 bool g_has_deadline = false;
 std::chrono::steady_clock::time_point g_deadline;
+const std::atomic<bool>* g_cancel = nullptr;
+
+bool past_deadline() {
+  return g_has_deadline && ((g_cancel && g_cancel->load(std::memory_order_relaxed)) ||
+                            std::chrono::steady_clock::now() > g_deadline);
+}
 
 void quiet_gbc(int pre, bddGbcStat*) {
   // Before the collection starts (the node table is still consistent). The manager is replaced
   // at the next start all the same, as after any error.
-  if (pre && g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
+  if (pre && past_deadline()) {
     g_has_deadline = false;
     g_failed = true;
     throw LimitReached(Limit::Time, "time limit reached in the BDD package");
@@ -51,7 +57,7 @@ void quiet_gbc(int pre, bddGbcStat*) {
 // between collections, so each resize polls the deadline too (after it, the tables are
 // consistent; the manager is replaced all the same).
 void deadline_on_resize(int, int) {
-  if (g_has_deadline && std::chrono::steady_clock::now() > g_deadline) {
+  if (past_deadline()) {
     g_has_deadline = false;
     g_failed = true;
     throw LimitReached(Limit::Time, "time limit reached in the BDD package");
@@ -64,7 +70,7 @@ void deadline_on_resize(int, int) {
 // a large model can take a second, and sampling every 16th overshot a 20 s limit by 22 s); the
 // garbage-collection and resize hooks above stop a single operation that blows up.
 void check_deadline() {
-  if (g_has_deadline && std::chrono::steady_clock::now() > g_deadline)
+  if (past_deadline())
     throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
 }
 
@@ -105,9 +111,12 @@ void configure_manager(int nodes, int cache, int cache_ratio) {
   g_ratio = cache_ratio;
 }
 
-void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
-  g_has_deadline = deadline.has_value();
-  if (deadline) g_deadline = *deadline;
+void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline,
+                  const std::atomic<bool>* cancel) {
+  // A cancel flag alone is a deadline at the end of time.
+  g_has_deadline = deadline.has_value() || cancel;
+  g_deadline = deadline ? *deadline : std::chrono::steady_clock::time_point::max();
+  g_cancel = cancel;
 }
 
 int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }

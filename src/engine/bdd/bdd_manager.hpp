@@ -3,6 +3,7 @@
 // class. No other file includes bdd.h, so BuDDy's global state and its error handling (which
 // would exit the process) stay behind this interface: errors become BddError exceptions.
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -36,14 +37,17 @@ void configure_manager(int nodes, int cache, int cache_ratio = 4);
 /// the next garbage collection (a single operation that blows up is otherwise not
 /// interruptible; collections happen whenever the node table fills). The run's one deadline
 /// (model::Budget), not a timeout of its own.
-void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline);
+/// `cancel` (model::Budget::cancel, may be null): once raised, the deadline counts as passed.
+void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline,
+                  const std::atomic<bool>* cancel = nullptr);
 
 /// Sets the deadline for its lifetime (the manager is global: a deadline must not outlive the
 /// check that set it).
 class DeadlineScope {
  public:
-  explicit DeadlineScope(std::optional<std::chrono::steady_clock::time_point> deadline) {
-    set_deadline(deadline);
+  explicit DeadlineScope(std::optional<std::chrono::steady_clock::time_point> deadline,
+                         const std::atomic<bool>* cancel = nullptr) {
+    set_deadline(deadline, cancel);
   }
   ~DeadlineScope() { set_deadline(std::nullopt); }
   DeadlineScope(const DeadlineScope&) = delete;

@@ -482,7 +482,7 @@ class BddModelChecker final : public ModelChecker {
     so.timeout_seconds = task.limits.seconds_left();
     so.deadline = task.limits.deadline;
     // The run's one deadline, in every BDD operation (the fixpoints are loops of them).
-    const bdd::DeadlineScope deadline(task.limits.deadline);
+    const bdd::DeadlineScope deadline(task.limits.deadline, task.limits.cancel.get());
     try {
       const auto symbolic = make_symbolic_system(*task.system, so);
       Run run(task, *symbolic);

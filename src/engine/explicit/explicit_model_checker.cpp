@@ -101,6 +101,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
   opts.deadline = task.limits.deadline;
+  opts.cancel = task.limits.cancel.get();
   opts.max_memory_bytes = task.limits.max_memory_bytes;
   if (task.limits.progress) {
     opts.progress_interval = 4096;

@@ -314,27 +314,38 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       }
   };
 
-  // A Grafcet may start in very many situations: the state limit applies to them too.
+  // A Grafcet may start in very many situations (one per initial valuation): the state limit
+  // and the deadline apply to them too, and stop the enumeration (corpus 22 under auto ran
+  // minutes past --timeout, enumerating valuations after the limit).
+  struct StopInitial {};
   class Initial final : public semantics::SuccessorSink {
    public:
-    Initial(StateStore& st, std::uint64_t max) : store(st), max_states(max) {}
+    Initial(StateStore& st, const model::Budget& b) : store(st), max_states(b.max_states), poll(b, 64) {}
     void successor(const semantics::Successor& s) override {
       if (max_states > 0 && store.size() > max_states) {
-        stopped = true;
-        return;
+        limit = "states";
+        throw StopInitial{};
+      }
+      if (poll.tick()) {
+        limit = "time";
+        throw StopInitial{};
       }
       store.insert(s.target);
     }
     StateStore& store;
     std::uint64_t max_states;
-    bool stopped = false;
-  } initial(store, limits.max_states);
-  ts.initial_states(initial);
+    model::BudgetPoll poll;
+    std::string limit;
+  } initial(store, limits);
+  try {
+    ts.initial_states(initial);
+  } catch (const StopInitial&) {
+  }
   const std::uint32_t initial_count = store.size();
   parent.assign(initial_count, kNone);
   for (std::uint32_t s = 0; s < initial_count && open > 0; ++s) judge(s);
 
-  std::string limit = initial.stopped ? "states" : "";
+  std::string limit = initial.limit;
   std::uint64_t edges = 0;
   std::vector<StateWord> current, targets;
   std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it

@@ -59,7 +59,8 @@ class Collector final : public semantics::SuccessorSink {
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
       if ((limits_.timeout_seconds > 0 && seconds > limits_.timeout_seconds) ||
-          (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline))
+          (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline) ||
+          (limits_.cancel && limits_.cancel->load(std::memory_order_relaxed)))
         throw StopExploring{"time"};
       if (limits_.max_memory_bytes > 0 && store_.memory_bytes() > limits_.max_memory_bytes)
         throw StopExploring{"memory"};
@@ -226,7 +227,8 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   for (std::uint32_t s = 0; g.complete_ && s < g.states_.size(); ++s) {
     if ((s & 1023U) == 0) {
       if ((options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) ||
-          (options.deadline && Clock::now() > *options.deadline)) {
+          (options.deadline && Clock::now() > *options.deadline) ||
+          (options.cancel && options.cancel->load(std::memory_order_relaxed))) {
         g.limit_ = "time";
       } else if (options.max_memory_bytes > 0 && g.memory_bytes() > options.max_memory_bytes) {
         g.limit_ = "memory";

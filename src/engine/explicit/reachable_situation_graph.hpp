@@ -6,6 +6,7 @@
 // states, which counterexamples use.
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -30,6 +31,8 @@ struct ExplorationOptions {
   double timeout_seconds = 0;     ///< 0 = unlimited
   /// The run's deadline (model::Budget), beside timeout_seconds: whichever comes first.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// model::Budget::cancel (may be null): raised, exploration stops as at the deadline.
+  const std::atomic<bool>* cancel = nullptr;
   std::uint64_t max_memory_bytes = 0;  ///< 0 = unlimited; approximate (states + edges)
   bool keep_conditions = true;    ///< store each edge's input condition (RSG listing, traces)
   bool keep_fired = true;         ///< store each edge's fired transitions

@@ -206,16 +206,15 @@ QueryServicePtr make_query_service(const semantics::TransitionSystem& ts,
     if (!circuit) {
       note("using the explicit engine (" + why + ")");
     } else {
-      const bool user_bound =
-          budget.max_states > 0 && budget.max_states <= kAutoQueryExplicitStates;
+      // The one auto policy (engine/auto_policy.hpp), as for sfcv check.
+      const auto probe = auto_probe(budget);
       try {
-        explicit_service =
-            explore(ts, budget, user_bound ? budget.max_states : kAutoQueryExplicitStates);
+        explicit_service = explore(ts, budget, probe.max_states);
         const auto& g = explicit_service->situation_graph();
-        if (g.complete() || user_bound || g.limit_reached() != "states") {
+        if (g.complete() || probe.user_bound || g.limit_reached() != "states") {
           note("using the explicit engine");
         } else {
-          note("more than " + std::to_string(kAutoQueryExplicitStates) +
+          note("more than " + std::to_string(kAutoProbeStates) +
                " situations: switching to the bdd engine");
           explicit_service.reset();
           use_bdd = true;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "engine/auto_policy.hpp"
 #include "logic/query_answer.hpp"
 #include "logic/query_compile.hpp"
 #include "model/budget.hpp"
@@ -28,9 +29,6 @@ class QueryService {
 using QueryServicePtr = std::unique_ptr<QueryService>;
 
 enum class QueryEngineChoice { Explicit, Bdd, Auto };
-
-/// `auto`, as for `sfcv check`: the explicit graph within this many situations, BDDs beyond.
-inline constexpr std::uint64_t kAutoQueryExplicitStates = 200'000;
 
 struct QueryServiceOptions {
   QueryEngineChoice engine = QueryEngineChoice::Explicit;

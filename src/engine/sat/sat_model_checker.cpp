@@ -66,7 +66,7 @@ class Run {
     report.engine = std::string(algorithm_name(options_.algorithm));
     report.states_known = false;
     report.edges_known = false;
-    deadline_ = sat::Deadline{task_.limits.deadline};  // the run's one deadline
+    deadline_ = sat::Deadline{task_.limits.deadline, task_.limits.cancel.get()};  // the run's one deadline
 
     std::vector<Question> questions;
     for (const auto& p : task_.properties) questions.push_back(property_question(p));

@@ -33,10 +33,10 @@ struct Solver::Impl {
   Deadline deadline;
   explicit Impl(Deadline d) : terminator(d), deadline(d) {
     solver.set("quiet", 1);  // library code prints nothing
-    if (d.at) solver.connect_terminator(&terminator);
+    if (d.set()) solver.connect_terminator(&terminator);
   }
   ~Impl() {
-    if (deadline.at) solver.disconnect_terminator();
+    if (deadline.set()) solver.disconnect_terminator();
   }
 };
 

@@ -4,6 +4,7 @@
 // assumptions, failed assumptions for cores, and a deadline that interrupts a running solve.
 // No other file includes cadical.hpp.
 
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -16,8 +17,13 @@ using Clock = std::chrono::steady_clock;
 /// A point in time after which work stops (none: never).
 struct Deadline {
   std::optional<Clock::time_point> at;
+  /// model::Budget::cancel: raised, the deadline counts as passed (may be null).
+  const std::atomic<bool>* cancel = nullptr;
   static Deadline after_seconds(double seconds);  ///< 0 or less: none
-  bool passed() const { return at && Clock::now() >= *at; }
+  bool passed() const {
+    return (cancel && cancel->load(std::memory_order_relaxed)) || (at && Clock::now() >= *at);
+  }
+  bool set() const { return at || cancel; }
 };
 
 enum class SatResult { Sat, Unsat, Interrupted };

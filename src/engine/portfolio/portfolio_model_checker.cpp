@@ -1,0 +1,295 @@
+#include "engine/portfolio/portfolio_model_checker.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "engine/auto_policy.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/sat/sat_model_checker.hpp"
+
+namespace sfcv::engine {
+
+namespace {
+
+using logic::CheckReport;
+using logic::PropertyResult;
+using logic::Verdict;
+using Clock = std::chrono::steady_clock;
+
+bool decided(const PropertyResult& r) {
+  return r.verdict == Verdict::Holds || r.verdict == Verdict::Violated;
+}
+
+bool same_question(const PropertyResult& a, const PropertyResult& b) {
+  return a.name == b.name && a.check == b.check && a.formula == b.formula;
+}
+
+/// The result for `question` in `report` (engines answer in the task's order; the name check
+/// guards against one that does not).
+const PropertyResult* find_result(const CheckReport& report, std::size_t index,
+                                  const PropertyResult& question) {
+  if (index < report.results.size() && same_question(report.results[index], question))
+    return &report.results[index];
+  for (const auto& r : report.results)
+    if (same_question(r, question)) return &r;
+  return nullptr;
+}
+
+/// One engine of the race: its report (none when it stopped on a limit before reporting, or
+/// threw) and what it threw.
+struct Racer {
+  std::string name;
+  const ModelChecker* engine = nullptr;
+  logic::CheckTask task;
+  std::optional<CheckReport> report;
+  std::exception_ptr error;
+};
+
+/// The winners so far, one slot per result of the probe's report (the task's questions).
+class Scoreboard {
+ public:
+  Scoreboard(const CheckReport& probe, std::shared_ptr<std::atomic<bool>> cancel)
+      : questions_(probe.results), winners_(probe.results.size()), cancel_(std::move(cancel)) {
+    // What the probe decided on its partial graph (a violation it met) stands.
+    for (std::size_t i = 0; i < questions_.size(); ++i)
+      if (decided(questions_[i])) {
+        winners_[i] = questions_[i];
+        winners_[i]->decided_by = "explicit";
+      }
+  }
+
+  bool all_decided() const {
+    for (const auto& w : winners_)
+      if (!w) return false;
+    return true;
+  }
+
+  /// An engine's report: the first definite answer per question wins; once every question has
+  /// one, the other engines are cancelled.
+  void offer(const CheckReport& report, const std::string& engine) {
+    const std::lock_guard lock(mutex_);
+    for (std::size_t i = 0; i < questions_.size(); ++i) {
+      if (winners_[i]) continue;
+      const auto* r = find_result(report, i, questions_[i]);
+      if (r && decided(*r)) {
+        winners_[i] = *r;
+        winners_[i]->decided_by = engine;
+      }
+    }
+    if (all_decided()) cancel_->store(true);
+  }
+
+  const std::vector<PropertyResult>& questions() const { return questions_; }
+  const std::optional<PropertyResult>& winner(std::size_t i) const { return winners_[i]; }
+
+ private:
+  std::mutex mutex_;
+  std::vector<PropertyResult> questions_;
+  std::vector<std::optional<PropertyResult>> winners_;
+  std::shared_ptr<std::atomic<bool>> cancel_;
+};
+
+class PortfolioModelChecker final : public ModelChecker {
+ public:
+  explicit PortfolioModelChecker(PortfolioOptions options)
+      : options_(std::move(options)),
+        explicit_(make_explicit_model_checker(options_.explicit_engine)),
+        bdd_(make_bdd_model_checker(options_.bdd)),
+        ic3_(make_sat_model_checker({SatAlgorithm::Ic3, 200})),
+        bmc_(make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}
+
+  std::string_view name() const override { return "auto"; }
+
+  bool can_handle(const logic::CheckTask& task, std::string* why) const override {
+    std::string e, b;
+    if (explicit_->can_handle(task, &e) || bdd_can(task, &b)) return true;
+    if (why) *why = e;
+    return false;
+  }
+
+  CheckReport check(const logic::CheckTask& task) const override {
+    const auto start = Clock::now();
+    std::string why;
+    const bool bdd_can_check = bdd_can(task, &why);
+    // The SAT engines encode the same circuit as the BDD engine: when it cannot, neither can IC3.
+    if (!bdd_can_check) {
+      note("using the explicit engine (the bdd engine cannot: " + why + ")");
+      auto report = explicit_->check(task);
+      for (auto& r : report.results)
+        if (decided(r)) r.decided_by = "explicit";
+      return report;
+    }
+    std::optional<CheckReport> probe;
+    if (options_.probe_states == 0) {
+      note("the bdd, ic3 and bmc engines race (no explicit probe)");
+    } else if (explicit_->can_handle(task, &why)) {
+      logic::CheckTask bounded = task;
+      const auto policy = auto_probe(task.limits, options_.probe_states);
+      bounded.limits.max_states = policy.max_states;
+      probe = explicit_->check(bounded);
+      const bool too_many = probe->limit == to_string(Limit::States) && !policy.user_bound;
+      const bool not_enumerable = probe->limit == to_string(Limit::Enumeration);
+      bool all_decided = true;
+      for (const auto& r : probe->results) all_decided = all_decided && decided(r);
+      if (probe->complete || !(too_many || not_enumerable) || all_decided ||
+          task.limits.expired()) {
+        note("using the explicit engine");
+        for (auto& r : probe->results)
+          if (decided(r)) r.decided_by = "explicit";
+        return *probe;
+      }
+      note(too_many ? "more than " + std::to_string(policy.max_states) +
+                          " states: the bdd, ic3 and bmc engines race on the rest"
+                    : (probe->results.empty() ? std::string("the explicit engine cannot enumerate")
+                                              : probe->results.front().message) +
+                          ": the bdd, ic3 and bmc engines race on the rest");
+    } else {
+      note("the bdd, ic3 and bmc engines race (the explicit engine cannot: " + why + ")");
+    }
+    return race(task, probe, start);
+  }
+
+ private:
+  void note(const std::string& text) const {
+    if (options_.note) options_.note(text);
+  }
+
+  bool bdd_can(const logic::CheckTask& task, std::string* why) const {
+    try {
+      return bdd_->can_handle(task, why);  // builds the circuit: within the budget too
+    } catch (const LimitReached& e) {
+      if (why) *why = e.what();
+      return false;
+    }
+  }
+
+  CheckReport race(const logic::CheckTask& task, const std::optional<CheckReport>& probe,
+                   Clock::time_point start) const {
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    std::vector<Racer> racers;
+    racers.push_back({"bdd", bdd_.get(), task, {}, {}});
+    racers.push_back({"ic3", ic3_.get(), task, {}, {}});
+    racers.push_back({"bmc", bmc_.get(), task, {}, {}});
+    for (auto& r : racers) r.task.limits.cancel = cancel;
+    // One progress line, one thread calling it: the BDD engine's (the SAT engines report none).
+    racers[1].task.limits.progress = nullptr;
+    racers[2].task.limits.progress = nullptr;
+
+    // Without a probe the questions are the BDD engine's: it answers every one of the task,
+    // unknown or not checked where it cannot.
+    std::optional<Scoreboard> board;
+    if (probe) board.emplace(*probe, cancel);
+    if (!board) {
+      // The BDD engine's questions, read before the race from a report of unknowns.
+      CheckReport questions;
+      for (const auto& p : task.properties) {
+        PropertyResult r;
+        r.name = p.name;
+        r.formula = logic::to_string(p.formula);
+        questions.results.push_back(std::move(r));
+      }
+      for (auto c : task.checks) {
+        PropertyResult r;
+        r.name = std::string(logic::to_string(c));
+        r.check = r.name;
+        questions.results.push_back(std::move(r));
+      }
+      board.emplace(questions, cancel);
+    }
+
+    {
+      std::vector<std::jthread> threads;
+      for (auto& r : racers)
+        threads.emplace_back([&r, &board] {
+          try {
+            r.report = r.engine->check(r.task);
+            board->offer(*r.report, r.name);
+          } catch (const LimitReached&) {
+            // Out of budget (or cancelled) before a report: no answer from this engine.
+          } catch (...) {
+            r.error = std::current_exception();
+          }
+        });
+    }  // joined here
+    // An engine error is a bug, whoever won: never hidden behind another engine's answer.
+    for (const auto& r : racers)
+      if (r.error) std::rethrow_exception(r.error);
+    return merge(task, *board, racers, probe, start);
+  }
+
+  CheckReport merge(const logic::CheckTask& task, const Scoreboard& board, const std::vector<Racer>& racers,
+                    const std::optional<CheckReport>& probe, Clock::time_point start) const {
+    const auto& bdd = racers[0].report;
+    CheckReport out;
+    out.engine = "auto";
+    if (bdd && bdd->complete) {
+      out.states = bdd->states;
+      out.edges = bdd->edges;
+      out.states_known = bdd->states_known;
+      out.edges_known = bdd->edges_known;
+      out.depth = bdd->depth;
+      out.stopped_early = bdd->stopped_early;
+    } else {
+      out.states_known = false;
+      out.edges_known = false;
+      for (const auto& r : racers)
+        if (r.report) out.depth = std::max(out.depth, r.report->depth);
+    }
+    bool unknown = false;
+    const auto& questions = board.questions();
+    for (std::size_t i = 0; i < questions.size(); ++i) {
+      if (const auto& w = board.winner(i)) {
+        out.results.push_back(*w);
+        continue;
+      }
+      // Undecided: the first engine's own account (not checked by it, or why unknown).
+      const PropertyResult* best = nullptr;
+      for (const auto& r : racers)
+        if (!best && r.report) best = find_result(*r.report, i, questions[i]);
+      out.results.push_back(best ? *best : questions[i]);
+      unknown = unknown || out.results.back().verdict == Verdict::Unknown;
+    }
+    if (unknown) {
+      // The limit that left them unknown: the racers' first (a racer that was not cancelled,
+      // since the race ends in a cancel only once every question is decided), else the probe's.
+      for (const auto& r : racers)
+        if (r.report && !r.report->complete && out.complete) {
+          out.complete = false;
+          out.limit = r.report->limit;
+        }
+      if (out.complete && probe && !probe->complete) {
+        out.complete = false;
+        out.limit = probe->limit;
+      }
+      if (out.complete && task.limits.expired()) {
+        out.complete = false;
+        out.limit = to_string(Limit::Time);
+      }
+    }
+    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+  }
+
+  PortfolioOptions options_;
+  /// BMC's bound in the race (`--depth`'s default): deep enough for the bugs that IC3 finds
+  /// slowly (a counterexample of hundreds of cycles costs IC3 seconds, BMC a fraction), and a
+  /// bound, so that BMC's thread ends on a chart without bugs instead of sharing the two cores
+  /// with the engines that prove.
+  static constexpr std::uint32_t kBmcDepth = 200;
+  ModelCheckerPtr explicit_, bdd_, ic3_, bmc_;
+};
+
+}  // namespace
+
+ModelCheckerPtr make_portfolio_model_checker(PortfolioOptions options) {
+  return std::make_unique<PortfolioModelChecker>(std::move(options));
+}
+
+}  // namespace sfcv::engine

@@ -1,0 +1,32 @@
+#pragma once
+// `--engine auto` as a portfolio (docs/engines.md, "how auto chooses"): the explicit engine
+// first, within kAutoProbeStates states (engine/auto_policy.hpp); a chart it cannot finish
+// within them goes to the BDD engine, IC3 and BMC (bugs, up to 200 cycles) side by side, each
+// in its own thread within the run's one budget. Per property the first definite answer wins (PropertyResult::decided_by
+// names its engine); once every property is decided the other engines are cancelled
+// (model::Budget::cancel). Verdicts do not depend on which engine wins: each engine is sound,
+// and one that is cancelled or runs out of budget answers unknown, never holds.
+
+#include <functional>
+#include <string>
+
+#include "engine/auto_policy.hpp"
+#include "engine/bdd/bdd_model_checker.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/model_checker.hpp"
+
+namespace sfcv::engine {
+
+struct PortfolioOptions {
+  BddEngineOptions bdd;
+  ExplicitEngineOptions explicit_engine;  ///< the probe's (--threads)
+  /// How auto decided, one line each ("using the explicit engine", ...); may be empty.
+  std::function<void(const std::string&)> note;
+  /// The explicit probe's bound: kAutoProbeStates (engine/auto_policy.hpp), the one policy;
+  /// tests set a smaller one to make small charts race (0: no probe).
+  std::uint64_t probe_states = kAutoProbeStates;
+};
+
+ModelCheckerPtr make_portfolio_model_checker(PortfolioOptions options = {});
+
+}  // namespace sfcv::engine

@@ -1,0 +1,201 @@
+// --engine auto as a portfolio (engine/portfolio): on random charts of both semantics its
+// verdicts equal the explicit and the BDD engine's, whether the explicit probe answers or the
+// BDD engine, IC3 and BMC race (a probe bound of 0), and each definite answer names the engine that
+// gave it; an engine cancelled mid-run (model::Budget::cancel) stops promptly with unknown
+// answers, never holds; the run's deadline still bounds the race.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "chart_families.hpp"
+#include "engine/bdd/bdd_model_checker.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/portfolio/portfolio_model_checker.hpp"
+#include "engine/sat/sat_model_checker.hpp"
+#include "io/load.hpp"
+#include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_system.hpp"
+#include "support/ctl_task.hpp"
+#include "support/random_grafcet.hpp"
+#include "support/trace_replay.hpp"
+
+namespace sfcv::engine {
+namespace {
+
+using logic::Verdict;
+using Clock = std::chrono::steady_clock;
+
+struct Setup {
+  model::Project project;
+  semantics::TransitionSystemPtr ts;
+};
+
+Setup load_iec(const std::string& text, semantics::Iec61131Options options = {}) {
+  Setup s;
+  auto loaded = io::load_iec_text(text, "generated.st");
+  EXPECT_TRUE(loaded.ok());
+  s.project = std::move(*loaded.project);
+  model::Diagnostics diags;
+  s.ts = semantics::make_iec61131_system(s.project, options, diags);
+  EXPECT_TRUE(s.ts) << (diags.empty() ? "" : diags.front().str());
+  return s;
+}
+
+bool definite(Verdict v) { return v == Verdict::Holds || v == Verdict::Violated; }
+
+struct Tally {
+  int decided = 0, by_bdd = 0, by_ic3 = 0, by_explicit = 0;
+};
+
+void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
+  test::FormulaGenerator gen(*s.ts, seed);
+  // Invariants and reachability (both racers answer), and CTL beyond them (the BDD engine only).
+  std::vector<std::string> ctl = {"AG !(" + gen.atom() + " & " + gen.atom() + ")",
+                                  "EF (" + gen.atom() + " & " + gen.atom() + ")",
+                                  "AF " + gen.atom(), gen.formula(3)};
+  auto task = test::task_for(s.project, *s.ts, ctl, {});
+  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
+                 logic::StandardCheck::Instability, logic::StandardCheck::GlobalDeadlock};
+  const auto reference = make_explicit_model_checker()->check(task);
+  ASSERT_TRUE(reference.complete);
+  const auto symbolic = make_bdd_model_checker()->check(task);
+  for (std::uint64_t probe : {kAutoProbeStates, std::uint64_t{0}}) {
+    PortfolioOptions options;
+    options.probe_states = probe;
+    const auto report = make_portfolio_model_checker(options)->check(task);
+    ASSERT_EQ(report.results.size(), reference.results.size());
+    for (std::size_t i = 0; i < report.results.size(); ++i) {
+      const auto& r = report.results[i];
+      const auto& e = reference.results[i];
+      SCOPED_TRACE("probe " + std::to_string(probe) + ": " + e.name + " " + e.formula);
+      EXPECT_EQ(r.name, e.name);
+      if (!definite(r.verdict)) {
+        // Undecided only where the BDD engine (which answers all the racers do) is too.
+        EXPECT_FALSE(definite(symbolic.results[i].verdict)) << r.message;
+        continue;
+      }
+      ++tally.decided;
+      EXPECT_EQ(r.verdict, e.verdict) << "auto (" << r.decided_by << ") " << r.message;
+      if (definite(symbolic.results[i].verdict)) {
+        EXPECT_EQ(r.verdict, symbolic.results[i].verdict);
+      }
+      if (probe == 0) {
+        EXPECT_TRUE(r.decided_by == "bdd" || r.decided_by == "ic3" || r.decided_by == "bmc")
+            << r.decided_by;
+        tally.by_bdd += r.decided_by == "bdd";
+        tally.by_ic3 += r.decided_by != "bdd";
+      } else {
+        EXPECT_EQ(r.decided_by, "explicit");  // small charts: the probe answers everything
+        ++tally.by_explicit;
+      }
+      if (r.trace) test::expect_trace_replays(*s.ts, *r.trace);
+    }
+    if (probe == 0) {
+      EXPECT_EQ(report.engine, "auto");
+    }
+  }
+}
+
+TEST(Portfolio, AgreesWithEachEngineOnRandomCharts) {
+  Tally tally;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    bench::RandomChartFeatures features;
+    features.timed_qualifiers = seed % 3 == 0;
+    semantics::Iec61131Options options;
+    if (seed % 4 == 1) options.priority = semantics::PriorityMode::None;
+    const auto s = load_iec(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
+                            options);
+    ASSERT_TRUE(s.ts);
+    compare(s, seed, tally);
+    if (HasFatalFailure()) return;
+  }
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    SCOPED_TRACE("grafcet seed " + std::to_string(seed));
+    engine::Setup s;
+    s.project = test::random_grafcet(seed);
+    model::Diagnostics d;
+    s.ts = semantics::make_grafcet_system(s.project, {}, d);
+    ASSERT_TRUE(s.ts) << (d.empty() ? "" : d.front().str());
+    compare(s, seed, tally);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(tally.decided, 800);
+  EXPECT_GT(tally.by_explicit, 400);
+  // The race is real: both racers win some answers (whichever wins, the verdict is the same).
+  EXPECT_GT(tally.by_bdd + tally.by_ic3, 400);
+}
+
+/// A counter whose bound is reached only after 2^(n+1) cycles: `AG c < top - 1` is violated
+/// that deep, out of reach of every engine within a test's time.
+logic::CheckTask deep_task(const Setup& s, std::uint32_t n) {
+  const auto top = (std::uint64_t{1} << n) - 1;
+  return test::task_for(s.project, *s.ts, {"AG c < " + std::to_string(top - 1)}, {});
+}
+
+TEST(Portfolio, EveryEngineStopsPromptlyWhenCancelled) {
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  std::vector<ModelCheckerPtr> engines;
+  engines.push_back(make_explicit_model_checker());
+  engines.push_back(make_bdd_model_checker());
+  engines.push_back(make_sat_model_checker({SatAlgorithm::Ic3, 200}));
+  engines.push_back(make_sat_model_checker({SatAlgorithm::Bmc, 100'000}));
+  engines.push_back(make_portfolio_model_checker());
+  for (const auto& engine : engines) {
+    SCOPED_TRACE(std::string(engine->name()));
+    auto task = deep_task(s, 30);
+    task.limits.cancel = std::make_shared<std::atomic<bool>>(false);
+    std::jthread canceller([flag = task.limits.cancel] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      flag->store(true);
+    });
+    const auto t0 = Clock::now();
+    const auto report = engine->check(task);
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    // Generous for a shared machine; uncancelled, each engine runs for minutes at least.
+    EXPECT_LT(seconds, 10.0);
+    ASSERT_EQ(report.results.size(), 1u);
+    EXPECT_EQ(report.results[0].verdict, Verdict::Unknown) << report.results[0].message;
+  }
+}
+
+TEST(Portfolio, TheDeadlineBoundsTheRace) {
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  auto task = deep_task(s, 30);
+  task.limits.set_timeout(1.0);
+  PortfolioOptions options;
+  options.probe_states = 0;
+  const auto t0 = Clock::now();
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  EXPECT_LT(seconds, 10.0);
+  EXPECT_FALSE(report.complete);
+  EXPECT_EQ(report.limit, "time");
+  EXPECT_EQ(report.results[0].verdict, Verdict::Unknown);
+}
+
+TEST(Portfolio, AWinnerCancelsTheOtherEngine) {
+  // IC3 proves AG c <= top - 1 at once; the BDD engine would need 2^31 rings: once IC3 has
+  // answered, the BDD engine is cancelled and the run ends (no deadline set).
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  const auto top = (std::uint64_t{1} << 30) - 1;
+  auto task = test::task_for(s.project, *s.ts, {"AG c <= " + std::to_string(top - 1)}, {});
+  const auto t0 = Clock::now();
+  const auto report = make_portfolio_model_checker()->check(task);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  EXPECT_LT(seconds, 30.0);
+  ASSERT_EQ(report.results.size(), 1u);
+  EXPECT_EQ(report.results[0].verdict, Verdict::Holds);
+  EXPECT_EQ(report.results[0].decided_by, "ic3");
+  EXPECT_FALSE(report.results[0].certificate.empty());
+  EXPECT_TRUE(report.complete);
+}
+
+}  // namespace
+}  // namespace sfcv::engine
