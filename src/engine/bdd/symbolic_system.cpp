@@ -31,6 +31,12 @@ bdd::ManagerOptions manager_options(const SymbolicOptions& o, const Aig& aig) {
   return m;
 }
 
+// Dynamic: BuDDy sifts on its own from here on, whenever the live nodes have doubled.
+void start_reordering(ReorderMode mode) {
+  bdd::set_automatic_reordering(mode == ReorderMode::Dynamic ? kMaxAutomaticReorderings : 0,
+                                kMinReorderGainPercent);
+}
+
 }  // namespace
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
@@ -54,11 +60,11 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
-  if (options.reorder) {
+  if (options.reorder != ReorderMode::None) {
     // Blocks before any reordering: a current/next pair moves as one, inputs alone.
     for (std::size_t l = 0; l < num_latches; ++l) bdd::add_variable_block(current_var_[l], next_var_[l]);
     for (int v : input_var_) bdd::add_variable_block(v, v);
-    bdd::set_reordering(true);
+    start_reordering(options.reorder);
   }
   current_vars_ = current_var_;
   memo_.resize(aig.nodes().size());
@@ -168,7 +174,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
   // Automatic reordering waits for a full table; sift once for the relation just built.
-  if (options.reorder) bdd::reorder_now();
+  if (options.reorder == ReorderMode::Once) bdd::reorder_now();
 }
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
@@ -219,13 +225,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
-  if (options.reorder) {
+  if (options.reorder != ReorderMode::None) {
     // Blocks before any reordering: a state latch's current, next and transient copies move as
     // one (they are consecutive), an output's pair too, inputs alone.
     for (std::size_t l = 0; l < num_state; ++l) bdd::add_variable_block(v.c[l], v.m[l]);
     for (std::size_t q = 0; q < v.q.size(); ++q) bdd::add_variable_block(v.q[q], v.qp[q]);
     for (int x : v.in) bdd::add_variable_block(x, x);
-    bdd::set_reordering(true);
+    start_reordering(options.reorder);
   }
   input_var_ = v.in;
   current_var_ = v.c;
@@ -244,7 +250,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   initial_ = grafcet_->initial();
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
-  if (options.reorder) bdd::reorder_now();
+  if (options.reorder == ReorderMode::Once) bdd::reorder_now();
 }
 
 SymbolicSystem::~SymbolicSystem() = default;
@@ -271,6 +277,7 @@ bool SymbolicSystem::initial_unstable() const {
 
 void SymbolicSystem::restrict_sources(const Bdd& states) {
   if (grafcet_) grafcet_->set_sources(states);
+  else preimage_care_ = states;
 }
 
 bool SymbolicSystem::initial_range_error() const {
@@ -371,7 +378,7 @@ Bdd SymbolicSystem::preimage(const Bdd& states) const {
   Bdd acc = states.replace(*current_to_next_).exist(pre_quantify_first_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
     acc = acc.and_exist(clusters_[k], pre_quantify_after_[k]);
-  return acc;
+  return acc & preimage_care_;
 }
 
 std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
