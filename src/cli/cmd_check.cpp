@@ -49,7 +49,7 @@ struct CheckOptions {
   std::string engine = "auto";
   SystemOptions system;
   LimitOptions limits;
-  std::string reorder = "none";
+  std::string reorder = "dynamic";
   std::uint32_t depth = 200;
   std::string certificate;
   bool json = false;
@@ -342,8 +342,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
   // A bare --reorder (the old switch) means dynamic.
   sub->add_option("--reorder", opts->reorder,
-                  "bdd engine: variable reordering by sifting: none (default), once (after the "
-                  "relation is built), dynamic (once, then whenever the BDDs doubled); a bare "
+                  "bdd engine: variable reordering by sifting: none, once (after the "
+                  "relation is built), dynamic (the default: whenever the live nodes doubled); a bare "
                   "--reorder means dynamic")
       ->expected(0, 1)
       ->default_str("dynamic")

