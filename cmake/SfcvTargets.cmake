@@ -34,6 +34,8 @@ endfunction()
 # relative to src/.
 function(sfcv_add_library name dir)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  # For the internal-header fence (cmake/CheckInternalHeaders.cmake): which folder is a library.
+  set_property(GLOBAL APPEND PROPERTY SFCV_LIBRARY_DIRS ${dir})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${dir}/*.cpp)
   if(sources)
     add_library(sfcv_${name} STATIC ${sources})
@@ -73,4 +75,23 @@ function(sfcv_add_unit_tests layer dir)
   endif()
   gtest_discover_tests(test_${layer} DISCOVERY_TIMEOUT 60
                        PROPERTIES TIMEOUT 600 LABELS "${kind};${layer}")
+endfunction()
+
+# sfcv_add_header_check(<target> <dir> DEPS ...): every header below <dir> compiled on its own,
+# one generated .cpp holding only `#include "<header>"` each (like mCRL2's headertest), so that a
+# header that forgets one of its own includes fails the build.
+function(sfcv_add_header_check target dir)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB_RECURSE headers CONFIGURE_DEPENDS RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/${dir}
+       ${CMAKE_CURRENT_SOURCE_DIR}/${dir}/*.hpp)
+  set(sources "")
+  foreach(h IN LISTS headers)
+    string(MAKE_C_IDENTIFIER "${h}" id)
+    set(out ${CMAKE_CURRENT_BINARY_DIR}/header_check/${id}.cpp)
+    file(CONFIGURE OUTPUT ${out} CONTENT "#include \"${h}\"\n" @ONLY)
+    list(APPEND sources ${out})
+  endforeach()
+  add_library(${target} OBJECT ${sources})
+  target_link_libraries(${target} PRIVATE ${ARG_DEPS})
+  sfcv_apply_flags(${target})
 endfunction()

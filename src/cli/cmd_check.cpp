@@ -51,6 +51,7 @@ struct CheckOptions {
   LimitOptions limits;
   std::string reorder = "dynamic";
   std::uint32_t depth = 200;
+  unsigned threads = 0;
   std::string certificate;
   bool json = false;
   std::string trace = "table";
@@ -102,6 +103,7 @@ constexpr std::uint64_t kAutoExplicitStates = 200'000;
 
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       const engine::BddEngineOptions& bdd_options,
+                                      const engine::ExplicitEngineOptions& explicit_options,
                                       std::uint32_t depth) {
   std::string why;
   if (name == "nusmv") {
@@ -123,7 +125,7 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     checker = engine::make_sat_model_checker(sat);
   } else {
     checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
-                            : engine::make_explicit_model_checker();
+                            : engine::make_explicit_model_checker(explicit_options);
   }
   if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
   return checker;
@@ -147,13 +149,15 @@ logic::CheckReport keep_decided(logic::CheckReport bdd_report, const logic::Chec
 }
 
 logic::CheckReport check_auto(const logic::CheckTask& task,
-                              const engine::BddEngineOptions& bdd_options, ProgressLine& progress) {
+                              const engine::BddEngineOptions& bdd_options,
+                              const engine::ExplicitEngineOptions& explicit_options,
+                              ProgressLine& progress) {
   auto note = [&progress](const std::string& text) {
     if (global_options().quiet) return;
     progress.clear();
     std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
-  auto explicit_engine = engine::make_explicit_model_checker();
+  auto explicit_engine = engine::make_explicit_model_checker(explicit_options);
   auto bdd = engine::make_bdd_model_checker(bdd_options);
   std::string why;
   bool bdd_can = false;
@@ -243,11 +247,14 @@ int run_check(const CheckOptions& o) {
   task.limits.progress = progress.callback();
   engine::BddEngineOptions bdd_options;
   bdd_options.reorder = *engine::parse_reorder_mode(o.reorder);
+  engine::ExplicitEngineOptions explicit_options;
+  explicit_options.threads = o.threads;
 
   progress.phase("explore");
   logic::CheckReport result = o.engine == "auto"
-                                  ? check_auto(task, bdd_options, progress)
-                                  : choose_engine(o.engine, task, bdd_options, o.depth)->check(task);
+                                  ? check_auto(task, bdd_options, explicit_options, progress)
+                                  : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)
+                                        ->check(task);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   logic::describe_results(result, parsed.spec);
@@ -335,6 +342,9 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--engine", opts->engine, "auto (default: explicit up to 200000 states, then bdd), explicit, bdd, bmc, kind, ic3 "
                   "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
   sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
+  sub->add_option("--threads", opts->threads,
+                  "explicit engine: threads generating successors when only invariants are asked "
+                  "(default 0: one per core; results do not depend on it)");
   sub->add_option("--certificate", opts->certificate,
                   "kind and ic3: write the re-checked proof of each result there (inductive "
                   "invariant clauses over latch names, or the k of k-induction)");

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // The IEC 61131-3 semantics options as subcommands spell them (--priority, --time, --cycle):
 // parsed once here for check, simulate, export and query. Bad values throw InputError (exit 2).
 

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // Loading the model a subcommand works on: the importer's diagnostics and those of
 // model::validate go to standard error; errors end the run with exit code 2.
 

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // The progress of a long run on standard error, for every phase: the library reports through
 // model::Budget::progress; a ticker thread prints what was last reported, so that a phase that
 // reports nothing (loading, building) still shows its name and time. Nothing before ~2 s; then

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // --timeout, --max-states, --memory: registered and validated in one place, turned into the one
 // model::Budget a run shares across its phases. An invalid value is a usage error (exit 2),
 // never "no limit".

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // Lexical rules of the native Grafcet format (.g7) shared by its reader and its writer, so that
 // what the writer prints is what the reader reads.
 

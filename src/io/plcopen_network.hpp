@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // FBD/LD networks of PLCopen XML as ST: the value on a wire as an expression (transition
 // conditions wired to logic, transitions written in FBD/LD), and whole FBD/LD bodies as
 // statements (actions). Internal to src/io.

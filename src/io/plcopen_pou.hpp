@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // Building one POU of a PLCopen TC6 document: what the SFC graph builder shares with the POU
 // reader. Internal to src/io.
 

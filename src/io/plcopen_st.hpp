@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // ST text found in PLCopen XML (conditions, action and transition bodies), handed to the ST
 // parser with the location where the text starts. Internal to src/io.
 

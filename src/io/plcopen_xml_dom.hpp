@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // Helpers shared by the PLCopen TC6 XML importer: namespace-blind element access, element paths
 // for diagnostics, text of ST elements, and IEC literals in attributes (durations, initial
 // values). Internal to src/io.

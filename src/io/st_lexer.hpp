@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_io (only src/io includes it; cmake/CheckInternalHeaders.cmake).
 // Tokens of IEC 61131-3 Structured Text and textual SFC. Keywords are not distinguished here:
 // SFC lets qualifier names (N, S, D, L ...) be step and action names, so the parsers decide
 // from context whether an identifier is a keyword.

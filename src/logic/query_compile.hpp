@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,37 @@ struct CompiledQuery {
 /// For a test `A = {}` or `A != {}` (either side `{}`): A, whose elements are what a user wants
 /// to see; null for any other term.
 const Term* emptiness_tested_set(const Term& t);
+
+/// The value of a test term (and, or, not, comparisons of numbers and of sets), written once
+/// for every query evaluator: `number(term)` and `same_set(a, b)` are the evaluator's. Nullopt
+/// when `t` (or a part of it) is not a test.
+template <class Number, class SameSet>
+std::optional<bool> judge_query_test(const Term& t, Number&& number, SameSet&& same_set) {
+  auto sub = [&](const Term& x) { return judge_query_test(x, number, same_set); };
+  switch (t.op) {
+    case Term::Op::And: {
+      const auto a = sub(t.args[0]);
+      if (!a || !*a) return a;
+      return sub(t.args[1]);
+    }
+    case Term::Op::Or: {
+      const auto a = sub(t.args[0]);
+      if (!a || *a) return a;
+      return sub(t.args[1]);
+    }
+    case Term::Op::Not: {
+      const auto a = sub(t.args[0]);
+      if (!a) return a;
+      return !*a;
+    }
+    case Term::Op::IntCmp: return compare(t.cmp, number(t.args[0]), number(t.args[1]));
+    case Term::Op::SetCmp: {
+      const bool eq = same_set(t.args[0], t.args[1]);
+      return t.cmp == CmpOp::Eq ? eq : !eq;
+    }
+    default: return std::nullopt;
+  }
+}
 
 /// Compiles `query` against `ts`. Throws QueryError (unknown names, sort errors, wrong arity).
 CompiledQuery compile_query(const NodePtr& query, const QueryLibrary& library,

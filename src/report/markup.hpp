@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_report (only src/report includes it; cmake/CheckInternalHeaders.cmake).
 // Escaping shared by the writers of markup: the HTML report, graphviz HTML-like labels.
 
 #include <string>

@@ -1,4 +1,5 @@
 #pragma once
+// Internal header of sfcv_report (only src/report includes it; cmake/CheckInternalHeaders.cmake).
 // The HTML report's script and style sheet (share/sfcv/report.js, report.css), compiled in.
 
 #include <string_view>

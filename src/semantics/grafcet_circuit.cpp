@@ -12,7 +12,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "semantics/grafcet_system_impl.hpp"
+#include "semantics/detail/grafcet_system_impl.hpp"
 
 namespace sfcv::semantics {
 namespace grafcet {

@@ -12,8 +12,8 @@
 #include <limits>
 #include <optional>
 
-#include "semantics/iec_program.hpp"
-#include "semantics/iec_system_impl.hpp"
+#include "semantics/detail/iec_program.hpp"
+#include "semantics/detail/iec_system_impl.hpp"
 
 namespace sfcv::semantics {
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <memory>
 
-#include "semantics/iec_program.hpp"
-#include "semantics/iec_system_impl.hpp"
+#include "semantics/detail/iec_program.hpp"
+#include "semantics/detail/iec_system_impl.hpp"
 
 namespace sfcv::semantics {
 

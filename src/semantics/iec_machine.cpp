@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "semantics/iec61131_system.hpp"
-#include "semantics/iec_program.hpp"
+#include "semantics/detail/iec_program.hpp"
 
 namespace sfcv::semantics::iec {
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "semantics/iec_program.hpp"
+#include "semantics/detail/iec_program.hpp"
 
 namespace sfcv::semantics::iec {
 

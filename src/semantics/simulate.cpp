@@ -1,6 +1,6 @@
 #include "semantics/simulate.hpp"
 
-#include "semantics/iec_system_impl.hpp"
+#include "semantics/detail/iec_system_impl.hpp"
 
 namespace sfcv::semantics {
 

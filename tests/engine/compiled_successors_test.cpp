@@ -182,6 +182,30 @@ logic::Property invariant(const semantics::TransitionSystem& ts, const std::stri
   return p;
 }
 
+/// The report of a threaded search against the one-thread one: everything equal.
+void expect_same_report(const logic::CheckReport& threaded, const logic::CheckReport& single) {
+  SCOPED_TRACE("threaded against one thread");
+  EXPECT_EQ(threaded.states, single.states);
+  EXPECT_EQ(threaded.edges, single.edges);
+  EXPECT_EQ(threaded.depth, single.depth);
+  EXPECT_EQ(threaded.complete, single.complete);
+  EXPECT_EQ(threaded.limit, single.limit);
+  ASSERT_EQ(threaded.results.size(), single.results.size());
+  for (std::size_t i = 0; i < single.results.size(); ++i) {
+    const auto& a = threaded.results[i];
+    const auto& b = single.results[i];
+    EXPECT_EQ(a.verdict, b.verdict) << b.name;
+    EXPECT_EQ(a.message, b.message) << b.name;
+    ASSERT_EQ(a.trace.has_value(), b.trace.has_value()) << b.name;
+    if (!b.trace) continue;
+    ASSERT_EQ(a.trace->steps.size(), b.trace->steps.size()) << b.name;
+    for (std::size_t k = 0; k < b.trace->steps.size(); ++k) {
+      EXPECT_EQ(a.trace->steps[k].state, b.trace->steps[k].state) << k;
+      EXPECT_EQ(a.trace->steps[k].inputs, b.trace->steps[k].inputs) << k;
+    }
+  }
+}
+
 void expect_same_results(const semantics::TransitionSystem& ts, const std::vector<logic::Property>& props,
                          std::uint64_t max_states, std::uint32_t& violated, std::uint32_t& held) {
   logic::CheckTask task;
@@ -192,6 +216,7 @@ void expect_same_results(const semantics::TransitionSystem& ts, const std::vecto
   auto compiled = make_compiled_enumerator(ts);
   const auto fast = check_invariants(task, compiled.get());
   const auto slow = check_invariants(task);  // interpreted successors
+  expect_same_report(check_invariants(task, compiled.get(), 3), fast);
   ExplorationOptions opts;
   opts.max_states = max_states;
   const auto graph = build_reachable_situation_graph(ts, opts);
@@ -244,6 +269,50 @@ TEST(InvariantSearch, AgreesWithTheGraphCheckerOnRandomCharts) {
   }
   EXPECT_GT(violated, 10u);
   EXPECT_GT(held, 3u);
+}
+
+// Charts large enough for many batches of the threaded search (4096 states each), with
+// violations found deep in the search, mid-batch state limits and complete explorations.
+TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
+  auto selector = load(bench::parallel_branches_iec(14, true));
+  auto tanks = load(bench::tanks_iec(3, true));
+  ASSERT_TRUE(selector && tanks);
+  struct Case {
+    const semantics::TransitionSystem* ts;
+    std::vector<logic::Property> props;
+    std::uint64_t max_states;
+  };
+  const auto& p = *selector->ts;
+  std::vector<Case> cases = {
+      {&p, {invariant(p, "A0", "B0")}, 0},                      // holds: all 16385 states
+      {&p, {invariant(p, "A0", "B0")}, 9000},                   // a limit inside a batch
+      {&p, {invariant(p, "B0", "B13"), invariant(p, "A0", "B0")}, 0},  // one violated at depth 3
+      {tanks->ts.get(), {invariant(*tanks->ts, "FB_0", "EB_0")}, 0},
+  };
+  std::uint32_t complete = 0, violated = 0;
+  for (const auto& c : cases) {
+    logic::CheckTask task;
+    task.system = c.ts;
+    task.properties = c.props;
+    task.limits.max_states = c.max_states;
+    auto compiled = make_compiled_enumerator(*c.ts);
+    ASSERT_TRUE(compiled);
+    const auto single = check_invariants(task, compiled.get(), 1);
+    for (unsigned threads : {2U, 4U}) {
+      SCOPED_TRACE(std::to_string(threads) + " threads");
+      expect_same_report(check_invariants(task, compiled.get(), threads), single);
+    }
+    complete += single.complete;
+    for (const auto& r : single.results) violated += r.verdict == logic::Verdict::Violated;
+  }
+  EXPECT_GE(complete, 2u);
+  EXPECT_GE(violated, 1u);
+  EXPECT_EQ(check_invariants([&] {
+              logic::CheckTask t;
+              t.system = selector->ts.get();
+              t.properties = {invariant(p, "A0", "B0")};
+              return t;
+            }(), nullptr, 4).states, 16385u);
 }
 
 }  // namespace

@@ -168,19 +168,14 @@ SymbolicSet SymbolicQueryEvaluator::set(const Term& t) {
 }
 
 bool SymbolicQueryEvaluator::test(const Term& t) {
-  switch (t.op) {
-    case Term::Op::And: return test(t.args[0]) && test(t.args[1]);
-    case Term::Op::Or: return test(t.args[0]) || test(t.args[1]);
-    case Term::Op::Not: return !test(t.args[0]);
-    case Term::Op::IntCmp: return logic::compare(t.cmp, number(t.args[0]), number(t.args[1]));
-    case Term::Op::SetCmp: {
-      const auto a = set(t.args[0]), b = set(t.args[1]);
-      const bool eq = a.bdd == b.bdd && a.steps == b.steps;
-      return t.cmp == logic::CmpOp::Eq ? eq : !eq;
-    }
-    default: break;
-  }
-  throw SymbolicQueryError("internal error: not a test");
+  const auto r = logic::judge_query_test(
+      t, [this](const Term& x) { return number(x); },
+      [this](const Term& a, const Term& b) {
+        const auto x = set(a), y = set(b);
+        return x.bdd == y.bdd && x.steps == y.steps;
+      });
+  if (!r) throw SymbolicQueryError("internal error: not a test");
+  return *r;
 }
 
 std::int64_t SymbolicQueryEvaluator::number(const Term& t) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -43,8 +44,15 @@ struct DynamicBit {
 class CompiledEnumerator final : public TargetEnumerator {
  public:
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
-      : fallback_(make_interpreted_enumerator(ts)), words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
+      : fallback_(make_interpreted_enumerator(ts)), fallback_lock_(std::make_shared<std::mutex>()),
+        words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
+  }
+
+  // A copy shares the compiled gates' values by value (its own scratch words) and the one
+  // interpreted fallback, which the TransitionSystem's scratch state makes single-threaded.
+  std::unique_ptr<TargetEnumerator> clone() const override {
+    return std::make_unique<CompiledEnumerator>(*this);
   }
 
   void targets(StateView state, std::vector<StateWord>& out) override {
@@ -85,6 +93,7 @@ class CompiledEnumerator final : public TargetEnumerator {
     for (const auto& d : dynamic_bits_) relevant |= mask_[d.lit >> 1];
     const auto r = static_cast<std::uint32_t>(std::popcount(relevant));
     if (r > kMaxRelevantBits) {
+      const std::lock_guard<std::mutex> lock(*fallback_lock_);
       fallback_->targets(state, out);
       return;
     }
@@ -235,7 +244,8 @@ class CompiledEnumerator final : public TargetEnumerator {
     allowed_static_ = !reads_input[Aig::node_of(c.allowed)] && !reads_input[Aig::node_of(c.range_error)];
   }
 
-  std::unique_ptr<TargetEnumerator> fallback_;
+  std::shared_ptr<TargetEnumerator> fallback_;
+  std::shared_ptr<std::mutex> fallback_lock_;
   std::uint32_t words_;
   std::uint32_t first_latch_ = 0, first_input_ = 0, first_gate_ = 0;
   std::vector<Position> latch_pos_;

@@ -1,6 +1,8 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <thread>
 
 #include "engine/explicit/compiled_successors.hpp"
 #include "engine/explicit/invariant_search.hpp"
@@ -92,7 +94,9 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   // Invariants alone need neither the edges nor their labels: decided during the search.
   if (invariants_only(task)) {
     const auto compiled = make_compiled_enumerator(*task.system);
-    return check_invariants(task, compiled.get());
+    const unsigned threads =
+        options_.threads > 0 ? options_.threads : std::max(1U, std::thread::hardware_concurrency());
+    return check_invariants(task, compiled.get(), threads);
   }
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
@@ -156,6 +160,8 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   return report;
 }
 
-ModelCheckerPtr make_explicit_model_checker() { return std::make_unique<ExplicitModelChecker>(); }
+ModelCheckerPtr make_explicit_model_checker(const ExplicitEngineOptions& options) {
+  return std::make_unique<ExplicitModelChecker>(options);
+}
 
 }  // namespace sfcv::engine

@@ -10,14 +10,24 @@
 
 namespace sfcv::engine {
 
+struct ExplicitEngineOptions {
+  /// Threads generating successors in the on-the-fly invariant search (the only phase that
+  /// runs in parallel; 0: one per core). Results do not depend on it.
+  unsigned threads = 1;
+};
+
 class ExplicitModelChecker final : public ModelChecker {
  public:
+  explicit ExplicitModelChecker(ExplicitEngineOptions options = {}) : options_(options) {}
   std::string_view name() const override { return "explicit"; }
   bool can_handle(const logic::CheckTask& task, std::string* why = nullptr) const override;
   logic::CheckReport check(const logic::CheckTask& task) const override;
+
+ private:
+  ExplicitEngineOptions options_;
 };
 
-ModelCheckerPtr make_explicit_model_checker();
+ModelCheckerPtr make_explicit_model_checker(const ExplicitEngineOptions& options = {});
 
 /// The standard checks of `task.checks` on a built graph; `checker` carries the task's
 /// fairness (used for the AG AF part of re-entry only).

@@ -1,7 +1,12 @@
 #include "engine/explicit/invariant_search.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 #include "engine/explicit/state_store.hpp"
 #include "logic/formula.hpp"
@@ -104,6 +109,164 @@ logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateSt
   return trace;
 }
 
+/// Successor generation for batches of stored states on several threads. The search stores
+/// and judges states on its own thread, in BFS order, from the targets computed here, so the
+/// numbering and every result are those of the one-thread search; only the enumeration, two
+/// thirds of the instructions of a compiled search, runs in parallel, and the next batch is
+/// enumerated while the current one is stored.
+class ParallelTargets {
+ public:
+  static constexpr std::uint32_t kBatchStates = 4096;
+  static constexpr std::uint32_t kChunkStates = 64;
+
+  /// The states [begin, end) of one batch, copied (the store grows while they are expanded),
+  /// and their targets, chunk by chunk.
+  class Batch {
+   public:
+    std::uint32_t begin() const { return begin_; }
+    std::uint32_t end() const { return end_; }
+    bool empty() const { return begin_ == end_; }
+    /// The targets of state `s` of this batch: (first word, number of words).
+    std::pair<const StateWord*, std::size_t> targets(std::uint32_t s) const {
+      const auto i = s - begin_;
+      const auto& c = chunks_[i / kChunkStates];
+      const auto k = i % kChunkStates;
+      const std::uint32_t from = k == 0 ? 0 : c.ends[k - 1];
+      return {c.targets.data() + from, c.ends[k] - from};
+    }
+
+   private:
+    friend class ParallelTargets;
+    struct Chunk {
+      std::vector<StateWord> targets;
+      std::vector<std::uint32_t> ends;  ///< per state: end of its targets in `targets`
+    };
+    std::uint32_t begin_ = 0, end_ = 0;
+    std::vector<StateWord> states_;
+    std::vector<Chunk> chunks_;
+    std::uint32_t num_chunks_ = 0;
+    std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
+    std::uint32_t completed_ = 0;  ///< guarded by the pool's mutex, as active_
+    std::uint32_t active_ = 0;     ///< workers inside this batch
+    std::exception_ptr error_;
+  };
+
+  ParallelTargets(TargetEnumerator& own, unsigned threads, std::uint32_t words)
+      : own_(own), words_(words) {
+    for (unsigned t = 1; t < threads; ++t) {
+      auto e = own.clone();
+      if (!e) break;
+      enumerators_.push_back(std::move(e));
+    }
+    for (auto& e : enumerators_) workers_.emplace_back([this, en = e.get()] { work(*en); });
+  }
+  ~ParallelTargets() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (auto& w : workers_) w.join();
+  }
+  ParallelTargets(const ParallelTargets&) = delete;
+  ParallelTargets& operator=(const ParallelTargets&) = delete;
+
+  bool parallel() const { return !workers_.empty(); }
+
+  /// Copies the states [begin, end) of `store` into `b` and lets the workers enumerate them.
+  void start(Batch& b, const StateStore& store, std::uint32_t begin, std::uint32_t end) {
+    b.begin_ = begin;
+    b.end_ = end;
+    b.states_.resize(static_cast<std::size_t>(end - begin) * words_);
+    for (std::uint32_t s = begin; s < end; ++s) {
+      const auto v = store.at(s);
+      std::copy(v.begin(), v.end(), b.states_.begin() + static_cast<std::ptrdiff_t>(s - begin) * words_);
+    }
+    b.num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
+    if (b.chunks_.size() < b.num_chunks_) b.chunks_.resize(b.num_chunks_);
+    b.next_.store(0);
+    b.completed_ = 0;
+    b.error_ = nullptr;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      job_ = &b;
+      ++generation_;
+    }
+    wake_.notify_all();
+  }
+
+  /// Enumerates what is left of `b` on this thread, waits for the workers, and rethrows what
+  /// an enumeration threw.
+  void finish(Batch& b) {
+    run(b, own_);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return b.completed_ == b.num_chunks_ && b.active_ == 0; });
+    if (job_ == &b) job_ = nullptr;
+    if (b.error_) std::rethrow_exception(b.error_);
+  }
+
+  /// Stops handing out the chunks of `b` and waits until no worker is inside it.
+  void abandon(Batch& b) {
+    b.next_.store(b.num_chunks_);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return b.active_ == 0; });
+    if (job_ == &b) job_ = nullptr;
+  }
+
+ private:
+  void work(TargetEnumerator& e) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    std::uint64_t seen = 0;
+    for (;;) {
+      wake_.wait(lock, [&] { return stop_ || (job_ && generation_ != seen); });
+      if (stop_) return;
+      seen = generation_;
+      Batch& b = *job_;
+      ++b.active_;
+      lock.unlock();
+      run(b, e);
+      lock.lock();
+      --b.active_;
+      done_.notify_all();
+    }
+  }
+
+  void run(Batch& b, TargetEnumerator& e) {
+    for (;;) {
+      const auto c = b.next_.fetch_add(1);
+      if (c >= b.num_chunks_) return;
+      auto& chunk = b.chunks_[c];
+      chunk.targets.clear();
+      chunk.ends.clear();
+      std::exception_ptr error;
+      try {
+        const auto first = c * kChunkStates;
+        const auto last = std::min(first + kChunkStates, b.end_ - b.begin_);
+        for (auto i = first; i < last; ++i) {
+          e.targets(StateView(b.states_.data() + static_cast<std::size_t>(i) * words_, words_),
+                    chunk.targets);
+          chunk.ends.push_back(static_cast<std::uint32_t>(chunk.targets.size()));
+        }
+      } catch (...) {
+        error = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (error && !b.error_) b.error_ = error;
+      if (++b.completed_ == b.num_chunks_) done_.notify_all();
+    }
+  }
+
+  TargetEnumerator& own_;
+  std::uint32_t words_;
+  std::vector<std::unique_ptr<TargetEnumerator>> enumerators_;
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  Batch* job_ = nullptr;
+  std::uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
 }  // namespace
 
 std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts) {
@@ -119,7 +282,8 @@ bool invariants_only(const logic::CheckTask& task) {
   return true;
 }
 
-logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerator* enumerator) {
+logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerator* enumerator,
+                                    unsigned threads) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -178,22 +342,21 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
   std::uint32_t level = 0, level_end = initial_count;
-  std::uint32_t s = 0;
-  for (; limit.empty() && open > 0 && s < store.size(); ++s) {
+  // Before state s is expanded: the level it starts, and the limits. False: stop before it.
+  auto before = [&](std::uint32_t s) {
     if (s == level_end) {
       ++level;
       level_end = store.size();
     }
     if (limits.max_states > 0 && store.size() > limits.max_states) {
       limit = "states";
-      break;
+      return false;
     }
     if ((s & 1023U) == 0 && s > 0) {
       if (limits.expired()) limit = "time";
       else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes) limit = "memory";
-      if (!limit.empty()) break;
-      if (limits.progress && (s & 4095U) == 0)
-        {
+      if (!limit.empty()) return false;
+      if (limits.progress && (s & 4095U) == 0) {
         logic::Progress p;
         p.states = store.size();
         p.edges = edges;
@@ -203,20 +366,20 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         limits.progress(p);
       }
     }
-    const auto view = store.at(s);
-    current.assign(view.begin(), view.end());
-    targets.clear();
-    enumerator->targets(current, targets);
+    return true;
+  };
+  // Stores the targets of state s and judges the new ones. False: a limit stopped it.
+  auto expand = [&](std::uint32_t s, const StateWord* found, std::size_t count) {
     std::uint64_t out_edges = 0;
     just_violated.clear();
-    for (std::size_t k = 0; k < targets.size(); k += words) {
+    for (std::size_t k = 0; k < count; k += words) {
       // As the graph builder: no state is stored beyond the limit, and the state being expanded
       // when it is reached stays unexpanded.
       if (limits.max_states > 0 && store.size() > limits.max_states) {
         limit = "states";
         break;
       }
-      const auto [t, fresh] = store.insert(StateView(targets.data() + k, words));
+      const auto [t, fresh] = store.insert(StateView(found + k, words));
       if (fresh) parent.push_back(s);
       if (t >= stamp.size()) stamp.resize(std::max<std::size_t>(t + 1, 2 * stamp.size()), 0);
       if (stamp[t] == s + 1) continue;  // the same target again: one edge per (source, target)
@@ -228,9 +391,58 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       // As in the graph, the state stays unexpanded and what it reached has no known path.
       for (auto i : just_violated) violation[i] = kNone;
       open += just_violated.size();
-      break;
+      return false;
     }
     edges += out_edges;
+    return true;
+  };
+  std::uint32_t s = 0;
+  ParallelTargets::Batch batches[2];  // outlive the pool's workers
+  ParallelTargets pool(*enumerator, threads, words);
+  if (!pool.parallel()) {
+    for (; limit.empty() && open > 0 && s < store.size(); ++s) {
+      if (!before(s)) break;
+      const auto view = store.at(s);
+      current.assign(view.begin(), view.end());
+      targets.clear();
+      enumerator->targets(current, targets);
+      if (!expand(s, targets.data(), targets.size())) break;
+    }
+  } else {
+    auto* cur = &batches[0];
+    auto* next = &batches[1];
+    auto batch_end = [&](std::uint32_t from) {
+      return std::min<std::uint32_t>(store.size(), from + ParallelTargets::kBatchStates);
+    };
+    pool.start(*cur, store, 0, batch_end(0));
+    pool.finish(*cur);
+    bool stopped = false;
+    while (!stopped && !cur->empty()) {
+      // The states already stored past this batch are enumerated while it is stored.
+      pool.start(*next, store, cur->end(), batch_end(cur->end()));
+      for (s = cur->begin(); s < cur->end(); ++s) {
+        if (!limit.empty() || open == 0 || !before(s)) {
+          stopped = true;
+          break;
+        }
+        const auto [first, count] = cur->targets(s);
+        if (!expand(s, first, count)) {
+          stopped = true;
+          break;
+        }
+      }
+      if (stopped) {
+        pool.abandon(*next);
+        break;
+      }
+      pool.finish(*next);
+      if (next->empty()) {
+        pool.start(*next, store, cur->end(), batch_end(cur->end()));
+        pool.finish(*next);
+      }
+      std::swap(cur, next);
+    }
+    if (!stopped) s = store.size();
   }
   const bool complete = limit.empty() && s >= store.size();
 

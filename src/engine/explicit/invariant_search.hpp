@@ -25,6 +25,10 @@ class TargetEnumerator {
   virtual ~TargetEnumerator() = default;
   /// Appends the successors of `state` to `out` (words_per_state words each, duplicates allowed).
   virtual void targets(semantics::StateView state, std::vector<semantics::StateWord>& out) = 0;
+  /// An enumerator giving the same targets in the same order that may run on another thread
+  /// beside this one; null when this one cannot (the interpreted system keeps its scratch
+  /// state in the TransitionSystem).
+  virtual std::unique_ptr<TargetEnumerator> clone() const { return nullptr; }
 };
 
 std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts);
@@ -34,8 +38,11 @@ std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::T
 bool invariants_only(const logic::CheckTask& task);
 
 /// Decides the invariants of `task` (precondition: invariants_only(task)) with `enumerator`
-/// generating successors (null: the interpreted one).
+/// generating successors (null: the interpreted one). With `threads` > 1 and an enumerator
+/// that clones, the successors of a batch of states are generated on that many threads while
+/// the previous batch is stored: states are still numbered and judged in BFS order on one
+/// thread, so every count, verdict and counterexample equals the one-thread run.
 logic::CheckReport check_invariants(const logic::CheckTask& task,
-                                    TargetEnumerator* enumerator = nullptr);
+                                    TargetEnumerator* enumerator = nullptr, unsigned threads = 1);
 
 }  // namespace sfcv::engine

@@ -168,18 +168,11 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
 }
 
 bool QueryEvaluator::test(const Term& t) {
-  switch (t.op) {
-    case Term::Op::And: return test(t.args[0]) && test(t.args[1]);
-    case Term::Op::Or: return test(t.args[0]) || test(t.args[1]);
-    case Term::Op::Not: return !test(t.args[0]);
-    case Term::Op::IntCmp: return logic::compare(t.cmp, number(t.args[0]), number(t.args[1]));
-    case Term::Op::SetCmp: {
-      const bool eq = set(t.args[0]) == set(t.args[1]);
-      return t.cmp == logic::CmpOp::Eq ? eq : !eq;
-    }
-    default: break;
-  }
-  throw QueryEvaluationError("internal error: not a test");
+  const auto r = logic::judge_query_test(
+      t, [this](const Term& x) { return number(x); },
+      [this](const Term& a, const Term& b) { return set(a) == set(b); });
+  if (!r) throw QueryEvaluationError("internal error: not a test");
+  return *r;
 }
 
 std::int64_t QueryEvaluator::number(const Term& t) {

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "engine/sat/certificate.hpp"
-#include "engine/sat/unrolling.hpp"
+#include "engine/sat/deepening.hpp"
 
 namespace sfcv::engine::sat {
 
@@ -44,56 +44,27 @@ std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions
   Unrolling frames(*query.aig, base, true);
   std::vector<ReachResult> results(query.targets.size());
   std::vector<std::unique_ptr<StepCase>> steps(query.targets.size());
-  std::size_t open = results.size();
-  auto give_up = [&](std::uint32_t depth, const std::string& why) {
-    for (auto& r : results)
-      if (r.kind == ReachResult::Kind::Unknown && r.why.empty()) {
-        r.depth = depth;
-        r.why = why;
-      }
-  };
-  for (std::uint32_t k = 0; open > 0; ++k) {
-    if (k > options.max_depth) {
-      give_up(options.max_depth, "neither reached nor " + std::to_string(options.max_depth) +
-                                     "-inductive (the bound)");
-      break;
-    }
-    bool interrupted = false;
-    for (std::size_t t = 0; t < results.size() && !interrupted; ++t) {
-      auto& r = results[t];
-      if (r.kind != ReachResult::Kind::Unknown) continue;
-      // Base case at depth k: the frames before were refuted already.
-      switch (base.solve({frames.literal(query.targets[t], k)})) {
-        case SatResult::Sat:
-          r.kind = ReachResult::Kind::Reached;
-          r.depth = k;
-          for (std::uint32_t j = 0; j <= k; ++j) r.inputs.push_back(frames.input_values(j));
-          --open;
-          continue;
-        case SatResult::Unsat: break;
-        case SatResult::Interrupted: interrupted = true; continue;
-      }
-      // Step case with k + 1 non-target frames: together with the base cases 0..k a proof.
-      if (!steps[t]) steps[t] = std::make_unique<StepCase>(query, query.targets[t], options.deadline);
-      switch (steps[t]->solve(k + 1)) {
-        case SatResult::Unsat:
-          r.kind = ReachResult::Kind::Unreachable;
-          r.depth = k + 1;
-          r.certificate.kind = Certificate::Kind::KInduction;
-          r.certificate.depth = k + 1;
-          steps[t].reset();
-          --open;
-          break;
-        case SatResult::Sat: break;
-        case SatResult::Interrupted: interrupted = true; break;
-      }
-    }
-    if (interrupted) {
-      give_up(k, "the time limit passed at depth " + std::to_string(k));
-      break;
-    }
-    base.add_clause({frames.literal(query.step_ok, k)});
-  }
+  deepen(query, options, base, frames, results,
+         "neither reached nor " + std::to_string(options.max_depth) + "-inductive (the bound)",
+         [&](std::size_t t, std::uint32_t k) {
+           // Step case with k + 1 non-target frames: with the base cases 0..k, a proof.
+           if (!steps[t])
+             steps[t] = std::make_unique<StepCase>(query, query.targets[t], options.deadline);
+           switch (steps[t]->solve(k + 1)) {
+             case SatResult::Unsat: {
+               auto& r = results[t];
+               r.kind = ReachResult::Kind::Unreachable;
+               r.depth = k + 1;
+               r.certificate.kind = Certificate::Kind::KInduction;
+               r.certificate.depth = k + 1;
+               steps[t].reset();
+               return DepthStep::Decided;
+             }
+             case SatResult::Sat: return DepthStep::Open;
+             case SatResult::Interrupted: return DepthStep::Interrupted;
+           }
+           return DepthStep::Open;
+         });
   // Every proof is re-checked by fresh solvers.
   for (std::size_t t = 0; t < results.size(); ++t) {
     auto& r = results[t];

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "semantics/iec_program.hpp"
+#include "semantics/detail/iec_program.hpp"
 #include "semantics/transition_system.hpp"
 
 namespace sfcv::semantics::iec {

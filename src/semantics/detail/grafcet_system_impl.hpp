@@ -2,6 +2,7 @@
 // Internal: the compiled Grafcet model and the GrafcetSystem class (make_grafcet_system returns
 // it). Shared with grafcet_circuit.cpp, which builds the micro-step circuit from the same model.
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -174,8 +175,24 @@ class GrafcetSystem final : public TransitionSystem {
 
  private:
   friend class CircuitBuilder;
-  // ---- compilation
+  // ---- compilation (grafcet_build.cpp: build runs one function per group of IEC 60848 rules)
   void build(const model::Project& project);
+  void build_charts(const model::Project& project);
+  void build_enclosures_and_expansions(const model::Project& project);
+  void build_expansion_entries_and_exits();
+  void build_step_fields();
+  void build_macro_step_activity();
+  void build_variables(const model::Project& project);
+  void build_variable_fields();
+  void build_transitions(const model::Pou& pou, const model::Chart& chart, int chart_id);
+  int step_in(const model::Pou& pou, const std::string& chart, const std::string& step,
+              const model::SourceLocation& where);
+  void build_stored_actions(const model::Pou& pou);
+  void build_continuous_actions(const model::Pou& pou);
+  void build_forcing_orders(const model::Pou& pou);
+  void build_inputs_and_delays();
+  void build_observables(const model::Project& project);
+  void build_initial_situation(const model::Project& project);
   void error(const model::SourceLocation& where, std::string message) {
     diags_.push_back({model::Severity::Error, where, std::move(message)});
     ok_ = false;

@@ -1,0 +1,150 @@
+// The IEC 61131-3 compiler's shared state (internal to sfcv_semantics): one Compiler object
+// turns a model::Project into the flat Program of semantics/detail/iec_program.hpp. Its member
+// functions live in one file per concept: iec_compile.cpp (POU selection, variables, the driver),
+// iec_compile_expr.cpp (expressions), iec_compile_stmt.cpp (statements),
+// iec_compile_fb.cpp (standard function block instances: timers, counters, edges) and
+// iec_compile_chart.cpp (steps, transitions, actions and their qualifiers).
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "model/chart.hpp"
+#include "model/diagnostic.hpp"
+#include "semantics/detail/iec_program.hpp"
+
+namespace sfcv::semantics::iec::detail {
+using model::ExprKind;
+using model::Qualifier;
+using model::StandardFb;
+using model::TypeKind;
+
+struct Ref {
+  enum Kind { Field, Input, FbInst } kind = Field;
+  std::uint32_t index = 0;
+  bool is_bool = true;
+};
+
+struct PouScope {
+  const model::Pou* pou = nullptr;
+  std::uint32_t index = 0;
+  std::map<std::string, Ref> names;              // upper-case variable names
+  std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
+  std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
+  // Inputs the POU's own code writes: a field holds the program's copy, loaded from the input
+  // at the start of the POU's cycle (field, input).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> input_copies;
+};
+
+enum class VT { Bool, Int };
+
+struct Compiler {
+  Compiler(const model::Project& pr, Program& prog, model::Diagnostics& d)
+      : project(pr), p(prog), diags(d) {}
+  const model::Project& project;
+  Program& p;
+  model::Diagnostics& diags;
+  bool ok = true;
+  std::vector<PouScope> scopes;
+  std::map<std::string, std::uint32_t> inputs_by_name;
+  std::vector<std::uint8_t> field_is_bool;
+  std::set<std::string> written;   // "POU|VAR" upper-case: variables some statement assigns
+  std::set<std::string> inlining;  // upper-case actions whose call is being compiled
+  std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
+  std::set<std::uint32_t> called_timers;                      // FB indices of called timers
+  // Step .T: constants compared with, and nodes to patch once regions are known.
+  std::map<std::uint32_t, std::set<std::int64_t>> t_keys;  // step -> keys (2c or 2c+1)
+  std::vector<std::uint32_t> t_nodes;
+
+  void error(const model::SourceLocation& where, std::string msg);
+
+  std::uint32_t add_field(std::string name, FieldKind kind, std::int64_t lo, std::int64_t hi,
+                          std::int64_t init, bool is_bool);
+
+  std::uint32_t add_input(std::string name, model::Type type, bool pseudo);
+
+  // ---------------------------------------------------------------------- POU selection
+  std::vector<const model::Pou*> select();
+
+  // ------------------------------------------------------------------------- variables
+  static model::Type value_type(const model::Type& t);
+
+  void collect_written(const model::StmtList& body, const std::string& pou);
+
+  void variables(const std::vector<const model::Pou*>& pous);
+
+  void make_fb(std::uint32_t pi, const model::Variable& v);
+
+  // ---------------------------------------------------------------------- expressions
+  std::uint32_t node(Node n, std::vector<std::uint32_t> kids = {});
+  std::uint32_t constant(std::int64_t k);
+
+  static std::optional<std::int64_t> literal(const model::Expr& e);
+
+  // A step named `name` in the POU, preferring chart `context` (-1: none).
+  std::optional<std::uint32_t> find_step(const PouScope& sc, std::string_view name, int context,
+                                         const model::SourceLocation& where, bool report);
+
+  static Op op_of(ExprKind k);
+  static Op flip(Op c);
+
+  bool is_step_t(const PouScope& sc, const model::Expr& e, int context);
+
+  std::uint32_t compare(const PouScope& sc, const model::Expr& e, int context, VT& type);
+
+  // IEC 61131-3 (2.2.1): Boolean data may be written as the integer literals 0 and 1
+  // (Beremiz exports `ORANGE_LIGHT := 1;`). Called only where a BOOL is expected.
+  static VT bool_if_literal(const model::Expr& e, VT t);
+
+  std::uint32_t expr(const PouScope& sc, const model::Expr& e, int context, VT& type);
+
+  std::uint32_t member(const PouScope& sc, const model::Expr& e, int context, VT& type);
+
+  std::uint32_t bool_expr(const PouScope& sc, const model::ExprPtr& e, int context,
+                          const model::SourceLocation& where, const char* what);
+
+  // ------------------------------------------------------------------------ statements
+  Block block(const PouScope& sc, const model::StmtList& body,
+              const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies = {});
+
+  std::uint32_t stmt(const PouScope& sc, const model::Stmt& s);
+
+  /// The action of the POU a call statement `NAME();` names (no variable of that name).
+  const model::Action* called_action(const PouScope& sc, const model::Stmt& s) const;
+
+  void fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out);
+
+  /// Timers some call leaves without PT: sound only when no call gives a PT other than T#0s
+  /// (then PT is T#0s throughout); timers only called with IN = FALSE get T#0s too.
+  void finish_timers();
+
+  std::int32_t make_timer(const std::string& field_name, std::int64_t d,
+                          const std::string& timeout_name);
+
+  // ----------------------------------------------------------------- charts and actions
+  void structure();
+
+  std::uint32_t add_action(PouScope& sc, const std::string& name, model::ActionBodyKind kind,
+                           const model::SourceLocation& where);
+
+  void actions_and_transitions();
+
+  void orders();
+
+  void step_timers();
+
+  void step_observables();
+
+  /// Grafcet-only content and duplicates the IEC semantics would otherwise silently merge.
+  void reject_foreign(const std::vector<const model::Pou*>& pous);
+
+  bool run();
+};
+
+}  // namespace sfcv::semantics::iec::detail

@@ -1,0 +1,384 @@
+// The IEC compiler's expressions: guards, conditions and right-hand sides into Program nodes,
+// with step .T comparisons, member access and the integer/Boolean typing of the scan cycle.
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "model/names.hpp"
+#include "semantics/detail/iec_compiler.hpp"
+
+namespace sfcv::semantics::iec::detail {
+
+std::uint32_t Compiler::node(Node n, std::vector<std::uint32_t> kids) {
+  n.first = static_cast<std::uint32_t>(p.kids.size());
+  n.count = static_cast<std::uint32_t>(kids.size());
+  p.kids.insert(p.kids.end(), kids.begin(), kids.end());
+  p.nodes.push_back(n);
+  return static_cast<std::uint32_t>(p.nodes.size() - 1);
+}
+
+std::uint32_t Compiler::constant(std::int64_t k) {
+  Node n;
+  n.op = Op::Const;
+  n.k = k;
+  return node(n);
+}
+
+std::optional<std::int64_t> Compiler::literal(const model::Expr& e) {
+  switch (e.kind) {
+    case ExprKind::BoolConst:
+    case ExprKind::IntConst:
+    case ExprKind::TimeConst:
+      return e.value;
+    case ExprKind::Neg:
+      if (auto v = literal(*e.args[0]); v && *v != std::numeric_limits<std::int64_t>::min())
+        return -*v;
+      return std::nullopt;
+    default:
+      return std::nullopt;
+  }
+}
+
+std::optional<std::uint32_t> Compiler::find_step(const PouScope& sc, std::string_view name,
+                                                 int context, const model::SourceLocation& where,
+                                                 bool report) {
+  std::vector<std::uint32_t> hits;
+  for (auto c : sc.chart_ids)
+    for (auto s : p.charts[c].steps)
+      if (model::iequals(p.steps[s].short_name, name)) {
+        if (context >= 0 && c == static_cast<std::uint32_t>(context)) return s;
+        hits.push_back(s);
+      }
+  if (hits.size() == 1) return hits.front();
+  if (hits.size() > 1 && report) {
+    std::string list;
+    for (auto h : hits) list += " " + p.steps[h].name;
+    error(where, "step name '" + std::string(name) + "' is ambiguous here:" + list);
+  }
+  return std::nullopt;
+}
+
+Op Compiler::op_of(ExprKind k) {
+  switch (k) {
+    case ExprKind::Not:
+      return Op::Not;
+    case ExprKind::Neg:
+      return Op::Neg;
+    case ExprKind::And:
+      return Op::And;
+    case ExprKind::Or:
+      return Op::Or;
+    case ExprKind::Xor:
+      return Op::Xor;
+    case ExprKind::Add:
+      return Op::Add;
+    case ExprKind::Sub:
+      return Op::Sub;
+    case ExprKind::Mul:
+      return Op::Mul;
+    case ExprKind::Div:
+      return Op::Div;
+    case ExprKind::Mod:
+      return Op::Mod;
+    case ExprKind::Eq:
+      return Op::Eq;
+    case ExprKind::Ne:
+      return Op::Ne;
+    case ExprKind::Lt:
+      return Op::Lt;
+    case ExprKind::Le:
+      return Op::Le;
+    case ExprKind::Gt:
+      return Op::Gt;
+    default:
+      return Op::Ge;
+  }
+}
+
+Op Compiler::flip(Op c) {
+  switch (c) {
+    case Op::Lt:
+      return Op::Gt;
+    case Op::Le:
+      return Op::Ge;
+    case Op::Gt:
+      return Op::Lt;
+    case Op::Ge:
+      return Op::Le;
+    default:
+      return c;
+  }
+}
+
+bool Compiler::is_step_t(const PouScope& sc, const model::Expr& e, int context) {
+  return e.kind == ExprKind::Member && model::iequals(e.member, "T") &&
+         find_step(sc, e.name, context, e.where, false).has_value();
+}
+
+std::uint32_t Compiler::compare(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  type = VT::Bool;
+  Op cmp = op_of(e.kind);
+  const model::Expr* lhs = e.args[0].get();
+  const model::Expr* rhs = e.args[1].get();
+  // Step .T against a constant (the only use of .T sfcv supports: it keeps the state finite).
+  if (is_step_t(sc, *rhs, context) && !is_step_t(sc, *lhs, context)) {
+    std::swap(lhs, rhs);
+    cmp = flip(cmp);
+  }
+  if (is_step_t(sc, *lhs, context)) {
+    const auto k = literal(*rhs);
+    const auto step = *find_step(sc, lhs->name, context, lhs->where, true);
+    if (!k) {
+      error(e.where, "'" + model::to_st(e) + "': a step's .T can only be compared with a constant");
+      return constant(0);
+    }
+    if (p.options.time == TimeMode::Discrete) {
+      auto& keys = t_keys[step];
+      keys.insert(*k);
+      Node n;
+      n.op = Op::StepT;
+      n.a = step;
+      const auto t = node(n);
+      return node(Node{cmp, Op::Eq, false, 0, 0, 0, 0}, {t, constant(*k)});
+    }
+    if (cmp == Op::Eq || cmp == Op::Ne) {
+      error(e.where, "'" + model::to_st(e) +
+                         "': in abstract time a step's .T can only be compared "
+                         "with <, <=, >, >= (use --time discrete for = and <>)");
+      return constant(0);
+    }
+    // Region keys: "T >= c" passes key 2c; "T > c" passes key 2c+1.
+    const std::int64_t key = (cmp == Op::Ge || cmp == Op::Lt) ? 2 * *k : 2 * *k + 1;
+    const bool negate = cmp == Op::Lt || cmp == Op::Le;
+    if (key <= 0) return constant(negate ? 0 : 1);  // T >= 0 always holds
+    t_keys[step].insert(key);
+    Node n;
+    n.op = Op::StepTCmp;
+    n.a = step;
+    n.k = key;  // patched into a region index later
+    n.negate = negate;
+    const auto id = node(n);
+    t_nodes.push_back(id);
+    return id;
+  }
+  // An integer input against a constant: the successor function splits its interval.
+  auto int_input = [&](const model::Expr& x) {
+    if (x.kind != ExprKind::Name) return false;
+    auto it = sc.names.find(model::to_upper(x.name));
+    return it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool;
+  };
+  if (!int_input(*lhs) && int_input(*rhs)) {
+    std::swap(lhs, rhs);
+    cmp = flip(cmp);
+  }
+  if (lhs->kind == ExprKind::Name) {
+    auto it = sc.names.find(model::to_upper(lhs->name));
+    const auto k = literal(*rhs);
+    if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool) {
+      Node n;
+      n.cmp = cmp;
+      n.a = it->second.index;
+      if (k) {
+        n.op = Op::InputCmp;
+        n.k = *k;
+        return node(n);
+      }
+      // Against an expression: its value in this run is the split point.
+      VT ot;
+      const auto other = expr(sc, *rhs, context, ot);
+      if (ot != VT::Int) error(e.where, "'" + model::to_st(e) + "' compares a number with a BOOL");
+      n.op = Op::InputCmpExpr;
+      return node(n, {other});
+    }
+  }
+  VT lt, rt;
+  const auto a = expr(sc, *e.args[0], context, lt);
+  const auto b = expr(sc, *e.args[1], context, rt);
+  if (lt == VT::Bool) rt = bool_if_literal(*e.args[1], rt);
+  if (rt == VT::Bool) lt = bool_if_literal(*e.args[0], lt);
+  if (lt != rt)
+    error(e.where, "'" + model::to_st(e) + "' compares a BOOL with a number");
+  else if (lt == VT::Bool && cmp != Op::Eq && cmp != Op::Ne)
+    error(e.where, "'" + model::to_st(e) + "': ordering comparison of BOOL values");
+  return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, {a, b});
+}
+
+VT Compiler::bool_if_literal(const model::Expr& e, VT t) {
+  return t == VT::Int && e.kind == ExprKind::IntConst && (e.value == 0 || e.value == 1) ? VT::Bool
+                                                                                        : t;
+}
+
+std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  switch (e.kind) {
+    case ExprKind::BoolConst:
+      type = VT::Bool;
+      return constant(e.value);
+    case ExprKind::IntConst:
+    case ExprKind::TimeConst:
+      type = VT::Int;
+      return constant(e.value);
+    case ExprKind::Name: {
+      if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end()) {
+        const auto& r = it->second;
+        if (r.kind == Ref::FbInst) {
+          error(e.where, "'" + e.name + "' is a function block instance; use one of its outputs");
+          type = VT::Bool;
+          return constant(0);
+        }
+        type = r.is_bool ? VT::Bool : VT::Int;
+        Node n;
+        n.op = r.kind == Ref::Field ? Op::Field : Op::Input;
+        n.a = r.index;
+        return node(n);
+      }
+      if (auto s = find_step(sc, e.name, context, e.where, true)) {
+        type = VT::Bool;
+        Node n;
+        n.op = Op::StepX;
+        n.a = *s;
+        return node(n);
+      }
+      error(e.where, "unknown name '" + e.name + "' in " + sc.pou->name);
+      type = VT::Bool;
+      return constant(0);
+    }
+    case ExprKind::Member:
+      return member(sc, e, context, type);
+    case ExprKind::Not:
+    case ExprKind::Neg: {
+      VT t;
+      const auto a = expr(sc, *e.args[0], context, t);
+      if (e.kind == ExprKind::Not) t = bool_if_literal(*e.args[0], t);
+      if (e.kind == ExprKind::Not && t != VT::Bool)
+        error(e.where, "'" + model::to_st(e) + "': bitwise NOT on integers is not supported");
+      if (e.kind == ExprKind::Neg && t != VT::Int)
+        error(e.where, "'" + model::to_st(e) + "': negation of a BOOL");
+      type = t;
+      return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, {a});
+    }
+    case ExprKind::And:
+    case ExprKind::Or:
+    case ExprKind::Xor: {
+      std::vector<std::uint32_t> kids;
+      for (const auto& a : e.args) {
+        VT t;
+        kids.push_back(expr(sc, *a, context, t));
+        if (bool_if_literal(*a, t) != VT::Bool)
+          error(a->where.known() ? a->where : e.where,
+                "'" + model::to_st(e) + "': bitwise AND/OR/XOR on integers is not supported");
+      }
+      type = VT::Bool;
+      return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, std::move(kids));
+    }
+    case ExprKind::Add:
+    case ExprKind::Sub:
+    case ExprKind::Mul:
+    case ExprKind::Div:
+    case ExprKind::Mod: {
+      VT a, b;
+      const auto x = expr(sc, *e.args[0], context, a);
+      const auto y = expr(sc, *e.args[1], context, b);
+      if (a != VT::Int || b != VT::Int)
+        error(e.where, "'" + model::to_st(e) + "': arithmetic on BOOL");
+      type = VT::Int;
+      return node(Node{op_of(e.kind), Op::Eq, false, 0, 0, 0, 0}, {x, y});
+    }
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge:
+      return compare(sc, e, context, type);
+    case ExprKind::Rising:
+    case ExprKind::Falling:
+    case ExprKind::Delay:
+      error(e.where, "'" + model::to_st(e) +
+                         "' is Grafcet syntax, not IEC 61131-3 (use R_TRIG/F_TRIG, TON)");
+      type = VT::Bool;
+      return constant(0);
+  }
+  type = VT::Bool;
+  return constant(0);
+}
+
+std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  const auto mem = model::to_upper(e.member);
+  type = VT::Bool;
+  if (auto it = sc.names.find(model::to_upper(e.name));
+      it != sc.names.end() && it->second.kind == Ref::FbInst) {
+    const auto& fb = p.fbs[it->second.index];
+    const bool timer =
+        fb.kind == StandardFb::TON || fb.kind == StandardFb::TOF || fb.kind == StandardFb::TP;
+    const bool counter = fb.kind == StandardFb::CTU || fb.kind == StandardFb::CTD;
+    const bool q1 = fb.kind == StandardFb::SR || fb.kind == StandardFb::RS;
+    if ((mem == "Q" && !q1) || (mem == "Q1" && q1)) {
+      Node n;
+      n.op = Op::Field;
+      n.a = static_cast<std::uint32_t>(fb.q);
+      return node(n);
+    }
+    if (mem == "CV" && counter) {
+      type = VT::Int;
+      Node n;
+      n.op = Op::Field;
+      n.a = static_cast<std::uint32_t>(fb.cv);
+      return node(n);
+    }
+    if (mem == "ET" && timer) {
+      if (p.options.time == TimeMode::Abstract) {
+        error(e.where, "'" + model::to_st(e) +
+                           "': a timer's ET has no value in abstract time "
+                           "(use --time discrete)");
+        return constant(0);
+      }
+      type = VT::Int;
+      Node n;
+      n.op = Op::TimerET;
+      n.a = it->second.index;
+      return node(n);
+    }
+    error(e.where, "'" + model::to_st(e) + "': " + std::string(model::to_string(fb.kind)) +
+                       " has no output " + e.member + " sfcv supports");
+    return constant(0);
+  }
+  if (mem == "X") {
+    if (auto s = find_step(sc, e.name, context, e.where, true)) {
+      Node n;
+      n.op = Op::StepX;
+      n.a = *s;
+      return node(n);
+    }
+  }
+  if (mem == "T" && find_step(sc, e.name, context, e.where, false)) {
+    error(e.where, "'" + model::to_st(e) + "': a step's .T can only be compared with a constant");
+    return constant(0);
+  }
+  if (mem == "A" || mem == "Q") {
+    if (auto it = sc.actions.find(model::to_upper(e.name)); it != sc.actions.end()) {
+      Node n;
+      n.op = Op::Field;
+      n.a = p.actions[it->second].active;
+      return node(n);
+    }
+  }
+  error(e.where, "unknown name '" + e.name + "." + e.member + "' in " + sc.pou->name);
+  return constant(0);
+}
+
+std::uint32_t Compiler::bool_expr(const PouScope& sc, const model::ExprPtr& e, int context,
+                                  const model::SourceLocation& where, const char* what) {
+  if (!e) return constant(1);
+  VT t;
+  const auto n = expr(sc, *e, context, t);
+  if (bool_if_literal(*e, t) != VT::Bool)
+    error(e->where.known() ? e->where : where,
+          std::string(what) + " '" + model::to_st(e) + "' is not Boolean");
+  return n;
+}
+
+}  // namespace sfcv::semantics::iec::detail

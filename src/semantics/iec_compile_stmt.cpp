@@ -1,0 +1,130 @@
+// The IEC compiler's statements: ST bodies (assignments, IF, CASE, loops, action calls) into
+// Program blocks.
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "model/names.hpp"
+#include "semantics/detail/iec_compiler.hpp"
+
+namespace sfcv::semantics::iec::detail {
+
+Block Compiler::block(const PouScope& sc, const model::StmtList& body,
+                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies) {
+  std::vector<std::uint32_t> items;
+  for (const auto& [field, input] : input_copies) {
+    Stmt copy;
+    copy.op = SOp::Assign;
+    copy.where = sc.pou->where.str();
+    copy.target = field;
+    Node n;
+    n.op = Op::Input;
+    n.a = input;
+    copy.expr = node(n);
+    p.stmts.push_back(copy);
+    items.push_back(static_cast<std::uint32_t>(p.stmts.size() - 1));
+  }
+  for (const auto& s : body) items.push_back(stmt(sc, *s));
+  Block b;
+  b.first = static_cast<std::uint32_t>(p.block_items.size());
+  b.count = static_cast<std::uint32_t>(items.size());
+  p.block_items.insert(p.block_items.end(), items.begin(), items.end());
+  return b;
+}
+
+std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
+  Stmt out;
+  out.where = s.where.str();
+  switch (s.kind) {
+    case model::StmtKind::Assign: {
+      out.op = SOp::Assign;
+      auto it = sc.names.find(model::to_upper(s.target));
+      VT t;
+      out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
+      if (it == sc.names.end()) {
+        error(s.where, "assignment to unknown variable '" + s.target + "'");
+      } else if (it->second.kind != Ref::Field) {
+        error(s.where,
+              "assignment to '" + s.target + "', which is " +
+                  (it->second.kind == Ref::Input ? "an input" : "a function block instance"));
+      } else {
+        out.target = it->second.index;
+        if (field_is_bool[out.target] && s.value) t = bool_if_literal(*s.value, t);
+        if ((t == VT::Bool) != static_cast<bool>(field_is_bool[out.target]))
+          error(s.where, "type mismatch in the assignment to '" + s.target + "'");
+      }
+      break;
+    }
+    case model::StmtKind::If: {
+      out.op = SOp::If;
+      std::vector<IfArm> arms;
+      for (std::size_t i = 0; i < s.conditions.size(); ++i)
+        arms.push_back(IfArm{bool_expr(sc, s.conditions[i], -1, s.where, "condition"),
+                             block(sc, s.bodies[i])});
+      out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+      out.arm_count = static_cast<std::uint32_t>(arms.size());
+      p.if_arms.insert(p.if_arms.end(), arms.begin(), arms.end());
+      out.else_body = block(sc, s.else_body);
+      break;
+    }
+    case model::StmtKind::Case: {
+      out.op = SOp::Case;
+      VT t;
+      out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
+      std::vector<CaseArm> arms;
+      for (std::size_t i = 0; i < s.labels.size(); ++i) {
+        CaseArm arm;
+        arm.label_first = static_cast<std::uint32_t>(p.case_labels.size());
+        arm.label_count = static_cast<std::uint32_t>(s.labels[i].size());
+        p.case_labels.insert(p.case_labels.end(), s.labels[i].begin(), s.labels[i].end());
+        arm.body = block(sc, s.bodies[i]);
+        arms.push_back(arm);
+      }
+      out.arm_first = static_cast<std::uint32_t>(p.case_arms.size());
+      out.arm_count = static_cast<std::uint32_t>(arms.size());
+      p.case_arms.insert(p.case_arms.end(), arms.begin(), arms.end());
+      out.else_body = block(sc, s.else_body);
+      break;
+    }
+    case model::StmtKind::FbCall:
+      if (const auto* act = called_action(sc, s)) {
+        // `ACT();` runs the action's statements at that point of the body (IEC 61131-3
+        // allows calling an action of the same POU): an IF TRUE around them.
+        out.op = SOp::If;
+        if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
+          error(s.where,
+                "call of action '" + act->name + "' of " + sc.pou->name + ": " +
+                    (act->body_unsupported ? "its body is not modelled"
+                                           : "only actions with an ST/FBD/LD body can be called"));
+          break;
+        }
+        if (!inlining.insert(model::to_upper(act->name)).second) {
+          error(s.where, "action '" + act->name + "' calls itself (recursion)");
+          break;
+        }
+        IfArm arm{constant(1), block(sc, act->body)};
+        inlining.erase(model::to_upper(act->name));
+        out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+        out.arm_count = 1;
+        p.if_arms.push_back(arm);
+        out.else_body = block(sc, {});
+        break;
+      }
+      out.op = SOp::FbCall;
+      fb_call(sc, s, out);
+      break;
+  }
+  p.stmts.push_back(out);
+  return static_cast<std::uint32_t>(p.stmts.size() - 1);
+}
+
+const model::Action* Compiler::called_action(const PouScope& sc, const model::Stmt& s) const {
+  if (!s.arguments.empty() || sc.names.count(model::to_upper(s.target))) return nullptr;
+  return sc.pou->find_action(s.target);
+}
+
+}  // namespace sfcv::semantics::iec::detail

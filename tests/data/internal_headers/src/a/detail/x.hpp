@@ -1,0 +1,4 @@
+#pragma once
+inline int detail_x() {
+  return 1;
+}
