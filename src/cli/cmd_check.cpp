@@ -61,6 +61,7 @@ struct CheckOptions {
   std::string html;
   bool all_findings = false;
   bool coverage = false;
+  std::string deadlock_paths = "stutter";
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -238,6 +239,13 @@ int run_check(const CheckOptions& o) {
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
+  if (o.deadlock_paths != "stutter" && o.deadlock_paths != "drop")
+    throw UsageError("bad --deadlock-paths '" + o.deadlock_paths + "' (expected stutter or drop)");
+  if (o.deadlock_paths == "drop" && o.engine != "auto" && o.engine != "explicit" && o.engine != "bdd")
+    throw UsageError("--deadlock-paths drop: the " + o.engine +
+                     " engine does not check it; use --engine explicit, bdd or auto");
+  logic::set_deadlock_paths(task, o.deadlock_paths == "drop" ? logic::DeadlockPaths::Drop
+                                                             : logic::DeadlockPaths::Stutter);
   task.max_findings = o.all_findings ? 0 : task.max_findings;
   // AG (a -> f): also ask EF a, to tell a vacuous pass.
   const auto num_properties = task.properties.size();
@@ -371,6 +379,10 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--coverage", opts->coverage,
                 "Also report the steps, transitions and actions the reachable states visit "
                 "(explicit engine)");
+  sub->add_option("--deadlock-paths", opts->deadlock_paths,
+                  "A state without a successor: stutter (default: it repeats forever, as Spin "
+                  "reads it) or drop (no path passes there; only infinite paths count, as in "
+                  "NuSMV); explicit and bdd engines (docs/properties.md)");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
   sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/shipped_files.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/run_limits.hpp"
@@ -49,18 +50,7 @@ struct QueryOptions {
 };
 
 /// The shipped library: <prefix>/share/sfcv next to an installed binary, else the source tree.
-std::string default_library_path() {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const auto installed = exe.parent_path().parent_path() / "share" / "sfcv" / "properties.sfq";
-    if (fs::exists(installed, ec)) return installed.string();
-  }
-  const fs::path source = fs::path(SFCV_SHARE_DIR) / "properties.sfq";
-  if (!std::string(SFCV_SHARE_DIR).empty() && fs::exists(source, ec)) return source.string();
-  return {};
-}
+std::string default_library_path() { return shipped_file("properties.sfq"); }
 
 /// "query:1:5: message" followed by the query line and a caret under the column.
 std::string located(const logic::QueryError& e, const std::string& text,

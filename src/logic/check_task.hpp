@@ -28,6 +28,11 @@ using Progress = model::Progress;
 /// shared by every phase and, under --engine auto, by both engines.
 using CheckLimits = model::Budget;
 
+/// The paths through a state without a successor (docs/properties.md): the state repeats
+/// forever (Stutter, as Spin reads them), or no path passes there (Drop, NuSMV's reading: only
+/// infinite paths count).
+enum class DeadlockPaths { Stutter, Drop };
+
 struct CheckTask {
   const semantics::TransitionSystem* system = nullptr;
   const model::Project* project = nullptr;  ///< optional: locations, loops, actions
@@ -40,6 +45,8 @@ struct CheckTask {
   /// Findings kept per standard check (0 = every one); PropertyResult::findings_total counts all.
   std::size_t max_findings = 20;
   CheckLimits limits;
+  /// LTL paths through deadlocks; Drop also makes CTL quantify over infinite paths only.
+  DeadlockPaths deadlock_paths = DeadlockPaths::Stutter;
   /// Also measure the coverage of steps, transitions and actions (explicit engine).
   bool coverage = false;
 };
@@ -51,6 +58,15 @@ inline const Property* first_ltl_property(const CheckTask& task) {
     if (p.formula && is_ltl(*p.formula)) return &p;
   return nullptr;
 }
+/// Sets how paths treat deadlocks. Drop also adds the fairness constraint TRUE when there is
+/// none, so that CTL's path quantifiers, like NuSMV's, range over infinite paths only (a state
+/// without any is then outside every quantifier's reach, as in docs/properties.md).
+inline void set_deadlock_paths(CheckTask& task, DeadlockPaths paths) {
+  task.deadlock_paths = paths;
+  if (paths == DeadlockPaths::Drop && task.fairness.empty())
+    task.fairness.push_back(make_const(true));
+}
+
 inline std::string ltl_refusal(std::string_view engine, const Property& p) {
   return "the " + std::string(engine) + " engine does not check LTL properties ('" + p.name +
          "'); use --engine explicit (or auto)";

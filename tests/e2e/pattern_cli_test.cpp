@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "support/sfcv_test.hpp"
@@ -164,6 +165,50 @@ TEST(PatternCommand, ShippedRequirementsSpecGivesTheVerdictsItStates) {
       EXPECT_EQ(p["verdict"], stated[p["name"].get<std::string>()]) << engine << " " << p["name"];
       EXPECT_FALSE(p["description"].get<std::string>().empty());
     }
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// The shipped library share/sfcv/patterns.spec: `sfcv patterns --library` names it, every entry
+// loads on the chemical plant and gets a definite verdict, the one its comment states.
+TEST(PatternLibrary, EveryEntryGivesItsStatedVerdictOnThePlant) {
+  auto where = run_sfcv("patterns --library");
+  ASSERT_EQ(where.exit_code, 0) << where.err;
+  const std::string path = where.out.substr(0, where.out.find('\n'));
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  std::map<std::string, std::string> stated;
+  std::set<std::string> patterns_used;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("pattern ", 0) != 0) continue;
+    const auto colon = line.find(':');
+    const auto name = line.substr(8, colon - 8);
+    const auto comment = line.find("-- ");
+    ASSERT_NE(comment, std::string::npos) << line;
+    stated[name] = line.substr(comment + 3, line.find_first_of(" (", comment + 3) - comment - 3);
+    const auto body = line.find_first_not_of(' ', colon + 1);
+    patterns_used.insert(line.substr(body, line.find('(', body) - body));
+  }
+  // Every pattern of the catalogue has an example.
+  for (const char* p : {"always", "never", "implies", "next_cycle", "between_cycles",
+                        "infinitely_often", "never_before", "reachable", "repeatable", "absence",
+                        "universality", "existence", "precedence", "response"})
+    EXPECT_TRUE(patterns_used.count(p)) << p;
+  const auto r = run_sfcv("check '" + std::string(SFCV_SOURCE_DIR) +
+                          "/examples/chemical_plant/chemical_plant.st' --spec '" + path +
+                          "' --json --trace none");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  const auto results = nlohmann::json::parse(r.out)["properties"];
+  ASSERT_EQ(results.size(), stated.size());
+  for (const auto& p : results) {
+    const std::string name = p["name"];
+    ASSERT_TRUE(stated.count(name)) << name;
+    EXPECT_EQ(p["verdict"], stated[name]) << name;
   }
 }
 

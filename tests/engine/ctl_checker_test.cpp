@@ -4,6 +4,7 @@
 
 #include "logic/formula.hpp"
 #include "logic/parser.hpp"
+#include "logic/push_negation.hpp"
 #include "logic/resolve.hpp"
 #include "support/toy_system.hpp"
 
@@ -237,9 +238,9 @@ TEST(CtlChecker, BooleanConnectivesAndComparisons) {
 
 TEST(PushNegation, DualsOfTemporalOperators) {
   auto f = logic::parse_formula("A[p U q]").formula;
-  EXPECT_EQ(logic::to_string(push_negation(f)), "E[!q U !p & !q] | EG !q");
-  EXPECT_EQ(logic::to_string(push_negation(logic::parse_formula("AG p").formula)), "EF !p");
-  EXPECT_EQ(logic::to_string(push_negation(logic::parse_formula("AF p").formula)), "EG !p");
+  EXPECT_EQ(logic::to_string(logic::push_negation(f)), "E[!q U !p & !q] | EG !q");
+  EXPECT_EQ(logic::to_string(logic::push_negation(logic::parse_formula("AG p").formula)), "EF !p");
+  EXPECT_EQ(logic::to_string(logic::push_negation(logic::parse_formula("AF p").formula)), "EG !p");
 }
 
 }  // namespace

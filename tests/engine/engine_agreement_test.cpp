@@ -16,11 +16,13 @@
 #include "engine/bdd/bdd_manager.hpp"
 #include "engine/explicit/ctl_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "logic/push_negation.hpp"
 #include "logic/formula.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/check_findings.hpp"
 #include "support/ctl_task.hpp"
 
 namespace sfcv::engine {
@@ -113,7 +115,7 @@ class TraceJudge {
     const auto& a = f->args;
     switch (f->op) {
       case Op::Not: {
-        auto pushed = push_negation(a[0]);
+        auto pushed = logic::push_negation(a[0]);
         if (pushed->op == Op::Not) return "";
         keep_.push_back(pushed);
         return at(pushed, i, depth + 1);
@@ -191,6 +193,7 @@ class TraceJudge {
 
 struct Tally {
   int traces = 0, lassos = 0, deadlocks = 0;
+  int check_violations = 0, stored_violations = 0;
 };
 Tally g_tally;
 
@@ -210,10 +213,15 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
   std::vector<std::string> fair;
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(s, ctl, fair);
+  // Under fairness re-entry adds its AG AF row (reentry-fair).
   if (!with_fairness)
     task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
                    logic::StandardCheck::Reentry, logic::StandardCheck::GlobalDeadlock,
-                   logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn};
+                   logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
+                   logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
+                   logic::StandardCheck::Instability};
+  else
+    task.checks = {logic::StandardCheck::Reentry};
   const auto explicit_report = make_explicit_model_checker()->check(task);
   const auto bdd = make_bdd_model_checker(bdd_options);
   ASSERT_TRUE(bdd->can_handle(task));
@@ -233,14 +241,19 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
     EXPECT_EQ(e.verdict, b.verdict) << "explicit " << logic::to_string(e.verdict) << ", bdd "
                                     << logic::to_string(b.verdict);
     if (b.trace) expect_replays(*s.ts, *b.trace);
-    if (i >= task.properties.size()) continue;  // standard checks: replay only
+    if (i >= task.properties.size()) {
+      test::expect_same_check(e, b);
+      g_tally.check_violations += b.verdict == logic::Verdict::Violated;
+      g_tally.stored_violations += b.check == "stored-actions" && b.verdict == logic::Verdict::Violated;
+      continue;
+    }
     // Both engines give a trace for the same verdicts, and the BDD's explains the formula.
     EXPECT_EQ(e.trace.has_value(), b.trace.has_value());
     if (!b.trace) continue;
     const auto& f = task.properties[i].formula;
     const bool violated = b.verdict == logic::Verdict::Violated;
     EXPECT_EQ(b.trace->kind, violated ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
-    const auto explained = violated ? push_negation(f) : f;
+    const auto explained = violated ? logic::push_negation(f) : f;
     EXPECT_EQ(judge.judge(explained, *b.trace), "");
     ++g_tally.traces;
     g_tally.lassos += b.trace->loop_start.has_value();
@@ -265,6 +278,9 @@ TEST(EngineAgreement, RandomChartsAndFormulas) {
   // The judge saw every kind of trace: runs to a state, and lassos.
   EXPECT_GT(g_tally.traces, 200);
   EXPECT_GT(g_tally.lassos, 10);
+  // The standard checks were compared on charts that fail them, stored actions included.
+  EXPECT_GT(g_tally.check_violations, 20) << g_tally.check_violations;
+  EXPECT_GT(g_tally.stored_violations, 2) << g_tally.stored_violations;
 }
 
 TEST(EngineAgreement, NondeterministicConflicts) {

@@ -20,6 +20,7 @@
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/check_findings.hpp"
 #include "support/ctl_task.hpp"
 #include "support/grafcet_builder.hpp"
 #include "support/random_grafcet.hpp"
@@ -57,7 +58,7 @@ Built make(model::Project p, bool single) {
 }
 
 struct Tally {
-  int unstable = 0, traces = 0, violated = 0;
+  int unstable = 0, traces = 0, violated = 0, stored = 0;
 };
 
 /// Explicit and BDD reports on the same task: equal states and verdicts, BDD traces replay.
@@ -76,7 +77,10 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
     task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
                    logic::StandardCheck::Reentry, logic::StandardCheck::GlobalDeadlock,
                    logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
+                   logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
                    logic::StandardCheck::Instability};
+  else
+    task.checks = {logic::StandardCheck::Reentry};  // and its AG AF row under fairness
   const auto e = make_explicit_model_checker()->check(task);
   const auto bdd = make_bdd_model_checker();
   ASSERT_TRUE(bdd->can_handle(task));
@@ -95,7 +99,9 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
       ++tally.traces;
       test::expect_trace_replays(*b.ts, *s.results[i].trace);
     }
+    if (i >= task.properties.size()) test::expect_same_check(e.results[i], s.results[i]);
     tally.violated += s.results[i].verdict == logic::Verdict::Violated;
+    tally.stored += s.results[i].check == "stored-actions" && s.results[i].verdict == logic::Verdict::Violated;
     tally.unstable += s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
   }
 }
@@ -115,6 +121,7 @@ TEST(GrafcetBdd, RandomGrafcetsAgreeWithTheExplicitRsg) {
   EXPECT_GT(tally.unstable, 5);
   EXPECT_GT(tally.traces, 100);
   EXPECT_GT(tally.violated, 100);
+  EXPECT_GT(tally.stored, 2) << tally.stored;  // stored actions set to different values at once
 }
 
 /// The circuit's reachable set, counted by the symbolic system alone, equals the RSG's nodes

@@ -2,21 +2,27 @@
 // on total systems (G p = AG p, F p = AF p, X p = AX p, p U q = A[p U q], G F p = AG AF p,
 // G (p -> F q) = AG (p -> AF q), G (p -> X q) = AG (p -> AX q)), on random charts; every LTL
 // counterexample is a lasso that replays through `simulate` and falsifies the formula when the
-// formula is evaluated on it (an independent evaluator over the ultimately periodic run).
+// formula is evaluated on it (an independent evaluator over the ultimately periodic run). The
+// BDD engine's symbolic LTL agrees with the explicit checker on random (chart, formula) pairs
+// under both readings of deadlocks, and its lassos are genuine too (IEC 61131-3; on Grafcet the
+// bdd engine refuses LTL and the explicit lassos are checked).
 
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "chart_families.hpp"
+#include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/formula.hpp"
 #include "logic/ltl_automaton.hpp"
 #include "logic/parser.hpp"
+#include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/random_grafcet.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -46,7 +52,7 @@ Setup load(const std::string& text, const std::vector<std::string>& assume = {})
   return s;
 }
 
-logic::CheckReport check(const Setup& s, const std::vector<std::string>& ctl,
+logic::CheckTask task_of(const Setup& s, const std::vector<std::string>& ctl,
                          const std::vector<std::string>& ltl,
                          const std::vector<std::string>& fair = {},
                          const model::Budget& budget = {}) {
@@ -63,7 +69,23 @@ logic::CheckReport check(const Setup& s, const std::vector<std::string>& ctl,
   model::Diagnostics diags;
   logic::resolve_into(parsed.spec, *s.ts, task, diags);
   for (const auto& d : diags) ADD_FAILURE() << d.str();
-  return make_explicit_model_checker()->check(task);
+  return task;
+}
+
+logic::CheckReport check(const Setup& s, const std::vector<std::string>& ctl,
+                         const std::vector<std::string>& ltl,
+                         const std::vector<std::string>& fair = {},
+                         const model::Budget& budget = {}) {
+  return make_explicit_model_checker()->check(task_of(s, ctl, ltl, fair, budget));
+}
+
+bool has_successor(const semantics::TransitionSystem& ts, semantics::StateView s) {
+  struct Any final : semantics::SuccessorSink {
+    bool any = false;
+    void successor(const semantics::Successor&) override { any = true; }
+  } sink;
+  ts.successors(s, sink);
+  return sink.any;
 }
 
 bool holds_in(const semantics::TransitionSystem& ts, const Formula& f, semantics::StateView s) {
@@ -152,18 +174,26 @@ std::vector<bool> on_lasso(const semantics::TransitionSystem& ts, const logic::T
   }
 }
 
-void expect_genuine_lasso(const Setup& s, const logic::PropertyResult& r, const Formula& f) {
+void expect_genuine_lasso(const Setup& s, const logic::PropertyResult& r, const Formula& f,
+                          bool stutter = true) {
   ASSERT_TRUE(r.trace) << r.name;
   const auto& t = *r.trace;
   ASSERT_TRUE(t.loop_start) << r.name;
   ASSERT_LT(*t.loop_start, t.steps.size() - 1);
   EXPECT_EQ(t.steps.back().state, t.steps[*t.loop_start].state);
-  std::vector<std::vector<std::int64_t>> inputs;
-  for (std::size_t k = 1; k < t.steps.size(); ++k) inputs.push_back(t.steps[k].inputs);
-  const auto run = semantics::simulate(*s.ts, t.steps.front().state, inputs);
-  ASSERT_TRUE(run.ok) << run.error;
-  ASSERT_EQ(run.states.size(), t.steps.size());
-  for (std::size_t k = 0; k < t.steps.size(); ++k) EXPECT_EQ(run.states[k], t.steps[k].state);
+  for (std::size_t k = 1; k < t.steps.size(); ++k) {
+    const auto& from = t.steps[k - 1].state;
+    // A state without a successor repeats (stutter), unless deadlocks are dropped.
+    if (t.steps[k].state == from && t.steps[k].fired.empty() && !has_successor(*s.ts, from)) {
+      EXPECT_TRUE(stutter) << r.name << ": a deadlock repeats although deadlocks are dropped";
+      EXPECT_NE(t.note.find("deadlock"), std::string::npos);
+      continue;
+    }
+    const auto run = semantics::simulate(*s.ts, from, {t.steps[k].inputs});
+    ASSERT_TRUE(run.ok) << r.name << " row " << k << ": " << run.error;
+    EXPECT_EQ(run.states.back(), t.steps[k].state) << r.name << " row " << k;
+    EXPECT_EQ(run.fired.back(), t.steps[k].fired) << r.name << " row " << k;
+  }
   EXPECT_FALSE(on_lasso(*s.ts, t, f)[0]) << r.name << ": the lasso satisfies the formula";
 }
 
@@ -256,6 +286,103 @@ TEST(LtlChecker, CounterexamplesAreGenuineLassos) {
   EXPECT_GT(holds, 20u);
 }
 
+struct Agreement {
+  std::size_t holds = 0, violated = 0, lassos = 0, stutters = 0;
+};
+
+/// The explicit and BDD engines on the same LTL task: equal verdicts, and every BDD
+/// counterexample is a genuine lasso (the explicit ones are checked above).
+void expect_engines_agree(const Setup& s, const std::vector<std::string>& ltl,
+                          const std::vector<std::string>& fair, logic::DeadlockPaths paths,
+                          Agreement& a) {
+  auto task = task_of(s, {}, ltl, fair);
+  logic::set_deadlock_paths(task, paths);
+  const auto e = make_explicit_model_checker()->check(task);
+  const auto bdd = make_bdd_model_checker();
+  ASSERT_TRUE(bdd->can_handle(task));
+  const auto b = bdd->check(task);
+  ASSERT_EQ(e.results.size(), b.results.size());
+  for (std::size_t k = 0; k < e.results.size(); ++k) {
+    const auto& x = e.results[k];
+    const auto& y = b.results[k];
+    ASSERT_NE(x.verdict, logic::Verdict::Unknown) << x.formula << ": " << x.message;
+    EXPECT_EQ(x.verdict, y.verdict) << x.formula << ": explicit " << logic::to_string(x.verdict)
+                                    << ", bdd " << logic::to_string(y.verdict);
+    a.holds += y.verdict == logic::Verdict::Holds;
+    a.violated += y.verdict == logic::Verdict::Violated;
+    if (y.verdict == logic::Verdict::Violated && logic::is_ltl(*task.properties[k].formula)) {
+      expect_genuine_lasso(s, y, *task.properties[k].formula,
+                           paths == logic::DeadlockPaths::Stutter);
+      ++a.lassos;
+      a.stutters += y.trace && y.trace->note.find("deadlock") != std::string::npos;
+    }
+  }
+}
+
+Setup load_grafcet(std::uint64_t seed) {
+  Setup s;
+  s.project = test::random_grafcet(seed);
+  model::Diagnostics diags;
+  s.ts = semantics::make_grafcet_system(s.project, {}, diags);
+  EXPECT_TRUE(s.ts);
+  return s;
+}
+
+TEST(LtlChecker, BddAgreesWithExplicitOnIecCharts) {
+  Agreement a;
+  for (std::uint64_t seed = 40; seed <= 57; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    // Every third chart deadlocks where S1 is active and i0 is false (no input is allowed
+    // there), so that both readings of deadlocks are exercised.
+    const auto s = seed % 3 == 0 ? load(bench::random_chart_iec(9, 3, seed), {"S1 -> i0 & !i0"})
+                                 : load(bench::random_chart_iec(9, 3, seed));
+    LtlGenerator gen(*s.ts, seed);
+    std::vector<std::string> ltl, fair;
+    for (int k = 0; k < 12; ++k) ltl.push_back(gen.ltl(4));
+    if (seed % 4 == 1) fair.push_back(gen.prop(1));
+    for (auto paths : {logic::DeadlockPaths::Stutter, logic::DeadlockPaths::Drop})
+      expect_engines_agree(s, ltl, fair, paths, a);
+  }
+  EXPECT_GT(a.holds, 60u);
+  EXPECT_GT(a.violated, 60u);
+  EXPECT_GT(a.lassos, 60u);
+  EXPECT_GT(a.stutters, 0u);
+}
+
+// Grafcet: the bdd engine refuses LTL (its lassos are not built symbolically yet, see
+// BddModelChecker::can_handle); the explicit engine checks it under both readings.
+TEST(LtlChecker, GrafcetLtlIsExplicitOnly) {
+  std::size_t holds = 0, violated = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto s = load_grafcet(seed);
+    ASSERT_TRUE(s.ts);
+    LtlGenerator gen(*s.ts, seed);
+    std::vector<std::string> ltl;
+    for (int k = 0; k < 6; ++k) ltl.push_back(gen.ltl(3));
+    auto task = task_of(s, {}, ltl);
+    std::string why;
+    EXPECT_FALSE(make_bdd_model_checker()->can_handle(task, &why));
+    EXPECT_NE(why.find("IEC 61131-3 charts only"), std::string::npos) << why;
+    for (auto paths : {logic::DeadlockPaths::Stutter, logic::DeadlockPaths::Drop}) {
+      auto t = task_of(s, {}, ltl);
+      logic::set_deadlock_paths(t, paths);
+      const auto e = make_explicit_model_checker()->check(t);
+      for (std::size_t k = 0; k < e.results.size(); ++k) {
+        const auto& r = e.results[k];
+        ASSERT_NE(r.verdict, logic::Verdict::Unknown) << r.formula << ": " << r.message;
+        holds += r.verdict == logic::Verdict::Holds;
+        violated += r.verdict == logic::Verdict::Violated;
+        if (r.verdict == logic::Verdict::Violated && logic::is_ltl(*t.properties[k].formula))
+          expect_genuine_lasso(s, r, *t.properties[k].formula,
+                               paths == logic::DeadlockPaths::Stutter);
+      }
+    }
+  }
+  EXPECT_GT(holds, 20u);
+  EXPECT_GT(violated, 20u);
+}
+
 TEST(LtlChecker, FairnessAndDeadlocks) {
   const auto s = load(bench::random_chart_iec(8, 3, 4));
   // With `fair FALSE` no path is fair: every property holds.
@@ -288,6 +415,14 @@ TEST(LtlChecker, LimitsGiveUnknown) {
   model::Budget past = model::Budget::with_timeout(1e-9);
   const auto late = check(s, {}, {"G F S1"}, {}, past);
   EXPECT_EQ(late.results[0].verdict, logic::Verdict::Unknown);
+  // The BDD engine: a state limit or the deadline leaves LTL unknown, never holds.
+  const auto bdd = make_bdd_model_checker();
+  for (const auto& b : {budget, past}) {
+    const auto limited = bdd->check(task_of(s, {}, {"G TRUE", "G F S1"}, {}, b));
+    ASSERT_EQ(limited.results.size(), 2u);
+    for (const auto& x : limited.results)
+      EXPECT_EQ(x.verdict, logic::Verdict::Unknown) << x.formula;
+  }
 }
 
 TEST(LtlAutomaton, SmallTableaux) {

@@ -9,9 +9,11 @@
 #include <unordered_map>
 
 #include "engine/bdd/symbolic_ctl.hpp"
+#include "engine/bdd/symbolic_ltl.hpp"
 #include "engine/bdd/symbolic_system.hpp"
-#include "engine/explicit/ctl_checker.hpp"
+#include "engine/standard_check_runner.hpp"
 #include "logic/formula.hpp"
+#include "logic/push_negation.hpp"
 #include "logic/standard_checks.hpp"
 #include "model/names.hpp"
 #include "semantics/iec61131_circuit.hpp"
@@ -21,7 +23,6 @@ namespace sfcv::engine {
 using bdd::Bdd;
 using logic::Op;
 using logic::PropertyResult;
-using logic::StandardCheck;
 using logic::Verdict;
 
 namespace {
@@ -51,7 +52,7 @@ class Run {
       report.states = last_count_;
       report.depth = static_cast<std::uint32_t>(rings_.empty() ? 0 : rings_.size() - 1);
     }
-    std::optional<SymbolicCtl> ctl, plain;
+    std::optional<SymbolicCtl> ctl;
     for (const auto& p : task_.properties) {
       const auto t0 = Clock::now();
       auto r = guarded(p.name, logic::to_string(p.formula), "", [&] {
@@ -62,15 +63,9 @@ class Run {
       r.seconds = since(t0);
       report.results.push_back(std::move(r));
     }
-    for (auto c : task_.checks) {
-      const auto t0 = Clock::now();
-      const std::string name(logic::to_string(c));
-      auto r = guarded(name, "", name, [&] {
-        if (!plain) plain.emplace(sys_, std::vector<logic::FormulaPtr>{});
-        return standard(c, *plain, report);
-      });
-      r.seconds = since(t0);
-      report.results.push_back(std::move(r));
+    {
+      BddSpace space(*this, report, ctl);
+      for (auto& r : run_standard_checks_on(space, ts_, task_)) report.results.push_back(std::move(r));
     }
     // Edges last: on a huge model their relation may not fit where the verdicts did.
     report.edges_known = false;
@@ -214,15 +209,20 @@ class Run {
       // Consecutive states of a run are related by construction: a gap is a bug, never a trace.
       // No bits is also the answer of a system without inputs: then the relation decides.
       if (bits.empty() &&
-          (sys_.preimage(sys_.singleton(states[k])) & sys_.singleton(states[k - 1])).is_false())
-        throw std::logic_error("bdd engine: a trace step without a transition");
+          (sys_.preimage(sys_.singleton(states[k])) & sys_.singleton(states[k - 1])).is_false()) {
+        // An LTL lasso may repeat a state without a successor (symbolic_ltl.hpp).
+        const bool stutter = states[k] == states[k - 1] &&
+                             (sys_.singleton(states[k]) & sys_.has_successor()).is_false();
+        if (!stutter) throw std::logic_error("bdd engine: a trace step without a transition");
+        t.steps.push_back({inputs, states[k], {}});
+        t.note = "the loop stays in a state without a successor: a deadlock repeats forever";
+        continue;
+      }
       inputs = semantics::inputs_from_bits(ts_, circuit, bits);
       t.steps.push_back({inputs, states[k], sys_.fired_between(states[k - 1], bits)});
     }
     return t;
   }
-
-  bool all_initial(const Bdd& set) const { return (sys_.initial() & !set).is_false(); }
 
   PropertyResult property(const logic::Property& p, SymbolicCtl& ctl,
                           const logic::CheckReport& report) {
@@ -251,6 +251,7 @@ class Run {
       }
       return r;
     }
+    if (logic::is_ltl(*f)) return ltl_property(p, ctl, std::move(r));
     const Bdd holds = ctl.sat(f);
     const Bdd bad = sys_.initial() & !holds;
     if (bad.is_false()) {
@@ -264,7 +265,7 @@ class Run {
       }
     } else {
       r.verdict = Verdict::Violated;
-      const auto neg = push_negation(f);
+      const auto neg = logic::push_negation(f);
       r.trace = to_trace(ctl.explain(neg, bad));
       r.trace->kind = logic::TraceKind::Counterexample;
     }
@@ -272,309 +273,154 @@ class Run {
     return r;
   }
 
-  /// Grafcet steps never active in a reached stable situation but entered by a transition that
-  /// fires (crossed during transient evolutions), as the explicit checks treat them: index into
-  /// `steps` -> the reached situations with an evolution entering the step.
-  std::map<std::size_t, Bdd> transient_steps(const std::vector<logic::StepRef>& steps) {
-    std::map<std::size_t, Bdd> out;
-    if (ts_.kind() != semantics::SemanticsKind::Grafcet || !task_.project) return out;
-    std::vector<const model::Transition*> matched;
-    for (const auto& info : ts_.transitions()) {
-      const model::Transition* hit = nullptr;
-      for (const auto& pou : task_.project->pous) {
-        if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
-        for (const auto& chart : pou.charts) {
-          if (!info.chart.empty() && !model::iequals(chart.name, info.chart)) continue;
-          for (const auto& t : chart.transitions)
-            if (info.where.known() ? t.where.str() == info.where.str()
-                                   : (!t.name.empty() && t.name == info.name))
-              hit = &t;
-        }
-      }
-      if (!hit) return out;
-      matched.push_back(hit);
-    }
-    for (std::size_t i = 0; i < steps.size(); ++i) {
-      if (!(reached_ & sys_.atom(*logic::observable_atom(ts_, steps[i].observable))).is_false())
-        continue;
-      Bdd entry = Bdd::constant(false);
-      for (std::uint32_t t = 0; t < matched.size(); ++t) {
-        if (!model::iequals(ts_.transitions()[t].chart, steps[i].chart)) continue;
-        bool enters = false;
-        for (const auto& d : matched[t]->targets) enters = enters || model::iequals(d, steps[i].step);
-        if (enters) entry = entry | (reached_ & sys_.fires(t));
-      }
-      if (!entry.is_false()) out.emplace(i, entry);
-    }
-    return out;
-  }
-
-  /// Re-entry of a transient step: from every reached situation an evolution entering it stays
-  /// reachable.
-  void transient_reentry(PropertyResult& r, const logic::StepRef& step, const Bdd& entry,
-                         const std::string& what) {
-    Bdd back = entry;
-    for (;;) {
-      const Bdd next = entry | sys_.preimage(back);
-      if (next == back) break;
-      back = next;
-    }
-    const Bdd bad = reached_ & !back;
-    if (bad.is_false()) return;
-    r.findings.push_back("step " + logic::describe_step(step) +
-                         " (crossed only during transient evolutions)" + what);
-    if (!r.trace) {
-      r.trace = path_to(bad);
-      r.trace->note = "from the last situation " + logic::describe_step(step) +
-                      " can never be crossed again";
-    }
-  }
-
-  /// Grafcet anomalies (docs/semantics.md 2.11): events whose transient evolutions never
-  /// stabilise or raise a range error, from reached situations or at the start.
-  void grafcet_instability(PropertyResult& r, const logic::CheckReport& report) {
-    if (sys_.initial_unstable())
-      r.findings.push_back("instability: under some initial input valuation the transient "
-                           "evolutions never reach a stable situation");
-    if (sys_.initial_range_error())
-      r.findings.push_back("range error: under some initial input valuation an evolution raises "
-                           "a range error or a forcing conflict");
-    const Bdd unstable = reached_ & sys_.unstable_states();
-    if (!unstable.is_false()) {
-      r.findings.push_back("instability: from " + ts_.describe(sys_.pick(unstable)) +
-                           " an input event starts transient evolutions that never reach a "
-                           "stable situation");
-      r.trace = path_to(unstable);
-    }
-    const Bdd err = reached_ & sys_.range_error_states();
-    if (!err.is_false()) {
-      r.findings.push_back("range error: from " + ts_.describe(sys_.pick(err)) +
-                           " an input event raises a range error or a forcing conflict");
-      if (!r.trace) r.trace = path_to(err);
-    }
-    finish(r, report, "every evolution reaches a stable situation");
-  }
-
-  void finish(PropertyResult& r, const logic::CheckReport& report, const std::string& ok) {
-    if (!r.findings.empty()) {
-      r.verdict = Verdict::Violated;
-    } else if (!report.complete) {
+  PropertyResult ltl_property(const logic::Property& p, SymbolicCtl& ctl, PropertyResult r) {
+    if (sys_.initial().is_false()) {
       r.verdict = Verdict::Unknown;
-      r.message = limit_message(report);
-    } else {
-      r.verdict = Verdict::Holds;
-      r.message = ok;
+      r.message = "no initial state: the assumptions exclude every initial situation";
+      return r;
     }
-  }
-
-  PropertyResult standard(StandardCheck c, SymbolicCtl& ctl, const logic::CheckReport& report) {
-    PropertyResult r;
-    r.name = std::string(logic::to_string(c));
-    r.check = r.name;
-    const auto steps = logic::step_refs(ts_, task_.project);
-    switch (c) {
-      case StandardCheck::Reachable: {
-        if (steps.empty()) {
-          r.verdict = Verdict::NotChecked;
-          r.message = "not checked: the system has no steps";
-          break;
-        }
-        std::size_t missing = 0;
-        const auto transient = report.complete ? transient_steps(steps) : std::map<std::size_t, Bdd>{};
-        for (std::size_t i = 0; i < steps.size(); ++i)
-          if (const auto& s = steps[i];
-              !transient.count(i) &&
-              (reached_ & sys_.atom(*logic::observable_atom(ts_, s.observable))).is_false()) {
-            ++missing;
-            if (report.complete) r.findings.push_back("step " + logic::describe_step(s) + " is never active");
-          }
-        if (missing && !report.complete) {
-          r.verdict = Verdict::Unknown;
-          r.message = std::to_string(missing) + " of " + std::to_string(steps.size()) +
-                      " steps not reached before the limit; " + limit_message(report);
-          break;
-        }
-        finish(r, report, "all " + std::to_string(steps.size()) + " steps are reachable" +
-                              (transient.empty() ? "" : " (" + std::to_string(transient.size()) +
-                                                            " only during transient evolutions)"));
-        break;
-      }
-      case StandardCheck::DeadTransitions: {
-        const auto& trs = ts_.transitions();
-        if (trs.empty()) {
-          r.verdict = Verdict::NotChecked;
-          r.message = "not checked: the system has no transitions";
-          break;
-        }
-        std::size_t dead = 0;
-        for (std::uint32_t t = 0; t < trs.size(); ++t)
-          if ((reached_ & sys_.fires(t)).is_false()) {
-            ++dead;
-            if (report.complete)
-              r.findings.push_back("transition " + trs[t].name +
-                                   (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
-                                   " never fires");
-          }
-        if (dead && !report.complete) {
-          r.verdict = Verdict::Unknown;
-          r.message = std::to_string(dead) + " transitions not fired before the limit; " +
-                      limit_message(report);
-          break;
-        }
-        finish(r, report, "all " + std::to_string(trs.size()) + " transitions can fire");
-        break;
-      }
-      case StandardCheck::GlobalDeadlock: {
-        if (ts_.transitions().empty()) {
-          r.verdict = Verdict::NotChecked;
-          r.message = "not checked: the system has no transitions";
-          break;
-        }
-        // Dead: no state that fires a transition can be reached any more.
-        const Bdd firing = sys_.fires_any();
-        Bdd live = firing;
-        for (;;) {
-          const Bdd next = firing | sys_.preimage(live);
-          if (next == live) break;
-          live = next;
-        }
-        const Bdd dead = report.complete ? reached_ & !live : reached_ & !sys_.has_successor();
-        if (!dead.is_false()) {
-          r.findings.push_back(sys_.count_exact(dead).str() +
-                               " reachable situations from which no transition can ever fire, "
-                               "e.g. " + ts_.describe(sys_.pick(dead)));
-          r.trace = path_to(dead);
-          r.trace->note = "the last situation is a global deadlock";
-        }
-        finish(r, report, "no reachable situation is a global deadlock");
-        break;
-      }
-      case StandardCheck::InitialReturn: {
-        if (!report.complete) {
-          r.verdict = Verdict::Unknown;
-          r.message = limit_message(report);
-          break;
-        }
-        r.formula = "AG EF init";
-        // The initial situation is the step activity of the initial state.
-        Bdd target = Bdd::constant(true);
-        if (steps.empty()) {
-          target = sys_.initial();
-        } else {
-          // Any initial state's step activity (a Grafcet has one per initial valuation), as the
-          // explicit check: one pattern per distinct activity.
-          target = Bdd::constant(false);
-          for (Bdd rest = sys_.initial(); !rest.is_false();) {
-            const auto init = sys_.pick(rest);
-            Bdd pattern = Bdd::constant(true);
-            for (const auto& s : steps) {
-              const Bdd x = sys_.atom(*logic::observable_atom(ts_, s.observable));
-              pattern = pattern & (ts_.observe(init, s.observable) ? x : !x);
-            }
-            target = target | pattern;
-            rest = rest & !pattern;
-          }
-        }
-        Bdd back = target;
-        for (;;) {
-          const Bdd next = target | sys_.preimage(back);
-          if (next == back) break;
-          back = next;
-        }
-        const Bdd bad = reached_ & !back;
-        if (!bad.is_false()) {
-          r.findings.push_back(sys_.count_exact(bad).str() +
-                               " reachable situations from which the initial situation cannot "
-                               "be reached again, e.g. " + ts_.describe(sys_.pick(bad)));
-          r.trace = path_to(bad);
-        }
-        finish(r, report, "the initial situation can be reached again from every situation");
-        break;
-      }
-      case StandardCheck::Reentry:
-      case StandardCheck::LocalDeadlock: {
-        if (steps.empty()) {
-          r.verdict = Verdict::NotChecked;
-          r.message = "not checked: the system has no steps";
-          break;
-        }
-        if (!report.complete) {
-          r.verdict = Verdict::Unknown;
-          r.message = limit_message(report);
-          break;
-        }
-        std::size_t considered = 0;
-        const auto transient = transient_steps(steps);
-        for (std::size_t i = 0; i < steps.size(); ++i) {
-          const auto& step = steps[i];
-          if (c == StandardCheck::Reentry && !step.on_loop && task_.project) continue;
-          if (auto it = transient.find(i); it != transient.end()) {
-            ++considered;
-            transient_reentry(r, step, it->second,
-                              c == StandardCheck::Reentry
-                                  ? ": a reachable situation exists from which it can never be "
-                                    "crossed again"
-                                  : ", once crossed, is never crossed again");
-            continue;
-          }
-          if (c == StandardCheck::Reentry) {
-            ++considered;
-            if (!all_initial(ctl.sat(logic::reentry_formula(ts_, step.observable))))
-              r.findings.push_back("step " + logic::describe_step(step) +
-                                   ": a reachable situation exists from which it can never "
-                                   "become active again (AG EF " +
-                                   ts_.observables()[step.observable].name + " is violated)");
-            continue;
-          }
-          r.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
-          ++considered;
-          const auto x = logic::observable_atom(ts_, step.observable);
-          const auto nx = logic::make_not(x);
-          const auto never_left =
-              logic::make_op(Op::EF, {logic::make_and(x, logic::make_op(Op::AG, {x}))});
-          const auto never_back =
-              logic::make_op(Op::EF, {logic::make_and(nx, logic::make_op(Op::AG, {nx}))});
-          if (!(sys_.initial() & ctl.sat(never_left)).is_false())
-            r.findings.push_back("step " + logic::describe_step(step) + ", once active, is never left");
-          if (!(sys_.initial() & ctl.sat(never_back)).is_false())
-            r.findings.push_back("step " + logic::describe_step(step) +
-                                 ", once inactive, never becomes active again");
-        }
-        if (c == StandardCheck::Reentry && considered == 0) {
-          r.verdict = Verdict::Holds;
-          r.message = "no step lies on a loop";
-          break;
-        }
-        finish(r, report, c == StandardCheck::Reentry
-                              ? "every step of a loop can be re-entered from every situation"
-                              : "no step is locally deadlocked");
-        break;
-      }
-      case StandardCheck::Instability: {
-        // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
-        const Bdd err = reached_ & sys_.range_error_states();
-        if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
-          grafcet_instability(r, report);
-          break;
-        }
-        if (!err.is_false()) {
-          r.findings.push_back("a range error (integer overflow, division by zero or a value "
-                               "out of its type) can occur in " + ts_.describe(sys_.pick(err)));
-          r.trace = path_to(err);
-        }
-        finish(r, report, "no range error can occur");
-        break;
-      }
-      case StandardCheck::Conflicts:
-      case StandardCheck::StoredActions:
-      case StandardCheck::OutputConflicts:
-        r.verdict = Verdict::NotChecked;
-        r.message = "not checked by the bdd engine (it needs the graph's edges); use --engine "
-                    "explicit";
-        break;
+    const SymbolicLtlQuery q{p.formula, task_.fairness,
+                             task_.deadlock_paths == logic::DeadlockPaths::Stutter};
+    const auto run = symbolic_ltl_counterexample(sys_, ctl, reached_, q, task_.limits);
+    r.verdict = run ? Verdict::Violated : Verdict::Holds;
+    if (run) {
+      r.trace = to_trace(*run);
+      r.trace->kind = logic::TraceKind::Counterexample;
+      r.trace->marked = logic::atom_observables(*p.formula);
     }
     return r;
   }
+
+  /// The reached situations as the standard-check runner sees them
+  /// (engine/standard_check_runner.hpp): BDDs over the current variables.
+  class BddSpace {
+   public:
+    using Set = Bdd;
+    using State = std::vector<semantics::StateWord>;
+
+    BddSpace(Run& run, const logic::CheckReport& report, std::optional<SymbolicCtl>& fair)
+        : run_(run), sys_(run.sys_), report_(report), fair_(fair) {}
+
+    std::string_view name() const { return "bdd"; }
+    bool complete() const { return report_.complete; }
+    std::string limit_name() const { return report_.limit; }
+    std::string state_count() const { return report_.states.str(); }
+    std::uint64_t progress_states() const { return report_.states.to_u64().value_or(~std::uint64_t{0}); }
+    bool has_fairness() const { return !run_.task_.fairness.empty(); }
+
+    Set reached() const { return run_.reached_; }
+    Set initial() const { return sys_.initial(); }
+    Set none() const { return Bdd::constant(false); }
+    Set meet(const Set& a, const Set& b) const { return a & b; }
+    Set join(const Set& a, const Set& b) const { return a | b; }
+    Set minus(const Set& a, const Set& b) const { return a & !b; }
+    bool empty(const Set& a) const { return a.is_false(); }
+    logic::BigCount count(const Set& a) const { return sys_.count_exact(a); }
+
+    Set observable(std::uint32_t o) {
+      return run_.reached_ & sys_.atom(*logic::observable_atom(run_.ts_, o));
+    }
+    Set field_nonzero(std::uint32_t f) { return run_.reached_ & sys_.field_nonzero(f); }
+    bool can_fire(std::uint32_t t) { return !fires(t).is_false(); }
+    Set fires(std::uint32_t t) { return run_.reached_ & sys_.fires(t); }
+    Set fires_any() { return run_.reached_ & sys_.fires_any(); }
+    Set stuck() const { return run_.reached_ & !sys_.has_successor(); }
+    Set pre(const Set& to) const { return run_.reached_ & sys_.preimage(to); }
+    Set post(const Set& from) const { return run_.reached_ & sys_.image(from); }
+    Set backward(const Set& to) const {
+      Bdd back = to;
+      for (;;) {
+        const Bdd next = to | sys_.preimage(back);
+        if (next == back) return back;
+        back = next;
+      }
+    }
+    Set ctl(const logic::FormulaPtr& f, bool fair) { return checker(fair).sat(f); }
+    logic::Trace explain(const logic::FormulaPtr& f, const Set& from, bool fair) {
+      return run_.to_trace(checker(fair).explain(f, from));
+    }
+    logic::Trace path_to(const Set& set) { return run_.path_to(set); }
+
+    State one(const Set& set) const { return first(set, 1).front(); }
+    /// Ring by ring: the shallowest situations first.
+    std::vector<State> first(const Set& set, std::size_t k) const {
+      std::vector<State> out;
+      for (const auto& ring : run_.rings_)
+        for (Bdd rest = ring & set; !rest.is_false() && out.size() < k;) {
+          out.push_back(sys_.pick(rest));
+          rest = rest & !sys_.singleton(out.back());
+        }
+      return out;
+    }
+    Set singleton(const State& x) const { return sys_.singleton(x); }
+    std::uint32_t depth(const State& x) const {
+      const Bdd one = sys_.singleton(x);
+      std::uint32_t k = 0;
+      while (k + 1 < run_.rings_.size() && (run_.rings_[k] & one).is_false()) ++k;
+      return k;
+    }
+    std::string describe(const State& x) const { return run_.ts_.describe(x); }
+
+    /// Transitions enabled together need the inputs of each evolution: not enumerated here.
+    template <class Visit>
+    bool simultaneous(Visit&&) const {
+      return false;
+    }
+
+    /// Range errors (IEC 61131-3); Grafcet (docs/semantics.md 2.11): events whose transient
+    /// evolutions never stabilise or raise a range error, from reached situations or at the start.
+    std::vector<Anomaly<Set>> anomalies() const {
+      std::vector<Anomaly<Set>> out;
+      const auto& ts = run_.ts_;
+      const Bdd err = run_.reached_ & sys_.range_error_states();
+      if (ts.kind() != semantics::SemanticsKind::Grafcet) {
+        if (!err.is_false())
+          out.push_back({"a range error (integer overflow, division by zero or a value out of "
+                         "its type) can occur in " + ts.describe(sys_.pick(err)), err});
+        return out;
+      }
+      if (sys_.initial_unstable())
+        out.push_back({"instability: under some initial input valuation the transient "
+                       "evolutions never reach a stable situation", std::nullopt});
+      if (sys_.initial_range_error())
+        out.push_back({"range error: under some initial input valuation an evolution raises "
+                       "a range error or a forcing conflict", std::nullopt});
+      const Bdd unstable = run_.reached_ & sys_.unstable_states();
+      if (!unstable.is_false())
+        out.push_back({"instability: from " + ts.describe(sys_.pick(unstable)) +
+                           " an input event starts transient evolutions that never reach a "
+                           "stable situation", unstable});
+      if (!err.is_false())
+        out.push_back({"range error: from " + ts.describe(sys_.pick(err)) +
+                           " an input event raises a range error or a forcing conflict", err});
+      return out;
+    }
+
+    std::optional<std::string> failure() const {
+      if (run_.failed_.empty()) return std::nullopt;
+      return run_.failed_limit_ == Limit::Time
+                 ? run_.failed_
+                 : "the BDD package ran out of resources: " + run_.failed_;
+    }
+    std::string note_limit(const LimitReached& e) {
+      run_.failed_ = e.what();
+      run_.failed_limit_ = e.which();
+      return *failure();
+    }
+
+   private:
+    SymbolicCtl& checker(bool fair) {
+      auto& slot = fair ? fair_ : plain_;
+      if (!slot) slot.emplace(sys_, fair ? run_.task_.fairness : std::vector<logic::FormulaPtr>{});
+      return *slot;
+    }
+
+    Run& run_;
+    SymbolicSystem& sys_;
+    const logic::CheckReport& report_;
+    std::optional<SymbolicCtl>& fair_;  ///< shared with the properties
+    std::optional<SymbolicCtl> plain_;
+  };
 
   const logic::CheckTask& task_;
   SymbolicSystem& sys_;
@@ -598,8 +444,12 @@ class BddModelChecker final : public ModelChecker {
       if (why) *why = "no system to check";
       return false;
     }
-    if (const auto* ltl = logic::first_ltl_property(task)) {
-      if (why) *why = logic::ltl_refusal("bdd", *ltl);
+    // Grafcet lassos are not built symbolically yet: BuDDy's node table was seen corrupted
+    // (a crash in a later garbage collection) after them, so the explicit engine checks LTL.
+    if (const auto* ltl = logic::first_ltl_property(task);
+        ltl && task.system->kind() == semantics::SemanticsKind::Grafcet) {
+      if (why) *why = "the bdd engine checks LTL on IEC 61131-3 charts only ('" + ltl->name +
+                      "' on a Grafcet); use --engine explicit (or auto)";
       return false;
     }
     try {

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "engine/explicit/ctl_checker.hpp"
 #include "logic/formula.hpp"
+#include "logic/push_negation.hpp"
 
 namespace sfcv::engine {
 
@@ -229,7 +229,7 @@ void SymbolicCtl::explain_at(const FormulaPtr& f, SymbolicRun& run, int depth) {
   const auto& a = f->args;
   switch (f->op) {
     case Op::Not: {
-      auto pushed = push_negation(a[0]);
+      auto pushed = logic::push_negation(a[0]);
       if (pushed->op == Op::Not) return settle();
       keep_.push_back(pushed);
       trace_sources_ = ok;

@@ -57,6 +57,20 @@ Bdd SymbolicSystem::observable_nonzero(std::uint32_t o) {
   return !field_value_equals(o, 0);
 }
 
+Bdd SymbolicSystem::field_nonzero(std::uint32_t f) {
+  const auto& latches = circuit_.field_latches[f];
+  // Zero is stored as (0 - lo); a field whose range excludes zero is never zero.
+  const auto zero = static_cast<std::uint64_t>(-ts_.layout().fields()[f].lo);
+  if (ts_.layout().fields()[f].lo > 0 || (latches.size() < 64 && (zero >> latches.size()) != 0))
+    return Bdd::constant(true);
+  Bdd is_zero = Bdd::constant(true);
+  for (std::size_t k = 0; k < latches.size(); ++k) {
+    const Bdd b = node_bdd(circuit_.aig.latches()[latches[k]].current);
+    is_zero = is_zero & (((zero >> k) & 1U) ? b : !b);
+  }
+  return !is_zero;
+}
+
 namespace {
 
 /// The 64-bit value of an integer-valued signal (Const, Input, Observable) in the circuit.

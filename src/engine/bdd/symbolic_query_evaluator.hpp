@@ -13,10 +13,12 @@
 #include <vector>
 
 #include "engine/bdd/symbolic_system.hpp"
-#include "engine/explicit/dynamic_bitset.hpp"
 #include "logic/query_compile.hpp"
+#include "model/dynamic_bitset.hpp"
 
 namespace sfcv::engine {
+
+using model::DynamicBitset;
 
 /// A query or a system the symbolic evaluator cannot answer exactly (it never guesses).
 /// (Its limits, --max-states and --timeout, are LimitReached.)

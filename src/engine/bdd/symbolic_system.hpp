@@ -125,6 +125,8 @@ class SymbolicSystem {
   bool depends_on_inputs(const Bdd& f) const;
   /// States where an observable is non-zero (a step or action is active, a Boolean is true).
   Bdd observable_nonzero(std::uint32_t observable);
+  /// States where layout field `field` holds a non-zero value (an action's stored flag).
+  Bdd field_nonzero(std::uint32_t field);
   /// The current and input valuations where an input/output expression of a query holds;
   /// `slots` gives the step (observable) bound to each set-builder variable.
   Bdd signal(const logic::Signal& s, const std::vector<std::uint32_t>& slots);

@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "logic/formula.hpp"
+#include "logic/push_negation.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine {
@@ -31,35 +32,6 @@ StateSet disj(const StateSet& a, const StateSet& b) {
 }
 
 }  // namespace
-
-FormulaPtr push_negation(const FormulaPtr& f) {
-  using logic::make_not;
-  using logic::make_op;
-  const int l = f->line, c = f->column;
-  const auto& a = f->args;
-  switch (f->op) {
-    case Op::True: return logic::make_const(false, l, c);
-    case Op::False: return logic::make_const(true, l, c);
-    case Op::Not: return a[0];
-    case Op::And: return make_op(Op::Or, {make_not(a[0]), make_not(a[1])}, l, c);
-    case Op::Or: return make_op(Op::And, {make_not(a[0]), make_not(a[1])}, l, c);
-    case Op::Implies: return make_op(Op::And, {a[0], make_not(a[1])}, l, c);
-    case Op::Iff: return make_op(Op::Xor, {a[0], a[1]}, l, c);
-    case Op::Xor: return make_op(Op::Iff, {a[0], a[1]}, l, c);
-    case Op::EX: return make_op(Op::AX, {make_not(a[0])}, l, c);
-    case Op::AX: return make_op(Op::EX, {make_not(a[0])}, l, c);
-    case Op::EF: return make_op(Op::AG, {make_not(a[0])}, l, c);
-    case Op::AG: return make_op(Op::EF, {make_not(a[0])}, l, c);
-    case Op::AF: return make_op(Op::EG, {make_not(a[0])}, l, c);
-    case Op::EG: return make_op(Op::AF, {make_not(a[0])}, l, c);
-    case Op::AU: {
-      auto nq = make_not(a[1]);
-      auto eu = make_op(Op::EU, {nq, logic::make_and(make_not(a[0]), nq)}, l, c);
-      return make_op(Op::Or, {eu, make_op(Op::EG, {nq}, l, c)}, l, c);
-    }
-    default: return make_not(f);  // atoms, comparisons, E[p U q]: no simpler dual here
-  }
-}
 
 CtlChecker::CtlChecker(const ReachableSituationGraph& graph, std::vector<FormulaPtr> fairness)
     : g_(graph), fairness_(std::move(fairness)) {
@@ -382,7 +354,7 @@ void CtlChecker::explain_at(const FormulaPtr& f, std::vector<Hop>& run, logic::T
   const auto& a = f->args;
   switch (f->op) {
     case Op::Not: {
-      auto pushed = push_negation(a[0]);
+      auto pushed = logic::push_negation(a[0]);
       if (pushed->op == Op::Not) return settle();
       keep_.push_back(pushed);
       trace_sources_ = ok;
@@ -533,7 +505,7 @@ logic::PropertyResult CtlChecker::check(const logic::Property& p) {
     }
   } else {
     r.verdict = logic::Verdict::Violated;
-    auto neg = push_negation(f);
+    auto neg = logic::push_negation(f);
     keep_.push_back(neg);
     auto t = explain(neg, bad);
     t.kind = logic::TraceKind::Counterexample;

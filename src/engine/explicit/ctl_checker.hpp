@@ -90,8 +90,4 @@ class CtlChecker {
   std::vector<std::uint32_t> trace_sources_;  ///< where explain_at starts when the run is empty
 };
 
-/// Pushes one negation inward: !AG p -> EF !p, !AF p -> EG !p, !A[p U q] -> E[!q U !p & !q] |
-/// EG !q, !(a & b) -> !a | !b, ... ; returns `f` negated one level deep.
-logic::FormulaPtr push_negation(const logic::FormulaPtr& f);
-
 }  // namespace sfcv::engine

@@ -19,8 +19,9 @@ constexpr std::uint32_t kNone = ~0U;
 class Product {
  public:
   Product(CtlChecker& checker, const logic::BuchiAutomaton& aut,
-          const std::vector<logic::FormulaPtr>& fairness, const model::Budget& budget)
-      : g_(checker.graph()), aut_(aut), budget_(budget) {
+          const std::vector<logic::FormulaPtr>& fairness, const model::Budget& budget,
+          bool stutter)
+      : g_(checker.graph()), aut_(aut), budget_(budget), stutter_(stutter) {
     // A node's label, as the set of graph states satisfying all of it.
     for (const auto& node : aut.nodes) {
       StateSet ok(g_.num_states(), 1);
@@ -60,7 +61,7 @@ class Product {
     };
     if (!g_.expanded(s)) return out;  // beyond a limit: nothing known
     if (g_.edges_begin(s) == g_.edges_end(s)) {
-      add(s, kStutter);
+      if (stutter_) add(s, kStutter);
       return out;
     }
     for (auto e = g_.edges_begin(s); e < g_.edges_end(s); ++e) add(g_.target(e), e);
@@ -102,6 +103,7 @@ class Product {
   const ReachableSituationGraph& g_;
   const logic::BuchiAutomaton& aut_;
   const model::Budget& budget_;
+  bool stutter_;
   std::vector<StateSet> labels_;
   std::vector<StateSet> fair_;
   std::uint32_t num_sets_ = 0;
@@ -263,7 +265,7 @@ logic::Trace to_trace(const ReachableSituationGraph& g, const Product& product, 
 
 logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
                                 const std::vector<logic::FormulaPtr>& fairness,
-                                const model::Budget& budget) {
+                                const model::Budget& budget, logic::DeadlockPaths deadlocks) {
   const auto& g = checker.graph();
   logic::PropertyResult r;
   r.name = p.name;
@@ -276,7 +278,7 @@ logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
   }
   // A run violating p is an accepting run of the automaton of !p.
   const auto aut = logic::ltl_to_buchi(logic::make_not(p.formula), budget);
-  Product product(checker, aut, fairness, budget);
+  Product product(checker, aut, fairness, budget, deadlocks == logic::DeadlockPaths::Stutter);
   const auto scc = accepting_scc(product, budget);
   if (scc.empty()) {
     if (g.complete()) {

@@ -6,7 +6,8 @@
 // a lasso (a prefix, then a loop repeated forever).
 //
 // Paths are infinite: a state without a successor (the assumptions exclude every input there)
-// repeats forever, as Spin's stutter extension does (docs/properties.md). On an incomplete graph
+// repeats forever, as Spin's stutter extension does, or, with DeadlockPaths::Drop, lies on no
+// path at all, as NuSMV reads it (docs/properties.md). On an incomplete graph
 // a lasso among the expanded states is still a real counterexample; otherwise the answer is
 // unknown.
 
@@ -23,6 +24,7 @@ namespace sfcv::engine {
 /// end in LimitReached (the graph was built within its state limit).
 logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
                                 const std::vector<logic::FormulaPtr>& fairness,
-                                const model::Budget& budget);
+                                const model::Budget& budget,
+                                logic::DeadlockPaths deadlocks = logic::DeadlockPaths::Stutter);
 
 }  // namespace sfcv::engine

@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "model/errors.hpp"
-#include "engine/explicit/dynamic_bitset.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
+#include "model/dynamic_bitset.hpp"
 
 namespace sfcv::engine {
+
+using model::DynamicBitset;
 
 /// A query that cannot be evaluated on this graph (e.g. Nec on a graph built without conditions).
 class QueryEvaluationError : public UsageError {

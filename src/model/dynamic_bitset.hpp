@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace sfcv::engine {
+namespace sfcv::model {
 
 class DynamicBitset {
  public:
@@ -70,4 +70,4 @@ class DynamicBitset {
   std::vector<std::uint64_t> words_;
 };
 
-}  // namespace sfcv::engine
+}  // namespace sfcv::model

@@ -1,0 +1,850 @@
+#pragma once
+// The standard checks (catalogue and formulas: logic/standard_checks.hpp), written once for
+// every engine. The runner owns each check's logic, its messages and findings (with the
+// max_findings cap), the not-checked and unknown rules, and the per-check timing, progress and
+// limit handling. An engine supplies a `Space`: the reachable situations as sets it can
+// intersect and close, with these members (State: one situation; Set: a set of them):
+//
+//   std::string_view name()                  the engine, for "not checked by the <name> engine"
+//   bool complete(); std::string limit_name(), state_count(); std::uint64_t progress_states()
+//   bool has_fairness()                      the task's fairness (adds the reentry-fair row)
+//   Set reached(), initial(), none()
+//   Set meet(a, b), join(a, b), minus(a, b); bool empty(s); logic::BigCount count(s)
+//   Set observable(o)                        reached situations where observable o is non-zero
+//   Set field_nonzero(f)                     reached situations where layout field f is non-zero
+//   bool can_fire(t); Set fires(t), fires_any()   reached situations where t (any) fires
+//   Set stuck()                              reached situations without any successor
+//   Set pre(s), post(s)                      reached predecessors / successors of s
+//   Set backward(s)                          the reached situations from which s is reachable
+//   Set ctl(f, fair)                         the situations satisfying CTL formula f
+//   logic::Trace explain(f, from, fair)      a run from `from` explaining f
+//   logic::Trace path_to(s)                  a shortest run from an initial situation into s
+//   State one(s); std::vector<State> first(s, k); Set singleton(x)
+//   std::uint32_t depth(x); std::string describe(x)
+//   bool simultaneous(visit)                 calls visit(fired_a, fired_b, x) for transitions
+//                                            enabled together (see conflicts()); false when
+//                                            the engine cannot enumerate them
+//   std::vector<Anomaly<Set>> anomalies()    instabilities and range errors, described
+//   std::optional<std::string> failure()     set once a limit ended the engine's work
+//   std::string note_limit(e)                the message of a limit that stopped a check
+//
+// "one" and "first" list situations in the engine's own order (the explicit engine: discovery
+// order; the BDD engine: ring by ring).
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "logic/check_result.hpp"
+#include "logic/check_task.hpp"
+#include "logic/formula.hpp"
+#include "logic/push_negation.hpp"
+#include "logic/standard_checks.hpp"
+#include "model/errors.hpp"
+#include "model/names.hpp"
+
+namespace sfcv::engine {
+
+/// An anomaly found by an engine: its description and, when known, where it occurs.
+template <class Set>
+struct Anomaly {
+  std::string text;
+  std::optional<Set> at;
+};
+
+template <class Space>
+class StandardCheckRunner {
+ public:
+  using Set = typename Space::Set;
+  using State = typename Space::State;
+  using PropertyResult = logic::PropertyResult;
+  using StandardCheck = logic::StandardCheck;
+  using StepRef = logic::StepRef;
+  using Verdict = logic::Verdict;
+
+  StandardCheckRunner(Space& space, const semantics::TransitionSystem& ts,
+                      const logic::CheckTask& task)
+      : sp_(space), ts_(ts), task_(task), steps_(logic::step_refs(ts, task.project)) {}
+
+  /// Every check of task.checks, in order; a check a limit interrupts is unknown, the ones
+  /// before it keep their verdicts.
+  std::vector<PropertyResult> run() {
+    using Clock = std::chrono::steady_clock;
+    std::vector<PropertyResult> out;
+    std::uint64_t done = 0;
+    const auto started = Clock::now();
+    auto timed = [&](const std::string& name, StandardCheck id, auto&& compute) {
+      const auto t0 = Clock::now();
+      PropertyResult r;
+      if (const auto failed = sp_.failure()) {
+        r = unknown(name, id, *failed);
+      } else {
+        try {
+          task_.limits.check_time("starting the standard check");
+          r = compute();
+        } catch (const LimitReached& stop) {
+          r = unknown(name, id, sp_.note_limit(stop));
+        }
+      }
+      r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      return r;
+    };
+    for (auto id : task_.checks) {
+      out.push_back(timed(std::string(logic::to_string(id)), id, [&] { return check(id); }));
+      if (id == StandardCheck::Reentry && sp_.has_fairness())
+        out.push_back(timed("reentry-fair", id, [&] { return reentry_fair(); }));
+      model::Progress p;
+      p.phase = "standard checks";
+      p.states = sp_.progress_states();
+      p.done = ++done;
+      p.total = task_.checks.size();
+      p.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+      task_.limits.report(p);
+    }
+    return out;
+  }
+
+ private:
+  static constexpr std::size_t kMaxSituations = 3;  ///< situation findings listed before a summary
+
+  static PropertyResult unknown(const std::string& name, StandardCheck id, const std::string& why) {
+    PropertyResult r;
+    r.name = name;
+    r.check = std::string(logic::to_string(id));
+    r.verdict = Verdict::Unknown;
+    r.message = why;
+    return r;
+  }
+
+  PropertyResult check(StandardCheck id) {
+    PropertyResult r;
+    r.name = std::string(logic::to_string(id));
+    r.check = r.name;
+    switch (id) {
+      case StandardCheck::Reachable: reachable(r); break;
+      case StandardCheck::DeadTransitions: dead_transitions(r); break;
+      case StandardCheck::Reentry: per_step_formula(r, false); break;
+      case StandardCheck::GlobalDeadlock: global_deadlock(r); break;
+      case StandardCheck::LocalDeadlock: local_deadlock(r); break;
+      case StandardCheck::InitialReturn: initial_return(r); break;
+      case StandardCheck::Conflicts: conflicts(r); break;
+      case StandardCheck::StoredActions: stored_actions(r); break;
+      case StandardCheck::OutputConflicts: output_conflicts(r); break;
+      case StandardCheck::Instability: instability(r); break;
+    }
+    return r;
+  }
+
+  PropertyResult reentry_fair() {
+    PropertyResult r;
+    r.name = "reentry-fair";
+    r.check = "reentry";
+    per_step_formula(r, true);
+    return r;
+  }
+
+  // ---------------------------------------------------------------------------- helpers
+
+  static std::string qualify(const std::string& pou, const std::string& name) {
+    return pou.empty() ? name : pou + "." + name;
+  }
+  std::string limit_message() const {
+    return "exploration stopped at the " + sp_.limit_name() + " limit after " + sp_.state_count() +
+           " states";
+  }
+  void add(PropertyResult& r, std::string finding) const {
+    ++r.findings_total;
+    if (task_.max_findings == 0 || r.findings.size() < task_.max_findings)
+      r.findings.push_back(std::move(finding));
+  }
+  /// Throws LimitReached(Time) once the run's deadline has passed.
+  void poll() const { task_.limits.check_time("running the standard checks"); }
+  bool contains(const Set& set, const State& x) { return !sp_.empty(sp_.meet(set, sp_.singleton(x))); }
+  Set step_set(const StepRef& step) { return sp_.observable(step.observable); }
+  const StepRef* find_step(const std::string& pou, const std::string& chart,
+                           const std::string& step) const {
+    for (const auto& s : steps_)
+      if (model::iequals(s.pou, pou) && model::iequals(s.chart, chart) &&
+          model::iequals(s.step, step))
+        return &s;
+    return nullptr;
+  }
+  /// "and N more": the count of `set` beyond the `shown` situations listed.
+  std::string more_than(const Set& set, std::size_t shown) {
+    const auto total = sp_.count(set).to_u64();
+    return total ? std::to_string(*total - shown) : "many";
+  }
+  /// Keeps the shallowest situation noted, the first one noted among equally deep ones.
+  void note(std::optional<State>& first, const State& x) {
+    if (!first || sp_.depth(x) < sp_.depth(*first)) first = x;
+  }
+  void finish(PropertyResult& r, const std::string& holds_message) const {
+    if (!r.findings.empty()) {
+      r.verdict = Verdict::Violated;
+    } else if (!sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message();
+    } else {
+      r.verdict = Verdict::Holds;
+      r.message = holds_message;
+    }
+  }
+
+  /// The chart transition behind each system transition, matched by location (or name);
+  /// empty when some transition cannot be matched.
+  std::vector<const model::Transition*> chart_transitions() const {
+    std::vector<const model::Transition*> out;
+    if (!task_.project) return out;
+    for (const auto& info : ts_.transitions()) {
+      poll();
+      const model::Transition* hit = nullptr;
+      for (const auto& pou : task_.project->pous) {
+        if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
+        for (const auto& chart : pou.charts) {
+          if (!info.chart.empty() && !model::iequals(chart.name, info.chart)) continue;
+          for (const auto& t : chart.transitions) {
+            const bool same = info.where.known() ? t.where.str() == info.where.str()
+                                                 : (!t.name.empty() && t.name == info.name);
+            if (same) hit = &t;
+          }
+        }
+      }
+      if (!hit) return {};
+      out.push_back(hit);
+    }
+    return out;
+  }
+
+  /// Grafcet steps never active in a stable situation but entered by a transition that fires
+  /// (they are crossed during transient evolutions): index into steps_ -> the situations with
+  /// an evolution entering the step. Empty for IEC 61131-3.
+  std::map<std::size_t, Set> transient_steps() {
+    std::map<std::size_t, Set> out;
+    if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
+    const auto matched = chart_transitions();
+    if (matched.empty()) return out;
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
+      poll();
+      if (!sp_.empty(step_set(steps_[i]))) continue;
+      Set entry = sp_.none();
+      for (std::uint32_t t = 0; t < matched.size(); ++t) {
+        if (!model::iequals(ts_.transitions()[t].chart, steps_[i].chart)) continue;
+        bool enters = false;
+        for (const auto& d : matched[t]->targets) enters = enters || model::iequals(d, steps_[i].step);
+        if (enters) entry = sp_.join(entry, sp_.fires(t));
+      }
+      if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
+    }
+    return out;
+  }
+
+  /// Re-entry of a transient step: from every reachable situation an evolution entering it
+  /// stays reachable. Adds a finding and a trace when not.
+  void transient_reentry(PropertyResult& r, std::size_t step, const Set& entry,
+                         const std::string& what) {
+    const Set bad = sp_.minus(sp_.reached(), sp_.backward(entry));
+    if (sp_.empty(bad)) return;
+    add(r, "step " + logic::describe_step(steps_[step]) + " (crossed only during transient "
+           "evolutions)" + what);
+    if (!r.trace) {
+      r.trace = sp_.path_to(bad);
+      r.trace->note = "from the last situation " + logic::describe_step(steps_[step]) +
+                      " can never be crossed again";
+    }
+  }
+
+  // ----------------------------------------------------------------------------- checks
+
+  void reachable(PropertyResult& r) {
+    if (steps_.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: the system has no steps";
+      return;
+    }
+    std::vector<bool> seen(steps_.size(), false);
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
+      poll();
+      seen[i] = !sp_.empty(step_set(steps_[i]));
+    }
+    const auto transient = sp_.complete() ? transient_steps() : std::map<std::size_t, Set>{};
+    std::size_t missing = 0;
+    for (std::size_t i = 0; i < steps_.size(); ++i)
+      if (!seen[i] && !transient.count(i)) {
+        ++missing;
+        if (sp_.complete()) add(r, "step " + logic::describe_step(steps_[i]) + " is never active");
+      }
+    if (missing && !sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = std::to_string(missing) + " of " + std::to_string(steps_.size()) +
+                  " steps not reached before the limit; " + limit_message();
+      return;
+    }
+    finish(r, "all " + std::to_string(steps_.size()) + " steps are reachable" +
+                  (transient.empty() ? ""
+                                     : " (" + std::to_string(transient.size()) +
+                                           " only during transient evolutions)"));
+  }
+
+  void dead_transitions(PropertyResult& r) {
+    const auto& trs = ts_.transitions();
+    if (trs.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: the system has no transitions";
+      return;
+    }
+    std::size_t dead = 0;
+    for (std::uint32_t t = 0; t < trs.size(); ++t) {
+      poll();
+      if (!sp_.can_fire(t)) {
+        ++dead;
+        if (sp_.complete())
+          add(r, "transition " + trs[t].name +
+                     (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
+                     " never fires");
+      }
+    }
+    if (dead && !sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = std::to_string(dead) + " transitions not fired before the limit; " +
+                  limit_message();
+      return;
+    }
+    finish(r, "all " + std::to_string(trs.size()) + " transitions can fire");
+  }
+
+  // AG EF X (or AG AF X under fairness) for the steps of a loop.
+  void per_step_formula(PropertyResult& r, bool af) {
+    std::vector<const StepRef*> loop;
+    for (const auto& s : steps_)
+      if (s.on_loop || !task_.project) loop.push_back(&s);
+    if (loop.empty()) {
+      r.verdict = steps_.empty() ? Verdict::NotChecked : Verdict::Holds;
+      r.message = steps_.empty() ? "not checked: the system has no steps" : "no step lies on a loop";
+      return;
+    }
+    if (!sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message();
+      return;
+    }
+    if (sp_.empty(sp_.initial())) {
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state";
+      return;
+    }
+    const auto transient = transient_steps();
+    for (const auto* step : loop) {
+      poll();
+      const auto index = static_cast<std::size_t>(step - steps_.data());
+      if (auto it = transient.find(index); it != transient.end()) {
+        if (!af) transient_reentry(r, index, it->second, ": a reachable situation exists from "
+                                                          "which it can never be crossed again");
+        continue;
+      }
+      auto f = af ? logic::reentry_fair_formula(ts_, step->observable)
+                  : logic::reentry_formula(ts_, step->observable);
+      const Set bad = sp_.minus(sp_.initial(), sp_.ctl(f, af));
+      if (sp_.empty(bad)) continue;
+      add(r, "step " + logic::describe_step(*step) +
+                 (af ? " is not re-entered on every fair run (AG AF "
+                     : ": a reachable situation exists from which it can never become active "
+                       "again (AG EF ") +
+                 ts_.observables()[step->observable].name + " is violated)");
+      if (!r.trace) {
+        auto t = sp_.explain(logic::push_negation(f), bad, af);
+        t.marked = {step->observable};
+        t.note = af ? "a fair run on which " + logic::describe_step(*step) + " never becomes active again"
+                    : "after the last situation, " + logic::describe_step(*step) +
+                          " can never become active again";
+        r.trace = std::move(t);
+      }
+    }
+    r.formula = af ? "AG AF X" : "AG EF X";
+    finish(r, std::to_string(loop.size()) + " steps on loops can always be re-entered" +
+                  (af ? " on fair runs" : ""));
+  }
+
+  void global_deadlock(PropertyResult& r) {
+    if (ts_.transitions().empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: the system has no transitions";
+      return;
+    }
+    const Set stuck = sp_.stuck();
+    // On an incomplete graph only a situation without any successor is certainly dead.
+    const Set dead = sp_.complete() ? sp_.minus(sp_.reached(), sp_.backward(sp_.fires_any())) : stuck;
+    const auto shown = sp_.first(dead, kMaxSituations + 1);
+    for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i) {
+      const auto& s = shown[i];
+      add(r, "situation " + sp_.describe(s) + " (after " + std::to_string(sp_.depth(s)) +
+                 " evolutions): " +
+                 (contains(stuck, s)
+                      ? (ts_.kind() == semantics::SemanticsKind::Grafcet
+                             ? "no successor at all (no input event leads to an evolution)"
+                             : "no successor at all (the assumptions exclude every input)")
+                      : "no transition can ever fire again, whatever the inputs"));
+    }
+    if (shown.size() > kMaxSituations)
+      add(r, "(and " + more_than(dead, kMaxSituations) + " more deadlocked situations)");
+    if (!sp_.empty(dead)) {
+      r.trace = sp_.path_to(dead);
+      r.trace->note = "the last situation is a global deadlock";
+    }
+    finish(r, "from every reachable situation some transition can still fire");
+  }
+
+  void local_deadlock(PropertyResult& r) {
+    if (steps_.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: the system has no steps";
+      return;
+    }
+    if (!sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message();
+      return;
+    }
+    r.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
+    const auto transient = transient_steps();
+    for (const auto& step : steps_) {
+      poll();
+      const auto index = static_cast<std::size_t>(&step - steps_.data());
+      if (auto it = transient.find(index); it != transient.end()) {
+        transient_reentry(r, index, it->second, ", once crossed, is never crossed again");
+        continue;
+      }
+      // The two ways logic::local_deadlock_formula fails, each explained on its own.
+      const auto x = logic::observable_atom(ts_, step.observable);
+      const auto never_left =
+          logic::make_op(logic::Op::EF, {logic::make_and(x, logic::make_op(logic::Op::AG, {x}))});
+      const auto nx = logic::make_not(x);
+      const auto never_back =
+          logic::make_op(logic::Op::EF, {logic::make_and(nx, logic::make_op(logic::Op::AG, {nx}))});
+      for (const auto& [f, what] : {std::pair{never_left, "once active, is never left"},
+                                    std::pair{never_back, "once inactive, never becomes active again"}}) {
+        const Set at = sp_.meet(sp_.initial(), sp_.ctl(f, false));
+        if (sp_.empty(at)) continue;
+        add(r, "step " + logic::describe_step(step) + ", " + what);
+        if (!r.trace) {
+          auto t = sp_.explain(f, at, false);
+          t.kind = logic::TraceKind::Counterexample;
+          t.marked = {step.observable};
+          t.note = "from the last situation on, " + logic::describe_step(step) + " " + what;
+          r.trace = std::move(t);
+        }
+      }
+    }
+    finish(r, "every step can always be left and re-entered");
+  }
+
+  /// The reached situations whose step activity is that of some situation of `from`, split
+  /// step by step (one branch per distinct activity); `rest` is the candidates so far.
+  Set same_activity(const Set& from, const Set& rest, std::size_t k) {
+    if (sp_.empty(from) || sp_.empty(rest)) return sp_.none();
+    if (k == steps_.size()) return rest;
+    poll();
+    const Set x = step_set(steps_[k]);
+    return sp_.join(same_activity(sp_.meet(from, x), sp_.meet(rest, x), k + 1),
+                    same_activity(sp_.minus(from, x), sp_.minus(rest, x), k + 1));
+  }
+
+  void initial_return(PropertyResult& r) {
+    if (sp_.empty(sp_.initial())) {
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state";
+      return;
+    }
+    if (!sp_.complete()) {
+      r.verdict = Verdict::Unknown;
+      r.message = limit_message();
+      return;
+    }
+    r.formula = "AG EF init";
+    // The initial situation is the step activity of an initial state (inputs and variables
+    // may differ); a system without steps compares whole states.
+    const Set target =
+        steps_.empty() ? sp_.initial() : same_activity(sp_.initial(), sp_.reached(), 0);
+    const Set bad = sp_.minus(sp_.reached(), sp_.backward(target));
+    const auto shown = sp_.first(bad, kMaxSituations + 1);
+    const auto init = sp_.describe(sp_.one(sp_.initial()));
+    for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i)
+      add(r, "from situation " + sp_.describe(shown[i]) + " the initial situation " + init +
+                 " can never be reached again");
+    if (shown.size() > kMaxSituations)
+      add(r, "(and " + more_than(bad, kMaxSituations) + " more such situations)");
+    if (!sp_.empty(bad)) {
+      r.trace = sp_.path_to(bad);
+      r.trace->note = "from the last situation the initial situation is unreachable";
+    }
+    finish(r, "the initial situation can be reached again from every reachable situation");
+  }
+
+  static bool cubes_intersect(const semantics::InputCube& a, const semantics::InputCube& b) {
+    for (const auto& x : a.literals)
+      for (const auto& y : b.literals)
+        if (x.input == y.input && (x.hi < y.lo || y.hi < x.lo)) return false;
+    return true;
+  }
+
+ public:
+  static bool conditions_intersect(const semantics::InputCondition& a,
+                                   const semantics::InputCondition& b) {
+    for (const auto& x : a.cubes)
+      for (const auto& y : b.cubes)
+        if (cubes_intersect(x, y)) return true;
+    return false;
+  }
+
+ private:
+  // IEC 61131-3 without priority: the engine visits pairs of evolutions from one situation
+  // under overlapping inputs (fired_a, fired_b: what each fires). Grafcet: it visits each
+  // evolution once (fired_a: every transition it clears, fired_b empty).
+  void conflicts(PropertyResult& r) {
+    if (ts_.kind() == semantics::SemanticsKind::Iec61131 && task_.priority_resolves_conflicts) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: alternative transitions are resolved by the standard priority "
+                  "(explicit priority, then document order); run with --priority none to find "
+                  "the conflicts";
+      return;
+    }
+    std::set<std::string> seen;
+    std::optional<State> first;
+    const auto& trs = ts_.transitions();
+    auto names = [&](std::span<const std::uint32_t> fired) {
+      std::string out;
+      for (auto t : fired) out += (out.empty() ? "" : ", ") + trs[t].name;
+      return "{" + out + "}";
+    };
+    bool visited = false;
+    if (ts_.kind() == semantics::SemanticsKind::Iec61131) {
+      visited = sp_.simultaneous([&](std::span<const std::uint32_t> a,
+                                     std::span<const std::uint32_t> b, const State& s) {
+        poll();
+        const auto text = names(a) + " and " + names(b);
+        if (!seen.insert(text).second) return;
+        if (!first) first = s;
+        add(r, "transitions " + text + " can both fire from " + sp_.describe(s) +
+                   " (no priority between them)");
+      });
+    } else {
+      // Grafcet clears every clearable transition at once: a conflict is two transitions
+      // with a common upstream step cleared together.
+      std::vector<std::vector<std::string>> upstream;
+      const auto matched = chart_transitions();
+      for (std::size_t i = 0; i < matched.size(); ++i) {
+        std::vector<std::string> ups;
+        for (const auto& s : matched[i]->sources) ups.push_back(qualify(trs[i].chart, s));
+        upstream.push_back(std::move(ups));
+      }
+      if (upstream.empty()) {
+        r.verdict = Verdict::NotChecked;
+        r.message = "not checked: the transitions of the system could not be matched with the "
+                    "chart's transitions";
+        return;
+      }
+      visited = sp_.simultaneous([&](std::span<const std::uint32_t> fired,
+                                     std::span<const std::uint32_t>, const State& s) {
+        for (std::size_t i = 0; i < fired.size(); ++i)
+          for (std::size_t j = i + 1; j < fired.size(); ++j) {
+            poll();
+            std::vector<std::string> common;
+            for (const auto& x : upstream[fired[i]])
+              for (const auto& y : upstream[fired[j]])
+                if (x == y) common.push_back(x);
+            if (common.empty()) continue;
+            const auto text = trs[fired[i]].name + " and " + trs[fired[j]].name;
+            if (!seen.insert(text).second) continue;
+            if (!first) first = s;
+            add(r, "transitions " + text + " share the upstream step " + common.front() +
+                       " and are cleared together from " + sp_.describe(s));
+          }
+      });
+    }
+    if (!visited) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked by the " + std::string(sp_.name()) +
+                  " engine (it needs the graph's edges); use --engine explicit";
+      return;
+    }
+    if (first) {
+      r.trace = sp_.path_to(sp_.singleton(*first));
+      r.trace->note = "in the last situation conflicting transitions are enabled together";
+    }
+    finish(r, "no two alternative transitions are enabled together");
+  }
+
+  void stored_actions(PropertyResult& r) {
+    if (!task_.project) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: needs the chart (no project given)";
+      return;
+    }
+    std::vector<std::string> not_checked;
+    std::size_t stored = 0;
+    std::optional<State> first;
+    for (const auto& pou : task_.project->pous) {
+      // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it.
+      std::map<std::string, std::pair<std::vector<const StepRef*>, std::vector<const StepRef*>>> sr;
+      std::map<std::string, std::string> first_set_where;
+      for (const auto& a : pou.associations) {
+        const bool set = a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
+                         a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
+        const bool reset = a.qualifier == model::Qualifier::R;
+        if (!set && !reset) continue;
+        auto& entry = sr[model::to_upper(a.action)];
+        const auto* step = find_step(pou.name, a.chart, a.step);
+        if (set && !first_set_where.count(model::to_upper(a.action)))
+          first_set_where[model::to_upper(a.action)] =
+              a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
+        if (!step) {
+          not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
+          continue;
+        }
+        (set ? entry.first : entry.second).push_back(step);
+      }
+      for (const auto& [action, lists] : sr) {
+        const auto& [sets, resets] = lists;
+        if (!first_set_where.count(action)) continue;
+        ++stored;
+        const std::string name = qualify(pou.name, action);
+        if (resets.empty())
+          add(r, "action " + name + " is stored at step " + first_set_where[action] +
+                     " and never reset (no R qualifier anywhere)");
+        // Set and reset in one situation.
+        std::vector<Set> set_at, reset_at;
+        Set any_set = sp_.none(), any_reset = sp_.none();
+        for (const auto* x : sets) any_set = sp_.join(any_set, set_at.emplace_back(step_set(*x)));
+        for (const auto* y : resets) any_reset = sp_.join(any_reset, reset_at.emplace_back(step_set(*y)));
+        poll();
+        if (const Set both = sp_.meet(any_set, any_reset); !sp_.empty(both)) {
+          const State s = sp_.one(both);
+          std::size_t i = 0, j = 0;
+          while (!contains(set_at[i], s)) ++i;
+          while (!contains(reset_at[j], s)) ++j;
+          add(r, "action " + name + " is set (S at " + sets[i]->step + ") and reset (R at " +
+                     resets[j]->step + ") in the same situation " + sp_.describe(s));
+          note(first, s);
+        }
+        // Set again while stored: needs the stored flag.
+        std::int64_t field = -1;
+        const auto& fields = ts_.layout().fields();
+        for (std::size_t i = 0; i < fields.size(); ++i)
+          if (fields[i].kind == semantics::FieldKind::ActionStored) {
+            std::string fname = fields[i].name;
+            if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
+              fname.resize(fname.size() - 7);
+            if (model::iequals(fname, name) || model::iequals(fname, action)) field = static_cast<std::int64_t>(i);
+          }
+        if (field < 0) {
+          not_checked.push_back("set again while stored (" + name + "): the system exposes no "
+                                "stored flag for it");
+          continue;
+        }
+        const Set flagged = sp_.field_nonzero(static_cast<std::uint32_t>(field));
+        std::vector<Set> again;
+        Set any_again = sp_.none();
+        for (const auto& x : set_at) {
+          poll();
+          any_again = sp_.join(any_again, again.emplace_back(sp_.meet(sp_.minus(flagged, x), sp_.pre(x))));
+        }
+        if (!sp_.empty(any_again)) {
+          const State s = sp_.one(any_again);
+          std::size_t i = 0;
+          while (!contains(again[i], s)) ++i;
+          add(r, "action " + name + " is set again (S at " + sets[i]->step +
+                     ") while already stored, from situation " + sp_.describe(s));
+          note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), set_at[i])));
+        }
+      }
+      // IEC 60848 stored actions: a variable set to 1 and never to 0, or to different values
+      // on one evolution.
+      std::map<std::string, std::vector<const model::StoredAction*>> by_var;
+      for (const auto& a : pou.stored_actions) by_var[model::to_upper(a.variable)].push_back(&a);
+      for (const auto& [var, list] : by_var) {
+        ++stored;
+        std::set<std::int64_t> values;
+        bool non_constant = false;
+        for (const auto* a : list) {
+          if (a->value && (a->value->kind == model::ExprKind::BoolConst ||
+                           a->value->kind == model::ExprKind::IntConst))
+            values.insert(a->value->value);
+          else
+            non_constant = true;
+        }
+        if (!non_constant && values.size() == 1 && *values.begin() == 1)
+          add(r, "output " + list.front()->variable + " is set to 1 by stored actions (" +
+                     list.front()->where.str() + ") and never reset to 0");
+        for (std::size_t i = 0; i < list.size(); ++i)
+          for (std::size_t j = i + 1; j < list.size(); ++j) {
+            const auto* a = list[i];
+            const auto* b = list[j];
+            if (a->when != model::StoredWhen::Activation || b->when != model::StoredWhen::Activation)
+              continue;
+            if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
+            const auto* sa = find_step(pou.name, a->chart, a->step);
+            const auto* sb = find_step(pou.name, b->chart, b->step);
+            if (!sa || !sb) {
+              not_checked.push_back("stored actions on " + a->variable + " at steps without "
+                                    "an observable");
+              continue;
+            }
+            poll();
+            // Both steps activated by one evolution.
+            const Set both = sp_.meet(step_set(*sa), step_set(*sb));
+            const Set from = sp_.meet(sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)),
+                                      sp_.pre(both));
+            if (sp_.empty(from)) continue;
+            const State s = sp_.one(from);
+            add(r, "output " + a->variable + " is set to different values at once by the "
+                   "activation of " + sa->step + " and " + sb->step + ", from situation " +
+                   sp_.describe(s));
+            note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
+          }
+        if (list.size() > 0)
+          not_checked.push_back("set again while stored (" + list.front()->variable +
+                                "): not checked for IEC 60848 stored actions");
+      }
+    }
+    if (first) {
+      r.trace = sp_.path_to(sp_.singleton(*first));
+      r.trace->note = "the last situation shows the stored-action defect";
+    }
+    if (stored == 0) {
+      finish(r, "the chart has no stored action");
+      return;
+    }
+    finish(r, "stored actions are used correctly");
+    if (r.verdict == Verdict::Holds && !not_checked.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "no defect found in the parts checked; not checked: " + not_checked.front() +
+                  (not_checked.size() > 1 ? " (and " + std::to_string(not_checked.size() - 1) +
+                                                " more)"
+                                          : "");
+    } else if (!not_checked.empty()) {
+      r.message = "not checked: " + not_checked.front();
+    }
+  }
+
+  void output_conflicts(PropertyResult& r) {
+    if (!task_.project) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: needs the chart (no project given)";
+      return;
+    }
+    if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked for Grafcet: continuous actions only assert their output; stored "
+                  "actions assigning different values at once are reported by stored-actions";
+      return;
+    }
+    std::vector<std::string> not_checked;
+    std::optional<State> first;
+    std::size_t pairs = 0;
+    for (const auto& pou : task_.project->pous) {
+      // variable -> (action, constant value or none) for every assignment in an action body.
+      struct Write {
+        std::string action;
+        std::optional<std::int64_t> value;
+      };
+      std::map<std::string, std::vector<Write>> writes;
+      std::function<void(const model::StmtList&, const std::string&, bool)> walk =
+          [&](const model::StmtList& body, const std::string& action, bool conditional) {
+            for (const auto& st : body) {
+              if (st->kind == model::StmtKind::Assign) {
+                std::optional<std::int64_t> v;
+                if (!conditional && st->value &&
+                    (st->value->kind == model::ExprKind::BoolConst ||
+                     st->value->kind == model::ExprKind::IntConst))
+                  v = st->value->value;
+                auto& list = writes[model::to_upper(st->target)];
+                bool dup = false;
+                for (const auto& w : list) dup |= w.action == action;
+                if (!dup) list.push_back({action, v});
+              }
+              for (const auto& b : st->bodies) walk(b, action, true);
+              walk(st->else_body, action, true);
+            }
+          };
+      for (const auto& a : pou.actions)
+        if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
+      for (const auto& [var, list] : writes)
+        for (std::size_t i = 0; i < list.size(); ++i)
+          for (std::size_t j = i + 1; j < list.size(); ++j) {
+            const auto& a = list[i];
+            const auto& b = list[j];
+            if (a.value && b.value && *a.value == *b.value) continue;  // same value: harmless
+            ++pairs;
+            std::uint32_t ia = 0, ib = 0;
+            bool ok = true;
+            for (auto [name, idx] : {std::pair{&a.action, &ia}, std::pair{&b.action, &ib}}) {
+              std::optional<std::uint32_t> hit;
+              for (const auto& cand : {qualify(pou.name, *name), *name}) {
+                hit = semantics::find_observable(ts_, cand);
+                if (hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action) break;
+                hit.reset();
+              }
+              if (hit) *idx = *hit; else ok = false;
+            }
+            if (!ok) {
+              not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                    ": the system exposes no activity for these actions");
+              continue;
+            }
+            poll();
+            const Set both = sp_.meet(sp_.observable(ia), sp_.observable(ib));
+            if (sp_.empty(both)) continue;
+            auto show = [](const Write& w) {
+              return w.action + (w.value ? " (:= " + std::to_string(*w.value) + ")" : "");
+            };
+            const State s = sp_.one(both);
+            add(r, "variable " + var + " is written by " + show(a) + " and " + show(b) +
+                       " in the same cycle, in situation " + sp_.describe(s));
+            note(first, s);
+          }
+    }
+    if (first) {
+      r.trace = sp_.path_to(sp_.singleton(*first));
+      r.trace->note = "in the last cycle both actions are active";
+    }
+    finish(r, pairs == 0 ? "no variable is written by two actions with different values"
+                         : "actions writing the same variable are never active together");
+    if (r.verdict == Verdict::Holds && !not_checked.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked: " + not_checked.front();
+    }
+  }
+
+  void instability(PropertyResult& r) {
+    std::set<std::string> seen;
+    for (auto& a : sp_.anomalies()) {
+      if (!seen.insert(a.text).second) continue;
+      add(r, a.text);
+      if (!r.trace && a.at) r.trace = sp_.path_to(*a.at);
+    }
+    finish(r, ts_.kind() == semantics::SemanticsKind::Grafcet
+                  ? "every evolution reaches a stable situation"
+                  : "no value out of range");
+  }
+
+  Space& sp_;
+  const semantics::TransitionSystem& ts_;
+  const logic::CheckTask& task_;
+  std::vector<StepRef> steps_;
+};
+
+/// Runs task.checks through the runner on `space`.
+template <class Space>
+std::vector<logic::PropertyResult> run_standard_checks_on(Space& space,
+                                                          const semantics::TransitionSystem& ts,
+                                                          const logic::CheckTask& task) {
+  if (task.checks.empty()) return {};
+  return StandardCheckRunner<Space>(space, ts, task).run();
+}
+
+}  // namespace sfcv::engine
