@@ -40,19 +40,20 @@ def main(path):
             cases.setdefault((r["family"], r["size"], r["variant"]), {})[r["tool"]] = r
     cols = ["family", "N", "variant", "states", "edges", "sfcv explicit", "explicit states/s, edges/s",
             "sfcv BDD", "sfcv RSG",
-            "Spin (pan)", "Spin states", "ABC pdr", "verdicts", "Spin / sfcv", "ABC / sfcv"]
+            "Spin (pan)", "Spin states", "ABC pdr", "NuSMV -dynamic", "verdicts", "Spin / sfcv",
+            "ABC / sfcv", "NuSMV / sfcv BDD"]
     print("| " + " | ".join(cols) + " |")
     print("|" + "---|" * len(cols))
     for (fam, size, variant), t in cases.items():
         ex, bdd, rsg = t.get("sfcv-explicit"), t.get("sfcv-bdd"), t.get("sfcv-rsg")
-        spin, abc = t.get("spin"), t.get("abc-pdr")
+        spin, abc, nusmv = t.get("spin"), t.get("abc-pdr"), t.get("nusmv")
         states = edges = ""
         for r in (ex, rsg, bdd):
             if r and r["status"] == "ok" and r["states"]:
                 states, edges = r["states"], r["edges"]
                 break
         # Definitive verdicts must agree; an "unknown" (e.g. Spin's depth bound) is listed apart.
-        definite = {r["verdict"] for r in (ex, bdd, spin, abc)
+        definite = {r["verdict"] for r in (ex, bdd, spin, abc, nusmv)
                     if r and r["verdict"] in ("holds", "violated")}
         unsure = [k for k, r in t.items() if r["verdict"] == "unknown"]
         if len(definite) > 1:
@@ -64,24 +65,25 @@ def main(path):
         sfcv_times = [s for s in (secs(ex), secs(bdd), secs(rsg)) if s is not None]
         best = min(sfcv_times) if sfcv_times else None
 
-        def ratio(r):
+        def ratio(r, base=best):
             s = secs(r)
-            if s is None or best is None:
+            if s is None or base is None:
                 return "-"
-            return f"{s / max(best, 0.01):.1f}"
+            return f"{s / max(base, 0.01):.1f}"
 
         spin_cell = cell(spin)
         if spin and spin["prep_seconds"]:
             spin_cell += f" (+{float(spin['prep_seconds']):.1f} s build)"
         row = [fam, size, variant, states, edges, cell(ex), rates(ex), cell(bdd), cell(rsg), spin_cell,
-               spin["states"] if spin and spin["states"] else "-", cell(abc), verdict,
-               ratio(spin), ratio(abc)]
+               spin["states"] if spin and spin["states"] else "-", cell(abc), cell(nusmv), verdict,
+               ratio(spin), ratio(abc), ratio(nusmv, secs(bdd))]
         print("| " + " | ".join(row) + " |")
     print()
     print("Cells: CPU seconds (user + system) (wall-clock seconds, peak resident memory), from "
           "GNU time. Ratios divide the other tool's CPU time by sfcv's faster engine's (times "
           "under 0.01 s count as 0.01 s). Spin's time is pan's search; its build (spin -a and "
-          "the C compiler, wall time) is shown apart. States/s and edges/s: what the explicit "
+          "the C compiler, wall time) is shown apart. NuSMV runs `-dcx -dynamic` on `sfcv export "
+          "--to nusmv`; its ratio is against sfcv's BDD engine. States/s and edges/s: what the explicit "
           "engine explored (up to the first violation for a violated invariant) per CPU second.")
 
 

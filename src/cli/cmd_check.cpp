@@ -51,7 +51,7 @@ struct CheckOptions {
   std::string engine = "auto";
   SystemOptions system;
   LimitOptions limits;
-  bool reorder = false;
+  std::string reorder = "dynamic";
   std::uint32_t depth = 200;
   unsigned threads = 0;
   std::string certificate;
@@ -201,7 +201,7 @@ int run_check(const CheckOptions& o) {
   task.limits = budget;
   task.limits.progress = progress.callback();
   engine::BddEngineOptions bdd_options;
-  bdd_options.reorder = o.reorder;
+  bdd_options.reorder = *engine::parse_reorder_mode(o.reorder);
   engine::ExplicitEngineOptions explicit_options;
   explicit_options.threads = o.threads;
 
@@ -307,8 +307,14 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "invariant clauses over latch names, or the k of k-induction)");
   add_system_options(*sub, opts->system);
   add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
-  sub->add_flag("--reorder", opts->reorder,
-                "bdd engine: dynamic variable reordering (sifting; off by default)");
+  // A bare --reorder (the old switch) means dynamic.
+  sub->add_option("--reorder", opts->reorder,
+                  "bdd engine: variable reordering by sifting: none, once (after the "
+                  "relation is built), dynamic (the default: whenever the live nodes doubled); a bare "
+                  "--reorder means dynamic")
+      ->expected(0, 1)
+      ->default_str("dynamic")
+      ->check(CLI::IsMember({"none", "once", "dynamic"}));
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
   sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");

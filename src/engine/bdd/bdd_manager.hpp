@@ -79,8 +79,11 @@ void start_manager(const ManagerOptions& options);
 /// Makes variables first..last (adjacent levels) one block for dynamic reordering, in a fixed
 /// order inside (a current/next pair). Without blocks BuDDy's reordering moves nothing.
 void add_variable_block(int first, int last);
-/// Dynamic reordering by sifting of the blocks, whenever the node table fills (off: none).
-void set_reordering(bool on);
+/// Automatic reordering by sifting of the blocks, at most `max_passes` times (0: off). BuDDy
+/// sifts when a garbage collection of a full table leaves at least twice the live nodes of the
+/// last pass (more when that pass gained less than 20 %), first when the table's initial size
+/// is in use. Stops after a pass that shrank the live nodes by less than `min_gain_percent`.
+void set_automatic_reordering(int max_passes, int min_gain_percent);
 /// Sifts the blocks once, now (a first order for the relation just built).
 void reorder_now();
 /// Reorderings done since the program started (each sifting pass counts once).

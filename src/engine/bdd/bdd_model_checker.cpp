@@ -468,13 +468,7 @@ class BddModelChecker final : public ModelChecker {
   logic::CheckReport check(const logic::CheckTask& task) const override {
     SymbolicOptions so;
     so.reorder = options_.reorder;
-    if (so.reorder) {
-      // Sifting works on the whole table, and automatic reordering starts when it is full: a
-      // small table that grows on demand (measured: the 4M-node default makes one sifting
-      // pass of a 60-variable chart take 3 s).
-      so.nodes = 1 << 18;
-      so.cache = 1 << 16;
-    }
+    so.nodes = options_.initial_nodes;
     if (task.limits.max_memory_bytes > 0) {
       const auto nodes = task.limits.max_memory_bytes / bdd::kBytesPerNode;
       so.max_nodes = static_cast<int>(std::clamp<std::uint64_t>(nodes, 1, 2'000'000'000));

@@ -4,12 +4,16 @@
 // witnesses for every formula cut out of the onion rings and fixpoint approximants
 // (symbolic_ctl.hpp), in the explicit engine's trace format. Same CheckTask, same CheckReport.
 
+#include "engine/bdd/reorder_mode.hpp"
 #include "engine/model_checker.hpp"
 
 namespace sfcv::engine {
 
 struct BddEngineOptions {
-  bool reorder = false;  ///< BuDDy's dynamic reordering (sifting of current/next pairs)
+  ReorderMode reorder = ReorderMode::Dynamic;  ///< `--reorder` (reorder_mode.hpp)
+  /// Initial node table (0: sized from the circuit). Dynamic reordering first sifts when this
+  /// many nodes are live: tests set it small to make sifting run on small charts.
+  int initial_nodes = 0;
 };
 
 /// The node table is sized from CheckTask::limits.max_memory_bytes (`--memory`): when it is

@@ -31,6 +31,12 @@ bdd::ManagerOptions manager_options(const SymbolicOptions& o, const Aig& aig) {
   return m;
 }
 
+// Dynamic: BuDDy sifts on its own from here on, whenever the live nodes have doubled.
+void start_reordering(ReorderMode mode) {
+  bdd::set_automatic_reordering(mode == ReorderMode::Dynamic ? kMaxAutomaticReorderings : 0,
+                                kMinReorderGainPercent);
+}
+
 }  // namespace
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
@@ -54,11 +60,11 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
-  if (options.reorder) {
+  if (options.reorder != ReorderMode::None) {
     // Blocks before any reordering: a current/next pair moves as one, inputs alone.
     for (std::size_t l = 0; l < num_latches; ++l) bdd::add_variable_block(current_var_[l], next_var_[l]);
     for (int v : input_var_) bdd::add_variable_block(v, v);
-    bdd::set_reordering(true);
+    start_reordering(options.reorder);
   }
   current_vars_ = current_var_;
   memo_.resize(aig.nodes().size());
@@ -76,8 +82,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   has_successor_ = ok_.exist(input_cube_);
   range_error_states_ = (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
 
-  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in latch
-  // order while small; then each current/input variable is quantified right after the last
+  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in
+  // variable order while small; then each current/input variable is quantified right after the last
   // cluster that mentions it.
   std::vector<Bdd> parts;
   std::vector<std::vector<bool>> part_support;
@@ -97,7 +103,14 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     };
     add_support(circuit_.allowed, cluster_support);
     add_support(circuit_.range_error, cluster_support);
-    for (std::size_t l = 0; l < aig.latches().size(); ++l) {
+    // Conjuncts in the variable order (measured against latch order: random 60 seed 1 from
+    // 0.62 to 0.37 s, counter 16 from 0.70 to 0.45 s): a cluster then covers adjacent levels,
+    // and a current bit is quantified once the clusters around its level are in.
+    std::vector<std::size_t> latch_order(num_latches);
+    for (std::size_t l = 0; l < num_latches; ++l) latch_order[l] = l;
+    std::sort(latch_order.begin(), latch_order.end(),
+              [&](auto a, auto b) { return current_var_[a] < current_var_[b]; });
+    for (const std::size_t l : latch_order) {
       const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
       const Bdd merged = cluster & conjunct;
       if (merged.node_count() > options.cluster_nodes && !cluster.is_true()) {
@@ -168,7 +181,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
   // Automatic reordering waits for a full table; sift once for the relation just built.
-  if (options.reorder) bdd::reorder_now();
+  if (options.reorder == ReorderMode::Once) bdd::reorder_now();
 }
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
@@ -219,13 +232,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
     }
   }
   bdd::ensure_variables(var);
-  if (options.reorder) {
+  if (options.reorder != ReorderMode::None) {
     // Blocks before any reordering: a state latch's current, next and transient copies move as
     // one (they are consecutive), an output's pair too, inputs alone.
     for (std::size_t l = 0; l < num_state; ++l) bdd::add_variable_block(v.c[l], v.m[l]);
     for (std::size_t q = 0; q < v.q.size(); ++q) bdd::add_variable_block(v.q[q], v.qp[q]);
     for (int x : v.in) bdd::add_variable_block(x, x);
-    bdd::set_reordering(true);
+    start_reordering(options.reorder);
   }
   input_var_ = v.in;
   current_var_ = v.c;
@@ -244,7 +257,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   initial_ = grafcet_->initial();
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
-  if (options.reorder) bdd::reorder_now();
+  if (options.reorder == ReorderMode::Once) bdd::reorder_now();
 }
 
 SymbolicSystem::~SymbolicSystem() = default;
@@ -271,6 +284,7 @@ bool SymbolicSystem::initial_unstable() const {
 
 void SymbolicSystem::restrict_sources(const Bdd& states) {
   if (grafcet_) grafcet_->set_sources(states);
+  else preimage_care_ = states;
 }
 
 bool SymbolicSystem::initial_range_error() const {
@@ -371,7 +385,7 @@ Bdd SymbolicSystem::preimage(const Bdd& states) const {
   Bdd acc = states.replace(*current_to_next_).exist(pre_quantify_first_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
     acc = acc.and_exist(clusters_[k], pre_quantify_after_[k]);
-  return acc;
+  return acc & preimage_care_;
 }
 
 std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/bdd/bdd_manager.hpp"
+#include "engine/bdd/reorder_mode.hpp"
 #include "logic/formula.hpp"
 #include "logic/query_compile.hpp"
 #include "semantics/grafcet_circuit.hpp"
@@ -29,7 +30,7 @@ struct SymbolicOptions {
   /// The run's deadline (model::Budget): building the circuit stops there (LimitReached).
   std::optional<std::chrono::steady_clock::time_point> deadline;
   int max_nodes = 0;       ///< node table limit (0 = none): past it operations throw BddError
-  bool reorder = false;    ///< dynamic reordering (sifting of current/next pairs)
+  ReorderMode reorder = ReorderMode::None;  ///< sifting of current/next pairs (reorder_mode.hpp)
 };
 
 class GrafcetClosure;
@@ -66,7 +67,9 @@ class SymbolicSystem {
   bool initial_range_error() const;
   /// Grafcet: the situations whose successors preimage, has_successor, fires and the anomaly
   /// sets describe (the reached set); without it the system computes the reachable set itself.
-  /// Does nothing for IEC 61131-3, whose relation is exact everywhere.
+  /// IEC 61131-3: preimage answers within `states` only, so that the CTL fixpoints work on
+  /// the reached states instead of every valuation of the bits (measured: `EF S1` on
+  /// `sfcv-gen random 60 --seed 1`, 3548 states, took 3.9 s over all valuations).
   void restrict_sources(const Bdd& states);
   Bdd image(const Bdd& states) const;
   Bdd preimage(const Bdd& states) const;
@@ -157,6 +160,7 @@ class SymbolicSystem {
   std::unique_ptr<bdd::VarMap> current_to_next_;
   std::vector<Bdd> pre_quantify_after_;  ///< pre-image: next variables and inputs per cluster
   Bdd pre_quantify_first_;
+  Bdd preimage_care_ = Bdd::constant(true);  ///< restrict_sources (IEC 61131-3)
   std::vector<Bdd> inputs_after_;  ///< inputs a cluster is the last to read (edge counting)
   Bdd inputs_first_;
   std::vector<Bdd> fires_;
