@@ -39,4 +39,21 @@ std::vector<std::int64_t> pick_inputs(const semantics::InputCondition& condition
                                       const std::vector<semantics::InputVariable>& inputs,
                                       const std::vector<std::int64_t>& previous);
 
+/// pick_inputs over a condition given cube by cube (e.g. as successors are enumerated), without
+/// keeping the cubes: pick() equals pick_inputs over every cube added, in order.
+class InputPicker {
+ public:
+  InputPicker(const std::vector<semantics::InputVariable>& inputs,
+              const std::vector<std::int64_t>& previous);
+  void add(const semantics::InputCube& cube);
+  /// No later cube can change the pick (one holds at the base valuation).
+  bool settled() const { return best_changes_ == 0; }
+  std::vector<std::int64_t> pick() const { return best_changes_ == kNone ? base_ : best_; }
+
+ private:
+  static constexpr std::size_t kNone = ~std::size_t{0};
+  std::vector<std::int64_t> base_, best_;
+  std::size_t best_changes_ = kNone;
+};
+
 }  // namespace sfcv::logic

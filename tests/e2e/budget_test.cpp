@@ -117,6 +117,19 @@ TEST(Budget, TimeoutHoldsUnderAutoOnTheQualityControlPlant) {
   }
 }
 
+TEST(Budget, InvariantCounterexamplesOnTheQualityControlPlantStayWithinTheBudget) {
+  // Corpus 22 has about 2^40 initial situations. The on-the-fly search found AG !X2 violated
+  // at an initial situation at once, then enumerated every initial situation again to pick the
+  // counterexample's inputs, with no deadline: --engine auto --timeout 60 ran for minutes.
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  const auto t = timed_run("check " + path + " --engine explicit --ctl 'AG !X2' --timeout 10 --quiet");
+  EXPECT_EQ(t.run.exit_code, 1) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("AG !X2  violated"), std::string::npos) << t.run.out;
+  EXPECT_NE(t.run.out.find("counterexample"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 40.0);
+}
+
 TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
   // A violation on the first evolution, then a state space far beyond --max-states (4^11
   // situations, 2^12 of them initial): the violation stays, what is not decided is unknown.
