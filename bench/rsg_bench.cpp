@@ -21,7 +21,8 @@ model::Project loops(int n, int unused_inputs) {
   pou.name = "LOOPS";
   for (int i = 0; i < n; ++i) {
     const std::string x = "x" + std::to_string(i);
-    pou.variables.push_back({x, model::VarDirection::Input, model::Type::boolean(), std::nullopt, "", {}});
+    pou.variables.push_back(
+        {x, model::VarDirection::Input, model::Type::boolean(), std::nullopt, "", {}});
     model::Chart c;
     c.name = "G" + std::to_string(i);
     model::Step a, b;
@@ -40,8 +41,12 @@ model::Project loops(int n, int unused_inputs) {
     pou.charts.push_back(c);
   }
   for (int u = 0; u < unused_inputs; ++u)
-    pou.variables.push_back({"u" + std::to_string(u), model::VarDirection::Input,
-                             model::Type::boolean(), std::nullopt, "", {}});
+    pou.variables.push_back({"u" + std::to_string(u),
+                             model::VarDirection::Input,
+                             model::Type::boolean(),
+                             std::nullopt,
+                             "",
+                             {}});
   return p;
 }
 
@@ -56,10 +61,12 @@ void run(benchmark::State& state, int n, int unused) {
     evolutions += g.num_edges();
     benchmark::DoNotOptimize(g.num_edges());
   }
-  state.counters["situations"] = static_cast<double>(situations) / static_cast<double>(state.iterations());
-  state.counters["evolutions"] = static_cast<double>(evolutions) / static_cast<double>(state.iterations());
-  state.counters["situations/s"] = benchmark::Counter(static_cast<double>(situations),
-                                                      benchmark::Counter::kIsRate);
+  state.counters["situations"] =
+      static_cast<double>(situations) / static_cast<double>(state.iterations());
+  state.counters["evolutions"] =
+      static_cast<double>(evolutions) / static_cast<double>(state.iterations());
+  state.counters["situations/s"] =
+      benchmark::Counter(static_cast<double>(situations), benchmark::Counter::kIsRate);
 }
 
 void BM_RsgIndependentLoops(benchmark::State& state) {

@@ -26,8 +26,12 @@ model::Project make_chart(Shape shape, int n) {
   model::Pou pou;
   pou.name = "MAIN";
   for (int i = 0; i < n; ++i)
-    pou.variables.push_back(model::Variable{"i" + std::to_string(i), model::VarDirection::Input,
-                                            model::Type::boolean(), std::nullopt, "", {}});
+    pou.variables.push_back(model::Variable{"i" + std::to_string(i),
+                                            model::VarDirection::Input,
+                                            model::Type::boolean(),
+                                            std::nullopt,
+                                            "",
+                                            {}});
   model::Chart c;
   c.name = "MAIN";
   auto step = [&](std::string name, bool initial) {
@@ -65,7 +69,8 @@ model::Project make_chart(Shape shape, int n) {
     }
     case Shape::Ring:
       for (int i = 0; i < n; ++i) step("R" + std::to_string(i), i == 0);
-      for (int i = 0; i < n; ++i) trans("R" + std::to_string(i), "R" + std::to_string((i + 1) % n), in(i));
+      for (int i = 0; i < n; ++i)
+        trans("R" + std::to_string(i), "R" + std::to_string((i + 1) % n), in(i));
       break;
   }
   pou.charts.push_back(std::move(c));
@@ -103,9 +108,15 @@ void run(benchmark::State& state, Shape shape) {
   state.counters["cubes"] = static_cast<double>(c.cubes);
 }
 
-void BM_Alternatives(benchmark::State& s) { run(s, Shape::Alternatives); }
-void BM_Conjunction(benchmark::State& s) { run(s, Shape::Conjunction); }
-void BM_Ring(benchmark::State& s) { run(s, Shape::Ring); }
+void BM_Alternatives(benchmark::State& s) {
+  run(s, Shape::Alternatives);
+}
+void BM_Conjunction(benchmark::State& s) {
+  run(s, Shape::Conjunction);
+}
+void BM_Ring(benchmark::State& s) {
+  run(s, Shape::Ring);
+}
 
 BENCHMARK(BM_Alternatives)->Arg(8)->Arg(64);
 BENCHMARK(BM_Conjunction)->Arg(8)->Arg(64);

@@ -11,6 +11,7 @@ PACKAGES=(
   graphviz spin berkeley-abc gnuplot-nox
   python3-jsonschema chromium  # tests: SARIF schema validation, the HTML report in a browser
   clang libclang-rt-14-dev  # the libFuzzer harnesses of fuzz/ (.ci/run)
+  clang-format  # scripts/check-format.sh (ctest clang_format, .ci/run)
 )
 
 missing=()

@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
   app.add_option("--inputs", inputs, "random: number of Boolean inputs");
   app.add_option("--seed", seed, "random: seed");
   sfcv::bench::RandomChartFeatures features;
-  app.add_flag("--timed", features.timed_qualifiers, "random: also timed qualifiers L, D, SD, DS, SL");
+  app.add_flag("--timed", features.timed_qualifiers,
+               "random: also timed qualifiers L, D, SD, DS, SL");
   app.add_flag("--nested", features.nested_chart, "random: an action holding a nested chart");
   app.add_option("--unused", unused, "transfer: extra inputs the grafcet never reads");
   app.add_option("-o,--output", output, "Output file (default: standard output)");
@@ -32,12 +33,18 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   std::string text;
-  if (family == "parallel") text = sfcv::bench::parallel_branches_iec(n, selector);
-  else if (family == "tanks") text = sfcv::bench::tanks_iec(n, flawed);
-  else if (family == "counter") text = sfcv::bench::counter_iec(n);
-  else if (family == "nested") text = sfcv::bench::nested_charts_iec(n);
-  else if (family == "transfer") text = sfcv::bench::transfer_line_g7(n, unused);
-  else text = sfcv::bench::random_chart_iec(n, inputs, seed, features);
+  if (family == "parallel")
+    text = sfcv::bench::parallel_branches_iec(n, selector);
+  else if (family == "tanks")
+    text = sfcv::bench::tanks_iec(n, flawed);
+  else if (family == "counter")
+    text = sfcv::bench::counter_iec(n);
+  else if (family == "nested")
+    text = sfcv::bench::nested_charts_iec(n);
+  else if (family == "transfer")
+    text = sfcv::bench::transfer_line_g7(n, unused);
+  else
+    text = sfcv::bench::random_chart_iec(n, inputs, seed, features);
   if (output.empty()) {
     std::cout << text;
   } else {

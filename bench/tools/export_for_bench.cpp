@@ -69,8 +69,8 @@ int main(int argc, char** argv) {
   aig.clear_bad();
   aig.add_bad("never_" + never, aig.make_and(all));
   // The same restriction the BDD engine applies: inputs in range and no range error.
-  aig.add_constraint("allowed", aig.make_and(circuit.allowed, semantics::Aig::make_not(
-                                                                  circuit.range_error)));
+  aig.add_constraint("allowed",
+                     aig.make_and(circuit.allowed, semantics::Aig::make_not(circuit.range_error)));
   if (aig.inputs().empty()) aig.add_input("dummy");  // ABC needs at least one input
 
   if (!promela.empty()) {

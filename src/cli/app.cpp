@@ -12,12 +12,15 @@ namespace {
 GlobalOptions g_options;
 }  // namespace
 
-const GlobalOptions& global_options() { return g_options; }
+const GlobalOptions& global_options() {
+  return g_options;
+}
 
 int run(int argc, char** argv) {
-  CLI::App app{"sfcv: a verifier for Sequential Function Charts (IEC 61131-3) and Grafcet "
-               "(IEC 60848)",
-               "sfcv"};
+  CLI::App app{
+      "sfcv: a verifier for Sequential Function Charts (IEC 61131-3) and Grafcet "
+      "(IEC 60848)",
+      "sfcv"};
   app.set_version_flag("--version", std::string("sfcv ") + SFCV_VERSION);
   app.require_subcommand(1);
   app.add_flag("-q,--quiet", g_options.quiet,

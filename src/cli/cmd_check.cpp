@@ -19,17 +19,17 @@
 #include "cli/progress_line.hpp"
 #include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
+#include "engine/auto_policy.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
-#include "engine/auto_policy.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/vacuity.hpp"
 #include "model/names.hpp"
-#include "report/check_junit.hpp"
 #include "report/check_html.hpp"
+#include "report/check_junit.hpp"
 #include "report/check_render.hpp"
 #include "report/check_sarif.hpp"
 #include "report/trace_render.hpp"
@@ -104,8 +104,9 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
     if (!nusmv)
-      throw InputError("sfcv check --engine nusmv: no NuSMV found on PATH (NuSMV is not packaged "
-                       "in Debian; see docs/exports.md)");
+      throw InputError(
+          "sfcv check --engine nusmv: no NuSMV found on PATH (NuSMV is not packaged "
+          "in Debian; see docs/exports.md)");
     auto checker = engine::make_nusmv_model_checker(*nusmv);
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
@@ -146,8 +147,9 @@ int run_check(const CheckOptions& o) {
   // The budget starts now and holds for every phase below.
   const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
-  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair,
-                            o.assume, o.patterns, {}, o.ltl};
+  logic::CheckInputs inputs{
+      o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair, o.assume, o.patterns, {},
+      o.ltl};
   // A bound in time ("within 2 s") counts cycles of --cycle when time is discrete.
   if (o.system.time == "discrete") inputs.pattern_options.cycle_ms = parse_cycle_ms(o.system.cycle);
   auto parsed = logic::parse_check_inputs(inputs);
@@ -158,7 +160,8 @@ int run_check(const CheckOptions& o) {
       o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
-  static const std::vector<std::string> engines = {"auto", "explicit", "bdd", "bmc", "kind", "ic3", "nusmv"};
+  static const std::vector<std::string> engines = {"auto", "explicit", "bdd",  "bmc",
+                                                   "kind", "ic3",      "nusmv"};
   if (std::find(engines.begin(), engines.end(), o.engine) == engines.end())
     throw UsageError("bad --engine '" + o.engine +
                      "' (expected auto, explicit, bdd, bmc, kind, ic3 or nusmv)");
@@ -168,8 +171,8 @@ int run_check(const CheckOptions& o) {
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
   budget.check_time("loading the model");
   progress.phase("build");
-  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv check",
-                                  semantics::ActionOrder::Declaration, &budget);
+  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec),
+                                  "sfcv check", semantics::ActionOrder::Declaration, &budget);
   budget.check_time("building the system");
   // Inputs and previous values named by a property are kept in the state only then.
   model::Diagnostics history_diags;
@@ -182,13 +185,15 @@ int run_check(const CheckOptions& o) {
   task.project = &project;
   task.checks = *checks;
   task.priority_resolves_conflicts =
-      built.semantics == "iec61131" && parse_priority(o.system.priority) == semantics::PriorityMode::Standard;
+      built.semantics == "iec61131" &&
+      parse_priority(o.system.priority) == semantics::PriorityMode::Standard;
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
   print_diagnostics(resolve_diags, "errors in the properties");
   if (o.deadlock_paths != "stutter" && o.deadlock_paths != "drop")
     throw UsageError("bad --deadlock-paths '" + o.deadlock_paths + "' (expected stutter or drop)");
-  if (o.deadlock_paths == "drop" && o.engine != "auto" && o.engine != "explicit" && o.engine != "bdd")
+  if (o.deadlock_paths == "drop" && o.engine != "auto" && o.engine != "explicit" &&
+      o.engine != "bdd")
     throw UsageError("--deadlock-paths drop: the " + o.engine +
                      " engine does not check it; use --engine explicit, bdd or auto");
   logic::set_deadlock_paths(task, o.deadlock_paths == "drop" ? logic::DeadlockPaths::Drop
@@ -206,10 +211,10 @@ int run_check(const CheckOptions& o) {
   explicit_options.threads = o.threads;
 
   progress.phase("explore");
-  logic::CheckReport result = o.engine == "auto"
-                                  ? check_auto(task, bdd_options, explicit_options, progress)
-                                  : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)
-                                        ->check(task);
+  logic::CheckReport result =
+      o.engine == "auto"
+          ? check_auto(task, bdd_options, explicit_options, progress)
+          : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)->check(task);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   logic::describe_results(result, parsed.spec);
@@ -235,10 +240,18 @@ int run_check(const CheckOptions& o) {
     if (!f) throw InputError(o.trace_file + ": cannot write the trace file");
     if (chosen) {
       switch (trace_format) {
-        case report::TraceFormat::Json: f << report::trace_json(*chosen, *ts); break;
-        case report::TraceFormat::Vcd: f << report::trace_vcd(*chosen, *ts, {render.cycle_ms}); break;
-        case report::TraceFormat::Csv: f << report::trace_csv(*chosen, *ts); break;
-        default: f << report::trace_table(*chosen, *ts); break;
+        case report::TraceFormat::Json:
+          f << report::trace_json(*chosen, *ts);
+          break;
+        case report::TraceFormat::Vcd:
+          f << report::trace_vcd(*chosen, *ts, {render.cycle_ms});
+          break;
+        case report::TraceFormat::Csv:
+          f << report::trace_csv(*chosen, *ts);
+          break;
+        default:
+          f << report::trace_table(*chosen, *ts);
+          break;
       }
     }
   }
@@ -261,7 +274,8 @@ int run_check(const CheckOptions& o) {
   if (!o.html.empty()) {
     std::ofstream f(o.html);
     if (!f) throw InputError(o.html + ": cannot write the HTML report");
-    f << report::check_html(report::html_report(report::check_json(result, *ts, render), project, *ts));
+    f << report::check_html(
+        report::html_report(report::check_json(result, *ts, render), project, *ts));
   }
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
@@ -280,8 +294,9 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
-  sub->add_option("--ltl", opts->ltl,
-                  "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
+  sub->add_option(
+      "--ltl", opts->ltl,
+      "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
   sub->add_option("--pattern", opts->patterns,
                   "A requirement pattern, e.g. 'response(start, V1, within 5 cycles)' or "
                   "'absence(V1 & V3, after start)' (repeatable; list: sfcv patterns)");
@@ -289,16 +304,21 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "A file of 'property name: formula;', 'pattern name: pattern;', "
                   "'ltl name: formula;', 'assume e;', 'fair e;'");
   std::string names;
-  for (const auto& c : logic::standard_checks()) names += (names.empty() ? "" : ", ") + std::string(c.name);
-  sub->add_option("--checks", opts->checks,
-                  "Standard checks: all (default without properties), none, or a list of: " + names);
-  sub->add_option("--fair", opts->fair, "Fairness: only runs visiting this infinitely often (repeatable)");
-  sub->add_option("--assume", opts->assume, "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
+  for (const auto& c : logic::standard_checks())
+    names += (names.empty() ? "" : ", ") + std::string(c.name);
+  sub->add_option(
+      "--checks", opts->checks,
+      "Standard checks: all (default without properties), none, or a list of: " + names);
+  sub->add_option("--fair", opts->fair,
+                  "Fairness: only runs visiting this infinitely often (repeatable)");
+  sub->add_option("--assume", opts->assume,
+                  "Assumption on inputs and state, e.g. '!(LIS1plus & LIS1minus)' (repeatable)");
   sub->add_option("--engine", opts->engine,
                   "auto (default: explicit up to " + std::to_string(engine::kAutoProbeStates) +
                       " states, then bdd, ic3 and bmc side by side), explicit, bdd, bmc, kind, ic3 "
                       "(SAT engines: invariants and reachability), or nusmv (a NuSMV on PATH)");
-  sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling in cycles (default 200)");
+  sub->add_option("--depth", opts->depth,
+                  "bmc and kind: the deepest unrolling in cycles (default 200)");
   sub->add_option("--threads", opts->threads,
                   "explicit engine: threads generating successors when only invariants are asked "
                   "(default 0: one per core; results do not depend on it)");
@@ -308,18 +328,22 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   add_system_options(*sub, opts->system);
   add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
   // A bare --reorder (the old switch) means dynamic.
-  sub->add_option("--reorder", opts->reorder,
-                  "bdd engine: variable reordering by sifting: none, once (after the "
-                  "relation is built), dynamic (the default: whenever the live nodes doubled); a bare "
-                  "--reorder means dynamic")
+  sub->add_option(
+         "--reorder", opts->reorder,
+         "bdd engine: variable reordering by sifting: none, once (after the "
+         "relation is built), dynamic (the default: whenever the live nodes doubled); a bare "
+         "--reorder means dynamic")
       ->expected(0, 1)
       ->default_str("dynamic")
       ->check(CLI::IsMember({"none", "once", "dynamic"}));
   sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
-  sub->add_option("--trace", opts->trace, "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
-  sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample (else witness) there");
-  sub->add_option("--junit", opts->junit,
-                  "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
+  sub->add_option("--trace", opts->trace,
+                  "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
+  sub->add_option("--trace-file", opts->trace_file,
+                  "Write the first counterexample (else witness) there");
+  sub->add_option(
+      "--junit", opts->junit,
+      "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");
   sub->add_option("--sarif", opts->sarif,
                   "Also write a SARIF 2.1.0 log there, for code-scanning views (docs/reports.md)");
   sub->add_option("--html", opts->html,
@@ -334,15 +358,14 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "NuSMV); explicit and bdd engines (docs/properties.md)");
   sub->add_flag("--all", opts->all_findings,
                 "Every finding of the standard checks (else the first 20 of each, with a count)");
-  sub->footer("Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
-              "AG (a -> f) reports whether it holds vacuously. Patterns (--pattern, 'sfcv "
-              "patterns' lists them) and a cookbook: docs/properties.md.\n"
-              "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
-              "input, 3 unknown (a limit was reached before an answer was certain), 4 internal "
-              "error.");
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_check(*opts); };
-  });
+  sub->footer(
+      "Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
+      "AG (a -> f) reports whether it holds vacuously. Patterns (--pattern, 'sfcv "
+      "patterns' lists them) and a cookbook: docs/properties.md.\n"
+      "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
+      "input, 3 unknown (a limit was reached before an answer was certain), 4 internal "
+      "error.");
+  sub->callback([opts, &selected] { selected = [opts] { return run_check(*opts); }; });
 }
 
 }  // namespace sfcv::cli

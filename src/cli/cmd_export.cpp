@@ -1,6 +1,6 @@
 // sfcv export: the chart for outside checkers (NuSMV, Cadence SMV, Promela, AIGER) or people
-// (DOT, IEC text, .g7, PLCopen XML). The circuit exports mean what sfcv check means: engine/external/
-// export_model.hpp says how.
+// (DOT, IEC text, .g7, PLCopen XML). The circuit exports mean what sfcv check means:
+// engine/external/ export_model.hpp says how.
 
 #include <unistd.h>
 
@@ -64,7 +64,8 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
 
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
 void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
-  logic::CheckInputs inputs{o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}, o.ltl};
+  logic::CheckInputs inputs{
+      o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}, o.ltl};
   auto parsed = logic::parse_check_inputs(inputs);
   print_or_throw(parsed.diagnostics, "errors in the properties");
   if (!parsed.spec.fairness.empty())
@@ -72,7 +73,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   if (project.dialect == model::Dialect::Grafcet)
     throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
 
-  const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export");
+  const auto built =
+      build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export");
   // Inputs and previous values named by a property are kept in the state only then.
   model::Diagnostics history_diags;
   const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
@@ -94,7 +96,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   request.target = smv ? engine::ExportTarget::Smv : engine::ExportTarget::Circuit;
   request.properties = task.properties;
   for (auto c : *checks) {
-    if (c == logic::StandardCheck::Reachable) request.reachability = true;
+    if (c == logic::StandardCheck::Reachable)
+      request.reachability = true;
     else
       std::cerr << "sfcv export: the standard check '" << logic::to_string(c)
                 << "' is not exported (only 'reachable' is)\n";
@@ -118,7 +121,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     for (const auto& n : exported.ctl_only) names += (names.empty() ? "" : ", ") + n;
     throw InputError("sfcv export --to " + o.to +
                      ": only invariants (AG p, p without temporal operators) can be exported "
-                     "there; not: " + names + " (use --to nusmv or --to casmv)");
+                     "there; not: " +
+                     names + " (use --to nusmv or --to casmv)");
   }
   if (o.to == "nusmv") {
     engine::write_nusmv(out, exported.model);
@@ -131,8 +135,9 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     for (const auto& h : exported.model.header) comment += h + "\n";
     const auto& m = exported.model;
     if (!m.aig.constraints().empty())
-      comment += "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
-                 "constraint; each bad output is `sfcv_valid & bad`.\n";
+      comment +=
+          "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
+          "constraint; each bad output is `sfcv_valid & bad`.\n";
     for (std::size_t l = 0; l < m.latch_comments.size(); ++l)
       comment += "l" + std::to_string(l) + " " + m.aig.latches()[l].name + ": " +
                  m.latch_comments[l] + "\n";
@@ -146,15 +151,15 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
 }
 
 int run_export(const ExportOptions& o) {
-  static const std::vector<std::string> kTargets = {"nusmv", "casmv", "promela", "aiger",
-                                                    "aag",   "dot",   "iec",     "g7",
-                                                    "plcopen"};
+  static const std::vector<std::string> kTargets = {"nusmv", "casmv", "promela", "aiger",  "aag",
+                                                    "dot",   "iec",   "g7",      "plcopen"};
   if (std::find(kTargets.begin(), kTargets.end(), o.to) == kTargets.end())
     throw InputError("bad --to '" + o.to +
                      "' (expected nusmv, casmv, promela, aiger, aag, dot, iec, g7 or plcopen)");
   if (o.to == "aiger" && o.output.empty() && ::isatty(1))
-    throw InputError("sfcv export --to aiger writes binary AIGER: give -o FILE or redirect "
-                     "standard output (--to aag writes ASCII)");
+    throw InputError(
+        "sfcv export --to aiger writes binary AIGER: give -o FILE or redirect "
+        "standard output (--to aag writes ASCII)");
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
 
   std::ostringstream text;
@@ -188,14 +193,17 @@ int run_export(const ExportOptions& o) {
 void add_export_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<ExportOptions>();
   auto* sub = app.add_subcommand(
-      "export", "Export a chart to NuSMV, Cadence SMV, Promela, AIGER, DOT, IEC text, .g7 or PLCopen XML");
+      "export",
+      "Export a chart to NuSMV, Cadence SMV, Promela, AIGER, DOT, IEC text, .g7 or PLCopen XML");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--to", opts->to, "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7, plcopen")
+  sub->add_option("--to", opts->to,
+                  "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7, plcopen")
       ->required();
   sub->add_option("-o,--output", opts->output, "Output file (default: standard output)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
-  sub->add_option("--ctl", opts->ctl, "A CTL property (repeatable); promela/aiger: invariants AG p");
+  sub->add_option("--ctl", opts->ctl,
+                  "A CTL property (repeatable); promela/aiger: invariants AG p");
   sub->add_option("--ltl", opts->ltl, "An LTL property (repeatable); promela only: an ltl claim");
   sub->add_option("--spec", opts->spec, "A file of 'property name: formula;', 'assume e;'");
   sub->add_option("--assume", opts->assume, "Assumption on inputs and state (repeatable)");
@@ -203,9 +211,7 @@ void add_export_command(CLI::App& app, CommandRunner& selected) {
                   "reachable (default without properties) or none: EF X per step (SMV), "
                   "invariant AG !X per step (promela/aiger)");
   add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_export(*opts); };
-  });
+  sub->callback([opts, &selected] { selected = [opts] { return run_export(*opts); }; });
 }
 
 }  // namespace sfcv::cli

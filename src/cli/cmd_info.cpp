@@ -25,21 +25,30 @@ using nlohmann::ordered_json;
 
 const char* pou_kind(model::PouKind k) {
   switch (k) {
-    case model::PouKind::Program: return "program";
-    case model::PouKind::FunctionBlock: return "function_block";
-    case model::PouKind::Function: return "function";
+    case model::PouKind::Program:
+      return "program";
+    case model::PouKind::FunctionBlock:
+      return "function_block";
+    case model::PouKind::Function:
+      return "function";
   }
   return "program";
 }
 
 const char* direction(model::VarDirection d) {
   switch (d) {
-    case model::VarDirection::Input: return "input";
-    case model::VarDirection::Output: return "output";
-    case model::VarDirection::InOut: return "in_out";
-    case model::VarDirection::Local: return "local";
-    case model::VarDirection::Global: return "global";
-    case model::VarDirection::External: return "external";
+    case model::VarDirection::Input:
+      return "input";
+    case model::VarDirection::Output:
+      return "output";
+    case model::VarDirection::InOut:
+      return "in_out";
+    case model::VarDirection::Local:
+      return "local";
+    case model::VarDirection::Global:
+      return "global";
+    case model::VarDirection::External:
+      return "external";
   }
   return "local";
 }
@@ -55,7 +64,8 @@ constexpr model::Qualifier kQualifiers[] = {
 ordered_json chart_info(const model::Chart& c) {
   ordered_json j;
   j["name"] = c.name;
-  j["parent_action"] = c.parent_action.empty() ? ordered_json(nullptr) : ordered_json(c.parent_action);
+  j["parent_action"] =
+      c.parent_action.empty() ? ordered_json(nullptr) : ordered_json(c.parent_action);
   j["steps"] = c.steps.size();
   auto initial = ordered_json::array();
   for (const auto& s : c.steps)
@@ -96,7 +106,8 @@ ordered_json pou_info(const model::Pou& pou) {
     const std::string q(model::to_string(as.qualifier));
     by_qualifier[q] = by_qualifier[q].get<int>() + 1;
   }
-  j["associations"] = ordered_json{{"total", pou.associations.size()}, {"by_qualifier", by_qualifier}};
+  j["associations"] =
+      ordered_json{{"total", pou.associations.size()}, {"by_qualifier", by_qualifier}};
 
   ordered_json by_direction, by_type = ordered_json::object();
   for (auto d : kDirections) by_direction[direction(d)] = 0;
@@ -140,11 +151,12 @@ void print_text(const ordered_json& j, std::ostream& out) {
       << ", " << (grafcet ? "Grafcet, IEC 60848" : "SFC, IEC 61131-3") << ")\n";
   out << "steps: " << j["steps"] << ", transitions: " << j["transitions"] << "\n";
   for (const auto& pou : j["pous"]) {
-    out << "\n" << model::to_upper(pou["kind"].get<std::string>()) << " "
-        << pou["name"].get<std::string>() << ": " << pou["steps"] << " steps, "
-        << pou["transitions"] << " transitions\n";
+    out << "\n"
+        << model::to_upper(pou["kind"].get<std::string>()) << " " << pou["name"].get<std::string>()
+        << ": " << pou["steps"] << " steps, " << pou["transitions"] << " transitions\n";
     for (const auto& c : pou["charts"]) {
-      out << "  chart " << (c["name"].get<std::string>().empty() ? "(unnamed)" : c["name"].get<std::string>());
+      out << "  chart "
+          << (c["name"].get<std::string>().empty() ? "(unnamed)" : c["name"].get<std::string>());
       if (!c["parent_action"].is_null())
         out << " (body of action " << c["parent_action"].get<std::string>() << ")";
       out << ": " << c["steps"] << " steps, " << c["transitions"] << " transitions, "
@@ -156,21 +168,22 @@ void print_text(const ordered_json& j, std::ostream& out) {
     const auto& a = pou["actions"];
     out << "  actions: " << a["total"] << " (" << nonzero(a["by_kind"]) << ")\n";
     const auto& as = pou["associations"];
-    out << "  action associations: " << as["total"] << " (by qualifier: "
-        << nonzero(as["by_qualifier"]) << ")\n";
+    out << "  action associations: " << as["total"]
+        << " (by qualifier: " << nonzero(as["by_qualifier"]) << ")\n";
     const auto& v = pou["variables"];
-    out << "  variables: " << v["total"] << " (" << nonzero(v["by_direction"]) << "; by type: "
-        << nonzero(v["by_type"]) << ")\n";
+    out << "  variables: " << v["total"] << " (" << nonzero(v["by_direction"])
+        << "; by type: " << nonzero(v["by_type"]) << ")\n";
     if (grafcet || pou["stored_actions"] != 0 || pou["forcing_orders"] != 0)
-      out << "  stored actions: " << pou["stored_actions"] << ", forcing orders: "
-          << pou["forcing_orders"] << "\n";
+      out << "  stored actions: " << pou["stored_actions"]
+          << ", forcing orders: " << pou["forcing_orders"] << "\n";
   }
 }
 }  // namespace
 
 void add_info_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<InfoOptions>();
-  auto* sub = app.add_subcommand("info", "Summarise a chart: POUs, steps, transitions, actions, variables");
+  auto* sub =
+      app.add_subcommand("info", "Summarise a chart: POUs, steps, transitions, actions, variables");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");

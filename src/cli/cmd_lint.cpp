@@ -22,9 +22,12 @@ struct LintOptions {
 
 std::string_view severity_name(model::Severity s) {
   switch (s) {
-    case model::Severity::Error: return "error";
-    case model::Severity::Warning: return "warning";
-    case model::Severity::Note: break;
+    case model::Severity::Error:
+      return "error";
+    case model::Severity::Warning:
+      return "warning";
+    case model::Severity::Note:
+      break;
   }
   return "note";
 }
@@ -53,7 +56,8 @@ model::Diagnostics semantic_diagnostics(const model::Project& project) {
     semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, out);
   else
     semantics::make_iec61131_system(project, semantics::Iec61131Options{}, out);
-  std::erase_if(out, [](const model::Diagnostic& d) { return d.severity == model::Severity::Note; });
+  std::erase_if(out,
+                [](const model::Diagnostic& d) { return d.severity == model::Severity::Note; });
   return out;
 }
 
@@ -91,9 +95,7 @@ void add_lint_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--json", opts->json,
                 "Print the diagnostics as a JSON array of {file, line, column, element_path, "
                 "severity, message}");
-  sub->callback([opts, &selected] {
-    selected = [opts] { return lint(*opts); };
-  });
+  sub->callback([opts, &selected] { selected = [opts] { return lint(*opts); }; });
 }
 
 }  // namespace sfcv::cli

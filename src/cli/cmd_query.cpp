@@ -4,18 +4,18 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/commands.hpp"
-#include "cli/shipped_files.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/run_limits.hpp"
+#include "cli/shipped_files.hpp"
 #include "cli/system_options.hpp"
 #include "engine/bdd/symbolic_query_evaluator.hpp"  // SymbolicQueryError
 #include "engine/explicit/query_evaluator.hpp"      // QueryEvaluationError
@@ -50,7 +50,9 @@ struct QueryOptions {
 };
 
 /// The shipped library: <prefix>/share/sfcv next to an installed binary, else the source tree.
-std::string default_library_path() { return shipped_file("properties.sfq"); }
+std::string default_library_path() {
+  return shipped_file("properties.sfq");
+}
 
 /// "query:1:5: message" followed by the query line and a caret under the column.
 std::string located(const logic::QueryError& e, const std::string& text,
@@ -107,14 +109,15 @@ int run_query(const QueryOptions& o) {
   for (const auto& u : o.uses) items.push_back({u, "--use"});
   if (items.empty()) {
     if (o.list) return kHolds;
-    throw InputError("give a query, e.g. 'Y - Pred(Y0, T)', or --use NAME(ARGS) (--list shows "
-                     "the library)");
+    throw InputError(
+        "give a query, e.g. 'Y - Pred(Y0, T)', or --use NAME(ARGS) (--list shows "
+        "the library)");
   }
   if (o.model.empty()) throw InputError("a model file is required");
 
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
-  const auto built = build_system(project, o.system, {}, "sfcv query", semantics::ActionOrder::Declaration,
-                                  &budget);
+  const auto built = build_system(project, o.system, {}, "sfcv query",
+                                  semantics::ActionOrder::Declaration, &budget);
   const auto& ts = built.system;
   const std::string& kind = built.semantics;
 
@@ -235,12 +238,11 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
   add_system_options(*sub, opts->system);
   sub->add_option("--engine", opts->engine,
                   "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
-                  "(explicit up to " + std::to_string(engine::kAutoProbeStates) + " situations, then bdd)");
+                  "(explicit up to " +
+                      std::to_string(engine::kAutoProbeStates) + " situations, then bdd)");
   add_limit_options(*sub, opts->limits, "the graph is incomplete", MemoryLimit::NotOffered);
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_query(*opts); };
-  });
+  sub->callback([opts, &selected] { selected = [opts] { return run_query(*opts); }; });
 }
 
 }  // namespace sfcv::cli

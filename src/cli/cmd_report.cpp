@@ -52,15 +52,14 @@ int run_report(const ReportOptions& o) {
 
 void add_report_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<ReportOptions>();
-  auto* sub = app.add_subcommand("report", "Render a saved 'sfcv check --json' result as an HTML report");
+  auto* sub =
+      app.add_subcommand("report", "Render a saved 'sfcv check --json' result as an HTML report");
   sub->add_option("result", opts->result, "The JSON result of 'sfcv check --json'")->required();
   sub->add_option("--html", opts->html, "The HTML file to write")->required();
   sub->add_option("--model", opts->model, "The chart file (default: the one the result names)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   add_system_options(*sub, opts->system);
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_report(*opts); };
-  });
+  sub->callback([opts, &selected] { selected = [opts] { return run_report(*opts); }; });
 }
 
 }  // namespace sfcv::cli

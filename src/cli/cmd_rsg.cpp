@@ -42,8 +42,8 @@ int run_rsg(const RsgOptions& o) {
   const model::Project project = load_model_or_throw(o.model, parse_format(o.format));
   budget.check_time("loading the model");
   progress.phase("build");
-  const auto built = build_system(project, o.system, {}, "sfcv rsg", semantics::ActionOrder::Declaration,
-                                  &budget);
+  const auto built =
+      build_system(project, o.system, {}, "sfcv rsg", semantics::ActionOrder::Declaration, &budget);
   budget.check_time("building the system");
   const auto& ts = built.system;
   const std::string& sem = built.semantics;
@@ -90,13 +90,15 @@ int run_rsg(const RsgOptions& o) {
     so.max_nodes = o.max_nodes;
     const auto grouped = report::situation_graph_dot(g, so);
     write(o.dot, grouped.dot);
-    if (!grouped.truncation_note.empty()) std::cerr << "sfcv rsg --dot: " << grouped.truncation_note << "\n";
+    if (!grouped.truncation_note.empty())
+      std::cerr << "sfcv rsg --dot: " << grouped.truncation_note << "\n";
   }
   if (!o.dot_states.empty()) write(o.dot_states, report::state_graph_dot(g, *ts));
   for (const auto& line : report::anomaly_lines(g, *ts, o.model)) std::cerr << line << "\n";
   if (!g.complete()) {
-    (dot_to_stdout ? std::cerr : std::cout) << "unknown: the " << g.limit_reached() << " limit was reached after "
-              << g.num_states() << " states; the graph is incomplete\n";
+    (dot_to_stdout ? std::cerr : std::cout)
+        << "unknown: the " << g.limit_reached() << " limit was reached after " << g.num_states()
+        << " states; the graph is incomplete\n";
     return kUnknown;
   }
   return g.anomalies().empty() ? kHolds : kViolated;
@@ -117,13 +119,12 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
                   "Write the graph grouped by step situation as Graphviz to FILE (- for stdout)");
   sub->add_option("--max-nodes", opts->max_nodes,
                   "Step situations drawn by --dot, breadth-first (0: all; default 60)");
-  sub->add_option("--dot-states", opts->dot_states,
-                  "Write every stable situation and its input conditions as Graphviz (- for stdout)");
+  sub->add_option(
+      "--dot-states", opts->dot_states,
+      "Write every stable situation and its input conditions as Graphviz (- for stdout)");
   sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");
   add_limit_options(*sub, opts->limits, "verdict unknown", MemoryLimit::NotOffered);
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_rsg(*opts); };
-  });
+  sub->callback([opts, &selected] { selected = [opts] { return run_rsg(*opts); }; });
 }
 
 }  // namespace sfcv::cli

@@ -43,10 +43,12 @@ std::vector<std::string> split_csv(const std::string& line, std::vector<std::siz
   std::vector<std::string> out;
   columns.clear();
   std::size_t start = 0;
-  const char sep = line.find(';') != std::string::npos && line.find(',') == std::string::npos ? ';' : ',';
+  const char sep =
+      line.find(';') != std::string::npos && line.find(',') == std::string::npos ? ';' : ',';
   while (true) {
     const auto end = line.find(sep, start);
-    std::string cell = line.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    std::string cell =
+        line.substr(start, end == std::string::npos ? std::string::npos : end - start);
     std::size_t lead = 0;
     while (lead < cell.size() && std::isspace(static_cast<unsigned char>(cell[lead]))) ++lead;
     std::size_t trail = cell.size();
@@ -98,21 +100,22 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
                            "' (the model's inputs: " + (known.empty() ? "none" : known) + ")");
         }
         if (seen[static_cast<std::size_t>(found)])
-          throw InputError(at + std::to_string(cols[c]) + ": input '" + cells[c] + "' appears twice");
+          throw InputError(at + std::to_string(cols[c]) + ": input '" + cells[c] +
+                           "' appears twice");
         seen[static_cast<std::size_t>(found)] = true;
         column_input.push_back(found);
       }
       for (std::size_t i = 0; i < inputs.size(); ++i)
         if (!seen[i] && !inputs[i].pseudo)
-          throw InputError(path + ":" + std::to_string(lineno) + ":1: the header has no column for input '" +
-                           inputs[i].name + "'");
+          throw InputError(path + ":" + std::to_string(lineno) +
+                           ":1: the header has no column for input '" + inputs[i].name + "'");
       for (std::size_t i = 0; i < inputs.size(); ++i)
         if (seen[i]) shown.push_back(static_cast<int>(i));
       continue;
     }
     if (cells.size() != column_input.size())
-      throw InputError(at + "1: expected " + std::to_string(column_input.size()) + " values, found " +
-                       std::to_string(cells.size()));
+      throw InputError(at + "1: expected " + std::to_string(column_input.size()) +
+                       " values, found " + std::to_string(cells.size()));
     std::vector<std::int64_t> row(inputs.size());
     for (std::size_t i = 0; i < inputs.size(); ++i)
       row[i] = inputs[i].type.kind == model::TypeKind::Bool ? 0 : inputs[i].type.lo;
@@ -122,8 +125,10 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
       const std::string u = model::to_upper(cells[c]);
       std::int64_t v = 0;
       bool good = true;
-      if (u == "TRUE") v = 1;
-      else if (u == "FALSE") v = 0;
+      if (u == "TRUE")
+        v = 1;
+      else if (u == "FALSE")
+        v = 0;
       else {
         try {
           std::size_t pos = 0;
@@ -134,11 +139,12 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
         }
       }
       if (!good || v < in.type.lo || v > in.type.hi)
-        throw InputError(at + std::to_string(cols[c]) + ": bad value '" + cells[c] + "' for input '" +
-                         in.name + "' (expected " +
+        throw InputError(at + std::to_string(cols[c]) + ": bad value '" + cells[c] +
+                         "' for input '" + in.name + "' (expected " +
                          (in.type.kind == model::TypeKind::Bool
                               ? std::string("0, 1, TRUE or FALSE")
-                              : "an integer in " + std::to_string(in.type.lo) + ".." + std::to_string(in.type.hi)) +
+                              : "an integer in " + std::to_string(in.type.lo) + ".." +
+                                    std::to_string(in.type.hi)) +
                          ")");
       row[static_cast<std::size_t>(column_input[c])] = v;
     }
@@ -150,14 +156,17 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
 
 /// The run as a trace, for the one VCD writer in src/report. The start state has no cycle
 /// before it: its inputs are the defaults (false, the lowest value).
-logic::Trace run_as_trace(const semantics::TransitionSystem& ts, const semantics::SimulationResult& r,
+logic::Trace run_as_trace(const semantics::TransitionSystem& ts,
+                          const semantics::SimulationResult& r,
                           const std::vector<std::vector<std::int64_t>>& rows) {
   logic::Trace trace;
   std::vector<std::int64_t> defaults;
-  for (const auto& in : ts.inputs()) defaults.push_back(in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo);
+  for (const auto& in : ts.inputs())
+    defaults.push_back(in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo);
   for (std::size_t c = 0; c < r.states.size(); ++c)
-    trace.steps.push_back({c == 0 ? defaults : rows[c - 1], r.states[c],
-                           c == 0 || c > r.fired.size() ? std::vector<std::uint32_t>{} : r.fired[c - 1]});
+    trace.steps.push_back(
+        {c == 0 ? defaults : rows[c - 1], r.states[c],
+         c == 0 || c > r.fired.size() ? std::vector<std::uint32_t>{} : r.fired[c - 1]});
   return trace;
 }
 
@@ -172,9 +181,11 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
 int run_simulate(const SimulateOptions& o) {
   auto project = load_model_or_throw(o.model, parse_format(o.format));
   semantics::ActionOrder action_order = semantics::ActionOrder::Declaration;
-  if (o.action_order == "alphabetical") action_order = semantics::ActionOrder::Alphabetical;
+  if (o.action_order == "alphabetical")
+    action_order = semantics::ActionOrder::Alphabetical;
   else if (o.action_order != "declaration")
-    throw InputError("bad --action-order '" + o.action_order + "' (expected declaration or alphabetical)");
+    throw InputError("bad --action-order '" + o.action_order +
+                     "' (expected declaration or alphabetical)");
   std::vector<model::ExprPtr> assumptions;
   for (const auto& a : o.assumptions) {
     model::Diagnostics d;
@@ -187,7 +198,8 @@ int run_simulate(const SimulateOptions& o) {
     assumptions.push_back(e);
   }
   if (project.dialect != model::Dialect::Iec61131)
-    throw InputError(o.model + ": 'sfcv simulate' runs IEC 61131-3 charts; this is a Grafcet model");
+    throw InputError(o.model +
+                     ": 'sfcv simulate' runs IEC 61131-3 charts; this is a Grafcet model");
   const auto built = build_system(project, o.system, assumptions, "sfcv simulate", action_order);
   const auto& ts = built.system;
   const std::int64_t cycle_ms = parse_cycle_ms(o.system.cycle);
@@ -231,7 +243,8 @@ int run_simulate(const SimulateOptions& o) {
   }
   if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, cycle_ms);
   if (!r.ok) {
-    std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error << "\n";
+    std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error
+              << "\n";
     return kBadInput;
   }
   return kHolds;
@@ -241,27 +254,30 @@ int run_simulate(const SimulateOptions& o) {
 
 void add_simulate_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<SimulateOptions>();
-  auto* sub = app.add_subcommand("simulate", "Run an IEC 61131-3 chart cycle by cycle on given inputs");
+  auto* sub =
+      app.add_subcommand("simulate", "Run an IEC 61131-3 chart cycle by cycle on given inputs");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text)")->required();
-  sub->add_option("--inputs", opts->inputs,
-                  "CSV trace: a header row of input names, then one row of values per cycle "
-                  "(0/1, TRUE/FALSE, integers; ',' or ';' separated; '#' comments; an optional column "
-                  "'cycle' is ignored, which also lets a model without inputs run). Pseudo-inputs "
-                  "(timeout:<timer>, choice:<step>, elapse:<step>) may be given as columns; when "
-                  "absent they default to 0: no timeout, the first enabled alternative, no time "
-                  "elapsing. Every other input needs a column.")
+  sub->add_option(
+         "--inputs", opts->inputs,
+         "CSV trace: a header row of input names, then one row of values per cycle "
+         "(0/1, TRUE/FALSE, integers; ',' or ';' separated; '#' comments; an optional column "
+         "'cycle' is ignored, which also lets a model without inputs run). Pseudo-inputs "
+         "(timeout:<timer>, choice:<step>, elapse:<step>) may be given as columns; when "
+         "absent they default to 0: no timeout, the first enabled alternative, no time "
+         "elapsing. Every other input needs a column.")
       ->required();
-  sub->add_option("--vcd", opts->vcd, "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
+  sub->add_option("--vcd", opts->vcd,
+                  "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
   add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
   sub->add_option("--action-order", opts->action_order, "declaration (default) or alphabetical");
-  sub->add_option("--assume", opts->assumptions, "Assumption on inputs and state (ST expression), repeatable");
+  sub->add_option("--assume", opts->assumptions,
+                  "Assumption on inputs and state (ST expression), repeatable");
   sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");
-  sub->footer("Exit codes: 0 the trace ran to its end; 2 bad usage or input, or a cycle had no "
-              "successor (an assumption is violated, or a range error such as an integer overflow).");
-  sub->callback([opts, &selected] {
-    selected = [opts] { return run_simulate(*opts); };
-  });
+  sub->footer(
+      "Exit codes: 0 the trace ran to its end; 2 bad usage or input, or a cycle had no "
+      "successor (an assumption is violated, or a range error such as an integer overflow).");
+  sub->callback([opts, &selected] { selected = [opts] { return run_simulate(*opts); }; });
 }
 
 }  // namespace sfcv::cli

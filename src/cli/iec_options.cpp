@@ -14,8 +14,10 @@ std::int64_t parse_cycle_ms(const std::string& text) {
     throw InputError("bad --cycle '" + text + "' (expected e.g. 10ms, 1s)");
   }
   const auto unit = model::to_upper(text.substr(pos));
-  if (unit == "S") v *= 1000;
-  else if (unit != "MS" && !unit.empty()) throw InputError("bad --cycle '" + text + "' (units: ms, s)");
+  if (unit == "S")
+    v *= 1000;
+  else if (unit != "MS" && !unit.empty())
+    throw InputError("bad --cycle '" + text + "' (units: ms, s)");
   if (v <= 0) throw InputError("--cycle must be positive");
   return v;
 }

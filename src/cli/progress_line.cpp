@@ -73,8 +73,9 @@ std::string ProgressLine::render() const {
     const double seconds = last_.seconds > 0 ? last_.seconds : in_phase;
     if (seconds > 0.1 && last_.total == 0) add(", %.0f states/s", last_.states / seconds);
   }
-  if (last_.total) add(", %llu/%llu done", static_cast<unsigned long long>(last_.done),
-                       static_cast<unsigned long long>(last_.total));
+  if (last_.total)
+    add(", %llu/%llu done", static_cast<unsigned long long>(last_.done),
+        static_cast<unsigned long long>(last_.total));
   return buf;
 }
 

@@ -9,8 +9,7 @@ namespace sfcv::cli {
 
 void add_limit_options(CLI::App& sub, LimitOptions& o, const std::string& what_stops,
                        MemoryLimit memory) {
-  sub.add_option("--max-states", o.max_states,
-                 "Stop after N states (N > 0): " + what_stops);
+  sub.add_option("--max-states", o.max_states, "Stop after N states (N > 0): " + what_stops);
   sub.add_option("--timeout", o.timeout,
                  "Stop after S seconds (S > 0), whatever the phase: " + what_stops);
   if (memory == MemoryLimit::Offered)
@@ -29,10 +28,14 @@ std::uint64_t parse_memory(const std::string& text) {
   }
   const std::string unit = text.substr(used);
   double factor = 1;
-  if (unit == "K" || unit == "k" || unit == "KB" || unit == "KiB") factor = 1024.0;
-  else if (unit == "M" || unit == "MB" || unit == "MiB") factor = 1024.0 * 1024;
-  else if (unit == "G" || unit == "GB" || unit == "GiB") factor = 1024.0 * 1024 * 1024;
-  else if (!unit.empty() && unit != "B") used = 0;
+  if (unit == "K" || unit == "k" || unit == "KB" || unit == "KiB")
+    factor = 1024.0;
+  else if (unit == "M" || unit == "MB" || unit == "MiB")
+    factor = 1024.0 * 1024;
+  else if (unit == "G" || unit == "GB" || unit == "GiB")
+    factor = 1024.0 * 1024 * 1024;
+  else if (!unit.empty() && unit != "B")
+    used = 0;
   if (used == 0 || !(value > 0) || value * factor > 1e15 || value * factor < 1)
     throw UsageError("bad --memory '" + text + "' (expected a size such as 2G, 512M or 64K)");
   return static_cast<std::uint64_t>(value * factor);

@@ -16,7 +16,9 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
     sub.add_flag("--multi-input-change", o.multi_input_change,
                  "Grafcet: several inputs may change at once (default: one per event)");
   }
-  sub.add_option("--pou", o.pous, "IEC: POU(s) run in one cycle, in this order (default: every PROGRAM, else the SFC POU)");
+  sub.add_option(
+      "--pou", o.pous,
+      "IEC: POU(s) run in one cycle, in this order (default: every PROGRAM, else the SFC POU)");
   sub.add_option("--priority", o.priority, "IEC conflicts: standard (default) or none");
   sub.add_option("--time", o.time, "IEC timers: abstract (default) or discrete");
   sub.add_option("--cycle", o.cycle, "IEC cycle time for --time discrete (default 10ms)");
@@ -39,7 +41,8 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
   if (built.semantics == "grafcet") {
     // An IEC option on a Grafcet would be silently ignored: say so instead.
     if (!o.pous.empty() || o.priority != "standard" || o.time != "abstract" || o.cycle != "10ms")
-      throw InputError(command + ": --pou, --priority, --time and --cycle apply to the IEC 61131-3 "
+      throw InputError(command +
+                       ": --pou, --priority, --time and --cycle apply to the IEC 61131-3 "
                        "semantics only");
     semantics::GrafcetOptions g;
     g.single_input_change = !o.multi_input_change;

@@ -127,16 +127,36 @@ class StandardCheckRunner {
     r.name = std::string(logic::to_string(id));
     r.check = r.name;
     switch (id) {
-      case StandardCheck::Reachable: reachable(r); break;
-      case StandardCheck::DeadTransitions: dead_transitions(r); break;
-      case StandardCheck::Reentry: per_step_formula(r, false); break;
-      case StandardCheck::GlobalDeadlock: global_deadlock(r); break;
-      case StandardCheck::LocalDeadlock: local_deadlock(r); break;
-      case StandardCheck::InitialReturn: initial_return(r); break;
-      case StandardCheck::Conflicts: conflicts(r); break;
-      case StandardCheck::StoredActions: stored_actions(r); break;
-      case StandardCheck::OutputConflicts: output_conflicts(r); break;
-      case StandardCheck::Instability: instability(r); break;
+      case StandardCheck::Reachable:
+        reachable(r);
+        break;
+      case StandardCheck::DeadTransitions:
+        dead_transitions(r);
+        break;
+      case StandardCheck::Reentry:
+        per_step_formula(r, false);
+        break;
+      case StandardCheck::GlobalDeadlock:
+        global_deadlock(r);
+        break;
+      case StandardCheck::LocalDeadlock:
+        local_deadlock(r);
+        break;
+      case StandardCheck::InitialReturn:
+        initial_return(r);
+        break;
+      case StandardCheck::Conflicts:
+        conflicts(r);
+        break;
+      case StandardCheck::StoredActions:
+        stored_actions(r);
+        break;
+      case StandardCheck::OutputConflicts:
+        output_conflicts(r);
+        break;
+      case StandardCheck::Instability:
+        instability(r);
+        break;
     }
     return r;
   }
@@ -165,7 +185,9 @@ class StandardCheckRunner {
   }
   /// Throws LimitReached(Time) once the run's deadline has passed.
   void poll() const { task_.limits.check_time("running the standard checks"); }
-  bool contains(const Set& set, const State& x) { return !sp_.empty(sp_.meet(set, sp_.singleton(x))); }
+  bool contains(const Set& set, const State& x) {
+    return !sp_.empty(sp_.meet(set, sp_.singleton(x)));
+  }
   Set step_set(const StepRef& step) { return sp_.observable(step.observable); }
   const StepRef* find_step(const std::string& pou, const std::string& chart,
                            const std::string& step) const {
@@ -236,7 +258,8 @@ class StandardCheckRunner {
       for (std::uint32_t t = 0; t < matched.size(); ++t) {
         if (!model::iequals(ts_.transitions()[t].chart, steps_[i].chart)) continue;
         bool enters = false;
-        for (const auto& d : matched[t]->targets) enters = enters || model::iequals(d, steps_[i].step);
+        for (const auto& d : matched[t]->targets)
+          enters = enters || model::iequals(d, steps_[i].step);
         if (enters) entry = sp_.join(entry, sp_.fires(t));
       }
       if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
@@ -250,8 +273,10 @@ class StandardCheckRunner {
                          const std::string& what) {
     const Set bad = sp_.minus(sp_.reached(), sp_.backward(entry));
     if (sp_.empty(bad)) return;
-    add(r, "step " + logic::describe_step(steps_[step]) + " (crossed only during transient "
-           "evolutions)" + what);
+    add(r, "step " + logic::describe_step(steps_[step]) +
+               " (crossed only during transient "
+               "evolutions)" +
+               what);
     if (!r.trace) {
       r.trace = sp_.path_to(bad);
       r.trace->note = "from the last situation " + logic::describe_step(steps_[step]) +
@@ -311,8 +336,8 @@ class StandardCheckRunner {
     }
     if (dead && !sp_.complete()) {
       r.verdict = Verdict::Unknown;
-      r.message = std::to_string(dead) + " transitions not fired before the limit; " +
-                  limit_message();
+      r.message =
+          std::to_string(dead) + " transitions not fired before the limit; " + limit_message();
       return;
     }
     finish(r, "all " + std::to_string(trs.size()) + " transitions can fire");
@@ -325,7 +350,8 @@ class StandardCheckRunner {
       if (s.on_loop || !task_.project) loop.push_back(&s);
     if (loop.empty()) {
       r.verdict = steps_.empty() ? Verdict::NotChecked : Verdict::Holds;
-      r.message = steps_.empty() ? "not checked: the system has no steps" : "no step lies on a loop";
+      r.message =
+          steps_.empty() ? "not checked: the system has no steps" : "no step lies on a loop";
       return;
     }
     if (!sp_.complete()) {
@@ -343,8 +369,10 @@ class StandardCheckRunner {
       poll();
       const auto index = static_cast<std::size_t>(step - steps_.data());
       if (auto it = transient.find(index); it != transient.end()) {
-        if (!af) transient_reentry(r, index, it->second, ": a reachable situation exists from "
-                                                          "which it can never be crossed again");
+        if (!af)
+          transient_reentry(r, index, it->second,
+                            ": a reachable situation exists from "
+                            "which it can never be crossed again");
         continue;
       }
       auto f = af ? logic::reentry_fair_formula(ts_, step->observable)
@@ -359,7 +387,8 @@ class StandardCheckRunner {
       if (!r.trace) {
         auto t = sp_.explain(logic::push_negation(f), bad, af);
         t.marked = {step->observable};
-        t.note = af ? "a fair run on which " + logic::describe_step(*step) + " never becomes active again"
+        t.note = af ? "a fair run on which " + logic::describe_step(*step) +
+                          " never becomes active again"
                     : "after the last situation, " + logic::describe_step(*step) +
                           " can never become active again";
         r.trace = std::move(t);
@@ -378,7 +407,8 @@ class StandardCheckRunner {
     }
     const Set stuck = sp_.stuck();
     // On an incomplete graph only a situation without any successor is certainly dead.
-    const Set dead = sp_.complete() ? sp_.minus(sp_.reached(), sp_.backward(sp_.fires_any())) : stuck;
+    const Set dead =
+        sp_.complete() ? sp_.minus(sp_.reached(), sp_.backward(sp_.fires_any())) : stuck;
     const auto shown = sp_.first(dead, kMaxSituations + 1);
     for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i) {
       const auto& s = shown[i];
@@ -426,8 +456,9 @@ class StandardCheckRunner {
       const auto nx = logic::make_not(x);
       const auto never_back =
           logic::make_op(logic::Op::EF, {logic::make_and(nx, logic::make_op(logic::Op::AG, {nx}))});
-      for (const auto& [f, what] : {std::pair{never_left, "once active, is never left"},
-                                    std::pair{never_back, "once inactive, never becomes active again"}}) {
+      for (const auto& [f, what] :
+           {std::pair{never_left, "once active, is never left"},
+            std::pair{never_back, "once inactive, never becomes active again"}}) {
         const Set at = sp_.meet(sp_.initial(), sp_.ctl(f, false));
         if (sp_.empty(at)) continue;
         add(r, "step " + logic::describe_step(step) + ", " + what);
@@ -508,9 +539,10 @@ class StandardCheckRunner {
   void conflicts(PropertyResult& r) {
     if (ts_.kind() == semantics::SemanticsKind::Iec61131 && task_.priority_resolves_conflicts) {
       r.verdict = Verdict::NotChecked;
-      r.message = "not checked: alternative transitions are resolved by the standard priority "
-                  "(explicit priority, then document order); run with --priority none to find "
-                  "the conflicts";
+      r.message =
+          "not checked: alternative transitions are resolved by the standard priority "
+          "(explicit priority, then document order); run with --priority none to find "
+          "the conflicts";
       return;
     }
     std::set<std::string> seen;
@@ -523,15 +555,15 @@ class StandardCheckRunner {
     };
     bool visited = false;
     if (ts_.kind() == semantics::SemanticsKind::Iec61131) {
-      visited = sp_.simultaneous([&](std::span<const std::uint32_t> a,
-                                     std::span<const std::uint32_t> b, const State& s) {
-        poll();
-        const auto text = names(a) + " and " + names(b);
-        if (!seen.insert(text).second) return;
-        if (!first) first = s;
-        add(r, "transitions " + text + " can both fire from " + sp_.describe(s) +
-                   " (no priority between them)");
-      });
+      visited = sp_.simultaneous(
+          [&](std::span<const std::uint32_t> a, std::span<const std::uint32_t> b, const State& s) {
+            poll();
+            const auto text = names(a) + " and " + names(b);
+            if (!seen.insert(text).second) return;
+            if (!first) first = s;
+            add(r, "transitions " + text + " can both fire from " + sp_.describe(s) +
+                       " (no priority between them)");
+          });
     } else {
       // Grafcet clears every clearable transition at once: a conflict is two transitions
       // with a common upstream step cleared together.
@@ -544,8 +576,9 @@ class StandardCheckRunner {
       }
       if (upstream.empty()) {
         r.verdict = Verdict::NotChecked;
-        r.message = "not checked: the transitions of the system could not be matched with the "
-                    "chart's transitions";
+        r.message =
+            "not checked: the transitions of the system could not be matched with the "
+            "chart's transitions";
         return;
       }
       visited = sp_.simultaneous([&](std::span<const std::uint32_t> fired,
@@ -593,7 +626,8 @@ class StandardCheckRunner {
       std::map<std::string, std::pair<std::vector<const StepRef*>, std::vector<const StepRef*>>> sr;
       std::map<std::string, std::string> first_set_where;
       for (const auto& a : pou.associations) {
-        const bool set = a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
+        const bool set = a.qualifier == model::Qualifier::S ||
+                         a.qualifier == model::Qualifier::SD ||
                          a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
         const bool reset = a.qualifier == model::Qualifier::R;
         if (!set && !reset) continue;
@@ -620,7 +654,8 @@ class StandardCheckRunner {
         std::vector<Set> set_at, reset_at;
         Set any_set = sp_.none(), any_reset = sp_.none();
         for (const auto* x : sets) any_set = sp_.join(any_set, set_at.emplace_back(step_set(*x)));
-        for (const auto* y : resets) any_reset = sp_.join(any_reset, reset_at.emplace_back(step_set(*y)));
+        for (const auto* y : resets)
+          any_reset = sp_.join(any_reset, reset_at.emplace_back(step_set(*y)));
         poll();
         if (const Set both = sp_.meet(any_set, any_reset); !sp_.empty(both)) {
           const State s = sp_.one(both);
@@ -639,10 +674,12 @@ class StandardCheckRunner {
             std::string fname = fields[i].name;
             if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
               fname.resize(fname.size() - 7);
-            if (model::iequals(fname, name) || model::iequals(fname, action)) field = static_cast<std::int64_t>(i);
+            if (model::iequals(fname, name) || model::iequals(fname, action))
+              field = static_cast<std::int64_t>(i);
           }
         if (field < 0) {
-          not_checked.push_back("set again while stored (" + name + "): the system exposes no "
+          not_checked.push_back("set again while stored (" + name +
+                                "): the system exposes no "
                                 "stored flag for it");
           continue;
         }
@@ -651,7 +688,8 @@ class StandardCheckRunner {
         Set any_again = sp_.none();
         for (const auto& x : set_at) {
           poll();
-          any_again = sp_.join(any_again, again.emplace_back(sp_.meet(sp_.minus(flagged, x), sp_.pre(x))));
+          any_again =
+              sp_.join(any_again, again.emplace_back(sp_.meet(sp_.minus(flagged, x), sp_.pre(x))));
         }
         if (!sp_.empty(any_again)) {
           const State s = sp_.one(any_again);
@@ -684,26 +722,29 @@ class StandardCheckRunner {
           for (std::size_t j = i + 1; j < list.size(); ++j) {
             const auto* a = list[i];
             const auto* b = list[j];
-            if (a->when != model::StoredWhen::Activation || b->when != model::StoredWhen::Activation)
+            if (a->when != model::StoredWhen::Activation ||
+                b->when != model::StoredWhen::Activation)
               continue;
             if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
             const auto* sa = find_step(pou.name, a->chart, a->step);
             const auto* sb = find_step(pou.name, b->chart, b->step);
             if (!sa || !sb) {
-              not_checked.push_back("stored actions on " + a->variable + " at steps without "
+              not_checked.push_back("stored actions on " + a->variable +
+                                    " at steps without "
                                     "an observable");
               continue;
             }
             poll();
             // Both steps activated by one evolution.
             const Set both = sp_.meet(step_set(*sa), step_set(*sb));
-            const Set from = sp_.meet(sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)),
-                                      sp_.pre(both));
+            const Set from = sp_.meet(
+                sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)), sp_.pre(both));
             if (sp_.empty(from)) continue;
             const State s = sp_.one(from);
-            add(r, "output " + a->variable + " is set to different values at once by the "
-                   "activation of " + sa->step + " and " + sb->step + ", from situation " +
-                   sp_.describe(s));
+            add(r, "output " + a->variable +
+                       " is set to different values at once by the "
+                       "activation of " +
+                       sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
             note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
           }
         if (list.size() > 0)
@@ -722,10 +763,10 @@ class StandardCheckRunner {
     finish(r, "stored actions are used correctly");
     if (r.verdict == Verdict::Holds && !not_checked.empty()) {
       r.verdict = Verdict::NotChecked;
-      r.message = "no defect found in the parts checked; not checked: " + not_checked.front() +
-                  (not_checked.size() > 1 ? " (and " + std::to_string(not_checked.size() - 1) +
-                                                " more)"
-                                          : "");
+      r.message =
+          "no defect found in the parts checked; not checked: " + not_checked.front() +
+          (not_checked.size() > 1 ? " (and " + std::to_string(not_checked.size() - 1) + " more)"
+                                  : "");
     } else if (!not_checked.empty()) {
       r.message = "not checked: " + not_checked.front();
     }
@@ -739,8 +780,9 @@ class StandardCheckRunner {
     }
     if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
       r.verdict = Verdict::NotChecked;
-      r.message = "not checked for Grafcet: continuous actions only assert their output; stored "
-                  "actions assigning different values at once are reported by stored-actions";
+      r.message =
+          "not checked for Grafcet: continuous actions only assert their output; stored "
+          "actions assigning different values at once are reported by stored-actions";
       return;
     }
     std::vector<std::string> not_checked;
@@ -789,7 +831,10 @@ class StandardCheckRunner {
                 if (hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action) break;
                 hit.reset();
               }
-              if (hit) *idx = *hit; else ok = false;
+              if (hit)
+                *idx = *hit;
+              else
+                ok = false;
             }
             if (!ok) {
               not_checked.push_back(var + " written by " + a.action + " and " + b.action +

@@ -9,11 +9,10 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <pugixml.hpp>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <pugixml.hpp>
 
 #include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
@@ -39,7 +38,9 @@ std::string_view local_name(std::string_view qualified) {
 }
 
 /// The xsi:type of a node without its package prefix ("grafcet:Step" -> "Step").
-std::string_view type_of(pugi::xml_node n) { return local_name(n.attribute("xsi:type").value()); }
+std::string_view type_of(pugi::xml_node n) {
+  return local_name(n.attribute("xsi:type").value());
+}
 
 struct StepInfo {
   int chart = -1;
@@ -59,8 +60,10 @@ class Reader {
     const auto parsed = doc_.load_buffer(text_.data(), text_.size(),
                                          pugi::parse_default | pugi::parse_ws_pcdata_single);
     if (!parsed) {
-      SourceLocation l = at_offset(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
-      diags_.push_back({model::Severity::Error, l, std::string("XML error: ") + parsed.description()});
+      SourceLocation l =
+          at_offset(static_cast<std::size_t>(std::max<std::ptrdiff_t>(parsed.offset, 0)));
+      diags_.push_back(
+          {model::Severity::Error, l, std::string("XML error: ") + parsed.description()});
       return std::nullopt;
     }
     root_ = doc_.document_element();
@@ -113,8 +116,9 @@ class Reader {
       }
       // EMF numbers the elements of many-valued features even when there is one.
       static const std::set<std::string_view> kMany{
-          "partialGrafcets", "steps",       "transitions", "synchronizations",     "macrosteps",
-          "arcs",            "actionTypes", "actionLinks", "variableDeclarations", "subterm"};
+          "partialGrafcets",      "steps",  "transitions", "synchronizations",
+          "macrosteps",           "arcs",   "actionTypes", "actionLinks",
+          "variableDeclarations", "subterm"};
       std::string seg = "@" + std::string(n.name());
       if (count > 1 || kMany.count(n.name())) seg += "." + std::to_string(index);
       segments.push_back(std::move(seg));
@@ -140,14 +144,16 @@ class Reader {
 
   /// Resolves one XMI reference ("//@a.0/@b.3/@c") from the root; fails when it leads nowhere.
   pugi::xml_node resolve(pugi::xml_node from, std::string_view ref) const {
-    if (ref.substr(0, 2) != "//") throw Failure{from, "unsupported reference '" + std::string(ref) + "'"};
+    if (ref.substr(0, 2) != "//")
+      throw Failure{from, "unsupported reference '" + std::string(ref) + "'"};
     pugi::xml_node n = root_;
     std::size_t i = 2;
     while (i < ref.size()) {
       std::size_t j = ref.find('/', i);
       if (j == std::string_view::npos) j = ref.size();
       std::string_view seg = ref.substr(i, j - i);
-      if (seg.empty() || seg[0] != '@') throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
+      if (seg.empty() || seg[0] != '@')
+        throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
       seg.remove_prefix(1);
       std::size_t index = 0;
       const auto dot = seg.find('.');
@@ -208,7 +214,9 @@ class Reader {
       if (i == b) return std::nullopt;
       std::int64_t scale = 1000;
       for (const auto& [unit, ms] : {std::pair<std::string_view, std::int64_t>{"ms", 1},
-                                     {"min", 60000}, {"s", 1000}, {"h", 3600000}})
+                                     {"min", 60000},
+                                     {"s", 1000},
+                                     {"h", 3600000}})
         if (s.substr(i, unit.size()) == unit) {
           scale = ms;
           i += unit.size();
@@ -247,7 +255,8 @@ class Reader {
       if (name.empty()) throw Failure{decl, "variable declaration without a name"};
       check_name(decl, name, "variable name");
       if (kind == "step") {
-        if (!decl.attribute("step")) throw Failure{decl, "step variable '" + name + "' names no step"};
+        if (!decl.attribute("step"))
+          throw Failure{decl, "step variable '" + name + "' names no step"};
         step_vars_[decl] = resolve(decl, decl.attribute("step").value());
         continue;
       }
@@ -265,10 +274,14 @@ class Reader {
       model::Variable v;
       v.name = name;
       v.where = where(decl);
-      if (kind == "input") v.direction = model::VarDirection::Input;
-      else if (kind == "output") v.direction = model::VarDirection::Output;
-      else if (kind == "internal") v.direction = model::VarDirection::Local;
-      else throw Failure{decl, "unknown variableDeclarationType '" + kind + "'"};
+      if (kind == "input")
+        v.direction = model::VarDirection::Input;
+      else if (kind == "output")
+        v.direction = model::VarDirection::Output;
+      else if (kind == "internal")
+        v.direction = model::VarDirection::Local;
+      else
+        throw Failure{decl, "unknown variableDeclarationType '" + kind + "'"};
       if (sort == "Bool") {
         v.type = model::Type::boolean();
       } else if (sort == "Integer") {
@@ -279,9 +292,11 @@ class Reader {
                  std::to_string(g7::kDefaultIntLo) + ".." + std::to_string(g7::kDefaultIntHi) +
                  " assumed");
       } else {
-        throw Failure{decl, "variable '" + name + "' has unsupported sort '" + std::string(sort) + "'"};
+        throw Failure{decl,
+                      "variable '" + name + "' has unsupported sort '" + std::string(sort) + "'"};
       }
-      if (pou_.find_variable(name)) throw Failure{decl, "variable '" + name + "' is declared twice"};
+      if (pou_.find_variable(name))
+        throw Failure{decl, "variable '" + name + "' is declared twice"};
       var_names_[decl] = name;
       if (!decl.attribute("variableDeclarationType")) implicit_inputs_.insert(name);
       pou_.variables.push_back(std::move(v));
@@ -305,7 +320,8 @@ class Reader {
       if (pou_.find_chart(c.name)) {
         const std::string renamed = c.name + "_" + std::to_string(index);
         warn(pg, model::Severity::Warning,
-             "partial grafcet name '" + c.name + "' is used twice: this one is named '" + renamed + "'");
+             "partial grafcet name '" + c.name + "' is used twice: this one is named '" + renamed +
+                 "'");
         c.name = renamed;
       }
       c.where = where(pg);
@@ -321,12 +337,14 @@ class Reader {
     for (const auto& c : pou_.charts)
       for (const auto& s : c.steps)
         if (s.kind == model::StepKind::Enclosing && s.enclosed.empty())
-          diags_.push_back({model::Severity::Warning, s.where,
-                            "enclosing step '" + s.name + "' of '" + c.name +
-                                "' encloses no partial grafcet"});
+          diags_.push_back(
+              {model::Severity::Warning, s.where,
+               "enclosing step '" + s.name + "' of '" + c.name + "' encloses no partial grafcet"});
   }
 
-  model::Chart& chart(pugi::xml_node pg) { return pou_.charts[static_cast<std::size_t>(chart_of_.at(pg))]; }
+  model::Chart& chart(pugi::xml_node pg) {
+    return pou_.charts[static_cast<std::size_t>(chart_of_.at(pg))];
+  }
 
   void add_step(pugi::xml_node pg, pugi::xml_node n, model::Step s) {
     s.name = n.attribute("id").value();
@@ -337,7 +355,8 @@ class Reader {
     s.where = where(n);
     model::Chart& c = chart(pg);
     if (c.find_step(s.name))
-      throw Failure{n, "step id '" + s.name + "' is used twice in partial grafcet '" + c.name + "'"};
+      throw Failure{n,
+                    "step id '" + s.name + "' is used twice in partial grafcet '" + c.name + "'"};
     steps_[n] = {chart_of_.at(pg), s.name};
     c.steps.push_back(std::move(s));
   }
@@ -346,7 +365,8 @@ class Reader {
     for (auto n : pg.children("steps")) {
       const std::string_view t = type_of(n);
       model::Step s;
-      if (t == "EnclosingStep") s.kind = model::StepKind::Enclosing;
+      if (t == "EnclosingStep")
+        s.kind = model::StepKind::Enclosing;
       else if (t != "Step" && !t.empty())
         throw Failure{n, "unsupported step type '" + std::string(t) + "'"};
       add_step(pg, n, std::move(s));
@@ -387,7 +407,8 @@ class Reader {
     for (auto n : pg.children("steps"))
       if (type_of(n) == "EnclosingStep")
         for (auto enclosed : resolve_list(n, "partialGrafcets")) enclose(n, enclosed, n);
-    if (pg.attribute("enclosingStep")) enclose(resolve(pg, pg.attribute("enclosingStep").value()), pg, pg);
+    if (pg.attribute("enclosingStep"))
+      enclose(resolve(pg, pg.attribute("enclosingStep").value()), pg, pg);
   }
 
   void read_transitions(pugi::xml_node pg) {
@@ -402,7 +423,8 @@ class Reader {
       check_name(t, tr.name, "transition id");
       tr.where = where(t);
       tr.order = static_cast<int>(c.transitions.size());
-      ExprPtr guard = t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);
+      ExprPtr guard =
+          t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);
       tr.guard = timed(t, guard, {});
       for (const auto& other : c.transitions)
         if (other.name == tr.name)
@@ -420,7 +442,8 @@ class Reader {
       if (steps_.count(n)) return Kind::Step;
       if (transitions.count(n)) return Kind::Transition;
       if (syncs.count(n)) return Kind::Sync;
-      throw Failure{arc, "an arc ends at an element that is no step, transition or synchronization"};
+      throw Failure{arc,
+                    "an arc ends at an element that is no step, transition or synchronization"};
     };
     std::vector<std::vector<int>> up(c.transitions.size()), down(c.transitions.size());
     std::map<pugi::xml_node, std::vector<int>> sync_in_steps, sync_out_steps;
@@ -432,13 +455,21 @@ class Reader {
       const auto t = resolve(arc, arc.attribute("target").value());
       const Kind ks = kind_of(s, arc), kt = kind_of(t, arc);
       auto step_index = [&](pugi::xml_node n) { return c.step_index(steps_.at(n).name); };
-      if (ks == Kind::Step && kt == Kind::Transition) up[transitions.at(t)].push_back(step_index(s));
-      else if (ks == Kind::Transition && kt == Kind::Step) down[transitions.at(s)].push_back(step_index(t));
-      else if (ks == Kind::Step && kt == Kind::Sync) sync_in_steps[t].push_back(step_index(s));
-      else if (ks == Kind::Sync && kt == Kind::Transition) sync_out_trans[s].push_back(transitions.at(t));
-      else if (ks == Kind::Transition && kt == Kind::Sync) sync_in_trans[t].push_back(transitions.at(s));
-      else if (ks == Kind::Sync && kt == Kind::Step) sync_out_steps[s].push_back(step_index(t));
-      else throw Failure{arc, "an arc must join a step and a transition, possibly through a synchronization"};
+      if (ks == Kind::Step && kt == Kind::Transition)
+        up[transitions.at(t)].push_back(step_index(s));
+      else if (ks == Kind::Transition && kt == Kind::Step)
+        down[transitions.at(s)].push_back(step_index(t));
+      else if (ks == Kind::Step && kt == Kind::Sync)
+        sync_in_steps[t].push_back(step_index(s));
+      else if (ks == Kind::Sync && kt == Kind::Transition)
+        sync_out_trans[s].push_back(transitions.at(t));
+      else if (ks == Kind::Transition && kt == Kind::Sync)
+        sync_in_trans[t].push_back(transitions.at(s));
+      else if (ks == Kind::Sync && kt == Kind::Step)
+        sync_out_steps[s].push_back(step_index(t));
+      else
+        throw Failure{
+            arc, "an arc must join a step and a transition, possibly through a synchronization"};
     }
     for (const auto& [sync, trs] : sync_out_trans)
       for (int tr : trs)
@@ -450,7 +481,8 @@ class Reader {
       const bool steps_in = !sync_in_steps[s].empty(), steps_out = !sync_out_steps[s].empty();
       const bool trans_in = !sync_in_trans[s].empty(), trans_out = !sync_out_trans[s].empty();
       if ((steps_in && steps_out) || (trans_in && trans_out) || (steps_in && trans_in))
-        throw Failure{s, "a synchronization joins either steps to transitions or transitions to steps"};
+        throw Failure{
+            s, "a synchronization joins either steps to transitions or transitions to steps"};
     }
     for (std::size_t i = 0; i < c.transitions.size(); ++i) {
       auto names = [&](std::vector<int> idx) {
@@ -465,10 +497,12 @@ class Reader {
       tr.targets = names(down[i]);
       if (tr.sources.empty())
         diags_.push_back({model::Severity::Note, tr.where,
-                          "transition " + tr.name + " of '" + c.name + "' is a source transition (no upstream step)"});
+                          "transition " + tr.name + " of '" + c.name +
+                              "' is a source transition (no upstream step)"});
       if (tr.targets.empty())
         diags_.push_back({model::Severity::Note, tr.where,
-                          "transition " + tr.name + " of '" + c.name + "' is a sink transition (no downstream step)"});
+                          "transition " + tr.name + " of '" + c.name +
+                              "' is a sink transition (no downstream step)"});
     }
   }
 
@@ -514,12 +548,17 @@ class Reader {
         const std::string when = act.attribute("storedActionType")
                                      ? act.attribute("storedActionType").value()
                                      : "activation";
-        if (when == "activation") sa.when = model::StoredWhen::Activation;
-        else if (when == "deactivation") sa.when = model::StoredWhen::Deactivation;
-        else if (when == "event") sa.when = model::StoredWhen::Event;
-        else throw Failure{act, "unknown storedActionType '" + when + "'"};
+        if (when == "activation")
+          sa.when = model::StoredWhen::Activation;
+        else if (when == "deactivation")
+          sa.when = model::StoredWhen::Deactivation;
+        else if (when == "event")
+          sa.when = model::StoredWhen::Event;
+        else
+          throw Failure{act, "unknown storedActionType '" + when + "'"};
         if (sa.when == model::StoredWhen::Event) {
-          if (!act.child("term")) throw Failure{act, "a stored action on event needs its event term"};
+          if (!act.child("term"))
+            throw Failure{act, "a stored action on event needs its event term"};
           sa.event = condition(act.child("term"));
         }
         if (!act.child("value")) throw Failure{act, "stored action without a value"};
@@ -532,19 +571,26 @@ class Reader {
         fo.chart = c.name;
         fo.step = step;
         fo.where = where(act);
-        if (!act.attribute("partialGrafcet")) throw Failure{act, "forcing order without a partial grafcet"};
+        if (!act.attribute("partialGrafcet"))
+          throw Failure{act, "forcing order without a partial grafcet"};
         const auto target = resolve(act, act.attribute("partialGrafcet").value());
-        if (!chart_of_.count(target)) throw Failure{act, "the forced element is not a partial grafcet"};
+        if (!chart_of_.count(target))
+          throw Failure{act, "the forced element is not a partial grafcet"};
         fo.target = chart(target).name;
         const std::string kind = act.attribute("forcingOrderType")
                                      ? act.attribute("forcingOrderType").value()
                                      : "currentSituation";
         const auto forced = resolve_list(act, "forcedSteps");
-        if (kind == "currentSituation") fo.kind = model::ForcingKind::Current;
-        else if (kind == "emptySituation") fo.kind = model::ForcingKind::Empty;
-        else if (kind == "initialSituation") fo.kind = model::ForcingKind::Initial;
-        else if (kind == "explicitSituation") fo.kind = model::ForcingKind::Situation;
-        else throw Failure{act, "unknown forcingOrderType '" + kind + "'"};
+        if (kind == "currentSituation")
+          fo.kind = model::ForcingKind::Current;
+        else if (kind == "emptySituation")
+          fo.kind = model::ForcingKind::Empty;
+        else if (kind == "initialSituation")
+          fo.kind = model::ForcingKind::Initial;
+        else if (kind == "explicitSituation")
+          fo.kind = model::ForcingKind::Situation;
+        else
+          throw Failure{act, "unknown forcingOrderType '" + kind + "'"};
         if (fo.kind == model::ForcingKind::Situation) {
           for (auto s : forced) {
             const auto st = steps_.find(s);
@@ -554,10 +600,13 @@ class Reader {
           }
         } else if (!forced.empty()) {
           warn(act, model::Severity::Warning,
-               "forcing order on '" + fo.target + "' lists forced steps but its forcingOrderType is " +
-                   kind + (act.attribute("forcingOrderType") ? "" : " (the meta-model's default)") +
+               "forcing order on '" + fo.target +
+                   "' lists forced steps but its forcingOrderType is " + kind +
+                   (act.attribute("forcingOrderType") ? "" : " (the meta-model's default)") +
                    ": the steps are ignored, as AGRAFE does; read as " + fo.target +
-                   (fo.kind == model::ForcingKind::Current ? "{*}" : fo.kind == model::ForcingKind::Empty ? "{}" : "{INIT}"));
+                   (fo.kind == model::ForcingKind::Current ? "{*}"
+                    : fo.kind == model::ForcingKind::Empty ? "{}"
+                                                           : "{INIT}"));
         }
         pou_.forcing_orders.push_back(std::move(fo));
       } else {
@@ -581,8 +630,10 @@ class Reader {
       var->direction = stored ? model::VarDirection::Local : model::VarDirection::Output;
       implicit_inputs_.erase(var->name);
       warn(decl, model::Severity::Warning,
-           "variable '" + var->name + "' has no variableDeclarationType (input by default) but an "
-           "action assigns it: read as " + (stored ? "internal" : "output"));
+           "variable '" + var->name +
+               "' has no variableDeclarationType (input by default) but an "
+               "action assigns it: read as " +
+               (stored ? "internal" : "output"));
     }
     if (var->direction == model::VarDirection::Input)
       throw Failure{v, "an action assigns the input '" + var->name + "'"};
@@ -634,18 +685,22 @@ class Reader {
     if (t == "IntegerConstant") return model::make_int(n.attribute("value").as_llong(0), at);
     if (t == "And" || t == "Or") {
       if (args.size() < 2) throw Failure{n, std::string(t) + " takes at least 2 subterms"};
-      for (std::size_t i = 0; i < args.size(); ++i)
-        args[i] = as_condition(args[i], n);
+      for (std::size_t i = 0; i < args.size(); ++i) args[i] = as_condition(args[i], n);
       return model::make_nary(t == "And" ? ExprKind::And : ExprKind::Or, std::move(args), at);
     }
     if (t == "Not" || t == "RisingEdge" || t == "FallingEdge") {
       arity(1);
-      const ExprKind k = t == "Not" ? ExprKind::Not : t == "RisingEdge" ? ExprKind::Rising : ExprKind::Falling;
+      const ExprKind k = t == "Not"          ? ExprKind::Not
+                         : t == "RisingEdge" ? ExprKind::Rising
+                                             : ExprKind::Falling;
       return model::make_unary(k, as_condition(args[0], n), at);
     }
     static const std::pair<std::string_view, ExprKind> kBinary[] = {
-        {"Equality", ExprKind::Eq}, {"LessThan", ExprKind::Lt}, {"GreaterThan", ExprKind::Gt},
-        {"Addition", ExprKind::Add}, {"Substraction", ExprKind::Sub}};
+        {"Equality", ExprKind::Eq},
+        {"LessThan", ExprKind::Lt},
+        {"GreaterThan", ExprKind::Gt},
+        {"Addition", ExprKind::Add},
+        {"Substraction", ExprKind::Sub}};
     for (const auto& [name, kind] : kBinary) {
       if (t == name) {
         arity(2);
@@ -656,13 +711,16 @@ class Reader {
   }
 
   ExprPtr variable(pugi::xml_node n) {
-    if (!n.attribute("variableDeclaration")) throw Failure{n, "variable term without a declaration"};
+    if (!n.attribute("variableDeclaration"))
+      throw Failure{n, "variable term without a declaration"};
     const auto decl = resolve(n, n.attribute("variableDeclaration").value());
     const SourceLocation at = where(n);
-    if (auto it = var_names_.find(decl); it != var_names_.end()) return model::make_name(it->second, at);
+    if (auto it = var_names_.find(decl); it != var_names_.end())
+      return model::make_name(it->second, at);
     if (auto it = delay_vars_.find(decl); it != delay_vars_.end()) {
       check_step_variable(n, it->second.step_var.substr(1));
-      return model::make_delay(it->second.t1, model::make_name(it->second.step_var, at), it->second.t2, at);
+      return model::make_delay(it->second.t1, model::make_name(it->second.step_var, at),
+                               it->second.t2, at);
     }
     if (auto it = step_vars_.find(decl); it != step_vars_.end()) {
       const auto st = steps_.find(it->second);
@@ -680,7 +738,8 @@ class Reader {
       if (c.find_step(step)) ++found;
     if (found == 0) throw Failure{n, "step variable X" + step + " refers to no step"};
     if (found > 1)
-      throw Failure{n, "step variable X" + step + " is ambiguous: several partial grafcets have a step " + step};
+      throw Failure{n, "step variable X" + step +
+                           " is ambiguous: several partial grafcets have a step " + step};
     if (pou_.find_variable("X" + step))
       throw Failure{n, "step variable X" + step + " clashes with a declared variable of that name"};
   }

@@ -8,8 +8,8 @@
 namespace sfcv::io::g7 {
 
 bool is_reserved_in_expression(std::string_view word) {
-  static constexpr std::array<std::string_view, 6> kWords{"RE", "FE", "TRUE", "FALSE", "MOD",
-                                                          "INIT"};
+  static constexpr std::array<std::string_view, 6> kWords{"RE",    "FE",  "TRUE",
+                                                          "FALSE", "MOD", "INIT"};
   for (auto w : kWords)
     if (model::iequals(w, word)) return true;
   return false;

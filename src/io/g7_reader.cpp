@@ -12,7 +12,6 @@
 #include <string>
 #include <unordered_map>
 #include <utility>
-#include <unordered_map>
 #include <vector>
 
 #include "io/g7_lexicon.hpp"
@@ -64,8 +63,8 @@ class Lexer {
       const auto c = static_cast<unsigned char>(text_[pos_]);
       if (std::isalpha(c) || c == '_') {
         const std::size_t b = pos_;
-        while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) ||
-                                       text_[pos_] == '_'))
+        while (pos_ < text_.size() &&
+               (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_'))
           advance(1);
         t.kind = Tok::Ident;
         t.text = std::string(text_.substr(b, pos_ - b));
@@ -73,13 +72,14 @@ class Lexer {
         lex_number(t);
       } else if (c == '"') {
         lex_string(t);
-      } else if (text_.substr(pos_, 3) == "\xE2\x86\x91" || text_.substr(pos_, 3) == "\xE2\x86\x93") {
+      } else if (text_.substr(pos_, 3) == "\xE2\x86\x91" ||
+                 text_.substr(pos_, 3) == "\xE2\x86\x93") {
         t.kind = Tok::Punct;
         t.text = text_[pos_ + 2] == '\x91' ? "RE" : "FE";  // ↑ and ↓
         advance(3);
       } else {
-        static constexpr std::string_view kTwo[] = {"->", ":=", "..", "==", "!=", "<>", "<=",
-                                                    ">=", "&&", "||"};
+        static constexpr std::string_view kTwo[] = {
+            "->", ":=", "..", "==", "!=", "<>", "<=", ">=", "&&", "||"};
         static constexpr std::string_view kOne = "{}(),;:&|!^+-*/=<>";
         t.kind = Tok::Punct;
         for (auto two : kTwo)
@@ -130,12 +130,10 @@ class Lexer {
 
   void lex_number(Token& t) {
     const std::size_t b = pos_;
-    while (pos_ < text_.size() && std::isalnum(static_cast<unsigned char>(text_[pos_])))
-      advance(1);
+    while (pos_ < text_.size() && std::isalnum(static_cast<unsigned char>(text_[pos_]))) advance(1);
     const std::string word(text_.substr(b, pos_ - b));
     std::size_t digits = 0;
-    while (digits < word.size() && std::isdigit(static_cast<unsigned char>(word[digits])))
-      ++digits;
+    while (digits < word.size() && std::isdigit(static_cast<unsigned char>(word[digits]))) ++digits;
     std::int64_t v = 0;
     for (std::size_t i = 0; i < digits; ++i) {
       if (v > (std::numeric_limits<std::int64_t>::max() - 9) / 10)
@@ -150,14 +148,19 @@ class Lexer {
       return;
     }
     std::int64_t scale = 0;
-    if (unit == "ms") scale = 1;
-    else if (unit == "s") scale = 1000;
-    else if (unit == "min") scale = 60000;
-    else if (unit == "h") scale = 3600000;
+    if (unit == "ms")
+      scale = 1;
+    else if (unit == "s")
+      scale = 1000;
+    else if (unit == "min")
+      scale = 60000;
+    else if (unit == "h")
+      scale = 3600000;
     if (scale == 0)
       throw ParseError{t.line, t.col,
-                       "invalid number '" + word + "' (durations end in ms, s, min or h; quote "
-                       "names that start with a digit)"};
+                       "invalid number '" + word +
+                           "' (durations end in ms, s, min or h; quote "
+                           "names that start with a digit)"};
     if (v > std::numeric_limits<std::int64_t>::max() / scale)
       throw ParseError{t.line, t.col, "duration '" + word + "' is too large"};
     t.kind = Tok::Time;
@@ -224,9 +227,7 @@ class Parser {
   static constexpr int kMaxErrors = 50;
 
   // ---- token helpers
-  const Token& peek(std::size_t k = 0) const {
-    return toks_[std::min(pos_ + k, toks_.size() - 1)];
-  }
+  const Token& peek(std::size_t k = 0) const { return toks_[std::min(pos_ + k, toks_.size() - 1)]; }
   const Token& next() {
     const Token& t = peek();
     if (pos_ + 1 < toks_.size()) ++pos_;
@@ -248,10 +249,14 @@ class Parser {
   }
   static std::string show(const Token& t) {
     switch (t.kind) {
-      case Tok::End: return "end of file";
-      case Tok::String: return "\"" + t.text + "\"";
-      case Tok::Time: return "duration";
-      default: return "'" + t.text + "'";
+      case Tok::End:
+        return "end of file";
+      case Tok::String:
+        return "\"" + t.text + "\"";
+      case Tok::Time:
+        return "duration";
+      default:
+        return "'" + t.text + "'";
     }
   }
   void expect(std::string_view p, std::string_view what = {}) {
@@ -351,21 +356,25 @@ class Parser {
         const std::int64_t lo = signed_number();
         expect("..", "in an integer range lo..hi");
         const std::int64_t hi = signed_number();
-        if (lo > hi) fail(at, "empty integer range " + std::to_string(lo) + ".." + std::to_string(hi));
+        if (lo > hi)
+          fail(at, "empty integer range " + std::to_string(lo) + ".." + std::to_string(hi));
         type = model::Type::integer(g7::range_type_name(lo, hi), lo, hi);
       }
     }
     std::optional<std::int64_t> initial;
     if (accept(":=")) {
       const Token& at = peek();
-      if (at.kind == Tok::Ident && (model::iequals(at.text, "true") || model::iequals(at.text, "false"))) {
+      if (at.kind == Tok::Ident &&
+          (model::iequals(at.text, "true") || model::iequals(at.text, "false"))) {
         initial = model::iequals(next().text, "true") ? 1 : 0;
       } else {
         initial = signed_number();
       }
-      const bool fits = type.kind == model::TypeKind::Bool ? (*initial == 0 || *initial == 1)
-                                                           : (*initial >= type.lo && *initial <= type.hi);
-      if (!fits) fail(at, "initial value " + std::to_string(*initial) + " is out of the type's range");
+      const bool fits = type.kind == model::TypeKind::Bool
+                            ? (*initial == 0 || *initial == 1)
+                            : (*initial >= type.lo && *initial <= type.hi);
+      if (!fits)
+        fail(at, "initial value " + std::to_string(*initial) + " is out of the type's range");
     }
     expect(";");
     for (auto& n : names) {
@@ -413,10 +422,14 @@ class Parser {
 
   void chart_statement() {
     const Token& t = peek();
-    if (is_word("step")) step_statement();
-    else if (is_word("transition")) transition_statement();
-    else if (is_word("action")) action_statement();
-    else fail(t, "expected 'step', 'transition', 'action' or '}', found " + show(t));
+    if (is_word("step"))
+      step_statement();
+    else if (is_word("transition"))
+      transition_statement();
+    else if (is_word("action"))
+      action_statement();
+    else
+      fail(t, "expected 'step', 'transition', 'action' or '}', found " + show(t));
   }
 
   void step_statement() {
@@ -441,21 +454,25 @@ class Parser {
         exit = true;
       } else if (is_word("macro")) {
         next();
-        if (proto.kind != model::StepKind::Normal) fail(m, "a step is a macro-step or an enclosing step, not both");
+        if (proto.kind != model::StepKind::Normal)
+          fail(m, "a step is a macro-step or an enclosing step, not both");
         proto.kind = model::StepKind::MacroStep;
         NameRef e = name("the name of the macro-step's expansion");
         proto.expansion = e.name;
         chart_refs_.push_back(std::move(e));
       } else if (is_word("encloses")) {
         next();
-        if (proto.kind != model::StepKind::Normal) fail(m, "a step is a macro-step or an enclosing step, not both");
+        if (proto.kind != model::StepKind::Normal)
+          fail(m, "a step is a macro-step or an enclosing step, not both");
         proto.kind = model::StepKind::Enclosing;
         for (auto& e : name_set("the name of an enclosed partial grafcet")) {
           proto.enclosed.push_back(e.name);
           chart_refs_.push_back(std::move(e));
         }
       } else {
-        fail(m, "expected 'initial', 'linked', 'entry', 'exit', 'macro', 'encloses' or ';', found " + show(m));
+        fail(m,
+             "expected 'initial', 'linked', 'entry', 'exit', 'macro', 'encloses' or ';', found " +
+                 show(m));
       }
     }
     next();
@@ -520,7 +537,8 @@ class Parser {
     if (!tr.name.empty())
       for (const auto& other : chart().transitions)
         if (other.name == tr.name)
-          error(tr.where, "transition '" + tr.name + "' is declared twice in grafcet '" + chart().name + "'");
+          error(tr.where,
+                "transition '" + tr.name + "' is declared twice in grafcet '" + chart().name + "'");
     for (auto& s : sources) tr.sources.push_back(s.name);
     for (auto& s : targets) tr.targets.push_back(s.name);
     step_refs_.push_back({chart_, std::move(sources)});
@@ -552,7 +570,8 @@ class Parser {
       sa.when = model::StoredWhen::Event;
       sa.event = condition();
     } else {
-      fail(peek(), "expected ':', 'on_enter', 'on_exit' or 'on' after the step, found " + show(peek()));
+      fail(peek(),
+           "expected ':', 'on_enter', 'on_exit' or 'on' after the step, found " + show(peek()));
     }
     expect(":");
     NameRef v = var_name();
@@ -652,8 +671,8 @@ class Parser {
     const SourceLocation at = loc(peek());
     ExprPtr lhs = parse_add();
     static const std::pair<std::string_view, ExprKind> kOps[] = {
-        {"=", ExprKind::Eq},  {"==", ExprKind::Eq}, {"<>", ExprKind::Ne}, {"!=", ExprKind::Ne},
-        {"<", ExprKind::Lt},  {"<=", ExprKind::Le}, {">", ExprKind::Gt},  {">=", ExprKind::Ge}};
+        {"=", ExprKind::Eq}, {"==", ExprKind::Eq}, {"<>", ExprKind::Ne}, {"!=", ExprKind::Ne},
+        {"<", ExprKind::Lt}, {"<=", ExprKind::Le}, {">", ExprKind::Gt},  {">=", ExprKind::Ge}};
     for (const auto& [text, kind] : kOps) {
       if (is_punct(text)) {
         next();
@@ -668,15 +687,19 @@ class Parser {
   // `a + b + c ...` is built by a loop: bound the height of the tree it makes, too.
   void bound_height(const ExprPtr& e) const {
     if (e->height > static_cast<std::uint32_t>(model::kMaxNesting))
-      fail(peek(), "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
+      fail(peek(),
+           "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
   }
   ExprPtr parse_add() {
     const SourceLocation at = loc(peek());
     ExprPtr e = parse_mul();
     for (;;) {
-      if (accept("+")) e = model::make_binary(ExprKind::Add, e, parse_mul(), at);
-      else if (accept("-")) e = model::make_binary(ExprKind::Sub, e, parse_mul(), at);
-      else return e;
+      if (accept("+"))
+        e = model::make_binary(ExprKind::Add, e, parse_mul(), at);
+      else if (accept("-"))
+        e = model::make_binary(ExprKind::Sub, e, parse_mul(), at);
+      else
+        return e;
       bound_height(e);
     }
   }
@@ -684,12 +707,15 @@ class Parser {
     const SourceLocation at = loc(peek());
     ExprPtr e = parse_unary();
     for (;;) {
-      if (accept("*")) e = model::make_binary(ExprKind::Mul, e, parse_unary(), at);
-      else if (accept("/")) e = model::make_binary(ExprKind::Div, e, parse_unary(), at);
+      if (accept("*"))
+        e = model::make_binary(ExprKind::Mul, e, parse_unary(), at);
+      else if (accept("/"))
+        e = model::make_binary(ExprKind::Div, e, parse_unary(), at);
       else if (is_word("mod") || is_word("MOD")) {
         next();
         e = model::make_binary(ExprKind::Mod, e, parse_unary(), at);
-      } else return e;
+      } else
+        return e;
       bound_height(e);
     }
   }
@@ -720,7 +746,8 @@ class Parser {
     const Token& t = next();
     const SourceLocation at = loc(t);
     switch (t.kind) {
-      case Tok::Number: return model::make_int(t.value, at);
+      case Tok::Number:
+        return model::make_int(t.value, at);
       case Tok::Time: {
         if (!accept("/")) return model::make_time(t.value, at);
         ExprPtr inner = boolify(parse_unary());
@@ -740,7 +767,8 @@ class Parser {
         if (model::iequals(t.text, "true")) return model::make_bool(true, at);
         if (model::iequals(t.text, "false")) return model::make_bool(false, at);
         if (g7::is_reserved_in_expression(t.text))
-          fail(t, "'" + t.text + "' is a reserved word: quote a variable of that name (\"" + t.text + "\")");
+          fail(t, "'" + t.text + "' is a reserved word: quote a variable of that name (\"" +
+                      t.text + "\")");
         names_.push_back({t.text, at});
         return model::make_name(t.text, at);
       }
@@ -751,7 +779,8 @@ class Parser {
           return e;
         }
         break;
-      case Tok::End: break;
+      case Tok::End:
+        break;
     }
     fail(t, "expected an expression, found " + show(t));
   }
@@ -763,8 +792,12 @@ class Parser {
         if (e->value == 0 || e->value == 1) return model::make_bool(e->value == 1, e->where);
         throw ParseError{e->where.line, e->where.column,
                          "the integer " + std::to_string(e->value) + " is not a condition"};
-      case ExprKind::Not: case ExprKind::And: case ExprKind::Or: case ExprKind::Xor:
-      case ExprKind::Rising: case ExprKind::Falling: {
+      case ExprKind::Not:
+      case ExprKind::And:
+      case ExprKind::Or:
+      case ExprKind::Xor:
+      case ExprKind::Rising:
+      case ExprKind::Falling: {
         bool changed = false;
         std::vector<ExprPtr> args;
         for (const auto& a : e->args) {
@@ -776,7 +809,8 @@ class Parser {
         copy->args = std::move(args);
         return copy;
       }
-      default: return e;
+      default:
+        return e;
     }
   }
 
@@ -808,7 +842,8 @@ class Parser {
       if (!target) continue;
       for (const auto& r : refs)
         if (!target->find_step(r.name))
-          error(r.where, "forced step '" + r.name + "' is not a step of grafcet '" + target->name + "'");
+          error(r.where,
+                "forced step '" + r.name + "' is not a step of grafcet '" + target->name + "'");
     }
     for (const auto& c : pou_.charts) {
       for (const auto& s : c.steps)
@@ -835,11 +870,13 @@ class Parser {
                             : 0;
       if (steps == 1) continue;
       if (steps > 1) {
-        error(r.where, "step variable '" + r.name + "' is ambiguous: several partial grafcets have a step '" +
+        error(r.where, "step variable '" + r.name +
+                           "' is ambiguous: several partial grafcets have a step '" +
                            r.name.substr(1) + "'");
         continue;
       }
-      error(r.where, "unknown name '" + r.name + "' (not a declared variable nor a step variable X<step>)");
+      error(r.where,
+            "unknown name '" + r.name + "' (not a declared variable nor a step variable X<step>)");
     }
     for (const auto& [v, stored] : var_refs_) {
       const model::Variable* var = pou_.find_variable(v.name);
@@ -858,7 +895,8 @@ class Parser {
       try {
         sa.value = boolify(sa.value);
       } catch (const ParseError& e) {
-        error(e.line, e.col, "Boolean variable '" + sa.variable + "' takes 0, 1, true, false or a condition");
+        error(e.line, e.col,
+              "Boolean variable '" + sa.variable + "' takes 0, 1, true, false or a condition");
       }
     }
   }

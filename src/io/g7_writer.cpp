@@ -15,64 +15,107 @@ using model::ExprKind;
 // Binding strength, as in the reader's grammar: | ^ & comparisons + * unary primary.
 int level(const Expr& e) {
   switch (e.kind) {
-    case ExprKind::Or: return 1;
-    case ExprKind::Xor: return 2;
-    case ExprKind::And: return 3;
-    case ExprKind::Eq: case ExprKind::Ne: case ExprKind::Lt: case ExprKind::Le:
-    case ExprKind::Gt: case ExprKind::Ge: return 4;
-    case ExprKind::Add: case ExprKind::Sub: return 5;
-    case ExprKind::Mul: case ExprKind::Div: case ExprKind::Mod: return 6;
-    case ExprKind::Not: case ExprKind::Neg: case ExprKind::Rising: case ExprKind::Falling:
+    case ExprKind::Or:
+      return 1;
+    case ExprKind::Xor:
+      return 2;
+    case ExprKind::And:
+      return 3;
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge:
+      return 4;
+    case ExprKind::Add:
+    case ExprKind::Sub:
+      return 5;
+    case ExprKind::Mul:
+    case ExprKind::Div:
+    case ExprKind::Mod:
+      return 6;
+    case ExprKind::Not:
+    case ExprKind::Neg:
+    case ExprKind::Rising:
+    case ExprKind::Falling:
       return 7;
-    case ExprKind::IntConst: return e.value < 0 ? 7 : 8;
-    default: return 8;
+    case ExprKind::IntConst:
+      return e.value < 0 ? 7 : 8;
+    default:
+      return 8;
   }
 }
 
 std::string expr(const Expr& e);
 
-std::string wrap(const Expr& e, bool parens) { return parens ? "(" + expr(e) + ")" : expr(e); }
+std::string wrap(const Expr& e, bool parens) {
+  return parens ? "(" + expr(e) + ")" : expr(e);
+}
 
 const char* op_text(ExprKind k) {
   switch (k) {
-    case ExprKind::Or: return " | ";
-    case ExprKind::Xor: return " ^ ";
-    case ExprKind::And: return " & ";
-    case ExprKind::Eq: return " = ";
-    case ExprKind::Ne: return " <> ";
-    case ExprKind::Lt: return " < ";
-    case ExprKind::Le: return " <= ";
-    case ExprKind::Gt: return " > ";
-    case ExprKind::Ge: return " >= ";
-    case ExprKind::Add: return " + ";
-    case ExprKind::Sub: return " - ";
-    case ExprKind::Mul: return " * ";
-    case ExprKind::Div: return " / ";
-    case ExprKind::Mod: return " mod ";
-    default: return " ? ";
+    case ExprKind::Or:
+      return " | ";
+    case ExprKind::Xor:
+      return " ^ ";
+    case ExprKind::And:
+      return " & ";
+    case ExprKind::Eq:
+      return " = ";
+    case ExprKind::Ne:
+      return " <> ";
+    case ExprKind::Lt:
+      return " < ";
+    case ExprKind::Le:
+      return " <= ";
+    case ExprKind::Gt:
+      return " > ";
+    case ExprKind::Ge:
+      return " >= ";
+    case ExprKind::Add:
+      return " + ";
+    case ExprKind::Sub:
+      return " - ";
+    case ExprKind::Mul:
+      return " * ";
+    case ExprKind::Div:
+      return " / ";
+    case ExprKind::Mod:
+      return " mod ";
+    default:
+      return " ? ";
   }
 }
 
 std::string expr(const Expr& e) {
   const int p = level(e);
   switch (e.kind) {
-    case ExprKind::BoolConst: return e.value ? "true" : "false";
-    case ExprKind::IntConst: return std::to_string(e.value);
-    case ExprKind::TimeConst: return g7::duration(e.value);
-    case ExprKind::Name: return g7::quote_name(e.name, true);
+    case ExprKind::BoolConst:
+      return e.value ? "true" : "false";
+    case ExprKind::IntConst:
+      return std::to_string(e.value);
+    case ExprKind::TimeConst:
+      return g7::duration(e.value);
+    case ExprKind::Name:
+      return g7::quote_name(e.name, true);
     case ExprKind::Member:
-      throw G7WriteError("the .g7 format has no member access ('" + e.name + "." + e.member +
-                         "')");
-    case ExprKind::Not: return "!" + wrap(*e.args[0], level(*e.args[0]) < 7);
+      throw G7WriteError("the .g7 format has no member access ('" + e.name + "." + e.member + "')");
+    case ExprKind::Not:
+      return "!" + wrap(*e.args[0], level(*e.args[0]) < 7);
     case ExprKind::Neg:
       // "-3" would read back as the constant -3, not as the negation of 3.
       return "-" + wrap(*e.args[0], level(*e.args[0]) < 7 || e.args[0]->kind == ExprKind::IntConst);
-    case ExprKind::Rising: return "RE " + wrap(*e.args[0], level(*e.args[0]) < 7);
-    case ExprKind::Falling: return "FE " + wrap(*e.args[0], level(*e.args[0]) < 7);
+    case ExprKind::Rising:
+      return "RE " + wrap(*e.args[0], level(*e.args[0]) < 7);
+    case ExprKind::Falling:
+      return "FE " + wrap(*e.args[0], level(*e.args[0]) < 7);
     case ExprKind::Delay:
       return g7::duration(e.value) + "/" + wrap(*e.args[0], level(*e.args[0]) < 7) + "/" +
              g7::duration(e.value2);
-    case ExprKind::Or: case ExprKind::Xor: case ExprKind::And: {
+    case ExprKind::Or:
+    case ExprKind::Xor:
+    case ExprKind::And: {
       // Nested operators of the same kind keep their parentheses: the reader builds one n-ary
       // node per parenthesis level.
       std::string s;
@@ -82,8 +125,12 @@ std::string expr(const Expr& e) {
       }
       return s;
     }
-    case ExprKind::Eq: case ExprKind::Ne: case ExprKind::Lt: case ExprKind::Le:
-    case ExprKind::Gt: case ExprKind::Ge:
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge:
       return wrap(*e.args[0], level(*e.args[0]) <= p) + op_text(e.kind) +
              wrap(*e.args[1], level(*e.args[1]) <= p);
     default: {
@@ -96,9 +143,13 @@ std::string expr(const Expr& e) {
   }
 }
 
-std::string expr(const model::ExprPtr& e) { return e ? expr(*e) : "true"; }
+std::string expr(const model::ExprPtr& e) {
+  return e ? expr(*e) : "true";
+}
 
-std::string name(std::string_view n) { return g7::quote_name(n, false); }
+std::string name(std::string_view n) {
+  return g7::quote_name(n, false);
+}
 
 std::string step_set(const std::vector<std::string>& steps) {
   if (steps.size() == 1) return name(steps[0]);
@@ -113,9 +164,15 @@ std::string where(const model::SourceLocation& l) {
 
 void write_variable(std::string& out, const model::Variable& v) {
   switch (v.direction) {
-    case model::VarDirection::Input: out += "input "; break;
-    case model::VarDirection::Output: out += "output "; break;
-    case model::VarDirection::Local: out += "internal "; break;
+    case model::VarDirection::Input:
+      out += "input ";
+      break;
+    case model::VarDirection::Output:
+      out += "output ";
+      break;
+    case model::VarDirection::Local:
+      out += "internal ";
+      break;
     default:
       throw G7WriteError("variable '" + v.name + "'" + where(v.where) +
                          ": .g7 has only input, output and internal variables");
@@ -128,8 +185,10 @@ void write_variable(std::string& out, const model::Variable& v) {
                        ": .g7 has only BOOL and bounded integers");
   }
   if (v.initial) {
-    if (v.type.kind == model::TypeKind::Bool) out += *v.initial ? " := true" : " := false";
-    else out += " := " + std::to_string(*v.initial);
+    if (v.type.kind == model::TypeKind::Bool)
+      out += *v.initial ? " := true" : " := false";
+    else
+      out += " := " + std::to_string(*v.initial);
   }
   out += ";\n";
 }
@@ -180,9 +239,15 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
     if (sa.chart != c.name) continue;
     out += "  action " + name(sa.step);
     switch (sa.when) {
-      case model::StoredWhen::Activation: out += " on_enter"; break;
-      case model::StoredWhen::Deactivation: out += " on_exit"; break;
-      case model::StoredWhen::Event: out += " on " + expr(sa.event); break;
+      case model::StoredWhen::Activation:
+        out += " on_enter";
+        break;
+      case model::StoredWhen::Deactivation:
+        out += " on_exit";
+        break;
+      case model::StoredWhen::Event:
+        out += " on " + expr(sa.event);
+        break;
     }
     out += ": " + g7::quote_name(sa.variable, true) + " := " + expr(sa.value) + ";\n";
   }
@@ -190,9 +255,14 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
     if (fo.chart != c.name) continue;
     out += "  action " + name(fo.step) + ": " + name(fo.target) + "{";
     switch (fo.kind) {
-      case model::ForcingKind::Current: out += "*"; break;
-      case model::ForcingKind::Initial: out += "INIT"; break;
-      case model::ForcingKind::Empty: break;
+      case model::ForcingKind::Current:
+        out += "*";
+        break;
+      case model::ForcingKind::Initial:
+        out += "INIT";
+        break;
+      case model::ForcingKind::Empty:
+        break;
       case model::ForcingKind::Situation:
         for (std::size_t i = 0; i < fo.situation.size(); ++i)  // a step named INIT is quoted
           out += (i ? ", " : "") + (model::iequals(fo.situation[i], "INIT")
@@ -218,9 +288,11 @@ std::string write_g7(const model::Project& project) {
   for (const auto& a : pou.associations)
     if (!belongs(a.chart)) throw G7WriteError("action of step '" + a.step + "' names no chart");
   for (const auto& a : pou.stored_actions)
-    if (!belongs(a.chart)) throw G7WriteError("stored action of step '" + a.step + "' names no chart");
+    if (!belongs(a.chart))
+      throw G7WriteError("stored action of step '" + a.step + "' names no chart");
   for (const auto& a : pou.forcing_orders)
-    if (!belongs(a.chart)) throw G7WriteError("forcing order of step '" + a.step + "' names no chart");
+    if (!belongs(a.chart))
+      throw G7WriteError("forcing order of step '" + a.step + "' names no chart");
 
   std::string out = "# Grafcet (IEC 60848) in the sfcv native format, see docs/formats.md\n";
   out += "project " + name(project.name) + ";\n\n";

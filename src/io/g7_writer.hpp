@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/errors.hpp"
 #include "model/chart.hpp"
+#include "model/errors.hpp"
 
 namespace sfcv::io {
 

@@ -18,8 +18,8 @@ namespace sfcv::io {
 
 namespace {
 
-using st::Parser;
 using st::ParseError;
+using st::Parser;
 using st::Token;
 using st::TokenKind;
 
@@ -105,7 +105,8 @@ class IecTextReader {
     pou.where = p.where(kw);
     pou.name = p.identifier(program ? "a program name" : "a function block name");
     if (p.at_word("EXTENDS") || p.at_word("IMPLEMENTS"))
-      p.fail(p.peek(), "unsupported: " + model::to_upper(p.peek().text) + " (object-oriented function blocks)");
+      p.fail(p.peek(), "unsupported: " + model::to_upper(p.peek().text) +
+                           " (object-oriented function blocks)");
     while (p.at_var_section()) {
       guarded("END_VAR", end, [&] { p.var_section(pou.variables); });
     }
@@ -163,13 +164,16 @@ class IecTextReader {
       } else if (p.at_word("ACTION")) {
         guarded("END_ACTION", end, [&] { parse_action(pou); });
       } else {
-        const std::string expected = "STEP, INITIAL_STEP, TRANSITION, ACTION or " + std::string(end);
+        const std::string expected =
+            "STEP, INITIAL_STEP, TRANSITION, ACTION or " + std::string(end);
         guarded(end, end, [&] { p.fail_unexpected(expected); });
       }
     }
   }
 
-  model::Chart& chart_at(model::Pou& pou, int ci) { return pou.charts[static_cast<std::size_t>(ci)]; }
+  model::Chart& chart_at(model::Pou& pou, int ci) {
+    return pou.charts[static_cast<std::size_t>(ci)];
+  }
 
   void parse_step(model::Pou& pou, int ci) {
     Parser& p = *parser_;
@@ -189,7 +193,8 @@ class IecTextReader {
   }
 
   // action_name [ '(' [qualifier [, duration]] {, indicator} ')' ] ';'
-  model::ActionAssociation parse_association(const std::string& chart_name, const std::string& step) {
+  model::ActionAssociation parse_association(const std::string& chart_name,
+                                             const std::string& step) {
     Parser& p = *parser_;
     model::ActionAssociation a;
     a.chart = chart_name;
@@ -201,8 +206,10 @@ class IecTextReader {
         const Token& q = p.next();
         const auto qualifier = model::parse_qualifier(q.text);
         if (!qualifier)
-          p.fail(q, "expected an action qualifier (N, R, S, P, P0, P1, L, D, SD, DS, SL, DL), "
-                    "found '" + q.text + "'");
+          p.fail(q,
+                 "expected an action qualifier (N, R, S, P, P0, P1, L, D, SD, DS, SL, DL), "
+                 "found '" +
+                     q.text + "'");
         a.qualifier = *qualifier;
         if (model::is_timed(a.qualifier)) {
           if (!p.accept(TokenKind::Comma))
@@ -278,7 +285,8 @@ class IecTextReader {
       model::StmtList body = p.statements();
       if (body.size() != 1 || body[0]->kind != model::StmtKind::Assign || t.name.empty() ||
           !model::iequals(body[0]->target, t.name))
-        p.fail(colon, "unsupported: transition body other than '<transition name> := <condition>;'");
+        p.fail(colon,
+               "unsupported: transition body other than '<transition name> := <condition>;'");
       t.guard = body[0]->value;
     } else {
       p.fail_unexpected("':=' and the transition condition");

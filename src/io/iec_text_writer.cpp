@@ -1,4 +1,3 @@
-#include "model/errors.hpp"
 #include "io/iec_text_writer.hpp"
 
 #include <algorithm>
@@ -7,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/st_parser.hpp"
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
 
@@ -35,10 +35,14 @@ const std::string& ident(const std::string& s, std::string_view role) {
 void check_expr(const model::ExprPtr& e, std::string_view where) {
   if (!e) return;
   switch (e->kind) {
-    case ExprKind::Rising: cannot("rising edge in " + std::string(where));
-    case ExprKind::Falling: cannot("falling edge in " + std::string(where));
-    case ExprKind::Delay: cannot("Grafcet delay in " + std::string(where));
-    default: break;
+    case ExprKind::Rising:
+      cannot("rising edge in " + std::string(where));
+    case ExprKind::Falling:
+      cannot("falling edge in " + std::string(where));
+    case ExprKind::Delay:
+      cannot("Grafcet delay in " + std::string(where));
+    default:
+      break;
   }
   for (const auto& a : e->args) check_expr(a, where);
 }
@@ -53,14 +57,20 @@ void check_body(const model::StmtList& body, std::string_view where) {
   }
 }
 
-std::string time_literal(std::int64_t ms) { return model::to_st(model::make_time(ms)); }
+std::string time_literal(std::int64_t ms) {
+  return model::to_st(model::make_time(ms));
+}
 
 std::string type_text(const model::Type& t) {
   switch (t.kind) {
-    case model::TypeKind::Bool: return "BOOL";
-    case model::TypeKind::Time: return "TIME";
-    case model::TypeKind::FunctionBlock: return std::string(model::to_string(t.fb));
-    case model::TypeKind::Int: break;
+    case model::TypeKind::Bool:
+      return "BOOL";
+    case model::TypeKind::Time:
+      return "TIME";
+    case model::TypeKind::FunctionBlock:
+      return std::string(model::to_string(t.fb));
+    case model::TypeKind::Int:
+      break;
   }
   const std::string base = model::to_upper(t.name.substr(0, t.name.find('(')));
   auto elementary = model::elementary_type(base);
@@ -74,12 +84,18 @@ std::string type_text(const model::Type& t) {
 
 std::string section_word(model::VarDirection d) {
   switch (d) {
-    case model::VarDirection::Input: return "VAR_INPUT";
-    case model::VarDirection::Output: return "VAR_OUTPUT";
-    case model::VarDirection::InOut: return "VAR_IN_OUT";
-    case model::VarDirection::Global: return "VAR_GLOBAL";
-    case model::VarDirection::External: return "VAR_EXTERNAL";
-    case model::VarDirection::Local: break;
+    case model::VarDirection::Input:
+      return "VAR_INPUT";
+    case model::VarDirection::Output:
+      return "VAR_OUTPUT";
+    case model::VarDirection::InOut:
+      return "VAR_IN_OUT";
+    case model::VarDirection::Global:
+      return "VAR_GLOBAL";
+    case model::VarDirection::External:
+      return "VAR_EXTERNAL";
+    case model::VarDirection::Local:
+      break;
   }
   return "VAR";
 }
@@ -94,7 +110,8 @@ class Writer {
     if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
     if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
     const bool program = pou_.kind == model::PouKind::Program;
-    out += std::string(program ? "PROGRAM " : "FUNCTION_BLOCK ") + ident(pou_.name, "POU name") + "\n";
+    out +=
+        std::string(program ? "PROGRAM " : "FUNCTION_BLOCK ") + ident(pou_.name, "POU name") + "\n";
     variables(out);
     std::vector<std::size_t> top;
     for (std::size_t i = 0; i < pou_.charts.size(); ++i)
@@ -138,9 +155,12 @@ class Writer {
           if (v.type.kind == model::TypeKind::FunctionBlock)
             cannot("initial value of FB instance '" + v.name + "'");
           out += " := ";
-          if (v.type.kind == model::TypeKind::Bool) out += *v.initial ? "TRUE" : "FALSE";
-          else if (v.type.kind == model::TypeKind::Time) out += time_literal(*v.initial);
-          else out += std::to_string(*v.initial);
+          if (v.type.kind == model::TypeKind::Bool)
+            out += *v.initial ? "TRUE" : "FALSE";
+          else if (v.type.kind == model::TypeKind::Time)
+            out += time_literal(*v.initial);
+          else
+            out += std::to_string(*v.initial);
         }
         out += ";\n";
       }
@@ -155,7 +175,8 @@ class Writer {
       const auto& s = c.steps[i];
       if (s.kind != model::StepKind::Normal)
         cannot("Grafcet macro-step or enclosing step '" + s.name + "'");
-      out += "\n" + pad + (s.initial ? "INITIAL_STEP " : "STEP ") + ident(s.name, "step name") + ":\n";
+      out +=
+          "\n" + pad + (s.initial ? "INITIAL_STEP " : "STEP ") + ident(s.name, "step name") + ":\n";
       // Associations name a step, not one of several steps of that name: print them once, under
       // the first.
       bool first = true;
@@ -180,12 +201,16 @@ class Writer {
 
   static std::string association(const model::ActionAssociation& a) {
     if (a.condition) cannot("assignment condition of action '" + a.action + "'");
-    std::string s = ident(a.action, "action name") + "(" + std::string(model::to_string(a.qualifier));
+    std::string s =
+        ident(a.action, "action name") + "(" + std::string(model::to_string(a.qualifier));
     if (model::is_timed(a.qualifier)) {
-      if (a.duration_ms) s += ", " + time_literal(*a.duration_ms);
-      else if (!a.duration_variable.empty()) s += ", " + ident(a.duration_variable, "duration variable");
-      else cannot("timed qualifier " + std::string(model::to_string(a.qualifier)) + " of action '" +
-                  a.action + "' without a duration");
+      if (a.duration_ms)
+        s += ", " + time_literal(*a.duration_ms);
+      else if (!a.duration_variable.empty())
+        s += ", " + ident(a.duration_variable, "duration variable");
+      else
+        cannot("timed qualifier " + std::string(model::to_string(a.qualifier)) + " of action '" +
+               a.action + "' without a duration");
     } else if (a.duration_ms || !a.duration_variable.empty()) {
       cannot("duration on qualifier " + std::string(model::to_string(a.qualifier)) +
              " of action '" + a.action + "'");

@@ -12,8 +12,8 @@ namespace sfcv::io {
 /// action associations, transitions with priorities, actions with ST or nested SFC bodies).
 /// Throws std::invalid_argument naming the construct for what IEC text cannot express: Grafcet
 /// stored actions, forcing orders, macro/enclosing steps, edges and delays in expressions,
-/// assignment conditions, FUNCTION POUs, actions whose body is not modelled, timed qualifiers without a duration, associations to
-/// undeclared steps.
+/// assignment conditions, FUNCTION POUs, actions whose body is not modelled, timed qualifiers
+/// without a duration, associations to undeclared steps.
 std::string write_iec_text(const model::Project& project);
 
 }  // namespace sfcv::io

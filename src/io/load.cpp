@@ -10,7 +10,8 @@ namespace {
 bool ends_with(const std::string& s, std::string_view suffix) {
   if (s.size() < suffix.size()) return false;
   for (std::size_t i = 0; i < suffix.size(); ++i) {
-    const char a = static_cast<char>(std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])));
+    const char a = static_cast<char>(
+        std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])));
     if (a != suffix[i]) return false;
   }
   return true;
@@ -31,7 +32,7 @@ Format detect_format(const std::string& path, std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
   if (first != std::string_view::npos && text[first] == '<')
     return text.find("grafcet:Grafcet") != std::string_view::npos ? Format::AgrafeXmi
-                                                                   : Format::PlcopenXml;
+                                                                  : Format::PlcopenXml;
   return Format::IecText;
 }
 
@@ -49,11 +50,16 @@ LoadResult load_file(const std::string& path, Format format) {
   const std::string text = buf.str();
   if (format == Format::Auto) format = detect_format(path, text);
   switch (format) {
-    case Format::PlcopenXml: return load_plcopen_xml(text, path);
-    case Format::IecText: return load_iec_text(text, path);
-    case Format::G7: return load_g7(text, path);
-    case Format::AgrafeXmi: return load_agrafe_xmi(text, path);
-    case Format::Auto: break;
+    case Format::PlcopenXml:
+      return load_plcopen_xml(text, path);
+    case Format::IecText:
+      return load_iec_text(text, path);
+    case Format::G7:
+      return load_g7(text, path);
+    case Format::AgrafeXmi:
+      return load_agrafe_xmi(text, path);
+    case Format::Auto:
+      break;
   }
   return {};
 }

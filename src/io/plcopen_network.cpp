@@ -73,7 +73,8 @@ Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnos
     : ctx_(ctx), problems_(problems), edge_prefix_(std::move(edge_prefix)), container_(container) {
   for (auto n : element_children(container)) {
     if (const auto id = n.attribute("localId")) by_id_.emplace(id.value(), n);
-    if (local_name(n) == "connector") connectors_.emplace(model::to_upper(n.attribute("name").value()), n);
+    if (local_name(n) == "connector")
+      connectors_.emplace(model::to_upper(n.attribute("name").value()), n);
   }
 }
 
@@ -82,16 +83,21 @@ ExprPtr Network::fail(pugi::xml_node node, std::string message) {
   return nullptr;
 }
 
-model::StmtList Network::take_calls() { return std::exchange(calls_, {}); }
+model::StmtList Network::take_calls() {
+  return std::exchange(calls_, {});
+}
 
-std::vector<model::Variable> Network::take_edge_instances() { return std::exchange(edge_instances_, {}); }
+std::vector<model::Variable> Network::take_edge_instances() {
+  return std::exchange(edge_instances_, {});
+}
 
 // IEC 61131-3 (4.2.3, 4.2.4): a positive/negative transition-sensing contact or coil passes
 // power for one evaluation when its operand rises/falls: an R_TRIG/F_TRIG of the operand,
 // called where the element is evaluated.
 ExprPtr Network::edge_of(pugi::xml_node node, const std::string& edge, ExprPtr value) {
   if (edge != "rising" && edge != "falling")
-    return fail(node, "unsupported: " + std::string(local_name(node)) + " with edge '" + edge + "'");
+    return fail(node,
+                "unsupported: " + std::string(local_name(node)) + " with edge '" + edge + "'");
   const std::string name = "SFCV_EDGE_" + (edge_prefix_.empty() ? "" : edge_prefix_ + "_") +
                            node.attribute("localId").value();
   model::Variable v;
@@ -135,7 +141,8 @@ ExprPtr Network::value(pugi::xml_node connection) {
 ExprPtr Network::text_value(pugi::xml_node holder, pugi::xml_node text_element) {
   if (!text_element) return fail(holder, std::string(local_name(holder)) + " has no expression");
   const auto text = body_text(text_element, ctx_);
-  if (trim(text.text).empty()) return fail(holder, std::string(local_name(holder)) + " has an empty expression");
+  if (trim(text.text).empty())
+    return fail(holder, std::string(local_name(holder)) + " has an empty expression");
   return parse_expression_text(text, problems_);
 }
 
@@ -164,7 +171,8 @@ ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
     auto var = text_value(node, child(node, "variable"));
     if (!var) return nullptr;
     var = negate_if(attribute_true(node, "negated"), var);
-    if (const auto edge = std::string(node.attribute("edge").value()); !edge.empty() && edge != "none") {
+    if (const auto edge = std::string(node.attribute("edge").value());
+        !edge.empty() && edge != "none") {
       var = edge_of(node, edge, var);
       if (!var) return nullptr;
     }
@@ -188,8 +196,7 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string type = block.attribute("typeName").value();
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
-  if (model::iequals(pin, "ENO"))
-    return fail(block, "unsupported: ENO output of block " + type);
+  if (model::iequals(pin, "ENO")) return fail(block, "unsupported: ENO output of block " + type);
   bool out_negated = false;
   std::string out_pin = pin;
   for (auto o : outputs) {
@@ -234,8 +241,7 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     const std::string f = v.attribute("formalParameter").value();
     const auto cpi = child(v, "connectionPointIn");
     if (model::iequals(f, "EN")) {
-      if (cpi && child(cpi, "connection"))
-        return fail(v, "unsupported: EN input of block " + type);
+      if (cpi && child(cpi, "connection")) return fail(v, "unsupported: EN input of block " + type);
       continue;
     }
     if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
@@ -288,7 +294,8 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
       r = model::make_binary(k, args[0], args[1], where);
       break;
     }
-    case Fn::None: break;
+    case Fn::None:
+      break;
   }
   return negate_if(out_negated, r);
 }
@@ -308,7 +315,8 @@ bool Network::call_block(pugi::xml_node block) {
       fail(v, "unsupported: EN input of block " + type);
       return false;
     }
-    if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none") {
+    if (const auto edge = std::string(v.attribute("edge").value());
+        !edge.empty() && edge != "none") {
       fail(v, "unsupported: " + edge + " edge input of block " + type);
       return false;
     }
@@ -316,7 +324,8 @@ bool Network::call_block(pugi::xml_node block) {
     if (!a) return false;
     args.emplace_back(f, negate_if(attribute_true(v, "negated"), std::move(a)));
   }
-  if (child(block, "inOutVariables") && !children(child(block, "inOutVariables"), "variable").empty()) {
+  if (child(block, "inOutVariables") &&
+      !children(child(block, "inOutVariables"), "variable").empty()) {
     fail(block, "unsupported: in/out parameters of block " + type);
     return false;
   }
@@ -330,9 +339,12 @@ ExprPtr Network::output_named(std::string_view name, bool& found) {
   for (auto n : element_children(container_)) {
     const auto kind = local_name(n);
     pugi::xml_node text;
-    if (kind == "outVariable" || kind == "inOutVariable") text = child(n, "expression");
-    else if (kind == "coil") text = child(n, "variable");
-    else continue;
+    if (kind == "outVariable" || kind == "inOutVariable")
+      text = child(n, "expression");
+    else if (kind == "coil")
+      text = child(n, "variable");
+    else
+      continue;
     if (!model::iequals(trim(body_text(text, ctx_).text), name)) continue;
     found = true;
     auto v = input(child(n, "connectionPointIn"), n);

@@ -10,10 +10,9 @@
 // reads the output of the previous call, as PLCs do. Anything else is an "unsupported"
 // diagnostic naming the block.
 
-#include <pugixml.hpp>
-
 #include <map>
 #include <optional>
+#include <pugixml.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -66,8 +65,8 @@ class Network {
   model::Diagnostics& problems_;
   std::map<std::string, pugi::xml_node> by_id_;
   std::map<std::string, pugi::xml_node> connectors_;  ///< connector name -> element
-  std::set<std::string> called_;                       ///< FB blocks (localId) already called
-  std::set<std::string> visiting_;                     ///< localIds on the evaluation path
+  std::set<std::string> called_;                      ///< FB blocks (localId) already called
+  std::set<std::string> visiting_;                    ///< localIds on the evaluation path
   model::StmtList calls_;
   std::vector<model::Variable> edge_instances_;
   std::string edge_prefix_;

@@ -3,10 +3,9 @@
 // Building one POU of a PLCopen TC6 document: what the SFC graph builder shares with the POU
 // reader. Internal to src/io.
 
-#include <pugixml.hpp>
-
 #include <map>
 #include <optional>
+#include <pugixml.hpp>
 #include <string>
 
 #include "io/plcopen_xml_dom.hpp"

@@ -25,7 +25,9 @@ constexpr const char* kCodesysActiveGuid = "700a583f-b4d4-43e4-8c14-629c7cd3bec8
 constexpr const char* kCodesysEntryGuid = "a6b08bd8-b696-47e3-9cbf-7408b61c9ff8";
 constexpr const char* kCodesysExitGuid = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
 
-bool is_step(std::string_view k) { return k == "step" || k == "macroStep"; }
+bool is_step(std::string_view k) {
+  return k == "step" || k == "macroStep";
+}
 
 bool is_structural(std::string_view k) {
   return is_step(k) || k == "transition" || k == "selectionDivergence" ||
@@ -35,7 +37,8 @@ bool is_structural(std::string_view k) {
 
 std::string describe(pugi::xml_node n) {
   std::string s(local_name(n));
-  if (const auto name = n.attribute("name"); *name.value()) s += " '" + std::string(name.value()) + "'";
+  if (const auto name = n.attribute("name"); *name.value())
+    s += " '" + std::string(name.value()) + "'";
   s += " (localId " + std::string(n.attribute("localId").value()) + ")";
   return s;
 }
@@ -56,7 +59,11 @@ void add_unique(std::vector<std::string>& v, const std::string& s) {
 class ChartBuilder {
  public:
   ChartBuilder(PouContext& pc, pugi::xml_node sfc, model::Chart& chart)
-      : pc_(pc), ctx_(pc.ctx), sfc_(sfc), chart_(chart), net_(sfc, pc.ctx, pc.ctx.diagnostics(), chart.name) {}
+      : pc_(pc),
+        ctx_(pc.ctx),
+        sfc_(sfc),
+        chart_(chart),
+        net_(sfc, pc.ctx, pc.ctx.diagnostics(), chart.name) {}
 
   void build() {
     index();
@@ -189,8 +196,8 @@ class ChartBuilder {
   }
 
   // Target steps reached from the element with localId `id`.
-  bool walk_forward(const std::string& id, pugi::xml_node transition,
-                    std::vector<std::string>& out, std::set<std::string>& seen) {
+  bool walk_forward(const std::string& id, pugi::xml_node transition, std::vector<std::string>& out,
+                    std::set<std::string>& seen) {
     bool ok = true;
     const auto it = successors_.find(id);
     if (it == successors_.end()) return true;
@@ -230,13 +237,16 @@ class ChartBuilder {
       t.name = trim(n.attribute("name").value());
       // TC6 gives an SFC transition no name attribute; the name of its inline condition
       // (`<inline name="T1">`, empty in Beremiz exports) is where a named transition's name goes.
-      if (t.name.empty()) t.name = trim(child(child(n, "condition"), "inline").attribute("name").value());
+      if (t.name.empty())
+        t.name = trim(child(child(n, "condition"), "inline").attribute("name").value());
       t.where = ctx_.where(n);
       const std::string id = n.attribute("localId").value();
       if (const std::string p = trim(n.attribute("priority").value()); !p.empty()) {
         const auto v = parse_int_literal(p);
-        if (!v) ctx_.error(n, "priority '" + p + "' is not an integer");
-        else t.priority = static_cast<int>(*v);
+        if (!v)
+          ctx_.error(n, "priority '" + p + "' is not an integer");
+        else
+          t.priority = static_cast<int>(*v);
       }
       // Beremiz: a transition wired to nothing (no input, nothing reads its output) is left
       // over from editing; Beremiz's code generator ignores it, and so does sfcv.
@@ -330,8 +340,8 @@ class ChartBuilder {
       std::string s = trim(text.text);
       if (s.rfind(":=", 0) == 0) {
         s = s.substr(2);
-      } else if (const auto pos = s.find(":="); pos != std::string::npos &&
-                                                model::iequals(trim(s.substr(0, pos)), name)) {
+      } else if (const auto pos = s.find(":=");
+                 pos != std::string::npos && model::iequals(trim(s.substr(0, pos)), name)) {
         s = s.substr(pos + 2);
       }
       s = trim(s);
@@ -370,7 +380,9 @@ class ChartBuilder {
       const auto it = by_id_.find(conn.attribute("refLocalId").value());
       if (!conn || it == by_id_.end() || !is_step(local_name(it->second))) {
         ctx_.error(ab, std::string("actionBlock is not connected to a step") +
-                           (conn ? " (refLocalId '" + std::string(conn.attribute("refLocalId").value()) + "')" : ""));
+                           (conn ? " (refLocalId '" +
+                                       std::string(conn.attribute("refLocalId").value()) + "')"
+                                 : ""));
         continue;
       }
       const std::string step = trim(it->second.attribute("name").value());
@@ -393,8 +405,10 @@ class ChartBuilder {
       as.qualifier = *parsed;
     }
     if (const std::string d = trim(a.attribute("duration").value()); !d.empty()) {
-      if (const auto ms = parse_time_literal(d)) as.duration_ms = *ms;
-      else if (is_identifier(d)) as.duration_variable = d;
+      if (const auto ms = parse_time_literal(d))
+        as.duration_ms = *ms;
+      else if (is_identifier(d))
+        as.duration_variable = d;
       else {
         ctx_.error(a, "cannot read the duration '" + d + "' (a TIME literal or variable)");
         return;
@@ -403,7 +417,8 @@ class ChartBuilder {
         ctx_.warning(a, "duration '" + d + "' ignored: qualifier " +
                             std::string(model::to_string(as.qualifier)) + " is not timed");
     } else if (model::is_timed(as.qualifier)) {
-      ctx_.error(a, "qualifier " + std::string(model::to_string(as.qualifier)) + " needs a duration");
+      ctx_.error(a,
+                 "qualifier " + std::string(model::to_string(as.qualifier)) + " needs a duration");
       return;
     }
     as.indicator = trim(a.attribute("indicator").value());
@@ -444,10 +459,14 @@ class ChartBuilder {
         for (auto attr : children(child(data, "attributes"), "attribute")) {
           const std::string_view guid = attr.attribute("guid").value();
           model::Qualifier q;
-          if (guid == kCodesysActiveGuid) q = model::Qualifier::N;
-          else if (guid == kCodesysEntryGuid) q = model::Qualifier::P1;
-          else if (guid == kCodesysExitGuid) q = model::Qualifier::P0;
-          else continue;
+          if (guid == kCodesysActiveGuid)
+            q = model::Qualifier::N;
+          else if (guid == kCodesysEntryGuid)
+            q = model::Qualifier::P1;
+          else if (guid == kCodesysExitGuid)
+            q = model::Qualifier::P0;
+          else
+            continue;
           const std::string action = trim(attr.text().get());
           if (action.empty()) continue;
           model::ActionAssociation as;

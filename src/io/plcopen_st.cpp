@@ -10,15 +10,20 @@ namespace sfcv::io::plcopen {
 
 namespace {
 
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+bool ident_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
 
 // CODESYS/TwinCAT conditions read members of members of FB instances
 // (`Table.AtStack.DI_SwitchTrue`), which the ST grammar of the model does not have. Each such
 // chain is replaced by a placeholder name before parsing and comes back as the member
 // `DI_SwitchTrue` of `Table.AtStack`: the chart still loads, and the semantics, which cannot
 // resolve `Table.AtStack`, refuses it by name instead of the loader refusing the whole file.
-std::string hide_nested_members(std::string_view text, std::map<std::string, std::pair<std::string, std::string>>& chains) {
+std::string hide_nested_members(
+    std::string_view text, std::map<std::string, std::pair<std::string, std::string>>& chains) {
   std::string out;
   std::size_t i = 0;
   while (i < text.size()) {

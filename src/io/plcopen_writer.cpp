@@ -1,17 +1,16 @@
-#include "model/errors.hpp"
 #include "io/plcopen_writer.hpp"
-
-#include <pugixml.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <map>
 #include <numeric>
+#include <pugixml.hpp>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
 
@@ -31,10 +30,14 @@ constexpr const char* kXhtml = "http://www.w3.org/1999/xhtml";
 void check_expr(const model::ExprPtr& e, const std::string& where) {
   if (!e) return;
   switch (e->kind) {
-    case ExprKind::Rising: cannot("rising edge in " + where);
-    case ExprKind::Falling: cannot("falling edge in " + where);
-    case ExprKind::Delay: cannot("Grafcet delay in " + where);
-    default: break;
+    case ExprKind::Rising:
+      cannot("rising edge in " + where);
+    case ExprKind::Falling:
+      cannot("falling edge in " + where);
+    case ExprKind::Delay:
+      cannot("Grafcet delay in " + where);
+    default:
+      break;
   }
   for (const auto& a : e->args) check_expr(a, where);
 }
@@ -63,20 +66,30 @@ void connect(pugi::xml_node n, const std::vector<unsigned>& from) {
 
 // A textual body (ST, IL) as formattedText: one xhtml paragraph holding CDATA.
 void text_language(pugi::xml_node parent, const char* language, const std::string& text) {
-  parent.append_child(language).append_child("xhtml:p").append_child(pugi::node_cdata).set_value(
-      text.c_str());
+  parent.append_child(language)
+      .append_child("xhtml:p")
+      .append_child(pugi::node_cdata)
+      .set_value(text.c_str());
 }
 
-std::string time_literal(std::int64_t ms) { return model::to_st(model::make_time(ms)); }
+std::string time_literal(std::int64_t ms) {
+  return model::to_st(model::make_time(ms));
+}
 
 void type_element(pugi::xml_node type, const model::Type& t) {
   switch (t.kind) {
-    case model::TypeKind::Bool: type.append_child("BOOL"); return;
-    case model::TypeKind::Time: type.append_child("TIME"); return;
-    case model::TypeKind::FunctionBlock:
-      type.append_child("derived").append_attribute("name") = std::string(model::to_string(t.fb)).c_str();
+    case model::TypeKind::Bool:
+      type.append_child("BOOL");
       return;
-    case model::TypeKind::Int: break;
+    case model::TypeKind::Time:
+      type.append_child("TIME");
+      return;
+    case model::TypeKind::FunctionBlock:
+      type.append_child("derived").append_attribute("name") =
+          std::string(model::to_string(t.fb)).c_str();
+      return;
+    case model::TypeKind::Int:
+      break;
   }
   std::string base = model::to_upper(t.name.substr(0, t.name.find('(')));
   auto elementary = model::elementary_type(base);
@@ -100,21 +113,30 @@ void type_element(pugi::xml_node type, const model::Type& t) {
 
 const char* section_name(model::VarDirection d) {
   switch (d) {
-    case model::VarDirection::Input: return "inputVars";
-    case model::VarDirection::Output: return "outputVars";
-    case model::VarDirection::InOut: return "inOutVars";
-    case model::VarDirection::Global: return "globalVars";
-    case model::VarDirection::External: return "externalVars";
-    case model::VarDirection::Local: break;
+    case model::VarDirection::Input:
+      return "inputVars";
+    case model::VarDirection::Output:
+      return "outputVars";
+    case model::VarDirection::InOut:
+      return "inOutVars";
+    case model::VarDirection::Global:
+      return "globalVars";
+    case model::VarDirection::External:
+      return "externalVars";
+    case model::VarDirection::Local:
+      break;
   }
   return "localVars";
 }
 
 const char* pou_type(model::PouKind k) {
   switch (k) {
-    case model::PouKind::FunctionBlock: return "functionBlock";
-    case model::PouKind::Function: return "function";
-    case model::PouKind::Program: break;
+    case model::PouKind::FunctionBlock:
+      return "functionBlock";
+    case model::PouKind::Function:
+      return "function";
+    case model::PouKind::Program:
+      break;
   }
   return "program";
 }
@@ -122,7 +144,9 @@ const char* pou_type(model::PouKind k) {
 class PouWriter {
  public:
   explicit PouWriter(const model::Pou& pou)
-      : pou_(pou), printed_(pou.associations.size(), false), chart_written_(pou.charts.size(), false) {}
+      : pou_(pou),
+        printed_(pou.associations.size(), false),
+        chart_written_(pou.charts.size(), false) {}
 
   void write(pugi::xml_node pous) {
     if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
@@ -139,7 +163,8 @@ class PouWriter {
       for (const auto& s : c.steps)
         if (s.kind == model::StepKind::MacroStep) {
           const int i = pou_.chart_index(s.expansion);
-          if (i < 0) cannot("macro-step '" + s.name + "' without its expansion '" + s.expansion + "'");
+          if (i < 0)
+            cannot("macro-step '" + s.name + "' without its expansion '" + s.expansion + "'");
           // The importer names an expansion after its macro-step.
           if (!model::iequals(s.expansion, s.name))
             cannot("macro-step '" + s.name + "' expanded by a chart of another name ('" +
@@ -213,9 +238,15 @@ class PouWriter {
         if (!v.initial) continue;
         std::string text;
         switch (v.type.kind) {
-          case model::TypeKind::Bool: text = *v.initial ? "TRUE" : "FALSE"; break;
-          case model::TypeKind::Time: text = time_literal(*v.initial); break;
-          case model::TypeKind::Int: text = std::to_string(*v.initial); break;
+          case model::TypeKind::Bool:
+            text = *v.initial ? "TRUE" : "FALSE";
+            break;
+          case model::TypeKind::Time:
+            text = time_literal(*v.initial);
+            break;
+          case model::TypeKind::Int:
+            text = std::to_string(*v.initial);
+            break;
           case model::TypeKind::FunctionBlock:
             cannot("initial value of FB instance '" + v.name + "'");
         }
@@ -230,9 +261,11 @@ class PouWriter {
       case model::ActionBodyKind::Variable: {
         // Re-created on loading from an association naming the Boolean variable.
         const auto* v = pou_.find_variable(a.variable);
-        const bool named = std::any_of(pou_.associations.begin(), pou_.associations.end(),
-                                       [&](const auto& x) { return model::iequals(x.action, a.name); });
-        if (!model::iequals(a.name, a.variable) || !v || v->type.kind != model::TypeKind::Bool || !named)
+        const bool named =
+            std::any_of(pou_.associations.begin(), pou_.associations.end(),
+                        [&](const auto& x) { return model::iequals(x.action, a.name); });
+        if (!model::iequals(a.name, a.variable) || !v || v->type.kind != model::TypeKind::Bool ||
+            !named)
           cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       }
@@ -312,11 +345,13 @@ class PouWriter {
       auto& p = plans[k];
       for (const auto& s : t.sources) {
         const auto i = step_of(s, t);
-        if (std::find(p.sources.begin(), p.sources.end(), i) == p.sources.end()) p.sources.push_back(i);
+        if (std::find(p.sources.begin(), p.sources.end(), i) == p.sources.end())
+          p.sources.push_back(i);
       }
       for (const auto& s : t.targets) {
         const auto i = step_of(s, t);
-        if (std::find(p.targets.begin(), p.targets.end(), i) == p.targets.end()) p.targets.push_back(i);
+        if (std::find(p.targets.begin(), p.targets.end(), i) == p.targets.end())
+          p.targets.push_back(i);
       }
       for (auto i : p.sources) ++consumers[i];
     }
@@ -340,22 +375,25 @@ class PouWriter {
       if (p.targets.size() > 1) p.divergence = next_id_++;
       const unsigned producer = p.divergence ? p.divergence : p.id;
       for (auto x : p.targets) {
-        if (x <= p.sources.front()) jumps.push_back({next_id_++, producer, x});
-        else incoming[x].push_back(producer);
+        if (x <= p.sources.front())
+          jumps.push_back({next_id_++, producer, x});
+        else
+          incoming[x].push_back(producer);
       }
     }
     std::vector<unsigned> in_port(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      if (incoming[i].size() == 1) in_port[i] = incoming[i][0];
-      else if (incoming[i].size() > 1) in_port[i] = next_id_++;
+      if (incoming[i].size() == 1)
+        in_port[i] = incoming[i][0];
+      else if (incoming[i].size() > 1)
+        in_port[i] = next_id_++;
     }
 
     // Steps (with their action blocks planned), in the chart's order.
     std::vector<std::pair<std::size_t, std::vector<std::size_t>>> blocks;
     for (std::size_t i = 0; i < n; ++i) {
       const auto& s = c.steps[i];
-      if (s.kind == model::StepKind::Enclosing)
-        cannot("Grafcet enclosing step '" + s.name + "'");
+      if (s.kind == model::StepKind::Enclosing) cannot("Grafcet enclosing step '" + s.name + "'");
       auto e = sfc.append_child(s.kind == model::StepKind::MacroStep ? "macroStep" : "step");
       e.append_attribute("localId") = step_id[i];
       e.append_attribute("name") = s.name.c_str();
@@ -446,8 +484,10 @@ class PouWriter {
     auto e = block.append_child("action");
     e.append_attribute("localId") = next_id_++;
     e.append_attribute("qualifier") = std::string(model::to_string(a.qualifier)).c_str();
-    if (a.duration_ms) e.append_attribute("duration") = time_literal(*a.duration_ms).c_str();
-    else if (!a.duration_variable.empty()) e.append_attribute("duration") = a.duration_variable.c_str();
+    if (a.duration_ms)
+      e.append_attribute("duration") = time_literal(*a.duration_ms).c_str();
+    else if (!a.duration_variable.empty())
+      e.append_attribute("duration") = a.duration_variable.c_str();
     else if (model::is_timed(a.qualifier))
       cannot("timed qualifier " + std::string(model::to_string(a.qualifier)) + " of action '" +
              a.action + "' without a duration");

@@ -172,10 +172,14 @@ std::optional<std::int64_t> parse_digits(std::string_view s, int base) {
   for (char ch : s) {
     if (ch == '_') continue;
     int d;
-    if (ch >= '0' && ch <= '9') d = ch - '0';
-    else if (ch >= 'a' && ch <= 'f') d = ch - 'a' + 10;
-    else if (ch >= 'A' && ch <= 'F') d = ch - 'A' + 10;
-    else return std::nullopt;
+    if (ch >= '0' && ch <= '9')
+      d = ch - '0';
+    else if (ch >= 'a' && ch <= 'f')
+      d = ch - 'a' + 10;
+    else if (ch >= 'A' && ch <= 'F')
+      d = ch - 'A' + 10;
+    else
+      return std::nullopt;
     if (d >= base) return std::nullopt;
     if (v > (std::numeric_limits<std::int64_t>::max() - d) / base) return std::nullopt;
     v = v * base + d;
@@ -189,11 +193,16 @@ std::optional<std::int64_t> parse_digits(std::string_view s, int base) {
 std::optional<std::int64_t> parse_time_literal(std::string_view text) {
   std::string s = trim(text);
   std::string_view v = s;
-  if (starts_with_ci(v, "TIME#")) v.remove_prefix(5);
-  else if (starts_with_ci(v, "LTIME#")) v.remove_prefix(6);
-  else if (starts_with_ci(v, "LT#")) v.remove_prefix(3);
-  else if (starts_with_ci(v, "T#")) v.remove_prefix(2);
-  else return std::nullopt;
+  if (starts_with_ci(v, "TIME#"))
+    v.remove_prefix(5);
+  else if (starts_with_ci(v, "LTIME#"))
+    v.remove_prefix(6);
+  else if (starts_with_ci(v, "LT#"))
+    v.remove_prefix(3);
+  else if (starts_with_ci(v, "T#"))
+    v.remove_prefix(2);
+  else
+    return std::nullopt;
   bool negative = false;
   if (!v.empty() && (v.front() == '-' || v.front() == '+')) {
     negative = v.front() == '-';
@@ -227,14 +236,22 @@ std::optional<std::int64_t> parse_time_literal(std::string_view text) {
       }
       return false;
     };
-    if (eat("ms")) unit_us = 1000;
-    else if (eat("us")) unit_us = 1;
-    else if (eat("ns")) return std::nullopt;  // below the model's resolution
-    else if (eat("d")) unit_us = 86'400'000'000LL;
-    else if (eat("h")) unit_us = 3'600'000'000LL;
-    else if (eat("m")) unit_us = 60'000'000LL;
-    else if (eat("s")) unit_us = 1'000'000LL;
-    else return std::nullopt;
+    if (eat("ms"))
+      unit_us = 1000;
+    else if (eat("us"))
+      unit_us = 1;
+    else if (eat("ns"))
+      return std::nullopt;  // below the model's resolution
+    else if (eat("d"))
+      unit_us = 86'400'000'000LL;
+    else if (eat("h"))
+      unit_us = 3'600'000'000LL;
+    else if (eat("m"))
+      unit_us = 60'000'000LL;
+    else if (eat("s"))
+      unit_us = 1'000'000LL;
+    else
+      return std::nullopt;
     total_us += *int_part * unit_us;
     std::int64_t scale = unit_us;
     for (char ch : frac) {
@@ -270,10 +287,14 @@ std::optional<std::int64_t> parse_int_literal(std::string_view text) {
   int base = 10;
   if (const auto hash = v.find('#'); hash != std::string_view::npos) {
     const auto b = v.substr(0, hash);
-    if (b == "2") base = 2;
-    else if (b == "8") base = 8;
-    else if (b == "16") base = 16;
-    else return std::nullopt;
+    if (b == "2")
+      base = 2;
+    else if (b == "8")
+      base = 8;
+    else if (b == "16")
+      base = 16;
+    else
+      return std::nullopt;
     v.remove_prefix(hash + 1);
   }
   const auto d = parse_digits(v, base);

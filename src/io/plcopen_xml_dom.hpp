@@ -4,10 +4,9 @@
 // for diagnostics, text of ST elements, and IEC literals in attributes (durations, initial
 // values). Internal to src/io.
 
-#include <pugixml.hpp>
-
 #include <cstdint>
 #include <optional>
+#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 #include <vector>

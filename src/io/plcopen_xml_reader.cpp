@@ -5,7 +5,6 @@
 // types/pous and from the addData sections where CODESYS/TwinCAT keep them.
 
 #include <pugixml.hpp>
-
 #include <set>
 #include <sstream>
 #include <string>
@@ -112,9 +111,14 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) 
             case model::TypeKind::Bool:
               if (const auto b = parse_bool_literal(text)) value = *b ? 1 : 0;
               break;
-            case model::TypeKind::Int: value = parse_int_literal(text); break;
-            case model::TypeKind::Time: value = parse_time_literal(text); break;
-            case model::TypeKind::FunctionBlock: break;
+            case model::TypeKind::Int:
+              value = parse_int_literal(text);
+              break;
+            case model::TypeKind::Time:
+              value = parse_time_literal(text);
+              break;
+            case model::TypeKind::FunctionBlock:
+              break;
           }
           if (!value)
             ctx.error(init, "cannot read the initial value '" + text + "' of variable '" +
@@ -136,8 +140,10 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) 
 
 void find_addData_pous(pugi::xml_node node, std::vector<pugi::xml_node>& out) {
   for (auto c : element_children(node)) {
-    if (local_name(c) == "pou") out.push_back(c);
-    else find_addData_pous(c, out);
+    if (local_name(c) == "pou")
+      out.push_back(c);
+    else
+      find_addData_pous(c, out);
   }
 }
 
@@ -158,10 +164,14 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
   pou.name = trim(node.attribute("name").value());
   pou.where = ctx.where(node);
   const std::string type = node.attribute("pouType").value();
-  if (type == "functionBlock") pou.kind = model::PouKind::FunctionBlock;
-  else if (type == "function") pou.kind = model::PouKind::Function;
-  else if (type == "program") pou.kind = model::PouKind::Program;
-  else ctx.warning(node, "unknown pouType '" + type + "': read as a program");
+  if (type == "functionBlock")
+    pou.kind = model::PouKind::FunctionBlock;
+  else if (type == "function")
+    pou.kind = model::PouKind::Function;
+  else if (type == "program")
+    pou.kind = model::PouKind::Program;
+  else
+    ctx.warning(node, "unknown pouType '" + type + "': read as a program");
   read_variables(ctx, child(node, "interface"), pou);
 
   PouContext pc{ctx, node, pou, {}, {}, {}, 0};
@@ -203,7 +213,9 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     const auto lang = body_language(body);
     if (!lang) continue;
     if (local_name(lang) == "SFC") {
-      build_sfc_chart(pc, lang, sfc_bodies == 0 ? pou.name : pou.name + "_" + std::to_string(sfc_bodies + 1), "");
+      build_sfc_chart(pc, lang,
+                      sfc_bodies == 0 ? pou.name : pou.name + "_" + std::to_string(sfc_bodies + 1),
+                      "");
       ++sfc_bodies;
     } else {
       other_bodies.push_back(lang);
@@ -215,7 +227,8 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     const auto lang = other_bodies[bi];
     const std::string k(local_name(lang));
     model::Diagnostics problems;
-    auto stmts = read_statement_body(pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems);
+    auto stmts =
+        read_statement_body(pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems);
     if (stmts && !stmts->empty()) {
       // Vendor bodies call instances of user function blocks (whose variables were dropped
       // above) and read global lists: a body that does not validate against the POU's own
@@ -308,7 +321,8 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
   LoadResult r;
   XmlContext ctx(file, text, r.diagnostics);
   pugi::xml_document doc;
-  const auto parsed = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+  const auto parsed =
+      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
   if (!parsed) {
     r.diagnostics.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
                              std::string("XML parse error: ") + parsed.description()});

@@ -46,7 +46,7 @@ int digit_value(char c) {
 }
 
 bool is_integer_type(const std::string& upper) {
-  static const char* const names[] = {"SINT", "INT",  "DINT",  "LINT", "USINT", "UINT",
+  static const char* const names[] = {"SINT",  "INT",   "DINT", "LINT", "USINT", "UINT",
                                       "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD"};
   for (const char* n : names)
     if (upper == n) return true;
@@ -146,8 +146,10 @@ class Lexer {
     while (digit_value(peek()) < base || (peek() == '_' && any)) {
       if (peek() != '_') {
         const int d = digit_value(peek());
-        if (value > (std::numeric_limits<std::int64_t>::max() - d) / base) overflow = true;
-        else value = value * base + d;
+        if (value > (std::numeric_limits<std::int64_t>::max() - d) / base)
+          overflow = true;
+        else
+          value = value * base + d;
         any = true;
       }
       advance();
@@ -225,13 +227,20 @@ class Lexer {
         advance();
       }
       Int128 scale = 0;
-      if (unit == "d") scale = 86400LL * 1000000000LL;
-      else if (unit == "h") scale = 3600LL * 1000000000LL;
-      else if (unit == "m") scale = 60LL * 1000000000LL;
-      else if (unit == "s") scale = 1000000000LL;
-      else if (unit == "ms") scale = 1000000LL;
-      else if (unit == "us") scale = 1000LL;
-      else if (unit == "ns") scale = 1;
+      if (unit == "d")
+        scale = 86400LL * 1000000000LL;
+      else if (unit == "h")
+        scale = 3600LL * 1000000000LL;
+      else if (unit == "m")
+        scale = 60LL * 1000000000LL;
+      else if (unit == "s")
+        scale = 1000000000LL;
+      else if (unit == "ms")
+        scale = 1000000LL;
+      else if (unit == "us")
+        scale = 1000LL;
+      else if (unit == "ns")
+        scale = 1;
       else {
         error(t.line, t.column,
               unit.empty() ? "TIME literal: missing unit (d, h, m, s, ms)"
@@ -379,7 +388,8 @@ class Lexer {
     std::string shown(1, c);
     if (static_cast<unsigned char>(c) >= 0x80 || !std::isprint(static_cast<unsigned char>(c))) {
       char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+      std::snprintf(buf, sizeof buf, "\\x%02X",
+                    static_cast<unsigned>(static_cast<unsigned char>(c)));
       shown = buf;
     }
     error(t.line, t.column, "unexpected character '" + shown + "'");

@@ -23,17 +23,38 @@ enum class TokenKind {
   Unsupported,    ///< a literal sfcv does not model (REAL, STRING, dates): text names it
   Assign,         ///< :=
   Arrow,          ///< =>
-  Colon, Semicolon, Comma, LParen, RParen, Dot, DotDot, LBracket, RBracket, Caret,
-  Eq, Ne, Lt, Le, Gt, Ge, Plus, Minus, Star, Slash, Power, Ampersand, Hash,
+  Colon,
+  Semicolon,
+  Comma,
+  LParen,
+  RParen,
+  Dot,
+  DotDot,
+  LBracket,
+  RBracket,
+  Caret,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Plus,
+  Minus,
+  Star,
+  Slash,
+  Power,
+  Ampersand,
+  Hash,
   End,  ///< end of text
 };
 
 struct Token {
   TokenKind kind = TokenKind::End;
-  std::string text;         ///< as written (identifier, literal, operator)
-  std::int64_t value = 0;   ///< Integer, Time, Bool
-  int line = 1, column = 1; ///< 1-based, relative to the lexed text
-  std::size_t offset = 0;   ///< byte offset in the lexed text
+  std::string text;          ///< as written (identifier, literal, operator)
+  std::int64_t value = 0;    ///< Integer, Time, Bool
+  int line = 1, column = 1;  ///< 1-based, relative to the lexed text
+  std::size_t offset = 0;    ///< byte offset in the lexed text
 };
 
 /// Maps positions inside a piece of text to locations in its container: a file (the text's first

@@ -18,28 +18,40 @@ using model::ExprKind;
 using model::ExprPtr;
 
 constexpr std::array<std::string_view, 47> kReserved{
-    "AND",       "OR",       "XOR",        "NOT",       "MOD",      "TRUE",       "FALSE",
-    "IF",        "THEN",     "ELSIF",      "ELSE",      "END_IF",   "CASE",       "OF",
-    "END_CASE",  "FOR",      "TO",         "BY",        "DO",       "END_FOR",    "WHILE",
-    "END_WHILE", "REPEAT",   "UNTIL",      "END_REPEAT", "RETURN",  "EXIT",       "CONTINUE",
-    "VAR",       "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_GLOBAL", "VAR_EXTERNAL",
-    "VAR_TEMP",  "END_VAR",  "AT",         "END_STEP",  "END_TRANSITION", "END_ACTION",
-    "END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION", "INITIAL_STEP", "ARRAY",
-    "POINTER",   "REF_TO"};
+    "AND",          "OR",           "XOR",
+    "NOT",          "MOD",          "TRUE",
+    "FALSE",        "IF",           "THEN",
+    "ELSIF",        "ELSE",         "END_IF",
+    "CASE",         "OF",           "END_CASE",
+    "FOR",          "TO",           "BY",
+    "DO",           "END_FOR",      "WHILE",
+    "END_WHILE",    "REPEAT",       "UNTIL",
+    "END_REPEAT",   "RETURN",       "EXIT",
+    "CONTINUE",     "VAR",          "VAR_INPUT",
+    "VAR_OUTPUT",   "VAR_IN_OUT",   "VAR_GLOBAL",
+    "VAR_EXTERNAL", "VAR_TEMP",     "END_VAR",
+    "AT",           "END_STEP",     "END_TRANSITION",
+    "END_ACTION",   "END_PROGRAM",  "END_FUNCTION_BLOCK",
+    "END_FUNCTION", "INITIAL_STEP", "ARRAY",
+    "POINTER",      "REF_TO"};
 
 // Statement keywords sfcv does not model.
-constexpr std::array<std::string_view, 6> kUnsupportedStatements{
-    "FOR", "WHILE", "REPEAT", "RETURN", "EXIT", "CONTINUE"};
+constexpr std::array<std::string_view, 6> kUnsupportedStatements{"FOR",    "WHILE", "REPEAT",
+                                                                 "RETURN", "EXIT",  "CONTINUE"};
 
-std::string upper(std::string_view s) { return model::to_upper(s); }
+std::string upper(std::string_view s) {
+  return model::to_upper(s);
+}
 
 // A flat n-ary node for associative operators, so that `a AND b AND c` and `(a AND b) AND c`
 // give one model and printing then re-parsing is the identity.
 ExprPtr nary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, const model::SourceLocation& where) {
   std::vector<ExprPtr> args;
   for (auto* side : {&lhs, &rhs}) {
-    if ((*side)->kind == kind) args.insert(args.end(), (*side)->args.begin(), (*side)->args.end());
-    else args.push_back(*side);
+    if ((*side)->kind == kind)
+      args.insert(args.end(), (*side)->args.begin(), (*side)->args.end());
+    else
+      args.push_back(*side);
   }
   return model::make_nary(kind, std::move(args), where);
 }
@@ -112,7 +124,9 @@ void Parser::fail_unexpected(std::string_view expected) const {
 
 // ------------------------------------------------------------------------------ expressions
 
-ExprPtr Parser::expression() { return or_expr(); }
+ExprPtr Parser::expression() {
+  return or_expr();
+}
 
 ExprPtr Parser::or_expr() {
   ExprPtr e = xor_expr();
@@ -155,11 +169,16 @@ ExprPtr Parser::cmp_expr() {
   ExprPtr e = add_expr();
   for (;;) {
     ExprKind kind;
-    if (at(TokenKind::Lt)) kind = ExprKind::Lt;
-    else if (at(TokenKind::Le)) kind = ExprKind::Le;
-    else if (at(TokenKind::Gt)) kind = ExprKind::Gt;
-    else if (at(TokenKind::Ge)) kind = ExprKind::Ge;
-    else return e;
+    if (at(TokenKind::Lt))
+      kind = ExprKind::Lt;
+    else if (at(TokenKind::Le))
+      kind = ExprKind::Le;
+    else if (at(TokenKind::Gt))
+      kind = ExprKind::Gt;
+    else if (at(TokenKind::Ge))
+      kind = ExprKind::Ge;
+    else
+      return e;
     const Token& op = next();
     e = bounded(model::make_binary(kind, e, add_expr(), where(op)), op);
   }
@@ -179,10 +198,14 @@ ExprPtr Parser::mul_expr() {
   ExprPtr e = unary_expr();
   for (;;) {
     ExprKind kind;
-    if (at(TokenKind::Star)) kind = ExprKind::Mul;
-    else if (at(TokenKind::Slash)) kind = ExprKind::Div;
-    else if (at_word("MOD")) kind = ExprKind::Mod;
-    else return e;
+    if (at(TokenKind::Star))
+      kind = ExprKind::Mul;
+    else if (at(TokenKind::Slash))
+      kind = ExprKind::Div;
+    else if (at_word("MOD"))
+      kind = ExprKind::Mod;
+    else
+      return e;
     const Token& op = next();
     e = bounded(model::make_binary(kind, e, unary_expr(), where(op)), op);
   }
@@ -255,11 +278,15 @@ ExprPtr Parser::primary() {
       expect(TokenKind::RParen, "')'");
       return e;
     }
-    case TokenKind::Unsupported: fail(t, "unsupported: literal " + t.text);
+    case TokenKind::Unsupported:
+      fail(t, "unsupported: literal " + t.text);
     case TokenKind::DirectAddress:
-      fail(t, "unsupported: direct address " + t.text + " in an expression (declare a variable AT it)");
-    case TokenKind::Identifier: break;
-    default: fail_unexpected("an expression");
+      fail(t, "unsupported: direct address " + t.text +
+                  " in an expression (declare a variable AT it)");
+    case TokenKind::Identifier:
+      break;
+    default:
+      fail_unexpected("an expression");
   }
   if (at_word("TRUE") || at_word("FALSE")) {
     next();
@@ -272,8 +299,7 @@ ExprPtr Parser::primary() {
   if (at(TokenKind::Caret)) fail(peek(), "unsupported: pointer dereference of '" + t.text + "'");
   if (!at(TokenKind::Dot)) return model::make_name(t.text, loc);
   next();
-  if (!at(TokenKind::Identifier))
-    fail_unexpected("a member name after '" + t.text + ".'");
+  if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '" + t.text + ".'");
   const Token& member = next();
   if (at(TokenKind::Dot))
     fail(peek(), "unsupported: nested member access '" + t.text + "." + member.text + ".'");
@@ -329,7 +355,8 @@ model::StmtPtr Parser::statement() {
                 "' (pass FB inputs in the call: inst(IN := x))");
   if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
   if (at(TokenKind::Colon))
-    fail(t, "unsupported: label '" + t.text + "' (jump labels; CASE labels must be integer literals)");
+    fail(t,
+         "unsupported: label '" + t.text + "' (jump labels; CASE labels must be integer literals)");
   if (at(TokenKind::Arrow)) fail(peek(), "unsupported: output assignment '=>'");
   fail_unexpected("':=' or '(' after '" + t.text + "'");
 }
@@ -445,7 +472,8 @@ model::Type Parser::var_type() {
   next();
   auto type = model::elementary_type(name);
   if (!type)
-    fail(t, "unsupported type '" + t.text + "' (sfcv models BOOL, integers, TIME and standard FBs)");
+    fail(t,
+         "unsupported type '" + t.text + "' (sfcv models BOOL, integers, TIME and standard FBs)");
   if (at(TokenKind::LParen)) {
     if (type->kind != model::TypeKind::Int) fail(peek(), "a subrange needs an integer base type");
     next();
@@ -454,8 +482,8 @@ model::Type Parser::var_type() {
     const std::int64_t hi = case_bound();
     expect(TokenKind::RParen, "')' after the subrange");
     if (lo > hi || lo < type->lo || hi > type->hi)
-      fail(t, "subrange " + std::to_string(lo) + ".." + std::to_string(hi) + " is empty or outside " +
-                  name);
+      fail(t, "subrange " + std::to_string(lo) + ".." + std::to_string(hi) +
+                  " is empty or outside " + name);
     type = model::Type::integer(name + "(" + std::to_string(lo) + ".." + std::to_string(hi) + ")",
                                 lo, hi);
   }

@@ -14,10 +14,10 @@
 #include <string_view>
 #include <vector>
 
-#include "model/errors.hpp"
 #include "io/st_lexer.hpp"
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
+#include "model/errors.hpp"
 #include "model/expr.hpp"
 #include "model/source_location.hpp"
 #include "model/statement.hpp"

@@ -67,8 +67,9 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
       d.where.file = "--assume '" + text + "'";
       d.where.line = r.formula->line;
       d.where.column = r.formula->column;
-      d.message = "prev(), rise() and fall() are not allowed in an assumption: it constrains "
-                  "one cycle's inputs and state";
+      d.message =
+          "prev(), rise() and fall() are not allowed in an assumption: it constrains "
+          "one cycle's inputs and state";
       out.diagnostics.push_back(std::move(d));
       continue;
     }

@@ -16,14 +16,14 @@
 namespace sfcv::logic {
 
 struct CheckInputs {
-  std::vector<std::string> ctl;      ///< --ctl formulas
-  std::string spec_text;             ///< contents of --spec (empty when none)
-  std::string spec_file;             ///< its name, for diagnostics
-  std::vector<std::string> fair;     ///< --fair
-  std::vector<std::string> assume;   ///< --assume
+  std::vector<std::string> ctl;       ///< --ctl formulas
+  std::string spec_text;              ///< contents of --spec (empty when none)
+  std::string spec_file;              ///< its name, for diagnostics
+  std::vector<std::string> fair;      ///< --fair
+  std::vector<std::string> assume;    ///< --assume
   std::vector<std::string> patterns;  ///< --pattern (logic/pattern.hpp)
   PatternOptions pattern_options;     ///< for --pattern and the spec's `pattern` statements
-  std::vector<std::string> ltl;      ///< --ltl formulas
+  std::vector<std::string> ltl;       ///< --ltl formulas
 };
 
 struct ParsedInputs {

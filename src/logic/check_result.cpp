@@ -4,10 +4,14 @@ namespace sfcv::logic {
 
 std::string_view to_string(Verdict v) {
   switch (v) {
-    case Verdict::Holds: return "holds";
-    case Verdict::Violated: return "violated";
-    case Verdict::Unknown: return "unknown";
-    case Verdict::NotChecked: return "not checked";
+    case Verdict::Holds:
+      return "holds";
+    case Verdict::Violated:
+      return "violated";
+    case Verdict::Unknown:
+      return "unknown";
+    case Verdict::NotChecked:
+      return "not checked";
   }
   return "?";
 }

@@ -23,16 +23,16 @@ enum class Verdict {
 std::string_view to_string(Verdict v);
 
 struct PropertyResult {
-  std::string name;      ///< property name, or the standard check's name
-  std::string formula;   ///< CTL text; empty for checks that are not one formula
+  std::string name;         ///< property name, or the standard check's name
+  std::string formula;      ///< CTL text; empty for checks that are not one formula
   std::string description;  ///< a pattern's requirement in English; empty otherwise
-  std::string check;     ///< standard check id ("reachable", ...); empty for user properties
+  std::string check;        ///< standard check id ("reachable", ...); empty for user properties
   Verdict verdict = Verdict::Unknown;
-  std::string message;   ///< one readable line (why unknown, what was found)
+  std::string message;                ///< one readable line (why unknown, what was found)
   std::vector<std::string> findings;  ///< standard checks: one located line per defect
   /// Every finding the check made; more than findings.size() when CheckTask::max_findings cut them.
   std::size_t findings_total = 0;
-  std::optional<Trace> trace;         ///< counterexample (Violated) or witness (Holds)
+  std::optional<Trace> trace;  ///< counterexample (Violated) or witness (Holds)
   /// SAT engines: the re-checked proof of a Holds (an inductive invariant as readable clauses
   /// over latch names, or a k-induction depth); empty otherwise.
   std::string certificate;
@@ -57,18 +57,18 @@ struct Coverage {
 };
 
 struct CheckReport {
-  std::string engine;      ///< "explicit", "bdd"
-  BigCount states;          ///< exact, also beyond 2^64 (symbolic engines)
+  std::string engine;  ///< "explicit", "bdd"
+  BigCount states;     ///< exact, also beyond 2^64 (symbolic engines)
   BigCount edges;
   bool states_known = true;  ///< false: the engine did not count states (SAT engines)
-  bool edges_known = true;  ///< false: the engine did not count edges (reports leave them out)
-  std::uint32_t depth = 0;  ///< BFS depth reached (the rings computed, less one)
+  bool edges_known = true;   ///< false: the engine did not count edges (reports leave them out)
+  std::uint32_t depth = 0;   ///< BFS depth reached (the rings computed, less one)
   /// Every property was an invariant and each met a bad state before the reachable set was
   /// complete (bdd engine): states, edges and depth count the rings explored, edges unknown.
   bool stopped_early = false;
-  bool complete = true;    ///< false when a limit stopped exploration
-  std::string limit;       ///< "states", "time", "memory" when !complete
-  double seconds = 0;      ///< exploration plus checking
+  bool complete = true;  ///< false when a limit stopped exploration
+  std::string limit;     ///< "states", "time", "memory" when !complete
+  double seconds = 0;    ///< exploration plus checking
   std::vector<PropertyResult> results;
   std::optional<Coverage> coverage;  ///< when asked for (CheckTask::coverage) and computed
 };

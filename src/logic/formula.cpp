@@ -16,39 +16,73 @@ std::shared_ptr<Formula> node(Op op, int line, int column) {
 // Binding strength for printing (NuSMV: <-> weakest, then ->, | xor, &, unary).
 int precedence(Op op) {
   switch (op) {
-    case Op::Iff: return 1;
-    case Op::Implies: return 2;
-    case Op::Or: case Op::Xor: return 3;
-    case Op::And: return 4;
-    case Op::Compare: return 5;
-    case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
-    case Op::X: case Op::F: case Op::G:
+    case Op::Iff:
+      return 1;
+    case Op::Implies:
+      return 2;
+    case Op::Or:
+    case Op::Xor:
+      return 3;
+    case Op::And:
+      return 4;
+    case Op::Compare:
+      return 5;
+    case Op::Not:
+    case Op::EX:
+    case Op::AX:
+    case Op::EF:
+    case Op::AF:
+    case Op::EG:
+    case Op::AG:
+    case Op::X:
+    case Op::F:
+    case Op::G:
       return 6;
-    default: return 7;
+    default:
+      return 7;
   }
 }
 
 std::string_view op_text(Op op) {
   switch (op) {
-    case Op::Not: return "!";
-    case Op::And: return " & ";
-    case Op::Or: return " | ";
-    case Op::Implies: return " -> ";
-    case Op::Iff: return " <-> ";
-    case Op::Xor: return " xor ";
-    case Op::EX: return "EX ";
-    case Op::AX: return "AX ";
-    case Op::EF: return "EF ";
-    case Op::AF: return "AF ";
-    case Op::EG: return "EG ";
-    case Op::AG: return "AG ";
-    case Op::X: return "X ";
-    case Op::F: return "F ";
-    case Op::G: return "G ";
-    case Op::U: return " U ";
-    case Op::R: return " R ";
-    case Op::W: return " W ";
-    default: return "";
+    case Op::Not:
+      return "!";
+    case Op::And:
+      return " & ";
+    case Op::Or:
+      return " | ";
+    case Op::Implies:
+      return " -> ";
+    case Op::Iff:
+      return " <-> ";
+    case Op::Xor:
+      return " xor ";
+    case Op::EX:
+      return "EX ";
+    case Op::AX:
+      return "AX ";
+    case Op::EF:
+      return "EF ";
+    case Op::AF:
+      return "AF ";
+    case Op::EG:
+      return "EG ";
+    case Op::AG:
+      return "AG ";
+    case Op::X:
+      return "X ";
+    case Op::F:
+      return "F ";
+    case Op::G:
+      return "G ";
+    case Op::U:
+      return " U ";
+    case Op::R:
+      return " R ";
+    case Op::W:
+      return " W ";
+    default:
+      return "";
   }
 }
 
@@ -63,9 +97,15 @@ void print(const Formula& f, int context, std::string& out) {
   const bool parens = p < context;
   if (parens) out += '(';
   switch (f.op) {
-    case Op::True: out += "TRUE"; break;
-    case Op::False: out += "FALSE"; break;
-    case Op::Atom: print_name(f, out); break;
+    case Op::True:
+      out += "TRUE";
+      break;
+    case Op::False:
+      out += "FALSE";
+      break;
+    case Op::Atom:
+      print_name(f, out);
+      break;
     case Op::Compare:
       print_name(f, out);
       out += ' ';
@@ -73,19 +113,30 @@ void print(const Formula& f, int context, std::string& out) {
       out += ' ';
       out += std::to_string(f.value);
       break;
-    case Op::Not: case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG:
-    case Op::X: case Op::F: case Op::G:
+    case Op::Not:
+    case Op::EX:
+    case Op::AX:
+    case Op::EF:
+    case Op::AF:
+    case Op::EG:
+    case Op::AG:
+    case Op::X:
+    case Op::F:
+    case Op::G:
       out += op_text(f.op);
       print(*f.args[0], p, out);
       break;
-    case Op::U: case Op::R: case Op::W:  // always parenthesised: (p U q)
+    case Op::U:
+    case Op::R:
+    case Op::W:  // always parenthesised: (p U q)
       out += '(';
       print(*f.args[0], 0, out);
       out += op_text(f.op);
       print(*f.args[1], 0, out);
       out += ')';
       break;
-    case Op::EU: case Op::AU:
+    case Op::EU:
+    case Op::AU:
       out += f.op == Op::EU ? "E[" : "A[";
       print(*f.args[0], 0, out);
       out += " U ";
@@ -130,8 +181,7 @@ FormulaPtr make_atom(std::string name, int line, int column) {
   return f;
 }
 
-FormulaPtr make_compare(std::string name, CompareOp cmp, std::int64_t value, int line,
-                        int column) {
+FormulaPtr make_compare(std::string name, CompareOp cmp, std::int64_t value, int line, int column) {
   auto f = node(Op::Compare, line, column);
   f->name = std::move(name);
   f->cmp = cmp;
@@ -193,7 +243,13 @@ bool reads_previous(const Formula& f) {
 
 bool is_temporal(Op op) {
   switch (op) {
-    case Op::EX: case Op::AX: case Op::EF: case Op::AF: case Op::EG: case Op::AG: case Op::EU:
+    case Op::EX:
+    case Op::AX:
+    case Op::EF:
+    case Op::AF:
+    case Op::EG:
+    case Op::AG:
+    case Op::EU:
     case Op::AU:
       return true;
     default:
@@ -203,7 +259,12 @@ bool is_temporal(Op op) {
 
 bool is_ltl_op(Op op) {
   switch (op) {
-    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+    case Op::X:
+    case Op::F:
+    case Op::G:
+    case Op::U:
+    case Op::R:
+    case Op::W:
       return true;
     default:
       return false;
@@ -240,28 +301,42 @@ std::string to_string(const Formula& f) {
   print(f, 0, out);
   return out;
 }
-std::string to_string(const FormulaPtr& f) { return f ? to_string(*f) : "<null>"; }
+std::string to_string(const FormulaPtr& f) {
+  return f ? to_string(*f) : "<null>";
+}
 
 std::string_view to_string(CompareOp c) {
   switch (c) {
-    case CompareOp::Eq: return "=";
-    case CompareOp::Ne: return "!=";
-    case CompareOp::Lt: return "<";
-    case CompareOp::Le: return "<=";
-    case CompareOp::Gt: return ">";
-    case CompareOp::Ge: return ">=";
+    case CompareOp::Eq:
+      return "=";
+    case CompareOp::Ne:
+      return "!=";
+    case CompareOp::Lt:
+      return "<";
+    case CompareOp::Le:
+      return "<=";
+    case CompareOp::Gt:
+      return ">";
+    case CompareOp::Ge:
+      return ">=";
   }
   return "?";
 }
 
 bool compare(CompareOp c, std::int64_t lhs, std::int64_t rhs) {
   switch (c) {
-    case CompareOp::Eq: return lhs == rhs;
-    case CompareOp::Ne: return lhs != rhs;
-    case CompareOp::Lt: return lhs < rhs;
-    case CompareOp::Le: return lhs <= rhs;
-    case CompareOp::Gt: return lhs > rhs;
-    case CompareOp::Ge: return lhs >= rhs;
+    case CompareOp::Eq:
+      return lhs == rhs;
+    case CompareOp::Ne:
+      return lhs != rhs;
+    case CompareOp::Lt:
+      return lhs < rhs;
+    case CompareOp::Le:
+      return lhs <= rhs;
+    case CompareOp::Gt:
+      return lhs > rhs;
+    case CompareOp::Ge:
+      return lhs >= rhs;
   }
   return false;
 }

@@ -13,29 +13,46 @@
 namespace sfcv::logic {
 
 enum class Op {
-  True, False,
+  True,
+  False,
   Atom,     ///< a Boolean observable: `name`
   Compare,  ///< `name cmp value` on an integer (or Boolean) observable
-  Not, And, Or, Implies, Iff, Xor,
-  EX, AX, EF, AF, EG, AG,
-  EU, AU,   ///< args[0] U args[1]
+  Not,
+  And,
+  Or,
+  Implies,
+  Iff,
+  Xor,
+  EX,
+  AX,
+  EF,
+  AF,
+  EG,
+  AG,
+  EU,
+  AU,  ///< args[0] U args[1]
   // LTL (logic/ltl_parser): X next, F eventually, G always; args[0] U/R/W args[1] are until,
   // release and weak until.
-  X, F, G, U, R, W,
+  X,
+  F,
+  G,
+  U,
+  R,
+  W,
 };
 
 enum class CompareOp { Eq, Ne, Lt, Le, Gt, Ge };
 
 struct Formula {
   Op op = Op::True;
-  std::string name;        ///< Atom, Compare: as written ("FILL_A.X", "level")
+  std::string name;  ///< Atom, Compare: as written ("FILL_A.X", "level")
   CompareOp cmp = CompareOp::Eq;
-  std::int64_t value = 0;  ///< Compare: the constant
+  std::int64_t value = 0;        ///< Compare: the constant
   std::int32_t observable = -1;  ///< Atom, Compare: index into observables() once resolved
   /// Atom, Compare: the value `prev` cycles back (0 = now): prev(x) is 1, prev(prev(x)) is 2.
   std::uint32_t prev = 0;
   std::vector<FormulaPtr> args;
-  int line = 0;    ///< where it was written (1-based; 0 = unknown)
+  int line = 0;  ///< where it was written (1-based; 0 = unknown)
   int column = 0;
   /// 1 for a leaf, else 1 + the largest height of `args` (set by make_op): the parser refuses
   /// formulas higher than model::kMaxNesting, so recursive passes stay shallow.

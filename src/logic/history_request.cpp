@@ -34,8 +34,7 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
                                                   const semantics::TransitionSystem& ts,
                                                   model::Diagnostics& diagnostics) {
   std::vector<Use> uses;
-  for (const auto& p : spec.properties)
-    collect(p.formula, property_source(p.name, p.where), uses);
+  for (const auto& p : spec.properties) collect(p.formula, property_source(p.name, p.where), uses);
   for (const auto& f : spec.fairness)
     collect(f.formula, f.where.file.empty() ? "--fair" : f.where.file, uses);
 
@@ -56,9 +55,10 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
     if (!input) continue;  // resolve() reports the unknown name
     const auto& in = ts.inputs()[*input];
     if (ts.kind() == semantics::SemanticsKind::Grafcet) {
-      error(u, "'" + u.atom->name + "' is an input this grafcet does not keep in its situations: "
-               "it is read only as a level and --multi-input-change drops the input memory; "
-               "without it every input the grafcet reads is part of the situation");
+      error(u, "'" + u.atom->name +
+                   "' is an input this grafcet does not keep in its situations: "
+                   "it is read only as a level and --multi-input-change drops the input memory; "
+                   "without it every input the grafcet reads is part of the situation");
       failed = true;
     } else if (in.type.kind != model::TypeKind::Bool) {
       error(u, "'" + u.atom->name + "' is an integer input (" + in.type.name +
@@ -80,16 +80,16 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
     if (!index) {
       const auto input = input_named(ts, u.atom->name);
       if (!input) continue;
-      const auto k = std::find(request.inputs.begin(), request.inputs.end(), *input) -
-                     request.inputs.begin();
+      const auto k =
+          std::find(request.inputs.begin(), request.inputs.end(), *input) - request.inputs.begin();
       index = num_base + static_cast<std::uint32_t>(k);
     }
     std::uint32_t cur = *index;
     for (std::uint32_t d = 0; d < u.atom->prev; ++d) {
       auto it = previous_of.find(cur);
       if (it == previous_of.end()) {
-        const auto next = num_base + static_cast<std::uint32_t>(request.inputs.size() +
-                                                                request.previous.size());
+        const auto next =
+            num_base + static_cast<std::uint32_t>(request.inputs.size() + request.previous.size());
         request.previous.push_back(cur);
         it = previous_of.emplace(cur, next).first;
       }

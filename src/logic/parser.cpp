@@ -1,4 +1,3 @@
-#include "model/errors.hpp"
 #include "logic/parser.hpp"
 
 #include <cctype>
@@ -8,6 +7,7 @@
 
 #include "logic/formula.hpp"
 #include "logic/pattern.hpp"
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -16,8 +16,27 @@ namespace sfcv::logic {
 namespace {
 
 enum class Tok {
-  Ident, Int, Not, And, Or, Implies, Iff, LParen, RParen, LBracket, RBracket,
-  Eq, Ne, Lt, Le, Gt, Ge, Semi, Colon, End, Bad,
+  Ident,
+  Int,
+  Not,
+  And,
+  Or,
+  Implies,
+  Iff,
+  LParen,
+  RParen,
+  LBracket,
+  RBracket,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Semi,
+  Colon,
+  End,
+  Bad,
 };
 
 struct Token {
@@ -89,19 +108,45 @@ std::vector<Token> lex(std::string_view s) {
       sym(Tok::Eq, 2);
     } else {
       switch (c) {
-        case '!': sym(Tok::Not, 1); break;
-        case '&': sym(Tok::And, 1); break;
-        case '|': sym(Tok::Or, 1); break;
-        case '(': sym(Tok::LParen, 1); break;
-        case ')': sym(Tok::RParen, 1); break;
-        case '[': sym(Tok::LBracket, 1); break;
-        case ']': sym(Tok::RBracket, 1); break;
-        case '=': sym(Tok::Eq, 1); break;
-        case '<': sym(Tok::Lt, 1); break;
-        case '>': sym(Tok::Gt, 1); break;
-        case ';': sym(Tok::Semi, 1); break;
-        case ':': sym(Tok::Colon, 1); break;
-        default: sym(Tok::Bad, 1); break;
+        case '!':
+          sym(Tok::Not, 1);
+          break;
+        case '&':
+          sym(Tok::And, 1);
+          break;
+        case '|':
+          sym(Tok::Or, 1);
+          break;
+        case '(':
+          sym(Tok::LParen, 1);
+          break;
+        case ')':
+          sym(Tok::RParen, 1);
+          break;
+        case '[':
+          sym(Tok::LBracket, 1);
+          break;
+        case ']':
+          sym(Tok::RBracket, 1);
+          break;
+        case '=':
+          sym(Tok::Eq, 1);
+          break;
+        case '<':
+          sym(Tok::Lt, 1);
+          break;
+        case '>':
+          sym(Tok::Gt, 1);
+          break;
+        case ';':
+          sym(Tok::Semi, 1);
+          break;
+        case ':':
+          sym(Tok::Colon, 1);
+          break;
+        default:
+          sym(Tok::Bad, 1);
+          break;
       }
     }
     out.push_back(std::move(t));
@@ -167,13 +212,13 @@ class Parser {
   // by loops (`a & b & c ...`) are both bounded by model::kMaxNesting.
   void enter(const model::NestingLevel& level, const Token& t) const {
     if (level.too_deep())
-      throw SyntaxError(t, "formula nested deeper than " + std::to_string(model::kMaxNesting) +
-                               " levels");
+      throw SyntaxError(
+          t, "formula nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
   }
   FormulaPtr bounded(FormulaPtr f, const Token& op) const {
     if (f->height > static_cast<std::uint32_t>(model::kMaxNesting))
-      throw SyntaxError(op, "formula nested deeper than " + std::to_string(model::kMaxNesting) +
-                                " levels");
+      throw SyntaxError(
+          op, "formula nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
     return f;
   }
   FormulaPtr iff() {
@@ -194,14 +239,16 @@ class Parser {
     }
     return lhs;
   }
-  bool is_xor(const Token& t) const { return t.kind == Tok::Ident && model::iequals(t.text, "xor"); }
+  bool is_xor(const Token& t) const {
+    return t.kind == Tok::Ident && model::iequals(t.text, "xor");
+  }
   FormulaPtr disjunction() {
     auto lhs = conjunction();
     while (peek().kind == Tok::Or || is_xor(peek())) {
       const auto& op = next();
-      lhs = bounded(make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()},
-                            op.line, op.column),
-                    op);
+      lhs = bounded(
+          make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()}, op.line, op.column),
+          op);
     }
     return lhs;
   }
@@ -217,18 +264,26 @@ class Parser {
   // `a & b U c` is `a & (b U c)`, `G a U b` is `(G a) U b`; right associative.
   static bool ltl_binary(const Token& t, Op& op) {
     if (t.kind != Tok::Ident) return false;
-    if (t.text == "U") op = Op::U;
-    else if (t.text == "R") op = Op::R;
-    else if (t.text == "W") op = Op::W;
-    else return false;
+    if (t.text == "U")
+      op = Op::U;
+    else if (t.text == "R")
+      op = Op::R;
+    else if (t.text == "W")
+      op = Op::W;
+    else
+      return false;
     return true;
   }
   static bool ltl_unary(const Token& t, Op& op) {
     if (t.kind != Tok::Ident) return false;
-    if (t.text == "X") op = Op::X;
-    else if (t.text == "F") op = Op::F;
-    else if (t.text == "G") op = Op::G;
-    else return false;
+    if (t.text == "X")
+      op = Op::X;
+    else if (t.text == "F")
+      op = Op::F;
+    else if (t.text == "G")
+      op = Op::G;
+    else
+      return false;
     return true;
   }
   FormulaPtr until() {
@@ -271,21 +326,32 @@ class Parser {
   }
   static CompareOp cmp_of(Tok k) {
     switch (k) {
-      case Tok::Eq: return CompareOp::Eq;
-      case Tok::Ne: return CompareOp::Ne;
-      case Tok::Lt: return CompareOp::Lt;
-      case Tok::Le: return CompareOp::Le;
-      case Tok::Gt: return CompareOp::Gt;
-      default: return CompareOp::Ge;
+      case Tok::Eq:
+        return CompareOp::Eq;
+      case Tok::Ne:
+        return CompareOp::Ne;
+      case Tok::Lt:
+        return CompareOp::Lt;
+      case Tok::Le:
+        return CompareOp::Le;
+      case Tok::Gt:
+        return CompareOp::Gt;
+      default:
+        return CompareOp::Ge;
     }
   }
   static CompareOp flip(CompareOp c) {
     switch (c) {
-      case CompareOp::Lt: return CompareOp::Gt;
-      case CompareOp::Le: return CompareOp::Ge;
-      case CompareOp::Gt: return CompareOp::Lt;
-      case CompareOp::Ge: return CompareOp::Le;
-      default: return c;
+      case CompareOp::Lt:
+        return CompareOp::Gt;
+      case CompareOp::Le:
+        return CompareOp::Ge;
+      case CompareOp::Gt:
+        return CompareOp::Lt;
+      case CompareOp::Ge:
+        return CompareOp::Le;
+      default:
+        return c;
     }
   }
   // An integer operand of a comparison: a literal or TRUE/FALSE.
@@ -294,7 +360,8 @@ class Parser {
       v = t.value;
       return true;
     }
-    if (t.kind == Tok::Ident && (model::iequals(t.text, "TRUE") || model::iequals(t.text, "FALSE"))) {
+    if (t.kind == Tok::Ident &&
+        (model::iequals(t.text, "TRUE") || model::iequals(t.text, "FALSE"))) {
       v = model::iequals(t.text, "TRUE") ? 1 : 0;
       return true;
     }
@@ -314,8 +381,8 @@ class Parser {
       next();
       auto lhs = iff();
       if (!(peek().kind == Tok::Ident && peek().text == "U"))
-        throw SyntaxError(peek(), "expected 'U' in " + t.text + "[ p U q ], found " +
-                                      describe(peek()));
+        throw SyntaxError(peek(),
+                          "expected 'U' in " + t.text + "[ p U q ], found " + describe(peek()));
       next();
       auto rhs = iff();
       expect(Tok::RBracket, "']'");
@@ -328,13 +395,15 @@ class Parser {
         const auto c = cmp_of(next().kind);
         const Token& rhs = next();
         if (rhs.kind != Tok::Ident || constant(rhs, v))
-          throw SyntaxError(rhs, "expected a variable name in a comparison, found " +
-                                     describe(rhs));
+          throw SyntaxError(rhs,
+                            "expected a variable name in a comparison, found " + describe(rhs));
         return make_compare(rhs.text, flip(c), t.value, t.line, t.column);
       }
       if (t.kind == Tok::Int)
-        throw SyntaxError(t, "an integer is not a formula; compare it with a variable, e.g. "
-                             "'level >= " + t.text + "'");
+        throw SyntaxError(t,
+                          "an integer is not a formula; compare it with a variable, e.g. "
+                          "'level >= " +
+                              t.text + "'");
       return make_const(v != 0, t.line, t.column);
     }
     if (t.kind == Tok::Ident && peek(1).kind == Tok::LParen &&
@@ -351,8 +420,8 @@ class Parser {
         const Token& rhs = next();
         std::int64_t value = 0;
         if (!constant(rhs, value))
-          throw SyntaxError(rhs, "expected an integer constant after '" + std::string(to_string(c)) +
-                                     "', found " + describe(rhs));
+          throw SyntaxError(rhs, "expected an integer constant after '" +
+                                     std::string(to_string(c)) + "', found " + describe(rhs));
         return make_compare(t.text, c, value, t.line, t.column);
       }
       return make_atom(t.text, t.line, t.column);
@@ -375,14 +444,16 @@ class Parser {
     auto shifted = shifted_back(inner);
     if (is_cmp(peek().kind)) {
       if (shifted->op != Op::Atom)
-        throw SyntaxError(peek(), "a comparison needs a variable on its left, e.g. 'prev(level) > 3'");
+        throw SyntaxError(peek(),
+                          "a comparison needs a variable on its left, e.g. 'prev(level) > 3'");
       const auto c = cmp_of(next().kind);
       const Token& rhs = next();
       std::int64_t value = 0;
       if (!constant(rhs, value))
         throw SyntaxError(rhs, "expected an integer constant after '" + std::string(to_string(c)) +
                                    "', found " + describe(rhs));
-      auto cmp = std::make_shared<Formula>(*make_compare(shifted->name, c, value, t.line, t.column));
+      auto cmp =
+          std::make_shared<Formula>(*make_compare(shifted->name, c, value, t.line, t.column));
       cmp->prev = shifted->prev;
       return cmp;
     }
@@ -404,7 +475,6 @@ model::Diagnostic error_at(const std::string& file, int line, int column, std::s
   d.message = std::move(message);
   return d;
 }
-
 
 }  // namespace
 
@@ -462,12 +532,12 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
       nf.where.line = head.line;
       nf.where.column = head.column;
       enum { Property, Assume, Fair } kind;
-      if (head.kind == Tok::Ident &&
-          (model::iequals(head.text, "property") || ltl_entry)) {
+      if (head.kind == Tok::Ident && (model::iequals(head.text, "property") || ltl_entry)) {
         kind = Property;
         p.next();
         const Token name = p.peek();
-        if (name.kind != Tok::Ident) throw SyntaxError(name, "expected a property name, found " + describe(name));
+        if (name.kind != Tok::Ident)
+          throw SyntaxError(name, "expected a property name, found " + describe(name));
         p.next();
         nf.name = name.text;
         p.expect(Tok::Colon, "':' after the property name");
@@ -475,21 +545,24 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
         // pattern name: response(a, b, within 5 cycles);  -- read by logic/pattern.hpp
         p.next();
         const Token name = p.peek();
-        if (name.kind != Tok::Ident) throw SyntaxError(name, "expected a pattern name, found " + describe(name));
+        if (name.kind != Tok::Ident)
+          throw SyntaxError(name, "expected a pattern name, found " + describe(name));
         p.next();
         p.expect(Tok::Colon, "':' after the property name");
         const Token body = p.peek();
         std::size_t end = p.pos();
         while (toks[end].kind != Tok::Semi && toks[end].kind != Tok::End) ++end;
-        if (toks[end].kind == Tok::End) throw SyntaxError(toks[end], "expected ';' at the end of the statement");
+        if (toks[end].kind == Tok::End)
+          throw SyntaxError(toks[end], "expected ';' at the end of the statement");
         pos = end + 1;
         consumed = true;
-        auto r = parse_pattern(text.substr(body.offset, toks[end].offset - body.offset), file, patterns,
-                               body.line, body.column);
+        auto r = parse_pattern(text.substr(body.offset, toks[end].offset - body.offset), file,
+                               patterns, body.line, body.column);
         out.diagnostics.insert(out.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
         for (const auto& other : out.spec.properties)
           if (model::iequals(other.name, name.text))
-            throw SyntaxError(head, "property '" + name.text + "' is defined twice (first at line " +
+            throw SyntaxError(head, "property '" + name.text +
+                                        "' is defined twice (first at line " +
                                         std::to_string(other.where.line) + ")");
         if (r.ok()) {
           nf.name = name.text;
@@ -505,8 +578,9 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
         kind = Fair;
         p.next();
       } else {
-        throw SyntaxError(head, "expected 'property', 'ltl', 'pattern', 'assume' or 'fair', found " +
-                                    describe(head));
+        throw SyntaxError(
+            head,
+            "expected 'property', 'ltl', 'pattern', 'assume' or 'fair', found " + describe(head));
       }
       nf.formula = p.formula();
       p.expect(Tok::Semi, "';' at the end of the statement");
@@ -519,8 +593,9 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
                                 "': it takes a propositional formula");
       }
       if (kind == Assume && reads_previous(*nf.formula))
-        throw SyntaxError(head, "prev(), rise() and fall() are not allowed in 'assume': an "
-                                "assumption constrains one cycle's inputs and state");
+        throw SyntaxError(head,
+                          "prev(), rise() and fall() are not allowed in 'assume': an "
+                          "assumption constrains one cycle's inputs and state");
       if (kind == Property) {
         for (const auto& other : out.spec.properties)
           if (model::iequals(other.name, nf.name))

@@ -43,10 +43,19 @@ enum class NodeKind {
   SetBuilder,  ///< { name in args[0] | args[1] }
   Call,        ///< name(args...): an operator or a library definition
   Let,         ///< let name = args[0]; args[1]
-  Union, Inter, Diff,        ///< A + B, A * B, A - B
-  And, Or, Not,              ///< & | !  (tests, and input/output expressions)
-  Count,                     ///< #A
-  Eq, Ne, Lt, Le, Gt, Ge,    ///< = != < <= > >=
+  Union,
+  Inter,
+  Diff,  ///< A + B, A * B, A - B
+  And,
+  Or,
+  Not,    ///< & | !  (tests, and input/output expressions)
+  Count,  ///< #A
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,  ///< = != < <= > >=
 };
 
 struct Node;

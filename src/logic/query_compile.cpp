@@ -10,24 +10,36 @@ namespace sfcv::logic {
 
 std::string to_string(Sort s) {
   switch (s) {
-    case Sort::States: return "a set of situations";
-    case Sort::Evolutions: return "a set of evolutions";
-    case Sort::Steps: return "a set of steps";
-    case Sort::Empty: return "the empty set";
-    case Sort::Bool: return "a test";
-    case Sort::Int: return "a number";
+    case Sort::States:
+      return "a set of situations";
+    case Sort::Evolutions:
+      return "a set of evolutions";
+    case Sort::Steps:
+      return "a set of steps";
+    case Sort::Empty:
+      return "the empty set";
+    case Sort::Bool:
+      return "a test";
+    case Sort::Int:
+      return "a number";
   }
   return "?";
 }
 
 bool compare(CmpOp op, std::int64_t a, std::int64_t b) {
   switch (op) {
-    case CmpOp::Eq: return a == b;
-    case CmpOp::Ne: return a != b;
-    case CmpOp::Lt: return a < b;
-    case CmpOp::Le: return a <= b;
-    case CmpOp::Gt: return a > b;
-    case CmpOp::Ge: return a >= b;
+    case CmpOp::Eq:
+      return a == b;
+    case CmpOp::Ne:
+      return a != b;
+    case CmpOp::Lt:
+      return a < b;
+    case CmpOp::Le:
+      return a <= b;
+    case CmpOp::Gt:
+      return a > b;
+    case CmpOp::Ge:
+      return a >= b;
   }
   return false;
 }
@@ -67,40 +79,64 @@ bool is_set(Sort s) {
 
 CmpOp cmp_of(NodeKind k) {
   switch (k) {
-    case NodeKind::Ne: return CmpOp::Ne;
-    case NodeKind::Lt: return CmpOp::Lt;
-    case NodeKind::Le: return CmpOp::Le;
-    case NodeKind::Gt: return CmpOp::Gt;
-    case NodeKind::Ge: return CmpOp::Ge;
-    default: return CmpOp::Eq;
+    case NodeKind::Ne:
+      return CmpOp::Ne;
+    case NodeKind::Lt:
+      return CmpOp::Lt;
+    case NodeKind::Le:
+      return CmpOp::Le;
+    case NodeKind::Gt:
+      return CmpOp::Gt;
+    case NodeKind::Ge:
+      return CmpOp::Ge;
+    default:
+      return CmpOp::Eq;
   }
 }
 
 CmpOp flip(CmpOp op) {
   switch (op) {
-    case CmpOp::Lt: return CmpOp::Gt;
-    case CmpOp::Le: return CmpOp::Ge;
-    case CmpOp::Gt: return CmpOp::Lt;
-    case CmpOp::Ge: return CmpOp::Le;
-    default: return op;
+    case CmpOp::Lt:
+      return CmpOp::Gt;
+    case CmpOp::Le:
+      return CmpOp::Ge;
+    case CmpOp::Gt:
+      return CmpOp::Lt;
+    case CmpOp::Ge:
+      return CmpOp::Le;
+    default:
+      return op;
   }
 }
 
 const char* op_symbol(NodeKind k) {
   switch (k) {
-    case NodeKind::Union: return "+";
-    case NodeKind::Inter: return "*";
-    case NodeKind::Diff: return "-";
-    case NodeKind::And: return "&";
-    case NodeKind::Or: return "|";
-    case NodeKind::Not: return "!";
-    case NodeKind::Eq: return "=";
-    case NodeKind::Ne: return "!=";
-    case NodeKind::Lt: return "<";
-    case NodeKind::Le: return "<=";
-    case NodeKind::Gt: return ">";
-    case NodeKind::Ge: return ">=";
-    default: return "?";
+    case NodeKind::Union:
+      return "+";
+    case NodeKind::Inter:
+      return "*";
+    case NodeKind::Diff:
+      return "-";
+    case NodeKind::And:
+      return "&";
+    case NodeKind::Or:
+      return "|";
+    case NodeKind::Not:
+      return "!";
+    case NodeKind::Eq:
+      return "=";
+    case NodeKind::Ne:
+      return "!=";
+    case NodeKind::Lt:
+      return "<";
+    case NodeKind::Le:
+      return "<=";
+    case NodeKind::Gt:
+      return ">";
+    case NodeKind::Ge:
+      return ">=";
+    default:
+      return "?";
   }
 }
 
@@ -134,14 +170,17 @@ class Compiler {
 
   Term value(const Node& n, const EnvPtr& env) {
     switch (n.kind) {
-      case NodeKind::Name: return value_name(n, env);
+      case NodeKind::Name:
+        return value_name(n, env);
       case NodeKind::Integer: {
         Term t = leaf(Term::Op::Number, Sort::Int, n);
         t.value = n.value;
         return t;
       }
-      case NodeKind::EmptySet: return leaf(Term::Op::Empty, Sort::Empty, n);
-      case NodeKind::StepList: return steps(n, env);
+      case NodeKind::EmptySet:
+        return leaf(Term::Op::Empty, Sort::Empty, n);
+      case NodeKind::StepList:
+        return steps(n, env);
       case NodeKind::SetBuilder: {
         Term domain = steps(*n.args[0], env);
         auto bound = std::make_shared<Env>();
@@ -151,25 +190,33 @@ class Compiler {
         bound->parent = env;
         Term body = value(*n.args[1], bound);
         if (body.sort != Sort::Bool)
-          throw QueryError(n.args[1]->pos, "the condition of a set of steps must be a test (e.g. "
-                                           "'... != {}'), not " + to_string(body.sort));
+          throw QueryError(n.args[1]->pos,
+                           "the condition of a set of steps must be a test (e.g. "
+                           "'... != {}'), not " +
+                               to_string(body.sort));
         Term t = leaf(Term::Op::SetBuilder, Sort::Steps, n);
         t.slot = bound->slot;
         t.args = {std::move(domain), std::move(body)};
         return t;
       }
-      case NodeKind::Call: return call(n, env, Mode::Value).first;
-      case NodeKind::Let: return value(*n.args[1], bind(n, env));
-      case NodeKind::Union: return set_binary(Term::Op::Union, n, env);
-      case NodeKind::Inter: return set_binary(Term::Op::Inter, n, env);
-      case NodeKind::Diff: return set_binary(Term::Op::Diff, n, env);
+      case NodeKind::Call:
+        return call(n, env, Mode::Value).first;
+      case NodeKind::Let:
+        return value(*n.args[1], bind(n, env));
+      case NodeKind::Union:
+        return set_binary(Term::Op::Union, n, env);
+      case NodeKind::Inter:
+        return set_binary(Term::Op::Inter, n, env);
+      case NodeKind::Diff:
+        return set_binary(Term::Op::Diff, n, env);
       case NodeKind::And:
       case NodeKind::Or: {
         Term a = value(*n.args[0], env), b = value(*n.args[1], env);
         if (a.sort != Sort::Bool || b.sort != Sort::Bool)
           throw QueryError(n.pos, std::string("'") + op_symbol(n.kind) +
                                       "' combines tests (or input/output expressions inside Nec "
-                                      "and Emis), not " + to_string(a.sort != Sort::Bool ? a.sort : b.sort) +
+                                      "and Emis), not " +
+                                      to_string(a.sort != Sort::Bool ? a.sort : b.sort) +
                                       (n.kind == NodeKind::And ? ": for an intersection write '*'"
                                                                : ": for a union write '+'"));
         Term t = leaf(n.kind == NodeKind::And ? Term::Op::And : Term::Op::Or, Sort::Bool, n);
@@ -179,9 +226,10 @@ class Compiler {
       case NodeKind::Not: {
         Term a = value(*n.args[0], env);
         if (a.sort != Sort::Bool)
-          throw QueryError(n.pos, "'!' negates a test (or an input/output expression inside Nec "
-                                  "and Emis), not " + to_string(a.sort) +
-                                  ": for a complement write 'Y - A' or 'T - A'");
+          throw QueryError(n.pos,
+                           "'!' negates a test (or an input/output expression inside Nec "
+                           "and Emis), not " +
+                               to_string(a.sort) + ": for a complement write 'Y - A' or 'T - A'");
         Term t = leaf(Term::Op::Not, Sort::Bool, n);
         t.args = {std::move(a)};
         return t;
@@ -194,8 +242,12 @@ class Compiler {
         t.args = {std::move(a)};
         return t;
       }
-      case NodeKind::Eq: case NodeKind::Ne: case NodeKind::Lt: case NodeKind::Le:
-      case NodeKind::Gt: case NodeKind::Ge: {
+      case NodeKind::Eq:
+      case NodeKind::Ne:
+      case NodeKind::Lt:
+      case NodeKind::Le:
+      case NodeKind::Gt:
+      case NodeKind::Ge: {
         Term a = value(*n.args[0], env), b = value(*n.args[1], env);
         Term t = leaf(Term::Op::IntCmp, Sort::Bool, n);
         t.cmp = cmp_of(n.kind);
@@ -225,7 +277,8 @@ class Compiler {
   /// A set of steps: `{1, X3}`, `10`, `X3`, `e` (set-builder variable), or any step-set term.
   Term steps(const Node& n, const EnvPtr& env) {
     switch (n.kind) {
-      case NodeKind::Integer: return step_literal({resolve_step_number(n)}, n);
+      case NodeKind::Integer:
+        return step_literal({resolve_step_number(n)}, n);
       case NodeKind::Name: {
         if (const Env* b = lookup(env, n.name)) {
           if (b->step_var) return step_var(*b, n);
@@ -259,11 +312,13 @@ class Compiler {
         }
         return t;
       }
-      case NodeKind::Let: return steps(*n.args[1], bind(n, env));
+      case NodeKind::Let:
+        return steps(*n.args[1], bind(n, env));
       case NodeKind::Call:
         if (builtin(n.name) == Builtin::None) return call(n, env, Mode::Steps).first;
         [[fallthrough]];
-      default: return expect_steps(value(n, env), n);
+      default:
+        return expect_steps(value(n, env), n);
     }
   }
 
@@ -285,9 +340,8 @@ class Compiler {
           return s;
         }
         if (const Definition* d = lib_.find(n.name); d && d->params.empty())
-          return expand(*d, n, {}, env, [&](const Node& body, const EnvPtr& e) {
-            return signal(body, e, mode);
-          });
+          return expand(*d, n, {}, env,
+                        [&](const Node& body, const EnvPtr& e) { return signal(body, e, mode); });
         return signal_name(n, mode);
       }
       case NodeKind::Integer: {
@@ -296,13 +350,13 @@ class Compiler {
         s.value = n.value;
         return s;
       }
-      case NodeKind::Let: return signal(*n.args[1], bind(n, env), mode);
+      case NodeKind::Let:
+        return signal(*n.args[1], bind(n, env), mode);
       case NodeKind::Call:
         if (builtin(n.name) == Builtin::None) {
           const Definition* d = find_def(n);
-          return expand(*d, n, n.args, env, [&](const Node& body, const EnvPtr& e) {
-            return signal(body, e, mode);
-          });
+          return expand(*d, n, n.args, env,
+                        [&](const Node& body, const EnvPtr& e) { return signal(body, e, mode); });
         }
         throw QueryError(n.pos, "'" + n.name + "(...)' is a set; inside " +
                                     (mode == Mode::SignalNec ? "Nec" : "Emis") +
@@ -321,13 +375,17 @@ class Compiler {
                   bool_signal(*n.args[1], env, mode, op_symbol(n.kind))};
         return s;
       }
-      case NodeKind::Eq: case NodeKind::Ne: case NodeKind::Lt: case NodeKind::Le:
-      case NodeKind::Gt: case NodeKind::Ge: {
+      case NodeKind::Eq:
+      case NodeKind::Ne:
+      case NodeKind::Lt:
+      case NodeKind::Le:
+      case NodeKind::Gt:
+      case NodeKind::Ge: {
         Signal a = signal(*n.args[0], env, mode), b = signal(*n.args[1], env, mode);
         CmpOp op = cmp_of(n.kind);
         if (a.is_int != b.is_int)
-          throw QueryError(n.pos, std::string("'") + op_symbol(n.kind) +
-                                      "' compares a Boolean with a number");
+          throw QueryError(
+              n.pos, std::string("'") + op_symbol(n.kind) + "' compares a Boolean with a number");
         if (!a.is_int && n.kind != NodeKind::Eq && n.kind != NodeKind::Ne)
           throw QueryError(n.pos, std::string("'") + op_symbol(n.kind) + "' needs numbers");
         if (mentions_input(a) || mentions_input(b)) {
@@ -338,8 +396,9 @@ class Compiler {
             op = flip(op);
           }
           if (a.op != Signal::Op::Input || b.op != Signal::Op::Const)
-            throw QueryError(n.pos, "inside Nec an input may only be compared with a number "
-                                    "(e.g. 'level > 3')");
+            throw QueryError(n.pos,
+                             "inside Nec an input may only be compared with a number "
+                             "(e.g. 'level > 3')");
         }
         Signal s;
         s.op = Signal::Op::Cmp;
@@ -413,7 +472,8 @@ class Compiler {
         t.op = Term::Op::Emis;
         t.signal = bool_signal(*n.args[0], env, Mode::SignalEmis, "Emis");
         break;
-      case Builtin::None: break;
+      case Builtin::None:
+        break;
     }
     return {std::move(t), false};
   }
@@ -452,8 +512,8 @@ class Compiler {
                                           " argument(s), " + std::to_string(args.size()) +
                                           " given (defined at " + d.pos.str() + ")");
     if (++depth_ > 64)
-      throw QueryError(call_node.pos, "definitions nested more than 64 deep (is '" + d.name +
-                                          "' recursive?)");
+      throw QueryError(call_node.pos,
+                       "definitions nested more than 64 deep (is '" + d.name + "' recursive?)");
     EnvPtr body_env;  // definitions see only their parameters
     for (std::size_t i = 0; i < args.size(); ++i) {
       auto e = std::make_shared<Env>();
@@ -470,8 +530,8 @@ class Compiler {
     } catch (const QueryError& err) {
       --depth_;
       if (err.pos().source == call_node.pos.source) throw;
-      throw QueryError(err.pos(), err.message() + " (in '" + d.name + "' used at " +
-                                      call_node.pos.str() + ")");
+      throw QueryError(
+          err.pos(), err.message() + " (in '" + d.name + "' used at " + call_node.pos.str() + ")");
     }
   }
 
@@ -486,9 +546,8 @@ class Compiler {
     if (n.name == "Tclear") return leaf(Term::Op::Clearing, Sort::Evolutions, n);
     if (n.name == "Steps") return leaf(Term::Op::AllSteps, Sort::Steps, n);
     if (const Definition* d = lib_.find(n.name); d && d->params.empty())
-      return expand(*d, n, {}, env, [&](const Node& body, const EnvPtr& e) {
-        return value(body, e);
-      });
+      return expand(*d, n, {}, env,
+                    [&](const Node& body, const EnvPtr& e) { return value(body, e); });
     std::string err;
     if (auto o = semantics::find_observable(ts_, n.name, &err)) {
       const auto& obs = ts_.observables()[*o];
@@ -496,9 +555,9 @@ class Compiler {
         throw QueryError(n.pos, "'" + n.name + "' is a step: write {" + n.name +
                                     "} for the set of steps, Act({" + n.name +
                                     "}) for the situations where it is active");
-      throw QueryError(n.pos, "'" + n.name + "' is " +
-                                  (obs.is_output ? "an output" : "a variable") + ", not a set: " +
-                                  "write Emis(" + n.name + ") for the situations emitting it");
+      throw QueryError(
+          n.pos, "'" + n.name + "' is " + (obs.is_output ? "an output" : "a variable") +
+                     ", not a set: " + "write Emis(" + n.name + ") for the situations emitting it");
     }
     if (find_input(n.name))
       throw QueryError(n.pos, "'" + n.name + "' is an input, not a set: write Nec(" + n.name +
@@ -531,14 +590,16 @@ class Compiler {
       return s;
     }
     if (input)
-      throw QueryError(n.pos, "'" + n.name + "' is an input: Emis talks about outputs and steps "
-                                             "(use Nec for conditions on inputs)");
+      throw QueryError(n.pos, "'" + n.name +
+                                  "' is an input: Emis talks about outputs and steps "
+                                  "(use Nec for conditions on inputs)");
     throw QueryError(n.pos, err);
   }
 
   Signal bool_signal(const Node& n, const EnvPtr& env, Mode mode, const std::string& what) {
     Signal s = signal(n, env, mode);
-    if (s.is_int) throw QueryError(n.pos, "'" + what + "' needs a Boolean expression, not a number");
+    if (s.is_int)
+      throw QueryError(n.pos, "'" + what + "' needs a Boolean expression, not a number");
     return s;
   }
 
@@ -566,10 +627,10 @@ class Compiler {
   std::uint32_t check_step(std::uint32_t o, const Node& n) {
     const auto& obs = ts_.observables()[o];
     if (obs.kind != semantics::ObservableKind::Step)
-      throw QueryError(n.pos, "'" + n.name + "' is not a step (it is " +
-                                  (obs.kind == semantics::ObservableKind::Action ? "an action"
-                                                                                 : "a variable") +
-                                  ")");
+      throw QueryError(
+          n.pos, "'" + n.name + "' is not a step (it is " +
+                     (obs.kind == semantics::ObservableKind::Action ? "an action" : "a variable") +
+                     ")");
     return o;
   }
 

@@ -33,27 +33,44 @@ bool compare(CmpOp op, std::int64_t a, std::int64_t b);
 /// inputs (Nec) and of one situation's observables.
 struct Signal {
   enum class Op { Const, Input, Observable, StepVar, Not, And, Or, Cmp } op = Op::Const;
-  bool is_int = false;       ///< integer-valued (Const, Input, Observable)
-  std::int64_t value = 0;    ///< Const
-  std::uint32_t index = 0;   ///< Input: TransitionSystem::inputs(); Observable; StepVar: slot
-  CmpOp cmp = CmpOp::Eq;     ///< Cmp
+  bool is_int = false;      ///< integer-valued (Const, Input, Observable)
+  std::int64_t value = 0;   ///< Const
+  std::uint32_t index = 0;  ///< Input: TransitionSystem::inputs(); Observable; StepVar: slot
+  CmpOp cmp = CmpOp::Eq;    ///< Cmp
   std::vector<Signal> args;
 };
 
 struct Term {
   enum class Op {
-    AllStates, AllEvolutions, Initial, AllSteps, Empty,  ///< Y, T, Y0, Steps, {}
-    Clearing,      ///< Tclear: the evolutions that clear at least one transition
-    StepLiteral,   ///< steps
-    StepVar,       ///< {e} for the set-builder variable in `slot`
-    Union, Inter, Diff,
-    Int, Ext, Amont, Aval, Succ, Pred, Act, Des,
-    Nec, Emis,     ///< signal
-    SetBuilder,    ///< { slot in args[0] | args[1] }
-    Count, Number,
-    SetCmp,        ///< args[0] cmp args[1], sets (Eq / Ne)
-    IntCmp,        ///< args[0] cmp args[1], integers
-    And, Or, Not,  ///< tests
+    AllStates,
+    AllEvolutions,
+    Initial,
+    AllSteps,
+    Empty,        ///< Y, T, Y0, Steps, {}
+    Clearing,     ///< Tclear: the evolutions that clear at least one transition
+    StepLiteral,  ///< steps
+    StepVar,      ///< {e} for the set-builder variable in `slot`
+    Union,
+    Inter,
+    Diff,
+    Int,
+    Ext,
+    Amont,
+    Aval,
+    Succ,
+    Pred,
+    Act,
+    Des,
+    Nec,
+    Emis,        ///< signal
+    SetBuilder,  ///< { slot in args[0] | args[1] }
+    Count,
+    Number,
+    SetCmp,  ///< args[0] cmp args[1], sets (Eq / Ne)
+    IntCmp,  ///< args[0] cmp args[1], integers
+    And,
+    Or,
+    Not,  ///< tests
   } op = Op::Empty;
   Sort sort = Sort::Empty;
   std::vector<Term> args;
@@ -61,7 +78,7 @@ struct Term {
   std::uint32_t slot = 0;            ///< StepVar, SetBuilder
   std::int64_t value = 0;            ///< Number
   CmpOp cmp = CmpOp::Eq;
-  Signal signal;                     ///< Nec, Emis
+  Signal signal;  ///< Nec, Emis
   QueryPos pos;
 };
 
@@ -82,7 +99,7 @@ class QueryLibrary {
 };
 
 struct CompiledQuery {
-  std::string text;    ///< the query as written
+  std::string text;  ///< the query as written
   Term root;
   std::uint32_t slots = 0;  ///< set-builder variables (evaluation scratch size)
 };
@@ -113,12 +130,14 @@ std::optional<bool> judge_query_test(const Term& t, Number&& number, SameSet&& s
       if (!a) return a;
       return !*a;
     }
-    case Term::Op::IntCmp: return compare(t.cmp, number(t.args[0]), number(t.args[1]));
+    case Term::Op::IntCmp:
+      return compare(t.cmp, number(t.args[0]), number(t.args[1]));
     case Term::Op::SetCmp: {
       const bool eq = same_set(t.args[0], t.args[1]);
       return t.cmp == CmpOp::Eq ? eq : !eq;
     }
-    default: return std::nullopt;
+    default:
+      return std::nullopt;
   }
 }
 

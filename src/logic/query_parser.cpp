@@ -19,8 +19,28 @@ std::string QueryPos::str() const {
 namespace {
 
 enum class Tok {
-  Ident, Int, LParen, RParen, LBrace, RBrace, Comma, Semi, Eq, Ne, Lt, Le, Gt, Ge,
-  Plus, Minus, Star, Amp, Bar, Bang, Hash, End,
+  Ident,
+  Int,
+  LParen,
+  RParen,
+  LBrace,
+  RBrace,
+  Comma,
+  Semi,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Plus,
+  Minus,
+  Star,
+  Amp,
+  Bar,
+  Bang,
+  Hash,
+  End,
 };
 
 struct Token {
@@ -33,10 +53,14 @@ struct Token {
 
 std::string describe(const Token& t) {
   switch (t.kind) {
-    case Tok::End: return "end of input";
-    case Tok::Ident: return "'" + t.text + "'";
-    case Tok::Int: return "'" + t.text + "'";
-    default: return "'" + t.text + "'";
+    case Tok::End:
+      return "end of input";
+    case Tok::Ident:
+      return "'" + t.text + "'";
+    case Tok::Int:
+      return "'" + t.text + "'";
+    default:
+      return "'" + t.text + "'";
   }
 }
 
@@ -81,8 +105,8 @@ class Lexer {
       t.text = std::string(text_.substr(start, i_ - start));
       const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.value);
       if (r.ec != std::errc()) throw QueryError(t.pos, "integer '" + t.text + "' is too large");
-      if (i_ < text_.size() && (std::isalpha(static_cast<unsigned char>(text_[i_])) ||
-                                text_[i_] == '_'))
+      if (i_ < text_.size() &&
+          (std::isalpha(static_cast<unsigned char>(text_[i_])) || text_[i_] == '_'))
         throw QueryError(here(), "unexpected '" + std::string(1, text_[i_]) + "' after a number");
       return t;
     }
@@ -94,25 +118,41 @@ class Lexer {
       return t;
     };
     switch (c) {
-      case '(': return sym(Tok::LParen, 1);
-      case ')': return sym(Tok::RParen, 1);
-      case '{': return sym(Tok::LBrace, 1);
-      case '}': return sym(Tok::RBrace, 1);
-      case ',': return sym(Tok::Comma, 1);
-      case ';': return sym(Tok::Semi, 1);
-      case '+': return sym(Tok::Plus, 1);
-      case '-': return sym(Tok::Minus, 1);
-      case '*': return sym(Tok::Star, 1);
-      case '&': return two('&') ? sym(Tok::Amp, 2) : sym(Tok::Amp, 1);
-      case '|': return two('|') ? sym(Tok::Bar, 2) : sym(Tok::Bar, 1);
-      case '#': return sym(Tok::Hash, 1);
-      case '=': return two('=') ? sym(Tok::Eq, 2) : sym(Tok::Eq, 1);
-      case '!': return two('=') ? sym(Tok::Ne, 2) : sym(Tok::Bang, 1);
+      case '(':
+        return sym(Tok::LParen, 1);
+      case ')':
+        return sym(Tok::RParen, 1);
+      case '{':
+        return sym(Tok::LBrace, 1);
+      case '}':
+        return sym(Tok::RBrace, 1);
+      case ',':
+        return sym(Tok::Comma, 1);
+      case ';':
+        return sym(Tok::Semi, 1);
+      case '+':
+        return sym(Tok::Plus, 1);
+      case '-':
+        return sym(Tok::Minus, 1);
+      case '*':
+        return sym(Tok::Star, 1);
+      case '&':
+        return two('&') ? sym(Tok::Amp, 2) : sym(Tok::Amp, 1);
+      case '|':
+        return two('|') ? sym(Tok::Bar, 2) : sym(Tok::Bar, 1);
+      case '#':
+        return sym(Tok::Hash, 1);
+      case '=':
+        return two('=') ? sym(Tok::Eq, 2) : sym(Tok::Eq, 1);
+      case '!':
+        return two('=') ? sym(Tok::Ne, 2) : sym(Tok::Bang, 1);
       case '<':
         if (two('>')) return sym(Tok::Ne, 2);
         return two('=') ? sym(Tok::Le, 2) : sym(Tok::Lt, 1);
-      case '>': return two('=') ? sym(Tok::Ge, 2) : sym(Tok::Gt, 1);
-      default: break;
+      case '>':
+        return two('=') ? sym(Tok::Ge, 2) : sym(Tok::Gt, 1);
+      default:
+        break;
     }
     throw QueryError(t.pos, "unexpected character '" + std::string(1, c) + "'");
   }
@@ -169,8 +209,8 @@ class Parser {
     std::vector<Definition> defs;
     while (tok_.kind != Tok::End) {
       if (tok_.kind != Tok::Ident || tok_.text != "def")
-        throw QueryError(tok_.pos, "expected 'def name(params) = query;' but found " +
-                                       describe(tok_));
+        throw QueryError(tok_.pos,
+                         "expected 'def name(params) = query;' but found " + describe(tok_));
       Definition d;
       d.doc = tok_.doc;
       d.pos = tok_.pos;
@@ -203,7 +243,8 @@ class Parser {
     return t;
   }
   Token expect(Tok k, const std::string& what) {
-    if (tok_.kind != k) throw QueryError(tok_.pos, "expected " + what + " but found " + describe(tok_));
+    if (tok_.kind != k)
+      throw QueryError(tok_.pos, "expected " + what + " but found " + describe(tok_));
     return take();
   }
   Token ident(const std::string& what) {
@@ -260,20 +301,39 @@ class Parser {
     auto lhs = sum();
     NodeKind k;
     switch (tok_.kind) {
-      case Tok::Eq: k = NodeKind::Eq; break;
-      case Tok::Ne: k = NodeKind::Ne; break;
-      case Tok::Lt: k = NodeKind::Lt; break;
-      case Tok::Le: k = NodeKind::Le; break;
-      case Tok::Gt: k = NodeKind::Gt; break;
-      case Tok::Ge: k = NodeKind::Ge; break;
-      default: return lhs;
+      case Tok::Eq:
+        k = NodeKind::Eq;
+        break;
+      case Tok::Ne:
+        k = NodeKind::Ne;
+        break;
+      case Tok::Lt:
+        k = NodeKind::Lt;
+        break;
+      case Tok::Le:
+        k = NodeKind::Le;
+        break;
+      case Tok::Gt:
+        k = NodeKind::Gt;
+        break;
+      case Tok::Ge:
+        k = NodeKind::Ge;
+        break;
+      default:
+        return lhs;
     }
     const auto pos = take().pos;
     auto rhs = sum();
     switch (tok_.kind) {
-      case Tok::Eq: case Tok::Ne: case Tok::Lt: case Tok::Le: case Tok::Gt: case Tok::Ge:
+      case Tok::Eq:
+      case Tok::Ne:
+      case Tok::Lt:
+      case Tok::Le:
+      case Tok::Gt:
+      case Tok::Ge:
         throw QueryError(tok_.pos, "comparisons do not chain: add parentheses");
-      default: break;
+      default:
+        break;
     }
     return make(k, pos, {lhs, rhs});
   }
@@ -312,8 +372,9 @@ class Parser {
         // A negative literal (comparisons inside Nec/Emis): `n > -1`.
         auto m = take();
         if (tok_.kind != Tok::Int)
-          throw QueryError(m.pos, "'-' here must be followed by a number (set difference needs a "
-                                  "left operand)");
+          throw QueryError(m.pos,
+                           "'-' here must be followed by a number (set difference needs a "
+                           "left operand)");
         auto t = take();
         return make(NodeKind::Integer, m.pos, {}, "-" + t.text, -t.value);
       }
@@ -323,7 +384,8 @@ class Parser {
         expect(Tok::RParen, "')'");
         return e;
       }
-      case Tok::LBrace: return braces();
+      case Tok::LBrace:
+        return braces();
       case Tok::Ident: {
         if (tok_.text == "let") return expr();
         auto t = ident("a name");
@@ -359,8 +421,8 @@ class Parser {
         elems.push_back(make(NodeKind::Integer, t.pos, {}, t.text, t.value));
       } else if (tok_.kind == Tok::Ident && !is_keyword(tok_.text)) {
         auto t = take();
-        if (elems.empty() && (tok_.kind == Tok::Bar ||
-                              (tok_.kind == Tok::Ident && tok_.text == "in"))) {
+        if (elems.empty() &&
+            (tok_.kind == Tok::Bar || (tok_.kind == Tok::Ident && tok_.text == "in"))) {
           NodePtr domain;
           if (tok_.kind == Tok::Ident) {
             take();
@@ -375,8 +437,8 @@ class Parser {
         }
         elems.push_back(make(NodeKind::Name, t.pos, {}, t.text));
       } else {
-        throw QueryError(tok_.pos, "expected a step (a number or a name) but found " +
-                                       describe(tok_));
+        throw QueryError(tok_.pos,
+                         "expected a step (a number or a name) but found " + describe(tok_));
       }
       if (tok_.kind != Tok::Comma) break;
       take();
@@ -400,33 +462,59 @@ class Parser {
 
 int precedence(NodeKind k) {
   switch (k) {
-    case NodeKind::Let: return 0;
-    case NodeKind::Or: return 1;
-    case NodeKind::And: return 2;
-    case NodeKind::Not: return 3;
-    case NodeKind::Eq: case NodeKind::Ne: case NodeKind::Lt: case NodeKind::Le:
-    case NodeKind::Gt: case NodeKind::Ge: return 4;
-    case NodeKind::Union: case NodeKind::Diff: return 5;
-    case NodeKind::Inter: return 6;
-    case NodeKind::Count: return 7;
-    default: return 8;
+    case NodeKind::Let:
+      return 0;
+    case NodeKind::Or:
+      return 1;
+    case NodeKind::And:
+      return 2;
+    case NodeKind::Not:
+      return 3;
+    case NodeKind::Eq:
+    case NodeKind::Ne:
+    case NodeKind::Lt:
+    case NodeKind::Le:
+    case NodeKind::Gt:
+    case NodeKind::Ge:
+      return 4;
+    case NodeKind::Union:
+    case NodeKind::Diff:
+      return 5;
+    case NodeKind::Inter:
+      return 6;
+    case NodeKind::Count:
+      return 7;
+    default:
+      return 8;
   }
 }
 
 const char* op_text(NodeKind k) {
   switch (k) {
-    case NodeKind::Or: return " | ";
-    case NodeKind::And: return " & ";
-    case NodeKind::Eq: return " = ";
-    case NodeKind::Ne: return " != ";
-    case NodeKind::Lt: return " < ";
-    case NodeKind::Le: return " <= ";
-    case NodeKind::Gt: return " > ";
-    case NodeKind::Ge: return " >= ";
-    case NodeKind::Union: return " + ";
-    case NodeKind::Diff: return " - ";
-    case NodeKind::Inter: return " * ";
-    default: return " ? ";
+    case NodeKind::Or:
+      return " | ";
+    case NodeKind::And:
+      return " & ";
+    case NodeKind::Eq:
+      return " = ";
+    case NodeKind::Ne:
+      return " != ";
+    case NodeKind::Lt:
+      return " < ";
+    case NodeKind::Le:
+      return " <= ";
+    case NodeKind::Gt:
+      return " > ";
+    case NodeKind::Ge:
+      return " >= ";
+    case NodeKind::Union:
+      return " + ";
+    case NodeKind::Diff:
+      return " - ";
+    case NodeKind::Inter:
+      return " * ";
+    default:
+      return " ? ";
   }
 }
 
@@ -434,9 +522,12 @@ std::string print(const Node& n, int context) {
   const int p = precedence(n.kind);
   std::string s;
   switch (n.kind) {
-    case NodeKind::Name: return n.name;
-    case NodeKind::Integer: return std::to_string(n.value);
-    case NodeKind::EmptySet: return "{}";
+    case NodeKind::Name:
+      return n.name;
+    case NodeKind::Integer:
+      return std::to_string(n.value);
+    case NodeKind::EmptySet:
+      return "{}";
     case NodeKind::StepList:
       s = "{";
       for (std::size_t i = 0; i < n.args.size(); ++i) s += (i ? ", " : "") + print(*n.args[i], 0);
@@ -451,8 +542,12 @@ std::string print(const Node& n, int context) {
       s = "let " + n.name + " = " + print(*n.args[0], 0) + "; " + print(*n.args[1], 0);
       break;
     // Parenthesise a negated comparison, although `!` binds looser, for the reader.
-    case NodeKind::Not: s = "!" + print(*n.args[0], 5); break;
-    case NodeKind::Count: s = "#" + print(*n.args[0], p); break;
+    case NodeKind::Not:
+      s = "!" + print(*n.args[0], 5);
+      break;
+    case NodeKind::Count:
+      s = "#" + print(*n.args[0], p);
+      break;
     default:
       // Left-associative: the right operand needs parentheses at equal precedence.
       s = print(*n.args[0], p) + op_text(n.kind) + print(*n.args[1], p + 1);
@@ -463,7 +558,9 @@ std::string print(const Node& n, int context) {
 
 }  // namespace
 
-std::string to_string(const Node& n) { return print(n, 0); }
+std::string to_string(const Node& n) {
+  return print(n, 0);
+}
 
 NodePtr parse_query(std::string_view text, const std::string& source_name) {
   return Parser(text, source_name).query();

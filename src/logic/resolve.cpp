@@ -38,7 +38,8 @@ FormulaPtr bind(const FormulaPtr& f, const semantics::TransitionSystem& ts,
     for (std::uint32_t d = 0; d < f->prev; ++d) {
       const auto previous = ts.previous_observable(bound);
       if (!previous)
-        return error("prev(" + f->name + "): this system does not keep previous values "
+        return error("prev(" + f->name +
+                     "): this system does not keep previous values "
                      "(resolve against logic::history_system_for)");
       bound = *previous;
     }

@@ -81,7 +81,8 @@ std::vector<bool> loop_steps(const model::Chart& chart) {
     for (const auto& s : t.sources)
       for (const auto& d : t.targets) {
         const int a = chart.step_index(s), b = chart.step_index(d);
-        if (a >= 0 && b >= 0) succ[static_cast<std::size_t>(a)].push_back(static_cast<std::size_t>(b));
+        if (a >= 0 && b >= 0)
+          succ[static_cast<std::size_t>(a)].push_back(static_cast<std::size_t>(b));
       }
   std::vector<bool> on_loop(n, false);
   for (std::size_t s = 0; s < n; ++s) {
@@ -123,7 +124,8 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
             }
           }
           if (!found || matched.count(idx)) continue;
-          matched[idx] = StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where, obs[idx].name};
+          matched[idx] =
+              StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where, obs[idx].name};
         }
       }
   }

@@ -19,23 +19,31 @@ model::ExprPtr to_expr(const Formula& f, const std::string& file) {
   };
   auto arg = [&](std::size_t i) { return to_expr(*f.args[i], file); };
   switch (f.op) {
-    case Op::True: return model::make_bool(true, where);
-    case Op::False: return model::make_bool(false, where);
-    case Op::Atom: return name();
+    case Op::True:
+      return model::make_bool(true, where);
+    case Op::False:
+      return model::make_bool(false, where);
+    case Op::Atom:
+      return name();
     case Op::Compare: {
       static constexpr ExprKind kinds[] = {ExprKind::Eq, ExprKind::Ne, ExprKind::Lt,
                                            ExprKind::Le, ExprKind::Gt, ExprKind::Ge};
       return model::make_binary(kinds[static_cast<int>(f.cmp)], name(),
                                 model::make_int(f.value, where), where);
     }
-    case Op::Not: return model::make_unary(ExprKind::Not, arg(0), where);
-    case Op::And: return model::make_nary(ExprKind::And, {arg(0), arg(1)}, where);
-    case Op::Or: return model::make_nary(ExprKind::Or, {arg(0), arg(1)}, where);
-    case Op::Xor: return model::make_nary(ExprKind::Xor, {arg(0), arg(1)}, where);
+    case Op::Not:
+      return model::make_unary(ExprKind::Not, arg(0), where);
+    case Op::And:
+      return model::make_nary(ExprKind::And, {arg(0), arg(1)}, where);
+    case Op::Or:
+      return model::make_nary(ExprKind::Or, {arg(0), arg(1)}, where);
+    case Op::Xor:
+      return model::make_nary(ExprKind::Xor, {arg(0), arg(1)}, where);
     case Op::Implies:
       return model::make_nary(ExprKind::Or,
                               {model::make_unary(ExprKind::Not, arg(0), where), arg(1)}, where);
-    case Op::Iff: return model::make_binary(ExprKind::Eq, arg(0), arg(1), where);
+    case Op::Iff:
+      return model::make_binary(ExprKind::Eq, arg(0), arg(1), where);
     default:
       throw std::invalid_argument("to_expr: temporal operator in '" + to_string(f) + "'");
   }

@@ -27,7 +27,7 @@ struct Trace {
   std::vector<TraceStep> steps;
   /// Lasso: the last step's state equals steps[*loop_start].state; the loop repeats forever.
   std::optional<std::size_t> loop_start;
-  bool ends_in_deadlock = false;  ///< a finite maximal run: the last state has no successor
+  bool ends_in_deadlock = false;      ///< a finite maximal run: the last state has no successor
   std::vector<std::uint32_t> marked;  ///< observables of the property's atoms (shown marked)
   std::string note;                   ///< one line on how to read it
 };

@@ -38,8 +38,8 @@ void answer_vacuity(CheckReport& report, const std::vector<VacuityQuestion>& que
       case Verdict::Holds:
         r.vacuous = false;
         r.vacuity = "not vacuous: the antecedent " + a + " is reachable (EF " + a + " holds, " +
-                    "witness of " +
-                    std::to_string(answer.trace ? answer.trace->steps.size() : 0) + " situations)";
+                    "witness of " + std::to_string(answer.trace ? answer.trace->steps.size() : 0) +
+                    " situations)";
         break;
       case Verdict::Violated:
         r.vacuous = true;
@@ -51,9 +51,9 @@ void answer_vacuity(CheckReport& report, const std::vector<VacuityQuestion>& que
         break;
     }
   }
-  report.results.erase(report.results.begin() + static_cast<std::ptrdiff_t>(num_properties),
-                       report.results.begin() +
-                           static_cast<std::ptrdiff_t>(num_properties + questions.size()));
+  report.results.erase(
+      report.results.begin() + static_cast<std::ptrdiff_t>(num_properties),
+      report.results.begin() + static_cast<std::ptrdiff_t>(num_properties + questions.size()));
 }
 
 }  // namespace sfcv::logic

@@ -22,18 +22,18 @@ struct Progress {
   std::uint64_t states = 0;
   std::uint64_t edges = 0;
   std::uint32_t depth = 0;
-  double seconds = 0;        ///< since the phase started
+  double seconds = 0;       ///< since the phase started
   const char* phase = "";   ///< "explore", "checks", "build", ...
-  std::uint64_t done = 0;    ///< checks (or items) done in this phase
-  std::uint64_t total = 0;   ///< out of; 0 = not counted
+  std::uint64_t done = 0;   ///< checks (or items) done in this phase
+  std::uint64_t total = 0;  ///< out of; 0 = not counted
 };
 
 struct Budget {
   using Clock = std::chrono::steady_clock;
 
-  std::optional<Clock::time_point> deadline;  ///< none: no time limit
-  std::uint64_t max_states = 0;                ///< 0 = unlimited
-  std::uint64_t max_memory_bytes = 0;          ///< 0 = unlimited
+  std::optional<Clock::time_point> deadline;      ///< none: no time limit
+  std::uint64_t max_states = 0;                   ///< 0 = unlimited
+  std::uint64_t max_memory_bytes = 0;             ///< 0 = unlimited
   std::function<void(const Progress&)> progress;  ///< may be empty
   /// Raised by another thread to stop the run (the portfolio of --engine auto cancels the
   /// engines that lost): every engine reads it where it reads the deadline, so a cancelled run

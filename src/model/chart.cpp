@@ -8,9 +8,18 @@ namespace sfcv::model {
 
 namespace {
 constexpr std::array<std::pair<Qualifier, std::string_view>, 12> kQualifiers{{
-    {Qualifier::N, "N"},   {Qualifier::R, "R"},   {Qualifier::S, "S"},   {Qualifier::P, "P"},
-    {Qualifier::P0, "P0"}, {Qualifier::P1, "P1"}, {Qualifier::L, "L"},   {Qualifier::D, "D"},
-    {Qualifier::SD, "SD"}, {Qualifier::DS, "DS"}, {Qualifier::SL, "SL"}, {Qualifier::DL, "DL"},
+    {Qualifier::N, "N"},
+    {Qualifier::R, "R"},
+    {Qualifier::S, "S"},
+    {Qualifier::P, "P"},
+    {Qualifier::P0, "P0"},
+    {Qualifier::P1, "P1"},
+    {Qualifier::L, "L"},
+    {Qualifier::D, "D"},
+    {Qualifier::SD, "SD"},
+    {Qualifier::DS, "DS"},
+    {Qualifier::SL, "SL"},
+    {Qualifier::DL, "DL"},
 }};
 
 template <typename T>
@@ -43,15 +52,29 @@ bool is_timed(Qualifier q) {
          q == Qualifier::SL || q == Qualifier::DL;
 }
 
-const Step* Chart::find_step(std::string_view n) const { return find(steps, n); }
-int Chart::step_index(std::string_view n) const { return index_of(steps, n); }
+const Step* Chart::find_step(std::string_view n) const {
+  return find(steps, n);
+}
+int Chart::step_index(std::string_view n) const {
+  return index_of(steps, n);
+}
 
-const Variable* Pou::find_variable(std::string_view n) const { return find(variables, n); }
-const Action* Pou::find_action(std::string_view n) const { return find(actions, n); }
-const Chart* Pou::find_chart(std::string_view n) const { return find(charts, n); }
-int Pou::chart_index(std::string_view n) const { return index_of(charts, n); }
+const Variable* Pou::find_variable(std::string_view n) const {
+  return find(variables, n);
+}
+const Action* Pou::find_action(std::string_view n) const {
+  return find(actions, n);
+}
+const Chart* Pou::find_chart(std::string_view n) const {
+  return find(charts, n);
+}
+int Pou::chart_index(std::string_view n) const {
+  return index_of(charts, n);
+}
 
-const Pou* Project::find_pou(std::string_view n) const { return find(pous, n); }
+const Pou* Project::find_pou(std::string_view n) const {
+  return find(pous, n);
+}
 
 std::size_t count_steps(const Project& p) {
   std::size_t n = 0;

@@ -37,8 +37,8 @@ struct Variable {
 
 enum class StepKind {
   Normal,
-  MacroStep,   ///< Grafcet macro-step: `expansion` names the chart holding its expansion
-  Enclosing,   ///< Grafcet enclosing step: `enclosed` names the partial grafcets it encloses
+  MacroStep,  ///< Grafcet macro-step: `expansion` names the chart holding its expansion
+  Enclosing,  ///< Grafcet enclosing step: `enclosed` names the partial grafcets it encloses
 };
 
 struct Step {
@@ -54,14 +54,14 @@ struct Step {
 };
 
 struct Transition {
-  std::string name;                  ///< may be empty; Grafcet transitions are numbered
+  std::string name;  ///< may be empty; Grafcet transitions are numbered
   /// Step names in the same chart, >= 1 for IEC 61131-3. A Grafcet source transition (IEC 60848)
   /// has no upstream step and a sink transition no downstream step: these may be empty.
   std::vector<std::string> sources;
   std::vector<std::string> targets;
-  ExprPtr guard;                     ///< never null (TRUE when absent)
-  std::optional<int> priority;       ///< explicit (PRIORITY := n); smaller number = higher priority
-  int order = 0;                     ///< document order ("left to right") within the chart
+  ExprPtr guard;                ///< never null (TRUE when absent)
+  std::optional<int> priority;  ///< explicit (PRIORITY := n); smaller number = higher priority
+  int order = 0;                ///< document order ("left to right") within the chart
   SourceLocation where;
 };
 
@@ -71,7 +71,7 @@ enum class Qualifier { N, R, S, P, P0, P1, L, D, SD, DS, SL, DL };
 
 std::string_view to_string(Qualifier q);
 std::optional<Qualifier> parse_qualifier(std::string_view s);  ///< case-insensitive
-bool is_timed(Qualifier q);  ///< L D SD DS SL DL
+bool is_timed(Qualifier q);                                    ///< L D SD DS SL DL
 
 enum class ActionBodyKind {
   Variable,    ///< the action is a Boolean variable: it equals the action's activity
@@ -136,9 +136,9 @@ enum class ForcingKind {
 };
 
 struct ForcingOrder {
-  std::string chart;       ///< chart of the forcing step
-  std::string step;        ///< the step that holds the order
-  std::string target;      ///< forced partial grafcet (a chart name)
+  std::string chart;   ///< chart of the forcing step
+  std::string step;    ///< the step that holds the order
+  std::string target;  ///< forced partial grafcet (a chart name)
   ForcingKind kind = ForcingKind::Situation;
   std::vector<std::string> situation;  ///< ForcingKind::Situation: steps of `target`
   SourceLocation where;
@@ -170,8 +170,8 @@ struct Pou {
   std::vector<Chart> charts;
   std::vector<Action> actions;
   std::vector<ActionAssociation> associations;
-  std::vector<StoredAction> stored_actions;    ///< Grafcet
-  std::vector<ForcingOrder> forcing_orders;    ///< Grafcet
+  std::vector<StoredAction> stored_actions;  ///< Grafcet
+  std::vector<ForcingOrder> forcing_orders;  ///< Grafcet
   /// The POU's own body (ST, or FBD/LD read as statements), run every cycle before its charts;
   /// a POU without charts is a program whose body is the whole scan cycle.
   StmtList body;

@@ -13,7 +13,9 @@ namespace {
 
 using Diff = std::optional<std::string>;
 
-std::string q(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string q(std::string_view s) {
+  return "'" + std::string(s) + "'";
+}
 
 // Charts are identified across projects by role: the body of an action, the POU's only
 // top-level chart, or a named top-level chart (partial grafcets).
@@ -151,7 +153,8 @@ Diff compare_associations(const Pou& a, const Pou& b) {
     const auto& lb = ib == gb.end() ? none : ib->second;
     const std::string where = "step " + key.second + " (" + key.first + ")";
     for (std::size_t i = 0; i < std::max(la.size(), lb.size()); ++i) {
-      if (i >= la.size()) return where + ": association " + describe(*lb[i]) + " only in the second";
+      if (i >= la.size())
+        return where + ": association " + describe(*lb[i]) + " only in the second";
       if (i >= lb.size()) return where + ": association " + describe(*la[i]) + " only in the first";
       if (!same_association(*la[i], *lb[i]))
         return where + ": association " + describe(*la[i]) + " against " + describe(*lb[i]);
@@ -190,7 +193,8 @@ Diff compare_pous(const Pou& a, const Pou& b) {
   }
   // Actions.
   if (a.actions.size() != b.actions.size())
-    return std::to_string(a.actions.size()) + " actions against " + std::to_string(b.actions.size());
+    return std::to_string(a.actions.size()) + " actions against " +
+           std::to_string(b.actions.size());
   for (const auto& xa : a.actions) {
     const Action* xb = b.find_action(xa.name);
     if (!xb) return "action " + q(xa.name) + " only in the first";

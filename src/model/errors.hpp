@@ -46,10 +46,14 @@ enum class Limit { States, Time, Memory, Enumeration };
 /// "states", "time", "memory": the word reports use (CheckReport::limit, JSON "limit").
 inline const char* to_string(Limit limit) {
   switch (limit) {
-    case Limit::States: return "states";
-    case Limit::Time: return "time";
-    case Limit::Memory: return "memory";
-    case Limit::Enumeration: return "enumeration";
+    case Limit::States:
+      return "states";
+    case Limit::Time:
+      return "time";
+    case Limit::Memory:
+      return "memory";
+    case Limit::Enumeration:
+      return "enumeration";
   }
   return "?";
 }

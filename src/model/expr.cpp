@@ -16,36 +16,69 @@ ExprPtr make(ExprKind kind, SourceLocation where) {
 
 int precedence(ExprKind k) {
   switch (k) {
-    case ExprKind::Or: return 1;
-    case ExprKind::Xor: return 2;
-    case ExprKind::And: return 3;
-    case ExprKind::Eq: case ExprKind::Ne: return 4;
-    case ExprKind::Lt: case ExprKind::Le: case ExprKind::Gt: case ExprKind::Ge: return 5;
-    case ExprKind::Add: case ExprKind::Sub: return 6;
-    case ExprKind::Mul: case ExprKind::Div: case ExprKind::Mod: return 7;
-    case ExprKind::Not: case ExprKind::Neg: case ExprKind::Rising: case ExprKind::Falling:
+    case ExprKind::Or:
+      return 1;
+    case ExprKind::Xor:
+      return 2;
+    case ExprKind::And:
+      return 3;
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+      return 4;
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge:
+      return 5;
+    case ExprKind::Add:
+    case ExprKind::Sub:
+      return 6;
+    case ExprKind::Mul:
+    case ExprKind::Div:
+    case ExprKind::Mod:
+      return 7;
+    case ExprKind::Not:
+    case ExprKind::Neg:
+    case ExprKind::Rising:
+    case ExprKind::Falling:
       return 8;
-    default: return 9;
+    default:
+      return 9;
   }
 }
 
 const char* op_text(ExprKind k) {
   switch (k) {
-    case ExprKind::And: return " AND ";
-    case ExprKind::Or: return " OR ";
-    case ExprKind::Xor: return " XOR ";
-    case ExprKind::Add: return " + ";
-    case ExprKind::Sub: return " - ";
-    case ExprKind::Mul: return " * ";
-    case ExprKind::Div: return " / ";
-    case ExprKind::Mod: return " MOD ";
-    case ExprKind::Eq: return " = ";
-    case ExprKind::Ne: return " <> ";
-    case ExprKind::Lt: return " < ";
-    case ExprKind::Le: return " <= ";
-    case ExprKind::Gt: return " > ";
-    case ExprKind::Ge: return " >= ";
-    default: return " ? ";
+    case ExprKind::And:
+      return " AND ";
+    case ExprKind::Or:
+      return " OR ";
+    case ExprKind::Xor:
+      return " XOR ";
+    case ExprKind::Add:
+      return " + ";
+    case ExprKind::Sub:
+      return " - ";
+    case ExprKind::Mul:
+      return " * ";
+    case ExprKind::Div:
+      return " / ";
+    case ExprKind::Mod:
+      return " MOD ";
+    case ExprKind::Eq:
+      return " = ";
+    case ExprKind::Ne:
+      return " <> ";
+    case ExprKind::Lt:
+      return " < ";
+    case ExprKind::Le:
+      return " <= ";
+    case ExprKind::Gt:
+      return " > ";
+    case ExprKind::Ge:
+      return " >= ";
+    default:
+      return " ? ";
   }
 }
 
@@ -64,15 +97,28 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
   const int p = precedence(e.kind);
   std::string s;
   switch (e.kind) {
-    case ExprKind::BoolConst: return e.value ? "TRUE" : "FALSE";
-    case ExprKind::IntConst: return std::to_string(e.value);
-    case ExprKind::TimeConst: return time_literal(e.value);
-    case ExprKind::Name: return e.name;
-    case ExprKind::Member: return e.name + "." + e.member;
-    case ExprKind::Not: s = "NOT " + print(*e.args[0], p, false); break;
-    case ExprKind::Neg: s = "-" + print(*e.args[0], p, false); break;
-    case ExprKind::Rising: s = "RE " + print(*e.args[0], p, false); break;
-    case ExprKind::Falling: s = "FE " + print(*e.args[0], p, false); break;
+    case ExprKind::BoolConst:
+      return e.value ? "TRUE" : "FALSE";
+    case ExprKind::IntConst:
+      return std::to_string(e.value);
+    case ExprKind::TimeConst:
+      return time_literal(e.value);
+    case ExprKind::Name:
+      return e.name;
+    case ExprKind::Member:
+      return e.name + "." + e.member;
+    case ExprKind::Not:
+      s = "NOT " + print(*e.args[0], p, false);
+      break;
+    case ExprKind::Neg:
+      s = "-" + print(*e.args[0], p, false);
+      break;
+    case ExprKind::Rising:
+      s = "RE " + print(*e.args[0], p, false);
+      break;
+    case ExprKind::Falling:
+      s = "FE " + print(*e.args[0], p, false);
+      break;
     case ExprKind::Delay:
       return time_literal(e.value) + "/" + print(*e.args[0], 9, false) + "/" +
              time_literal(e.value2);
@@ -170,7 +216,11 @@ bool equal(const ExprPtr& a, const ExprPtr& b) {
   return equal(*a, *b);
 }
 
-std::string to_st(const Expr& e) { return print(e, 0, false); }
-std::string to_st(const ExprPtr& e) { return e ? to_st(*e) : "TRUE"; }
+std::string to_st(const Expr& e) {
+  return print(e, 0, false);
+}
+std::string to_st(const ExprPtr& e) {
+  return e ? to_st(*e) : "TRUE";
+}
 
 }  // namespace sfcv::model

@@ -13,15 +13,27 @@
 namespace sfcv::model {
 
 enum class ExprKind {
-  BoolConst,    ///< value: 0 or 1
-  IntConst,     ///< value
-  TimeConst,    ///< value in milliseconds (T#2s -> 2000)
-  Name,         ///< name: a variable, a step (Grafcet X12 or IEC step used as a Boolean), ...
-  Member,       ///< name.member: step.X, step.T, fb_instance.Q, action.A ... (args empty)
-  Not, Neg,                       ///< unary: args[0]
-  And, Or, Xor,                   ///< n-ary (>= 2 args)
-  Add, Sub, Mul, Div, Mod,        ///< binary
-  Eq, Ne, Lt, Le, Gt, Ge,         ///< binary comparisons
+  BoolConst,  ///< value: 0 or 1
+  IntConst,   ///< value
+  TimeConst,  ///< value in milliseconds (T#2s -> 2000)
+  Name,       ///< name: a variable, a step (Grafcet X12 or IEC step used as a Boolean), ...
+  Member,     ///< name.member: step.X, step.T, fb_instance.Q, action.A ... (args empty)
+  Not,
+  Neg,  ///< unary: args[0]
+  And,
+  Or,
+  Xor,  ///< n-ary (>= 2 args)
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,  ///< binary
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,       ///< binary comparisons
   Rising,   ///< Grafcet ↑e: args[0]
   Falling,  ///< Grafcet ↓e: args[0]
   Delay,    ///< Grafcet t1/e/t2: args[0] = e, value = t1 (ms), value2 = t2 (ms)

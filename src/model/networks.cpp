@@ -25,7 +25,8 @@ std::vector<int> step_networks(const Chart& chart) {
   std::iota(parent.begin(), parent.end(), 0);
   // Indexed once: a linear Chart::step_index per transition is quadratic on long charts.
   std::unordered_map<std::string, int> index;
-  for (std::size_t i = 0; i < n; ++i) index.try_emplace(to_upper(chart.steps[i].name), static_cast<int>(i));
+  for (std::size_t i = 0; i < n; ++i)
+    index.try_emplace(to_upper(chart.steps[i].name), static_cast<int>(i));
   for (const auto& t : chart.transitions) {
     int first = -1;
     auto join = [&](const std::string& name) {

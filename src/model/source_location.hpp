@@ -9,7 +9,8 @@ struct SourceLocation {
   std::string file;
   int line = 0;    ///< 1-based; 0 when unknown (XML elements use element_path instead)
   int column = 0;  ///< 1-based; 0 when unknown
-  std::string element_path;  ///< e.g. "/project/types/pous/pou[@name='P']/body/SFC/step[@localId='3']"
+  std::string
+      element_path;  ///< e.g. "/project/types/pous/pou[@name='P']/body/SFC/step[@localId='3']"
 
   bool known() const { return !file.empty() || !element_path.empty(); }
   /// "file:line:col", "file:line", "file (element path)" or "<unknown>".

@@ -16,7 +16,9 @@ std::string upper(std::string_view s) {
 }
 }  // namespace
 
-Type Type::boolean() { return Type{}; }
+Type Type::boolean() {
+  return Type{};
+}
 
 Type Type::time() {
   Type t;
@@ -93,16 +95,26 @@ StandardFb standard_fb(std::string_view name) {
 
 std::string_view to_string(StandardFb fb) {
   switch (fb) {
-    case StandardFb::R_TRIG: return "R_TRIG";
-    case StandardFb::F_TRIG: return "F_TRIG";
-    case StandardFb::SR: return "SR";
-    case StandardFb::RS: return "RS";
-    case StandardFb::TON: return "TON";
-    case StandardFb::TOF: return "TOF";
-    case StandardFb::TP: return "TP";
-    case StandardFb::CTU: return "CTU";
-    case StandardFb::CTD: return "CTD";
-    case StandardFb::None: break;
+    case StandardFb::R_TRIG:
+      return "R_TRIG";
+    case StandardFb::F_TRIG:
+      return "F_TRIG";
+    case StandardFb::SR:
+      return "SR";
+    case StandardFb::RS:
+      return "RS";
+    case StandardFb::TON:
+      return "TON";
+    case StandardFb::TOF:
+      return "TOF";
+    case StandardFb::TP:
+      return "TP";
+    case StandardFb::CTU:
+      return "CTU";
+    case StandardFb::CTD:
+      return "CTD";
+    case StandardFb::None:
+      break;
   }
   return "";
 }

@@ -15,9 +15,9 @@ enum class StandardFb { None, R_TRIG, F_TRIG, SR, RS, TON, TOF, TP, CTU, CTD };
 
 struct Type {
   TypeKind kind = TypeKind::Bool;
-  std::string name = "BOOL";  ///< as written: "INT", "UINT", "TIME", "TON", "INT(0..10)"
-  std::int64_t lo = 0;        ///< Int: smallest value
-  std::int64_t hi = 1;        ///< Int: largest value
+  std::string name = "BOOL";         ///< as written: "INT", "UINT", "TIME", "TON", "INT(0..10)"
+  std::int64_t lo = 0;               ///< Int: smallest value
+  std::int64_t hi = 1;               ///< Int: largest value
   StandardFb fb = StandardFb::None;  ///< FunctionBlock: which one
 
   static Type boolean();

@@ -49,8 +49,7 @@ class ChartPrinter {
       out_ << "  subgraph cluster_" << prefix << " {\n    label=\"" << escape(title)
            << "\";\n    style=rounded;\n";
       for (std::size_t s = 0; s < chart.steps.size(); ++s) step(pou, chart, prefix, s);
-      for (std::size_t t = 0; t < chart.transitions.size(); ++t)
-        transition(chart, prefix, t);
+      for (std::size_t t = 0; t < chart.transitions.size(); ++t) transition(chart, prefix, t);
       out_ << "  }\n";
     }
     // Nested charts hang off the action that holds them.
@@ -72,18 +71,16 @@ class ChartPrinter {
     const std::string id = prefix + "s" + std::to_string(s);
     // id= survives into the SVG (<g id="p0c0s3" class="node step">): the HTML report's player
     // highlights steps through it.
-    out_ << "    " << id << " [id=\"" << id << "\", class=\"step\", shape=box, label=\"" << escape(st.name) << "\""
-         << (st.initial ? ", peripheries=2" : "")
+    out_ << "    " << id << " [id=\"" << id << "\", class=\"step\", shape=box, label=\""
+         << escape(st.name) << "\"" << (st.initial ? ", peripheries=2" : "")
          << (st.kind == model::StepKind::MacroStep ? ", style=\"dashed\"" : "")
          << (st.kind == model::StepKind::Enclosing ? ", style=\"rounded\"" : "") << "];\n";
     // Action blocks: one table of (qualifier | action) rows beside the step.
     std::string rows;
     for (const auto& a : pou.associations)
       if (a.step == st.name && (a.chart.empty() || a.chart == chart.name))
-        rows += "<tr><td>" + html_escape(qualifier_text(a)) + "</td><td>" +
-                html_escape(a.action) +
-                (a.condition ? " if " + html_escape(model::to_st(a.condition)) : "") +
-                "</td></tr>";
+        rows += "<tr><td>" + html_escape(qualifier_text(a)) + "</td><td>" + html_escape(a.action) +
+                (a.condition ? " if " + html_escape(model::to_st(a.condition)) : "") + "</td></tr>";
     for (const auto& sa : pou.stored_actions)
       if (sa.step == st.name && (sa.chart.empty() || sa.chart == chart.name)) {
         const char* when = sa.when == model::StoredWhen::Activation     ? "&#8593;"
@@ -99,16 +96,16 @@ class ChartPrinter {
                                                                    : "";
         for (std::size_t i = 0; i < f.situation.size(); ++i)
           what += (i ? "," : "") + f.situation[i];
-        rows += "<tr><td>F</td><td>G" + html_escape(f.target) + "{" + html_escape(what) +
-                "}</td></tr>";
+        rows +=
+            "<tr><td>F</td><td>G" + html_escape(f.target) + "{" + html_escape(what) + "}</td></tr>";
       }
     if (!rows.empty()) {
       const std::string actions = id + "a";
       out_ << "    " << actions
            << " [shape=plaintext, label=<<table border=\"0\" cellborder=\"1\" "
               "cellspacing=\"0\">"
-           << rows << "</table>>];\n    { rank=same; " << id << "; " << actions << "; }\n    "
-           << id << " -> " << actions << " [arrowhead=none];\n";
+           << rows << "</table>>];\n    { rank=same; " << id << "; " << actions << "; }\n    " << id
+           << " -> " << actions << " [arrowhead=none];\n";
       for (const auto& a : pou.associations)
         if (a.step == st.name && (a.chart.empty() || a.chart == chart.name))
           action_nodes_.emplace_back(actions, pou.name + "/" + a.action);

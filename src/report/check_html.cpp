@@ -42,7 +42,9 @@ std::string script_json(const json& j) {
 
 /// The one place the summary takes a property's English from: a "description" string of its
 /// result (e.g. a requirement pattern's text), shown under its name; empty when there is none.
-std::string description_of(const json& property) { return str(property, "description"); }
+std::string description_of(const json& property) {
+  return str(property, "description");
+}
 
 std::string summary(const json& result) {
   std::string rows;
@@ -68,25 +70,29 @@ std::string summary(const json& result) {
     if (!more.empty())
       findings += "<li><details><summary>" + std::to_string(n - 2) + " more</summary><ul>" + more +
                   "</ul></details></li>";
-    if (p.contains("findings_total") && p["findings_total"].get<std::size_t>() > p["findings"].size())
+    if (p.contains("findings_total") &&
+        p["findings_total"].get<std::size_t>() > p["findings"].size())
       findings += "<li>" + std::to_string(p["findings"].size()) + " of " +
                   std::to_string(p["findings_total"].get<std::size_t>()) +
                   " findings shown; --all for every one</li>";
     std::string trace;
     if (p["trace"].is_object())
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
-              html_escape(str(p["trace"], "kind")) + " (" + std::to_string(p["trace"]["steps"].size()) +
-              " situations)</a>";
+              html_escape(str(p["trace"], "kind")) + " (" +
+              std::to_string(p["trace"]["steps"].size()) + " situations)</a>";
     const std::string description = description_of(p);
     rows += "<tr><td class=\"name\">" + html_escape(str(p, "name")) +
-            (description.empty() ? "" : "<div class=\"description\">" + html_escape(description) + "</div>") +
-            "</td><td><span class=\"verdict " + html_escape(cls) +
-            "\">" + html_escape(verdict) + "</span></td><td>" + html_escape(engine) + "</td><td class=\"time\">" +
+            (description.empty()
+                 ? ""
+                 : "<div class=\"description\">" + html_escape(description) + "</div>") +
+            "</td><td><span class=\"verdict " + html_escape(cls) + "\">" + html_escape(verdict) +
+            "</span></td><td>" + html_escape(engine) + "</td><td class=\"time\">" +
             seconds(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +
             trace + "</td></tr>\n";
   }
-  return "<table class=\"summary\" id=\"summary-table\">\n<tr><th>property or check</th><th>verdict</th>"
+  return "<table class=\"summary\" id=\"summary-table\">\n<tr><th>property or "
+         "check</th><th>verdict</th>"
          "<th>engine</th><th>time</th><th>what was found</th><th>trace</th></tr>\n" +
          rows + "</table>\n";
 }
@@ -104,7 +110,8 @@ std::string situation_graph_section(const HtmlReport& report) {
     out += "<p class=\"note" + std::string(report.situation_graph_svg.empty() ? " warn" : "") +
            "\" id=\"situations-note\">" + html_escape(report.situation_graph_note) + "</p>\n";
   if (!report.situation_graph_svg.empty())
-    out += "<div id=\"situations-svg\" class=\"fit\">\n" + report.situation_graph_svg + "\n</div>\n";
+    out +=
+        "<div id=\"situations-svg\" class=\"fit\">\n" + report.situation_graph_svg + "\n</div>\n";
   return out + "</section>\n";
 }
 
@@ -117,9 +124,11 @@ std::string page_head(const std::string& title) {
 
 std::string chart_section(const HtmlReport& report) {
   // Fitted to their boxes; a click toggles the natural size (the pages' scripts).
-  std::string out = "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\" class=\"fit\">\n";
-  out += report.chart_svg.empty() ? "<p class=\"note warn\">" + html_escape(report.chart_note) + "</p>\n"
-                                  : report.chart_svg + "\n";
+  std::string out =
+      "<section id=\"chart\">\n<h2>Chart</h2>\n<div id=\"chart-svg\" class=\"fit\">\n";
+  out += report.chart_svg.empty()
+             ? "<p class=\"note warn\">" + html_escape(report.chart_note) + "</p>\n"
+             : report.chart_svg + "\n";
   return out + "</div>\n</section>\n";
 }
 
@@ -132,7 +141,8 @@ std::string query_row(const json& q) {
   if (sort == "test") {
     answer = q.value("value", false) ? "true" : "false";
     if (q.contains("count"))
-      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " + html_escape(str(q, "witness_sort"));
+      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " +
+                html_escape(str(q, "witness_sort"));
   } else if (sort == "number") {
     answer = std::to_string(q["value"].get<std::int64_t>());
   } else {
@@ -156,8 +166,11 @@ std::string query_row(const json& q) {
   const std::string verdict = str(q, "verdict");
   return "<tr class=\"query\"><td class=\"name\"><code>" + html_escape(str(q, "query")) +
          "</code></td><td class=\"answer\">" + answer + "</td><td>" +
-         (verdict.empty() ? "" : "<span class=\"verdict " + html_escape(verdict) + "\">" + html_escape(verdict) + "</span>") +
-         "</td><td>" + (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") + "</td></tr>\n";
+         (verdict.empty() ? ""
+                          : "<span class=\"verdict " + html_escape(verdict) + "\">" +
+                                html_escape(verdict) + "</span>") +
+         "</td><td>" + (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") +
+         "</td></tr>\n";
 }
 
 }  // namespace
@@ -203,10 +216,9 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
   eo.keep_conditions = false;
   const auto graph = engine::build_reachable_situation_graph(ts, eo);
   if (!graph.complete()) {
-    report.situation_graph_note = "the reachable situations graph was not drawn: its " +
-                                  graph.limit_reached() + " limit (" +
-                                  std::to_string(kReportMaxSituations) +
-                                  " stable situations, 60 s) was reached";
+    report.situation_graph_note =
+        "the reachable situations graph was not drawn: its " + graph.limit_reached() + " limit (" +
+        std::to_string(kReportMaxSituations) + " stable situations, 60 s) was reached";
     return;
   }
   SituationGraphOptions so;
@@ -220,20 +232,22 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
   report.situation_graph_note = svg.error.empty() ? grouped.truncation_note : svg.error;
   std::string counts = std::to_string(grouped.step_situations) + " step situations, " +
                        std::to_string(grouped.stable_situations) + " stable situations";
-  report.situation_graph_note = counts + (report.situation_graph_note.empty() ? "" : "; ") +
-                                report.situation_graph_note;
+  report.situation_graph_note =
+      counts + (report.situation_graph_note.empty() ? "" : "; ") + report.situation_graph_note;
 }
 
 std::string check_html(const HtmlReport& report) {
   const auto& r = report.result;
   const std::string model = str(r, "model");
-  std::string meta = html_escape(str(r, "semantics")) + " semantics &middot; " + html_escape(str(r, "engine")) +
-                     " engine &middot; " + std::to_string(r.value("states", 0ULL)) + " states";
+  std::string meta = html_escape(str(r, "semantics")) + " semantics &middot; " +
+                     html_escape(str(r, "engine")) + " engine &middot; " +
+                     std::to_string(r.value("states", 0ULL)) + " states";
   if (r.contains("edges") && r["edges"].is_number())
     meta += " &middot; " + std::to_string(r["edges"].get<std::uint64_t>()) + " edges";
   meta += " &middot; " + seconds(r["seconds"]);
   if (r.contains("complete") && !r["complete"].get<bool>())
-    meta += " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) + " limit was reached</strong>";
+    meta += " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) +
+            " limit was reached</strong>";
 
   json nodes;
   nodes["steps"] = report.node_ids.steps;
@@ -288,12 +302,15 @@ std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures
   for (const auto& q : answers["queries"]) rows += query_row(q);
   std::string out = page_head("sfcv query: " + model);
   out += "<h1>sfcv query: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
-  out += "<h2>Query answers</h2>\n<table class=\"summary\" id=\"query-table\">\n<tr><th>query</th>"
-         "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" + rows + "</table>\n";
+  out +=
+      "<h2>Query answers</h2>\n<table class=\"summary\" id=\"query-table\">\n<tr><th>query</th>"
+      "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" +
+      rows + "</table>\n";
   out += situation_graph_section(pictures);
   out += chart_section(pictures);
-  out += "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
-         "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
+  out +=
+      "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
+      "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
   return out + "</body>\n</html>\n";
 }
 

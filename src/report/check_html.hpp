@@ -6,20 +6,19 @@
 
 #include <cstdint>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "report/chart_dot.hpp"
 
 namespace sfcv::report {
 
 struct HtmlReport {
-  nlohmann::json result;   ///< `sfcv check --json` (check_json)
-  std::string chart_svg;   ///< graphviz SVG of the chart (dot_to_svg); empty: chart_note says why
+  nlohmann::json result;  ///< `sfcv check --json` (check_json)
+  std::string chart_svg;  ///< graphviz SVG of the chart (dot_to_svg); empty: chart_note says why
   std::string chart_note;
-  ChartNodeIds node_ids;   ///< SVG node ids of the steps and transitions the traces name
+  ChartNodeIds node_ids;  ///< SVG node ids of the steps and transitions the traces name
   /// Grafcet only: the reachable situations graph grouped by step situation, as SVG
   /// (situation_graph_dot); empty: situation_graph_note says why (empty too for IEC 61131-3).
   std::string situation_graph_svg;

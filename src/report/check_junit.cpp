@@ -93,15 +93,23 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     }
     // A vacuous pass is still a pass; CI servers show system-out with the test case.
     // A pattern's English sentence goes there too, first.
-    const std::string out = r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
+    const std::string out =
+        r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
     if (!out.empty())
       tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(out.c_str());
     const char* element = nullptr;
     switch (r.verdict) {
-      case logic::Verdict::Holds: break;
-      case logic::Verdict::Violated: element = "failure"; break;
-      case logic::Verdict::Unknown: element = "error"; break;
-      case logic::Verdict::NotChecked: element = "skipped"; break;
+      case logic::Verdict::Holds:
+        break;
+      case logic::Verdict::Violated:
+        element = "failure";
+        break;
+      case logic::Verdict::Unknown:
+        element = "error";
+        break;
+      case logic::Verdict::NotChecked:
+        element = "skipped";
+        break;
     }
     if (!element) continue;
     auto e = tc.append_child(element);

@@ -25,7 +25,8 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
                        const RenderOptions& options) {
   std::string out;
   out += (report.states_known ? report.states.str() + " states, " : std::string()) +
-         (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
+         (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " +
+         std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
   if (report.stopped_early) out += " -- stopped early: every invariant is violated";
@@ -61,11 +62,20 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
       out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
              std::to_string(r.trace->steps.size()) + " situations):\n";
       switch (options.trace) {
-        case TraceFormat::Table: out += trace_table(*r.trace, ts); break;
-        case TraceFormat::Json: out += trace_json(*r.trace, ts); break;
-        case TraceFormat::Vcd: out += trace_vcd(*r.trace, ts, {options.cycle_ms}); break;
-        case TraceFormat::Csv: out += trace_csv(*r.trace, ts); break;
-        case TraceFormat::None: break;
+        case TraceFormat::Table:
+          out += trace_table(*r.trace, ts);
+          break;
+        case TraceFormat::Json:
+          out += trace_json(*r.trace, ts);
+          break;
+        case TraceFormat::Vcd:
+          out += trace_vcd(*r.trace, ts, {options.cycle_ms});
+          break;
+        case TraceFormat::Csv:
+          out += trace_csv(*r.trace, ts);
+          break;
+        case TraceFormat::None:
+          break;
       }
     }
   }
@@ -110,8 +120,10 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["formula"] = r.formula;
     if (!r.description.empty()) p["description"] = r.description;
     p["verdict"] = std::string(logic::to_string(r.verdict));
-    const bool definite = r.verdict == logic::Verdict::Holds || r.verdict == logic::Verdict::Violated;
-    p["decided_by"] = !definite ? json(nullptr) : json(r.decided_by.empty() ? report.engine : r.decided_by);
+    const bool definite =
+        r.verdict == logic::Verdict::Holds || r.verdict == logic::Verdict::Violated;
+    p["decided_by"] =
+        !definite ? json(nullptr) : json(r.decided_by.empty() ? report.engine : r.decided_by);
     p["message"] = r.message;
     p["findings"] = r.findings;
     p["findings_total"] = std::max(r.findings_total, r.findings.size());

@@ -3,9 +3,8 @@
 // traces below) or JSON (schema in docs/formats.md, "sfcv check --json").
 
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "logic/check_result.hpp"
 #include "semantics/transition_system.hpp"
@@ -16,8 +15,8 @@ enum class TraceFormat { Table, Json, Vcd, Csv, None };
 
 struct RenderOptions {
   TraceFormat trace = TraceFormat::Table;
-  std::string model;      ///< the model file, for the JSON header
-  std::string semantics;  ///< "iec61131", "grafcet"
+  std::string model;          ///< the model file, for the JSON header
+  std::string semantics;      ///< "iec61131", "grafcet"
   std::int64_t cycle_ms = 1;  ///< IEC 61131-3 scan cycle, the VCD time step
 };
 

@@ -1,11 +1,10 @@
 #include "report/check_sarif.hpp"
 
-#include "report/check_render.hpp"
-
 #include <map>
 #include <regex>
 
 #include "logic/standard_checks.hpp"
+#include "report/check_render.hpp"
 
 namespace sfcv::report {
 
@@ -18,9 +17,12 @@ using nlohmann::json;
 std::string file_uri(const std::string& path) {
   std::string uri;
   for (char c : path) {
-    if (c == ' ') uri += "%20";
-    else if (c == '%') uri += "%25";
-    else uri += c;
+    if (c == ' ')
+      uri += "%20";
+    else if (c == '%')
+      uri += "%25";
+    else
+      uri += c;
   }
   return !uri.empty() && uri[0] == '/' ? "file://" + uri : uri;
 }
@@ -110,8 +112,8 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
               json rel;
               rel["id"] = related.size();
               rel["physicalLocation"] = physical(w->second, options.model);
-              rel["message"]["text"] = "step " + obs[o].name + ", first active in situation " +
-                                       std::to_string(k);
+              rel["message"]["text"] =
+                  "step " + obs[o].name + ", first active in situation " + std::to_string(k);
               related.push_back(std::move(rel));
             }
           } else if (obs[o].is_output && (obs[o].type.kind != model::TypeKind::Bool || v)) {
@@ -146,10 +148,9 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
       json thread;
       thread["locations"] = flow;
       json code_flow;
-      code_flow["message"]["text"] = std::string(t.kind == logic::TraceKind::Counterexample
-                                                     ? "counterexample"
-                                                     : "witness") +
-                                     (t.note.empty() ? "" : ": " + t.note);
+      code_flow["message"]["text"] =
+          std::string(t.kind == logic::TraceKind::Counterexample ? "counterexample" : "witness") +
+          (t.note.empty() ? "" : ": " + t.note);
       code_flow["threadFlows"] = json::array({thread});
       base["codeFlows"] = json::array({code_flow});
     }
@@ -161,15 +162,16 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
     };
     const std::string verdict(logic::to_string(r.verdict));
     const std::string head = !r.description.empty() ? "'" + r.description + "' is " + verdict
-                             : r.check.empty()       ? "'" + r.formula + "' is " + verdict
-                                                     : r.name + ": " + verdict;
+                             : r.check.empty()      ? "'" + r.formula + "' is " + verdict
+                                                    : r.name + ": " + verdict;
     if (r.findings.empty()) {
       emit(head + (r.message.empty() ? "" : ": " + r.message), primary);
     } else {
       for (const auto& f : r.findings) {
         // "(and 21 more such situations)" sums up the findings left out: it belongs to the last.
         if (f.starts_with("(and ") && !results.empty() && results.back()["ruleId"] == rule_id(r)) {
-          results.back()["message"]["text"] = results.back()["message"]["text"].get<std::string>() + " " + f;
+          results.back()["message"]["text"] =
+              results.back()["message"]["text"].get<std::string>() + " " + f;
           continue;
         }
         emit(head + ": " + f, located_in(f).value_or(primary));

@@ -26,21 +26,31 @@ std::string describe_state(const semantics::TransitionSystem& ts, semantics::Sta
 
 std::string sort_noun(logic::Sort s, std::uint64_t n) {
   switch (s) {
-    case logic::Sort::States: return n == 1 ? "situation" : "situations";
-    case logic::Sort::Evolutions: return n == 1 ? "evolution" : "evolutions";
-    case logic::Sort::Steps: return n == 1 ? "step" : "steps";
-    default: return n == 1 ? "element" : "elements";
+    case logic::Sort::States:
+      return n == 1 ? "situation" : "situations";
+    case logic::Sort::Evolutions:
+      return n == 1 ? "evolution" : "evolutions";
+    case logic::Sort::Steps:
+      return n == 1 ? "step" : "steps";
+    default:
+      return n == 1 ? "element" : "elements";
   }
 }
 
 std::string sort_key(logic::Sort s) {
   switch (s) {
-    case logic::Sort::States: return "situations";
-    case logic::Sort::Evolutions: return "evolutions";
-    case logic::Sort::Steps: return "steps";
-    case logic::Sort::Empty: return "empty";
-    case logic::Sort::Bool: return "test";
-    case logic::Sort::Int: return "number";
+    case logic::Sort::States:
+      return "situations";
+    case logic::Sort::Evolutions:
+      return "evolutions";
+    case logic::Sort::Steps:
+      return "steps";
+    case logic::Sort::Empty:
+      return "empty";
+    case logic::Sort::Bool:
+      return "test";
+    case logic::Sort::Int:
+      return "number";
   }
   return "?";
 }
@@ -49,8 +59,7 @@ std::string sort_key(logic::Sort s) {
 
 logic::Verdict query_verdict(const logic::QueryAnswer& answer,
                              const logic::QueryGraphSummary& graph) {
-  const bool holds =
-      answer.sort == logic::Sort::Bool ? answer.truth : answer.set.count() == 0;
+  const bool holds = answer.sort == logic::Sort::Bool ? answer.truth : answer.set.count() == 0;
   if (!graph.exact()) return logic::Verdict::Unknown;
   return holds ? logic::Verdict::Holds : logic::Verdict::Violated;
 }
@@ -60,8 +69,7 @@ std::string QueryPrinter::state(const logic::QueryListing::State& s) const {
 }
 
 std::string QueryPrinter::edge(const logic::QueryListing::Edge& e) const {
-  return state(e.source) + " --[" + e.condition.to_string(ts_.inputs()) + "]--> " +
-         state(e.target);
+  return state(e.source) + " --[" + e.condition.to_string(ts_.inputs()) + "]--> " + state(e.target);
 }
 
 std::string QueryPrinter::graph_line(const logic::QueryGraphSummary& graph,
@@ -162,7 +170,9 @@ void QueryPrinter::answer_text(const std::string& query, const logic::QueryAnswe
   }
   if (!verdict) return;
   switch (*verdict) {
-    case logic::Verdict::Holds: out << "  holds\n"; break;
+    case logic::Verdict::Holds:
+      out << "  holds\n";
+      break;
     case logic::Verdict::Violated:
       out << "  VIOLATED" << (r.sort == logic::Sort::Bool ? "" : " (the set is not empty)") << "\n";
       break;

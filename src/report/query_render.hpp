@@ -3,12 +3,11 @@
 // (docs/queries.md), the same whichever engine computed them.
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "logic/check_result.hpp"
 #include "logic/query_answer.hpp"

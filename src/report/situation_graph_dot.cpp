@@ -13,10 +13,11 @@ namespace {
 
 /// One node of the grouped graph: a set of active steps and what its stable situations emit.
 struct Group {
-  std::vector<std::uint32_t> steps;   ///< step observables, in observable order
-  std::size_t members = 0;            ///< stable situations folded into it
+  std::vector<std::uint32_t> steps;  ///< step observables, in observable order
+  std::size_t members = 0;           ///< stable situations folded into it
   bool initial = false;
-  std::map<std::uint32_t, std::size_t> emitted;  ///< Boolean output observable -> members emitting it
+  std::map<std::uint32_t, std::size_t>
+      emitted;  ///< Boolean output observable -> members emitting it
 };
 
 constexpr std::size_t kFiringsPerEdge = 3;  // firing sets on an edge label before "or n more"
@@ -38,7 +39,8 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
     const auto state = graph.states().at(s);
     std::vector<std::uint32_t> steps;
     for (std::uint32_t o = 0; o < obs.size(); ++o)
-      if (obs[o].kind == semantics::ObservableKind::Step && ts.observe(state, o)) steps.push_back(o);
+      if (obs[o].kind == semantics::ObservableKind::Step && ts.observe(state, o))
+        steps.push_back(o);
     auto [it, fresh] = index.emplace(steps, groups.size());
     if (fresh) groups.push_back({std::move(steps), 0, false, {}});
     auto& g = groups[it->second];
@@ -99,7 +101,8 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
     if (g.members > 1) label += "\\n" + std::to_string(g.members) + " stable situations";
     d << "  g" << i << " [id=\"sg" << i << "\", label=\"" << label << "\""
       << (g.initial ? ", peripheries=2" : "") << "];\n";
-    if (g.initial) d << "  init" << i << " [shape=point, label=\"\"];\n  init" << i << " -> g" << i << ";\n";
+    if (g.initial)
+      d << "  init" << i << " [shape=point, label=\"\"];\n  init" << i << " -> g" << i << ";\n";
   }
   for (const auto& [key, firings] : edges) {
     const auto [from, to] = key;
@@ -113,7 +116,8 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
       }
       label += (n > 1 ? "or\\l" : "") + f;
     }
-    d << "  g" << from << " -> g" << to << " [id=\"se" << r.edges << "\", label=\"" << label << "\"];\n";
+    d << "  g" << from << " -> g" << to << " [id=\"se" << r.edges << "\", label=\"" << label
+      << "\"];\n";
     ++r.edges;
   }
   if (cut) {
@@ -125,8 +129,8 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
       if (drawn[key.first] && !drawn[key.second]) sources.insert(key.first);
     for (auto s : sources) d << "  g" << s << " -> omitted [id=\"so" << s << "\", style=dashed];\n";
     r.truncation_note = std::to_string(r.shown) + " of " + std::to_string(groups.size()) +
-                        " step situations are drawn (the first " +
-                        std::to_string(r.shown - kept) + " breadth-first" +
+                        " step situations are drawn (the first " + std::to_string(r.shown - kept) +
+                        " breadth-first" +
                         (kept ? ", and " + std::to_string(kept) + " a trace visits" : "") + "), " +
                         std::to_string(r.omitted()) + " left out; " + options.option_name +
                         " N draws N, " + options.option_name + " 0 every one";

@@ -153,8 +153,11 @@ nlohmann::json situation_graph_json(const engine::ReachableSituationGraph& g,
   const auto initial = initial_marks(g);
   for (std::uint32_t s = 0; s < g.num_states(); ++s) {
     const auto [sit, out] = split_description(ts.describe(state(s)));
-    j["states"].push_back({{"id", s}, {"situation", sit}, {"outputs", out},
-                           {"inputs", inputs_of(ts, state(s))}, {"initial", bool(initial[s])},
+    j["states"].push_back({{"id", s},
+                           {"situation", sit},
+                           {"outputs", out},
+                           {"inputs", inputs_of(ts, state(s))},
+                           {"initial", bool(initial[s])},
                            {"expanded", g.expanded(s)}});
   }
   j["edges"] = nlohmann::json::array();

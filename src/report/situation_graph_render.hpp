@@ -4,10 +4,9 @@
 // state, and one line per anomaly. The graph grouped by step situation is
 // situation_graph_dot.hpp.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "semantics/transition_system.hpp"

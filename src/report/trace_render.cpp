@@ -14,7 +14,9 @@ namespace {
 
 using semantics::ObservableKind;
 
-bool is_bool(const semantics::InputVariable& in) { return in.type.kind == model::TypeKind::Bool; }
+bool is_bool(const semantics::InputVariable& in) {
+  return in.type.kind == model::TypeKind::Bool;
+}
 
 bool marked(const logic::Trace& t, std::uint32_t obs) {
   return std::find(t.marked.begin(), t.marked.end(), obs) != t.marked.end();
@@ -89,7 +91,8 @@ std::string trace_table(const logic::Trace& trace, const semantics::TransitionSy
                                   : st.inputs[k] != trace.steps[i - 1].inputs[k];
       if (changed) row[1] += (row[1].empty() ? "" : " ") + input_change(inputs[k], st.inputs[k]);
     }
-    for (auto t : st.fired) row[2] += (row[2].empty() ? "" : ", ") + (t < trs.size() ? trs[t].name : "?");
+    for (auto t : st.fired)
+      row[2] += (row[2].empty() ? "" : ", ") + (t < trs.size() ? trs[t].name : "?");
     for (std::uint32_t o = 0; o < obs.size(); ++o) {
       const auto v = ts.observe(st.state, o);
       const std::string mark = marked(trace, o) ? "*" : "";
@@ -102,7 +105,8 @@ std::string trace_table(const logic::Trace& trace, const semantics::TransitionSy
           row[4] += (row[4].empty() ? "" : " ") + names[o] + "=" + std::to_string(v) + mark;
         }
       }
-      if (marked(trace, o)) row[5] += (row[5].empty() ? "" : " ") + names[o] + "=" + std::to_string(v);
+      if (marked(trace, o))
+        row[5] += (row[5].empty() ? "" : " ") + names[o] + "=" + std::to_string(v);
     }
     rows.push_back(std::move(row));
   }
@@ -194,9 +198,9 @@ std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSyst
   };
   std::vector<Signal> signals;
   for (std::size_t k = 0; k < inputs.size(); ++k)
-    signals.push_back({"inputs", inputs[k].name, is_bool(inputs[k]), [k](const logic::TraceStep& st) {
-                         return k < st.inputs.size() ? st.inputs[k] : 0;
-                       }});
+    signals.push_back(
+        {"inputs", inputs[k].name, is_bool(inputs[k]),
+         [k](const logic::TraceStep& st) { return k < st.inputs.size() ? st.inputs[k] : 0; }});
   auto observed = [&ts](std::uint32_t o) {
     return [&ts, o](const logic::TraceStep& st) { return ts.observe(st.state, o); };
   };
@@ -207,7 +211,8 @@ std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSyst
                         : marked(trace, o)                      ? "atoms"
                                                                 : nullptr;
     if (scope)
-      signals.push_back({scope, obs[o].name, obs[o].type.kind == model::TypeKind::Bool, observed(o)});
+      signals.push_back(
+          {scope, obs[o].name, obs[o].type.kind == model::TypeKind::Bool, observed(o)});
   }
   std::string out = "$comment sfcv trace: ";
   out += grafcet ? "one time unit per stable situation (Grafcet has no scan cycle)"
@@ -248,8 +253,9 @@ std::string trace_csv(const logic::Trace& trace, const semantics::TransitionSyst
   // (stabilisation), so they are the first row.
   const bool grafcet = ts.kind() == semantics::SemanticsKind::Grafcet;
   const std::size_t first = grafcet ? 0 : 1;
-  std::string out = grafcet ? "# sfcv check trace: one row per stable situation, the first the initial inputs"
-                            : "# sfcv check trace: one row per cycle after the initial situation";
+  std::string out =
+      grafcet ? "# sfcv check trace: one row per stable situation, the first the initial inputs"
+              : "# sfcv check trace: one row per cycle after the initial situation";
   if (trace.loop_start)
     out += "; rows from " + std::string(grafcet ? "situation " : "cycle ") +
            std::to_string(*trace.loop_start + (grafcet ? 0 : 1)) + " on repeat forever";
@@ -258,7 +264,8 @@ std::string trace_csv(const logic::Trace& trace, const semantics::TransitionSyst
   out += "\n";
   for (std::size_t i = first; i < trace.steps.size(); ++i) {
     for (std::size_t k = 0; k < inputs.size(); ++k)
-      out += (k ? "," : "") + std::to_string(k < trace.steps[i].inputs.size() ? trace.steps[i].inputs[k] : 0);
+      out += (k ? "," : "") +
+             std::to_string(k < trace.steps[i].inputs.size() ? trace.steps[i].inputs[k] : 0);
     out += "\n";
   }
   return out;

@@ -1,12 +1,15 @@
 #include "semantics/aig.hpp"
-#include "model/errors.hpp"
 
 #include <stdexcept>
 #include <utility>
 
+#include "model/errors.hpp"
+
 namespace sfcv::semantics {
 
-Aig::Aig() { nodes_.push_back(Node{}); }
+Aig::Aig() {
+  nodes_.push_back(Node{});
+}
 
 AigLit Aig::add_input(std::string name) {
   const auto lit = static_cast<AigLit>(nodes_.size() * 2);
@@ -91,10 +94,17 @@ std::vector<bool> Aig::evaluate(const std::vector<bool>& input_values,
   for (std::size_t i = 1; i < nodes_.size(); ++i) {
     const auto& n = nodes_[i];
     switch (n.kind) {
-      case NodeKind::Constant: break;
-      case NodeKind::Input: v[i] = input_values.at(n.index); break;
-      case NodeKind::Latch: v[i] = latch_values.at(n.index); break;
-      case NodeKind::And: v[i] = value_of(v, n.left) && value_of(v, n.right); break;
+      case NodeKind::Constant:
+        break;
+      case NodeKind::Input:
+        v[i] = input_values.at(n.index);
+        break;
+      case NodeKind::Latch:
+        v[i] = latch_values.at(n.index);
+        break;
+      case NodeKind::And:
+        v[i] = value_of(v, n.left) && value_of(v, n.right);
+        break;
     }
   }
   return v;

@@ -4,7 +4,6 @@
 // 64-bit two's-complement bit vectors (the explicit system computes in int64).
 
 #include "semantics/grafcet_circuit.hpp"
-#include "semantics/history_system.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -13,6 +12,7 @@
 #include <stdexcept>
 
 #include "semantics/detail/grafcet_system_impl.hpp"
+#include "semantics/history_system.hpp"
 
 namespace sfcv::semantics {
 namespace grafcet {
@@ -46,8 +46,10 @@ class CircuitBuilder {
   static std::optional<std::int64_t> as_constant(const Value& v) {
     std::uint64_t r = 0;
     for (std::uint32_t i = 0; i < kWidth; ++i) {
-      if (v[i] == Aig::kTrue) r |= 1ULL << i;
-      else if (v[i] != Aig::kFalse) return std::nullopt;
+      if (v[i] == Aig::kTrue)
+        r |= 1ULL << i;
+      else if (v[i] != Aig::kFalse)
+        return std::nullopt;
     }
     return static_cast<std::int64_t>(r);
   }
@@ -121,7 +123,8 @@ class CircuitBuilder {
     if (in.type.kind != model::TypeKind::Int || in.pseudo) return {c_.input_bits[i][0]};
     const Value v = input_value_[i];
     const auto regions = static_cast<std::uint64_t>(in.regions());
-    const std::uint32_t width = regions <= 1 ? 1 : static_cast<std::uint32_t>(std::bit_width(regions - 1));
+    const std::uint32_t width =
+        regions <= 1 ? 1 : static_cast<std::uint32_t>(std::bit_width(regions - 1));
     BitVector idx = bv_constant(0, width);
     for (std::size_t r = 1; r < in.region_lo.size(); ++r)
       idx = bv_mux(aig_, aig_.make_not(bv_less_signed(aig_, v, constant(in.region_lo[r]))),
@@ -150,11 +153,12 @@ class CircuitBuilder {
   const GrafcetSystem& s_;
   GrafcetCircuit& c_;
   Aig& aig_;
-  std::vector<Value> input_value_;   ///< per input: its value from the circuit inputs
-  std::vector<BitVector> regions_;   ///< per input: region index from the circuit inputs
+  std::vector<Value> input_value_;  ///< per input: its value from the circuit inputs
+  std::vector<BitVector> regions_;  ///< per input: region index from the circuit inputs
 };
 
-void CircuitBuilder::collect_edge_fields(const CExpr& e, bool under_edge, std::set<int>& out) const {
+void CircuitBuilder::collect_edge_fields(const CExpr& e, bool under_edge,
+                                         std::set<int>& out) const {
   if (under_edge) {
     switch (e.op) {
       case Op::Step: {
@@ -163,13 +167,18 @@ void CircuitBuilder::collect_edge_fields(const CExpr& e, bool under_edge, std::s
         for (int f : gs.derived_from) out.insert(f);
         break;
       }
-      case Op::Var: out.insert(s_.vars_[static_cast<std::size_t>(e.ref)].field); break;
-      case Op::Delay: out.insert(s_.delays_[static_cast<std::size_t>(e.ref)].field); break;
+      case Op::Var:
+        out.insert(s_.vars_[static_cast<std::size_t>(e.ref)].field);
+        break;
+      case Op::Delay:
+        out.insert(s_.delays_[static_cast<std::size_t>(e.ref)].field);
+        break;
       case Op::Input:
         if (s_.gin_[static_cast<std::size_t>(e.ref)].field >= 0)
           out.insert(s_.gin_[static_cast<std::size_t>(e.ref)].field);
         break;
-      default: break;
+      default:
+        break;
     }
   }
   const bool edge = under_edge || e.op == Op::Rise || e.op == Op::Fall;
@@ -178,22 +187,29 @@ void CircuitBuilder::collect_edge_fields(const CExpr& e, bool under_edge, std::s
 
 Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
   switch (e.op) {
-    case Op::Const: return constant(e.value);
+    case Op::Const:
+      return constant(e.value);
     case Op::Input: {
       const auto i = static_cast<std::size_t>(e.ref);
       if (s_.gin_[i].type.kind == model::TypeKind::Int)
         throw CircuitUnsupported("integer input '" + s_.gin_[i].name + "' outside a comparison");
       return from_bool(region_in(*c.cur, i)[0]);
     }
-    case Op::Step: return from_bool(active(*c.cur, e.ref));
-    case Op::Var: return decode(*c.cur, s_.vars_[static_cast<std::size_t>(e.ref)].field);
+    case Op::Step:
+      return from_bool(active(*c.cur, e.ref));
+    case Op::Var:
+      return decode(*c.cur, s_.vars_[static_cast<std::size_t>(e.ref)].field);
     case Op::Delay: {
-      const auto& bits = (*c.cur)[static_cast<std::size_t>(s_.delays_[static_cast<std::size_t>(e.ref)].field)];
-      if (bits.size() < 2) throw std::logic_error("grafcet circuit: delay phase outside its context");
+      const auto& bits =
+          (*c.cur)[static_cast<std::size_t>(s_.delays_[static_cast<std::size_t>(e.ref)].field)];
+      if (bits.size() < 2)
+        throw std::logic_error("grafcet circuit: delay phase outside its context");
       return from_bool(bits[1]);  // phase 2 (on) or 3 (falling wait)
     }
-    case Op::Not: return from_bool(aig_.make_not(eval_truth(e.args[0], c)));
-    case Op::Neg: return bv_neg(aig_, eval(e.args[0], c));
+    case Op::Not:
+      return from_bool(aig_.make_not(eval_truth(e.args[0], c)));
+    case Op::Neg:
+      return bv_neg(aig_, eval(e.args[0], c));
     case Op::And:
     case Op::Or: {
       std::vector<AigLit> parts;
@@ -212,9 +228,15 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
       return from_bool(e.op == Op::Rise ? aig_.make_and(now, aig_.make_not(was))
                                         : aig_.make_and(aig_.make_not(now), was));
     }
-    case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: {
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge: {
       const auto& l = e.args[0];
-      if (l.op == Op::Input && s_.gin_[static_cast<std::size_t>(l.ref)].type.kind == model::TypeKind::Int) {
+      if (l.op == Op::Input &&
+          s_.gin_[static_cast<std::size_t>(l.ref)].type.kind == model::TypeKind::Int) {
         // Only comparisons with a constant (GrafcetSystem::int_inputs_ok): constant on each
         // region, so a table over the region index.
         const auto i = static_cast<std::size_t>(l.ref);
@@ -226,12 +248,24 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
           const std::int64_t v = in.region_lo[reg];
           bool holds = false;
           switch (e.op) {
-            case Op::Eq: holds = v == k; break;
-            case Op::Ne: holds = v != k; break;
-            case Op::Lt: holds = v < k; break;
-            case Op::Le: holds = v <= k; break;
-            case Op::Gt: holds = v > k; break;
-            default: holds = v >= k; break;
+            case Op::Eq:
+              holds = v == k;
+              break;
+            case Op::Ne:
+              holds = v != k;
+              break;
+            case Op::Lt:
+              holds = v < k;
+              break;
+            case Op::Le:
+              holds = v <= k;
+              break;
+            case Op::Gt:
+              holds = v > k;
+              break;
+            default:
+              holds = v >= k;
+              break;
           }
           if (holds) r = aig_.make_or(r, equals_constant(idx, reg));
         }
@@ -240,21 +274,37 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
       const Value a = eval(e.args[0], c), b = eval(e.args[1], c);
       AigLit r = Aig::kFalse;
       switch (e.op) {
-        case Op::Eq: r = bv_equal(aig_, a, b); break;
-        case Op::Ne: r = aig_.make_not(bv_equal(aig_, a, b)); break;
-        case Op::Lt: r = bv_less_signed(aig_, a, b); break;
-        case Op::Le: r = aig_.make_not(bv_less_signed(aig_, b, a)); break;
-        case Op::Gt: r = bv_less_signed(aig_, b, a); break;
-        default: r = aig_.make_not(bv_less_signed(aig_, a, b)); break;
+        case Op::Eq:
+          r = bv_equal(aig_, a, b);
+          break;
+        case Op::Ne:
+          r = aig_.make_not(bv_equal(aig_, a, b));
+          break;
+        case Op::Lt:
+          r = bv_less_signed(aig_, a, b);
+          break;
+        case Op::Le:
+          r = aig_.make_not(bv_less_signed(aig_, b, a));
+          break;
+        case Op::Gt:
+          r = bv_less_signed(aig_, b, a);
+          break;
+        default:
+          r = aig_.make_not(bv_less_signed(aig_, a, b));
+          break;
       }
       return from_bool(r);
     }
-    case Op::Add: return bv_add(aig_, eval(e.args[0], c), eval(e.args[1], c));
-    case Op::Sub: return bv_sub(aig_, eval(e.args[0], c), eval(e.args[1], c));
+    case Op::Add:
+      return bv_add(aig_, eval(e.args[0], c), eval(e.args[1], c));
+    case Op::Sub:
+      return bv_sub(aig_, eval(e.args[0], c), eval(e.args[1], c));
     case Op::Mul: {
       Value a = eval(e.args[0], c), b = eval(e.args[1], c);
       auto ka = as_constant(a), kb = as_constant(b);
-      if (ka && kb) return constant(static_cast<std::int64_t>(static_cast<std::uint64_t>(*ka) * static_cast<std::uint64_t>(*kb)));
+      if (ka && kb)
+        return constant(static_cast<std::int64_t>(static_cast<std::uint64_t>(*ka) *
+                                                  static_cast<std::uint64_t>(*kb)));
       if (ka) {
         std::swap(a, b);
         std::swap(ka, kb);
@@ -320,7 +370,8 @@ State CircuitBuilder::evolve(const State& cur, const State& prev, AigLit& error,
   // Simultaneous clearing: deactivate every upstream step, then activate every downstream one.
   State next = cur;
   for (std::size_t t = 0; t < s_.trans_.size(); ++t)
-    for (int f : s_.trans_[t].need) set_bit(next, f, aig_.make_and(bit(next, f), aig_.make_not(cleared[t])));
+    for (int f : s_.trans_[t].need)
+      set_bit(next, f, aig_.make_and(bit(next, f), aig_.make_not(cleared[t])));
   for (std::size_t t = 0; t < s_.trans_.size(); ++t)
     for (int f : s_.trans_[t].act) set_bit(next, f, aig_.make_or(bit(next, f), cleared[t]));
   // Forced partial grafcets, in chart order; the last active order on a chart applies.
@@ -377,8 +428,8 @@ State CircuitBuilder::evolve(const State& cur, const State& prev, AigLit& error,
       const auto when = pass == 0 ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
       if (sa.when != when) continue;
       const AigLit was = active(cur, sa.step), is = active(next, sa.step);
-      const AigLit cond = pass == 0 ? aig_.make_and(was, aig_.make_not(is))
-                                    : aig_.make_and(aig_.make_not(was), is);
+      const AigLit cond =
+          pass == 0 ? aig_.make_and(was, aig_.make_not(is)) : aig_.make_and(aig_.make_not(was), is);
       writes.push_back({cond, sa.var, eval(sa.value, ctx)});
     }
   for (std::size_t a = 0; a < s_.stored_.size(); ++a)
@@ -424,8 +475,9 @@ void CircuitBuilder::build() {
     const auto init = static_cast<std::uint64_t>(layout.get(tmpl, f) - fields[f].lo);
     for (std::uint32_t k = 0; k < fields[f].width; ++k) {
       c_.field_latches[f].push_back(static_cast<std::uint32_t>(aig_.latches().size()));
-      cur[f].push_back(aig_.add_latch(fields[f].name + (fields[f].width > 1 ? "[" + std::to_string(k) + "]" : ""),
-                                      ((init >> k) & 1U) != 0));
+      cur[f].push_back(aig_.add_latch(
+          fields[f].name + (fields[f].width > 1 ? "[" + std::to_string(k) + "]" : ""),
+          ((init >> k) & 1U) != 0));
     }
   }
   c_.num_state_latches = aig_.latches().size();
@@ -455,15 +507,16 @@ void CircuitBuilder::build() {
     const std::uint32_t width = span == 0 ? 1 : static_cast<std::uint32_t>(std::bit_width(span));
     BitVector bits;
     for (std::uint32_t k = 0; k < width; ++k) {
-      const AigLit l = aig_.add_input(s_.input_vars_[i].name + (width > 1 ? "[" + std::to_string(k) + "]" : ""));
-      if (!in.pseudo && in.field < 0)
-        c_.kept_inputs.push_back(aig_.nodes()[Aig::node_of(l)].index);
+      const AigLit l =
+          aig_.add_input(s_.input_vars_[i].name + (width > 1 ? "[" + std::to_string(k) + "]" : ""));
+      if (!in.pseudo && in.field < 0) c_.kept_inputs.push_back(aig_.nodes()[Aig::node_of(l)].index);
       bits.push_back(l);
     }
     const Value encoded = bv_resize(bits, kWidth, false);
     if (width < 64)
-      allowed = aig_.make_and(allowed, aig_.make_not(bv_less_unsigned(
-                                           aig_, bv_constant(static_cast<std::int64_t>(span), kWidth), encoded)));
+      allowed = aig_.make_and(
+          allowed, aig_.make_not(bv_less_unsigned(
+                       aig_, bv_constant(static_cast<std::int64_t>(span), kWidth), encoded)));
     c_.input_bits.push_back(bits);
     input_value_.push_back(bv_add(aig_, encoded, constant(lo)));
   }
@@ -479,7 +532,8 @@ void CircuitBuilder::build() {
   AigLit stable = Aig::kTrue;
   for (std::size_t f = 0; f < fields.size(); ++f) {
     stable = aig_.make_and(stable, equal_bits(next[f], cur[f]));
-    for (std::size_t k = 0; k < next[f].size(); ++k) aig_.set_next(c_.field_latches[f][k], next[f][k]);
+    for (std::size_t k = 0; k < next[f].size(); ++k)
+      aig_.set_next(c_.field_latches[f][k], next[f][k]);
   }
   c_.stable = stable;
   for (std::size_t k = 0; k < c_.prev_of.size(); ++k)
@@ -528,8 +582,9 @@ void CircuitBuilder::build() {
   if (s_.options_.single_input_change) {
     AigLit none_changed = Aig::kTrue;
     for (auto x : changed) none_changed = aig_.make_and(none_changed, aig_.make_not(x));
-    c_.event = aig_.make_or(aig_.make_and(exactly_one(changed), no_pseudo),
-                            aig_.make_and(none_changed, aig_.make_and(exactly_one(pseudo_bits), pseudo_ok)));
+    c_.event = aig_.make_or(
+        aig_.make_and(exactly_one(changed), no_pseudo),
+        aig_.make_and(none_changed, aig_.make_and(exactly_one(pseudo_bits), pseudo_ok)));
   } else {
     c_.event = pseudo_ok;
   }
@@ -601,8 +656,9 @@ void CircuitBuilder::build() {
 
 GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
   if (as_history(ts))
-    throw CircuitUnsupported("prev(), rise() and fall() in a property: the Grafcet circuit does "
-                             "not keep previous situations yet (use --engine explicit)");
+    throw CircuitUnsupported(
+        "prev(), rise() and fall() in a property: the Grafcet circuit does "
+        "not keep previous situations yet (use --engine explicit)");
   const auto* sys = dynamic_cast<const grafcet::GrafcetSystem*>(&ts);
   if (!sys) throw std::invalid_argument("build_grafcet_circuit: not a Grafcet system");
   GrafcetCircuit c;

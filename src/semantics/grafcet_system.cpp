@@ -31,7 +31,8 @@ int GrafcetSystem::steps_named(std::string_view name) const {
 
 int GrafcetSystem::find_chart(const std::string& pou, std::string_view name) const {
   // Indexed: a chain of 10,000 nested macro-steps looks up 10,000 expansions.
-  const auto it = chart_index_.find(model::to_upper(pou) + "." + model::to_upper(std::string(name)));
+  const auto it =
+      chart_index_.find(model::to_upper(pou) + "." + model::to_upper(std::string(name)));
   return it == chart_index_.end() ? -1 : it->second;
 }
 
@@ -160,8 +161,12 @@ bool GrafcetSystem::compile(const model::Pou& pou, const model::Expr& e, CExpr& 
       out.ref = id;
       return true;
     }
-    case ExprKind::Eq: case ExprKind::Ne: case ExprKind::Lt:
-    case ExprKind::Le: case ExprKind::Gt: case ExprKind::Ge: {
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge: {
       static const std::map<ExprKind, Op> ops{{ExprKind::Eq, Op::Eq}, {ExprKind::Ne, Op::Ne},
                                               {ExprKind::Lt, Op::Lt}, {ExprKind::Le, Op::Le},
                                               {ExprKind::Gt, Op::Gt}, {ExprKind::Ge, Op::Ge}};
@@ -202,9 +207,9 @@ bool GrafcetSystem::compile(const model::Pou& pou, const model::Expr& e, CExpr& 
   }
   // Operators with sub-expressions.
   static const std::map<ExprKind, Op> ops{
-      {ExprKind::Not, Op::Not}, {ExprKind::Neg, Op::Neg}, {ExprKind::And, Op::And},
-      {ExprKind::Or, Op::Or},   {ExprKind::Xor, Op::Xor}, {ExprKind::Add, Op::Add},
-      {ExprKind::Sub, Op::Sub}, {ExprKind::Mul, Op::Mul}, {ExprKind::Div, Op::Div},
+      {ExprKind::Not, Op::Not}, {ExprKind::Neg, Op::Neg},     {ExprKind::And, Op::And},
+      {ExprKind::Or, Op::Or},   {ExprKind::Xor, Op::Xor},     {ExprKind::Add, Op::Add},
+      {ExprKind::Sub, Op::Sub}, {ExprKind::Mul, Op::Mul},     {ExprKind::Div, Op::Div},
       {ExprKind::Mod, Op::Mod}, {ExprKind::Rising, Op::Rise}, {ExprKind::Falling, Op::Fall}};
   const auto it = ops.find(e.kind);
   if (it == ops.end()) {
@@ -309,7 +314,9 @@ Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
         return {false, 0};
       }
       const auto v = c.in->val[i];
-      return {true, gin_[i].type.kind == model::TypeKind::Int ? gin_[i].region_lo[static_cast<std::size_t>(v)] : v};
+      return {true, gin_[i].type.kind == model::TypeKind::Int
+                        ? gin_[i].region_lo[static_cast<std::size_t>(v)]
+                        : v};
     }
     case Op::Step:
       return {true, active(c.cur, e.ref) ? 1 : 0};
@@ -366,18 +373,30 @@ Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
   const Val b = eval(e.args[1], c);
   if (!a.known || !b.known) return {false, 0};
   switch (e.op) {
-    case Op::Add: return {true, a.v + b.v};
-    case Op::Sub: return {true, a.v - b.v};
-    case Op::Mul: return {true, a.v * b.v};
-    case Op::Div: return {true, b.v == 0 ? 0 : a.v / b.v};
-    case Op::Mod: return {true, b.v == 0 ? 0 : a.v % b.v};
-    case Op::Eq: return {true, a.v == b.v};
-    case Op::Ne: return {true, a.v != b.v};
-    case Op::Lt: return {true, a.v < b.v};
-    case Op::Le: return {true, a.v <= b.v};
-    case Op::Gt: return {true, a.v > b.v};
-    case Op::Ge: return {true, a.v >= b.v};
-    default: return {false, 0};
+    case Op::Add:
+      return {true, a.v + b.v};
+    case Op::Sub:
+      return {true, a.v - b.v};
+    case Op::Mul:
+      return {true, a.v * b.v};
+    case Op::Div:
+      return {true, b.v == 0 ? 0 : a.v / b.v};
+    case Op::Mod:
+      return {true, b.v == 0 ? 0 : a.v % b.v};
+    case Op::Eq:
+      return {true, a.v == b.v};
+    case Op::Ne:
+      return {true, a.v != b.v};
+    case Op::Lt:
+      return {true, a.v < b.v};
+    case Op::Le:
+      return {true, a.v <= b.v};
+    case Op::Gt:
+      return {true, a.v > b.v};
+    case Op::Ge:
+      return {true, a.v >= b.v};
+    default:
+      return {false, 0};
   }
 }
 
@@ -433,7 +452,7 @@ void GrafcetSystem::clear_chart(std::vector<StateWord>& s, int chart) const {
 }
 
 GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, bool initial,
-                                             Result& r) const {
+                                            Result& r) const {
   // Stored inputs must be known: the target remembers them.
   for (std::size_t i = 0; i < gin_.size(); ++i)
     if (gin_[i].field >= 0 && !v.known[i]) {
@@ -467,7 +486,8 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
   std::vector<std::uint32_t> cleared;
   std::vector<const GStored*> events;
   for (std::size_t k = 0;; ++k) {
-    if (options_.deadline && (k & 63U) == 63U && std::chrono::steady_clock::now() > *options_.deadline)
+    if (options_.deadline && (k & 63U) == 63U &&
+        std::chrono::steady_clock::now() > *options_.deadline)
       throw LimitReached(Limit::Time, "time limit reached during a transient evolution");
     const Ctx ctx{cur, &v, prev, prev_in};
     auto need_split = [&](const Ctx& c) {
@@ -542,7 +562,8 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
         if (active(next, e)) continue;
         for (int c : steps_[e].enclosed)
           for (int s : charts_[c].steps)
-            if (steps_[s].field >= 0 && layout_.get(next, static_cast<std::uint32_t>(steps_[s].field))) {
+            if (steps_[s].field >= 0 &&
+                layout_.get(next, static_cast<std::uint32_t>(steps_[s].field))) {
               clear_chart(next, c);
               changed = true;
             }
@@ -552,7 +573,8 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
     std::vector<std::pair<int, std::int64_t>> writes;
     for (int pass = 0; pass < 2; ++pass)
       for (const auto& sa : stored_) {
-        const auto when = pass == 0 ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
+        const auto when =
+            pass == 0 ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
         if (sa.when != when) continue;
         const bool was = active(cur, sa.step), is = active(next, sa.step);
         if (pass == 0 ? !(was && !is) : !(!was && is)) continue;
@@ -588,8 +610,10 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
         const Val x = eval(d.expr, after);
         if (!x.known) return need_split(after);
         std::int64_t np = ph;
-        if (x.v) np = ph == 0 ? (d.t1 > 0 ? 1 : 2) : (ph == 3 ? 2 : ph);
-        else np = ph == 2 ? (d.t2 > 0 ? 3 : 0) : (ph == 1 ? 0 : ph);
+        if (x.v)
+          np = ph == 0 ? (d.t1 > 0 ? 1 : 2) : (ph == 3 ? 2 : ph);
+        else
+          np = ph == 2 ? (d.t2 > 0 ? 3 : 0) : (ph == 1 ? 0 : ph);
         layout_.set(next, f, np);
       }
     }
@@ -604,14 +628,19 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
     if (!fresh || k + 1 >= options_.max_transient_steps) {
       r.anomaly.kind = Anomaly::Kind::Instability;
       r.anomaly.condition.cubes = {cube_of(v)};
-      r.anomaly.cycle.assign(trajectory.begin() + static_cast<std::ptrdiff_t>(fresh ? trajectory.size() - std::min<std::size_t>(trajectory.size(), 16) : it->second),
-                             trajectory.end());
-      r.anomaly.message =
-          fresh ? "no stable situation after " + std::to_string(options_.max_transient_steps) +
-                      " transient evolutions"
-                : "instability: the transient evolutions cycle through " +
-                      std::to_string(r.anomaly.cycle.size()) + " situations and never reach a "
-                      "stable one";
+      r.anomaly.cycle.assign(
+          trajectory.begin() +
+              static_cast<std::ptrdiff_t>(fresh ? trajectory.size() -
+                                                      std::min<std::size_t>(trajectory.size(), 16)
+                                                : it->second),
+          trajectory.end());
+      r.anomaly.message = fresh ? "no stable situation after " +
+                                      std::to_string(options_.max_transient_steps) +
+                                      " transient evolutions"
+                                : "instability: the transient evolutions cycle through " +
+                                      std::to_string(r.anomaly.cycle.size()) +
+                                      " situations and never reach a "
+                                      "stable one";
       return Status::Anomaly;
     }
     trajectory.push_back(cur);
@@ -631,7 +660,8 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
         }
         if (!x.v) continue;
       }
-      layout_.set(cur, static_cast<std::uint32_t>(vars_[static_cast<std::size_t>(ca.var)].field), 1);
+      layout_.set(cur, static_cast<std::uint32_t>(vars_[static_cast<std::size_t>(ca.var)].field),
+                  1);
     }
   }
   std::sort(r.fired.begin(), r.fired.end());
@@ -707,7 +737,8 @@ void GrafcetSystem::successors(StateView stored_state, SuccessorSink& sink) cons
     Partial p = inputs_of(state);
     for (std::size_t i = 0; i < gin_.size(); ++i)
       if (gin_[i].pseudo) {
-        const auto ph = layout_.get(state, static_cast<std::uint32_t>(delays_[gin_[i].delay].field));
+        const auto ph =
+            layout_.get(state, static_cast<std::uint32_t>(delays_[gin_[i].delay].field));
         p.known[i] = ph == 1 || ph == 3;  // only a running delay's pseudo-input is constrained
         p.val[i] = 0;
       }

@@ -78,13 +78,18 @@ class HistorySink final : public SuccessorSink {
 };
 
 HistorySystem::HistorySystem(const TransitionSystem& base, HistoryRequest request)
-    : base_(base), request_(std::move(request)), layout_(base.layout()),
-      observables_(base.observables()), base_words_(base.layout().words()) {
+    : base_(base),
+      request_(std::move(request)),
+      layout_(base.layout()),
+      observables_(base.observables()),
+      base_words_(base.layout().words()) {
   layout_.align_to_word();
   for (auto i : request_.inputs) {
-    if (i >= base.inputs().size()) throw std::invalid_argument("HistorySystem: no input " + std::to_string(i));
+    if (i >= base.inputs().size())
+      throw std::invalid_argument("HistorySystem: no input " + std::to_string(i));
     const auto& in = base.inputs()[i];
-    if (in.type.kind != model::TypeKind::Bool || in.pseudo || base.kind() != SemanticsKind::Iec61131)
+    if (in.type.kind != model::TypeKind::Bool || in.pseudo ||
+        base.kind() != SemanticsKind::Iec61131)
       throw std::invalid_argument("HistorySystem: input '" + in.name +
                                   "' cannot be recorded (only Boolean inputs of the IEC 61131-3 "
                                   "scan cycle are)");
@@ -104,7 +109,8 @@ HistorySystem::HistorySystem(const TransitionSystem& base, HistoryRequest reques
       lo = of.type.lo;
       hi = of.type.hi;
     } else if (of.type.kind != model::TypeKind::Bool) {
-      throw std::invalid_argument("HistorySystem: prev(" + of.name + "): only Boolean and "
+      throw std::invalid_argument("HistorySystem: prev(" + of.name +
+                                  "): only Boolean and "
                                   "integer observables have a previous value");
     }
     previous_fields_.push_back(layout_.add_field("prev " + of.name, FieldKind::Variable, lo, hi));

@@ -5,7 +5,6 @@
 // function so that the two can be compared line by line.
 
 #include "semantics/iec61131_circuit.hpp"
-#include "semantics/history_system.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -14,6 +13,7 @@
 
 #include "semantics/detail/iec_program.hpp"
 #include "semantics/detail/iec_system_impl.hpp"
+#include "semantics/history_system.hpp"
 
 namespace sfcv::semantics {
 
@@ -88,20 +88,28 @@ class SymbolicMachine {
   static std::optional<std::int64_t> as_constant(const Value& v) {
     std::uint64_t r = 0;
     for (std::uint32_t i = 0; i < kWidth; ++i) {
-      if (v[i] == Aig::kTrue) r |= 1ULL << i;
-      else if (v[i] != Aig::kFalse) return std::nullopt;
+      if (v[i] == Aig::kTrue)
+        r |= 1ULL << i;
+      else if (v[i] != Aig::kFalse)
+        return std::nullopt;
     }
     return static_cast<std::int64_t>(r);
   }
 
   AigLit compare(Op cmp, const Value& x, const Value& k) {
     switch (cmp) {
-      case Op::Eq: return equal(x, k);
-      case Op::Ne: return aig_.make_not(equal(x, k));
-      case Op::Lt: return less(x, k);
-      case Op::Le: return aig_.make_not(less(k, x));
-      case Op::Gt: return less(k, x);
-      default: return aig_.make_not(less(x, k));
+      case Op::Eq:
+        return equal(x, k);
+      case Op::Ne:
+        return aig_.make_not(equal(x, k));
+      case Op::Lt:
+        return less(x, k);
+      case Op::Le:
+        return aig_.make_not(less(k, x));
+      case Op::Gt:
+        return less(k, x);
+      default:
+        return aig_.make_not(less(x, k));
     }
   }
 
@@ -176,8 +184,8 @@ class SymbolicMachine {
     if (p_.options.time == TimeMode::Abstract) {
       const Value start = constant(t.duration_ms <= 0 ? 2 : 1);
       const AigLit timeout = truth(input_value(static_cast<std::uint32_t>(t.timeout_input)));
-      const Value advanced = mux(equal(v, constant(2)), constant(2),
-                                 mux(timeout, constant(2), constant(1)));
+      const Value advanced =
+          mux(equal(v, constant(2)), constant(2), mux(timeout, constant(2), constant(1)));
       running = mux(aig_.make_or(idle, restart), start, advanced);
     } else {
       const Value bumped = min(bv_add(aig_, v, constant(1)), constant(t.max_value));
@@ -204,19 +212,24 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
   const Node& n = p_.nodes[index];
   const std::uint32_t* kid = p_.kids.data() + n.first;
   switch (n.op) {
-    case Op::Const: return constant(n.k);
-    case Op::Field: return nxt_[n.a];
-    case Op::Input: return input_value(n.a);
-    case Op::InputCmp: return from_bool(compare(n.cmp, input_value(n.a), constant(n.k)));
+    case Op::Const:
+      return constant(n.k);
+    case Op::Field:
+      return nxt_[n.a];
+    case Op::Input:
+      return input_value(n.a);
+    case Op::InputCmp:
+      return from_bool(compare(n.cmp, input_value(n.a), constant(n.k)));
     case Op::InputCmpExpr: {
       const Value k = eval(kid[0], guard);
       return from_bool(compare(n.cmp, input_value(n.a), k));
     }
-    case Op::StepX: return from_bool(step_active_cur(n.a));
+    case Op::StepX:
+      return from_bool(step_active_cur(n.a));
     case Op::StepT: {
       const auto& s = p_.steps[n.a];
-      const Value t = mul_constant(cur_[static_cast<std::size_t>(s.t_field)],
-                                   p_.options.cycle_ms, guard);
+      const Value t =
+          mul_constant(cur_[static_cast<std::size_t>(s.t_field)], p_.options.cycle_ms, guard);
       return mux(cur_truth(s.ready), t, constant(0));
     }
     case Op::StepTCmp: {
@@ -225,7 +238,8 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
           aig_.make_not(less(cur_[static_cast<std::size_t>(s.t_field)], constant(n.k)));
       return from_bool(n.negate ? aig_.make_not(r) : r);
     }
-    case Op::TimerQ: return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
+    case Op::TimerQ:
+      return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
     case Op::TimerET: {
       const auto& fb = p_.fbs[n.a];
       if (fb.timer == kNone) return constant(0);
@@ -233,8 +247,10 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
       const Value elapsed = mul_constant(bv_sub(aig_, v, constant(1)), p_.options.cycle_ms, guard);
       return mux(equal(v, constant(0)), constant(0), min(elapsed, constant(fb.pt_ms)));
     }
-    case Op::Not: return from_bool(aig_.make_not(eval_truth(kid[0], guard)));
-    case Op::Neg: return neg(eval(kid[0], guard), guard);
+    case Op::Not:
+      return from_bool(aig_.make_not(eval_truth(kid[0], guard)));
+    case Op::Neg:
+      return neg(eval(kid[0], guard), guard);
     case Op::And: {
       // Short-circuit as the explicit machine: kid i is evaluated only if kids before it held.
       AigLit all = Aig::kTrue;
@@ -280,10 +296,14 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
         }
         return constant(n.op == Op::Div ? *kx / *ky : *kx % *ky);
       }
-      throw CircuitUnsupported(n.op == Op::Div ? "a division of variables"
-                                               : "a MOD of variables");
+      throw CircuitUnsupported(n.op == Op::Div ? "a division of variables" : "a MOD of variables");
     }
-    case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: {
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge: {
       const Value x = eval(kid[0], guard);
       const Value y = eval(kid[1], guard);
       return from_bool(compare(n.op, x, y));
@@ -294,7 +314,9 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
 
 void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
   switch (s.op) {
-    case SOp::Assign: assign(s.target, eval(s.expr, guard), guard); return;
+    case SOp::Assign:
+      assign(s.target, eval(s.expr, guard), guard);
+      return;
     case SOp::If: {
       AigLit rest = guard;
       for (std::uint32_t i = 0; i < s.arm_count; ++i) {
@@ -323,7 +345,9 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
       exec_block(s.else_body, rest);
       return;
     }
-    case SOp::FbCall: fb_call(s, guard); return;
+    case SOp::FbCall:
+      fb_call(s, guard);
+      return;
   }
 }
 
@@ -372,9 +396,8 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
         const AigLit can = aig_.make_and(rise, less(cv, constant(p_.field_hi[cvf])));
         next_cv = mux(other, constant(0), mux(can, bv_add(aig_, cv, constant(1)), cv));
       } else {
-        raise(aig_.make_and(guard, other),
-              aig_.make_or(less(pv, constant(p_.field_lo[cvf])),
-                           less(constant(p_.field_hi[cvf]), pv)));
+        raise(aig_.make_and(guard, other), aig_.make_or(less(pv, constant(p_.field_lo[cvf])),
+                                                        less(constant(p_.field_hi[cvf]), pv)));
         const AigLit can = aig_.make_and(rise, less(constant(p_.field_lo[cvf]), cv));
         next_cv = mux(other, pv, mux(can, bv_sub(aig_, cv, constant(1)), cv));
       }
@@ -394,12 +417,13 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
     case model::StandardFb::TOF: {
       const AigLit in = truth(arg(s.arg1));
       const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
-      const AigLit was = aig_.make_or(nxt_truth(q), aig_.make_not(equal(nxt_[t.field], constant(0))));
+      const AigLit was =
+          aig_.make_or(nxt_truth(q), aig_.make_not(equal(nxt_[t.field], constant(0))));
       const Value v = timer_next(t, Aig::kTrue, Aig::kFalse);
       const AigLit off_running = aig_.make_and(aig_.make_not(in), was);
       // IN: reset the timer, Q = 1; not IN and running: advance; otherwise unchanged.
       set(t.field, mux(in, constant(0), mux(off_running, v, nxt_[t.field])), guard);
-      set_bool(q, aig_.make_or(in, aig_.make_and(off_running, aig_.make_not(timer_expired(t, v)))) ,
+      set_bool(q, aig_.make_or(in, aig_.make_and(off_running, aig_.make_not(timer_expired(t, v)))),
                aig_.make_and(guard, aig_.make_or(in, off_running)));
       return;
     }
@@ -422,7 +446,8 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
       set_bool(q, aig_.make_and(moving, q_running), guard);
       return;
     }
-    case model::StandardFb::None: return;
+    case model::StandardFb::None:
+      return;
   }
 }
 
@@ -477,10 +502,10 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) {
       const auto& st = p_.steps[s];
-      set_bool(st.ready,
-               aig_.make_or(aig_.make_and(cur_truth(st.ready), aig_.make_not(left_[s])),
-                            entered_[s]),
-               Aig::kTrue);
+      set_bool(
+          st.ready,
+          aig_.make_or(aig_.make_and(cur_truth(st.ready), aig_.make_not(left_[s])), entered_[s]),
+          Aig::kTrue);
     }
   for (auto ai : pou.topo_order) {
     const auto& a = p_.actions[ai];
@@ -496,20 +521,23 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
       const Timer* t = as.timer == kNone ? nullptr : &p_.timers[static_cast<std::size_t>(as.timer)];
       const AigLit entered = entered_[as.step];
       switch (as.q) {
-        case model::Qualifier::N: act = aig_.make_or(act, sa); break;
+        case model::Qualifier::N:
+          act = aig_.make_or(act, sa);
+          break;
         case model::Qualifier::S:
           act = aig_.make_or(act, sa);
           set_flag = aig_.make_or(set_flag, sa);
           break;
-        case model::Qualifier::R: break;
+        case model::Qualifier::R:
+          break;
         case model::Qualifier::P:
         case model::Qualifier::P1:
-          act = aig_.make_or(act, aig_.make_and(aig_.make_not(cur_truth(st.ready)),
-                                                nxt_truth(st.ready)));
+          act = aig_.make_or(
+              act, aig_.make_and(aig_.make_not(cur_truth(st.ready)), nxt_truth(st.ready)));
           break;
         case model::Qualifier::P0:
-          act = aig_.make_or(act, aig_.make_and(cur_truth(st.ready),
-                                                aig_.make_not(nxt_truth(st.ready))));
+          act = aig_.make_or(
+              act, aig_.make_and(cur_truth(st.ready), aig_.make_not(nxt_truth(st.ready))));
           break;
         case model::Qualifier::L: {
           const Value v = timer_next(*t, sa, entered);
@@ -533,8 +561,7 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
         }
         case model::Qualifier::SD: {
           const auto latch = static_cast<std::uint32_t>(as.latch);
-          const AigLit l =
-              aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
+          const AigLit l = aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
           set_bool(latch, l, Aig::kTrue);
           const Value v = timer_next(*t, l, Aig::kFalse);
           set(t->field, v, Aig::kTrue);
@@ -555,7 +582,8 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           act = aig_.make_or(act, aig_.make_and(l, aig_.make_not(timer_expired(*t, v))));
           break;
         }
-        case model::Qualifier::DL: break;  // rejected by the compiler
+        case model::Qualifier::DL:
+          break;  // rejected by the compiler
       }
     }
     AigLit stored = Aig::kFalse;
@@ -586,7 +614,8 @@ void SymbolicMachine::step_times(const Pou& pou) {
         advanced = min(bv_add(aig_, v, constant(1)), constant(st.t_max));
       } else {
         const Value top = constant(static_cast<std::int64_t>(st.thresholds.size()));
-        const Value moved = max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
+        const Value moved =
+            max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
         advanced = mux(less(v, top), moved, v);
       }
       nxt_[f] = mux(restart, constant(0), mux(advance, advanced, nxt_[f]));
@@ -614,8 +643,9 @@ void SymbolicMachine::build(StateView initial_state) {
     BitVector bits;
     for (std::uint32_t k = 0; k < fields[f].width; ++k) {
       c_.field_latches[f].push_back(static_cast<std::uint32_t>(aig_.latches().size()));
-      bits.push_back(aig_.add_latch(fields[f].name + (fields[f].width > 1 ? "[" + std::to_string(k) + "]" : ""),
-                                    ((init >> k) & 1U) != 0));
+      bits.push_back(aig_.add_latch(
+          fields[f].name + (fields[f].width > 1 ? "[" + std::to_string(k) + "]" : ""),
+          ((init >> k) & 1U) != 0));
     }
     cur_[f] = decode(bits, fields[f].lo);
   }
@@ -631,9 +661,9 @@ void SymbolicMachine::build(StateView initial_state) {
       bits.push_back(aig_.add_input(in.name + (width > 1 ? "[" + std::to_string(k) + "]" : "")));
     const BitVector encoded = bv_resize(bits, kWidth, false);
     if (width < 64)
-      allowed = aig_.make_and(allowed, aig_.make_not(bv_less_unsigned(
-                                           aig_, bv_constant(static_cast<std::int64_t>(span), kWidth),
-                                           encoded)));
+      allowed = aig_.make_and(
+          allowed, aig_.make_not(bv_less_unsigned(
+                       aig_, bv_constant(static_cast<std::int64_t>(span), kWidth), encoded)));
     c_.input_bits.push_back(bits);
     input_values_.push_back(decode(bits, lo));
   }
@@ -652,7 +682,8 @@ void SymbolicMachine::build(StateView initial_state) {
 
   for (std::uint32_t f = 0; f < fields.size(); ++f) {
     const BitVector next = encode(nxt_[f], f);
-    for (std::uint32_t k = 0; k < fields[f].width; ++k) aig_.set_next(c_.field_latches[f][k], next[k]);
+    for (std::uint32_t k = 0; k < fields[f].width; ++k)
+      aig_.set_next(c_.field_latches[f][k], next[k]);
   }
 
   // Observables, as observe() computes them from a state.
@@ -662,7 +693,8 @@ void SymbolicMachine::build(StateView initial_state) {
         const auto& s = p_.steps[r.a];
         const auto pa = p_.charts[s.chart].parent_action;
         AigLit v = cur_truth(s.ready);
-        if (pa != kNone) v = aig_.make_and(v, cur_truth(p_.actions[static_cast<std::size_t>(pa)].active));
+        if (pa != kNone)
+          v = aig_.make_and(v, cur_truth(p_.actions[static_cast<std::size_t>(pa)].active));
         c_.observable_bits.push_back({v});
         c_.observable_lo.push_back(0);
         break;
@@ -692,7 +724,8 @@ namespace {
 TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit c) {
   Aig& aig = c.aig;
   const auto& fields = h.layout().fields();
-  auto add_field_latches = [&](std::uint32_t f, const BitVector& next, const std::vector<bool>& init) {
+  auto add_field_latches = [&](std::uint32_t f, const BitVector& next,
+                               const std::vector<bool>& init) {
     if (c.field_latches.size() <= f) c.field_latches.resize(f + 1);
     BitVector current;
     for (std::uint32_t k = 0; k < fields[f].width; ++k) {
@@ -723,7 +756,8 @@ TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit 
     const auto j = h.request().previous[k];
     const auto f = h.previous_field(k);
     if (c.observable_lo[j] != fields[f].lo)
-      throw CircuitUnsupported("prev(" + h.observables()[j].name + "): its encoding differs from "
+      throw CircuitUnsupported("prev(" + h.observables()[j].name +
+                               "): its encoding differs from "
                                "its type's range");
     const BitVector now = bv_resize(c.observable_bits[j], fields[f].width, false);
     c.observable_bits.push_back(add_field_latches(f, now, initial_value(now)));
@@ -734,7 +768,8 @@ TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit 
 
 }  // namespace
 
-TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
+TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts,
+                                         std::optional<Deadline> deadline) {
   if (const auto* h = as_history(ts)) {
     if (h->kind() != SemanticsKind::Iec61131)
       throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
@@ -763,7 +798,8 @@ std::vector<StateWord> state_from_latches(const TransitionSystem& ts, const Tran
     std::uint64_t v = 0;
     for (std::size_t k = 0; k < c.field_latches[f].size(); ++k)
       if (latches[c.field_latches[f][k]]) v |= 1ULL << k;
-    layout.set(s, f, static_cast<std::int64_t>(static_cast<std::uint64_t>(layout.fields()[f].lo) + v));
+    layout.set(s, f,
+               static_cast<std::int64_t>(static_cast<std::uint64_t>(layout.fields()[f].lo) + v));
   }
   return s;
 }

@@ -23,9 +23,9 @@ struct TransitionCircuit {
   /// integer variables, one literal for steps, actions and Boolean variables.
   std::vector<BitVector> observable_bits;
   std::vector<std::int64_t> observable_lo;
-  std::vector<AigLit> fired;          ///< per transition of the system: it fires in this cycle
-  AigLit allowed = Aig::kTrue;        ///< the inputs are in range and satisfy the assumptions
-  AigLit range_error = Aig::kFalse;   ///< this cycle raises a range error (no successor)
+  std::vector<AigLit> fired;         ///< per transition of the system: it fires in this cycle
+  AigLit allowed = Aig::kTrue;       ///< the inputs are in range and satisfy the assumptions
+  AigLit range_error = Aig::kFalse;  ///< this cycle raises a range error (no successor)
 };
 
 /// A construct the circuit cannot express (a product of two variables, a division): the

@@ -17,6 +17,7 @@ Iec61131System::Iec61131System(std::unique_ptr<Program> p)
     : p_(std::move(p)), machine_(*p_), scratch_(p_->layout.words()) {}
 
 void Iec61131System::initial_states(SuccessorSink& sink) const {
+  const std::lock_guard<std::recursive_mutex> lock(scratch_lock_);
   std::vector<StateWord> s(p_->layout.words());
   machine_.initial(s);
   static const InputCondition kAlways = InputCondition::always();
@@ -41,7 +42,8 @@ Iec61131System::Entry& Iec61131System::entry_for(std::span<const std::uint32_t> 
   auto slot = h & (table_.size() - 1);
   while (const auto t = table_[slot]) {
     auto& e = entries_[t - 1];
-    if (e.hash == h && std::equal(e.target.begin(), e.target.end(), scratch_.begin(), scratch_.begin() + words) &&
+    if (e.hash == h &&
+        std::equal(e.target.begin(), e.target.end(), scratch_.begin(), scratch_.begin() + words) &&
         std::equal(e.fired.begin(), e.fired.end(), fired.begin(), fired.end()))
       return e;
     slot = (slot + 1) & (table_.size() - 1);
@@ -79,6 +81,7 @@ void Iec61131System::trim(InputCondition& cond, std::size_t n) const {
 }
 
 void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
+  const std::lock_guard<std::recursive_mutex> lock(scratch_lock_);
   for (std::size_t i = 0; i < used_; ++i) {
     trim(entries_[i].condition, 0);
     table_[entries_[i].slot] = 0;
@@ -92,7 +95,8 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
     try {
       if (!machine_.run()) continue;  // excluded by an assumption
     } catch (const RangeAbort& e) {
-      std::string msg = std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
+      std::string msg =
+          std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
       AnomalyEntry* a = nullptr;
       for (std::size_t i = 0; i < anomalies_used_; ++i)
         if (anomalies_[i].message == msg) a = &anomalies_[i];
@@ -135,8 +139,10 @@ std::int64_t Iec61131System::observe(StateView state, std::uint32_t index) const
       const auto pa = p_->charts[s.chart].parent_action;
       return pa == kNone ? 1 : L.get(state, p_->actions[static_cast<std::size_t>(pa)].active);
     }
-    case ObservableKind::Action: return L.get(state, p_->actions[r.a].active);
-    case ObservableKind::Variable: return L.get(state, r.a);
+    case ObservableKind::Action:
+      return L.get(state, p_->actions[r.a].active);
+    case ObservableKind::Variable:
+      return L.get(state, r.a);
   }
   return 0;
 }
@@ -144,6 +150,7 @@ std::int64_t Iec61131System::observe(StateView state, std::uint32_t index) const
 bool Iec61131System::step_once(StateView state, const std::vector<std::int64_t>& valuation,
                                std::vector<StateWord>& out, std::vector<std::uint32_t>* fired,
                                std::string* error) const {
+  const std::lock_guard<std::recursive_mutex> lock(scratch_lock_);
   machine_.load(state);
   try {
     if (!machine_.run_fixed(valuation)) {
@@ -151,7 +158,8 @@ bool Iec61131System::step_once(StateView state, const std::vector<std::int64_t>&
       return false;
     }
   } catch (const RangeAbort& e) {
-    if (error) *error = std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
+    if (error)
+      *error = std::string(e.what) + (e.where && !e.where->empty() ? " at " + *e.where : "");
     return false;
   }
   out.assign(p_->layout.words(), 0);

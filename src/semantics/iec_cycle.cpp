@@ -119,7 +119,8 @@ void Machine::fire_chart(const Chart& c) {
     if (m > 1) {
       const auto in = g.choice_input;
       if (fixed_ || in_lo_[in] == in_hi_[in]) {
-        pick = static_cast<std::uint32_t>(std::min<std::int64_t>(std::max<std::int64_t>(in_lo_[in], 0), m - 1));
+        pick = static_cast<std::uint32_t>(
+            std::min<std::int64_t>(std::max<std::int64_t>(in_lo_[in], 0), m - 1));
       } else {
         pick = decide(in, m);
         touch(in, pick, pick + 1 == m ? p_.inputs[in].type.hi : pick);
@@ -153,11 +154,22 @@ void Machine::update_pou(const Pou& pou) {
       const bool sa = step_active_next(as.step);
       const Timer* t = as.timer == kNone ? nullptr : &p_.timers[static_cast<std::size_t>(as.timer)];
       switch (as.q) {
-        case Qualifier::N: act |= sa; break;
-        case Qualifier::S: act |= sa; set |= sa; break;
-        case Qualifier::R: break;
-        case Qualifier::P: case Qualifier::P1: act |= !cur_[st.ready] && nxt_[st.ready]; break;
-        case Qualifier::P0: act |= cur_[st.ready] && !nxt_[st.ready]; break;
+        case Qualifier::N:
+          act |= sa;
+          break;
+        case Qualifier::S:
+          act |= sa;
+          set |= sa;
+          break;
+        case Qualifier::R:
+          break;
+        case Qualifier::P:
+        case Qualifier::P1:
+          act |= !cur_[st.ready] && nxt_[st.ready];
+          break;
+        case Qualifier::P0:
+          act |= cur_[st.ready] && !nxt_[st.ready];
+          break;
         case Qualifier::L: {
           const auto v = timer_next(*t, sa, entered_[as.step]);
           nxt_[t->field] = v;
@@ -197,7 +209,8 @@ void Machine::update_pou(const Pou& pou) {
           act |= l && !timer_expired(*t, v);
           break;
         }
-        case Qualifier::DL: break;  // rejected by the compiler
+        case Qualifier::DL:
+          break;  // rejected by the compiler
       }
     }
     bool stored = false;
@@ -229,8 +242,10 @@ void Machine::update_pou(const Pou& pou) {
             nxt_[f] = std::max(v, std::min(in_lo_[in], top));
           } else {
             const auto alt = decide(in, static_cast<std::uint32_t>(top - v + 1));
-            if (alt == 0) touch(in, 0, v);
-            else touch(in, v + alt, v + alt);
+            if (alt == 0)
+              touch(in, 0, v);
+            else
+              touch(in, v + alt, v + alt);
             nxt_[f] = v + alt;
           }
         }

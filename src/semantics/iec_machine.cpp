@@ -5,8 +5,8 @@
 #include <array>
 #include <limits>
 
-#include "semantics/iec61131_system.hpp"
 #include "semantics/detail/iec_program.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::semantics::iec {
 
@@ -85,7 +85,8 @@ std::int64_t Machine::read_input(std::uint32_t input) {
   if (fixed_ || lo == hi) return lo;
   const auto span = static_cast<std::uint64_t>(hi) - static_cast<std::uint64_t>(lo);
   if (span >= static_cast<std::uint64_t>(kMaxEnumeratedValues))
-    throw SemanticsLimitError("input '" + p_.inputs[input].name + "' is used as a value (copied or "
+    throw SemanticsLimitError("input '" + p_.inputs[input].name +
+                              "' is used as a value (copied or "
                               "in arithmetic) and would have to be enumerated over " +
                               std::to_string(lo) + ".." + std::to_string(hi) + " (more than " +
                               std::to_string(kMaxEnumeratedValues) +
@@ -98,12 +99,18 @@ std::int64_t Machine::read_input(std::uint32_t input) {
 namespace {
 bool compare(Op cmp, std::int64_t x, std::int64_t k) {
   switch (cmp) {
-    case Op::Eq: return x == k;
-    case Op::Ne: return x != k;
-    case Op::Lt: return x < k;
-    case Op::Le: return x <= k;
-    case Op::Gt: return x > k;
-    default: return x >= k;
+    case Op::Eq:
+      return x == k;
+    case Op::Ne:
+      return x != k;
+    case Op::Lt:
+      return x < k;
+    case Op::Le:
+      return x <= k;
+    case Op::Gt:
+      return x > k;
+    default:
+      return x >= k;
   }
 }
 }  // namespace
@@ -119,14 +126,17 @@ bool Machine::input_cmp(std::uint32_t input, Op cmp, std::int64_t k) {
     b = std::min(b, hi);
     if (a <= b) pieces[n++] = {a, b};
   };
-  const auto mn = std::numeric_limits<std::int64_t>::min(), mx = std::numeric_limits<std::int64_t>::max();
+  const auto mn = std::numeric_limits<std::int64_t>::min(),
+             mx = std::numeric_limits<std::int64_t>::max();
   switch (cmp) {
-    case Op::Lt: case Op::Ge:
+    case Op::Lt:
+    case Op::Ge:
       add(mn, k == mn ? mn : k - 1);
       if (k == mn) n = 0;
       add(k, mx);
       break;
-    case Op::Le: case Op::Gt:
+    case Op::Le:
+    case Op::Gt:
       add(mn, k);
       if (k != mx) add(k + 1, mx);
       break;
@@ -186,35 +196,45 @@ std::int64_t Machine::eval(std::uint32_t index) {
   const Node& n = p_.nodes[index];
   const std::uint32_t* kid = p_.kids.data() + n.first;
   switch (n.op) {
-    case Op::Const: return n.k;
-    case Op::Field: return nxt_[n.a];
-    case Op::Input: return read_input(n.a);
-    case Op::InputCmp: return input_cmp(n.a, n.cmp, n.k);
+    case Op::Const:
+      return n.k;
+    case Op::Field:
+      return nxt_[n.a];
+    case Op::Input:
+      return read_input(n.a);
+    case Op::InputCmp:
+      return input_cmp(n.a, n.cmp, n.k);
     case Op::InputCmpExpr: {
       const auto k = eval(kid[0]);
       return input_cmp(n.a, n.cmp, k);
     }
-    case Op::StepX: return step_active_cur(n.a);
+    case Op::StepX:
+      return step_active_cur(n.a);
     case Op::StepT: {
       const auto& s = p_.steps[n.a];
-      return step_active_cur(n.a) || cur_[s.ready] ? cur_[static_cast<std::size_t>(s.t_field)] * p_.options.cycle_ms : 0;
+      return step_active_cur(n.a) || cur_[s.ready]
+                 ? cur_[static_cast<std::size_t>(s.t_field)] * p_.options.cycle_ms
+                 : 0;
     }
     case Op::StepTCmp: {
       const auto& s = p_.steps[n.a];
       const bool r = cur_[static_cast<std::size_t>(s.t_field)] >= n.k;
       return n.negate ? !r : r;
     }
-    case Op::TimerQ: return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
+    case Op::TimerQ:
+      return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
     case Op::TimerET: {
       const auto& fb = p_.fbs[n.a];
       if (fb.timer == kNone) return 0;
       const auto v = nxt_[p_.timers[static_cast<std::size_t>(fb.timer)].field];
       return v == 0 ? 0 : std::min((v - 1) * p_.options.cycle_ms, fb.pt_ms);
     }
-    case Op::Not: return !eval(kid[0]);
+    case Op::Not:
+      return !eval(kid[0]);
     case Op::Neg: {
       const auto v = eval(kid[0]);
-      if (v == std::numeric_limits<std::int64_t>::min()) throw RangeAbort{"integer overflow in -", &kNowhere};
+      if (v == std::numeric_limits<std::int64_t>::min())
+        throw RangeAbort{"integer overflow in -", &kNowhere};
       return -v;
     }
     case Op::And:
@@ -230,11 +250,20 @@ std::int64_t Machine::eval(std::uint32_t index) {
       for (std::uint32_t i = 0; i < n.count; ++i) r ^= (eval(kid[i]) != 0);
       return r;
     }
-    case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Mod: {
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod: {
       const auto x = eval(kid[0]);
       return arith(n.op, x, eval(kid[1]));
     }
-    case Op::Eq: case Op::Ne: case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: {
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge: {
       const auto x = eval(kid[0]);
       return compare(n.op, x, eval(kid[1]));
     }

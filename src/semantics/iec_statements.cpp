@@ -95,7 +95,9 @@ void Machine::exec_stmt(const Stmt& s) {
 
 void Machine::fb_call(const Stmt& s) {
   const Fb& fb = p_.fbs[s.target];
-  auto arg = [&](std::int32_t node) { return node == kNone ? 0 : eval(static_cast<std::uint32_t>(node)); };
+  auto arg = [&](std::int32_t node) {
+    return node == kNone ? 0 : eval(static_cast<std::uint32_t>(node));
+  };
   auto field = [](std::int32_t f) { return static_cast<std::uint32_t>(f); };
   const auto q = field(fb.q);
   switch (fb.kind) {
@@ -127,8 +129,10 @@ void Machine::fb_call(const Stmt& s) {
       const bool rise = cu && !nxt_[field(fb.mem)];
       nxt_[field(fb.mem)] = cu;
       auto& cv = nxt_[field(fb.cv)];
-      if (r) cv = 0;
-      else if (rise && cv < p_.field_hi[field(fb.cv)]) ++cv;
+      if (r)
+        cv = 0;
+      else if (rise && cv < p_.field_hi[field(fb.cv)])
+        ++cv;
       nxt_[q] = cv >= pv;
       return;
     }

@@ -18,7 +18,8 @@ struct Pick : SuccessorSink {
     fired.assign(s.fired.begin(), s.fired.end());
   }
   void anomaly(const Anomaly& a) override {
-    if (anomaly_message.empty() && valuation && a.condition.holds(*valuation)) anomaly_message = a.message;
+    if (anomaly_message.empty() && valuation && a.condition.holds(*valuation))
+      anomaly_message = a.message;
   }
 };
 }  // namespace
@@ -58,7 +59,8 @@ SimulationResult simulate(const TransitionSystem& ts, StateView start,
     if (!p.found) {
       r.ok = false;
       r.failed_cycle = i + 1;
-      r.error = !p.anomaly_message.empty() ? p.anomaly_message : "no successor: the inputs violate an assumption";
+      r.error = !p.anomaly_message.empty() ? p.anomaly_message
+                                           : "no successor: the inputs violate an assumption";
       return r;
     }
     r.states.push_back(std::move(p.target));

@@ -27,7 +27,8 @@ std::int64_t StateLayout::get(StateView state, std::uint32_t field) const {
 void StateLayout::set(MutableStateView state, std::uint32_t field, std::int64_t value) const {
   const auto& f = fields_[field];
   const std::uint64_t mask = f.width == 64 ? ~0ULL : ((1ULL << f.width) - 1);
-  const std::uint64_t encoded = (static_cast<std::uint64_t>(value) - static_cast<std::uint64_t>(f.lo)) & mask;
+  const std::uint64_t encoded =
+      (static_cast<std::uint64_t>(value) - static_cast<std::uint64_t>(f.lo)) & mask;
   auto& w = state[f.offset / 64];
   w = (w & ~(mask << (f.offset % 64))) | (encoded << (f.offset % 64));
 }

@@ -30,8 +30,8 @@ struct Observable {
   std::string name;                  ///< display name, unique: "MAIN.FILL_A", "V1", "X12"
   std::vector<std::string> aliases;  ///< other names a property may use: "FILL_A", "FILL_A.X"
   ObservableKind kind = ObservableKind::Variable;
-  model::Type type;                  ///< Bool for steps and actions
-  bool is_output = false;            ///< an output of the chart (traces show these)
+  model::Type type;        ///< Bool for steps and actions
+  bool is_output = false;  ///< an output of the chart (traces show these)
 };
 
 /// A chart transition, numbered across the whole system (for traces and dead-transition checks).
@@ -44,7 +44,7 @@ struct TransitionInfo {
 
 struct Successor {
   StateView target;
-  const InputCondition& condition;     ///< inputs under which this evolution happens
+  const InputCondition& condition;       ///< inputs under which this evolution happens
   std::span<const std::uint32_t> fired;  ///< indices into transitions(), sorted
 };
 
@@ -53,7 +53,7 @@ struct Successor {
 struct Anomaly {
   enum class Kind { Instability, RangeError } kind = Kind::Instability;
   std::string message;
-  InputCondition condition;               ///< inputs that trigger it
+  InputCondition condition;                   ///< inputs that trigger it
   std::vector<std::vector<StateWord>> cycle;  ///< the situations of the cycle (Instability)
 };
 

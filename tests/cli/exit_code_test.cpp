@@ -1,12 +1,13 @@
 // The exit-code contract: each error kind the library throws becomes its exit code, with its
 // message, in one place (cli/exit_code.hpp).
 
+#include "cli/exit_code.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/exit_code.hpp"
 #include "semantics/iec61131_system.hpp"  // SemanticsLimitError
 
 namespace sfcv::cli {
@@ -58,8 +59,7 @@ TEST(ExitCodes, EverythingElseIsAnInternalErrorWithABugReportRequest) {
   for (const auto& thrower : std::vector<std::function<int()>>{
            []() -> int { throw InternalError("broken invariant"); },
            []() -> int { throw std::logic_error("vector::at"); },
-           []() -> int { throw std::invalid_argument("stoi"); },
-           []() -> int { throw 42; }}) {
+           []() -> int { throw std::invalid_argument("stoi"); }, []() -> int { throw 42; }}) {
     const auto o = run(thrower);
     EXPECT_EQ(o.code, kInternalError);
     EXPECT_NE(o.err.find("sfcv: internal error: "), std::string::npos) << o.err;

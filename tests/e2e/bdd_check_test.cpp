@@ -1,6 +1,7 @@
 // sfcv check --engine bdd end to end: counterexamples of every shape replay in sfcv simulate,
 // --reorder none/once/dynamic change no answer, --memory too small gives unknown (exit 3), the
-// report counts states and edges as the explicit engine does, on our examples and on the shared corpus.
+// report counts states and edges as the explicit engine does, on our examples and on the shared
+// corpus.
 
 #include <gtest/gtest.h>
 
@@ -72,8 +73,11 @@ TEST(BddCheck, TinyMemoryBudgetIsUnknown) {
   EXPECT_EQ(r.out.find(" holds"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("memory"), std::string::npos) << r.out;
   // A budget that fits answers.
-  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bdd --memory 1G --ctl 'AG !(V1 & V3)'").exit_code, 0);
-  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bdd --memory lots --ctl 'AG !(V1 & V3)'").exit_code, 2);
+  EXPECT_EQ(
+      run_sfcv("check " + kPlant + " --engine bdd --memory 1G --ctl 'AG !(V1 & V3)'").exit_code, 0);
+  EXPECT_EQ(
+      run_sfcv("check " + kPlant + " --engine bdd --memory lots --ctl 'AG !(V1 & V3)'").exit_code,
+      2);
 }
 
 TEST(BddCheck, ReportCountsStatesAndEdgesLikeExplicit) {
@@ -102,13 +106,12 @@ TEST(BddCheck, CorpusReachableStateCounts) {
   // 01: Beremiz's traffic light; 02: a counter chart (32769 rings); 03/04: matiec's test chart,
   // which writes its input IX1; 07: CODESYS's pick-and-place unit, its three SFC function blocks
   // in one cycle; 13: a 22-step cycle; 15 with its input constrained.
-  for (const Chart c : {Chart{"01_beremiz_traffic_light.xml", ""},
-                        Chart{"02_beremiz_first_steps.xml", ""},
-                        Chart{"03_matiec_SFC_TEST_tc6v1.xml", ""},
-                        Chart{"04_matiec_sfc_syntax.st", ""},
-                        Chart{"07_codesys_ppu_scenario3v1.xml", " --pou Stamp --pou Magazin --pou Crane"},
-                        Chart{"13_verifaps_loopunwinding1_left.sfc", ""},
-                        Chart{"15_verifaps_transition2_left.sfc", " --assume 'i >= 500 & i <= 600'"}}) {
+  for (const Chart c :
+       {Chart{"01_beremiz_traffic_light.xml", ""}, Chart{"02_beremiz_first_steps.xml", ""},
+        Chart{"03_matiec_SFC_TEST_tc6v1.xml", ""}, Chart{"04_matiec_sfc_syntax.st", ""},
+        Chart{"07_codesys_ppu_scenario3v1.xml", " --pou Stamp --pou Magazin --pou Crane"},
+        Chart{"13_verifaps_loopunwinding1_left.sfc", ""},
+        Chart{"15_verifaps_transition2_left.sfc", " --assume 'i >= 500 & i <= 600'"}}) {
     SCOPED_TRACE(c.file);
     const std::string args = path(c.file) + c.options + " --ctl TRUE --checks none --timeout 300";
     int code = -1;
@@ -125,9 +128,8 @@ TEST(BddCheck, CorpusReachableStateCounts) {
   // BDD engine counts step A with each of the 65536 values of o := i, plus B1 (o = 1) and B2
   // (o = 2).
   int code = -1;
-  const auto wide = check_json(path("15_verifaps_transition2_left.sfc") +
-                                   " --engine bdd --ctl TRUE --checks none",
-                               &code);
+  const auto wide = check_json(
+      path("15_verifaps_transition2_left.sfc") + " --engine bdd --ctl TRUE --checks none", &code);
   ASSERT_EQ(code, 0) << wide.dump();
   EXPECT_EQ(wide["states"].get<std::uint64_t>(), 65536u + 2u);
   EXPECT_EQ(run_sfcv("check " + path("15_verifaps_transition2_left.sfc") +
@@ -136,7 +138,8 @@ TEST(BddCheck, CorpusReachableStateCounts) {
             3);
   // --engine auto (the default) hands that case to the race, where only the BDD engine answers
   // a property that is not AG p or EF p.
-  const auto chosen = check_json(path("15_verifaps_transition2_left.sfc") + " --ctl TRUE --checks none", &code);
+  const auto chosen =
+      check_json(path("15_verifaps_transition2_left.sfc") + " --ctl TRUE --checks none", &code);
   EXPECT_EQ(code, 0);
   EXPECT_EQ(chosen["engine"], "auto");
   EXPECT_EQ(chosen["properties"][0]["decided_by"], "bdd");
@@ -145,9 +148,10 @@ TEST(BddCheck, CorpusReachableStateCounts) {
   // by both engines alike: its function blocks read each other's instances
   // (`Stack.InitCompleted`). No count is better than a wrong one.
   for (const char* engine : {"explicit", "bdd"}) {
-    const auto r = run_sfcv("check " + path("09_twincat_xppu_scenario1.xml") + " --engine " + engine +
-                            " --pou MonostableCylinder --pou VacuumGripper --pou Crane --pou Stack"
-                            " --pou PPU --ctl TRUE --checks none --quiet");
+    const auto r =
+        run_sfcv("check " + path("09_twincat_xppu_scenario1.xml") + " --engine " + engine +
+                 " --pou MonostableCylinder --pou VacuumGripper --pou Crane --pou Stack"
+                 " --pou PPU --ctl TRUE --checks none --quiet");
     EXPECT_EQ(r.exit_code, 2) << engine << r.out << r.err;
     EXPECT_NE(r.err.find("error"), std::string::npos);
   }

@@ -20,7 +20,8 @@ using sfcv::test::write_temp;
 /// A Grafcet chain of `n` steps all crossed in one transient evolution: exploration finds few
 /// situations, while the checks after it walk every step and transition.
 std::string transient_chain(int n) {
-  std::string text = "project chain;\ninput a;\noutput o;\ngrafcet g {\n  step 0 initial;\n  step 1";
+  std::string text =
+      "project chain;\ninput a;\noutput o;\ngrafcet g {\n  step 0 initial;\n  step 1";
   for (int i = 2; i <= n; ++i) text += ", " + std::to_string(i);
   text += ";\n";
   for (int i = 0; i < n; ++i)
@@ -57,9 +58,9 @@ Timed timed_run(const std::string& args) {
 
 TEST(Budget, InvalidLimitValuesAreUsageErrors) {
   const std::string pistons = sfcv::test::source_path("examples/pistons/pistons.g7");
-  for (const std::string bad : {"--timeout -1", "--timeout 0", "--timeout abc", "--max-states 0",
-                                "--max-states -5", "--max-states 1.5", "--memory 12Q",
-                                "--memory 0", "--memory -1G"}) {
+  for (const std::string bad :
+       {"--timeout -1", "--timeout 0", "--timeout abc", "--max-states 0", "--max-states -5",
+        "--max-states 1.5", "--memory 12Q", "--memory 0", "--memory -1G"}) {
     const auto check = run_sfcv("check " + pistons + " " + bad);
     EXPECT_EQ(check.exit_code, 2) << bad << "\n" << check.err;
     EXPECT_NE(check.err.find("bad --"), std::string::npos) << bad << "\n" << check.err;
@@ -108,9 +109,11 @@ TEST(Budget, TimeoutHoldsUnderAutoOnTheQualityControlPlant) {
   // more each. The BDD facade read the clock every 16th operation only: --timeout 20 ended
   // after 42 s, and --timeout 60 was killed at 120 s.
   SFCV_REQUIRE_CORPUS(corpus);
-  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  const std::string path =
+      "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
   for (const char* engine : {"auto", "bdd"}) {
-    const auto t = timed_run("check " + path + " --engine " + engine + " --timeout 5 --trace none --quiet");
+    const auto t =
+        timed_run("check " + path + " --engine " + engine + " --timeout 5 --trace none --quiet");
     EXPECT_NE(t.run.exit_code, 0) << engine << "\n" << t.run.out << t.run.err;
     EXPECT_NE(t.run.out.find("unknown"), std::string::npos) << engine << "\n" << t.run.out;
     EXPECT_LT(t.seconds, 30.0) << engine;
@@ -122,8 +125,10 @@ TEST(Budget, InvariantCounterexamplesOnTheQualityControlPlantStayWithinTheBudget
   // at an initial situation at once, then enumerated every initial situation again to pick the
   // counterexample's inputs, with no deadline: --engine auto --timeout 60 ran for minutes.
   SFCV_REQUIRE_CORPUS(corpus);
-  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
-  const auto t = timed_run("check " + path + " --engine explicit --ctl 'AG !X2' --timeout 10 --quiet");
+  const std::string path =
+      "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  const auto t =
+      timed_run("check " + path + " --engine explicit --ctl 'AG !X2' --timeout 10 --quiet");
   EXPECT_EQ(t.run.exit_code, 1) << t.run.out << t.run.err;
   EXPECT_NE(t.run.out.find("AG !X2  violated"), std::string::npos) << t.run.out;
   EXPECT_NE(t.run.out.find("counterexample"), std::string::npos) << t.run.out;
@@ -135,18 +140,21 @@ TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
   // situations, 2^12 of them initial): the violation stays, what is not decided is unknown.
   std::string text = "project wide;\ninput a0";
   for (int i = 1; i < 12; ++i) text += ", a" + std::to_string(i);
-  text += ";\ninternal x : 0..1 := 0;\n"
-          "grafcet G0 { step 1 initial; step 2; step 3; transition t0a: 1 -> {2, 3} when a0;\n"
-          "  transition t0b: {2, 3} -> 1 when !a0;\n"
-          "  action 2 on_enter: x := 1; action 3 on_enter: x := 0; }\n";
+  text +=
+      ";\ninternal x : 0..1 := 0;\n"
+      "grafcet G0 { step 1 initial; step 2; step 3; transition t0a: 1 -> {2, 3} when a0;\n"
+      "  transition t0b: {2, 3} -> 1 when !a0;\n"
+      "  action 2 on_enter: x := 1; action 3 on_enter: x := 0; }\n";
   for (int i = 1; i < 12; ++i) {
     const auto n = std::to_string(i);
-    text += "grafcet G" + n + " { step 1 initial; step 2, 3, 4; transition p" + n + ": 1 -> 2 when a" +
-            n + "; transition q" + n + ": 2 -> 3 when !a" + n + "; transition r" + n +
-            ": 3 -> 4 when a" + n + "; transition s" + n + ": 4 -> 1 when !a" + n + "; }\n";
+    text += "grafcet G" + n + " { step 1 initial; step 2, 3, 4; transition p" + n +
+            ": 1 -> 2 when a" + n + "; transition q" + n + ": 2 -> 3 when !a" + n +
+            "; transition r" + n + ": 3 -> 4 when a" + n + "; transition s" + n +
+            ": 4 -> 1 when !a" + n + "; }\n";
   }
   const auto wide = write_temp(text, ".g7");
-  const auto r = run_sfcv("check " + wide + " --engine explicit --max-states 6000 --checks "
+  const auto r = run_sfcv("check " + wide +
+                          " --engine explicit --max-states 6000 --checks "
                           "stored-actions,reachable --trace none --quiet");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("stored-actions  violated"), std::string::npos) << r.out;
@@ -156,14 +164,16 @@ TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
 TEST(Progress, LinesOffTerminalForALongRunAndNoneUnderQuiet) {
   // 2^40 situations: no machine explores them within the timeout, so the run is long on any.
   const auto chain = write_temp("", ".st");
-  const std::string gen = std::string("'") + SFCV_GEN + "' parallel 40 --selector -o '" + chain + "'";
+  const std::string gen =
+      std::string("'") + SFCV_GEN + "' parallel 40 --selector -o '" + chain + "'";
   ASSERT_EQ(std::system(gen.c_str()), 0) << gen;
   const auto loud = run_sfcv("check " + chain + " --engine explicit --timeout 4 --trace none");
   EXPECT_EQ(loud.exit_code, 3);
   // Off a terminal: whole lines (no carriage return), naming the phase.
   EXPECT_NE(loud.err.find("sfcv: explore: "), std::string::npos) << loud.err;
   EXPECT_EQ(loud.err.find('\r'), std::string::npos) << loud.err;
-  const auto quiet = run_sfcv("check " + chain + " --engine explicit --timeout 4 --trace none --quiet");
+  const auto quiet =
+      run_sfcv("check " + chain + " --engine explicit --timeout 4 --trace none --quiet");
   EXPECT_EQ(quiet.exit_code, 3);
   EXPECT_EQ(quiet.err, "") << quiet.err;
   // The global option, before the subcommand, for every subcommand alike.

@@ -12,10 +12,12 @@
 namespace sfcv::test {
 namespace {
 
-const std::string kPlant = "'" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st'";
+const std::string kPlant =
+    "'" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st'";
 
 TEST(CheckCommand, ChemicalPlantPaperResults) {
-  const auto r = run_sfcv("check " + kPlant + " --checks reachable --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)'");
+  const auto r = run_sfcv("check " + kPlant +
+                          " --checks reachable --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)'");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("reachable      holds"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("all 13 steps are reachable"), std::string::npos);
@@ -28,10 +30,11 @@ TEST(CheckCommand, ChemicalPlantPaperResults) {
 TEST(CheckCommand, DefaultRunsTheStandardChecks) {
   const auto r = run_sfcv("check " + kPlant + " --trace none");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  for (const char* name : {"reachable", "dead-transitions", "reentry", "global-deadlock",
-                           "local-deadlock", "initial-return", "conflicts", "stored-actions",
-                           "output-conflicts", "instability"})
-    EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n" << r.out;
+  for (const char* name :
+       {"reachable", "dead-transitions", "reentry", "global-deadlock", "local-deadlock",
+        "initial-return", "conflicts", "stored-actions", "output-conflicts", "instability"})
+    EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n"
+                                                                             << r.out;
   EXPECT_NE(r.out.find("not checked"), std::string::npos);
 }
 
@@ -58,7 +61,8 @@ TEST(CheckCommand, JsonOutput) {
 
 TEST(CheckCommand, TraceFormatsAndReplayWithSimulate) {
   const auto csv = write_temp("", ".csv");
-  auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V2 & V4)' --trace csv --trace-file '" + csv + "'");
+  auto r = run_sfcv("check " + kPlant +
+                    " --quiet --ctl 'AG !(V2 & V4)' --trace csv --trace-file '" + csv + "'");
   ASSERT_EQ(r.exit_code, 1) << r.err;
   const auto sim = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
   ASSERT_EQ(sim.exit_code, 0) << sim.out << sim.err;
@@ -75,19 +79,26 @@ TEST(CheckCommand, TraceFormatsAndReplayWithSimulate) {
 
 TEST(CheckCommand, JunitReportForCi) {
   const auto xml = write_temp("", ".xml");
-  const auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' "
-                          "--junit '" + xml + "'");
+  const auto r = run_sfcv("check " + kPlant +
+                          " --quiet --ctl 'AG !(V1 & V3)' --ctl 'AG !(V2 & V4)' "
+                          "--junit '" +
+                          xml + "'");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   std::ifstream f(xml);
   const std::string report((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   EXPECT_NE(report.find("<testsuites name=\"sfcv check\" tests=\"2\" failures=\"1\" errors=\"0\""),
-            std::string::npos) << report;
-  EXPECT_NE(report.find("<testcase classname=\"chemical_plant.st.properties\" name=\"AG !(V1 &amp; V3)\""),
-            std::string::npos) << report;
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find(
+                "<testcase classname=\"chemical_plant.st.properties\" name=\"AG !(V1 &amp; V3)\""),
+            std::string::npos)
+      << report;
   EXPECT_NE(report.find("<failure message=\"violated"), std::string::npos) << report;
   EXPECT_EQ(report.find("file=\"--ctl\""), std::string::npos) << report;
-  EXPECT_NE(report.find("file=\"" + std::string(SFCV_SOURCE_DIR) + "/examples/chemical_plant/chemical_plant.st\""),
-            std::string::npos) << report;
+  EXPECT_NE(report.find("file=\"" + std::string(SFCV_SOURCE_DIR) +
+                        "/examples/chemical_plant/chemical_plant.st\""),
+            std::string::npos)
+      << report;
   EXPECT_NE(report.find("counterexample ("), std::string::npos) << report;
 }
 
@@ -146,7 +157,8 @@ namespace {
 
 TEST(CheckCommand, PalletTransferCollisionBeforeAndAfterTheFix) {
   const std::string dir = "'" + std::string(SFCV_SOURCE_DIR) + "/examples/pallet_transfer/";
-  auto r = run_sfcv("check " + dir + "pallet_transfer.g7' --ctl 'AG !(X10 & X25)' --checks reachable");
+  auto r =
+      run_sfcv("check " + dir + "pallet_transfer.g7' --ctl 'AG !(X10 & X25)' --checks reachable");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("AG !(X10 & X25)  violated"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("X10* "), std::string::npos) << r.out;
@@ -171,13 +183,15 @@ grafcet G {
   transition 7: 3 -> 1 when b;
   action 3: y;
 }
-)", ".g7");
+)",
+                               ".g7");
   auto r = run_sfcv("check " + path + " --quiet --ctl 'AG !y'");
   ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("| (6) X2 -> X3 |"), std::string::npos) << r.out;
   r = run_sfcv("check " + path + " --quiet --ctl 'AG !y' --trace csv");
-  EXPECT_NE(r.out.find("one row per stable situation, the first the initial inputs\na,b\n1,0\n0,0\n"),
-            std::string::npos)
+  EXPECT_NE(
+      r.out.find("one row per stable situation, the first the initial inputs\na,b\n1,0\n0,0\n"),
+      std::string::npos)
       << r.out;
 }
 
@@ -193,7 +207,8 @@ TEST(CheckCommand, FindingsCutWithACountAndAll) {
   const auto path = write_temp(g7, ".g7");
   auto r = run_sfcv("check " + path + " --quiet --checks reachable");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  EXPECT_NE(r.out.find("  (20 of 25 findings shown; --all for every one)\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  (20 of 25 findings shown; --all for every one)\n"), std::string::npos)
+      << r.out;
   r = run_sfcv("check " + path + " --quiet --checks reachable --all");
   EXPECT_EQ(r.out.find("findings shown"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("X26"), std::string::npos) << r.out;
@@ -202,9 +217,10 @@ TEST(CheckCommand, FindingsCutWithACountAndAll) {
 // SARIF: a rule per check and property, a located result per violation, the trace as a code flow.
 TEST(CheckCommand, SarifLocatesViolationsAndTheirTraces) {
   const auto sarif = write_temp("", ".sarif");
-  const auto run = run_sfcv("check '" + source_path("examples/chemical_plant/chemical_plant.st") +
-                            "' --quiet --checks local-deadlock --ctl 'AG !(V2 & V4)' --trace none --sarif '" +
-                            sarif + "'");
+  const auto run =
+      run_sfcv("check '" + source_path("examples/chemical_plant/chemical_plant.st") +
+               "' --quiet --checks local-deadlock --ctl 'AG !(V2 & V4)' --trace none --sarif '" +
+               sarif + "'");
   ASSERT_EQ(run.exit_code, 1) << run.err;
   std::ifstream f(sarif);
   const auto log = nlohmann::json::parse(f);
@@ -217,7 +233,8 @@ TEST(CheckCommand, SarifLocatesViolationsAndTheirTraces) {
   ASSERT_EQ(results.size(), 2u);
   // The deadlocked step S9 is at line 39, column 3 of the chart.
   const auto& deadlock = results[1]["locations"][0]["physicalLocation"];
-  EXPECT_EQ(deadlock["artifactLocation"]["uri"], "file://" + source_path("examples/chemical_plant/chemical_plant.st"));
+  EXPECT_EQ(deadlock["artifactLocation"]["uri"],
+            "file://" + source_path("examples/chemical_plant/chemical_plant.st"));
   EXPECT_EQ(deadlock["region"]["startLine"], 39);
   EXPECT_EQ(deadlock["region"]["startColumn"], 3);
   const auto& v2v4 = results[0];

@@ -55,15 +55,18 @@ TEST(Cli, SemanticsOptionsBuildTheSameSystemInEverySubcommand) {
   TRANSITION FROM S1 TO S0 := NOT a; END_TRANSITION
   TRANSITION FROM S2 TO S0 := NOT a; END_TRANSITION
 END_PROGRAM
-)", ".st");
+)",
+                                ".st");
   for (const auto& [flags, states] : {std::pair<std::string, int>{"", 2}, {"--priority none", 3}}) {
     const auto rsg = run_sfcv("rsg " + chart + " " + flags + " --json");
     ASSERT_EQ(rsg.exit_code, 0) << rsg.err;
-    EXPECT_EQ(nlohmann::json::parse(rsg.out)["states"].size(), static_cast<std::size_t>(states)) << flags;
+    EXPECT_EQ(nlohmann::json::parse(rsg.out)["states"].size(), static_cast<std::size_t>(states))
+        << flags;
     const auto query = run_sfcv("query " + chart + " '#Y' " + flags + " --json");
     ASSERT_EQ(query.exit_code, 0) << query.err;
     EXPECT_EQ(nlohmann::json::parse(query.out)["queries"][0]["value"], states) << flags;
-    const auto check = run_sfcv("check " + chart + " " + flags + " --checks reachable --json --quiet");
+    const auto check =
+        run_sfcv("check " + chart + " " + flags + " --checks reachable --json --quiet");
     EXPECT_EQ(nlohmann::json::parse(check.out)["states"], states) << flags;
   }
 }

@@ -7,9 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "support/sfcv_test.hpp"
 
@@ -23,7 +22,9 @@ std::string slurp(const std::string& path) {
   return ss.str();
 }
 
-std::string quoted(const std::string& relative) { return "'" + source_path(relative) + "'"; }
+std::string quoted(const std::string& relative) {
+  return "'" + source_path(relative) + "'";
+}
 
 // The export of `chart` with `args`, compared with tests/data/exports/<golden>.
 void expect_golden(const std::string& chart, const std::string& args, const std::string& golden) {
@@ -62,8 +63,7 @@ class Golden : public ::testing::Test {
 };
 
 TEST_F(Golden, LightNusmv) {
-  expect_golden("light.st", "--to nusmv --ctl 'AG (lamp -> On)' --ctl 'AG EF Off'",
-                "light.smv");
+  expect_golden("light.st", "--to nusmv --ctl 'AG (lamp -> On)' --ctl 'AG EF Off'", "light.smv");
 }
 TEST_F(Golden, LightCadenceSmv) {
   expect_golden("light.st", "--to casmv --ctl 'AG (lamp -> On)' --ctl 'AG EF Off'",
@@ -131,10 +131,12 @@ TEST(Export, PlcopenXmlReadsBackToTheSameChart) {
   ASSERT_EQ(via_xml.exit_code, 0) << via_xml.err;
   EXPECT_EQ(via_xml.out, direct.out);
   std::filesystem::remove(file);
-  const auto grafcet = run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to plcopen");
+  const auto grafcet =
+      run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to plcopen");
   EXPECT_EQ(grafcet.exit_code, 2);
   EXPECT_NE(grafcet.err.find("cannot write as PLCopen XML: a Grafcet (IEC 60848) project"),
-            std::string::npos) << grafcet.err;
+            std::string::npos)
+      << grafcet.err;
 }
 
 TEST(Export, RefusesWhatTheTargetCannotSay) {

@@ -129,7 +129,8 @@ std::string times(const std::string& a, std::uint64_t b) {
     r.insert(r.begin(), static_cast<char>('0' + static_cast<int>(v % 10)));
     carry = v / 10;
   }
-  for (; carry; carry /= 10) r.insert(r.begin(), static_cast<char>('0' + static_cast<int>(carry % 10)));
+  for (; carry; carry /= 10)
+    r.insert(r.begin(), static_cast<char>('0' + static_cast<int>(carry % 10)));
   const auto nz = r.find_first_not_of('0');
   return nz == std::string::npos ? "0" : r.substr(nz);
 }
@@ -148,14 +149,16 @@ TEST(Families, TanksCountsPastSixtyFourBitsAreExact) {
   std::string expected = "1";
   for (int k = 0; k < 24; ++k) expected = times(expected, one - 1);
   ASSERT_GT(expected.size(), 20u);  // beyond 2^64 = 18446744073709551616
-  expected = plus_one(expected);  // the shared Start state
+  expected = plus_one(expected);    // the shared Start state
   const auto file = generate("tanks 24", ".st");
-  const auto r = run_sfcv("check '" + file + "' --engine bdd --checks none --ctl 'AG !(V2_0 & V4_0)' --json --quiet");
+  const auto r = run_sfcv("check '" + file +
+                          "' --engine bdd --checks none --ctl 'AG !(V2_0 & V4_0)' --json --quiet");
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_TRUE(j.at("states").is_string()) << j.at("states");
   EXPECT_EQ(j.at("states").get<std::string>(), expected);
-  const auto text = run_sfcv("check '" + file + "' --engine bdd --checks none --ctl 'AG !(V2_0 & V4_0)' --quiet");
+  const auto text =
+      run_sfcv("check '" + file + "' --engine bdd --checks none --ctl 'AG !(V2_0 & V4_0)' --quiet");
   EXPECT_NE(text.out.find(expected + " states, "), std::string::npos) << text.out;
 }
 
@@ -212,7 +215,7 @@ TEST(Families, EveryFamilyLoadsWithTheHandCountedStructure) {
       {"parallel 4", ".st", 9, 9},
       {"tanks 1", ".st", 8, 8},  // Start + 7 steps, divergence + 7 transitions per reactor
       {"tanks 2 --flawed", ".st", 15, 15},
-      {"nested 3", ".st", 8, 8},  // two steps and two transitions per level
+      {"nested 3", ".st", 8, 8},               // two steps and two transitions per level
       {"transfer 2 --unused 3", ".g7", 8, 8},  // four of each per station
   };
   const bool info = info_is_built();

@@ -11,7 +11,9 @@
 namespace sfcv::test {
 namespace {
 
-std::string q(const std::string& s) { return "'" + s + "'"; }
+std::string q(const std::string& s) {
+  return "'" + s + "'";
+}
 
 const std::string kHeader =
     "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
@@ -55,9 +57,10 @@ std::string sfc_pou(const std::string& action_name = "", const std::string& acti
 // The motor interlock of the issue: a program that energises both motors, in ST (modelled)
 // and in IL (not modelled).
 std::string drive_pou(const std::string& language, const std::string& body) {
-  return "<pou name=\"drive\" pouType=\"program\">\n<interface>" + bool_vars("inputVars", {"start"}) +
-         bool_vars("outputVars", {"motor_fwd", "motor_rev"}) + "</interface>\n<body><" + language +
-         "><xhtml:p><![CDATA[\n" + body + "]]></xhtml:p></" + language + "></body>\n</pou>\n";
+  return "<pou name=\"drive\" pouType=\"program\">\n<interface>" +
+         bool_vars("inputVars", {"start"}) + bool_vars("outputVars", {"motor_fwd", "motor_rev"}) +
+         "</interface>\n<body><" + language + "><xhtml:p><![CDATA[\n" + body + "]]></xhtml:p></" +
+         language + "></body>\n</pou>\n";
 }
 const std::string kDriveSt =
     drive_pou("ST", "IF start THEN\n  motor_fwd := TRUE;\n  motor_rev := TRUE;\nEND_IF;\n");
@@ -77,8 +80,8 @@ TEST(NeverASilentModel, UnmodelledPouBodyUnderPouIsAnErrorInEverySubcommand) {
   for (const std::string& cmd :
        {"check " + file + " --pou drive --ctl 'AG !(motor_fwd & motor_rev)'",
         "check " + file + " --pou drive", "export " + file + " --pou drive --to iec",
-        "simulate " + file + " --pou drive --inputs " + q(inputs), "query " + file + " Steps --pou drive",
-        "rsg " + file + " --pou drive"}) {
+        "simulate " + file + " --pou drive --inputs " + q(inputs),
+        "query " + file + " Steps --pou drive", "rsg " + file + " --pou drive"}) {
     const auto r = run_sfcv(cmd);
     EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.out << r.err;
     EXPECT_EQ(r.out.find("holds"), std::string::npos) << cmd << "\n" << r.out;
@@ -87,7 +90,8 @@ TEST(NeverASilentModel, UnmodelledPouBodyUnderPouIsAnErrorInEverySubcommand) {
     EXPECT_NE(r.err.find(iec_text ? "POU 'drive', whose body sfcv does not model"
                                   : "POU 'drive': its IL body is not modelled"),
               std::string::npos)
-        << cmd << "\n" << r.err;
+        << cmd << "\n"
+        << r.err;
   }
   // The SFC program beside it still checks.
   const auto ok = run_sfcv("check " + file + " --pou seq --ctl 'AG (S0.X | S1.X)'");
@@ -115,7 +119,8 @@ TEST(NeverASilentModel, ActionWithUnmodelledBodyIsRefusedWhereAStepUsesIt) {
     EXPECT_EQ(r.exit_code, 2) << sub << "\n" << r.out << r.err;
     EXPECT_NE((r.out + r.err).find("activates action 'Pulse', whose body sfcv does not model"),
               std::string::npos)
-        << sub << "\n" << r.out << r.err;
+        << sub << "\n"
+        << r.out << r.err;
     EXPECT_NE((r.out + r.err).find(used + ":"), std::string::npos) << r.out << r.err;
   }
   // Declared but never used: nothing checked depends on it.
@@ -128,8 +133,7 @@ TEST(NeverASilentModel, UnboundNamesInPropertiesAreLocatedErrors) {
   // `motor_fwd` is a variable of another POU (not run): not a free input.
   const auto path = write_temp(kHeader + sfc_pou() + kDriveSt + kFooter, ".xml");
   const std::string file = q(path);
-  for (const char* opt :
-       {"--ctl 'AG !motor_fwd'", "--assume '!motor_fwd'", "--fair 'motor_fwd'"}) {
+  for (const char* opt : {"--ctl 'AG !motor_fwd'", "--assume '!motor_fwd'", "--fair 'motor_fwd'"}) {
     const auto r = run_sfcv("check " + file + " --pou seq " + std::string(opt));
     EXPECT_EQ(r.exit_code, 2) << opt << "\n" << r.out << r.err;
     EXPECT_NE(r.err.find("motor_fwd"), std::string::npos) << opt << "\n" << r.err;
@@ -171,9 +175,12 @@ std::string g7_with_guard(const std::string& guard) {
 void expect_located_error(const std::string& args, const std::string& where,
                           const std::string& message) {
   const auto r = run_sfcv(args);
-  EXPECT_EQ(r.exit_code, 2) << args.substr(0, 200) << "\n" << r.out.substr(0, 2000) << r.err.substr(0, 2000);
-  EXPECT_NE((r.out + r.err).find(where), std::string::npos) << r.out.substr(0, 2000) << r.err.substr(0, 2000);
-  EXPECT_NE((r.out + r.err).find(message), std::string::npos) << r.out.substr(0, 2000) << r.err.substr(0, 2000);
+  EXPECT_EQ(r.exit_code, 2) << args.substr(0, 200) << "\n"
+                            << r.out.substr(0, 2000) << r.err.substr(0, 2000);
+  EXPECT_NE((r.out + r.err).find(where), std::string::npos)
+      << r.out.substr(0, 2000) << r.err.substr(0, 2000);
+  EXPECT_NE((r.out + r.err).find(message), std::string::npos)
+      << r.out.substr(0, 2000) << r.err.substr(0, 2000);
 }
 
 TEST(DepthLimits, G7GuardNestingIsALocatedError) {
@@ -181,7 +188,8 @@ TEST(DepthLimits, G7GuardNestingIsALocatedError) {
   expect_located_error("check " + q(parens), parens + ":5:", "nested deeper than 200 levels");
   const auto nots = write_temp(g7_with_guard(repeat("!", 20000) + "a"), ".g7");
   expect_located_error("lint " + q(nots), nots + ":5:", "nested deeper than 200 levels");
-  const auto sums = write_temp("input n : 0..3;\n" + g7_with_guard(repeat("n + ", 20000) + "n > 0"), ".g7");
+  const auto sums =
+      write_temp("input n : 0..3;\n" + g7_with_guard(repeat("n + ", 20000) + "n > 0"), ".g7");
   expect_located_error("check " + q(sums), sums + ":6:", "nested deeper than 200 levels");
 }
 
@@ -190,17 +198,18 @@ const std::string kPlant = source_path("examples/chemical_plant/chemical_plant.s
 TEST(DepthLimits, CtlNestingIsALocatedError) {
   // A command-line argument holds at most 128 KiB: --ctl gets 10,000 parentheses and 40,000 AG;
   // the spec file gets 100,000 AG.
-  expect_located_error("check " + q(kPlant) + " --ctl '" + repeat("(", 10000) + "V1" +
-                           repeat(")", 10000) + "'",
-                       "--ctl", "formula nested deeper than 200 levels");
+  expect_located_error(
+      "check " + q(kPlant) + " --ctl '" + repeat("(", 10000) + "V1" + repeat(")", 10000) + "'",
+      "--ctl", "formula nested deeper than 200 levels");
   expect_located_error("check " + q(kPlant) + " --ctl '" + repeat("AG ", 40000) + "V1'", "--ctl",
                        "formula nested deeper than 200 levels");
   const auto spec = write_temp("property deep: " + repeat("AG ", 100000) + "V1;\n", ".spec");
-  expect_located_error("check " + q(kPlant) + " --spec " + q(spec), spec + ":1:",
-                       "formula nested deeper than 200 levels");
-  const auto chain = write_temp("property long: AG !(" + repeat("V1 & ", 100000) + "V3);\n", ".spec");
-  expect_located_error("check " + q(kPlant) + " --spec " + q(chain), chain + ":1:",
-                       "formula nested deeper than 200 levels");
+  expect_located_error("check " + q(kPlant) + " --spec " + q(spec),
+                       spec + ":1:", "formula nested deeper than 200 levels");
+  const auto chain =
+      write_temp("property long: AG !(" + repeat("V1 & ", 100000) + "V3);\n", ".spec");
+  expect_located_error("check " + q(kPlant) + " --spec " + q(chain),
+                       chain + ":1:", "formula nested deeper than 200 levels");
 }
 
 TEST(DepthLimits, QueryNestingIsAnError) {
@@ -222,16 +231,21 @@ TEST(DepthLimits, AgrafeNestedNotIsALocatedError) {
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       "<grafcet:Grafcet xmi:version=\"2.0\" xmlns:xmi=\"http://www.omg.org/XMI\" "
       "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
-      "xmlns:grafcet=\"http://www.example.org/grafcet\" xmlns:terms=\"http://www.example.org/terms\">\n"
+      "xmlns:grafcet=\"http://www.example.org/grafcet\" "
+      "xmlns:terms=\"http://www.example.org/terms\">\n"
       "<variableDeclarationContainer><variableDeclarations name=\"a\" "
       "variableDeclarationType=\"input\"><sort xsi:type=\"terms:Bool\" id=\"9001\"/>"
       "</variableDeclarations></variableDeclarationContainer>\n"
       "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\">\n"
       "<steps xsi:type=\"grafcet:Step\" id=\"1\" initial=\"true\"/>\n"
       "<steps xsi:type=\"grafcet:Step\" id=\"2\"/>\n"
-      "<transitions id=\"1\">" + term + "</transitions>\n"
-      "<arcs source=\"//@partialGrafcets.0/@steps.0\" target=\"//@partialGrafcets.0/@transitions.0\"/>\n"
-      "<arcs source=\"//@partialGrafcets.0/@transitions.0\" target=\"//@partialGrafcets.0/@steps.1\"/>\n"
+      "<transitions id=\"1\">" +
+      term +
+      "</transitions>\n"
+      "<arcs source=\"//@partialGrafcets.0/@steps.0\" "
+      "target=\"//@partialGrafcets.0/@transitions.0\"/>\n"
+      "<arcs source=\"//@partialGrafcets.0/@transitions.0\" "
+      "target=\"//@partialGrafcets.0/@steps.1\"/>\n"
       "</partialGrafcets>\n</grafcet:Grafcet>\n";
   const auto path = write_temp(xmi, ".grafcet");
   expect_located_error("lint " + q(path), path + ":", "term nested deeper than 200 levels");
@@ -239,20 +253,25 @@ TEST(DepthLimits, AgrafeNestedNotIsALocatedError) {
 
 TEST(DepthLimits, PlcopenNotChainIsALocatedError) {
   // The condition of S0 -> S1 is `go` through 5,000 NOT blocks (an FBD condition network).
-  std::string fbd = "<inVariable localId=\"100\"><expression>go</expression><connectionPointOut/></inVariable>\n";
+  std::string fbd =
+      "<inVariable localId=\"100\"><expression>go</expression><connectionPointOut/></inVariable>\n";
   int prev = 100;
   for (int i = 0; i < 5000; ++i) {
     const int id = 101 + i;
-    fbd += "<block localId=\"" + std::to_string(id) + "\" typeName=\"NOT\"><inputVariables><variable "
-           "formalParameter=\"IN\"><connectionPointIn><connection refLocalId=\"" +
-           std::to_string(prev) + "\"/></connectionPointIn></variable></inputVariables>"
-           "<inOutVariables/><outputVariables><variable formalParameter=\"OUT\"><connectionPointOut/>"
-           "</variable></outputVariables></block>\n";
+    fbd +=
+        "<block localId=\"" + std::to_string(id) +
+        "\" typeName=\"NOT\"><inputVariables><variable "
+        "formalParameter=\"IN\"><connectionPointIn><connection refLocalId=\"" +
+        std::to_string(prev) +
+        "\"/></connectionPointIn></variable></inputVariables>"
+        "<inOutVariables/><outputVariables><variable formalParameter=\"OUT\"><connectionPointOut/>"
+        "</variable></outputVariables></block>\n";
     prev = id;
   }
   std::string pou = sfc_pou();
   const std::string inline_go =
-      "<condition><inline name=\"\"><ST><xhtml:p><![CDATA[go]]></xhtml:p></ST></inline></condition>";
+      "<condition><inline "
+      "name=\"\"><ST><xhtml:p><![CDATA[go]]></xhtml:p></ST></inline></condition>";
   pou.replace(pou.find(inline_go), inline_go.size(),
               "<condition><connectionPointIn><connection refLocalId=\"" + std::to_string(prev) +
                   "\" formalParameter=\"OUT\"/></connectionPointIn></condition>");
@@ -264,7 +283,9 @@ TEST(DepthLimits, PlcopenNotChainIsALocatedError) {
 TEST(DepthLimits, StExpressionChainIsALocatedError) {
   const std::string st =
       "PROGRAM p\nVAR_INPUT n : INT; END_VAR\nINITIAL_STEP s0 : END_STEP\nSTEP s1 : END_STEP\n"
-      "TRANSITION FROM s0 TO s1 := " + repeat("n + ", 50000) + "n > 0; END_TRANSITION\n"
+      "TRANSITION FROM s0 TO s1 := " +
+      repeat("n + ", 50000) +
+      "n > 0; END_TRANSITION\n"
       "TRANSITION FROM s1 TO s0 := TRUE; END_TRANSITION\nEND_PROGRAM\n";
   const auto path = write_temp(st, ".st");
   expect_located_error("lint " + q(path), path + ":5:", "nested deeper than 200 levels");
@@ -294,7 +315,8 @@ std::string nested_g7(int n, bool enclosing) {
     return enclosing ? "step M" + std::to_string(i) + " encloses G" + std::to_string(i + 1) + ";"
                      : "step M" + std::to_string(i) + " macro G" + std::to_string(i + 1) + ";";
   };
-  g7 += "grafcet G0 { step 1 initial; " + child(0) + " transition t0: 1 -> M0 when a; "
+  g7 += "grafcet G0 { step 1 initial; " + child(0) +
+        " transition t0: 1 -> M0 when a; "
         "transition u0: M0 -> 1 when !a; }\n";
   for (int i = 1; i <= n; ++i) {
     const auto k = std::to_string(i);

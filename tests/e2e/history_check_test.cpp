@@ -120,8 +120,9 @@ TEST(HistoryCheckCommand, GrafcetInputsAreTheSituationsInputs) {
   )",
                              ".g7");
   for (const char* engine : {"explicit", "bdd"}) {
-    auto r = run_sfcv(std::string("check '") + g7 + "' --engine " + engine +
-                      " --ctl 'AG (X1 -> Y)' --ctl 'EF (X1 & a)' --ctl 'AG (X0 -> !a)' --ctl 'AG !b'");
+    auto r =
+        run_sfcv(std::string("check '") + g7 + "' --engine " + engine +
+                 " --ctl 'AG (X1 -> Y)' --ctl 'EF (X1 & a)' --ctl 'AG (X0 -> !a)' --ctl 'AG !b'");
     EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
     EXPECT_TRUE(verdict_is(r.out, "EF (X1 & a)", "holds")) << r.out;
     EXPECT_TRUE(verdict_is(r.out, "AG (X0 -> !a)", "holds")) << r.out;

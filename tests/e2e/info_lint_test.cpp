@@ -16,7 +16,9 @@ using sfcv::test::write_temp;
 
 const std::string kPump = "tests/data/info_pump.st";
 
-std::string q(const std::string& path) { return "'" + path + "'"; }
+std::string q(const std::string& path) {
+  return "'" + path + "'";
+}
 
 /// A one-POU IEC text model around `body` (declarations and chart).
 std::string program(const std::string& body) {
@@ -69,19 +71,20 @@ TEST(Info, JsonMatchesTheDocumentedExample) {
 }
 
 TEST(Info, CountsNestedChartsAndNetworks) {
-  const std::string path = write_temp(program(
-      "  INITIAL_STEP A: Sub(N); END_STEP\n"
-      "  STEP B: END_STEP\n"
-      "  TRANSITION FROM A TO B := go; END_TRANSITION\n"
-      "  TRANSITION FROM B TO A := NOT go; END_TRANSITION\n"
-      "  INITIAL_STEP C: END_STEP\n"
-      "  TRANSITION FROM C TO C := go; END_TRANSITION\n"
-      "  ACTION Sub:\n"
-      "    INITIAL_STEP X: END_STEP\n"
-      "    STEP Y: END_STEP\n"
-      "    TRANSITION FROM X TO Y := go; END_TRANSITION\n"
-      "    TRANSITION FROM Y TO X := NOT go; END_TRANSITION\n"
-      "  END_ACTION\n"), ".st");
+  const std::string path =
+      write_temp(program("  INITIAL_STEP A: Sub(N); END_STEP\n"
+                         "  STEP B: END_STEP\n"
+                         "  TRANSITION FROM A TO B := go; END_TRANSITION\n"
+                         "  TRANSITION FROM B TO A := NOT go; END_TRANSITION\n"
+                         "  INITIAL_STEP C: END_STEP\n"
+                         "  TRANSITION FROM C TO C := go; END_TRANSITION\n"
+                         "  ACTION Sub:\n"
+                         "    INITIAL_STEP X: END_STEP\n"
+                         "    STEP Y: END_STEP\n"
+                         "    TRANSITION FROM X TO Y := go; END_TRANSITION\n"
+                         "    TRANSITION FROM Y TO X := NOT go; END_TRANSITION\n"
+                         "  END_ACTION\n"),
+                 ".st");
   const auto r = run_sfcv("info --json " + q(path));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -97,19 +100,18 @@ TEST(Info, CountsNestedChartsAndNetworks) {
 }
 
 TEST(Info, InvalidModelExitsTwoWithNothingOnStdout) {
-  const std::string path = write_temp(program(kValidLoop +
-                                              "  TRANSITION FROM S1 TO Nowhere := go; END_TRANSITION\n"),
-                                      ".st");
+  const std::string path = write_temp(
+      program(kValidLoop + "  TRANSITION FROM S1 TO Nowhere := go; END_TRANSITION\n"), ".st");
   const auto r = run_sfcv("info --json " + q(path));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.out, "");
   EXPECT_NE(r.err.find(path + ":8:3: error: transition to undeclared step 'Nowhere'"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
 }
 
 TEST(Info, WarningsGoToStderrUnlessQuiet) {
-  const std::string path =
-      write_temp(program(kValidLoop + "  STEP Lonely: END_STEP\n"), ".st");
+  const std::string path = write_temp(program(kValidLoop + "  STEP Lonely: END_STEP\n"), ".st");
   const auto loud = run_sfcv("info --json " + q(path));
   EXPECT_EQ(loud.exit_code, 0) << loud.err;
   EXPECT_NE(loud.err.find(path + ":8:3: warning: step 'Lonely' is unreachable"), std::string::npos)
@@ -140,11 +142,11 @@ TEST(Lint, WarningsAloneExitZero) {
 TEST(Lint, ErrorsExitTwoWithEveryDiagnosticLocated) {
   const std::string path = write_temp(
       program(kValidLoop +
-              "  STEP S1: END_STEP\n"                                    // line 8: duplicate
-              "  TRANSITION FROM S1 TO S0 := n; END_TRANSITION\n"        // line 9: INT guard
-              "  TRANSITION FROM S0 TO S1 := go = n; END_TRANSITION\n"   // line 10: BOOL = INT
-              "  ACTION Act: go := TRUE; END_ACTION\n"                   // line 11: input
-              "  STEP S2: Act(N); END_STEP\n"                            // line 12: unreachable
+              "  STEP S1: END_STEP\n"                                   // line 8: duplicate
+              "  TRANSITION FROM S1 TO S0 := n; END_TRANSITION\n"       // line 9: INT guard
+              "  TRANSITION FROM S0 TO S1 := go = n; END_TRANSITION\n"  // line 10: BOOL = INT
+              "  ACTION Act: go := TRUE; END_ACTION\n"                  // line 11: input
+              "  STEP S2: Act(N); END_STEP\n"                           // line 12: unreachable
               ),
       ".st");
   const auto r = run_sfcv("lint " + q(path));
@@ -155,7 +157,8 @@ TEST(Lint, ErrorsExitTwoWithEveryDiagnosticLocated) {
         ":12:3: warning: step 'S2' is unreachable"})
     EXPECT_NE(r.out.find(want), std::string::npos) << want << " missing from:\n" << r.out;
   // Writing an input is a warning for IEC charts (CODESYS and TwinCAT accept it).
-  EXPECT_NE(r.out.find(":11:15: warning: assignment to input variable 'go'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(":11:15: warning: assignment to input variable 'go'"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("3 errors, 2 warnings\n"), std::string::npos) << r.out;
 }
 
@@ -181,7 +184,8 @@ TEST(Lint, JsonIsAnArrayOfLocatedDiagnostics) {
 TEST(Lint, MissingFileExitsTwo) {
   const auto r = run_sfcv("lint /nonexistent/chart.st");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("/nonexistent/chart.st: error: cannot open file"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("/nonexistent/chart.st: error: cannot open file"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("1 error, 0 warnings"), std::string::npos) << r.out;
 }
 
@@ -211,8 +215,9 @@ TEST(LintCorpus, IllFormedDelayGivesOneLocatedErrorPerDefect) {
       {33, "duplicate step 'I1' (first declared at line 27:5)"},
       {45, "transition to undeclared step 'I1a' (also named by the transition at line 47:5)"},
       {46, "transition to undeclared step 'I1b' (also named by the transition at line 48:5)"},
-      {47, "transition to undeclared step 'I2' (also named by the transitions at line 48:5, "
-           "line 49:5)"},
+      {47,
+       "transition to undeclared step 'I2' (also named by the transitions at line 48:5, "
+       "line 49:5)"},
       {49, "transition to undeclared step 'Boing'"},
   };
   EXPECT_EQ(errors, expected_errors) << r.out;
@@ -224,7 +229,8 @@ TEST(LintCorpus, IllFormedDelayGivesOneLocatedErrorPerDefect) {
 
   const auto text = run_sfcv("lint " + q(path));
   EXPECT_EQ(text.exit_code, 2);
-  EXPECT_NE(text.out.find(path + ":33:5: error: duplicate step 'I1'"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(path + ":33:5: error: duplicate step 'I1'"), std::string::npos)
+      << text.out;
   EXPECT_NE(text.out.find("5 errors, 3 warnings"), std::string::npos) << text.out;
 }
 

@@ -18,13 +18,16 @@ std::string plcopen(const std::string& pous) {
          "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
          "<fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" "
          "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"demo\"/>\n"
-         "<types><dataTypes/><pous>\n" + pous + "</pous></types>\n"
+         "<types><dataTypes/><pous>\n" +
+         pous +
+         "</pous></types>\n"
          "<instances><configurations/></instances>\n</project>\n";
 }
 
 std::string bool_vars(const char* section, std::initializer_list<const char*> names) {
   std::string s = std::string("<") + section + ">";
-  for (const char* n : names) s += std::string("<variable name=\"") + n + "\"><type><BOOL/></type></variable>";
+  for (const char* n : names)
+    s += std::string("<variable name=\"") + n + "\"><type><BOOL/></type></variable>";
   return s + "</" + section + ">";
 }
 
@@ -36,7 +39,8 @@ std::string st_pou(const std::string& name, const std::string& interface, const 
 }
 
 std::string motors(const std::string& st) {
-  return plcopen(st_pou("Motors", bool_vars("inputVars", {"start"}) + bool_vars("outputVars", {"M1", "M2"}), st));
+  return plcopen(st_pou(
+      "Motors", bool_vars("inputVars", {"start"}) + bool_vars("outputVars", {"M1", "M2"}), st));
 }
 
 // The regression of issue 18: an ST-bodied POU used to run as an empty program that "holds".
@@ -63,9 +67,10 @@ TEST(Programs, InterlockedStBodyHolds) {
 
 // An IL body is refused by name (exit 2), never run as a no-op.
 TEST(Programs, IlBodyIsRefusedWithItsLocation) {
-  const std::string pou =
-      "<pou name=\"Motors\" pouType=\"program\"><interface>" + bool_vars("outputVars", {"M1"}) +
-      "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">LD TRUE\nST M1</xhtml></IL></body></pou>\n";
+  const std::string pou = "<pou name=\"Motors\" pouType=\"program\"><interface>" +
+                          bool_vars("outputVars", {"M1"}) +
+                          "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">LD "
+                          "TRUE\nST M1</xhtml></IL></body></pou>\n";
   const auto file = write_temp(plcopen(pou), ".xml");
   auto r = run_sfcv("check " + file + " --pou Motors --ctl 'AG !M1'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -79,8 +84,10 @@ TEST(Programs, IlBodyIsRefusedWithItsLocation) {
 TEST(Programs, PureStTextProgram) {
   const auto file = write_temp(
       "PROGRAM p\n VAR_INPUT a : BOOL; END_VAR\n VAR_OUTPUT x, y : BOOL; END_VAR\n"
-      " x := a; y := NOT a;\nEND_PROGRAM\n", ".st");
-  auto r = run_sfcv("check " + file + " --ctl 'AG !(x & y)' --ctl 'EF x' --ctl 'EF y' --trace none");
+      " x := a; y := NOT a;\nEND_PROGRAM\n",
+      ".st");
+  auto r =
+      run_sfcv("check " + file + " --ctl 'AG !(x & y)' --ctl 'EF x' --ctl 'EF y' --trace none");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   r = run_sfcv("check " + file + " --ctl 'AG !x' --trace none");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
@@ -89,8 +96,11 @@ TEST(Programs, PureStTextProgram) {
 // Two programs of one project run in one cycle in document order, sharing a global: the
 // second sees what the first wrote in the same cycle.
 TEST(Programs, SeveralProgramsRunInOneCycleInDocumentOrder) {
-  const std::string a = st_pou("A", bool_vars("inputVars", {"start"}) + bool_vars("globalVars", {"req"}), "req := start;");
-  const std::string b = st_pou("B", bool_vars("externalVars", {"req"}) + bool_vars("outputVars", {"motor"}), "motor := req;");
+  const std::string a = st_pou(
+      "A", bool_vars("inputVars", {"start"}) + bool_vars("globalVars", {"req"}), "req := start;");
+  const std::string b =
+      st_pou("B", bool_vars("externalVars", {"req"}) + bool_vars("outputVars", {"motor"}),
+             "motor := req;");
   const auto ab = write_temp(plcopen(a + b), ".xml");
   auto r = run_sfcv("check " + ab + " --ctl 'AG (motor <-> req)' --trace none");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -115,7 +125,9 @@ std::string ld_pou() {
            std::to_string(from) + "\"/></connectionPointIn><connectionPointOut/><variable>" + var +
            "</variable></coil>";
   };
-  const std::string rail = "<leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut formalParameter=\"\"/></leftPowerRail>";
+  const std::string rail =
+      "<leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut "
+      "formalParameter=\"\"/></leftPowerRail>";
   std::string ld = rail;
   // run := start AND NOT stop
   ld += contact(2, "start", 1) + contact(3, "stop", 2, " negated=\"true\"") + coil(4, "run", 3);
@@ -124,14 +136,16 @@ std::string ld_pou() {
   ld += contact(7, "stop", 1) + coil(8, "latched", 7, " storage=\"reset\"");
   // pulse := rising edge of start (true one cycle)
   ld += contact(9, "start", 1, " edge=\"rising\"") + coil(10, "pulse", 9);
-  return "<pou name=\"Rung\" pouType=\"program\"><interface>" + bool_vars("inputVars", {"start", "stop"}) +
+  return "<pou name=\"Rung\" pouType=\"program\"><interface>" +
+         bool_vars("inputVars", {"start", "stop"}) +
          bool_vars("outputVars", {"run", "latched", "pulse"}) + "</interface><body><LD>" + ld +
          "</LD></body></pou>\n";
 }
 
 TEST(Programs, LadderRungIsPowerFlow) {
   const auto file = write_temp(plcopen(ld_pou()), ".xml");
-  auto r = run_sfcv("check " + file + " --trace none --ctl 'AG ((pulse & run) -> latched)'"
+  auto r = run_sfcv("check " + file +
+                    " --trace none --ctl 'AG ((pulse & run) -> latched)'"
                     " --ctl 'EF latched' --ctl 'EF (latched & !run)' --ctl 'EF run'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   // The edge contact passes power for one cycle only: start held does not keep pulse on.
@@ -148,7 +162,8 @@ TEST(Programs, LadderRungIsPowerFlow) {
 // CTU's reset input is RESET. TwinCAT: a timer called without PT has PT = T#0s.
 TEST(Programs, VendorTimerAndCounterIdioms) {
   const std::string interface =
-      bool_vars("inputVars", {"go", "clear"}) + bool_vars("outputVars", {"done", "full", "at_once", "going", "cleared"}) +
+      bool_vars("inputVars", {"go", "clear"}) +
+      bool_vars("outputVars", {"done", "full", "at_once", "going", "cleared"}) +
       "<localVars><variable name=\"T\"><type><derived name=\"TON\"/></type></variable>"
       "<variable name=\"Z\"><type><derived name=\"TON\"/></type></variable>"
       "<variable name=\"C\"><type><derived name=\"CTU\"/></type></variable></localVars>";
@@ -157,11 +172,14 @@ TEST(Programs, VendorTimerAndCounterIdioms) {
       "done := T.Q;\nC(CU := go, RESET := clear, PV := 2);\nfull := C.Q;\n"
       "Z(IN := go);\nat_once := Z.Q;\ngoing := go;\ncleared := clear;\n";
   const auto file = write_temp(plcopen(st_pou("Codesys", interface, st)), ".xml");
-  auto r = run_sfcv("check " + file + " --trace none --ctl 'AG (done -> going)' --ctl 'EF done'"
-                    " --ctl 'AG (cleared -> !full)' --ctl 'EF full' --ctl 'AG (at_once <-> going)'");
+  auto r =
+      run_sfcv("check " + file +
+               " --trace none --ctl 'AG (done -> going)' --ctl 'EF done'"
+               " --ctl 'AG (cleared -> !full)' --ctl 'EF full' --ctl 'AG (at_once <-> going)'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   // Different PTs with IN not FALSE stay refused under discrete time.
-  const std::string bad = "IF clear THEN T(IN := go, PT := T#1S); ELSE T(IN := go, PT := T#5S); END_IF; done := T.Q;";
+  const std::string bad =
+      "IF clear THEN T(IN := go, PT := T#1S); ELSE T(IN := go, PT := T#5S); END_IF; done := T.Q;";
   const auto bad_file = write_temp(plcopen(st_pou("Codesys", interface, bad)), ".xml");
   r = run_sfcv("check " + bad_file + " --time discrete --ctl 'EF done'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -172,30 +190,33 @@ TEST(Programs, VendorTimerAndCounterIdioms) {
 TEST(Programs, ActionCalledFromSt) {
   const std::string pou =
       "<pou name=\"P\" pouType=\"program\"><interface>" + bool_vars("inputVars", {"a"}) +
-      bool_vars("outputVars", {"x", "y"}) + "</interface><actions><action name=\"ACT_Copy\"><body><ST>"
+      bool_vars("outputVars", {"x", "y"}) +
+      "</interface><actions><action name=\"ACT_Copy\"><body><ST>"
       "<xhtml xmlns=\"http://www.w3.org/1999/xhtml\">x := a;</xhtml></ST></body></action></actions>"
-      "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Copy(); y := x;</xhtml></ST></body></pou>\n";
+      "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Copy(); y := "
+      "x;</xhtml></ST></body></pou>\n";
   const auto file = write_temp(plcopen(pou), ".xml");
   auto r = run_sfcv("check " + file + " --trace none --ctl 'AG (x <-> y)' --ctl 'EF x'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
-
 // TwinCAT FBs start SFC actions from ST (`ACT_Extend();`): one cycle of a chart per call is not
 // modelled, and running such a POU is refused by name.
 TEST(Programs, CallOfAnSfcActionIsRefused) {
   const std::string sfc =
-      "<step localId=\"1\" name=\"S0\" initialStep=\"true\"><connectionPointIn/><connectionPointOut/></step>";
-  const std::string pou =
-      "<pou name=\"Cyl\" pouType=\"program\"><interface>" + bool_vars("outputVars", {"x"}) +
-      "</interface><actions><action name=\"ACT_Extend\"><body><SFC>" + sfc + "</SFC></body></action></actions>"
-      "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Extend(); x := TRUE;</xhtml></ST></body></pou>\n";
+      "<step localId=\"1\" name=\"S0\" "
+      "initialStep=\"true\"><connectionPointIn/><connectionPointOut/></step>";
+  const std::string pou = "<pou name=\"Cyl\" pouType=\"program\"><interface>" +
+                          bool_vars("outputVars", {"x"}) +
+                          "</interface><actions><action name=\"ACT_Extend\"><body><SFC>" + sfc +
+                          "</SFC></body></action></actions>"
+                          "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Extend(); x "
+                          ":= TRUE;</xhtml></ST></body></pou>\n";
   const auto file = write_temp(plcopen(pou), ".xml");
   const auto r = run_sfcv("check " + file + " --pou Cyl --ctl 'AG !x'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("call of action 'ACT_Extend'"), std::string::npos) << r.err;
 }
-
 
 // A program that keeps no state (TwinCAT sensor FBs whose outputs have types sfcv drops): one
 // situation, not a crash.

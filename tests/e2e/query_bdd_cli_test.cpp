@@ -10,8 +10,12 @@
 namespace sfcv::test {
 namespace {
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
-std::string plant() { return quoted(source_path("examples/chemical_plant/chemical_plant.st")); }
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
+std::string plant() {
+  return quoted(source_path("examples/chemical_plant/chemical_plant.st"));
+}
 
 const char* kQueries =
     " 'Y - Amont(T)' 'Y - Pred(Y0, T)' 'Tclear' 'Int(Emis(V2 & V4))' 'Nec(start & LIS1minus)'"
@@ -58,7 +62,8 @@ PROGRAM Count
   TRANSITION FROM S2 TO S1 := NOT a OR k < -1; END_TRANSITION
   ACTION Inc: n := n + 1; END_ACTION
 END_PROGRAM
-)", ".st");
+)",
+                               ".st");
   const std::string q = " 'Y' 'Nec(k >= 0)' 'Int(Emis(n >= 2 & busy))' --assert";
   const auto x = run_sfcv("query " + quoted(file) + q + " --engine explicit");
   const auto b = run_sfcv("query " + quoted(file) + q + " --engine bdd");
@@ -72,13 +77,14 @@ END_PROGRAM
 
 TEST(QueryBddCli, RefusesWhatItCannotDo) {
   // Grafcet: not encoded symbolically yet.
-  auto r = run_sfcv("query " + quoted(source_path("examples/pistons/pistons.g7")) +
-                    " 'Y' --engine bdd");
+  auto r =
+      run_sfcv("query " + quoted(source_path("examples/pistons/pistons.g7")) + " 'Y' --engine bdd");
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.err.find("does not support the Grafcet semantics"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
   // auto falls back to the explicit engine and says why.
-  r = run_sfcv("query " + quoted(source_path("examples/pistons/pistons.g7")) + " '#Y' --engine auto");
+  r = run_sfcv("query " + quoted(source_path("examples/pistons/pistons.g7")) +
+               " '#Y' --engine auto");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("using the explicit engine"), std::string::npos) << r.err;
   r = run_sfcv("query " + plant() + " 'Y' --engine nosuch");

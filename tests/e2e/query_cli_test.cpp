@@ -9,7 +9,9 @@
 namespace sfcv::test {
 namespace {
 
-std::string pistons() { return "'" + source_path("examples/pistons/pistons.g7") + "'"; }
+std::string pistons() {
+  return "'" + source_path("examples/pistons/pistons.g7") + "'";
+}
 
 TEST(QueryCli, GlobalDeadlockOnThePistons) {
   const auto r = run_sfcv("query " + pistons() + " 'Y - Amont(T)'");
@@ -31,7 +33,8 @@ TEST(QueryCli, AssertGivesVerdictsAndExitCodes) {
   EXPECT_NE(r.out.find("{11,20} O1"), std::string::npos) << r.out;
 
   // The worst verdict wins: one violation among holding properties exits 1.
-  r = run_sfcv("query " + pistons() + " 'Y - Amont(T)' --use 'mutex(O1, O2)' "
+  r = run_sfcv("query " + pistons() +
+               " 'Y - Amont(T)' --use 'mutex(O1, O2)' "
                "--use 'precedence(O1, I1, O2)' --assert");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
 }
@@ -48,8 +51,8 @@ TEST(QueryCli, AnIncompleteGraphNeverGivesAVerdict) {
 TEST(QueryCli, ErrorsAreLocatedAndExit2) {
   auto r = run_sfcv("query " + pistons() + " 'Y + T'");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("query:1:3: the operands of '+' must have the same sort"),
-            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("query:1:3: the operands of '+' must have the same sort"), std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("  Y + T\n    ^"), std::string::npos) << r.err;
   r = run_sfcv("query " + pistons() + " 'Emis(O7)'");
   EXPECT_EQ(r.exit_code, 2);
@@ -90,10 +93,12 @@ TEST(QueryCli, Json) {
 }
 
 TEST(QueryCli, UserLibrariesAndList) {
-  const auto lib = write_temp("// both pistons out\ndef both_out() = Emis(O1 & O2);\n"
-                              "def mutex(a, b) = Emis(a | b);\n",
-                              ".sfq");
-  auto r = run_sfcv("query " + pistons() + " --library '" + lib + "' --use both_out --use "
+  const auto lib = write_temp(
+      "// both pistons out\ndef both_out() = Emis(O1 & O2);\n"
+      "def mutex(a, b) = Emis(a | b);\n",
+      ".sfq");
+  auto r = run_sfcv("query " + pistons() + " --library '" + lib +
+                    "' --use both_out --use "
                     "'mutex(O1, O2)' --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -102,7 +107,8 @@ TEST(QueryCli, UserLibrariesAndList) {
   r = run_sfcv("query --list");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("mutex(a, b) = Emis(a & b);"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("global_deadlock() = Y - Pred(Amont(Tclear), T);"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("global_deadlock() = Y - Pred(Amont(Tclear), T);"), std::string::npos)
+      << r.out;
   const auto bad = write_temp("def f() = Y +;\n", ".sfq");
   r = run_sfcv("query " + pistons() + " Y --library '" + bad + "'");
   EXPECT_EQ(r.exit_code, 2);
@@ -120,7 +126,8 @@ TEST(QueryCli, InlineGrafcetWithADeadlockAndNec) {
       transition 2: 2 -> 3 when b;
       action 2: V;
     }
-  )", ".g7");
+  )",
+                             ".g7");
   auto r = run_sfcv("query '" + g7 + "' --use global_deadlock --assert");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("4 situations (1 distinct step sets)"), std::string::npos) << r.out;
@@ -131,7 +138,8 @@ TEST(QueryCli, InlineGrafcetWithADeadlockAndNec) {
                 .exit_code,
             0);
   // Every evolution out of step 2 needs b; the one out of step 1 needs a and !b.
-  r = run_sfcv("query '" + g7 + "' 'Int(Act({2})) * Ext(Act({3})) - Nec(b) = {}' "
+  r = run_sfcv("query '" + g7 +
+               "' 'Int(Act({2})) * Ext(Act({3})) - Nec(b) = {}' "
                "'Int(Act({1})) * Ext(Act({2})) - Nec(a & !b) = {}' "
                "'Int(Act({1})) * Ext(Act({2})) * Nec(b) = {}' 'Emis(V) = Act({2})' --assert");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -140,12 +148,14 @@ TEST(QueryCli, InlineGrafcetWithADeadlockAndNec) {
 TEST(QueryCli, PalletTransferCollision) {
   const auto flawed = source_path("examples/pallet_transfer/pallet_transfer.g7");
   const auto fixed = source_path("examples/pallet_transfer/pallet_transfer_fixed.g7");
-  auto r = run_sfcv("query '" + flawed + "' --use 'entries_into(Act({10, 25}))' "
+  auto r = run_sfcv("query '" + flawed +
+                    "' --use 'entries_into(Act({10, 25}))' "
                     "'Act({1, 10, 20, 25, 31, 40}) != {}' --assert --max-elements 2");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("VIOLATED"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--> #"), std::string::npos) << r.out;
-  r = run_sfcv("query '" + fixed + "' --use 'entries_into(Act({10, 25}))' 'Act({10, 25}) = {}' "
+  r = run_sfcv("query '" + fixed +
+               "' --use 'entries_into(Act({10, 25}))' 'Act({10, 25}) = {}' "
                "--assert");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }

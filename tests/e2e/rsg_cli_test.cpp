@@ -36,7 +36,8 @@ TEST(RsgCli, SummaryAndListing) {
   const auto path = write_temp(kToggle, ".g7");
   const auto r = run_sfcv("rsg --list " + path);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("semantics: grafcet (IEC 60848, single input change)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("semantics: grafcet (IEC 60848, single input change)"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("situations: 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("evolutions: 2"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("build time:"), std::string::npos);
@@ -51,7 +52,9 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 /// The grouped graph's situation nodes ("  g3 [id=\"sg3\", ..."; edges are \"se0\").
-std::size_t situation_nodes(const std::string& dot) { return count(dot, " [id=\"sg"); }
+std::size_t situation_nodes(const std::string& dot) {
+  return count(dot, " [id=\"sg");
+}
 
 TEST(RsgCli, DotAndJson) {
   const auto path = write_temp(kToggle, ".g7");
@@ -77,17 +80,21 @@ TEST(RsgCli, DotGroupsByStepSituationWithACap) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out.rfind("digraph rsg {", 0), 0u) << r.out;  // the graph alone, for a pipe into dot
   EXPECT_EQ(situation_nodes(r.out), 5u) << r.out;
-  EXPECT_NE(r.out.find("label=\"{X10, X20}\\n32 stable situations\", peripheries=2"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("g1 -> g3 [id=\"se4\", label=\"(2) X11 -> X12\\l\"]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("label=\"{X10, X20}\\n32 stable situations\", peripheries=2"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("g1 -> g3 [id=\"se4\", label=\"(2) X11 -> X12\\l\"]"), std::string::npos)
+      << r.out;
   EXPECT_EQ(r.err.find("left out"), std::string::npos) << r.err;
 
   const auto cut = run_sfcv("rsg --dot - --max-nodes 2 " + pistons);
   ASSERT_EQ(cut.exit_code, 0) << cut.err;
   EXPECT_EQ(situation_nodes(cut.out), 2u) << cut.out;
   EXPECT_NE(cut.out.find("3 more step situations"), std::string::npos) << cut.out;
-  EXPECT_NE(cut.err.find("sfcv rsg --dot: 2 of 5 step situations are drawn (the first 2 "
-                         "breadth-first), 3 left out; --max-nodes N draws N, --max-nodes 0 every one"),
-            std::string::npos)
+  EXPECT_NE(
+      cut.err.find("sfcv rsg --dot: 2 of 5 step situations are drawn (the first 2 "
+                   "breadth-first), 3 left out; --max-nodes N draws N, --max-nodes 0 every one"),
+      std::string::npos)
       << cut.err;
 }
 
@@ -125,11 +132,13 @@ namespace {
 // make it quadratic and ignore the limit.
 TEST(RsgCorpus, TimeLimitEndsTheExplosiveQualityControlPlant) {
   SFCV_REQUIRE_CORPUS(corpus);
-  const std::string path = "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
+  const std::string path =
+      "'" + (corpus / "22_agrafe_quality_control_plant.grafcet").string() + "'";
   const auto rsg = run_sfcv("rsg " + path + " --timeout 2");
   EXPECT_EQ(rsg.exit_code, 3) << rsg.out << rsg.err;
   EXPECT_NE(rsg.out.find("time limit"), std::string::npos) << rsg.out;
-  const auto check = run_sfcv("check " + path + " --engine explicit --timeout 2 --checks reachable --trace none");
+  const auto check =
+      run_sfcv("check " + path + " --engine explicit --timeout 2 --checks reachable --trace none");
   EXPECT_EQ(check.exit_code, 3) << check.out << check.err;
   EXPECT_NE(check.out.find("unknown"), std::string::npos) << check.out;
 }

@@ -7,9 +7,8 @@
 
 #include <chrono>
 #include <fstream>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "chart_families.hpp"
 #include "support/sfcv_test.hpp"
@@ -24,8 +23,9 @@ TEST(SatCheck, VerdictsTracesAndCertificates) {
   for (const char* engine : {"bmc", "kind", "ic3"}) {
     SCOPED_TRACE(engine);
     const auto csv = write_temp("", ".csv");
-    const auto r = run_sfcv("check " + kPlant + " --engine " + engine +
-                            " --quiet --ctl 'AG !(V2 & V4)' --trace csv --trace-file '" + csv + "'");
+    const auto r =
+        run_sfcv("check " + kPlant + " --engine " + engine +
+                 " --quiet --ctl 'AG !(V2 & V4)' --trace csv --trace-file '" + csv + "'");
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     const auto sim = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
     EXPECT_EQ(sim.exit_code, 0) << sim.out << sim.err;
@@ -40,7 +40,8 @@ TEST(SatCheck, VerdictsTracesAndCertificates) {
   TRANSITION FROM Up TO Wait := TRUE; END_TRANSITION
   ACTION Inc: c := c + 1; END_ACTION
 END_PROGRAM
-)", ".st");
+)",
+                                         ".st");
   for (const char* engine : {"kind", "ic3"}) {
     SCOPED_TRACE(engine);
     const auto cert = write_temp("", ".txt");
@@ -56,19 +57,25 @@ END_PROGRAM
         << text.str();
   }
   // BMC proves nothing: unknown at its bound.
-  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bmc --depth 20 --quiet --ctl 'AG !(V1 & V3)'").exit_code, 3);
+  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bmc --depth 20 --quiet --ctl 'AG !(V1 & V3)'")
+                .exit_code,
+            3);
   // CTL beyond invariants: unknown, not a guess.
   EXPECT_EQ(run_sfcv("check " + kPlant + " --engine ic3 --quiet --ctl 'AG EF s1'").exit_code, 3);
   // Grafcet: invariants over the stable situations are decided (the pistons never move at the
   // same time; X22 is reached), its standard checks are shown as not checked, never as holding.
   const std::string pistons = "'" + source_path("examples/pistons/pistons.g7") + "'";
-  const auto g = run_sfcv("check " + pistons + " --engine ic3 --quiet --ctl 'AG !((I1 | O1) & (I2 | O2))' "
+  const auto g = run_sfcv("check " + pistons +
+                          " --engine ic3 --quiet --ctl 'AG !((I1 | O1) & (I2 | O2))' "
                           "--checks reachable");
   EXPECT_EQ(g.exit_code, 0) << g.out << g.err;
   EXPECT_NE(g.out.find("holds"), std::string::npos) << g.out;
-  EXPECT_NE(g.out.find("not checked by the ic3 engine on a Grafcet chart"), std::string::npos) << g.out;
+  EXPECT_NE(g.out.find("not checked by the ic3 engine on a Grafcet chart"), std::string::npos)
+      << g.out;
   for (const char* engine : {"bmc", "ic3"})
-    EXPECT_EQ(run_sfcv("check " + pistons + " --engine " + engine + " --quiet --ctl 'AG !X22'").exit_code, 1)
+    EXPECT_EQ(
+        run_sfcv("check " + pistons + " --engine " + engine + " --quiet --ctl 'AG !X22'").exit_code,
+        1)
         << engine;
 }
 
@@ -78,7 +85,8 @@ END_PROGRAM
 TEST(SatCheck, AutoRacesPastTheProbeAndSaysWhoDecided) {
   const auto counter = write_temp(bench::counter_iec(30), ".st");
   const std::string bound = std::to_string((std::uint64_t{1} << 30) - 2);
-  auto r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c <= " + bound + "' --json --quiet");
+  auto r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c <= " + bound +
+                    "' --json --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["engine"], "auto");
@@ -90,8 +98,10 @@ TEST(SatCheck, AutoRacesPastTheProbeAndSaysWhoDecided) {
   EXPECT_NE(r.out.find("[ic3]"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("--engine auto: more than 200000 states"), std::string::npos) << r.err;
   const auto t0 = std::chrono::steady_clock::now();
-  r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c < " + bound + "' --timeout 3 --quiet");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r = run_sfcv("check '" + counter + "' --checks none --ctl 'AG c < " + bound +
+               "' --timeout 3 --quiet");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
   EXPECT_NE(r.out.find("INCOMPLETE: the time limit"), std::string::npos) << r.out;
   EXPECT_LT(seconds, 20.0);

@@ -31,20 +31,23 @@ TEST(Simulate, ChemicalPlantTraceOpensV2AndV4AtOnce) {
   EXPECT_NE(rows[0].find("active steps"), std::string::npos);
   bool overlap = false;
   for (std::size_t i = 1; i < rows.size(); ++i) {
-    const bool both = rows[i].find("V2=1") != std::string::npos && rows[i].find("V4=1") != std::string::npos;
+    const bool both =
+        rows[i].find("V2=1") != std::string::npos && rows[i].find("V4=1") != std::string::npos;
     if (both) {
       overlap = true;
       EXPECT_EQ(rows[i].rfind("5 |", 0), 0u) << rows[i];
       EXPECT_NE(rows[i].find("ChemicalPlant.a3.s12"), std::string::npos);
       EXPECT_NE(rows[i].find("ChemicalPlant.s5"), std::string::npos);
     }
-    EXPECT_FALSE(rows[i].find("V1=1") != std::string::npos && rows[i].find("V3=1") != std::string::npos);
+    EXPECT_FALSE(rows[i].find("V1=1") != std::string::npos &&
+                 rows[i].find("V3=1") != std::string::npos);
   }
   EXPECT_TRUE(overlap) << r.out;
 }
 
 TEST(Simulate, WritesAVcdWaveform) {
-  const auto vcd = std::filesystem::temp_directory_path() / ("sfcv-sim-" + std::to_string(::getpid()) + ".vcd");
+  const auto vcd =
+      std::filesystem::temp_directory_path() / ("sfcv-sim-" + std::to_string(::getpid()) + ".vcd");
   const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
                           source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --vcd '" +
                           vcd.string() + "'");
@@ -54,14 +57,15 @@ TEST(Simulate, WritesAVcdWaveform) {
   ss << f.rdbuf();
   const auto text = ss.str();
   std::filesystem::remove(vcd);
-  for (const char* s : {"$timescale", "$scope module steps", "$scope module inputs", "ChemicalPlant_a3_s12",
-                        " V4 $end", "$enddefinitions $end", "#50"})
+  for (const char* s : {"$timescale", "$scope module steps", "$scope module inputs",
+                        "ChemicalPlant_a3_s12", " V4 $end", "$enddefinitions $end", "#50"})
     EXPECT_NE(text.find(s), std::string::npos) << s;
 }
 
 TEST(Simulate, MaxCyclesStopsEarly) {
-  const auto r = run_sfcv("simulate " + kPlant + " --inputs '" +
-                          source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --max-cycles 2");
+  const auto r =
+      run_sfcv("simulate " + kPlant + " --inputs '" +
+               source_path("examples/chemical_plant/v2_v4_overlap.csv") + "' --max-cycles 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(lines(r.out).size(), 4u);
 }
@@ -74,10 +78,13 @@ TEST(Simulate, UnknownColumnIsAnErrorWithItsPosition) {
 }
 
 TEST(Simulate, BadValueIsAnErrorWithItsPosition) {
-  const auto csv = write_temp("start,LIS1plus,LIS1minus,LIS2plus,LIS2minus,LIS3minus\n1,0,0,0,0,0\n0,0,maybe,0,0,0\n", ".csv");
+  const auto csv = write_temp(
+      "start,LIS1plus,LIS1minus,LIS2plus,LIS2minus,LIS3minus\n1,0,0,0,0,0\n0,0,maybe,0,0,0\n",
+      ".csv");
   const auto r = run_sfcv("simulate " + kPlant + " --inputs '" + csv + "'");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find(csv + ":3:5: bad value 'maybe' for input 'LIS1minus'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(csv + ":3:5: bad value 'maybe' for input 'LIS1minus'"), std::string::npos)
+      << r.err;
 }
 
 TEST(Simulate, MissingInputColumnIsAnError) {
@@ -143,7 +150,8 @@ const char* kTimed =
 TEST(Simulate, DiscreteTimeCountsCycles) {
   const auto st = sfcv::test::write_temp(kTimed, ".st");
   const auto csv = sfcv::test::write_temp("button\n1\n1\n1\n1\n", ".csv");
-  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "' --time discrete --cycle 10ms");
+  const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv +
+                                      "' --time discrete --cycle 10ms");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = lines(r.out);
   ASSERT_EQ(rows.size(), 6u);
@@ -154,7 +162,8 @@ TEST(Simulate, DiscreteTimeCountsCycles) {
 
 TEST(Simulate, AbstractTimeTakesTimeoutsFromThePseudoInputColumn) {
   const auto st = sfcv::test::write_temp(kTimed, ".st");
-  const auto csv = sfcv::test::write_temp("button,timeout:Lamp.On.light.L\n1,0\n1,0\n1,1\n", ".csv");
+  const auto csv =
+      sfcv::test::write_temp("button,timeout:Lamp.On.light.L\n1,0\n1,0\n1,1\n", ".csv");
   const auto r = sfcv::test::run_sfcv("simulate '" + st + "' --inputs '" + csv + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = lines(r.out);

@@ -32,7 +32,7 @@ TEST_P(Vacuity, ChemicalPlant) {
   EXPECT_EQ(j["properties"][1]["vacuous"], false);
   EXPECT_EQ(j["properties"][2]["verdict"], "violated");  // V2 & V4 overlap (the seed's finding)
   EXPECT_TRUE(j["properties"][2]["vacuous"].is_null());
-  EXPECT_EQ(j["properties"][3]["verdict"], "holds");      // an input as the trigger
+  EXPECT_EQ(j["properties"][3]["verdict"], "holds");  // an input as the trigger
   EXPECT_EQ(j["properties"][3]["vacuous"], false);
 }
 
@@ -40,11 +40,14 @@ INSTANTIATE_TEST_SUITE_P(Engines, Vacuity, ::testing::Values("explicit", "bdd"))
 
 TEST(VacuityCommand, TextAndJunit) {
   const auto xml = write_temp("", ".xml");
-  const auto r = run_sfcv("check " + kPlant + " --ctl 'AG (V1 & V3 -> M)' --ctl 'AG (V1 -> !V3)' "
-                          "--junit '" + xml + "'");
+  const auto r = run_sfcv("check " + kPlant +
+                          " --ctl 'AG (V1 & V3 -> M)' --ctl 'AG (V1 -> !V3)' "
+                          "--junit '" +
+                          xml + "'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("VACUOUS: the antecedent V1 & V3 is never true in a reachable state"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("not vacuous: the antecedent V1 is reachable"), std::string::npos) << r.out;
   std::ifstream f(xml);
   const std::string junit((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -70,10 +73,12 @@ TEST(CoverageCommand, ChemicalPlantVisitsEverything) {
   TRANSITION FROM s0 TO s1 := a AND NOT a; END_TRANSITION
   TRANSITION FROM s1 TO s0 := TRUE; END_TRANSITION
 END_PROGRAM
-)", ".st");
+)",
+                             ".st");
   r = run_sfcv("check '" + st + "' --coverage --checks none --ctl 'AG !y'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("coverage: 1/2 steps active, 0/2 transitions fired"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("coverage: 1/2 steps active, 0/2 transitions fired"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("never: step"), std::string::npos) << r.out;
 }
 

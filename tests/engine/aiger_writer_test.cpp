@@ -1,9 +1,10 @@
-#include "model/errors.hpp"
 #include "engine/external/aiger_writer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <sstream>
+
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 namespace {

@@ -1,4 +1,3 @@
-#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 
 #include <gtest/gtest.h>
@@ -6,6 +5,7 @@
 #include <sstream>
 
 #include "engine/external/spin_runner.hpp"
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -89,15 +89,17 @@ TEST(CasmvExport, UsesTheSeedsDefaultCaseForm) {
   std::ostringstream out;
   write_casmv(out, follower(false));
   const std::string s = out.str();
-  EXPECT_NE(s.find("module main()\n{\n  input in_x : boolean;  -- input x\n"), std::string::npos) << s;
+  EXPECT_NE(s.find("module main()\n{\n  input in_x : boolean;  -- input x\n"), std::string::npos)
+      << s;
   EXPECT_NE(s.find("  default next(s_MAIN_q) := s_MAIN_q;\n  in case {\n"
                    "    ~s_MAIN_q & in_x : next(s_MAIN_q) := 1;\n"
                    "    s_MAIN_q & ~in_x : next(s_MAIN_q) := 0;\n  }\n"),
             std::string::npos)
       << s;
   // r can only be reset: its set condition r & x under r = 0 folds to FALSE.
-  EXPECT_NE(s.find("  default next(s_r) := s_r;\n  in case {\n    s_r & ~in_x : next(s_r) := 0;\n  }\n"),
-            std::string::npos)
+  EXPECT_NE(
+      s.find("  default next(s_r) := s_r;\n  in case {\n    s_r & ~in_x : next(s_r) := 0;\n  }\n"),
+      std::string::npos)
       << s;
   EXPECT_NE(s.find("p_just_rose : assert G ~g_7;"), std::string::npos) << s;
   EXPECT_NE(s.find("SPEC EF (s_MAIN_q);  -- q_reachable"), std::string::npos) << s;

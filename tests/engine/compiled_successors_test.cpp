@@ -38,7 +38,8 @@ std::unique_ptr<Loaded> load(const std::string& text, semantics::Iec61131Options
   auto out = std::make_unique<Loaded>();
   out->project = std::move(*loaded.project);
   model::Diagnostics d;
-  for (const auto& a : assumptions) options.assumptions.push_back(io::parse_st_expression(a, {}, d));
+  for (const auto& a : assumptions)
+    options.assumptions.push_back(io::parse_st_expression(a, {}, d));
   out->ts = semantics::make_iec61131_system(out->project, options, d);
   for (const auto& x : d) ADD_FAILURE() << x.str();
   return out->ts ? std::move(out) : nullptr;
@@ -46,13 +47,15 @@ std::unique_ptr<Loaded> load(const std::string& text, semantics::Iec61131Options
 
 std::set<std::vector<StateWord>> distinct(const std::vector<StateWord>& flat, std::uint32_t words) {
   std::set<std::vector<StateWord>> r;
-  for (std::size_t k = 0; k < flat.size(); k += words) r.emplace(flat.begin() + k, flat.begin() + k + words);
+  for (std::size_t k = 0; k < flat.size(); k += words)
+    r.emplace(flat.begin() + k, flat.begin() + k + words);
   return r;
 }
 
 /// Compares the compiled and interpreted successors on every reachable state (up to
 /// `max_states`); returns the number of states compared.
-std::uint32_t expect_same_successors(const semantics::TransitionSystem& ts, std::uint32_t max_states) {
+std::uint32_t expect_same_successors(const semantics::TransitionSystem& ts,
+                                     std::uint32_t max_states) {
   auto compiled = make_compiled_enumerator(ts);
   EXPECT_TRUE(compiled) << "no compiled successor function";
   if (!compiled) return 0;
@@ -206,8 +209,9 @@ void expect_same_report(const logic::CheckReport& threaded, const logic::CheckRe
   }
 }
 
-void expect_same_results(const semantics::TransitionSystem& ts, const std::vector<logic::Property>& props,
-                         std::uint64_t max_states, std::uint32_t& violated, std::uint32_t& held) {
+void expect_same_results(const semantics::TransitionSystem& ts,
+                         const std::vector<logic::Property>& props, std::uint64_t max_states,
+                         std::uint32_t& violated, std::uint32_t& held) {
   logic::CheckTask task;
   task.system = &ts;
   task.properties = props;
@@ -261,7 +265,8 @@ TEST(InvariantSearch, AgreesWithTheGraphCheckerOnRandomCharts) {
     ASSERT_TRUE(m);
     std::vector<logic::Property> props;
     for (int k = 0; k < 3; ++k)
-      props.push_back(invariant(*m->ts, "S" + std::to_string(rng() % 10), "S" + std::to_string(rng() % 10)));
+      props.push_back(
+          invariant(*m->ts, "S" + std::to_string(rng() % 10), "S" + std::to_string(rng() % 10)));
     props.push_back(invariant(*m->ts, "S0", "S0"));
     expect_same_results(*m->ts, props, 0, violated, held);
     // A state limit: verdicts and counterexamples still agree.
@@ -284,8 +289,8 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
   };
   const auto& p = *selector->ts;
   std::vector<Case> cases = {
-      {&p, {invariant(p, "A0", "B0")}, 0},                      // holds: all 16385 states
-      {&p, {invariant(p, "A0", "B0")}, 9000},                   // a limit inside a batch
+      {&p, {invariant(p, "A0", "B0")}, 0},                             // holds: all 16385 states
+      {&p, {invariant(p, "A0", "B0")}, 9000},                          // a limit inside a batch
       {&p, {invariant(p, "B0", "B13"), invariant(p, "A0", "B0")}, 0},  // one violated at depth 3
       {tanks->ts.get(), {invariant(*tanks->ts, "FB_0", "EB_0")}, 0},
   };
@@ -307,12 +312,16 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
   }
   EXPECT_GE(complete, 2u);
   EXPECT_GE(violated, 1u);
-  EXPECT_EQ(check_invariants([&] {
-              logic::CheckTask t;
-              t.system = selector->ts.get();
-              t.properties = {invariant(p, "A0", "B0")};
-              return t;
-            }(), nullptr, 4).states, 16385u);
+  EXPECT_EQ(check_invariants(
+                [&] {
+                  logic::CheckTask t;
+                  t.system = selector->ts.get();
+                  t.properties = {invariant(p, "A0", "B0")};
+                  return t;
+                }(),
+                nullptr, 4)
+                .states,
+            16385u);
 }
 
 }  // namespace

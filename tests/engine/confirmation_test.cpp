@@ -62,18 +62,30 @@ bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
               semantics::StateView s) {
   using logic::Op;
   switch (f.op) {
-    case Op::True: return true;
-    case Op::False: return false;
-    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::True:
+      return true;
+    case Op::False:
+      return false;
+    case Op::Atom:
+      return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
     case Op::Compare:
-      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
-    case Op::Not: return !holds_in(ts, *f.args[0], s);
-    case Op::And: return holds_in(ts, *f.args[0], s) && holds_in(ts, *f.args[1], s);
-    case Op::Or: return holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
-    case Op::Implies: return !holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
-    case Op::Iff: return holds_in(ts, *f.args[0], s) == holds_in(ts, *f.args[1], s);
-    case Op::Xor: return holds_in(ts, *f.args[0], s) != holds_in(ts, *f.args[1], s);
-    default: ADD_FAILURE() << "not propositional"; return false;
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
+                            f.value);
+    case Op::Not:
+      return !holds_in(ts, *f.args[0], s);
+    case Op::And:
+      return holds_in(ts, *f.args[0], s) && holds_in(ts, *f.args[1], s);
+    case Op::Or:
+      return holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
+    case Op::Implies:
+      return !holds_in(ts, *f.args[0], s) || holds_in(ts, *f.args[1], s);
+    case Op::Iff:
+      return holds_in(ts, *f.args[0], s) == holds_in(ts, *f.args[1], s);
+    case Op::Xor:
+      return holds_in(ts, *f.args[0], s) != holds_in(ts, *f.args[1], s);
+    default:
+      ADD_FAILURE() << "not propositional";
+      return false;
   }
 }
 
@@ -88,7 +100,9 @@ void expect_counterexample(const Checked& c, const ExportedModel& e, const logic
 }
 
 const char* to_text(logic::Verdict v) {
-  return v == logic::Verdict::Holds ? "holds" : v == logic::Verdict::Violated ? "violated" : "other";
+  return v == logic::Verdict::Holds      ? "holds"
+         : v == logic::Verdict::Violated ? "violated"
+                                         : "other";
 }
 
 // Spin and ABC on every invariant of `c`.
@@ -111,7 +125,8 @@ void confirm(const Checked& c, bool use_spin = true, bool use_abc = true) {
       const auto v = check_with_spin(*spin, e.model, b);
       ASSERT_NE(v.kind, SpinVerdict::Kind::Unknown) << v.log;
       EXPECT_EQ(v.kind == SpinVerdict::Kind::Violated, expected == logic::Verdict::Violated)
-          << "Spin disagrees\n" << v.log;
+          << "Spin disagrees\n"
+          << v.log;
       if (v.kind == SpinVerdict::Kind::Violated)
         expect_counterexample(c, e, *prop.formula, v.frames, "spin");
     }
@@ -119,7 +134,8 @@ void confirm(const Checked& c, bool use_spin = true, bool use_abc = true) {
       const auto v = check_with_abc(*abc, aig, b, "pdr");
       ASSERT_NE(v.kind, AbcVerdict::Kind::Unknown) << v.log;
       EXPECT_EQ(v.kind == AbcVerdict::Kind::Violated, expected == logic::Verdict::Violated)
-          << "ABC disagrees\n" << v.log;
+          << "ABC disagrees\n"
+          << v.log;
       if (v.kind == AbcVerdict::Kind::Violated) {
         // Frame k holds the inputs of cycle k + 1; the last frame is the bad state's own.
         ASSERT_FALSE(v.frames.empty());
@@ -131,9 +147,9 @@ void confirm(const Checked& c, bool use_spin = true, bool use_abc = true) {
   }
 }
 
-#define REQUIRE_TOOLS()                                                               \
+#define REQUIRE_TOOLS()                                                                       \
   if (!find_spin() && !find_abc()) GTEST_SKIP() << "neither spin nor berkeley-abc installed"; \
-  if (!find_spin()) std::cerr << "[ NOTE ] spin not installed: only ABC confirms\n";  \
+  if (!find_spin()) std::cerr << "[ NOTE ] spin not installed: only ABC confirms\n";          \
   if (!find_abc()) std::cerr << "[ NOTE ] berkeley-abc not installed: only Spin confirms\n"
 
 std::string read_source(const std::string& relative) {
@@ -200,7 +216,8 @@ TEST(Confirmation, GeneratedChartsAgreeWithSpinAndAbc) {
     std::uint64_t seed;
   };
   std::vector<Case> cases;
-  for (std::uint64_t seed : {3, 5, 8, 13}) cases.push_back({bench::random_chart_iec(8, 3, seed), seed});
+  for (std::uint64_t seed : {3, 5, 8, 13})
+    cases.push_back({bench::random_chart_iec(8, 3, seed), seed});
   cases.push_back({bench::tanks_iec(1, true), 1});
   cases.push_back({bench::tanks_iec(1, false), 2});
   std::size_t violated = 0, holds = 0;
@@ -216,7 +233,7 @@ TEST(Confirmation, GeneratedChartsAgreeWithSpinAndAbc) {
     const auto n = steps.size();
     const auto& a = steps[(k.seed * 7 + 1) % n];
     const auto& b = steps[(k.seed * 3 + 2) % n == (k.seed * 7 + 1) % n ? (k.seed * 3 + 3) % n
-                                                                         : (k.seed * 3 + 2) % n];
+                                                                       : (k.seed * 3 + 2) % n];
     const auto& last = steps[n - 1 - k.seed % 2];
     const auto c = check_text(k.text, {"AG !(" + a + " & " + b + ")", "AG !" + last});
     ASSERT_TRUE(c);

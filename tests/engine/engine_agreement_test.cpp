@@ -12,14 +12,14 @@
 #include <sstream>
 
 #include "chart_families.hpp"
-#include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/bdd/bdd_manager.hpp"
+#include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/ctl_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
-#include "logic/push_negation.hpp"
-#include "logic/formula.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/formula.hpp"
+#include "logic/push_negation.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/check_findings.hpp"
@@ -168,7 +168,8 @@ class TraceJudge {
         if (t_->ends_in_deadlock) {
           if (c_.has_fairness()) return "EG: a finite run under fairness";
           const auto last = index_.back();
-          if (g_.edges_end(last) > g_.edges_begin(last)) return "EG: the last state has a successor";
+          if (g_.edges_end(last) > g_.edges_begin(last))
+            return "EG: the last state has a successor";
           return "";
         }
         return "EG: neither a loop nor a deadlock";
@@ -215,8 +216,8 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
   auto task = task_for(s, ctl, fair);
   // Under fairness re-entry adds its AG AF row (reentry-fair).
   if (!with_fairness)
-    task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
-                   logic::StandardCheck::Reentry, logic::StandardCheck::GlobalDeadlock,
+    task.checks = {logic::StandardCheck::Reachable,     logic::StandardCheck::DeadTransitions,
+                   logic::StandardCheck::Reentry,       logic::StandardCheck::GlobalDeadlock,
                    logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
                    logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
                    logic::StandardCheck::Instability};
@@ -238,13 +239,14 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
     const auto& e = explicit_report.results[i];
     const auto& b = bdd_report.results[i];
     SCOPED_TRACE(e.name + " " + e.formula);
-    EXPECT_EQ(e.verdict, b.verdict) << "explicit " << logic::to_string(e.verdict) << ", bdd "
-                                    << logic::to_string(b.verdict);
+    EXPECT_EQ(e.verdict, b.verdict)
+        << "explicit " << logic::to_string(e.verdict) << ", bdd " << logic::to_string(b.verdict);
     if (b.trace) expect_replays(*s.ts, *b.trace);
     if (i >= task.properties.size()) {
       test::expect_same_check(e, b);
       g_tally.check_violations += b.verdict == logic::Verdict::Violated;
-      g_tally.stored_violations += b.check == "stored-actions" && b.verdict == logic::Verdict::Violated;
+      g_tally.stored_violations +=
+          b.check == "stored-actions" && b.verdict == logic::Verdict::Violated;
       continue;
     }
     // Both engines give a trace for the same verdicts, and the BDD's explains the formula.
@@ -252,15 +254,16 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
     if (!b.trace) continue;
     const auto& f = task.properties[i].formula;
     const bool violated = b.verdict == logic::Verdict::Violated;
-    EXPECT_EQ(b.trace->kind, violated ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
+    EXPECT_EQ(b.trace->kind,
+              violated ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
     const auto explained = violated ? logic::push_negation(f) : f;
     EXPECT_EQ(judge.judge(explained, *b.trace), "");
     ++g_tally.traces;
     g_tally.lassos += b.trace->loop_start.has_value();
     g_tally.deadlocks += b.trace->ends_in_deadlock;
     // Shortest runs to a state: the same length as the explicit engine's BFS.
-    if ((f->op == logic::Op::AG || f->op == logic::Op::EF) && logic::is_propositional(*f->args[0]) &&
-        e.trace) {
+    if ((f->op == logic::Op::AG || f->op == logic::Op::EF) &&
+        logic::is_propositional(*f->args[0]) && e.trace) {
       EXPECT_EQ(e.trace->steps.size(), b.trace->steps.size());
     }
   }
@@ -270,7 +273,8 @@ TEST(EngineAgreement, RandomChartsAndFormulas) {
   g_tally = {};
   for (std::uint64_t seed = 1; seed <= 15; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const auto s = load(bench::random_chart_iec(10 + static_cast<std::uint32_t>(seed % 7), 3, seed));
+    const auto s =
+        load(bench::random_chart_iec(10 + static_cast<std::uint32_t>(seed % 7), 3, seed));
     ASSERT_TRUE(s.ts);
     compare_engines(s, seed, false);
     compare_engines(s, seed + 100, true);
@@ -310,9 +314,9 @@ TEST(EngineAgreement, TimedQualifiersAndNestedCharts) {
 }
 
 TEST(EngineAgreement, Families) {
-  for (const auto& text : {bench::tanks_iec(2, true), bench::tanks_iec(2, false),
-                           bench::nested_charts_iec(3), bench::parallel_branches_iec(5, true),
-                           bench::parallel_branches_iec(4, false)}) {
+  for (const auto& text :
+       {bench::tanks_iec(2, true), bench::tanks_iec(2, false), bench::nested_charts_iec(3),
+        bench::parallel_branches_iec(5, true), bench::parallel_branches_iec(4, false)}) {
     const auto s = load(text);
     ASSERT_TRUE(s.ts);
     compare_engines(s, 77, false);
@@ -340,9 +344,16 @@ END_PROGRAM
 )";
   const auto s = load(cycle, {}, {"!S2"});
   ASSERT_TRUE(s.ts);
-  const std::vector<std::string> extra = {"AG AF S1", "EG !S1", "AF S0", "AG EX TRUE",
-                                          "E[!S1 U S2]", "EF EG q", "AG (S1 -> EX EG !q)",
-                                          "EF EG S2", "AG AF !S2", "AG (S1 -> AX AF S0)"};
+  const std::vector<std::string> extra = {"AG AF S1",
+                                          "EG !S1",
+                                          "AF S0",
+                                          "AG EX TRUE",
+                                          "E[!S1 U S2]",
+                                          "EF EG q",
+                                          "AG (S1 -> EX EG !q)",
+                                          "EF EG S2",
+                                          "AG AF !S2",
+                                          "AG (S1 -> AX AF S0)"};
   compare_engines(s, 1, false, {}, extra);
   compare_engines(s, 2, true, {}, extra);
   for (std::uint64_t seed = 40; seed <= 45; ++seed) {

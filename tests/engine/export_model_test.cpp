@@ -75,7 +75,8 @@ TEST(ExportModel, InvariantsBecomeBadLiteralsAndTheRestCtlText) {
   std::ostringstream out;
   write_nusmv(out, e.model);
   EXPECT_NE(out.str().find("CTLSPEC NAME"), std::string::npos);
-  EXPECT_NE(out.str().find("IVAR\n  in_go : boolean;  -- input go\n"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("IVAR\n  in_go : boolean;  -- input go\n"), std::string::npos)
+      << out.str();
 }
 
 TEST(ExportModel, ComparisonsAreEvaluatedOnTheEncodedBits) {
@@ -87,7 +88,8 @@ PROGRAM Count
   INITIAL_STEP S: Inc(N); END_STEP
   ACTION Inc: IF up AND n < 5 THEN n := n + 1; END_IF; END_ACTION
 END_PROGRAM
-)", {"AG n < 4", "AG n >= -2", "AG n != 7"});
+)",
+                {"AG n < 4", "AG n >= -2", "AG n != 7"});
   ExportRequest r;
   r.properties = s.props;
   const auto e = build_export(*s.ts, r);
@@ -100,7 +102,8 @@ END_PROGRAM
     if (s.ts->layout().fields()[f].name == "n") nf = f;
   for (std::int64_t n = -2; n <= 5; ++n) {
     std::vector<bool> latches(aig.latches().size()), inputs(aig.inputs().size());
-    for (std::size_t k = 0; k < field[nf].size(); ++k) latches[field[nf][k]] = (((n + 2) >> k) & 1) != 0;
+    for (std::size_t k = 0; k < field[nf].size(); ++k)
+      latches[field[nf][k]] = (((n + 2) >> k) & 1) != 0;
     const auto v = aig.evaluate(inputs, latches);
     EXPECT_EQ(Aig::value_of(v, aig.bad()[0].literal), !(n < 4)) << n;
     EXPECT_FALSE(Aig::value_of(v, aig.bad()[1].literal)) << n;
@@ -139,7 +142,8 @@ PROGRAM Blink
   TRANSITION FROM A TO B := TRUE; END_TRANSITION
   TRANSITION FROM B TO A := TRUE; END_TRANSITION
 END_PROGRAM
-)", {});
+)",
+                {});
   ASSERT_TRUE(s.ts->inputs().empty());
   const auto e = build_export(*s.ts, {});
   ASSERT_EQ(e.model.aig.inputs().size(), 1u);

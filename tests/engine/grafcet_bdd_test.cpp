@@ -9,7 +9,6 @@
 #include <functional>
 #include <random>
 
-#include "support/trace_replay.hpp"
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/bdd/symbolic_system.hpp"
@@ -25,13 +24,14 @@
 #include "support/grafcet_builder.hpp"
 #include "support/random_grafcet.hpp"
 #include "support/sfcv_test.hpp"
+#include "support/trace_replay.hpp"
 
 namespace sfcv::engine {
 namespace {
 
-using test::GrafcetBuilder;
 using model::ExprKind;
 using model::ExprPtr;
+using test::GrafcetBuilder;
 
 using test::FormulaGenerator;
 using test::task_for;
@@ -74,8 +74,8 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(b.project, *b.ts, ctl, fair);
   if (!with_fairness)
-    task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
-                   logic::StandardCheck::Reentry, logic::StandardCheck::GlobalDeadlock,
+    task.checks = {logic::StandardCheck::Reachable,     logic::StandardCheck::DeadTransitions,
+                   logic::StandardCheck::Reentry,       logic::StandardCheck::GlobalDeadlock,
                    logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
                    logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
                    logic::StandardCheck::Instability};
@@ -92,8 +92,10 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
   for (std::size_t i = 0; i < e.results.size(); ++i) {
     EXPECT_EQ(e.results[i].verdict, s.results[i].verdict)
         << e.results[i].name << " " << e.results[i].formula << ": explicit "
-        << logic::to_string(e.results[i].verdict) << ", bdd " << logic::to_string(s.results[i].verdict)
-        << (e.results[i].findings.empty() ? "" : " (explicit: " + e.results[i].findings.front() + ")")
+        << logic::to_string(e.results[i].verdict) << ", bdd "
+        << logic::to_string(s.results[i].verdict)
+        << (e.results[i].findings.empty() ? ""
+                                          : " (explicit: " + e.results[i].findings.front() + ")")
         << (s.results[i].findings.empty() ? "" : " (bdd: " + s.results[i].findings.front() + ")");
     if (s.results[i].trace) {
       ++tally.traces;
@@ -101,8 +103,10 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
     }
     if (i >= task.properties.size()) test::expect_same_check(e.results[i], s.results[i]);
     tally.violated += s.results[i].verdict == logic::Verdict::Violated;
-    tally.stored += s.results[i].check == "stored-actions" && s.results[i].verdict == logic::Verdict::Violated;
-    tally.unstable += s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
+    tally.stored +=
+        s.results[i].check == "stored-actions" && s.results[i].verdict == logic::Verdict::Violated;
+    tally.unstable +=
+        s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
   }
 }
 
@@ -141,7 +145,8 @@ TEST(GrafcetBdd, ReachableSetsAreTheRsgNodes) {
     }
     EXPECT_EQ(sys->count(reached), static_cast<double>(g.num_states()));
     bdd::Bdd explicit_set = bdd::Bdd::constant(false);
-    for (std::uint32_t s = 0; s < g.num_states(); ++s) explicit_set = explicit_set | sys->singleton(g.states().at(s));
+    for (std::uint32_t s = 0; s < g.num_states(); ++s)
+      explicit_set = explicit_set | sys->singleton(g.states().at(s));
     EXPECT_TRUE(explicit_set == reached);
     // Initial states: the stabilised initial situations.
     bdd::Bdd initial = bdd::Bdd::constant(false);
@@ -151,7 +156,8 @@ TEST(GrafcetBdd, ReachableSetsAreTheRsgNodes) {
     sys->restrict_sources(reached);
     for (std::uint32_t s = 0; s < g.num_states(); ++s) {
       bdd::Bdd succ = bdd::Bdd::constant(false);
-      for (auto e = g.edges_begin(s); e < g.edges_end(s); ++e) succ = succ | sys->singleton(g.states().at(g.target(e)));
+      for (auto e = g.edges_begin(s); e < g.edges_end(s); ++e)
+        succ = succ | sys->singleton(g.states().at(g.target(e)));
       const auto one = sys->singleton(g.states().at(s));
       EXPECT_TRUE(sys->image(one) == succ) << b.ts->describe(g.states().at(s));
       EXPECT_EQ(!(sys->has_successor() & one).is_false(), g.edges_begin(s) < g.edges_end(s));
@@ -188,9 +194,10 @@ TEST(GrafcetBdd, InstabilityIsDetectedSymbolically) {
 TEST(GrafcetBdd, StoredValueOutOfRangeIsARangeError) {
   GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back({"k", model::VarDirection::Local, model::Type::integer("INT", 0, 1),
-                               std::nullopt, "", {}});
-  b.transition({"1"}, {"2"}, test::rise(test::v("a"))).transition({"2"}, {"1"}, test::fall(test::v("a")));
+  b.pou().variables.push_back(
+      {"k", model::VarDirection::Local, model::Type::integer("INT", 0, 1), std::nullopt, "", {}});
+  b.transition({"1"}, {"2"}, test::rise(test::v("a")))
+      .transition({"2"}, {"1"}, test::fall(test::v("a")));
   b.stored("2", model::StoredWhen::Activation, "k",
            model::make_binary(ExprKind::Add, test::v("k"), test::num(1)));
   const auto built = make(b.project(), true);
@@ -231,7 +238,8 @@ TEST(GrafcetBdd, PalletTransferExample) {
     const auto b = load_file(test::source_path(f));
     ASSERT_TRUE(b.ts);
     // The collision of seed 002: reachable in the flawed chart, not in the fixed one.
-    auto task = task_for(b.project, *b.ts, {"AG !(X10 & X25)", "EF (X1 & X10 & X20 & X25 & X31 & X40)"}, {});
+    auto task = task_for(b.project, *b.ts,
+                         {"AG !(X10 & X25)", "EF (X1 & X10 & X20 & X25 & X31 & X40)"}, {});
     task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
                    logic::StandardCheck::GlobalDeadlock, logic::StandardCheck::Instability};
     const auto e = make_explicit_model_checker()->check(task);
@@ -257,8 +265,9 @@ TEST(GrafcetBdd, TransferLineFamily) {
 
 TEST(GrafcetBdd, CorpusGrafcets) {
   SFCV_REQUIRE_CORPUS(corpus);
-  for (const char* f : {"24_agrafe_exclusive_selection.grafcet", "25_agrafe_hierarchical_conflict1.grafcet",
-                        "26_agrafe_step_reachability3.grafcet"})
+  for (const char* f :
+       {"24_agrafe_exclusive_selection.grafcet", "25_agrafe_hierarchical_conflict1.grafcet",
+        "26_agrafe_step_reachability3.grafcet"})
     for (bool single : {true, false}) {
       SCOPED_TRACE(std::string(f) + (single ? "" : " --multi-input-change"));
       expect_same_counts(load_file((corpus / f).string(), single));

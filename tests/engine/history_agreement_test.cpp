@@ -36,11 +36,16 @@ class HistoryFormulas {
   std::string input() { return inputs_[pick(static_cast<std::uint32_t>(inputs_.size()))]; }
   std::string atom() {
     switch (pick(6)) {
-      case 0: return "prev(" + name() + ")";
-      case 1: return "rise(" + name() + ")";
-      case 2: return "fall(" + name() + ")";
-      case 3: return input();
-      default: return name();
+      case 0:
+        return "prev(" + name() + ")";
+      case 1:
+        return "rise(" + name() + ")";
+      case 2:
+        return "fall(" + name() + ")";
+      case 3:
+        return input();
+      default:
+        return name();
     }
   }
   std::string formula(int depth) {
@@ -48,8 +53,10 @@ class HistoryFormulas {
     static const char* unary[] = {"!", "EX ", "AX ", "EF ", "AF ", "EG ", "AG "};
     static const char* binary[] = {" & ", " | ", " -> "};
     switch (pick(3)) {
-      case 0: return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
-      case 1: return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
+      case 0:
+        return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
+      case 1:
+        return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
       default:
         return std::string(pick(2) ? "E[" : "A[") + formula(depth - 1) + " U " +
                formula(depth - 1) + "]";
@@ -98,13 +105,14 @@ Checked check_both(const std::string& chart, const std::vector<std::string>& ctl
     for (const auto& r : report->results) {
       if (!r.trace) continue;
       std::vector<std::vector<std::int64_t>> inputs;
-      for (std::size_t k = 1; k < r.trace->steps.size(); ++k) inputs.push_back(r.trace->steps[k].inputs);
+      for (std::size_t k = 1; k < r.trace->steps.size(); ++k)
+        inputs.push_back(r.trace->steps[k].inputs);
       const auto run = semantics::simulate(*history, r.trace->steps.front().state, inputs);
       EXPECT_TRUE(run.ok) << run.error;
       if (!run.ok) continue;
       for (std::size_t k = 0; k < r.trace->steps.size(); ++k)
-        EXPECT_EQ(run.states[k], r.trace->steps[k].state) << report->engine << " " << r.formula
-                                                          << " cycle " << k;
+        EXPECT_EQ(run.states[k], r.trace->steps[k].state)
+            << report->engine << " " << r.formula << " cycle " << k;
     }
   return out;
 }
@@ -129,7 +137,7 @@ TEST(HistoryAgreement, RandomChartsWithInputAndPreviousAtoms) {
     ctl.push_back("AG (EX rise(" + a + ") <-> (!" + a + " & EX " + a + "))");
     ctl.push_back("AG (EX fall(" + a + ") <-> (" + a + " & EX !" + a + "))");
     ctl.push_back("AG (rise(" + i + ") -> !prev(" + i + "))");
-    ctl.push_back("AG (EX " + i + " & EX !" + i + ")");  // every cycle may read either value
+    ctl.push_back("AG (EX " + i + " & EX !" + i + ")");        // every cycle may read either value
     ctl.push_back("!" + i + " & !prev(" + a + ") <-> !" + a);  // initial: no input read, prev = now
     const auto c = check_both(chart, ctl);
     EXPECT_GE(c.explicit_report.states.to_u64().value(), c.base_states);

@@ -44,7 +44,9 @@ Setup load_iec(const std::string& text, semantics::Iec61131Options options = {})
   return s;
 }
 
-bool definite(Verdict v) { return v == Verdict::Holds || v == Verdict::Violated; }
+bool definite(Verdict v) {
+  return v == Verdict::Holds || v == Verdict::Violated;
+}
 
 struct Tally {
   int decided = 0, by_bdd = 0, by_ic3 = 0, by_explicit = 0;
@@ -107,8 +109,9 @@ TEST(Portfolio, AgreesWithEachEngineOnRandomCharts) {
     features.timed_qualifiers = seed % 3 == 0;
     semantics::Iec61131Options options;
     if (seed % 4 == 1) options.priority = semantics::PriorityMode::None;
-    const auto s = load_iec(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
-                            options);
+    const auto s = load_iec(
+        bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
+        options);
     ASSERT_TRUE(s.ts);
     compare(s, seed, tally);
     if (HasFatalFailure()) return;

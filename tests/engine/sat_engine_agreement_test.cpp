@@ -11,7 +11,6 @@
 
 #include <cstdlib>
 
-#include "support/trace_replay.hpp"
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
@@ -22,13 +21,14 @@
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/circuit_atom.hpp"
-#include "semantics/iec61131_circuit.hpp"
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/grafcet_system.hpp"
+#include "semantics/iec61131_circuit.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/ctl_task.hpp"
 #include "support/random_grafcet.hpp"
+#include "support/trace_replay.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -76,8 +76,10 @@ bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
   const bool grafcet = ts.kind() == semantics::SemanticsKind::Grafcet;
   semantics::GrafcetCircuit gc;
   semantics::TransitionCircuit ic;
-  if (grafcet) gc = semantics::build_grafcet_circuit(ts);
-  else ic = semantics::build_iec61131_circuit(ts);
+  if (grafcet)
+    gc = semantics::build_grafcet_circuit(ts);
+  else
+    ic = semantics::build_iec61131_circuit(ts);
   semantics::TransitionCircuit& circuit = grafcet ? gc : ic;
   const auto lit = logic::circuit_literal(circuit, f);
   std::vector<bool> latches(circuit.aig.latches().size());
@@ -102,11 +104,12 @@ bool step_or_output(const semantics::Observable& o) {
 
 void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
   const bool grafcet = s.ts->kind() == semantics::SemanticsKind::Grafcet;
-  test::FormulaGenerator gen(*s.ts, seed,
-                             grafcet ? test::FormulaGenerator::AtomFilter(step_or_output) : nullptr);
-  std::vector<std::string> ctl = {
-      "AG !(" + gen.atom() + " & " + gen.atom() + ")", "AG (" + gen.atom() + " | " + gen.atom() + ")",
-      "EF (" + gen.atom() + " & " + gen.atom() + ")", "EF " + gen.atom(), "AF " + gen.atom()};
+  test::FormulaGenerator gen(
+      *s.ts, seed, grafcet ? test::FormulaGenerator::AtomFilter(step_or_output) : nullptr);
+  std::vector<std::string> ctl = {"AG !(" + gen.atom() + " & " + gen.atom() + ")",
+                                  "AG (" + gen.atom() + " | " + gen.atom() + ")",
+                                  "EF (" + gen.atom() + " & " + gen.atom() + ")",
+                                  "EF " + gen.atom(), "AF " + gen.atom()};
   auto task = test::task_for(s.project, *s.ts, ctl, {});
   task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
                  logic::StandardCheck::Instability, logic::StandardCheck::GlobalDeadlock};
@@ -135,7 +138,8 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
         continue;
       }
       if (r.verdict == logic::Verdict::Unknown &&
-          r.message.find("initial situations and EF p needs a run from each") != std::string::npos) {
+          r.message.find("initial situations and EF p needs a run from each") !=
+              std::string::npos) {
         // A Grafcet with several initial situations: EF is not a reachability question.
         EXPECT_TRUE(grafcet);
         EXPECT_EQ(task.properties[i].formula->op, logic::Op::EF);
@@ -152,9 +156,9 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
         continue;
       }
       ++tally.decided;
-      EXPECT_EQ(e.verdict, r.verdict) << "explicit " << logic::to_string(e.verdict) << ", sat "
-                                      << logic::to_string(r.verdict) << " " << r.message
-                                      << " (explicit: " << e.message << ")";
+      EXPECT_EQ(e.verdict, r.verdict)
+          << "explicit " << logic::to_string(e.verdict) << ", sat " << logic::to_string(r.verdict)
+          << " " << r.message << " (explicit: " << e.message << ")";
       EXPECT_EQ(symbolic.results[i].verdict, r.verdict)
           << "bdd " << logic::to_string(symbolic.results[i].verdict) << ", sat "
           << logic::to_string(r.verdict) << " " << r.message;
@@ -199,8 +203,9 @@ TEST(SatEngineAgreement, RandomCharts) {
     options.time = seed % 2 == 0 ? semantics::TimeMode::Abstract : semantics::TimeMode::Discrete;
     std::vector<std::string> assume;
     if (seed % 5 == 2) assume = {"!(S3 & i0)"};
-    const auto s = load(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
-                        options, assume);
+    const auto s =
+        load(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
+             options, assume);
     ASSERT_TRUE(s.ts);
     compare(s, seed, tally);
     ++charts;
@@ -259,7 +264,8 @@ TEST(SatCertificate, PlantedBugsAreRejected) {
   auto task = test::task_for(s.project, *s.ts, {"AG !(V2_0 & V4_0)"}, {});
   sat::ReachQuery query;
   query.aig = &circuit.aig;
-  query.step_ok = circuit.aig.make_and(circuit.allowed, semantics::Aig::make_not(circuit.range_error));
+  query.step_ok =
+      circuit.aig.make_and(circuit.allowed, semantics::Aig::make_not(circuit.range_error));
   query.targets = {semantics::Aig::make_not(
       logic::circuit_literal(circuit, *task.properties[0].formula->args[0]))};
   const auto proof = sat::ic3(query, 0, {});

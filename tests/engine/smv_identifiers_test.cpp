@@ -37,7 +37,8 @@ std::vector<std::string> smv_tokens(const std::string& text) {
       ++i;
     } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       std::size_t j = i;
-      while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
+      while (j < text.size() &&
+             (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
         ++j;
       tokens.push_back(text.substr(i, j - i));
       i = j;
@@ -56,10 +57,10 @@ bool is_identifier(const std::string& t) {
   return !t.empty() && (std::isalpha(static_cast<unsigned char>(t[0])) || t[0] == '_');
 }
 
-const std::set<std::string> kSections = {"MODULE", "VAR", "IVAR", "DEFINE", "ASSIGN", "TRANS",
-                                         "INVARSPEC", "CTLSPEC", "INIT", "INVAR"};
-const std::set<std::string> kExpressionWords = {"TRUE", "FALSE", "EX", "AX", "EF", "AF", "EG",
-                                                "AG", "E", "A", "U", "boolean"};
+const std::set<std::string> kSections = {"MODULE", "VAR",       "IVAR",    "DEFINE", "ASSIGN",
+                                         "TRANS",  "INVARSPEC", "CTLSPEC", "INIT",   "INVAR"};
+const std::set<std::string> kExpressionWords = {"TRUE", "FALSE", "EX", "AX", "EF", "AF",
+                                                "EG",   "AG",    "E",  "A",  "U",  "boolean"};
 
 struct SmvModel {
   std::map<std::string, int> declared;  ///< identifier -> number of declarations
@@ -218,7 +219,8 @@ TEST(SmvIdentifiers, RandomChartsWithNestedActionsDeclareEveryIdentifierOnce) {
   features.nested_chart = true;
   std::size_t nested = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    const auto text = bench::random_chart_iec(8 + static_cast<std::uint32_t>(seed % 5), 3, seed, features);
+    const auto text =
+        bench::random_chart_iec(8 + static_cast<std::uint32_t>(seed % 5), 3, seed, features);
     nested += text.find("ACTION Sub") != std::string::npos;
     const auto e = export_chart(text, "random.st", {"AG !(S1 & S2)", "EF S3"});
     expect_well_declared(e.nusmv, "seed " + std::to_string(seed));

@@ -1,7 +1,8 @@
+#include "logic/standard_checks.hpp"
+
 #include <gtest/gtest.h>
 
 #include "engine/explicit/explicit_model_checker.hpp"
-#include "logic/standard_checks.hpp"
 #include "model/statement.hpp"
 #include "support/toy_system.hpp"
 
@@ -31,8 +32,9 @@ logic::PropertyResult run(const semantics::TransitionSystem& ts, StandardCheck i
 // A cycle A -> B -> A with fired transitions t0, t1; state 2 (step C) unreachable unless
 // `all_reachable` drops C's observable.
 ToySystem cycle(bool all_reachable = false) {
-  ToySystem ts(3, {"go"}, all_reachable ? std::vector<std::string>{"A", "B"}
-                                        : std::vector<std::string>{"A", "B", "C"});
+  ToySystem ts(
+      3, {"go"},
+      all_reachable ? std::vector<std::string>{"A", "B"} : std::vector<std::string>{"A", "B", "C"});
   ts.set_initial({0});
   ts.add_arc(0, 1, ToySystem::lit(0, true), {0});
   ts.add_arc(0, 0, ToySystem::lit(0, false));
@@ -139,7 +141,8 @@ TEST(StandardChecks, LocalDeadlock) {
   bool b_never_left = false, a_never_back = false;
   for (const auto& f : r.findings) {
     b_never_left |= f.find("step B, once active, is never left") != std::string::npos;
-    a_never_back |= f.find("step A, once inactive, never becomes active again") != std::string::npos;
+    a_never_back |=
+        f.find("step A, once inactive, never becomes active again") != std::string::npos;
   }
   EXPECT_TRUE(b_never_left);
   EXPECT_TRUE(a_never_back);
@@ -330,7 +333,8 @@ TEST(StandardChecks, SelectionByName) {
   std::string error;
   auto sel = logic::parse_check_selection("reachable,local-deadlock", &error);
   ASSERT_TRUE(sel);
-  EXPECT_EQ(*sel, (std::vector<StandardCheck>{StandardCheck::Reachable, StandardCheck::LocalDeadlock}));
+  EXPECT_EQ(*sel,
+            (std::vector<StandardCheck>{StandardCheck::Reachable, StandardCheck::LocalDeadlock}));
   EXPECT_TRUE(logic::parse_check_selection("none", &error)->empty());
   EXPECT_EQ(logic::parse_check_selection("all", &error)->size(), logic::standard_checks().size());
   EXPECT_FALSE(logic::parse_check_selection("reachable,bogus", &error));

@@ -139,8 +139,8 @@ using Strings = std::set<std::string>;
 TEST_F(SmallChart, Constants) {
   EXPECT_EQ(S("Y"), (Strings{"Idle", "Run", "Stop"}));
   EXPECT_EQ(S("Y0"), (Strings{"Idle"}));
-  EXPECT_EQ(E("T"), (Strings{"Idle>Idle", "Idle>Run", "Run>Idle", "Run>Run", "Run>Stop",
-                             "Stop>Stop"}));
+  EXPECT_EQ(E("T"),
+            (Strings{"Idle>Idle", "Idle>Run", "Run>Idle", "Run>Run", "Run>Stop", "Stop>Stop"}));
   EXPECT_EQ(E("Tclear"), (Strings{"Idle>Run", "Run>Idle", "Run>Stop"}));
   EXPECT_EQ(St("Steps"), (Strings{"Small.Idle", "Small.Run", "Small.Stop"}));
   EXPECT_EQ(N("#Y"), 3);
@@ -244,27 +244,37 @@ class QueryGenerator {
  public:
   QueryGenerator(const semantics::TransitionSystem& ts, std::uint64_t seed) : rng_(seed) {
     for (const auto& o : ts.observables()) {
-      if (o.kind == semantics::ObservableKind::Step) steps_.push_back(o.name);
-      else if (o.type.kind == model::TypeKind::Bool && o.kind == semantics::ObservableKind::Variable)
+      if (o.kind == semantics::ObservableKind::Step)
+        steps_.push_back(o.name);
+      else if (o.type.kind == model::TypeKind::Bool &&
+               o.kind == semantics::ObservableKind::Variable)
         outputs_.push_back(o.name);
       else if (o.kind == semantics::ObservableKind::Variable)
         int_outputs_.push_back({o.name, o.type.lo, o.type.hi});
     }
     for (const auto& in : ts.inputs()) {
       if (in.pseudo) continue;
-      if (in.type.kind == model::TypeKind::Bool) inputs_.push_back(in.name);
-      else int_inputs_.push_back({in.name, in.type.lo, in.type.hi});
+      if (in.type.kind == model::TypeKind::Bool)
+        inputs_.push_back(in.name);
+      else
+        int_inputs_.push_back({in.name, in.type.lo, in.type.hi});
     }
   }
 
   std::string query() {
     switch (pick(6)) {
-      case 0: return states(3);
-      case 1: return evolutions(3);
-      case 2: return step_set(2);
-      case 3: return "#" + any_set(3);
-      case 4: return any_set(3) + (pick(2) ? " = {}" : " != {}");
-      default: return test(2);
+      case 0:
+        return states(3);
+      case 1:
+        return evolutions(3);
+      case 2:
+        return step_set(2);
+      case 3:
+        return "#" + any_set(3);
+      case 4:
+        return any_set(3) + (pick(2) ? " = {}" : " != {}");
+      default:
+        return test(2);
     }
   }
 
@@ -275,13 +285,18 @@ class QueryGenerator {
   };
   std::uint32_t pick(std::size_t n) { return static_cast<std::uint32_t>(rng_() % n); }
   template <class V>
-  const auto& one(const V& v) { return v[pick(v.size())]; }
+  const auto& one(const V& v) {
+    return v[pick(v.size())];
+  }
 
   std::string any_set(int d) {
     switch (pick(3)) {
-      case 0: return states(d);
-      case 1: return evolutions(d);
-      default: return step_set(d);
+      case 0:
+        return states(d);
+      case 1:
+        return evolutions(d);
+      default:
+        return step_set(d);
     }
   }
   std::string bin(const std::string& a, const std::string& b) {
@@ -297,21 +312,33 @@ class QueryGenerator {
   std::string step_set(int d) {
     if (d <= 0) return pick(2) ? "Steps" : step_literal();
     switch (pick(5)) {
-      case 0: return "Steps";
-      case 1: return step_literal();
-      case 2: return bin(step_set(d - 1), step_set(d - 1));
+      case 0:
+        return "Steps";
+      case 1:
+        return step_literal();
+      case 2:
+        return bin(step_set(d - 1), step_set(d - 1));
       case 3: {
         const std::string e = "e" + std::to_string(d);
         std::string t;
         switch (pick(4)) {
-          case 0: t = "Act({" + e + "}) * " + states(d - 1) + " != {}"; break;
-          case 1: t = "Des({" + e + "}) = {}"; break;
-          case 2: t = "Emis(" + e + " & " + out_expr(1) + ") != {}"; break;
-          default: t = "#Int(Act({" + e + "})) > " + std::to_string(pick(4)); break;
+          case 0:
+            t = "Act({" + e + "}) * " + states(d - 1) + " != {}";
+            break;
+          case 1:
+            t = "Des({" + e + "}) = {}";
+            break;
+          case 2:
+            t = "Emis(" + e + " & " + out_expr(1) + ") != {}";
+            break;
+          default:
+            t = "#Int(Act({" + e + "})) > " + std::to_string(pick(4));
+            break;
         }
         return "{" + e + " in " + step_set(d - 1) + " | " + t + "}";
       }
-      default: return step_literal();
+      default:
+        return step_literal();
     }
   }
   std::string out_atom() {
@@ -319,7 +346,8 @@ class QueryGenerator {
     if (k == 0 && !int_outputs_.empty()) {
       const auto& v = one(int_outputs_);
       static const char* cmp[] = {" = ", " != ", " < ", " <= ", " > ", " >= "};
-      const auto c = v.lo + static_cast<std::int64_t>(pick(static_cast<std::size_t>(v.hi - v.lo + 1)));
+      const auto c =
+          v.lo + static_cast<std::int64_t>(pick(static_cast<std::size_t>(v.hi - v.lo + 1)));
       return "(" + v.name + cmp[pick(6)] + std::to_string(c) + ")";
     }
     if (k == 1 && !outputs_.empty()) return one(outputs_);
@@ -329,9 +357,12 @@ class QueryGenerator {
   std::string out_expr(int d) {
     if (d <= 0 || pick(3) == 0) return out_atom();
     switch (pick(3)) {
-      case 0: return "!(" + out_expr(d - 1) + ")";
-      case 1: return "(" + out_expr(d - 1) + " & " + out_expr(d - 1) + ")";
-      default: return "(" + out_expr(d - 1) + " | " + out_expr(d - 1) + ")";
+      case 0:
+        return "!(" + out_expr(d - 1) + ")";
+      case 1:
+        return "(" + out_expr(d - 1) + " & " + out_expr(d - 1) + ")";
+      default:
+        return "(" + out_expr(d - 1) + " | " + out_expr(d - 1) + ")";
     }
   }
   std::string in_atom() {
@@ -340,7 +371,8 @@ class QueryGenerator {
     if (k == 2 && !int_inputs_.empty()) {
       const auto& v = one(int_inputs_);
       static const char* cmp[] = {" = ", " != ", " < ", " <= ", " > ", " >= "};
-      const auto c = v.lo + static_cast<std::int64_t>(pick(static_cast<std::size_t>(v.hi - v.lo + 1)));
+      const auto c =
+          v.lo + static_cast<std::int64_t>(pick(static_cast<std::size_t>(v.hi - v.lo + 1)));
       return "(" + v.name + cmp[pick(6)] + std::to_string(c) + ")";
     }
     return out_atom();
@@ -348,58 +380,89 @@ class QueryGenerator {
   std::string in_expr(int d) {
     if (d <= 0 || pick(3) == 0) return in_atom();
     switch (pick(3)) {
-      case 0: return "!(" + in_expr(d - 1) + ")";
-      case 1: return "(" + in_expr(d - 1) + " & " + in_expr(d - 1) + ")";
-      default: return "(" + in_expr(d - 1) + " | " + in_expr(d - 1) + ")";
+      case 0:
+        return "!(" + in_expr(d - 1) + ")";
+      case 1:
+        return "(" + in_expr(d - 1) + " & " + in_expr(d - 1) + ")";
+      default:
+        return "(" + in_expr(d - 1) + " | " + in_expr(d - 1) + ")";
     }
   }
   std::string states(int d) {
     if (d <= 0) {
       switch (pick(4)) {
-        case 0: return "Y";
-        case 1: return "Y0";
-        case 2: return "Act(" + step_literal() + ")";
-        default: return "Emis(" + out_expr(1) + ")";
+        case 0:
+          return "Y";
+        case 1:
+          return "Y0";
+        case 2:
+          return "Act(" + step_literal() + ")";
+        default:
+          return "Emis(" + out_expr(1) + ")";
       }
     }
     switch (pick(11)) {
-      case 0: return "Act(" + step_set(d - 1) + ")";
-      case 1: return "Des(" + step_set(d - 1) + ")";
-      case 2: return "Emis(" + out_expr(2) + ")";
-      case 3: return "Amont(" + evolutions(d - 1) + ")";
-      case 4: return "Aval(" + evolutions(d - 1) + ")";
-      case 5: return "Succ(" + states(d - 1) + ", " + evolutions(d - 1) + ")";
-      case 6: return "Pred(" + states(d - 1) + ", " + evolutions(d - 1) + ")";
-      case 7: return bin(states(d - 1), states(d - 1));
-      case 8: return "(let x = " + states(d - 1) + "; " + "Pred(x, Int(x)) + Aval(Ext(x)))";
-      case 9: return "(" + states(d - 1) + " - {})";
-      default: return pick(2) ? "Y" : "Y0";
+      case 0:
+        return "Act(" + step_set(d - 1) + ")";
+      case 1:
+        return "Des(" + step_set(d - 1) + ")";
+      case 2:
+        return "Emis(" + out_expr(2) + ")";
+      case 3:
+        return "Amont(" + evolutions(d - 1) + ")";
+      case 4:
+        return "Aval(" + evolutions(d - 1) + ")";
+      case 5:
+        return "Succ(" + states(d - 1) + ", " + evolutions(d - 1) + ")";
+      case 6:
+        return "Pred(" + states(d - 1) + ", " + evolutions(d - 1) + ")";
+      case 7:
+        return bin(states(d - 1), states(d - 1));
+      case 8:
+        return "(let x = " + states(d - 1) + "; " + "Pred(x, Int(x)) + Aval(Ext(x)))";
+      case 9:
+        return "(" + states(d - 1) + " - {})";
+      default:
+        return pick(2) ? "Y" : "Y0";
     }
   }
   std::string evolutions(int d) {
     if (d <= 0) return pick(3) == 0 ? "Tclear" : pick(2) ? "T" : "Nec(" + in_expr(1) + ")";
     switch (pick(7)) {
-      case 0: return "Int(" + states(d - 1) + ")";
-      case 1: return "Ext(" + states(d - 1) + ")";
-      case 2: return "Nec(" + in_expr(2) + ")";
-      case 3: return bin(evolutions(d - 1), evolutions(d - 1));
-      case 4: return "(let c = " + states(d - 1) + "; Ext(c) - Int(c))";
-      case 5: return "Tclear";
-      default: return "T";
+      case 0:
+        return "Int(" + states(d - 1) + ")";
+      case 1:
+        return "Ext(" + states(d - 1) + ")";
+      case 2:
+        return "Nec(" + in_expr(2) + ")";
+      case 3:
+        return bin(evolutions(d - 1), evolutions(d - 1));
+      case 4:
+        return "(let c = " + states(d - 1) + "; Ext(c) - Int(c))";
+      case 5:
+        return "Tclear";
+      default:
+        return "T";
     }
   }
   std::string test(int d) {
     if (d <= 0) {
       switch (pick(3)) {
-        case 0: return "#" + states(1) + " < #" + states(1);
-        case 1: return states(2) + " = " + states(2);
-        default: return evolutions(2) + " != {}";
+        case 0:
+          return "#" + states(1) + " < #" + states(1);
+        case 1:
+          return states(2) + " = " + states(2);
+        default:
+          return evolutions(2) + " != {}";
       }
     }
     switch (pick(3)) {
-      case 0: return "(" + test(d - 1) + " & " + test(d - 1) + ")";
-      case 1: return "(" + test(d - 1) + " | " + test(d - 1) + ")";
-      default: return "!(" + test(d - 1) + ")";
+      case 0:
+        return "(" + test(d - 1) + " & " + test(d - 1) + ")";
+      case 1:
+        return "(" + test(d - 1) + " | " + test(d - 1) + ")";
+      default:
+        return "!(" + test(d - 1) + ")";
     }
   }
 
@@ -446,8 +509,12 @@ void expect_same_set(logic::Sort sort, const Explicit& x, const DynamicBitset& x
       EXPECT_EQ(xs.count(), static_cast<std::uint64_t>(y.sys.count_pairs(ys.bdd))) << q;
       break;
     }
-    case logic::Sort::Steps: EXPECT_EQ(xs.elements(), ys.steps.elements()) << q; break;
-    default: EXPECT_TRUE(xs.none() && ys.bdd.is_false() && ys.steps.none()) << q; break;
+    case logic::Sort::Steps:
+      EXPECT_EQ(xs.elements(), ys.steps.elements()) << q;
+      break;
+    default:
+      EXPECT_TRUE(xs.none() && ys.bdd.is_false() && ys.steps.none()) << q;
+      break;
   }
 }
 
@@ -487,7 +554,7 @@ int compare_on(const Chart& s, std::uint64_t seed, int count) {
     const auto a = x.ev.evaluate(q);
     const auto b = y.ev.evaluate(q);
     ++compared;
-    g_nontrivial += a.sort == logic::Sort::Bool ? a.truth
+    g_nontrivial += a.sort == logic::Sort::Bool  ? a.truth
                     : a.sort == logic::Sort::Int ? a.number != 0
                                                  : !a.set.none();
     if (a.sort != b.sort) {
@@ -498,10 +565,15 @@ int compare_on(const Chart& s, std::uint64_t seed, int count) {
       case logic::Sort::Bool:
         EXPECT_EQ(a.truth, b.truth) << text;
         EXPECT_EQ(a.witness_sort.has_value(), b.witness_sort.has_value()) << text;
-        if (a.witness_sort && b.witness_sort) expect_same_set(*a.witness_sort, x, a.witness, y, b.witness, text);
+        if (a.witness_sort && b.witness_sort)
+          expect_same_set(*a.witness_sort, x, a.witness, y, b.witness, text);
         break;
-      case logic::Sort::Int: EXPECT_EQ(a.number, b.number) << text; break;
-      default: expect_same_set(a.sort, x, a.set, y, b.set, text); break;
+      case logic::Sort::Int:
+        EXPECT_EQ(a.number, b.number) << text;
+        break;
+      default:
+        expect_same_set(a.sort, x, a.set, y, b.set, text);
+        break;
     }
   }
   return compared;
@@ -534,9 +606,9 @@ TEST(SymbolicQueryAgreement, NondeterministicConflicts) {
 
 TEST(SymbolicQueryAgreement, FamiliesWithIntegerInputsAndNesting) {
   std::uint64_t seed = 200;
-  for (const auto& text : {bench::parallel_branches_iec(3, true),
-                           bench::parallel_branches_iec(3, false), bench::tanks_iec(2, true),
-                           bench::nested_charts_iec(3), std::string(kSmall)}) {
+  for (const auto& text :
+       {bench::parallel_branches_iec(3, true), bench::parallel_branches_iec(3, false),
+        bench::tanks_iec(2, true), bench::nested_charts_iec(3), std::string(kSmall)}) {
     const auto s = load(text);
     ASSERT_TRUE(s.ts);
     EXPECT_EQ(compare_on(s, ++seed, 60), 60);

@@ -26,9 +26,11 @@ std::string doc(const std::string& variables, const std::string& grafcets) {
   return R"(<?xml version="1.0" encoding="UTF-8"?>
 <grafcet:Grafcet xmi:version="2.0" xmlns:xmi="http://www.omg.org/XMI" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xmlns:grafcet="http://www.example.org/grafcet" xmlns:terms="http://www.example.org/terms">
   <variableDeclarationContainer>
-)" + variables + R"(
+)" + variables +
+         R"(
   </variableDeclarationContainer>
-)" + grafcets + "\n</grafcet:Grafcet>\n";
+)" + grafcets +
+         "\n</grafcet:Grafcet>\n";
 }
 
 std::string var(const std::string& name, const std::string& type, const std::string& sort,
@@ -43,7 +45,9 @@ std::string vref(int i) {
          std::to_string(i) + "\"";
 }
 
-LoadResult load(const std::string& text) { return load_agrafe_xmi(text, "t.grafcet"); }
+LoadResult load(const std::string& text) {
+  return load_agrafe_xmi(text, "t.grafcet");
+}
 
 const std::string kTwoSteps = R"(
     <steps xsi:type="grafcet:Step" id="1" initial="true"/>
@@ -53,19 +57,20 @@ const std::string kTwoSteps = R"(
 
 /// The guard of transition 0 of a two-step grafcet whose term is `term`.
 model::ExprPtr guard(const std::string& variables, const std::string& term) {
-  const auto r = load(doc(variables, "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">" +
-                                         kTwoSteps + "<transitions id=\"1\">" + term +
-                                         "</transitions></partialGrafcets>"));
+  const auto r = load(doc(
+      variables, "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">" + kTwoSteps +
+                     "<transitions id=\"1\">" + term + "</transitions></partialGrafcets>"));
   EXPECT_TRUE(r.ok()) << messages(r);
   if (!r.ok()) return nullptr;
   return r.project->pous[0].charts[0].transitions[0].guard;
 }
 
 TEST(AgrafeXmi, VariablesDirectionsAndSorts) {
-  const auto r = load(doc(var("a", "", "Bool") + var("V", "output", "Bool") +
-                              var("k", "internal", "Integer") + var("n", "input", "Integer"),
-                          "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">"
-                          "<steps xsi:type=\"grafcet:Step\" id=\"1\" initial=\"true\"/></partialGrafcets>"));
+  const auto r =
+      load(doc(var("a", "", "Bool") + var("V", "output", "Bool") + var("k", "internal", "Integer") +
+                   var("n", "input", "Integer"),
+               "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">"
+               "<steps xsi:type=\"grafcet:Step\" id=\"1\" initial=\"true\"/></partialGrafcets>"));
   ASSERT_TRUE(r.ok()) << messages(r);
   EXPECT_EQ(r.project->dialect, model::Dialect::Grafcet);
   EXPECT_EQ(r.project->source_format, "agrafe-xmi");
@@ -94,25 +99,31 @@ TEST(AgrafeXmi, VariablesDirectionsAndSorts) {
 
 TEST(AgrafeXmi, TermsBecomeExpressions) {
   const std::string vars = var("a", "", "Bool") + var("b", "", "Bool") + var("n", "", "Integer");
-  auto g = guard(vars, R"(<term xsi:type="terms:And"><subterm xsi:type="terms:Variable" )" + vref(0) +
-                           R"(/><subterm xsi:type="terms:Not"><subterm xsi:type="terms:Variable" )" +
-                           vref(1) + "/></subterm></term>");
+  auto g =
+      guard(vars, R"(<term xsi:type="terms:And"><subterm xsi:type="terms:Variable" )" + vref(0) +
+                      R"(/><subterm xsi:type="terms:Not"><subterm xsi:type="terms:Variable" )" +
+                      vref(1) + "/></subterm></term>");
   ASSERT_TRUE(g);
   ASSERT_EQ(g->kind, ExprKind::And);
   EXPECT_EQ(g->args[0]->name, "a");
   EXPECT_EQ(g->args[1]->kind, ExprKind::Not);
-  g = guard(vars, R"(<term xsi:type="terms:Or"><subterm xsi:type="terms:RisingEdge"><subterm xsi:type="terms:Variable" )" +
-                      vref(0) + R"(/></subterm><subterm xsi:type="terms:FallingEdge"><subterm xsi:type="terms:Variable" )" +
-                      vref(1) + "/></subterm></term>");
+  g = guard(
+      vars,
+      R"(<term xsi:type="terms:Or"><subterm xsi:type="terms:RisingEdge"><subterm xsi:type="terms:Variable" )" +
+          vref(0) +
+          R"(/></subterm><subterm xsi:type="terms:FallingEdge"><subterm xsi:type="terms:Variable" )" +
+          vref(1) + "/></subterm></term>");
   ASSERT_EQ(g->kind, ExprKind::Or);
   EXPECT_EQ(g->args[0]->kind, ExprKind::Rising);
   EXPECT_EQ(g->args[1]->kind, ExprKind::Falling);
   for (const auto& [type, kind] : std::vector<std::pair<std::string, ExprKind>>{
            {"LessThan", ExprKind::Lt}, {"GreaterThan", ExprKind::Gt}, {"Equality", ExprKind::Eq}}) {
-    g = guard(vars, "<term xsi:type=\"terms:" + type +
-                        "\"><subterm xsi:type=\"terms:Addition\"><subterm xsi:type=\"terms:Variable\" " +
-                        vref(2) + "/><subterm xsi:type=\"terms:IntegerConstant\" value=\"2\"/></subterm>"
-                        "<subterm xsi:type=\"terms:IntegerConstant\" value=\"7\"/></term>");
+    g = guard(vars,
+              "<term xsi:type=\"terms:" + type +
+                  "\"><subterm xsi:type=\"terms:Addition\"><subterm xsi:type=\"terms:Variable\" " +
+                  vref(2) +
+                  "/><subterm xsi:type=\"terms:IntegerConstant\" value=\"2\"/></subterm>"
+                  "<subterm xsi:type=\"terms:IntegerConstant\" value=\"7\"/></term>");
     ASSERT_TRUE(g);
     EXPECT_EQ(g->kind, kind);
     EXPECT_EQ(g->args[0]->kind, ExprKind::Add);
@@ -130,14 +141,16 @@ TEST(AgrafeXmi, TermsBecomeExpressions) {
 }
 
 TEST(AgrafeXmi, StepVariablesAndDelayNamedVariables) {
-  const std::string vars =
-      var("X2", "step", "Bool", " step=\"//@partialGrafcets.0/@steps.1\"") +
-      var("2s/X2", "internal", "Bool") + var("500ms/X1/1s", "internal", "Bool");
-  const auto r = load(doc(vars, "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">" + kTwoSteps +
-                                    "<transitions id=\"1\"><term xsi:type=\"terms:And\"><subterm xsi:type=\"terms:Variable\" " +
-                                    vref(0) + "/><subterm xsi:type=\"terms:Variable\" " + vref(1) +
-                                    "/></term></transitions><transitions id=\"2\"><term xsi:type=\"terms:Variable\" " +
-                                    vref(2) + "/></transitions></partialGrafcets>"));
+  const std::string vars = var("X2", "step", "Bool", " step=\"//@partialGrafcets.0/@steps.1\"") +
+                           var("2s/X2", "internal", "Bool") +
+                           var("500ms/X1/1s", "internal", "Bool");
+  const auto r = load(doc(
+      vars, "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">" + kTwoSteps +
+                "<transitions id=\"1\"><term xsi:type=\"terms:And\"><subterm "
+                "xsi:type=\"terms:Variable\" " +
+                vref(0) + "/><subterm xsi:type=\"terms:Variable\" " + vref(1) +
+                "/></term></transitions><transitions id=\"2\"><term xsi:type=\"terms:Variable\" " +
+                vref(2) + "/></transitions></partialGrafcets>"));
   ASSERT_TRUE(r.ok()) << messages(r);
   EXPECT_TRUE(r.project->pous[0].variables.empty());
   const auto& g = r.project->pous[0].charts[0].transitions[0].guard;
@@ -159,13 +172,15 @@ TEST(AgrafeXmi, StepVariablesAndDelayNamedVariables) {
 
 TEST(AgrafeXmi, TimeConditionsBecomeDelays) {
   const std::string vars = var("a", "", "Bool") + var("V", "output", "Bool");
-  const auto r = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
-                                    R"(<transitions id="1" timeConditionType="timeDelayed" delayTime="3"><term xsi:type="terms:Variable" )" +
-                                    vref(0) + R"(/></transitions>
+  const auto r = load(doc(
+      vars,
+      R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
+          R"(<transitions id="1" timeConditionType="timeDelayed" delayTime="3"><term xsi:type="terms:Variable" )" +
+          vref(0) + R"(/></transitions>
     <transitions id="2" timeConditionType="timeDependent" delayTime="200" resetTime="50" unit="ms"><term xsi:type="terms:Variable" )" +
-                                    vref(0) + R"(/></transitions>
+          vref(0) + R"(/></transitions>
     <actionTypes xsi:type="grafcet:ContinuousAction" id="1" timeConditionType="timeDelayed" delayTime="2"><variable )" +
-                                    vref(1) + R"(/></actionTypes>
+          vref(1) + R"(/></actionTypes>
     <actionLinks step="//@partialGrafcets.0/@steps.1" actionType="//@partialGrafcets.0/@actionTypes.0"/>
   </partialGrafcets>)"));
   ASSERT_TRUE(r.ok()) << messages(r);
@@ -185,11 +200,14 @@ TEST(AgrafeXmi, TimeConditionsBecomeDelays) {
   EXPECT_EQ(c->value, 2000);
   EXPECT_EQ(c->args[0]->name, "X2");
 
-  const auto bad = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
-                                      R"(<transitions id="1" timeConditionType="timeLimited" delayTime="3"/></partialGrafcets>)"));
+  const auto bad = load(doc(
+      vars,
+      R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">)" + kTwoSteps +
+          R"(<transitions id="1" timeConditionType="timeLimited" delayTime="3"/></partialGrafcets>)"));
   EXPECT_FALSE(bad.project.has_value());
   ASSERT_FALSE(bad.diagnostics.empty());
-  EXPECT_EQ(bad.diagnostics.back().message, "unsupported time condition 'timeLimited' (time-limited actions)");
+  EXPECT_EQ(bad.diagnostics.back().message,
+            "unsupported time condition 'timeLimited' (time-limited actions)");
   EXPECT_EQ(bad.diagnostics.back().where.element_path, "//@partialGrafcets.0/@transitions.0");
 }
 
@@ -220,20 +238,26 @@ TEST(AgrafeXmi, SynchronizationsAreAndDivergencesAndConvergences) {
 }
 
 TEST(AgrafeXmi, ActionsStoredContinuousAndForcing) {
-  const std::string vars = var("a", "", "Bool") + var("V", "output", "Bool") + var("k", "internal", "Integer");
-  const auto r = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G1">
+  const std::string vars =
+      var("a", "", "Bool") + var("V", "output", "Bool") + var("k", "internal", "Integer");
+  const auto r = load(doc(
+      vars,
+      R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G1">
     <steps xsi:type="grafcet:Step" id="1" initial="true"/>
     <steps xsi:type="grafcet:EnclosingStep" id="2" partialGrafcets="//@partialGrafcets.1"/>
-    <actionTypes xsi:type="grafcet:ContinuousAction" id="1"><variable )" + vref(1) +
-                                    R"(/><term xsi:type="terms:Variable" )" + vref(0) + R"(/></actionTypes>
-    <actionTypes xsi:type="grafcet:StoredAction" id="2"><variable )" + vref(2) +
-                                    R"(/><value xsi:type="terms:IntegerConstant" value="4"/></actionTypes>
-    <actionTypes xsi:type="grafcet:StoredAction" id="3" storedActionType="deactivation"><variable )" + vref(1) +
-                                    R"(/><value xsi:type="terms:BooleanConstant"/></actionTypes>
-    <actionTypes xsi:type="grafcet:StoredAction" id="4" storedActionType="event"><variable )" + vref(2) +
-                                    R"(/><value xsi:type="terms:Addition"><subterm xsi:type="terms:Variable" )" + vref(2) +
-                                    R"(/><subterm xsi:type="terms:IntegerConstant" value="1"/></value><term xsi:type="terms:RisingEdge"><subterm xsi:type="terms:Variable" )" +
-                                    vref(0) + R"(/></term></actionTypes>
+    <actionTypes xsi:type="grafcet:ContinuousAction" id="1"><variable )" +
+          vref(1) + R"(/><term xsi:type="terms:Variable" )" + vref(0) + R"(/></actionTypes>
+    <actionTypes xsi:type="grafcet:StoredAction" id="2"><variable )" +
+          vref(2) +
+          R"(/><value xsi:type="terms:IntegerConstant" value="4"/></actionTypes>
+    <actionTypes xsi:type="grafcet:StoredAction" id="3" storedActionType="deactivation"><variable )" +
+          vref(1) +
+          R"(/><value xsi:type="terms:BooleanConstant"/></actionTypes>
+    <actionTypes xsi:type="grafcet:StoredAction" id="4" storedActionType="event"><variable )" +
+          vref(2) + R"(/><value xsi:type="terms:Addition"><subterm xsi:type="terms:Variable" )" +
+          vref(2) +
+          R"(/><subterm xsi:type="terms:IntegerConstant" value="1"/></value><term xsi:type="terms:RisingEdge"><subterm xsi:type="terms:Variable" )" +
+          vref(0) + R"(/></term></actionTypes>
     <actionTypes xsi:type="grafcet:ForcingOrder" id="5" partialGrafcet="//@partialGrafcets.1" forcingOrderType="explicitSituation" forcedSteps="//@partialGrafcets.1/@steps.1"/>
     <actionTypes xsi:type="grafcet:ForcingOrder" id="6" partialGrafcet="//@partialGrafcets.1" forcingOrderType="initialSituation"/>
     <actionTypes xsi:type="grafcet:ForcingOrder" id="7" partialGrafcet="//@partialGrafcets.1" forcingOrderType="emptySituation"/>
@@ -288,11 +312,14 @@ TEST(AgrafeXmi, ActionsStoredContinuousAndForcing) {
 
 TEST(AgrafeXmi, AssignedVariablesWithoutDeclarationTypeAreNotInputs) {
   const std::string vars = var("done", "", "Bool") + var("lamp", "", "Bool");
-  const auto r = load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">
+  const auto r =
+      load(doc(vars, R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">
     <steps xsi:type="grafcet:Step" id="1" initial="true"/>
-    <actionTypes xsi:type="grafcet:StoredAction" id="1"><variable )" + vref(0) +
-                                    R"(/><value xsi:type="terms:BooleanConstant" value="true"/></actionTypes>
-    <actionTypes xsi:type="grafcet:ContinuousAction" id="2"><variable )" + vref(1) + R"(/></actionTypes>
+    <actionTypes xsi:type="grafcet:StoredAction" id="1"><variable )" +
+                         vref(0) +
+                         R"(/><value xsi:type="terms:BooleanConstant" value="true"/></actionTypes>
+    <actionTypes xsi:type="grafcet:ContinuousAction" id="2"><variable )" +
+                         vref(1) + R"(/></actionTypes>
     <actionLinks step="//@partialGrafcets.0/@steps.0" actionType="//@partialGrafcets.0/@actionTypes.0"/>
     <actionLinks step="//@partialGrafcets.0/@steps.0" actionType="//@partialGrafcets.0/@actionTypes.1"/>
   </partialGrafcets>)"));
@@ -344,29 +371,46 @@ std::string first_error(const std::string& text) {
 }
 
 TEST(AgrafeXmiErrors, NameTheElement) {
-  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\"/>"
-                                "<arcs source=\"//@partialGrafcets.0/@steps.4\" target=\"//@partialGrafcets.0/@transitions.0\"/>"
-                                "</partialGrafcets>")),
-            "t.grafcet:6:63 (//@partialGrafcets.0/@arcs.0): reference '//@partialGrafcets.0/@steps.4' leads to no element");
-  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\">"
-                                "<term xsi:type=\"terms:Multiplication\"/></transitions></partialGrafcets>")),
-            "t.grafcet:6:62 (//@partialGrafcets.0/@transitions.0/@term): unsupported term type 'Multiplication'");
-  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"1\"/><steps id=\"1\"/></partialGrafcets>")),
-            "t.grafcet:6:42 (//@partialGrafcets.0/@steps.1): step id '1' is used twice in partial grafcet 'G'");
-  EXPECT_EQ(first_error(doc(var("a", "input", "Bool"),
-                            "<partialGrafcets name=\"G\"><steps id=\"1\"/><actionTypes xsi:type=\"grafcet:StoredAction\" id=\"1\">"
-                            "<variable " + vref(0) + "/><value xsi:type=\"terms:BooleanConstant\"/></actionTypes>"
-                            "<actionLinks step=\"//@partialGrafcets.0/@steps.0\" actionType=\"//@partialGrafcets.0/@actionTypes.0\"/>"
+  EXPECT_EQ(first_error(doc("",
+                            "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\"/>"
+                            "<arcs source=\"//@partialGrafcets.0/@steps.4\" "
+                            "target=\"//@partialGrafcets.0/@transitions.0\"/>"
                             "</partialGrafcets>")),
-            "t.grafcet:7:94 (//@partialGrafcets.0/@actionTypes.0/@variable): an action assigns the input 'a'");
-  EXPECT_EQ(first_error("<grafcet:Grafcet xmlns:grafcet=\"x\">\n  <partialGrafcets>\n</grafcet:Grafcet>"),
-            "t.grafcet:3:3: XML error: Start-end tags mismatch");
+            "t.grafcet:6:63 (//@partialGrafcets.0/@arcs.0): reference "
+            "'//@partialGrafcets.0/@steps.4' leads to no element");
+  EXPECT_EQ(
+      first_error(doc("",
+                      "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\">"
+                      "<term xsi:type=\"terms:Multiplication\"/></transitions></partialGrafcets>")),
+      "t.grafcet:6:62 (//@partialGrafcets.0/@transitions.0/@term): unsupported term type "
+      "'Multiplication'");
+  EXPECT_EQ(
+      first_error(doc(
+          "", "<partialGrafcets name=\"G\"><steps id=\"1\"/><steps id=\"1\"/></partialGrafcets>")),
+      "t.grafcet:6:42 (//@partialGrafcets.0/@steps.1): step id '1' is used twice in partial "
+      "grafcet 'G'");
+  EXPECT_EQ(first_error(doc(var("a", "input", "Bool"),
+                            "<partialGrafcets name=\"G\"><steps id=\"1\"/><actionTypes "
+                            "xsi:type=\"grafcet:StoredAction\" id=\"1\">"
+                            "<variable " +
+                                vref(0) +
+                                "/><value xsi:type=\"terms:BooleanConstant\"/></actionTypes>"
+                                "<actionLinks step=\"//@partialGrafcets.0/@steps.0\" "
+                                "actionType=\"//@partialGrafcets.0/@actionTypes.0\"/>"
+                                "</partialGrafcets>")),
+            "t.grafcet:7:94 (//@partialGrafcets.0/@actionTypes.0/@variable): an action assigns the "
+            "input 'a'");
+  EXPECT_EQ(
+      first_error("<grafcet:Grafcet xmlns:grafcet=\"x\">\n  <partialGrafcets>\n</grafcet:Grafcet>"),
+      "t.grafcet:3:3: XML error: Start-end tags mismatch");
   EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"\"/></partialGrafcets>")),
             "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step without an id");
-  EXPECT_EQ(first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"a&#10;b\"/></partialGrafcets>")),
-            "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step id contains a control character");
+  EXPECT_EQ(
+      first_error(doc("", "<partialGrafcets name=\"G\"><steps id=\"a&#10;b\"/></partialGrafcets>")),
+      "t.grafcet:6:27 (//@partialGrafcets.0/@steps.0): step id contains a control character");
   EXPECT_EQ(first_error("<project/>"),
-            "t.grafcet:1:1 (/): not an AGRAFE grafcet: the root element is <project>, expected <grafcet:Grafcet>");
+            "t.grafcet:1:1 (/): not an AGRAFE grafcet: the root element is <project>, expected "
+            "<grafcet:Grafcet>");
 }
 
 // ------------------------------------------------------------------------------------ corpus
@@ -428,7 +472,8 @@ TEST(AgrafeXmiCorpus, QualityControlPlantStructure) {
   for (const auto& c : p.charts)
     for (const auto& t : c.transitions)
       for (const auto& a : t.guard->args)
-        delay = delay || (a->kind == ExprKind::Delay && a->value == 2000 && a->args[0]->name == "X202");
+        delay =
+            delay || (a->kind == ExprKind::Delay && a->value == 2000 && a->args[0]->name == "X202");
   EXPECT_TRUE(delay);
   EXPECT_FALSE(p.find_variable("2s/X202"));
 }

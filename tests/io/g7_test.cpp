@@ -17,7 +17,9 @@ namespace {
 
 using model::ExprKind;
 
-LoadResult load(const std::string& text) { return load_g7(text, "t.g7"); }
+LoadResult load(const std::string& text) {
+  return load_g7(text, "t.g7");
+}
 
 std::string messages(const LoadResult& r) {
   std::string s;
@@ -25,7 +27,9 @@ std::string messages(const LoadResult& r) {
   return s;
 }
 
-const model::Pou& pou_of(const LoadResult& r) { return r.project->pous.at(0); }
+const model::Pou& pou_of(const LoadResult& r) {
+  return r.project->pous.at(0);
+}
 
 /// The guard of the only transition of the only chart of `doc`.
 model::ExprPtr guard(const std::string& decls, const std::string& receptivity) {
@@ -133,8 +137,9 @@ TEST(G7, StepsTransitionsAndDivergences) {
 }
 
 TEST(G7, SourceAndSinkTransitionsAreNoted) {
-  const auto r = load("input a;\ngrafcet G { step 1 initial; transition {} -> 1 when RE a;\n"
-                      "transition 1 -> {} when FE a; }");
+  const auto r = load(
+      "input a;\ngrafcet G { step 1 initial; transition {} -> 1 when RE a;\n"
+      "transition 1 -> {} when FE a; }");
   ASSERT_TRUE(r.ok()) << messages(r);
   const auto& c = pou_of(r).charts.at(0);
   EXPECT_TRUE(c.transitions[0].sources.empty());
@@ -163,9 +168,13 @@ TEST(G7, ReceptivityOperatorsAndPrecedence) {
   g = guard(decls, "n + 1 = 4");
   ASSERT_EQ(g->kind, ExprKind::Eq);
   EXPECT_EQ(g->args[0]->kind, ExprKind::Add);
-  for (const auto& [text, kind] : std::vector<std::pair<std::string, ExprKind>>{
-           {"n < 2", ExprKind::Lt}, {"n <= 2", ExprKind::Le}, {"n > 2", ExprKind::Gt},
-           {"n <> 2", ExprKind::Ne}, {"n != 2", ExprKind::Ne}, {"n == 2", ExprKind::Eq}})
+  for (const auto& [text, kind] :
+       std::vector<std::pair<std::string, ExprKind>>{{"n < 2", ExprKind::Lt},
+                                                     {"n <= 2", ExprKind::Le},
+                                                     {"n > 2", ExprKind::Gt},
+                                                     {"n <> 2", ExprKind::Ne},
+                                                     {"n != 2", ExprKind::Ne},
+                                                     {"n == 2", ExprKind::Eq}})
     EXPECT_EQ(guard(decls, text)->kind, kind) << text;
 }
 
@@ -175,7 +184,10 @@ TEST(G7, EdgesInAsciiAndUtf8) {
   ASSERT_EQ(g->kind, ExprKind::And);
   EXPECT_EQ(g->args[0]->kind, ExprKind::Rising);
   EXPECT_EQ(g->args[1]->kind, ExprKind::Falling);
-  auto u = guard(decls, "\xE2\x86\x91" "a & \xE2\x86\x93" "b");  // ↑a & ↓b
+  auto u = guard(decls,
+                 "\xE2\x86\x91"
+                 "a & \xE2\x86\x93"
+                 "b");  // ↑a & ↓b
   EXPECT_TRUE(model::equal(g, u));
   g = guard(decls, "RE (a & b)");
   ASSERT_EQ(g->kind, ExprKind::Rising);
@@ -195,8 +207,9 @@ TEST(G7, ConstantsOneAndZeroAreTrueAndFalse) {
 }
 
 TEST(G7, StepVariablesStayNamesXi) {
-  const auto r = load("grafcet G { step 1 initial; step 12; transition 1 -> 12 when !X12; }\n"
-                      "grafcet H { step 5 initial; transition 5 -> 5 when X1 & x12; }");
+  const auto r = load(
+      "grafcet G { step 1 initial; step 12; transition 1 -> 12 when !X12; }\n"
+      "grafcet H { step 5 initial; transition 5 -> 5 when X1 & x12; }");
   ASSERT_TRUE(r.ok()) << messages(r);
   const auto& g = pou_of(r).charts[0].transitions[0].guard;
   ASSERT_EQ(g->kind, ExprKind::Not);
@@ -335,9 +348,10 @@ TEST(G7, EnclosingStepsAndActivationLinks) {
 }
 
 TEST(G7, QuotedNamesAndReservedWords) {
-  const auto r = load("input \"RE\", \"my var\";\n"
-                      "grafcet \"main line\" { step \"1a\" initial; transition \"1a\" -> \"1a\" "
-                      "when \"RE\" & RE \"my var\"; }");
+  const auto r = load(
+      "input \"RE\", \"my var\";\n"
+      "grafcet \"main line\" { step \"1a\" initial; transition \"1a\" -> \"1a\" "
+      "when \"RE\" & RE \"my var\"; }");
   ASSERT_TRUE(r.ok()) << messages(r);
   const auto& c = pou_of(r).charts[0];
   EXPECT_EQ(c.name, "main line");
@@ -351,8 +365,9 @@ TEST(G7, QuotedNamesAndReservedWords) {
 TEST(G7Errors, LocatedAtLineAndColumn) {
   EXPECT_EQ(first_error("input a;\ngrafcet G {\n  step 1 initial;\n  transition 1 -> 2 when a;\n}"),
             "4:19: undeclared step '2' in grafcet 'G'");
-  EXPECT_EQ(first_error("input a;\ngrafcet G { step 1 initial;\n  transition 1 -> 1 when a & bb; }"),
-            "3:30: unknown name 'bb' (not a declared variable nor a step variable X<step>)");
+  EXPECT_EQ(
+      first_error("input a;\ngrafcet G { step 1 initial;\n  transition 1 -> 1 when a & bb; }"),
+      "3:30: unknown name 'bb' (not a declared variable nor a step variable X<step>)");
   EXPECT_EQ(first_error("input a\ngrafcet G { step 1 initial; }"),
             "2:1: expected ';', found 'grafcet'");
   EXPECT_EQ(first_error("input a;\ngrafcet G { step 1 initial; action 1 on_enter: a := 1; }"),
@@ -390,8 +405,9 @@ TEST(G7Errors, AmbiguousStepVariable) {
                         "grafcet H { step 1 initial; }"),
             "1:52: step variable 'X1' is ambiguous: several partial grafcets have a step '1'");
   // A declared variable named X1 is the variable.
-  const auto r = load("input X1;\ngrafcet G { step 1 initial; transition 1 -> 1 when X1; }\n"
-                      "grafcet H { step 1 initial; }");
+  const auto r = load(
+      "input X1;\ngrafcet G { step 1 initial; transition 1 -> 1 when X1; }\n"
+      "grafcet H { step 1 initial; }");
   EXPECT_TRUE(r.ok()) << messages(r);
 }
 
@@ -415,8 +431,9 @@ TEST(G7, TheDocumentationExampleLoads) {
 }
 
 TEST(G7Errors, SeveralErrorsAreAllReportedAndNoModelIsReturned) {
-  const auto r = load("input a;\ngrafcet G {\n step 1 initial;\n transition 1 -> 2 when a;\n"
-                      " transition 1 -> 1 when zz;\n bogus;\n}");
+  const auto r = load(
+      "input a;\ngrafcet G {\n step 1 initial;\n transition 1 -> 2 when a;\n"
+      " transition 1 -> 1 when zz;\n bogus;\n}");
   EXPECT_FALSE(r.project.has_value());
   int errors = 0;
   for (const auto& d : r.diagnostics) {
@@ -466,9 +483,10 @@ TEST(G7RoundTrip, EveryFeature) {
 }
 
 TEST(G7RoundTrip, QuotedNames) {
-  round_trip("input \"RE\", \"my var\"; internal \"3x\" : 0..3;\n"
-             "grafcet \"main line\" { step \"1a\" initial; step \"true\";\n"
-             " transition \"1a\" -> \"true\" when \"RE\" & RE \"my var\" & \"3x\" = 2; }");
+  round_trip(
+      "input \"RE\", \"my var\"; internal \"3x\" : 0..3;\n"
+      "grafcet \"main line\" { step \"1a\" initial; step \"true\";\n"
+      " transition \"1a\" -> \"true\" when \"RE\" & RE \"my var\" & \"3x\" = 2; }");
 }
 
 TEST(G7RoundTrip, StepsNamedLikeKeywords) {
@@ -509,8 +527,9 @@ TEST(G7RoundTrip, SmallSequence) {
 }
 
 TEST(G7RoundTrip, ExamplesShippedWithSfcv) {
-  for (const char* path : {"examples/pistons/pistons.g7", "examples/pallet_transfer/pallet_transfer.g7",
-                           "examples/pallet_transfer/pallet_transfer_fixed.g7"}) {
+  for (const char* path :
+       {"examples/pistons/pistons.g7", "examples/pallet_transfer/pallet_transfer.g7",
+        "examples/pallet_transfer/pallet_transfer_fixed.g7"}) {
     const auto r = load_file(test::source_path(path));
     ASSERT_TRUE(r.ok()) << path << "\n" << messages(r);
     const std::string printed = write_g7(*r.project);
@@ -522,7 +541,8 @@ TEST(G7RoundTrip, ExamplesShippedWithSfcv) {
 
 TEST(G7Examples, PalletTransferFixDiffersOnlyInTransition15) {
   const auto flawed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer.g7"));
-  const auto fixed = load_file(test::source_path("examples/pallet_transfer/pallet_transfer_fixed.g7"));
+  const auto fixed =
+      load_file(test::source_path("examples/pallet_transfer/pallet_transfer_fixed.g7"));
   ASSERT_TRUE(flawed.ok() && fixed.ok()) << messages(flawed) << messages(fixed);
   const auto& p = flawed.project->pous[0];
   ASSERT_EQ(p.charts.size(), 4u);

@@ -59,8 +59,8 @@ inline std::string grafcet_difference(const model::Project& a, const model::Proj
                   "transition " + u.name + "/" + s.name + " " + str_list(s.sources) + "->" +
                       str_list(s.targets) + " vs " + t.name + " " + str_list(t.sources) + "->" +
                       str_list(t.targets));
-        SFCV_DIFF(model::equal(s.guard, t.guard),
-                  "guard of " + u.name + "/" + s.name + ": " + to_st(s.guard) + " vs " + to_st(t.guard));
+        SFCV_DIFF(model::equal(s.guard, t.guard), "guard of " + u.name + "/" + s.name + ": " +
+                                                      to_st(s.guard) + " vs " + to_st(t.guard));
       }
     }
     SFCV_DIFF(x.actions.size() == y.actions.size(), "number of actions");
@@ -86,9 +86,9 @@ inline std::string grafcet_difference(const model::Project& a, const model::Proj
       SFCV_DIFF(s.chart == t.chart && s.step == t.step && s.when == t.when &&
                     model::equal(s.event, t.event) && s.variable == t.variable &&
                     model::equal(s.value, t.value),
-                "stored action " + s.chart + "/" + s.step + ":" + s.variable + ":=" +
-                    to_st(s.value) + " vs " + t.chart + "/" + t.step + ":" + t.variable + ":=" +
-                    to_st(t.value));
+                "stored action " + s.chart + "/" + s.step + ":" + s.variable +
+                    ":=" + to_st(s.value) + " vs " + t.chart + "/" + t.step + ":" + t.variable +
+                    ":=" + to_st(t.value));
     }
     SFCV_DIFF(x.forcing_orders.size() == y.forcing_orders.size(), "number of forcing orders");
     for (std::size_t i = 0; i < x.forcing_orders.size(); ++i) {

@@ -4,13 +4,13 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "model/errors.hpp"
 #include "io/iec_text_writer.hpp"
 #include "io/load.hpp"
 #include "model/compare.hpp"
+#include "model/errors.hpp"
 #include "model/names.hpp"
-#include "support/sfcv_test.hpp"
 #include "round_trip.hpp"
+#include "support/sfcv_test.hpp"
 
 namespace sfcv::io {
 namespace {
@@ -37,13 +37,16 @@ std::string errors(std::string_view text) {
   for (const auto& d : r.diagnostics) {
     if (d.severity != model::Severity::Error) continue;
     EXPECT_EQ(d.where.file, "bad.sfc");
-    s += std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + ": " + d.message + "\n";
+    s += std::to_string(d.where.line) + ":" + std::to_string(d.where.column) + ": " + d.message +
+         "\n";
   }
   return s;
 }
 
 // Prints, re-loads and compares; returns the printed text.
-std::string round_trip(const model::Project& p) { return test::iec_round_trip(p); }
+std::string round_trip(const model::Project& p) {
+  return test::iec_round_trip(p);
+}
 
 const char* const kFeatures = R"((* all features of the textual form *)
 FUNCTION_BLOCK Press
@@ -290,29 +293,33 @@ TEST(IecText, SyntaxErrorsAreLocated) {
             "2:21: expected TO, found ':='\n");
   EXPECT_EQ(errors("PROGRAM p\n  TRANSITION FROM a TO b := x AND; END_TRANSITION\nEND_PROGRAM\n"),
             "2:34: expected an expression, found ';'\n");
-  EXPECT_EQ(errors("PROGRAM p\n  ACTION a:\n    WHILE TRUE DO END_WHILE;\n  END_ACTION\nEND_PROGRAM\n"),
-            "3:5: unsupported: WHILE statement\n");
+  EXPECT_EQ(
+      errors("PROGRAM p\n  ACTION a:\n    WHILE TRUE DO END_WHILE;\n  END_ACTION\nEND_PROGRAM\n"),
+      "3:5: unsupported: WHILE statement\n");
   EXPECT_EQ(errors("PROGRAM p\n  VAR r : REAL; END_VAR\n  INITIAL_STEP a: END_STEP\nEND_PROGRAM\n"),
             "2:11: unsupported type REAL (sfcv models BOOL, integers, TIME and standard FBs)\n");
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: END_STEP\n"),
             "3:1: expected END_PROGRAM, found end of text\n");
-  EXPECT_EQ(errors("PROGRAM p\n  TRANSITION FROM a TO b : x := TRUE; END_TRANSITION\nEND_PROGRAM\n"),
-            "2:26: unsupported: transition body other than '<transition name> := <condition>;'\n");
+  EXPECT_EQ(
+      errors("PROGRAM p\n  TRANSITION FROM a TO b : x := TRUE; END_TRANSITION\nEND_PROGRAM\n"),
+      "2:26: unsupported: transition body other than '<transition name> := <condition>;'\n");
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: END_STEP\n  € \nEND_PROGRAM\n"),
             "3:3: unexpected character '\\xE2'\n");
   // Lexical errors are all reported, without the parse errors they would cause.
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: ? END_STEP\n  TRANSITION FROM a TO a := T#1; "
                    "END_TRANSITION\nEND_PROGRAM\n"),
             "2:19: unexpected character '?'\n3:29: TIME literal: missing unit (d, h, m, s, ms)\n");
-  EXPECT_EQ(errors("STEP a: END_STEP"),
-            "1:1: expected PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION or TYPE, found 'STEP'\n");
+  EXPECT_EQ(
+      errors("STEP a: END_STEP"),
+      "1:1: expected PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION or TYPE, found 'STEP'\n");
   EXPECT_EQ(errors(""), "0:0: no PROGRAM or FUNCTION_BLOCK in the file\n");
   EXPECT_EQ(errors("PROGRAM p\n  ACTION a: x := T#1s2; END_ACTION\nEND_PROGRAM\n"),
             "2:18: TIME literal: missing unit (d, h, m, s, ms)\n");
 }
 
 TEST(IecText, RecoversToReportSeveralErrors) {
-  EXPECT_EQ(errors(R"(PROGRAM p
+  EXPECT_EQ(
+      errors(R"(PROGRAM p
   INITIAL_STEP a: act(Q); END_STEP
   STEP b: END_STEP
   TRANSITION FROM a TO b := ; END_TRANSITION
@@ -323,14 +330,15 @@ FUNCTION_BLOCK ok
   TRANSITION FROM s TO s := TRUE END_TRANSITION
 END_FUNCTION_BLOCK
 )"),
-            "2:23: expected an action qualifier (N, R, S, P, P0, P1, L, D, SD, DS, SL, DL), found 'Q'\n"
-            "4:29: expected an expression, found ';'\n"
-            "5:22: expected ';' after the assignment, found 'END_ACTION'\n");
+      "2:23: expected an action qualifier (N, R, S, P, P0, P1, L, D, SD, DS, SL, DL), found 'Q'\n"
+      "4:29: expected an expression, found ';'\n"
+      "5:22: expected ';' after the assignment, found 'END_ACTION'\n");
 }
 
 TEST(IecText, WriterRejectsWhatIecTextCannotSay) {
-  auto p = load_ok("PROGRAM p\n VAR x : BOOL; END_VAR\n INITIAL_STEP a: END_STEP\n"
-                   " TRANSITION FROM a TO a := x; END_TRANSITION\nEND_PROGRAM\n");
+  auto p = load_ok(
+      "PROGRAM p\n VAR x : BOOL; END_VAR\n INITIAL_STEP a: END_STEP\n"
+      " TRANSITION FROM a TO a := x; END_TRANSITION\nEND_PROGRAM\n");
   auto expect_throw = [](const model::Project& q, const std::string& what) {
     try {
       write_iec_text(q);
@@ -449,8 +457,11 @@ END_PROGRAM
           "POU 'p': body: step B only in the first");
   differs([](model::Pou& u) { u.associations[0].qualifier = model::Qualifier::S; },
           "POU 'p': step A (body): association act(N) against act(S)");
-  differs([](model::Pou& u) { std::swap(u.charts[0].transitions[0].order, u.charts[0].transitions[1].order); },
-          "POU 'p': body: order of transition FROM a TO b := x and transition FROM a TO a := y");
+  differs(
+      [](model::Pou& u) {
+        std::swap(u.charts[0].transitions[0].order, u.charts[0].transitions[1].order);
+      },
+      "POU 'p': body: order of transition FROM a TO b := x and transition FROM a TO a := y");
   differs([](model::Pou& u) { u.variables[1].initial = 1; },
           "POU 'p': variable 'y': initial value differs");
   differs([](model::Pou& u) { u.charts[0].transitions[2].priority = 1; },

@@ -1,11 +1,13 @@
 // The PLCopen TC6 XML writer: write -> load -> the same model, per feature with small inline
 // documents, what it refuses, and the print / re-load round trip of every corpus file.
 
+#include "io/plcopen_writer.hpp"
+
 #include <gtest/gtest.h>
-#include <pugixml.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <pugixml.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -13,13 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "model/errors.hpp"
 #include "grafcet_compare.hpp"
 #include "io/g7_writer.hpp"
 #include "io/iec_text_writer.hpp"
 #include "io/load.hpp"
-#include "io/plcopen_writer.hpp"
 #include "model/compare.hpp"
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "round_trip.hpp"
 #include "support/sfcv_test.hpp"
@@ -45,8 +46,8 @@ model::Project load_xml(std::string_view text) {
 // A TC6 v2.01 document holding `pous`.
 std::string document(const std::string& pous) {
   return "<?xml version=\"1.0\"?><project xmlns=\"http://www.plcopen.org/xml/tc6_0201\" "
-         "xmlns:xhtml=\"http://www.w3.org/1999/xhtml\"><types><pous>" + pous +
-         "</pous></types></project>";
+         "xmlns:xhtml=\"http://www.w3.org/1999/xhtml\"><types><pous>" +
+         pous + "</pous></types></project>";
 }
 
 std::string st(const std::string& text) {
@@ -117,14 +118,27 @@ END_PROGRAM
 TEST(PlcopenWriter, EveryFeatureOfTheTextualFormRoundTrips) {
   const auto p = load_text(kTextFeatures);
   const std::string xml = plcopen_round_trip(p);
-  for (const char* expected :
-       {"pouType=\"functionBlock\"", "pouType=\"program\"", "<inOutVars>", "<externalVars>",
-        "address=\"%QX0.1\"", "<subrangeSigned>", "<subrangeUnsigned>", "<derived name=\"TON\"",
-        "<simpleValue value=\"T#1500ms\"", "<BYTE", "<simultaneousDivergence",
-        "<simultaneousConvergence", "<selectionDivergence", "<selectionConvergence",
-        "<jumpStep", "priority=\"2\"", "priority=\"0\"", "<inline name=\"go\"",
-        "qualifier=\"D\" duration=\"delta_1\" indicator=\"lamp\"", "duration=\"T#2s\"",
-        "<action name=\"Sub\">"})
+  for (const char* expected : {"pouType=\"functionBlock\"",
+                               "pouType=\"program\"",
+                               "<inOutVars>",
+                               "<externalVars>",
+                               "address=\"%QX0.1\"",
+                               "<subrangeSigned>",
+                               "<subrangeUnsigned>",
+                               "<derived name=\"TON\"",
+                               "<simpleValue value=\"T#1500ms\"",
+                               "<BYTE",
+                               "<simultaneousDivergence",
+                               "<simultaneousConvergence",
+                               "<selectionDivergence",
+                               "<selectionConvergence",
+                               "<jumpStep",
+                               "priority=\"2\"",
+                               "priority=\"0\"",
+                               "<inline name=\"go\"",
+                               "qualifier=\"D\" duration=\"delta_1\" indicator=\"lamp\"",
+                               "duration=\"T#2s\"",
+                               "<action name=\"Sub\">"})
     EXPECT_NE(xml.find(expected), std::string::npos) << expected << "\n" << xml;
 }
 
@@ -163,12 +177,15 @@ END_PROGRAM
 
 TEST(PlcopenWriter, FunctionAndStPousWithoutModelledBodies) {
   // Corpus 02: a FUNCTION and ST/FBD POUs whose bodies sfcv does not model, beside an SFC FB.
-  const auto p = load_xml(document(
-      "<pou name=\"Avg\" pouType=\"function\"><interface><inputVars><variable name=\"n\"><type><INT/></type>"
-      "</variable></inputVars></interface><body>" + st("Avg := n;") + "</body></pou>"
-      "<pou name=\"Fbd\" pouType=\"program\"><interface/><body><FBD/></body></pou>"
-      "<pou name=\"P\" pouType=\"functionBlock\"><interface>" + kVarA +
-      "</interface><body><SFC>" + two_steps() + "</SFC></body></pou>"));
+  const auto p = load_xml(
+      document("<pou name=\"Avg\" pouType=\"function\"><interface><inputVars><variable "
+               "name=\"n\"><type><INT/></type>"
+               "</variable></inputVars></interface><body>" +
+               st("Avg := n;") +
+               "</body></pou>"
+               "<pou name=\"Fbd\" pouType=\"program\"><interface/><body><FBD/></body></pou>"
+               "<pou name=\"P\" pouType=\"functionBlock\"><interface>" +
+               kVarA + "</interface><body><SFC>" + two_steps() + "</SFC></body></pou>"));
   ASSERT_EQ(p.pous.size(), 3u);
   EXPECT_EQ(p.pous[0].kind, model::PouKind::Function);
   const std::string xml = plcopen_round_trip(p);
@@ -180,11 +197,12 @@ TEST(PlcopenWriter, StBodyOfAnSfcPouIsASecondBody) {
   auto p = load_xml(document(
       "<pou name=\"P\" pouType=\"functionBlock\"><interface>" + std::string(kVarA) +
       "<localVars><variable name=\"t\"><type><derived name=\"TON\"/></type></variable></localVars>"
-      "</interface><body><SFC>" + two_steps() + "</SFC></body></pou>"));
+      "</interface><body><SFC>" +
+      two_steps() + "</SFC></body></pou>"));
   auto& pou = p.pous.at(0);
   ASSERT_TRUE(pou.body.empty());
-  pou.body.push_back(model::make_fb_call(
-      "t", {{"IN", model::make_name("a")}, {"PT", model::make_time(2000)}}));
+  pou.body.push_back(
+      model::make_fb_call("t", {{"IN", model::make_name("a")}, {"PT", model::make_time(2000)}}));
   pou.body.push_back(model::make_assign("x", model::make_member("t", "Q")));
   const std::string xml = plcopen_round_trip(p);
   EXPECT_NE(xml.find("t(IN := a, PT := T#2s);"), std::string::npos) << xml;
@@ -206,9 +224,9 @@ TEST(PlcopenWriter, MacroStepsKeepTheirBodies) {
     <transition localId="4"><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
       <condition><inline name=""><ST><xhtml:p>NOT a</xhtml:p></ST></inline></condition></transition>
     <jumpStep localId="5" targetName="S0"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></jumpStep>)";
-  const auto p = load_xml(document("<pou name=\"P\" pouType=\"program\"><interface>" +
-                                   std::string(kVarA) + "</interface><body><SFC>" + sfc +
-                                   "</SFC></body></pou>"));
+  const auto p =
+      load_xml(document("<pou name=\"P\" pouType=\"program\"><interface>" + std::string(kVarA) +
+                        "</interface><body><SFC>" + sfc + "</SFC></body></pou>"));
   ASSERT_EQ(p.pous.at(0).charts.size(), 2u);
   const std::string xml = plcopen_round_trip(p);
   EXPECT_NE(xml.find("<macroStep"), std::string::npos) << xml;
@@ -216,10 +234,15 @@ TEST(PlcopenWriter, MacroStepsKeepTheirBodies) {
 
 TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
   const auto p = load_xml(document(
-      "<pou name=\"P\" pouType=\"program\"><interface>" + std::string(kVarA) + "</interface><actions>"
-      "<action name=\"Loop\"><body>" + st("FOR i := 1 TO 3 DO x := a; END_FOR;") + "</body></action>"
+      "<pou name=\"P\" pouType=\"program\"><interface>" + std::string(kVarA) +
+      "</interface><actions>"
+      "<action name=\"Loop\"><body>" +
+      st("FOR i := 1 TO 3 DO x := a; END_FOR;") +
+      "</body></action>"
       "<action name=\"Il\"><body><IL><xhtml:p><![CDATA[LD a\nST x]]></xhtml:p></IL></body></action>"
-      "</actions><body><SFC>" + two_steps(R"(<actionBlock localId="9"><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
+      "</actions><body><SFC>" +
+      two_steps(
+          R"(<actionBlock localId="9"><connectionPointIn><connection refLocalId="3"/></connectionPointIn>
         <action localId="10" qualifier="N"><reference name="Loop"/></action><action localId="11"><reference name="Il"/></action></actionBlock>)") +
       "</SFC></body></pou>"));
   const auto* loop = p.pous.at(0).find_action("Loop");
@@ -243,19 +266,29 @@ TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
 TEST(PlcopenWriter, DottedActionNamesBooleanActionsAndCodesysStepActions) {
   // Corpus 09: `Motor.ACT_TurnClockwise` (an instance's action) and CODESYS entry/exit actions.
   const std::string attrs =
-      "<addData><data name=\"http://www.3s-software.com/plcopenxml/sfc/element\" handleUnknown=\"implementation\">"
+      "<addData><data name=\"http://www.3s-software.com/plcopenxml/sfc/element\" "
+      "handleUnknown=\"implementation\">"
       "<attributes><attribute guid=\"a6b08bd8-b696-47e3-9cbf-7408b61c9ff8\">S1_entry</attribute>"
-      "<attribute guid=\"a2621e18-7de3-4ea6-ae6d-89e9e0b7befd\">S1_exit</attribute></attributes></data></addData>";
-  std::string sfc = two_steps(R"(<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+      "<attribute "
+      "guid=\"a2621e18-7de3-4ea6-ae6d-89e9e0b7befd\">S1_exit</attribute></attributes></data></"
+      "addData>";
+  std::string sfc = two_steps(
+      R"(<actionBlock localId="9"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
         <action localId="10" qualifier="S"><reference name="Motor.ACT_TurnClockwise"/></action>
         <action localId="11" qualifier="N"><reference name="x"/></action></actionBlock>)");
   const std::string s1 = "<step localId=\"3\" name=\"S1\">";
   sfc.insert(sfc.find(s1) + s1.size(), attrs);
-  const auto p = load_xml(document(
-      "<pou name=\"P\" pouType=\"functionBlock\"><interface>" + std::string(kVarA) + "</interface><actions>"
-      "<action name=\"S1_entry\"><body>" + st("x := TRUE;") + "</body></action>"
-      "<action name=\"S1_exit\"><body>" + st("x := FALSE;") + "</body></action></actions>"
-      "<body><SFC>" + sfc + "</SFC></body></pou>"));
+  const auto p = load_xml(document("<pou name=\"P\" pouType=\"functionBlock\"><interface>" +
+                                   std::string(kVarA) +
+                                   "</interface><actions>"
+                                   "<action name=\"S1_entry\"><body>" +
+                                   st("x := TRUE;") +
+                                   "</body></action>"
+                                   "<action name=\"S1_exit\"><body>" +
+                                   st("x := FALSE;") +
+                                   "</body></action></actions>"
+                                   "<body><SFC>" +
+                                   sfc + "</SFC></body></pou>"));
   const auto& pou = p.pous.at(0);
   ASSERT_EQ(pou.associations.size(), 4u);
   EXPECT_EQ(pou.associations[0].action, "Motor.ACT_TurnClockwise");
@@ -328,10 +361,14 @@ END_PROGRAM
          "names step 'Nowhere', which the chart does not declare");
   expect([](model::Pou& u) { u.charts[0].transitions[0].sources.clear(); },
          "transition without source or target steps");
-  expect([](model::Pou& u) {
-    u.charts[0].transitions[0].guard = model::make_unary(model::ExprKind::Rising, model::make_name("x"));
-  }, "rising edge in a transition condition");
-  expect([](model::Pou& u) { u.charts[0].transitions[0].priority = -1; }, "negative transition priority");
+  expect(
+      [](model::Pou& u) {
+        u.charts[0].transitions[0].guard =
+            model::make_unary(model::ExprKind::Rising, model::make_name("x"));
+      },
+      "rising edge in a transition condition");
+  expect([](model::Pou& u) { u.charts[0].transitions[0].priority = -1; },
+         "negative transition priority");
   expect([](model::Pou& u) { u.associations[0].qualifier = model::Qualifier::L; },
          "timed qualifier L of action 'Act' without a duration");
   expect([](model::Pou& u) { u.associations[0].condition = model::make_name("x"); },
@@ -342,15 +379,19 @@ END_PROGRAM
   expect([](model::Pou& u) { u.forcing_orders.emplace_back(); }, "Grafcet forcing orders");
   expect([](model::Pou& u) { u.charts[0].steps[1].kind = model::StepKind::Enclosing; },
          "Grafcet enclosing step 'B'");
-  expect([](model::Pou& u) {
-    u.actions[0].body_unsupported = true;
-    u.actions[0].body.clear();
-  }, "action 'Act', whose graphical body sfcv does not model");
-  expect([](model::Pou& u) {
-    u.body_unsupported = true;
-    u.unsupported_language = "FBD";
-    u.unsupported_text = "not xml <";
-  }, "the FBD body of POU 'r', which sfcv does not model");
+  expect(
+      [](model::Pou& u) {
+        u.actions[0].body_unsupported = true;
+        u.actions[0].body.clear();
+      },
+      "action 'Act', whose graphical body sfcv does not model");
+  expect(
+      [](model::Pou& u) {
+        u.body_unsupported = true;
+        u.unsupported_language = "FBD";
+        u.unsupported_text = "not xml <";
+      },
+      "the FBD body of POU 'r', which sfcv does not model");
   // A POU whose only body is ST is a program (issue 18): written, and read back the same.
   auto st_only = base;
   st_only.pous[0].charts.clear();
@@ -399,7 +440,8 @@ std::vector<std::string> manifest_files(const std::filesystem::path& corpus) {
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // An IEC model: printed in its natural form (IEC text or PLCopen XML) and, whatever its source,
@@ -449,7 +491,8 @@ TEST(RoundTripCorpus, EveryManifestFilePrintsAndReloadsToTheSameModel) {
       // PLCopen graph cannot wire a transition to an undeclared step, and the writer says so.
       test::iec_round_trip(p);
       EXPECT_NE(refusal(p).find("names step 'I1a', which the chart does not declare"),
-                std::string::npos) << refusal(p);
+                std::string::npos)
+          << refusal(p);
     } else {
       ASSERT_TRUE(ends_with(f, ".xml") || ends_with(f, ".st") || ends_with(f, ".sfc")) << f;
       iec_round_trips(p, !ends_with(f, ".xml"), f);

@@ -26,25 +26,30 @@ const char* const kNs10 = "http://www.plcopen.org/xml/tc6.xsd";
 // A project with one POU `P` (program) holding `interface`, `extra` (actions, transitions) and
 // an SFC body `sfc`.
 [[maybe_unused]] std::string project(const std::string& sfc, const std::string& interface = "",
-                    const std::string& extra = "", const char* ns = kNs201) {
+                                     const std::string& extra = "", const char* ns = kNs201) {
   return std::string("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"") + ns +
          "\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">\n"
-         "<fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" creationDateTime=\"2024-01-01T00:00:00\"/>\n"
+         "<fileHeader companyName=\"t\" productName=\"t\" productVersion=\"1\" "
+         "creationDateTime=\"2024-01-01T00:00:00\"/>\n"
          "<contentHeader name=\"demo\"/>\n<types><dataTypes/><pous>\n"
-         "<pou name=\"P\" pouType=\"program\">\n<interface>" + interface + "</interface>\n" +
-         extra + "\n<body><SFC>\n" + sfc + "\n</SFC></body>\n</pou>\n</pous></types>\n</project>\n";
+         "<pou name=\"P\" pouType=\"program\">\n<interface>" +
+         interface + "</interface>\n" + extra + "\n<body><SFC>\n" + sfc +
+         "\n</SFC></body>\n</pou>\n</pous></types>\n</project>\n";
 }
 
-[[maybe_unused]] std::string step(int id, const std::string& name, int from = -1, bool initial = false) {
+[[maybe_unused]] std::string step(int id, const std::string& name, int from = -1,
+                                  bool initial = false) {
   std::string s = "<step localId=\"" + std::to_string(id) + "\" name=\"" + name + "\"" +
                   (initial ? " initialStep=\"true\"" : "") + ">";
   if (from >= 0)
-    s += "<connectionPointIn><connection refLocalId=\"" + std::to_string(from) + "\"/></connectionPointIn>";
+    s += "<connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+         "\"/></connectionPointIn>";
   return s + "<connectionPointOut/></step>\n";
 }
 
 [[maybe_unused]] std::string inline_st(const std::string& text) {
-  return "<condition><inline name=\"\"><ST><xhtml:p><![CDATA[" + text + "]]></xhtml:p></ST></inline></condition>";
+  return "<condition><inline name=\"\"><ST><xhtml:p><![CDATA[" + text +
+         "]]></xhtml:p></ST></inline></condition>";
 }
 
 [[maybe_unused]] std::string transition(int id, int from, const std::string& condition) {
@@ -72,7 +77,8 @@ std::string errors_of(const LoadResult& r) {
   });
 }
 
-[[maybe_unused]] const model::Diagnostic* find_message(const LoadResult& r, Severity sev, const std::string& part) {
+[[maybe_unused]] const model::Diagnostic* find_message(const LoadResult& r, Severity sev,
+                                                       const std::string& part) {
   for (const auto& d : r.diagnostics)
     if (d.severity == sev && d.message.find(part) != std::string::npos) return &d;
   return nullptr;
@@ -83,11 +89,13 @@ std::string errors_of(const LoadResult& r) {
   return v;
 }
 
-[[maybe_unused]] const model::Chart& chart0(const LoadResult& r) { return r.project->pous.at(0).charts.at(0); }
-
+[[maybe_unused]] const model::Chart& chart0(const LoadResult& r) {
+  return r.project->pous.at(0).charts.at(0);
+}
 
 // A two-step loop S0 -> S1 -> S0 whose first condition is `cond1`.
-std::string two_steps(const std::string& cond1 = inline_st("a"), const std::string& extra_sfc = "") {
+std::string two_steps(const std::string& cond1 = inline_st("a"),
+                      const std::string& extra_sfc = "") {
   return step(1, "S0", -1, true) + transition(2, 1, cond1) + step(3, "S1", 2) +
          transition(4, 3, inline_st("NOT a")) + jump(5, 4, "S0") + extra_sfc;
 }
@@ -96,7 +104,9 @@ const std::string kVarA =
     "<inputVars><variable name=\"a\"><type><BOOL/></type></variable>"
     "<variable name=\"b\"><type><BOOL/></type></variable></inputVars>";
 
-model::ExprPtr guard0(const LoadResult& r) { return chart0(r).transitions.at(0).guard; }
+model::ExprPtr guard0(const LoadResult& r) {
+  return chart0(r).transitions.at(0).guard;
+}
 
 // ------------------------------------------------------------------------------ namespaces, BOM
 
@@ -129,10 +139,12 @@ TEST(PlcopenXml, PrefixedElementsAreMatchedByLocalName) {
   std::string out;
   for (std::size_t i = 0; i < doc.size(); ++i) {
     out += doc[i];
-    if (doc[i] == '<' && i + 1 < doc.size() && (std::isalpha(static_cast<unsigned char>(doc[i + 1]))) &&
+    if (doc[i] == '<' && i + 1 < doc.size() &&
+        (std::isalpha(static_cast<unsigned char>(doc[i + 1]))) &&
         doc.compare(i + 1, 6, "xhtml:") != 0)
       out += "p:";
-    if (doc[i] == '<' && i + 2 < doc.size() && doc[i + 1] == '/' && doc.compare(i + 2, 6, "xhtml:") != 0) {
+    if (doc[i] == '<' && i + 2 < doc.size() && doc[i + 1] == '/' &&
+        doc.compare(i + 2, 6, "xhtml:") != 0) {
       out += "/p:";
       ++i;
     }
@@ -159,7 +171,8 @@ TEST(PlcopenXml, BomDoesNotShiftLineNumbers) {
     const auto* d = find_message(r, Severity::Error, "");
     ASSERT_NE(d, nullptr);
     // The condition is on the line of transition 2.
-    const auto line = 1 + std::count(doc.begin(), doc.begin() + static_cast<long>(doc.find("a AND AND b")), '\n');
+    const auto line =
+        1 + std::count(doc.begin(), doc.begin() + static_cast<long>(doc.find("a AND AND b")), '\n');
     EXPECT_EQ(d->where.line, line) << d->str();
     EXPECT_EQ(d->where.file, "bom.xml");
   }
@@ -174,7 +187,8 @@ TEST(PlcopenXml, InlineConditionInXhtmlParagraph) {
 }
 
 TEST(PlcopenXml, NameOfAnInlineConditionNamesTheTransition) {
-  const auto named = "<condition><inline name=\"T_go\"><ST><xhtml:p>a</xhtml:p></ST></inline></condition>";
+  const auto named =
+      "<condition><inline name=\"T_go\"><ST><xhtml:p>a</xhtml:p></ST></inline></condition>";
   const auto r = load_plcopen_xml(project(two_steps(named), kVarA), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(chart0(r).transitions.at(0).name, "T_go");
@@ -182,9 +196,12 @@ TEST(PlcopenXml, NameOfAnInlineConditionNamesTheTransition) {
 }
 
 TEST(PlcopenXml, StBodyBesideAnSfcBodyIsThePouBody) {
-  const std::string doc = project(two_steps(), kVarA + "<localVars><variable name=\"x\"><type><BOOL/></type></variable></localVars>");
+  const std::string doc = project(
+      two_steps(),
+      kVarA + "<localVars><variable name=\"x\"><type><BOOL/></type></variable></localVars>");
   std::string with_st = doc;
-  with_st.insert(with_st.find("</pou>"), "<body><ST><xhtml:p><![CDATA[x := a AND b;]]></xhtml:p></ST></body>");
+  with_st.insert(with_st.find("</pou>"),
+                 "<body><ST><xhtml:p><![CDATA[x := a AND b;]]></xhtml:p></ST></body>");
   const auto r = load_plcopen_xml(with_st, "st.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   ASSERT_EQ(r.project->pous.at(0).body.size(), 1u);
@@ -192,7 +209,8 @@ TEST(PlcopenXml, StBodyBesideAnSfcBodyIsThePouBody) {
   EXPECT_FALSE(has_message(r, Severity::Note, "not modelled"));
   // One that does not parse is marked unmodelled (running the POU is refused), with a warning.
   std::string bad = doc;
-  bad.insert(bad.find("</pou>"), "<body><ST><xhtml:p><![CDATA[x := SQRT(a);]]></xhtml:p></ST></body>");
+  bad.insert(bad.find("</pou>"),
+             "<body><ST><xhtml:p><![CDATA[x := SQRT(a);]]></xhtml:p></ST></body>");
   const auto b = load_plcopen_xml(bad, "st.xml");
   ASSERT_TRUE(b.ok()) << errors_of(b);
   EXPECT_TRUE(b.project->pous.at(0).body.empty());
@@ -210,7 +228,8 @@ TEST(PlcopenXml, InlineConditionAsRawText) {
 
 TEST(PlcopenXml, InlineConditionInXhtmlElement) {
   const auto cond =
-      "<condition><inline><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a &amp; b</xhtml></ST></inline></condition>";
+      "<condition><inline><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a &amp; "
+      "b</xhtml></ST></inline></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond), kVarA, "", kNs200), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "a AND b");
@@ -218,9 +237,13 @@ TEST(PlcopenXml, InlineConditionInXhtmlElement) {
 
 TEST(PlcopenXml, NestedMemberChainsInConditionsAreKeptAsMembers) {
   // TwinCAT (corpus 09): `Table.AtStack.DI_SwitchTrue` reads a member of a member of an FB.
-  const auto extra = "<inVariable localId=\"9\"><connectionPointOut/><expression>"
-                     "Table.AtStack.DI_SwitchTrue AND NOT a.b.c.d AND x.y AND S0.T &lt; T#1.5s</expression></inVariable>";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"9\"/></connectionPointIn></condition>";
+  const auto extra =
+      "<inVariable localId=\"9\"><connectionPointOut/><expression>"
+      "Table.AtStack.DI_SwitchTrue AND NOT a.b.c.d AND x.y AND S0.T &lt; "
+      "T#1.5s</expression></inVariable>";
+  const auto cond =
+      "<condition><connectionPointIn><connection "
+      "refLocalId=\"9\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA, "", kNs200), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto g = guard0(r);
@@ -244,11 +267,14 @@ TEST(PlcopenXml, NegatedCondition) {
 
 TEST(PlcopenXml, ReferenceToAnStTransition) {
   const auto transitions =
-      "<transitions><transition name=\"GO\"><body><ST><xhtml:p><![CDATA[a AND b]]></xhtml:p></ST></body></transition>"
-      "<transition name=\"GO2\"><body><ST><xhtml:p><![CDATA[GO2 := a OR b;]]></xhtml:p></ST></body></transition></transitions>";
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, "<condition><reference name=\"GO\"/></condition>") +
-                          step(3, "S1", 2) + transition(4, 3, "<condition><reference name=\"go2\"/></condition>") +
-                          jump(5, 4, "S0");
+      "<transitions><transition name=\"GO\"><body><ST><xhtml:p><![CDATA[a AND "
+      "b]]></xhtml:p></ST></body></transition>"
+      "<transition name=\"GO2\"><body><ST><xhtml:p><![CDATA[GO2 := a OR "
+      "b;]]></xhtml:p></ST></body></transition></transitions>";
+  const std::string sfc =
+      step(1, "S0", -1, true) +
+      transition(2, 1, "<condition><reference name=\"GO\"/></condition>") + step(3, "S1", 2) +
+      transition(4, 3, "<condition><reference name=\"go2\"/></condition>") + jump(5, 4, "S0");
   const auto r = load_plcopen_xml(project(sfc, kVarA, transitions), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(chart0(r).transitions[0].guard), "a AND b");
@@ -265,7 +291,8 @@ TEST(PlcopenXml, ReferenceToAnFbdTransition) {
     <outVariable localId="44"><connectionPointIn><connection refLocalId="42" formalParameter="OUT"/></connectionPointIn>
       <expression>STOP</expression></outVariable></FBD></body></transition></transitions>)";
   const auto r = load_plcopen_xml(
-      project(two_steps("<condition><reference name=\"STOP\"/></condition>"), kVarA, transitions), "c.xml");
+      project(two_steps("<condition><reference name=\"STOP\"/></condition>"), kVarA, transitions),
+      "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "NOT a");
 }
@@ -277,7 +304,8 @@ TEST(PlcopenXml, ReferenceToAnLdTransition) {
     <coil localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>T1</variable></coil>
     </LD></body></transition></transitions>)";
   const auto r = load_plcopen_xml(
-      project(two_steps("<condition><reference name=\"T1\"/></condition>"), kVarA, transitions), "c.xml");
+      project(two_steps("<condition><reference name=\"T1\"/></condition>"), kVarA, transitions),
+      "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "NOT a");
 }
@@ -290,8 +318,12 @@ TEST(PlcopenXml, ReferenceToAnUndeclaredTransitionIsAnError) {
 }
 
 TEST(PlcopenXml, ConditionWiredToAnInVariable) {
-  const auto extra = "<inVariable localId=\"9\"><connectionPointOut/><expression>S0.T &gt; T#6s</expression></inVariable>";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"9\"/></connectionPointIn></condition>";
+  const auto extra =
+      "<inVariable localId=\"9\"><connectionPointOut/><expression>S0.T &gt; "
+      "T#6s</expression></inVariable>";
+  const auto cond =
+      "<condition><connectionPointIn><connection "
+      "refLocalId=\"9\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA, "", kNs200), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto g = guard0(r);
@@ -319,11 +351,16 @@ TEST(PlcopenXml, ConditionWiredToFbdLogicWithNegatedPins) {
     </inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
     <inVariable localId="15"><connectionPointOut/><expression>n</expression></inVariable>
     <inVariable localId="16"><connectionPointOut/><expression>3</expression></inVariable>)";
-  const auto vars = std::string(kVarA) + "<localVars><variable name=\"n\"><type><INT/></type></variable></localVars>";
+  const auto vars = std::string(kVarA) +
+                    "<localVars><variable name=\"n\"><type><INT/></type></variable></localVars>";
   const std::string sfc = step(1, "S0", -1, true) +
-                          transition(2, 1, "<condition><connectionPointIn><connection refLocalId=\"13\" formalParameter=\"OUT\"/></connectionPointIn></condition>") +
+                          transition(2, 1,
+                                     "<condition><connectionPointIn><connection refLocalId=\"13\" "
+                                     "formalParameter=\"OUT\"/></connectionPointIn></condition>") +
                           step(3, "S1", 2) +
-                          transition(4, 3, "<condition><connectionPointIn><connection refLocalId=\"14\"/></connectionPointIn></condition>") +
+                          transition(4, 3,
+                                     "<condition><connectionPointIn><connection "
+                                     "refLocalId=\"14\"/></connectionPointIn></condition>") +
                           jump(5, 4, "S0") + extra;
   const auto r = load_plcopen_xml(project(sfc, vars), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
@@ -341,8 +378,12 @@ TEST(PlcopenXml, ConditionWiredToLdContactsInSeriesAndParallel) {
     <contact localId="22" negated="true"><connectionPointIn><connection refLocalId="21"/></connectionPointIn><connectionPointOut/><variable>b</variable></contact>
     <contact localId="23"><connectionPointIn><connection refLocalId="20"/></connectionPointIn><connectionPointOut/><variable>c</variable></contact>
     <contact localId="24"><connectionPointIn><connection refLocalId="22"/><connection refLocalId="23"/></connectionPointIn><connectionPointOut/><variable>d</variable></contact>)";
-  const auto vars = std::string(kVarA) + "<localVars><variable name=\"c\"><type><BOOL/></type></variable><variable name=\"d\"><type><BOOL/></type></variable></localVars>";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"24\"/></connectionPointIn></condition>";
+  const auto vars = std::string(kVarA) +
+                    "<localVars><variable name=\"c\"><type><BOOL/></type></variable><variable "
+                    "name=\"d\"><type><BOOL/></type></variable></localVars>";
+  const auto cond =
+      "<condition><connectionPointIn><connection "
+      "refLocalId=\"24\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), vars), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "(a AND NOT b OR c) AND d");
@@ -368,17 +409,22 @@ TEST(PlcopenXml, FunctionBlockInAConditionNetworkBecomesACallInThePouBody) {
       <variable formalParameter="S1"><connectionPointIn><connection refLocalId="33"/></connectionPointIn></variable>
       <variable formalParameter="R"><connectionPointIn><connection refLocalId="32" formalParameter="Q"/></connectionPointIn></variable>
     </inputVariables><inOutVariables/><outputVariables><variable formalParameter="Q1"><connectionPointOut/></variable></outputVariables></block>)";
-  const auto vars = std::string(kVarA) +
-                    "<localVars><variable name=\"TON3\"><type><derived name=\"TON\"/></type></variable>"
-                    "<variable name=\"SR0\"><type><derived name=\"SR\"/></type></variable></localVars>";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"35\" formalParameter=\"OUT\"/></connectionPointIn></condition>";
+  const auto vars =
+      std::string(kVarA) +
+      "<localVars><variable name=\"TON3\"><type><derived name=\"TON\"/></type></variable>"
+      "<variable name=\"SR0\"><type><derived name=\"SR\"/></type></variable></localVars>";
+  const auto cond =
+      "<condition><connectionPointIn><connection refLocalId=\"35\" "
+      "formalParameter=\"OUT\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), vars), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "TON3.Q OR b");
   const auto& pou = r.project->pous[0];
   // SR0 is called first (TON3 needs SR0.Q1); SR0 reads TON3.Q of the previous call.
-  EXPECT_EQ(model::to_st(pou.body), "SR0(S1 := a, R := TON3.Q);\nTON3(IN := SR0.Q1, PT := T#2s);\n");
-  EXPECT_TRUE(has_message(r, Severity::Warning, "(SR0, TON3) are modelled as calls in the POU body"));
+  EXPECT_EQ(model::to_st(pou.body),
+            "SR0(S1 := a, R := TON3.Q);\nTON3(IN := SR0.Q1, PT := T#2s);\n");
+  EXPECT_TRUE(
+      has_message(r, Severity::Warning, "(SR0, TON3) are modelled as calls in the POU body"));
   ASSERT_NE(pou.find_variable("TON3"), nullptr);
   EXPECT_EQ(pou.find_variable("TON3")->type.fb, model::StandardFb::TON);
 }
@@ -389,12 +435,15 @@ TEST(PlcopenXml, UnsupportedBlockInAConditionIsAPreciseError) {
       <variable formalParameter="IN"><connectionPointIn><connection refLocalId="13"/></connectionPointIn></variable>
     </inputVariables><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
     <inVariable localId="13"><connectionPointOut/><expression>a</expression></inVariable>)";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"12\"/></connectionPointIn></condition>";
+  const auto cond =
+      "<condition><connectionPointIn><connection "
+      "refLocalId=\"12\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA), "c.xml");
   EXPECT_FALSE(r.ok());
   const auto* d = find_message(r, Severity::Error, "unsupported: function SQRT");
   ASSERT_NE(d, nullptr) << errors_of(r);
-  EXPECT_EQ(d->where.element_path, "/project/types/pous/pou[@name='P']/body/SFC/block[@localId='12']");
+  EXPECT_EQ(d->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/block[@localId='12']");
 }
 
 TEST(PlcopenXml, ConditionThroughConnectorAndContinuation) {
@@ -402,7 +451,9 @@ TEST(PlcopenXml, ConditionThroughConnectorAndContinuation) {
     <inVariable localId="10"><connectionPointOut/><expression>a</expression></inVariable>
     <connector localId="11" name="wire"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></connector>
     <continuation localId="12" name="WIRE"><connectionPointOut/></continuation>)";
-  const auto cond = "<condition><connectionPointIn><connection refLocalId=\"12\"/></connectionPointIn></condition>";
+  const auto cond =
+      "<condition><connectionPointIn><connection "
+      "refLocalId=\"12\"/></connectionPointIn></condition>";
   const auto r = load_plcopen_xml(project(two_steps(cond, extra), kVarA), "c.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(model::to_st(guard0(r)), "a");
@@ -411,11 +462,12 @@ TEST(PlcopenXml, ConditionThroughConnectorAndContinuation) {
 // ----------------------------------------------------------------------- divergence, convergence
 
 TEST(PlcopenXml, SelectionDivergenceAndConvergence) {
-  const std::string sfc = step(1, "A", -1, true) +
+  const std::string sfc =
+      step(1, "A", -1, true) +
       R"(<selectionDivergence localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
          <connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
-      transition(3, 2, inline_st("a")) + transition(4, 2, inline_st("b")) +
-      step(5, "B", 3) + step(6, "C", 4) + transition(7, 5, inline_st("a")) + transition(8, 6, inline_st("b")) +
+      transition(3, 2, inline_st("a")) + transition(4, 2, inline_st("b")) + step(5, "B", 3) +
+      step(6, "C", 4) + transition(7, 5, inline_st("a")) + transition(8, 6, inline_st("b")) +
       R"(<selectionConvergence localId="9"><connectionPointIn><connection refLocalId="7"/></connectionPointIn>
          <connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/></selectionConvergence>)" +
       jump(10, 9, "A");
@@ -434,7 +486,8 @@ TEST(PlcopenXml, SelectionDivergenceAndConvergence) {
 }
 
 TEST(PlcopenXml, SimultaneousDivergenceAndConvergence) {
-  const std::string sfc = step(1, "A", -1, true) + transition(2, 1, inline_st("a")) +
+  const std::string sfc =
+      step(1, "A", -1, true) + transition(2, 1, inline_st("a")) +
       R"(<simultaneousDivergence localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn>
          <connectionPointOut/><connectionPointOut/><connectionPointOut/></simultaneousDivergence>)" +
       step(4, "B1", 3) + step(5, "B2", 3) + step(6, "B3", 3) +
@@ -455,17 +508,18 @@ TEST(PlcopenXml, SimultaneousDivergenceAndConvergence) {
 // convergence, and the transition after it leaves whichever of those steps is active; a branch
 // that ends in a jump is still wired into the convergence, though control leaves it by the jump.
 TEST(PlcopenXml, TransitionAfterASelectionConvergenceLeavesEachBranchStep) {
-  const std::string sfc = step(1, "A", -1, true) +
+  const std::string sfc =
+      step(1, "A", -1, true) +
       R"(<selectionDivergence localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
          <connectionPointOut/><connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
       transition(3, 2, inline_st("a")) + transition(4, 2, inline_st("b")) +
-      transition(5, 2, inline_st("NOT a AND NOT b")) +
-      step(6, "B", 3) + step(7, "C", 4) + jump(8, 5, "A") +
+      transition(5, 2, inline_st("NOT a AND NOT b")) + step(6, "B", 3) + step(7, "C", 4) +
+      jump(8, 5, "A") +
       R"(<selectionConvergence localId="9"><connectionPointIn><connection refLocalId="6"/></connectionPointIn>
          <connectionPointIn><connection refLocalId="7"/></connectionPointIn>
          <connectionPointIn><connection refLocalId="8"/></connectionPointIn><connectionPointOut/></selectionConvergence>)" +
-      transition(10, 9, inline_st("a AND b")) + step(11, "D", 10) + transition(12, 11, inline_st("TRUE")) +
-      jump(13, 12, "A");
+      transition(10, 9, inline_st("a AND b")) + step(11, "D", 10) +
+      transition(12, 11, inline_st("TRUE")) + jump(13, 12, "A");
   const auto r = load_plcopen_xml(project(sfc, kVarA), "twincat.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& t = chart0(r).transitions;
@@ -484,13 +538,15 @@ TEST(PlcopenXml, TransitionAfterASelectionConvergenceLeavesEachBranchStep) {
 // A simultaneous convergence joins its branches; a selection convergence on one of them
 // multiplies the joined source sets.
 TEST(PlcopenXml, SimultaneousConvergenceOfASelectionConvergenceJoinsEachAlternative) {
-  const std::string sfc = step(1, "A", -1, true) + transition(2, 1, inline_st("a")) +
+  const std::string sfc =
+      step(1, "A", -1, true) + transition(2, 1, inline_st("a")) +
       R"(<simultaneousDivergence localId="3"><connectionPointIn><connection refLocalId="2"/></connectionPointIn>
          <connectionPointOut/><connectionPointOut/></simultaneousDivergence>)" +
       step(4, "P", 3) + step(5, "Q", 3) +
       R"(<selectionDivergence localId="6"><connectionPointIn><connection refLocalId="5"/></connectionPointIn>
          <connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
-      transition(7, 6, inline_st("a")) + transition(8, 6, inline_st("b")) + step(9, "Q1", 7) + step(10, "Q2", 8) +
+      transition(7, 6, inline_st("a")) + transition(8, 6, inline_st("b")) + step(9, "Q1", 7) +
+      step(10, "Q2", 8) +
       R"(<selectionConvergence localId="11"><connectionPointIn><connection refLocalId="9"/></connectionPointIn>
          <connectionPointIn><connection refLocalId="10"/></connectionPointIn><connectionPointOut/></selectionConvergence>)" +
       R"(<simultaneousConvergence localId="12"><connectionPointIn><connection refLocalId="4"/></connectionPointIn>
@@ -507,17 +563,19 @@ TEST(PlcopenXml, SimultaneousConvergenceOfASelectionConvergenceJoinsEachAlternat
 
 // A jump ends its branch: a transition wired directly after one has no source step.
 TEST(PlcopenXml, TransitionAfterAJumpIsAnError) {
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) + jump(3, 2, "S0") +
-                          transition(4, 3, inline_st("b")) + step(5, "S1", 4);
+  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) +
+                          jump(3, 2, "S0") + transition(4, 3, inline_st("b")) + step(5, "S1", 4);
   const auto r = load_plcopen_xml(project(sfc, kVarA), "afterjump.xml");
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(has_message(r, Severity::Error, "follows jumpStep")) << errors_of(r);
 }
 
 TEST(PlcopenXml, PriorityAttribute) {
-  const std::string sfc = step(1, "S0", -1, true) +
+  const std::string sfc =
+      step(1, "S0", -1, true) +
       R"(<transition localId="2" priority="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>)" +
-      inline_st("a") + "</transition>" + step(3, "S1", 2) + transition(4, 3, inline_st("b")) + jump(5, 4, "S0");
+      inline_st("a") + "</transition>" + step(3, "S1", 2) + transition(4, 3, inline_st("b")) +
+      jump(5, 4, "S0");
   const auto r = load_plcopen_xml(project(sfc, kVarA), "prio.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(chart0(r).transitions[0].priority, 2);
@@ -525,19 +583,23 @@ TEST(PlcopenXml, PriorityAttribute) {
 }
 
 TEST(PlcopenXml, JumpToAnUnknownStepIsAnError) {
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) + jump(3, 2, "NOWHERE");
+  const std::string sfc =
+      step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) + jump(3, 2, "NOWHERE");
   const auto r = load_plcopen_xml(project(sfc, kVarA), "jump.xml");
   EXPECT_FALSE(r.ok());
   const auto* d = find_message(r, Severity::Error, "jump to unknown step 'NOWHERE'");
   ASSERT_NE(d, nullptr) << errors_of(r);
-  EXPECT_EQ(d->where.element_path, "/project/types/pous/pou[@name='P']/body/SFC/jumpStep[@localId='3']");
+  EXPECT_EQ(d->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/jumpStep[@localId='3']");
 }
 
 TEST(PlcopenXml, MacroStepWithABodyBecomesAMacroStepAndAChart) {
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) +
+  const std::string sfc =
+      step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) +
       R"(<macroStep localId="3" name="M"><connectionPointIn><connection refLocalId="2"/></connectionPointIn>
-         <connectionPointOut/><body><SFC>)" + step(1, "M_in", -1, true) + transition(2, 1, inline_st("b")) +
-      step(3, "M_out", 2) + "</SFC></body></macroStep>" + transition(4, 3, inline_st("NOT a")) + jump(5, 4, "S0");
+         <connectionPointOut/><body><SFC>)" +
+      step(1, "M_in", -1, true) + transition(2, 1, inline_st("b")) + step(3, "M_out", 2) +
+      "</SFC></body></macroStep>" + transition(4, 3, inline_st("NOT a")) + jump(5, 4, "S0");
   const auto r = load_plcopen_xml(project(sfc, kVarA), "macro.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
@@ -552,7 +614,8 @@ TEST(PlcopenXml, MacroStepWithABodyBecomesAMacroStepAndAChart) {
 }
 
 TEST(PlcopenXml, MacroStepWithoutABodyIsUnsupported) {
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) +
+  const std::string sfc =
+      step(1, "S0", -1, true) + transition(2, 1, inline_st("a")) +
       R"(<macroStep localId="3" name="M"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></macroStep>)";
   const auto r = load_plcopen_xml(project(sfc, kVarA), "macro.xml");
   EXPECT_FALSE(r.ok());
@@ -562,25 +625,32 @@ TEST(PlcopenXml, MacroStepWithoutABodyIsUnsupported) {
 // ----------------------------------------------------------------------------------- actions
 
 std::string action_block(int id, int step_id, const std::string& actions) {
-  return "<actionBlock localId=\"" + std::to_string(id) + "\"><connectionPointIn><connection refLocalId=\"" +
-         std::to_string(step_id) + "\"/></connectionPointIn>" + actions + "</actionBlock>\n";
+  return "<actionBlock localId=\"" + std::to_string(id) +
+         "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(step_id) +
+         "\"/></connectionPointIn>" + actions + "</actionBlock>\n";
 }
 
 const std::string kOutputs =
     "<outputVars><variable name=\"x\"><type><BOOL/></type></variable>"
     "<variable name=\"y\"><type><BOOL/></type></variable>"
     "<variable name=\"n\"><type><INT/></type></variable></outputVars>"
-    "<localVars><variable name=\"delay\"><type><TIME/></type><initialValue><simpleValue value=\"T#3s\"/></initialValue></variable></localVars>";
+    "<localVars><variable name=\"delay\"><type><TIME/></type><initialValue><simpleValue "
+    "value=\"T#3s\"/></initialValue></variable></localVars>";
 
 TEST(PlcopenXml, ActionBlockQualifiersDurationsAndIndicators) {
-  const auto blocks = action_block(20, 1,
-      R"(<action localId="0"><reference name="x"/></action>
+  const auto blocks =
+      action_block(20, 1,
+                   R"(<action localId="0"><reference name="x"/></action>
          <action localId="0" qualifier="S"><reference name="y"/></action>
          <action localId="0" qualifier="D" duration="T#2s"><reference name="ACT"/></action>
          <action localId="0" qualifier="L" duration="delay" indicator="y"><reference name="ACT"/></action>)") +
       action_block(21, 3, R"(<action qualifier="R"><reference name="y"/></action>)");
-  const auto actions = "<actions><action name=\"ACT\"><body><ST><xhtml:p><![CDATA[n := n + 1;]]></xhtml:p></ST></body></action></actions>";
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions), "act.xml");
+  const auto actions =
+      "<actions><action name=\"ACT\"><body><ST><xhtml:p><![CDATA[n := n + "
+      "1;]]></xhtml:p></ST></body></action></actions>";
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions),
+      "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
   ASSERT_EQ(pou.associations.size(), 5u);
@@ -610,23 +680,28 @@ TEST(PlcopenXml, ActionBlockQualifiersDurationsAndIndicators) {
 }
 
 TEST(PlcopenXml, TimedQualifierWithoutDurationAndUnknownQualifierAreErrors) {
-  const auto blocks = action_block(20, 1,
-      R"(<action localId="0" qualifier="D"><reference name="x"/></action>
+  const auto blocks =
+      action_block(20, 1,
+                   R"(<action localId="0" qualifier="D"><reference name="x"/></action>
          <action localId="0" qualifier="Q"><reference name="x"/></action>)");
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs), "act.xml");
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs), "act.xml");
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(has_message(r, Severity::Error, "qualifier D needs a duration"));
   const auto* d = find_message(r, Severity::Error, "unknown action qualifier 'Q'");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->where.element_path,
-            "/project/types/pous/pou[@name='P']/body/SFC/actionBlock[@localId='20']/action[@localId='0'][2]");
+            "/project/types/pous/pou[@name='P']/body/SFC/actionBlock[@localId='20']/"
+            "action[@localId='0'][2]");
 }
 
 TEST(PlcopenXml, InlineActionBodiesBecomeNamedActions) {
-  const auto blocks = action_block(20, 3,
+  const auto blocks = action_block(
+      20, 3,
       R"(<action localId="0" qualifier="P"><inline><ST><xhtml:p><![CDATA[x := TRUE;]]></xhtml:p></ST></inline></action>
          <action localId="0"><inline><ST><xhtml:p><![CDATA[IF a THEN n := 1; ELSE n := 2; END_IF;]]></xhtml:p></ST></inline></action>)");
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs), "act.xml");
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs), "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
   const auto* a1 = pou.find_action("INLINE1");
@@ -643,10 +718,14 @@ TEST(PlcopenXml, InlineActionBodiesBecomeNamedActions) {
 }
 
 TEST(PlcopenXml, InlineActionNamesAvoidDeclaredNames) {
-  const auto blocks = action_block(20, 1, R"(<action><inline><ST>x := TRUE;</ST></inline></action>)") +
-                      action_block(21, 3, R"(<action><inline><ST>y := TRUE;</ST></inline></action>)");
-  const auto actions = "<actions><action name=\"INLINE1\"><body><ST>n := 1;</ST></body></action></actions>";
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions), "act.xml");
+  const auto blocks =
+      action_block(20, 1, R"(<action><inline><ST>x := TRUE;</ST></inline></action>)") +
+      action_block(21, 3, R"(<action><inline><ST>y := TRUE;</ST></inline></action>)");
+  const auto actions =
+      "<actions><action name=\"INLINE1\"><body><ST>n := 1;</ST></body></action></actions>";
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions),
+      "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
   EXPECT_EQ(model::to_st(pou.find_action("INLINE1")->body), "n := 1;\n");
@@ -657,10 +736,15 @@ TEST(PlcopenXml, InlineActionNamesAvoidDeclaredNames) {
 }
 
 TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
-  const auto blocks = action_block(20, 3,
+  const auto blocks = action_block(
+      20, 3,
       R"(<action localId="0"><inline><ST><xhtml:p><![CDATA[FOR i := 1 TO 3 DO n := i; END_FOR;]]></xhtml:p></ST></inline></action>)");
-  const auto actions = "<actions><action name=\"IL_ACT\"><body><IL><xhtml:p><![CDATA[LD a\nST x]]></xhtml:p></IL></body></action></actions>";
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions), "act.xml");
+  const auto actions =
+      "<actions><action name=\"IL_ACT\"><body><IL><xhtml:p><![CDATA[LD a\nST "
+      "x]]></xhtml:p></IL></body></action></actions>";
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions),
+      "act.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);  // loads: the semantics refuses the actions instead
   const auto& pou = r.project->pous[0];
   const auto* inl = pou.find_action("INLINE1");
@@ -669,13 +753,15 @@ TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
   EXPECT_TRUE(inl->body.empty());
   const auto* w = find_message(r, Severity::Warning, "action 'INLINE1': body not modelled");
   ASSERT_NE(w, nullptr);
-  EXPECT_NE(w->where.element_path.find("actionBlock[@localId='20']/action[@localId='0']/inline/ST"), std::string::npos)
+  EXPECT_NE(w->where.element_path.find("actionBlock[@localId='20']/action[@localId='0']/inline/ST"),
+            std::string::npos)
       << w->where.element_path;
   EXPECT_TRUE(has_message(r, Severity::Note, "unsupported"));
   const auto* il = pou.find_action("IL_ACT");
   ASSERT_NE(il, nullptr);
   EXPECT_TRUE(il->body_unsupported);
-  EXPECT_TRUE(has_message(r, Severity::Warning, "action 'IL_ACT': body not modelled (bodies in IL are not modelled)"));
+  EXPECT_TRUE(has_message(r, Severity::Warning,
+                          "action 'IL_ACT': body not modelled (bodies in IL are not modelled)"));
 }
 
 TEST(PlcopenXml, LdActionBodyBecomesStatements) {
@@ -692,9 +778,12 @@ TEST(PlcopenXml, LdActionBodyBecomesStatements) {
     <coil localId="6"><connectionPointIn><connection refLocalId="2"/></connectionPointIn><variable>y</variable></coil>
     <rightPowerRail localId="7"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></rightPowerRail>
     </LD></body></action></actions>)";
-  const auto vars = std::string(kVarA) + kOutputs + "<localVars><variable name=\"T1\"><type><derived name=\"TON\"/></type></variable></localVars>";
+  const auto vars = std::string(kVarA) + kOutputs +
+                    "<localVars><variable name=\"T1\"><type><derived "
+                    "name=\"TON\"/></type></variable></localVars>";
   const auto blocks = action_block(20, 3, R"(<action><reference name="BLINK"/></action>)");
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), vars, actions), "ld.xml");
+  const auto r =
+      load_plcopen_xml(project(two_steps(inline_st("a"), blocks), vars, actions), "ld.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto* act = r.project->pous[0].find_action("BLINK");
   ASSERT_NE(act, nullptr);
@@ -704,13 +793,20 @@ TEST(PlcopenXml, LdActionBodyBecomesStatements) {
 }
 
 TEST(PlcopenXml, ActionWithAnSfcBodyIsANestedChart) {
-  const auto actions = std::string("<actions><action name=\"SUB\"><body><SFC>") + step(0, "Init", -1, true) +
+  const auto actions =
+      std::string("<actions><action name=\"SUB\"><body><SFC>") + step(0, "Init", -1, true) +
       "<inVariable localId=\"4\"><connectionPointOut/><expression>FALSE</expression></inVariable>" +
-      transition(5, 0, "<condition><connectionPointIn><connection refLocalId=\"4\"/></connectionPointIn></condition>") +
-      jump(6, 5, "Init") + action_block(7, 0, "<action qualifier=\"N\"><reference name=\"x\"/></action>") +
+      transition(5, 0,
+                 "<condition><connectionPointIn><connection "
+                 "refLocalId=\"4\"/></connectionPointIn></condition>") +
+      jump(6, 5, "Init") +
+      action_block(7, 0, "<action qualifier=\"N\"><reference name=\"x\"/></action>") +
       "</SFC></body></action></actions>";
-  const auto blocks = action_block(20, 3, R"(<action qualifier="S" duration=""><reference name="SUB"/></action>)");
-  const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions, kNs200), "nested.xml");
+  const auto blocks =
+      action_block(20, 3, R"(<action qualifier="S" duration=""><reference name="SUB"/></action>)");
+  const auto r = load_plcopen_xml(
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions, kNs200),
+      "nested.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous[0];
   ASSERT_EQ(pou.charts.size(), 2u);
@@ -733,12 +829,17 @@ TEST(PlcopenXml, ActionWithAnSfcBodyIsANestedChart) {
 
 // ---------------------------------------------------------------------------- CODESYS, TwinCAT
 
-std::string codesys_step(int id, const std::string& name, int from, bool initial, const std::string& attributes) {
+std::string codesys_step(int id, const std::string& name, int from, bool initial,
+                         const std::string& attributes) {
   std::string s = "<step localId=\"" + std::to_string(id) + "\" name=\"" + name + "\"" +
                   (initial ? " initialStep=\"true\"" : "") + ">";
-  s += from >= 0 ? "<connectionPointIn><connection refLocalId=\"" + std::to_string(from) + "\"/></connectionPointIn>"
+  s += from >= 0 ? "<connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+                       "\"/></connectionPointIn>"
                  : "<connectionPointIn/>";
-  return s + "<connectionPointOut formalParameter=\"sfc\"/><addData><data name=\"http://www.3s-software.com/plcopenxml/sfc/element\" handleUnknown=\"implementation\"><attributes xmlns=\"\">" +
+  return s +
+         "<connectionPointOut formalParameter=\"sfc\"/><addData><data "
+         "name=\"http://www.3s-software.com/plcopenxml/sfc/element\" "
+         "handleUnknown=\"implementation\"><attributes xmlns=\"\">" +
          attributes + "</attributes></data></addData></step>\n";
 }
 
@@ -748,18 +849,26 @@ TEST(PlcopenXml, CodesysEntryActiveAndExitActions) {
       "<attribute guid=\"a6b08bd8-b696-47e3-9cbf-7408b61c9ff8\">Run_entry</attribute>"
       "<attribute guid=\"700a583f-b4d4-43e4-8c14-629c7cd3bec8\">Run_active</attribute>"
       "<attribute guid=\"a2621e18-7de3-4ea6-ae6d-89e9e0b7befd\">Run_exit</attribute>";
-  const std::string sfc = codesys_step(0, "Init", -1, true, "") +
+  const std::string sfc =
+      codesys_step(0, "Init", -1, true, "") +
       "<inVariable localId=\"1\"><connectionPointOut/><expression>a</expression></inVariable>" +
-      transition(2, 0, "<condition><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn></condition>") +
+      transition(2, 0,
+                 "<condition><connectionPointIn><connection "
+                 "refLocalId=\"1\"/></connectionPointIn></condition>") +
       codesys_step(3, "Run", 2, false, attrs) +
       "<inVariable localId=\"4\"><connectionPointOut/><expression>NOT a</expression></inVariable>" +
-      transition(5, 3, "<condition><connectionPointIn><connection refLocalId=\"4\"/></connectionPointIn></condition>") +
+      transition(5, 3,
+                 "<condition><connectionPointIn><connection "
+                 "refLocalId=\"4\"/></connectionPointIn></condition>") +
       jump(6, 5, "Init");
   std::string actions = "<actions>";
   for (const char* n : {"Run_entry", "Run_active", "Run_exit"})
-    actions += std::string("<action name=\"") + n + "\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">x := NOT x;</xhtml></ST></body></action>";
+    actions += std::string("<action name=\"") + n +
+               "\"><body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">x := NOT "
+               "x;</xhtml></ST></body></action>";
   actions += "</actions>";
-  const auto r = load_plcopen_xml(project(sfc, std::string(kVarA) + kOutputs, actions, kNs200), "codesys.xml");
+  const auto r =
+      load_plcopen_xml(project(sfc, std::string(kVarA) + kOutputs, actions, kNs200), "codesys.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& as = r.project->pous[0].associations;
   ASSERT_EQ(as.size(), 3u);
@@ -779,8 +888,10 @@ TEST(PlcopenXml, PousUnderAddDataAreRead) {
   const std::string pou = doc.substr(pous_begin, pous_end - pous_begin);
   doc.erase(pous_begin, pous_end - pous_begin);
   const std::string add_data =
-      "<addData><data name=\"http://www.3s-software.com/plcopenxml/application\" handleUnknown=\"implementation\">"
-      "<resource name=\"R\"><addData><data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">" +
+      "<addData><data name=\"http://www.3s-software.com/plcopenxml/application\" "
+      "handleUnknown=\"implementation\">"
+      "<resource name=\"R\"><addData><data name=\"http://www.3s-software.com/plcopenxml/pou\" "
+      "handleUnknown=\"implementation\">" +
       pou + "</data></addData></resource></data></addData>";
   doc.insert(doc.find("</project>"), add_data);
   const auto r = load_plcopen_xml(doc, "twincat.xml");
@@ -789,17 +900,25 @@ TEST(PlcopenXml, PousUnderAddDataAreRead) {
   EXPECT_EQ(r.project->pous[0].name, "P");
   EXPECT_EQ(model::count_steps(*r.project), 2u);
   EXPECT_EQ(chart0(r).transitions[0].where.element_path,
-            "/project/addData/data[@name='http://www.3s-software.com/plcopenxml/application']/resource[@name='R']"
-            "/addData/data[@name='http://www.3s-software.com/plcopenxml/pou']/pou[@name='P']/body/SFC/transition[@localId='2']");
+            "/project/addData/data[@name='http://www.3s-software.com/plcopenxml/application']/"
+            "resource[@name='R']"
+            "/addData/data[@name='http://www.3s-software.com/plcopenxml/pou']/pou[@name='P']/body/"
+            "SFC/transition[@localId='2']");
 }
 
 TEST(PlcopenXml, StBodyCallingSfcActionsIsRead) {
   // TwinCAT: an FB with an ST body and an action written in SFC, started from the ST body.
-  std::string doc = std::string("<?xml version=\"1.0\"?><project xmlns=\"") + kNs200 + "\"><types><pous>"
-      "<pou name=\"Cyl\" pouType=\"functionBlock\"><interface>" + kVarA + "</interface>"
-      "<actions><action name=\"ACT_Extend\"><body><SFC>" + two_steps() + "</SFC></body></action></actions>"
-      "<body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Extend();</xhtml></ST></body></pou>"
-      "</pous></types></project>";
+  std::string doc = std::string("<?xml version=\"1.0\"?><project xmlns=\"") + kNs200 +
+                    "\"><types><pous>"
+                    "<pou name=\"Cyl\" pouType=\"functionBlock\"><interface>" +
+                    kVarA +
+                    "</interface>"
+                    "<actions><action name=\"ACT_Extend\"><body><SFC>" +
+                    two_steps() +
+                    "</SFC></body></action></actions>"
+                    "<body><ST><xhtml "
+                    "xmlns=\"http://www.w3.org/1999/xhtml\">ACT_Extend();</xhtml></ST></body></pou>"
+                    "</pous></types></project>";
   const auto r = load_plcopen_xml(doc, "tc.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_EQ(r.project->pous[0].charts.size(), 1u);
@@ -812,7 +931,8 @@ TEST(PlcopenXml, StBodyCallingSfcActionsIsRead) {
 }
 
 TEST(PlcopenXml, InstanceActionReferencesAreKeptAsNames) {
-  const auto blocks = action_block(20, 3, R"(<action qualifier="N"><reference name="Motor.ACT_TurnClockwise"/></action>)");
+  const auto blocks = action_block(
+      20, 3, R"(<action qualifier="N"><reference name="Motor.ACT_TurnClockwise"/></action>)");
   const auto r = load_plcopen_xml(project(two_steps(inline_st("a"), blocks), kVarA), "inst.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   ASSERT_EQ(r.project->pous[0].associations.size(), 1u);
@@ -855,32 +975,38 @@ TEST(PlcopenXml, VariablesDirectionsTypesAndInitialValues) {
   EXPECT_EQ(pou.find_variable("e")->direction, model::VarDirection::External);
   for (const char* ignored : {"f", "s", "u"}) {
     EXPECT_EQ(pou.find_variable(ignored), nullptr) << ignored;
-    EXPECT_TRUE(has_message(r, Severity::Warning, std::string("of variable '") + ignored + "': variable ignored"));
+    EXPECT_TRUE(has_message(r, Severity::Warning,
+                            std::string("of variable '") + ignored + "': variable ignored"));
   }
   EXPECT_TRUE(has_message(r, Severity::Warning, "unsupported type REAL of variable 'f'"));
   EXPECT_TRUE(has_message(r, Severity::Warning, "unsupported type MyFb of variable 'u'"));
 }
 
 TEST(PlcopenXml, UnreadableInitialValueIsAnError) {
-  const auto vars = R"(<localVars><variable name="a"><type><BOOL/></type><initialValue><simpleValue value="MAYBE"/></initialValue></variable>
+  const auto vars =
+      R"(<localVars><variable name="a"><type><BOOL/></type><initialValue><simpleValue value="MAYBE"/></initialValue></variable>
     <variable name="n"><type><SINT/></type><initialValue><simpleValue value="300"/></initialValue></variable></localVars>)";
   const auto r = load_plcopen_xml(project(two_steps(), vars), "vars.xml");
   EXPECT_FALSE(r.ok());
-  EXPECT_TRUE(has_message(r, Severity::Error, "cannot read the initial value 'MAYBE' of variable 'a' (BOOL)"));
-  EXPECT_TRUE(has_message(r, Severity::Error, "initial value 300 of variable 'n' is out of the range of SINT"));
+  EXPECT_TRUE(has_message(r, Severity::Error,
+                          "cannot read the initial value 'MAYBE' of variable 'a' (BOOL)"));
+  EXPECT_TRUE(has_message(r, Severity::Error,
+                          "initial value 300 of variable 'n' is out of the range of SINT"));
 }
 
 // ------------------------------------------------------------------------------ malformed input
 
 TEST(PlcopenXml, UnknownRefLocalIdIsLocated) {
-  const std::string sfc = step(1, "S0", -1, true) + transition(2, 99, inline_st("a")) + step(3, "S1", 2);
+  const std::string sfc =
+      step(1, "S0", -1, true) + transition(2, 99, inline_st("a")) + step(3, "S1", 2);
   const auto r = load_plcopen_xml(project(sfc, kVarA), "bad.xml");
   EXPECT_FALSE(r.ok());
   const auto* d = find_message(r, Severity::Error, "unknown localId '99'");
   ASSERT_NE(d, nullptr) << errors_of(r);
   EXPECT_EQ(d->where.file, "bad.xml");
   EXPECT_EQ(d->where.element_path,
-            "/project/types/pous/pou[@name='P']/body/SFC/transition[@localId='2']/connectionPointIn/connection");
+            "/project/types/pous/pou[@name='P']/body/SFC/transition[@localId='2']/"
+            "connectionPointIn/connection");
   EXPECT_GT(d->where.line, 0);
   EXPECT_NE(d->str().find("bad.xml:"), std::string::npos);
 }
@@ -891,12 +1017,13 @@ TEST(PlcopenXml, DanglingTransitionIsAnError) {
   EXPECT_FALSE(r.ok());
   const auto* d = find_message(r, Severity::Error, "dangling transition (localId 2)");
   ASSERT_NE(d, nullptr) << errors_of(r);
-  EXPECT_EQ(d->where.element_path, "/project/types/pous/pou[@name='P']/body/SFC/transition[@localId='2']");
+  EXPECT_EQ(d->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/transition[@localId='2']");
 }
 
 TEST(PlcopenXml, TransitionWithoutSourceIsAnError) {
-  const std::string sfc = step(1, "S0", -1, true) +
-      "<transition localId=\"2\">" + inline_st("a") + "</transition>" + step(3, "S1", 2);
+  const std::string sfc = step(1, "S0", -1, true) + "<transition localId=\"2\">" + inline_st("a") +
+                          "</transition>" + step(3, "S1", 2);
   const auto r = load_plcopen_xml(project(sfc, kVarA), "bad.xml");
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(has_message(r, Severity::Error, "transition (localId 2) has no source step"));
@@ -932,12 +1059,14 @@ TEST(PlcopenXml, BadConditionTextIsALocatedError) {
   ASSERT_FALSE(r.diagnostics.empty());
   const auto* d = find_message(r, Severity::Error, "");
   ASSERT_NE(d, nullptr);
-  EXPECT_NE(d->where.element_path.find("transition[@localId='2']/condition/inline/ST"), std::string::npos)
+  EXPECT_NE(d->where.element_path.find("transition[@localId='2']/condition/inline/ST"),
+            std::string::npos)
       << d->where.element_path;
 }
 
 TEST(PlcopenXml, MalformedXmlIsAnErrorWithLineAndColumn) {
-  const auto r = load_plcopen_xml("<?xml version=\"1.0\"?>\n<project>\n  <types>\n</project>\n", "broken.xml");
+  const auto r =
+      load_plcopen_xml("<?xml version=\"1.0\"?>\n<project>\n  <types>\n</project>\n", "broken.xml");
   EXPECT_FALSE(r.project.has_value());
   ASSERT_EQ(r.diagnostics.size(), 1u);
   const auto& d = r.diagnostics[0];
@@ -962,7 +1091,6 @@ TEST(PlcopenXml, LoadFileDetectsPlcopenXml) {
   EXPECT_EQ(model::count_steps(*r.project), 2u);
 }
 
-
 // ------------------------------------------------------------------- POU bodies (issue 18)
 
 // Beremiz leaves transitions wired to nothing in its files; its code generator ignores them.
@@ -978,13 +1106,17 @@ TEST(PlcopenXml, StrayTransitionIsAWarningAndIgnored) {
 std::string body_project(const std::string& body, const std::string& interface = kVarA) {
   return "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"" + std::string(kNs201) +
          "\" xmlns:xhtml=\"http://www.w3.org/1999/xhtml\">\n<contentHeader name=\"demo\"/>\n"
-         "<types><dataTypes/><pous>\n<pou name=\"P\" pouType=\"program\">\n<interface>" + interface +
-         "<outputVars><variable name=\"x\"><type><BOOL/></type></variable></outputVars></interface>\n"
-         "<body>" + body + "</body>\n</pou>\n</pous></types>\n</project>\n";
+         "<types><dataTypes/><pous>\n<pou name=\"P\" pouType=\"program\">\n<interface>" +
+         interface +
+         "<outputVars><variable "
+         "name=\"x\"><type><BOOL/></type></variable></outputVars></interface>\n"
+         "<body>" +
+         body + "</body>\n</pou>\n</pous></types>\n</project>\n";
 }
 
 TEST(PlcopenXml, StBodyOfAPouWithoutSfcIsItsProgram) {
-  const auto r = load_plcopen_xml(body_project("<ST><xhtml:p>x := a AND NOT b;</xhtml:p></ST>"), "st.xml");
+  const auto r =
+      load_plcopen_xml(body_project("<ST><xhtml:p>x := a AND NOT b;</xhtml:p></ST>"), "st.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& pou = r.project->pous.at(0);
   EXPECT_FALSE(pou.has_sfc());
@@ -996,9 +1128,11 @@ TEST(PlcopenXml, StBodyOfAPouWithoutSfcIsItsProgram) {
 TEST(PlcopenXml, LdEdgeContactBecomesAnRTrigInstance) {
   const std::string ld =
       "<LD><leftPowerRail localId=\"1\"><connectionPointOut/></leftPowerRail>"
-      "<contact localId=\"2\" edge=\"rising\"><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
+      "<contact localId=\"2\" edge=\"rising\"><connectionPointIn><connection "
+      "refLocalId=\"1\"/></connectionPointIn>"
       "<variable>a</variable></contact>"
-      "<contact localId=\"3\" negated=\"true\"><connectionPointIn><connection refLocalId=\"2\"/></connectionPointIn>"
+      "<contact localId=\"3\" negated=\"true\"><connectionPointIn><connection "
+      "refLocalId=\"2\"/></connectionPointIn>"
       "<variable>b</variable></contact>"
       "<coil localId=\"4\"><connectionPointIn><connection refLocalId=\"3\"/></connectionPointIn>"
       "<variable>x</variable></coil></LD>";
@@ -1008,7 +1142,8 @@ TEST(PlcopenXml, LdEdgeContactBecomesAnRTrigInstance) {
   const auto* edge = pou.find_variable("SFCV_EDGE_BODY_2");
   ASSERT_NE(edge, nullptr);
   EXPECT_EQ(edge->type.fb, model::StandardFb::R_TRIG);
-  EXPECT_EQ(model::to_st(pou.body), "SFCV_EDGE_BODY_2(CLK := a);\nx := SFCV_EDGE_BODY_2.Q AND NOT b;\n");
+  EXPECT_EQ(model::to_st(pou.body),
+            "SFCV_EDGE_BODY_2(CLK := a);\nx := SFCV_EDGE_BODY_2.Q AND NOT b;\n");
 }
 
 // An IL body, and an ST body calling an instance of a user function block (its variable was
@@ -1019,9 +1154,11 @@ TEST(PlcopenXml, BodiesThatCannotBeModelledAreMarked) {
   EXPECT_TRUE(r.project->pous.at(0).body_unsupported);
   EXPECT_EQ(r.project->pous.at(0).unsupported_language, "IL");
   EXPECT_TRUE(has_message(r, Severity::Warning, "its IL body is not modelled"));
-  const std::string user_fb =
-      kVarA + std::string("<localVars><variable name=\"m\"><type><derived name=\"Motor\"/></type></variable></localVars>");
-  r = load_plcopen_xml(body_project("<ST><xhtml:p>m(go := a); x := a;</xhtml:p></ST>", user_fb), "fb.xml");
+  const std::string user_fb = kVarA + std::string(
+                                          "<localVars><variable name=\"m\"><type><derived "
+                                          "name=\"Motor\"/></type></variable></localVars>");
+  r = load_plcopen_xml(body_project("<ST><xhtml:p>m(go := a); x := a;</xhtml:p></ST>", user_fb),
+                       "fb.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_TRUE(r.project->pous.at(0).body_unsupported);
   EXPECT_TRUE(r.project->pous.at(0).body.empty());

@@ -99,9 +99,9 @@ TEST(StExpression, Literals) {
   struct {
     const char* text;
     std::int64_t ms;
-  } times[] = {{"T#2s", 2000},          {"TIME#1m30s", 90000}, {"t#100ms", 100},
-               {"T#1.5s", 1500},        {"T#1h2m3s4ms", 3723004}, {"T#1h_30m", 5400000},
-               {"LTIME#1d", 86400000}, {"T#0.5m", 30000},     {"T#2000us", 2}};
+  } times[] = {{"T#2s", 2000},         {"TIME#1m30s", 90000},    {"t#100ms", 100},
+               {"T#1.5s", 1500},       {"T#1h2m3s4ms", 3723004}, {"T#1h_30m", 5400000},
+               {"LTIME#1d", 86400000}, {"T#0.5m", 30000},        {"T#2000us", 2}};
   for (const auto& t : times) {
     auto e = expr(t.text);
     ASSERT_NE(e, nullptr) << t.text;
@@ -124,8 +124,8 @@ TEST(StExpression, NamesAndMembers) {
 }
 
 TEST(StExpression, RoundTripsThroughThePrinter) {
-  const char* texts[] = {"a AND NOT (b OR c)", "x + 1 > y * (2 - z)", "NOT NOT a",
-                         "(a = b) = c",       "S1.T >= T#1500ms",    "a XOR b XOR c",
+  const char* texts[] = {"a AND NOT (b OR c)",  "x + 1 > y * (2 - z)", "NOT NOT a",
+                         "(a = b) = c",         "S1.T >= T#1500ms",    "a XOR b XOR c",
                          "-(a + 3) MOD 4 <> 0", "a OR b AND c OR d"};
   for (const char* t : texts) {
     auto e = expr(t);
@@ -203,7 +203,8 @@ TEST(StStatements, AssignmentsIfCaseAndCalls) {
     END_CASE
     t1(IN := x, PT := T#1s);
     r();
-  )", file_start(), d);
+  )",
+                                  file_start(), d);
   ASSERT_TRUE(d.empty()) << d[0].str();
   ASSERT_EQ(body.size(), 5u);
   EXPECT_EQ(body[0]->kind, model::StmtKind::Assign);
@@ -283,7 +284,8 @@ TEST(StVarSections, DeclarationsTypesAndInitialValues) {
     VAR_GLOBAL g : BOOL := 1; END_VAR
     VAR_EXTERNAL e : BOOL; END_VAR
     VAR_TEMP tmp : BOOL; END_VAR
-  )", file_start(), d);
+  )",
+                                 file_start(), d);
   ASSERT_TRUE(d.empty()) << d[0].str();
   ASSERT_EQ(vars.size(), 13u);
   EXPECT_EQ(vars[0].name, "a");
@@ -328,13 +330,13 @@ TEST(StVarSections, UnsupportedAndMalformedDeclarations) {
   EXPECT_EQ(err("VAR b : BOOL := T#1s; END_VAR"), "1:17: initial value does not match type BOOL");
   EXPECT_EQ(err("VAR n : INT(0..10) := 11; END_VAR"),
             "1:23: initial value 11 is outside INT(0..10)");
-  EXPECT_EQ(err("VAR n : SINT(0..300); END_VAR"),
-            "1:9: subrange 0..300 is empty or outside SINT");
+  EXPECT_EQ(err("VAR n : SINT(0..300); END_VAR"), "1:9: subrange 0..300 is empty or outside SINT");
   EXPECT_EQ(err("VAR n : INT := a + 1; END_VAR"),
             "1:16: unsupported: initial value that is not a literal");
   EXPECT_EQ(err("VAR t : TON := (PT := T#1s); END_VAR"),
             "1:16: unsupported: initial values of function block instances");
-  EXPECT_EQ(err("VAR a : BOOL END_VAR"), "1:14: expected ';' after the declaration, found 'END_VAR'");
+  EXPECT_EQ(err("VAR a : BOOL END_VAR"),
+            "1:14: expected ';' after the declaration, found 'END_VAR'");
   EXPECT_EQ(err("VAR a : BOOL;"), "1:14: expected END_VAR, found end of text");
   EXPECT_EQ(err("VAR_ACCESS a : BOOL; END_VAR"), "1:1: unsupported: VAR_ACCESS section");
   EXPECT_EQ(err("VAR a, b AT %IX1 : BOOL; END_VAR"), "1:8: AT can locate only one variable");

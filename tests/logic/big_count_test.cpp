@@ -5,7 +5,9 @@
 namespace sfcv::logic {
 namespace {
 
-BigCount power_of_two(unsigned k) { return BigCount(1).shifted_left(k); }
+BigCount power_of_two(unsigned k) {
+  return BigCount(1).shifted_left(k);
+}
 
 TEST(BigCount, PrintsPowersOfTwoPastSixtyFourBits) {
   EXPECT_EQ(BigCount().str(), "0");

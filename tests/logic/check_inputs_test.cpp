@@ -43,13 +43,16 @@ TEST(CheckInputs, ErrorsNameTheirSource) {
   in.fair = {"EF p"};
   const auto parsed = parse_check_inputs(in);
   ASSERT_EQ(parsed.diagnostics.size(), 2u);
-  EXPECT_EQ(parsed.diagnostics[0].str().rfind("--ctl 'AG (p':1:6", 0), 0u) << parsed.diagnostics[0].str();
-  EXPECT_EQ(parsed.diagnostics[1].str().rfind("--fair 'EF p':1:1", 0), 0u) << parsed.diagnostics[1].str();
+  EXPECT_EQ(parsed.diagnostics[0].str().rfind("--ctl 'AG (p':1:6", 0), 0u)
+      << parsed.diagnostics[0].str();
+  EXPECT_EQ(parsed.diagnostics[1].str().rfind("--fair 'EF p':1:1", 0), 0u)
+      << parsed.diagnostics[1].str();
 }
 
 TEST(PickInputs, ChangesAsFewInputsAsPossible) {
   const std::vector<semantics::InputVariable> inputs = {
-      {"a", model::Type::boolean()}, {"b", model::Type::boolean()},
+      {"a", model::Type::boolean()},
+      {"b", model::Type::boolean()},
       {"n", model::Type::integer("INT(0..9)", 0, 9)}};
   semantics::InputCondition c;
   c.cubes.push_back(semantics::InputCube{{{0, 1, 1}, {1, 1, 1}}});  // a & b

@@ -39,7 +39,8 @@ TEST(HistoryFormula, EdgesExpandToPrev) {
 TEST(HistoryFormula, ErrorsAreLocated) {
   auto r = parse_formula("AG prev(EF x)", "--ctl");
   ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_NE(r.diagnostics[0].message.find("prev() takes a propositional formula"), std::string::npos);
+  EXPECT_NE(r.diagnostics[0].message.find("prev() takes a propositional formula"),
+            std::string::npos);
   EXPECT_EQ(r.diagnostics[0].where.column, 9);
   r = parse_formula("prev(a & b) > 3", "--ctl");
   ASSERT_EQ(r.diagnostics.size(), 1u);

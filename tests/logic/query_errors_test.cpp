@@ -24,11 +24,11 @@ Located error_of(const std::string& q) {
   return {};
 }
 
-#define EXPECT_QUERY_ERROR(q, col, fragment)                                      \
-  do {                                                                            \
-    const auto err_ = error_of(q);                                                \
-    EXPECT_EQ(err_.column, col) << q << " -> " << err_.message;                   \
-    EXPECT_NE(err_.message.find(fragment), std::string::npos) << err_.message;    \
+#define EXPECT_QUERY_ERROR(q, col, fragment)                                   \
+  do {                                                                         \
+    const auto err_ = error_of(q);                                             \
+    EXPECT_EQ(err_.column, col) << q << " -> " << err_.message;                \
+    EXPECT_NE(err_.message.find(fragment), std::string::npos) << err_.message; \
   } while (0)
 
 TEST(QueryParse, SyntaxErrorsCarryTheirColumn) {
@@ -63,8 +63,9 @@ TEST(QueryParse, ErrorsOnLaterLinesCountLines) {
 }
 
 TEST(QuerySorts, OperandsMustHaveTheSameSort) {
-  EXPECT_QUERY_ERROR("Y + T", 3, "the left one is a set of situations, the right one a set of "
-                                 "evolutions");
+  EXPECT_QUERY_ERROR("Y + T", 3,
+                     "the left one is a set of situations, the right one a set of "
+                     "evolutions");
   EXPECT_QUERY_ERROR("Y0 * Steps", 4, "same sort");
   EXPECT_QUERY_ERROR("T - Y", 3, "same sort");
   EXPECT_QUERY_ERROR("Y = T", 3, "same sort");
@@ -100,10 +101,10 @@ TEST(QueryNames, UnknownAndMisusedNames) {
 }
 
 TEST(QueryParse, PrintsBackWithMinimalParentheses) {
-  for (const std::string q : {"Y - Pred(Y0, T)", "Emis((O1 | X1) & (O2 | X2)) = {}",
-                              "Y - (Y0 - Act({1, 10}))", "#Y >= 3 & !(Y0 = {})",
-                              "{e in Steps | Act({e}) - Pred(Des({e}), T) != {}}",
-                              "let a = Y; a * Y0"}) {
+  for (const std::string q :
+       {"Y - Pred(Y0, T)", "Emis((O1 | X1) & (O2 | X2)) = {}", "Y - (Y0 - Act({1, 10}))",
+        "#Y >= 3 & !(Y0 = {})", "{e in Steps | Act({e}) - Pred(Des({e}), T) != {}}",
+        "let a = Y; a * Y0"}) {
     EXPECT_EQ(logic::to_string(*logic::parse_query(q)), q);
   }
 }

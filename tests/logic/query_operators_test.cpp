@@ -65,7 +65,7 @@ TEST_F(QueryOperators, SuccAndPredIncludeTheStartSet) {
 TEST_F(QueryOperators, ActAndDes) {
   EXPECT_EQ(f.S("Act({X2, X3})"), (States{3}));
   EXPECT_EQ(f.S("Des({X1, X2})"), (States{2, 4}));
-  EXPECT_EQ(f.S("Act(X2)"), (States{1, 3}));     // one step without braces
+  EXPECT_EQ(f.S("Act(X2)"), (States{1, 3}));           // one step without braces
   EXPECT_EQ(f.S("Act({})"), (States{0, 1, 2, 3, 4}));  // vacuous
   EXPECT_EQ(f.S("Des(Steps)"), (States{4}));
   EXPECT_EQ(f.S("Act(Steps - {X1})"), (States{3}));

@@ -12,8 +12,7 @@ TEST(Expr, PrintsWithMinimalParentheses) {
   auto a = make_name("a"), b = make_name("b"), c = make_name("c");
   EXPECT_EQ(to_st(make_nary(ExprKind::And, {make_nary(ExprKind::Or, {a, b}), c})),
             "(a OR b) AND c");
-  EXPECT_EQ(to_st(make_nary(ExprKind::Or, {make_nary(ExprKind::And, {a, b}), c})),
-            "a AND b OR c");
+  EXPECT_EQ(to_st(make_nary(ExprKind::Or, {make_nary(ExprKind::And, {a, b}), c})), "a AND b OR c");
   EXPECT_EQ(to_st(make_binary(ExprKind::Sub, a, make_binary(ExprKind::Sub, b, c))), "a - (b - c)");
   EXPECT_EQ(to_st(make_unary(ExprKind::Not, make_member("S1", "X"))), "NOT S1.X");
   EXPECT_EQ(to_st(make_binary(ExprKind::Gt, make_member("Step0", "T"), make_time(6000))),

@@ -39,11 +39,14 @@ std::size_t count_at(const Diagnostics& ds, Severity sev, int line, const std::s
 PouBuilder loop() {
   PouBuilder b;
   b.input("go", "BOOL").chart("main").initial("S0").step("S1");
-  b.trans({"S0"}, {"S1"}, make_name("go")).trans({"S1"}, {"S0"}, make_unary(ExprKind::Not, make_name("go")));
+  b.trans({"S0"}, {"S1"}, make_name("go"))
+      .trans({"S1"}, {"S0"}, make_unary(ExprKind::Not, make_name("go")));
   return b;
 }
 
-TEST(Validate, ValidLoopIsClean) { EXPECT_CLEAN(validate(loop().project())); }
+TEST(Validate, ValidLoopIsClean) {
+  EXPECT_CLEAN(validate(loop().project()));
+}
 
 // ------------------------------------------------------------------------------------ names
 
@@ -97,17 +100,21 @@ TEST(Validate, UndeclaredStepIsOneErrorAtItsFirstReference) {
   const int t1 = b.line();
   b.trans({"A"}, {"B", "B"});  // B named twice
   const int t2 = b.line();
-  b.trans({"b"}, {"C"});       // and again, in another case
+  b.trans({"b"}, {"C"});  // and again, in another case
   const int t3 = b.line();
   b.trans({"C"}, {"A"});
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, t1, "transition to undeclared step 'B' (also named by the "
-                                              "transition at line " + std::to_string(t2) + ":1)"),
-            1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, t1,
+                     "transition to undeclared step 'B' (also named by the "
+                     "transition at line " +
+                         std::to_string(t2) + ":1)"),
+            1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, t2,
                      "transition to undeclared step 'C' (also named by the transition at line " +
                          std::to_string(t3) + ":1)"),
-            1u) << dump(ds);
+            1u)
+      << dump(ds);
   EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
 
@@ -165,7 +172,8 @@ TEST(Validate, UnreachableStepIsAWarning) {
   b.step("After").trans({"Lonely"}, {"After"});
   const auto ds = validate(b.project());
   EXPECT_EQ(count(ds, Severity::Error), 0u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Warning, lonely, "step 'Lonely' is unreachable"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, lonely, "step 'Lonely' is unreachable"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Warning, after, "step 'After' is unreachable"), 1u) << dump(ds);
 }
 
@@ -185,7 +193,7 @@ TEST(Validate, GrafcetSourceAndSinkTransitions) {
   const int source = b.line();
   b.trans({}, {"2"}, make_unary(ExprKind::Rising, make_name("a")));  // source transition
   const int sink = b.line();
-  b.trans({"2"}, {}, make_name("a"));                                // sink transition
+  b.trans({"2"}, {}, make_name("a"));  // sink transition
   EXPECT_CLEAN(validate(b.project(Dialect::Grafcet)));
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, source, "transition has no source step"), 1u) << dump(ds);
@@ -260,7 +268,8 @@ TEST(Validate, ConvergenceOfASelection) {
   // Alternative branches joined by a simultaneous convergence: waits forever.
   PouBuilder b;
   b.input("x", "BOOL").chart("main").initial("S0").step("A").step("B").step("J");
-  b.trans({"S0"}, {"A"}, make_name("x")).trans({"S0"}, {"B"}, make_unary(ExprKind::Not, make_name("x")));
+  b.trans({"S0"}, {"A"}, make_name("x"))
+      .trans({"S0"}, {"B"}, make_unary(ExprKind::Not, make_name("x")));
   const int join = b.line();
   b.trans({"A", "B"}, {"J"}).trans({"J"}, {"S0"});
   const auto ds = validate(b.project());
@@ -297,7 +306,8 @@ TEST(Validate, ConvergenceOfStepsOutsideAnyBranch) {
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, join,
                      "joins steps 'S0' and 'A', which are not parallel branches"),
-            1u) << dump(ds);
+            1u)
+      << dump(ds);
 }
 
 TEST(Validate, GrafcetIsNotHeldToTheIecParallelRule) {
@@ -359,7 +369,8 @@ TEST(Validate, AssociationNamesActionOrBooleanVariable) {
   const int bad_step = b.line();
   b.assoc("main", "S9", "Work");
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, undeclared, "undeclared action 'Nothing'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, undeclared, "undeclared action 'Nothing'"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, integer, "not BOOL"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Warning, input, "input variable 'go'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, bad_step, "undeclared step 'S9'"), 1u) << dump(ds);
@@ -373,8 +384,10 @@ TEST(Validate, ActionOfAnUndeclaredInstanceIsOutsideTheModel) {
   b.assoc("main", "S1", "Table.Motor.ACT_Stop").assoc("main", "S0", "Table.Motor.ACT_Stop");
   const auto ds = validate(b.project());
   EXPECT_EQ(count(ds, Severity::Error), 0u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Warning, first, "of 'Table.Motor', which this model does not declare"),
-            1u) << dump(ds);
+  EXPECT_EQ(
+      count_at(ds, Severity::Warning, first, "of 'Table.Motor', which this model does not declare"),
+      1u)
+      << dump(ds);
   EXPECT_EQ(count(ds, Severity::Warning), 1u) << dump(ds);
   // A dotted action of a declared variable is still an error.
   auto c = loop();
@@ -410,9 +423,11 @@ TEST(Validate, TimedQualifierNeedsADuration) {
   b.assoc("main", "S1", "lamp", Qualifier::DS);
   b.last_assoc().duration_variable = "n";
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, missing, "qualifier L of action 'lamp' needs a duration"), 1u)
+  EXPECT_EQ(count_at(ds, Severity::Error, missing, "qualifier L of action 'lamp' needs a duration"),
+            1u)
       << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, wrong, "duration variable 'n' has type INT"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, wrong, "duration variable 'n' has type INT"), 1u)
+      << dump(ds);
   EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
 
@@ -437,13 +452,16 @@ TEST(Validate, ComparisonsMustNotMixTypes) {
   b.trans({"A"}, {"B"}, make_binary(ExprKind::Eq, make_name("ok"), make_int(2)));
   const int time_int = b.line();
   b.trans({"B"}, {"C"}, make_binary(ExprKind::Gt, make_member("B", "T"), make_int(500)));
-  b.trans({"C"}, {"A"}, make_nary(ExprKind::And, {make_binary(ExprKind::Ge, make_member("c", "t"),
-                                                                make_time(500)),
-                                                    make_binary(ExprKind::Eq, make_name("ok"),
-                                                                make_int(1))}));  // 1 is a BOOL literal
+  b.trans(
+      {"C"}, {"A"},
+      make_nary(ExprKind::And,
+                {make_binary(ExprKind::Ge, make_member("c", "t"), make_time(500)),
+                 make_binary(ExprKind::Eq, make_name("ok"), make_int(1))}));  // 1 is a BOOL literal
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, bool_int, "comparison of BOOL with integer"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, time_int, "comparison of TIME with integer"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, bool_int, "comparison of BOOL with integer"), 1u)
+      << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, time_int, "comparison of TIME with integer"), 1u)
+      << dump(ds);
   EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
 
@@ -461,12 +479,13 @@ TEST(Validate, NamesResolveCaseInsensitivelyToVariablesStepsAndFbMembers) {
   b.input("Start", "BOOL").var("T1", "TON").var("C1", "CTU").var("w", "WORD");
   b.chart("main").initial("S1").step("S2").step("S3").step("S4");
   b.trans({"S1"}, {"S2"}, make_nary(ExprKind::And, {make_name("START"), make_member("s1", "x")}));
-  b.trans({"S2"}, {"S3"}, make_nary(ExprKind::Or, {make_member("t1", "q"),
-                                                    make_binary(ExprKind::Ge, make_member("T1", "ET"),
-                                                                make_time(100))}));
-  b.trans({"S3"}, {"S4"}, make_nary(ExprKind::And, {make_binary(ExprKind::Gt, make_member("C1", "CV"),
-                                                                make_int(3)),
-                                                    make_member("w", "3"), make_name("S2")}));
+  b.trans({"S2"}, {"S3"},
+          make_nary(ExprKind::Or,
+                    {make_member("t1", "q"),
+                     make_binary(ExprKind::Ge, make_member("T1", "ET"), make_time(100))}));
+  b.trans({"S3"}, {"S4"},
+          make_nary(ExprKind::And, {make_binary(ExprKind::Gt, make_member("C1", "CV"), make_int(3)),
+                                    make_member("w", "3"), make_name("S2")}));
   b.trans({"S4"}, {"S1"}, make_unary(ExprKind::Rising, make_name("start")));
   b.action_st("Run", {make_fb_call("T1", {{"IN", make_member("S2", "X")}, {"PT", make_time(5000)}}),
                       make_fb_call("c1", {{"CU", make_name("Start")}, {"PV", make_int(10)}})});
@@ -480,13 +499,16 @@ TEST(Validate, UnknownNamesAndMembers) {
   const int unknown = b.line();
   b.trans({"S1"}, {"S2"}, make_name("nowhere"));
   const int bad_member = b.line();
-  b.trans({"S2"}, {"S1"}, make_nary(ExprKind::Or, {make_member("T1", "DONE"), make_member("S1", "Y"),
-                                                    make_name("T1")}));
+  b.trans({"S2"}, {"S1"},
+          make_nary(ExprKind::Or,
+                    {make_member("T1", "DONE"), make_member("S1", "Y"), make_name("T1")}));
   const auto ds = validate(b.project());
   EXPECT_EQ(count_at(ds, Severity::Error, unknown, "unknown name 'nowhere'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, bad_member, "TON has no member 'DONE'"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, bad_member, "step 'S1' has no member 'Y'"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, bad_member, "function block instance 'T1' used as a value"), 1u)
+  EXPECT_EQ(count_at(ds, Severity::Error, bad_member, "step 'S1' has no member 'Y'"), 1u)
+      << dump(ds);
+  EXPECT_EQ(
+      count_at(ds, Severity::Error, bad_member, "function block instance 'T1' used as a value"), 1u)
       << dump(ds);
 }
 
@@ -509,21 +531,25 @@ TEST(Validate, AssignmentTypesAndTargets) {
   b.output("lamp", "BOOL").var("n", "INT").var("t", "TIME").var("T1", "TON");
   const auto at = [](int line) { return SourceLocation{"test.sfc", line, 3, {}}; };
   b.var("Other", "BOOL");
-  b.action_st("Act", {
-      make_assign("lamp", make_name("go"), at(100)),                                   // fine
-      make_assign("n", make_binary(ExprKind::Add, make_name("n"), make_int(1)), at(101)),  // fine
-      make_assign("t", make_binary(ExprKind::Mul, make_time(10), make_int(3)), at(102)),   // fine
-      make_assign("T1.PT", make_time(10), at(103)),                                    // fine
-      make_assign("lamp", make_int(1), at(111)),        // fine: 1 is a BOOL literal
-      make_assign("lamp", make_int(2), at(104)),        // INT into BOOL
-      make_assign("n", make_name("lamp"), at(105)),     // BOOL into INT
-      make_assign("go", make_bool(true), at(106)),      // input
-      make_assign("T1.Q", make_bool(true), at(107)),    // FB output
-      make_assign("S0.X", make_bool(true), at(108)),    // step flag
-      make_assign("ghost", make_bool(true), at(109)),   // undeclared
-      make_assign("t", make_binary(ExprKind::Add, make_time(10), make_int(3)), at(110)),  // TIME+INT
-      make_assign("GVL.Flag", make_bool(true), at(112)),  // outside the model: warning
-  });
+  b.action_st("Act",
+              {
+                  make_assign("lamp", make_name("go"), at(100)),  // fine
+                  make_assign("n", make_binary(ExprKind::Add, make_name("n"), make_int(1)),
+                              at(101)),  // fine
+                  make_assign("t", make_binary(ExprKind::Mul, make_time(10), make_int(3)),
+                              at(102)),                            // fine
+                  make_assign("T1.PT", make_time(10), at(103)),    // fine
+                  make_assign("lamp", make_int(1), at(111)),       // fine: 1 is a BOOL literal
+                  make_assign("lamp", make_int(2), at(104)),       // INT into BOOL
+                  make_assign("n", make_name("lamp"), at(105)),    // BOOL into INT
+                  make_assign("go", make_bool(true), at(106)),     // input
+                  make_assign("T1.Q", make_bool(true), at(107)),   // FB output
+                  make_assign("S0.X", make_bool(true), at(108)),   // step flag
+                  make_assign("ghost", make_bool(true), at(109)),  // undeclared
+                  make_assign("t", make_binary(ExprKind::Add, make_time(10), make_int(3)),
+                              at(110)),                               // TIME+INT
+                  make_assign("GVL.Flag", make_bool(true), at(112)),  // outside the model: warning
+              });
   const auto ds = validate(b.project());
   for (int line = 100; line <= 103; ++line)
     EXPECT_EQ(count_at(ds, Severity::Error, line, ""), 0u) << line << "\n" << dump(ds);
@@ -531,7 +557,8 @@ TEST(Validate, AssignmentTypesAndTargets) {
       << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 105, "assignment of a BOOL value to integer 'n'"), 1u)
       << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Warning, 106, "assignment to input variable 'go'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, 106, "assignment to input variable 'go'"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 111, ""), 0u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Warning, 112, "'GVL.Flag' refers to 'GVL'"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 107, "assignment to output 'T1.Q'"), 1u) << dump(ds);
@@ -548,21 +575,23 @@ TEST(Validate, QualifiedNamesOutsideTheModelAreWarnings) {
   main.var("flag", "BOOL").var("count", "INT");
   auto b = loop();
   const int g1 = b.line();
-  b.trans({"S0"}, {"S1"}, make_nary(ExprKind::And, {make_member("main", "FLAG"),
-                                                    make_member("GVL", "IsResetting")}));
+  b.trans(
+      {"S0"}, {"S1"},
+      make_nary(ExprKind::And, {make_member("main", "FLAG"), make_member("GVL", "IsResetting")}));
   const int g2 = b.line();
-  b.trans({"S1"}, {"S0"}, make_nary(ExprKind::Or, {make_member("gvl", "isresetting"),
-                                                   make_member("Table.Motor", "Stopped"),
-                                                   make_binary(ExprKind::Gt, make_member("Main", "count"),
-                                                               make_int(3))}));
+  b.trans({"S1"}, {"S0"},
+          make_nary(ExprKind::Or,
+                    {make_member("gvl", "isresetting"), make_member("Table.Motor", "Stopped"),
+                     make_binary(ExprKind::Gt, make_member("Main", "count"), make_int(3))}));
   const int g3 = b.line();
-  b.trans({"S1"}, {"S0"}, make_nary(ExprKind::Or, {make_member("S9", "X"),
-                                                   make_member("Main", "nothing"),
-                                                   make_member("Main", "flag")}));
+  b.trans({"S1"}, {"S0"},
+          make_nary(ExprKind::Or, {make_member("S9", "X"), make_member("Main", "nothing"),
+                                   make_member("Main", "flag")}));
   auto p = b.project();
   p.pous.push_back(main.pou());
   const auto ds = validate(p);
-  EXPECT_EQ(count_at(ds, Severity::Warning, g1, "'GVL.IsResetting' refers to 'GVL'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, g1, "'GVL.IsResetting' refers to 'GVL'"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Warning, g2, "'Table.Motor.Stopped' refers to 'Table'"), 1u)
       << dump(ds);
   EXPECT_EQ(count(ds, Severity::Warning), 2u) << dump(ds);  // GVL.IsResetting once
@@ -591,7 +620,8 @@ TEST(Validate, ControlStatementsAndFbCalls) {
                                    {"test.sfc", 202, 1, {}}),
                       make_fb_call("n", {}, {"test.sfc", 203, 1, {}})});
   const auto ds = validate(b.project());
-  EXPECT_EQ(count_at(ds, Severity::Error, 200, "the IF condition has type integer"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, 200, "the IF condition has type integer"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 201, "CASE selector has type BOOL"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 202, "parameter IN of TON expects BOOL"), 1u) << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, 202, "no parameter 'XX'"), 1u) << dump(ds);
@@ -610,8 +640,8 @@ PouBuilder grafcet_base() {
 
 TEST(Validate, GrafcetStoredActions) {
   auto b = grafcet_base();
-  b.stored("G0", "1", "lamp", make_int(1)).stored("G0", "2", "lamp", make_int(0),
-                                                    StoredWhen::Deactivation);
+  b.stored("G0", "1", "lamp", make_int(1))
+      .stored("G0", "2", "lamp", make_int(0), StoredWhen::Deactivation);
   b.stored("G0", "2", "c", make_binary(ExprKind::Add, make_name("c"), make_int(1)));
   EXPECT_CLEAN(validate(b.project(Dialect::Grafcet)));
   const int ghost = b.line();
@@ -638,7 +668,8 @@ TEST(Validate, GrafcetForcingOrders) {
   const int step = b.line();
   b.forcing("G0", "2", "G1", {"11", "99"});
   const auto ds = validate(b.project(Dialect::Grafcet));
-  EXPECT_EQ(count_at(ds, Severity::Error, chart, "undeclared partial grafcet 'G9'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, chart, "undeclared partial grafcet 'G9'"), 1u)
+      << dump(ds);
   EXPECT_EQ(count_at(ds, Severity::Error, step, "step '99'"), 1u) << dump(ds);
   EXPECT_EQ(count(ds, Severity::Error), 2u) << dump(ds);
 }
@@ -655,9 +686,12 @@ TEST(Validate, GrafcetEnclosingAndMacroSteps) {
   b.trans({"1"}, {"2"}).trans({"2"}, {"M3"}).trans({"M3"}, {"M4"}).trans({"M4"}, {"1"});
   b.chart("G1").step("10").trans({"10"}, {"10"});
   const auto ds = validate(b.project(Dialect::Grafcet));
-  EXPECT_EQ(count_at(ds, Severity::Error, enclosing, "encloses undeclared chart 'G7'"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, macro, "macro-step 'M3' has no expansion"), 1u) << dump(ds);
-  EXPECT_EQ(count_at(ds, Severity::Error, macro2, "undeclared chart 'NoSuchChart'"), 1u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, enclosing, "encloses undeclared chart 'G7'"), 1u)
+      << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, macro, "macro-step 'M3' has no expansion"), 1u)
+      << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Error, macro2, "undeclared chart 'NoSuchChart'"), 1u)
+      << dump(ds);
   EXPECT_EQ(count(ds, Severity::Error), 3u) << dump(ds);
 }
 

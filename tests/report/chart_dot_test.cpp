@@ -66,7 +66,8 @@ TEST(ChartDot, DrawsStepsTransitionsBarsAndActionBlocks) {
   const std::string dot = out.str();
   EXPECT_NE(dot.find("label=\"S0\", peripheries=2"), std::string::npos) << dot;
   // The guard sits in the transition's node beside its bar, so the layout keeps guards apart.
-  EXPECT_NE(dot.find("bgcolor=\"black\"></td><td align=\"left\"> start</td>"), std::string::npos) << dot;
+  EXPECT_NE(dot.find("bgcolor=\"black\"></td><td align=\"left\"> start</td>"), std::string::npos)
+      << dot;
   EXPECT_NE(dot.find("<td align=\"left\"> (1) A.T &gt; T#2s</td>"), std::string::npos);
   EXPECT_NE(dot.find("p0c0s0 -> p0c0t0:bar [arrowhead=none]"), std::string::npos);
   EXPECT_EQ(dot.find("xlabel"), std::string::npos);
@@ -96,7 +97,8 @@ TEST(ChartDot, RendersWithGraphviz) {
 TEST(ChartDot, NodeIdsSurviveIntoTheSvg) {
   std::ostringstream out;
   print_chart_dot(out, sample());
-  EXPECT_NE(out.str().find("p0c0s1 [id=\"p0c0s1\", class=\"step\""), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("p0c0s1 [id=\"p0c0s1\", class=\"step\""), std::string::npos)
+      << out.str();
   if (std::system("command -v dot >/dev/null 2>&1") != 0) GTEST_SKIP() << "graphviz not installed";
   const auto svg = dot_to_svg(out.str());
   ASSERT_TRUE(svg.error.empty()) << svg.error;
@@ -106,7 +108,8 @@ TEST(ChartDot, NodeIdsSurviveIntoTheSvg) {
 }
 
 TEST(ChartDot, GrafcetFramesAreNamedAfterTheirPartialGrafcet) {
-  const auto r = test::run_sfcv("export '" + test::source_path("examples/pistons/pistons.g7") + "' --to dot");
+  const auto r =
+      test::run_sfcv("export '" + test::source_path("examples/pistons/pistons.g7") + "' --to dot");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("label=\"piston1\";"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("label=\"piston2\";"), std::string::npos) << r.out;

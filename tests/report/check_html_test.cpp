@@ -30,7 +30,7 @@ TEST(CheckHtml, SummaryChartAndPlayerData) {
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<span class=\"verdict violated\">violated</span>"), std::string::npos);
   EXPECT_NE(html.find("<span class=\"verdict not-checked\">not checked</span>"), std::string::npos);
-  EXPECT_NE(html.find("x &lt; y"), std::string::npos);                  // escaped
+  EXPECT_NE(html.find("x &lt; y"), std::string::npos);                   // escaped
   EXPECT_NE(html.find("<summary>1 more</summary>"), std::string::npos);  // f3 folded away
   EXPECT_NE(html.find("3 of 25 findings shown; --all for every one"), std::string::npos);
   EXPECT_NE(html.find("data-property=\"0\">counterexample (1 situations)</a>"), std::string::npos);
@@ -49,8 +49,10 @@ TEST(CheckHtml, ShowsAPropertysDescriptionUnderItsName) {
   r.result = result();
   r.result["properties"][0]["description"] = "a & b never hold <together>";
   const auto html = check_html(r);
-  EXPECT_NE(html.find("AG !(a &amp; b)<div class=\"description\">a &amp; b never hold &lt;together&gt;</div>"),
-            std::string::npos);
+  EXPECT_NE(
+      html.find(
+          "AG !(a &amp; b)<div class=\"description\">a &amp; b never hold &lt;together&gt;</div>"),
+      std::string::npos);
   EXPECT_EQ(check_html(HtmlReport{result(), "", "", {}, "", "", {}}).find("class=\"description\""),
             std::string::npos);
 }
@@ -64,7 +66,8 @@ TEST(CheckHtml, SituationGraphSectionAndQueryPage) {
   r.situation_graph_note = "5 step situations, 96 stable situations";
   r.situation_node_ids["X10,X20"] = "sg0";
   const auto html = check_html(r);
-  EXPECT_NE(html.find("<div id=\"situations-svg\" class=\"fit\">\n<svg id=\"rsg\"></svg>"), std::string::npos);
+  EXPECT_NE(html.find("<div id=\"situations-svg\" class=\"fit\">\n<svg id=\"rsg\"></svg>"),
+            std::string::npos);
   EXPECT_NE(html.find("5 step situations, 96 stable situations"), std::string::npos);
   EXPECT_NE(html.find("\"situations\":{\"X10,X20\":\"sg0\"}"), std::string::npos);
 
@@ -82,13 +85,17 @@ TEST(CheckHtml, SituationGraphSectionAndQueryPage) {
   const auto page = query_html(answers, r);
   EXPECT_NE(page.find("<h1>sfcv query: p.g7</h1>"), std::string::npos);
   EXPECT_NE(page.find("96 situations &middot; 480 evolutions"), std::string::npos);
-  EXPECT_NE(page.find("<td class=\"name\"><code>Y0</code></td><td class=\"answer\">12 situations</td>"),
-            std::string::npos) << page;
+  EXPECT_NE(
+      page.find("<td class=\"name\"><code>Y0</code></td><td class=\"answer\">12 situations</td>"),
+      std::string::npos)
+      << page;
   EXPECT_NE(page.find("<summary>2 more</summary>"), std::string::npos);
   EXPECT_NE(page.find("<code>#11 &lt;last&gt;</code>"), std::string::npos);
   EXPECT_NE(page.find("<td class=\"answer\">96</td>"), std::string::npos);
-  EXPECT_NE(page.find("<td class=\"answer\">false</td><td><span class=\"verdict violated\">violated</span>"),
-            std::string::npos);
+  EXPECT_NE(
+      page.find(
+          "<td class=\"answer\">false</td><td><span class=\"verdict violated\">violated</span>"),
+      std::string::npos);
   EXPECT_NE(page.find("<svg id=\"rsg\"></svg>"), std::string::npos);
   EXPECT_EQ(page.find("src=\"http"), std::string::npos);
 }
@@ -98,7 +105,8 @@ TEST(CheckHtml, SaysWhyThereIsNoChart) {
   r.result = result();
   r.chart_note = "graphviz's 'dot' is not installed";
   const auto html = check_html(r);
-  EXPECT_NE(html.find("<p class=\"note warn\">graphviz's 'dot' is not installed</p>"), std::string::npos);
+  EXPECT_NE(html.find("<p class=\"note warn\">graphviz's 'dot' is not installed</p>"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -73,8 +73,11 @@ TEST(CheckJunit, OneTestCasePerResultWithItsVerdict) {
   EXPECT_EQ(suites.attribute("skipped").as_int(), 1);
   const auto suite = suites.child("testsuite");
   EXPECT_STREQ(suite.attribute("name").value(), "plant.st");
-  EXPECT_STREQ(suite.child("properties").find_child_by_attribute("property", "name", "engine")
-                   .attribute("value").value(), "explicit");
+  EXPECT_STREQ(suite.child("properties")
+                   .find_child_by_attribute("property", "name", "engine")
+                   .attribute("value")
+                   .value(),
+               "explicit");
 
   const auto safe = suite.find_child_by_attribute("testcase", "name", "safe");
   ASSERT_TRUE(safe);
@@ -83,12 +86,14 @@ TEST(CheckJunit, OneTestCasePerResultWithItsVerdict) {
   EXPECT_EQ(safe.attribute("line").as_int(), 3);
   EXPECT_STREQ(safe.attribute("classname").value(), "plant.st.properties");
 
-  const auto failure = suite.find_child_by_attribute("testcase", "name", "never B").child("failure");
+  const auto failure =
+      suite.find_child_by_attribute("testcase", "name", "never B").child("failure");
   ASSERT_TRUE(failure);
   EXPECT_STREQ(failure.attribute("type").value(), "violated");
   const std::string body = failure.text().get();
   EXPECT_NE(body.find("formula: AG !B"), std::string::npos) << body;
-  EXPECT_NE(body.find("- B & <reached> in 1 cycle"), std::string::npos) << body;  // escaped and back
+  EXPECT_NE(body.find("- B & <reached> in 1 cycle"), std::string::npos)
+      << body;  // escaped and back
   EXPECT_NE(body.find("counterexample (2 situations)"), std::string::npos) << body;
   EXPECT_NE(body.find("+go"), std::string::npos) << body;
 

@@ -16,7 +16,9 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 /// The grouped graph's situation nodes ("  g3 [id=\"sg3\", ..."; edges are \"se0\").
-std::size_t situation_nodes(const std::string& dot) { return count(dot, " [id=\"sg"); }
+std::size_t situation_nodes(const std::string& dot) {
+  return count(dot, " [id=\"sg");
+}
 
 // A ring of `n` steps, stepping on every change of a; y emitted in step 2.
 model::Project ring(int n) {
@@ -49,7 +51,8 @@ TEST(SituationGraphDot, OneNodePerStepSituationWithItsFirings) {
   EXPECT_NE(r.dot.find(" stable situations"), std::string::npos) << r.dot;
   // The edges name the transitions fired, as IEC 60848 writes them.
   const auto& trs = built.system->transitions();
-  for (const auto& t : trs) EXPECT_NE(r.dot.find(t.name + "\\l"), std::string::npos) << t.name << "\n" << r.dot;
+  for (const auto& t : trs)
+    EXPECT_NE(r.dot.find(t.name + "\\l"), std::string::npos) << t.name << "\n" << r.dot;
   ASSERT_EQ(r.node_ids.size(), 2u);
   EXPECT_EQ(r.node_ids.begin()->second.rfind("sg", 0), 0u);
 }
@@ -79,9 +82,12 @@ TEST(SituationGraphDot, CapDrawsTheFirstAndSaysHowManyAreLeftOut) {
   EXPECT_EQ(kept.shown, 4u);
   EXPECT_EQ(situation_nodes(kept.dot), 4u);
   ASSERT_TRUE(kept.node_ids.count("X6"));
-  EXPECT_NE(kept.dot.find("[id=\"" + kept.node_ids.at("X6") + "\", label=\"{X6}\""), std::string::npos) << kept.dot;
-  EXPECT_NE(kept.truncation_note.find("(the first 3 breadth-first, and 1 a trace visits), 4 left out"),
+  EXPECT_NE(kept.dot.find("[id=\"" + kept.node_ids.at("X6") + "\", label=\"{X6}\""),
             std::string::npos)
+      << kept.dot;
+  EXPECT_NE(
+      kept.truncation_note.find("(the first 3 breadth-first, and 1 a trace visits), 4 left out"),
+      std::string::npos)
       << kept.truncation_note;
 }
 

@@ -44,8 +44,8 @@ TEST(TraceRender, TableShowsChangesStepsOutputsAndMarks) {
   EXPECT_NE(t.find("inputs (changed)"), std::string::npos);
   EXPECT_NE(t.find("+go"), std::string::npos);
   EXPECT_NE(t.find("-go"), std::string::npos);
-  EXPECT_EQ(t.find("stop"), std::string::npos);  // never changed
-  EXPECT_NE(t.find("B*"), std::string::npos);   // marked atom
+  EXPECT_EQ(t.find("stop"), std::string::npos);      // never changed
+  EXPECT_NE(t.find("B*"), std::string::npos);        // marked atom
   EXPECT_NE(t.find("| Y"), std::string::npos) << t;  // output column
   EXPECT_NE(t.find("t0"), std::string::npos);
   EXPECT_NE(t.find("->0"), std::string::npos);
@@ -163,8 +163,10 @@ TEST(CheckRender, SaysHowManyFindingsWereCut) {
   c.findings_total = 137;
   report.results.push_back(c);
   const auto text = check_text(report, f.ts, {});
-  EXPECT_NE(text.find("  - transition t2 never fires\n  (2 of 137 findings shown; --all for every one)\n"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(
+          "  - transition t2 never fires\n  (2 of 137 findings shown; --all for every one)\n"),
+      std::string::npos)
       << text;
   EXPECT_EQ(check_json(report, f.ts, {})["properties"][0]["findings_total"], 137);
   report.results[0].findings_total = 2;

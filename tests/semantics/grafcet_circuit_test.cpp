@@ -4,13 +4,14 @@
 // edge's target; and the initial situations under every input valuation are the RSG's initial
 // nodes.
 
+#include "semantics/grafcet_circuit.hpp"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <optional>
 #include <set>
 
-#include "semantics/grafcet_circuit.hpp"
 #include "support/random_grafcet.hpp"
 
 namespace sfcv::semantics {
@@ -132,7 +133,8 @@ void check(const model::Project& p, bool single, std::size_t& checked) {
       return;
     }
     const auto& t = inputs[i].type;
-    const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo, hi = t.kind == model::TypeKind::Bool ? 1 : t.hi;
+    const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo,
+                       hi = t.kind == model::TypeKind::Bool ? 1 : t.hi;
     for (std::int64_t x = lo; x <= hi; ++x) {
       v[i] = x;
       all(i + 1);
@@ -155,12 +157,13 @@ TEST(GrafcetCircuit, EvolutionsMatchTheExplicitSystemOnRandomGrafcets) {
 TEST(GrafcetCircuit, RejectsAProductOfVariables) {
   test::GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back({"k", model::VarDirection::Local, model::Type::integer("INT", 0, 3),
-                               std::nullopt, "", {}});
+  b.pou().variables.push_back(
+      {"k", model::VarDirection::Local, model::Type::integer("INT", 0, 3), std::nullopt, "", {}});
   b.transition({"1"}, {"2"}, test::v("a"));
-  b.transition({"2"}, {"1"}, test::cmp(model::ExprKind::Gt,
-                                       model::make_binary(model::ExprKind::Mul, test::v("k"), test::v("k")),
-                                       test::num(1)));
+  b.transition({"2"}, {"1"},
+               test::cmp(model::ExprKind::Gt,
+                         model::make_binary(model::ExprKind::Mul, test::v("k"), test::v("k")),
+                         test::num(1)));
   b.stored("2", model::StoredWhen::Activation, "k", test::num(2));
   model::Diagnostics d;
   const auto ts = make_grafcet_system(b.project(), {}, d);

@@ -42,10 +42,10 @@ TEST(GrafcetInputs, MultiInputChangeEnumeratesFromTheReceptivities) {
   const auto r = build_rsg(assignment_model().project(), o);
   EXPECT_EQ(r.graph.num_states(), 3u);
   EXPECT_EQ(r.graph.num_edges(), 6u);
-  EXPECT_EQ(rsg_lines(r), (std::vector<std::string>{
-                              "{1} --[!a & b]--> {1} w", "{1} --[a]--> {2} z",
-                              "{1} w --[!a & !b]--> {1}", "{1} w --[a]--> {2} z",
-                              "{2} z --[!a & !b]--> {1}", "{2} z --[!a & b]--> {1} w"}));
+  EXPECT_EQ(rsg_lines(r),
+            (std::vector<std::string>{"{1} --[!a & b]--> {1} w", "{1} --[a]--> {2} z",
+                                      "{1} w --[!a & !b]--> {1}", "{1} w --[a]--> {2} z",
+                                      "{2} z --[!a & !b]--> {1}", "{2} z --[!a & b]--> {1} w"}));
   ASSERT_EQ(r.graph.initial_states().size(), 3u);
 }
 
@@ -67,7 +67,8 @@ TEST(GrafcetInputs, IntegerInputsAreAbstractedByTheirComparisons) {
 
 TEST(GrafcetInputs, ArithmeticOnIntegerInputsIsRejected) {
   GrafcetBuilder b;
-  b.input("n", model::Type::integer("INT(0..9)", 0, 9)).input("m", model::Type::integer("INT(0..9)", 0, 9));
+  b.input("n", model::Type::integer("INT(0..9)", 0, 9))
+      .input("m", model::Type::integer("INT(0..9)", 0, 9));
   b.chart("G").step("1", true).step("2");
   b.transition({"1"}, {"2"}, cmp(ExprKind::Lt, v("n"), v("m")));
   model::Diagnostics d;
@@ -86,9 +87,8 @@ TEST(GrafcetInputs, UnusedInputsDoNotEnterTheState) {
 }
 
 TEST(ConditionSimplifier, ProducesAnIrredundantSumOfProducts) {
-  std::vector<semantics::InputVariable> in{{"a", model::Type::boolean()},
-                                           {"b", model::Type::boolean()},
-                                           {"c", model::Type::boolean()}};
+  std::vector<semantics::InputVariable> in{
+      {"a", model::Type::boolean()}, {"b", model::Type::boolean()}, {"c", model::Type::boolean()}};
   using semantics::InputCondition;
   using semantics::InputCube;
   auto cube = [](std::vector<std::pair<std::uint32_t, int>> l) {
@@ -100,7 +100,8 @@ TEST(ConditionSimplifier, ProducesAnIrredundantSumOfProducts) {
   InputCondition c1{{cube({{0, 1}, {1, 1}}), cube({{0, 1}, {1, 0}})}};
   EXPECT_EQ(engine::simplify(c1, in).to_string(in), "a");
   // a&b&c | a&b&!c | !a&b  ==  b
-  InputCondition c2{{cube({{0, 1}, {1, 1}, {2, 1}}), cube({{0, 1}, {1, 1}, {2, 0}}), cube({{0, 0}, {1, 1}})}};
+  InputCondition c2{
+      {cube({{0, 1}, {1, 1}, {2, 1}}), cube({{0, 1}, {1, 1}, {2, 0}}), cube({{0, 0}, {1, 1}})}};
   EXPECT_EQ(engine::simplify(c2, in).to_string(in), "b");
   // a&!b | !a&b | a&b == a | b
   InputCondition c3{{cube({{0, 1}, {1, 0}}), cube({{0, 0}, {1, 1}}), cube({{0, 1}, {1, 1}})}};
@@ -122,8 +123,7 @@ TEST(ConditionSimplifier, KeepsIntegerLiteralsAsAtoms) {
   // Every valuation agrees before and after.
   const auto s = engine::simplify(c, in);
   for (std::int64_t a = 0; a <= 1; ++a)
-    for (std::int64_t n = 0; n <= 9; ++n)
-      EXPECT_EQ(c.holds({a, n}), s.holds({a, n}));
+    for (std::int64_t n = 0; n <= 9; ++n) EXPECT_EQ(c.holds({a, n}), s.holds({a, n}));
 }
 
 }  // namespace

@@ -117,7 +117,8 @@ TEST(GrafcetRules, StoredActionsRunInTransientStepsContinuousOnesDoNot) {
   b.input("a").output("x").output("y").chart("G").step("1", true).step("2").step("3");
   b.transition({"1"}, {"2"}, v("a")).transition({"2"}, {"3"}, lit(true));
   b.transition({"3"}, {"1"}, not_(v("a")));
-  b.stored("2", StoredWhen::Activation, "x", num(1)).stored("1", StoredWhen::Activation, "x", num(0));
+  b.stored("2", StoredWhen::Activation, "x", num(1))
+      .stored("1", StoredWhen::Activation, "x", num(0));
   b.continuous("2", "y");
   const auto r = build_rsg(b.project());
   EXPECT_EQ(rsg_lines(r), (std::vector<std::string>{"{1} --[a]--> {3} x", "{3} x --[!a]--> {1}"}));

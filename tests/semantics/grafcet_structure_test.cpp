@@ -95,7 +95,7 @@ TEST(GrafcetStructure, MacroStepEntersAtEntryAndLeavesFromExit) {
   EXPECT_EQ(r.graph.num_states(), 6u);
   EXPECT_EQ(r.graph.num_edges(), 12u);
   EXPECT_EQ(count_states(r, {"XE2"}, {"XM2"}), 0u);  // the macro-step is active with its expansion
-  EXPECT_EQ(count_states(r, {"XE2"}, {"a"}), 1u);     // ({E2},00): !a does not leave M2 yet
+  EXPECT_EQ(count_states(r, {"XE2"}, {"a"}), 1u);    // ({E2},00): !a does not leave M2 yet
   const auto lines = rsg_lines(r);
   EXPECT_NE(std::find(lines.begin(), lines.end(), "{E2,M2} --[!a & b]--> {1}"), lines.end());
 }

@@ -24,7 +24,8 @@ struct Collect final : SuccessorSink {
   std::vector<Entry> entries;
   bool anomalies = false;
   void successor(const Successor& s) override {
-    entries.push_back({{s.target.begin(), s.target.end()}, s.condition, {s.fired.begin(), s.fired.end()}});
+    entries.push_back(
+        {{s.target.begin(), s.target.end()}, s.condition, {s.fired.begin(), s.fired.end()}});
   }
   void anomaly(const Anomaly&) override { anomalies = true; }
 };
@@ -83,7 +84,8 @@ void expect_agreement(const TransitionSystem& ts, std::uint32_t max_states, std:
           const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo;
           const auto enc = static_cast<std::uint64_t>(w[i] - lo);
           for (std::size_t k = 0; k < circuit.input_bits[i].size(); ++k)
-            bits[aig.nodes()[Aig::node_of(circuit.input_bits[i][k])].index] = ((enc >> k) & 1U) != 0;
+            bits[aig.nodes()[Aig::node_of(circuit.input_bits[i][k])].index] =
+                ((enc >> k) & 1U) != 0;
         }
       }
       const auto nodes = aig.evaluate(bits, latches);
@@ -253,7 +255,6 @@ TEST(Iec61131Circuit, AgreesOnTimersCountersAndData) {
     expect_agreement(*ts, 1500, 11);
   }
 }
-
 
 // Programs without steps (ST bodies that run every cycle), two programs in one cycle in
 // document order sharing a global, a timer without PT (T#0s), the

@@ -71,7 +71,8 @@ TEST(Iec61131Data, IntegerOverflowIsARangeErrorAnomaly) {
   ASSERT_EQ(c.anomalies.size(), 1u);
   EXPECT_NE(c.anomalies[0].find("out of the range"), std::string::npos);
   EXPECT_NE(c.anomalies[0].find("when a"), std::string::npos);
-  EXPECT_EQ(conditions(c), (std::vector<std::string>{"!a"}));  // the overflowing input has no successor
+  EXPECT_EQ(conditions(c),
+            (std::vector<std::string>{"!a"}));  // the overflowing input has no successor
   EXPECT_FALSE(r.cycle({{"a", 1}}));
   EXPECT_NE(r.error.find("out of the range"), std::string::npos);
 }
@@ -98,7 +99,8 @@ TEST(Iec61131Data, DivisionByZeroIsARangeError) {
 
 TEST(Iec61131Data, EdgeDetectionLatchesAndCounters) {
   IecBuilder b(
-      "VAR_INPUT a, r : BOOL; END_VAR VAR_OUTPUT rises, falls, latch, done : BOOL; cv : INT; END_VAR "
+      "VAR_INPUT a, r : BOOL; END_VAR VAR_OUTPUT rises, falls, latch, done : BOOL; cv : INT; "
+      "END_VAR "
       "VAR rt : R_TRIG; ft : F_TRIG; sr1 : SR; c : CTU; END_VAR");
   b.step("S1", true);
   b.action_st("Body",
@@ -131,7 +133,9 @@ TEST(Iec61131Data, EdgeDetectionLatchesAndCounters) {
 
 TEST(Iec61131Data, TonInAbstractTimeExpiresThroughItsTimeoutInput) {
   IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; END_VAR VAR t1 : TON; END_VAR");
-  b.step("S1", true).action_st("Body", "t1(IN := a, PT := T#5s); q := t1.Q;").assoc("S1", "Body", "N");
+  b.step("S1", true)
+      .action_st("Body", "t1(IN := a, PT := T#5s); q := t1.Q;")
+      .assoc("S1", "Body", "N");
   auto ts = b.build();
   Runner r(*ts);
   ASSERT_TRUE(r.cycle({{"a", 1}, {"timeout:MAIN.t1", 1}}));  // starting: cannot expire yet
@@ -193,7 +197,7 @@ TEST(Iec61131Data, StepTimeInAbstractTimeMovesThroughRegions) {
   Runner r(*ts);
   auto c = successors_of(*ts, r.state());
   EXPECT_EQ(conditions(c), (std::vector<std::string>{"elapse:MAIN.S1 = 0", "elapse:MAIN.S1 = 1",
-                                                      "elapse:MAIN.S1 = 2"}));
+                                                     "elapse:MAIN.S1 = 2"}));
   ASSERT_TRUE(r.cycle({{"elapse:MAIN.S1", 1}}));
   ASSERT_TRUE(r.cycle({{"a", 1}}));
   EXPECT_EQ(r["S2"], 1);
@@ -202,8 +206,12 @@ TEST(Iec61131Data, StepTimeInAbstractTimeMovesThroughRegions) {
 // IEC 61131-3 2.2.1: the integer literals 0 and 1 are also Boolean literals (Beremiz's
 // traffic light writes `ORANGE_LIGHT := 1;`); other integers stay type errors.
 TEST(Iec61131Data, ZeroAndOneAreBooleanLiterals) {
-  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; r : BOOL; END_VAR VAR t : TON; END_VAR");
-  b.step("S1", true).step("S2").trans("S1", "S2", "a = 1 AND NOT 0").trans("S2", "S1", "q = 0 OR a");
+  IecBuilder b(
+      "VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT q : BOOL; r : BOOL; END_VAR VAR t : TON; END_VAR");
+  b.step("S1", true)
+      .step("S2")
+      .trans("S1", "S2", "a = 1 AND NOT 0")
+      .trans("S2", "S1", "q = 0 OR a");
   b.action_st("On", "q := 1; t(IN := 1, PT := T#1s); r := t.Q;").assoc("S2", "On", "N");
   b.action_st("Off", "q := 0;").assoc("S1", "Off", "N");
   auto ts = b.build();
@@ -255,8 +263,9 @@ TEST(Iec61131Data, SeveralPositivePtValuesInAbstractTimeOnly) {
   auto discrete = make();
   semantics::Iec61131Options o;
   o.time = semantics::TimeMode::Discrete;
-  EXPECT_NE(discrete.build_error(o).find("called with different PT values; discrete time needs one"),
-            std::string::npos);
+  EXPECT_NE(
+      discrete.build_error(o).find("called with different PT values; discrete time needs one"),
+      std::string::npos);
 }
 
 TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
@@ -289,7 +298,8 @@ TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
   {
     IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
     b.step("S1", true).step("S2").trans("S1", "S2", "a");
-    b.pou().charts[0].transitions[0].guard = model::make_unary(model::ExprKind::Rising, model::make_name("a"));
+    b.pou().charts[0].transitions[0].guard =
+        model::make_unary(model::ExprKind::Rising, model::make_name("a"));
     EXPECT_NE(b.build_error().find("Grafcet syntax"), std::string::npos);
   }
 }

@@ -11,7 +11,10 @@ namespace {
 IecBuilder nested() {
   IecBuilder b("VAR_INPUT a, b, x, y, z : BOOL; END_VAR VAR_OUTPUT p, w, v2 : BOOL; END_VAR");
   b.step("S1", true).step("S2").step("S3");
-  b.trans("S1", "S2", "a").trans("S2", "S1", "b").trans("S2", "S3", "N3.X").trans("S3", "S1", "TRUE");
+  b.trans("S1", "S2", "a")
+      .trans("S2", "S1", "b")
+      .trans("S2", "S3", "N3.X")
+      .trans("S3", "S1", "TRUE");
   b.assoc("S2", "A3", "N");
   b.chart("A3", "A3");
   b.step("N1", true).step("N2").step("N3");
@@ -26,7 +29,7 @@ TEST(Iec61131Hierarchy, NestedStepsAreActiveOnlyWhileTheirActionIs) {
   auto b = nested();
   auto ts = b.build();
   Runner r(*ts);
-  EXPECT_EQ(r["MAIN.A3.N1"], 0);  // ready (history) but A3 inactive
+  EXPECT_EQ(r["MAIN.A3.N1"], 0);     // ready (history) but A3 inactive
   ASSERT_TRUE(r.cycle({{"x", 1}}));  // the nested chart does not evolve while A3 is inactive
   ASSERT_TRUE(r.cycle({{"a", 1}}));
   EXPECT_EQ(r["S2"], 1);
@@ -42,13 +45,13 @@ TEST(Iec61131Hierarchy, LeftAndResumedAtItsHistoryStep) {
   ASSERT_TRUE(r.cycle({{"x", 1}}));
   EXPECT_EQ(r["N2"], 1);
   EXPECT_EQ(r["v2"], 1);
-  EXPECT_EQ(r["p"], 1);  // P1: N2 became ready
+  EXPECT_EQ(r["p"], 1);              // P1: N2 became ready
   ASSERT_TRUE(r.cycle({{"b", 1}}));  // leave S2: A3 inactive, N2 stays ready as history
   EXPECT_EQ(r["S1"], 1);
   EXPECT_EQ(r["A3"], 0);
   EXPECT_EQ(r["N2"], 0);
   EXPECT_EQ(r["v2"], 0);
-  EXPECT_EQ(r["w"], 0);  // suspension is not a readiness change: no P0
+  EXPECT_EQ(r["w"], 0);              // suspension is not a readiness change: no P0
   ASSERT_TRUE(r.cycle({{"y", 1}}));  // frozen
   ASSERT_TRUE(r.cycle({{"a", 1}}));  // resume at N2, not N1
   EXPECT_EQ(r["N2"], 1);

@@ -76,7 +76,10 @@ TEST(Iec61131Priority, NoOrderWithoutConflictReadsNoChoice) {
 TEST(Iec61131Priority, ParallelBranchesFireTogether) {
   IecBuilder b("VAR_INPUT a, b, go : BOOL; END_VAR");
   b.step("S0", true).step("A1").step("A2").step("B1").step("B2").step("J");
-  b.trans("S0", "A1,B1", "go").trans("A1", "A2", "a").trans("B1", "B2", "b").trans("A2,B2", "J", "TRUE");
+  b.trans("S0", "A1,B1", "go")
+      .trans("A1", "A2", "a")
+      .trans("B1", "B2", "b")
+      .trans("A2,B2", "J", "TRUE");
   auto ts = b.build();
   Runner r(*ts);
   ASSERT_TRUE(r.cycle({{"go", 1}}));

@@ -170,8 +170,8 @@ TEST(Iec61131QualifierAbstract, TheTimeoutIsOnlyAnInputWhileTheTimerRuns) {
   EXPECT_EQ(conditions(c), (std::vector<std::string>{"!a", "a"}));
   ASSERT_TRUE(r.cycle({{"a", 1}}));
   c = successors_of(*ts, r.state());
-  EXPECT_EQ(conditions(c), (std::vector<std::string>{"!b & !timeout:MAIN.S2.A.D", "!b & timeout:MAIN.S2.A.D",
-                                                      "b"}));
+  EXPECT_EQ(conditions(c), (std::vector<std::string>{"!b & !timeout:MAIN.S2.A.D",
+                                                     "!b & timeout:MAIN.S2.A.D", "b"}));
 }
 
 TEST(Iec61131QualifierAbstract, SDStaysSetAfterTheStepAndActsAfterTheDelay) {

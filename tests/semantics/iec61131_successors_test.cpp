@@ -39,7 +39,7 @@ TEST(Iec61131Successors, IntegerInputsSplitIntoTheIntervalsOfTheirComparisons) {
   auto ts = b.build();
   auto c = successors_of(*ts, Runner(*ts).state());
   EXPECT_EQ(conditions(c), (std::vector<std::string>{"level <= 4 | 6 <= level <= 100", "level = 5",
-                                                      "level >= 101"}));
+                                                     "level >= 101"}));
 }
 
 TEST(Iec61131Successors, IntegerInputComparedWithAVariableSplitsAtItsCurrentValue) {
@@ -63,7 +63,8 @@ TEST(Iec61131Successors, ManyDistinctTargetsAreMergedCorrectly) {
   auto c = successors_of(*ts, Runner(*ts).state());
   ASSERT_EQ(c.all.size(), 10u);
   std::size_t cubes = 0;
-  for (const auto& s : c.all) cubes += static_cast<std::size_t>(std::count(s.condition.begin(), s.condition.end(), '|')) + 1;
+  for (const auto& s : c.all)
+    cubes += static_cast<std::size_t>(std::count(s.condition.begin(), s.condition.end(), '|')) + 1;
   EXPECT_EQ(cubes, 1000u);
   EXPECT_EQ(c.all[3].condition.substr(0, 22), "sel = 3 | sel = 13 | s");
   // A second call on the same system gives the same answer (scratch reuse).
@@ -113,7 +114,8 @@ TEST(Iec61131Successors, AssumptionsRemoveBehaviour) {
 
 TEST(Iec61131Successors, ManyAlternativesCostLinearlyNotExponentially) {
   std::string vars = "VAR_INPUT ";
-  for (int i = 0; i < 64; ++i) vars += "i" + std::to_string(i) + (i < 63 ? ", " : " : BOOL; END_VAR");
+  for (int i = 0; i < 64; ++i)
+    vars += "i" + std::to_string(i) + (i < 63 ? ", " : " : BOOL; END_VAR");
   IecBuilder b(vars);
   b.step("S", true);
   for (int i = 0; i < 64; ++i) b.step("T" + std::to_string(i));
@@ -161,7 +163,9 @@ TEST(Iec61131Successors, APlantModelRunsInTheSameCycleConnectedByName) {
   plant.kind = model::PouKind::Program;
   model::Diagnostics d;
   plant.variables = io::parse_var_sections(
-      "VAR_INPUT valve : BOOL; END_VAR VAR_OUTPUT full : BOOL; END_VAR VAR level : INT(0..3); END_VAR", {}, d);
+      "VAR_INPUT valve : BOOL; END_VAR VAR_OUTPUT full : BOOL; END_VAR VAR level : INT(0..3); "
+      "END_VAR",
+      {}, d);
   plant.body = io::parse_st_statements(
       "IF valve AND level < 3 THEN level := level + 1; END_IF; full := level >= 2;", {}, d);
   ASSERT_FALSE(model::has_errors(d));
@@ -195,7 +199,9 @@ TEST(Iec61131Successors, ChemicalPlantExampleHasTheSeedsVerdicts) {
   todo.push_back(start);
   struct Sink : semantics::SuccessorSink {
     std::vector<std::vector<semantics::StateWord>> out;
-    void successor(const semantics::Successor& s) override { out.emplace_back(s.target.begin(), s.target.end()); }
+    void successor(const semantics::Successor& s) override {
+      out.emplace_back(s.target.begin(), s.target.end());
+    }
   };
   const auto v1 = obs(*ts, "V1");
   const auto v2 = obs(*ts, "V2");
@@ -209,14 +215,15 @@ TEST(Iec61131Successors, ChemicalPlantExampleHasTheSeedsVerdicts) {
     v1v3 |= ts->observe(s, v1) && ts->observe(s, v3);
     v2v4 |= ts->observe(s, v2) && ts->observe(s, v4);
     for (std::uint32_t i = 0; i < ts->observables().size(); ++i)
-      if (ts->observables()[i].kind == semantics::ObservableKind::Step && ts->observe(s, i)) steps_seen.insert(i);
+      if (ts->observables()[i].kind == semantics::ObservableKind::Step && ts->observe(s, i))
+        steps_seen.insert(i);
     Sink sink;
     ts->successors(s, sink);
     for (auto& t : sink.out)
       if (seen.insert(t).second) todo.push_back(t);
   }
-  EXPECT_FALSE(v1v3);  // AG !(V1 & V3) holds
-  EXPECT_TRUE(v2v4);   // AG !(V2 & V4) is violated
+  EXPECT_FALSE(v1v3);                 // AG !(V1 & V3) holds
+  EXPECT_TRUE(v2v4);                  // AG !(V2 & V4) is violated
   EXPECT_EQ(steps_seen.size(), 13u);  // s1..s10, s11..s13: every step is reachable
 }
 

@@ -183,7 +183,9 @@ class Runner {
     fired = r.fired.back();
     return true;
   }
-  std::int64_t operator[](const std::string& name) const { return ts_.observe(state_, obs(ts_, name)); }
+  std::int64_t operator[](const std::string& name) const {
+    return ts_.observe(state_, obs(ts_, name));
+  }
   const std::vector<semantics::StateWord>& state() const { return state_; }
   void set_state(std::vector<semantics::StateWord> s) { state_ = std::move(s); }
   std::string describe() const { return ts_.describe(state_); }
@@ -208,7 +210,8 @@ struct Collector : semantics::SuccessorSink {
   std::vector<CollectedSuccessor> all;
   std::vector<std::string> anomalies;
   void successor(const semantics::Successor& s) override {
-    all.push_back({{s.target.begin(), s.target.end()}, s.condition.to_string(ts->inputs()),
+    all.push_back({{s.target.begin(), s.target.end()},
+                   s.condition.to_string(ts->inputs()),
                    {s.fired.begin(), s.fired.end()}});
   }
   void anomaly(const semantics::Anomaly& a) override {

@@ -19,7 +19,8 @@ class FormulaGenerator {
  public:
   using AtomFilter = std::function<bool(const semantics::Observable&)>;
   /// Atoms are the Boolean observables `keep` accepts (all of them by default).
-  FormulaGenerator(const semantics::TransitionSystem& ts, std::uint64_t seed, const AtomFilter& keep = {})
+  FormulaGenerator(const semantics::TransitionSystem& ts, std::uint64_t seed,
+                   const AtomFilter& keep = {})
       : rng_(seed) {
     for (const auto& o : ts.observables())
       if (o.type.kind == model::TypeKind::Bool && (!keep || keep(o))) atoms_.push_back(o.name);
@@ -29,14 +30,18 @@ class FormulaGenerator {
     static const char* unary[] = {"!", "EX ", "AX ", "EF ", "AF ", "EG ", "AG "};
     static const char* binary[] = {" & ", " | ", " -> "};
     switch (pick(3)) {
-      case 0: return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
-      case 1: return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
+      case 0:
+        return std::string(unary[pick(7)]) + "(" + formula(depth - 1) + ")";
+      case 1:
+        return "(" + formula(depth - 1) + binary[pick(3)] + formula(depth - 1) + ")";
       default:
         return std::string(pick(2) ? "E[" : "A[") + formula(depth - 1) + " U " +
                formula(depth - 1) + "]";
     }
   }
-  std::string atom() { return atoms_.empty() ? "TRUE" : atoms_[pick(static_cast<std::uint32_t>(atoms_.size()))]; }
+  std::string atom() {
+    return atoms_.empty() ? "TRUE" : atoms_[pick(static_cast<std::uint32_t>(atoms_.size()))];
+  }
 
  private:
   std::uint32_t pick(std::uint32_t n) { return static_cast<std::uint32_t>(rng_() % n); }

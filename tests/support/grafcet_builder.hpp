@@ -102,12 +102,24 @@ class GrafcetBuilder {
 };
 
 // Expression shorthands.
-inline model::ExprPtr v(const std::string& name) { return model::make_name(name); }
-inline model::ExprPtr lit(bool b) { return model::make_bool(b); }
-inline model::ExprPtr num(std::int64_t n) { return model::make_int(n); }
-inline model::ExprPtr not_(model::ExprPtr e) { return model::make_unary(model::ExprKind::Not, std::move(e)); }
-inline model::ExprPtr rise(model::ExprPtr e) { return model::make_unary(model::ExprKind::Rising, std::move(e)); }
-inline model::ExprPtr fall(model::ExprPtr e) { return model::make_unary(model::ExprKind::Falling, std::move(e)); }
+inline model::ExprPtr v(const std::string& name) {
+  return model::make_name(name);
+}
+inline model::ExprPtr lit(bool b) {
+  return model::make_bool(b);
+}
+inline model::ExprPtr num(std::int64_t n) {
+  return model::make_int(n);
+}
+inline model::ExprPtr not_(model::ExprPtr e) {
+  return model::make_unary(model::ExprKind::Not, std::move(e));
+}
+inline model::ExprPtr rise(model::ExprPtr e) {
+  return model::make_unary(model::ExprKind::Rising, std::move(e));
+}
+inline model::ExprPtr fall(model::ExprPtr e) {
+  return model::make_unary(model::ExprKind::Falling, std::move(e));
+}
 inline model::ExprPtr and_(model::ExprPtr a, model::ExprPtr b) {
   return model::make_nary(model::ExprKind::And, {std::move(a), std::move(b)});
 }
@@ -148,16 +160,19 @@ inline std::vector<std::string> rsg_lines(const BuiltRsg& r) {
   return out;
 }
 
-/// Number of states in which every step of `steps` is active and all others listed in `off` are not.
+/// Number of states in which every step of `steps` is active and all others listed in `off` are
+/// not.
 inline std::size_t count_states(const BuiltRsg& r, const std::vector<std::string>& on,
                                 const std::vector<std::string>& off = {}) {
   std::size_t n = 0;
   for (std::uint32_t s = 0; s < r.graph.num_states(); ++s) {
     bool ok = true;
     for (const auto& name : on)
-      ok = ok && r.system->observe(r.graph.states().at(s), *semantics::find_observable(*r.system, name)) != 0;
+      ok = ok && r.system->observe(r.graph.states().at(s),
+                                   *semantics::find_observable(*r.system, name)) != 0;
     for (const auto& name : off)
-      ok = ok && r.system->observe(r.graph.states().at(s), *semantics::find_observable(*r.system, name)) == 0;
+      ok = ok && r.system->observe(r.graph.states().at(s),
+                                   *semantics::find_observable(*r.system, name)) == 0;
     if (ok) ++n;
   }
   return n;

@@ -19,8 +19,8 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   GrafcetBuilder b;
   b.input("a").input("b").input("c").input("n", model::Type::integer("INT", 0, 9));
   b.output("y").output("z").output("w").output("f");
-  b.pou().variables.push_back({"cnt", model::VarDirection::Local, model::Type::integer("INT", 0, 3),
-                               std::nullopt, "", {}});
+  b.pou().variables.push_back(
+      {"cnt", model::VarDirection::Local, model::Type::integer("INT", 0, 3), std::nullopt, "", {}});
   const std::uint32_t n1 = 3 + pick(3), n2 = 2 + pick(2);
   const bool macro = pick(4) == 0, enclosing = !macro && pick(4) == 0, forcing = pick(3) == 0;
   auto s1 = [](std::uint32_t i) { return std::to_string(1 + i); };
@@ -31,17 +31,28 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   };
   std::function<model::ExprPtr(int)> guard = [&](int depth) -> model::ExprPtr {
     switch (pick(depth > 0 ? 12 : 9)) {
-      case 0: return input();
-      case 1: return not_(input());
-      case 2: return rise(input());
-      case 3: return fall(input());
-      case 4: return v("X" + s2(pick(n2)));
-      case 5: return v("X" + s1(pick(n1)));
-      case 6: return cmp(pick(2) ? model::ExprKind::Ge : model::ExprKind::Lt, v("n"), num(1 + pick(8)));
-      case 7: return model::make_delay(1000, v("X" + s1(pick(n1))), pick(2) ? 0 : 500);
-      case 8: return pick(2) ? lit(true) : rise(v("X" + s2(pick(n2))));
-      case 9: return not_(guard(depth - 1));
-      default: return and_(guard(depth - 1), guard(depth - 1));
+      case 0:
+        return input();
+      case 1:
+        return not_(input());
+      case 2:
+        return rise(input());
+      case 3:
+        return fall(input());
+      case 4:
+        return v("X" + s2(pick(n2)));
+      case 5:
+        return v("X" + s1(pick(n1)));
+      case 6:
+        return cmp(pick(2) ? model::ExprKind::Ge : model::ExprKind::Lt, v("n"), num(1 + pick(8)));
+      case 7:
+        return model::make_delay(1000, v("X" + s1(pick(n1))), pick(2) ? 0 : 500);
+      case 8:
+        return pick(2) ? lit(true) : rise(v("X" + s2(pick(n2))));
+      case 9:
+        return not_(guard(depth - 1));
+      default:
+        return and_(guard(depth - 1), guard(depth - 1));
     }
   };
   b.chart("G1");
@@ -60,8 +71,9 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   }
   b.continuous(s1(pick(n1 - 1)), "y", pick(2) ? guard(1) : nullptr);
   b.stored(s1(pick(n1 - 1)), model::StoredWhen::Activation, "z", lit(true));
-  b.stored(s1(pick(n1 - 1)), pick(2) ? model::StoredWhen::Deactivation : model::StoredWhen::Activation,
-           "z", lit(false));
+  b.stored(s1(pick(n1 - 1)),
+           pick(2) ? model::StoredWhen::Deactivation : model::StoredWhen::Activation, "z",
+           lit(false));
   if (pick(2))
     b.stored(s1(pick(n1 - 1)), model::StoredWhen::Activation, "cnt",
              model::make_binary(model::ExprKind::Add, v("cnt"), num(1)));
@@ -70,8 +82,9 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   if (forcing) {
     const auto k = pick(3);
     b.forcing(s1(1 + pick(n1 - 2)), "G2",
-              k == 0 ? model::ForcingKind::Situation : k == 1 ? model::ForcingKind::Initial
-                                                              : model::ForcingKind::Current,
+              k == 0   ? model::ForcingKind::Situation
+              : k == 1 ? model::ForcingKind::Initial
+                       : model::ForcingKind::Current,
               k == 0 ? std::vector<std::string>{s2(pick(n2))} : std::vector<std::string>{});
   }
   b.chart("G2");
@@ -92,6 +105,5 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   }
   return b.project();
 }
-
 
 }  // namespace sfcv::test

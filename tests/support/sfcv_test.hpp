@@ -56,9 +56,9 @@ inline std::optional<std::filesystem::path> corpus_dir() {
 }
 
 /// Skips the current test, visibly, when the corpus is not available.
-#define SFCV_REQUIRE_CORPUS(var)                                                   \
-  const auto var##_opt = ::sfcv::test::corpus_dir();                               \
-  if (!var##_opt) GTEST_SKIP() << "SFCV_CORPUS is not set: corpus test skipped";   \
+#define SFCV_REQUIRE_CORPUS(var)                                                 \
+  const auto var##_opt = ::sfcv::test::corpus_dir();                             \
+  if (!var##_opt) GTEST_SKIP() << "SFCV_CORPUS is not set: corpus test skipped"; \
   const std::filesystem::path var = *var##_opt
 
 /// A file under the source tree (examples/, tests/data/).

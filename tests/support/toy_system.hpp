@@ -53,7 +53,8 @@ class ToySystem final : public semantics::TransitionSystem {
   void set_input_type(std::uint32_t i, model::Type type) { inputs_[i].type = std::move(type); }
 
   void set_initial(std::vector<std::uint32_t> initial) { initial_ = std::move(initial); }
-  void add_arc(std::uint32_t from, std::uint32_t to, semantics::InputCondition c = semantics::InputCondition::always(),
+  void add_arc(std::uint32_t from, std::uint32_t to,
+               semantics::InputCondition c = semantics::InputCondition::always(),
                std::vector<std::uint32_t> fired = {}) {
     arcs_.push_back({from, to, std::move(c), std::move(fired)});
     for (auto f : arcs_.back().fired)

@@ -29,8 +29,8 @@ long g_live = 0;
 void throw_on_error(int code) {
   g_failed = true;
   if (code == BDD_NODENUM || code == BDD_MEMORY)
-    throw LimitReached(Limit::Memory,
-                       std::string("the BDD node table is full (--memory): ") + bdd_errstring(code));
+    throw LimitReached(Limit::Memory, std::string("the BDD node table is full (--memory): ") +
+                                          bdd_errstring(code));
   throw BddError(std::string("BDD package error: ") + bdd_errstring(code));
 }
 
@@ -70,8 +70,7 @@ void deadline_on_resize(int, int) {
 // a large model can take a second, and sampling every 16th overshot a 20 s limit by 22 s); the
 // garbage-collection and resize hooks above stop a single operation that blows up.
 void check_deadline() {
-  if (past_deadline())
-    throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
+  if (past_deadline()) throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
 }
 
 int g_reorderings = 0;
@@ -125,7 +124,9 @@ void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline,
   g_cancel = cancel;
 }
 
-int allocated_nodes() { return bdd_isrunning() ? bdd_getnodenum() : 0; }
+int allocated_nodes() {
+  return bdd_isrunning() ? bdd_getnodenum() : 0;
+}
 
 void reset_operation_caches() {
   if (bdd_isrunning()) bdd_gbc();  // a garbage collection also empties the caches
@@ -144,8 +145,8 @@ void start_manager(const ManagerOptions& o) {
   const int nodes = o.max_nodes > 0 ? std::min(o.nodes, o.max_nodes) : o.nodes;
   const int cache = std::max(1, std::min(o.cache, nodes / std::max(1, o.cache_ratio)));
   if (bdd_isrunning()) {
-    const bool unfit = g_failed || g_reordering_used ||
-                       (o.max_nodes > 0 && bdd_getallocnum() > o.max_nodes);
+    const bool unfit =
+        g_failed || g_reordering_used || (o.max_nodes > 0 && bdd_getallocnum() > o.max_nodes);
     if (!unfit) {
       bdd_setmaxnodenum(o.max_nodes > 0 ? std::max(o.max_nodes, bdd_getallocnum() + 1) : 0);
       bdd_clrvarblocks();
@@ -186,11 +187,17 @@ void reorder_now() {
   ++g_reorderings;  // BuDDy calls the hook for automatic reorderings only
 }
 
-int reorderings() { return g_reorderings; }
+int reorderings() {
+  return g_reorderings;
+}
 
-int level_of(int var) { return bdd_var2level(var); }
+int level_of(int var) {
+  return bdd_var2level(var);
+}
 
-long live_bdds() { return g_live; }  // references to non-constant nodes
+long live_bdds() {
+  return g_live;
+}  // references to non-constant nodes
 
 void ensure_variables(int count) {
   ensure_manager();
@@ -214,9 +221,15 @@ void del_ref(int root) noexcept {
 }  // namespace
 
 Bdd::Bdd() : root_(0) {}
-Bdd::Bdd(int root) : root_(root) { add_ref(root_); }
-Bdd::Bdd(const Bdd& other) : root_(other.root_) { add_ref(root_); }
-Bdd::Bdd(Bdd&& other) noexcept : root_(other.root_) { other.root_ = 0; }
+Bdd::Bdd(int root) : root_(root) {
+  add_ref(root_);
+}
+Bdd::Bdd(const Bdd& other) : root_(other.root_) {
+  add_ref(root_);
+}
+Bdd::Bdd(Bdd&& other) noexcept : root_(other.root_) {
+  other.root_ = 0;
+}
 Bdd& Bdd::operator=(const Bdd& other) {
   if (this != &other) {
     add_ref(other.root_);
@@ -233,7 +246,9 @@ Bdd& Bdd::operator=(Bdd&& other) noexcept {
   }
   return *this;
 }
-Bdd::~Bdd() { del_ref(root_); }
+Bdd::~Bdd() {
+  del_ref(root_);
+}
 
 Bdd Bdd::constant(bool value) {
   ensure_manager();
@@ -247,21 +262,28 @@ Bdd Bdd::variable(int index) {
 
 Bdd Bdd::operator&(const Bdd& o) const {
   check_deadline();
-  return Bdd(bdd_and(root_, o.root_)); }
+  return Bdd(bdd_and(root_, o.root_));
+}
 Bdd Bdd::operator|(const Bdd& o) const {
   check_deadline();
-  return Bdd(bdd_or(root_, o.root_)); }
-Bdd Bdd::operator!() const { return Bdd(bdd_not(root_)); }
+  return Bdd(bdd_or(root_, o.root_));
+}
+Bdd Bdd::operator!() const {
+  return Bdd(bdd_not(root_));
+}
 
 Bdd Bdd::operator^(const Bdd& o) const {
   check_deadline();
-  return Bdd(bdd_apply(root_, o.root_, bddop_xor)); }
+  return Bdd(bdd_apply(root_, o.root_, bddop_xor));
+}
 Bdd Bdd::iff(const Bdd& o) const {
   check_deadline();
-  return Bdd(bdd_apply(root_, o.root_, bddop_biimp)); }
+  return Bdd(bdd_apply(root_, o.root_, bddop_biimp));
+}
 Bdd Bdd::ite(const Bdd& t, const Bdd& e) const {
   check_deadline();
-  return Bdd(bdd_ite(root_, t.root_, e.root_)); }
+  return Bdd(bdd_ite(root_, t.root_, e.root_));
+}
 
 Bdd Bdd::cube(const std::vector<int>& vars) {
   ensure_manager();
@@ -274,7 +296,8 @@ Bdd Bdd::cube(const std::vector<int>& vars) {
 
 Bdd Bdd::exist(const Bdd& vars) const {
   check_deadline();
-  return Bdd(bdd_exist(root_, vars.root_)); }
+  return Bdd(bdd_exist(root_, vars.root_));
+}
 Bdd Bdd::and_exist(const Bdd& o, const Bdd& vars) const {
   check_deadline();
   return Bdd(bdd_appex(root_, o.root_, bddop_and, vars.root_));
@@ -287,7 +310,9 @@ Bdd Bdd::compose(const VarMap& map) const {
   check_deadline();
   return Bdd(bdd_veccompose(root_, static_cast<bddPair*>(map.pair_)));
 }
-Bdd Bdd::sat_one(const Bdd& vars) const { return Bdd(bdd_satoneset(root_, vars.root_, 0)); }
+Bdd Bdd::sat_one(const Bdd& vars) const {
+  return Bdd(bdd_satoneset(root_, vars.root_, 0));
+}
 int Bdd::value_in_cube(int var) const {
   int r = root_;
   while (r > 1) {
@@ -297,7 +322,9 @@ int Bdd::value_in_cube(int var) const {
   }
   return -1;
 }
-double Bdd::sat_count_log2(const Bdd& vars) const { return bdd_satcountlnset(root_, vars.root_); }
+double Bdd::sat_count_log2(const Bdd& vars) const {
+  return bdd_satcountlnset(root_, vars.root_);
+}
 
 namespace {
 
@@ -377,7 +404,9 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
     return c.shifted_left(static_cast<unsigned>(above[to_level] - above[from_level]));
   };
   std::unordered_map<int, logic::BigCount> memo;
-  auto value = [&](int c) { return c <= 1 ? logic::BigCount(static_cast<std::uint64_t>(c)) : memo.at(c); };
+  auto value = [&](int c) {
+    return c <= 1 ? logic::BigCount(static_cast<std::uint64_t>(c)) : memo.at(c);
+  };
   fold_post_order(root_, memo, [&](int n, int lo, int hi) {
     const int l = level(n);
     auto sum = scale(value(lo), l + 1, level(lo));
@@ -388,13 +417,17 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
   return scale(value(root_), 0, level(root_));
 }
 
-int Bdd::node_count() const { return bdd_nodecount(root_); }
+int Bdd::node_count() const {
+  return bdd_nodecount(root_);
+}
 
 VarMap::VarMap() : pair_(nullptr) {
   ensure_manager();
   pair_ = bdd_newpair();
 }
-VarMap::~VarMap() { bdd_freepair(static_cast<bddPair*>(pair_)); }
+VarMap::~VarMap() {
+  bdd_freepair(static_cast<bddPair*>(pair_));
+}
 void VarMap::rename(int from, int to) {
   ensure_variables(std::max(from, to) + 1);
   bdd_setpair(static_cast<bddPair*>(pair_), from, to);
@@ -404,11 +437,21 @@ void VarMap::substitute(int var, const Bdd& f) {
   bdd_setbddpair(static_cast<bddPair*>(pair_), var, f.root_);
 }
 
-bool Bdd::is_true() const { return root_ == 1; }
-bool Bdd::is_false() const { return root_ == 0; }
-int Bdd::top() const { return bdd_var(root_); }
-Bdd Bdd::low() const { return Bdd(bdd_low(root_)); }
-Bdd Bdd::high() const { return Bdd(bdd_high(root_)); }
+bool Bdd::is_true() const {
+  return root_ == 1;
+}
+bool Bdd::is_false() const {
+  return root_ == 0;
+}
+int Bdd::top() const {
+  return bdd_var(root_);
+}
+Bdd Bdd::low() const {
+  return Bdd(bdd_low(root_));
+}
+Bdd Bdd::high() const {
+  return Bdd(bdd_high(root_));
+}
 
 Bdd Bdd::cofactor(int var, bool value) const {
   if (root_ <= 1 || bdd_var(root_) != var) return *this;

@@ -7,11 +7,10 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
-
-#include "logic/big_count.hpp"
 #include <stdexcept>
 #include <vector>
 
+#include "logic/big_count.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine::bdd {
@@ -62,7 +61,7 @@ struct ManagerOptions {
   int nodes = 1 << 16;  ///< initial node table (grows on demand, doubling)
   int cache = 1 << 14;
   int cache_ratio = 4;
-  int max_nodes = 0;      ///< 0 = unlimited; past it an operation throws BddError
+  int max_nodes = 0;  ///< 0 = unlimited; past it an operation throws BddError
 };
 
 /// Approximate bytes per node of the table, with its share of the operation caches (20 bytes

@@ -34,7 +34,8 @@ double since(Clock::time_point t) {
 
 class Run {
  public:
-  Run(const logic::CheckTask& task, SymbolicSystem& sys) : task_(task), sys_(sys), ts_(sys.system()) {}
+  Run(const logic::CheckTask& task, SymbolicSystem& sys)
+      : task_(task), sys_(sys), ts_(sys.system()) {}
 
   logic::CheckReport check() {
     const auto start = Clock::now();
@@ -65,7 +66,8 @@ class Run {
     }
     {
       BddSpace space(*this, report, ctl);
-      for (auto& r : run_standard_checks_on(space, ts_, task_)) report.results.push_back(std::move(r));
+      for (auto& r : run_standard_checks_on(space, ts_, task_))
+        report.results.push_back(std::move(r));
     }
     // Edges last: on a huge model their relation may not fit where the verdicts did.
     report.edges_known = false;
@@ -73,7 +75,8 @@ class Run {
       try {
         if (report.stopped_early) {
           // Only rings so far: the edges out of the last one are not known.
-        } else if (const auto edges = sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
+        } else if (const auto edges =
+                       sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
           report.edges = *edges;
           report.edges_known = true;
         }
@@ -102,8 +105,8 @@ class Run {
     r.formula = formula;
     r.check = check;
     r.verdict = Verdict::Unknown;
-    r.message = failed_limit_ == Limit::Time ? failed_
-                                             : "the BDD package ran out of resources: " + failed_;
+    r.message =
+        failed_limit_ == Limit::Time ? failed_ : "the BDD package ran out of resources: " + failed_;
     return r;
   }
 
@@ -177,8 +180,8 @@ class Run {
   }
 
   std::string limit_message(const logic::CheckReport& report) const {
-    return "exploration stopped at the " + report.limit + " limit after " +
-           report.states.str() + " states";
+    return "exploration stopped at the " + report.limit + " limit after " + report.states.str() +
+           " states";
   }
 
   /// A shortest run from an initial state into `target` (which must meet the reached states).
@@ -201,8 +204,8 @@ class Run {
     t.ends_in_deadlock = run.ends_in_deadlock;
     if (states.empty()) return t;
     const auto& circuit = sys_.circuit();
-    std::vector<std::int64_t> inputs = logic::pick_inputs(semantics::InputCondition::always(),
-                                                          ts_.inputs(), {});
+    std::vector<std::int64_t> inputs =
+        logic::pick_inputs(semantics::InputCondition::always(), ts_.inputs(), {});
     t.steps.push_back({inputs, states.front(), {}});
     for (std::size_t k = 1; k < states.size(); ++k) {
       const auto bits = sys_.inputs_between(states[k - 1], states[k]);
@@ -305,7 +308,9 @@ class Run {
     bool complete() const { return report_.complete; }
     std::string limit_name() const { return report_.limit; }
     std::string state_count() const { return report_.states.str(); }
-    std::uint64_t progress_states() const { return report_.states.to_u64().value_or(~std::uint64_t{0}); }
+    std::uint64_t progress_states() const {
+      return report_.states.to_u64().value_or(~std::uint64_t{0});
+    }
     bool has_fairness() const { return !run_.task_.fairness.empty(); }
 
     Set reached() const { return run_.reached_; }
@@ -375,24 +380,33 @@ class Run {
       const Bdd err = run_.reached_ & sys_.range_error_states();
       if (ts.kind() != semantics::SemanticsKind::Grafcet) {
         if (!err.is_false())
-          out.push_back({"a range error (integer overflow, division by zero or a value out of "
-                         "its type) can occur in " + ts.describe(sys_.pick(err)), err});
+          out.push_back(
+              {"a range error (integer overflow, division by zero or a value out of "
+               "its type) can occur in " +
+                   ts.describe(sys_.pick(err)),
+               err});
         return out;
       }
       if (sys_.initial_unstable())
-        out.push_back({"instability: under some initial input valuation the transient "
-                       "evolutions never reach a stable situation", std::nullopt});
+        out.push_back(
+            {"instability: under some initial input valuation the transient "
+             "evolutions never reach a stable situation",
+             std::nullopt});
       if (sys_.initial_range_error())
-        out.push_back({"range error: under some initial input valuation an evolution raises "
-                       "a range error or a forcing conflict", std::nullopt});
+        out.push_back(
+            {"range error: under some initial input valuation an evolution raises "
+             "a range error or a forcing conflict",
+             std::nullopt});
       const Bdd unstable = run_.reached_ & sys_.unstable_states();
       if (!unstable.is_false())
         out.push_back({"instability: from " + ts.describe(sys_.pick(unstable)) +
                            " an input event starts transient evolutions that never reach a "
-                           "stable situation", unstable});
+                           "stable situation",
+                       unstable});
       if (!err.is_false())
         out.push_back({"range error: from " + ts.describe(sys_.pick(err)) +
-                           " an input event raises a range error or a forcing conflict", err});
+                           " an input event raises a range error or a forcing conflict",
+                       err});
       return out;
     }
 
@@ -448,8 +462,9 @@ class BddModelChecker final : public ModelChecker {
     // (a crash in a later garbage collection) after them, so the explicit engine checks LTL.
     if (const auto* ltl = logic::first_ltl_property(task);
         ltl && task.system->kind() == semantics::SemanticsKind::Grafcet) {
-      if (why) *why = "the bdd engine checks LTL on IEC 61131-3 charts only ('" + ltl->name +
-                      "' on a Grafcet); use --engine explicit (or auto)";
+      if (why)
+        *why = "the bdd engine checks LTL on IEC 61131-3 charts only ('" + ltl->name +
+               "' on a Grafcet); use --engine explicit (or auto)";
       return false;
     }
     try {
@@ -490,7 +505,8 @@ class BddModelChecker final : public ModelChecker {
       const bool time = e.which() == Limit::Time;
       report.limit = to_string(e.which());
       report.edges_known = false;
-      const std::string why = (time ? std::string() : "the BDD package ran out of resources: ") + e.what();
+      const std::string why =
+          (time ? std::string() : "the BDD package ran out of resources: ") + e.what();
       for (const auto& p : task.properties) {
         PropertyResult r;
         r.name = p.name;

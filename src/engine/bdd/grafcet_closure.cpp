@@ -126,8 +126,10 @@ GrafcetClosure::GrafcetClosure(const semantics::GrafcetCircuit& circuit, Grafcet
   std::vector<int> first;
   for (int x : all_nq) {
     auto it = last.find(x);
-    if (it == last.end()) first.push_back(x);
-    else after[static_cast<std::size_t>(it->second)].push_back(x);
+    if (it == last.end())
+      first.push_back(x);
+    else
+      after[static_cast<std::size_t>(it->second)].push_back(x);
   }
   quantify_first_ = Bdd::cube(first);
   for (std::size_t k = 0; k < parts.size(); ++k) {

@@ -7,8 +7,8 @@
 namespace sfcv::engine {
 
 enum class ReorderMode {
-  None,     ///< the static (FORCE) order throughout
-  Once,     ///< one sifting pass, right after the transition relation is built
+  None,  ///< the static (FORCE) order throughout
+  Once,  ///< one sifting pass, right after the transition relation is built
   /// Sifting whenever the live nodes grew past a threshold: first the node table's initial
   /// size (sized from the circuit), then twice the live nodes after the last pass (BuDDy's
   /// rule, as NuSMV's -dynamic); a small chart never sifts.
@@ -30,9 +30,12 @@ inline std::optional<ReorderMode> parse_reorder_mode(std::string_view text) {
 
 inline std::string_view to_string(ReorderMode mode) {
   switch (mode) {
-    case ReorderMode::None: return "none";
-    case ReorderMode::Once: return "once";
-    case ReorderMode::Dynamic: return "dynamic";
+    case ReorderMode::None:
+      return "none";
+    case ReorderMode::Once:
+      return "once";
+    case ReorderMode::Dynamic:
+      return "dynamic";
   }
   return "none";
 }

@@ -29,26 +29,48 @@ Bdd SymbolicCtl::compute(const logic::Formula& f) {
   const bool fair = !fair_sets_.empty();
   auto arg = [&](std::size_t i) { return sat(f.args[i]); };
   switch (f.op) {
-    case Op::True: case Op::False: case Op::Atom: case Op::Compare: return sys_.atom(f);
-    case Op::Not: return !arg(0);
-    case Op::And: return arg(0) & arg(1);
-    case Op::Or: return arg(0) | arg(1);
-    case Op::Implies: return (!arg(0)) | arg(1);
-    case Op::Iff: return arg(0).iff(arg(1));
-    case Op::Xor: return arg(0) ^ arg(1);
-    case Op::EX: return ex(arg(0));
-    case Op::AX: return !ex(!arg(0));
-    case Op::EF: return eu(Bdd::constant(true), arg(0));
-    case Op::AG: return !eu(Bdd::constant(true), !arg(0));
-    case Op::EG: return fair ? eg_fair(arg(0)) : eg(arg(0));
-    case Op::AF: return !(fair ? eg_fair(!arg(0)) : eg(!arg(0)));
-    case Op::EU: return eu(arg(0), arg(1));
+    case Op::True:
+    case Op::False:
+    case Op::Atom:
+    case Op::Compare:
+      return sys_.atom(f);
+    case Op::Not:
+      return !arg(0);
+    case Op::And:
+      return arg(0) & arg(1);
+    case Op::Or:
+      return arg(0) | arg(1);
+    case Op::Implies:
+      return (!arg(0)) | arg(1);
+    case Op::Iff:
+      return arg(0).iff(arg(1));
+    case Op::Xor:
+      return arg(0) ^ arg(1);
+    case Op::EX:
+      return ex(arg(0));
+    case Op::AX:
+      return !ex(!arg(0));
+    case Op::EF:
+      return eu(Bdd::constant(true), arg(0));
+    case Op::AG:
+      return !eu(Bdd::constant(true), !arg(0));
+    case Op::EG:
+      return fair ? eg_fair(arg(0)) : eg(arg(0));
+    case Op::AF:
+      return !(fair ? eg_fair(!arg(0)) : eg(!arg(0)));
+    case Op::EU:
+      return eu(arg(0), arg(1));
     case Op::AU: {
       const Bdd p = arg(0), q = arg(1);
       const Bdd g = fair ? eg_fair(!q) : eg(!q);
       return !(eu(!q, (!p) & (!q)) | g);
     }
-    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+    case Op::X:
+    case Op::F:
+    case Op::G:
+    case Op::U:
+    case Op::R:
+    case Op::W:
       break;  // LTL: can_handle refuses it (logic::first_ltl_property)
   }
   throw std::logic_error("symbolic CTL labelling of an LTL operator: " + logic::to_string(f));
@@ -58,7 +80,9 @@ Bdd SymbolicCtl::fair_states() const {
   return fair_sets_.empty() ? Bdd::constant(true) : fair_;
 }
 
-Bdd SymbolicCtl::ex(const Bdd& p) { return sys_.preimage(fair_and(p)); }
+Bdd SymbolicCtl::ex(const Bdd& p) {
+  return sys_.preimage(fair_and(p));
+}
 
 Bdd SymbolicCtl::eu(const Bdd& p, const Bdd& q) {
   const Bdd target = fair_and(q);

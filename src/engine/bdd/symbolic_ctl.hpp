@@ -72,7 +72,7 @@ class SymbolicCtl {
   std::unordered_map<const logic::Formula*, Bdd> memo_;
   std::unordered_map<const logic::Formula*, Bdd> infinite_memo_;
   std::vector<logic::FormulaPtr> keep_;  ///< formulas made here, kept alive for the memo keys
-  Bdd trace_sources_;  ///< where explain_at starts when the run is empty
+  Bdd trace_sources_;                    ///< where explain_at starts when the run is empty
 };
 
 }  // namespace sfcv::engine

@@ -35,11 +35,15 @@ Bdd SymbolicSystem::fires_any_under_inputs() {
   return any;
 }
 
-Bdd SymbolicSystem::to_next(const Bdd& states) const { return states.replace(*current_to_next_); }
+Bdd SymbolicSystem::to_next(const Bdd& states) const {
+  return states.replace(*current_to_next_);
+}
 Bdd SymbolicSystem::to_current(const Bdd& on_next) const {
   return on_next.replace(*next_to_current_);
 }
-Bdd SymbolicSystem::sources(const Bdd& pairs) const { return pairs.exist(next_cube_); }
+Bdd SymbolicSystem::sources(const Bdd& pairs) const {
+  return pairs.exist(next_cube_);
+}
 Bdd SymbolicSystem::targets(const Bdd& pairs) const {
   return to_current(pairs.exist(current_cube_));
 }
@@ -49,7 +53,9 @@ double SymbolicSystem::count_pairs(const Bdd& pairs) const {
   return std::round(std::exp2(pairs.sat_count_log2(current_cube_ & next_cube_)));
 }
 
-bool SymbolicSystem::depends_on_inputs(const Bdd& f) const { return f.exist(input_cube_) != f; }
+bool SymbolicSystem::depends_on_inputs(const Bdd& f) const {
+  return f.exist(input_cube_) != f;
+}
 
 Bdd SymbolicSystem::observable_nonzero(std::uint32_t o) {
   const auto& bits = circuit_.observable_bits[o];
@@ -78,14 +84,16 @@ semantics::BitVector signal_value(semantics::Aig& aig, const semantics::Transiti
                                   const semantics::TransitionSystem& ts, const logic::Signal& s) {
   using logic::Signal;
   switch (s.op) {
-    case Signal::Op::Const: return semantics::bv_constant(s.value, 64);
+    case Signal::Op::Const:
+      return semantics::bv_constant(s.value, 64);
     case Signal::Op::Input:
       return semantics::bv_add(aig, semantics::bv_resize(c.input_bits[s.index], 64, false),
                                semantics::bv_constant(ts.inputs()[s.index].type.lo, 64));
     case Signal::Op::Observable:
       return semantics::bv_add(aig, semantics::bv_resize(c.observable_bits[s.index], 64, false),
                                semantics::bv_constant(c.observable_lo[s.index], 64));
-    default: break;
+    default:
+      break;
   }
   throw std::invalid_argument("SymbolicSystem::signal: not an integer expression");
 }
@@ -95,25 +103,34 @@ semantics::BitVector signal_value(semantics::Aig& aig, const semantics::Transiti
 Bdd SymbolicSystem::signal(const logic::Signal& s, const std::vector<std::uint32_t>& slots) {
   using logic::Signal;
   switch (s.op) {
-    case Signal::Op::Const: return Bdd::constant(s.value != 0);
+    case Signal::Op::Const:
+      return Bdd::constant(s.value != 0);
     case Signal::Op::Input:
       // A Boolean input is one circuit bit; an integer one is only ever compared (Cmp).
       if (ts_.inputs()[s.index].type.kind != model::TypeKind::Bool)
         throw std::invalid_argument("SymbolicSystem::signal: integer input used as a Boolean");
       return node_bdd(circuit_.input_bits[s.index].at(0));
-    case Signal::Op::Observable: return observable_nonzero(s.index);
-    case Signal::Op::StepVar: return observable_nonzero(slots.at(s.index));
-    case Signal::Op::Not: return !signal(s.args[0], slots);
-    case Signal::Op::And: return signal(s.args[0], slots) & signal(s.args[1], slots);
-    case Signal::Op::Or: return signal(s.args[0], slots) | signal(s.args[1], slots);
+    case Signal::Op::Observable:
+      return observable_nonzero(s.index);
+    case Signal::Op::StepVar:
+      return observable_nonzero(slots.at(s.index));
+    case Signal::Op::Not:
+      return !signal(s.args[0], slots);
+    case Signal::Op::And:
+      return signal(s.args[0], slots) & signal(s.args[1], slots);
+    case Signal::Op::Or:
+      return signal(s.args[0], slots) | signal(s.args[1], slots);
     case Signal::Op::Cmp: {
       if (!s.args[0].is_int) {
         // Booleans compare as truth values.
         const Bdd eq = signal(s.args[0], slots).iff(signal(s.args[1], slots));
         switch (s.cmp) {
-          case logic::CmpOp::Eq: return eq;
-          case logic::CmpOp::Ne: return !eq;
-          default: throw std::invalid_argument("SymbolicSystem::signal: ordering of Booleans");
+          case logic::CmpOp::Eq:
+            return eq;
+          case logic::CmpOp::Ne:
+            return !eq;
+          default:
+            throw std::invalid_argument("SymbolicSystem::signal: ordering of Booleans");
         }
       }
       Aig& aig = circuit_.aig;
@@ -121,12 +138,24 @@ Bdd SymbolicSystem::signal(const logic::Signal& s, const std::vector<std::uint32
       const auto b = signal_value(aig, circuit_, ts_, s.args[1]);
       AigLit r = Aig::kFalse;
       switch (s.cmp) {
-        case logic::CmpOp::Eq: r = semantics::bv_equal(aig, a, b); break;
-        case logic::CmpOp::Ne: r = Aig::make_not(semantics::bv_equal(aig, a, b)); break;
-        case logic::CmpOp::Lt: r = semantics::bv_less_signed(aig, a, b); break;
-        case logic::CmpOp::Le: r = Aig::make_not(semantics::bv_less_signed(aig, b, a)); break;
-        case logic::CmpOp::Gt: r = semantics::bv_less_signed(aig, b, a); break;
-        case logic::CmpOp::Ge: r = Aig::make_not(semantics::bv_less_signed(aig, a, b)); break;
+        case logic::CmpOp::Eq:
+          r = semantics::bv_equal(aig, a, b);
+          break;
+        case logic::CmpOp::Ne:
+          r = Aig::make_not(semantics::bv_equal(aig, a, b));
+          break;
+        case logic::CmpOp::Lt:
+          r = semantics::bv_less_signed(aig, a, b);
+          break;
+        case logic::CmpOp::Le:
+          r = Aig::make_not(semantics::bv_less_signed(aig, b, a));
+          break;
+        case logic::CmpOp::Gt:
+          r = semantics::bv_less_signed(aig, b, a);
+          break;
+        case logic::CmpOp::Ge:
+          r = Aig::make_not(semantics::bv_less_signed(aig, a, b));
+          break;
       }
       memo_.resize(aig.nodes().size());
       memo_set_.resize(aig.nodes().size(), false);

@@ -56,8 +56,12 @@ SymbolicQueryResult SymbolicQueryEvaluator::evaluate(const logic::CompiledQuery&
           r.witness = set(*a);
         }
         break;
-      case Sort::Int: r.number = number(t); break;
-      default: r.set = set(t); break;
+      case Sort::Int:
+        r.number = number(t);
+        break;
+      default:
+        r.set = set(t);
+        break;
     }
   } catch (const std::invalid_argument& e) {
     throw SymbolicQueryError(e.what());
@@ -68,16 +72,20 @@ SymbolicQueryResult SymbolicQueryEvaluator::evaluate(const logic::CompiledQuery&
 SymbolicSet SymbolicQueryEvaluator::set(const Term& t) {
   const auto& obs = sys_.system().observables();
   switch (t.op) {
-    case Term::Op::AllStates: return make(t.sort, reached_);
-    case Term::Op::AllEvolutions: return make(t.sort, evolutions_);
-    case Term::Op::Initial: return make(t.sort, sys_.initial() & reached_);
+    case Term::Op::AllStates:
+      return make(t.sort, reached_);
+    case Term::Op::AllEvolutions:
+      return make(t.sort, evolutions_);
+    case Term::Op::Initial:
+      return make(t.sort, sys_.initial() & reached_);
     case Term::Op::AllSteps: {
       auto r = make(t.sort, Bdd::constant(false));
       for (std::uint32_t i = 0; i < obs.size(); ++i)
         if (obs[i].kind == semantics::ObservableKind::Step) r.steps.set(i);
       return r;
     }
-    case Term::Op::Empty: return make(t.sort, Bdd::constant(false));
+    case Term::Op::Empty:
+      return make(t.sort, Bdd::constant(false));
     case Term::Op::Clearing:
       // The explicit edge x -> x' carries the union of the transitions fired by every input
       // leading there: it clears one when some input that leads there fires one.
@@ -111,10 +119,14 @@ SymbolicSet SymbolicQueryEvaluator::set(const Term& t) {
       }
       return a;
     }
-    case Term::Op::Int: return make(t.sort, evolutions_ & set(t.args[0]).bdd);
-    case Term::Op::Ext: return make(t.sort, evolutions_ & sys_.to_next(set(t.args[0]).bdd));
-    case Term::Op::Amont: return make(t.sort, sys_.sources(set(t.args[0]).bdd));
-    case Term::Op::Aval: return make(t.sort, sys_.targets(set(t.args[0]).bdd));
+    case Term::Op::Int:
+      return make(t.sort, evolutions_ & set(t.args[0]).bdd);
+    case Term::Op::Ext:
+      return make(t.sort, evolutions_ & sys_.to_next(set(t.args[0]).bdd));
+    case Term::Op::Amont:
+      return make(t.sort, sys_.sources(set(t.args[0]).bdd));
+    case Term::Op::Aval:
+      return make(t.sort, sys_.targets(set(t.args[0]).bdd));
     case Term::Op::Succ:
     case Term::Op::Pred: {
       // Ys itself is included (zero evolutions), semantics-notes item 9, as in the explicit
@@ -149,8 +161,9 @@ SymbolicSet SymbolicQueryEvaluator::set(const Term& t) {
     case Term::Op::Emis: {
       const Bdd phi = sys_.signal(t.signal, slot_values_);
       if (sys_.depends_on_inputs(phi))
-        throw SymbolicQueryError("Emis: the expression depends on the inputs of the cycle in "
-                                 "this system's circuit; the symbolic engine cannot evaluate it");
+        throw SymbolicQueryError(
+            "Emis: the expression depends on the inputs of the cycle in "
+            "this system's circuit; the symbolic engine cannot evaluate it");
       return make(t.sort, reached_ & phi);
     }
     case Term::Op::SetBuilder: {
@@ -162,7 +175,8 @@ SymbolicSet SymbolicQueryEvaluator::set(const Term& t) {
       });
       return r;
     }
-    default: break;
+    default:
+      break;
   }
   throw SymbolicQueryError("internal error: not a set term");
 }
@@ -183,10 +197,14 @@ std::int64_t SymbolicQueryEvaluator::number(const Term& t) {
   if (t.op == Term::Op::Count) {
     const auto s = set(t.args[0]);
     switch (t.args[0].sort) {
-      case Sort::States: return static_cast<std::int64_t>(sys_.count(s.bdd));
-      case Sort::Evolutions: return static_cast<std::int64_t>(sys_.count_pairs(s.bdd));
-      case Sort::Steps: return static_cast<std::int64_t>(s.steps.count());
-      default: return 0;  // `#{}`
+      case Sort::States:
+        return static_cast<std::int64_t>(sys_.count(s.bdd));
+      case Sort::Evolutions:
+        return static_cast<std::int64_t>(sys_.count_pairs(s.bdd));
+      case Sort::Steps:
+        return static_cast<std::int64_t>(s.steps.count());
+      default:
+        return 0;  // `#{}`
     }
   }
   throw SymbolicQueryError("internal error: not a number");
@@ -211,7 +229,8 @@ std::uint64_t SymbolicQueryEvaluator::state_id(semantics::StateView state) const
 std::uint64_t SymbolicQueryEvaluator::evolution_id(semantics::StateView source,
                                                    semantics::StateView target) const {
   const Bdd earlier_sources = evolutions_ & ranked_before(source);
-  const Bdd same_source = evolutions_ & sys_.singleton(source) & sys_.to_next(ranked_before(target));
+  const Bdd same_source =
+      evolutions_ & sys_.singleton(source) & sys_.to_next(ranked_before(target));
   return static_cast<std::uint64_t>(sys_.count_pairs(earlier_sources) +
                                     sys_.count_pairs(same_source));
 }

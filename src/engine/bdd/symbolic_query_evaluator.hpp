@@ -45,7 +45,7 @@ struct SymbolicQueryResult {
 };
 
 struct SymbolicQueryOptions {
-  double timeout_seconds = 0;  ///< 0 = unlimited (reachability; then SymbolicQueryError)
+  double timeout_seconds = 0;    ///< 0 = unlimited (reachability; then SymbolicQueryError)
   std::uint64_t max_states = 0;  ///< 0 = unlimited
 };
 

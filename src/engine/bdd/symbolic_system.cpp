@@ -1,13 +1,13 @@
 #include "engine/bdd/symbolic_system.hpp"
 
-#include "engine/bdd/grafcet_closure.hpp"
-#include "engine/bdd/variable_order.hpp"
-#include "logic/circuit_atom.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+
+#include "engine/bdd/grafcet_closure.hpp"
+#include "engine/bdd/variable_order.hpp"
+#include "logic/circuit_atom.hpp"
 
 namespace sfcv::engine {
 
@@ -22,9 +22,10 @@ namespace {
 // between 16 K and 1 M nodes.
 bdd::ManagerOptions manager_options(const SymbolicOptions& o, const Aig& aig) {
   bdd::ManagerOptions m;
-  m.nodes = o.nodes > 0 ? o.nodes
-                        : static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32,
-                                                                   1 << 14, 1 << 20));
+  m.nodes =
+      o.nodes > 0
+          ? o.nodes
+          : static_cast<int>(std::clamp<std::size_t>(aig.nodes().size() * 32, 1 << 14, 1 << 20));
   m.cache = o.cache > 0 ? o.cache : std::max(1, m.nodes / 4);
   m.cache_ratio = 4;
   m.max_nodes = o.max_nodes;
@@ -62,7 +63,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   bdd::ensure_variables(var);
   if (options.reorder != ReorderMode::None) {
     // Blocks before any reordering: a current/next pair moves as one, inputs alone.
-    for (std::size_t l = 0; l < num_latches; ++l) bdd::add_variable_block(current_var_[l], next_var_[l]);
+    for (std::size_t l = 0; l < num_latches; ++l)
+      bdd::add_variable_block(current_var_[l], next_var_[l]);
     for (int v : input_var_) bdd::add_variable_block(v, v);
     start_reordering(options.reorder);
   }
@@ -80,7 +82,8 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   }
   ok_ = node_bdd(circuit_.allowed) & !node_bdd(circuit_.range_error);
   has_successor_ = ok_.exist(input_cube_);
-  range_error_states_ = (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
+  range_error_states_ =
+      (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
 
   // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in
   // variable order while small; then each current/input variable is quantified right after the last
@@ -142,8 +145,10 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   };
   for (std::size_t v = 0; v < num_vars; ++v) {
     if (!quantified(static_cast<int>(v))) continue;
-    if (last[v] < 0) first.push_back(static_cast<int>(v));
-    else after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
+    if (last[v] < 0)
+      first.push_back(static_cast<int>(v));
+    else
+      after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
   }
   // Pre-image: the next variables of a cluster and the inputs it is the last to read.
   std::vector<int> input_last(num_inputs, -1);
@@ -283,8 +288,10 @@ bool SymbolicSystem::initial_unstable() const {
 }
 
 void SymbolicSystem::restrict_sources(const Bdd& states) {
-  if (grafcet_) grafcet_->set_sources(states);
-  else preimage_care_ = states;
+  if (grafcet_)
+    grafcet_->set_sources(states);
+  else
+    preimage_care_ = states;
 }
 
 bool SymbolicSystem::initial_range_error() const {
@@ -347,9 +354,15 @@ Bdd SymbolicSystem::node_bdd(AigLit lit) {
       }
       const auto& node = aig.nodes()[n];
       switch (node.kind) {
-        case Aig::NodeKind::Constant: memo_[n] = Bdd::constant(false); break;
-        case Aig::NodeKind::Input: memo_[n] = Bdd::variable(input_var_[node.index]); break;
-        case Aig::NodeKind::Latch: memo_[n] = Bdd::variable(current_var_[node.index]); break;
+        case Aig::NodeKind::Constant:
+          memo_[n] = Bdd::constant(false);
+          break;
+        case Aig::NodeKind::Input:
+          memo_[n] = Bdd::variable(input_var_[node.index]);
+          break;
+        case Aig::NodeKind::Latch:
+          memo_[n] = Bdd::variable(current_var_[node.index]);
+          break;
         case Aig::NodeKind::And: {
           const auto l = Aig::node_of(node.left), r = Aig::node_of(node.right);
           if (!memo_set_[l] || !memo_set_[r]) {
@@ -399,7 +412,8 @@ std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
   const Bdd one = on_inputs.sat_one(input_cube_);
   if (one.is_false()) return {};
   std::vector<bool> bits(input_var_.size());
-  for (std::size_t i = 0; i < input_var_.size(); ++i) bits[i] = one.value_in_cube(input_var_[i]) == 1;
+  for (std::size_t i = 0; i < input_var_.size(); ++i)
+    bits[i] = one.value_in_cube(input_var_[i]) == 1;
   return bits;
 }
 

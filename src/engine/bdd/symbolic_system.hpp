@@ -22,14 +22,14 @@ struct SymbolicOptions {
   /// Initial node table, 0: sized from the circuit (make_symbolic_system). BuDDy grows it on
   /// demand, doubling; a preallocated 4M-node table cost every run 0.16 s and 220 MB.
   int nodes = 0;
-  int cache = 0;  ///< operation cache entries, 0: a quarter of the table
+  int cache = 0;              ///< operation cache entries, 0: a quarter of the table
   int cluster_nodes = 2'000;  ///< conjuncts are clustered up to about this many nodes
   /// Grafcet: the closure stops with LimitReached(Time) after this many seconds (0: no
   /// limit), so that a check with --timeout ends with unknown.
   double timeout_seconds = 0;
   /// The run's deadline (model::Budget): building the circuit stops there (LimitReached).
   std::optional<std::chrono::steady_clock::time_point> deadline;
-  int max_nodes = 0;       ///< node table limit (0 = none): past it operations throw BddError
+  int max_nodes = 0;  ///< node table limit (0 = none): past it operations throw BddError
   ReorderMode reorder = ReorderMode::None;  ///< sifting of current/next pairs (reorder_mode.hpp)
 };
 

@@ -17,13 +17,18 @@ void aig_support(const Aig& aig, AigLit root, std::vector<bool>& seen,
     seen[n] = true;
     const auto& node = aig.nodes()[n];
     switch (node.kind) {
-      case Aig::NodeKind::Input: inputs.push_back(node.index); break;
-      case Aig::NodeKind::Latch: latches.push_back(node.index); break;
+      case Aig::NodeKind::Input:
+        inputs.push_back(node.index);
+        break;
+      case Aig::NodeKind::Latch:
+        latches.push_back(node.index);
+        break;
       case Aig::NodeKind::And:
         stack.push_back(Aig::node_of(node.left));
         stack.push_back(Aig::node_of(node.right));
         break;
-      case Aig::NodeKind::Constant: break;
+      case Aig::NodeKind::Constant:
+        break;
     }
   }
 }

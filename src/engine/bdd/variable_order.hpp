@@ -16,7 +16,7 @@ void aig_support(const semantics::Aig& aig, semantics::AigLit root, std::vector<
 
 /// Units in BDD order: latch l is unit l, input i is unit L + i (L latches). `extra_ties` adds
 /// groups of units that should sit together (besides each latch and its next function).
-std::vector<std::uint32_t> force_order(const semantics::Aig& aig,
-                                       const std::vector<std::vector<std::uint32_t>>& extra_ties = {});
+std::vector<std::uint32_t> force_order(
+    const semantics::Aig& aig, const std::vector<std::vector<std::uint32_t>>& extra_ties = {});
 
 }  // namespace sfcv::engine

@@ -44,7 +44,8 @@ struct DynamicBit {
 class CompiledEnumerator final : public TargetEnumerator {
  public:
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
-      : fallback_(make_interpreted_enumerator(ts)), fallback_lock_(std::make_shared<std::mutex>()),
+      : fallback_(make_interpreted_enumerator(ts)),
+        fallback_lock_(std::make_shared<std::mutex>()),
         words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
   }
@@ -99,7 +100,8 @@ class CompiledEnumerator final : public TargetEnumerator {
     }
     std::uint32_t order[64];
     std::uint32_t n = 0;
-    for (Word m = relevant; m; m &= m - 1) order[n++] = static_cast<std::uint32_t>(std::countr_zero(m));
+    for (Word m = relevant; m; m &= m - 1)
+      order[n++] = static_cast<std::uint32_t>(std::countr_zero(m));
     for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], 0);  // not read: any value
     const std::uint32_t low = std::min<std::uint32_t>(r, 6);
     for (std::uint32_t k = 0; k < low; ++k) set(input_ids_[order[k]], kLane[k]);
@@ -123,7 +125,9 @@ class CompiledEnumerator final : public TargetEnumerator {
     Word bit;
   };
 
-  static Word lanes(std::uint32_t bits) { return bits >= 6 ? ~Word{0} : (Word{1} << (1U << bits)) - 1; }
+  static Word lanes(std::uint32_t bits) {
+    return bits >= 6 ? ~Word{0} : (Word{1} << (1U << bits)) - 1;
+  }
   // val_ holds both polarities of every node, indexed by literal: a gate is one AND.
   Word value(std::uint32_t lit) const { return val_[lit]; }
   void set(std::uint32_t id, Word w) {
@@ -172,7 +176,8 @@ class CompiledEnumerator final : public TargetEnumerator {
     if (words_ == 1) {
       std::fill(t, t + lanes, common_[0]);
     } else {
-      for (std::uint32_t l = 0; l < lanes; ++l) std::copy(common_.begin(), common_.end(), t + l * words_);
+      for (std::uint32_t l = 0; l < lanes; ++l)
+        std::copy(common_.begin(), common_.end(), t + l * words_);
     }
     for (const auto& e : exceptions_)
       for (Word m = e.lanes; m; m &= m - 1)
@@ -195,7 +200,8 @@ class CompiledEnumerator final : public TargetEnumerator {
     for (std::size_t n = 1; n < nodes.size(); ++n) {
       if (nodes[n].kind == Aig::NodeKind::Input) reads_input[n] = 1;
       if (nodes[n].kind == Aig::NodeKind::And)
-        reads_input[n] = reads_input[Aig::node_of(nodes[n].left)] | reads_input[Aig::node_of(nodes[n].right)];
+        reads_input[n] =
+            reads_input[Aig::node_of(nodes[n].left)] | reads_input[Aig::node_of(nodes[n].right)];
     }
     // Compact ids: 0 the constant, then every latch, every input, the static gates, the
     // input-reading gates.
@@ -241,7 +247,8 @@ class CompiledEnumerator final : public TargetEnumerator {
     }
     allowed_ = compact(c.allowed);
     range_error_ = compact(c.range_error);
-    allowed_static_ = !reads_input[Aig::node_of(c.allowed)] && !reads_input[Aig::node_of(c.range_error)];
+    allowed_static_ =
+        !reads_input[Aig::node_of(c.allowed)] && !reads_input[Aig::node_of(c.range_error)];
   }
 
   std::shared_ptr<TargetEnumerator> fallback_;

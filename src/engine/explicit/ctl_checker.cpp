@@ -60,12 +60,12 @@ StateSet CtlChecker::compute(const Formula& f) {
   const auto& ts = g_.system();
   auto arg = [&](std::size_t i) -> const StateSet& { return sat(f.args[i]); };
   // Fair versions of the path operators: targets must be fair states.
-  auto fair_and = [&](const StateSet& s) {
-    return fairness_.empty() ? s : conj(s, fair_states());
-  };
+  auto fair_and = [&](const StateSet& s) { return fairness_.empty() ? s : conj(s, fair_states()); };
   switch (f.op) {
-    case Op::True: return StateSet(n, 1);
-    case Op::False: return StateSet(n, 0);
+    case Op::True:
+      return StateSet(n, 1);
+    case Op::False:
+      return StateSet(n, 0);
     case Op::Atom:
     case Op::Compare: {
       StateSet r(n, 0);
@@ -76,10 +76,14 @@ StateSet CtlChecker::compute(const Formula& f) {
       }
       return r;
     }
-    case Op::Not: return negate(arg(0));
-    case Op::And: return conj(arg(0), arg(1));
-    case Op::Or: return disj(arg(0), arg(1));
-    case Op::Implies: return disj(negate(arg(0)), arg(1));
+    case Op::Not:
+      return negate(arg(0));
+    case Op::And:
+      return conj(arg(0), arg(1));
+    case Op::Or:
+      return disj(arg(0), arg(1));
+    case Op::Implies:
+      return disj(negate(arg(0)), arg(1));
     case Op::Iff:
     case Op::Xor: {
       const auto& a = arg(0);
@@ -88,19 +92,31 @@ StateSet CtlChecker::compute(const Formula& f) {
       for (std::uint32_t s = 0; s < n; ++s) r[s] = (a[s] == b[s]) == (f.op == Op::Iff);
       return r;
     }
-    case Op::EX: return ex(fair_and(arg(0)));
-    case Op::AX: return negate(ex(fair_and(negate(arg(0)))));
-    case Op::EF: return eu(StateSet(n, 1), fair_and(arg(0)));
-    case Op::AG: return negate(eu(StateSet(n, 1), fair_and(negate(arg(0)))));
-    case Op::EG: return eg(arg(0));
-    case Op::AF: return negate(eg(negate(arg(0))));
-    case Op::EU: return eu(arg(0), fair_and(arg(1)));
+    case Op::EX:
+      return ex(fair_and(arg(0)));
+    case Op::AX:
+      return negate(ex(fair_and(negate(arg(0)))));
+    case Op::EF:
+      return eu(StateSet(n, 1), fair_and(arg(0)));
+    case Op::AG:
+      return negate(eu(StateSet(n, 1), fair_and(negate(arg(0)))));
+    case Op::EG:
+      return eg(arg(0));
+    case Op::AF:
+      return negate(eg(negate(arg(0))));
+    case Op::EU:
+      return eu(arg(0), fair_and(arg(1)));
     case Op::AU: {
       const auto nq = negate(arg(1));
       const auto np = negate(arg(0));
       return negate(disj(eu(nq, fair_and(conj(np, nq))), eg(nq)));
     }
-    case Op::X: case Op::F: case Op::G: case Op::U: case Op::R: case Op::W:
+    case Op::X:
+    case Op::F:
+    case Op::G:
+    case Op::U:
+    case Op::R:
+    case Op::W:
       break;  // LTL: path formulas, checked by ltl_checker.hpp, never labelled on states
   }
   throw InternalError("CTL labelling of an LTL operator: " + logic::to_string(f));
@@ -155,7 +171,9 @@ std::vector<std::int32_t> CtlChecker::good_sccs(const StateSet& mask) {
   std::vector<Frame> calls;
   std::uint32_t counter = 0;
   std::int32_t next_id = 0;
-  auto edges_end = [&](std::uint32_t v) { return g_.expanded(v) ? g_.edges_end(v) : g_.edges_begin(v); };
+  auto edges_end = [&](std::uint32_t v) {
+    return g_.expanded(v) ? g_.edges_end(v) : g_.edges_begin(v);
+  };
   for (std::uint32_t root = 0; root < n; ++root) {
     if (!mask[root] || index[root] != kUnvisited) continue;
     auto open = [&](std::uint32_t v) {
@@ -224,8 +242,7 @@ StateSet CtlChecker::eg(const StateSet& p) {
 
 std::vector<CtlChecker::Hop> CtlChecker::bfs(const std::vector<std::uint32_t>& sources,
                                              const StateSet& allowed, const StateSet& target,
-                                             bool min_one_edge, std::uint32_t& start,
-                                             bool& found) {
+                                             bool min_one_edge, std::uint32_t& start, bool& found) {
   found = false;
   const std::uint32_t n = g_.num_states();
   constexpr std::uint32_t kNone = ~0U;
@@ -273,9 +290,9 @@ std::vector<CtlChecker::Hop> CtlChecker::bfs(const std::vector<std::uint32_t>& s
   return {};
 }
 
-void CtlChecker::explain_eu(const StateSet& through, const StateSet& target,
-                            const FormulaPtr& then, const std::vector<std::uint32_t>& sources,
-                            std::vector<Hop>& run, logic::Trace& trace, int depth) {
+void CtlChecker::explain_eu(const StateSet& through, const StateSet& target, const FormulaPtr& then,
+                            const std::vector<std::uint32_t>& sources, std::vector<Hop>& run,
+                            logic::Trace& trace, int depth) {
   std::uint32_t start = 0;
   bool found = false;
   auto hops = bfs(sources, through, target, false, start, found);
@@ -348,9 +365,7 @@ void CtlChecker::explain_at(const FormulaPtr& f, std::vector<Hop>& run, logic::T
   // The lasso of EG closes the run: nothing can follow it.
   if (depth > 8 || trace.loop_start || trace.ends_in_deadlock) return settle();
   const std::uint32_t n = g_.num_states();
-  auto fair_and = [&](const StateSet& s) {
-    return fairness_.empty() ? s : conj(s, fair_states());
-  };
+  auto fair_and = [&](const StateSet& s) { return fairness_.empty() ? s : conj(s, fair_states()); };
   const auto& a = f->args;
   switch (f->op) {
     case Op::Not: {

@@ -73,9 +73,9 @@ class CtlChecker {
                        bool& found);
   void explain_at(const logic::FormulaPtr& f, std::vector<Hop>& run, logic::Trace& trace,
                   int depth);
-  void explain_eu(const StateSet& through, const StateSet& target,
-                  const logic::FormulaPtr& then, const std::vector<std::uint32_t>& sources,
-                  std::vector<Hop>& run, logic::Trace& trace, int depth);
+  void explain_eu(const StateSet& through, const StateSet& target, const logic::FormulaPtr& then,
+                  const std::vector<std::uint32_t>& sources, std::vector<Hop>& run,
+                  logic::Trace& trace, int depth);
   void lasso(const logic::FormulaPtr& p, const std::vector<std::uint32_t>& sources,
              std::vector<Hop>& run, logic::Trace& trace);
   logic::Trace to_trace(const std::vector<Hop>& run, logic::Trace base) const;
@@ -86,7 +86,7 @@ class CtlChecker {
   StateSet fair_;
   bool fair_computed_ = false;
   std::unordered_map<const logic::Formula*, StateSet> memo_;
-  std::vector<logic::FormulaPtr> keep_;  ///< formulas created here, kept alive for memo_ keys
+  std::vector<logic::FormulaPtr> keep_;       ///< formulas created here, kept alive for memo_ keys
   std::vector<std::uint32_t> trace_sources_;  ///< where explain_at starts when the run is empty
 };
 

@@ -141,9 +141,9 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
       // Each property is linear in the graph: checking the deadline between them bounds the
       // overrun by one property.
       task.limits.check_time("checking the properties");
-      r = logic::is_ltl(*p.formula) ? check_ltl(checker, p, task.fairness, task.limits,
-                                                          task.deadlock_paths)
-                                    : checker.check(p);
+      r = logic::is_ltl(*p.formula)
+              ? check_ltl(checker, p, task.fairness, task.limits, task.deadlock_paths)
+              : checker.check(p);
     } catch (const LimitReached& stop) {
       r = logic::PropertyResult{};
       r.name = p.name;

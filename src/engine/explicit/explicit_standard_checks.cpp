@@ -170,9 +170,11 @@ class ExplicitSpace {
     for (const auto& a : g_.anomalies()) {
       const std::string kind =
           a.kind == semantics::Anomaly::Kind::Instability ? "instability" : "range error";
-      out.push_back({kind + ": " + a.message +
-                         (a.condition.is_false() ? "" : " (inputs " + a.condition.to_string(ts_.inputs()) + ")"),
-                     std::nullopt});
+      out.push_back(
+          {kind + ": " + a.message +
+               (a.condition.is_false() ? ""
+                                       : " (inputs " + a.condition.to_string(ts_.inputs()) + ")"),
+           std::nullopt});
     }
     return out;
   }

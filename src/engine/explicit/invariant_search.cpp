@@ -64,18 +64,29 @@ class EdgeLabel final : public semantics::SuccessorSink {
 bool holds(const logic::Formula& f, const semantics::TransitionSystem& ts, StateView s) {
   const auto& a = f.args;
   switch (f.op) {
-    case Op::True: return true;
-    case Op::False: return false;
-    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::True:
+      return true;
+    case Op::False:
+      return false;
+    case Op::Atom:
+      return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
     case Op::Compare:
-      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
-    case Op::Not: return !holds(*a[0], ts, s);
-    case Op::And: return holds(*a[0], ts, s) && holds(*a[1], ts, s);
-    case Op::Or: return holds(*a[0], ts, s) || holds(*a[1], ts, s);
-    case Op::Implies: return !holds(*a[0], ts, s) || holds(*a[1], ts, s);
-    case Op::Iff: return holds(*a[0], ts, s) == holds(*a[1], ts, s);
-    case Op::Xor: return holds(*a[0], ts, s) != holds(*a[1], ts, s);
-    default: return false;  // temporal: excluded by invariants_only
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
+                            f.value);
+    case Op::Not:
+      return !holds(*a[0], ts, s);
+    case Op::And:
+      return holds(*a[0], ts, s) && holds(*a[1], ts, s);
+    case Op::Or:
+      return holds(*a[0], ts, s) || holds(*a[1], ts, s);
+    case Op::Implies:
+      return !holds(*a[0], ts, s) || holds(*a[1], ts, s);
+    case Op::Iff:
+      return holds(*a[0], ts, s) == holds(*a[1], ts, s);
+    case Op::Xor:
+      return holds(*a[0], ts, s) != holds(*a[1], ts, s);
+    default:
+      return false;  // temporal: excluded by invariants_only
   }
 }
 
@@ -179,8 +190,8 @@ class ParallelTargets {
     std::vector<Chunk> chunks_;
     std::uint32_t num_chunks_ = 0;
     std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
-    std::uint32_t completed_ = 0;  ///< guarded by the pool's mutex, as active_
-    std::uint32_t active_ = 0;     ///< workers inside this batch
+    std::uint32_t completed_ = 0;         ///< guarded by the pool's mutex, as active_
+    std::uint32_t active_ = 0;            ///< workers inside this batch
     std::exception_ptr error_;
   };
 
@@ -213,7 +224,8 @@ class ParallelTargets {
     b.states_.resize(static_cast<std::size_t>(end - begin) * words_);
     for (std::uint32_t s = begin; s < end; ++s) {
       const auto v = store.at(s);
-      std::copy(v.begin(), v.end(), b.states_.begin() + static_cast<std::ptrdiff_t>(s - begin) * words_);
+      std::copy(v.begin(), v.end(),
+                b.states_.begin() + static_cast<std::ptrdiff_t>(s - begin) * words_);
     }
     b.num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
     if (b.chunks_.size() < b.num_chunks_) b.chunks_.resize(b.num_chunks_);
@@ -302,7 +314,8 @@ class ParallelTargets {
 
 }  // namespace
 
-std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts) {
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(
+    const semantics::TransitionSystem& ts) {
   return std::make_unique<InterpretedEnumerator>(ts);
 }
 
@@ -406,8 +419,10 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       return false;
     }
     if ((s & 1023U) == 0 && s > 0) {
-      if (limits.expired()) limit = "time";
-      else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes) limit = "memory";
+      if (limits.expired())
+        limit = "time";
+      else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes)
+        limit = "memory";
       if (!limit.empty()) return false;
       if (limits.progress && (s & 4095U) == 0) {
         logic::Progress p;

@@ -31,7 +31,8 @@ class TargetEnumerator {
   virtual std::unique_ptr<TargetEnumerator> clone() const { return nullptr; }
 };
 
-std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts);
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(
+    const semantics::TransitionSystem& ts);
 
 /// Whether `task` asks only for invariants (every property AG p with p propositional, no
 /// fairness, no standard check, no coverage), which check_invariants decides without the graph.

@@ -19,8 +19,7 @@ constexpr std::uint32_t kNone = ~0U;
 class Product {
  public:
   Product(CtlChecker& checker, const logic::BuchiAutomaton& aut,
-          const std::vector<logic::FormulaPtr>& fairness, const model::Budget& budget,
-          bool stutter)
+          const std::vector<logic::FormulaPtr>& fairness, const model::Budget& budget, bool stutter)
       : g_(checker.graph()), aut_(aut), budget_(budget), stutter_(stutter) {
     // A node's label, as the set of graph states satisfying all of it.
     for (const auto& node : aut.nodes) {

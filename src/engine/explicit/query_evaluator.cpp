@@ -19,10 +19,14 @@ QueryEvaluator::QueryEvaluator(const ReachableSituationGraph& graph) : g_(graph)
 
 std::uint64_t QueryEvaluator::universe(Sort s) const {
   switch (s) {
-    case Sort::States: return g_.num_states();
-    case Sort::Evolutions: return g_.num_edges();
-    case Sort::Steps: return g_.system().observables().size();
-    default: return 0;
+    case Sort::States:
+      return g_.num_states();
+    case Sort::Evolutions:
+      return g_.num_edges();
+    case Sort::Steps:
+      return g_.system().observables().size();
+    default:
+      return 0;
   }
 }
 
@@ -39,8 +43,12 @@ QueryResult QueryEvaluator::evaluate(const logic::CompiledQuery& query) {
         r.witness = set(*a);
       }
       break;
-    case Sort::Int: r.number = number(t); break;
-    default: r.set = set(t); break;
+    case Sort::Int:
+      r.number = number(t);
+      break;
+    default:
+      r.set = set(t);
+      break;
   }
   return r;
 }
@@ -49,7 +57,8 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
   const auto n = universe(t.sort);
   switch (t.op) {
     case Term::Op::AllStates:
-    case Term::Op::AllEvolutions: return DynamicBitset(n, true);
+    case Term::Op::AllEvolutions:
+      return DynamicBitset(n, true);
     case Term::Op::Initial: {
       DynamicBitset r(n);
       for (auto s : g_.initial_states()) r.set(s);
@@ -62,7 +71,8 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
         if (obs[i].kind == semantics::ObservableKind::Step) r.set(i);
       return r;
     }
-    case Term::Op::Empty: return DynamicBitset(n);
+    case Term::Op::Empty:
+      return DynamicBitset(n);
     case Term::Op::Clearing: {
       DynamicBitset r(n);
       for (std::uint64_t e = 0; e < n; ++e)
@@ -79,9 +89,12 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
       r.set(slot_values_[t.slot]);
       return r;
     }
-    case Term::Op::Union: return set(t.args[0]) |= set(t.args[1]);
-    case Term::Op::Inter: return set(t.args[0]) &= set(t.args[1]);
-    case Term::Op::Diff: return set(t.args[0]).subtract(set(t.args[1]));
+    case Term::Op::Union:
+      return set(t.args[0]) |= set(t.args[1]);
+    case Term::Op::Inter:
+      return set(t.args[0]) &= set(t.args[1]);
+    case Term::Op::Diff:
+      return set(t.args[0]).subtract(set(t.args[1]));
     case Term::Op::Int:
     case Term::Op::Ext: {
       const auto ys = set(t.args[0]);
@@ -94,9 +107,8 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
     case Term::Op::Aval: {
       const auto ts = set(t.args[0]);
       DynamicBitset r(n);
-      ts.for_each([&](std::uint64_t e) {
-        r.set(t.op == Term::Op::Amont ? sources_[e] : g_.target(e));
-      });
+      ts.for_each(
+          [&](std::uint64_t e) { r.set(t.op == Term::Op::Amont ? sources_[e] : g_.target(e)); });
       return r;
     }
     case Term::Op::Succ:
@@ -151,8 +163,10 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
       }
       return r;
     }
-    case Term::Op::Nec: return nec(t.signal);
-    case Term::Op::Emis: return emis(t.signal);
+    case Term::Op::Nec:
+      return nec(t.signal);
+    case Term::Op::Emis:
+      return emis(t.signal);
     case Term::Op::SetBuilder: {
       const auto domain = set(t.args[0]);
       DynamicBitset r(n);
@@ -162,7 +176,8 @@ DynamicBitset QueryEvaluator::set(const Term& t) {
       });
       return r;
     }
-    default: break;
+    default:
+      break;
   }
   throw QueryEvaluationError("internal error: not a set term");
 }
@@ -184,11 +199,16 @@ std::int64_t QueryEvaluator::number(const Term& t) {
 std::int64_t QueryEvaluator::signal_value(const Signal& s, const std::vector<std::int64_t>& inputs,
                                           semantics::StateView state) const {
   switch (s.op) {
-    case Signal::Op::Const: return s.value;
-    case Signal::Op::Input: return inputs[s.index];
-    case Signal::Op::Observable: return g_.system().observe(state, s.index);
-    case Signal::Op::StepVar: return g_.system().observe(state, slot_values_[s.index]) != 0;
-    case Signal::Op::Not: return !signal_value(s.args[0], inputs, state);
+    case Signal::Op::Const:
+      return s.value;
+    case Signal::Op::Input:
+      return inputs[s.index];
+    case Signal::Op::Observable:
+      return g_.system().observe(state, s.index);
+    case Signal::Op::StepVar:
+      return g_.system().observe(state, slot_values_[s.index]) != 0;
+    case Signal::Op::Not:
+      return !signal_value(s.args[0], inputs, state);
     case Signal::Op::And:
       return signal_value(s.args[0], inputs, state) && signal_value(s.args[1], inputs, state);
     case Signal::Op::Or:
@@ -234,8 +254,9 @@ DynamicBitset QueryEvaluator::nec(const Signal& s) {
   const auto& inputs = g_.system().inputs();
   DynamicBitset r(g_.num_edges());
   if (g_.num_edges() && !g_.has_conditions())
-    throw QueryEvaluationError("Nec needs the evolutions' input conditions, but the graph was "
-                               "built without them");
+    throw QueryEvaluationError(
+        "Nec needs the evolutions' input conditions, but the graph was "
+        "built without them");
   std::map<std::uint32_t, std::set<std::int64_t>> used;
   collect_inputs(s, used);
   std::vector<std::uint32_t> vars;
@@ -274,8 +295,9 @@ DynamicBitset QueryEvaluator::nec(const Signal& s) {
         c.erase(std::unique(c.begin(), c.end()), c.end());
         points *= c.size();
         if (points > kMaxPoints)
-          throw QueryEvaluationError("Nec: the expression mentions too many inputs to decide "
-                                     "the implication by enumeration");
+          throw QueryEvaluationError(
+              "Nec: the expression mentions too many inputs to decide "
+              "the implication by enumeration");
       }
       if (points == 0) continue;  // an empty cube implies anything
       std::vector<std::size_t> idx(vars.size(), 0);

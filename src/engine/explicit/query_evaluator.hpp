@@ -8,10 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "model/errors.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "logic/query_compile.hpp"
 #include "model/dynamic_bitset.hpp"
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 

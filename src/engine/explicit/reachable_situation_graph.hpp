@@ -27,15 +27,15 @@ struct ExplorationProgress {
 };
 
 struct ExplorationOptions {
-  std::uint64_t max_states = 0;   ///< 0 = unlimited
-  double timeout_seconds = 0;     ///< 0 = unlimited
+  std::uint64_t max_states = 0;  ///< 0 = unlimited
+  double timeout_seconds = 0;    ///< 0 = unlimited
   /// The run's deadline (model::Budget), beside timeout_seconds: whichever comes first.
   std::optional<std::chrono::steady_clock::time_point> deadline;
   /// model::Budget::cancel (may be null): raised, exploration stops as at the deadline.
   const std::atomic<bool>* cancel = nullptr;
   std::uint64_t max_memory_bytes = 0;  ///< 0 = unlimited; approximate (states + edges)
-  bool keep_conditions = true;    ///< store each edge's input condition (RSG listing, traces)
-  bool keep_fired = true;         ///< store each edge's fired transitions
+  bool keep_conditions = true;         ///< store each edge's input condition (RSG listing, traces)
+  bool keep_fired = true;              ///< store each edge's fired transitions
   /// Called about every `progress_interval` states; may be empty.
   std::function<void(const ExplorationProgress&)> progress;
   std::uint64_t progress_interval = 1u << 16;
@@ -106,8 +106,8 @@ class ReachableSituationGraph {
   std::size_t memory_bytes() const;
 
  private:
-  friend ReachableSituationGraph build_reachable_situation_graph(
-      const semantics::TransitionSystem&, const ExplorationOptions&);
+  friend ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem&,
+                                                                 const ExplorationOptions&);
   std::uint32_t intern_condition(const semantics::InputCondition& c);
 
   const semantics::TransitionSystem* ts_;
@@ -123,7 +123,7 @@ class ReachableSituationGraph {
   // Interning of conditions: open addressing over condition ids + 1 (0 = empty), grown at half
   // load, because a Grafcet start can bring millions of distinct conditions (corpus 22).
   std::vector<std::uint32_t> condition_table_;
-  std::vector<std::uint64_t> condition_hashes_;  ///< per condition id
+  std::vector<std::uint64_t> condition_hashes_;   ///< per condition id
   std::vector<std::uint32_t> parent_edge_state_;  ///< BFS parent state (kNone for initial)
   std::vector<std::uint64_t> parent_edge_;        ///< BFS parent edge id
   std::vector<std::uint32_t> depth_;

@@ -37,8 +37,9 @@ std::uint32_t StateStore::find(StateView state) const {
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
-    if (words_ == 1 ? data_[s - 1] == state[0]
-                    : hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
+    if (words_ == 1
+            ? data_[s - 1] == state[0]
+            : hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
       return s - 1;
   }
 }

@@ -42,7 +42,7 @@ class StateStore {
   std::uint32_t words_;
   std::uint32_t size_ = 0;
   std::vector<StateWord> data_;
-  std::vector<std::uint32_t> slots_;  ///< state index + 1; 0 = empty
+  std::vector<std::uint32_t> slots_;   ///< state index + 1; 0 = empty
   std::vector<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
                                        ///< (not kept for one-word states: compared directly)
 };

@@ -11,7 +11,9 @@ namespace sfcv::engine {
 
 using semantics::Aig;
 
-std::optional<std::string> find_abc() { return find_on_path({"berkeley-abc", "abc"}); }
+std::optional<std::string> find_abc() {
+  return find_on_path({"berkeley-abc", "abc"});
+}
 
 namespace {
 
@@ -58,9 +60,9 @@ AbcVerdict check_with_abc(const std::string& abc, const Aig& aig, std::size_t ba
     std::ofstream f(dir.path() + "/model.aig", std::ios::binary);
     write_aiger(f, with_single_property(aig, bad_index), AigerMode::Binary);
   }
-  const auto run = run_tool(
-      {abc, "-c", "read_aiger model.aig; " + command + "; write_cex -n cex.txt"}, dir.path(),
-      timeout_seconds);
+  const auto run =
+      run_tool({abc, "-c", "read_aiger model.aig; " + command + "; write_cex -n cex.txt"},
+               dir.path(), timeout_seconds);
   AbcVerdict v;
   v.log = run.output;
   if (run.timed_out) return v;

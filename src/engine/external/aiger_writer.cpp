@@ -1,8 +1,9 @@
-#include "model/errors.hpp"
 #include "engine/external/aiger_writer.hpp"
 
 #include <stdexcept>
 #include <vector>
+
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 

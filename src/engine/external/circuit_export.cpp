@@ -1,9 +1,9 @@
-#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 
 #include <stdexcept>
 
 #include "engine/external/identifiers.hpp"
+#include "model/errors.hpp"
 
 namespace sfcv::engine {
 
@@ -13,9 +13,10 @@ using semantics::AigLit;
 namespace {
 
 // One naming scheme for every kind of bit: each kind has a prefix of its own (in_ inputs, s_
-// latches, g_ gates, o_ outputs, p_ properties, a_ assumptions) that no other kind's identifiers start with, so
-// identifiers of different kinds never meet (a nested step's ready latch and its activity
-// output once did); within a kind, chart names that sanitize alike get _2, _3 (IdentifierTable).
+// latches, g_ gates, o_ outputs, p_ properties, a_ assumptions) that no other kind's identifiers
+// start with, so identifiers of different kinds never meet (a nested step's ready latch and its
+// activity output once did); within a kind, chart names that sanitize alike get _2, _3
+// (IdentifierTable).
 constexpr const char* kInputPrefix = "in_";
 constexpr const char* kLatchPrefix = "s_";
 constexpr const char* kGatePrefix = "g_";
@@ -30,10 +31,13 @@ struct Naming {
 
   Naming(const Aig& aig, std::unordered_set<std::string> reserved)
       : node(aig.nodes().size()), ids(std::move(reserved)) {
-    for (const auto& in : aig.inputs()) node[Aig::node_of(in.literal)] = ids.get(kInputPrefix, in.name);
-    for (const auto& l : aig.latches()) node[Aig::node_of(l.current)] = ids.get(kLatchPrefix, l.name);
+    for (const auto& in : aig.inputs())
+      node[Aig::node_of(in.literal)] = ids.get(kInputPrefix, in.name);
+    for (const auto& l : aig.latches())
+      node[Aig::node_of(l.current)] = ids.get(kLatchPrefix, l.name);
     for (std::size_t n = 1; n < aig.nodes().size(); ++n)
-      if (aig.nodes()[n].kind == Aig::NodeKind::And) node[n] = ids.get(kGatePrefix, std::to_string(n));
+      if (aig.nodes()[n].kind == Aig::NodeKind::And)
+        node[n] = ids.get(kGatePrefix, std::to_string(n));
   }
 
   std::string lit(AigLit l, const char* t, const char* f, const char* neg) const {
@@ -44,23 +48,30 @@ struct Naming {
 };
 
 const std::unordered_set<std::string> kNusmvReserved = {
-    "MODULE", "DEFINE", "MDEFINE", "CONSTANTS", "VAR", "IVAR", "FROZENVAR", "INIT", "TRANS",
-    "INVAR", "SPEC", "CTLSPEC", "LTLSPEC", "PSLSPEC", "COMPUTE", "NAME", "INVARSPEC", "FAIRNESS",
-    "JUSTICE", "COMPASSION", "ISA", "ASSIGN", "CONSTRAINT", "SIMPWFF", "CTLWFF", "LTLWFF",
-    "PSLWFF", "COMPWFF", "IN", "MIN", "MAX", "MIRROR", "PRED", "PREDICATES", "process", "array",
-    "of", "boolean", "integer", "real", "word", "word1", "bool", "signed", "unsigned", "extend",
-    "resize", "sizeof", "uwconst", "swconst", "EX", "AX", "EF", "AF", "EG", "AG", "E", "F", "O",
-    "G", "H", "X", "Y", "Z", "A", "U", "S", "V", "T", "BU", "EBF", "ABF", "EBG", "ABG", "case",
-    "esac", "mod", "next", "init", "union", "in", "xor", "xnor", "self", "TRUE", "FALSE", "count",
-    "abs", "max", "min", "toint", "floor", "running"};
+    "MODULE",  "DEFINE",     "MDEFINE",   "CONSTANTS", "VAR",     "IVAR",       "FROZENVAR",
+    "INIT",    "TRANS",      "INVAR",     "SPEC",      "CTLSPEC", "LTLSPEC",    "PSLSPEC",
+    "COMPUTE", "NAME",       "INVARSPEC", "FAIRNESS",  "JUSTICE", "COMPASSION", "ISA",
+    "ASSIGN",  "CONSTRAINT", "SIMPWFF",   "CTLWFF",    "LTLWFF",  "PSLWFF",     "COMPWFF",
+    "IN",      "MIN",        "MAX",       "MIRROR",    "PRED",    "PREDICATES", "process",
+    "array",   "of",         "boolean",   "integer",   "real",    "word",       "word1",
+    "bool",    "signed",     "unsigned",  "extend",    "resize",  "sizeof",     "uwconst",
+    "swconst", "EX",         "AX",        "EF",        "AF",      "EG",         "AG",
+    "E",       "F",          "O",         "G",         "H",       "X",          "Y",
+    "Z",       "A",          "U",         "S",         "V",       "T",          "BU",
+    "EBF",     "ABF",        "EBG",       "ABG",       "case",    "esac",       "mod",
+    "next",    "init",       "union",     "in",        "xor",     "xnor",       "self",
+    "TRUE",    "FALSE",      "count",     "abs",       "max",     "min",        "toint",
+    "floor",   "running"};
 
 const std::unordered_set<std::string> kPromelaReserved = {
-    "active", "assert", "atomic", "bit", "bool", "break", "byte", "chan", "d_step", "D_proctype",
-    "do", "else", "empty", "enabled", "fi", "full", "goto", "hidden", "if", "init", "int", "len",
-    "mtype", "nempty", "never", "nfull", "od", "of", "pc_value", "printf", "priority",
-    "proctype", "provided", "run", "short", "skip", "timeout", "typedef", "unless", "unsigned",
-    "xr", "xs", "true", "false", "local", "show", "c_code", "c_decl", "c_expr", "c_state",
-    "c_track", "ltl", "select", "for", "in", "eval", "trace", "notrace", "inline", "np_"};
+    "active",   "assert",     "atomic",  "bit",   "bool",     "break",   "byte",     "chan",
+    "d_step",   "D_proctype", "do",      "else",  "empty",    "enabled", "fi",       "full",
+    "goto",     "hidden",     "if",      "init",  "int",      "len",     "mtype",    "nempty",
+    "never",    "nfull",      "od",      "of",    "pc_value", "printf",  "priority", "proctype",
+    "provided", "run",        "short",   "skip",  "timeout",  "typedef", "unless",   "unsigned",
+    "xr",       "xs",         "true",    "false", "local",    "show",    "c_code",   "c_decl",
+    "c_expr",   "c_state",    "c_track", "ltl",   "select",   "for",     "in",       "eval",
+    "trace",    "notrace",    "inline",  "np_"};
 
 // The identifier of each circuit output: always a DEFINE of its own, also when the output is
 // exactly a latch.
@@ -142,14 +153,13 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
     const auto& node = aig.nodes()[n];
     if (node.kind == Aig::NodeKind::And)
-      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right)
-          << ";\n";
+      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right) << ";\n";
   }
   IdentifierTable& ids = names.ids;
   const auto output_ids = output_identifiers(aig, names);
   for (std::size_t o = 0; o < aig.outputs().size(); ++o)
-      out << "  " << output_ids[o] << " := " << lit(aig.outputs()[o].literal) << ";  -- "
-          << aig.outputs()[o].name << "\n";
+    out << "  " << output_ids[o] << " := " << lit(aig.outputs()[o].literal) << ";  -- "
+        << aig.outputs()[o].name << "\n";
   if (!aig.latches().empty()) out << "ASSIGN\n";
   for (const auto& l : aig.latches()) {
     const auto& id = names.node[Aig::node_of(l.current)];
@@ -159,10 +169,11 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   for (const auto& c : aig.constraints())
     out << "TRANS " << lit(c.literal) << "  -- assumption " << c.name << "\n";
   for (const auto& b : aig.bad())
-    out << "INVARSPEC NAME " << ids.fresh(kPropertyPrefix, b.name) << " := !(" << lit(b.literal) << ");\n";
+    out << "INVARSPEC NAME " << ids.fresh(kPropertyPrefix, b.name) << " := !(" << lit(b.literal)
+        << ");\n";
   for (const auto& [name, formula] : m.ctl)
-    out << "CTLSPEC NAME " << ids.fresh(kPropertyPrefix, name) << " := "
-        << resolve_outputs(formula, aig, output_ids) << ";\n";
+    out << "CTLSPEC NAME " << ids.fresh(kPropertyPrefix, name)
+        << " := " << resolve_outputs(formula, aig, output_ids) << ";\n";
 }
 
 void write_casmv(std::ostream& out, const CircuitExport& m) {
@@ -172,9 +183,9 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
   for (const auto& l : m.aig.latches())
     set_reset.emplace_back(aig.cofactor(l.next, l.current, false),
                            Aig::make_not(aig.cofactor(l.next, l.current, true)));
-  Naming names(aig, {"module", "input", "output", "init", "next", "default", "in", "case",
-                     "assert", "using", "prove", "boolean", "if", "else", "switch", "for",
-                     "G", "F", "X", "U", "SPEC"});
+  Naming names(aig, {"module", "input",  "output", "init",  "next",    "default", "in",
+                     "case",   "assert", "using",  "prove", "boolean", "if",      "else",
+                     "switch", "for",    "G",      "F",     "X",       "U",       "SPEC"});
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "~"); };
   comment_lines(out, m.header, "-- ");
   out << "module main()\n{\n";
@@ -185,13 +196,11 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
     out << "  " << names.node[Aig::node_of(aig.latches()[l].current)] << " : boolean;"
         << (l < m.latch_comments.size() ? "  -- " + m.latch_comments[l] : "") << "\n";
   for (std::size_t n = 1; n < aig.nodes().size(); ++n)
-    if (aig.nodes()[n].kind == Aig::NodeKind::And)
-      out << "  " << names.node[n] << " : boolean;\n";
+    if (aig.nodes()[n].kind == Aig::NodeKind::And) out << "  " << names.node[n] << " : boolean;\n";
   for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
     const auto& node = aig.nodes()[n];
     if (node.kind == Aig::NodeKind::And)
-      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right)
-          << ";\n";
+      out << "  " << names.node[n] << " := " << lit(node.left) << " & " << lit(node.right) << ";\n";
   }
   for (std::size_t i = 0; i < aig.latches().size(); ++i) {
     const auto& l = aig.latches()[i];
@@ -199,11 +208,9 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
     out << "  init(" << id << ") := " << (l.initial ? 1 : 0) << ";\n";
     out << "  default next(" << id << ") := " << id << ";\n  in case {\n";
     if (set_reset[i].first != Aig::kFalse)
-      out << "    ~" << id << " & " << lit(set_reset[i].first) << " : next(" << id
-          << ") := 1;\n";
+      out << "    ~" << id << " & " << lit(set_reset[i].first) << " : next(" << id << ") := 1;\n";
     if (set_reset[i].second != Aig::kFalse)
-      out << "    " << id << " & " << lit(set_reset[i].second) << " : next(" << id
-          << ") := 0;\n";
+      out << "    " << id << " & " << lit(set_reset[i].second) << " : next(" << id << ") := 0;\n";
     out << "  }\n";
   }
   IdentifierTable& ids = names.ids;
@@ -232,8 +239,8 @@ void write_ltl_atoms(std::ostream& out, const CircuitExport& m, const Naming& na
     if (l == Aig::kFalse) return "0";
     if (l == Aig::kTrue) return "1";
     const auto n = Aig::node_of(l);
-    const auto& id = aig.nodes()[n].kind == Aig::NodeKind::And ? "sfcv_g" + std::to_string(n)
-                                                               : names.node[n];
+    const auto& id =
+        aig.nodes()[n].kind == Aig::NodeKind::And ? "sfcv_g" + std::to_string(n) : names.node[n];
     return (Aig::is_negated(l) ? "!" : "") + id;
   };
   std::vector<std::size_t> stack;
@@ -282,12 +289,14 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
     reserved.insert("P" + std::to_string(k));
     reserved.insert("Q" + std::to_string(k));
   }
-  for (const char* pan : {"now", "depth", "trpt", "errors", "nstates", "verbose", "Maxbody",
-                          "Stack", "State", "Trans", "path", "tau", "memlim", "hmax", "mreached",
-                          "A_", "Mask", "vsize", "Uerror", "Nr_Trails", "main", "exit", "abort",
-                          "printf", "memcpy", "memset", "strlen", "signal", "time", "stdout"})
+  for (const char* pan :
+       {"now",    "depth",  "trpt",   "errors",    "nstates", "verbose", "Maxbody",  "Stack",
+        "State",  "Trans",  "path",   "tau",       "memlim",  "hmax",    "mreached", "A_",
+        "Mask",   "vsize",  "Uerror", "Nr_Trails", "main",    "exit",    "abort",    "printf",
+        "memcpy", "memset", "strlen", "signal",    "time",    "stdout"})
     reserved.insert(pan);
-  for (std::size_t l = 0; l < aig.latches().size(); ++l) reserved.insert("next_" + std::to_string(l));
+  for (std::size_t l = 0; l < aig.latches().size(); ++l)
+    reserved.insert("next_" + std::to_string(l));
   Naming names(aig, std::move(reserved));
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "!"); };
   out << "/*\n";
@@ -308,8 +317,8 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
   if (!aig.constraints().empty()) out << "hidden byte assumed;\n";
   if (!m.ltl.empty()) write_ltl_atoms(out, m, names);
-  out << "\nactive proctype cycle()\n{\n" << (m.ltl.empty() ? "" : "sfcv_cycle:\n")
-      << "  do\n  :: atomic {\n";
+  out << "\nactive proctype cycle()\n{\n"
+      << (m.ltl.empty() ? "" : "sfcv_cycle:\n") << "  do\n  :: atomic {\n";
   bool has_gates = false;
   for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
     has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;

@@ -19,14 +19,22 @@ const char* kDummyInput = "sfcv_dummy";
 std::string field_comment(const semantics::StateField& f) {
   using semantics::FieldKind;
   switch (f.kind) {
-    case FieldKind::StepReady: return "step " + f.name + " ready";
-    case FieldKind::StepActive: return "step " + f.name + " active";
-    case FieldKind::ActionActive: return "action " + f.name + " active";
-    case FieldKind::ActionStored: return "action " + f.name + " stored (S without R yet)";
-    case FieldKind::Variable: return "variable " + f.name;
-    case FieldKind::InputMemory: return "previous value of input " + f.name;
-    case FieldKind::Timer: return "timer " + f.name;
-    case FieldKind::FbState: return "function block memory " + f.name;
+    case FieldKind::StepReady:
+      return "step " + f.name + " ready";
+    case FieldKind::StepActive:
+      return "step " + f.name + " active";
+    case FieldKind::ActionActive:
+      return "action " + f.name + " active";
+    case FieldKind::ActionStored:
+      return "action " + f.name + " stored (S without R yet)";
+    case FieldKind::Variable:
+      return "variable " + f.name;
+    case FieldKind::InputMemory:
+      return "previous value of input " + f.name;
+    case FieldKind::Timer:
+      return "timer " + f.name;
+    case FieldKind::FbState:
+      return "function block memory " + f.name;
   }
   return f.name;
 }
@@ -56,12 +64,18 @@ AigLit compare_bits(Aig& aig, const BitVector& bits, std::int64_t lo, logic::Com
     equal = semantics::bv_equal(aig, bits, kk);
   }
   switch (op) {
-    case CompareOp::Eq: return equal;
-    case CompareOp::Ne: return Aig::make_not(equal);
-    case CompareOp::Lt: return less;
-    case CompareOp::Le: return aig.make_or(less, equal);
-    case CompareOp::Gt: return Aig::make_not(aig.make_or(less, equal));
-    case CompareOp::Ge: return Aig::make_not(less);
+    case CompareOp::Eq:
+      return equal;
+    case CompareOp::Ne:
+      return Aig::make_not(equal);
+    case CompareOp::Lt:
+      return less;
+    case CompareOp::Le:
+      return aig.make_or(less, equal);
+    case CompareOp::Gt:
+      return Aig::make_not(aig.make_or(less, equal));
+    case CompareOp::Ge:
+      return Aig::make_not(less);
   }
   return Aig::kFalse;
 }
@@ -75,17 +89,27 @@ class Builder {
     Aig& aig = out_.model.aig;
     using logic::Op;
     switch (f.op) {
-      case Op::True: return Aig::kTrue;
-      case Op::False: return Aig::kFalse;
+      case Op::True:
+        return Aig::kTrue;
+      case Op::False:
+        return Aig::kFalse;
       case Op::Atom:
-      case Op::Compare: return atom(f);
-      case Op::Not: return Aig::make_not(literal(*f.args[0]));
-      case Op::And: return aig.make_and(literal(*f.args[0]), literal(*f.args[1]));
-      case Op::Or: return aig.make_or(literal(*f.args[0]), literal(*f.args[1]));
-      case Op::Implies: return aig.make_implies(literal(*f.args[0]), literal(*f.args[1]));
-      case Op::Iff: return aig.make_xnor(literal(*f.args[0]), literal(*f.args[1]));
-      case Op::Xor: return aig.make_xor(literal(*f.args[0]), literal(*f.args[1]));
-      default: throw ExportError("a temporal operator inside a state formula");
+      case Op::Compare:
+        return atom(f);
+      case Op::Not:
+        return Aig::make_not(literal(*f.args[0]));
+      case Op::And:
+        return aig.make_and(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Or:
+        return aig.make_or(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Implies:
+        return aig.make_implies(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Iff:
+        return aig.make_xnor(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Xor:
+        return aig.make_xor(literal(*f.args[0]), literal(*f.args[1]));
+      default:
+        throw ExportError("a temporal operator inside a state formula");
     }
   }
 
@@ -149,14 +173,22 @@ std::string ltl_claim(const logic::Formula& f, Builder& builder, std::vector<Aig
   }
   auto t = [&](std::size_t i) { return ltl_claim(*f.args[i], builder, atoms); };
   switch (f.op) {
-    case Op::Not: return "!(" + t(0) + ")";
-    case Op::And: return "(" + t(0) + " && " + t(1) + ")";
-    case Op::Or: return "(" + t(0) + " || " + t(1) + ")";
-    case Op::Implies: return "(" + t(0) + " -> " + t(1) + ")";
-    case Op::Iff: return "(" + t(0) + " <-> " + t(1) + ")";
-    case Op::Xor: return "!(" + t(0) + " <-> " + t(1) + ")";
-    case Op::F: return "<> " + t(0);
-    case Op::G: return "[] " + t(0);
+    case Op::Not:
+      return "!(" + t(0) + ")";
+    case Op::And:
+      return "(" + t(0) + " && " + t(1) + ")";
+    case Op::Or:
+      return "(" + t(0) + " || " + t(1) + ")";
+    case Op::Implies:
+      return "(" + t(0) + " -> " + t(1) + ")";
+    case Op::Iff:
+      return "(" + t(0) + " <-> " + t(1) + ")";
+    case Op::Xor:
+      return "!(" + t(0) + " <-> " + t(1) + ")";
+    case Op::F:
+      return "<> " + t(0);
+    case Op::G:
+      return "[] " + t(0);
     case Op::U: {
       const auto a = t(0), c = t(1);
       return "(" + a + " U " + c + ")";
@@ -169,7 +201,8 @@ std::string ltl_claim(const logic::Formula& f, Builder& builder, std::vector<Aig
       const auto a = t(0), c = t(1);
       return "((" + a + " U " + c + ") || [] " + a + ")";
     }
-    default: throw ExportError("a CTL operator in an LTL property");
+    default:
+      throw ExportError("a CTL operator in an LTL property");
   }
 }
 }  // namespace
@@ -257,10 +290,13 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       // Spin extends a run cut inside a cycle (end_excluded) by stuttering there, a path sfcv
       // does not have; and Debian's Spin parses no X in ltl claims.
       if (cut != Aig::kTrue)
-        throw ExportError("LTL property '" + prop.name + "': not exported for a chart whose "
-                          "assumptions or input ranges cut cycles (Spin would extend the cut runs)");
+        throw ExportError(
+            "LTL property '" + prop.name +
+            "': not exported for a chart whose "
+            "assumptions or input ranges cut cycles (Spin would extend the cut runs)");
       if (has_next(*prop.formula))
-        throw ExportError("LTL property '" + prop.name + "': X is not exported (Spin's ltl "
+        throw ExportError("LTL property '" + prop.name +
+                          "': X is not exported (Spin's ltl "
                           "claims take no X)");
       m.ltl.emplace_back(prop.name, ltl_claim(*prop.formula, builder, m.ltl_atoms));
       continue;

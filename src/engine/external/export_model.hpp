@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "model/errors.hpp"
 #include "engine/external/circuit_export.hpp"
 #include "logic/check_task.hpp"
+#include "model/errors.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
 namespace sfcv::engine {

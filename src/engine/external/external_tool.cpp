@@ -21,7 +21,8 @@ std::optional<std::string> find_on_path(const std::vector<std::string>& names) {
     std::size_t start = 0;
     while (start <= dirs.size()) {
       const auto end = dirs.find(':', start);
-      const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+      const std::string dir =
+          dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
       if (!dir.empty()) {
         const auto candidate = std::filesystem::path(dir) / name;
         if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();

@@ -11,7 +11,9 @@
 
 namespace sfcv::engine {
 
-std::optional<std::string> find_nusmv() { return find_on_path({"NuSMV"}); }
+std::optional<std::string> find_nusmv() {
+  return find_on_path({"NuSMV"});
+}
 
 NusmvVerdicts parse_nusmv_output(const std::string& text) {
   NusmvVerdicts v;
@@ -28,9 +30,12 @@ NusmvVerdicts parse_nusmv_output(const std::string& text) {
     const bool invar = line.rfind("-- invariant ", 0) == 0;
     if (spec || invar) {
       bool value;
-      if (line.size() >= 8 && line.compare(line.size() - 8, 8, " is true") == 0) value = true;
-      else if (line.size() >= 9 && line.compare(line.size() - 9, 9, " is false") == 0) value = false;
-      else continue;
+      if (line.size() >= 8 && line.compare(line.size() - 8, 8, " is true") == 0)
+        value = true;
+      else if (line.size() >= 9 && line.compare(line.size() - 9, 9, " is false") == 0)
+        value = false;
+      else
+        continue;
       (spec ? v.ctl : v.invariants).push_back(value);
       auto& traces = spec ? v.ctl_traces : v.invariant_traces;
       traces.emplace_back();
@@ -61,7 +66,8 @@ NusmvVerdicts parse_nusmv_output(const std::string& text) {
       in_inputs = true;
     } else if (in_inputs) {
       const auto eq = body.find(" = ");
-      if (eq != std::string::npos) trace->inputs.back()[body.substr(0, eq)] = body.substr(eq + 3) == "TRUE";
+      if (eq != std::string::npos)
+        trace->inputs.back()[body.substr(0, eq)] = body.substr(eq + 3) == "TRUE";
     }
   }
   return v;
@@ -75,17 +81,27 @@ bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
   using logic::Op;
   auto arg = [&](std::size_t k) { return holds_in(ts, *f.args[k], s); };
   switch (f.op) {
-    case Op::True: return true;
-    case Op::Atom: return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
+    case Op::True:
+      return true;
+    case Op::Atom:
+      return ts.observe(s, static_cast<std::uint32_t>(f.observable)) != 0;
     case Op::Compare:
-      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)), f.value);
-    case Op::Not: return !arg(0);
-    case Op::And: return arg(0) && arg(1);
-    case Op::Or: return arg(0) || arg(1);
-    case Op::Implies: return !arg(0) || arg(1);
-    case Op::Iff: return arg(0) == arg(1);
-    case Op::Xor: return arg(0) != arg(1);
-    default: return false;
+      return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
+                            f.value);
+    case Op::Not:
+      return !arg(0);
+    case Op::And:
+      return arg(0) && arg(1);
+    case Op::Or:
+      return arg(0) || arg(1);
+    case Op::Implies:
+      return !arg(0) || arg(1);
+    case Op::Iff:
+      return arg(0) == arg(1);
+    case Op::Xor:
+      return arg(0) != arg(1);
+    default:
+      return false;
   }
 }
 
@@ -209,8 +225,8 @@ class NusmvModelChecker final : public ModelChecker {
       results[p].formula = logic::to_string(task.properties[p].formula);
       results[p].where = task.properties[p].where;
       results[p].verdict = logic::Verdict::Unknown;
-      results[p].message = run.timed_out ? "NuSMV reached the time limit"
-                                         : "no verdict in NuSMV's output";
+      results[p].message =
+          run.timed_out ? "NuSMV reached the time limit" : "no verdict in NuSMV's output";
     }
     auto set = [&](std::int32_t p, bool holds, const std::optional<NusmvTrace>& trace) {
       if (p < 0) return;
@@ -221,8 +237,10 @@ class NusmvModelChecker final : public ModelChecker {
       if (holds) return;
       std::string why = "NuSMV printed no trace";
       if (trace) r.trace = to_sfcv_trace(*task.system, exported, *trace, *prop.formula, why);
-      if (r.trace) r.trace->marked = logic::atom_observables(*prop.formula);
-      else r.message += " (" + why + ")";
+      if (r.trace)
+        r.trace->marked = logic::atom_observables(*prop.formula);
+      else
+        r.message += " (" + why + ")";
     };
     const bool complete = verdicts.ctl.size() == exported.ctl_property.size() &&
                           verdicts.invariants.size() == exported.bad_property.size();

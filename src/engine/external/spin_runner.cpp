@@ -7,7 +7,9 @@
 
 namespace sfcv::engine {
 
-std::optional<std::string> find_spin() { return find_on_path({"spin"}); }
+std::optional<std::string> find_spin() {
+  return find_on_path({"spin"});
+}
 
 namespace {
 

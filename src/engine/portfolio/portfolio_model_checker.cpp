@@ -205,6 +205,19 @@ class PortfolioModelChecker final : public ModelChecker {
     }
 
     {
+      // The race has its own flag (a winner raises it); a cancel of the whole run from outside
+      // (a portfolio inside another, a test) must still reach the racers.
+      std::jthread relay;
+      if (const auto outer = task.limits.cancel)
+        relay = std::jthread([outer, cancel](std::stop_token stop) {
+          while (!stop.stop_requested()) {
+            if (outer->load(std::memory_order_relaxed)) {
+              cancel->store(true);
+              return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+          }
+        });
       std::vector<std::jthread> threads;
       for (auto& r : racers)
         threads.emplace_back([&r, &board] {
@@ -224,8 +237,9 @@ class PortfolioModelChecker final : public ModelChecker {
     return merge(task, *board, racers, probe, start);
   }
 
-  CheckReport merge(const logic::CheckTask& task, const Scoreboard& board, const std::vector<Racer>& racers,
-                    const std::optional<CheckReport>& probe, Clock::time_point start) const {
+  CheckReport merge(const logic::CheckTask& task, const Scoreboard& board,
+                    const std::vector<Racer>& racers, const std::optional<CheckReport>& probe,
+                    Clock::time_point start) const {
     const auto& bdd = racers[0].report;
     CheckReport out;
     out.engine = "auto";

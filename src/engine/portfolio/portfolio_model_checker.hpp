@@ -2,10 +2,10 @@
 // `--engine auto` as a portfolio (docs/engines.md, "how auto chooses"): the explicit engine
 // first, within kAutoProbeStates states (engine/auto_policy.hpp); a chart it cannot finish
 // within them goes to the BDD engine, IC3 and BMC (bugs, up to 200 cycles) side by side, each
-// in its own thread within the run's one budget. Per property the first definite answer wins (PropertyResult::decided_by
-// names its engine); once every property is decided the other engines are cancelled
-// (model::Budget::cancel). Verdicts do not depend on which engine wins: each engine is sound,
-// and one that is cancelled or runs out of budget answers unknown, never holds.
+// in its own thread within the run's one budget. Per property the first definite answer wins
+// (PropertyResult::decided_by names its engine); once every property is decided the other engines
+// are cancelled (model::Budget::cancel). Verdicts do not depend on which engine wins: each engine
+// is sound, and one that is cancelled or runs out of budget answers unknown, never holds.
 
 #include <functional>
 #include <string>

@@ -54,9 +54,8 @@ class ExplicitQueryService final : public QueryService {
   const ReachableSituationGraph& situation_graph() const { return graph_; }
 
   QueryAnswer answer(const logic::CompiledQuery& q) override {
-    return to_answer(ev_.evaluate(q), [this](logic::Sort sort, const auto& set) {
-      return listing(sort, set);
-    });
+    return to_answer(ev_.evaluate(q),
+                     [this](logic::Sort sort, const auto& set) { return listing(sort, set); });
   }
 
  private:
@@ -72,8 +71,11 @@ class ExplicitQueryService final : public QueryService {
         l.states.push_back(state(static_cast<std::uint32_t>(i)));
       } else if (sort == logic::Sort::Evolutions) {
         const auto f = graph_.fired(i);
-        l.edges.push_back({numbering_.edge[i], state(ev_.source(i)), state(graph_.target(i)),
-                           graph_.condition(i), {f.begin(), f.end()}});
+        l.edges.push_back({numbering_.edge[i],
+                           state(ev_.source(i)),
+                           state(graph_.target(i)),
+                           graph_.condition(i),
+                           {f.begin(), f.end()}});
       } else if (sort == logic::Sort::Steps) {
         l.steps.push_back(static_cast<std::uint32_t>(i));
       }
@@ -105,9 +107,8 @@ class SymbolicQueryService final : public QueryService {
   const logic::QueryGraphSummary& graph() const override { return summary_; }
 
   QueryAnswer answer(const logic::CompiledQuery& q) override {
-    return to_answer(ev_.evaluate(q), [this](logic::Sort sort, const auto& set) {
-      return listing(sort, set);
-    });
+    return to_answer(ev_.evaluate(q),
+                     [this](logic::Sort sort, const auto& set) { return listing(sort, set); });
   }
 
  private:
@@ -134,7 +135,8 @@ class SymbolicQueryService final : public QueryService {
                            std::move(label.fired)});
       }
     } else if (sort == logic::Sort::Steps) {
-      set.steps.for_each([&](std::uint64_t o) { l.steps.push_back(static_cast<std::uint32_t>(o)); });
+      set.steps.for_each(
+          [&](std::uint64_t o) { l.steps.push_back(static_cast<std::uint32_t>(o)); });
     }
     sort_by_id(l);
     return l;

@@ -6,7 +6,9 @@ namespace sfcv::engine::sat {
 
 namespace {
 
-CertificateCheck fail(std::string what) { return {false, std::move(what)}; }
+CertificateCheck fail(std::string what) {
+  return {false, std::move(what)};
+}
 
 int clause_literal(Unrolling& frames, const LatchLiteral& l, std::size_t frame) {
   const int x = frames.latch(l.latch, frame);
@@ -35,9 +37,12 @@ CertificateCheck recheck_invariant(const ReachQuery& q, semantics::AigLit target
     Unrolling frames(aig, solver, false);
     add_invariant(frames, clauses, 0);
     switch (solver.solve({frames.literal(target, 0)})) {
-      case SatResult::Sat: return fail("property");
-      case SatResult::Interrupted: return fail("time");
-      case SatResult::Unsat: break;
+      case SatResult::Sat:
+        return fail("property");
+      case SatResult::Interrupted:
+        return fail("time");
+      case SatResult::Unsat:
+        break;
     }
   }
   {  // Consecution: Inv(s) & step_ok(s, i) & !Inv(s') is unsatisfiable.
@@ -53,9 +58,12 @@ CertificateCheck recheck_invariant(const ReachQuery& q, semantics::AigLit target
     }
     solver.add_clause(some_clause_false);
     switch (solver.solve()) {
-      case SatResult::Sat: return fail("consecution");
-      case SatResult::Interrupted: return fail("time");
-      case SatResult::Unsat: break;
+      case SatResult::Sat:
+        return fail("consecution");
+      case SatResult::Interrupted:
+        return fail("time");
+      case SatResult::Unsat:
+        break;
     }
   }
   return {true, ""};
@@ -69,9 +77,12 @@ CertificateCheck recheck_k_induction(const ReachQuery& q, semantics::AigLit targ
     Unrolling frames(*q.aig, solver, true);
     for (std::uint32_t k = 0; k < depth; ++k) {
       switch (solver.solve({frames.literal(target, k)})) {
-        case SatResult::Sat: return fail("base");
-        case SatResult::Interrupted: return fail("time");
-        case SatResult::Unsat: break;
+        case SatResult::Sat:
+          return fail("base");
+        case SatResult::Interrupted:
+          return fail("time");
+        case SatResult::Unsat:
+          break;
       }
       solver.add_clause({frames.literal(q.step_ok, k)});
     }
@@ -87,9 +98,12 @@ CertificateCheck recheck_k_induction(const ReachQuery& q, semantics::AigLit targ
     for (std::uint32_t b = 1; b <= depth; ++b)
       for (std::uint32_t a = 0; a < b; ++a) add_frames_differ(frames, cone, a, b);
     switch (solver.solve({frames.literal(target, depth)})) {
-      case SatResult::Sat: return fail("step");
-      case SatResult::Interrupted: return fail("time");
-      case SatResult::Unsat: break;
+      case SatResult::Sat:
+        return fail("step");
+      case SatResult::Interrupted:
+        return fail("time");
+      case SatResult::Unsat:
+        break;
     }
   }
   return {true, ""};
@@ -104,7 +118,8 @@ CertificateCheck recheck(const ReachQuery& query, std::size_t target, const Cert
       return recheck_invariant(query, query.targets[target], cert.clauses, deadline);
     case Certificate::Kind::KInduction:
       return recheck_k_induction(query, query.targets[target], cert.depth, deadline);
-    case Certificate::Kind::None: break;
+    case Certificate::Kind::None:
+      break;
   }
   return fail("no certificate");
 }
@@ -112,10 +127,9 @@ CertificateCheck recheck(const ReachQuery& query, std::size_t target, const Cert
 std::string certificate_text(const semantics::Aig& aig, const Certificate& cert) {
   switch (cert.kind) {
     case Certificate::Kind::KInduction:
-      return "k-induction, k = " + std::to_string(cert.depth) +
-             " (base: no target within " + std::to_string(cert.depth - 1) +
-             " cycles; step: no loop-free run of " + std::to_string(cert.depth) +
-             " non-target cycles reaches one)\n";
+      return "k-induction, k = " + std::to_string(cert.depth) + " (base: no target within " +
+             std::to_string(cert.depth - 1) + " cycles; step: no loop-free run of " +
+             std::to_string(cert.depth) + " non-target cycles reaches one)\n";
     case Certificate::Kind::Invariant: {
       std::string out = "inductive invariant, " + std::to_string(cert.clauses.size()) +
                         " clauses (each holds in every reachable state):\n";
@@ -128,7 +142,8 @@ std::string certificate_text(const semantics::Aig& aig, const Certificate& cert)
       }
       return out;
     }
-    case Certificate::Kind::None: break;
+    case Certificate::Kind::None:
+      break;
   }
   return "";
 }

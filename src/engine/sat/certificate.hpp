@@ -16,7 +16,8 @@ namespace sfcv::engine::sat {
 
 struct CertificateCheck {
   bool ok = false;
-  std::string failed;  ///< when !ok: "initiation", "consecution", "property", "base", "step", "time"
+  std::string
+      failed;  ///< when !ok: "initiation", "consecution", "property", "base", "step", "time"
 };
 
 CertificateCheck recheck(const ReachQuery& query, std::size_t target, const Certificate& cert,

@@ -46,13 +46,21 @@ void deepen(const ReachQuery& query, const BoundOptions& options, Solver& base, 
           for (std::uint32_t j = 0; j <= k; ++j) r.inputs.push_back(frames.input_values(j));
           --open;
           continue;
-        case SatResult::Unsat: break;
-        case SatResult::Interrupted: interrupted = true; continue;
+        case SatResult::Unsat:
+          break;
+        case SatResult::Interrupted:
+          interrupted = true;
+          continue;
       }
       switch (after_base(t, k)) {
-        case DepthStep::Open: break;
-        case DepthStep::Decided: --open; break;
-        case DepthStep::Interrupted: interrupted = true; break;
+        case DepthStep::Open:
+          break;
+        case DepthStep::Decided:
+          --open;
+          break;
+        case DepthStep::Interrupted:
+          interrupted = true;
+          break;
       }
     }
     if (interrupted) {

@@ -38,7 +38,8 @@ GrafcetMachine::GrafcetMachine(const semantics::GrafcetCircuit& circuit) : circu
     memo[0] = Aig::kFalse;
     for (std::size_t l = 0; l < c.latches().size(); ++l)
       memo[Aig::node_of(c.latches()[l].current)] = l < n ? state[l] : prev[l - n];
-    for (std::size_t i = 0; i < c.inputs().size(); ++i) memo[Aig::node_of(c.inputs()[i].literal)] = ins[i];
+    for (std::size_t i = 0; i < c.inputs().size(); ++i)
+      memo[Aig::node_of(c.inputs()[i].literal)] = ins[i];
   };
   seed(on_n_, input_as_kept);
   seed(on_source_, inputs);
@@ -64,8 +65,8 @@ GrafcetMachine::GrafcetMachine(const semantics::GrafcetCircuit& circuit) : circu
   aig_.set_next(boot_latch, Aig::kFalse);
   aig_.set_next(stable_latch, aig_.make_and(transient_, settled));
 
-  const AigLit event = aig_.make_and(translate(circuit_.event, on_source_),
-                                     translate(circuit_.valid, on_source_));
+  const AigLit event =
+      aig_.make_and(translate(circuit_.event, on_source_), translate(circuit_.valid, on_source_));
   step_ok_ = aig_.make_ite(boot_, translate(circuit_.initial_event, on_boot_),
                            aig_.make_ite(stable_, event, Aig::make_not(error)));
   for (auto f : circuit_.fired) fired_.push_back(translate(f, on_n_));

@@ -53,8 +53,12 @@ bool subsumes(const Cube& small, const Cube& big) {
 class Ic3 {
  public:
   Ic3(const ReachQuery& q, std::size_t target, const Ic3Options& o, Ic3Stats* stats)
-      : aig_(*q.aig), step_ok_(q.step_ok), target_(q.targets[target]), options_(o),
-        stats_(stats), cone_(cone_latches(aig_, {target_, step_ok_})),
+      : aig_(*q.aig),
+        step_ok_(q.step_ok),
+        target_(q.targets[target]),
+        options_(o),
+        stats_(stats),
+        cone_(cone_latches(aig_, {target_, step_ok_})),
         lift_(aig_, false, o.deadline) {}
 
   ReachResult run() {
@@ -138,8 +142,9 @@ class Ic3 {
   }
 
   bool intersects_initial(const Cube& c) const {
-    return std::all_of(c.begin(), c.end(),
-                       [&](const LatchLiteral& l) { return aig_.latches()[l.latch].initial == l.value; });
+    return std::all_of(c.begin(), c.end(), [&](const LatchLiteral& l) {
+      return aig_.latches()[l.latch].initial == l.value;
+    });
   }
 
   /// The current state of a model, over the cone latches the query encoded (the others do
@@ -241,8 +246,9 @@ class Ic3 {
     // Cubes at lower levels that c covers are implied from now on.
     for (std::size_t j = 1; j <= level; ++j) {
       auto& row = blocked_[j];
-      row.erase(std::remove_if(row.begin(), row.end(), [&](const Cube& d) { return subsumes(c, d); }),
-                row.end());
+      row.erase(
+          std::remove_if(row.begin(), row.end(), [&](const Cube& d) { return subsumes(c, d); }),
+          row.end());
     }
     blocked_[level].push_back(c);
     for (std::size_t j = 1; j <= level; ++j) frames_[j].block(c);
@@ -288,8 +294,8 @@ class Ic3 {
   Ic3Options options_;
   Ic3Stats* stats_;
   std::vector<std::uint32_t> cone_;
-  std::vector<FrameSolver> frames_;          ///< frames_[i] holds F_i
-  std::vector<std::vector<Cube>> blocked_;   ///< cubes blocked up to exactly frame i (delta)
+  std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
+  std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;
   std::uint32_t cex_depth_ = 0;
 };

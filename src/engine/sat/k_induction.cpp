@@ -14,7 +14,10 @@ namespace {
 class StepCase {
  public:
   StepCase(const ReachQuery& q, semantics::AigLit target, Deadline deadline)
-      : query_(q), target_(target), solver_(deadline), frames_(*q.aig, solver_, false),
+      : query_(q),
+        target_(target),
+        solver_(deadline),
+        frames_(*q.aig, solver_, false),
         cone_(cone_latches(*q.aig, {target, q.step_ok})) {}
 
   /// Is there such a run with n = depth non-target frames followed by a target frame?
@@ -60,8 +63,10 @@ std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions
                steps[t].reset();
                return DepthStep::Decided;
              }
-             case SatResult::Sat: return DepthStep::Open;
-             case SatResult::Interrupted: return DepthStep::Interrupted;
+             case SatResult::Sat:
+               return DepthStep::Open;
+             case SatResult::Interrupted:
+               return DepthStep::Interrupted;
            }
            return DepthStep::Open;
          });

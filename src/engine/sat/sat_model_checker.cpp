@@ -28,13 +28,18 @@ using semantics::AigLit;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::string_view algorithm_name(SatAlgorithm a) {
   switch (a) {
-    case SatAlgorithm::Bmc: return "bmc";
-    case SatAlgorithm::KInduction: return "kind";
-    case SatAlgorithm::Ic3: return "ic3";
+    case SatAlgorithm::Bmc:
+      return "bmc";
+    case SatAlgorithm::KInduction:
+      return "kind";
+    case SatAlgorithm::Ic3:
+      return "ic3";
   }
   return "sat";
 }
@@ -66,7 +71,8 @@ class Run {
     report.engine = std::string(algorithm_name(options_.algorithm));
     report.states_known = false;
     report.edges_known = false;
-    deadline_ = sat::Deadline{task_.limits.deadline, task_.limits.cancel.get()};  // the run's one deadline
+    deadline_ =
+        sat::Deadline{task_.limits.deadline, task_.limits.cancel.get()};  // the run's one deadline
 
     std::vector<Question> questions;
     for (const auto& p : task_.properties) questions.push_back(property_question(p));
@@ -129,8 +135,8 @@ class Run {
     switch (c) {
       case StandardCheck::Reachable:
         for (const auto& s : logic::step_refs(ts_, task_.project)) {
-          q.targets.push_back(add_target(logic::circuit_literal(
-              iec, *logic::observable_atom(ts_, s.observable))));
+          q.targets.push_back(
+              add_target(logic::circuit_literal(iec, *logic::observable_atom(ts_, s.observable))));
           q.labels.push_back("step " + logic::describe_step(s) + " is never active");
         }
         q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
@@ -151,7 +157,8 @@ class Run {
         q.shape = Question::Shape::Invariant;
         q.targets.push_back(add_target(iec.aig.make_and(iec.allowed, iec.range_error)));
         break;
-      default: break;
+      default:
+        break;
     }
     return q;
   }
@@ -178,12 +185,14 @@ class Run {
     };
     std::vector<ReachResult> out;
     switch (options_.algorithm) {
-      case SatAlgorithm::Bmc: return sat::bmc(query, bounds);
+      case SatAlgorithm::Bmc:
+        return sat::bmc(query, bounds);
       case SatAlgorithm::KInduction:
         out = sat::k_induction(query, bounds);
         for (std::size_t t = 0; t < out.size(); ++t) recheck(t, out[t]);
         return out;
-      case SatAlgorithm::Ic3: break;
+      case SatAlgorithm::Ic3:
+        break;
     }
     sat::Ic3Options io;
     io.deadline = deadline_;
@@ -218,11 +227,13 @@ class Run {
     logic::Trace t;
     t.kind = kind;
     t.steps.push_back({logic::pick_inputs(semantics::InputCondition::always(), ts_.inputs(), {}),
-                       semantics::state_from_latches(ts_, iec, latches), {}});
+                       semantics::state_from_latches(ts_, iec, latches),
+                       {}});
     // The run is replayed on the circuit itself: a model that is not a run is an engine bug.
     for (std::uint32_t j = 0; j < r.depth; ++j) {
       const auto nodes = aig.evaluate(r.inputs[j], latches);
-      if (!Aig::value_of(nodes, step_ok_)) throw std::logic_error("sat engine: a run without a step");
+      if (!Aig::value_of(nodes, step_ok_))
+        throw std::logic_error("sat engine: a run without a step");
       logic::TraceStep step;
       step.inputs = semantics::inputs_from_bits(ts_, iec, r.inputs[j]);
       for (std::uint32_t tr = 0; tr < iec.fired.size(); ++tr)
@@ -247,17 +258,19 @@ class Run {
     std::vector<bool> event, fired(machine_->fired().size(), false);
     for (std::uint32_t j = 0; j <= r.depth; ++j) {
       const auto nodes = aig.evaluate(r.inputs[j], latches);
-      if (Aig::value_of(nodes, machine_->at_stable()) || Aig::value_of(nodes, machine_->at_boot())) {
+      if (Aig::value_of(nodes, machine_->at_stable()) ||
+          Aig::value_of(nodes, machine_->at_boot())) {
         if (Aig::value_of(nodes, machine_->at_stable())) {
-          std::vector<bool> state_latches(latches.begin(),
-                                          latches.begin() + static_cast<std::ptrdiff_t>(
-                                                                machine_->num_state_latches()));
+          std::vector<bool> state_latches(
+              latches.begin(),
+              latches.begin() + static_cast<std::ptrdiff_t>(machine_->num_state_latches()));
           logic::TraceStep step;
           step.inputs = semantics::inputs_from_bits(ts_, *grafcet_, event);
           step.state = semantics::state_from_latches(ts_, *grafcet_, state_latches);
           for (std::uint32_t tr = 0; tr < fired.size(); ++tr)
             if (fired[tr]) step.fired.push_back(tr);
-          if (t.steps.empty() || step.state != t.steps.back().state) t.steps.push_back(std::move(step));
+          if (t.steps.empty() || step.state != t.steps.back().state)
+            t.steps.push_back(std::move(step));
         }
         event = r.inputs[j];
         fired.assign(fired.size(), false);
@@ -266,11 +279,13 @@ class Run {
           if (Aig::value_of(nodes, machine_->fired()[tr])) fired[tr] = true;
       }
       if (j == r.depth) break;
-      if (!Aig::value_of(nodes, step_ok_)) throw std::logic_error("sat engine: a run without a step");
+      if (!Aig::value_of(nodes, step_ok_))
+        throw std::logic_error("sat engine: a run without a step");
       for (std::size_t l = 0; l < latches.size(); ++l)
         latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
     }
-    if (t.steps.empty()) throw std::logic_error("sat engine: a Grafcet run without a stable situation");
+    if (t.steps.empty())
+      throw std::logic_error("sat engine: a Grafcet run without a stable situation");
     return t;
   }
 
@@ -309,16 +324,18 @@ class Run {
       // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
       // situations (one per initial valuation) does not show it for the others.
       r.verdict = Verdict::Unknown;
-      r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-                  " engine: this Grafcet has " +
-                  (initial ? std::to_string(*initial) : std::string("maybe several")) +
-                  " initial situations and EF p needs a run from each; use --engine explicit or bdd";
+      r.message =
+          "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+          " engine: this Grafcet has " +
+          (initial ? std::to_string(*initial) : std::string("maybe several")) +
+          " initial situations and EF p needs a run from each; use --engine explicit or bdd";
       return r;
     }
     switch (a.kind) {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
-        r.trace = trace_of(a, invariant ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
+        r.trace =
+            trace_of(a, invariant ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
         r.trace->marked = logic::atom_observables(*p.formula);
         break;
       case ReachResult::Kind::Unreachable:
@@ -369,9 +386,10 @@ class Run {
       if (a.kind == ReachResult::Kind::Reached) {
         r.verdict = Verdict::Violated;
         r.trace = trace_of(a, logic::TraceKind::Counterexample);
-        r.findings.push_back("a range error (integer overflow, division by zero or a value out "
-                             "of its type) can occur in " +
-                             ts_.describe(r.trace->steps.back().state));
+        r.findings.push_back(
+            "a range error (integer overflow, division by zero or a value out "
+            "of its type) can occur in " +
+            ts_.describe(r.trace->steps.back().state));
       } else if (a.kind == ReachResult::Kind::Unreachable) {
         r.verdict = Verdict::Holds;
         r.message = "no range error can occur";

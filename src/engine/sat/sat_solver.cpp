@@ -1,7 +1,6 @@
 #include "engine/sat/sat_solver.hpp"
 
 #include <cadical.hpp>
-
 #include <cstdlib>
 #include <stdexcept>
 
@@ -10,8 +9,8 @@ namespace sfcv::engine::sat {
 Deadline Deadline::after_seconds(double seconds) {
   Deadline d;
   if (seconds > 0)
-    d.at = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>(seconds));
+    d.at = Clock::now() +
+           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   return d;
 }
 
@@ -43,7 +42,9 @@ struct Solver::Impl {
 Solver::Solver(Deadline deadline) : impl_(std::make_unique<Impl>(deadline)) {}
 Solver::~Solver() = default;
 
-int Solver::new_var() { return ++vars_; }
+int Solver::new_var() {
+  return ++vars_;
+}
 
 int Solver::true_lit() {
   if (true_ == 0) {
@@ -77,6 +78,8 @@ bool Solver::value(int lit) const {
   return impl_->solver.val(lit) > 0;
 }
 
-bool Solver::failed(int lit) const { return impl_->solver.failed(lit); }
+bool Solver::failed(int lit) const {
+  return impl_->solver.failed(lit);
+}
 
 }  // namespace sfcv::engine::sat

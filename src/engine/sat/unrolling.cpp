@@ -32,8 +32,12 @@ int Unrolling::literal(AigLit lit, std::size_t frame) {
     const auto& node = aig_.nodes()[it.node];
     int result = 0;
     switch (node.kind) {
-      case Aig::NodeKind::Constant: result = -solver_.true_lit(); break;
-      case Aig::NodeKind::Input: result = solver_.new_var(); break;
+      case Aig::NodeKind::Constant:
+        result = -solver_.true_lit();
+        break;
+      case Aig::NodeKind::Input:
+        result = solver_.new_var();
+        break;
       case Aig::NodeKind::Latch:
         if (it.frame == 0) {
           result = solver_.new_var();
@@ -96,14 +100,14 @@ std::vector<bool> Unrolling::input_values(std::size_t frame) const {
   return bits;
 }
 
-void add_frames_differ(Unrolling& frames, const std::vector<std::uint32_t>& latches,
-                       std::size_t a, std::size_t b) {
+void add_frames_differ(Unrolling& frames, const std::vector<std::uint32_t>& latches, std::size_t a,
+                       std::size_t b) {
   Solver& solver = frames.solver();
   std::vector<int> differs;
   for (auto l : latches) {
     const int x = frames.latch(l, a), y = frames.latch(l, b);
     if (x == y) continue;
-    if (x == -y) return;  // they always differ
+    if (x == -y) return;             // they always differ
     const int d = solver.new_var();  // d -> x != y
     solver.add_clause({-d, x, y});
     solver.add_clause({-d, -x, -y});

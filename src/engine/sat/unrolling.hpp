@@ -43,8 +43,8 @@ class Unrolling {
 
 /// Clauses saying that frames `a` and `b` differ on at least one of `latches` (simple-path
 /// constraints of k-induction).
-void add_frames_differ(Unrolling& frames, const std::vector<std::uint32_t>& latches,
-                       std::size_t a, std::size_t b);
+void add_frames_differ(Unrolling& frames, const std::vector<std::uint32_t>& latches, std::size_t a,
+                       std::size_t b);
 
 /// The latches in the cone of influence of `roots`: read by them, directly or through the
 /// next-state functions of other latches in the cone (sorted).

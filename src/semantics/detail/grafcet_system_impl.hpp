@@ -22,11 +22,29 @@ using model::ExprKind;
 // ------------------------------------------------------------------------ compiled expressions
 
 enum class Op : std::uint8_t {
-  Const, Input, Step, Var, Delay,
-  Not, Neg, And, Or, Xor,
-  Add, Sub, Mul, Div, Mod,
-  Eq, Ne, Lt, Le, Gt, Ge,
-  Rise, Fall,
+  Const,
+  Input,
+  Step,
+  Var,
+  Delay,
+  Not,
+  Neg,
+  And,
+  Or,
+  Xor,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Rise,
+  Fall,
 };
 
 /// An expression whose names are resolved to inputs, steps, memory fields and delays.
@@ -139,7 +157,8 @@ struct ObsInfo {
 };
 
 inline bool all_digits(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
 }
 
 /// Step names in the usual order: numbers by value, then the others alphabetically.
@@ -258,7 +277,7 @@ class GrafcetSystem final : public TransitionSystem {
   std::vector<GDelay> delays_;
   std::vector<int> enclosing_;  ///< ids of enclosing steps
 
-  std::map<std::string, int> var_index_;    ///< upper "POU.NAME" -> vars_
+  std::map<std::string, int> var_index_;      ///< upper "POU.NAME" -> vars_
   std::map<std::string, int> input_by_name_;  ///< upper "POU.NAME" -> gin_
 
   StateLayout layout_;

@@ -21,23 +21,38 @@ inline constexpr std::int32_t kNone = -1;
 // ------------------------------------------------------------------------------ expressions
 
 enum class Op : std::uint8_t {
-  Const,      ///< k
-  Field,      ///< value of field a (as the cycle's actions left it)
-  Input,      ///< Boolean input a, or an integer input read as a value (enumerated)
-  InputCmp,   ///< integer input a compared (cmp) with constant k: splits the input's interval
+  Const,         ///< k
+  Field,         ///< value of field a (as the cycle's actions left it)
+  Input,         ///< Boolean input a, or an integer input read as a value (enumerated)
+  InputCmp,      ///< integer input a compared (cmp) with constant k: splits the input's interval
   InputCmpExpr,  ///< integer input a compared (cmp) with the value of child 0 (evaluated first)
-  StepX,      ///< activity of step a in the current configuration
-  StepT,      ///< discrete time: .T of step a in ms
-  StepTCmp,   ///< abstract time: step a's .T region >= k (after `negate`)
-  TimerQ,     ///< Q of timer FB a (its timer state)
-  TimerET,    ///< discrete time: ET of timer FB a in ms
-  Not, Neg, And, Or, Xor, Add, Sub, Mul, Div, Mod, Eq, Ne, Lt, Le, Gt, Ge,
+  StepX,         ///< activity of step a in the current configuration
+  StepT,         ///< discrete time: .T of step a in ms
+  StepTCmp,      ///< abstract time: step a's .T region >= k (after `negate`)
+  TimerQ,        ///< Q of timer FB a (its timer state)
+  TimerET,       ///< discrete time: ET of timer FB a in ms
+  Not,
+  Neg,
+  And,
+  Or,
+  Xor,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
 };
 
 struct Node {
   Op op = Op::Const;
-  Op cmp = Op::Eq;         ///< InputCmp
-  bool negate = false;     ///< StepTCmp
+  Op cmp = Op::Eq;      ///< InputCmp
+  bool negate = false;  ///< StepTCmp
   std::uint32_t a = 0;
   std::uint32_t first = 0;  ///< children in Program::kids
   std::uint32_t count = 0;
@@ -69,7 +84,7 @@ struct Stmt {
   std::uint32_t arm_first = 0, arm_count = 0;
   Block else_body;
   std::int32_t arg1 = kNone, arg2 = kNone, arg3 = kNone;  ///< FbCall: expression nodes
-  std::string where;  ///< for range errors
+  std::string where;                                      ///< for range errors
 };
 
 // ------------------------------------------------------------------------------------ timers
@@ -87,9 +102,9 @@ struct Fb {
   std::string name;
   model::StandardFb kind = model::StandardFb::None;
   std::uint32_t pou = 0;
-  std::int32_t q = kNone;    ///< Q / Q1 field
-  std::int32_t mem = kNone;  ///< edge memory (R_TRIG, F_TRIG, CTU, CTD, TP's last IN)
-  std::int32_t cv = kNone;   ///< counters
+  std::int32_t q = kNone;      ///< Q / Q1 field
+  std::int32_t mem = kNone;    ///< edge memory (R_TRIG, F_TRIG, CTU, CTD, TP's last IN)
+  std::int32_t cv = kNone;     ///< counters
   std::int32_t timer = kNone;  ///< index into Program::timers
   std::int64_t pt_ms = -1;     ///< timers: constant PT
   bool pt_set = false;
@@ -114,7 +129,7 @@ struct Transition {
   std::uint32_t chart = 0;
   std::vector<std::uint32_t> sources, targets;  ///< steps
   std::uint32_t guard = 0;
-  std::int64_t rank = 0;  ///< priority key within the chart
+  std::int64_t rank = 0;    ///< priority key within the chart
   std::uint32_t index = 0;  ///< in TransitionSystem::transitions()
 };
 
@@ -128,9 +143,9 @@ struct Chart {
   std::uint32_t pou = 0;
   std::int32_t parent_action = kNone;
   std::vector<std::uint32_t> steps;
-  std::vector<std::uint32_t> ordered;      ///< transitions by priority (Standard) / order
-  std::vector<AltGroup> groups;            ///< PriorityMode::None
-  std::vector<std::uint32_t> singles;      ///< PriorityMode::None: not in a group
+  std::vector<std::uint32_t> ordered;  ///< transitions by priority (Standard) / order
+  std::vector<AltGroup> groups;        ///< PriorityMode::None
+  std::vector<std::uint32_t> singles;  ///< PriorityMode::None: not in a group
 };
 
 struct Assoc {
@@ -143,10 +158,10 @@ struct Assoc {
 struct Action {
   std::string name;  ///< "POU.ACTION"
   std::uint32_t pou = 0;
-  std::uint32_t active = 0;          ///< field
-  std::int32_t stored = kNone;       ///< field
+  std::uint32_t active = 0;     ///< field
+  std::int32_t stored = kNone;  ///< field
   model::ActionBodyKind kind = model::ActionBodyKind::Statements;
-  std::int32_t variable = kNone;     ///< field of the Boolean variable
+  std::int32_t variable = kNone;  ///< field of the Boolean variable
   Block body;
   std::vector<std::uint32_t> assocs;
 };
@@ -189,7 +204,7 @@ struct Program {
   std::vector<Assoc> assocs;
   std::vector<Action> actions;
   std::vector<Pou> pous;
-  std::vector<std::uint32_t> assumptions;  ///< nodes
+  std::vector<std::uint32_t> assumptions;        ///< nodes
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
 };

@@ -3,6 +3,7 @@
 // simulator uses step_once to follow given inputs without enumerating successors.
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -51,12 +52,15 @@ class Iec61131System final : public TransitionSystem {
   void trim(InputCondition& cond, std::size_t n) const;
 
   std::unique_ptr<Program> p_;
-  // Scratch reused across calls: no heap allocation per successor once warmed up.
+  // Scratch reused across calls: no heap allocation per successor once warmed up. The lock
+  // makes the calls that use it safe from several threads (the engines of --engine auto build
+  // their circuits from one system at once); a sink may call back in, hence recursive.
+  mutable std::recursive_mutex scratch_lock_;
   mutable Machine machine_;
   mutable std::vector<StateWord> scratch_;
   mutable std::vector<Entry> entries_;
   mutable std::size_t used_ = 0;
-  mutable std::vector<std::uint32_t> table_;  ///< open addressing: entry index + 1, 0 = empty
+  mutable std::vector<std::uint32_t> table_;    ///< open addressing: entry index + 1, 0 = empty
   mutable std::vector<InputCube> spare_cubes_;  ///< cubes (with their capacity) between calls
   mutable std::vector<AnomalyEntry> anomalies_;
   mutable std::size_t anomalies_used_ = 0;
