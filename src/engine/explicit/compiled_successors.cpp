@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
-#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -44,16 +43,18 @@ struct DynamicBit {
 class CompiledEnumerator final : public TargetEnumerator {
  public:
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
-      : fallback_(make_interpreted_enumerator(ts)),
-        fallback_lock_(std::make_shared<std::mutex>()),
+      : ts_(ts),
+        fallback_(make_interpreted_enumerator(ts)),
         words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
   }
 
-  // A copy shares the compiled gates' values by value (its own scratch words) and the one
-  // interpreted fallback, which the TransitionSystem's scratch state makes single-threaded.
+  // A copy has its own scratch words and its own interpreted fallback (the system serialises
+  // the calls into its scratch machine).
   std::unique_ptr<TargetEnumerator> clone() const override {
-    return std::make_unique<CompiledEnumerator>(*this);
+    auto copy = std::make_unique<CompiledEnumerator>(*this);
+    copy->fallback_ = make_interpreted_enumerator(ts_);
+    return copy;
   }
 
   void targets(StateView state, std::vector<StateWord>& out) override {
@@ -94,7 +95,6 @@ class CompiledEnumerator final : public TargetEnumerator {
     for (const auto& d : dynamic_bits_) relevant |= mask_[d.lit >> 1];
     const auto r = static_cast<std::uint32_t>(std::popcount(relevant));
     if (r > kMaxRelevantBits) {
-      const std::lock_guard<std::mutex> lock(*fallback_lock_);
       fallback_->targets(state, out);
       return;
     }
@@ -251,8 +251,8 @@ class CompiledEnumerator final : public TargetEnumerator {
         !reads_input[Aig::node_of(c.allowed)] && !reads_input[Aig::node_of(c.range_error)];
   }
 
-  std::shared_ptr<TargetEnumerator> fallback_;
-  std::shared_ptr<std::mutex> fallback_lock_;
+  const semantics::TransitionSystem& ts_;
+  std::shared_ptr<TargetEnumerator> fallback_;  ///< replaced in every clone
   std::uint32_t words_;
   std::uint32_t first_latch_ = 0, first_input_ = 0, first_gate_ = 0;
   std::vector<Position> latch_pos_;
