@@ -78,10 +78,18 @@ class Ic3 {
   }
 
  private:
+  /// One link of a possible run to the target: the inputs under which every state of the
+  /// obligation's cube steps into its parent's cube (or, at the root, meets the target).
+  struct Link {
+    std::vector<bool> inputs;
+    std::size_t parent;  ///< index into links_; kNone at the root
+  };
+  static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   struct Obligation {
     std::size_t level;
     std::uint32_t depth;  ///< steps from these states to the target
     Cube cube;
+    std::size_t link;                                                      ///< into links_
     bool operator<(const Obligation& o) const { return level > o.level; }  // lowest level first
   };
 
@@ -102,10 +110,13 @@ class Ic3 {
       for (;;) {
         const auto& top = frames_[k];
         if (top.solve({top.frames->literal(target_, 0)}) == SatResult::Unsat) break;
-        Cube bad = lift(top, state_of(top), nullptr);
-        if (!block(std::move(bad), k)) {
+        std::vector<bool> inputs;
+        Cube bad = lift(top, state_of(top), nullptr, &inputs);
+        links_.push_back({std::move(inputs), kNone});
+        if (!block(std::move(bad), k, links_.size() - 1)) {
           r.kind = ReachResult::Kind::Reached;
           r.depth = cex_depth_;
+          r.inputs = replayed_run();
           return r;
         }
       }
@@ -160,12 +171,15 @@ class Ic3 {
   /// Lifting: the literals of `state` that suffice, under the same inputs, for a step into
   /// `successor` (or, with none, for the target), from the failed assumptions of a query that
   /// asks for the opposite.
-  Cube lift(const FrameSolver& f, const Cube& state, const Cube* successor) {
+  Cube lift(const FrameSolver& f, const Cube& state, const Cube* successor,
+            std::vector<bool>* inputs) {
     std::vector<int> assume;
+    inputs->assign(aig_.inputs().size(), false);
     for (std::uint32_t i = 0; i < aig_.inputs().size(); ++i)
       if (const int x = f.frames->input_if_encoded(i, 0)) {
         const int y = lift_.frames->literal(aig_.inputs()[i].literal, 0);
-        assume.push_back(f.solver->value(x) ? y : -y);
+        (*inputs)[i] = f.solver->value(x);
+        assume.push_back((*inputs)[i] ? y : -y);
       }
     std::vector<int> state_lits;
     for (const auto& l : state) state_lits.push_back(lift_.current(l));
@@ -193,7 +207,8 @@ class Ic3 {
   /// Is `c` inductive relative to F_{level-1}: F_{level-1} & !c & T & c' unsatisfiable? If so
   /// `core` gets the literals of c that the proof used (still excluding the initial state);
   /// if not, `pred` gets a lifted predecessor.
-  bool relatively_inductive(std::size_t level, const Cube& c, Cube* core, Cube* pred) {
+  bool relatively_inductive(std::size_t level, const Cube& c, Cube* core, Cube* pred,
+                            std::vector<bool>* pred_inputs = nullptr) {
     const auto& f = frames_[level - 1];
     const int act = f.solver->new_var();
     std::vector<int> clause{-act};
@@ -214,7 +229,7 @@ class Ic3 {
             break;
           }
     }
-    if (!unsat && pred) *pred = lift(f, state_of(f), &c);
+    if (!unsat && pred) *pred = lift(f, state_of(f), &c, pred_inputs);
     f.solver->add_clause({-act});  // retire the temporary clause
     return unsat;
   }
@@ -256,9 +271,9 @@ class Ic3 {
 
   /// Blocks `bad` at frame k with its proof obligations; false when one of them contains the
   /// initial state (a real run to the target, `cex_depth_` cycles long).
-  bool block(Cube bad, std::size_t k) {
+  bool block(Cube bad, std::size_t k, std::size_t root) {
     std::priority_queue<Obligation> queue;
-    queue.push({k, 0, std::move(bad)});
+    queue.push({k, 0, std::move(bad), root});
     while (!queue.empty()) {
       if (options_.deadline.passed()) throw TimeUp{};
       Obligation ob = queue.top();
@@ -267,6 +282,7 @@ class Ic3 {
       // is a counterexample.
       if (ob.level == 0 || intersects_initial(ob.cube)) {
         cex_depth_ = ob.depth;
+        cex_link_ = ob.link;
         return false;
       }
       if (covered(ob.level, ob.cube)) {
@@ -274,19 +290,42 @@ class Ic3 {
         continue;
       }
       Cube core, pred;
-      if (relatively_inductive(ob.level, ob.cube, &core, &pred)) {
+      std::vector<bool> pred_inputs;
+      if (relatively_inductive(ob.level, ob.cube, &core, &pred, &pred_inputs)) {
         queue.pop();
         Cube g = generalize(ob.level, std::move(core));
         std::size_t level = ob.level;
         while (level < k && relatively_inductive(level + 1, g, nullptr, nullptr)) ++level;
         add_blocked(g, level);
         // Re-enqueued one frame higher: it will be blocked there too or yield a deeper run.
-        if (level < k) queue.push({level + 1, ob.depth, std::move(ob.cube)});
+        if (level < k) queue.push({level + 1, ob.depth, std::move(ob.cube), ob.link});
       } else {
-        queue.push({ob.level - 1, ob.depth + 1, std::move(pred)});
+        links_.push_back({std::move(pred_inputs), ob.link});
+        queue.push({ob.level - 1, ob.depth + 1, std::move(pred), links_.size() - 1});
       }
     }
     return true;
+  }
+
+  /// The inputs of the run the obligation chain describes, frames 0..cex_depth_, replayed on
+  /// the circuit from the initial state: every step allowed, the target met in the last frame.
+  /// Empty when the replay fails (the caller then rebuilds a run by BMC).
+  std::vector<std::vector<bool>> replayed_run() const {
+    std::vector<std::vector<bool>> run;
+    for (std::size_t l = cex_link_; l != kNone; l = links_[l].parent)
+      run.push_back(links_[l].inputs);
+    if (run.size() != cex_depth_ + 1) return {};
+    std::vector<bool> latches;
+    for (const auto& l : aig_.latches()) latches.push_back(l.initial);
+    for (std::size_t j = 0; j < run.size(); ++j) {
+      const auto nodes = aig_.evaluate(run[j], latches);
+      if (j + 1 == run.size())
+        return semantics::Aig::value_of(nodes, target_) ? run : decltype(run){};
+      if (!semantics::Aig::value_of(nodes, step_ok_)) return {};
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = semantics::Aig::value_of(nodes, aig_.latches()[l].next);
+    }
+    return {};
   }
 
   const semantics::Aig& aig_;
@@ -298,6 +337,8 @@ class Ic3 {
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;
   std::uint32_t cex_depth_ = 0;
+  std::size_t cex_link_ = kNone;
+  std::vector<Link> links_;  ///< every obligation's link, kept until the run ends
 };
 
 }  // namespace

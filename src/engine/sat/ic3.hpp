@@ -22,8 +22,10 @@ struct Ic3Stats {
 
 /// Whether `query.targets[target]` is reachable: Unreachable comes with the inductive invariant
 /// (a Certificate::Invariant, not yet re-checked: certificate.hpp does that); Reached with the
-/// depth of the run IC3 found (its inputs are left for BMC to rebuild: the caller replays a
-/// shortest run up to that depth).
+/// depth of the run IC3 found and, when the chain of proof obligations replays on the circuit
+/// (every step allowed, the target met at the end), its inputs for frames 0..depth: a valid
+/// run, not necessarily a shortest one. When the replay fails, `inputs` stays empty and the
+/// caller rebuilds a run up to that depth by BMC.
 ReachResult ic3(const ReachQuery& query, std::size_t target, const Ic3Options& options,
                 Ic3Stats* stats = nullptr);
 

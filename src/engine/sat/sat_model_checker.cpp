@@ -198,8 +198,9 @@ class Run {
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
       auto r = sat::ic3(query, t, io);
-      if (r.kind == ReachResult::Kind::Reached) {
-        // IC3 knows that a run of r.depth cycles exists; BMC up to that depth rebuilds a
+      if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
+        // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
+        // knows only that a run of r.depth cycles exists, and BMC up to that depth rebuilds a
         // shortest one with its inputs (and double-checks IC3's claim).
         sat::ReachQuery one = query;
         one.targets = {targets_[t]};
