@@ -1,5 +1,6 @@
-// sfcv simulate: runs an IEC 61131-3 chart cycle by cycle on the inputs of a CSV file and
-// prints a table (optionally a VCD waveform).
+// sfcv simulate: runs an IEC 61131-3 chart cycle by cycle (a Grafcet event by event) on the
+// inputs of a CSV file (or of a trace written by `sfcv check --trace json`) and prints a table
+// (optionally a VCD waveform).
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -154,18 +156,79 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
   return rows;
 }
 
-/// The run as a trace, for the one VCD writer in src/report. The start state has no cycle
-/// before it: its inputs are the defaults (false, the lowest value).
-logic::Trace run_as_trace(const semantics::TransitionSystem& ts,
-                          const semantics::SimulationResult& r,
+/// A trace written by `sfcv check --trace json`: the inputs of its steps, as the CSV trace
+/// gives them (IEC: from the first cycle on, step 0 being the initial state; Grafcet: from the
+/// initial inputs on).
+std::vector<std::vector<std::int64_t>> read_json_trace(const std::string& path,
+                                                       const semantics::TransitionSystem& ts,
+                                                       std::vector<int>& shown) {
+  std::ifstream f(path);
+  if (!f) throw InputError(path + ": cannot read the input trace");
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(f);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(path + ": not a JSON trace: " + e.what());
+  }
+  if (!doc.is_object() || !doc.contains("steps") || !doc["steps"].is_array())
+    throw InputError(path + ": not a trace of 'sfcv check --trace json' (no \"steps\" array)");
+  const auto& inputs = ts.inputs();
+  const bool grafcet = ts.kind() == semantics::SemanticsKind::Grafcet;
+  std::vector<bool> seen(inputs.size());
+  std::vector<std::vector<std::int64_t>> rows;
+  const auto& steps = doc["steps"];
+  for (std::size_t s = grafcet ? 0 : 1; s < steps.size(); ++s) {
+    const std::string at = path + ": step " + std::to_string(s) + ": ";
+    const auto& given = steps[s].value("inputs", nlohmann::json::object());
+    if (!given.is_object()) throw InputError(at + "\"inputs\" is not an object");
+    std::vector<std::int64_t> row(inputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const auto& in = inputs[i];
+      row[i] = in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo;
+      const auto it = given.find(in.name);
+      if (it == given.end()) {
+        if (!in.pseudo) throw InputError(at + "no value for input '" + in.name + "'");
+        continue;
+      }
+      seen[i] = true;
+      if (it->is_boolean())
+        row[i] = it->get<bool>() ? 1 : 0;
+      else if (it->is_number_integer())
+        row[i] = it->get<std::int64_t>();
+      else
+        throw InputError(at + "bad value for input '" + in.name + "'");
+      if (row[i] < in.type.lo || row[i] > in.type.hi)
+        throw InputError(at + "value " + std::to_string(row[i]) + " of input '" + in.name +
+                         "' is out of its range");
+    }
+    for (const auto& [name, value] : given.items()) {
+      bool known = false;
+      for (const auto& in : inputs) known = known || in.name == name;
+      if (!known) throw InputError(at + "unknown input '" + name + "'");
+    }
+    rows.push_back(std::move(row));
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    if (seen[i] || !inputs[i].pseudo) shown.push_back(static_cast<int>(i));
+  return rows;
+}
+
+bool looks_like_json(const std::string& path) {
+  std::ifstream f(path);
+  char c = 0;
+  while (f.get(c))
+    if (!std::isspace(static_cast<unsigned char>(c))) return c == '{';
+  return false;
+}
+
+/// The run as a trace, for the one VCD writer in src/report; rows[c] are the inputs beside
+/// states[c].
+logic::Trace run_as_trace(const semantics::SimulationResult& r,
                           const std::vector<std::vector<std::int64_t>>& rows) {
   logic::Trace trace;
-  std::vector<std::int64_t> defaults;
-  for (const auto& in : ts.inputs())
-    defaults.push_back(in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo);
   for (std::size_t c = 0; c < r.states.size(); ++c)
     trace.steps.push_back(
-        {c == 0 ? defaults : rows[c - 1], r.states[c],
+        {rows[c], r.states[c],
          c == 0 || c > r.fired.size() ? std::vector<std::uint32_t>{} : r.fired[c - 1]});
   return trace;
 }
@@ -175,7 +238,7 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
                const std::vector<std::vector<std::int64_t>>& rows, std::int64_t cycle_ms) {
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write the VCD file");
-  out << report::trace_vcd(run_as_trace(ts, r, rows), ts, {cycle_ms});
+  out << report::trace_vcd(run_as_trace(r, rows), ts, {cycle_ms});
 }
 
 int run_simulate(const SimulateOptions& o) {
@@ -197,19 +260,31 @@ int run_simulate(const SimulateOptions& o) {
     if (!e) throw InputError("bad --assume '" + a + "'");
     assumptions.push_back(e);
   }
-  if (project.dialect != model::Dialect::Iec61131)
-    throw InputError(o.model +
-                     ": 'sfcv simulate' runs IEC 61131-3 charts; this is a Grafcet model");
+  const bool grafcet = chosen_semantics(project, o.system) == "grafcet";
+  if (grafcet && o.action_order != "declaration")
+    throw InputError("sfcv simulate: --action-order applies to the IEC 61131-3 semantics only");
   const auto built = build_system(project, o.system, assumptions, "sfcv simulate", action_order);
   const auto& ts = built.system;
   const std::int64_t cycle_ms = parse_cycle_ms(o.system.cycle);
 
   std::vector<int> shown;
-  auto rows = read_trace(o.inputs, *ts, shown);
-  if (o.max_cycles >= 0 && static_cast<std::size_t>(o.max_cycles) < rows.size())
-    rows.resize(static_cast<std::size_t>(o.max_cycles));
-  const auto start = semantics::first_initial_state(*ts);
-  const auto r = semantics::simulate(*ts, start, rows);
+  auto rows = looks_like_json(o.inputs) ? read_json_trace(o.inputs, *ts, shown)
+                                        : read_trace(o.inputs, *ts, shown);
+  // Grafcet: the first row is the initial inputs, so N events are N + 1 rows.
+  const std::size_t keep = static_cast<std::size_t>(o.max_cycles) + (grafcet ? 1 : 0);
+  if (o.max_cycles >= 0 && keep < rows.size()) rows.resize(keep);
+  semantics::SimulationResult r;
+  if (grafcet) {
+    r = semantics::simulate_events(*ts, rows, !o.system.multi_input_change, !assumptions.empty());
+  } else {
+    r = semantics::simulate(*ts, semantics::first_initial_state(*ts), rows);
+    // The IEC start state has no cycle before it: its inputs are the defaults.
+    std::vector<std::int64_t> defaults;
+    for (const auto& in : ts->inputs())
+      defaults.push_back(in.type.kind == model::TypeKind::Bool ? 0 : in.type.lo);
+    rows.insert(rows.begin(), std::move(defaults));
+  }
+  // From here rows[c] holds the inputs beside states[c].
 
   const auto& obs = ts->observables();
   auto list = [&](std::size_t c, semantics::ObservableKind kind) {
@@ -226,15 +301,16 @@ int run_simulate(const SimulateOptions& o) {
     }
     return s.empty() ? std::string("-") : s;
   };
-  std::cout << "cycle | inputs | active steps | active actions | outputs\n";
+  std::cout << (grafcet ? "event" : "cycle")
+            << " | inputs | active steps | active actions | outputs\n";
   for (std::size_t c = 0; c < r.states.size(); ++c) {
     std::string ins;
-    if (c == 0) {
+    if (c == 0 && !grafcet) {
       ins = "(initial)";
     } else {
       for (int i : shown)
         ins += (ins.empty() ? "" : " ") + ts->inputs()[static_cast<std::size_t>(i)].name + "=" +
-               std::to_string(rows[c - 1][static_cast<std::size_t>(i)]);
+               std::to_string(rows[c][static_cast<std::size_t>(i)]);
       if (ins.empty()) ins = "-";
     }
     std::cout << c << " | " << ins << " | " << list(c, semantics::ObservableKind::Step) << " | "
@@ -243,8 +319,8 @@ int run_simulate(const SimulateOptions& o) {
   }
   if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, cycle_ms);
   if (!r.ok) {
-    std::cerr << "sfcv: error: " << o.inputs << ": cycle " << r.failed_cycle << ": " << r.error
-              << "\n";
+    std::cerr << "sfcv: error: " << o.inputs << ": " << (grafcet ? "row " : "cycle ")
+              << r.failed_cycle << ": " << r.error << "\n";
     return kBadInput;
   }
   return kHolds;
@@ -255,8 +331,11 @@ int run_simulate(const SimulateOptions& o) {
 void add_simulate_command(CLI::App& app, CommandRunner& selected) {
   auto opts = std::make_shared<SimulateOptions>();
   auto* sub =
-      app.add_subcommand("simulate", "Run an IEC 61131-3 chart cycle by cycle on given inputs");
-  sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text)")->required();
+      app.add_subcommand("simulate",
+                         "Run an IEC 61131-3 chart cycle by cycle, or a Grafcet event by event, "
+                         "on given inputs");
+  sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE)")
+      ->required();
   sub->add_option(
          "--inputs", opts->inputs,
          "CSV trace: a header row of input names, then one row of values per cycle "
@@ -264,19 +343,24 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
          "'cycle' is ignored, which also lets a model without inputs run). Pseudo-inputs "
          "(timeout:<timer>, choice:<step>, elapse:<step>) may be given as columns; when "
          "absent they default to 0: no timeout, the first enabled alternative, no time "
-         "elapsing. Every other input needs a column.")
+         "elapsing. Every other input needs a column. Grafcet: the first row is the initial "
+         "inputs, each later row the inputs after one event (a trace written by "
+         "'sfcv check --trace csv' replays as it is). A JSON trace of 'sfcv check --trace json "
+         "--trace-file F' replays too.")
       ->required();
   sub->add_option("--vcd", opts->vcd,
                   "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
-  add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
+  add_system_options(*sub, opts->system);
   sub->add_option("--action-order", opts->action_order, "declaration (default) or alphabetical");
   sub->add_option("--assume", opts->assumptions,
                   "Assumption on inputs and state (ST expression), repeatable");
   sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");
   sub->footer(
       "Exit codes: 0 the trace ran to its end; 2 bad usage or input, or a cycle had no "
-      "successor (an assumption is violated, or a range error such as an integer overflow).");
+      "successor (an assumption is violated, or a range error such as an integer overflow; "
+      "Grafcet: an instability, or two inputs changing in one row without "
+      "--multi-input-change).");
   sub->callback([opts, &selected] { selected = [opts] { return run_simulate(*opts); }; });
 }
 

@@ -25,7 +25,7 @@ struct SystemOptions {
   bool multi_input_change = false;
 };
 
-/// Which semantics a subcommand offers: simulate and the circuit exports run IEC 61131-3 only.
+/// Which semantics a subcommand offers: the circuit exports run IEC 61131-3 only.
 enum class SemanticsChoice { Both, IecOnly };
 
 void add_system_options(CLI::App& sub, SystemOptions& options,

@@ -27,6 +27,18 @@ struct SimulationResult {
 SimulationResult simulate(const TransitionSystem& ts, StateView start,
                           const std::vector<std::vector<std::int64_t>>& inputs);
 
+/// Grafcet (IEC 60848): one row per event. inputs[0] is the initial input valuation, under
+/// which the initial situation is stabilised (states[0]); every later row is the input
+/// valuation after one event, and states[i] the stable situation it leads to. A row that
+/// changes nothing the grafcet reacts to keeps the situation (the RSG leaves such stuttering
+/// implicit), unless `assumptions` is set, when it means the row violates an assumption.
+/// Under `single_input_change`, a row that changes two inputs (pseudo-inputs, the delays'
+/// elapses, aside) is an error: it is not an event of the RSG. fired[i - 1]: the
+/// transitions cleared by event i, transient evolutions included.
+SimulationResult simulate_events(const TransitionSystem& ts,
+                                 const std::vector<std::vector<std::int64_t>>& inputs,
+                                 bool single_input_change, bool assumptions = false);
+
 /// The first initial state of `ts`.
 std::vector<StateWord> first_initial_state(const TransitionSystem& ts);
 

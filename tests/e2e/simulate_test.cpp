@@ -173,3 +173,90 @@ TEST(Simulate, AbstractTimeTakesTimeoutsFromThePseudoInputColumn) {
 }
 
 }  // namespace
+
+// Grafcet (docs/semantics.md 2.15): the first row is the initial inputs, each later row one
+// event; the table shows the stable situation after each.
+namespace {
+
+const char* kGrafcet =
+    "project sim;\ninput a, b;\noutput y;\ngrafcet G {\n  step 1 initial;\n  step 2, 3, 4;\n"
+    "  transition 1: 1 -> 2 when RE a;\n  transition 2: 2 -> 3 when b;\n"
+    "  transition 3: 3 -> 4 when 2s/X3;\n  transition 4: 4 -> 1 when !a;\n  action 4: y;\n}\n";
+
+TEST(Simulate, GrafcetRunsEventByEvent) {
+  const auto g7 = sfcv::test::write_temp(kGrafcet, ".g7");
+  // b rises first (nothing clears), then a rises: 1 -> 2 -> 3 in one event (transient 2);
+  // a row that changes nothing keeps the situation; the delay elapses as an event of its own.
+  const auto csv = sfcv::test::write_temp(
+      "a,b,elapse(2000ms/X3/0ms)\n0,0,0\n0,1,0\n1,1,0\n1,1,0\n1,1,1\n0,1,0\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + g7 + "' --inputs '" + csv + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_EQ(rows.size(), 7u) << r.out;
+  EXPECT_EQ(rows[0].rfind("event |", 0), 0u) << r.out;
+  EXPECT_NE(rows[1].find("0 | a=0 b=0 elapse(2000ms/X3/0ms)=0 | X1 | - | y=0"), std::string::npos)
+      << r.out;
+  EXPECT_NE(rows[2].find("| X1 |"), std::string::npos) << r.out;
+  EXPECT_NE(rows[3].find("| X3 |"), std::string::npos) << r.out;
+  EXPECT_NE(rows[4].find("| X3 |"), std::string::npos) << r.out;
+  EXPECT_NE(rows[5].find("| X4 | - | y=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows[6].find("| X1 | - | y=0"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, GrafcetRowChangingTwoInputsIsNotAnEvent) {
+  const auto g7 = sfcv::test::write_temp(kGrafcet, ".g7");
+  const auto csv = sfcv::test::write_temp("a,b\n0,0\n1,1\n", ".csv");
+  auto r = sfcv::test::run_sfcv("simulate '" + g7 + "' --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("row 2: inputs a and b change at once"), std::string::npos) << r.err;
+  r = sfcv::test::run_sfcv("simulate '" + g7 + "' --inputs '" + csv + "' --multi-input-change");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 | a=1 b=1 | X3 |"), std::string::npos) << r.out;
+}
+
+TEST(Simulate, GrafcetInstabilityStopsTheRun) {
+  const auto g7 = sfcv::test::write_temp(
+      "project u;\ninput a;\ngrafcet G {\n  step 1 initial;\n  step 2;\n"
+      "  transition 1: 1 -> 2 when a;\n  transition 2: 2 -> 1 when a;\n}\n",
+      ".g7");
+  const auto csv = sfcv::test::write_temp("a\n0\n1\n", ".csv");
+  const auto r = sfcv::test::run_sfcv("simulate '" + g7 + "' --inputs '" + csv + "'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("row 2:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("instab"), std::string::npos) << r.err;
+}
+
+// A counterexample of `sfcv check` replays in `sfcv simulate`, in both trace formats, and
+// ends where the property fails.
+TEST(Simulate, GrafcetCounterexampleReplays) {
+  const auto g7 = sfcv::test::write_temp(kGrafcet, ".g7");
+  for (const std::string format : {"csv", "json"}) {
+    const auto trace = sfcv::test::write_temp("", "." + format);
+    auto r = sfcv::test::run_sfcv("check '" + g7 + "' --ctl 'AG !y' --trace " + format +
+                                  " --trace-file '" + trace + "'");
+    ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+    r = sfcv::test::run_sfcv("simulate '" + g7 + "' --inputs '" + trace + "'");
+    ASSERT_EQ(r.exit_code, 0) << format << ": " << r.out << r.err;
+    const auto rows = lines(r.out);
+    ASSERT_GE(rows.size(), 3u) << r.out;
+    EXPECT_NE(rows.back().find("| X4 | - | y=1"), std::string::npos) << format << ": " << r.out;
+    for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+      EXPECT_NE(rows[i].find("y=0"), std::string::npos) << format << ": " << r.out;
+  }
+}
+
+// The IEC side replays its JSON counterexamples too (step 0 is the initial state).
+TEST(Simulate, IecJsonCounterexampleReplays) {
+  const auto trace = sfcv::test::write_temp("", ".json");
+  auto r = run_sfcv("check " + kPlant + " --ctl 'AG !(V2 & V4)' --trace json --trace-file '" +
+                    trace + "'");
+  ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+  r = run_sfcv("simulate " + kPlant + " --inputs '" + trace + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_GE(rows.size(), 2u);
+  EXPECT_NE(rows.back().find("V2=1"), std::string::npos) << r.out;
+  EXPECT_NE(rows.back().find("V4=1"), std::string::npos) << r.out;
+}
+
+}  // namespace
