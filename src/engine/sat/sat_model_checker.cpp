@@ -122,8 +122,32 @@ class Run {
       const AigLit inner = logic::circuit_literal(circuit(), *f.args[0]);
       q.shape = f.op == logic::Op::AG ? Question::Shape::Invariant : Question::Shape::Reach;
       q.targets.push_back(add_target(f.op == logic::Op::AG ? Aig::make_not(inner) : inner));
+    } else if (const auto step = next_cycle_parts(f); step && iec_) {
+      // AG (p -> AX q), the next-cycle patterns: an observer latch holds p of the cycle before
+      // (FALSE in an initial state, where no cycle has run yet), and the question is the
+      // invariant "never the latch and not q" (docs/engines.md). Grafcet is left out: its
+      // machine's steps are micro-steps, not the edges AX reads.
+      auto& aig = iec_->aig;
+      const AigLit p_lit = logic::circuit_literal(*iec_, *step->first);
+      const AigLit q_lit = logic::circuit_literal(*iec_, *step->second);
+      const AigLit was_p = aig.add_latch("prev(" + logic::to_string(step->first) + ")", false);
+      aig.set_next(static_cast<std::uint32_t>(aig.latches().size() - 1), p_lit);
+      q.shape = Question::Shape::Invariant;
+      q.targets.push_back(add_target(aig.make_and(was_p, Aig::make_not(q_lit))));
     }
     return q;
+  }
+
+  /// (p, q) when `f` is AG (p -> AX q) with p and q propositional.
+  static std::optional<std::pair<logic::FormulaPtr, logic::FormulaPtr>> next_cycle_parts(
+      const logic::Formula& f) {
+    if (f.op != logic::Op::AG) return std::nullopt;
+    const auto& body = *f.args[0];
+    if (body.op != logic::Op::Implies || body.args[1]->op != logic::Op::AX) return std::nullopt;
+    const auto& p = body.args[0];
+    const auto& q = body.args[1]->args[0];
+    if (!logic::is_propositional(*p) || !logic::is_propositional(*q)) return std::nullopt;
+    return std::make_pair(p, q);
   }
 
   Question check_question(StandardCheck c) {
@@ -300,7 +324,8 @@ class Run {
 
   std::string not_checked() const {
     return "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-           " engine (it decides AG p and EF p for propositional p without fairness); use "
+           " engine (it decides AG p, EF p and AG (p -> AX q) for propositional p and q, without "
+           "fairness); use "
            "--engine explicit or bdd";
   }
 
