@@ -233,9 +233,14 @@ class RandomChart {
     std::ostringstream o;
     o << "PROGRAM Random\n  VAR_INPUT\n";
     for (std::uint32_t i = 0; i < inputs_; ++i) o << "    " << idx("i", i) << " : BOOL;\n";
+    // SFCReset as an input, or set by an action of step `reset_step` (0: an input).
+    const std::uint32_t reset_step = features_.sfc_flags && step_count_ > 1 ? pick(step_count_) : 0;
+    if (features_.sfc_flags)
+      o << "    SFCInit : BOOL;\n" << (reset_step ? "" : "    SFCReset : BOOL;\n");
     o << "  END_VAR\n  VAR_OUTPUT\n";
     for (std::uint32_t i = 0; i < outputs_; ++i) o << "    " << idx("Q", i) << " : BOOL;\n";
     o << "  END_VAR\n";
+    if (reset_step) o << "  VAR\n    SFCReset : BOOL;\n  END_VAR\n";
     // The nested chart's action is started by one step and, when stored, reset by another.
     const std::uint32_t starter = step_count_ > 1 ? 1 + pick(step_count_ - 1) : 0;
     const std::uint32_t stopper = step_count_ > 1 ? 1 + pick(step_count_ - 1) : 0;
@@ -254,6 +259,8 @@ class RandomChart {
         o << ");\n";
       }
       if (features_.nested_chart && s == starter) o << "    Sub(" << (stored ? "S" : "N") << ");\n";
+      if (reset_step && s == reset_step) o << "    Restart(P1);\n";
+      if (reset_step && s == 0) o << "    Restarted(N);\n";
       if (features_.nested_chart && stored && s == stopper && s != starter) o << "    Sub(R);\n";
       o << "  END_STEP\n";
     }
@@ -266,6 +273,11 @@ class RandomChart {
         << "    TRANSITION FROM U1 TO U2 := " << guard() << "; END_TRANSITION\n"
         << "    TRANSITION FROM U2 TO U0 := " << guard() << "; END_TRANSITION\n  END_ACTION\n";
     }
+    // Restart sets SFCReset on entering its step: the next cycle resets the chart, whose
+    // initial step clears it again.
+    if (reset_step)
+      o << "  ACTION Restart : SFCReset := TRUE; END_ACTION\n"
+        << "  ACTION Restarted : SFCReset := FALSE; END_ACTION\n";
     o << "END_PROGRAM\n";
     return o.str();
   }

@@ -25,6 +25,9 @@ std::string nested_charts_iec(std::uint32_t n);
 struct RandomChartFeatures {
   bool timed_qualifiers = false;  ///< also L, D, SD, DS and SL with durations of 10 to 40 ms
   bool nested_chart = false;      ///< an action holding its own chart, started and stopped by steps
+  /// CODESYS's implicit flags: SFCInit a free input, and SFCReset either a free input or set by
+  /// a step's P1 action and cleared by the initial step's N action (a CODESYS idiom).
+  bool sfc_flags = false;
 };
 
 /// A deep counter: an n-bit variable `c` (INT(0..2^n - 1)) counts up by one on `tick`, every

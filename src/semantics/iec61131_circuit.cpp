@@ -205,6 +205,7 @@ class SymbolicMachine {
   TransitionCircuit& c_;
   Aig& aig_;
   std::vector<Value> cur_, nxt_, input_values_;
+  std::vector<std::int64_t> initial_values_;  ///< per field: what SFCInit/SFCReset restore
   std::vector<AigLit> consumed_, entered_, left_;
 };
 
@@ -624,13 +625,39 @@ void SymbolicMachine::step_times(const Pou& pou) {
 
 void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
   exec_block(pou.body, guard);
+  // SFCInit/SFCReset (Machine::sfc_flags): the charts restart from their initial situation;
+  // under SFCInit they stay there, running no action.
+  AigLit init = Aig::kFalse;
+  if (pou.sfc_init != kNone || pou.sfc_reset != kNone) {
+    if (pou.sfc_init != kNone)
+      init = aig_.make_and(guard, eval_truth(static_cast<std::uint32_t>(pou.sfc_init), guard));
+    AigLit reset = init;
+    if (pou.sfc_reset != kNone)
+      reset = aig_.make_or(
+          reset,
+          aig_.make_and(guard, eval_truth(static_cast<std::uint32_t>(pou.sfc_reset), guard)));
+    for (auto f : pou.chart_fields) {
+      const Value v = constant(initial_values_[f]);
+      cur_[f] = mux(reset, v, cur_[f]);
+      nxt_[f] = mux(reset, v, nxt_[f]);
+    }
+  }
+  const AigLit run = aig_.make_and(guard, aig_.make_not(init));
   for (auto a : pou.exec_order) {
     const auto& act = p_.actions[a];
     if (act.kind == model::ActionBodyKind::Statements)
-      exec_block(act.body, aig_.make_and(guard, cur_truth(act.active)));
+      exec_block(act.body, aig_.make_and(run, cur_truth(act.active)));
   }
-  for (auto c : pou.charts) fire_chart(p_.charts[c], aig_.make_and(guard, chart_active_cur(c)));
-  update_pou(pou, guard);
+  for (auto c : pou.charts) fire_chart(p_.charts[c], aig_.make_and(run, chart_active_cur(c)));
+  if (init == Aig::kFalse) {
+    update_pou(pou, guard);
+    return;
+  }
+  std::vector<Value> held;
+  for (auto f : pou.chart_fields) held.push_back(nxt_[f]);
+  update_pou(pou, run);
+  for (std::size_t i = 0; i < held.size(); ++i)
+    nxt_[pou.chart_fields[i]] = mux(init, held[i], nxt_[pou.chart_fields[i]]);
 }
 
 void SymbolicMachine::build(StateView initial_state) {
@@ -638,8 +665,10 @@ void SymbolicMachine::build(StateView initial_state) {
   // Latches: one per field bit, initialised from the explicit initial configuration.
   c_.field_latches.resize(fields.size());
   cur_.resize(fields.size());
+  initial_values_.resize(fields.size());
   for (std::uint32_t f = 0; f < fields.size(); ++f) {
-    const auto init = static_cast<std::uint64_t>(p_.layout.get(initial_state, f) - fields[f].lo);
+    initial_values_[f] = p_.layout.get(initial_state, f);
+    const auto init = static_cast<std::uint64_t>(initial_values_[f] - fields[f].lo);
     BitVector bits;
     for (std::uint32_t k = 0; k < fields[f].width; ++k) {
       c_.field_latches[f].push_back(static_cast<std::uint32_t>(aig_.latches().size()));
@@ -677,7 +706,9 @@ void SymbolicMachine::build(StateView initial_state) {
   AigLit assumed = Aig::kTrue;
   for (auto a : p_.assumptions) assumed = aig_.make_and(assumed, eval_truth(a, assumed));
   c_.allowed = aig_.make_and(allowed, assumed);
+  const std::vector<Value> latched = cur_;  // SFCInit/SFCReset rewrite cur_ within the cycle
   for (const auto& pou : p_.pous) cycle_pou(pou, c_.allowed);
+  cur_ = latched;
   c_.range_error = aig_.make_and(c_.range_error, c_.allowed);
 
   for (std::uint32_t f = 0; f < fields.size(); ++f) {

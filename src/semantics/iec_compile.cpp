@@ -263,6 +263,7 @@ bool Compiler::run() {
   for (const auto& a : p.options.assumptions)
     if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
   step_timers();
+  sfc_flags();
   step_observables();
   // A program without steps may keep no state at all (it only maps inputs to outputs of
   // dropped types); the engines store states as words, so give it one constant bit.

@@ -13,6 +13,10 @@ using model::Qualifier;
 
 bool Machine::run() {
   fixed_ = false;
+  if (cur_dirty_) {
+    cur_ = loaded_;
+    cur_dirty_ = false;
+  }
   for (auto i : touched_) {
     in_lo_[i] = p_.inputs[i].type.lo;
     in_hi_[i] = p_.inputs[i].type.hi;
@@ -36,6 +40,10 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
     in_lo_[i] = in_hi_[i] = valuation[i];
   touched_.clear();
   fixed_ = true;
+  if (cur_dirty_) {
+    cur_ = loaded_;
+    cur_dirty_ = false;
+  }
   pos_ = 0;
   nxt_ = cur_;
   fired_.clear();
@@ -57,6 +65,11 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
 }
 
 void Machine::initial(MutableStateView out) {
+  initial_configuration();
+  pack(out);
+}
+
+void Machine::initial_configuration() {
   // The initial configuration is phase 4 applied to "nothing ready yet" with the top-level
   // initial steps entered: their P1 and N actions are active from the start. Nested charts'
   // initial steps are ready as history (no P1).
@@ -72,12 +85,27 @@ void Machine::initial(MutableStateView out) {
   fixed_ = true;  // no input is read: every timer starts from idle
   for (const auto& pou : p_.pous) update_pou(pou);
   fixed_ = false;
-  pack(out);
+  cur_dirty_ = false;
+}
+
+bool Machine::sfc_flags(const Pou& pou) {
+  // CODESYS reads its implicit flags when the chart's code starts, after the POU's own body:
+  // a write by the body or by the caller counts this cycle, one by an action the next.
+  const bool init = pou.sfc_init != kNone && eval(static_cast<std::uint32_t>(pou.sfc_init));
+  const bool reset =
+      init || (pou.sfc_reset != kNone && eval(static_cast<std::uint32_t>(pou.sfc_reset)));
+  if (!reset) return false;
+  for (auto f : pou.chart_fields) cur_[f] = nxt_[f] = reset_values_[f];
+  cur_dirty_ = true;
+  return init;
 }
 
 void Machine::cycle_pou(const Pou& pou) {
   // Phase 2: the POU's own body, then the active actions in action order.
   exec_block(pou.body);
+  // SFCInit/SFCReset: the charts restart from their initial situation; under SFCInit they stay
+  // there, running no action.
+  if ((pou.sfc_init != kNone || pou.sfc_reset != kNone) && sfc_flags(pou)) return;
   for (auto a : pou.exec_order) {
     const auto& act = p_.actions[a];
     if (act.kind == model::ActionBodyKind::Statements && cur_[act.active]) exec_block(act.body);

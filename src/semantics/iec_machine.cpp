@@ -32,10 +32,17 @@ Machine::Machine(const Program& p)
   trail_.reserve(64);
   fired_.reserve(p.transitions.size());
   enabled_scratch_.reserve(16);
+  for (const auto& pou : p.pous) has_flags_ |= pou.sfc_init != kNone || pou.sfc_reset != kNone;
+  if (has_flags_) {
+    initial_configuration();
+    reset_values_ = nxt_;
+  }
 }
 
 void Machine::load(StateView state) {
   for (std::uint32_t f = 0; f < cur_.size(); ++f) cur_[f] = p_.layout.get(state, f);
+  if (has_flags_) loaded_ = cur_;
+  cur_dirty_ = false;
 }
 
 void Machine::pack(MutableStateView out) const {

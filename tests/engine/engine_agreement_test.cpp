@@ -313,6 +313,19 @@ TEST(EngineAgreement, TimedQualifiersAndNestedCharts) {
   }
 }
 
+// CODESYS's SFCInit/SFCReset: the resets add runs the engines must all see.
+TEST(EngineAgreement, SfcInitAndSfcReset) {
+  bench::RandomChartFeatures features;
+  features.sfc_flags = true;
+  for (std::uint64_t seed = 60; seed <= 67; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    features.nested_chart = seed % 2 == 0;
+    const auto s = load(bench::random_chart_iec(10, 2, seed, features));
+    ASSERT_TRUE(s.ts);
+    compare_engines(s, seed, false);
+  }
+}
+
 TEST(EngineAgreement, Families) {
   for (const auto& text :
        {bench::tanks_iec(2, true), bench::tanks_iec(2, false), bench::nested_charts_iec(3),

@@ -180,6 +180,22 @@ END_FUNCTION_BLOCK
   expect_agreement(*ts, 3000, 99);
 }
 
+// CODESYS's SFCInit and SFCReset (a free input, or set and cleared by actions), also with
+// timed qualifiers and a nested chart whose history the reset restores.
+TEST(Iec61131Circuit, AgreesOnSfcInitAndSfcReset) {
+  bench::RandomChartFeatures features;
+  features.sfc_flags = true;
+  for (std::uint64_t seed = 60; seed <= 71; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    features.timed_qualifiers = features.nested_chart = seed % 3 != 0;
+    Iec61131Options options;
+    options.time = seed % 2 == 0 ? TimeMode::Abstract : TimeMode::Discrete;
+    auto ts = system_for(bench::random_chart_iec(10, 2, seed, features), options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, seed);
+  }
+}
+
 TEST(Iec61131Circuit, AgreesOnFamilies) {
   auto tanks = system_for(bench::tanks_iec(2, true));
   ASSERT_TRUE(tanks);

@@ -141,6 +141,10 @@ struct Compiler {
 
   void step_observables();
 
+  /// CODESYS/TwinCAT implicit SFC flags: SFCInit and SFCReset attached to their compiled Pou,
+  /// the other vendor flags refused (iec_compile_flags.cpp).
+  void sfc_flags();
+
   /// Grafcet-only content and duplicates the IEC semantics would otherwise silently merge.
   void reject_foreign(const std::vector<const model::Pou*>& pous);
 

@@ -172,6 +172,10 @@ struct Pou {
   std::vector<std::uint32_t> charts;
   std::vector<std::uint32_t> exec_order;  ///< actions, in execution order
   std::vector<std::uint32_t> topo_order;  ///< actions, parents before nested ones
+  /// CODESYS/TwinCAT implicit flags (nodes, read after the body): while TRUE, chart_fields take
+  /// their initial values; under SFCInit the charts then neither run actions nor evolve.
+  std::int32_t sfc_init = kNone, sfc_reset = kNone;
+  std::vector<std::uint32_t> chart_fields;
 };
 
 struct ObservableRef {
@@ -268,6 +272,9 @@ class Machine {
   bool timer_expired(const Timer& t, std::int64_t v) const;
 
   void cycle_pou(const Pou& pou);
+  /// SFCInit/SFCReset read after the body: restores the POU's chart fields; true under SFCInit.
+  bool sfc_flags(const Pou& pou);
+  void initial_configuration();
   void fire_chart(const Chart& c);
   void fire(const Transition& t);
   void update_pou(const Pou& pou);
@@ -285,6 +292,10 @@ class Machine {
   std::vector<std::uint32_t> fired_;
   std::vector<std::uint32_t> enabled_scratch_;
   std::vector<std::uint8_t> reset_;  ///< per action
+  // SFCInit/SFCReset: the initial configuration they restore, and the loaded state (a flag
+  // rewrites cur_ within a run; the next leaf starts again from the loaded state).
+  bool has_flags_ = false, cur_dirty_ = false;
+  std::vector<std::int64_t> reset_values_, loaded_;
 };
 
 }  // namespace sfcv::semantics::iec
