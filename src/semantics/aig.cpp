@@ -1,6 +1,7 @@
 #include "semantics/aig.hpp"
 
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "model/errors.hpp"
@@ -44,7 +45,22 @@ AigLit Aig::make_and(AigLit a, AigLit b) {
   nodes_.push_back({NodeKind::And, a, b, 0});
   ++num_ands_;
   strash_.emplace(key, lit);
+  if (memory_limit_ > 0 && (num_ands_ & 0xFFFU) == 0 && memory_bytes() > memory_limit_)
+    throw LimitReached(Limit::Memory, "memory limit reached while building the circuit (" +
+                                          std::to_string(num_ands_) + " And nodes, " +
+                                          std::to_string(memory_bytes() >> 20) + " MB)");
   return lit;
+}
+
+std::uint64_t Aig::memory_bytes() const {
+  // An unordered_map entry: its key and value, the next pointer and the cached hash, rounded
+  // up to the allocator's 16 bytes; plus one pointer per bucket.
+  constexpr std::uint64_t kStrashEntry = 32;
+  std::uint64_t names = 0;
+  for (const auto& l : latches_) names += sizeof(Latch) + l.name.capacity();
+  for (const auto& i : inputs_) names += sizeof(Input) + i.name.capacity();
+  return nodes_.capacity() * sizeof(Node) + strash_.size() * kStrashEntry +
+         strash_.bucket_count() * sizeof(void*) + names;
 }
 
 AigLit Aig::make_xor(AigLit a, AigLit b) {

@@ -56,6 +56,11 @@ class Aig {
   void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline) {
     deadline_ = deadline;
   }
+  /// Past `bytes` (memory_bytes(), polled every 4096 new And nodes), make_and throws
+  /// LimitReached(Memory): --memory holds while a large chart's circuit is built. 0: no limit.
+  void set_memory_limit(std::uint64_t bytes) { memory_limit_ = bytes; }
+  /// What the graph holds: its nodes, the structural hash table, names.
+  std::uint64_t memory_bytes() const;
   static AigLit make_not(AigLit a) { return a ^ 1U; }
   AigLit make_or(AigLit a, AigLit b) { return make_not(make_and(make_not(a), make_not(b))); }
   AigLit make_xor(AigLit a, AigLit b);
@@ -105,6 +110,7 @@ class Aig {
   std::size_t num_ands_ = 0;
   std::optional<std::chrono::steady_clock::time_point> deadline_;
   std::uint32_t calls_ = 0;
+  std::uint64_t memory_limit_ = 0;
 };
 
 /// Little-endian two's-complement bit vectors over an Aig, for bounded integers.

@@ -654,7 +654,8 @@ void CircuitBuilder::build() {
 
 }  // namespace grafcet
 
-GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline) {
+GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<Deadline> deadline,
+                                     std::uint64_t max_memory_bytes) {
   if (as_history(ts))
     throw CircuitUnsupported(
         "prev(), rise() and fall() in a property: the Grafcet circuit does "
@@ -663,9 +664,11 @@ GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts, std::optional<D
   if (!sys) throw std::invalid_argument("build_grafcet_circuit: not a Grafcet system");
   GrafcetCircuit c;
   c.aig.set_deadline(deadline);
+  c.aig.set_memory_limit(max_memory_bytes);
   grafcet::CircuitBuilder builder(*sys, c);
   builder.build();
   c.aig.set_deadline(std::nullopt);
+  c.aig.set_memory_limit(0);
   return c;
 }
 

@@ -49,7 +49,9 @@ struct GrafcetCircuit : TransitionCircuit {
 /// CircuitUnsupported for expressions the circuit cannot express (a product or quotient of
 /// two non-constant values).
 /// Past `deadline` it throws LimitReached(Time).
+/// Past `max_memory_bytes` (0: none) of And-Inverter Graph it throws LimitReached(Memory).
 GrafcetCircuit build_grafcet_circuit(const TransitionSystem& ts,
-                                     std::optional<Deadline> deadline = std::nullopt);
+                                     std::optional<Deadline> deadline = std::nullopt,
+                                     std::uint64_t max_memory_bytes = 0);
 
 }  // namespace sfcv::semantics

@@ -800,11 +800,12 @@ TransitionCircuit extend_with_history(const HistorySystem& h, TransitionCircuit 
 }  // namespace
 
 TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts,
-                                         std::optional<Deadline> deadline) {
+                                         std::optional<Deadline> deadline,
+                                         std::uint64_t max_memory_bytes) {
   if (const auto* h = as_history(ts)) {
     if (h->kind() != SemanticsKind::Iec61131)
       throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
-    return extend_with_history(*h, build_iec61131_circuit(h->base(), deadline));
+    return extend_with_history(*h, build_iec61131_circuit(h->base(), deadline, max_memory_bytes));
   }
   const auto* sys = dynamic_cast<const iec::Iec61131System*>(&ts);
   if (!sys) throw std::invalid_argument("build_iec61131_circuit: not an IEC 61131-3 system");
@@ -815,9 +816,11 @@ TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts,
   ts.initial_states(initial);
   TransitionCircuit c;
   c.aig.set_deadline(deadline);
+  c.aig.set_memory_limit(max_memory_bytes);
   iec::SymbolicMachine machine(sys->program(), c);
   machine.build(initial.state);
   c.aig.set_deadline(std::nullopt);
+  c.aig.set_memory_limit(0);
   return c;
 }
 

@@ -4,6 +4,7 @@
 // every (pseudo-)input. The BDD engine and the exports (AIGER, NuSMV, Promela) are built from
 // it; differential tests check it against the explicit successor function.
 
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -36,10 +37,12 @@ class CircuitUnsupported : public UnsupportedConstruct {
 };
 
 /// `ts` must come from make_iec61131_system (throws std::invalid_argument otherwise).
-/// Past `deadline` (the run's budget) it throws LimitReached(Time).
+/// Past `deadline` (the run's budget) it throws LimitReached(Time), past `max_memory_bytes`
+/// (0: none) of And-Inverter Graph LimitReached(Memory).
 using Deadline = std::chrono::steady_clock::time_point;
 TransitionCircuit build_iec61131_circuit(const TransitionSystem& ts,
-                                         std::optional<Deadline> deadline = std::nullopt);
+                                         std::optional<Deadline> deadline = std::nullopt,
+                                         std::uint64_t max_memory_bytes = 0);
 
 /// The packed state whose field values are the latch values `latches` (one bool per latch).
 std::vector<StateWord> state_from_latches(const TransitionSystem& ts, const TransitionCircuit& c,

@@ -135,6 +135,63 @@ TEST(Budget, InvariantCounterexamplesOnTheQualityControlPlantStayWithinTheBudget
   EXPECT_LT(t.seconds, 40.0);
 }
 
+// A program whose one action chains 80 integer assignments: its circuit (64-bit adders and
+// range checks) is several MB of And-Inverter Graph, while its state graph is tiny.
+std::string arithmetic_program(int n) {
+  std::string text = "PROGRAM Big\n  VAR_INPUT go : BOOL; END_VAR\n  VAR";
+  for (int i = 0; i < n; ++i) text += " x" + std::to_string(i) + " : INT;";
+  text +=
+      " END_VAR\n  INITIAL_STEP S0 : Calc(N); END_STEP\n  STEP S1 : END_STEP\n"
+      "  TRANSITION FROM S0 TO S1 := go; END_TRANSITION\n"
+      "  TRANSITION FROM S1 TO S0 := go; END_TRANSITION\n  ACTION Calc :\n";
+  for (int i = 1; i < n; ++i)
+    text += "    x" + std::to_string(i) + " := x" + std::to_string(i - 1) + " + x" +
+            std::to_string((i * 7) % n) + " - " + std::to_string(i) + ";\n";
+  text += "  END_ACTION\nEND_PROGRAM\n";
+  return write_temp(text, ".st");
+}
+
+TEST(Budget, MemoryHoldsWhileBuildingTheCircuit) {
+  const auto big = arithmetic_program(80);
+  const auto t = timed_run("check " + big +
+                           " --engine bdd --memory 1M --checks none --ctl 'AG !(S0.X & S1.X)'"
+                           " --trace none --quiet");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("unknown"), std::string::npos) << t.run.out;
+  EXPECT_NE((t.run.out + t.run.err).find("memory limit reached while building the circuit"),
+            std::string::npos)
+      << t.run.out << t.run.err;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
+// --engine auto: the explicit probe finds stored-actions violated, gives up at its state bound
+// (4^11 situations) and hands over to the other engines; the violation must stay (issue 14:
+// it was reported unknown after the switch).
+TEST(Budget, AutoKeepsAViolationItsExplicitPhaseFound) {
+  std::string text = "project wide;\ninput a0";
+  for (int i = 1; i < 12; ++i) text += ", a" + std::to_string(i);
+  text +=
+      ";\ninternal x : 0..1 := 0;\n"
+      "grafcet G0 { step 1 initial; step 2; step 3; transition t0a: 1 -> {2, 3} when a0;\n"
+      "  transition t0b: {2, 3} -> 1 when !a0;\n"
+      "  action 2 on_enter: x := 1; action 3 on_enter: x := 0; }\n";
+  for (int i = 1; i < 12; ++i) {
+    const auto n = std::to_string(i);
+    text += "grafcet G" + n + " { step 1 initial; step 2, 3, 4; transition p" + n +
+            ": 1 -> 2 when a" + n + "; transition q" + n + ": 2 -> 3 when !a" + n +
+            "; transition r" + n + ": 3 -> 4 when a" + n + "; transition s" + n +
+            ": 4 -> 1 when !a" + n + "; }\n";
+  }
+  const auto wide = write_temp(text, ".g7");
+  const auto t = timed_run("check " + wide +
+                           " --engine auto --timeout 20 --checks stored-actions,reachable"
+                           " --trace none");
+  EXPECT_EQ(t.run.exit_code, 1) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("stored-actions  violated"), std::string::npos) << t.run.out;
+  EXPECT_NE(t.run.err.find("--engine auto"), std::string::npos) << t.run.err;
+  EXPECT_LT(t.seconds, 40.0);
+}
+
 TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
   // A violation on the first evolution, then a state space far beyond --max-states (4^11
   // situations, 2^12 of them initial): the violation stays, what is not decided is unknown.

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "model/errors.hpp"
+
 namespace sfcv::semantics {
 namespace {
 
@@ -13,6 +17,35 @@ std::int64_t value(const Aig& aig, const std::vector<bool>& nodes, const BitVect
   if (is_signed && !bv.empty() && (v >> (bv.size() - 1)) & 1U) v |= ~0ULL << bv.size();
   (void)aig;
   return static_cast<std::int64_t>(v);
+}
+
+// --memory while a circuit is built: the graph counts its bytes and stops past the limit.
+TEST(Aig, MemoryLimitEndsTheBuildWithLimitReached) {
+  Aig aig;
+  std::vector<AigLit> in;
+  for (int i = 0; i < 64; ++i) in.push_back(aig.add_input("i" + std::to_string(i)));
+  aig.set_memory_limit(256 * 1024);
+  bool stopped = false;
+  try {
+    AigLit acc = Aig::kTrue;
+    for (std::uint32_t k = 0; k < 1'000'000; ++k)
+      acc = aig.make_and(aig.make_xor(acc, in[k % 64]), in[(k * 7 + 3) % 64]);
+  } catch (const LimitReached& e) {
+    stopped = true;
+    EXPECT_EQ(e.which(), Limit::Memory);
+    EXPECT_NE(std::string(e.what()).find("memory limit reached while building the circuit"),
+              std::string::npos);
+  }
+  EXPECT_TRUE(stopped);
+  EXPECT_LT(aig.memory_bytes(), 4 * 256 * 1024);
+  EXPECT_GT(aig.memory_bytes(), 256 * 1024);
+  // Without a limit the same graph grows on.
+  Aig unlimited;
+  AigLit acc = Aig::kTrue;
+  const auto a = unlimited.add_input("a"), b = unlimited.add_input("b");
+  for (std::uint32_t k = 0; k < 10'000; ++k)
+    acc = unlimited.make_and(unlimited.make_xor(acc, a), b);
+  EXPECT_GT(unlimited.num_ands(), 20000U);
 }
 
 TEST(Aig, FoldsConstantsAndHashesStructure) {

@@ -469,12 +469,16 @@ class BddModelChecker final : public ModelChecker {
     }
     try {
       if (task.system->kind() == semantics::SemanticsKind::Grafcet)
-        semantics::build_grafcet_circuit(*task.system, task.limits.deadline);
+        semantics::build_grafcet_circuit(*task.system, task.limits.deadline,
+                                         task.limits.max_memory_bytes);
       else
-        semantics::build_iec61131_circuit(*task.system, task.limits.deadline);
+        semantics::build_iec61131_circuit(*task.system, task.limits.deadline,
+                                          task.limits.max_memory_bytes);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = std::string("the bdd engine cannot encode ") + e.what();
       return false;
+    } catch (const LimitReached&) {
+      return true;  // check() meets the limit again and answers unknown
     }
     // The standard checks that need the graph's edges are reported as not checked.
     return true;
@@ -490,6 +494,7 @@ class BddModelChecker final : public ModelChecker {
     }
     so.timeout_seconds = task.limits.seconds_left();
     so.deadline = task.limits.deadline;
+    so.max_circuit_bytes = task.limits.max_memory_bytes;
     // The run's one deadline, in every BDD operation (the fixpoints are loops of them).
     const bdd::DeadlineScope deadline(task.limits.deadline, task.limits.cancel.get());
     try {

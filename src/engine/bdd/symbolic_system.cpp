@@ -507,11 +507,12 @@ std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::Transition
     bdd::configure_manager(m.nodes, m.cache, m.cache_ratio);
   };
   if (ts.kind() == semantics::SemanticsKind::Grafcet) {
-    auto circuit = semantics::build_grafcet_circuit(ts, options.deadline);
+    auto circuit =
+        semantics::build_grafcet_circuit(ts, options.deadline, options.max_circuit_bytes);
     configure(circuit.aig);
     return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
   }
-  auto circuit = semantics::build_iec61131_circuit(ts, options.deadline);
+  auto circuit = semantics::build_iec61131_circuit(ts, options.deadline, options.max_circuit_bytes);
   configure(circuit.aig);
   return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
 }

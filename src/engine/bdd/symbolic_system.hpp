@@ -29,6 +29,8 @@ struct SymbolicOptions {
   double timeout_seconds = 0;
   /// The run's deadline (model::Budget): building the circuit stops there (LimitReached).
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// The run's --memory: building the circuit stops past it (LimitReached(Memory)); 0: none.
+  std::uint64_t max_circuit_bytes = 0;
   int max_nodes = 0;  ///< node table limit (0 = none): past it operations throw BddError
   ReorderMode reorder = ReorderMode::None;  ///< sifting of current/next pairs (reorder_mode.hpp)
 };
