@@ -73,7 +73,7 @@ std::string plcopen(const std::vector<std::string>& flags) {
 }
 
 TEST(SfcFlags, ResetReachesAStateTheChartAloneNeverDoes) {
-  const std::string ctl = " --ctl 'AG !(Idle.X & armed)'";
+  const std::string ctl = " --checks none --ctl 'AG !(Idle.X & armed)'";
   // A plain variable name: the property holds.
   const auto plain = write_temp(plcopen({"restart"}), ".xml");
   auto r = run_sfcv("check " + q(plain) + ctl);
@@ -102,7 +102,7 @@ TEST(SfcFlags, IecTextInitHeldFreezesTheChart) {
 END_PROGRAM
 )",
                                ".st");
-  auto r = run_sfcv("check " + q(path) + " --ctl 'AG Idle.X'");
+  auto r = run_sfcv("check " + q(path) + " --checks none --ctl 'AG Idle.X'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   // SFCReset held TRUE: each cycle restarts at Idle and may still move on to Feed.
   const auto reset = write_temp(R"(PROGRAM Cell
@@ -117,7 +117,7 @@ END_PROGRAM
 END_PROGRAM
 )",
                                 ".st");
-  r = run_sfcv("check " + q(reset) + " --ctl 'AG !Done.X' --ctl 'EF Feed.X'");
+  r = run_sfcv("check " + q(reset) + " --checks none --ctl 'AG !Done.X' --ctl 'EF Feed.X'");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 

@@ -56,7 +56,9 @@ TEST(Iec61131SfcFlags, InitHeldFreezesTheChartAtItsInitialSituation) {
   ASSERT_TRUE(ts);
   Runner r(*ts);
   ASSERT_TRUE(r.cycle({{"go", 1}}));
+  ASSERT_TRUE(r.cycle());  // Arm runs
   EXPECT_EQ(r["S1"], 1);
+  EXPECT_EQ(r["armed"], 1);
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(r.cycle({{"SFCInit", 1}, {"go", 1}}));
     EXPECT_EQ(r["S0"], 1);
