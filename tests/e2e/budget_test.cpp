@@ -184,12 +184,14 @@ TEST(Budget, AutoKeepsAViolationItsExplicitPhaseFound) {
   }
   const auto wide = write_temp(text, ".g7");
   const auto t = timed_run("check " + wide +
-                           " --engine auto --timeout 20 --checks stored-actions,reachable"
+                           " --engine auto --timeout 60 --checks stored-actions,reachable"
                            " --trace none");
   EXPECT_EQ(t.run.exit_code, 1) << t.run.out << t.run.err;
-  EXPECT_NE(t.run.out.find("stored-actions  violated"), std::string::npos) << t.run.out;
-  EXPECT_NE(t.run.err.find("--engine auto"), std::string::npos) << t.run.err;
-  EXPECT_LT(t.seconds, 40.0);
+  EXPECT_NE(t.run.out.find("stored-actions  violated    "), std::string::npos) << t.run.out;
+  EXPECT_NE(t.run.out.find("[explicit]"), std::string::npos) << t.run.out;
+  EXPECT_NE(t.run.err.find("--engine auto: more than 200000 states"), std::string::npos)
+      << t.run.err;
+  EXPECT_LT(t.seconds, 80.0);
 }
 
 TEST(Budget, VerdictsFoundBeforeTheLimitAreKept) {
