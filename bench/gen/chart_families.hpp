@@ -28,12 +28,24 @@ struct RandomChartFeatures {
   /// CODESYS's implicit flags: SFCInit a free input, and SFCReset either a free input or set by
   /// a step's P1 action and cleared by the initial step's N action (a CODESYS idiom).
   bool sfc_flags = false;
+  /// Three actions W0..W2 whose bodies write the output Y (INT(0..3)), two with constants (one
+  /// conditionally), associated to random steps with N, S or R: output conflicts and stored
+  /// actions with bodies.
+  bool writing_actions = false;
 };
 
 /// A deep counter: an n-bit variable `c` (INT(0..2^n - 1)) counts up by one on `tick`, every
 /// second cycle, while below 2^n - 2, so AG c <= 2^n - 2 holds and its runs are 2^(n+1) cycles
 /// deep (the BDD engine's breadth-first rings grow with the depth, IC3 needs none of them).
 std::string counter_iec(std::uint32_t n);
+
+/// N tanks with INT levels: tank i has `lvl_i` (INT(0..2L+1)), filled by one unit (step F_i,
+/// P1) on `fill_i` while below `level`, drained by one unit (step D_i, P1) on `drain_i` while
+/// above 0; each fill or drain takes two cycles, and draining tank i (i < N-1) pours one unit
+/// into tank i+1 when it has room. AG lvl_0 <= L holds and needs a strengthened invariant (the
+/// type allows more); AG lvl_0 <= L - 1 is violated after 2L cycles. Tank i+1 is filled by its
+/// own step and by the drain of tank i in one cycle when both start together (docs/benchmarks.md).
+std::string level_tanks_iec(std::uint32_t n, std::uint32_t level);
 
 /// A random well-formed chart with `steps` steps (sequences, selection and simultaneous
 /// branches) over `inputs` Boolean inputs, reproducible from `seed`.

@@ -10,12 +10,14 @@
 int main(int argc, char** argv) {
   CLI::App app{"sfcv-gen: scalable chart families for benchmarks", "sfcv-gen"};
   std::string family, output;
-  std::uint32_t n = 4, inputs = 4, unused = 0;
+  std::uint32_t n = 4, inputs = 4, unused = 0, level = 10;
   std::uint64_t seed = 1;
   bool flawed = false, selector = false;
-  app.add_option("family", family, "parallel | tanks | nested | random | transfer | counter")
+  app.add_option("family", family,
+                 "parallel | tanks | levels | nested | random | transfer | counter")
       ->required()
-      ->check(CLI::IsMember({"parallel", "tanks", "nested", "random", "transfer", "counter"}));
+      ->check(CLI::IsMember(
+          {"parallel", "tanks", "levels", "nested", "random", "transfer", "counter"}));
   app.add_option("n", n, "Size: branches, reactors, nesting depth, steps (random), stations");
   app.add_flag("--selector", selector, "parallel: one integer input selects the toggling branch");
   app.add_flag("--flawed", flawed, "tanks: keep the seed's V2/V4 flaw");
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
   app.add_flag("--timed", features.timed_qualifiers,
                "random: also timed qualifiers L, D, SD, DS, SL");
   app.add_flag("--nested", features.nested_chart, "random: an action holding a nested chart");
+  app.add_option("--level", level, "levels: the highest level of a tank (default 10)");
   app.add_option("--unused", unused, "transfer: extra inputs the grafcet never reads");
   app.add_option("-o,--output", output, "Output file (default: standard output)");
   try {
@@ -37,6 +40,8 @@ int main(int argc, char** argv) {
     text = sfcv::bench::parallel_branches_iec(n, selector);
   else if (family == "tanks")
     text = sfcv::bench::tanks_iec(n, flawed);
+  else if (family == "levels")
+    text = sfcv::bench::level_tanks_iec(n, level);
   else if (family == "counter")
     text = sfcv::bench::counter_iec(n);
   else if (family == "nested")

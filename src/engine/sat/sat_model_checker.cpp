@@ -1,6 +1,8 @@
 #include "engine/sat/sat_model_checker.hpp"
 
 #include <chrono>
+#include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -10,9 +12,11 @@
 #include "engine/sat/grafcet_machine.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
+#include "engine/sat/observers.hpp"
 #include "logic/circuit_atom.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "model/names.hpp"
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/iec61131_circuit.hpp"
 
@@ -44,11 +48,25 @@ std::string_view algorithm_name(SatAlgorithm a) {
   return "sat";
 }
 
+/// A finding of the stored-actions and output-conflicts checks: always (a fact of the chart
+/// text), or when its target is reached, described from the run that reaches it.
+struct Finding {
+  std::optional<std::size_t> target;  ///< index into the query's targets; none: always
+  std::string text;                   ///< the finding when `target` is none
+  std::function<std::string(const ReachResult&, const logic::Trace&)> describe;
+};
+
 /// How a property or check reads the answers for its targets.
 struct Question {
-  enum class Shape { Invariant, Reach, Check, Unsupported } shape = Shape::Unsupported;
+  enum class Shape { Invariant, Reach, Check, Findings, Unsupported } shape = Shape::Unsupported;
   std::vector<std::size_t> targets;  ///< indices into the query's targets
   std::vector<std::string> labels;   ///< Check: per target, the finding when it is unreachable
+  // Findings (the explicit engine's messages, engine/standard_check_runner.hpp):
+  std::vector<Finding> findings;
+  std::vector<std::string> not_checked;  ///< parts of the check the system cannot express
+  std::string holds_message, trace_note;
+  bool stored_actions = false;  ///< its not-checked wording (else output-conflicts')
+  std::string refusal;          ///< Unsupported: the message, when not the generic one
 };
 
 class Run {
@@ -62,6 +80,7 @@ class Run {
     } else {
       iec_.emplace(semantics::build_iec61131_circuit(ts_));
       step_ok_ = iec_->aig.make_and(iec_->allowed, Aig::make_not(iec_->range_error));
+      steps_ = logic::step_refs(ts_, task_.project);
     }
   }
 
@@ -134,8 +153,57 @@ class Run {
       aig.set_next(static_cast<std::uint32_t>(aig.latches().size() - 1), p_lit);
       q.shape = Question::Shape::Invariant;
       q.targets.push_back(add_target(aig.make_and(was_p, Aig::make_not(q_lit))));
+    } else if (const auto bound = bounded_response_parts(f); bound && iec_) {
+      // AG (p -> W_n(s)), response(P, S, within N cycles): an observer counts the cycles since
+      // the oldest p still waiting for s; its target is the invariant's violation
+      // (observers.hpp, docs/engines.md).
+      auto& aig = iec_->aig;
+      if (!dead_) dead_ = sat::no_successor(aig, step_ok_);
+      if (!*dead_) {
+        q.refusal = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                    " engine: whether a state has a successor depends on too many inputs for "
+                    "the bounded response's deadlock condition; use --engine explicit or bdd";
+        return q;
+      }
+      const AigLit p_lit = logic::circuit_literal(*iec_, *bound->p);
+      const AigLit s_lit = logic::circuit_literal(*iec_, *bound->s);
+      q.shape = Question::Shape::Invariant;
+      q.targets.push_back(add_target(sat::bounded_response_target(
+          aig, p_lit, s_lit, bound->n, **dead_, "response(" + logic::to_string(bound->p) + ")")));
     }
     return q;
+  }
+
+  struct BoundedResponse {
+    logic::FormulaPtr p, s;
+    std::uint32_t n = 0;
+  };
+  /// (p, s, n) when `f` is AG (p -> W_n) with W_0 = s, W_k = s | (EX TRUE & AX W_{k-1}), n >= 1
+  /// and p, s propositional: the formula of response(P, S, within N cycles) (logic/pattern.cpp).
+  static std::optional<BoundedResponse> bounded_response_parts(const logic::Formula& f) {
+    if (f.op != logic::Op::AG) return std::nullopt;
+    const auto& body = *f.args[0];
+    if (body.op != logic::Op::Implies || !logic::is_propositional(*body.args[0]))
+      return std::nullopt;
+    const auto& w = body.args[1];
+    if (w->op != logic::Op::Or || w->args.size() != 2) return std::nullopt;
+    BoundedResponse out{body.args[0], w->args[0], 0};
+    if (!logic::is_propositional(*out.s)) return std::nullopt;
+    const auto s_text = logic::to_string(out.s);
+    const logic::Formula* at = w.get();
+    while (logic::to_string(*at) != s_text) {
+      if (at->op != logic::Op::Or || at->args.size() != 2 ||
+          logic::to_string(at->args[0]) != s_text)
+        return std::nullopt;
+      const auto& next = *at->args[1];
+      if (next.op != logic::Op::And || next.args.size() != 2 || next.args[0]->op != logic::Op::EX ||
+          next.args[0]->args[0]->op != logic::Op::True || next.args[1]->op != logic::Op::AX)
+        return std::nullopt;
+      at = next.args[1]->args[0].get();
+      ++out.n;
+    }
+    if (out.n == 0) return std::nullopt;
+    return out;
   }
 
   /// (p, q) when `f` is AG (p -> AX q) with p and q propositional.
@@ -181,10 +249,249 @@ class Run {
         q.shape = Question::Shape::Invariant;
         q.targets.push_back(add_target(iec.aig.make_and(iec.allowed, iec.range_error)));
         break;
+      case StandardCheck::StoredActions:
+        stored_actions_question(q);
+        break;
+      case StandardCheck::OutputConflicts:
+        output_conflicts_question(q);
+        break;
       default:
         break;
     }
     return q;
+  }
+
+  // ------------------------------------------- stored-actions and output-conflicts (IEC)
+  // The explicit engine's findings (engine/standard_check_runner.hpp), each one a target of
+  // the circuit: a set of situations becomes a state predicate, "from s a successor in x"
+  // an observer latch holding the predicate of the cycle before (FALSE initially).
+
+  static std::string qualify(const std::string& pou, const std::string& name) {
+    return pou.empty() ? name : pou + "." + name;
+  }
+  const logic::StepRef* find_step(const std::string& pou, const std::string& chart,
+                                  const std::string& step) const {
+    for (const auto& s : steps_)
+      if (model::iequals(s.pou, pou) && model::iequals(s.chart, chart) &&
+          model::iequals(s.step, step))
+        return &s;
+    return nullptr;
+  }
+  AigLit observable_lit(std::uint32_t o) {
+    return logic::circuit_literal(*iec_, *logic::observable_atom(ts_, o));
+  }
+  /// The circuit's node values in frame `j` of run `r`.
+  std::vector<bool> frame_values(const ReachResult& r, std::uint32_t j) const {
+    const Aig& aig = iec_->aig;
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    for (std::uint32_t k = 0; k < j; ++k) {
+      const auto nodes = aig.evaluate(r.inputs[k], latches);
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    return aig.evaluate(r.inputs[j], latches);
+  }
+  /// The first of `lits` true in the last frame of `r`.
+  std::size_t first_true(const ReachResult& r, const std::vector<AigLit>& lits) const {
+    const auto nodes = frame_values(r, r.depth);
+    for (std::size_t i = 0; i < lits.size(); ++i)
+      if (Aig::value_of(nodes, lits[i])) return i;
+    throw std::logic_error("sat engine: a finding's run does not show it");
+  }
+  std::string describe_at(const logic::Trace& t, std::size_t back) const {
+    return ts_.describe(t.steps[t.steps.size() - 1 - back].state);
+  }
+  /// A finding when `target` is reached (none when it is FALSE by construction).
+  void finding_if(Question& q, AigLit target,
+                  std::function<std::string(const ReachResult&, const logic::Trace&)> text) {
+    if (target == Aig::kFalse) return;
+    q.findings.push_back({add_target(target), {}, std::move(text)});
+  }
+
+  void stored_actions_question(Question& q) {
+    if (!task_.project) {
+      q.refusal = "not checked: needs the chart (no project given)";
+      return;
+    }
+    auto& aig = iec_->aig;
+    q.shape = Question::Shape::Findings;
+    q.stored_actions = true;
+    q.trace_note = "the last situation shows the stored-action defect";
+    std::size_t stored = 0;
+    for (const auto& pou : task_.project->pous) {
+      if (!pou.stored_actions.empty()) {  // IEC 60848 stored actions: not on an IEC system
+        q.shape = Question::Shape::Unsupported;
+        return;
+      }
+      // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it.
+      std::map<std::string,
+               std::pair<std::vector<const logic::StepRef*>, std::vector<const logic::StepRef*>>>
+          sr;
+      std::map<std::string, std::string> first_set_where;
+      for (const auto& a : pou.associations) {
+        const bool set = a.qualifier == model::Qualifier::S ||
+                         a.qualifier == model::Qualifier::SD ||
+                         a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
+        const bool reset = a.qualifier == model::Qualifier::R;
+        if (!set && !reset) continue;
+        auto& entry = sr[model::to_upper(a.action)];
+        const auto* step = find_step(pou.name, a.chart, a.step);
+        if (set && !first_set_where.count(model::to_upper(a.action)))
+          first_set_where[model::to_upper(a.action)] =
+              a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
+        if (!step) {
+          q.not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
+          continue;
+        }
+        (set ? entry.first : entry.second).push_back(step);
+      }
+      for (const auto& [action, lists] : sr) {
+        const auto& [sets, resets] = lists;
+        if (!first_set_where.count(action)) continue;
+        ++stored;
+        const std::string name = qualify(pou.name, action);
+        if (resets.empty())
+          q.findings.push_back({std::nullopt,
+                                "action " + name + " is stored at step " +
+                                    first_set_where.at(action) +
+                                    " and never reset (no R qualifier anywhere)",
+                                {}});
+        std::vector<AigLit> set_at, reset_at;
+        for (const auto* x : sets) set_at.push_back(observable_lit(x->observable));
+        for (const auto* y : resets) reset_at.push_back(observable_lit(y->observable));
+        // Set and reset in one situation.
+        finding_if(q, aig.make_and(aig.make_or(set_at), aig.make_or(reset_at)),
+                   [=, this](const ReachResult& r, const logic::Trace& t) {
+                     return "action " + name + " is set (S at " +
+                            sets[first_true(r, set_at)]->step + ") and reset (R at " +
+                            resets[first_true(r, reset_at)]->step + ") in the same situation " +
+                            describe_at(t, 0);
+                   });
+        // Set again while stored: from a situation where the stored flag is set and a set step
+        // is not active, into one where it is (observer latch per set step).
+        std::int64_t field = -1;
+        const auto& fields = ts_.layout().fields();
+        for (std::size_t i = 0; i < fields.size(); ++i)
+          if (fields[i].kind == semantics::FieldKind::ActionStored) {
+            std::string fname = fields[i].name;
+            if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
+              fname.resize(fname.size() - 7);
+            if (model::iequals(fname, name) || model::iequals(fname, action))
+              field = static_cast<std::int64_t>(i);
+          }
+        if (field < 0) {
+          q.not_checked.push_back("set again while stored (" + name +
+                                  "): the system exposes no stored flag for it");
+          continue;
+        }
+        const AigLit flagged = field_nonzero(static_cast<std::uint32_t>(field));
+        std::vector<AigLit> again;
+        for (std::size_t i = 0; i < set_at.size(); ++i) {
+          const AigLit before =
+              aig.add_latch("stored-again(" + name + ", " + sets[i]->step + ")", false);
+          aig.set_next(static_cast<std::uint32_t>(aig.latches().size() - 1),
+                       aig.make_and(flagged, Aig::make_not(set_at[i])));
+          again.push_back(aig.make_and(before, set_at[i]));
+        }
+        finding_if(q, aig.make_or(again), [=, this](const ReachResult& r, const logic::Trace& t) {
+          return "action " + name + " is set again (S at " + sets[first_true(r, again)]->step +
+                 ") while already stored, from situation " + describe_at(t, 1);
+        });
+      }
+    }
+    q.holds_message =
+        stored == 0 ? "the chart has no stored action" : "stored actions are used correctly";
+    if (stored == 0) q.not_checked.clear();  // as the explicit engine: nothing stored to check
+  }
+
+  /// Layout field `f` is non-zero (its latches encode value - lo).
+  AigLit field_nonzero(std::uint32_t f) {
+    auto& aig = iec_->aig;
+    const auto& bits = iec_->field_latches[f];
+    const auto lo = ts_.layout().fields()[f].lo;
+    semantics::BitVector value;
+    for (const auto l : bits) value.push_back(aig.latches()[l].current);
+    const auto width = static_cast<std::uint32_t>(bits.size());
+    if (lo > 0 || (width < 63 && -lo >= (std::int64_t{1} << width))) return Aig::kTrue;
+    return Aig::make_not(semantics::bv_equal(aig, value, semantics::bv_constant(-lo, width)));
+  }
+
+  /// The activity observable of action `name` of POU `pou` ("POU.NAME", then "NAME"); -1 if none.
+  std::int64_t action_observable(const std::string& pou, const std::string& name) const {
+    for (const auto& cand : {qualify(pou, name), name})
+      if (const auto hit = semantics::find_observable(ts_, cand);
+          hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action)
+        return *hit;
+    return -1;
+  }
+
+  void output_conflicts_question(Question& q) {
+    if (!task_.project) {
+      q.refusal = "not checked: needs the chart (no project given)";
+      return;
+    }
+    auto& aig = iec_->aig;
+    q.shape = Question::Shape::Findings;
+    q.trace_note = "in the last cycle both actions are active";
+    std::size_t pairs = 0;
+    for (const auto& pou : task_.project->pous) {
+      // variable -> (action, constant value or none) for every assignment in an action body.
+      struct Write {
+        std::string action;
+        std::optional<std::int64_t> value;
+      };
+      std::map<std::string, std::vector<Write>> writes;
+      std::function<void(const model::StmtList&, const std::string&, bool)> walk =
+          [&](const model::StmtList& body, const std::string& action, bool conditional) {
+            for (const auto& st : body) {
+              if (st->kind == model::StmtKind::Assign) {
+                std::optional<std::int64_t> v;
+                if (!conditional && st->value &&
+                    (st->value->kind == model::ExprKind::BoolConst ||
+                     st->value->kind == model::ExprKind::IntConst))
+                  v = st->value->value;
+                auto& list = writes[model::to_upper(st->target)];
+                bool dup = false;
+                for (const auto& w : list) dup |= w.action == action;
+                if (!dup) list.push_back({action, v});
+              }
+              for (const auto& b : st->bodies) walk(b, action, true);
+              walk(st->else_body, action, true);
+            }
+          };
+      for (const auto& a : pou.actions)
+        if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
+      for (const auto& [var, list] : writes)
+        for (std::size_t i = 0; i < list.size(); ++i)
+          for (std::size_t j = i + 1; j < list.size(); ++j) {
+            const auto& a = list[i];
+            const auto& b = list[j];
+            if (a.value && b.value && *a.value == *b.value) continue;  // same value: harmless
+            ++pairs;
+            const auto ia = action_observable(pou.name, a.action);
+            const auto ib = action_observable(pou.name, b.action);
+            const bool ok = ia >= 0 && ib >= 0;
+            if (!ok) {
+              q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                      ": the system exposes no activity for these actions");
+              continue;
+            }
+            auto show = [](const Write& w) {
+              return w.action + (w.value ? " (:= " + std::to_string(*w.value) + ")" : "");
+            };
+            const std::string what =
+                "variable " + var + " is written by " + show(a) + " and " + show(b);
+            finding_if(q,
+                       aig.make_and(observable_lit(static_cast<std::uint32_t>(ia)),
+                                    observable_lit(static_cast<std::uint32_t>(ib))),
+                       [=, this](const ReachResult&, const logic::Trace& t) {
+                         return what + " in the same cycle, in situation " + describe_at(t, 0);
+                       });
+          }
+    }
+    q.holds_message = pairs == 0 ? "no variable is written by two actions with different values"
+                                 : "actions writing the same variable are never active together";
   }
 
   std::vector<ReachResult> solve() {
@@ -241,6 +548,27 @@ class Run {
       out.push_back(std::move(r));
     }
     return out;
+  }
+
+  /// `r` cut at the first frame where `target` holds (IC3's run may pass one before its end):
+  /// the trace ends where the property first fails. Grafcet runs are kept as they are.
+  ReachResult first_hit(const ReachResult& r, AigLit target) const {
+    if (machine_) return r;
+    const Aig& aig = iec_->aig;
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    for (std::uint32_t j = 0; j < r.depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      if (Aig::value_of(nodes, target)) {
+        ReachResult cut = r;
+        cut.depth = j;
+        cut.inputs.resize(j + 1);
+        return cut;
+      }
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    return r;
   }
 
   logic::Trace trace_of(const ReachResult& r, logic::TraceKind kind) const {
@@ -324,8 +652,8 @@ class Run {
 
   std::string not_checked() const {
     return "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-           " engine (it decides AG p, EF p and AG (p -> AX q) for propositional p and q, without "
-           "fairness); use "
+           " engine (it decides AG p, EF p, AG (p -> AX q) and the bounded response AG (p -> s | "
+           "EX TRUE & AX (...)) for propositional p, q and s, without fairness); use "
            "--engine explicit or bdd";
   }
 
@@ -335,7 +663,7 @@ class Run {
     r.formula = logic::to_string(p.formula);
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::Unknown;
-      r.message = not_checked();
+      r.message = q.refusal.empty() ? not_checked() : q.refusal;
       return r;
     }
     const auto initial = initial_situations();
@@ -361,7 +689,8 @@ class Run {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
         r.trace =
-            trace_of(a, invariant ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
+            trace_of(first_hit(a, targets_[q.targets.front()]),
+                     invariant ? logic::TraceKind::Counterexample : logic::TraceKind::Witness);
         r.trace->marked = logic::atom_observables(*p.formula);
         break;
       case ReachResult::Kind::Unreachable:
@@ -396,17 +725,78 @@ class Run {
     return initial_count_;
   }
 
+  /// Stored-actions and output-conflicts: the explicit engine's findings, verdicts and
+  /// messages; the trace is the shallowest run to a finding (the first of equal depth).
+  PropertyResult findings_result(PropertyResult r, const Question& q) {
+    auto add = [&](std::string finding) {
+      ++r.findings_total;
+      if (task_.max_findings == 0 || r.findings.size() < task_.max_findings)
+        r.findings.push_back(std::move(finding));
+    };
+    std::size_t unknown = 0;
+    std::string why;
+    const ReachResult* shallowest = nullptr;
+    for (const auto& f : q.findings) {
+      if (!f.target) {
+        add(f.text);
+        continue;
+      }
+      const auto& a = answers_[*f.target];
+      if (a.kind == ReachResult::Kind::Unknown) {
+        ++unknown;
+        why = a.why;
+      }
+      if (a.kind != ReachResult::Kind::Reached) continue;
+      const auto trace = trace_of(a, logic::TraceKind::Counterexample);
+      add(f.describe(a, trace));
+      if (!shallowest || a.depth < shallowest->depth) shallowest = &a;
+    }
+    if (shallowest) {
+      r.trace = trace_of(*shallowest, logic::TraceKind::Counterexample);
+      r.trace->note = q.trace_note;
+    }
+    if (!r.findings.empty()) {
+      r.verdict = Verdict::Violated;
+      if (unknown > 0) r.message = std::to_string(unknown) + " more undecided: " + why;
+      if (q.stored_actions && !q.not_checked.empty())
+        r.message = "not checked: " + q.not_checked.front();
+      return r;
+    }
+    if (unknown > 0) {
+      r.verdict = Verdict::Unknown;
+      r.message = std::to_string(unknown) + " of " + std::to_string(q.findings.size()) +
+                  " undecided: " + why;
+      return r;
+    }
+    r.verdict = Verdict::Holds;
+    r.message = q.holds_message;
+    if (!q.not_checked.empty()) {
+      r.verdict = Verdict::NotChecked;
+      r.message =
+          q.stored_actions
+              ? "no defect found in the parts checked; not checked: " + q.not_checked.front() +
+                    (q.not_checked.size() > 1
+                         ? " (and " + std::to_string(q.not_checked.size() - 1) + " more)"
+                         : "")
+              : "not checked: " + q.not_checked.front();
+    }
+    return r;
+  }
+
   PropertyResult check_result(StandardCheck c, const Question& q) {
     PropertyResult r;
     r.name = std::string(logic::to_string(c));
     r.check = r.name;
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::NotChecked;
-      r.message = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-                  " engine" + (grafcet_ ? " on a Grafcet chart" : "") +
-                  "; use --engine explicit or bdd";
+      r.message = !q.refusal.empty()
+                      ? q.refusal
+                      : "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                            " engine" + (grafcet_ ? " on a Grafcet chart" : "") +
+                            "; use --engine explicit or bdd";
       return r;
     }
+    if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
     if (q.shape == Question::Shape::Invariant) {  // Instability: a reachable range error
       const auto& a = answers_[q.targets.front()];
       if (a.kind == ReachResult::Kind::Reached) {
@@ -462,6 +852,10 @@ class Run {
   std::optional<sat::GrafcetMachine> machine_;  ///< over *grafcet_
   AigLit step_ok_ = Aig::kTrue;
   std::vector<AigLit> targets_;
+  std::vector<logic::StepRef> steps_;  ///< the chart's steps (stored-actions)
+  /// The states without a successor (observers.hpp), built once when a property needs it;
+  /// nullopt inside when too many inputs decide it.
+  std::optional<std::optional<AigLit>> dead_;
   std::optional<std::size_t> initial_count_;
   std::vector<ReachResult> answers_;
   sat::Deadline deadline_;
