@@ -58,7 +58,7 @@ Built make(model::Project p, bool single) {
 }
 
 struct Tally {
-  int unstable = 0, traces = 0, violated = 0, stored = 0;
+  int unstable = 0, traces = 0, violated = 0, stored = 0, conflicts = 0;
 };
 
 /// Explicit and BDD reports on the same task: equal states and verdicts, BDD traces replay.
@@ -74,11 +74,11 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(b.project, *b.ts, ctl, fair);
   if (!with_fairness)
-    task.checks = {logic::StandardCheck::Reachable,     logic::StandardCheck::DeadTransitions,
-                   logic::StandardCheck::Reentry,       logic::StandardCheck::GlobalDeadlock,
-                   logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
-                   logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
-                   logic::StandardCheck::Instability};
+    task.checks = {logic::StandardCheck::Reachable,       logic::StandardCheck::DeadTransitions,
+                   logic::StandardCheck::Reentry,         logic::StandardCheck::GlobalDeadlock,
+                   logic::StandardCheck::LocalDeadlock,   logic::StandardCheck::InitialReturn,
+                   logic::StandardCheck::Conflicts,       logic::StandardCheck::StoredActions,
+                   logic::StandardCheck::OutputConflicts, logic::StandardCheck::Instability};
   else
     task.checks = {logic::StandardCheck::Reentry};  // and its AG AF row under fairness
   const auto e = make_explicit_model_checker()->check(task);
@@ -107,6 +107,8 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
         s.results[i].check == "stored-actions" && s.results[i].verdict == logic::Verdict::Violated;
     tally.unstable +=
         s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
+    tally.conflicts +=
+        s.results[i].check == "conflicts" && s.results[i].verdict == logic::Verdict::Violated;
   }
 }
 
@@ -126,6 +128,7 @@ TEST(GrafcetBdd, RandomGrafcetsAgreeWithTheExplicitRsg) {
   EXPECT_GT(tally.traces, 100);
   EXPECT_GT(tally.violated, 100);
   EXPECT_GT(tally.stored, 2) << tally.stored;  // stored actions set to different values at once
+  EXPECT_GT(tally.conflicts, 5) << tally.conflicts;  // alternatives cleared together
 }
 
 /// The circuit's reachable set, counted by the symbolic system alone, equals the RSG's nodes
