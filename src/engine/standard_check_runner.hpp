@@ -31,6 +31,7 @@
 // "one" and "first" list situations in the engine's own order (the explicit engine: discovery
 // order; the BDD engine: ring by ring).
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -50,6 +51,34 @@
 #include "model/names.hpp"
 
 namespace sfcv::engine {
+
+/// The inputs a conflict ignores: IEC 61131-3's `choice:<step>` pseudo-inputs, which pick one of
+/// the enabled alternatives under --priority none. Two evolutions of one situation conflict when
+/// they happen under the same values of every other input (plant inputs and the abstract-time
+/// pseudo-inputs), whatever the choice: the choice only makes the conflict explicit.
+inline std::vector<bool> conflict_ignored_inputs(const semantics::TransitionSystem& ts) {
+  std::vector<bool> out;
+  for (const auto& in : ts.inputs()) out.push_back(in.pseudo && in.name.starts_with("choice:"));
+  return out;
+}
+
+/// Whether two input conditions share a valuation of the inputs not ignored.
+inline bool conditions_intersect(const semantics::InputCondition& a,
+                                 const semantics::InputCondition& b,
+                                 const std::vector<bool>& ignored) {
+  auto cubes = [&](const semantics::InputCube& x, const semantics::InputCube& y) {
+    for (const auto& l : x.literals)
+      for (const auto& m : y.literals)
+        if (l.input == m.input && !(l.input < ignored.size() && ignored[l.input]) &&
+            (l.hi < m.lo || m.hi < l.lo))
+          return false;
+    return true;
+  };
+  for (const auto& x : a.cubes)
+    for (const auto& y : b.cubes)
+      if (cubes(x, y)) return true;
+  return false;
+}
 
 /// An anomaly found by an engine: its description and, when known, where it occurs.
 template <class Set>
@@ -516,25 +545,9 @@ class StandardCheckRunner {
     finish(r, "the initial situation can be reached again from every reachable situation");
   }
 
-  static bool cubes_intersect(const semantics::InputCube& a, const semantics::InputCube& b) {
-    for (const auto& x : a.literals)
-      for (const auto& y : b.literals)
-        if (x.input == y.input && (x.hi < y.lo || y.hi < x.lo)) return false;
-    return true;
-  }
-
- public:
-  static bool conditions_intersect(const semantics::InputCondition& a,
-                                   const semantics::InputCondition& b) {
-    for (const auto& x : a.cubes)
-      for (const auto& y : b.cubes)
-        if (cubes_intersect(x, y)) return true;
-    return false;
-  }
-
- private:
-  // IEC 61131-3 without priority: the engine visits pairs of evolutions from one situation
-  // under overlapping inputs (fired_a, fired_b: what each fires). Grafcet: it visits each
+  // IEC 61131-3 without priority: the engine visits pairs of evolutions (edges, merged by
+  // target) from one situation whose conditions intersect outside the choice pseudo-inputs
+  // (conditions_intersect; fired_a, fired_b: what each fires). Grafcet: it visits each
   // evolution once (fired_a: every transition it clears, fired_b empty).
   void conflicts(PropertyResult& r) {
     if (ts_.kind() == semantics::SemanticsKind::Iec61131 && task_.priority_resolves_conflicts) {
@@ -558,10 +571,13 @@ class StandardCheckRunner {
       visited = sp_.simultaneous(
           [&](std::span<const std::uint32_t> a, std::span<const std::uint32_t> b, const State& s) {
             poll();
+            // One order for a pair, whichever evolution an engine meets first.
+            if (std::lexicographical_compare(b.begin(), b.end(), a.begin(), a.end()))
+              std::swap(a, b);
             const auto text = names(a) + " and " + names(b);
             if (!seen.insert(text).second) return;
             if (!first) first = s;
-            add(r, "transitions " + text + " can both fire from " + sp_.describe(s) +
+            add(r, "transitions " + text + " can both fire from situation " + sp_.describe(s) +
                        " (no priority between them)");
           });
     } else {
@@ -595,7 +611,7 @@ class StandardCheckRunner {
             if (!seen.insert(text).second) continue;
             if (!first) first = s;
             add(r, "transitions " + text + " share the upstream step " + common.front() +
-                       " and are cleared together from " + sp_.describe(s));
+                       " and are cleared together from situation " + sp_.describe(s));
           }
       });
     }

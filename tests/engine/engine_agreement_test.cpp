@@ -31,6 +31,7 @@ namespace {
 struct Setup {
   model::Project project;
   semantics::TransitionSystemPtr ts;
+  bool standard_priority = true;  ///< false: --priority none, conflicts are checked
 };
 
 Setup load(const std::string& text, semantics::Iec61131Options options = {},
@@ -49,6 +50,7 @@ Setup load(const std::string& text, semantics::Iec61131Options options = {},
   }
   s.ts = semantics::make_iec61131_system(s.project, options, diags);
   EXPECT_TRUE(s.ts) << (diags.empty() ? "" : diags.front().str());
+  s.standard_priority = options.priority == semantics::PriorityMode::Standard;
   return s;
 }
 
@@ -194,7 +196,7 @@ class TraceJudge {
 
 struct Tally {
   int traces = 0, lassos = 0, deadlocks = 0;
-  int check_violations = 0, stored_violations = 0;
+  int check_violations = 0, stored_violations = 0, conflict_violations = 0;
 };
 Tally g_tally;
 
@@ -214,13 +216,14 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
   std::vector<std::string> fair;
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(s, ctl, fair);
+  task.priority_resolves_conflicts = s.standard_priority;
   // Under fairness re-entry adds its AG AF row (reentry-fair).
   if (!with_fairness)
-    task.checks = {logic::StandardCheck::Reachable,     logic::StandardCheck::DeadTransitions,
-                   logic::StandardCheck::Reentry,       logic::StandardCheck::GlobalDeadlock,
-                   logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
-                   logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
-                   logic::StandardCheck::Instability};
+    task.checks = {logic::StandardCheck::Reachable,       logic::StandardCheck::DeadTransitions,
+                   logic::StandardCheck::Reentry,         logic::StandardCheck::GlobalDeadlock,
+                   logic::StandardCheck::LocalDeadlock,   logic::StandardCheck::InitialReturn,
+                   logic::StandardCheck::Conflicts,       logic::StandardCheck::StoredActions,
+                   logic::StandardCheck::OutputConflicts, logic::StandardCheck::Instability};
   else
     task.checks = {logic::StandardCheck::Reentry};
   const auto explicit_report = make_explicit_model_checker()->check(task);
@@ -247,6 +250,8 @@ void compare_engines(const Setup& s, std::uint64_t seed, bool with_fairness,
       g_tally.check_violations += b.verdict == logic::Verdict::Violated;
       g_tally.stored_violations +=
           b.check == "stored-actions" && b.verdict == logic::Verdict::Violated;
+      g_tally.conflict_violations +=
+          b.check == "conflicts" && b.verdict == logic::Verdict::Violated;
       continue;
     }
     // Both engines give a trace for the same verdicts, and the BDD's explains the formula.
@@ -296,6 +301,27 @@ TEST(EngineAgreement, NondeterministicConflicts) {
     ASSERT_TRUE(s.ts);
     compare_engines(s, seed, false);
   }
+}
+
+// `conflicts` under --priority none: the same findings on both engines (the BDD engine finds
+// the situations on its sets and expands them), on charts of several sizes, some of them with
+// timed qualifiers and nested charts.
+TEST(EngineAgreement, ConflictsWithoutPriority) {
+  g_tally = {};
+  semantics::Iec61131Options options;
+  options.priority = semantics::PriorityMode::None;
+  for (std::uint64_t seed = 50; seed <= 65; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    bench::RandomChartFeatures features;
+    features.timed_qualifiers = seed % 3 == 0;
+    features.nested_chart = seed % 4 == 0;
+    const auto s =
+        load(bench::random_chart_iec(8 + static_cast<std::uint32_t>(seed % 9), 3, seed, features),
+             options);
+    ASSERT_TRUE(s.ts);
+    compare_engines(s, seed, false);
+  }
+  EXPECT_GT(g_tally.conflict_violations, 5) << g_tally.conflict_violations;
 }
 
 TEST(EngineAgreement, TimedQualifiersAndNestedCharts) {

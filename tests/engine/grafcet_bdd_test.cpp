@@ -74,11 +74,11 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
   if (with_fairness) fair = {gen.atom(), "!" + gen.atom()};
   auto task = task_for(b.project, *b.ts, ctl, fair);
   if (!with_fairness)
-    task.checks = {logic::StandardCheck::Reachable,     logic::StandardCheck::DeadTransitions,
-                   logic::StandardCheck::Reentry,       logic::StandardCheck::GlobalDeadlock,
-                   logic::StandardCheck::LocalDeadlock, logic::StandardCheck::InitialReturn,
-                   logic::StandardCheck::StoredActions, logic::StandardCheck::OutputConflicts,
-                   logic::StandardCheck::Instability};
+    task.checks = {logic::StandardCheck::Reachable,       logic::StandardCheck::DeadTransitions,
+                   logic::StandardCheck::Reentry,         logic::StandardCheck::GlobalDeadlock,
+                   logic::StandardCheck::LocalDeadlock,   logic::StandardCheck::InitialReturn,
+                   logic::StandardCheck::Conflicts,       logic::StandardCheck::StoredActions,
+                   logic::StandardCheck::OutputConflicts, logic::StandardCheck::Instability};
   else
     task.checks = {logic::StandardCheck::Reentry};  // and its AG AF row under fairness
   const auto e = make_explicit_model_checker()->check(task);

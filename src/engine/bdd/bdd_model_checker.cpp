@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -294,6 +296,32 @@ class Run {
     return r;
   }
 
+  /// One situation's successors merged by target, as the explicit graph stores its edges:
+  /// the union of the conditions and of the fired transitions.
+  struct MergedEdges final : semantics::SuccessorSink {
+    struct Edge {
+      std::vector<semantics::StateWord> target;
+      semantics::InputCondition condition;
+      std::vector<std::uint32_t> fired;
+    };
+    std::vector<Edge> list;
+    void successor(const semantics::Successor& s) override {
+      auto it = std::find_if(list.begin(), list.end(), [&](const Edge& e) {
+        return std::equal(e.target.begin(), e.target.end(), s.target.begin(), s.target.end());
+      });
+      if (it == list.end())
+        it = list.insert(list.end(), Edge{{s.target.begin(), s.target.end()}, {}, {}});
+      for (const auto& cube : s.condition.cubes)
+        if (std::find(it->condition.cubes.begin(), it->condition.cubes.end(), cube) ==
+            it->condition.cubes.end())
+          it->condition.cubes.push_back(cube);
+      std::vector<std::uint32_t> merged;
+      std::set_union(it->fired.begin(), it->fired.end(), s.fired.begin(), s.fired.end(),
+                     std::back_inserter(merged));
+      it->fired = std::move(merged);
+    }
+  };
+
   /// The reached situations as the standard-check runner sees them
   /// (engine/standard_check_runner.hpp): BDDs over the current variables.
   class BddSpace {
@@ -366,10 +394,78 @@ class Run {
     }
     std::string describe(const State& x) const { return run_.ts_.describe(x); }
 
-    /// Transitions enabled together need the inputs of each evolution: not enumerated here.
+    /// Evolutions enabled together (engine/standard_check_runner.hpp, conflicts()): the
+    /// situations to look at are found on the BDDs, ring by ring, and each is expanded
+    /// through the system's successor function, so that its edges are the explicit graph's
+    /// (merged by target). IEC 61131-3 (--priority none): the (x, plant inputs) where the
+    /// choice inputs change the fired set; once a situation is expanded, every (x, plant
+    /// inputs) whose fired sets are among its own is dropped. Grafcet: per pair of
+    /// transitions, the situations where both fire; a pair is dropped once one evolution fired
+    /// both, a situation once expanded.
     template <class Visit>
-    bool simultaneous(Visit&&) const {
-      return false;
+    bool simultaneous(Visit&& visit) {
+      const auto& ts = run_.ts_;
+      const auto& limits = run_.task_.limits;
+      const auto ignored = conflict_ignored_inputs(ts);
+      const bool iec = ts.kind() == semantics::SemanticsKind::Iec61131;
+      auto expand = [&](const State& x) {
+        MergedEdges edges;
+        ts.successors(x, edges);
+        for (std::size_t a = 0; a < edges.list.size(); ++a) {
+          if (!iec) {
+            visit(std::span<const std::uint32_t>(edges.list[a].fired),
+                  std::span<const std::uint32_t>{}, x);
+            continue;
+          }
+          for (std::size_t b = a + 1; b < edges.list.size(); ++b)
+            if (conditions_intersect(edges.list[a].condition, edges.list[b].condition, ignored))
+              visit(std::span<const std::uint32_t>(edges.list[a].fired),
+                    std::span<const std::uint32_t>(edges.list[b].fired), x);
+        }
+        return edges;
+      };
+      if (iec) {
+        Bdd open = sys_.choice_matters(run_.reached_);
+        for (const auto& ring : run_.rings_)
+          for (Bdd here = open & ring; !here.is_false(); here = open & ring) {
+            limits.check_time("looking for conflicts");
+            const Bdd point = sys_.pick_point(here);
+            expand(sys_.pick(sys_.point_state(point)));
+            open = open & sys_.beyond_fired_sets_of(point);
+          }
+        return true;
+      }
+      const auto n = static_cast<std::uint32_t>(ts.transitions().size());
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+      std::vector<Bdd> open;
+      for (std::uint32_t i = 0; i < n; ++i)
+        for (std::uint32_t j = i + 1; j < n; ++j) {
+          limits.check_time("looking for conflicts");
+          const Bdd both = fires(i) & fires(j);
+          if (both.is_false()) continue;
+          pairs.emplace_back(i, j);
+          open.push_back(both);
+        }
+      for (const auto& ring : run_.rings_)
+        for (;;) {
+          limits.check_time("looking for conflicts");
+          Bdd any = Bdd::constant(false);
+          for (const auto& o : open) any = any | o;
+          const Bdd here = any & ring;
+          if (here.is_false()) break;
+          const State x = sys_.pick(here);
+          const Bdd done = !sys_.singleton(x);
+          const auto edges = expand(x);
+          for (std::size_t p = 0; p < pairs.size(); ++p) {
+            bool settled = false;
+            for (const auto& e : edges.list)
+              settled =
+                  settled || (std::binary_search(e.fired.begin(), e.fired.end(), pairs[p].first) &&
+                              std::binary_search(e.fired.begin(), e.fired.end(), pairs[p].second));
+            open[p] = settled ? Bdd::constant(false) : open[p] & done;
+          }
+        }
+      return true;
     }
 
     /// Range errors (IEC 61131-3); Grafcet (docs/semantics.md 2.11): events whose transient
@@ -480,7 +576,6 @@ class BddModelChecker final : public ModelChecker {
     } catch (const LimitReached&) {
       return true;  // check() meets the limit again and answers unknown
     }
-    // The standard checks that need the graph's edges are reported as not checked.
     return true;
   }
 

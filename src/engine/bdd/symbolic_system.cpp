@@ -448,6 +448,61 @@ Bdd SymbolicSystem::fires(std::uint32_t t) {
   return fires_[t];
 }
 
+void SymbolicSystem::prepare_choice_cubes() {
+  if (choice_cube_) return;
+  if (grafcet_) throw std::logic_error("choice inputs: IEC 61131-3 only");
+  std::vector<bool> is_choice(input_var_.size(), false);
+  for (std::size_t i = 0; i < ts_.inputs().size(); ++i) {
+    const auto& in = ts_.inputs()[i];
+    if (!in.pseudo || !in.name.starts_with("choice:")) continue;
+    for (auto bit : circuit_.input_bits[i]) {
+      const Bdd v = node_bdd(bit);
+      if (v.is_true() || v.is_false()) continue;
+      for (std::size_t k = 0; k < input_var_.size(); ++k)
+        if (input_var_[k] == v.top()) is_choice[k] = true;
+    }
+  }
+  std::vector<int> choice, plant;
+  for (std::size_t k = 0; k < input_var_.size(); ++k)
+    (is_choice[k] ? choice : plant).push_back(input_var_[k]);
+  choice_cube_ = Bdd::cube(choice);
+  plant_cube_ = Bdd::cube(plant);
+}
+
+Bdd SymbolicSystem::choice_matters(const Bdd& states) {
+  prepare_choice_cubes();
+  const Bdd ok = ok_ & states;
+  Bdd out = Bdd::constant(false);
+  for (auto lit : circuit_.fired) {
+    const Bdd f = node_bdd(lit);
+    out = out | ((ok & f).exist(*choice_cube_) & (ok & !f).exist(*choice_cube_));
+  }
+  return out;
+}
+
+Bdd SymbolicSystem::pick_point(const Bdd& set) {
+  prepare_choice_cubes();
+  return set.sat_one(current_cube_ & plant_cube_);
+}
+
+Bdd SymbolicSystem::beyond_fired_sets_of(const Bdd& point) {
+  prepare_choice_cubes();
+  Bdd rest = ok_ & point;
+  Bdd outside = Bdd::constant(true);
+  while (!rest.is_false()) {
+    // One choice, then every choice with the same fired set.
+    const Bdd one = rest.sat_one(*choice_cube_);
+    Bdd same = Bdd::constant(true);
+    for (auto lit : circuit_.fired) {
+      const Bdd f = node_bdd(lit);
+      same = same & ((f & one).is_false() ? !f : f);
+    }
+    rest = rest & !same;
+    outside = outside & !same;
+  }
+  return (ok_ & outside).exist(*choice_cube_);
+}
+
 Bdd SymbolicSystem::fires_any() {
   Bdd any = Bdd::constant(false);
   for (std::uint32_t t = 0; t < circuit_.fired.size(); ++t) any = any | fires(t);

@@ -106,6 +106,21 @@ class SymbolicSystem {
 
   std::size_t num_state_variables() const { return current_vars_.size(); }
 
+  // Conflicts under --priority none (IEC 61131-3, the `conflicts` check): sets over the current
+  // variables and the "plant" inputs, every input but the `choice:` pseudo-inputs
+  // (conflict_ignored_inputs in standard_check_runner.hpp).
+
+  /// The (x, plant inputs) of `states` under which two values of the choice inputs fire
+  /// different sets of transitions (allowed and error-free both).
+  Bdd choice_matters(const Bdd& states);
+  /// One (x, plant inputs) valuation of a non-empty such set, as a minterm.
+  Bdd pick_point(const Bdd& set);
+  /// The (x, plant inputs) with a fired set (under some choice) that `point` has under no
+  /// choice: those whose alternatives `point`'s do not cover.
+  Bdd beyond_fired_sets_of(const Bdd& point);
+  /// The state of a point, over current variables.
+  Bdd point_state(const Bdd& point) const { return point.exist(input_cube_); }
+
   // Evolutions, for the query language (symbolic_evolutions.cpp). An evolution is a pair
   // (x, x') over the current and next variables, as the explicit graph merges all inputs that
   // lead from x to x' into one edge.
@@ -141,6 +156,7 @@ class SymbolicSystem {
 
  private:
   Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)
+  void prepare_choice_cubes();
   Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
 
   const semantics::TransitionSystem& ts_;
@@ -167,6 +183,8 @@ class SymbolicSystem {
   Bdd inputs_first_;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
+  std::optional<Bdd> choice_cube_;  ///< the `choice:` input variables (prepare_choice_cubes)
+  Bdd plant_cube_;                  ///< every other input variable
   // Grafcet mode.
   std::unique_ptr<semantics::GrafcetCircuit> grafcet_circuit_;
   std::unique_ptr<GrafcetClosure> grafcet_;

@@ -149,6 +149,7 @@ class ExplicitSpace {
   template <class Visit>
   bool simultaneous(Visit&& visit) const {
     const bool iec = ts_.kind() == semantics::SemanticsKind::Iec61131;
+    const auto ignored = conflict_ignored_inputs(ts_);
     for (std::uint32_t s = 0; s < n_; ++s) {
       if (!g_.expanded(s)) continue;
       for (auto a = g_.edges_begin(s); a < g_.edges_end(s); ++a) {
@@ -157,8 +158,7 @@ class ExplicitSpace {
           continue;
         }
         for (auto b = a + 1; b < g_.edges_end(s); ++b)
-          if (StandardCheckRunner<ExplicitSpace>::conditions_intersect(g_.condition(a),
-                                                                       g_.condition(b)))
+          if (conditions_intersect(g_.condition(a), g_.condition(b), ignored))
             visit(g_.fired(a), g_.fired(b), s);
       }
     }
