@@ -295,6 +295,11 @@ ExprPtr Parser::primary() {
   if (at(TokenKind::Caret)) fail(peek(), "unsupported: pointer dereference of '" + t.text + "'");
   if (!at(TokenKind::Dot)) return model::make_name(t.text, loc);
   next();
+  // Bit access `w.3`: the member is the bit number.
+  if (at(TokenKind::Integer) && peek().value >= 0 && peek().value < 64) {
+    const Token& bit = next();
+    return model::make_member(t.text, std::to_string(bit.value), loc);
+  }
   if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '" + t.text + ".'");
   const Token& member = next();
   if (at(TokenKind::Dot))

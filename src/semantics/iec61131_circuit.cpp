@@ -409,39 +409,61 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
   }
 }
 
-// A loop is unrolled on a private copy of the variables, computed as if `guard` held (so that a
-// loop with constant bounds folds to its exact number of iterations), then merged back under
-// `guard`; range errors inside are raised under `guard` (outer_). Iteration n + 1 is entered on
-// the paths where the loop goes on; past kMaxLoopIterations those paths raise a range error.
+// A loop is unrolled on a "live" copy of the variables: their values on the paths where the
+// loop has gone on so far, computed as if the statement runs; so a loop with constant bounds
+// folds to its exact number of iterations (even under a bound that depends on an input). The
+// values of the paths that leave (the condition fails, EXIT, RETURN, UNTIL holds) are collected
+// in `result`, merged back under `guard` at the end. Range errors inside are raised only on the
+// paths still in the loop (outer_). Past kMaxLoopIterations the paths still going raise a
+// range error, as the explicit machine does.
 void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
   const auto saved = nxt_;
   const AigLit saved_outer = outer_, saved_left = left_loop_, saved_exit = exit_,
                saved_return = returned_;
-  outer_ = aig_.make_and(outer_, guard);
+  const AigLit base = aig_.make_and(outer_, guard);
+  outer_ = base;
   left_loop_ = exit_ = returned_ = Aig::kFalse;
   exec_block(s.init, Aig::kTrue);
-  AigLit going = aig_.make_not(returned_);  // paths still in the loop
+  auto result = nxt_;
+  auto leave = [&](AigLit when) {
+    if (when == Aig::kFalse) return;
+    for (std::size_t f = 0; f < nxt_.size(); ++f) result[f] = mux(when, nxt_[f], result[f]);
+  };
+  AigLit going = Aig::kTrue, returned_any = Aig::kFalse;
   for (std::int64_t n = 0;; ++n) {
-    if (!s.test_after) going = aig_.make_and(going, eval_truth(s.expr, going));
+    outer_ = aig_.make_and(base, going);
+    if (!s.test_after) {
+      const AigLit c = eval_truth(s.expr, Aig::kTrue);
+      leave(aig_.make_and(going, aig_.make_not(c)));
+      going = aig_.make_and(going, c);
+    }
     if (going == Aig::kFalse) break;
+    outer_ = aig_.make_and(base, going);
     if (n == kMaxLoopIterations) {
       raise(going, Aig::kTrue);
       break;
     }
-    left_loop_ = exit_ = Aig::kFalse;
-    exec_block(s.body, going);
-    const AigLit on = aig_.make_and(going, aig_.make_not(aig_.make_or(exit_, returned_)));
-    left_loop_ = Aig::kFalse;
-    exec_block(s.step, on);
-    going = on;
-    if (s.test_after) going = aig_.make_and(going, aig_.make_not(eval_truth(s.expr, going)));
+    left_loop_ = exit_ = returned_ = Aig::kFalse;
+    exec_block(s.body, Aig::kTrue);
+    const AigLit out = aig_.make_and(going, aig_.make_or(exit_, returned_));
+    returned_any = aig_.make_or(returned_any, aig_.make_and(going, returned_));
+    leave(out);
+    going = aig_.make_and(going, aig_.make_not(aig_.make_or(exit_, returned_)));
+    left_loop_ = exit_ = returned_ = Aig::kFalse;
+    outer_ = aig_.make_and(base, going);
+    exec_block(s.step, Aig::kTrue);
+    if (s.test_after) {
+      const AigLit u = eval_truth(s.expr, Aig::kTrue);
+      leave(aig_.make_and(going, u));
+      going = aig_.make_and(going, aig_.make_not(u));
+      if (going == Aig::kFalse) break;
+    }
   }
-  for (std::size_t f = 0; f < nxt_.size(); ++f) nxt_[f] = mux(guard, nxt_[f], saved[f]);
-  const AigLit returned_here = aig_.make_and(guard, returned_);
+  for (std::size_t f = 0; f < nxt_.size(); ++f) nxt_[f] = mux(guard, result[f], saved[f]);
   outer_ = saved_outer;
   left_loop_ = saved_left;
   exit_ = saved_exit;
-  returned_ = aig_.make_or(saved_return, returned_here);
+  returned_ = aig_.make_or(saved_return, aig_.make_and(guard, returned_any));
 }
 
 Value SymbolicMachine::bit_op(const Node& n, const std::uint32_t* kid, AigLit guard) {

@@ -171,7 +171,8 @@ void Compiler::loop(const PouScope& sc, const model::Stmt& s, Stmt& out) {
   const auto to = s.limit ? literal(*s.limit) : std::nullopt;
   if (from && to) {
     std::int64_t span = 0;
-    const bool huge = __builtin_sub_overflow(*to, *from, &span);
+    const bool huge = __builtin_sub_overflow(*to, *from, &span) ||
+                      span == std::numeric_limits<std::int64_t>::min();
     const auto count = huge                               ? kMaxLoopIterations + 1
                        : (by > 0 ? span >= 0 : span <= 0) ? span / by + 1
                                                           : 0;
