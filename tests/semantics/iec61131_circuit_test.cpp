@@ -340,7 +340,7 @@ PROGRAM Bits
   VAR i : INT; END_VAR
   b := v AND 16#F0 OR NOT v AND 16#0F;
   w := ROL(w, 3) XOR b;
-  IF r THEN w := SHR(w, 2) OR SHL(WORD#1, 15); END_IF;
+  IF r THEN w := SHR(w, 2) OR 16#8000; END_IF;
   bit := w.15 OR b.0;
   FOR i := 7 TO 0 BY -2 DO
     IF b.0 THEN b := ROR(b, 1); ELSE b := SHL(b, 1); END_IF;
