@@ -35,10 +35,6 @@ constexpr std::array<std::string_view, 47> kReserved{
     "END_FUNCTION", "INITIAL_STEP", "ARRAY",
     "POINTER",      "REF_TO"};
 
-// Statement keywords sfcv does not model.
-constexpr std::array<std::string_view, 6> kUnsupportedStatements{"FOR",    "WHILE", "REPEAT",
-                                                                 "RETURN", "EXIT",  "CONTINUE"};
-
 std::string upper(std::string_view s) {
   return model::to_upper(s);
 }
@@ -294,11 +290,16 @@ ExprPtr Parser::primary() {
   }
   if (is_reserved(t.text)) fail_unexpected("an expression");
   next();
-  if (at(TokenKind::LParen)) fail(t, "unsupported: call of function '" + t.text + "'");
+  if (at(TokenKind::LParen)) return call(t);
   if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
   if (at(TokenKind::Caret)) fail(peek(), "unsupported: pointer dereference of '" + t.text + "'");
   if (!at(TokenKind::Dot)) return model::make_name(t.text, loc);
   next();
+  // Bit access `w.3`: the member is the bit number.
+  if (at(TokenKind::Integer) && peek().value >= 0 && peek().value < 64) {
+    const Token& bit = next();
+    return model::make_member(t.text, std::to_string(bit.value), loc);
+  }
   if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '" + t.text + ".'");
   const Token& member = next();
   if (at(TokenKind::Dot))
@@ -334,8 +335,18 @@ model::StmtPtr Parser::statement() {
   const Token& t = peek();
   enter(t);
   DepthGuard guard([this] { leave(); });
-  for (auto k : kUnsupportedStatements)
-    if (at_word(k)) fail(t, "unsupported: " + upper(t.text) + " statement");
+  if (at_word("FOR")) return for_statement();
+  if (at_word("WHILE") || at_word("REPEAT")) return while_statement();
+  if (at_word("EXIT") || at_word("CONTINUE") || at_word("RETURN")) {
+    next();
+    auto s = std::make_shared<model::Stmt>();
+    s->kind = model::iequals(t.text, "EXIT")       ? model::StmtKind::Exit
+              : model::iequals(t.text, "CONTINUE") ? model::StmtKind::Continue
+                                                   : model::StmtKind::Return;
+    s->where = where(t);
+    end_statement(upper(t.text));
+    return s;
+  }
   // JMP is an IL operator, so a legal name; `JMP label;` is the CODESYS ST jump.
   if (at_word("JMP") && at(TokenKind::Identifier, 1) && at(TokenKind::Semicolon, 2))
     fail(t, "unsupported: JMP statement");
@@ -397,6 +408,61 @@ model::StmtPtr Parser::if_statement() {
   } while (accept_word("ELSIF"));
   if (accept_word("ELSE")) s->else_body = statements();
   expect_word("END_IF");
+  accept(TokenKind::Semicolon);
+  return s;
+}
+
+model::ExprPtr Parser::call(const Token& name) {
+  expect(TokenKind::LParen, "'('");
+  std::vector<ExprPtr> args;
+  if (!at(TokenKind::RParen)) {
+    do {
+      if (at(TokenKind::Identifier) && (at(TokenKind::Assign, 1) || at(TokenKind::Arrow, 1)))
+        fail(peek(), "unsupported: named arguments ('" + peek().text +
+                         " :=', EN/ENO) in the call of function '" + name.text +
+                         "' (pass the arguments in order)");
+      args.push_back(expression());
+    } while (accept(TokenKind::Comma));
+  }
+  expect(TokenKind::RParen, "',' or ')'");
+  return model::make_call(name.text, std::move(args), where(name));
+}
+
+model::StmtPtr Parser::for_statement() {
+  const Token& kw = next();  // FOR
+  auto s = std::make_shared<model::Stmt>();
+  s->kind = model::StmtKind::For;
+  s->where = where(kw);
+  s->target = identifier("the FOR loop's control variable");
+  expect(TokenKind::Assign, "':=' after the FOR control variable");
+  s->value = expression();
+  expect_word("TO");
+  s->limit = expression();
+  if (accept_word("BY")) s->step = expression();
+  expect_word("DO");
+  s->bodies.push_back(statements());
+  expect_word("END_FOR");
+  accept(TokenKind::Semicolon);
+  return s;
+}
+
+model::StmtPtr Parser::while_statement() {
+  const Token& kw = next();  // WHILE or REPEAT
+  auto s = std::make_shared<model::Stmt>();
+  s->where = where(kw);
+  if (model::iequals(kw.text, "WHILE")) {
+    s->kind = model::StmtKind::While;
+    s->conditions.push_back(expression());
+    expect_word("DO");
+    s->bodies.push_back(statements());
+    expect_word("END_WHILE");
+  } else {
+    s->kind = model::StmtKind::Repeat;
+    s->bodies.push_back(statements());
+    expect_word("UNTIL");
+    s->conditions.push_back(expression());
+    expect_word("END_REPEAT");
+  }
   accept(TokenKind::Semicolon);
   return s;
 }

@@ -4,8 +4,9 @@
 //
 // Supported: OR XOR AND/& NOT, = <> < <= > >=, + - * / MOD, unary -, parentheses, TRUE/FALSE,
 // integer literals (16#FF, 2#1010, 1_000, INT#5), TIME literals (T#1m30s -> ms), names and
-// `a.b` members; `x := e;`, IF/ELSIF/ELSE, CASE, FB calls `inst(IN := x);`, `;`.
-// Anything else (function calls, FOR/WHILE/REPEAT, REAL, strings, arrays ...) is an error
+// `a.b` members, function calls `f(a, b)`; `x := e;`, IF/ELSIF/ELSE, CASE, FOR/WHILE/REPEAT,
+// EXIT/CONTINUE/RETURN, FB calls `inst(IN := x);`, `;`.
+// Anything else (REAL, strings, arrays ...) is an error
 // "unsupported: <construct>" at its place.
 
 #include <memory>
@@ -96,6 +97,11 @@ class Parser {
   model::StmtPtr if_statement();
   model::StmtPtr case_statement();
   model::StmtPtr fb_call(const Token& name);
+  model::StmtPtr for_statement();
+  /// WHILE ... END_WHILE and REPEAT ... END_REPEAT.
+  model::StmtPtr while_statement();
+  /// A function call in an expression, `name(` next: positional arguments.
+  model::ExprPtr call(const Token& name);
   std::int64_t case_bound();
   void end_statement(std::string_view what);
   model::Type var_type();

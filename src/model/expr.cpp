@@ -119,6 +119,11 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
     case ExprKind::Falling:
       s = "FE " + print(*e.args[0], p, false);
       break;
+    case ExprKind::Call:
+      s = e.name + "(";
+      for (std::size_t i = 0; i < e.args.size(); ++i)
+        s += (i ? ", " : "") + print(*e.args[i], 0, false);
+      return s + ")";
     case ExprKind::Delay:
       return time_literal(e.value) + "/" + print(*e.args[0], 9, false) + "/" +
              time_literal(e.value2);
@@ -181,6 +186,13 @@ ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where
   set_height(*e);
   return e;
 }
+ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Call, std::move(where)));
+  e->name = std::move(function);
+  e->args = std::move(args);
+  set_height(*e);
+  return e;
+}
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
   e->value = t1_ms;
@@ -194,7 +206,7 @@ bool equal(const Expr& a, const Expr& b) {
   if (a.kind != b.kind || a.value != b.value || a.value2 != b.value2 ||
       a.args.size() != b.args.size())
     return false;
-  if (a.kind == ExprKind::Name || a.kind == ExprKind::Member) {
+  if (a.kind == ExprKind::Name || a.kind == ExprKind::Member || a.kind == ExprKind::Call) {
     // Identifiers are case-insensitive.
     auto ieq = [](const std::string& x, const std::string& y) {
       if (x.size() != y.size()) return false;

@@ -37,6 +37,7 @@ enum class ExprKind {
   Rising,   ///< Grafcet ↑e: args[0]
   Falling,  ///< Grafcet ↓e: args[0]
   Delay,    ///< Grafcet t1/e/t2: args[0] = e, value = t1 (ms), value2 = t2 (ms)
+  Call,     ///< function call name(args...): a standard function (MAX, INT_TO_BOOL, ...)
 };
 
 struct Expr;
@@ -46,7 +47,7 @@ struct Expr {
   ExprKind kind = ExprKind::BoolConst;
   std::int64_t value = 0;
   std::int64_t value2 = 0;
-  std::string name;    ///< Name, Member
+  std::string name;    ///< Name, Member, Call (the function's name)
   std::string member;  ///< Member: the part after the dot, as written ("X", "T", "Q")
   std::vector<ExprPtr> args;
   SourceLocation where;
@@ -64,6 +65,7 @@ ExprPtr make_member(std::string name, std::string member, SourceLocation where =
 ExprPtr make_unary(ExprKind kind, ExprPtr arg, SourceLocation where = {});
 ExprPtr make_binary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, SourceLocation where = {});
 ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where = {});
+ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).

@@ -23,8 +23,13 @@ StmtPtr make_fb_call(std::string instance, std::vector<std::pair<std::string, Ex
   return s;
 }
 
+bool is_loop(StmtKind k) {
+  return k == StmtKind::For || k == StmtKind::While || k == StmtKind::Repeat;
+}
+
 bool equal(const Stmt& a, const Stmt& b) {
-  if (a.kind != b.kind || to_upper(a.target) != to_upper(b.target) || !equal(a.value, b.value) ||
+  if (a.kind != b.kind || !equal(a.limit, b.limit) || !equal(a.step, b.step) ||
+      to_upper(a.target) != to_upper(b.target) || !equal(a.value, b.value) ||
       a.conditions.size() != b.conditions.size() || a.labels != b.labels ||
       a.bodies.size() != b.bodies.size() || !equal(a.else_body, b.else_body) ||
       a.arguments.size() != b.arguments.size())
@@ -93,6 +98,32 @@ void print(const StmtList& body, int indent, std::string& out) {
           print(s->else_body, indent + 4, out);
         }
         out += pad + "END_CASE;\n";
+        break;
+      case StmtKind::For:
+        out += pad + "FOR " + s->target + " := " + to_st(s->value) + " TO " + to_st(s->limit);
+        if (s->step) out += " BY " + to_st(s->step);
+        out += " DO\n";
+        print(s->bodies.empty() ? StmtList{} : s->bodies[0], indent + 2, out);
+        out += pad + "END_FOR;\n";
+        break;
+      case StmtKind::While:
+        out += pad + "WHILE " + to_st(s->conditions[0]) + " DO\n";
+        print(s->bodies[0], indent + 2, out);
+        out += pad + "END_WHILE;\n";
+        break;
+      case StmtKind::Repeat:
+        out += pad + "REPEAT\n";
+        print(s->bodies[0], indent + 2, out);
+        out += pad + "UNTIL " + to_st(s->conditions[0]) + "\n" + pad + "END_REPEAT;\n";
+        break;
+      case StmtKind::Exit:
+        out += pad + "EXIT;\n";
+        break;
+      case StmtKind::Continue:
+        out += pad + "CONTINUE;\n";
+        break;
+      case StmtKind::Return:
+        out += pad + "RETURN;\n";
         break;
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
-// Statements of ST action bodies: assignments, IF/ELSIF/ELSE, CASE, and calls of standard FB
-// instances. Anything else is rejected by the importers with an "unsupported" diagnostic.
+// Statements of ST action bodies: assignments, IF/ELSIF/ELSE, CASE, calls of FB instances, the
+// loops FOR/WHILE/REPEAT and EXIT/CONTINUE/RETURN. Anything else is rejected by the importers
+// with an "unsupported" diagnostic.
 
 #include <cstdint>
 #include <memory>
@@ -13,7 +14,18 @@
 
 namespace sfcv::model {
 
-enum class StmtKind { Assign, If, Case, FbCall };
+enum class StmtKind {
+  Assign,
+  If,
+  Case,
+  FbCall,
+  For,       ///< FOR target := value TO limit [BY step] DO bodies[0] END_FOR
+  While,     ///< WHILE conditions[0] DO bodies[0] END_WHILE
+  Repeat,    ///< REPEAT bodies[0] UNTIL conditions[0] END_REPEAT
+  Exit,      ///< EXIT: leaves the innermost loop
+  Continue,  ///< CONTINUE: ends the innermost loop's current iteration
+  Return,    ///< RETURN: ends the body (of the POU, action or function) being executed
+};
 
 struct Stmt;
 using StmtPtr = std::shared_ptr<const Stmt>;
@@ -41,11 +53,18 @@ struct Stmt {
 
   // FbCall: named inputs (IN := x, PT := T#1s, ...).
   std::vector<std::pair<std::string, ExprPtr>> arguments;
+
+  // For: the TO bound and the BY increment (null when BY is omitted, i.e. 1).
+  ExprPtr limit;
+  ExprPtr step;
 };
 
 StmtPtr make_assign(std::string target, ExprPtr value, SourceLocation where = {});
 StmtPtr make_fb_call(std::string instance, std::vector<std::pair<std::string, ExprPtr>> arguments,
                      SourceLocation where = {});
+
+/// A loop statement (FOR, WHILE, REPEAT).
+bool is_loop(StmtKind k);
 
 bool equal(const Stmt& a, const Stmt& b);
 bool equal(const StmtList& a, const StmtList& b);

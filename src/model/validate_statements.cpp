@@ -95,6 +95,27 @@ void Validator::check_statements(const StmtList& body, const SourceLocation& fal
       case StmtKind::FbCall:
         check_fb_call(s, here);
         break;
+      case StmtKind::For: {
+        const auto target = assignable(s.target, here);
+        if (target && clash(*target, Ty::Int))
+          error(here, "FOR control variable " + quoted(s.target) + " is not an integer");
+        for (const auto* e : {&s.value, &s.limit, &s.step})
+          if (*e && clash(type_of(**e, here), Ty::Int))
+            error(here, "FOR bound " + quoted(to_st(*e)) + " is not an integer");
+        for (const auto& b : s.bodies) check_statements(b, here);
+        break;
+      }
+      case StmtKind::While:
+      case StmtKind::Repeat:
+        for (const auto& c : s.conditions)
+          expect_bool(c, here,
+                      s.kind == StmtKind::While ? "the WHILE condition" : "the UNTIL condition");
+        for (const auto& b : s.bodies) check_statements(b, here);
+        break;
+      case StmtKind::Exit:
+      case StmtKind::Continue:
+      case StmtKind::Return:
+        break;
     }
   }
 }

@@ -205,6 +205,15 @@ Ty Validator::type_of(const Expr& e, const SourceLocation& fallback) {
         error(here, "comparison of " + ty_name(a) + " with " + ty_name(b) + " in " + op());
       return Ty::Bool;
     }
+    case ExprKind::Call: {
+      // Standard functions: the IEC compiler checks their arguments (iec_compile_call.cpp).
+      for (std::size_t i = 0; i < e.args.size(); ++i) (void)arg(i);
+      const std::string f = to_upper(e.name);
+      if (f == "GT" || f == "GE" || f == "EQ" || f == "NE" || f == "LE" || f == "LT" ||
+          (f.size() > 8 && f.ends_with("_TO_BOOL")))
+        return Ty::Bool;
+      return Ty::Unknown;
+    }
     case ExprKind::Rising:
     case ExprKind::Falling:
     case ExprKind::Delay: {

@@ -114,7 +114,8 @@ class SymbolicMachine {
   }
 
   void raise(AigLit guard, AigLit condition) {
-    c_.range_error = aig_.make_or(c_.range_error, aig_.make_and(guard, condition));
+    c_.range_error =
+        aig_.make_or(c_.range_error, aig_.make_and(outer_, aig_.make_and(guard, condition)));
   }
 
   // ------------------------------------------------------------------------- state
@@ -161,11 +162,21 @@ class SymbolicMachine {
     nxt_[field] = mux(guard, v, nxt_[field]);
   }
   void set_bool(std::uint32_t field, AigLit b, AigLit guard) { set(field, from_bool(b), guard); }
+  /// Statements run on the paths of `guard` where no EXIT, CONTINUE or RETURN was taken.
   void exec_block(Block b, AigLit guard) {
     for (std::uint32_t i = 0; i < b.count; ++i)
-      exec_stmt(p_.stmts[p_.block_items[b.first + i]], guard);
+      exec_stmt(p_.stmts[p_.block_items[b.first + i]],
+                aig_.make_and(guard, aig_.make_not(aig_.make_or(left_loop_, returned_))));
+  }
+  /// A top-level body (a POU's or an action's): RETURN ends it.
+  void exec_body(Block b, AigLit guard) {
+    returned_ = Aig::kFalse;
+    exec_block(b, guard);
+    returned_ = Aig::kFalse;
   }
   void exec_stmt(const Stmt& s, AigLit guard);
+  void exec_loop(const Stmt& s, AigLit guard);
+  Value bit_op(const Node& n, const std::uint32_t* kid, AigLit guard);
   void fb_call(const Stmt& s, AigLit guard);
 
   // ----------------------------------------------------------------------- timers
@@ -207,6 +218,10 @@ class SymbolicMachine {
   std::vector<Value> cur_, nxt_, input_values_;
   std::vector<std::int64_t> initial_values_;  ///< per field: what SFCInit/SFCReset restore
   std::vector<AigLit> consumed_, entered_, left_;
+  // Paths (under the current loop) that took EXIT or CONTINUE, and paths that took RETURN.
+  AigLit left_loop_ = Aig::kFalse, exit_ = Aig::kFalse, returned_ = Aig::kFalse;
+  // Range errors are raised only under this condition: inside a loop, the loop's guard.
+  AigLit outer_ = Aig::kTrue;
 };
 
 Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
@@ -309,6 +324,36 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
       const Value y = eval(kid[1], guard);
       return from_bool(compare(n.op, x, y));
     }
+    case Op::Ite: {
+      const AigLit c = eval_truth(kid[0], guard);
+      const Value t = eval(kid[1], aig_.make_and(guard, c));
+      return mux(c, t, eval(kid[2], aig_.make_and(guard, aig_.make_not(c))));
+    }
+    case Op::RangeCheck: {
+      const Value v = eval(kid[0], guard);
+      const Value lo = eval(kid[1], guard), hi = eval(kid[2], guard);
+      raise(guard, aig_.make_or(less(v, lo), less(hi, v)));
+      return v;
+    }
+    case Op::BitAnd:
+    case Op::BitOr:
+    case Op::BitXor: {
+      Value r = eval(kid[0], guard);
+      for (std::uint32_t i = 1; i < n.count; ++i) {
+        const Value v = eval(kid[i], guard);
+        for (std::uint32_t b = 0; b < kWidth; ++b)
+          r[b] = n.op == Op::BitAnd  ? aig_.make_and(r[b], v[b])
+                 : n.op == Op::BitOr ? aig_.make_or(r[b], v[b])
+                                     : aig_.make_xor(r[b], v[b]);
+      }
+      return r;
+    }
+    case Op::BitNot:
+    case Op::Shl:
+    case Op::Shr:
+    case Op::Rol:
+    case Op::Ror:
+      return bit_op(n, kid, guard);
   }
   return constant(0);
 }
@@ -349,7 +394,108 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
     case SOp::FbCall:
       fb_call(s, guard);
       return;
+    case SOp::Loop:
+      exec_loop(s, guard);
+      return;
+    case SOp::Exit:
+      exit_ = aig_.make_or(exit_, guard);
+      left_loop_ = aig_.make_or(left_loop_, guard);
+      return;
+    case SOp::Continue:
+      left_loop_ = aig_.make_or(left_loop_, guard);
+      return;
+    case SOp::Return:
+      returned_ = aig_.make_or(returned_, guard);
+      return;
   }
+}
+
+// A loop is unrolled on a "live" copy of the variables: their values on the paths where the
+// loop has gone on so far, computed as if the statement runs; so a loop with constant bounds
+// folds to its exact number of iterations (even under a bound that depends on an input). The
+// values of the paths that leave (the condition fails, EXIT, RETURN, UNTIL holds) are collected
+// in `result`, merged back under `guard` at the end. Range errors inside are raised only on the
+// paths still in the loop (outer_). Past kMaxLoopIterations the paths still going raise a
+// range error, as the explicit machine does.
+void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
+  const auto saved = nxt_;
+  const AigLit saved_outer = outer_, saved_left = left_loop_, saved_exit = exit_,
+               saved_return = returned_;
+  const AigLit base = aig_.make_and(outer_, guard);
+  outer_ = base;
+  left_loop_ = exit_ = returned_ = Aig::kFalse;
+  exec_block(s.init, Aig::kTrue);
+  auto result = nxt_;
+  auto leave = [&](AigLit when) {
+    if (when == Aig::kFalse) return;
+    for (std::size_t f = 0; f < nxt_.size(); ++f) result[f] = mux(when, nxt_[f], result[f]);
+  };
+  AigLit going = Aig::kTrue, returned_any = Aig::kFalse;
+  for (std::int64_t n = 0;; ++n) {
+    outer_ = aig_.make_and(base, going);
+    if (!s.test_after) {
+      const AigLit c = eval_truth(s.expr, Aig::kTrue);
+      leave(aig_.make_and(going, aig_.make_not(c)));
+      going = aig_.make_and(going, c);
+    }
+    if (going == Aig::kFalse) break;
+    outer_ = aig_.make_and(base, going);
+    if (n == kMaxLoopIterations) {
+      raise(going, Aig::kTrue);
+      break;
+    }
+    left_loop_ = exit_ = returned_ = Aig::kFalse;
+    exec_block(s.body, Aig::kTrue);
+    const AigLit out = aig_.make_and(going, aig_.make_or(exit_, returned_));
+    returned_any = aig_.make_or(returned_any, aig_.make_and(going, returned_));
+    leave(out);
+    going = aig_.make_and(going, aig_.make_not(aig_.make_or(exit_, returned_)));
+    left_loop_ = exit_ = returned_ = Aig::kFalse;
+    outer_ = aig_.make_and(base, going);
+    exec_block(s.step, Aig::kTrue);
+    if (s.test_after) {
+      const AigLit u = eval_truth(s.expr, Aig::kTrue);
+      leave(aig_.make_and(going, u));
+      going = aig_.make_and(going, aig_.make_not(u));
+      if (going == Aig::kFalse) break;
+    }
+  }
+  for (std::size_t f = 0; f < nxt_.size(); ++f) nxt_[f] = mux(guard, result[f], saved[f]);
+  outer_ = saved_outer;
+  left_loop_ = saved_left;
+  exit_ = saved_exit;
+  returned_ = aig_.make_or(saved_return, aig_.make_and(guard, returned_any));
+}
+
+Value SymbolicMachine::bit_op(const Node& n, const std::uint32_t* kid, AigLit guard) {
+  const auto width = static_cast<std::uint32_t>(n.k);
+  Value x = eval(kid[0], guard);
+  for (std::uint32_t i = width; i < kWidth; ++i) x[i] = Aig::kFalse;
+  if (n.op == Op::BitNot) {
+    for (std::uint32_t i = 0; i < width; ++i) x[i] = aig_.make_not(x[i]);
+    return x;
+  }
+  const Value by = eval(kid[1], guard);
+  const auto k = as_constant(by);
+  if (!k) throw CircuitUnsupported("a shift or rotation by a variable count");
+  if (*k < 0) {
+    raise(guard, Aig::kTrue);
+    return constant(0);
+  }
+  Value r = constant(0);
+  if (n.op == Op::Shl || n.op == Op::Shr) {
+    if (*k >= static_cast<std::int64_t>(width)) return r;
+    const auto s = static_cast<std::uint32_t>(*k);
+    for (std::uint32_t i = 0; i < width; ++i) {
+      if (n.op == Op::Shl && i >= s) r[i] = x[i - s];
+      if (n.op == Op::Shr && i + s < width) r[i] = x[i + s];
+    }
+    return r;
+  }
+  const auto s = static_cast<std::uint32_t>(*k % width);
+  const auto left = n.op == Op::Rol ? s : (width - s) % width;
+  for (std::uint32_t i = 0; i < width; ++i) r[(i + left) % width] = x[i];
+  return r;
 }
 
 void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
@@ -624,7 +770,7 @@ void SymbolicMachine::step_times(const Pou& pou) {
 }
 
 void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
-  exec_block(pou.body, guard);
+  exec_body(pou.body, guard);
   // SFCInit/SFCReset (Machine::sfc_flags): the charts restart from their initial situation;
   // under SFCInit they stay there, running no action.
   AigLit init = Aig::kFalse;
@@ -646,7 +792,7 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
   for (auto a : pou.exec_order) {
     const auto& act = p_.actions[a];
     if (act.kind == model::ActionBodyKind::Statements)
-      exec_block(act.body, aig_.make_and(run, cur_truth(act.active)));
+      exec_body(act.body, aig_.make_and(run, cur_truth(act.active)));
   }
   for (auto c : pou.charts) fire_chart(p_.charts[c], aig_.make_and(run, chart_active_cur(c)));
   if (init == Aig::kFalse) {

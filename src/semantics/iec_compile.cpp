@@ -101,7 +101,8 @@ model::Type Compiler::value_type(const model::Type& t) {
 
 void Compiler::collect_written(const model::StmtList& body, const std::string& pou) {
   for (const auto& s : body) {
-    if (s->kind == model::StmtKind::Assign) written.insert(pou + "|" + model::to_upper(s->target));
+    if (s->kind == model::StmtKind::Assign || s->kind == model::StmtKind::For)
+      written.insert(pou + "|" + model::to_upper(s->target));
     for (const auto& b : s->bodies) collect_written(b, pou);
     collect_written(s->else_body, pou);
   }

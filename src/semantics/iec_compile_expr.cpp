@@ -247,9 +247,14 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
       return constant(0);
     }
     case ExprKind::Member:
+      if (is_bit_access(e)) return bit_access(sc, e, context, type);
       return member(sc, e, context, type);
+    case ExprKind::Call:
+      return call(sc, e, context, type);
     case ExprKind::Not:
     case ExprKind::Neg: {
+      if (e.kind == ExprKind::Not && bit_width(sc, *e.args[0]) > 0)
+        return bitwise(sc, e, context, type);
       VT t;
       const auto a = expr(sc, *e.args[0], context, t);
       if (e.kind == ExprKind::Not) t = bool_if_literal(*e.args[0], t);
@@ -263,6 +268,9 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
     case ExprKind::And:
     case ExprKind::Or:
     case ExprKind::Xor: {
+      if (std::any_of(e.args.begin(), e.args.end(),
+                      [&](const model::ExprPtr& a) { return bit_width(sc, *a) > 0; }))
+        return bitwise(sc, e, context, type);
       std::vector<std::uint32_t> kids;
       for (const auto& a : e.args) {
         VT t;

@@ -117,9 +117,79 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       out.op = SOp::FbCall;
       fb_call(sc, s, out);
       break;
+    case model::StmtKind::For:
+    case model::StmtKind::While:
+    case model::StmtKind::Repeat:
+      loop(sc, s, out);
+      break;
+    case model::StmtKind::Exit:
+    case model::StmtKind::Continue:
+      out.op = s.kind == model::StmtKind::Exit ? SOp::Exit : SOp::Continue;
+      if (loop_depth == 0)
+        error(s.where, std::string(s.kind == model::StmtKind::Exit ? "EXIT" : "CONTINUE") +
+                           " outside a loop");
+      break;
+    case model::StmtKind::Return:
+      out.op = SOp::Return;
+      if (!inlining.empty()) error(s.where, "RETURN in an action called from ST is not modelled");
+      break;
   }
   p.stmts.push_back(out);
   return static_cast<std::uint32_t>(p.stmts.size() - 1);
+}
+
+void Compiler::loop(const PouScope& sc, const model::Stmt& s, Stmt& out) {
+  out.op = SOp::Loop;
+  ++loop_depth;
+  out.body = block(sc, s.bodies.empty() ? model::StmtList{} : s.bodies[0]);
+  --loop_depth;
+  if (s.kind != model::StmtKind::For) {
+    out.expr = bool_expr(sc, s.conditions.empty() ? nullptr : s.conditions[0], -1, s.where,
+                         s.kind == model::StmtKind::While ? "WHILE condition" : "UNTIL condition");
+    out.test_after = s.kind == model::StmtKind::Repeat;
+    out.init = block(sc, {});
+    out.step = block(sc, {});
+    return;
+  }
+  // FOR i := a TO b BY c: i := a; WHILE (c > 0 ? i <= b : i >= b) DO body; i := i + c.
+  // The TO bound is evaluated before each iteration; BY must be a non-zero constant.
+  auto it = sc.names.find(model::to_upper(s.target));
+  if (it == sc.names.end() || it->second.kind != Ref::Field || it->second.is_bool) {
+    error(s.where, "FOR control variable '" + s.target + "' is not an integer variable of " +
+                       sc.pou->name + " (inputs cannot be assigned)");
+    out.expr = constant(0);
+    return;
+  }
+  const std::int64_t by = s.step ? literal(*s.step).value_or(0) : 1;
+  if (by == 0) {
+    error(s.step ? (s.step->where.known() ? s.step->where : s.where) : s.where,
+          "FOR loop: BY must be a non-zero integer constant");
+    out.expr = constant(0);
+    return;
+  }
+  const auto from = s.value ? literal(*s.value) : std::nullopt;
+  const auto to = s.limit ? literal(*s.limit) : std::nullopt;
+  if (from && to) {
+    std::int64_t span = 0;
+    const bool huge = __builtin_sub_overflow(*to, *from, &span) ||
+                      span == std::numeric_limits<std::int64_t>::min();
+    const auto count = huge                               ? kMaxLoopIterations + 1
+                       : (by > 0 ? span >= 0 : span <= 0) ? span / by + 1
+                                                          : 0;
+    if (count > kMaxLoopIterations)
+      error(s.where, "FOR loop runs " + (huge ? std::string("over 2^63") : std::to_string(count)) +
+                         " iterations, more than the limit of " +
+                         std::to_string(kMaxLoopIterations) + " sfcv unrolls");
+  }
+  const auto i = model::make_name(s.target, s.where);
+  const auto by_expr = model::make_int(by < 0 ? -by : by, s.where);
+  out.init = block(sc, {model::make_assign(s.target, s.value, s.where)});
+  out.step = block(
+      sc, {model::make_assign(
+              s.target, model::make_binary(by > 0 ? ExprKind::Add : ExprKind::Sub, i, by_expr),
+              s.where)});
+  const auto cond = model::make_binary(by > 0 ? ExprKind::Le : ExprKind::Ge, i, s.limit, s.where);
+  out.expr = bool_expr(sc, cond, -1, s.where, "FOR bound");
 }
 
 const model::Action* Compiler::called_action(const PouScope& sc, const model::Stmt& s) const {

@@ -199,6 +199,24 @@ bool Machine::step_active_next(std::uint32_t step) const {
   return pa == kNone || nxt_[p_.actions[static_cast<std::size_t>(pa)].active] != 0;
 }
 
+std::int64_t Machine::bit_op(const Node& n, const std::uint32_t* kid) {
+  const auto width = static_cast<std::uint32_t>(n.k);  // 1..64
+  const std::uint64_t mask = width >= 64 ? ~0ULL : ((1ULL << width) - 1);
+  const auto x = static_cast<std::uint64_t>(eval(kid[0])) & mask;
+  if (n.op == Op::BitNot) return static_cast<std::int64_t>(~x & mask);
+  const auto by = eval(kid[1]);
+  if (by < 0) throw RangeAbort{"negative shift or rotation count", &kNowhere};
+  std::uint64_t r = 0;
+  if (n.op == Op::Shl || n.op == Op::Shr) {
+    if (by < static_cast<std::int64_t>(width)) r = n.op == Op::Shl ? (x << by) & mask : x >> by;
+  } else {
+    const auto s = static_cast<std::uint32_t>(by % width);
+    const auto left = n.op == Op::Rol ? s : (width - s) % width;
+    r = left == 0 ? x : ((x << left) | (x >> (width - left))) & mask;
+  }
+  return static_cast<std::int64_t>(r);
+}
+
 std::int64_t Machine::eval(std::uint32_t index) {
   const Node& n = p_.nodes[index];
   const std::uint32_t* kid = p_.kids.data() + n.first;
@@ -274,6 +292,30 @@ std::int64_t Machine::eval(std::uint32_t index) {
       const auto x = eval(kid[0]);
       return compare(n.op, x, eval(kid[1]));
     }
+    case Op::Ite:
+      return eval(kid[0]) ? eval(kid[1]) : eval(kid[2]);
+    case Op::RangeCheck: {
+      const auto v = eval(kid[0]);
+      if (v < eval(kid[1]) || v > eval(kid[2]))
+        throw RangeAbort{"value out of the range of the function's result type", &kNowhere};
+      return v;
+    }
+    case Op::BitAnd:
+    case Op::BitOr:
+    case Op::BitXor: {
+      auto r = static_cast<std::uint64_t>(eval(kid[0]));
+      for (std::uint32_t i = 1; i < n.count; ++i) {
+        const auto v = static_cast<std::uint64_t>(eval(kid[i]));
+        r = n.op == Op::BitAnd ? (r & v) : n.op == Op::BitOr ? (r | v) : (r ^ v);
+      }
+      return static_cast<std::int64_t>(r);
+    }
+    case Op::BitNot:
+    case Op::Shl:
+    case Op::Shr:
+    case Op::Rol:
+    case Op::Ror:
+      return bit_op(n, kid);
   }
   return 0;
 }

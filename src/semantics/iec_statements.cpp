@@ -46,11 +46,28 @@ void Machine::assign(std::uint32_t field, std::int64_t v, const std::string& whe
   nxt_[field] = v;
 }
 
-void Machine::exec_block(Block b) {
-  for (std::uint32_t i = 0; i < b.count; ++i) exec_stmt(p_.stmts[p_.block_items[b.first + i]]);
+Flow Machine::exec_block(Block b) {
+  for (std::uint32_t i = 0; i < b.count; ++i)
+    if (const auto f = exec_stmt(p_.stmts[p_.block_items[b.first + i]]); f != Flow::Normal)
+      return f;
+  return Flow::Normal;
 }
 
-void Machine::exec_stmt(const Stmt& s) {
+Flow Machine::exec_loop(const Stmt& s) {
+  if (const auto f = exec_block(s.init); f != Flow::Normal) return f;
+  for (std::int64_t n = 0;; ++n) {
+    if (!s.test_after && !eval(s.expr)) return Flow::Normal;
+    if (n == kMaxLoopIterations)
+      throw RangeAbort{"loop runs more iterations than the limit (1000)", &s.where};
+    const auto f = exec_block(s.body);
+    if (f == Flow::Return) return f;
+    if (f == Flow::Exit) return Flow::Normal;
+    exec_block(s.step);
+    if (s.test_after && eval(s.expr)) return Flow::Normal;
+  }
+}
+
+Flow Machine::exec_stmt(const Stmt& s) {
   switch (s.op) {
     case SOp::Assign: {
       std::int64_t v = 0;
@@ -60,37 +77,38 @@ void Machine::exec_stmt(const Stmt& s) {
         throw RangeAbort{e.what, &s.where};
       }
       assign(s.target, v, s.where);
-      return;
+      return Flow::Normal;
     }
     case SOp::If:
       for (std::uint32_t i = 0; i < s.arm_count; ++i) {
         const auto& arm = p_.if_arms[s.arm_first + i];
-        if (eval(arm.cond)) {
-          exec_block(arm.body);
-          return;
-        }
+        if (eval(arm.cond)) return exec_block(arm.body);
       }
-      exec_block(s.else_body);
-      return;
+      return exec_block(s.else_body);
     case SOp::Case: {
       const auto sel = eval(s.expr);
       for (std::uint32_t i = 0; i < s.arm_count; ++i) {
         const auto& arm = p_.case_arms[s.arm_first + i];
         for (std::uint32_t l = 0; l < arm.label_count; ++l) {
           const auto& lab = p_.case_labels[arm.label_first + l];
-          if (sel >= lab.lo && sel <= lab.hi) {
-            exec_block(arm.body);
-            return;
-          }
+          if (sel >= lab.lo && sel <= lab.hi) return exec_block(arm.body);
         }
       }
-      exec_block(s.else_body);
-      return;
+      return exec_block(s.else_body);
     }
     case SOp::FbCall:
       fb_call(s);
-      return;
+      return Flow::Normal;
+    case SOp::Loop:
+      return exec_loop(s);
+    case SOp::Exit:
+      return Flow::Exit;
+    case SOp::Continue:
+      return Flow::Continue;
+    case SOp::Return:
+      return Flow::Return;
   }
+  return Flow::Normal;
 }
 
 void Machine::fb_call(const Stmt& s) {

@@ -293,9 +293,8 @@ TEST(IecText, SyntaxErrorsAreLocated) {
             "2:21: expected TO, found ':='\n");
   EXPECT_EQ(errors("PROGRAM p\n  TRANSITION FROM a TO b := x AND; END_TRANSITION\nEND_PROGRAM\n"),
             "2:34: expected an expression, found ';'\n");
-  EXPECT_EQ(
-      errors("PROGRAM p\n  ACTION a:\n    WHILE TRUE DO END_WHILE;\n  END_ACTION\nEND_PROGRAM\n"),
-      "3:5: unsupported: WHILE statement\n");
+  EXPECT_EQ(errors("PROGRAM p\n  ACTION a:\n    JMP lbl;\n  END_ACTION\nEND_PROGRAM\n"),
+            "3:5: unsupported: JMP statement\n");
   EXPECT_EQ(errors("PROGRAM p\n  VAR r : REAL; END_VAR\n  INITIAL_STEP a: END_STEP\nEND_PROGRAM\n"),
             "2:11: unsupported type REAL (sfcv models BOOL, integers, TIME and standard FBs)\n");
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: END_STEP\n"),

@@ -237,7 +237,7 @@ TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
       "<pou name=\"P\" pouType=\"program\"><interface>" + std::string(kVarA) +
       "</interface><actions>"
       "<action name=\"Loop\"><body>" +
-      st("FOR i := 1 TO 3 DO x := a; END_FOR;") +
+      st("x := arr[1];") +
       "</body></action>"
       "<action name=\"Il\"><body><IL><xhtml:p><![CDATA[LD a\nST x]]></xhtml:p></IL></body></action>"
       "</actions><body><SFC>" +

@@ -56,6 +56,7 @@ struct Compiler {
   std::vector<std::uint8_t> field_is_bool;
   std::set<std::string> written;   // "POU|VAR" upper-case: variables some statement assigns
   std::set<std::string> inlining;  // upper-case actions whose call is being compiled
+  int loop_depth = 0;              // loops around the statement being compiled
   std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
   std::set<std::uint32_t> called_timers;                      // FB indices of called timers
   // Step .T: constants compared with, and nodes to patch once regions are known.
@@ -106,6 +107,15 @@ struct Compiler {
 
   std::uint32_t member(const PouScope& sc, const model::Expr& e, int context, VT& type);
 
+  // Standard functions, bit strings (iec_compile_call.cpp).
+  std::uint32_t call(const PouScope& sc, const model::Expr& e, int context, VT& type);
+  /// Bits of a bit-string expression (8, 16, 32); 0 for an integer literal; -1 for anything
+  /// else (a signed integer, a BOOL, ...).
+  int bit_width(const PouScope& sc, const model::Expr& e) const;
+  std::uint32_t bitwise(const PouScope& sc, const model::Expr& e, int context, VT& type);
+  std::uint32_t bit_access(const PouScope& sc, const model::Expr& e, int context, VT& type);
+  static bool is_bit_access(const model::Expr& e);
+
   std::uint32_t bool_expr(const PouScope& sc, const model::ExprPtr& e, int context,
                           const model::SourceLocation& where, const char* what);
 
@@ -114,6 +124,8 @@ struct Compiler {
               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies = {});
 
   std::uint32_t stmt(const PouScope& sc, const model::Stmt& s);
+  /// FOR, WHILE, REPEAT into an SOp::Loop (iec_compile_stmt.cpp).
+  void loop(const PouScope& sc, const model::Stmt& s, Stmt& out);
 
   /// The action of the POU a call statement `NAME();` names (no variable of that name).
   const model::Action* called_action(const PouScope& sc, const model::Stmt& s) const;

@@ -47,7 +47,21 @@ enum class Op : std::uint8_t {
   Le,
   Gt,
   Ge,
+  Ite,         ///< children: condition, then, else (only the chosen branch is evaluated)
+  RangeCheck,  ///< children: value, lo, hi (constants): the value, or a range error outside
+  BitAnd,      ///< bit strings (unsigned, k bits wide): n-ary
+  BitOr,
+  BitXor,
+  BitNot,  ///< k-bit complement of child 0
+  Shl,     ///< child 0 << child 1, truncated to k bits; shifts >= k give 0
+  Shr,
+  Rol,  ///< rotations of a k-bit value by child 1 (mod k)
+  Ror,
 };
+
+/// The most iterations a loop may run in one execution of its statement (FOR, WHILE, REPEAT):
+/// one more is a run-time range error, in the machine and the circuit alike (docs/semantics.md).
+inline constexpr std::int64_t kMaxLoopIterations = 1000;
 
 struct Node {
   Op op = Op::Const;
@@ -61,7 +75,10 @@ struct Node {
 
 // ------------------------------------------------------------------------------- statements
 
-enum class SOp : std::uint8_t { Assign, If, Case, FbCall };
+enum class SOp : std::uint8_t { Assign, If, Case, FbCall, Loop, Exit, Continue, Return };
+
+/// How control leaves a block: normally, or by EXIT, CONTINUE or RETURN.
+enum class Flow : std::uint8_t { Normal, Exit, Continue, Return };
 
 struct Block {
   std::uint32_t first = 0, count = 0;  ///< in Program::block_items
@@ -85,6 +102,10 @@ struct Stmt {
   Block else_body;
   std::int32_t arg1 = kNone, arg2 = kNone, arg3 = kNone;  ///< FbCall: expression nodes
   std::string where;                                      ///< for range errors
+  // Loop: `init` once, then while `expr` holds (checked after `body` when test_after, where
+  // the loop ends when it holds: REPEAT ... UNTIL): body, then `step` (FOR's increment).
+  Block init, body, step;
+  bool test_after = false;
 };
 
 // ------------------------------------------------------------------------------------ timers
@@ -264,8 +285,10 @@ class Machine {
   void touch(std::uint32_t input, std::int64_t lo, std::int64_t hi);
   std::int64_t arith(Op op, std::int64_t x, std::int64_t y) const;
 
-  void exec_block(Block b);
-  void exec_stmt(const Stmt& s);
+  std::int64_t bit_op(const Node& n, const std::uint32_t* kid);
+  Flow exec_block(Block b);
+  Flow exec_loop(const Stmt& s);
+  Flow exec_stmt(const Stmt& s);
   void fb_call(const Stmt& s);
   void assign(std::uint32_t field, std::int64_t v, const std::string& where);
   std::int64_t timer_next(const Timer& t, bool run, bool restart);
