@@ -78,7 +78,11 @@ std::optional<model::VarDirection> section_direction(std::string_view k) {
   return std::nullopt;
 }
 
-void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) {
+/// `user_fbs`: the upper-case names of the project's function block POUs; a variable of such a
+/// derived type is an instance of that function block (its own copy of the FB's variables and
+/// charts, compiled by the semantics).
+void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
+                    const std::set<std::string>& user_fbs) {
   for (auto section : element_children(interface)) {
     const auto dir = section_direction(local_name(section));
     if (!dir) continue;  // returnType, accessVars, documentation, addData
@@ -93,7 +97,15 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) 
         continue;
       }
       const auto type_el = element_children(child(v, "type"));
-      const auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
+      auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
+      if (!t.type && !type_el.empty() && local_name(type_el.front()) == "derived" &&
+          user_fbs.count(model::to_upper(t.written))) {
+        model::Type fb;
+        fb.kind = model::TypeKind::FunctionBlock;
+        fb.fb = model::StandardFb::None;
+        fb.name = t.written;
+        t.type = fb;
+      }
       if (!t.type) {
         ctx.warning(v, "unsupported type " + t.written + " of variable '" + var.name +
                            "': variable ignored");
@@ -159,7 +171,8 @@ std::string list_instances(const model::StmtList& calls) {
   return s;
 }
 
-void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
+void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
+              const std::set<std::string>& user_fbs) {
   model::Pou pou;
   pou.name = trim(node.attribute("name").value());
   pou.where = ctx.where(node);
@@ -172,7 +185,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     pou.kind = model::PouKind::Program;
   else
     ctx.warning(node, "unknown pouType '" + type + "': read as a program");
-  read_variables(ctx, child(node, "interface"), pou);
+  read_variables(ctx, child(node, "interface"), pou, user_fbs);
 
   PouContext pc{ctx, node, pou, {}, {}, {}, 0};
   for (auto t : children(child(node, "transitions"), "transition"))
@@ -355,6 +368,10 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
 
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
+  std::set<std::string> user_fbs;
+  for (auto p : pous)
+    if (std::string_view(p.attribute("pouType").value()) == "functionBlock")
+      user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
   std::set<std::string> seen;
   for (auto p : pous) {
     const std::string name = trim(p.attribute("name").value());
@@ -366,7 +383,7 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
       ctx.error(p, "duplicate POU '" + name + "'");
       continue;
     }
-    read_pou(ctx, p, project);
+    read_pou(ctx, p, project, user_fbs);
   }
   r.project = std::move(project);
   return r;

@@ -28,7 +28,7 @@ struct Stmt {
   StmtKind kind = StmtKind::Assign;
   SourceLocation where;
 
-  // Assign: target := value. FbCall: target is the instance name.
+  // Assign: target := value (target may be dotted: `inst.x`). FbCall: target is the instance.
   std::string target;
   ExprPtr value;
 
@@ -41,6 +41,8 @@ struct Stmt {
 
   // FbCall: named inputs (IN := x, PT := T#1s, ...).
   std::vector<std::pair<std::string, ExprPtr>> arguments;
+  // FbCall: output bindings `Q => y` (the instance's output, the variable it is copied to).
+  std::vector<std::pair<std::string, std::string>> outputs;
 };
 
 StmtPtr make_assign(std::string target, ExprPtr value, SourceLocation where = {});

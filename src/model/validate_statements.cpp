@@ -36,6 +36,19 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
     return std::nullopt;
   }
   const std::string member = target.substr(dot + 1);
+  if (v && v->type.kind == TypeKind::FunctionBlock && v->type.fb == StandardFb::None) {
+    // `inst.x := v`, `a.b.x := v`: a variable of a user function block instance.
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto d = target.find('.', from);
+      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    if (t == Ty::Unknown) return std::nullopt;
+    return t;
+  }
   if (v && v->type.kind == TypeKind::FunctionBlock) {
     const auto m = fb_member(v->type.fb, member);
     if (!m) {
@@ -112,6 +125,34 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
                     " variable, not a function block instance");
     return;
   }
+  if (v->type.fb == StandardFb::None) {  // a user function block: its own declarations
+    const Pou* type = project_.find_pou(v->type.name);
+    if (!type) return;  // the compiler reports the missing type
+    for (const auto& [param, value] : s.arguments) {
+      const Variable* m = type->find_variable(param);
+      if (!m || m->direction != VarDirection::Input) {
+        error(here, "function block " + type->name + " has no input " + quoted(param));
+        continue;
+      }
+      if (!value) continue;
+      const auto want = value_type(m->type);
+      const Ty t = type_of(*value, here);
+      if (want && clash(t, *want))
+        error(at(value->where, here), "parameter " + param + " of " + type->name + " expects " +
+                                          ty_name(*want) + ", got " + ty_name(t));
+    }
+    for (const auto& [out, var] : s.outputs) {
+      const Variable* m = type->find_variable(out);
+      if (!m || m->direction != VarDirection::Output)
+        error(here, "function block " + type->name + " has no output " + quoted(out));
+      else
+        assignable(var, here);
+    }
+    return;
+  }
+  if (!s.outputs.empty())
+    error(here, "output binding '=>' in the call of standard function block " + quoted(s.target) +
+                    " (read " + s.target + ".Q after the call)");
   for (const auto& [param, value] : s.arguments) {
     const auto m = fb_member(v->type.fb, param);
     if (!m) {

@@ -195,11 +195,14 @@ class SymbolicMachine {
   }
 
   // -------------------------------------------------------------------- the cycle
+  /// `guard`: the path condition of a called instance's cycle (a Call under an IF); a program
+  /// runs under the inputs' constraint only, and its state updates are unconditional.
   void cycle_pou(const Pou& pou, AigLit guard);
+  void call_instance(const Pou& pou, AigLit guard);
   void fire_chart(const Chart& c, AigLit guard);
   void fire(const Transition& t, AigLit when);
   void update_pou(const Pou& pou, AigLit guard);
-  void step_times(const Pou& pou);
+  void step_times(const Pou& pou, AigLit guard);
 
   const Program& p_;
   TransitionCircuit& c_;
@@ -347,6 +350,9 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
     }
     case SOp::FbCall:
       fb_call(s, guard);
+      return;
+    case SOp::Call:
+      call_instance(p_.pous[s.target], guard);
       return;
   }
 }
@@ -499,13 +505,14 @@ void SymbolicMachine::fire_chart(const Chart& c, AigLit guard) {
 }
 
 void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
+  const AigLit g = pou.instance ? guard : Aig::kTrue;
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) {
       const auto& st = p_.steps[s];
       set_bool(
           st.ready,
           aig_.make_or(aig_.make_and(cur_truth(st.ready), aig_.make_not(left_[s])), entered_[s]),
-          Aig::kTrue);
+          g);
     }
   for (auto ai : pou.topo_order) {
     const auto& a = p_.actions[ai];
@@ -541,19 +548,19 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           break;
         case model::Qualifier::L: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, aig_.make_not(timer_expired(*t, v))));
           break;
         }
         case model::Qualifier::D: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, timer_expired(*t, v)));
           break;
         }
         case model::Qualifier::DS: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           const AigLit fire_now = aig_.make_and(sa, timer_expired(*t, v));
           set_flag = aig_.make_or(set_flag, fire_now);
           act = aig_.make_or(act, fire_now);
@@ -562,9 +569,9 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
         case model::Qualifier::SD: {
           const auto latch = static_cast<std::uint32_t>(as.latch);
           const AigLit l = aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
-          set_bool(latch, l, Aig::kTrue);
+          set_bool(latch, l, g);
           const Value v = timer_next(*t, l, Aig::kFalse);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, timer_expired(*t, v)));
           break;
         }
@@ -576,9 +583,9 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           const AigLit l = aig_.make_and(
               aig_.make_or(aig_.make_and(cur_truth(latch), aig_.make_not(expired_before)), rising),
               aig_.make_not(reset));
-          set_bool(latch, l, Aig::kTrue);
+          set_bool(latch, l, g);
           const Value v = timer_next(*t, l, rising);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, aig_.make_not(timer_expired(*t, v))));
           break;
         }
@@ -590,17 +597,16 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
     if (a.stored != kNone) {
       const auto f = static_cast<std::uint32_t>(a.stored);
       stored = aig_.make_and(aig_.make_or(set_flag, cur_truth(f)), aig_.make_not(reset));
-      set_bool(f, stored, Aig::kTrue);
+      set_bool(f, stored, g);
     }
     const AigLit active = aig_.make_and(aig_.make_or(act, stored), aig_.make_not(reset));
-    set_bool(a.active, active, Aig::kTrue);
-    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, Aig::kTrue);
+    set_bool(a.active, active, g);
+    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, g);
   }
-  (void)guard;
-  step_times(pou);
+  step_times(pou, g);
 }
 
-void SymbolicMachine::step_times(const Pou& pou) {
+void SymbolicMachine::step_times(const Pou& pou, AigLit guard) {
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) {
       const auto& st = p_.steps[s];
@@ -618,7 +624,7 @@ void SymbolicMachine::step_times(const Pou& pou) {
             max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
         advanced = mux(less(v, top), moved, v);
       }
-      nxt_[f] = mux(restart, constant(0), mux(advance, advanced, nxt_[f]));
+      nxt_[f] = mux(guard, mux(restart, constant(0), mux(advance, advanced, nxt_[f])), nxt_[f]);
     }
 }
 
@@ -631,6 +637,13 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
   }
   for (auto c : pou.charts) fire_chart(p_.charts[c], aig_.make_and(guard, chart_active_cur(c)));
   update_pou(pou, guard);
+}
+
+void SymbolicMachine::call_instance(const Pou& pou, AigLit guard) {
+  cycle_pou(pou, guard);
+  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = Aig::kFalse;
 }
 
 void SymbolicMachine::build(StateView initial_state) {
@@ -677,7 +690,10 @@ void SymbolicMachine::build(StateView initial_state) {
   AigLit assumed = Aig::kTrue;
   for (auto a : p_.assumptions) assumed = aig_.make_and(assumed, eval_truth(a, assumed));
   c_.allowed = aig_.make_and(allowed, assumed);
-  for (const auto& pou : p_.pous) cycle_pou(pou, c_.allowed);
+  const std::vector<Value> latched = cur_;  // instance calls commit into cur_
+  for (const auto& pou : p_.pous)
+    if (!pou.instance) cycle_pou(pou, c_.allowed);
+  cur_ = latched;
   c_.range_error = aig_.make_and(c_.range_error, c_.allowed);
 
   for (std::uint32_t f = 0; f < fields.size(); ++f) {

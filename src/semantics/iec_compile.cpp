@@ -128,21 +128,28 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     PouScope sc;
     sc.pou = pous[pi];
     sc.index = pi;
+    sc.name = pous[pi]->name;
     scopes.push_back(std::move(sc));
     const auto up = model::to_upper(pous[pi]->name);
     collect_written(pous[pi]->body, up);
     for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
   }
-  // Pass 1: state variables (non-inputs).
+  // Pass 1: state variables (non-inputs). Instances of user function blocks add scopes, so
+  // the scope is found by index each time.
   for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
     const auto& pou = *pous[pi];
-    auto& sc = scopes[pi];
     for (const auto& v : pou.variables) {
       const auto up = model::to_upper(v.name);
       if (v.type.kind == TypeKind::FunctionBlock) {
-        make_fb(pi, v);
+        if (v.type.fb == StandardFb::None) {
+          std::vector<std::string> types{model::to_upper(pou.name)};
+          instantiate(pi, v, 1, types);
+        } else {
+          make_fb(pi, v);
+        }
         continue;
       }
+      auto& sc = scopes[pi];
       if (is_input(v)) continue;
       if (v.direction == model::VarDirection::InOut) {
         error(v.where, "VAR_IN_OUT '" + v.name + "' of " + pou.name +
@@ -256,6 +263,7 @@ bool Compiler::run() {
   reject_foreign(pous);
   if (!ok) return false;
   variables(pous);
+  if (!ok) return false;
   structure();
   actions_and_transitions();
   finish_timers();
@@ -263,6 +271,7 @@ bool Compiler::run() {
   for (const auto& a : p.options.assumptions)
     if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
   step_timers();
+  instance_commits();
   step_observables();
   // A program without steps may keep no state at all (it only maps inputs to outputs of
   // dropped types); the engines store states as words, so give it one constant bit.

@@ -45,7 +45,19 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       auto it = sc.names.find(model::to_upper(s.target));
       VT t;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
-      if (it == sc.names.end()) {
+      if (s.target.find('.') != std::string::npos) {
+        // `inst.x := v`, `a.b.x := v`, `Main.x := v`.
+        if (const auto r = dotted(sc, s.target, s.where)) {
+          if (r->kind != Ref::Field) {
+            error(s.where, "assignment to '" + s.target + "', which is an input");
+          } else {
+            out.target = r->index;
+            if (r->is_bool && s.value) t = bool_if_literal(*s.value, t);
+            if ((t == VT::Bool) != r->is_bool)
+              error(s.where, "type mismatch in the assignment to '" + s.target + "'");
+          }
+        }
+      } else if (it == sc.names.end()) {
         error(s.where, "assignment to unknown variable '" + s.target + "'");
       } else if (it->second.kind != Ref::Field) {
         error(s.where,
@@ -112,6 +124,16 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         out.arm_count = 1;
         p.if_arms.push_back(arm);
         out.else_body = block(sc, {});
+        break;
+      }
+      if (auto it = sc.names.find(model::to_upper(s.target));
+          it != sc.names.end() && it->second.kind == Ref::Instance) {
+        instance_call(sc, s, it->second.index, out);
+        break;
+      }
+      if (!s.outputs.empty()) {
+        error(s.where, "output binding '=>' in the call of '" + s.target +
+                           "', which is not an instance of a user function block");
         break;
       }
       out.op = SOp::FbCall;

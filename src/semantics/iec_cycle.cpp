@@ -19,6 +19,7 @@ bool Machine::run() {
   }
   touched_.clear();
   pos_ = 0;
+  if (p_.has_instances) cur_ = base_;
   nxt_ = cur_;
   fired_.clear();
   std::fill(consumed_.begin(), consumed_.end(), std::uint8_t{0});
@@ -26,8 +27,10 @@ bool Machine::run() {
   std::fill(left_.begin(), left_.end(), std::uint8_t{0});
   for (auto a : p_.assumptions)
     if (!eval(a)) return false;
-  for (const auto& pou : p_.pous) cycle_pou(pou);
+  for (const auto& pou : p_.pous)
+    if (!pou.instance) cycle_pou(pou);
   std::sort(fired_.begin(), fired_.end());
+  fired_.erase(std::unique(fired_.begin(), fired_.end()), fired_.end());
   return true;
 }
 
@@ -37,6 +40,7 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
   touched_.clear();
   fixed_ = true;
   pos_ = 0;
+  if (p_.has_instances) cur_ = base_;
   nxt_ = cur_;
   fired_.clear();
   std::fill(consumed_.begin(), consumed_.end(), std::uint8_t{0});
@@ -46,8 +50,10 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
   for (auto a : p_.assumptions)
     if (!eval(a)) ok = false;
   if (ok)
-    for (const auto& pou : p_.pous) cycle_pou(pou);
+    for (const auto& pou : p_.pous)
+      if (!pou.instance) cycle_pou(pou);
   std::sort(fired_.begin(), fired_.end());
+  fired_.erase(std::unique(fired_.begin(), fired_.end()), fired_.end());
   fixed_ = false;
   for (std::size_t i = 0; i < in_lo_.size(); ++i) {
     in_lo_[i] = p_.inputs[i].type.lo;
@@ -87,6 +93,15 @@ void Machine::cycle_pou(const Pou& pou) {
     if (chart_active_cur(c)) fire_chart(p_.charts[c]);
   // Phase 4.
   update_pou(pou);
+}
+
+void Machine::call_instance(const Pou& pou) {
+  // One cycle of a user function block instance, as the cycle runs a program; then its chart
+  // state is committed, so that a second call evolves from where this one left it.
+  cycle_pou(pou);
+  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = 0;
 }
 
 void Machine::fire(const Transition& t) {

@@ -36,6 +36,7 @@ Machine::Machine(const Program& p)
 
 void Machine::load(StateView state) {
   for (std::uint32_t f = 0; f < cur_.size(); ++f) cur_[f] = p_.layout.get(state, f);
+  if (p_.has_instances) base_ = cur_;
 }
 
 void Machine::pack(MutableStateView out) const {

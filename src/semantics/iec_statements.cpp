@@ -90,6 +90,9 @@ void Machine::exec_stmt(const Stmt& s) {
     case SOp::FbCall:
       fb_call(s);
       return;
+    case SOp::Call:
+      call_instance(p_.pous[s.target]);
+      return;
   }
 }
 

@@ -26,7 +26,8 @@ using model::StandardFb;
 using model::TypeKind;
 
 struct Ref {
-  enum Kind { Field, Input, FbInst } kind = Field;
+  /// Instance: a user function block instance; index is its scope (= its Pou).
+  enum Kind { Field, Input, FbInst, Instance } kind = Field;
   std::uint32_t index = 0;
   bool is_bool = true;
 };
@@ -34,6 +35,9 @@ struct Ref {
 struct PouScope {
   const model::Pou* pou = nullptr;
   std::uint32_t index = 0;
+  std::string name;   // the program "Main", or the instance path "Main.Crane"
+  std::string alias;  // instances: the path below the program, "Crane" ("" for programs)
+  bool instance = false;
   std::map<std::string, Ref> names;              // upper-case variable names
   std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
@@ -80,6 +84,25 @@ struct Compiler {
   void variables(const std::vector<const model::Pou*>& pous);
 
   void make_fb(std::uint32_t pi, const model::Variable& v);
+
+  // ---------------------------------------------------- user function block instances
+  static constexpr int kMaxInstanceDepth = 8;
+  /// Creates the scope (and so the Pou) of instance `v` of a user FB inside scope `parent`,
+  /// with its own fields, standard FB instances and nested instances. `types`: the FB types
+  /// being instantiated around it (recursion).
+  void instantiate(std::uint32_t parent, const model::Variable& v, int depth,
+                   std::vector<std::string>& types);
+  /// The scope that the leading parts of a dotted path name (instances, nested instances, or a
+  /// program of the project for `Main.x`); `used` is how many parts it took (0: none).
+  std::uint32_t path_scope(const PouScope& sc, const std::vector<std::string>& parts,
+                           std::size_t& used) const;
+  /// The field of a dotted variable `inst.x`, `a.b.x`, `Main.x` (nullopt after an error).
+  std::optional<Ref> dotted(const PouScope& sc, const std::string& path,
+                            const model::SourceLocation& where);
+  /// `inst(a := x, q => y);`: the input assignments, the Call, the output copies.
+  void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out);
+  /// Per instance Pou: the chart state fields a call commits.
+  void instance_commits();
 
   // ---------------------------------------------------------------------- expressions
   std::uint32_t node(Node n, std::vector<std::uint32_t> kids = {});

@@ -61,7 +61,9 @@ struct Node {
 
 // ------------------------------------------------------------------------------- statements
 
-enum class SOp : std::uint8_t { Assign, If, Case, FbCall };
+/// Call: one cycle of the user function block instance whose Pou is `target` (the inputs are
+/// assigned before it and the `=>` outputs copied after it by ordinary Assign statements).
+enum class SOp : std::uint8_t { Assign, If, Case, FbCall, Call };
 
 struct Block {
   std::uint32_t first = 0, count = 0;  ///< in Program::block_items
@@ -79,7 +81,7 @@ struct CaseArm {
 
 struct Stmt {
   SOp op = SOp::Assign;
-  std::uint32_t target = 0;  ///< Assign: field; FbCall: FB index
+  std::uint32_t target = 0;  ///< Assign: field; FbCall: FB index; Call: Pou index
   std::uint32_t expr = 0;    ///< Assign: value; Case: selector
   std::uint32_t arm_first = 0, arm_count = 0;
   Block else_body;
@@ -167,7 +169,14 @@ struct Action {
 };
 
 struct Pou {
-  std::string name;
+  std::string name;  ///< a program "Main", or an instance of a user FB "Main.Crane"
+  /// An instance of a user function block: the cycle does not run it; a Call statement of its
+  /// caller does (each call is one cycle of the instance: body, chart evolution, actions).
+  bool instance = false;
+  /// Instances: the chart state fields (step readiness and .T, action activity and memories)
+  /// that a call commits (cur := nxt), so that a second call in the same cycle evolves from
+  /// the situation the first one left and later code reads the new activity.
+  std::vector<std::uint32_t> commit;
   Block body;
   std::vector<std::uint32_t> charts;
   std::vector<std::uint32_t> exec_order;  ///< actions, in execution order
@@ -207,6 +216,7 @@ struct Program {
   std::vector<std::uint32_t> assumptions;        ///< nodes
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
+  bool has_instances = false;
 };
 
 /// Compiles; returns false with Error diagnostics when something cannot be modelled faithfully.
@@ -268,6 +278,7 @@ class Machine {
   bool timer_expired(const Timer& t, std::int64_t v) const;
 
   void cycle_pou(const Pou& pou);
+  void call_instance(const Pou& pou);
   void fire_chart(const Chart& c);
   void fire(const Transition& t);
   void update_pou(const Pou& pou);
@@ -276,6 +287,7 @@ class Machine {
 
   const Program& p_;
   std::vector<std::int64_t> cur_, nxt_;
+  std::vector<std::int64_t> base_;  ///< the loaded state (instance calls change cur_)
   std::vector<std::int64_t> in_lo_, in_hi_;
   std::vector<std::uint32_t> touched_;
   std::vector<Decision> trail_;
