@@ -34,8 +34,7 @@ void Compiler::structure() {
                 "step '" + st.name + "' is a Grafcet macro/enclosing step, not IEC 61131-3");
         Step s;
         s.short_name = st.name;
-        s.name =
-            sc.name + "." + (ch.parent_action.empty() ? "" : ch.parent_action + ".") + st.name;
+        s.name = sc.name + "." + (ch.parent_action.empty() ? "" : ch.parent_action + ".") + st.name;
         s.chart = cid;
         s.initial = st.initial;
         has_initial |= st.initial;

@@ -326,8 +326,8 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
       const auto& inner = scopes[si];
       if (used + 1 == parts.size()) {
         auto it = inner.names.find(model::to_upper(parts.back()));
-        if (it != inner.names.end() && (it->second.kind == Ref::Field ||
-                                        it->second.kind == Ref::Input)) {
+        if (it != inner.names.end() &&
+            (it->second.kind == Ref::Field || it->second.kind == Ref::Input)) {
           type = it->second.is_bool ? VT::Bool : VT::Int;
           Node n;
           n.op = it->second.kind == Ref::Field ? Op::Field : Op::Input;

@@ -197,8 +197,8 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
     auto it = callee.names.find(model::to_upper(output));
     if (!decl || decl->direction != model::VarDirection::Output || it == callee.names.end() ||
         it->second.kind != Ref::Field) {
-      error(s.where, "'" + s.target + "' (" + callee.pou->name + ") has no output '" + output +
-                         "'");
+      error(s.where,
+            "'" + s.target + "' (" + callee.pou->name + ") has no output '" + output + "'");
       continue;
     }
     std::optional<Ref> dst;

@@ -18,7 +18,8 @@ const std::string kHeader =
     "<fileHeader companyName=\"t\" productName=\"CODESYS\" productVersion=\"3.5\" "
     "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"plant\"/>\n"
     "<types><dataTypes/><pous>\n";
-const std::string kFooter = "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
+const std::string kFooter =
+    "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
 
 std::string vars(const std::string& section, const std::vector<std::string>& names,
                  const std::string& type = "<BOOL/>") {
@@ -44,8 +45,8 @@ std::string valve_fb(const std::string& name = "Valve") {
   auto guard = [](int id, int from, const char* cond) {
     return "<transition localId=\"" + std::to_string(id) +
            "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
-           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" +
-           st(cond) + "</inline></condition></transition>\n";
+           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" + st(cond) +
+           "</inline></condition></transition>\n";
   };
   return "<pou name=\"" + name + "\" pouType=\"functionBlock\"><interface>" +
          vars("inputVars", {"cmd"}) + vars("outputVars", {"open"}) +
@@ -68,13 +69,11 @@ std::string valve_fb(const std::string& name = "Valve") {
 std::string main_pou(const std::string& locals, const std::string& body) {
   return "<pou name=\"Main\" pouType=\"program\"><interface>" +
          vars("inputVars", {"req", "enable"}) + vars("outputVars", {"pump", "valve"}) +
-         "<localVars>" + locals + "</localVars></interface><body>" + st(body) +
-         "</body></pou>\n";
+         "<localVars>" + locals + "</localVars></interface><body>" + st(body) + "</body></pou>\n";
 }
 
 std::string instance(const std::string& name, const std::string& type) {
-  return "<variable name=\"" + name + "\"><type><derived name=\"" + type +
-         "\"/></type></variable>";
+  return "<variable name=\"" + name + "\"><type><derived name=\"" + type + "\"/></type></variable>";
 }
 
 std::string check(const std::string& file, const std::string& props) {
@@ -94,8 +93,9 @@ TEST(Instances, InterlockViolatedThroughAnInstanceOutput) {
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
   // The instance's step and variables are observable by their dotted names.
-  r = run_sfcv(check(file, "--ctl 'EF Main.V.Opened' --ctl 'AG (valve <-> V.open)' "
-                           "--ctl 'EF Main.V.open'"));
+  r = run_sfcv(check(file,
+                     "--ctl 'EF Main.V.Opened' --ctl 'AG (valve <-> V.open)' "
+                     "--ctl 'EF Main.V.open'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
@@ -148,13 +148,13 @@ TEST(Instances, NestedInstancesTwinCatStyle) {
       vars("inputVars", {"bRequest"}) + vars("outputVars", {"bBusy"}) + "<localVars>" +
       instance("fbValve", "Valve") + "</localVars></interface><body>" +
       st("fbValve(cmd := bRequest);\nbBusy := fbValve.open;") + "</body></pou>\n";
-  const auto file = write_temp(
-      kHeader + valve_fb() + station +
-          main_pou(instance("Station", "FB_Station"),
-                   "Station(bRequest := req);\nvalve := Station.fbValve.open;\npump := "
-                   "Station.bBusy AND enable;") +
-          kFooter,
-      ".xml");
+  const auto file =
+      write_temp(kHeader + valve_fb() + station +
+                     main_pou(instance("Station", "FB_Station"),
+                              "Station(bRequest := req);\nvalve := Station.fbValve.open;\npump := "
+                              "Station.bBusy AND enable;") +
+                     kFooter,
+                 ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG (pump -> valve)' --ctl 'EF Station.fbValve.Opened'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   r = run_sfcv(check(file, "--ctl 'AG !(valve & pump)'"));
@@ -167,19 +167,18 @@ TEST(Instances, UnmodelledInstanceConstructsAreRefused) {
   const std::string loop = "<pou name=\"Loop\" pouType=\"functionBlock\"><interface>" +
                            vars("outputVars", {"q"}) + "<localVars>" + instance("inner", "Loop") +
                            "</localVars></interface><body>" + st("q := TRUE;") + "</body></pou>\n";
-  auto file =
-      write_temp(kHeader + loop + main_pou(instance("L", "Loop"), "L();\nvalve := L.q;") + kFooter,
-                 ".xml");
+  auto file = write_temp(
+      kHeader + loop + main_pou(instance("L", "Loop"), "L();\nvalve := L.q;") + kFooter, ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG TRUE'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("recursion"), std::string::npos) << r.err;
   r = run_sfcv("lint " + file);
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   // An instance's action called from outside (TwinCAT's `Motor.ACT_Run();`).
-  file = write_temp(
-      kHeader + valve_fb() + main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") +
-          kFooter,
-      ".xml");
+  file =
+      write_temp(kHeader + valve_fb() +
+                     main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") + kFooter,
+                 ".xml");
   r = run_sfcv(check(file, "--pou Main --ctl 'AG TRUE'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("V.ACT_Open"), std::string::npos) << r.err;

@@ -293,7 +293,6 @@ TEST(Iec61131Circuit, AgreesOnProgramsWithoutSteps) {
   }
 }
 
-
 // User function block instances (issue 18): an SFC-bodied FB called conditionally and twice
 // in one cycle, an FB holding two nested instances (one called only on a rising edge), member
 // reads and writes through them, `=>` outputs, and an instance that is never called.
