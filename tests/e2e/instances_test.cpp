@@ -196,5 +196,64 @@ TEST(Instances, UnknownFunctionBlockTypeInTextIsRefused) {
   EXPECT_NE(r.err.find(":3:"), std::string::npos) << r.err;
 }
 
+// IEC 61131-3 text: `x : Fb;` declares an instance; `=>` binds an output; nested instances
+// deeper than 8 levels are refused at the innermost declaration.
+TEST(Instances, TextInstancesWithOutputBindingAndDepthLimit) {
+  const std::string fbs =
+      "FUNCTION_BLOCK Latch\n  VAR_INPUT set, reset : BOOL; END_VAR\n"
+      "  VAR_OUTPUT q : BOOL; END_VAR\n  IF set THEN q := TRUE; ELSIF reset THEN q := FALSE; "
+      "END_IF;\nEND_FUNCTION_BLOCK\n";
+  auto file = write_temp(fbs +
+                             "PROGRAM Main\n  VAR_INPUT a, b : BOOL; END_VAR\n"
+                             "  VAR_OUTPUT lamp, horn : BOOL; END_VAR\n  VAR l : Latch; END_VAR\n"
+                             "  l(set := a, reset := b, q => lamp);\n  horn := b;\nEND_PROGRAM\n",
+                         ".st");
+  auto r = run_sfcv(check(file, "--ctl 'AG (lamp <-> l.q)' --ctl 'EF (lamp & horn)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG !(lamp & horn)'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  // F0 holds an F1, ..., F9 holds an F10: ten levels below Main.
+  std::string deep;
+  for (int i = 0; i <= 10; ++i) {
+    deep += "FUNCTION_BLOCK F" + std::to_string(i) + "\n  VAR_OUTPUT q : BOOL; END_VAR\n";
+    if (i < 10) deep += "  VAR inner : F" + std::to_string(i + 1) + "; END_VAR\n";
+    deep += "  q := TRUE;\nEND_FUNCTION_BLOCK\n";
+  }
+  file = write_temp(deep +
+                        "PROGRAM Main\n  VAR_OUTPUT x : BOOL; END_VAR\n  VAR top : F0; END_VAR\n"
+                        "  top();\n  x := top.q;\nEND_PROGRAM\n",
+                    ".st");
+  r = run_sfcv(check(file, "--ctl 'AG TRUE'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("nested deeper than 8"), std::string::npos) << r.err;
+}
+
+// ------------------------------------------------------------------------------------ corpus
+
+// CODESYS's pick-and-place unit (07: Magazin, Crane, Stamp; 12: also Conveyor and Pusher) is
+// checked as the whole project: Main's ST body writes the instances' inputs, calls them inside
+// `IF emergency-stop sensors THEN`, reads their outputs. Main declares its Sensor_* as local
+// variables that nothing writes (the export holds no I/O mapping), so they stay FALSE: the
+// ELSIF branch runs every cycle, no instance is ever called, and every chart stays in Init.
+// Pinned: 2 states (the initial one and the one after the first cycle set the actuators).
+TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  for (const char* f : {"07_codesys_ppu_scenario3v1.xml", "12_codesys_ppu_scenario10.xml"}) {
+    SCOPED_TRACE(f);
+    const std::string path = "'" + (corpus / f).string() + "'";
+    auto r =
+        run_sfcv("check " + path +
+                 " --ctl 'AG (Crane.Init & Mag.Init & Stamp.Init)' --ctl 'AG !Actuator_CraneLower' "
+                 "--ctl 'AG (Main.Crane.Init.X <-> Crane.Init)' --checks none --trace none "
+                 "--timeout 120");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("2 states"), std::string::npos) << r.out;
+    // The instances exist and are distinct: a step of one instance is not another's.
+    r = run_sfcv("check " + path +
+                 " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::test
