@@ -81,11 +81,10 @@ std::optional<model::VarDirection> section_direction(std::string_view k) {
 /// `user_fbs`: the upper-case names of the project's function block POUs; a variable of such a
 /// derived type is an instance of that function block (its own copy of the FB's variables and
 /// charts, compiled by the semantics).
-void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
-                    const std::set<std::string>& user_fbs) {
-  for (auto section : element_children(interface)) {
-    const auto dir = section_direction(local_name(section));
-    if (!dir) continue;  // returnType, accessVars, documentation, addData
+void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection direction,
+                  model::Pou& pou, const std::set<std::string>& user_fbs) {
+  const std::optional<model::VarDirection> dir = direction;
+  {
     for (auto v : children(section, "variable")) {
       model::Variable var;
       var.name = trim(v.attribute("name").value());
@@ -146,6 +145,39 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
       pou.variables.push_back(std::move(var));
     }
   }
+}
+
+void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
+                    const std::set<std::string>& user_fbs) {
+  for (auto section : element_children(interface)) {
+    const auto dir = section_direction(local_name(section));
+    if (!dir) continue;  // returnType, accessVars, documentation, addData
+    read_section(ctx, section, *dir, pou, user_fbs);
+  }
+}
+
+/// Global variable lists: PLCopen `instances/configurations/configuration` and its `resource`s,
+/// and the `resource` CODESYS/TwinCAT keep under addData (GVLs: `globalVars name="GVL"`). Each
+/// list becomes a POU of its own name holding only VAR_GLOBALs (no body, no chart): the
+/// semantics gives each of its variables one field, shared by every POU that names it
+/// (unqualified, `GVL.x`, or through VAR_EXTERNAL).
+void read_global_lists(XmlContext& ctx, pugi::xml_node container, model::Project& project,
+                       const std::set<std::string>& user_fbs) {
+  for (auto gv : children(container, "globalVars")) {
+    model::Pou pou;
+    pou.name = trim(gv.attribute("name").value());
+    if (pou.name.empty()) pou.name = trim(container.attribute("name").value());
+    if (pou.name.empty()) pou.name = "GLOBALS";
+    pou.kind = model::PouKind::Program;
+    pou.where = ctx.where(gv);
+    read_section(ctx, gv, model::VarDirection::Global, pou, user_fbs);
+    if (project.find_pou(pou.name)) {
+      ctx.error(gv, "global variable list '" + pou.name + "' has the name of another POU");
+      continue;
+    }
+    project.pous.push_back(std::move(pou));
+  }
+  for (auto r : children(container, "resource")) read_global_lists(ctx, r, project, user_fbs);
 }
 
 // ----------------------------------------------------------------------------------------- POUs
@@ -385,6 +417,10 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
     }
     read_pou(ctx, p, project, user_fbs);
   }
+  for (auto conf : children(child(child(root, "instances"), "configurations"), "configuration"))
+    read_global_lists(ctx, conf, project, user_fbs);
+  for (auto data : children(child(root, "addData"), "data"))
+    read_global_lists(ctx, data, project, user_fbs);
   r.project = std::move(project);
   return r;
 }

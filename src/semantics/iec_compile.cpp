@@ -94,6 +94,21 @@ std::vector<const model::Pou*> Compiler::select() {
   return out;
 }
 
+bool Compiler::is_global_list(const model::Pou& pou) {
+  if (pou.kind != model::PouKind::Program || !pou.body.empty() || !pou.charts.empty() ||
+      !pou.actions.empty() || pou.body_unsupported || pou.variables.empty())
+    return false;
+  return std::all_of(pou.variables.begin(), pou.variables.end(), [](const model::Variable& v) {
+    return v.direction == model::VarDirection::Global;
+  });
+}
+
+std::optional<Ref> Compiler::global_ref(const std::string& upper_name) const {
+  auto it = global_fields.find(upper_name);
+  if (it == global_fields.end()) return std::nullopt;
+  return Ref{Ref::Field, it->second, static_cast<bool>(field_is_bool[it->second])};
+}
+
 model::Type Compiler::value_type(const model::Type& t) {
   if (t.kind == TypeKind::Time) return model::Type::integer("TIME", t.lo, t.hi);
   return t;
@@ -110,7 +125,7 @@ void Compiler::collect_written(const model::StmtList& body, const std::string& p
 void Compiler::variables(const std::vector<const model::Pou*>& pous) {
   // Providers: outputs and globals, by name, for connecting other POUs' inputs.
   std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> providers;  // name -> (pou, var)
-  std::map<std::string, std::uint32_t> globals;                              // name -> field
+  auto& globals = global_fields;                                             // name -> field
   std::map<std::string, int> name_count;
   auto is_input = [](const model::Variable& v) {
     return v.direction == model::VarDirection::Input ||
@@ -258,8 +273,16 @@ void Compiler::reject_foreign(const std::vector<const model::Pou*>& pous) {
 }
 
 bool Compiler::run() {
-  const auto pous = select();
+  auto pous = select();
   if (!ok) return false;
+  // Global variable lists first, so that their declarations (initial values) define the
+  // globals that programs and instances name.
+  std::vector<const model::Pou*> lists;
+  for (const auto& q : project.pous)
+    if (is_global_list(q) && std::find(pous.begin(), pous.end(), &q) == pous.end())
+      lists.push_back(&q);
+  first_program = static_cast<std::uint32_t>(lists.size());
+  pous.insert(pous.begin(), lists.begin(), lists.end());
   reject_foreign(pous);
   if (!ok) return false;
   variables(pous);
@@ -269,7 +292,10 @@ bool Compiler::run() {
   finish_timers();
   orders();
   for (const auto& a : p.options.assumptions)
-    if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
+    if (a)
+      p.assumptions.push_back(
+          bool_expr(scopes[std::min<std::size_t>(first_program, scopes.size() - 1)], a, -1,
+                    a->where, "assumption"));
   step_timers();
   instance_commits();
   step_observables();

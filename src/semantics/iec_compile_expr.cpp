@@ -222,8 +222,13 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
       type = VT::Int;
       return constant(e.value);
     case ExprKind::Name: {
-      if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end()) {
-        const auto& r = it->second;
+      std::optional<Ref> found;
+      if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end())
+        found = it->second;
+      else
+        found = global_ref(model::to_upper(e.name));  // an unqualified global
+      if (found) {
+        const auto& r = *found;
         if (r.kind == Ref::FbInst || r.kind == Ref::Instance) {
           error(e.where, "'" + e.name + "' is a function block instance; use one of its outputs");
           type = VT::Bool;

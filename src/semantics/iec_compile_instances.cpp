@@ -78,10 +78,18 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
         error(w.where, "VAR_IN_OUT '" + w.name + "' of function block " + type->name +
                            ": in/out parameters of instances are not modelled");
         continue;
-      case model::VarDirection::Global:
       case model::VarDirection::External:
-        error(w.where, "'" + w.name + "' of function block " + type->name +
-                           ": global and external variables of instances are not modelled");
+        // VAR_EXTERNAL: the global of that name, shared with everyone.
+        if (const auto g = global_ref(up); g && g->is_bool == (w.type.kind == TypeKind::Bool)) {
+          scopes[si].names[up] = *g;
+        } else {
+          error(w.where, "VAR_EXTERNAL '" + w.name + "' of function block " + type->name +
+                             ": no VAR_GLOBAL of that name and type in the project");
+        }
+        continue;
+      case model::VarDirection::Global:
+        error(w.where, "VAR_GLOBAL '" + w.name + "' declared inside function block " + type->name +
+                           " (not modelled)");
         continue;
       default:
         break;
@@ -206,6 +214,8 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
       dst = dotted(sc, var, s.where);
     } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
       dst = d->second;
+    } else if (auto g = global_ref(model::to_upper(var))) {
+      dst = g;
     } else {
       error(s.where, "output binding to unknown variable '" + var + "'");
     }

@@ -42,7 +42,11 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
   switch (s.kind) {
     case model::StmtKind::Assign: {
       out.op = SOp::Assign;
-      auto it = sc.names.find(model::to_upper(s.target));
+      std::optional<Ref> found;
+      if (auto it = sc.names.find(model::to_upper(s.target)); it != sc.names.end())
+        found = it->second;
+      else
+        found = global_ref(model::to_upper(s.target));  // an unqualified global
       VT t;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
       if (s.target.find('.') != std::string::npos) {
@@ -57,14 +61,13 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
               error(s.where, "type mismatch in the assignment to '" + s.target + "'");
           }
         }
-      } else if (it == sc.names.end()) {
+      } else if (!found) {
         error(s.where, "assignment to unknown variable '" + s.target + "'");
-      } else if (it->second.kind != Ref::Field) {
-        error(s.where,
-              "assignment to '" + s.target + "', which is " +
-                  (it->second.kind == Ref::Input ? "an input" : "a function block instance"));
+      } else if (found->kind != Ref::Field) {
+        error(s.where, "assignment to '" + s.target + "', which is " +
+                           (found->kind == Ref::Input ? "an input" : "a function block instance"));
       } else {
-        out.target = it->second.index;
+        out.target = found->index;
         if (field_is_bool[out.target] && s.value) t = bool_if_literal(*s.value, t);
         if ((t == VT::Bool) != static_cast<bool>(field_is_bool[out.target]))
           error(s.where, "type mismatch in the assignment to '" + s.target + "'");

@@ -228,6 +228,38 @@ TEST(Instances, TextInstancesWithOutputBindingAndDepthLimit) {
   EXPECT_NE(r.err.find("nested deeper than 8"), std::string::npos) << r.err;
 }
 
+// Global variables: a TwinCAT GVL (addData resource, `globalVars name="GVL"`, read as `GVL.x`)
+// and a PLCopen configuration's global list bound through VAR_EXTERNAL, written inside an FB
+// instance and read by the program: one field shared by everyone.
+TEST(Instances, GlobalVariableListsAreSharedFields) {
+  const std::string alarm = "<pou name=\"Alarm\" pouType=\"functionBlock\"><interface>" +
+                            vars("inputVars", {"x"}) + vars("externalVars", {"bAlarm"}) +
+                            "</interface><body>" + st("bAlarm := x AND NOT GVL.bReset;") +
+                            "</body></pou>\n";
+  const std::string main =
+      "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"req", "enable"}) +
+      vars("outputVars", {"pump"}) + vars("externalVars", {"bAlarm"}) + "<localVars>" +
+      instance("A", "Alarm") + "</localVars></interface><body>" +
+      st("GVL.bReset := enable;\nA(x := req);\npump := bAlarm;") + "</body></pou>\n";
+  const std::string tail =
+      "</pous></types>\n<instances><configurations><configuration name=\"Cfg\"><resource "
+      "name=\"Res\"><globalVars>" +
+      "<variable name=\"bAlarm\"><type><BOOL/></type></variable></globalVars></resource>"
+      "</configuration></configurations></instances>\n<addData><data "
+      "name=\"http://www.3s-software.com/plcopenxml/application\" "
+      "handleUnknown=\"implementation\"><resource name=\"PlcTask\"><globalVars name=\"GVL\">"
+      "<variable name=\"bReset\"><type><BOOL/></type></variable></globalVars></resource></data>"
+      "</addData>\n</project>\n";
+  const auto file = write_temp(kHeader + alarm + main + tail, ".xml");
+  // If the FB's bAlarm were not Main's, pump would stay FALSE.
+  auto r = run_sfcv(check(file,
+                          "--ctl 'EF pump' --ctl 'AG (pump -> !GVL.bReset)' "
+                          "--ctl 'AG (bAlarm <-> pump)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG !pump'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
 // ------------------------------------------------------------------------------------ corpus
 
 // CODESYS's pick-and-place unit (07: Magazin, Crane, Stamp; 12: also Conveyor and Pusher) is

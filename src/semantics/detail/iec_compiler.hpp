@@ -58,8 +58,12 @@ struct Compiler {
   std::vector<PouScope> scopes;
   std::map<std::string, std::uint32_t> inputs_by_name;
   std::vector<std::uint8_t> field_is_bool;
-  std::set<std::string> written;   // "POU|VAR" upper-case: variables some statement assigns
-  std::set<std::string> inlining;  // upper-case actions whose call is being compiled
+  std::set<std::string> written;  // "POU|VAR" upper-case: variables some statement assigns
+  // VAR_GLOBAL fields by upper-case name: one field per global, shared by every POU and
+  // instance that names it (VAR_EXTERNAL, unqualified, or `GVL.x`).
+  std::map<std::string, std::uint32_t> global_fields;
+  std::uint32_t first_program = 0;  // scopes before it are global variable lists
+  std::set<std::string> inlining;   // upper-case actions whose call is being compiled
   std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
   std::set<std::uint32_t> called_timers;                      // FB indices of called timers
   // Step .T: constants compared with, and nodes to patch once regions are known.
@@ -75,6 +79,10 @@ struct Compiler {
 
   // ---------------------------------------------------------------------- POU selection
   std::vector<const model::Pou*> select();
+  /// A global variable list (a PLCopen/TwinCAT GVL read as a PROGRAM with only VAR_GLOBALs).
+  static bool is_global_list(const model::Pou& pou);
+  /// The field of global `name` (upper-case), if one is declared.
+  std::optional<Ref> global_ref(const std::string& upper_name) const;
 
   // ------------------------------------------------------------------------- variables
   static model::Type value_type(const model::Type& t);
