@@ -4,6 +4,8 @@
 // vendor dialects (Beremiz, CODESYS, TwinCAT) go through the same code. POUs are read from
 // types/pous and from the addData sections where CODESYS/TwinCAT keep them.
 
+#include <algorithm>
+#include <functional>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -416,6 +418,33 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
       continue;
     }
     read_pou(ctx, p, project, user_fbs);
+  }
+  // Task order: the programs a configuration's tasks name (`pouInstance typeName="Main"`, or
+  // TwinCAT's `pouInstance name="MAIN"` in addData) run first, in that order; the semantics
+  // runs the programs in the order of project.pous.
+  std::vector<std::string> task_order;
+  std::function<void(pugi::xml_node)> find_tasks = [&](pugi::xml_node n) {
+    for (auto c : element_children(n)) {
+      if (local_name(c) == "pouInstance") {
+        std::string type = trim(c.attribute("typeName").value());
+        if (type.empty()) type = trim(c.attribute("name").value());
+        if (!type.empty()) task_order.push_back(model::to_upper(type));
+      } else if (local_name(c) != "pou") {
+        find_tasks(c);
+      }
+    }
+  };
+  find_tasks(child(root, "instances"));
+  find_tasks(child(root, "addData"));
+  if (!task_order.empty()) {
+    auto rank = [&](const model::Pou& q) {
+      const auto it = std::find(task_order.begin(), task_order.end(), model::to_upper(q.name));
+      return q.kind == model::PouKind::Program && it != task_order.end()
+                 ? it - task_order.begin()
+                 : static_cast<std::ptrdiff_t>(task_order.size());
+    };
+    std::stable_sort(project.pous.begin(), project.pous.end(),
+                     [&](const model::Pou& a, const model::Pou& b) { return rank(a) < rank(b); });
   }
   for (auto conf : children(child(child(root, "instances"), "configurations"), "configuration"))
     read_global_lists(ctx, conf, project, user_fbs);
