@@ -363,9 +363,12 @@ model::StmtPtr Parser::statement() {
       if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
       target += "." + next().text;
     }
-    if (at(TokenKind::LParen))
-      fail(t, "unsupported: call of '" + target +
-                  "' (an action or method of a function block instance)");
+    if (at(TokenKind::LParen)) {
+      // `inst.ACT();` (TwinCAT): a call of an action of a function block instance.
+      Token call = t;
+      call.text = target;
+      return fb_call(call);
+    }
     expect(TokenKind::Assign, "':='");
     ExprPtr value = expression();
     end_statement("the assignment");

@@ -113,6 +113,40 @@ void Validator::check_statements(const StmtList& body, const SourceLocation& fal
 }
 
 void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
+  if (const auto dot = s.target.rfind('.'); dot != std::string::npos) {
+    // `inst.ACT();`: an action of a user function block instance (`a.b.ACT()` nested).
+    const std::string owner = s.target.substr(0, dot), action = s.target.substr(dot + 1);
+    const Pou* type = nullptr;
+    const Pou* scope = pou_;
+    for (std::size_t from = 0; scope;) {
+      const auto d = owner.find('.', from);
+      const Variable* v =
+          scope->find_variable(owner.substr(from, d == std::string::npos ? d : d - from));
+      if (!v || v->type.kind != TypeKind::FunctionBlock || v->type.fb != StandardFb::None) {
+        scope = nullptr;
+        break;
+      }
+      type = project_.find_pou(v->type.name);
+      if (!type) return;  // a type this model does not hold: the compiler reports it
+      scope = type;
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    if (!scope) {
+      error(here, "call of " + quoted(s.target) + ": " + quoted(owner) +
+                      " is not an instance of a user function block of this model");
+      return;
+    }
+    if (const Variable* inner = type->find_variable(action);
+        inner && inner->type.kind == TypeKind::FunctionBlock) {
+      return;  // `a.b(...)`: a call of a nested instance, checked by the compiler
+    }
+    if (!s.arguments.empty() || !s.outputs.empty())
+      error(here, "call of action " + quoted(s.target) + " with parameters");
+    else if (!type->find_action(action))
+      error(here, "function block " + type->name + " has no action " + quoted(action));
+    return;
+  }
   const Variable* v = pou_->find_variable(s.target);
   // `ACT();`: a call of an action of the POU (IEC 61131-3 lets a body call its actions).
   if (!v && s.arguments.empty() && pou_->find_action(s.target)) return;

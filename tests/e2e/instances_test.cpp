@@ -174,14 +174,30 @@ TEST(Instances, UnmodelledInstanceConstructsAreRefused) {
   EXPECT_NE(r.err.find("recursion"), std::string::npos) << r.err;
   r = run_sfcv("lint " + file);
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  // An instance's action called from outside (TwinCAT's `Motor.ACT_Run();`).
-  file =
+}
+
+// TwinCAT calls actions of instances (`Motor.ACT_Run();`) and instances nested in others
+// (`PPU.Stack();`): an ST action runs at that point on the instance's variables, without a
+// cycle of the instance's chart.
+TEST(Instances, ActionsAndNestedInstancesCalledByPath) {
+  auto file =
       write_temp(kHeader + valve_fb() +
                      main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") + kFooter,
                  ".xml");
-  r = run_sfcv(check(file, "--pou Main --ctl 'AG TRUE'"));
-  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("V.ACT_Open"), std::string::npos) << r.err;
+  auto r =
+      run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'EF valve' --ctl 'AG (valve <-> V.open)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string station = "<pou name=\"FB_Station\" pouType=\"functionBlock\"><interface>" +
+                              vars("outputVars", {"bBusy"}) + "<localVars>" +
+                              instance("fbValve", "Valve") + "</localVars></interface><body>" +
+                              st("bBusy := fbValve.open;") + "</body></pou>\n";
+  file = write_temp(kHeader + valve_fb() + station +
+                        main_pou(instance("Station", "FB_Station"),
+                                 "Station.fbValve(cmd := req);\nvalve := Station.fbValve.open;") +
+                        kFooter,
+                    ".xml");
+  r = run_sfcv(check(file, "--ctl 'EF valve' --ctl 'EF Station.fbValve.Opened'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
 // IEC 61131-3 text: an FB type that the project does not declare is refused at its location.
@@ -285,6 +301,16 @@ TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
                  " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120");
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   }
+}
+
+// TwinCAT's xPPU (09): MAIN calls `PPU.Stack();` and the PPU calls SFC actions of its
+// instances (`Crane.ACT_AutomaticExecute();`, one step of a chart per call): refused by name.
+TEST(InstancesCorpus, TwinCatSfcActionCallsAreRefused) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "09_twincat_xppu_scenario1.xml").string() + "'";
+  const auto r = run_sfcv("check " + path + " --ctl 'AG TRUE' --trace none");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("calling an SFC action of an instance"), std::string::npos) << r.err;
 }
 
 }  // namespace
