@@ -70,6 +70,19 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
     error(here, "assignment to step flag " + quoted(target) + " (step flags are read-only)");
     return std::nullopt;
   }
+  if (!v && !pou_->find_action(name) && project_.find_pou(name)) {
+    // `GVL.x := v`, `Main.x := v`: a variable of a global list or of another program.
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto d = target.find('.', from);
+      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    if (t == Ty::Unknown) return std::nullopt;
+    return t;
+  }
   if (!v && !pou_->find_action(name) && !project_.find_pou(name)) {
     outside_model(here, target, name);
     return std::nullopt;
