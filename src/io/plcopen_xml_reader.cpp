@@ -4,6 +4,8 @@
 // vendor dialects (Beremiz, CODESYS, TwinCAT) go through the same code. POUs are read from
 // types/pous and from the addData sections where CODESYS/TwinCAT keep them.
 
+#include <algorithm>
+#include <functional>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -78,10 +80,13 @@ std::optional<model::VarDirection> section_direction(std::string_view k) {
   return std::nullopt;
 }
 
-void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) {
-  for (auto section : element_children(interface)) {
-    const auto dir = section_direction(local_name(section));
-    if (!dir) continue;  // returnType, accessVars, documentation, addData
+/// `user_fbs`: the upper-case names of the project's function block POUs; a variable of such a
+/// derived type is an instance of that function block (its own copy of the FB's variables and
+/// charts, compiled by the semantics).
+void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection direction,
+                  model::Pou& pou, const std::set<std::string>& user_fbs) {
+  const std::optional<model::VarDirection> dir = direction;
+  {
     for (auto v : children(section, "variable")) {
       model::Variable var;
       var.name = trim(v.attribute("name").value());
@@ -93,7 +98,15 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) 
         continue;
       }
       const auto type_el = element_children(child(v, "type"));
-      const auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
+      auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
+      if (!t.type && !type_el.empty() && local_name(type_el.front()) == "derived" &&
+          user_fbs.count(model::to_upper(t.written))) {
+        model::Type fb;
+        fb.kind = model::TypeKind::FunctionBlock;
+        fb.fb = model::StandardFb::None;
+        fb.name = t.written;
+        t.type = fb;
+      }
       if (!t.type) {
         ctx.warning(v, "unsupported type " + t.written + " of variable '" + var.name +
                            "': variable ignored");
@@ -136,6 +149,39 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou) 
   }
 }
 
+void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
+                    const std::set<std::string>& user_fbs) {
+  for (auto section : element_children(interface)) {
+    const auto dir = section_direction(local_name(section));
+    if (!dir) continue;  // returnType, accessVars, documentation, addData
+    read_section(ctx, section, *dir, pou, user_fbs);
+  }
+}
+
+/// Global variable lists: PLCopen `instances/configurations/configuration` and its `resource`s,
+/// and the `resource` CODESYS/TwinCAT keep under addData (GVLs: `globalVars name="GVL"`). Each
+/// list becomes a POU of its own name holding only VAR_GLOBALs (no body, no chart): the
+/// semantics gives each of its variables one field, shared by every POU that names it
+/// (unqualified, `GVL.x`, or through VAR_EXTERNAL).
+void read_global_lists(XmlContext& ctx, pugi::xml_node container, model::Project& project,
+                       const std::set<std::string>& user_fbs) {
+  for (auto gv : children(container, "globalVars")) {
+    model::Pou pou;
+    pou.name = trim(gv.attribute("name").value());
+    if (pou.name.empty()) pou.name = trim(container.attribute("name").value());
+    if (pou.name.empty()) pou.name = "GLOBALS";
+    pou.kind = model::PouKind::Program;
+    pou.where = ctx.where(gv);
+    read_section(ctx, gv, model::VarDirection::Global, pou, user_fbs);
+    if (project.find_pou(pou.name)) {
+      ctx.error(gv, "global variable list '" + pou.name + "' has the name of another POU");
+      continue;
+    }
+    project.pous.push_back(std::move(pou));
+  }
+  for (auto r : children(container, "resource")) read_global_lists(ctx, r, project, user_fbs);
+}
+
 // ----------------------------------------------------------------------------------------- POUs
 
 void find_addData_pous(pugi::xml_node node, std::vector<pugi::xml_node>& out) {
@@ -159,7 +205,8 @@ std::string list_instances(const model::StmtList& calls) {
   return s;
 }
 
-void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
+void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
+              const std::set<std::string>& user_fbs) {
   model::Pou pou;
   pou.name = trim(node.attribute("name").value());
   pou.where = ctx.where(node);
@@ -172,7 +219,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project) {
     pou.kind = model::PouKind::Program;
   else
     ctx.warning(node, "unknown pouType '" + type + "': read as a program");
-  read_variables(ctx, child(node, "interface"), pou);
+  read_variables(ctx, child(node, "interface"), pou, user_fbs);
 
   PouContext pc{ctx, node, pou, {}, {}, {}, 0};
   for (auto t : children(child(node, "transitions"), "transition"))
@@ -355,6 +402,10 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
 
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
+  std::set<std::string> user_fbs;
+  for (auto p : pous)
+    if (std::string_view(p.attribute("pouType").value()) == "functionBlock")
+      user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
   std::set<std::string> seen;
   for (auto p : pous) {
     const std::string name = trim(p.attribute("name").value());
@@ -366,8 +417,39 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
       ctx.error(p, "duplicate POU '" + name + "'");
       continue;
     }
-    read_pou(ctx, p, project);
+    read_pou(ctx, p, project, user_fbs);
   }
+  // Task order: the programs a configuration's tasks name (`pouInstance typeName="Main"`, or
+  // TwinCAT's `pouInstance name="MAIN"` in addData) run first, in that order; the semantics
+  // runs the programs in the order of project.pous.
+  std::vector<std::string> task_order;
+  std::function<void(pugi::xml_node)> find_tasks = [&](pugi::xml_node n) {
+    for (auto c : element_children(n)) {
+      if (local_name(c) == "pouInstance") {
+        std::string type = trim(c.attribute("typeName").value());
+        if (type.empty()) type = trim(c.attribute("name").value());
+        if (!type.empty()) task_order.push_back(model::to_upper(type));
+      } else if (local_name(c) != "pou") {
+        find_tasks(c);
+      }
+    }
+  };
+  find_tasks(child(root, "instances"));
+  find_tasks(child(root, "addData"));
+  if (!task_order.empty()) {
+    auto rank = [&](const model::Pou& q) {
+      const auto it = std::find(task_order.begin(), task_order.end(), model::to_upper(q.name));
+      return q.kind == model::PouKind::Program && it != task_order.end()
+                 ? it - task_order.begin()
+                 : static_cast<std::ptrdiff_t>(task_order.size());
+    };
+    std::stable_sort(project.pous.begin(), project.pous.end(),
+                     [&](const model::Pou& a, const model::Pou& b) { return rank(a) < rank(b); });
+  }
+  for (auto conf : children(child(child(root, "instances"), "configurations"), "configuration"))
+    read_global_lists(ctx, conf, project, user_fbs);
+  for (auto data : children(child(root, "addData"), "data"))
+    read_global_lists(ctx, data, project, user_fbs);
   r.project = std::move(project);
   return r;
 }

@@ -301,12 +301,18 @@ ExprPtr Parser::primary() {
     return model::make_member(t.text, std::to_string(bit.value), loc);
   }
   if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '" + t.text + ".'");
-  const Token& member = next();
-  if (at(TokenKind::Dot))
-    fail(peek(), "unsupported: nested member access '" + t.text + "." + member.text + ".'");
+  // `a.b.c` (a member of a nested instance): name "a.b", member "c".
+  std::string base = t.text;
+  const Token* member = &next();
+  while (at(TokenKind::Dot)) {
+    next();
+    if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
+    base += "." + member->text;
+    member = &next();
+  }
   if (at(TokenKind::LParen))
-    fail(member, "unsupported: call of method '" + t.text + "." + member.text + "'");
-  return model::make_member(t.text, member.text, loc);
+    fail(*member, "unsupported: call of method '" + base + "." + member->text + "'");
+  return model::make_member(base, member->text, loc);
 }
 
 // ------------------------------------------------------------------------------- statements
@@ -361,9 +367,24 @@ model::StmtPtr Parser::statement() {
     return model::make_assign(t.text, value, where(t));
   }
   if (at(TokenKind::LParen)) return fb_call(t);
-  if (at(TokenKind::Dot))
-    fail(t, "unsupported: assignment to a member of '" + t.text +
-                "' (pass FB inputs in the call: inst(IN := x))");
+  if (at(TokenKind::Dot)) {
+    // `inst.x := v` (a member of a function block instance, possibly nested: `a.b.x`).
+    std::string target = t.text;
+    while (accept(TokenKind::Dot)) {
+      if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
+      target += "." + next().text;
+    }
+    if (at(TokenKind::LParen)) {
+      // `inst.ACT();` (TwinCAT): a call of an action of a function block instance.
+      Token call = t;
+      call.text = target;
+      return fb_call(call);
+    }
+    expect(TokenKind::Assign, "':='");
+    ExprPtr value = expression();
+    end_statement("the assignment");
+    return model::make_assign(target, value, where(t));
+  }
   if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
   if (at(TokenKind::Colon))
     fail(t,
@@ -375,6 +396,7 @@ model::StmtPtr Parser::statement() {
 model::StmtPtr Parser::fb_call(const Token& name) {
   expect(TokenKind::LParen, "'('");
   std::vector<std::pair<std::string, ExprPtr>> args;
+  std::vector<std::pair<std::string, std::string>> outputs;
   if (!at(TokenKind::RParen)) {
     do {
       if (at_word("NOT") && at(TokenKind::Identifier, 1) && at(TokenKind::Arrow, 2))
@@ -385,15 +407,29 @@ model::StmtPtr Parser::fb_call(const Token& name) {
                          "' (write IN := value)");
       }
       const Token& input = next();
-      if (at(TokenKind::Arrow))
-        fail(peek(), "unsupported: output assignment '=>' in the call of '" + name.text + "'");
+      if (accept(TokenKind::Arrow)) {  // `Q => y`: y receives the output after the call
+        if (!at(TokenKind::Identifier)) fail_unexpected("a variable after '=>'");
+        std::string var = next().text;
+        while (accept(TokenKind::Dot)) {
+          if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
+          var += "." + next().text;
+        }
+        outputs.emplace_back(input.text, std::move(var));
+        continue;
+      }
       next();
       args.emplace_back(input.text, expression());
     } while (accept(TokenKind::Comma));
   }
   expect(TokenKind::RParen, "',' or ')'");
   end_statement("the call of '" + name.text + "'");
-  return model::make_fb_call(name.text, std::move(args), where(name));
+  auto call = model::make_fb_call(name.text, std::move(args), where(name));
+  if (!outputs.empty()) {
+    auto s = std::make_shared<model::Stmt>(*call);
+    s->outputs = std::move(outputs);
+    return s;
+  }
+  return call;
 }
 
 model::StmtPtr Parser::if_statement() {
@@ -537,6 +573,15 @@ model::Type Parser::var_type() {
     fail(t, "unsupported type " + name + " (sfcv models BOOL, integers, TIME and standard FBs)");
   next();
   auto type = model::elementary_type(name);
+  if (!type && !at(TokenKind::LParen)) {
+    // Any other name is an instance of a user function block; the semantics looks the type up
+    // in the project and refuses, with this location, a name that is no FUNCTION_BLOCK of it.
+    model::Type fb;
+    fb.kind = model::TypeKind::FunctionBlock;
+    fb.fb = model::StandardFb::None;
+    fb.name = t.text;
+    return fb;
+  }
   if (!type)
     fail(t,
          "unsupported type '" + t.text + "' (sfcv models BOOL, integers, TIME and standard FBs)");

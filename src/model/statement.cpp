@@ -32,8 +32,12 @@ bool equal(const Stmt& a, const Stmt& b) {
       to_upper(a.target) != to_upper(b.target) || !equal(a.value, b.value) ||
       a.conditions.size() != b.conditions.size() || a.labels != b.labels ||
       a.bodies.size() != b.bodies.size() || !equal(a.else_body, b.else_body) ||
-      a.arguments.size() != b.arguments.size())
+      a.arguments.size() != b.arguments.size() || a.outputs.size() != b.outputs.size())
     return false;
+  for (std::size_t i = 0; i < a.outputs.size(); ++i)
+    if (to_upper(a.outputs[i].first) != to_upper(b.outputs[i].first) ||
+        to_upper(a.outputs[i].second) != to_upper(b.outputs[i].second))
+      return false;
   for (std::size_t i = 0; i < a.conditions.size(); ++i)
     if (!equal(a.conditions[i], b.conditions[i])) return false;
   for (std::size_t i = 0; i < a.bodies.size(); ++i)
@@ -65,6 +69,10 @@ void print(const StmtList& body, int indent, std::string& out) {
         for (std::size_t i = 0; i < s->arguments.size(); ++i) {
           if (i) out += ", ";
           out += s->arguments[i].first + " := " + to_st(s->arguments[i].second);
+        }
+        for (std::size_t i = 0; i < s->outputs.size(); ++i) {
+          if (i || !s->arguments.empty()) out += ", ";
+          out += s->outputs[i].first + " => " + s->outputs[i].second;
         }
         out += ");\n";
         break;

@@ -40,7 +40,7 @@ struct Stmt {
   StmtKind kind = StmtKind::Assign;
   SourceLocation where;
 
-  // Assign: target := value. FbCall: target is the instance name.
+  // Assign: target := value (target may be dotted: `inst.x`). FbCall: target is the instance.
   std::string target;
   ExprPtr value;
 
@@ -57,6 +57,8 @@ struct Stmt {
   // For: the TO bound and the BY increment (null when BY is omitted, i.e. 1).
   ExprPtr limit;
   ExprPtr step;
+  // FbCall: output bindings `Q => y` (the instance's output, the variable it is copied to).
+  std::vector<std::pair<std::string, std::string>> outputs;
 };
 
 StmtPtr make_assign(std::string target, ExprPtr value, SourceLocation where = {});

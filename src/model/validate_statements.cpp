@@ -36,6 +36,19 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
     return std::nullopt;
   }
   const std::string member = target.substr(dot + 1);
+  if (v && v->type.kind == TypeKind::FunctionBlock && v->type.fb == StandardFb::None) {
+    // `inst.x := v`, `a.b.x := v`: a variable of a user function block instance.
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto d = target.find('.', from);
+      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    if (t == Ty::Unknown) return std::nullopt;
+    return t;
+  }
   if (v && v->type.kind == TypeKind::FunctionBlock) {
     const auto m = fb_member(v->type.fb, member);
     if (!m) {
@@ -56,6 +69,19 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
   if (!v && step_exists(name)) {
     error(here, "assignment to step flag " + quoted(target) + " (step flags are read-only)");
     return std::nullopt;
+  }
+  if (!v && !pou_->find_action(name) && project_.find_pou(name)) {
+    // `GVL.x := v`, `Main.x := v`: a variable of a global list or of another program.
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto d = target.find('.', from);
+      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    if (t == Ty::Unknown) return std::nullopt;
+    return t;
   }
   if (!v && !pou_->find_action(name) && !project_.find_pou(name)) {
     outside_model(here, target, name);
@@ -121,6 +147,40 @@ void Validator::check_statements(const StmtList& body, const SourceLocation& fal
 }
 
 void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
+  if (const auto dot = s.target.rfind('.'); dot != std::string::npos) {
+    // `inst.ACT();`: an action of a user function block instance (`a.b.ACT()` nested).
+    const std::string owner = s.target.substr(0, dot), action = s.target.substr(dot + 1);
+    const Pou* type = nullptr;
+    const Pou* scope = pou_;
+    for (std::size_t from = 0; scope;) {
+      const auto d = owner.find('.', from);
+      const Variable* v =
+          scope->find_variable(owner.substr(from, d == std::string::npos ? d : d - from));
+      if (!v || v->type.kind != TypeKind::FunctionBlock || v->type.fb != StandardFb::None) {
+        scope = nullptr;
+        break;
+      }
+      type = project_.find_pou(v->type.name);
+      if (!type) return;  // a type this model does not hold: the compiler reports it
+      scope = type;
+      if (d == std::string::npos) break;
+      from = d + 1;
+    }
+    if (!scope) {
+      error(here, "call of " + quoted(s.target) + ": " + quoted(owner) +
+                      " is not an instance of a user function block of this model");
+      return;
+    }
+    if (const Variable* inner = type->find_variable(action);
+        inner && inner->type.kind == TypeKind::FunctionBlock) {
+      return;  // `a.b(...)`: a call of a nested instance, checked by the compiler
+    }
+    if (!s.arguments.empty() || !s.outputs.empty())
+      error(here, "call of action " + quoted(s.target) + " with parameters");
+    else if (!type->find_action(action))
+      error(here, "function block " + type->name + " has no action " + quoted(action));
+    return;
+  }
   const Variable* v = pou_->find_variable(s.target);
   // `ACT();`: a call of an action of the POU (IEC 61131-3 lets a body call its actions).
   if (!v && s.arguments.empty() && pou_->find_action(s.target)) return;
@@ -133,6 +193,34 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
                     " variable, not a function block instance");
     return;
   }
+  if (v->type.fb == StandardFb::None) {  // a user function block: its own declarations
+    const Pou* type = project_.find_pou(v->type.name);
+    if (!type) return;  // the compiler reports the missing type
+    for (const auto& [param, value] : s.arguments) {
+      const Variable* m = type->find_variable(param);
+      if (!m || m->direction != VarDirection::Input) {
+        error(here, "function block " + type->name + " has no input " + quoted(param));
+        continue;
+      }
+      if (!value) continue;
+      const auto want = value_type(m->type);
+      const Ty t = type_of(*value, here);
+      if (want && clash(t, *want))
+        error(at(value->where, here), "parameter " + param + " of " + type->name + " expects " +
+                                          ty_name(*want) + ", got " + ty_name(t));
+    }
+    for (const auto& [out, var] : s.outputs) {
+      const Variable* m = type->find_variable(out);
+      if (!m || m->direction != VarDirection::Output)
+        error(here, "function block " + type->name + " has no output " + quoted(out));
+      else
+        assignable(var, here);
+    }
+    return;
+  }
+  if (!s.outputs.empty())
+    error(here, "output binding '=>' in the call of standard function block " + quoted(s.target) +
+                    " (read " + s.target + ".Q after the call)");
   for (const auto& [param, value] : s.arguments) {
     const auto m = fb_member(v->type.fb, param);
     if (!m) {

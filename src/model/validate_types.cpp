@@ -278,6 +278,23 @@ Ty Validator::resolve_path(const std::vector<std::string>& parts, const Pou& sco
   const std::string& member = parts[1];
   const bool simple = parts.size() == 2;
   if (const Variable* v = scope.find_variable(base)) {
+    if (v->type.kind == TypeKind::FunctionBlock && v->type.fb == StandardFb::None) {
+      // An instance of a user function block: its member, in the FB's own declarations (a
+      // type this model does not hold is the compiler's error, with its location).
+      const Pou* type = project_.find_pou(v->type.name);
+      if (!type) return Ty::Unknown;
+      const std::vector<std::string> rest(parts.begin() + 1, parts.end());
+      if (!simple) return resolve_path(rest, *type, false, here, full);
+      const Variable* m = type->find_variable(member);
+      if (!m) {
+        error(here, "function block " + type->name + " declares no variable " + quoted(member) +
+                        " (in " + full + ")");
+        return Ty::Unknown;
+      }
+      if (auto t = value_type(m->type)) return *t;
+      error(here, "function block instance " + quoted(full) + " used as a value");
+      return Ty::Unknown;
+    }
     if (v->type.kind == TypeKind::FunctionBlock) {
       if (auto m = fb_member(v->type.fb, member); m && simple) return m->type;
       error(here, "function block " + v->type.name + " has no member " + quoted(member) + " (in " +

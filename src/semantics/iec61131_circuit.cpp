@@ -169,10 +169,15 @@ class SymbolicMachine {
                 aig_.make_and(guard, aig_.make_not(aig_.make_or(left_loop_, returned_))));
   }
   /// A top-level body (a POU's or an action's): RETURN ends it.
+  // A body (a POU's, an action's, or a called instance's inside its caller's) leaves by RETURN
+  // on its own paths only: the caller's RETURN and loop exits are kept across it.
   void exec_body(Block b, AigLit guard) {
-    returned_ = Aig::kFalse;
+    const AigLit returned = returned_, left_loop = left_loop_, exit = exit_;
+    returned_ = left_loop_ = exit_ = Aig::kFalse;
     exec_block(b, guard);
-    returned_ = Aig::kFalse;
+    returned_ = returned;
+    left_loop_ = left_loop;
+    exit_ = exit;
   }
   void exec_stmt(const Stmt& s, AigLit guard);
   void exec_loop(const Stmt& s, AigLit guard);
@@ -206,11 +211,14 @@ class SymbolicMachine {
   }
 
   // -------------------------------------------------------------------- the cycle
+  /// `guard`: the path condition of a called instance's cycle (a Call under an IF); a program
+  /// runs under the inputs' constraint only, and its state updates are unconditional.
   void cycle_pou(const Pou& pou, AigLit guard);
+  void call_instance(const Pou& pou, AigLit guard);
   void fire_chart(const Chart& c, AigLit guard);
   void fire(const Transition& t, AigLit when);
   void update_pou(const Pou& pou, AigLit guard);
-  void step_times(const Pou& pou);
+  void step_times(const Pou& pou, AigLit guard);
 
   const Program& p_;
   TransitionCircuit& c_;
@@ -406,6 +414,9 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
       return;
     case SOp::Return:
       returned_ = aig_.make_or(returned_, guard);
+      return;
+    case SOp::Call:
+      call_instance(p_.pous[s.target], guard);
       return;
   }
 }
@@ -646,13 +657,14 @@ void SymbolicMachine::fire_chart(const Chart& c, AigLit guard) {
 }
 
 void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
+  const AigLit g = pou.instance ? guard : Aig::kTrue;
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) {
       const auto& st = p_.steps[s];
       set_bool(
           st.ready,
           aig_.make_or(aig_.make_and(cur_truth(st.ready), aig_.make_not(left_[s])), entered_[s]),
-          Aig::kTrue);
+          g);
     }
   for (auto ai : pou.topo_order) {
     const auto& a = p_.actions[ai];
@@ -688,19 +700,19 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           break;
         case model::Qualifier::L: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, aig_.make_not(timer_expired(*t, v))));
           break;
         }
         case model::Qualifier::D: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, timer_expired(*t, v)));
           break;
         }
         case model::Qualifier::DS: {
           const Value v = timer_next(*t, sa, entered);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           const AigLit fire_now = aig_.make_and(sa, timer_expired(*t, v));
           set_flag = aig_.make_or(set_flag, fire_now);
           act = aig_.make_or(act, fire_now);
@@ -709,9 +721,9 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
         case model::Qualifier::SD: {
           const auto latch = static_cast<std::uint32_t>(as.latch);
           const AigLit l = aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
-          set_bool(latch, l, Aig::kTrue);
+          set_bool(latch, l, g);
           const Value v = timer_next(*t, l, Aig::kFalse);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, timer_expired(*t, v)));
           break;
         }
@@ -723,9 +735,9 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           const AigLit l = aig_.make_and(
               aig_.make_or(aig_.make_and(cur_truth(latch), aig_.make_not(expired_before)), rising),
               aig_.make_not(reset));
-          set_bool(latch, l, Aig::kTrue);
+          set_bool(latch, l, g);
           const Value v = timer_next(*t, l, rising);
-          set(t->field, v, Aig::kTrue);
+          set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, aig_.make_not(timer_expired(*t, v))));
           break;
         }
@@ -737,17 +749,16 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
     if (a.stored != kNone) {
       const auto f = static_cast<std::uint32_t>(a.stored);
       stored = aig_.make_and(aig_.make_or(set_flag, cur_truth(f)), aig_.make_not(reset));
-      set_bool(f, stored, Aig::kTrue);
+      set_bool(f, stored, g);
     }
     const AigLit active = aig_.make_and(aig_.make_or(act, stored), aig_.make_not(reset));
-    set_bool(a.active, active, Aig::kTrue);
-    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, Aig::kTrue);
+    set_bool(a.active, active, g);
+    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, g);
   }
-  (void)guard;
-  step_times(pou);
+  step_times(pou, g);
 }
 
-void SymbolicMachine::step_times(const Pou& pou) {
+void SymbolicMachine::step_times(const Pou& pou, AigLit guard) {
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) {
       const auto& st = p_.steps[s];
@@ -765,7 +776,7 @@ void SymbolicMachine::step_times(const Pou& pou) {
             max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
         advanced = mux(less(v, top), moved, v);
       }
-      nxt_[f] = mux(restart, constant(0), mux(advance, advanced, nxt_[f]));
+      nxt_[f] = mux(guard, mux(restart, constant(0), mux(advance, advanced, nxt_[f])), nxt_[f]);
     }
 }
 
@@ -804,6 +815,13 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
   update_pou(pou, run);
   for (std::size_t i = 0; i < held.size(); ++i)
     nxt_[pou.chart_fields[i]] = mux(init, held[i], nxt_[pou.chart_fields[i]]);
+}
+
+void SymbolicMachine::call_instance(const Pou& pou, AigLit guard) {
+  cycle_pou(pou, guard);
+  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = Aig::kFalse;
 }
 
 void SymbolicMachine::build(StateView initial_state) {
@@ -852,8 +870,9 @@ void SymbolicMachine::build(StateView initial_state) {
   AigLit assumed = Aig::kTrue;
   for (auto a : p_.assumptions) assumed = aig_.make_and(assumed, eval_truth(a, assumed));
   c_.allowed = aig_.make_and(allowed, assumed);
-  const std::vector<Value> latched = cur_;  // SFCInit/SFCReset rewrite cur_ within the cycle
-  for (const auto& pou : p_.pous) cycle_pou(pou, c_.allowed);
+  const std::vector<Value> latched = cur_;  // SFCInit/SFCReset and instance calls rewrite cur_
+  for (const auto& pou : p_.pous)
+    if (!pou.instance) cycle_pou(pou, c_.allowed);
   cur_ = latched;
   c_.range_error = aig_.make_and(c_.range_error, c_.allowed);
 

@@ -94,6 +94,21 @@ std::vector<const model::Pou*> Compiler::select() {
   return out;
 }
 
+bool Compiler::is_global_list(const model::Pou& pou) {
+  if (pou.kind != model::PouKind::Program || !pou.body.empty() || !pou.charts.empty() ||
+      !pou.actions.empty() || pou.body_unsupported || pou.variables.empty())
+    return false;
+  return std::all_of(pou.variables.begin(), pou.variables.end(), [](const model::Variable& v) {
+    return v.direction == model::VarDirection::Global;
+  });
+}
+
+std::optional<Ref> Compiler::global_ref(const std::string& upper_name) const {
+  auto it = global_fields.find(upper_name);
+  if (it == global_fields.end()) return std::nullopt;
+  return Ref{Ref::Field, it->second, static_cast<bool>(field_is_bool[it->second])};
+}
+
 model::Type Compiler::value_type(const model::Type& t) {
   if (t.kind == TypeKind::Time) return model::Type::integer("TIME", t.lo, t.hi);
   return t;
@@ -111,7 +126,7 @@ void Compiler::collect_written(const model::StmtList& body, const std::string& p
 void Compiler::variables(const std::vector<const model::Pou*>& pous) {
   // Providers: outputs and globals, by name, for connecting other POUs' inputs.
   std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> providers;  // name -> (pou, var)
-  std::map<std::string, std::uint32_t> globals;                              // name -> field
+  auto& globals = global_fields;                                             // name -> field
   std::map<std::string, int> name_count;
   auto is_input = [](const model::Variable& v) {
     return v.direction == model::VarDirection::Input ||
@@ -129,21 +144,28 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     PouScope sc;
     sc.pou = pous[pi];
     sc.index = pi;
+    sc.name = pous[pi]->name;
     scopes.push_back(std::move(sc));
     const auto up = model::to_upper(pous[pi]->name);
     collect_written(pous[pi]->body, up);
     for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
   }
-  // Pass 1: state variables (non-inputs).
+  // Pass 1: state variables (non-inputs). Instances of user function blocks add scopes, so
+  // the scope is found by index each time.
   for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
     const auto& pou = *pous[pi];
-    auto& sc = scopes[pi];
     for (const auto& v : pou.variables) {
       const auto up = model::to_upper(v.name);
       if (v.type.kind == TypeKind::FunctionBlock) {
-        make_fb(pi, v);
+        if (v.type.fb == StandardFb::None) {
+          std::vector<std::string> types{model::to_upper(pou.name)};
+          instantiate(pi, v, 1, types);
+        } else {
+          make_fb(pi, v);
+        }
         continue;
       }
+      auto& sc = scopes[pi];
       if (is_input(v)) continue;
       if (v.direction == model::VarDirection::InOut) {
         error(v.where, "VAR_IN_OUT '" + v.name + "' of " + pou.name +
@@ -252,19 +274,32 @@ void Compiler::reject_foreign(const std::vector<const model::Pou*>& pous) {
 }
 
 bool Compiler::run() {
-  const auto pous = select();
+  auto pous = select();
   if (!ok) return false;
+  // Global variable lists first, so that their declarations (initial values) define the
+  // globals that programs and instances name.
+  std::vector<const model::Pou*> lists;
+  for (const auto& q : project.pous)
+    if (is_global_list(q) && std::find(pous.begin(), pous.end(), &q) == pous.end())
+      lists.push_back(&q);
+  first_program = static_cast<std::uint32_t>(lists.size());
+  pous.insert(pous.begin(), lists.begin(), lists.end());
   reject_foreign(pous);
   if (!ok) return false;
   variables(pous);
+  if (!ok) return false;
   structure();
   actions_and_transitions();
   finish_timers();
   orders();
   for (const auto& a : p.options.assumptions)
-    if (a) p.assumptions.push_back(bool_expr(scopes.front(), a, -1, a->where, "assumption"));
+    if (a)
+      p.assumptions.push_back(
+          bool_expr(scopes[std::min<std::size_t>(first_program, scopes.size() - 1)], a, -1,
+                    a->where, "assumption"));
   step_timers();
   sfc_flags();
+  instance_commits();
   step_observables();
   // A program without steps may keep no state at all (it only maps inputs to outputs of
   // dropped types); the engines store states as words, so give it one constant bit.

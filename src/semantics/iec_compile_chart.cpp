@@ -18,7 +18,8 @@ void Compiler::structure() {
   for (auto& sc : scopes) {
     const auto& pou = *sc.pou;
     Pou cp;
-    cp.name = pou.name;
+    cp.name = sc.name;
+    cp.instance = sc.instance;
     for (std::size_t ci = 0; ci < pou.charts.size(); ++ci) {
       const auto& ch = pou.charts[ci];
       Chart c;
@@ -33,8 +34,7 @@ void Compiler::structure() {
                 "step '" + st.name + "' is a Grafcet macro/enclosing step, not IEC 61131-3");
         Step s;
         s.short_name = st.name;
-        s.name =
-            pou.name + "." + (ch.parent_action.empty() ? "" : ch.parent_action + ".") + st.name;
+        s.name = sc.name + "." + (ch.parent_action.empty() ? "" : ch.parent_action + ".") + st.name;
         s.chart = cid;
         s.initial = st.initial;
         has_initial |= st.initial;
@@ -79,7 +79,7 @@ std::uint32_t Compiler::add_action(PouScope& sc, const std::string& name,
     return it->second;
   }
   Action a;
-  a.name = sc.pou->name + "." + name;
+  a.name = sc.name + "." + name;
   a.pou = sc.index;
   a.kind = kind;
   a.active = add_field(a.name, FieldKind::ActionActive, 0, 1, 0, true);
@@ -226,7 +226,7 @@ void Compiler::actions_and_transitions() {
         ct.index = static_cast<std::uint32_t>(p.transitions.size());
         TransitionInfo info;
         const std::string prefix =
-            pou.name + (ch.parent_action.empty() ? "" : "." + ch.parent_action);
+            sc.name + (ch.parent_action.empty() ? "" : "." + ch.parent_action);
         if (!t.name.empty()) {
           info.name = prefix + "." + t.name;
         } else {
@@ -235,7 +235,7 @@ void Compiler::actions_and_transitions() {
           for (auto s : t.targets) dst += (dst.empty() ? "" : ", ") + s;
           info.name = prefix + ": " + src + " -> " + dst;
         }
-        info.pou = pou.name;
+        info.pou = sc.name;
         info.chart = ch.name;
         info.where = t.where;
         p.transition_infos.push_back(std::move(info));
@@ -350,6 +350,12 @@ void Compiler::step_observables() {
     Observable o;
     o.name = s.name;
     o.aliases = {s.short_name, s.short_name + ".X", s.name + ".X"};
+    // A step of an instance is also named from its program: Crane.Init for Main.Crane.Init.
+    if (const auto& pou = p.pous[p.charts[s.chart].pou]; pou.instance) {
+      const auto below = s.name.substr(s.name.find('.') + 1);
+      o.aliases.push_back(below);
+      o.aliases.push_back(below + ".X");
+    }
     o.kind = ObservableKind::Step;
     o.type = model::Type::boolean();
     p.observables.push_back(std::move(o));

@@ -222,9 +222,14 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
       type = VT::Int;
       return constant(e.value);
     case ExprKind::Name: {
-      if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end()) {
-        const auto& r = it->second;
-        if (r.kind == Ref::FbInst) {
+      std::optional<Ref> found;
+      if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end())
+        found = it->second;
+      else
+        found = global_ref(model::to_upper(e.name));  // an unqualified global
+      if (found) {
+        const auto& r = *found;
+        if (r.kind == Ref::FbInst || r.kind == Ref::Instance) {
           error(e.where, "'" + e.name + "' is a function block instance; use one of its outputs");
           type = VT::Bool;
           return constant(0);
@@ -317,6 +322,51 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
 std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int context, VT& type) {
   const auto mem = model::to_upper(e.member);
   type = VT::Bool;
+  {
+    // `inst.x`, `a.b.x`, `Main.x`, `inst.timer.Q`, `inst.Step.X`: resolved in the scope of the
+    // instance (or program) the leading parts name.
+    std::vector<std::string> parts;
+    for (std::size_t from = 0;;) {
+      const auto dot = e.name.find('.', from);
+      parts.push_back(e.name.substr(from, dot == std::string::npos ? dot : dot - from));
+      if (dot == std::string::npos) break;
+      from = dot + 1;
+    }
+    parts.push_back(e.member);
+    std::size_t used = 0;
+    const auto si = path_scope(sc, parts, used);
+    if (used > 0) {
+      const auto& inner = scopes[si];
+      if (used + 1 == parts.size()) {
+        auto it = inner.names.find(model::to_upper(parts.back()));
+        if (it != inner.names.end() &&
+            (it->second.kind == Ref::Field || it->second.kind == Ref::Input)) {
+          type = it->second.is_bool ? VT::Bool : VT::Int;
+          Node n;
+          n.op = it->second.kind == Ref::Field ? Op::Field : Op::Input;
+          n.a = it->second.index;
+          return node(n);
+        }
+        if (it == inner.names.end() && find_step(inner, parts.back(), -1, e.where, false)) {
+          Node n;  // `inst.Step`: the step's activity
+          n.op = Op::StepX;
+          n.a = *find_step(inner, parts.back(), -1, e.where, true);
+          return node(n);
+        }
+        error(e.where, "'" + model::to_st(e) + "': " + inner.name + " has no variable '" +
+                           parts.back() + "' sfcv models");
+        return constant(0);
+      }
+      if (used + 2 == parts.size()) {
+        model::Expr rest = e;
+        rest.name = parts[used];
+        rest.member = parts.back();
+        return member(inner, rest, -1, type);
+      }
+      error(e.where, "'" + model::to_st(e) + "' names nothing sfcv models");
+      return constant(0);
+    }
+  }
   if (auto it = sc.names.find(model::to_upper(e.name));
       it != sc.names.end() && it->second.kind == Ref::FbInst) {
     const auto& fb = p.fbs[it->second.index];

@@ -14,9 +14,8 @@
 namespace sfcv::semantics::iec::detail {
 
 void Compiler::make_fb(std::uint32_t pi, const model::Variable& v) {
-  const auto& pou = *scopes[pi].pou;
   Fb fb;
-  fb.name = pou.name + "." + v.name;
+  fb.name = scopes[pi].name + "." + v.name;
   fb.kind = v.type.fb;
   fb.pou = pi;
   switch (fb.kind) {

@@ -42,17 +42,32 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
   switch (s.kind) {
     case model::StmtKind::Assign: {
       out.op = SOp::Assign;
-      auto it = sc.names.find(model::to_upper(s.target));
+      std::optional<Ref> found;
+      if (auto it = sc.names.find(model::to_upper(s.target)); it != sc.names.end())
+        found = it->second;
+      else
+        found = global_ref(model::to_upper(s.target));  // an unqualified global
       VT t;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
-      if (it == sc.names.end()) {
+      if (s.target.find('.') != std::string::npos) {
+        // `inst.x := v`, `a.b.x := v`, `Main.x := v`.
+        if (const auto r = dotted(sc, s.target, s.where)) {
+          if (r->kind != Ref::Field) {
+            error(s.where, "assignment to '" + s.target + "', which is an input");
+          } else {
+            out.target = r->index;
+            if (r->is_bool && s.value) t = bool_if_literal(*s.value, t);
+            if ((t == VT::Bool) != r->is_bool)
+              error(s.where, "type mismatch in the assignment to '" + s.target + "'");
+          }
+        }
+      } else if (!found) {
         error(s.where, "assignment to unknown variable '" + s.target + "'");
-      } else if (it->second.kind != Ref::Field) {
-        error(s.where,
-              "assignment to '" + s.target + "', which is " +
-                  (it->second.kind == Ref::Input ? "an input" : "a function block instance"));
+      } else if (found->kind != Ref::Field) {
+        error(s.where, "assignment to '" + s.target + "', which is " +
+                           (found->kind == Ref::Input ? "an input" : "a function block instance"));
       } else {
-        out.target = it->second.index;
+        out.target = found->index;
         if (field_is_bool[out.target] && s.value) t = bool_if_literal(*s.value, t);
         if ((t == VT::Bool) != static_cast<bool>(field_is_bool[out.target]))
           error(s.where, "type mismatch in the assignment to '" + s.target + "'");
@@ -91,6 +106,56 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       break;
     }
     case model::StmtKind::FbCall:
+      if (s.target.find('.') != std::string::npos) {
+        // `inst.ACT();`: the instance's action ACT (ST/FBD/LD body) runs at that point, on the
+        // instance's variables (TwinCAT calls actions of instances this way).
+        std::vector<std::string> parts;
+        for (std::size_t from = 0;;) {
+          const auto dot = s.target.find('.', from);
+          parts.push_back(s.target.substr(from, dot == std::string::npos ? dot : dot - from));
+          if (dot == std::string::npos) break;
+          from = dot + 1;
+        }
+        std::size_t used = 0;
+        const auto si = path_scope(sc, parts, used);
+        if (used + 1 == parts.size()) {
+          // `a.b(...)`: a call of the nested instance b of a.
+          const auto& names = scopes[si].names;
+          if (auto it = names.find(model::to_upper(parts.back()));
+              it != names.end() && it->second.kind == Ref::Instance) {
+            instance_call(sc, s, it->second.index, out);
+            break;
+          }
+        }
+        const model::Action* act = nullptr;
+        if (used + 1 == parts.size() && scopes[si].instance)
+          act = scopes[si].pou->find_action(parts.back());
+        out.op = SOp::If;
+        if (!act) {
+          error(s.where, "call of '" + s.target + "': not an action of a function block instance");
+          break;
+        }
+        if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
+          error(s.where, "call of action '" + s.target + "': " +
+                             (act->body_unsupported
+                                  ? std::string("its body is not modelled")
+                                  : std::string("calling an SFC action of an instance (one step "
+                                                "of its chart per call) is not modelled")));
+          break;
+        }
+        const auto key = scopes[si].name + "." + model::to_upper(act->name);
+        if (!inlining.insert(key).second) {
+          error(s.where, "action '" + s.target + "' calls itself (recursion)");
+          break;
+        }
+        IfArm arm{constant(1), block(scopes[si], act->body)};
+        inlining.erase(key);
+        out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+        out.arm_count = 1;
+        p.if_arms.push_back(arm);
+        out.else_body = block(sc, {});
+        break;
+      }
       if (const auto* act = called_action(sc, s)) {
         // `ACT();` runs the action's statements at that point of the body (IEC 61131-3
         // allows calling an action of the same POU): an IF TRUE around them.
@@ -112,6 +177,16 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         out.arm_count = 1;
         p.if_arms.push_back(arm);
         out.else_body = block(sc, {});
+        break;
+      }
+      if (auto it = sc.names.find(model::to_upper(s.target));
+          it != sc.names.end() && it->second.kind == Ref::Instance) {
+        instance_call(sc, s, it->second.index, out);
+        break;
+      }
+      if (!s.outputs.empty()) {
+        error(s.where, "output binding '=>' in the call of '" + s.target +
+                           "', which is not an instance of a user function block");
         break;
       }
       out.op = SOp::FbCall;

@@ -13,7 +13,7 @@ using model::Qualifier;
 
 bool Machine::run() {
   fixed_ = false;
-  if (cur_dirty_) {
+  if (cur_dirty_ || p_.has_instances) {
     cur_ = loaded_;
     cur_dirty_ = false;
   }
@@ -30,8 +30,10 @@ bool Machine::run() {
   std::fill(left_.begin(), left_.end(), std::uint8_t{0});
   for (auto a : p_.assumptions)
     if (!eval(a)) return false;
-  for (const auto& pou : p_.pous) cycle_pou(pou);
+  for (const auto& pou : p_.pous)
+    if (!pou.instance) cycle_pou(pou);
   std::sort(fired_.begin(), fired_.end());
+  fired_.erase(std::unique(fired_.begin(), fired_.end()), fired_.end());
   return true;
 }
 
@@ -40,7 +42,7 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
     in_lo_[i] = in_hi_[i] = valuation[i];
   touched_.clear();
   fixed_ = true;
-  if (cur_dirty_) {
+  if (cur_dirty_ || p_.has_instances) {
     cur_ = loaded_;
     cur_dirty_ = false;
   }
@@ -54,8 +56,10 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
   for (auto a : p_.assumptions)
     if (!eval(a)) ok = false;
   if (ok)
-    for (const auto& pou : p_.pous) cycle_pou(pou);
+    for (const auto& pou : p_.pous)
+      if (!pou.instance) cycle_pou(pou);
   std::sort(fired_.begin(), fired_.end());
+  fired_.erase(std::unique(fired_.begin(), fired_.end()), fired_.end());
   fixed_ = false;
   for (std::size_t i = 0; i < in_lo_.size(); ++i) {
     in_lo_[i] = p_.inputs[i].type.lo;
@@ -115,6 +119,15 @@ void Machine::cycle_pou(const Pou& pou) {
     if (chart_active_cur(c)) fire_chart(p_.charts[c]);
   // Phase 4.
   update_pou(pou);
+}
+
+void Machine::call_instance(const Pou& pou) {
+  // One cycle of a user function block instance, as the cycle runs a program; then its chart
+  // state is committed, so that a second call evolves from where this one left it.
+  cycle_pou(pou);
+  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  for (auto c : pou.charts)
+    for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = 0;
 }
 
 void Machine::fire(const Transition& t) {

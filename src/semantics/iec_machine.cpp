@@ -41,7 +41,7 @@ Machine::Machine(const Program& p)
 
 void Machine::load(StateView state) {
   for (std::uint32_t f = 0; f < cur_.size(); ++f) cur_[f] = p_.layout.get(state, f);
-  if (has_flags_) loaded_ = cur_;
+  if (has_flags_ || p_.has_instances) loaded_ = cur_;
   cur_dirty_ = false;
 }
 

@@ -99,6 +99,9 @@ Flow Machine::exec_stmt(const Stmt& s) {
     case SOp::FbCall:
       fb_call(s);
       return Flow::Normal;
+    case SOp::Call:
+      call_instance(p_.pous[s.target]);
+      return Flow::Normal;
     case SOp::Loop:
       return exec_loop(s);
     case SOp::Exit:

@@ -95,7 +95,7 @@ TEST(Programs, PureStTextProgram) {
 
 // Two programs of one project run in one cycle in document order, sharing a global: the
 // second sees what the first wrote in the same cycle.
-TEST(Programs, SeveralProgramsRunInOneCycleInDocumentOrder) {
+TEST(Programs, SeveralProgramsRunInOneCycleInDocumentOrderOrTaskOrder) {
   const std::string a = st_pou(
       "A", bool_vars("inputVars", {"start"}) + bool_vars("globalVars", {"req"}), "req := start;");
   const std::string b =
@@ -107,6 +107,17 @@ TEST(Programs, SeveralProgramsRunInOneCycleInDocumentOrder) {
   // B before A: motor lags one cycle behind req.
   const auto ba = write_temp(plcopen(b + a), ".xml");
   r = run_sfcv("check " + ba + " --ctl 'AG (motor <-> req)' --trace none");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  // A configuration's task gives the order: B's instance first, then A's, whatever the
+  // document order.
+  std::string tasked = plcopen(a + b);
+  const std::string task =
+      "<configurations><configuration name=\"Cfg\"><resource name=\"Res\"><task name=\"T\" "
+      "interval=\"T#10ms\" priority=\"1\"><pouInstance name=\"b1\" typeName=\"B\"/>"
+      "<pouInstance name=\"a1\" typeName=\"A\"/></task></resource></configuration>"
+      "</configurations>";
+  tasked.replace(tasked.find("<configurations/>"), std::string("<configurations/>").size(), task);
+  r = run_sfcv("check " + write_temp(tasked, ".xml") + " --ctl 'AG (motor <-> req)' --trace none");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
 }
 

@@ -374,5 +374,53 @@ TEST(Iec61131Circuit, AgreesOnLoopsFunctionsAndBitStrings) {
   }
 }
 
+// User function block instances (issue 18): an SFC-bodied FB called conditionally and twice
+// in one cycle, an FB holding two nested instances (one called only on a rising edge), member
+// reads and writes through them, `=>` outputs, and an instance that is never called.
+const char* kInstances = R"(
+FUNCTION_BLOCK Lamp
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT lit : BOOL; n : INT(0..3); END_VAR
+  VAR t : TON; END_VAR
+  INITIAL_STEP Off : Dark(N); END_STEP
+  STEP On : Light(N); END_STEP
+  TRANSITION FROM Off TO On := go; END_TRANSITION
+  TRANSITION FROM On TO Off := NOT go OR t.Q; END_TRANSITION
+  ACTION Dark : lit := FALSE; t(IN := FALSE, PT := T#1s); END_ACTION
+  ACTION Light : lit := TRUE; t(IN := TRUE, PT := T#1s); IF n < 3 THEN n := n + 1; END_IF; END_ACTION
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Pair
+  VAR_INPUT a : BOOL; END_VAR
+  VAR_OUTPUT both : BOOL; END_VAR
+  VAR l1 : Lamp; l2 : Lamp; e : R_TRIG; END_VAR
+  e(CLK := a);
+  l1(go := a);
+  IF e.Q THEN l2(go := NOT l2.lit); END_IF;
+  both := l1.lit AND l2.lit;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT x, y : BOOL; END_VAR
+  VAR_OUTPUT out1, out2, seen : BOOL; END_VAR
+  VAR p : Pair; k : Lamp; idle : Lamp; END_VAR
+  p(a := x, both => out1);
+  IF y THEN k(go := x); k(go := NOT k.lit); END_IF;
+  out2 := k.lit OR p.l1.lit;
+  p.l2.go := y;
+  seen := k.On.X AND p.l2.lit;
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnUserFunctionBlockInstances) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 500;
+    auto ts = system_for(kInstances, options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, 31);
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::semantics

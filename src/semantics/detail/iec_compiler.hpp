@@ -26,7 +26,8 @@ using model::StandardFb;
 using model::TypeKind;
 
 struct Ref {
-  enum Kind { Field, Input, FbInst } kind = Field;
+  /// Instance: a user function block instance; index is its scope (= its Pou).
+  enum Kind { Field, Input, FbInst, Instance } kind = Field;
   std::uint32_t index = 0;
   bool is_bool = true;
 };
@@ -34,6 +35,9 @@ struct Ref {
 struct PouScope {
   const model::Pou* pou = nullptr;
   std::uint32_t index = 0;
+  std::string name;   // the program "Main", or the instance path "Main.Crane"
+  std::string alias;  // instances: the path below the program, "Crane" ("" for programs)
+  bool instance = false;
   std::map<std::string, Ref> names;              // upper-case variable names
   std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
@@ -54,9 +58,13 @@ struct Compiler {
   std::vector<PouScope> scopes;
   std::map<std::string, std::uint32_t> inputs_by_name;
   std::vector<std::uint8_t> field_is_bool;
-  std::set<std::string> written;   // "POU|VAR" upper-case: variables some statement assigns
-  std::set<std::string> inlining;  // upper-case actions whose call is being compiled
-  int loop_depth = 0;              // loops around the statement being compiled
+  std::set<std::string> written;  // "POU|VAR" upper-case: variables some statement assigns
+  // VAR_GLOBAL fields by upper-case name: one field per global, shared by every POU and
+  // instance that names it (VAR_EXTERNAL, unqualified, or `GVL.x`).
+  std::map<std::string, std::uint32_t> global_fields;
+  std::uint32_t first_program = 0;  // scopes before it are global variable lists
+  std::set<std::string> inlining;   // upper-case actions whose call is being compiled
+  int loop_depth = 0;               // loops around the statement being compiled
   std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
   std::set<std::uint32_t> called_timers;                      // FB indices of called timers
   // Step .T: constants compared with, and nodes to patch once regions are known.
@@ -72,6 +80,10 @@ struct Compiler {
 
   // ---------------------------------------------------------------------- POU selection
   std::vector<const model::Pou*> select();
+  /// A global variable list (a PLCopen/TwinCAT GVL read as a PROGRAM with only VAR_GLOBALs).
+  static bool is_global_list(const model::Pou& pou);
+  /// The field of global `name` (upper-case), if one is declared.
+  std::optional<Ref> global_ref(const std::string& upper_name) const;
 
   // ------------------------------------------------------------------------- variables
   static model::Type value_type(const model::Type& t);
@@ -81,6 +93,25 @@ struct Compiler {
   void variables(const std::vector<const model::Pou*>& pous);
 
   void make_fb(std::uint32_t pi, const model::Variable& v);
+
+  // ---------------------------------------------------- user function block instances
+  static constexpr int kMaxInstanceDepth = 8;
+  /// Creates the scope (and so the Pou) of instance `v` of a user FB inside scope `parent`,
+  /// with its own fields, standard FB instances and nested instances. `types`: the FB types
+  /// being instantiated around it (recursion).
+  void instantiate(std::uint32_t parent, const model::Variable& v, int depth,
+                   std::vector<std::string>& types);
+  /// The scope that the leading parts of a dotted path name (instances, nested instances, or a
+  /// program of the project for `Main.x`); `used` is how many parts it took (0: none).
+  std::uint32_t path_scope(const PouScope& sc, const std::vector<std::string>& parts,
+                           std::size_t& used) const;
+  /// The field of a dotted variable `inst.x`, `a.b.x`, `Main.x` (nullopt after an error).
+  std::optional<Ref> dotted(const PouScope& sc, const std::string& path,
+                            const model::SourceLocation& where);
+  /// `inst(a := x, q => y);`: the input assignments, the Call, the output copies.
+  void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out);
+  /// Per instance Pou: the chart state fields a call commits.
+  void instance_commits();
 
   // ---------------------------------------------------------------------- expressions
   std::uint32_t node(Node n, std::vector<std::uint32_t> kids = {});

@@ -75,7 +75,9 @@ struct Node {
 
 // ------------------------------------------------------------------------------- statements
 
-enum class SOp : std::uint8_t { Assign, If, Case, FbCall, Loop, Exit, Continue, Return };
+/// Call: one cycle of the user function block instance whose Pou is `target` (the inputs are
+/// assigned before it and the `=>` outputs copied after it by ordinary Assign statements).
+enum class SOp : std::uint8_t { Assign, If, Case, FbCall, Loop, Exit, Continue, Return, Call };
 
 /// How control leaves a block: normally, or by EXIT, CONTINUE or RETURN.
 enum class Flow : std::uint8_t { Normal, Exit, Continue, Return };
@@ -96,7 +98,7 @@ struct CaseArm {
 
 struct Stmt {
   SOp op = SOp::Assign;
-  std::uint32_t target = 0;  ///< Assign: field; FbCall: FB index
+  std::uint32_t target = 0;  ///< Assign: field; FbCall: FB index; Call: Pou index
   std::uint32_t expr = 0;    ///< Assign: value; Case: selector
   std::uint32_t arm_first = 0, arm_count = 0;
   Block else_body;
@@ -188,7 +190,14 @@ struct Action {
 };
 
 struct Pou {
-  std::string name;
+  std::string name;  ///< a program "Main", or an instance of a user FB "Main.Crane"
+  /// An instance of a user function block: the cycle does not run it; a Call statement of its
+  /// caller does (each call is one cycle of the instance: body, chart evolution, actions).
+  bool instance = false;
+  /// Instances: the chart state fields (step readiness and .T, action activity and memories)
+  /// that a call commits (cur := nxt), so that a second call in the same cycle evolves from
+  /// the situation the first one left and later code reads the new activity.
+  std::vector<std::uint32_t> commit;
   Block body;
   std::vector<std::uint32_t> charts;
   std::vector<std::uint32_t> exec_order;  ///< actions, in execution order
@@ -232,6 +241,7 @@ struct Program {
   std::vector<std::uint32_t> assumptions;        ///< nodes
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
+  bool has_instances = false;
 };
 
 /// Compiles; returns false with Error diagnostics when something cannot be modelled faithfully.
@@ -298,6 +308,7 @@ class Machine {
   /// SFCInit/SFCReset read after the body: restores the POU's chart fields; true under SFCInit.
   bool sfc_flags(const Pou& pou);
   void initial_configuration();
+  void call_instance(const Pou& pou);
   void fire_chart(const Chart& c);
   void fire(const Transition& t);
   void update_pou(const Pou& pou);

@@ -1,0 +1,277 @@
+// The IEC compiler's user function block instances: each instance is a scope (and a Pou of the
+// Program) with its own fields, standard FB instances, nested instances and copy of the FB's
+// charts and actions; a call `inst(a := x, q => y);` assigns the inputs, runs one cycle of the
+// instance (Call) and copies the outputs; `inst.x` names the instance's variables.
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "model/names.hpp"
+#include "semantics/detail/iec_compiler.hpp"
+
+namespace sfcv::semantics::iec::detail {
+
+namespace {
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> parts;
+  for (std::size_t from = 0;;) {
+    const auto dot = path.find('.', from);
+    parts.push_back(path.substr(from, dot == std::string::npos ? dot : dot - from));
+    if (dot == std::string::npos) break;
+    from = dot + 1;
+  }
+  return parts;
+}
+}  // namespace
+
+void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int depth,
+                           std::vector<std::string>& types) {
+  const std::string parent_name = scopes[parent].name;
+  const model::Pou* type = project.find_pou(v.type.name);
+  if (!type || type->kind != model::PouKind::FunctionBlock) {
+    error(v.where, "'" + v.name + "' of " + parent_name + " has type '" + v.type.name +
+                       "', which is no FUNCTION_BLOCK of this project (and no standard one)");
+    return;
+  }
+  const auto up_type = model::to_upper(type->name);
+  if (std::find(types.begin(), types.end(), up_type) != types.end()) {
+    error(v.where, "instance '" + v.name + "' of " + type->name + " in " + parent_name +
+                       ": function block " + type->name +
+                       " contains an instance of itself (recursion is not modelled)");
+    return;
+  }
+  if (depth > kMaxInstanceDepth) {
+    error(v.where, "instance '" + v.name + "' of " + type->name + " in " + parent_name +
+                       " is nested deeper than " + std::to_string(kMaxInstanceDepth) +
+                       " function block instances");
+    return;
+  }
+  reject_foreign({type});
+  collect_written(type->body, up_type);
+  for (const auto& a : type->actions) collect_written(a.body, up_type);
+
+  const auto si = static_cast<std::uint32_t>(scopes.size());
+  {
+    PouScope sc;
+    sc.pou = type;
+    sc.index = si;
+    sc.name = parent_name + "." + v.name;
+    sc.alias = scopes[parent].instance ? scopes[parent].alias + "." + v.name : v.name;
+    sc.instance = true;
+    scopes.push_back(std::move(sc));
+  }
+  scopes[parent].names[model::to_upper(v.name)] = Ref{Ref::Instance, si, false};
+  p.has_instances = true;
+  types.push_back(up_type);
+  for (const auto& w : type->variables) {
+    const auto up = model::to_upper(w.name);
+    if (w.type.kind == TypeKind::FunctionBlock) {
+      if (w.type.fb == StandardFb::None)
+        instantiate(si, w, depth + 1, types);
+      else
+        make_fb(si, w);
+      continue;
+    }
+    switch (w.direction) {
+      case model::VarDirection::InOut:
+        error(w.where, "VAR_IN_OUT '" + w.name + "' of function block " + type->name +
+                           ": in/out parameters of instances are not modelled");
+        continue;
+      case model::VarDirection::External:
+        // VAR_EXTERNAL: the global of that name, shared with everyone.
+        if (const auto g = global_ref(up); g && g->is_bool == (w.type.kind == TypeKind::Bool)) {
+          scopes[si].names[up] = *g;
+        } else {
+          error(w.where, "VAR_EXTERNAL '" + w.name + "' of function block " + type->name +
+                             ": no VAR_GLOBAL of that name and type in the project");
+        }
+        continue;
+      case model::VarDirection::Global:
+        error(w.where, "VAR_GLOBAL '" + w.name + "' declared inside function block " + type->name +
+                           " (not modelled)");
+        continue;
+      default:
+        break;
+    }
+    // Every other variable (VAR_INPUT, VAR_OUTPUT, VAR, VAR_TEMP) is a field of the instance:
+    // its inputs are set by the caller, not read from the plant.
+    const auto t = value_type(w.type);
+    std::int64_t init = w.initial.value_or(0);
+    if (!w.initial && (0 < t.lo || 0 > t.hi)) init = t.lo;
+    if (init < t.lo || init > t.hi) {
+      error(w.where, "initial value of '" + w.name + "' is outside its type's range");
+      init = t.lo;
+    }
+    const auto& sc = scopes[si];
+    const std::string display = sc.name + "." + w.name;
+    const bool is_bool = t.kind == TypeKind::Bool;
+    const auto f = add_field(display, FieldKind::Variable, t.lo, t.hi, init, is_bool);
+    scopes[si].names[up] = Ref{Ref::Field, f, is_bool};
+    Observable o;
+    o.name = display;
+    o.aliases = {scopes[si].alias + "." + w.name};
+    o.kind = ObservableKind::Variable;
+    o.type = t;
+    o.is_output = false;
+    p.observables.push_back(std::move(o));
+    p.observable_refs.push_back(ObservableRef{ObservableKind::Variable, f});
+  }
+  types.pop_back();
+}
+
+std::uint32_t Compiler::path_scope(const PouScope& sc, const std::vector<std::string>& parts,
+                                   std::size_t& used) const {
+  used = 0;
+  std::uint32_t cur = sc.index;
+  if (parts.size() >= 2 && !sc.names.count(model::to_upper(parts[0]))) {
+    // `Main.x`: a variable of a program of the same cycle.
+    for (const auto& other : scopes)
+      if (!other.instance && model::iequals(other.pou->name, parts[0])) {
+        cur = other.index;
+        used = 1;
+        break;
+      }
+  }
+  while (used + 1 < parts.size()) {
+    const auto& names = scopes[cur].names;
+    auto it = names.find(model::to_upper(parts[used]));
+    if (it == names.end() || it->second.kind != Ref::Instance) break;
+    cur = it->second.index;
+    ++used;
+  }
+  return cur;
+}
+
+std::optional<Ref> Compiler::dotted(const PouScope& sc, const std::string& path,
+                                    const model::SourceLocation& where) {
+  const auto parts = split_path(path);
+  std::size_t used = 0;
+  const auto si = path_scope(sc, parts, used);
+  if (used == 0 || used + 1 != parts.size()) {
+    error(where, "'" + path + "' names no variable sfcv models (not a variable of a function " +
+                     "block instance or of a program of this project)");
+    return std::nullopt;
+  }
+  const auto& names = scopes[si].names;
+  auto it = names.find(model::to_upper(parts.back()));
+  if (it == names.end()) {
+    error(where, "'" + path + "': " + scopes[si].name + " has no variable '" + parts.back() + "'");
+    return std::nullopt;
+  }
+  if (it->second.kind == Ref::Instance || it->second.kind == Ref::FbInst) {
+    error(where, "'" + path + "' is a function block instance, not a variable");
+    return std::nullopt;
+  }
+  return it->second;
+}
+
+void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst,
+                             Stmt& out) {
+  // An IF TRUE around: the input assignments, the Call, the output copies.
+  const auto& callee = scopes[inst];
+  std::vector<std::uint32_t> items;
+  auto push = [&](Stmt st) {
+    p.stmts.push_back(std::move(st));
+    items.push_back(static_cast<std::uint32_t>(p.stmts.size() - 1));
+  };
+  for (const auto& [param, value] : s.arguments) {
+    const auto* var = callee.pou->find_variable(param);
+    auto it = callee.names.find(model::to_upper(param));
+    if (!var || var->direction != model::VarDirection::Input || it == callee.names.end() ||
+        it->second.kind != Ref::Field) {
+      error(s.where, "'" + s.target + "' (" + callee.pou->name + ") has no input '" + param + "'");
+      continue;
+    }
+    Stmt a;
+    a.op = SOp::Assign;
+    a.where = s.where.str();
+    a.target = it->second.index;
+    VT t;
+    a.expr = value ? expr(sc, *value, -1, t) : constant(0);
+    if (value && it->second.is_bool) t = bool_if_literal(*value, t);
+    if ((t == VT::Bool) != it->second.is_bool)
+      error(value && value->where.known() ? value->where : s.where,
+            "input " + param + " of '" + s.target + "' has the wrong type");
+    push(std::move(a));
+  }
+  Stmt call;
+  call.op = SOp::Call;
+  call.where = s.where.str();
+  call.target = inst;
+  push(std::move(call));
+  for (const auto& [output, var] : s.outputs) {
+    const auto* decl = callee.pou->find_variable(output);
+    auto it = callee.names.find(model::to_upper(output));
+    if (!decl || decl->direction != model::VarDirection::Output || it == callee.names.end() ||
+        it->second.kind != Ref::Field) {
+      error(s.where,
+            "'" + s.target + "' (" + callee.pou->name + ") has no output '" + output + "'");
+      continue;
+    }
+    std::optional<Ref> dst;
+    if (var.find('.') != std::string::npos) {
+      dst = dotted(sc, var, s.where);
+    } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
+      dst = d->second;
+    } else if (auto g = global_ref(model::to_upper(var))) {
+      dst = g;
+    } else {
+      error(s.where, "output binding to unknown variable '" + var + "'");
+    }
+    if (!dst) continue;
+    if (dst->kind != Ref::Field) {
+      error(s.where, "output binding to '" + var + "', which is " +
+                         (dst->kind == Ref::Input ? "an input" : "a function block instance"));
+      continue;
+    }
+    if (dst->is_bool != it->second.is_bool) {
+      error(s.where, "type mismatch in the output binding " + output + " => " + var);
+      continue;
+    }
+    Stmt a;
+    a.op = SOp::Assign;
+    a.where = s.where.str();
+    a.target = dst->index;
+    Node n;
+    n.op = Op::Field;
+    n.a = it->second.index;
+    a.expr = node(n);
+    push(std::move(a));
+  }
+  Block b;
+  b.first = static_cast<std::uint32_t>(p.block_items.size());
+  b.count = static_cast<std::uint32_t>(items.size());
+  p.block_items.insert(p.block_items.end(), items.begin(), items.end());
+  out.op = SOp::If;
+  out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+  out.arm_count = 1;
+  p.if_arms.push_back(IfArm{constant(1), b});
+  out.else_body = Block{};
+}
+
+void Compiler::instance_commits() {
+  for (std::uint32_t pi = 0; pi < p.pous.size(); ++pi) {
+    auto& pou = p.pous[pi];
+    if (!pou.instance) continue;
+    for (auto c : pou.charts)
+      for (auto s : p.charts[c].steps) {
+        const auto& st = p.steps[s];
+        pou.commit.push_back(st.ready);
+        if (st.t_field != kNone) pou.commit.push_back(static_cast<std::uint32_t>(st.t_field));
+      }
+    for (const auto& a : p.actions) {
+      if (a.pou != pi) continue;
+      pou.commit.push_back(a.active);
+      if (a.stored != kNone) pou.commit.push_back(static_cast<std::uint32_t>(a.stored));
+      for (auto x : a.assocs) {
+        const auto& as = p.assocs[x];
+        if (as.latch != kNone) pou.commit.push_back(static_cast<std::uint32_t>(as.latch));
+        if (as.timer != kNone)
+          pou.commit.push_back(p.timers[static_cast<std::size_t>(as.timer)].field);
+      }
+    }
+  }
+}
+
+}  // namespace sfcv::semantics::iec::detail

@@ -1,0 +1,321 @@
+// Instances of user function blocks (issue 18): a program calls FB instances whose bodies are
+// SFC charts, reads and writes their members, binds outputs with `=>`. The files are small ones
+// written here in the style of CODESYS and TwinCAT PLCopen exports and of IEC 61131-3 text.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+const std::string kHeader =
+    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+    "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
+    "<fileHeader companyName=\"t\" productName=\"CODESYS\" productVersion=\"3.5\" "
+    "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"plant\"/>\n"
+    "<types><dataTypes/><pous>\n";
+const std::string kFooter =
+    "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
+
+std::string vars(const std::string& section, const std::vector<std::string>& names,
+                 const std::string& type = "<BOOL/>") {
+  std::string s = "<" + section + ">";
+  for (const auto& n : names)
+    s += "<variable name=\"" + n + "\"><type>" + type + "</type></variable>";
+  return s + "</" + section + ">";
+}
+
+std::string st(const std::string& text) {
+  return "<ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">" + text + "</xhtml></ST>";
+}
+
+// A CODESYS-style FB with an SFC body: Closed --cmd--> Opened --NOT cmd--> Closed, and the
+// action ACT_Open (N on Opened) setting its output `open`; ACT_Close (N on Closed) clears it.
+std::string valve_fb(const std::string& name = "Valve") {
+  auto block = [](int id, int step, const char* action) {
+    return "<actionBlock localId=\"" + std::to_string(id) +
+           "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(step) +
+           "\"/></connectionPointIn><action localId=\"" + std::to_string(id + 1) +
+           "\" qualifier=\"N\"><reference name=\"" + action + "\"/></action></actionBlock>\n";
+  };
+  auto guard = [](int id, int from, const char* cond) {
+    return "<transition localId=\"" + std::to_string(id) +
+           "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" + st(cond) +
+           "</inline></condition></transition>\n";
+  };
+  return "<pou name=\"" + name + "\" pouType=\"functionBlock\"><interface>" +
+         vars("inputVars", {"cmd"}) + vars("outputVars", {"open"}) +
+         "</interface><actions>"
+         "<action name=\"ACT_Open\"><body>" +
+         st("open := TRUE;") +
+         "</body></action>"
+         "<action name=\"ACT_Close\"><body>" +
+         st("open := FALSE;") +
+         "</body></action></actions><body><SFC>\n"
+         "<step localId=\"1\" name=\"Closed\" initialStep=\"true\"><connectionPointIn>"
+         "<connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/></step>\n" +
+         guard(3, 1, "cmd") +
+         "<step localId=\"2\" name=\"Opened\"><connectionPointIn><connection refLocalId=\"3\"/>"
+         "</connectionPointIn><connectionPointOut/></step>\n" +
+         guard(4, 2, "NOT cmd") + block(10, 2, "ACT_Open") + block(12, 1, "ACT_Close") +
+         "</SFC></body></pou>\n";
+}
+
+std::string main_pou(const std::string& locals, const std::string& body) {
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         vars("inputVars", {"req", "enable"}) + vars("outputVars", {"pump", "valve"}) +
+         "<localVars>" + locals + "</localVars></interface><body>" + st(body) + "</body></pou>\n";
+}
+
+std::string instance(const std::string& name, const std::string& type) {
+  return "<variable name=\"" + name + "\"><type><derived name=\"" + type + "\"/></type></variable>";
+}
+
+std::string check(const std::string& file, const std::string& props) {
+  return "check " + file + " " + props + " --trace none --timeout 60";
+}
+
+// The false-"holds" guard: the valve opens only through the FB instance's output; the pump
+// runs on `req`. The interlock is violated, and must be reported so.
+TEST(Instances, InterlockViolatedThroughAnInstanceOutput) {
+  const auto file =
+      write_temp(kHeader + valve_fb() +
+                     main_pou(instance("V", "Valve"),
+                              "V.cmd := req;\nV();\nvalve := V.open;\npump := req AND enable;") +
+                     kFooter,
+                 ".xml");
+  auto r = run_sfcv(check(file, "--ctl 'AG !(valve & pump)'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
+  // The instance's step and variables are observable by their dotted names.
+  r = run_sfcv(check(file,
+                     "--ctl 'EF Main.V.Opened' --ctl 'AG (valve <-> V.open)' "
+                     "--ctl 'EF Main.V.open'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// An instance that is not called does not evolve: its chart stays in its initial step.
+TEST(Instances, UncalledInstanceIsFrozen) {
+  const auto file =
+      write_temp(kHeader + valve_fb() +
+                     main_pou(instance("V", "Valve"), "V.cmd := req;\nvalve := V.open;") + kFooter,
+                 ".xml");
+  const auto r = run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'AG !valve'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// A call inside an IF evolves the instance only when the branch runs; with `=>` binding.
+TEST(Instances, ConditionalCallWithOutputBinding) {
+  const auto file = write_temp(
+      kHeader + valve_fb() +
+          main_pou(instance("V", "Valve"),
+                   "IF enable THEN\n  V(cmd := req, open => valve);\nEND_IF;\npump := enable;") +
+          kFooter,
+      ".xml");
+  // The valve can open, and the chart stays in Opened in cycles that do not call it.
+  auto r = run_sfcv(check(file, "--ctl 'EF valve' --ctl 'EF (V.Opened & !pump)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG (V.Opened -> pump)'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
+// Two calls in one cycle evolve the chart twice: Closed -> Opened (first call), then ACT_Open
+// runs and Opened -> Closed (second call). Between cycles the chart is always in Closed; the
+// output read after the first call is never TRUE, the one read after the second is.
+TEST(Instances, TwoCallsEvolveTwice) {
+  const auto file = write_temp(
+      kHeader + valve_fb() +
+          main_pou(instance("V", "Valve"),
+                   "V(cmd := TRUE);\nvalve := V.open;\nV(cmd := FALSE);\npump := V.open;") +
+          kFooter,
+      ".xml");
+  auto r = run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'AG !valve' --ctl 'EF pump'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'EF V.Opened'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
+// TwinCAT style: the FB instances sit in a program whose body only calls them, and an FB holds
+// a nested instance whose member is read through two dots.
+TEST(Instances, NestedInstancesTwinCatStyle) {
+  const std::string station =
+      "<pou name=\"FB_Station\" pouType=\"functionBlock\"><interface>" +
+      vars("inputVars", {"bRequest"}) + vars("outputVars", {"bBusy"}) + "<localVars>" +
+      instance("fbValve", "Valve") + "</localVars></interface><body>" +
+      st("fbValve(cmd := bRequest);\nbBusy := fbValve.open;") + "</body></pou>\n";
+  const auto file =
+      write_temp(kHeader + valve_fb() + station +
+                     main_pou(instance("Station", "FB_Station"),
+                              "Station(bRequest := req);\nvalve := Station.fbValve.open;\npump := "
+                              "Station.bBusy AND enable;") +
+                     kFooter,
+                 ".xml");
+  auto r = run_sfcv(check(file, "--ctl 'AG (pump -> valve)' --ctl 'EF Station.fbValve.Opened'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG !(valve & pump)'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
+// What is not modelled is refused with its location (exit 2), by check and lint alike.
+TEST(Instances, UnmodelledInstanceConstructsAreRefused) {
+  // Recursion: an FB holding an instance of itself.
+  const std::string loop = "<pou name=\"Loop\" pouType=\"functionBlock\"><interface>" +
+                           vars("outputVars", {"q"}) + "<localVars>" + instance("inner", "Loop") +
+                           "</localVars></interface><body>" + st("q := TRUE;") + "</body></pou>\n";
+  auto file = write_temp(
+      kHeader + loop + main_pou(instance("L", "Loop"), "L();\nvalve := L.q;") + kFooter, ".xml");
+  auto r = run_sfcv(check(file, "--ctl 'AG TRUE'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("recursion"), std::string::npos) << r.err;
+  r = run_sfcv("lint " + file);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+}
+
+// TwinCAT calls actions of instances (`Motor.ACT_Run();`) and instances nested in others
+// (`PPU.Stack();`): an ST action runs at that point on the instance's variables, without a
+// cycle of the instance's chart.
+TEST(Instances, ActionsAndNestedInstancesCalledByPath) {
+  auto file =
+      write_temp(kHeader + valve_fb() +
+                     main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") + kFooter,
+                 ".xml");
+  auto r =
+      run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'EF valve' --ctl 'AG (valve <-> V.open)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string station = "<pou name=\"FB_Station\" pouType=\"functionBlock\"><interface>" +
+                              vars("outputVars", {"bBusy"}) + "<localVars>" +
+                              instance("fbValve", "Valve") + "</localVars></interface><body>" +
+                              st("bBusy := fbValve.open;") + "</body></pou>\n";
+  file = write_temp(kHeader + valve_fb() + station +
+                        main_pou(instance("Station", "FB_Station"),
+                                 "Station.fbValve(cmd := req);\nvalve := Station.fbValve.open;") +
+                        kFooter,
+                    ".xml");
+  r = run_sfcv(check(file, "--ctl 'EF valve' --ctl 'EF Station.fbValve.Opened'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// IEC 61131-3 text: an FB type that the project does not declare is refused at its location.
+TEST(Instances, UnknownFunctionBlockTypeInTextIsRefused) {
+  const auto file = write_temp(
+      "PROGRAM Main\n  VAR_OUTPUT q : BOOL; END_VAR\n  VAR m : Missing; END_VAR\n  q := TRUE;\n"
+      "END_PROGRAM\n",
+      ".st");
+  const auto r = run_sfcv(check(file, "--ctl 'AG q'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("Missing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":3:"), std::string::npos) << r.err;
+}
+
+// IEC 61131-3 text: `x : Fb;` declares an instance; `=>` binds an output; nested instances
+// deeper than 8 levels are refused at the innermost declaration.
+TEST(Instances, TextInstancesWithOutputBindingAndDepthLimit) {
+  const std::string fbs =
+      "FUNCTION_BLOCK Latch\n  VAR_INPUT set, reset : BOOL; END_VAR\n"
+      "  VAR_OUTPUT q : BOOL; END_VAR\n  IF set THEN q := TRUE; ELSIF reset THEN q := FALSE; "
+      "END_IF;\nEND_FUNCTION_BLOCK\n";
+  auto file = write_temp(fbs +
+                             "PROGRAM Main\n  VAR_INPUT a, b : BOOL; END_VAR\n"
+                             "  VAR_OUTPUT lamp, horn : BOOL; END_VAR\n  VAR l : Latch; END_VAR\n"
+                             "  l(set := a, reset := b, q => lamp);\n  horn := b;\nEND_PROGRAM\n",
+                         ".st");
+  auto r = run_sfcv(check(file, "--ctl 'AG (lamp <-> l.q)' --ctl 'EF (lamp & horn)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG !(lamp & horn)'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  // F0 holds an F1, ..., F9 holds an F10: ten levels below Main.
+  std::string deep;
+  for (int i = 0; i <= 10; ++i) {
+    deep += "FUNCTION_BLOCK F" + std::to_string(i) + "\n  VAR_OUTPUT q : BOOL; END_VAR\n";
+    if (i < 10) deep += "  VAR inner : F" + std::to_string(i + 1) + "; END_VAR\n";
+    deep += "  q := TRUE;\nEND_FUNCTION_BLOCK\n";
+  }
+  file = write_temp(deep +
+                        "PROGRAM Main\n  VAR_OUTPUT x : BOOL; END_VAR\n  VAR top : F0; END_VAR\n"
+                        "  top();\n  x := top.q;\nEND_PROGRAM\n",
+                    ".st");
+  r = run_sfcv(check(file, "--ctl 'AG TRUE'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("nested deeper than 8"), std::string::npos) << r.err;
+}
+
+// Global variables: a TwinCAT GVL (addData resource, `globalVars name="GVL"`, read as `GVL.x`)
+// and a PLCopen configuration's global list bound through VAR_EXTERNAL, written inside an FB
+// instance and read by the program: one field shared by everyone.
+TEST(Instances, GlobalVariableListsAreSharedFields) {
+  const std::string alarm = "<pou name=\"Alarm\" pouType=\"functionBlock\"><interface>" +
+                            vars("inputVars", {"x"}) + vars("externalVars", {"bAlarm"}) +
+                            "</interface><body>" + st("bAlarm := x AND NOT GVL.bReset;") +
+                            "</body></pou>\n";
+  const std::string main =
+      "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"req", "enable"}) +
+      vars("outputVars", {"pump"}) + vars("externalVars", {"bAlarm"}) + "<localVars>" +
+      instance("A", "Alarm") + "</localVars></interface><body>" +
+      st("GVL.bReset := enable;\nA(x := req);\npump := bAlarm;") + "</body></pou>\n";
+  const std::string tail =
+      "</pous></types>\n<instances><configurations><configuration name=\"Cfg\"><resource "
+      "name=\"Res\"><globalVars>" +
+      "<variable name=\"bAlarm\"><type><BOOL/></type></variable></globalVars></resource>"
+      "</configuration></configurations></instances>\n<addData><data "
+      "name=\"http://www.3s-software.com/plcopenxml/application\" "
+      "handleUnknown=\"implementation\"><resource name=\"PlcTask\"><globalVars name=\"GVL\">"
+      "<variable name=\"bReset\"><type><BOOL/></type></variable></globalVars></resource></data>"
+      "</addData>\n</project>\n";
+  const auto file = write_temp(kHeader + alarm + main + tail, ".xml");
+  // If the FB's bAlarm were not Main's, pump would stay FALSE.
+  auto r = run_sfcv(check(file,
+                          "--ctl 'EF pump' --ctl 'AG (pump -> !GVL.bReset)' "
+                          "--ctl 'AG (bAlarm <-> pump)'"));
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv(check(file, "--ctl 'AG !pump'"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
+// ------------------------------------------------------------------------------------ corpus
+
+// CODESYS's pick-and-place unit (07: Magazin, Crane, Stamp; 12: also Conveyor and Pusher) is
+// checked as the whole project: Main's ST body writes the instances' inputs, calls them inside
+// `IF emergency-stop sensors THEN`, reads their outputs. Main declares its Sensor_* as local
+// variables that nothing writes (the export holds no I/O mapping), so they stay FALSE: the
+// ELSIF branch runs every cycle, no instance is ever called, and every chart stays in Init.
+// Pinned: 2 states (the initial one and the one after the first cycle set the actuators).
+TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  for (const char* f : {"07_codesys_ppu_scenario3v1.xml", "12_codesys_ppu_scenario10.xml"}) {
+    SCOPED_TRACE(f);
+    const std::string path = "'" + (corpus / f).string() + "'";
+    auto r =
+        run_sfcv("check " + path +
+                 " --ctl 'AG (Crane.Init & Mag.Init & Stamp.Init)' --ctl 'AG !Actuator_CraneLower' "
+                 "--ctl 'AG (Main.Crane.Init.X <-> Crane.Init)' --checks none --trace none "
+                 "--timeout 120");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("2 states"), std::string::npos) << r.out;
+    // The instances exist and are distinct: a step of one instance is not another's.
+    r = run_sfcv("check " + path +
+                 " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+}
+
+// TwinCAT's xPPU (09): MAIN calls `PPU.Stack();` (modelled) but its FBs start actions of other
+// instances from action blocks and call SFC actions of instances: refused by name.
+TEST(InstancesCorpus, TwinCatSfcActionCallsAreRefused) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "09_twincat_xppu_scenario1.xml").string() + "'";
+  const auto r = run_sfcv("check " + path + " --ctl 'AG TRUE' --trace none");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  // Action blocks of its FBs name actions of other instances (`Valve.ACT_TurnVacuumOn`).
+  EXPECT_NE(
+      r.err.find("error: step 'TurnVacuumOn' names undeclared action 'Valve.ACT_TurnVacuumOn'"),
+      std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace sfcv::test
