@@ -67,8 +67,8 @@ std::string type_text(const model::Type& t) {
       return "BOOL";
     case model::TypeKind::Time:
       return "TIME";
-    case model::TypeKind::FunctionBlock:
-      return std::string(model::to_string(t.fb));
+    case model::TypeKind::FunctionBlock:  // a user function block keeps its declared name
+      return t.fb == model::StandardFb::None ? t.name : std::string(model::to_string(t.fb));
     case model::TypeKind::Int:
       break;
   }

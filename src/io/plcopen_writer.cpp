@@ -85,8 +85,10 @@ void type_element(pugi::xml_node type, const model::Type& t) {
       type.append_child("TIME");
       return;
     case model::TypeKind::FunctionBlock:
+      // A user function block keeps the name it was declared with.
       type.append_child("derived").append_attribute("name") =
-          std::string(model::to_string(t.fb)).c_str();
+          t.fb == model::StandardFb::None ? t.name.c_str()
+                                          : std::string(model::to_string(t.fb)).c_str();
       return;
     case model::TypeKind::Int:
       break;

@@ -259,7 +259,7 @@ TEST(Instances, GlobalVariableListsAreSharedFields) {
       st("GVL.bReset := enable;\nA(x := req);\npump := bAlarm;") + "</body></pou>\n";
   const std::string tail =
       "</pous></types>\n<instances><configurations><configuration name=\"Cfg\"><resource "
-      "name=\"Res\"><globalVars>" +
+      "name=\"Res\"><globalVars>"
       "<variable name=\"bAlarm\"><type><BOOL/></type></variable></globalVars></resource>"
       "</configuration></configurations></instances>\n<addData><data "
       "name=\"http://www.3s-software.com/plcopenxml/application\" "

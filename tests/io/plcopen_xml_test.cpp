@@ -210,12 +210,12 @@ TEST(PlcopenXml, StBodyBesideAnSfcBodyIsThePouBody) {
   // One that does not parse is marked unmodelled (running the POU is refused), with a warning.
   std::string bad = doc;
   bad.insert(bad.find("</pou>"),
-             "<body><ST><xhtml:p><![CDATA[x := SQRT(a);]]></xhtml:p></ST></body>");
+             "<body><ST><xhtml:p><![CDATA[x := a ** 2;]]></xhtml:p></ST></body>");
   const auto b = load_plcopen_xml(bad, "st.xml");
   ASSERT_TRUE(b.ok()) << errors_of(b);
   EXPECT_TRUE(b.project->pous.at(0).body.empty());
   EXPECT_TRUE(b.project->pous.at(0).body_unsupported);
-  EXPECT_EQ(b.project->pous.at(0).unsupported_text.rfind("x := SQRT(a);", 0), 0u);
+  EXPECT_EQ(b.project->pous.at(0).unsupported_text.rfind("x := a ** 2;", 0), 0u);
   EXPECT_TRUE(has_message(b, Severity::Warning, "its ST body is not modelled"));
 }
 

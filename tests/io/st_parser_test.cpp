@@ -143,7 +143,6 @@ TEST(StExpression, ErrorsAreLocated) {
   EXPECT_EQ(expr_error("a[1]"), "1:2: unsupported: array indexing of 'a'");
   EXPECT_EQ(expr_error("p^"), "1:2: unsupported: pointer dereference of 'p'");
   EXPECT_EQ(expr_error("a ** 2"), "1:3: unsupported: operator '**'");
-  EXPECT_EQ(expr_error("a.b.c"), "1:4: unsupported: nested member access 'a.b.'");
   EXPECT_EQ(expr_error("a b"), "1:3: expected end of text, found 'b'");
   EXPECT_EQ(expr_error("T#5"), "1:1: TIME literal: missing unit (d, h, m, s, ms)");
   EXPECT_EQ(expr_error("T#1us"), "1:1: unsupported: TIME literal finer than a millisecond");
@@ -287,13 +286,8 @@ TEST(StStatements, UnsupportedConstructsAreNamed) {
   EXPECT_EQ(stmt_error("x := MAX(EN := a, 2);"),
             "1:10: unsupported: named arguments ('EN :=', EN/ENO) in the call of function 'MAX' "
             "(pass the arguments in order)");
-  EXPECT_EQ(stmt_error("t1(IN := a, Q => b);"),
-            "1:15: unsupported: output assignment '=>' in the call of 't1'");
   EXPECT_EQ(stmt_error("t1(a, b);"),
             "1:4: unsupported: positional arguments in the call of 't1' (write IN := value)");
-  EXPECT_EQ(stmt_error("t1.IN := a;"),
-            "1:1: unsupported: assignment to a member of 't1' (pass FB inputs in the call: "
-            "inst(IN := x))");
   EXPECT_EQ(stmt_error("a[2] := 1;"), "1:2: unsupported: array indexing of 'a'");
   EXPECT_EQ(stmt_error("x := 1\ny := 2;"), "2:1: expected ';' after the assignment, found 'y'");
   EXPECT_EQ(stmt_error("IF a THEN x := 1;"), "1:18: expected END_IF, found end of text");
@@ -383,6 +377,28 @@ TEST(StVarSections, UnsupportedAndMalformedDeclarations) {
   EXPECT_EQ(err("VAR a : BOOL;"), "1:14: expected END_VAR, found end of text");
   EXPECT_EQ(err("VAR_ACCESS a : BOOL; END_VAR"), "1:1: unsupported: VAR_ACCESS section");
   EXPECT_EQ(err("VAR a, b AT %IX1 : BOOL; END_VAR"), "1:8: AT can locate only one variable");
+}
+
+}  // namespace
+}  // namespace sfcv::io
+
+namespace sfcv::io {
+namespace {
+
+// Issue 18: members of user FB instances (nested), member targets and `=>` outputs parse;
+// whether the names exist is the compiler's question (tests/e2e/instances_test.cpp).
+TEST(StStatements, InstanceMembersAndOutputBindings) {
+  EXPECT_EQ(printed("a.b.c AND d.q"), "a.b.c AND d.q");
+  model::Diagnostics d;
+  auto body =
+      parse_st_statements("t1(IN := a, Q => b);\nt1.IN := a;\nx.y.z := t1.Q;", file_start(), d);
+  ASSERT_TRUE(d.empty()) << d[0].message;
+  ASSERT_EQ(body.size(), 3u);
+  ASSERT_EQ(body[0]->outputs.size(), 1u);
+  EXPECT_EQ(body[0]->outputs[0].first, "Q");
+  EXPECT_EQ(body[0]->outputs[0].second, "b");
+  EXPECT_EQ(body[1]->target, "t1.IN");
+  EXPECT_EQ(body[2]->target, "x.y.z");
 }
 
 }  // namespace
