@@ -139,5 +139,53 @@ TEST(SfcFlags, UnmodelledVendorFlagIsAnErrorInEverySubcommand) {
   }
 }
 
+// An instance of an SFC function block has its own flags: the caller's SFCReset := r resets
+// that instance's chart, so the state reachable only through the reset is found on every
+// engine (and, without the flag, the property holds).
+TEST(SfcFlags, AnInstanceIsResetThroughItsOwnFlag) {
+  const std::string fb = R"(FUNCTION_BLOCK Seq
+  VAR_INPUT go : BOOL; SFCReset : BOOL; END_VAR
+  VAR_OUTPUT armed : BOOL; END_VAR
+  INITIAL_STEP Idle : END_STEP
+  STEP Run : Arm(S); END_STEP
+  STEP Done : END_STEP
+  TRANSITION FROM Idle TO Run := go; END_TRANSITION
+  TRANSITION FROM Run TO Done := TRUE; END_TRANSITION
+  ACTION Arm : armed := TRUE; END_ACTION
+END_FUNCTION_BLOCK
+)";
+  const auto with_flag = write_temp(fb + R"(PROGRAM Main
+  VAR_INPUT g, r : BOOL; END_VAR
+  VAR s : Seq; END_VAR
+  s(go := g, SFCReset := r);
+END_PROGRAM
+)",
+                                    ".st");
+  const std::string ctl = " --checks none --trace none --ctl " + q("AG !(s.Idle.X & s.armed)");
+  for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
+    const auto r = run_sfcv("check " + q(with_flag) + ctl + " --engine " + engine);
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+  }
+  const auto without = write_temp(R"(FUNCTION_BLOCK Seq
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT armed : BOOL; END_VAR
+  INITIAL_STEP Idle : END_STEP
+  STEP Run : Arm(S); END_STEP
+  STEP Done : END_STEP
+  TRANSITION FROM Idle TO Run := go; END_TRANSITION
+  TRANSITION FROM Run TO Done := TRUE; END_TRANSITION
+  ACTION Arm : armed := TRUE; END_ACTION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT g : BOOL; END_VAR
+  VAR s : Seq; END_VAR
+  s(go := g);
+END_PROGRAM
+)",
+                                  ".st");
+  const auto r = run_sfcv("check " + q(without) + ctl + " --engine explicit");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test
