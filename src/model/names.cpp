@@ -19,4 +19,15 @@ std::string to_upper(std::string_view s) {
   return r;
 }
 
+std::vector<std::string> split_path(std::string_view dotted) {
+  std::vector<std::string> parts;
+  for (std::size_t from = 0;;) {
+    const auto dot = dotted.find('.', from);
+    parts.emplace_back(dotted.substr(from, dot == std::string_view::npos ? dot : dot - from));
+    if (dot == std::string_view::npos) break;
+    from = dot + 1;
+  }
+  return parts;
+}
+
 }  // namespace sfcv::model

@@ -38,14 +38,7 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
   const std::string member = target.substr(dot + 1);
   if (v && v->type.kind == TypeKind::FunctionBlock && v->type.fb == StandardFb::None) {
     // `inst.x := v`, `a.b.x := v`: a variable of a user function block instance.
-    std::vector<std::string> parts;
-    for (std::size_t from = 0;;) {
-      const auto d = target.find('.', from);
-      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
-      if (d == std::string::npos) break;
-      from = d + 1;
-    }
-    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    const Ty t = resolve_path(split_path(target), *pou_, true, here, target);
     if (t == Ty::Unknown) return std::nullopt;
     return t;
   }
@@ -72,14 +65,7 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
   }
   if (!v && !pou_->find_action(name) && project_.find_pou(name)) {
     // `GVL.x := v`, `Main.x := v`: a variable of a global list or of another program.
-    std::vector<std::string> parts;
-    for (std::size_t from = 0;;) {
-      const auto d = target.find('.', from);
-      parts.push_back(target.substr(from, d == std::string::npos ? d : d - from));
-      if (d == std::string::npos) break;
-      from = d + 1;
-    }
-    const Ty t = resolve_path(parts, *pou_, true, here, target);
+    const Ty t = resolve_path(split_path(target), *pou_, true, here, target);
     if (t == Ty::Unknown) return std::nullopt;
     return t;
   }

@@ -262,14 +262,7 @@ Ty Validator::resolve_name(const Expr& e, const SourceLocation& here) {
 Ty Validator::resolve_member(const Expr& e, const SourceLocation& here) {
   // Importers may keep a chain a.b.c as name "a.b", member "c".
   const std::string full = e.name + "." + e.member;
-  std::vector<std::string> parts;
-  for (std::size_t from = 0;;) {
-    const auto dot = full.find('.', from);
-    parts.push_back(full.substr(from, dot == std::string::npos ? dot : dot - from));
-    if (dot == std::string::npos) break;
-    from = dot + 1;
-  }
-  return resolve_path(parts, *pou_, true, here, full);
+  return resolve_path(split_path(full), *pou_, true, here, full);
 }
 
 Ty Validator::resolve_path(const std::vector<std::string>& parts, const Pou& scope, bool top,

@@ -325,13 +325,7 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
   {
     // `inst.x`, `a.b.x`, `Main.x`, `inst.timer.Q`, `inst.Step.X`: resolved in the scope of the
     // instance (or program) the leading parts name.
-    std::vector<std::string> parts;
-    for (std::size_t from = 0;;) {
-      const auto dot = e.name.find('.', from);
-      parts.push_back(e.name.substr(from, dot == std::string::npos ? dot : dot - from));
-      if (dot == std::string::npos) break;
-      from = dot + 1;
-    }
+    auto parts = model::split_path(e.name);
     parts.push_back(e.member);
     std::size_t used = 0;
     const auto si = path_scope(sc, parts, used);

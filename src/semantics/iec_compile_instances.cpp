@@ -12,19 +12,6 @@
 
 namespace sfcv::semantics::iec::detail {
 
-namespace {
-std::vector<std::string> split_path(const std::string& path) {
-  std::vector<std::string> parts;
-  for (std::size_t from = 0;;) {
-    const auto dot = path.find('.', from);
-    parts.push_back(path.substr(from, dot == std::string::npos ? dot : dot - from));
-    if (dot == std::string::npos) break;
-    from = dot + 1;
-  }
-  return parts;
-}
-}  // namespace
-
 void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int depth,
                            std::vector<std::string>& types) {
   const std::string parent_name = scopes[parent].name;
@@ -145,7 +132,7 @@ std::uint32_t Compiler::path_scope(const PouScope& sc, const std::vector<std::st
 
 std::optional<Ref> Compiler::dotted(const PouScope& sc, const std::string& path,
                                     const model::SourceLocation& where) {
-  const auto parts = split_path(path);
+  const auto parts = model::split_path(path);
   std::size_t used = 0;
   const auto si = path_scope(sc, parts, used);
   if (used == 0 || used + 1 != parts.size()) {

@@ -109,13 +109,7 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       if (s.target.find('.') != std::string::npos) {
         // `inst.ACT();`: the instance's action ACT (ST/FBD/LD body) runs at that point, on the
         // instance's variables (TwinCAT calls actions of instances this way).
-        std::vector<std::string> parts;
-        for (std::size_t from = 0;;) {
-          const auto dot = s.target.find('.', from);
-          parts.push_back(s.target.substr(from, dot == std::string::npos ? dot : dot - from));
-          if (dot == std::string::npos) break;
-          from = dot + 1;
-        }
+        const auto parts = model::split_path(s.target);
         std::size_t used = 0;
         const auto si = path_scope(sc, parts, used);
         if (used + 1 == parts.size()) {
