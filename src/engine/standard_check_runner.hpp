@@ -805,69 +805,38 @@ class StandardCheckRunner {
     std::optional<State> first;
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      // variable -> (action, constant value or none) for every assignment in an action body.
-      struct Write {
-        std::string action;
-        std::optional<std::int64_t> value;
-      };
-      std::map<std::string, std::vector<Write>> writes;
-      std::function<void(const model::StmtList&, const std::string&, bool)> walk =
-          [&](const model::StmtList& body, const std::string& action, bool conditional) {
-            for (const auto& st : body) {
-              if (st->kind == model::StmtKind::Assign) {
-                std::optional<std::int64_t> v;
-                if (!conditional && st->value &&
-                    (st->value->kind == model::ExprKind::BoolConst ||
-                     st->value->kind == model::ExprKind::IntConst))
-                  v = st->value->value;
-                auto& list = writes[model::to_upper(st->target)];
-                bool dup = false;
-                for (const auto& w : list) dup |= w.action == action;
-                if (!dup) list.push_back({action, v});
-              }
-              for (const auto& b : st->bodies) walk(b, action, true);
-              walk(st->else_body, action, true);
-            }
-          };
-      for (const auto& a : pou.actions)
-        if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
-      for (const auto& [var, list] : writes)
-        for (std::size_t i = 0; i < list.size(); ++i)
-          for (std::size_t j = i + 1; j < list.size(); ++j) {
-            const auto& a = list[i];
-            const auto& b = list[j];
-            if (a.value && b.value && *a.value == *b.value) continue;  // same value: harmless
-            ++pairs;
-            std::uint32_t ia = 0, ib = 0;
-            bool ok = true;
-            for (auto [name, idx] : {std::pair{&a.action, &ia}, std::pair{&b.action, &ib}}) {
-              std::optional<std::uint32_t> hit;
-              for (const auto& cand : {qualify(pou.name, *name), *name}) {
-                hit = semantics::find_observable(ts_, cand);
-                if (hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action) break;
-                hit.reset();
-              }
-              if (hit)
-                *idx = *hit;
-              else
-                ok = false;
-            }
-            if (!ok) {
-              not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                    ": the system exposes no activity for these actions");
-              continue;
-            }
-            poll();
-            const Set both = sp_.meet(sp_.observable(ia), sp_.observable(ib));
-            if (sp_.empty(both)) continue;
-            auto show = [](const Write& w) {
-              return w.action + (w.value ? " (:= " + std::to_string(*w.value) + ")" : "");
-            };
-            const State s = sp_.one(both);
-            add(r, "variable " + var + " is written by " + show(a) + " and " + show(b) +
-                       " in the same cycle, in situation " + sp_.describe(s));
-            note(first, s);
+      for (const auto& conflict : logic::write_conflicts(pou)) {
+        const auto& var = conflict.variable;
+        const auto& a = conflict.first;
+        const auto& b = conflict.second;
+        ++pairs;
+        std::uint32_t ia = 0, ib = 0;
+        bool ok = true;
+        for (auto [name, idx] : {std::pair{&a.action, &ia}, std::pair{&b.action, &ib}}) {
+          std::optional<std::uint32_t> hit;
+          for (const auto& cand : {qualify(pou.name, *name), *name}) {
+            hit = semantics::find_observable(ts_, cand);
+            if (hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action) break;
+            hit.reset();
           }
+          if (hit)
+            *idx = *hit;
+          else
+            ok = false;
+        }
+        if (!ok) {
+          not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                ": the system exposes no activity for these actions");
+          continue;
+        }
+        poll();
+        const Set both = sp_.meet(sp_.observable(ia), sp_.observable(ib));
+        if (sp_.empty(both)) continue;
+        const State s = sp_.one(both);
+        add(r, "variable " + var + " is written by " + a.shown() + " and " + b.shown() +
+                   " in the same cycle, in situation " + sp_.describe(s));
+        note(first, s);
+      }
     }
     if (first) {
       r.trace = sp_.path_to(sp_.singleton(*first));

@@ -173,4 +173,41 @@ std::string describe_step(const StepRef& s) {
   return out;
 }
 
+std::string ActionWrite::shown() const {
+  return action + (value ? " (:= " + std::to_string(*value) + ")" : "");
+}
+
+std::vector<WriteConflict> write_conflicts(const model::Pou& pou) {
+  std::map<std::string, std::vector<ActionWrite>> writes;  // by variable, in action order
+  std::function<void(const model::StmtList&, const std::string&, bool)> walk =
+      [&](const model::StmtList& body, const std::string& action, bool conditional) {
+        for (const auto& st : body) {
+          if (st->kind == model::StmtKind::Assign) {
+            std::optional<std::int64_t> v;
+            if (!conditional && st->value &&
+                (st->value->kind == model::ExprKind::BoolConst ||
+                 st->value->kind == model::ExprKind::IntConst))
+              v = st->value->value;
+            auto& list = writes[model::to_upper(st->target)];
+            bool dup = false;
+            for (const auto& w : list) dup |= w.action == action;
+            if (!dup) list.push_back({action, v});
+          }
+          for (const auto& b : st->bodies) walk(b, action, true);
+          walk(st->else_body, action, true);
+        }
+      };
+  for (const auto& a : pou.actions)
+    if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
+  std::vector<WriteConflict> out;
+  for (const auto& [var, list] : writes)
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = i + 1; j < list.size(); ++j) {
+        if (list[i].value && list[j].value && *list[i].value == *list[j].value)
+          continue;  // the same value: harmless
+        out.push_back({var, list[i], list[j]});
+      }
+  return out;
+}
+
 }  // namespace sfcv::logic

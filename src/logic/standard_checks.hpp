@@ -68,4 +68,21 @@ FormulaPtr observable_atom(const semantics::TransitionSystem& ts, std::uint32_t 
 /// "MAIN.FILL_A (plant.st:12:3)".
 std::string describe_step(const StepRef& s);
 
+/// One action's assignments to a variable (output-conflicts): the constant it assigns when it
+/// assigns one unconditionally.
+struct ActionWrite {
+  std::string action;
+  std::optional<std::int64_t> value;
+  std::string shown() const;  ///< "A (:= 1)", or "A" when the value is not a known constant
+};
+
+/// Two actions of a POU whose ST bodies both assign `variable` and are not known to assign the
+/// same constant: the pairs the output-conflicts check asks about, by variable (upper case),
+/// then in action order. The one list every engine's check reads.
+struct WriteConflict {
+  std::string variable;
+  ActionWrite first, second;
+};
+std::vector<WriteConflict> write_conflicts(const model::Pou& pou);
+
 }  // namespace sfcv::logic

@@ -436,59 +436,28 @@ class Run {
     q.trace_note = "in the last cycle both actions are active";
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      // variable -> (action, constant value or none) for every assignment in an action body.
-      struct Write {
-        std::string action;
-        std::optional<std::int64_t> value;
-      };
-      std::map<std::string, std::vector<Write>> writes;
-      std::function<void(const model::StmtList&, const std::string&, bool)> walk =
-          [&](const model::StmtList& body, const std::string& action, bool conditional) {
-            for (const auto& st : body) {
-              if (st->kind == model::StmtKind::Assign) {
-                std::optional<std::int64_t> v;
-                if (!conditional && st->value &&
-                    (st->value->kind == model::ExprKind::BoolConst ||
-                     st->value->kind == model::ExprKind::IntConst))
-                  v = st->value->value;
-                auto& list = writes[model::to_upper(st->target)];
-                bool dup = false;
-                for (const auto& w : list) dup |= w.action == action;
-                if (!dup) list.push_back({action, v});
-              }
-              for (const auto& b : st->bodies) walk(b, action, true);
-              walk(st->else_body, action, true);
-            }
-          };
-      for (const auto& a : pou.actions)
-        if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
-      for (const auto& [var, list] : writes)
-        for (std::size_t i = 0; i < list.size(); ++i)
-          for (std::size_t j = i + 1; j < list.size(); ++j) {
-            const auto& a = list[i];
-            const auto& b = list[j];
-            if (a.value && b.value && *a.value == *b.value) continue;  // same value: harmless
-            ++pairs;
-            const auto ia = action_observable(pou.name, a.action);
-            const auto ib = action_observable(pou.name, b.action);
-            const bool ok = ia >= 0 && ib >= 0;
-            if (!ok) {
-              q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                      ": the system exposes no activity for these actions");
-              continue;
-            }
-            auto show = [](const Write& w) {
-              return w.action + (w.value ? " (:= " + std::to_string(*w.value) + ")" : "");
-            };
-            const std::string what =
-                "variable " + var + " is written by " + show(a) + " and " + show(b);
-            finding_if(q,
-                       aig.make_and(observable_lit(static_cast<std::uint32_t>(ia)),
-                                    observable_lit(static_cast<std::uint32_t>(ib))),
-                       [=, this](const ReachResult&, const logic::Trace& t) {
-                         return what + " in the same cycle, in situation " + describe_at(t, 0);
-                       });
-          }
+      for (const auto& conflict : logic::write_conflicts(pou)) {
+        const auto& var = conflict.variable;
+        const auto& a = conflict.first;
+        const auto& b = conflict.second;
+        ++pairs;
+        const auto ia = action_observable(pou.name, a.action);
+        const auto ib = action_observable(pou.name, b.action);
+        const bool ok = ia >= 0 && ib >= 0;
+        if (!ok) {
+          q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                  ": the system exposes no activity for these actions");
+          continue;
+        }
+        const std::string what =
+            "variable " + var + " is written by " + a.shown() + " and " + b.shown();
+        finding_if(q,
+                   aig.make_and(observable_lit(static_cast<std::uint32_t>(ia)),
+                                observable_lit(static_cast<std::uint32_t>(ib))),
+                   [=, this](const ReachResult&, const logic::Trace& t) {
+                     return what + " in the same cycle, in situation " + describe_at(t, 0);
+                   });
+      }
     }
     q.holds_message = pairs == 0 ? "no variable is written by two actions with different values"
                                  : "actions writing the same variable are never active together";
