@@ -2,6 +2,7 @@
 # Builds the libFuzzer harnesses (preset fuzz: clang, -fsanitize=fuzzer,address,undefined) and
 # runs each for SECONDS seconds (default 20) from a seed corpus made of the tests' and examples'
 # files (and $SFCV_CORPUS when set). Fails on the first crash, leak, timeout or sanitizer report.
+# FUZZ_TIMEOUT (seconds, default 10) raises the per-input limit for runs on a loaded machine.
 #   fuzz/run.sh [SECONDS] [harness ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,7 +39,7 @@ for h in "${harnesses[@]}"; do
   mkdir -p "$work/$h/corpus" "$work/$h/artifacts"
   echo "== fuzz_$h: ${seconds}s"
   "build/fuzz/fuzz/fuzz_$h" "$work/$h/corpus" "$work/$h/seeds" \
-    -dict="fuzz/dict/$h.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -dict="fuzz/dict/$h.dict" -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
     -max_len=65536 -artifact_prefix="$work/$h/artifacts/" -print_final_stats=1 2>&1 |
     tail -n 25
   status=${PIPESTATUS[0]}
