@@ -168,7 +168,7 @@ int run_check(const CheckOptions& o) {
 
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
-  const auto project = load_model_or_throw(o.model, parse_format(o.format));
+  const auto project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
   budget.check_time("loading the model");
   progress.phase("build");
   const auto built = build_system(project, o.system, logic::assumption_exprs(parsed.spec),

@@ -115,7 +115,7 @@ int run_query(const QueryOptions& o) {
   }
   if (o.model.empty()) throw InputError("a model file is required");
 
-  const auto project = load_model_or_throw(o.model, parse_format(o.format));
+  const auto project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
   const auto built = build_system(project, o.system, {}, "sfcv query",
                                   semantics::ActionOrder::Declaration, &budget);
   const auto& ts = built.system;

@@ -8,20 +8,22 @@
 
 namespace sfcv::cli {
 
-CheckedModel load_and_validate(const std::string& path, io::Format format) {
-  auto loaded = io::load_file(path, format);
+CheckedModel load_and_validate(const std::string& path, io::Format format,
+                               const model::Budget* budget) {
+  auto loaded = io::load_file(path, format, budget);
   CheckedModel result{std::move(loaded.project), std::move(loaded.diagnostics)};
   // Validating a half-built model would only repeat the importer's errors in other words.
   if (result.project && !model::has_errors(result.diagnostics)) {
-    auto more = model::validate(*result.project);
+    auto more = model::validate(*result.project, budget);
     result.diagnostics.insert(result.diagnostics.end(), std::make_move_iterator(more.begin()),
                               std::make_move_iterator(more.end()));
   }
   return result;
 }
 
-model::Project load_model_or_throw(const std::string& path, io::Format format, bool quiet) {
-  auto result = load_and_validate(path, format);
+model::Project load_model_or_throw(const std::string& path, io::Format format, bool quiet,
+                                   const model::Budget* budget) {
+  auto result = load_and_validate(path, format, budget);
   std::size_t errors = 0;
   for (const auto& d : result.diagnostics) {
     const bool is_error = d.severity == model::Severity::Error;

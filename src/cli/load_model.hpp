@@ -18,13 +18,15 @@ struct CheckedModel {
   model::Diagnostics diagnostics;         ///< the importer's, then validate's
 };
 
-/// Loads `path` and, when the importer built a model without errors, validates it.
-CheckedModel load_and_validate(const std::string& path, io::Format format = io::Format::Auto);
+/// Loads `path` and, when the importer built a model without errors, validates it; past
+/// `budget`'s deadline (when given) throws LimitReached.
+CheckedModel load_and_validate(const std::string& path, io::Format format = io::Format::Auto,
+                               const model::Budget* budget = nullptr);
 
 /// Loads and validates `path`; prints errors to stderr, and warnings unless `quiet`; throws
-/// InputError when the file or the model has errors.
+/// InputError when the file or the model has errors, LimitReached past `budget`'s deadline.
 model::Project load_model_or_throw(const std::string& path, io::Format format = io::Format::Auto,
-                                   bool quiet = false);
+                                   bool quiet = false, const model::Budget* budget = nullptr);
 
 /// Parses a --format value ("auto", "xml", "iec", "g7", "agrafe").
 io::Format parse_format(const std::string& name);

@@ -59,6 +59,7 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     i.pous = o.pous;
     i.action_order = action_order;
     i.assumptions = assumptions;
+    if (budget) i.deadline = budget->deadline;
     built.system = semantics::make_iec61131_system(project, i, diags);
   }
   bool errors = false;

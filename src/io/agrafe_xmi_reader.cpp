@@ -12,6 +12,7 @@
 #include <pugixml.hpp>
 #include <set>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "io/g7_lexicon.hpp"
@@ -49,8 +50,9 @@ struct StepInfo {
 
 class Reader {
  public:
-  Reader(std::string_view text, std::string file, model::Diagnostics& diags)
-      : text_(text), file_(std::move(file)), diags_(diags) {
+  Reader(std::string_view text, std::string file, model::Diagnostics& diags,
+         const model::Budget* budget)
+      : text_(text), file_(std::move(file)), diags_(diags), poll_(budget, 1024) {
     line_starts_.push_back(0);
     for (std::size_t i = 0; i < text_.size(); ++i)
       if (text_[i] == '\n') line_starts_.push_back(i + 1);
@@ -363,6 +365,7 @@ class Reader {
 
   void read_steps(pugi::xml_node pg) {
     for (auto n : pg.children("steps")) {
+      poll_.tick_or_throw("reading the model");
       const std::string_view t = type_of(n);
       model::Step s;
       if (t == "EnclosingStep")
@@ -416,7 +419,10 @@ class Reader {
     std::set<pugi::xml_node> syncs;
     for (auto s : pg.children("synchronizations")) syncs.insert(s);
     std::map<pugi::xml_node, int> transitions;
+    std::unordered_set<std::string> transition_ids;
+    for (const auto& other : c.transitions) transition_ids.insert(other.name);
     for (auto t : pg.children("transitions")) {
+      poll_.tick_or_throw("reading the model");
       model::Transition tr;
       if (!t.attribute("id")) throw Failure{t, "transition without an id"};
       tr.name = t.attribute("id").value();
@@ -426,9 +432,8 @@ class Reader {
       ExprPtr guard =
           t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);
       tr.guard = timed(t, guard, {});
-      for (const auto& other : c.transitions)
-        if (other.name == tr.name)
-          warn(t, model::Severity::Warning,
+      if (!transition_ids.insert(tr.name).second)
+        warn(t, model::Severity::Warning,
                "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name + "'");
       transitions[t] = static_cast<int>(c.transitions.size());
       c.transitions.push_back(std::move(tr));
@@ -449,6 +454,7 @@ class Reader {
     std::map<pugi::xml_node, std::vector<int>> sync_in_steps, sync_out_steps;
     std::map<pugi::xml_node, std::vector<int>> sync_in_trans, sync_out_trans;
     for (auto arc : pg.children("arcs")) {
+      poll_.tick_or_throw("reading the model");
       if (!arc.attribute("source") || !arc.attribute("target"))
         throw Failure{arc, "arc without a source or a target"};
       const auto s = resolve(arc, arc.attribute("source").value());
@@ -510,6 +516,7 @@ class Reader {
   void read_actions(pugi::xml_node pg) {
     model::Chart& c = chart(pg);
     for (auto link : pg.children("actionLinks")) {
+      poll_.tick_or_throw("reading the model");
       if (!link.attribute("step") || !link.attribute("actionType"))
         throw Failure{link, "action link without a step or an action"};
       const auto step_node = resolve(link, link.attribute("step").value());
@@ -671,6 +678,7 @@ class Reader {
     const model::NestingLevel level(term_depth_);
     if (level.too_deep())
       throw Failure{n, "term nested deeper than " + std::to_string(model::kMaxNesting) + " levels"};
+    poll_.tick_or_throw("reading the model");
     const std::string_view t = type_of(n);
     const SourceLocation at = where(n);
     std::vector<ExprPtr> args;
@@ -750,6 +758,7 @@ class Reader {
   std::vector<std::size_t> line_starts_;
   pugi::xml_document doc_;
   int term_depth_ = 0;  ///< nesting of term() (model::kMaxNesting)
+  model::BudgetPoll poll_;  ///< the run's deadline, polled once per element read
   pugi::xml_node root_;
   model::Pou pou_;
   std::map<pugi::xml_node, std::string> var_names_;
@@ -762,9 +771,10 @@ class Reader {
 
 }  // namespace
 
-LoadResult load_agrafe_xmi(std::string_view text, const std::string& file) {
+LoadResult load_agrafe_xmi(std::string_view text, const std::string& file,
+                           const model::Budget* budget) {
   LoadResult r;
-  r.project = Reader(text, file, r.diagnostics).run();
+  r.project = Reader(text, file, r.diagnostics, budget).run();
   return r;
 }
 

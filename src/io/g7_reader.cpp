@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -45,13 +46,14 @@ struct ParseError {
 
 class Lexer {
  public:
-  explicit Lexer(std::string_view text) : text_(text) {}
+  Lexer(std::string_view text, const model::Budget* budget) : text_(text), poll_(budget, 4096) {}
 
   /// Tokens up to End; a lexical error is thrown as ParseError.
   std::vector<Token> run() {
     std::vector<Token> out;
     if (text_.substr(0, 3) == "\xEF\xBB\xBF") advance(3);
     for (;;) {
+      poll_.tick_or_throw("reading the model");
       skip_space_and_comments();
       Token t;
       t.line = line_;
@@ -184,6 +186,7 @@ class Lexer {
   std::string_view text_;
   std::size_t pos_ = 0;
   int line_ = 1, col_ = 1;
+  model::BudgetPoll poll_;
 };
 
 // ----------------------------------------------------------------------------------- parser
@@ -196,8 +199,9 @@ struct NameRef {
 
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, std::string file, model::Diagnostics& diags)
-      : toks_(std::move(tokens)), file_(std::move(file)), diags_(diags) {}
+  Parser(std::vector<Token> tokens, std::string file, model::Diagnostics& diags,
+         const model::Budget* budget)
+      : toks_(std::move(tokens)), file_(std::move(file)), diags_(diags), poll_(budget, 4096) {}
 
   model::Project run() {
     model::Project project;
@@ -229,6 +233,7 @@ class Parser {
   // ---- token helpers
   const Token& peek(std::size_t k = 0) const { return toks_[std::min(pos_ + k, toks_.size() - 1)]; }
   const Token& next() {
+    poll_.tick_or_throw("reading the model");
     const Token& t = peek();
     if (pos_ + 1 < toks_.size()) ++pos_;
     return t;
@@ -403,6 +408,8 @@ class Parser {
     chart.where = n.where;
     chart_by_name_.emplace(model::to_upper(n.name), pou_.charts.size());
     pou_.charts.push_back(std::move(chart));
+    steps_of_chart_.emplace_back();
+    transitions_of_chart_.emplace_back();
     chart_ = static_cast<int>(pou_.charts.size()) - 1;
     expect("{", "after the partial grafcet name");
     while (!is_punct("}")) {
@@ -479,10 +486,12 @@ class Parser {
     if (names.size() > 1 && (entry || exit || proto.kind != model::StepKind::Normal))
       fail(toks_[pos_ - 1], "'entry', 'exit', 'macro' and 'encloses' apply to one step at a time");
     for (auto& n : names) {
-      if (chart().find_step(n.name)) {
+      const std::string upper = model::to_upper(n.name);
+      if (!steps_of_chart_[static_cast<std::size_t>(chart_)].insert(upper).second) {
         error(n.where, "step '" + n.name + "' is declared twice in grafcet '" + chart().name + "'");
         continue;
       }
+      ++charts_with_step_[upper];
       if (entry) set_once(chart().macro_entry, n, "an entry step");
       if (exit) set_once(chart().macro_exit, n, "an exit step");
       model::Step s = proto;
@@ -534,11 +543,10 @@ class Parser {
       tr.guard = model::make_bool(true, tr.where);
     }
     expect(";", "at the end of the transition");
-    if (!tr.name.empty())
-      for (const auto& other : chart().transitions)
-        if (other.name == tr.name)
-          error(tr.where,
-                "transition '" + tr.name + "' is declared twice in grafcet '" + chart().name + "'");
+    if (!tr.name.empty() &&
+        !transitions_of_chart_[static_cast<std::size_t>(chart_)].insert(tr.name).second)
+      error(tr.where,
+            "transition '" + tr.name + "' is declared twice in grafcet '" + chart().name + "'");
     for (auto& s : sources) tr.sources.push_back(s.name);
     for (auto& s : targets) tr.targets.push_back(s.name);
     step_refs_.push_back({chart_, std::move(sources)});
@@ -821,17 +829,18 @@ class Parser {
   };
 
   int charts_with_step(std::string_view step) const {
-    int n = 0;
-    for (const auto& c : pou_.charts)
-      if (c.find_step(step)) ++n;
-    return n;
+    const auto it = charts_with_step_.find(model::to_upper(step));
+    return it == charts_with_step_.end() ? 0 : it->second;
+  }
+  bool chart_has_step(std::size_t chart, std::string_view step) const {
+    return steps_of_chart_[chart].count(model::to_upper(step)) > 0;
   }
 
   void check() {
     for (const auto& [ci, refs] : step_refs_) {
       const auto& c = pou_.charts[static_cast<std::size_t>(ci)];
       for (const auto& r : refs)
-        if (!c.find_step(r.name))
+        if (!chart_has_step(static_cast<std::size_t>(ci), r.name))
           error(r.where, "undeclared step '" + r.name + "' in grafcet '" + c.name + "'");
     }
     for (const auto& r : chart_refs_)
@@ -840,8 +849,9 @@ class Parser {
       const auto& fo = pou_.forcing_orders[static_cast<std::size_t>(oi)];
       const model::Chart* target = chart_named(fo.target);
       if (!target) continue;
+      const auto target_index = static_cast<std::size_t>(target - pou_.charts.data());
       for (const auto& r : refs)
-        if (!target->find_step(r.name))
+        if (!chart_has_step(target_index, r.name))
           error(r.where,
                 "forced step '" + r.name + "' is not a step of grafcet '" + target->name + "'");
     }
@@ -906,11 +916,18 @@ class Parser {
   int depth_ = 0;  ///< expression nesting (model::kMaxNesting)
   std::string file_;
   model::Diagnostics& diags_;
+  model::BudgetPoll poll_;
   int errors_ = 0;
   model::Pou pou_;
   /// Upper-cased partial grafcet name -> its first chart: thousands of charts are looked up by
   /// name without a linear search each.
   std::unordered_map<std::string, std::size_t> chart_by_name_;
+  /// Per chart (as pou_.charts), the upper-cased names of its steps (and the names of its
+  /// transitions, compared as written, as before); and per upper-cased step
+  /// name, how many charts declare it: every reference is checked without a linear search.
+  std::vector<std::unordered_set<std::string>> steps_of_chart_;
+  std::vector<std::unordered_set<std::string>> transitions_of_chart_;  ///< names, as written
+  std::unordered_map<std::string, int> charts_with_step_;
   const model::Chart* chart_named(std::string_view name) const {
     const auto it = chart_by_name_.find(model::to_upper(name));
     return it == chart_by_name_.end() ? nullptr : &pou_.charts[it->second];
@@ -925,11 +942,11 @@ class Parser {
 
 }  // namespace
 
-LoadResult load_g7(std::string_view text, const std::string& file) {
+LoadResult load_g7(std::string_view text, const std::string& file, const model::Budget* budget) {
   LoadResult r;
   std::vector<Token> tokens;
   try {
-    tokens = Lexer(text).run();
+    tokens = Lexer(text, budget).run();
   } catch (const ParseError& e) {
     model::SourceLocation l;
     l.file = file;
@@ -938,7 +955,7 @@ LoadResult load_g7(std::string_view text, const std::string& file) {
     r.diagnostics.push_back({model::Severity::Error, l, e.message});
     return r;
   }
-  model::Project p = Parser(std::move(tokens), file, r.diagnostics).run();
+  model::Project p = Parser(std::move(tokens), file, r.diagnostics, budget).run();
   if (!model::has_errors(r.diagnostics)) r.project = std::move(p);
   return r;
 }

@@ -27,14 +27,15 @@ constexpr std::size_t kMaxErrors = 50;
 
 class IecTextReader {
  public:
-  IecTextReader(std::string_view text, const std::string& file) : file_(file) {
+  IecTextReader(std::string_view text, const std::string& file, const model::Budget* budget)
+      : file_(file) {
     model::SourceLocation start;
     start.file = file;
     start.line = 1;
     start.column = 1;
     st::Locator locator(start);
-    auto tokens = st::tokenize(text, locator, diags_);
-    parser_ = std::make_unique<Parser>(std::move(tokens), locator);
+    auto tokens = st::tokenize(text, locator, diags_, budget);
+    parser_ = std::make_unique<Parser>(std::move(tokens), locator, budget);
   }
 
   LoadResult run() {
@@ -347,8 +348,9 @@ class IecTextReader {
 
 }  // namespace
 
-LoadResult load_iec_text(std::string_view text, const std::string& file) {
-  return IecTextReader(text, file).run();
+LoadResult load_iec_text(std::string_view text, const std::string& file,
+                         const model::Budget* budget) {
+  return IecTextReader(text, file, budget).run();
 }
 
 }  // namespace sfcv::io

@@ -36,7 +36,7 @@ Format detect_format(const std::string& path, std::string_view text) {
   return Format::IecText;
 }
 
-LoadResult load_file(const std::string& path, Format format) {
+LoadResult load_file(const std::string& path, Format format, const model::Budget* budget) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     LoadResult r;
@@ -51,13 +51,13 @@ LoadResult load_file(const std::string& path, Format format) {
   if (format == Format::Auto) format = detect_format(path, text);
   switch (format) {
     case Format::PlcopenXml:
-      return load_plcopen_xml(text, path);
+      return load_plcopen_xml(text, path, budget);
     case Format::IecText:
-      return load_iec_text(text, path);
+      return load_iec_text(text, path, budget);
     case Format::G7:
-      return load_g7(text, path);
+      return load_g7(text, path, budget);
     case Format::AgrafeXmi:
-      return load_agrafe_xmi(text, path);
+      return load_agrafe_xmi(text, path, budget);
     case Format::Auto:
       break;
   }

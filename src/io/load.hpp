@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "model/budget.hpp"
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
 
@@ -25,12 +26,18 @@ struct LoadResult {
 Format detect_format(const std::string& path, std::string_view text);
 
 /// Reads and parses `path`. A missing or unreadable file is an error diagnostic, not an
-/// exception.
-LoadResult load_file(const std::string& path, Format format = Format::Auto);
+/// exception. Past `budget`'s deadline (when given), every loader throws LimitReached(Time):
+/// the run's --timeout holds while a huge file is read, too.
+LoadResult load_file(const std::string& path, Format format = Format::Auto,
+                     const model::Budget* budget = nullptr);
 
-LoadResult load_plcopen_xml(std::string_view text, const std::string& file);
-LoadResult load_iec_text(std::string_view text, const std::string& file);
-LoadResult load_g7(std::string_view text, const std::string& file);
-LoadResult load_agrafe_xmi(std::string_view text, const std::string& file);
+LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
+                            const model::Budget* budget = nullptr);
+LoadResult load_iec_text(std::string_view text, const std::string& file,
+                         const model::Budget* budget = nullptr);
+LoadResult load_g7(std::string_view text, const std::string& file,
+                   const model::Budget* budget = nullptr);
+LoadResult load_agrafe_xmi(std::string_view text, const std::string& file,
+                           const model::Budget* budget = nullptr);
 
 }  // namespace sfcv::io

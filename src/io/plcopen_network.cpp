@@ -72,6 +72,7 @@ Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnos
                  std::string edge_prefix)
     : ctx_(ctx), problems_(problems), edge_prefix_(std::move(edge_prefix)), container_(container) {
   for (auto n : element_children(container)) {
+    ctx_.poll();
     if (const auto id = n.attribute("localId")) by_id_.emplace(id.value(), n);
     if (local_name(n) == "connector")
       connectors_.emplace(model::to_upper(n.attribute("name").value()), n);

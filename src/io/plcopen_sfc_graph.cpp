@@ -78,6 +78,7 @@ class ChartBuilder {
  private:
   void index() {
     for (auto n : element_children(sfc_)) {
+      ctx_.poll();
       const auto id = n.attribute("localId");
       if (!id) continue;
       if (!by_id_.emplace(id.value(), n).second) {
@@ -86,6 +87,7 @@ class ChartBuilder {
       }
     }
     for (auto n : element_children(sfc_)) {
+      ctx_.poll();
       if (!is_structural(local_name(n))) continue;
       for (auto cpi : children(n, "connectionPointIn"))
         for (auto c : children(cpi, "connection")) {
@@ -101,6 +103,7 @@ class ChartBuilder {
 
   void read_steps() {
     for (auto n : element_children(sfc_)) {
+      ctx_.poll();
       const auto kind = local_name(n);
       if (!is_step(kind)) continue;
       model::Step s;
@@ -232,6 +235,7 @@ class ChartBuilder {
   void read_transitions() {
     int order = 0;
     for (auto n : element_children(sfc_)) {
+      ctx_.poll();
       if (local_name(n) != "transition") continue;
       model::Transition t;
       t.name = trim(n.attribute("name").value());
@@ -375,6 +379,7 @@ class ChartBuilder {
 
   void read_action_blocks() {
     for (auto ab : element_children(sfc_)) {
+      ctx_.poll();
       if (local_name(ab) != "actionBlock") continue;
       const auto conn = child(child(ab, "connectionPointIn"), "connection");
       const auto it = by_id_.find(conn.attribute("refLocalId").value());
@@ -452,6 +457,7 @@ class ChartBuilder {
 
   void read_codesys_step_actions() {
     for (auto n : element_children(sfc_)) {
+      ctx_.poll();
       if (!is_step(local_name(n))) continue;
       for (auto data : children(child(n, "addData"), "data")) {
         const std::string_view dname = data.attribute("name").value();

@@ -71,8 +71,9 @@ std::string element_path(pugi::xml_node node) {
 
 // ---------------------------------------------------------------------------------- XmlContext
 
-XmlContext::XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics)
-    : file_(std::move(file)), diagnostics_(diagnostics) {
+XmlContext::XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics,
+                       const model::Budget* budget)
+    : file_(std::move(file)), diagnostics_(diagnostics), poll_(budget, 1024) {
   line_starts_.push_back(0);
   for (std::size_t i = 0; i < text.size(); ++i)
     if (text[i] == '\n') line_starts_.push_back(i + 1);

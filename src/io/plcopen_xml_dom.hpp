@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/budget.hpp"
 #include "model/diagnostic.hpp"
 #include "model/source_location.hpp"
 
@@ -34,7 +35,8 @@ std::string element_path(pugi::xml_node node);
 /// Where diagnostics go, and how XML nodes map to file:line:col.
 class XmlContext {
  public:
-  XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics);
+  XmlContext(std::string file, std::string_view text, model::Diagnostics& diagnostics,
+             const model::Budget* budget = nullptr);
 
   const std::string& file() const { return file_; }
   model::SourceLocation where(pugi::xml_node node) const;
@@ -45,11 +47,14 @@ class XmlContext {
   void note(pugi::xml_node node, std::string message);
   void add(model::Diagnostic d) { diagnostics_.push_back(std::move(d)); }
   model::Diagnostics& diagnostics() { return diagnostics_; }
+  /// Called once per element read: past the run's deadline, throws LimitReached(Time).
+  void poll() const { poll_.tick_or_throw("reading the model"); }
 
  private:
   std::string file_;
   std::vector<std::size_t> line_starts_;
   model::Diagnostics& diagnostics_;
+  mutable model::BudgetPoll poll_;  ///< reading the clock does not change what was read
 };
 
 /// Text of a textual body element (`ST`, `IL`, `inline/ST`): raw text, CDATA, `xhtml:p` or an

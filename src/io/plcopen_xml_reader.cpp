@@ -364,9 +364,10 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
 
 }  // namespace
 
-LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
+LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
+                            const model::Budget* budget) {
   LoadResult r;
-  XmlContext ctx(file, text, r.diagnostics);
+  XmlContext ctx(file, text, r.diagnostics, budget);
   pugi::xml_document doc;
   const auto parsed =
       doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
@@ -408,6 +409,7 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
       user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
   std::set<std::string> seen;
   for (auto p : pous) {
+    ctx.poll();
     const std::string name = trim(p.attribute("name").value());
     if (name.empty()) {
       ctx.error(p, "POU without a name");

@@ -55,14 +55,16 @@ bool is_integer_type(const std::string& upper) {
 
 class Lexer {
  public:
-  Lexer(std::string_view text, const Locator& locator, model::Diagnostics& diags)
-      : s_(text), loc_(locator), diags_(diags) {}
+  Lexer(std::string_view text, const Locator& locator, model::Diagnostics& diags,
+        const model::Budget* budget)
+      : s_(text), loc_(locator), diags_(diags), poll_(budget, 4096) {}
 
   std::vector<Token> run() {
     std::vector<Token> out;
     // A UTF-8 byte order mark is not text.
     if (s_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = 3;
     for (;;) {
+      poll_.tick_or_throw("reading the model");
       skip_blanks_and_comments();
       Token t;
       t.line = line_;
@@ -402,6 +404,7 @@ class Lexer {
   std::string_view s_;
   const Locator& loc_;
   model::Diagnostics& diags_;
+  model::BudgetPoll poll_;
   std::size_t pos_ = 0;
   int line_ = 1, col_ = 1;
 };
@@ -409,8 +412,8 @@ class Lexer {
 }  // namespace
 
 std::vector<Token> tokenize(std::string_view text, const Locator& locator,
-                            model::Diagnostics& diags) {
-  return Lexer(text, locator, diags).run();
+                            model::Diagnostics& diags, const model::Budget* budget) {
+  return Lexer(text, locator, diags, budget).run();
 }
 
 }  // namespace sfcv::io::st

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/budget.hpp"
 #include "model/diagnostic.hpp"
 #include "model/source_location.hpp"
 
@@ -72,9 +73,9 @@ class Locator {
 
 /// Splits `text` into tokens (the last one is End). Comments `(* *)` (nested), `/* */`, `//`
 /// and pragmas `{ }` are skipped. Lexical errors are appended to `diags`; the offending
-/// characters are skipped.
+/// characters are skipped. Past `budget`'s deadline (when given) throws LimitReached.
 std::vector<Token> tokenize(std::string_view text, const Locator& locator,
-                            model::Diagnostics& diags);
+                            model::Diagnostics& diags, const model::Budget* budget = nullptr);
 
 /// Human-readable form of a token for messages: "'THEN'", "end of text".
 std::string describe(const Token& t);

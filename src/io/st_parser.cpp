@@ -60,8 +60,8 @@ bool is_reserved(std::string_view word) {
   return false;
 }
 
-Parser::Parser(std::vector<Token> tokens, Locator locator)
-    : tokens_(std::move(tokens)), locator_(std::move(locator)) {
+Parser::Parser(std::vector<Token> tokens, Locator locator, const model::Budget* budget)
+    : tokens_(std::move(tokens)), locator_(std::move(locator)), poll_(budget, 4096) {
   if (tokens_.empty() || tokens_.back().kind != TokenKind::End) tokens_.push_back(Token{});
 }
 
@@ -70,6 +70,7 @@ const Token& Parser::peek(std::size_t k) const {
 }
 
 const Token& Parser::next() {
+  poll_.tick_or_throw("reading the model");
   const Token& t = peek();
   if (pos_ < tokens_.size() - 1) ++pos_;
   return t;

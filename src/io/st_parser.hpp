@@ -54,7 +54,8 @@ struct ParseError : InputError {
 /// Recursive-descent parser over a token vector, used directly by the textual SFC importer.
 class Parser {
  public:
-  Parser(std::vector<Token> tokens, Locator locator);
+  /// Past `budget`'s deadline (when given), consuming a token throws LimitReached.
+  Parser(std::vector<Token> tokens, Locator locator, const model::Budget* budget = nullptr);
 
   // ---- token access
   const Token& peek(std::size_t k = 0) const;
@@ -115,6 +116,7 @@ class Parser {
   Locator locator_;
   std::size_t pos_ = 0;
   int depth_ = 0;
+  model::BudgetPoll poll_;
 };
 
 /// True for words ST reserves (AND, IF, END_IF, ...) which cannot name a variable.

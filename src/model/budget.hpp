@@ -81,19 +81,23 @@ struct Budget {
 class BudgetPoll {
  public:
   explicit BudgetPoll(const Budget& budget, std::uint32_t every = 256)
+      : budget_(&budget), every_(every) {}
+  /// No budget (null): tick() never expires, so a pass that may run without a budget (a
+  /// loader called from a test or a tool) polls the same way.
+  explicit BudgetPoll(const Budget* budget, std::uint32_t every = 256)
       : budget_(budget), every_(every) {}
   /// True once the deadline has passed (checked every `every` calls).
   bool tick() {
-    if (++count_ < every_) return false;
+    if (!budget_ || ++count_ < every_) return false;
     count_ = 0;
-    return budget_.expired();
+    return budget_->expired();
   }
   void tick_or_throw(const char* while_doing) {
-    if (tick()) budget_.check_time(while_doing);
+    if (tick()) budget_->check_time(while_doing);
   }
 
  private:
-  const Budget& budget_;
+  const Budget* budget_;
   std::uint32_t every_;
   std::uint32_t count_ = 0;
 };

@@ -47,6 +47,7 @@ Diagnostics Validator::run() {
 }
 
 int Validator::step_index(const Chart& chart, std::string_view name) const {
+  poll_.tick_or_throw("validating the model");
   auto [it, fresh] = step_indices_.try_emplace(&chart);
   if (fresh)
     for (std::size_t i = 0; i < chart.steps.size(); ++i)
@@ -123,8 +124,8 @@ std::set<std::size_t> Validator::charts_activated_by_grafcet_orders() const {
 
 }  // namespace detail
 
-Diagnostics validate(const Project& project) {
-  return detail::Validator(project).run();
+Diagnostics validate(const Project& project, const Budget* budget) {
+  return detail::Validator(project, budget).run();
 }
 
 }  // namespace sfcv::model

@@ -8,12 +8,14 @@
 // qualifiers without a duration, dangling Grafcet references. Warnings (Severity::Warning) are
 // legal but suspicious: steps that the chart structure can never reach.
 
+#include "model/budget.hpp"
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
 
 namespace sfcv::model {
 
-/// Every check, in document order within each POU.
-Diagnostics validate(const Project& project);
+/// Every check, in document order within each POU. Past `budget`'s deadline (when given),
+/// throws LimitReached(Time).
+Diagnostics validate(const Project& project, const Budget* budget = nullptr);
 
 }  // namespace sfcv::model

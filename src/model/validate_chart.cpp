@@ -34,7 +34,10 @@ void Validator::check_chart(const Chart& chart, bool activated_otherwise) {
   if (!chart.parent_action.empty() && !pou_->find_action(chart.parent_action))
     error(where, chart_label(chart) + " belongs to an undeclared action");
 
-  for (const auto& s : chart.steps) check_step_kind(s, where);
+  for (const auto& s : chart.steps) {
+    poll_.tick_or_throw("validating the model");
+    check_step_kind(s, where);
+  }
 
   // An undeclared step is one defect however many transitions name it: one error, at the
   // first transition that names it, listing the others.
@@ -56,6 +59,7 @@ void Validator::check_chart(const Chart& chart, bool activated_otherwise) {
     undeclared.push_back({name, &here, source, {}});
   };
   for (const auto& t : chart.transitions) {
+    poll_.tick_or_throw("validating the model");
     const auto& here = at(t.where, where);
     // IEC 60848 has source transitions (no upstream step) and sink transitions (no
     // downstream step); IEC 61131-3 has neither.

@@ -9,6 +9,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "semantics/detail/grafcet_system_impl.hpp"
 
@@ -40,6 +41,12 @@ void GrafcetSystem::build(const model::Project& project) {
   build_initial_situation(project);
 }
 
+void GrafcetSystem::poll_build_deadline() {
+  if ((++build_polls_ & 1023U) != 0 || !options_.deadline) return;
+  if (std::chrono::steady_clock::now() > *options_.deadline)
+    throw LimitReached(Limit::Time, "time limit reached while building the system");
+}
+
 // Charts and steps.
 void GrafcetSystem::build_charts(const model::Project& project) {
   for (const auto& pou : project.pous) {
@@ -49,6 +56,7 @@ void GrafcetSystem::build_charts(const model::Project& project) {
       gc.pou = pou.name;
       const int cid = static_cast<int>(charts_.size());
       for (const auto& st : chart.steps) {
+        poll_build_deadline();
         GStep gs;
         gs.name = st.name;
         gs.chart = cid;
@@ -229,14 +237,18 @@ void GrafcetSystem::build_variable_fields() {
 // Transitions: the steps they clear (need) and activate (act), and their receptivity.
 void GrafcetSystem::build_transitions(const model::Pou& pou, const model::Chart& chart,
                                       int chart_id) {
+  // Indexed once per chart (the first step of a name, as a linear search would find):
+  // looking steps up per transition is quadratic on long charts.
+  std::unordered_map<std::string, int> step_index;
+  for (int s : charts_[chart_id].steps) step_index.try_emplace(model::to_upper(steps_[s].name), s);
+  auto step_of = [&](const std::string& n) {
+    const auto it = step_index.find(model::to_upper(n));
+    return it == step_index.end() ? -1 : it->second;
+  };
   for (const auto& t : chart.transitions) {
+    poll_build_deadline();
     GTrans gt;
     gt.chart = chart_id;
-    auto step_of = [&](const std::string& n) {
-      for (int s : charts_[chart_id].steps)
-        if (model::iequals(steps_[s].name, n)) return s;
-      return -1;
-    };
     bool good = true;
     for (const auto& n : t.sources) {
       const int s = step_of(n);

@@ -11,6 +11,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "model/errors.hpp"
 #include "model/names.hpp"
 #include "semantics/detail/iec_compiler.hpp"
 
@@ -21,6 +22,12 @@ namespace detail {
 void Compiler::error(const model::SourceLocation& where, std::string msg) {
   diags.push_back({model::Severity::Error, where, std::move(msg)});
   ok = false;
+}
+
+void Compiler::poll_deadline() {
+  if ((++polls & 1023U) != 0 || !p.options.deadline) return;
+  if (std::chrono::steady_clock::now() > *p.options.deadline)
+    throw LimitReached(Limit::Time, "time limit reached while building the system");
 }
 
 std::uint32_t Compiler::add_field(std::string name, FieldKind kind, std::int64_t lo,

@@ -29,6 +29,7 @@ void Compiler::structure() {
       cp.charts.push_back(cid);
       bool has_initial = false;
       for (const auto& st : ch.steps) {
+        poll_deadline();
         if (st.kind != model::StepKind::Normal)
           error(st.where,
                 "step '" + st.name + "' is a Grafcet macro/enclosing step, not IEC 61131-3");
@@ -117,6 +118,7 @@ void Compiler::actions_and_transitions() {
     }
     // Associations.
     for (const auto& as : pou.associations) {
+      poll_deadline();
       std::optional<std::uint32_t> step;
       if (!as.chart.empty()) {
         const int ci = pou.chart_index(as.chart);
@@ -197,6 +199,7 @@ void Compiler::actions_and_transitions() {
       for (std::size_t i = 0; i < ch.steps.size(); ++i)
         step_of.try_emplace(model::to_upper(ch.steps[i].name), static_cast<int>(i));
       for (const auto& t : ch.transitions) {
+        poll_deadline();
         Transition ct;
         ct.chart = cid;
         bool good = true;

@@ -36,6 +36,9 @@ struct Iec61131Options {
   /// single POU with an SFC body (PROGRAMs preferred), several candidates being an error.
   std::vector<std::string> pous;
   std::vector<model::ExprPtr> assumptions;  ///< constraints on inputs and state
+  /// The run's deadline (model::Budget): compiling a chart of a million steps takes seconds,
+  /// so the compiler polls it and throws LimitReached(Time).
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 struct GrafcetOptions {

@@ -56,7 +56,7 @@ std::set<std::vector<StateWord>> distinct(const std::vector<StateWord>& flat, st
 /// `max_states`); returns the number of states compared.
 std::uint32_t expect_same_successors(const semantics::TransitionSystem& ts,
                                      std::uint32_t max_states) {
-  auto compiled = make_compiled_enumerator(ts);
+  auto compiled = make_compiled_enumerator(ts, model::Budget{});
   EXPECT_TRUE(compiled) << "no compiled successor function";
   if (!compiled) return 0;
   auto interpreted = make_interpreted_enumerator(ts);
@@ -217,7 +217,7 @@ void expect_same_results(const semantics::TransitionSystem& ts,
   task.properties = props;
   task.limits.max_states = max_states;
   ASSERT_TRUE(invariants_only(task));
-  auto compiled = make_compiled_enumerator(ts);
+  auto compiled = make_compiled_enumerator(ts, model::Budget{});
   const auto fast = check_invariants(task, compiled.get());
   const auto slow = check_invariants(task);  // interpreted successors
   expect_same_report(check_invariants(task, compiled.get(), 3), fast);
@@ -300,7 +300,7 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
     task.system = c.ts;
     task.properties = c.props;
     task.limits.max_states = c.max_states;
-    auto compiled = make_compiled_enumerator(*c.ts);
+    auto compiled = make_compiled_enumerator(*c.ts, model::Budget{});
     ASSERT_TRUE(compiled);
     const auto single = check_invariants(task, compiled.get(), 1);
     for (unsigned threads : {2U, 4U}) {

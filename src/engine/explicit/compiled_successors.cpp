@@ -270,7 +270,8 @@ class CompiledEnumerator final : public TargetEnumerator {
 
 }  // namespace
 
-std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts) {
+std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts,
+                                                           const model::Budget& limits) {
   if (ts.kind() != semantics::SemanticsKind::Iec61131) return nullptr;
   // An input the interpreter would refuse to enumerate (SemanticsLimitError) must still be
   // refused: leave such systems to it.
@@ -280,11 +281,15 @@ std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::Tran
             static_cast<std::uint64_t>(semantics::kMaxEnumeratedValues))
       return nullptr;
   try {
-    const auto circuit = semantics::build_iec61131_circuit(ts);
+    const auto circuit =
+        semantics::build_iec61131_circuit(ts, limits.deadline, limits.max_memory_bytes);
     if (circuit.aig.inputs().size() > 64) return nullptr;
     return std::make_unique<CompiledEnumerator>(ts, circuit);
   } catch (const semantics::CircuitUnsupported&) {
     return nullptr;
+  } catch (const LimitReached& e) {
+    if (e.which() != Limit::Memory) throw;
+    return nullptr;  // a speed-up the budget cannot afford: the interpreter stays within it
   } catch (const std::invalid_argument&) {
     return nullptr;  // an IEC system wrapped by another (e.g. the history system): no circuit
   }

@@ -20,8 +20,11 @@
 
 namespace sfcv::engine {
 
-/// The compiled enumerator of an IEC 61131-3 system; null when `ts` is not one or its circuit
-/// cannot be built (CircuitUnsupported) or has more than 64 input bits. Not thread-safe.
-std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts);
+/// The compiled enumerator of an IEC 61131-3 system; null when `ts` is not one, its circuit
+/// cannot be built (CircuitUnsupported), has more than 64 input bits or does not fit in the
+/// run's memory budget (the interpreter then runs within it). Past the run's deadline, throws
+/// LimitReached(Time). Not thread-safe.
+std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts,
+                                                           const model::Budget& limits);
 
 }  // namespace sfcv::engine

@@ -93,7 +93,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   const auto start = Clock::now();
   // Invariants alone need neither the edges nor their labels: decided during the search.
   if (invariants_only(task)) {
-    const auto compiled = make_compiled_enumerator(*task.system);
+    const auto compiled = make_compiled_enumerator(*task.system, task.limits);
     const unsigned threads =
         options_.threads > 0 ? options_.threads : std::max(1U, std::thread::hardware_concurrency());
     return check_invariants(task, compiled.get(), threads);

@@ -408,6 +408,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
   std::uint32_t level = 0, level_end = initial_count;
+  const std::uint32_t poll_mask = clock_poll_mask(words);
   // Before state s is expanded: the level it starts, and the limits. False: stop before it.
   auto before = [&](std::uint32_t s) {
     if (s == level_end) {
@@ -418,7 +419,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       limit = "states";
       return false;
     }
-    if ((s & 1023U) == 0 && s > 0) {
+    if ((s & poll_mask) == 0 && s > 0) {
       if (limits.expired())
         limit = "time";
       else if (limits.max_memory_bytes > 0 && memory() > limits.max_memory_bytes)

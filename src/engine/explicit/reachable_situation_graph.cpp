@@ -224,8 +224,9 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   ExplorationProgress progress;
   std::uint64_t next_report = options.progress_interval;
   g.complete_ = g.limit_.empty();
+  const std::uint32_t poll_mask = clock_poll_mask(ts.layout().words());
   for (std::uint32_t s = 0; g.complete_ && s < g.states_.size(); ++s) {
-    if ((s & 1023U) == 0) {
+    if ((s & poll_mask) == 0) {
       if ((options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) ||
           (options.deadline && Clock::now() > *options.deadline) ||
           (options.cancel && options.cancel->load(std::memory_order_relaxed))) {

@@ -15,6 +15,15 @@ namespace sfcv::engine {
 using semantics::StateView;
 using semantics::StateWord;
 
+/// The mask of the state counter between two reads of the clock in an exploration loop: every
+/// 1024 states of one word, down to every state for states of 1024 words or more (a chart of a
+/// million steps costs milliseconds per state, and --timeout must still hold within a second).
+inline std::uint32_t clock_poll_mask(std::uint32_t words_per_state) {
+  std::uint32_t every = 1024;
+  while (every > 1 && every * words_per_state > 1024) every /= 2;
+  return every - 1;
+}
+
 class StateStore {
  public:
   explicit StateStore(std::uint32_t words_per_state);

@@ -193,9 +193,14 @@ QueryServicePtr make_query_service(const semantics::TransitionSystem& ts,
       why = "the BDD engine does not support the Grafcet semantics yet";
     } else {
       try {
-        circuit = semantics::build_iec61131_circuit(ts);
+        circuit = semantics::build_iec61131_circuit(ts, budget.deadline, budget.max_memory_bytes);
       } catch (const semantics::CircuitUnsupported& e) {
         why = std::string("the BDD engine cannot encode ") + e.what();
+      } catch (const LimitReached& e) {
+        // Out of memory for the circuit: the explicit engine may still fit (auto); out of time
+        // (or asked for the BDD engine): unknown.
+        if (e.which() != Limit::Memory || options.engine == QueryEngineChoice::Bdd) throw;
+        why = std::string("the BDD engine's circuit does not fit: ") + e.what();
       }
     }
     if (options.engine == QueryEngineChoice::Bdd && !circuit)

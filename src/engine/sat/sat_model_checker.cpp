@@ -74,11 +74,13 @@ class Run {
   Run(const logic::CheckTask& task, const SatEngineOptions& options)
       : task_(task), options_(options), ts_(*task.system) {
     if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
-      grafcet_.emplace(semantics::build_grafcet_circuit(ts_));
+      grafcet_.emplace(semantics::build_grafcet_circuit(ts_, task.limits.deadline,
+                                                        task.limits.max_memory_bytes));
       machine_.emplace(*grafcet_);
       step_ok_ = machine_->step_ok();
     } else {
-      iec_.emplace(semantics::build_iec61131_circuit(ts_));
+      iec_.emplace(semantics::build_iec61131_circuit(ts_, task.limits.deadline,
+                                                     task.limits.max_memory_bytes));
       step_ok_ = iec_->aig.make_and(iec_->allowed, Aig::make_not(iec_->range_error));
       steps_ = logic::step_refs(ts_, task_.project);
     }
@@ -846,12 +848,16 @@ class SatModelChecker final : public ModelChecker {
     }
     try {
       if (task.system->kind() == semantics::SemanticsKind::Grafcet)
-        semantics::build_grafcet_circuit(*task.system);
+        semantics::build_grafcet_circuit(*task.system, task.limits.deadline,
+                                         task.limits.max_memory_bytes);
       else
-        semantics::build_iec61131_circuit(*task.system);
+        semantics::build_iec61131_circuit(*task.system, task.limits.deadline,
+                                          task.limits.max_memory_bytes);
     } catch (const semantics::CircuitUnsupported& e) {
       if (why) *why = "the " + std::string(name()) + " engine cannot encode " + e.what();
       return false;
+    } catch (const LimitReached&) {
+      return true;  // check() meets the limit again and answers unknown
     }
     return true;
   }

@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "model/budget.hpp"
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
 #include "model/names.hpp"
@@ -50,7 +51,7 @@ std::string quoted(std::string_view s);
 
 class Validator {
  public:
-  explicit Validator(const Project& project) : project_(project) {}
+  Validator(const Project& project, const Budget* budget) : project_(project), poll_(budget, 1024) {}
 
   Diagnostics run();
 
@@ -62,6 +63,8 @@ class Validator {
   std::unordered_map<std::string, int> chart_by_name_;
   Diagnostics out_;
   std::set<std::string> outside_warned_;  ///< per POU: names already reported by outside_model
+  /// The run's deadline, polled per step lookup (every transition and association makes one).
+  mutable BudgetPoll poll_;
 
   /// Step indices by upper-case name (the first declaration), built once per chart: checks look
   /// steps up per transition and association, and a linear search each time is quadratic.
@@ -87,6 +90,7 @@ class Validator {
                         const SourceLocation& fallback) {
     std::map<std::string, const T*> first;
     for (const auto& item : items) {
+      poll_.tick_or_throw("validating the model");
       if (item.name.empty()) continue;
       auto [it, fresh] = first.emplace(to_upper(item.name), &item);
       if (fresh) continue;

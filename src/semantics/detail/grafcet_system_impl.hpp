@@ -204,6 +204,9 @@ class GrafcetSystem final : public TransitionSystem {
   void build_variables(const model::Project& project);
   void build_variable_fields();
   void build_transitions(const model::Pou& pou, const model::Chart& chart, int chart_id);
+  /// Once per step and transition built: past GrafcetOptions::deadline, throws
+  /// LimitReached(Time) (a chart of a million steps takes seconds to build).
+  void poll_build_deadline();
   int step_in(const model::Pou& pou, const std::string& chart, const std::string& step,
               const model::SourceLocation& where);
   void build_stored_actions(const model::Pou& pou);
@@ -256,6 +259,7 @@ class GrafcetSystem final : public TransitionSystem {
   GrafcetOptions options_;
   model::Diagnostics& diags_;
   bool ok_ = true;
+  std::uint32_t build_polls_ = 0;  ///< calls of poll_build_deadline()
 
   std::vector<GStep> steps_;
   std::vector<GChart> charts_;

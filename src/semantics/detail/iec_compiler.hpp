@@ -70,8 +70,12 @@ struct Compiler {
   // Step .T: constants compared with, and nodes to patch once regions are known.
   std::map<std::uint32_t, std::set<std::int64_t>> t_keys;  // step -> keys (2c or 2c+1)
   std::vector<std::uint32_t> t_nodes;
+  std::uint32_t polls = 0;  // calls of poll_deadline()
 
   void error(const model::SourceLocation& where, std::string msg);
+  /// Once per step, transition or association compiled: past the run's deadline
+  /// (Iec61131Options::deadline), throws LimitReached(Time).
+  void poll_deadline();
 
   std::uint32_t add_field(std::string name, FieldKind kind, std::int64_t lo, std::int64_t hi,
                           std::int64_t init, bool is_bool);
