@@ -110,7 +110,9 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
 
 std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e,
                                       const model::Pou& f, int context, VT& type) {
-  type = VT::Int;
+  // The declared result type, also after a refusal (no second error about the same call).
+  const auto* declared = f.find_variable(f.name);
+  type = declared && declared->type.kind == TypeKind::Bool ? VT::Bool : VT::Int;
   const auto index = function(f, e.where);
   if (!index) return constant(0);
   std::vector<const model::Variable*> inputs;
