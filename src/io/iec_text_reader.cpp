@@ -68,7 +68,8 @@ class IecTextReader {
     if (project.pous.empty() && !model::has_errors(diags_)) {
       model::SourceLocation where;
       where.file = file_;
-      diags_.push_back({model::Severity::Error, where, "no PROGRAM, FUNCTION_BLOCK or FUNCTION in the file"});
+      diags_.push_back(
+          {model::Severity::Error, where, "no PROGRAM, FUNCTION_BLOCK or FUNCTION in the file"});
     }
     if (!project.pous.empty()) project.name = project.pous.front().name;
     LoadResult r;
@@ -102,7 +103,9 @@ class IecTextReader {
     pou.kind = program    ? model::PouKind::Program
                : function ? model::PouKind::Function
                           : model::PouKind::FunctionBlock;
-    const std::string end = program ? "END_PROGRAM" : function ? "END_FUNCTION" : "END_FUNCTION_BLOCK";
+    const std::string end = program    ? "END_PROGRAM"
+                            : function ? "END_FUNCTION"
+                                       : "END_FUNCTION_BLOCK";
     pou.where = p.where(kw);
     pou.name = p.identifier(program    ? "a program name"
                             : function ? "a function name"

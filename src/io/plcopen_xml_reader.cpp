@@ -296,11 +296,10 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
     if (!unmodelled_function.empty())
       problems.push_back({model::Severity::Error, ctx.where(lang),
                           "function '" + pou.name + "': " + unmodelled_function});
-    auto stmts = problems.empty() ? read_statement_body(pc, lang,
-                                                        bi == 0 ? "BODY"
-                                                                : "BODY" + std::to_string(bi + 1),
-                                                        problems)
-                                  : std::nullopt;
+    auto stmts = problems.empty()
+                     ? read_statement_body(
+                           pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems)
+                     : std::nullopt;
     if (stmts && !stmts->empty()) {
       // Vendor bodies call instances of user function blocks (whose variables were dropped
       // above) and read global lists: a body that does not validate against the POU's own

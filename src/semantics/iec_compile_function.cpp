@@ -16,10 +16,10 @@ namespace sfcv::semantics::iec::detail {
 std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
                                                 const model::SourceLocation& call) {
   const auto up = model::to_upper(f.name);
-  if (const auto at = std::find(calling.begin(), calling.end(), up); at != calling.end()) {
+  if (const auto at = std::find(calling.begin(), calling.end(), &f); at != calling.end()) {
     std::string chain;
-    for (auto it = at; it != calling.end(); ++it) chain += *it + " -> ";
-    error(call, "function '" + f.name + "' calls itself (" + chain + up +
+    for (auto it = at; it != calling.end(); ++it) chain += (*it)->name + " -> ";
+    error(call, "function '" + f.name + "' calls itself (" + chain + f.name +
                     "): recursion is not modelled");
     return std::nullopt;
   }
@@ -50,7 +50,8 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
                          ": a function keeps no state between calls (use a FUNCTION_BLOCK)");
       continue;
     }
-    const bool result = v.direction == model::VarDirection::Output && model::iequals(v.name, f.name);
+    const bool result =
+        v.direction == model::VarDirection::Output && model::iequals(v.name, f.name);
     const auto var = model::to_upper(v.name);
     if (v.direction == model::VarDirection::External) {
       // The global of that name, read and written in place like the caller's own.
@@ -87,8 +88,7 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
       has_result = true;
     }
   }
-  if (!has_result)
-    error(f.where, "function '" + f.name + "' has no result of a modelled type");
+  if (!has_result) error(f.where, "function '" + f.name + "' has no result of a modelled type");
   if (!ok) {
     ok = false;
     return std::nullopt;
@@ -97,7 +97,7 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
   const auto index = static_cast<std::uint32_t>(p.functions.size());
   p.functions.push_back(std::move(fn));
   // The body is compiled once, outside any loop of the caller (EXIT in it is an error there).
-  calling.push_back(up);
+  calling.push_back(&f);
   const int depth = loop_depth;
   loop_depth = 0;
   const Block body = block(sc, f.body);
@@ -108,8 +108,8 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
   return index;
 }
 
-std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e,
-                                      const model::Pou& f, int context, VT& type) {
+std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, const model::Pou& f,
+                                      int context, VT& type) {
   // The declared result type, also after a refusal (no second error about the same call).
   const auto* declared = f.find_variable(f.name);
   type = declared && declared->type.kind == TypeKind::Bool ? VT::Bool : VT::Int;
@@ -157,8 +157,8 @@ std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e,
     kids.push_back(expr(sc, *given[i], context, t));
     if (field_is_bool[field]) t = bool_if_literal(*given[i], t);
     if ((t == VT::Bool) != static_cast<bool>(field_is_bool[field]))
-      fail(given[i]->where, "input '" + inputs[i]->name + "' of function " + f.name +
-                                " has the wrong type");
+      fail(given[i]->where,
+           "input '" + inputs[i]->name + "' of function " + f.name + " has the wrong type");
   }
   Node n;
   n.op = Op::Call;

@@ -87,8 +87,7 @@ TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
   EXPECT_NE(r.err.find(":3:14: error: VAR_IN_OUT 'z' of function F is not modelled"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find(":4:7: error: function block instance 't' of function F"),
-            std::string::npos)
+  EXPECT_NE(r.err.find(":4:7: error: function block instance 't' of function F"), std::string::npos)
       << r.err;
   file = write_temp(
       "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  F := x;\nEND_FUNCTION\n"
@@ -136,8 +135,8 @@ std::string function(const std::string& name, const std::string& result,
 }
 
 // Count2 counts its TRUE inputs; Both returns FALSE early unless x, else Count2(x, y) = 2.
-std::string functions(const std::string& both_body = st(
-                          "IF NOT x THEN RETURN; END_IF;\nBoth := Count2(x, y) = 2;")) {
+std::string functions(
+    const std::string& both_body = st("IF NOT x THEN RETURN; END_IF;\nBoth := Count2(x, y) = 2;")) {
   return function("Count2", "<INT/>", vars("inputVars", {"a", "b"}),
                   st("Count2 := BOOL_TO_INT(a) + BOOL_TO_INT(b);")) +
          function("Both", "<BOOL/>", vars("inputVars", {"x", "y"}), both_body);
@@ -201,7 +200,8 @@ TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
       "<expression>x</expression></inVariable><outVariable localId=\"2\"><position x=\"0\" "
       "y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
       "<expression>Both</expression></outVariable></FBD>";
-  const auto file = write_temp(kHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kFooter, ".xml");
+  const auto file =
+      write_temp(kHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kFooter, ".xml");
   const auto r = run_sfcv(check(file, "explicit", "--ctl 'AG !Run'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("FUNCTION bodies in FBD are not modelled (only ST)"), std::string::npos)

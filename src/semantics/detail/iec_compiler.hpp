@@ -40,7 +40,7 @@ struct PouScope {
   std::string name;   // the program "Main", or the instance path "Main.Crane"
   std::string alias;  // instances: the path below the program, "Crane" ("" for programs)
   bool instance = false;
-  bool function = false;  // a user FUNCTION's body: only its own variables (and globals)
+  bool function = false;                         // a user FUNCTION's body (names its own variables)
   std::map<std::string, Ref> names;              // upper-case variable names
   std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
@@ -119,7 +119,7 @@ struct Compiler {
   // ------------------------------------------------------------------- user functions
   /// Upper-case name -> index in Program::functions; nullopt when refused (reported once).
   std::map<std::string, std::optional<std::uint32_t>> functions;
-  std::vector<std::string> calling;  // upper-case functions whose bodies are being compiled
+  std::vector<const model::Pou*> calling;  // functions whose bodies are being compiled
   /// The compiled function `f` (compiled at its first call, at `call`), or nullopt after an
   /// error: recursion, or a part of the function sfcv does not model.
   std::optional<std::uint32_t> function(const model::Pou& f, const model::SourceLocation& call);
