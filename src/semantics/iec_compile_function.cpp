@@ -24,6 +24,11 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
     return std::nullopt;
   }
   if (const auto it = functions.find(up); it != functions.end()) return it->second;
+  if (calling.size() >= kMaxFunctionDepth) {
+    error(call, "call of function '" + f.name + "' nested deeper than " +
+                    std::to_string(kMaxFunctionDepth) + " function calls");
+    return std::nullopt;
+  }
   functions[up] = std::nullopt;  // refused until it compiles
 
   const bool was_ok = ok;

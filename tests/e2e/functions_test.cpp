@@ -55,6 +55,25 @@ TEST(FunctionsE2E, PropertiesHoldAndFailThroughAFunctionsResult) {
   }
 }
 
+// A function keeps nothing between calls: its VARs start from their initial values at every
+// call (two calls in a cycle both give 6), and an unassigned result is its type's default.
+TEST(FunctionsE2E, TemporariesStartFreshAtEveryCall) {
+  const auto file = write_temp(
+      "FUNCTION Next : INT\n  VAR n : INT := 5; END_VAR\n  n := n + 1;\n  Next := n;\n"
+      "END_FUNCTION\n"
+      "FUNCTION Never : BOOL\n  VAR_INPUT a : BOOL; END_VAR\n  IF a AND NOT a THEN Never := TRUE; "
+      "END_IF;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; z : BOOL; END_VAR\n"
+      "  y := Next() + Next();\n  z := Never(a);\nEND_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    auto r = run_sfcv(check(file, engine, "--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'"));
+    EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
+    r = run_sfcv(check(file, engine, "--ctl 'AG y = 0'"));
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+  }
+}
+
 // Recursion through a second function is refused at the call that closes the cycle.
 TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
   const auto file = write_temp(
@@ -72,6 +91,23 @@ TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
         << r.err;
   }
   EXPECT_EQ(run_sfcv("lint " + file).exit_code, 2);
+  // A chain of 40 functions, each calling the next, is deeper than the 32 calls modelled.
+  std::string chain;
+  for (int i = 0; i < 40; ++i)
+    chain += "FUNCTION F" + std::to_string(i) + " : INT\n  VAR_INPUT x : INT; END_VAR\n  F" +
+             std::to_string(i) +
+             " := " + (i < 39 ? "F" + std::to_string(i + 1) + "(x) + 1" : std::string("x")) +
+             ";\nEND_FUNCTION\n";
+  const auto deep = write_temp(chain +
+                                   "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n"
+                                   "  VAR_OUTPUT y : INT; END_VAR\n  y := F0(BOOL_TO_INT(a));\n"
+                                   "END_PROGRAM\n",
+                               ".st");
+  const auto r = run_sfcv(check(deep, "explicit", "--ctl 'AG y >= 0'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("call of function 'F32' nested deeper than 32 function calls"),
+            std::string::npos)
+      << r.err;
 }
 
 // VAR_IN_OUT and FB instances in a function, and calls that do not fit the declaration.

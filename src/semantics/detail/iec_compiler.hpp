@@ -120,6 +120,9 @@ struct Compiler {
   /// Upper-case name -> index in Program::functions; nullopt when refused (reported once).
   std::map<std::string, std::optional<std::uint32_t>> functions;
   std::vector<const model::Pou*> calling;  // functions whose bodies are being compiled
+  /// Functions calling functions: deeper chains are refused (they would only deepen the
+  /// compiler's and the machine's recursion).
+  static constexpr std::size_t kMaxFunctionDepth = 32;
   /// The compiled function `f` (compiled at its first call, at `call`), or nullopt after an
   /// error: recursion, or a part of the function sfcv does not model.
   std::optional<std::uint32_t> function(const model::Pou& f, const model::SourceLocation& call);
