@@ -71,7 +71,10 @@ class IecTextReader {
       diags_.push_back(
           {model::Severity::Error, where, "no PROGRAM, FUNCTION_BLOCK or FUNCTION in the file"});
     }
-    if (!project.pous.empty()) project.name = project.pous.front().name;
+    // Named after its first program or function block (functions usually come first).
+    for (const auto& pou : project.pous)
+      if (project.name.empty() && pou.kind != model::PouKind::Function) project.name = pou.name;
+    if (project.name.empty() && !project.pous.empty()) project.name = project.pous.front().name;
     LoadResult r;
     if (!model::has_errors(diags_)) r.project = std::move(project);
     r.diagnostics = std::move(diags_);
