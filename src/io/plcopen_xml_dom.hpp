@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,6 +46,10 @@ class XmlContext {
   void note(pugi::xml_node node, std::string message);
   void add(model::Diagnostic d) { diagnostics_.push_back(std::move(d)); }
   model::Diagnostics& diagnostics() { return diagnostics_; }
+
+  /// Upper-case names of the project's FUNCTION POUs: a block of such a type in an FBD/LD
+  /// network is a call of that function.
+  std::set<std::string> user_functions;
 
  private:
   std::string file_;

@@ -427,9 +427,13 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file) {
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
   std::set<std::string> user_fbs;
-  for (auto p : pous)
-    if (std::string_view(p.attribute("pouType").value()) == "functionBlock")
+  for (auto p : pous) {
+    const std::string_view kind = p.attribute("pouType").value();
+    if (kind == "functionBlock")
       user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
+    if (kind == "function")
+      ctx.user_functions.insert(model::to_upper(trim(p.attribute("name").value())));
+  }
   std::set<std::string> seen;
   for (auto p : pous) {
     const std::string name = trim(p.attribute("name").value());

@@ -229,6 +229,51 @@ TEST(FunctionsE2E, PlcopenFunctionGuardsATransition) {
   }
 }
 
+// An FBD program calling a user function as a block (no instance name): the block's formal
+// parameters are the call's, an unconnected input has its initial value, and a block whose
+// result nobody reads is refused rather than dropped.
+std::string fbd_main(const std::string& y_input, const std::string& motor_source) {
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"s1", "s2"}) +
+         vars("outputVars", {"motor"}) +
+         "</interface><body><FBD>"
+         "<inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+         "<expression>s1</expression></inVariable>"
+         "<inVariable localId=\"2\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+         "<expression>s2</expression></inVariable>"
+         "<block localId=\"3\" typeName=\"Both\"><position x=\"0\" y=\"0\"/><inputVariables>"
+         "<variable formalParameter=\"x\"><connectionPointIn><connection refLocalId=\"1\"/>"
+         "</connectionPointIn></variable>"
+         "<variable formalParameter=\"y\"><connectionPointIn>" +
+         y_input +
+         "</connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables>"
+         "<variable formalParameter=\"Both\"><connectionPointOut/></variable></outputVariables>"
+         "</block><outVariable localId=\"4\"><position x=\"0\" y=\"0\"/><connectionPointIn>" +
+         motor_source + "</connectionPointIn><expression>motor</expression></outVariable>" +
+         "</FBD></body></pou>\n";
+}
+
+TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
+  const std::string wired = "<connection refLocalId=\"2\"/>";
+  const std::string result = "<connection refLocalId=\"3\" formalParameter=\"Both\"/>";
+  const auto both = write_temp(kHeader + functions() + fbd_main(wired, result) + kFooter, ".xml");
+  const auto open_y = write_temp(kHeader + functions() + fbd_main("", result) + kFooter, ".xml");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv(check(both, engine, "--ctl 'AG !motor'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    r = run_sfcv(check(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+  const auto unused = write_temp(
+      kHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") + kFooter, ".xml");
+  const auto r = run_sfcv(check(unused, "explicit", "--ctl 'AG !motor'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("unsupported: the result of function Both is not used"), std::string::npos)
+      << r.err;
+}
+
 // A function whose body is in FBD is refused at its location when a program calls it.
 TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
   const std::string fbd =
