@@ -49,10 +49,8 @@ class IecTextReader {
     if (model::has_errors(diags_)) return LoadResult{std::nullopt, std::move(diags_)};
     while (!p.at(TokenKind::End) && diags_.size() < kMaxErrors) {
       try {
-        if (p.at_word("PROGRAM") || p.at_word("FUNCTION_BLOCK")) {
+        if (p.at_word("PROGRAM") || p.at_word("FUNCTION_BLOCK") || p.at_word("FUNCTION")) {
           project.pous.push_back(parse_pou());
-        } else if (p.at_word("FUNCTION")) {
-          skip_block("FUNCTION", "END_FUNCTION", "sfcv checks programs and function blocks");
         } else if (p.at_word("CONFIGURATION")) {
           skip_block("CONFIGURATION", "END_CONFIGURATION", "tasks and resources are not modelled");
         } else if (p.at_word("TYPE")) {
@@ -71,9 +69,13 @@ class IecTextReader {
     if (project.pous.empty() && !model::has_errors(diags_)) {
       model::SourceLocation where;
       where.file = file_;
-      diags_.push_back({model::Severity::Error, where, "no PROGRAM or FUNCTION_BLOCK in the file"});
+      diags_.push_back(
+          {model::Severity::Error, where, "no PROGRAM, FUNCTION_BLOCK or FUNCTION in the file"});
     }
-    if (!project.pous.empty()) project.name = project.pous.front().name;
+    // Named after its first program or function block (functions usually come first).
+    for (const auto& pou : project.pous)
+      if (project.name.empty() && pou.kind != model::PouKind::Function) project.name = pou.name;
+    if (project.name.empty() && !project.pous.empty()) project.name = project.pous.front().name;
     LoadResult r;
     if (!model::has_errors(diags_)) r.project = std::move(project);
     r.diagnostics = std::move(diags_);
@@ -101,10 +103,27 @@ class IecTextReader {
     const Token& kw = p.next();
     model::Pou pou;
     const bool program = model::iequals(kw.text, "PROGRAM");
-    pou.kind = program ? model::PouKind::Program : model::PouKind::FunctionBlock;
-    const std::string end = program ? "END_PROGRAM" : "END_FUNCTION_BLOCK";
+    const bool function = model::iequals(kw.text, "FUNCTION");
+    pou.kind = program    ? model::PouKind::Program
+               : function ? model::PouKind::Function
+                          : model::PouKind::FunctionBlock;
+    const std::string end = program    ? "END_PROGRAM"
+                            : function ? "END_FUNCTION"
+                                       : "END_FUNCTION_BLOCK";
     pou.where = p.where(kw);
-    pou.name = p.identifier(program ? "a program name" : "a function block name");
+    pou.name = p.identifier(program    ? "a program name"
+                            : function ? "a function name"
+                                       : "a function block name");
+    if (function) {
+      // `FUNCTION f : INT`: the result is the variable named like the function.
+      p.expect(TokenKind::Colon, "':' and the function's result type");
+      model::Variable result;
+      result.name = pou.name;
+      result.direction = model::VarDirection::Output;
+      result.where = pou.where;
+      result.type = p.var_type();
+      pou.variables.push_back(std::move(result));
+    }
     if (p.at_word("EXTENDS") || p.at_word("IMPLEMENTS"))
       p.fail(p.peek(), "unsupported: " + model::to_upper(p.peek().text) +
                            " (object-oriented function blocks)");

@@ -105,13 +105,21 @@ class Writer {
   explicit Writer(const model::Pou& pou) : pou_(pou), printed_(pou.associations.size(), false) {}
 
   void write(std::string& out) {
-    if (pou_.kind == model::PouKind::Function) cannot("FUNCTION '" + pou_.name + "'");
     if (pou_.body_unsupported) cannot("POU '" + pou_.name + "', whose body sfcv does not model");
     if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
     if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
     const bool program = pou_.kind == model::PouKind::Program;
-    out +=
-        std::string(program ? "PROGRAM " : "FUNCTION_BLOCK ") + ident(pou_.name, "POU name") + "\n";
+    const bool function = pou_.kind == model::PouKind::Function;
+    const std::string kind = program ? "PROGRAM" : function ? "FUNCTION" : "FUNCTION_BLOCK";
+    out += kind + " " + ident(pou_.name, "POU name");
+    if (function) {
+      // The result is the variable named like the function (model::PouKind).
+      const auto* result = pou_.find_variable(pou_.name);
+      if (!result || result->direction != model::VarDirection::Output)
+        cannot("FUNCTION '" + pou_.name + "' without a result");
+      out += " : " + type_text(result->type);
+    }
+    out += "\n";
     variables(out);
     std::vector<std::size_t> top;
     for (std::size_t i = 0; i < pou_.charts.size(); ++i)
@@ -137,17 +145,24 @@ class Writer {
         cannot("association of action '" + a.action + "' to step '" + a.step + "' of chart '" +
                a.chart + "', which does not exist");
       }
-    out += std::string(program ? "END_PROGRAM" : "END_FUNCTION_BLOCK") + "\n";
+    out += "END_" + kind + "\n";
   }
 
  private:
   void variables(std::string& out) {
+    // A function's result is declared by its header.
+    auto declared = [&](const model::Variable& v) {
+      return pou_.kind != model::PouKind::Function || !model::iequals(v.name, pou_.name);
+    };
+    std::vector<const model::Variable*> vars;
+    for (const auto& v : pou_.variables)
+      if (declared(v)) vars.push_back(&v);
     std::size_t i = 0;
-    while (i < pou_.variables.size()) {
-      const auto dir = pou_.variables[i].direction;
+    while (i < vars.size()) {
+      const auto dir = vars[i]->direction;
       out += "  " + section_word(dir) + "\n";
-      for (; i < pou_.variables.size() && pou_.variables[i].direction == dir; ++i) {
-        const auto& v = pou_.variables[i];
+      for (; i < vars.size() && vars[i]->direction == dir; ++i) {
+        const auto& v = *vars[i];
         out += "    " + ident(v.name, "variable name");
         if (!v.address.empty()) out += " AT " + v.address;
         out += " : " + type_text(v.type);

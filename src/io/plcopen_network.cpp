@@ -28,7 +28,8 @@ ExprPtr negate_if(bool negated, ExprPtr e) {
 }
 
 // Functions of the standard library the model can express.
-enum class Fn { None, And, Or, Xor, Not, Move, Cmp, Add, Mul, Sub, Div, Mod };
+/// User: a FUNCTION of the project, called with the block's formal parameters.
+enum class Fn { None, And, Or, Xor, Not, Move, Cmp, Add, Mul, Sub, Div, Mod, User };
 
 Fn function_of(std::string_view type, ExprKind& cmp) {
   const std::string t = model::to_upper(type);
@@ -216,7 +217,9 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   }
 
   ExprKind cmp = ExprKind::Eq;
-  const Fn fn = function_of(type, cmp);
+  Fn fn = function_of(type, cmp);
+  if (fn == Fn::None && instance.empty() && ctx_.user_functions.count(model::to_upper(type)))
+    fn = Fn::User;
   if (fn == Fn::None) {
     if (!instance.empty())
       return fail(block, "unsupported: function block " + type + " (instance " + instance +
@@ -238,6 +241,7 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   } leave{visiting_, id};
 
   std::vector<ExprPtr> args;
+  std::vector<std::string> names;  // Fn::User: the formal parameters
   for (auto v : children(child(block, "inputVariables"), "variable")) {
     const std::string f = v.attribute("formalParameter").value();
     const auto cpi = child(v, "connectionPointIn");
@@ -247,9 +251,12 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     }
     if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
       return fail(v, "unsupported: " + edge + " edge input of block " + type);
+    // An unconnected input of a user function has its initial value (a formal call omits it).
+    if (fn == Fn::User && (!cpi || !child(cpi, "connection"))) continue;
     auto a = input(cpi, v);
     if (!a) return nullptr;
     args.push_back(negate_if(attribute_true(v, "negated"), std::move(a)));
+    names.push_back(f);
   }
   const auto where = ctx_.where(block);
   auto arity = [&](std::size_t lo, std::size_t hi) {
@@ -295,6 +302,13 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
       r = model::make_binary(k, args[0], args[1], where);
       break;
     }
+    case Fn::User:
+      if (outputs.size() > 1 || !children(child(block, "inOutVariables"), "variable").empty())
+        return fail(block, "unsupported: function " + type +
+                               " with outputs or in/out parameters besides its result");
+      evaluated_.insert(id);
+      r = model::make_formal_call(type, std::move(names), std::move(args), where);
+      break;
     case Fn::None:
       break;
   }
@@ -402,6 +416,16 @@ std::optional<model::StmtList> Network::statements() {
     }
     body.push_back(model::make_assign(target, negate_if(negated, v), where));
   }
+  // A user function whose result nobody reads would not run: refused, not dropped (it may
+  // have a range error or write a global).
+  for (auto n : element_children(container_))
+    if (local_name(n) == "block" && !*n.attribute("instanceName").value() &&
+        ctx_.user_functions.count(model::to_upper(n.attribute("typeName").value())) &&
+        !evaluated_.count(n.attribute("localId").value())) {
+      fail(n, std::string("unsupported: the result of function ") +
+                  n.attribute("typeName").value() + " is not used");
+      return std::nullopt;
+    }
   // Function blocks whose outputs nobody reads still run.
   for (auto n : element_children(container_)) {
     if (local_name(n) != "block" || !*n.attribute("instanceName").value()) continue;

@@ -67,6 +67,7 @@ class Network {
   std::map<std::string, pugi::xml_node> connectors_;  ///< connector name -> element
   std::set<std::string> called_;                      ///< FB blocks (localId) already called
   std::set<std::string> visiting_;                    ///< localIds on the evaluation path
+  std::set<std::string> evaluated_;                   ///< user function blocks (localId) read
   model::StmtList calls_;
   std::vector<model::Variable> edge_instances_;
   std::string edge_prefix_;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "model/errors.hpp"
 #include "model/names.hpp"
@@ -227,12 +228,23 @@ class PouWriter {
 
  private:
   void variables(pugi::xml_node interface) {
+    // A function's result (the variable named like it) is its returnType.
+    auto result = [&](const model::Variable& v) {
+      return pou_.kind == model::PouKind::Function && model::iequals(v.name, pou_.name);
+    };
+    std::vector<const model::Variable*> vars;
+    for (const auto& v : pou_.variables) {
+      if (result(v))
+        type_element(interface.append_child("returnType"), v.type);
+      else
+        vars.push_back(&v);
+    }
     std::size_t i = 0;
-    while (i < pou_.variables.size()) {
-      const auto dir = pou_.variables[i].direction;
+    while (i < vars.size()) {
+      const auto dir = vars[i]->direction;
       auto section = interface.append_child(section_name(dir));
-      for (; i < pou_.variables.size() && pou_.variables[i].direction == dir; ++i) {
-        const auto& v = pou_.variables[i];
+      for (; i < vars.size() && vars[i]->direction == dir; ++i) {
+        const auto& v = *vars[i];
         auto var = section.append_child("variable");
         var.append_attribute("name") = v.name.c_str();
         if (!v.address.empty()) var.append_attribute("address") = v.address.c_str();

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,10 @@ class XmlContext {
   model::Diagnostics& diagnostics() { return diagnostics_; }
   /// Called once per element read: past the run's deadline, throws LimitReached(Time).
   void poll() const { poll_.tick_or_throw("reading the model"); }
+
+  /// Upper-case names of the project's FUNCTION POUs: a block of such a type in an FBD/LD
+  /// network is a call of that function.
+  std::set<std::string> user_functions;
 
  private:
   std::string file_;

@@ -220,6 +220,23 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
   else
     ctx.warning(node, "unknown pouType '" + type + "': read as a program");
   read_variables(ctx, child(node, "interface"), pou, user_fbs);
+  // A function's result: the variable named like it (model::PouKind). Without a modelled type
+  // the function loads, and a call of it is refused with this reason.
+  std::string unmodelled_function;
+  if (pou.kind == model::PouKind::Function) {
+    const auto type_el = element_children(child(child(node, "interface"), "returnType"));
+    const auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
+    if (t.type && t.type->kind != model::TypeKind::FunctionBlock) {
+      model::Variable result;
+      result.name = pou.name;
+      result.direction = model::VarDirection::Output;
+      result.type = *t.type;
+      result.where = pou.where;
+      pou.variables.push_back(std::move(result));
+    } else {
+      unmodelled_function = "its result type " + t.written + " is not modelled";
+    }
+  }
 
   PouContext pc{ctx, node, pou, {}, {}, {}, 0};
   for (auto t : children(child(node, "transitions"), "transition"))
@@ -274,8 +291,15 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
     const auto lang = other_bodies[bi];
     const std::string k(local_name(lang));
     model::Diagnostics problems;
-    auto stmts =
-        read_statement_body(pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems);
+    if (pou.kind == model::PouKind::Function && unmodelled_function.empty() && k != "ST")
+      unmodelled_function = "FUNCTION bodies in " + k + " are not modelled (only ST)";
+    if (!unmodelled_function.empty())
+      problems.push_back({model::Severity::Error, ctx.where(lang),
+                          "function '" + pou.name + "': " + unmodelled_function});
+    auto stmts = problems.empty()
+                     ? read_statement_body(
+                           pc, lang, bi == 0 ? "BODY" : "BODY" + std::to_string(bi + 1), problems)
+                     : std::nullopt;
     if (stmts && !stmts->empty()) {
       // Vendor bodies call instances of user function blocks (whose variables were dropped
       // above) and read global lists: a body that does not validate against the POU's own
@@ -404,9 +428,13 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
   std::set<std::string> user_fbs;
-  for (auto p : pous)
-    if (std::string_view(p.attribute("pouType").value()) == "functionBlock")
+  for (auto p : pous) {
+    const std::string_view kind = p.attribute("pouType").value();
+    if (kind == "functionBlock")
       user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
+    if (kind == "function")
+      ctx.user_functions.insert(model::to_upper(trim(p.attribute("name").value())));
+  }
   std::set<std::string> seen;
   for (auto p : pous) {
     ctx.poll();

@@ -452,16 +452,27 @@ model::StmtPtr Parser::if_statement() {
 model::ExprPtr Parser::call(const Token& name) {
   expect(TokenKind::LParen, "'('");
   std::vector<ExprPtr> args;
+  // IEC 61131-3 2.5.1.1: a call is formal (every argument `name := value`) or positional.
+  std::vector<std::string> names;
   if (!at(TokenKind::RParen)) {
     do {
-      if (at(TokenKind::Identifier) && (at(TokenKind::Assign, 1) || at(TokenKind::Arrow, 1)))
-        fail(peek(), "unsupported: named arguments ('" + peek().text +
-                         " :=', EN/ENO) in the call of function '" + name.text +
-                         "' (pass the arguments in order)");
+      const bool formal = at(TokenKind::Identifier) && at(TokenKind::Assign, 1);
+      if (at(TokenKind::Identifier) && at(TokenKind::Arrow, 1))
+        fail(peek(), "unsupported: output argument '" + peek().text +
+                         " =>' in the call of function '" + name.text + "'");
+      if (!args.empty() && formal != !names.empty())
+        fail(peek(), "the call of function '" + name.text +
+                         "' mixes formal ('name := value') and positional arguments");
+      if (formal) {
+        names.push_back(next().text);
+        next();  // :=
+      }
       args.push_back(expression());
     } while (accept(TokenKind::Comma));
   }
   expect(TokenKind::RParen, "',' or ')'");
+  if (!names.empty())
+    return model::make_formal_call(name.text, std::move(names), std::move(args), where(name));
   return model::make_call(name.text, std::move(args), where(name));
 }
 

@@ -83,6 +83,8 @@ class Parser {
   bool at_var_section() const;
   /// One VAR... END_VAR section; appends its variables.
   void var_section(std::vector<model::Variable>& out);
+  /// A type name: BOOL, an integer type or subrange, TIME, a (standard or user) FB type.
+  model::Type var_type();
 
  private:
   model::ExprPtr or_expr();
@@ -105,7 +107,6 @@ class Parser {
   model::ExprPtr call(const Token& name);
   std::int64_t case_bound();
   void end_statement(std::string_view what);
-  model::Type var_type();
 
   /// Bounds recursion so that absurd nesting is an error, not a stack overflow.
   void enter(const Token& t);

@@ -161,6 +161,8 @@ struct Chart {
   int step_index(std::string_view step_name) const;  ///< -1 when absent
 };
 
+/// A Function's result is the Output variable named like the function (IEC 61131-3 2.5.1: the
+/// name of a function is a variable of its body); the readers declare it.
 enum class PouKind { Program, FunctionBlock, Function };
 
 struct Pou {

@@ -122,7 +122,8 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
     case ExprKind::Call:
       s = e.name + "(";
       for (std::size_t i = 0; i < e.args.size(); ++i)
-        s += (i ? ", " : "") + print(*e.args[i], 0, false);
+        s += (i ? ", " : "") + (i < e.arg_names.size() ? e.arg_names[i] + " := " : "") +
+             print(*e.args[i], 0, false);
       return s + ")";
     case ExprKind::Delay:
       return time_literal(e.value) + "/" + print(*e.args[0], 9, false) + "/" +
@@ -193,6 +194,12 @@ ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocatio
   set_height(*e);
   return e;
 }
+ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
+                         std::vector<ExprPtr> args, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make_call(std::move(function), std::move(args), where));
+  e->arg_names = std::move(names);
+  return e;
+}
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
   e->value = t1_ms;
@@ -217,6 +224,9 @@ bool equal(const Expr& a, const Expr& b) {
       return true;
     };
     if (!ieq(a.name, b.name) || !ieq(a.member, b.member)) return false;
+    if (a.arg_names.size() != b.arg_names.size()) return false;
+    for (std::size_t i = 0; i < a.arg_names.size(); ++i)
+      if (!ieq(a.arg_names[i], b.arg_names[i])) return false;
   }
   for (std::size_t i = 0; i < a.args.size(); ++i)
     if (!equal(a.args[i], b.args[i])) return false;

@@ -50,6 +50,9 @@ struct Expr {
   std::string name;    ///< Name, Member, Call (the function's name)
   std::string member;  ///< Member: the part after the dot, as written ("X", "T", "Q")
   std::vector<ExprPtr> args;
+  /// Call: the parameter names of a formal call `f(a := x, b := y)`, one per argument; empty
+  /// for a positional call `f(x, y)`.
+  std::vector<std::string> arg_names;
   SourceLocation where;
   /// 1 for a leaf, else 1 + the largest height of `args` (set by the constructors below):
   /// parsers refuse trees higher than model::kMaxNesting, so recursive passes stay shallow.
@@ -66,6 +69,9 @@ ExprPtr make_unary(ExprKind kind, ExprPtr arg, SourceLocation where = {});
 ExprPtr make_binary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, SourceLocation where = {});
 ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where = {});
 ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocation where = {});
+/// `function(names[0] := args[0], ...)`.
+ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
+                         std::vector<ExprPtr> args, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).

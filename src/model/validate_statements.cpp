@@ -171,7 +171,11 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
   // `ACT();`: a call of an action of the POU (IEC 61131-3 lets a body call its actions).
   if (!v && s.arguments.empty() && pou_->find_action(s.target)) return;
   if (!v) {
-    error(here, "call of undeclared function block instance " + quoted(s.target));
+    const Pou* callee = project_.find_pou(s.target);
+    error(here, callee && callee->kind == PouKind::Function
+                    ? "call of function " + quoted(s.target) +
+                          " as a statement (use its result: x := " + s.target + "(...))"
+                    : "call of undeclared function block instance " + quoted(s.target));
     return;
   }
   if (v->type.kind != TypeKind::FunctionBlock) {

@@ -182,6 +182,7 @@ class SymbolicMachine {
   void exec_stmt(const Stmt& s, AigLit guard);
   void exec_loop(const Stmt& s, AigLit guard);
   Value bit_op(const Node& n, const std::uint32_t* kid, AigLit guard);
+  Value call_function(const Node& n, const std::uint32_t* kid, AigLit guard);
   void fb_call(const Stmt& s, AigLit guard);
 
   // ----------------------------------------------------------------------- timers
@@ -362,6 +363,8 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
     case Op::Rol:
     case Op::Ror:
       return bit_op(n, kid, guard);
+    case Op::Call:
+      return call_function(n, kid, guard);
   }
   return constant(0);
 }
@@ -476,6 +479,21 @@ void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
   left_loop_ = saved_left;
   exit_ = saved_exit;
   returned_ = aig_.make_or(saved_return, aig_.make_and(guard, returned_any));
+}
+
+// A call of a user function runs its body under the call's path condition, as the machine
+// does at that point of the expression; its variables hold constants before and after.
+Value SymbolicMachine::call_function(const Node& n, const std::uint32_t* kid, AigLit guard) {
+  const Function& fn = p_.functions[n.a];
+  std::vector<Value> args;
+  args.reserve(n.count);
+  for (std::uint32_t i = 0; i < n.count; ++i) args.push_back(eval(kid[i], guard));
+  for (auto f : fn.fields) nxt_[f] = constant(p_.initial[f]);
+  for (std::uint32_t i = 0; i < n.count; ++i) assign(fn.inputs[i], args[i], guard);
+  exec_body(fn.body, guard);
+  const Value result = nxt_[fn.result];
+  for (auto f : fn.fields) nxt_[f] = constant(p_.initial[f]);
+  return result;
 }
 
 Value SymbolicMachine::bit_op(const Node& n, const std::uint32_t* kid, AigLit guard) {

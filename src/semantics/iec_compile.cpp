@@ -57,6 +57,10 @@ std::vector<const model::Pou*> Compiler::select() {
         error(project.where, "no POU named '" + name + "' (the model has: " + avail + ")");
         continue;
       }
+      if (pou->kind == model::PouKind::Function) {
+        error(project.where, "'" + name + "' is a FUNCTION: it runs where a program calls it");
+        continue;
+      }
       out.push_back(pou);
     }
     return out;

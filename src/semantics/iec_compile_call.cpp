@@ -1,4 +1,5 @@
-// The IEC compiler's standard functions (IEC 61131-3 table of standard functions: MAX, MIN,
+// The IEC compiler's function calls: user FUNCTIONs (iec_compile_function.cpp) and the
+// standard functions (IEC 61131-3 table of standard functions: MAX, MIN,
 // LIMIT, SEL, MUX, ABS, MOVE, GT..LT, ADD..MOD, NOT/AND/OR/XOR, *_TO_* conversions) and bit
 // strings (BYTE/WORD/DWORD: bitwise AND/OR/XOR/NOT, SHL/SHR/ROL/ROR, bit access `w.3`), all
 // into existing Program nodes plus Ite, RangeCheck and the bit-string operators.
@@ -64,6 +65,13 @@ int Compiler::bit_width(const PouScope& sc, const model::Expr& e) const {
       return w;
     }
     case ExprKind::Call: {
+      if (const auto* user = project.find_pou(e.name);
+          user && user->kind == model::PouKind::Function) {
+        const auto* result = user->find_variable(user->name);
+        return result && result->type.kind == model::TypeKind::Int
+                   ? width_of_range(result->type.lo, result->type.hi)
+                   : -1;
+      }
       const auto f = model::to_upper(e.name);
       if ((f == "SHL" || f == "SHR" || f == "ROL" || f == "ROR") && !e.args.empty())
         return bit_width(sc, *e.args[0]);
@@ -122,6 +130,8 @@ std::uint32_t Compiler::bit_access(const PouScope& sc, const model::Expr& e, int
 }
 
 std::uint32_t Compiler::call(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  if (const auto* user = project.find_pou(e.name); user && user->kind == model::PouKind::Function)
+    return function_call(sc, e, *user, context, type);
   const auto f = model::to_upper(e.name);
   const auto n_args = e.args.size();
   type = VT::Int;
@@ -147,6 +157,9 @@ std::uint32_t Compiler::call(const PouScope& sc, const model::Expr& e, int conte
   auto all_int = [&](const std::vector<VT>& ts) {
     return std::all_of(ts.begin(), ts.end(), [](VT t) { return t == VT::Int; });
   };
+  if (!e.arg_names.empty())
+    return fail("formal arguments ('" + e.arg_names.front() +
+                " := ...') in the call of a standard function (pass them in order)");
 
   // Comparisons, extensible: GT(a, b, c) = a > b AND b > c.
   static constexpr std::array<std::pair<const char*, ExprKind>, 6> kCompare{{{"GT", ExprKind::Gt},
@@ -292,7 +305,7 @@ std::uint32_t Compiler::call(const PouScope& sc, const model::Expr& e, int conte
   if (model::standard_fb(f) != model::StandardFb::None)
     return fail(e.name + " is a function block; call an instance of it");
   return fail("call of function '" + e.name +
-              "', which is not a modelled standard function (user FUNCTIONs are not modelled)");
+              "', which is neither a modelled standard function nor a FUNCTION of this project");
 }
 
 }  // namespace sfcv::semantics::iec::detail

@@ -111,6 +111,7 @@ std::uint32_t Compiler::path_scope(const PouScope& sc, const std::vector<std::st
                                    std::size_t& used) const {
   used = 0;
   std::uint32_t cur = sc.index;
+  if (sc.function) return cur;  // a function names only its own variables
   if (parts.size() >= 2 && !sc.names.count(model::to_upper(parts[0]))) {
     // `Main.x`: a variable of a program of the same cycle.
     for (const auto& other : scopes)

@@ -316,6 +316,8 @@ std::int64_t Machine::eval(std::uint32_t index) {
     case Op::Rol:
     case Op::Ror:
       return bit_op(n, kid);
+    case Op::Call:
+      return call_function(n, kid);
   }
   return 0;
 }

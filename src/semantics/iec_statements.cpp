@@ -46,6 +46,19 @@ void Machine::assign(std::uint32_t field, std::int64_t v, const std::string& whe
   nxt_[field] = v;
 }
 
+std::int64_t Machine::call_function(const Node& n, const std::uint32_t* kid) {
+  // The arguments first (one may call this function too), then the body on fresh variables.
+  const Function& fn = p_.functions[n.a];
+  std::vector<std::int64_t> args(n.count);
+  for (std::uint32_t i = 0; i < n.count; ++i) args[i] = eval(kid[i]);
+  for (auto f : fn.fields) nxt_[f] = p_.initial[f];
+  for (std::uint32_t i = 0; i < n.count; ++i) assign(fn.inputs[i], args[i], fn.where);
+  exec_block(fn.body);  // RETURN only ends the body
+  const auto result = nxt_[fn.result];
+  for (auto f : fn.fields) nxt_[f] = p_.initial[f];
+  return result;
+}
+
 Flow Machine::exec_block(Block b) {
   for (std::uint32_t i = 0; i < b.count; ++i)
     if (const auto f = exec_stmt(p_.stmts[p_.block_items[b.first + i]]); f != Flow::Normal)

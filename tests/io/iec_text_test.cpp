@@ -119,11 +119,17 @@ TEST(IecText, LoadsEveryFeature) {
   ASSERT_TRUE(r.ok()) << all(r.diagnostics);
   const auto& p = *r.project;
   EXPECT_EQ(p.source_format, "iec-text");
-  ASSERT_EQ(p.pous.size(), 2u);  // FUNCTION and CONFIGURATION are skipped ...
+  ASSERT_EQ(p.pous.size(), 3u);  // CONFIGURATION is skipped ...
   int notes = 0;
   for (const auto& d : r.diagnostics)
     if (d.severity == model::Severity::Note) ++notes;
-  EXPECT_EQ(notes, 2);  // ... each with a note
+  EXPECT_EQ(notes, 1);  // ... with a note
+  // A FUNCTION's result is the output variable named like it.
+  const auto& helper = p.pous[1];
+  EXPECT_EQ(helper.kind, model::PouKind::Function);
+  ASSERT_NE(helper.find_variable("Helper"), nullptr);
+  EXPECT_EQ(helper.find_variable("Helper")->direction, model::VarDirection::Output);
+  EXPECT_EQ(helper.find_variable("Helper")->type.kind, model::TypeKind::Bool);
   const auto& fb = p.pous[0];
   EXPECT_EQ(fb.kind, model::PouKind::FunctionBlock);
   EXPECT_EQ(fb.name, "Press");
@@ -201,7 +207,7 @@ TEST(IecText, LoadsEveryFeature) {
   }
   EXPECT_EQ(fb.actions.size(), 7u);
 
-  const auto& main = p.pous[1];
+  const auto& main = p.pous[2];
   EXPECT_EQ(main.kind, model::PouKind::Program);
   EXPECT_FALSE(main.has_sfc());
   ASSERT_EQ(main.body.size(), 2u);
@@ -216,6 +222,9 @@ TEST(IecText, PrintsAndReloadsEveryFeature) {
   EXPECT_NE(text.find("Beep(D, delta_1, lamp);"), std::string::npos) << text;
   EXPECT_NE(text.find("level : INT(0..10) := 3;"), std::string::npos) << text;
   EXPECT_NE(text.find("motor AT %QX0.1 : BOOL := TRUE;"), std::string::npos) << text;
+  EXPECT_NE(text.find("FUNCTION Helper : BOOL\n  VAR_INPUT\n    x : BOOL;\n  END_VAR\n"),
+            std::string::npos)
+      << text;
 }
 
 TEST(IecText, QualifierNamesAreLegalStepAndActionNames) {
@@ -311,7 +320,7 @@ TEST(IecText, SyntaxErrorsAreLocated) {
   EXPECT_EQ(
       errors("STEP a: END_STEP"),
       "1:1: expected PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION or TYPE, found 'STEP'\n");
-  EXPECT_EQ(errors(""), "0:0: no PROGRAM or FUNCTION_BLOCK in the file\n");
+  EXPECT_EQ(errors(""), "0:0: no PROGRAM, FUNCTION_BLOCK or FUNCTION in the file\n");
   EXPECT_EQ(errors("PROGRAM p\n  ACTION a: x := T#1s2; END_ACTION\nEND_PROGRAM\n"),
             "2:18: TIME literal: missing unit (d, h, m, s, ms)\n");
 }

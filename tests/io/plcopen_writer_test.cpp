@@ -188,8 +188,30 @@ TEST(PlcopenWriter, FunctionAndStPousWithoutModelledBodies) {
                kVarA + "</interface><body><SFC>" + two_steps() + "</SFC></body></pou>"));
   ASSERT_EQ(p.pous.size(), 3u);
   EXPECT_EQ(p.pous[0].kind, model::PouKind::Function);
+  // Without a returnType, calling the function is refused (the reason is kept).
+  EXPECT_TRUE(p.pous[0].body_unsupported);
+  EXPECT_NE(p.pous[0].unsupported_reason.find("its result type (none) is not modelled"),
+            std::string::npos)
+      << p.pous[0].unsupported_reason;
   const std::string xml = plcopen_round_trip(p);
   EXPECT_NE(xml.find("pouType=\"function\""), std::string::npos) << xml;
+}
+
+TEST(PlcopenWriter, FunctionsKeepTheirResultType) {
+  // A FUNCTION's result is the variable named like it, read from and written as returnType;
+  // a formal call keeps its parameter names.
+  const auto p = load_text(
+      "FUNCTION Cap : INT(0..10)\n  VAR_INPUT x : INT; END_VAR\n  Cap := x;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR y : INT; END_VAR\n  y := Cap(x := 3);\nEND_PROGRAM\n");
+  const std::string xml = plcopen_round_trip(p);
+  EXPECT_NE(xml.find("<returnType>"), std::string::npos) << xml;
+  EXPECT_EQ(xml.find("<variable name=\"Cap\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("y := Cap(x := 3);"), std::string::npos) << xml;
+  const auto again = load_xml(xml);
+  const auto* result = again.pous.at(0).find_variable("Cap");
+  ASSERT_NE(result, nullptr);
+  EXPECT_EQ(result->direction, model::VarDirection::Output);
+  EXPECT_EQ(result->type, model::Type::integer("INT(0..10)", 0, 10));
 }
 
 TEST(PlcopenWriter, StBodyOfAnSfcPouIsASecondBody) {

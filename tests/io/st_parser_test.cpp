@@ -279,13 +279,22 @@ TEST(StExpression, FunctionCalls) {
   EXPECT_EQ(e->name, "SEL");
   EXPECT_EQ(e->args.size(), 3u);
   EXPECT_TRUE(model::equal(expr("max(a,b)"), expr("MAX(a, b)")));
+  // A formal call keeps its parameter names (IEC 61131-3 2.5.1.1), in the order written.
+  const auto formal = expr("Clamp(hi := 10, x := a + 1)");
+  ASSERT_TRUE(formal);
+  EXPECT_EQ(formal->arg_names, (std::vector<std::string>{"hi", "x"}));
+  EXPECT_EQ(printed("Clamp(hi := 10, x := a + 1)"), "Clamp(hi := 10, x := a + 1)");
+  EXPECT_FALSE(model::equal(formal, expr("Clamp(x := 10, hi := a + 1)")));
+  EXPECT_FALSE(model::equal(formal, expr("Clamp(10, a + 1)")));
   EXPECT_FALSE(model::equal(expr("MAX(a, b)"), expr("MIN(a, b)")));
 }
 
 TEST(StStatements, UnsupportedConstructsAreNamed) {
   EXPECT_EQ(stmt_error("x := MAX(EN := a, 2);"),
-            "1:10: unsupported: named arguments ('EN :=', EN/ENO) in the call of function 'MAX' "
-            "(pass the arguments in order)");
+            "1:19: the call of function 'MAX' mixes formal ('name := value') and positional "
+            "arguments");
+  EXPECT_EQ(stmt_error("x := F(a, q => b);"),
+            "1:11: unsupported: output argument 'q =>' in the call of function 'F'");
   EXPECT_EQ(stmt_error("t1(a, b);"),
             "1:4: unsupported: positional arguments in the call of 't1' (write IN := value)");
   EXPECT_EQ(stmt_error("a[2] := 1;"), "1:2: unsupported: array indexing of 'a'");

@@ -422,5 +422,87 @@ TEST(Iec61131Circuit, AgreesOnUserFunctionBlockInstances) {
   }
 }
 
+// User FUNCTIONs in ST (issue 18): formal calls with defaulted inputs and positional ones,
+// calls nested in arguments, a function calling a function, RETURN and EXIT in a function,
+// range errors on the result and on an input reached only for some inputs, calls in guards, in
+// IF/ELSIF conditions behind short-circuit AND, in a WHILE condition, in action bodies and in
+// the body of an FB instance called under a condition.
+// (The loops' counters start from a function's fresh temporaries, so the circuit folds them.)
+const char* kFunctions = R"(
+FUNCTION Clamp : INT
+  VAR_INPUT x : INT; lo : INT := -2; hi : INT := 2; END_VAR
+  IF x < lo THEN Clamp := lo; RETURN; END_IF;
+  Clamp := x;
+  IF x > hi THEN Clamp := hi; END_IF;
+END_FUNCTION
+FUNCTION Tri : SINT
+  VAR_INPUT n : INT; END_VAR
+  VAR i : INT; acc : INT; END_VAR
+  FOR i := 1 TO n DO
+    acc := acc + i;
+    IF acc > 8 THEN EXIT; END_IF;
+  END_FOR;
+  Tri := acc * 20;
+END_FUNCTION
+FUNCTION Busy : BOOL
+  VAR_INPUT a : BOOL; b : BOOL; END_VAR
+  VAR_TEMP t : BOOL; END_VAR
+  t := a XOR b;
+  Busy := t AND Clamp(x := BOOL_TO_INT(a) + 1) = 2;
+END_FUNCTION
+FUNCTION Steps : INT
+  VAR_INPUT start : INT; limit : INT; END_VAR
+  VAR i : INT; END_VAR
+  Steps := start;
+  WHILE i < 3 AND Clamp(Steps, 0, 5) < limit DO Steps := Steps + 1; i := i + 1; END_WHILE;
+END_FUNCTION
+FUNCTION_BLOCK Acc
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT total : INT(0..9); END_VAR
+  IF go THEN total := Clamp(total + 1, 0, 9); END_IF;
+END_FUNCTION_BLOCK
+FUNCTION Small : BOOL
+  VAR_INPUT v : INT(0..3); END_VAR
+  Small := v < 2;
+END_FUNCTION
+FUNCTION Mask : BYTE
+  VAR_INPUT v : BYTE; END_VAR
+  Mask := SHL(v, 1) OR 16#01;
+END_FUNCTION
+PROGRAM Main
+  VAR_INPUT n : INT(0..5); x, y : BOOL; END_VAR
+  VAR_OUTPUT c : INT; s : SINT; q, w : BOOL; m : BYTE; k : INT(0..6); END_VAR
+  VAR a : Acc; END_VAR
+  INITIAL_STEP Idle : Calc(N); END_STEP
+  STEP Run : Count(N); END_STEP
+  TRANSITION FROM Idle TO Run := Busy(x, y) AND Clamp(hi := 4, x := n - 1) >= 3; END_TRANSITION
+  TRANSITION FROM Run TO Idle := NOT Busy(b := x, a := y) OR Clamp(k, 0, 5) = 2; END_TRANSITION
+  ACTION Calc :
+    c := Clamp(n - 4, -2, 2) + Clamp(Clamp(n, 0, 1), -1, 0);
+    IF y AND Tri(n) > 100 THEN q := TRUE; ELSIF Busy(x, NOT y) THEN q := FALSE; END_IF;
+    m := Mask(m) AND 16#3F;
+  END_ACTION
+  ACTION Count :
+    k := Steps(k, n);
+    IF y THEN s := Tri(k); END_IF;
+    IF x THEN a(go := Busy(TRUE, y)); END_IF;
+    w := x AND Busy(y, w);
+    IF x AND NOT y THEN w := Small(k); END_IF;
+  END_ACTION
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnUserFunctions) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 500;
+    auto ts = system_for(kFunctions, options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, 47);
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::semantics

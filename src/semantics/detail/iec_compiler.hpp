@@ -2,7 +2,9 @@
 // turns a model::Project into the flat Program of semantics/detail/iec_program.hpp. Its member
 // functions live in one file per concept: iec_compile.cpp (POU selection, variables, the driver),
 // iec_compile_expr.cpp (expressions), iec_compile_stmt.cpp (statements),
-// iec_compile_fb.cpp (standard function block instances: timers, counters, edges) and
+// iec_compile_fb.cpp (standard function block instances: timers, counters, edges),
+// iec_compile_instances.cpp (user function block instances), iec_compile_call.cpp and
+// iec_compile_function.cpp (standard and user functions) and
 // iec_compile_chart.cpp (steps, transitions, actions and their qualifiers).
 #pragma once
 
@@ -38,6 +40,7 @@ struct PouScope {
   std::string name;   // the program "Main", or the instance path "Main.Crane"
   std::string alias;  // instances: the path below the program, "Crane" ("" for programs)
   bool instance = false;
+  bool function = false;                         // a user FUNCTION's body (names its own variables)
   std::map<std::string, Ref> names;              // upper-case variable names
   std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
@@ -116,6 +119,20 @@ struct Compiler {
   void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out);
   /// Per instance Pou: the chart state fields a call commits.
   void instance_commits();
+
+  // ------------------------------------------------------------------- user functions
+  /// Upper-case name -> index in Program::functions; nullopt when refused (reported once).
+  std::map<std::string, std::optional<std::uint32_t>> functions;
+  std::vector<const model::Pou*> calling;  // functions whose bodies are being compiled
+  /// Functions calling functions: deeper chains are refused (they would only deepen the
+  /// compiler's and the machine's recursion).
+  static constexpr std::size_t kMaxFunctionDepth = 32;
+  /// The compiled function `f` (compiled at its first call, at `call`), or nullopt after an
+  /// error: recursion, or a part of the function sfcv does not model.
+  std::optional<std::uint32_t> function(const model::Pou& f, const model::SourceLocation& call);
+  /// `f(x, y)` or `f(a := x, b := y)` in an expression: an Op::Call node.
+  std::uint32_t function_call(const PouScope& sc, const model::Expr& e, const model::Pou& f,
+                              int context, VT& type);
 
   // ---------------------------------------------------------------------- expressions
   std::uint32_t node(Node n, std::vector<std::uint32_t> kids = {});

@@ -57,6 +57,7 @@ enum class Op : std::uint8_t {
   Shr,
   Rol,  ///< rotations of a k-bit value by child 1 (mod k)
   Ror,
+  Call,  ///< user FUNCTION a (Program::functions) on the children, one per VAR_INPUT
 };
 
 /// The most iterations a loop may run in one execution of its statement (FOR, WHILE, REPEAT):
@@ -108,6 +109,19 @@ struct Stmt {
   // the loop ends when it holds: REPEAT ... UNTIL): body, then `step` (FOR's increment).
   Block init, body, step;
   bool test_after = false;
+};
+
+/// A user FUNCTION written in ST (IEC 61131-3 2.5.1). Its variables are fields that hold their
+/// initial values between calls (so they add no states): a call sets them to their initial
+/// values, assigns the evaluated arguments to `inputs`, runs `body` (RETURN ends it) and reads
+/// `result`, the variable named like the function; then they are reset.
+struct Function {
+  std::string name;
+  std::vector<std::uint32_t> inputs;  ///< fields of the VAR_INPUTs, in declaration order
+  std::vector<std::uint32_t> fields;  ///< every field of the function (inputs, temporaries)
+  std::uint32_t result = 0;           ///< field
+  Block body;
+  std::string where;  ///< for range errors on the inputs
 };
 
 // ------------------------------------------------------------------------------------ timers
@@ -238,6 +252,7 @@ struct Program {
   std::vector<Assoc> assocs;
   std::vector<Action> actions;
   std::vector<Pou> pous;
+  std::vector<Function> functions;
   std::vector<std::uint32_t> assumptions;        ///< nodes
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
@@ -296,6 +311,7 @@ class Machine {
   std::int64_t arith(Op op, std::int64_t x, std::int64_t y) const;
 
   std::int64_t bit_op(const Node& n, const std::uint32_t* kid);
+  std::int64_t call_function(const Node& n, const std::uint32_t* kid);
   Flow exec_block(Block b);
   Flow exec_loop(const Stmt& s);
   Flow exec_stmt(const Stmt& s);

@@ -1,0 +1,294 @@
+// User FUNCTIONs written in ST (issue 18): `sfcv check` on small IEC-text and PLCopen files
+// written here whose programs call functions in bodies, actions and transition guards, with
+// formal and positional arguments, a function calling a function and RETURN; what is not
+// modelled (recursion, VAR_IN_OUT, a body in FBD) is refused with its location (exit 2).
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+// Permit is TRUE when the door is closed and the (capped) doubled level is below 8, i.e.
+// level < 4: an open door RETURNs before the result is set, leaving its default FALSE.
+const std::string kPumpText =
+    "FUNCTION Cap : INT\n"
+    "  VAR_INPUT x : INT; top : INT := 10; END_VAR\n"
+    "  Cap := x;\n"
+    "  IF x > top THEN Cap := top; END_IF;\n"
+    "END_FUNCTION\n"
+    "FUNCTION Permit : BOOL\n"
+    "  VAR_INPUT level : INT; door : BOOL; END_VAR\n"
+    "  VAR_TEMP doubled : INT; END_VAR\n"
+    "  IF door THEN RETURN; END_IF;\n"
+    "  doubled := Cap(x := level * 2);\n"
+    "  Permit := doubled < 8;\n"
+    "END_FUNCTION\n"
+    "PROGRAM Main\n"
+    "  VAR_INPUT level : INT(0..9); door : BOOL; END_VAR\n"
+    "  VAR_OUTPUT pump, open, high : BOOL; END_VAR\n"
+    "  pump := Permit(level, door);\n"
+    "  open := door;\n"
+    "  high := level >= 4;\n"
+    "END_PROGRAM\n";
+
+std::string check(const std::string& file, const std::string& engine, const std::string& props) {
+  return "check " + file + " --engine " + engine + " " + props + " --trace none --timeout 60";
+}
+
+// The pump runs only with the door closed (RETURN) and a low level (Permit calls Cap); it does
+// run (a model that lost the function's result would claim `AG !pump`).
+TEST(FunctionsE2E, PropertiesHoldAndFailThroughAFunctionsResult) {
+  const auto file = write_temp(kPumpText, ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(file, engine, "--ctl 'AG !pump'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
+    if (std::string(engine) == "bmc") continue;  // BMC cannot prove
+    r = run_sfcv(check(file, engine, "--ctl 'AG (pump -> !open)' --ctl 'AG (pump -> !high)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+}
+
+// A function keeps nothing between calls: its VARs start from their initial values at every
+// call (two calls in a cycle both give 6), and an unassigned result is its type's default.
+TEST(FunctionsE2E, TemporariesStartFreshAtEveryCall) {
+  const auto file = write_temp(
+      "FUNCTION Next : INT\n  VAR n : INT := 5; END_VAR\n  n := n + 1;\n  Next := n;\n"
+      "END_FUNCTION\n"
+      "FUNCTION Never : BOOL\n  VAR_INPUT a : BOOL; END_VAR\n  IF a AND NOT a THEN Never := TRUE; "
+      "END_IF;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; z : BOOL; END_VAR\n"
+      "  y := Next() + Next();\n  z := Never(a);\nEND_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    auto r = run_sfcv(check(file, engine, "--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'"));
+    EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
+    r = run_sfcv(check(file, engine, "--ctl 'AG y = 0'"));
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+  }
+}
+
+// Recursion through a second function is refused at the call that closes the cycle.
+TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
+  const auto file = write_temp(
+      "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  F := G(x) + 1;\nEND_FUNCTION\n"
+      "FUNCTION G : INT\n  VAR_INPUT x : INT; END_VAR\n"
+      "  IF x > 0 THEN G := F(x - 1); END_IF;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; END_VAR\n"
+      "  y := F(BOOL_TO_INT(a));\nEND_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    const auto r = run_sfcv(check(file, engine, "--ctl 'AG y >= 0'"));
+    EXPECT_EQ(r.exit_code, 2) << engine << r.out << r.err;
+    EXPECT_NE(r.err.find(":7:22: error: function 'F' calls itself (F -> G -> F): recursion"),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_EQ(run_sfcv("lint " + file).exit_code, 2);
+  // A chain of 40 functions, each calling the next, is deeper than the 32 calls modelled.
+  std::string chain;
+  for (int i = 0; i < 40; ++i)
+    chain += "FUNCTION F" + std::to_string(i) + " : INT\n  VAR_INPUT x : INT; END_VAR\n  F" +
+             std::to_string(i) +
+             " := " + (i < 39 ? "F" + std::to_string(i + 1) + "(x) + 1" : std::string("x")) +
+             ";\nEND_FUNCTION\n";
+  const auto deep = write_temp(chain +
+                                   "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n"
+                                   "  VAR_OUTPUT y : INT; END_VAR\n  y := F0(BOOL_TO_INT(a));\n"
+                                   "END_PROGRAM\n",
+                               ".st");
+  const auto r = run_sfcv(check(deep, "explicit", "--ctl 'AG y >= 0'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("call of function 'F32' nested deeper than 32 function calls"),
+            std::string::npos)
+      << r.err;
+}
+
+// VAR_IN_OUT and FB instances in a function, and calls that do not fit the declaration.
+TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
+  auto file = write_temp(
+      "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  VAR_IN_OUT z : INT; END_VAR\n"
+      "  VAR t : TON; END_VAR\n  F := x;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; END_VAR\n"
+      "  y := F(BOOL_TO_INT(a));\nEND_PROGRAM\n",
+      ".st");
+  auto r = run_sfcv(check(file, "explicit", "--ctl 'AG y >= 0'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":3:14: error: VAR_IN_OUT 'z' of function F is not modelled"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(":4:7: error: function block instance 't' of function F"), std::string::npos)
+      << r.err;
+  file = write_temp(
+      "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  F := x;\nEND_FUNCTION\n"
+      "PROGRAM Main\n  VAR_OUTPUT y : INT; END_VAR\n"
+      "  y := F(1, 2) + F(q := 1);\n  y := F(x := TRUE);\nEND_PROGRAM\n",
+      ".st");
+  r = run_sfcv(check(file, "explicit", "--ctl 'AG y >= 0'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":7:8: error: 'F(1, 2)': function F has 1 input(s), the call gives 2"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("function F has no input 'q'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":8:15: error: 'F(x := TRUE)': input 'x' of function F has the wrong type"),
+            std::string::npos)
+      << r.err;
+}
+
+// ------------------------------------------------------------------------------- PLCopen XML
+
+const std::string kHeader =
+    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+    "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
+    "<fileHeader companyName=\"t\" productName=\"CODESYS\" productVersion=\"3.5\" "
+    "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"plant\"/>\n"
+    "<types><dataTypes/><pous>\n";
+const std::string kFooter =
+    "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
+
+std::string vars(const std::string& section, const std::vector<std::string>& names,
+                 const std::string& type = "<BOOL/>") {
+  std::string s = "<" + section + ">";
+  for (const auto& n : names)
+    s += "<variable name=\"" + n + "\"><type>" + type + "</type></variable>";
+  return s + "</" + section + ">";
+}
+
+std::string st(const std::string& text) {
+  return "<ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">" + text + "</xhtml></ST>";
+}
+
+std::string function(const std::string& name, const std::string& result,
+                     const std::string& interface, const std::string& body) {
+  return "<pou name=\"" + name + "\" pouType=\"function\"><interface><returnType>" + result +
+         "</returnType>" + interface + "</interface><body>" + body + "</body></pou>\n";
+}
+
+// Count2 counts its TRUE inputs; Both returns FALSE early unless x, else Count2(x, y) = 2.
+std::string functions(
+    const std::string& both_body = st("IF NOT x THEN RETURN; END_IF;\nBoth := Count2(x, y) = 2;")) {
+  return function("Count2", "<INT/>", vars("inputVars", {"a", "b"}),
+                  st("Count2 := BOOL_TO_INT(a) + BOOL_TO_INT(b);")) +
+         function("Both", "<BOOL/>", vars("inputVars", {"x", "y"}), both_body);
+}
+
+// A CODESYS-style program with an SFC body: Idle --guard--> Run --NOT s1--> Idle, the action
+// ACT_Run (N on Run) setting `motor`, ACT_Idle (N on Idle) clearing it.
+std::string main_sfc(const std::string& guard) {
+  auto block = [](int id, int step, const char* action) {
+    return "<actionBlock localId=\"" + std::to_string(id) +
+           "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(step) +
+           "\"/></connectionPointIn><action localId=\"" + std::to_string(id + 1) +
+           "\" qualifier=\"N\"><reference name=\"" + action + "\"/></action></actionBlock>\n";
+  };
+  auto transition = [](int id, int from, const std::string& cond) {
+    return "<transition localId=\"" + std::to_string(id) +
+           "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" + st(cond) +
+           "</inline></condition></transition>\n";
+  };
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"s1", "s2"}) +
+         vars("outputVars", {"motor"}) +
+         "</interface><actions>"
+         "<action name=\"ACT_Run\"><body>" +
+         st("motor := TRUE;") +
+         "</body></action>"
+         "<action name=\"ACT_Idle\"><body>" +
+         st("motor := FALSE;") +
+         "</body></action></actions><body><SFC>\n"
+         "<step localId=\"1\" name=\"Idle\" initialStep=\"true\"><connectionPointIn>"
+         "<connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/></step>\n" +
+         transition(3, 1, guard) +
+         "<step localId=\"2\" name=\"Run\"><connectionPointIn><connection refLocalId=\"3\"/>"
+         "</connectionPointIn><connectionPointOut/></step>\n" +
+         transition(4, 2, "NOT s1") + block(10, 2, "ACT_Run") + block(12, 1, "ACT_Idle") +
+         "</SFC></body></pou>\n";
+}
+
+// A transition guarded by a function's result: with y := s2 the chart reaches Run (only
+// through the function: a model reading FALSE would claim `AG !Run`); with y := FALSE the
+// count never reaches 2 and Run is unreachable.
+TEST(FunctionsE2E, PlcopenFunctionGuardsATransition) {
+  const auto reaches =
+      write_temp(kHeader + functions() + main_sfc("Both(x := s1, y := s2)") + kFooter, ".xml");
+  const auto never =
+      write_temp(kHeader + functions() + main_sfc("Both(y := FALSE, x := s1)") + kFooter, ".xml");
+  for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(reaches, engine, "--ctl 'AG !Run'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    if (std::string(engine) == "bmc") continue;
+    r = run_sfcv(check(never, engine, "--ctl 'AG !Run' --ctl 'AG !motor'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+}
+
+// An FBD program calling a user function as a block (no instance name): the block's formal
+// parameters are the call's, an unconnected input has its initial value, and a block whose
+// result nobody reads is refused rather than dropped.
+std::string fbd_main(const std::string& y_input, const std::string& motor_source) {
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"s1", "s2"}) +
+         vars("outputVars", {"motor"}) +
+         "</interface><body><FBD>"
+         "<inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+         "<expression>s1</expression></inVariable>"
+         "<inVariable localId=\"2\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+         "<expression>s2</expression></inVariable>"
+         "<block localId=\"3\" typeName=\"Both\"><position x=\"0\" y=\"0\"/><inputVariables>"
+         "<variable formalParameter=\"x\"><connectionPointIn><connection refLocalId=\"1\"/>"
+         "</connectionPointIn></variable>"
+         "<variable formalParameter=\"y\"><connectionPointIn>" +
+         y_input +
+         "</connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables>"
+         "<variable formalParameter=\"Both\"><connectionPointOut/></variable></outputVariables>"
+         "</block><outVariable localId=\"4\"><position x=\"0\" y=\"0\"/><connectionPointIn>" +
+         motor_source + "</connectionPointIn><expression>motor</expression></outVariable>" +
+         "</FBD></body></pou>\n";
+}
+
+TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
+  const std::string wired = "<connection refLocalId=\"2\"/>";
+  const std::string result = "<connection refLocalId=\"3\" formalParameter=\"Both\"/>";
+  const auto both = write_temp(kHeader + functions() + fbd_main(wired, result) + kFooter, ".xml");
+  const auto open_y = write_temp(kHeader + functions() + fbd_main("", result) + kFooter, ".xml");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv(check(both, engine, "--ctl 'AG !motor'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    r = run_sfcv(check(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+  const auto unused = write_temp(
+      kHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") + kFooter, ".xml");
+  const auto r = run_sfcv(check(unused, "explicit", "--ctl 'AG !motor'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("unsupported: the result of function Both is not used"), std::string::npos)
+      << r.err;
+}
+
+// A function whose body is in FBD is refused at its location when a program calls it.
+TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
+  const std::string fbd =
+      "<FBD><inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+      "<expression>x</expression></inVariable><outVariable localId=\"2\"><position x=\"0\" "
+      "y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
+      "<expression>Both</expression></outVariable></FBD>";
+  const auto file =
+      write_temp(kHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kFooter, ".xml");
+  const auto r = run_sfcv(check(file, "explicit", "--ctl 'AG !Run'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("FUNCTION bodies in FBD are not modelled (only ST)"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("not Boolean"), std::string::npos) << r.err;  // no follow-up error
+}
+
+}  // namespace
+}  // namespace sfcv::test
