@@ -12,6 +12,7 @@
 #include <pugixml.hpp>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -46,6 +47,7 @@ std::string_view type_of(pugi::xml_node n) {
 struct StepInfo {
   int chart = -1;
   std::string name;
+  int index = -1;  ///< in its chart's steps
 };
 
 class Reader {
@@ -111,11 +113,9 @@ class Reader {
   std::string xmi_path(pugi::xml_node n) const {
     std::vector<std::string> segments;  // innermost first; joined once (linear in the depth)
     for (; n && n != root_ && n.type() == pugi::node_element; n = n.parent()) {
-      int index = 0, count = 0;
-      for (auto s = n.parent().child(n.name()); s; s = s.next_sibling(n.name())) {
-        if (s == n) index = count;
-        ++count;
-      }
+      const auto& pos = sibling_positions(n.parent());
+      const int index = pos.index.at(n.internal_object());
+      const int count = pos.count.at(n.name());
       // EMF numbers the elements of many-valued features even when there is one.
       static const std::set<std::string_view> kMany{
           "partialGrafcets",      "steps",  "transitions", "synchronizations",
@@ -128,6 +128,24 @@ class Reader {
     std::string path = "/";
     for (auto it = segments.rbegin(); it != segments.rend(); ++it) path += "/" + *it;
     return path;
+  }
+  /// The children of one element: each one's index among its same-named siblings (from 0),
+  /// and how many share each name; counted once per parent, since a partial grafcet has
+  /// thousands of steps and each one's path needs its index.
+  struct SiblingPositions {
+    std::unordered_map<const void*, int> index;
+    std::unordered_map<std::string, int> count;
+    std::unordered_map<std::string, std::vector<pugi::xml_node>> by_name;  ///< for references
+  };
+  const SiblingPositions& sibling_positions(pugi::xml_node parent) const {
+    auto [it, fresh] = siblings_.try_emplace(parent.internal_object());
+    if (fresh)
+      for (auto s = parent.first_child(); s; s = s.next_sibling())
+        if (s.type() == pugi::node_element) {
+          it->second.index[s.internal_object()] = it->second.count[s.name()]++;
+          it->second.by_name[s.name()].push_back(s);
+        }
+    return it->second;
   }
   SourceLocation where(pugi::xml_node n) const {
     // pugixml gives the offset of the element's name; the element starts at its '<'.
@@ -166,8 +184,10 @@ class Reader {
           throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
         index = std::stoul(digits);
       }
-      pugi::xml_node c = n.child(child.c_str());
-      for (std::size_t k = 0; c && k < index; ++k) c = c.next_sibling(child.c_str());
+      const auto& named = sibling_positions(n).by_name;
+      const auto found = named.find(child);
+      const pugi::xml_node c =
+          found != named.end() && index < found->second.size() ? found->second[index] : pugi::xml_node();
       if (!c) throw Failure{from, "reference '" + std::string(ref) + "' leads to no element"};
       n = c;
       i = j + 1;
@@ -356,10 +376,12 @@ class Reader {
     s.activation_link = n.attribute("activationLink").as_bool(false);
     s.where = where(n);
     model::Chart& c = chart(pg);
-    if (c.find_step(s.name))
+    const std::string upper = model::to_upper(s.name);
+    if (!step_names_.insert({chart_of_.at(pg), upper}).second)
       throw Failure{n,
                     "step id '" + s.name + "' is used twice in partial grafcet '" + c.name + "'"};
-    steps_[n] = {chart_of_.at(pg), s.name};
+    ++charts_with_step_[upper];
+    steps_[n] = {chart_of_.at(pg), s.name, static_cast<int>(c.steps.size())};
     c.steps.push_back(std::move(s));
   }
 
@@ -402,7 +424,7 @@ class Reader {
       if (!chart_of_.count(enclosed))
         throw Failure{at, "an enclosing step must enclose partial grafcets"};
       auto& c = pou_.charts[static_cast<std::size_t>(it->second.chart)];
-      auto& s = c.steps[static_cast<std::size_t>(c.step_index(it->second.name))];
+      auto& s = c.steps[static_cast<std::size_t>(it->second.index)];
       const std::string& name = chart(enclosed).name;
       if (std::find(s.enclosed.begin(), s.enclosed.end(), name) == s.enclosed.end())
         s.enclosed.push_back(name);
@@ -460,7 +482,7 @@ class Reader {
       const auto s = resolve(arc, arc.attribute("source").value());
       const auto t = resolve(arc, arc.attribute("target").value());
       const Kind ks = kind_of(s, arc), kt = kind_of(t, arc);
-      auto step_index = [&](pugi::xml_node n) { return c.step_index(steps_.at(n).name); };
+      auto step_index = [&](pugi::xml_node n) { return steps_.at(n).index; };
       if (ks == Kind::Step && kt == Kind::Transition)
         up[transitions.at(t)].push_back(step_index(s));
       else if (ks == Kind::Transition && kt == Kind::Step)
@@ -741,9 +763,8 @@ class Reader {
 
   /// Step variables are written X<step name> in the IR; the name must then be unambiguous.
   void check_step_variable(pugi::xml_node n, const std::string& step) {
-    int found = 0;
-    for (const auto& c : pou_.charts)
-      if (c.find_step(step)) ++found;
+    const auto it = charts_with_step_.find(model::to_upper(step));
+    const int found = it == charts_with_step_.end() ? 0 : it->second;
     if (found == 0) throw Failure{n, "step variable X" + step + " refers to no step"};
     if (found > 1)
       throw Failure{n, "step variable X" + step +
@@ -759,6 +780,7 @@ class Reader {
   pugi::xml_document doc_;
   int term_depth_ = 0;  ///< nesting of term() (model::kMaxNesting)
   model::BudgetPoll poll_;  ///< the run's deadline, polled once per element read
+  mutable std::unordered_map<const void*, SiblingPositions> siblings_;  ///< by parent
   pugi::xml_node root_;
   model::Pou pou_;
   std::map<pugi::xml_node, std::string> var_names_;
@@ -767,6 +789,10 @@ class Reader {
   std::map<pugi::xml_node, Delay> delay_vars_;
   std::map<pugi::xml_node, int> chart_of_;
   std::map<pugi::xml_node, StepInfo> steps_;
+  /// (chart, upper-cased step name) of every step read, and per upper-cased step name the
+  /// number of charts that have it: no linear search per step or step variable.
+  std::set<std::pair<int, std::string>> step_names_;
+  std::unordered_map<std::string, int> charts_with_step_;
 };
 
 }  // namespace

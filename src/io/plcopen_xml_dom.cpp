@@ -35,7 +35,23 @@ std::vector<pugi::xml_node> element_children(pugi::xml_node node) {
   return r;
 }
 
-std::string element_path(pugi::xml_node node) {
+const XmlContext::SiblingPositions& XmlContext::sibling_positions(pugi::xml_node parent) const {
+  auto [it, fresh] = siblings_.try_emplace(parent.internal_object());
+  if (fresh) {
+    auto& pos = it->second;
+    std::unordered_map<std::string_view, int> seen;
+    for (auto s = parent.first_child(); s; s = s.next_sibling()) {
+      if (s.type() != pugi::node_element) continue;
+      const auto name = local_name(s);
+      pos.index[s.internal_object()] = ++seen[name];
+      ++pos.same_id[std::string(name) + '\n' + s.attribute("localId").value()];
+    }
+    for (const auto& [name, count] : seen) pos.count[std::string(name)] = count;
+  }
+  return it->second;
+}
+
+std::string XmlContext::element_path(pugi::xml_node node) const {
   std::vector<std::string> parts;
   for (auto n = node; n && n.type() == pugi::node_element; n = n.parent()) {
     std::string part(local_name(n));
@@ -51,16 +67,14 @@ std::string element_path(pugi::xml_node node) {
     }
     // Elements without a distinguishing attribute (or with a repeated localId such as the
     // localId="0" Beremiz gives every action of a block) get their position among same-named
-    // siblings.
+    // siblings, counted once per parent (an SFC body has thousands of siblings).
     if (!(name && *name.value()) && n.parent()) {
-      int index = 0, count = 0, same_id = 0;
-      for (auto s = n.parent().first_child(); s; s = s.next_sibling()) {
-        if (s.type() != pugi::node_element || local_name(s) != local_name(n)) continue;
-        ++count;
-        if (id && std::strcmp(s.attribute("localId").value(), id.value()) == 0) ++same_id;
-        if (s == n) index = count;
-      }
-      if (count > 1 && (!id || same_id > 1)) part += "[" + std::to_string(index) + "]";
+      const auto& pos = sibling_positions(n.parent());
+      const std::string local(local_name(n));
+      const int count = pos.count.at(local);
+      const int same_id = id ? pos.same_id.at(local + '\n' + id.value()) : 0;
+      if (count > 1 && (!id || same_id > 1))
+        part += "[" + std::to_string(pos.index.at(n.internal_object())) + "]";
     }
     parts.push_back(std::move(part));
   }
@@ -142,7 +156,7 @@ BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx) {
   bool first = true;
   collect_text(language_element, r.text, offset, first);
   r.start = ctx.where_offset(offset >= 0 ? offset : language_element.offset_debug());
-  r.start.element_path = element_path(language_element);
+  r.start.element_path = ctx.element_path(language_element);
   return r;
 }
 

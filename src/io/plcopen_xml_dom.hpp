@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "model/budget.hpp"
@@ -30,9 +31,6 @@ std::vector<pugi::xml_node> children(pugi::xml_node node, std::string_view name)
 /// All child elements, in document order.
 std::vector<pugi::xml_node> element_children(pugi::xml_node node);
 
-/// "/project/types/pous/pou[@name='P']/body/SFC/step[@localId='3']".
-std::string element_path(pugi::xml_node node);
-
 /// Where diagnostics go, and how XML nodes map to file:line:col.
 class XmlContext {
  public:
@@ -42,6 +40,8 @@ class XmlContext {
   const std::string& file() const { return file_; }
   model::SourceLocation where(pugi::xml_node node) const;
   model::SourceLocation where_offset(std::ptrdiff_t offset) const;
+  /// "/project/types/pous/pou[@name='P']/body/SFC/step[@localId='3']".
+  std::string element_path(pugi::xml_node node) const;
 
   void error(pugi::xml_node node, std::string message);
   void warning(pugi::xml_node node, std::string message);
@@ -60,6 +60,17 @@ class XmlContext {
   std::vector<std::size_t> line_starts_;
   model::Diagnostics& diagnostics_;
   mutable model::BudgetPoll poll_;  ///< reading the clock does not change what was read
+
+  /// The children of one element: each one's position among its same-named siblings, how many
+  /// share its name, and how many share its name and localId (keyed "name\nlocalId").
+  struct SiblingPositions {
+    std::unordered_map<const void*, int> index;
+    std::unordered_map<std::string, int> count, same_id;
+  };
+  const SiblingPositions& sibling_positions(pugi::xml_node parent) const;
+  /// Filled as paths are asked for: a path per element of an SFC body with thousands of
+  /// siblings would otherwise count them again each time.
+  mutable std::unordered_map<const void*, SiblingPositions> siblings_;
 };
 
 /// Text of a textual body element (`ST`, `IL`, `inline/ST`): raw text, CDATA, `xhtml:p` or an

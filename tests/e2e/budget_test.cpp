@@ -85,6 +85,49 @@ TEST(Budget, TimeoutHoldsInTheChecksAfterExploration) {
   EXPECT_LT(t.seconds, 15.0);
 }
 
+/// An IEC 61131-3 text chain of `n` steps in one loop (1,000,000 steps: 80 MB).
+std::string iec_chain(int n) {
+  std::string st = "PROGRAM p\nVAR_INPUT go : BOOL; END_VAR\nINITIAL_STEP s0 : END_STEP\n";
+  st.reserve(static_cast<std::size_t>(n) * 80);
+  for (int i = 1; i < n; ++i) st += "STEP s" + std::to_string(i) + " : END_STEP\n";
+  for (int i = 0; i < n; ++i)
+    st += "TRANSITION FROM s" + std::to_string(i) + " TO s" + std::to_string((i + 1) % n) +
+          " := go; END_TRANSITION\n";
+  st += "END_PROGRAM\n";
+  return write_temp(st, ".st");
+}
+
+TEST(Budget, TimeoutHoldsWhileLoadingValidatingAndCompiling) {
+  // Before, the loaders, validation, the compilers and the compiled successors' circuit did
+  // not read the clock: a 1,000,000-step chain with --timeout 1 ran 26 s (read 3 s, validate
+  // and compile 9 s, circuit 14 s); a 300,000-step .g7 ran minutes (quadratic reading).
+  const auto iec = iec_chain(1000000);
+  for (const char* engine : {"explicit", "auto", "bdd", "ic3"}) {
+    const auto t = timed_run("check " + iec + " --engine " + engine +
+                             " --timeout 1 --checks none --ctl 'AG TRUE' --quiet");
+    EXPECT_EQ(t.run.exit_code, 3) << engine << "\n" << t.run.out << t.run.err;
+    EXPECT_NE((t.run.out + t.run.err).find("time limit reached"), std::string::npos)
+        << engine << "\n" << t.run.out << t.run.err;
+    EXPECT_LT(t.seconds, 10.0) << engine;
+  }
+  std::string g7 = "project chain;\ninput go;\noutput o;\ngrafcet g {\n  step 0 initial;\n";
+  const int n = 300000;
+  for (int i = 1; i < n; ++i) g7 += "  step " + std::to_string(i) + ";\n";
+  for (int i = 0; i < n; ++i)
+    g7 += "  transition " + std::to_string(i) + ": " + std::to_string(i) + " -> " +
+          std::to_string((i + 1) % n) + " when go;\n";
+  g7 += "}\n";
+  const auto grafcet = write_temp(g7, ".g7");
+  for (const std::string sub : {"check", "rsg", "query"}) {
+    const std::string args = sub + " " + grafcet + (sub == "query" ? " Y0" : "") +
+                             " --timeout 1 --quiet" +
+                             (sub == "check" ? " --checks none --ctl 'AG TRUE'" : "");
+    const auto t = timed_run(args);
+    EXPECT_EQ(t.run.exit_code, 3) << sub << "\n" << t.run.out << t.run.err;
+    EXPECT_LT(t.seconds, 10.0) << sub;
+  }
+}
+
 TEST(Budget, TimeoutHoldsWhileBuildingTheCircuitUnderAuto) {
   // --engine auto builds the bdd engine's circuit to know whether it could take over: 1,000
   // nested enclosing steps took > 40 s and 1.7 GB with --timeout 5. Deeper than 200 levels is

@@ -23,7 +23,7 @@ inline std::string diagnostics_text(const model::Diagnostics& d) {
 template <class Load>
 std::string expect_reloads_equal(const model::Project& p, const std::string& text, Load load,
                                  const std::string& file) {
-  const io::LoadResult again = load(text, file);
+  const io::LoadResult again = load(text, file, nullptr);  // no budget
   EXPECT_TRUE(again.ok()) << diagnostics_text(again.diagnostics) << text;
   if (!again.project) return text;
   const auto diff = model::first_difference(p, *again.project);
