@@ -39,7 +39,8 @@ int run_rsg(const RsgOptions& o) {
   const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
-  const model::Project project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
+  const model::Project project =
+      load_model_or_throw(o.model, parse_format(o.format), false, &budget);
   budget.check_time("loading the model");
   progress.phase("build");
   const auto built =

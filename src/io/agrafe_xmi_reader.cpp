@@ -186,8 +186,9 @@ class Reader {
       }
       const auto& named = sibling_positions(n).by_name;
       const auto found = named.find(child);
-      const pugi::xml_node c =
-          found != named.end() && index < found->second.size() ? found->second[index] : pugi::xml_node();
+      const pugi::xml_node c = found != named.end() && index < found->second.size()
+                                   ? found->second[index]
+                                   : pugi::xml_node();
       if (!c) throw Failure{from, "reference '" + std::string(ref) + "' leads to no element"};
       n = c;
       i = j + 1;
@@ -456,7 +457,7 @@ class Reader {
       tr.guard = timed(t, guard, {});
       if (!transition_ids.insert(tr.name).second)
         warn(t, model::Severity::Warning,
-               "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name + "'");
+             "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name + "'");
       transitions[t] = static_cast<int>(c.transitions.size());
       c.transitions.push_back(std::move(tr));
     }
@@ -778,7 +779,7 @@ class Reader {
   model::Diagnostics& diags_;
   std::vector<std::size_t> line_starts_;
   pugi::xml_document doc_;
-  int term_depth_ = 0;  ///< nesting of term() (model::kMaxNesting)
+  int term_depth_ = 0;      ///< nesting of term() (model::kMaxNesting)
   model::BudgetPoll poll_;  ///< the run's deadline, polled once per element read
   mutable std::unordered_map<const void*, SiblingPositions> siblings_;  ///< by parent
   pugi::xml_node root_;

@@ -107,7 +107,8 @@ TEST(Budget, TimeoutHoldsWhileLoadingValidatingAndCompiling) {
                              " --timeout 1 --checks none --ctl 'AG TRUE' --quiet");
     EXPECT_EQ(t.run.exit_code, 3) << engine << "\n" << t.run.out << t.run.err;
     EXPECT_NE((t.run.out + t.run.err).find("time limit reached"), std::string::npos)
-        << engine << "\n" << t.run.out << t.run.err;
+        << engine << "\n"
+        << t.run.out << t.run.err;
     EXPECT_LT(t.seconds, 10.0) << engine;
   }
   std::string g7 = "project chain;\ninput go;\noutput o;\ngrafcet g {\n  step 0 initial;\n";

@@ -51,7 +51,8 @@ std::string quoted(std::string_view s);
 
 class Validator {
  public:
-  Validator(const Project& project, const Budget* budget) : project_(project), poll_(budget, 1024) {}
+  Validator(const Project& project, const Budget* budget)
+      : project_(project), poll_(budget, 1024) {}
 
   Diagnostics run();
 
