@@ -182,6 +182,9 @@ class Reader {
         const std::string digits(seg.substr(dot + 1));
         if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
           throw Failure{from, "malformed reference '" + std::string(ref) + "'"};
+        // std::stoul would throw out_of_range (an internal error) past 64 bits.
+        if (digits.size() > 9)
+          throw Failure{from, "reference '" + std::string(ref) + "' leads to no element"};
         index = std::stoul(digits);
       }
       const auto& named = sibling_positions(n).by_name;

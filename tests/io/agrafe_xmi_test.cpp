@@ -378,6 +378,14 @@ TEST(AgrafeXmiErrors, NameTheElement) {
                             "</partialGrafcets>")),
             "t.grafcet:6:63 (//@partialGrafcets.0/@arcs.0): reference "
             "'//@partialGrafcets.0/@steps.4' leads to no element");
+  // An index past 64 bits made std::stoul throw (an internal error, exit 4).
+  EXPECT_EQ(first_error(doc("",
+                            "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\"/>"
+                            "<arcs source=\"//@partialGrafcets.0/@steps.99999999999999999999999\" "
+                            "target=\"//@partialGrafcets.0/@transitions.0\"/>"
+                            "</partialGrafcets>")),
+            "t.grafcet:6:63 (//@partialGrafcets.0/@arcs.0): reference "
+            "'//@partialGrafcets.0/@steps.99999999999999999999999' leads to no element");
   EXPECT_EQ(
       first_error(doc("",
                       "<partialGrafcets name=\"G\"><steps id=\"1\"/><transitions id=\"1\">"
