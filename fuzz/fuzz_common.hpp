@@ -17,11 +17,12 @@
 
 namespace sfcv::fuzz {
 
-inline void load_validate_build(io::LoadResult (*load)(std::string_view, const std::string&),
+inline void load_validate_build(io::LoadResult (*load)(std::string_view, const std::string&,
+                                                       const model::Budget*),
                                 const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    auto r = load(text, "fuzz");
+    auto r = load(text, "fuzz", nullptr);  // no budget: libFuzzer's -timeout bounds an input
     if (!r.ok()) return;
     const auto diags = model::validate(*r.project);
     if (model::has_errors(diags)) return;
