@@ -181,6 +181,12 @@ std::vector<WriteConflict> write_conflicts(const model::Pou& pou) {
   std::map<std::string, std::vector<ActionWrite>> writes;  // by variable, in action order
   std::function<void(const model::StmtList&, const std::string&, bool)> walk =
       [&](const model::StmtList& body, const std::string& action, bool conditional) {
+        auto add = [&](const std::string& variable, std::optional<std::int64_t> v) {
+          auto& list = writes[model::to_upper(variable)];
+          bool dup = false;
+          for (const auto& w : list) dup |= w.action == action;
+          if (!dup) list.push_back({action, v});
+        };
         for (const auto& st : body) {
           if (st->kind == model::StmtKind::Assign) {
             std::optional<std::int64_t> v;
@@ -188,11 +194,13 @@ std::vector<WriteConflict> write_conflicts(const model::Pou& pou) {
                 (st->value->kind == model::ExprKind::BoolConst ||
                  st->value->kind == model::ExprKind::IntConst))
               v = st->value->value;
-            auto& list = writes[model::to_upper(st->target)];
-            bool dup = false;
-            for (const auto& w : list) dup |= w.action == action;
-            if (!dup) list.push_back({action, v});
+            add(st->target, v);
           }
+          // A FOR loop assigns its index, and `inst(Q => y)` copies an output into y: writes
+          // as much as an assignment (their values are not constants).
+          if (st->kind == model::StmtKind::For) add(st->target, std::nullopt);
+          if (st->kind == model::StmtKind::FbCall)
+            for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
           for (const auto& b : st->bodies) walk(b, action, true);
           walk(st->else_body, action, true);
         }

@@ -270,6 +270,42 @@ TEST(StandardChecks, OutputConflicts) {
   EXPECT_EQ(run(system(true), StandardCheck::OutputConflicts).verdict, Verdict::NotChecked);
 }
 
+TEST(StandardChecks, OutputConflictsCountLoopIndicesAndOutputBindingsAsWrites) {
+  // A FOR loop assigns its index and `t(Q => y)` assigns y: two actions doing so, or one of
+  // them beside an assignment, write the same variable in one cycle (they were not counted).
+  model::Pou pou;
+  pou.name = "P";
+  auto action = [&](const std::string& name, model::StmtPtr st) {
+    model::Action a;
+    a.name = name;
+    a.kind = model::ActionBodyKind::Statements;
+    a.body.push_back(std::move(st));
+    pou.actions.push_back(a);
+  };
+  auto loop = std::make_shared<model::Stmt>();
+  loop->kind = model::StmtKind::For;
+  loop->target = "i";
+  loop->value = model::make_int(1);
+  loop->limit = model::make_int(3);
+  loop->bodies.push_back({});
+  action("Count", loop);
+  action("Reset", model::make_assign("I", model::make_int(0)));
+  auto call = std::make_shared<model::Stmt>();
+  call->kind = model::StmtKind::FbCall;
+  call->target = "t";
+  call->outputs = {{"Q", "y"}};
+  action("Timer", call);
+  action("Set", model::make_assign("y", model::make_bool(true)));
+  const auto conflicts = logic::write_conflicts(pou);
+  ASSERT_EQ(conflicts.size(), 2u);
+  EXPECT_EQ(conflicts[0].variable, "I");
+  EXPECT_EQ(conflicts[0].first.action, "Count");
+  EXPECT_EQ(conflicts[0].second.action, "Reset");
+  EXPECT_EQ(conflicts[1].variable, "Y");
+  EXPECT_EQ(conflicts[1].first.action, "Timer");
+  EXPECT_EQ(conflicts[1].second.action, "Set");
+}
+
 // A system that reports an instability from its initial state.
 class Unstable final : public semantics::TransitionSystem {
  public:
