@@ -85,23 +85,11 @@ TEST(Budget, TimeoutHoldsInTheChecksAfterExploration) {
   EXPECT_LT(t.seconds, 15.0);
 }
 
-/// An IEC 61131-3 text chain of `n` steps in one loop (1,000,000 steps: 80 MB).
-std::string iec_chain(int n) {
-  std::string st = "PROGRAM p\nVAR_INPUT go : BOOL; END_VAR\nINITIAL_STEP s0 : END_STEP\n";
-  st.reserve(static_cast<std::size_t>(n) * 80);
-  for (int i = 1; i < n; ++i) st += "STEP s" + std::to_string(i) + " : END_STEP\n";
-  for (int i = 0; i < n; ++i)
-    st += "TRANSITION FROM s" + std::to_string(i) + " TO s" + std::to_string((i + 1) % n) +
-          " := go; END_TRANSITION\n";
-  st += "END_PROGRAM\n";
-  return write_temp(st, ".st");
-}
-
 TEST(Budget, TimeoutHoldsWhileLoadingValidatingAndCompiling) {
   // Before, the loaders, validation, the compilers and the compiled successors' circuit did
   // not read the clock: a 1,000,000-step chain with --timeout 1 ran 26 s (read 3 s, validate
   // and compile 9 s, circuit 14 s); a 300,000-step .g7 ran minutes (quadratic reading).
-  const auto iec = iec_chain(1000000);
+  const auto iec = write_temp(sfcv::test::iec_chain_text(1000000), ".st");
   for (const char* engine : {"explicit", "auto", "bdd", "ic3"}) {
     const auto t = timed_run("check " + iec + " --engine " + engine +
                              " --timeout 1 --checks none --ctl 'AG TRUE' --quiet");
@@ -111,14 +99,7 @@ TEST(Budget, TimeoutHoldsWhileLoadingValidatingAndCompiling) {
         << t.run.out << t.run.err;
     EXPECT_LT(t.seconds, 10.0) << engine;
   }
-  std::string g7 = "project chain;\ninput go;\noutput o;\ngrafcet g {\n  step 0 initial;\n";
-  const int n = 300000;
-  for (int i = 1; i < n; ++i) g7 += "  step " + std::to_string(i) + ";\n";
-  for (int i = 0; i < n; ++i)
-    g7 += "  transition " + std::to_string(i) + ": " + std::to_string(i) + " -> " +
-          std::to_string((i + 1) % n) + " when go;\n";
-  g7 += "}\n";
-  const auto grafcet = write_temp(g7, ".g7");
+  const auto grafcet = write_temp(sfcv::test::g7_chain_text(300000), ".g7");
   for (const std::string sub : {"check", "rsg", "query"}) {
     const std::string args = sub + " " + grafcet + (sub == "query" ? " Y0" : "") +
                              " --timeout 1 --quiet" +

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "support/plcopen_text.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -143,27 +144,6 @@ TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
 
 // ------------------------------------------------------------------------------- PLCopen XML
 
-const std::string kHeader =
-    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-    "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
-    "<fileHeader companyName=\"t\" productName=\"CODESYS\" productVersion=\"3.5\" "
-    "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"plant\"/>\n"
-    "<types><dataTypes/><pous>\n";
-const std::string kFooter =
-    "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
-
-std::string vars(const std::string& section, const std::vector<std::string>& names,
-                 const std::string& type = "<BOOL/>") {
-  std::string s = "<" + section + ">";
-  for (const auto& n : names)
-    s += "<variable name=\"" + n + "\"><type>" + type + "</type></variable>";
-  return s + "</" + section + ">";
-}
-
-std::string st(const std::string& text) {
-  return "<ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">" + text + "</xhtml></ST>";
-}
-
 std::string function(const std::string& name, const std::string& result,
                      const std::string& interface, const std::string& body) {
   return "<pou name=\"" + name + "\" pouType=\"function\"><interface><returnType>" + result +
@@ -171,11 +151,11 @@ std::string function(const std::string& name, const std::string& result,
 }
 
 // Count2 counts its TRUE inputs; Both returns FALSE early unless x, else Count2(x, y) = 2.
-std::string functions(
-    const std::string& both_body = st("IF NOT x THEN RETURN; END_IF;\nBoth := Count2(x, y) = 2;")) {
-  return function("Count2", "<INT/>", vars("inputVars", {"a", "b"}),
-                  st("Count2 := BOOL_TO_INT(a) + BOOL_TO_INT(b);")) +
-         function("Both", "<BOOL/>", vars("inputVars", {"x", "y"}), both_body);
+std::string functions(const std::string& both_body =
+                          plcopen_st("IF NOT x THEN RETURN; END_IF;\nBoth := Count2(x, y) = 2;")) {
+  return function("Count2", "<INT/>", plcopen_vars("inputVars", {"a", "b"}),
+                  plcopen_st("Count2 := BOOL_TO_INT(a) + BOOL_TO_INT(b);")) +
+         function("Both", "<BOOL/>", plcopen_vars("inputVars", {"x", "y"}), both_body);
 }
 
 // A CODESYS-style program with an SFC body: Idle --guard--> Run --NOT s1--> Idle, the action
@@ -190,17 +170,17 @@ std::string main_sfc(const std::string& guard) {
   auto transition = [](int id, int from, const std::string& cond) {
     return "<transition localId=\"" + std::to_string(id) +
            "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
-           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" + st(cond) +
-           "</inline></condition></transition>\n";
+           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" +
+           plcopen_st(cond) + "</inline></condition></transition>\n";
   };
-  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"s1", "s2"}) +
-         vars("outputVars", {"motor"}) +
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"s1", "s2"}) + plcopen_vars("outputVars", {"motor"}) +
          "</interface><actions>"
          "<action name=\"ACT_Run\"><body>" +
-         st("motor := TRUE;") +
+         plcopen_st("motor := TRUE;") +
          "</body></action>"
          "<action name=\"ACT_Idle\"><body>" +
-         st("motor := FALSE;") +
+         plcopen_st("motor := FALSE;") +
          "</body></action></actions><body><SFC>\n"
          "<step localId=\"1\" name=\"Idle\" initialStep=\"true\"><connectionPointIn>"
          "<connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/></step>\n" +
@@ -215,10 +195,11 @@ std::string main_sfc(const std::string& guard) {
 // through the function: a model reading FALSE would claim `AG !Run`); with y := FALSE the
 // count never reaches 2 and Run is unreachable.
 TEST(FunctionsE2E, PlcopenFunctionGuardsATransition) {
-  const auto reaches =
-      write_temp(kHeader + functions() + main_sfc("Both(x := s1, y := s2)") + kFooter, ".xml");
-  const auto never =
-      write_temp(kHeader + functions() + main_sfc("Both(y := FALSE, x := s1)") + kFooter, ".xml");
+  const auto reaches = write_temp(
+      kPlcopenHeader + functions() + main_sfc("Both(x := s1, y := s2)") + kPlcopenFooter, ".xml");
+  const auto never = write_temp(
+      kPlcopenHeader + functions() + main_sfc("Both(y := FALSE, x := s1)") + kPlcopenFooter,
+      ".xml");
   for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
     SCOPED_TRACE(engine);
     auto r = run_sfcv(check(reaches, engine, "--ctl 'AG !Run'"));
@@ -233,8 +214,8 @@ TEST(FunctionsE2E, PlcopenFunctionGuardsATransition) {
 // parameters are the call's, an unconnected input has its initial value, and a block whose
 // result nobody reads is refused rather than dropped.
 std::string fbd_main(const std::string& y_input, const std::string& motor_source) {
-  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"s1", "s2"}) +
-         vars("outputVars", {"motor"}) +
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"s1", "s2"}) + plcopen_vars("outputVars", {"motor"}) +
          "</interface><body><FBD>"
          "<inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
          "<expression>s1</expression></inVariable>"
@@ -255,8 +236,10 @@ std::string fbd_main(const std::string& y_input, const std::string& motor_source
 TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
   const std::string wired = "<connection refLocalId=\"2\"/>";
   const std::string result = "<connection refLocalId=\"3\" formalParameter=\"Both\"/>";
-  const auto both = write_temp(kHeader + functions() + fbd_main(wired, result) + kFooter, ".xml");
-  const auto open_y = write_temp(kHeader + functions() + fbd_main("", result) + kFooter, ".xml");
+  const auto both =
+      write_temp(kPlcopenHeader + functions() + fbd_main(wired, result) + kPlcopenFooter, ".xml");
+  const auto open_y =
+      write_temp(kPlcopenHeader + functions() + fbd_main("", result) + kPlcopenFooter, ".xml");
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
     SCOPED_TRACE(engine);
     auto r = run_sfcv(check(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
@@ -266,8 +249,10 @@ TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
     r = run_sfcv(check(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   }
-  const auto unused = write_temp(
-      kHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") + kFooter, ".xml");
+  const auto unused =
+      write_temp(kPlcopenHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") +
+                     kPlcopenFooter,
+                 ".xml");
   const auto r = run_sfcv(check(unused, "explicit", "--ctl 'AG !motor'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("unsupported: the result of function Both is not used"), std::string::npos)
@@ -281,8 +266,8 @@ TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
       "<expression>x</expression></inVariable><outVariable localId=\"2\"><position x=\"0\" "
       "y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
       "<expression>Both</expression></outVariable></FBD>";
-  const auto file =
-      write_temp(kHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kFooter, ".xml");
+  const auto file = write_temp(
+      kPlcopenHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kPlcopenFooter, ".xml");
   const auto r = run_sfcv(check(file, "explicit", "--ctl 'AG !Run'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("FUNCTION bodies in FBD are not modelled (only ST)"), std::string::npos)

@@ -294,14 +294,8 @@ TEST(DepthLimits, StExpressionChainIsALocatedError) {
 TEST(SizeLimits, LintOnALongChainIsLinear) {
   // 100,000 steps in one loop (lint used to be quadratic here: 30,000 steps took 56 s). No
   // timing assertion (bench/ holds speed targets); a quadratic pass would time the test out.
-  std::string st = "PROGRAM p\nVAR_INPUT go : BOOL; END_VAR\nINITIAL_STEP s0 : END_STEP\n";
   const int n = 100000;
-  for (int i = 1; i < n; ++i) st += "STEP s" + std::to_string(i) + " : END_STEP\n";
-  for (int i = 0; i < n; ++i)
-    st += "TRANSITION FROM s" + std::to_string(i) + " TO s" + std::to_string((i + 1) % n) +
-          " := go; END_TRANSITION\n";
-  st += "END_PROGRAM\n";
-  const auto path = write_temp(st, ".st");
+  const auto path = write_temp(iec_chain_text(n), ".st");
   const auto r = run_sfcv("lint " + q(path));
   EXPECT_EQ(r.exit_code, 0) << r.out.substr(0, 2000);
   EXPECT_NE(r.out.find("0 errors"), std::string::npos) << r.out.substr(0, 2000);
@@ -313,21 +307,9 @@ TEST(SizeLimits, LintOnALongChainIsLinearInEveryFormat) {
   // counted its siblings), and AGRAFE paths counted siblings as well. A quadratic pass would
   // time the test out; no timing assertion here.
   const int n = 100000;
-  std::string g7 = "project chain;\ninput go;\noutput o;\ngrafcet g {\n  step 0 initial;\n";
-  for (int i = 1; i < n; ++i) g7 += "  step " + std::to_string(i) + ";\n";
-  for (int i = 0; i < n; ++i)
-    g7 += "  transition " + std::to_string(i) + ": " + std::to_string(i) + " -> " +
-          std::to_string((i + 1) % n) + " when go;\n";
-  g7 += "}\n";
-  const auto g7_path = write_temp(g7, ".g7");
+  const auto g7_path = write_temp(g7_chain_text(n), ".g7");
   // The PLCopen file is the IEC text chain exported by sfcv itself.
-  std::string st = "PROGRAM p\nVAR_INPUT go : BOOL; END_VAR\nINITIAL_STEP s0 : END_STEP\n";
-  for (int i = 1; i < n; ++i) st += "STEP s" + std::to_string(i) + " : END_STEP\n";
-  for (int i = 0; i < n; ++i)
-    st += "TRANSITION FROM s" + std::to_string(i) + " TO s" + std::to_string((i + 1) % n) +
-          " := go; END_TRANSITION\n";
-  st += "END_PROGRAM\n";
-  const auto st_path = write_temp(st, ".st");
+  const auto st_path = write_temp(iec_chain_text(n), ".st");
   const auto xml_path = write_temp("", ".xml");
   ASSERT_EQ(run_sfcv("export " + q(st_path) + " --to plcopen -o " + q(xml_path)).exit_code, 0);
   std::string xmi =

@@ -7,31 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "support/plcopen_text.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
 namespace {
-
-const std::string kHeader =
-    "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
-    "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">\n"
-    "<fileHeader companyName=\"t\" productName=\"CODESYS\" productVersion=\"3.5\" "
-    "creationDateTime=\"2024-01-01T00:00:00\"/>\n<contentHeader name=\"plant\"/>\n"
-    "<types><dataTypes/><pous>\n";
-const std::string kFooter =
-    "</pous></types>\n<instances><configurations/></instances>\n</project>\n";
-
-std::string vars(const std::string& section, const std::vector<std::string>& names,
-                 const std::string& type = "<BOOL/>") {
-  std::string s = "<" + section + ">";
-  for (const auto& n : names)
-    s += "<variable name=\"" + n + "\"><type>" + type + "</type></variable>";
-  return s + "</" + section + ">";
-}
-
-std::string st(const std::string& text) {
-  return "<ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">" + text + "</xhtml></ST>";
-}
 
 // A CODESYS-style FB with an SFC body: Closed --cmd--> Opened --NOT cmd--> Closed, and the
 // action ACT_Open (N on Opened) setting its output `open`; ACT_Close (N on Closed) clears it.
@@ -45,17 +25,17 @@ std::string valve_fb(const std::string& name = "Valve") {
   auto guard = [](int id, int from, const char* cond) {
     return "<transition localId=\"" + std::to_string(id) +
            "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
-           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" + st(cond) +
-           "</inline></condition></transition>\n";
+           "\"/></connectionPointIn><connectionPointOut/><condition><inline name=\"\">" +
+           plcopen_st(cond) + "</inline></condition></transition>\n";
   };
   return "<pou name=\"" + name + "\" pouType=\"functionBlock\"><interface>" +
-         vars("inputVars", {"cmd"}) + vars("outputVars", {"open"}) +
+         plcopen_vars("inputVars", {"cmd"}) + plcopen_vars("outputVars", {"open"}) +
          "</interface><actions>"
          "<action name=\"ACT_Open\"><body>" +
-         st("open := TRUE;") +
+         plcopen_st("open := TRUE;") +
          "</body></action>"
          "<action name=\"ACT_Close\"><body>" +
-         st("open := FALSE;") +
+         plcopen_st("open := FALSE;") +
          "</body></action></actions><body><SFC>\n"
          "<step localId=\"1\" name=\"Closed\" initialStep=\"true\"><connectionPointIn>"
          "<connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/></step>\n" +
@@ -68,8 +48,9 @@ std::string valve_fb(const std::string& name = "Valve") {
 
 std::string main_pou(const std::string& locals, const std::string& body) {
   return "<pou name=\"Main\" pouType=\"program\"><interface>" +
-         vars("inputVars", {"req", "enable"}) + vars("outputVars", {"pump", "valve"}) +
-         "<localVars>" + locals + "</localVars></interface><body>" + st(body) + "</body></pou>\n";
+         plcopen_vars("inputVars", {"req", "enable"}) +
+         plcopen_vars("outputVars", {"pump", "valve"}) + "<localVars>" + locals +
+         "</localVars></interface><body>" + plcopen_st(body) + "</body></pou>\n";
 }
 
 std::string instance(const std::string& name, const std::string& type) {
@@ -84,10 +65,10 @@ std::string check(const std::string& file, const std::string& props) {
 // runs on `req`. The interlock is violated, and must be reported so.
 TEST(Instances, InterlockViolatedThroughAnInstanceOutput) {
   const auto file =
-      write_temp(kHeader + valve_fb() +
+      write_temp(kPlcopenHeader + valve_fb() +
                      main_pou(instance("V", "Valve"),
                               "V.cmd := req;\nV();\nvalve := V.open;\npump := req AND enable;") +
-                     kFooter,
+                     kPlcopenFooter,
                  ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG !(valve & pump)'"));
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
@@ -101,10 +82,10 @@ TEST(Instances, InterlockViolatedThroughAnInstanceOutput) {
 
 // An instance that is not called does not evolve: its chart stays in its initial step.
 TEST(Instances, UncalledInstanceIsFrozen) {
-  const auto file =
-      write_temp(kHeader + valve_fb() +
-                     main_pou(instance("V", "Valve"), "V.cmd := req;\nvalve := V.open;") + kFooter,
-                 ".xml");
+  const auto file = write_temp(
+      kPlcopenHeader + valve_fb() +
+          main_pou(instance("V", "Valve"), "V.cmd := req;\nvalve := V.open;") + kPlcopenFooter,
+      ".xml");
   const auto r = run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'AG !valve'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
@@ -112,10 +93,10 @@ TEST(Instances, UncalledInstanceIsFrozen) {
 // A call inside an IF evolves the instance only when the branch runs; with `=>` binding.
 TEST(Instances, ConditionalCallWithOutputBinding) {
   const auto file = write_temp(
-      kHeader + valve_fb() +
+      kPlcopenHeader + valve_fb() +
           main_pou(instance("V", "Valve"),
                    "IF enable THEN\n  V(cmd := req, open => valve);\nEND_IF;\npump := enable;") +
-          kFooter,
+          kPlcopenFooter,
       ".xml");
   // The valve can open, and the chart stays in Opened in cycles that do not call it.
   auto r = run_sfcv(check(file, "--ctl 'EF valve' --ctl 'EF (V.Opened & !pump)'"));
@@ -129,10 +110,10 @@ TEST(Instances, ConditionalCallWithOutputBinding) {
 // output read after the first call is never TRUE, the one read after the second is.
 TEST(Instances, TwoCallsEvolveTwice) {
   const auto file = write_temp(
-      kHeader + valve_fb() +
+      kPlcopenHeader + valve_fb() +
           main_pou(instance("V", "Valve"),
                    "V(cmd := TRUE);\nvalve := V.open;\nV(cmd := FALSE);\npump := V.open;") +
-          kFooter,
+          kPlcopenFooter,
       ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'AG !valve' --ctl 'EF pump'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -145,15 +126,15 @@ TEST(Instances, TwoCallsEvolveTwice) {
 TEST(Instances, NestedInstancesTwinCatStyle) {
   const std::string station =
       "<pou name=\"FB_Station\" pouType=\"functionBlock\"><interface>" +
-      vars("inputVars", {"bRequest"}) + vars("outputVars", {"bBusy"}) + "<localVars>" +
-      instance("fbValve", "Valve") + "</localVars></interface><body>" +
-      st("fbValve(cmd := bRequest);\nbBusy := fbValve.open;") + "</body></pou>\n";
+      plcopen_vars("inputVars", {"bRequest"}) + plcopen_vars("outputVars", {"bBusy"}) +
+      "<localVars>" + instance("fbValve", "Valve") + "</localVars></interface><body>" +
+      plcopen_st("fbValve(cmd := bRequest);\nbBusy := fbValve.open;") + "</body></pou>\n";
   const auto file =
-      write_temp(kHeader + valve_fb() + station +
+      write_temp(kPlcopenHeader + valve_fb() + station +
                      main_pou(instance("Station", "FB_Station"),
                               "Station(bRequest := req);\nvalve := Station.fbValve.open;\npump := "
                               "Station.bBusy AND enable;") +
-                     kFooter,
+                     kPlcopenFooter,
                  ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG (pump -> valve)' --ctl 'EF Station.fbValve.Opened'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -165,10 +146,13 @@ TEST(Instances, NestedInstancesTwinCatStyle) {
 TEST(Instances, UnmodelledInstanceConstructsAreRefused) {
   // Recursion: an FB holding an instance of itself.
   const std::string loop = "<pou name=\"Loop\" pouType=\"functionBlock\"><interface>" +
-                           vars("outputVars", {"q"}) + "<localVars>" + instance("inner", "Loop") +
-                           "</localVars></interface><body>" + st("q := TRUE;") + "</body></pou>\n";
-  auto file = write_temp(
-      kHeader + loop + main_pou(instance("L", "Loop"), "L();\nvalve := L.q;") + kFooter, ".xml");
+                           plcopen_vars("outputVars", {"q"}) + "<localVars>" +
+                           instance("inner", "Loop") + "</localVars></interface><body>" +
+                           plcopen_st("q := TRUE;") + "</body></pou>\n";
+  auto file =
+      write_temp(kPlcopenHeader + loop + main_pou(instance("L", "Loop"), "L();\nvalve := L.q;") +
+                     kPlcopenFooter,
+                 ".xml");
   auto r = run_sfcv(check(file, "--ctl 'AG TRUE'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("recursion"), std::string::npos) << r.err;
@@ -180,21 +164,21 @@ TEST(Instances, UnmodelledInstanceConstructsAreRefused) {
 // (`PPU.Stack();`): an ST action runs at that point on the instance's variables, without a
 // cycle of the instance's chart.
 TEST(Instances, ActionsAndNestedInstancesCalledByPath) {
-  auto file =
-      write_temp(kHeader + valve_fb() +
-                     main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") + kFooter,
-                 ".xml");
+  auto file = write_temp(kPlcopenHeader + valve_fb() +
+                             main_pou(instance("V", "Valve"), "V.ACT_Open();\nvalve := V.open;") +
+                             kPlcopenFooter,
+                         ".xml");
   auto r =
       run_sfcv(check(file, "--ctl 'AG V.Closed' --ctl 'EF valve' --ctl 'AG (valve <-> V.open)'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const std::string station = "<pou name=\"FB_Station\" pouType=\"functionBlock\"><interface>" +
-                              vars("outputVars", {"bBusy"}) + "<localVars>" +
+                              plcopen_vars("outputVars", {"bBusy"}) + "<localVars>" +
                               instance("fbValve", "Valve") + "</localVars></interface><body>" +
-                              st("bBusy := fbValve.open;") + "</body></pou>\n";
-  file = write_temp(kHeader + valve_fb() + station +
+                              plcopen_st("bBusy := fbValve.open;") + "</body></pou>\n";
+  file = write_temp(kPlcopenHeader + valve_fb() + station +
                         main_pou(instance("Station", "FB_Station"),
                                  "Station.fbValve(cmd := req);\nvalve := Station.fbValve.open;") +
-                        kFooter,
+                        kPlcopenFooter,
                     ".xml");
   r = run_sfcv(check(file, "--ctl 'EF valve' --ctl 'EF Station.fbValve.Opened'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -249,14 +233,15 @@ TEST(Instances, TextInstancesWithOutputBindingAndDepthLimit) {
 // instance and read by the program: one field shared by everyone.
 TEST(Instances, GlobalVariableListsAreSharedFields) {
   const std::string alarm = "<pou name=\"Alarm\" pouType=\"functionBlock\"><interface>" +
-                            vars("inputVars", {"x"}) + vars("externalVars", {"bAlarm"}) +
-                            "</interface><body>" + st("bAlarm := x AND NOT GVL.bReset;") +
-                            "</body></pou>\n";
+                            plcopen_vars("inputVars", {"x"}) +
+                            plcopen_vars("externalVars", {"bAlarm"}) + "</interface><body>" +
+                            plcopen_st("bAlarm := x AND NOT GVL.bReset;") + "</body></pou>\n";
   const std::string main =
-      "<pou name=\"Main\" pouType=\"program\"><interface>" + vars("inputVars", {"req", "enable"}) +
-      vars("outputVars", {"pump"}) + vars("externalVars", {"bAlarm"}) + "<localVars>" +
-      instance("A", "Alarm") + "</localVars></interface><body>" +
-      st("GVL.bReset := enable;\nA(x := req);\npump := bAlarm;") + "</body></pou>\n";
+      "<pou name=\"Main\" pouType=\"program\"><interface>" +
+      plcopen_vars("inputVars", {"req", "enable"}) + plcopen_vars("outputVars", {"pump"}) +
+      plcopen_vars("externalVars", {"bAlarm"}) + "<localVars>" + instance("A", "Alarm") +
+      "</localVars></interface><body>" +
+      plcopen_st("GVL.bReset := enable;\nA(x := req);\npump := bAlarm;") + "</body></pou>\n";
   const std::string tail =
       "</pous></types>\n<instances><configurations><configuration name=\"Cfg\"><resource "
       "name=\"Res\"><globalVars>"
@@ -266,7 +251,7 @@ TEST(Instances, GlobalVariableListsAreSharedFields) {
       "handleUnknown=\"implementation\"><resource name=\"PlcTask\"><globalVars name=\"GVL\">"
       "<variable name=\"bReset\"><type><BOOL/></type></variable></globalVars></resource></data>"
       "</addData>\n</project>\n";
-  const auto file = write_temp(kHeader + alarm + main + tail, ".xml");
+  const auto file = write_temp(kPlcopenHeader + alarm + main + tail, ".xml");
   // If the FB's bAlarm were not Main's, pump would stay FALSE.
   auto r = run_sfcv(check(file,
                           "--ctl 'EF pump' --ctl 'AG (pump -> !GVL.bReset)' "

@@ -76,4 +76,26 @@ inline std::string write_temp(const std::string& text, const std::string& suffix
   return p.string();
 }
 
+/// IEC 61131-3 text of a chain of `n` steps s0..s{n-1} in one loop, each crossed on input `go`
+/// (the long charts of the size and time-limit tests; 1,000,000 steps are 80 MB).
+inline std::string iec_chain_text(int n) {
+  std::string st = "PROGRAM p\nVAR_INPUT go : BOOL; END_VAR\nINITIAL_STEP s0 : END_STEP\n";
+  st.reserve(static_cast<std::size_t>(n) * 80);
+  for (int i = 1; i < n; ++i) st += "STEP s" + std::to_string(i) + " : END_STEP\n";
+  for (int i = 0; i < n; ++i)
+    st += "TRANSITION FROM s" + std::to_string(i) + " TO s" + std::to_string((i + 1) % n) +
+          " := go; END_TRANSITION\n";
+  return st + "END_PROGRAM\n";
+}
+
+/// The same chain as a `.g7` grafcet (steps 0..n-1, transitions named 0..n-1).
+inline std::string g7_chain_text(int n) {
+  std::string g7 = "project chain;\ninput go;\noutput o;\ngrafcet g {\n  step 0 initial;\n";
+  for (int i = 1; i < n; ++i) g7 += "  step " + std::to_string(i) + ";\n";
+  for (int i = 0; i < n; ++i)
+    g7 += "  transition " + std::to_string(i) + ": " + std::to_string(i) + " -> " +
+          std::to_string((i + 1) % n) + " when go;\n";
+  return g7 + "}\n";
+}
+
 }  // namespace sfcv::test
