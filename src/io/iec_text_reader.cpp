@@ -221,6 +221,8 @@ class IecTextReader {
     a.step = step;
     a.where = p.where(p.peek());
     a.action = p.identifier("an action association or END_STEP");
+    // `inst.ACT`: an action of a function block instance (TwinCAT, CODESYS).
+    while (p.accept(TokenKind::Dot)) a.action += "." + p.identifier("an action name after '.'");
     if (p.accept(TokenKind::LParen)) {
       if (p.at(TokenKind::Identifier)) {
         const Token& q = p.next();

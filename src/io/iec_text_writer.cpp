@@ -32,6 +32,17 @@ const std::string& ident(const std::string& s, std::string_view role) {
   return s;
 }
 
+/// `ACT` or `inst.ACT` (an action of a function block instance): identifiers joined by dots.
+const std::string& action_ident(const std::string& s) {
+  for (std::size_t from = 0;;) {
+    const auto dot = s.find('.', from);
+    const auto part = s.substr(from, dot == std::string::npos ? dot : dot - from);
+    if (!is_identifier(part)) cannot("action name '" + s + "' is not an IEC identifier");
+    if (dot == std::string::npos) return s;
+    from = dot + 1;
+  }
+}
+
 void check_expr(const model::ExprPtr& e, std::string_view where) {
   if (!e) return;
   switch (e->kind) {
@@ -216,8 +227,7 @@ class Writer {
 
   static std::string association(const model::ActionAssociation& a) {
     if (a.condition) cannot("assignment condition of action '" + a.action + "'");
-    std::string s =
-        ident(a.action, "action name") + "(" + std::string(model::to_string(a.qualifier));
+    std::string s = action_ident(a.action) + "(" + std::string(model::to_string(a.qualifier));
     if (model::is_timed(a.qualifier)) {
       if (a.duration_ms)
         s += ", " + time_literal(*a.duration_ms);

@@ -79,6 +79,17 @@ void Validator::undeclared_action(const std::string& action, const SourceLocatio
                         "does not model?): the action is not modelled");
       return;
     }
+    // `inst.ACT` (TwinCAT, CODESYS): the step calls action ACT of the instance while the
+    // association is active.
+    bool unknown_type = false;
+    const Pou* type = instance_type(owner, unknown_type);
+    if (unknown_type) return;  // the compiler reports the missing type
+    if (type && type->find_action(action.substr(dot + 1))) return;
+    if (type) {
+      error(here, who + " names action " + quoted(action) + ", but function block " + type->name +
+                      " has no action " + quoted(action.substr(dot + 1)));
+      return;
+    }
   }
   error(here, who + " names undeclared action " + quoted(action));
 }

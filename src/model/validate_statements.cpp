@@ -132,27 +132,36 @@ void Validator::check_statements(const StmtList& body, const SourceLocation& fal
   }
 }
 
+const Pou* Validator::instance_type(const std::string& owner, bool& unknown_type) const {
+  unknown_type = false;
+  const Pou* type = nullptr;
+  const Pou* scope = pou_;
+  for (std::size_t from = 0; scope;) {
+    const auto d = owner.find('.', from);
+    const Variable* v =
+        scope->find_variable(owner.substr(from, d == std::string::npos ? d : d - from));
+    if (!v || v->type.kind != TypeKind::FunctionBlock || v->type.fb != StandardFb::None)
+      return nullptr;
+    type = project_.find_pou(v->type.name);
+    if (!type) {
+      unknown_type = true;
+      return nullptr;
+    }
+    scope = type;
+    if (d == std::string::npos) break;
+    from = d + 1;
+  }
+  return type;
+}
+
 void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
   if (const auto dot = s.target.rfind('.'); dot != std::string::npos) {
     // `inst.ACT();`: an action of a user function block instance (`a.b.ACT()` nested).
     const std::string owner = s.target.substr(0, dot), action = s.target.substr(dot + 1);
-    const Pou* type = nullptr;
-    const Pou* scope = pou_;
-    for (std::size_t from = 0; scope;) {
-      const auto d = owner.find('.', from);
-      const Variable* v =
-          scope->find_variable(owner.substr(from, d == std::string::npos ? d : d - from));
-      if (!v || v->type.kind != TypeKind::FunctionBlock || v->type.fb != StandardFb::None) {
-        scope = nullptr;
-        break;
-      }
-      type = project_.find_pou(v->type.name);
-      if (!type) return;  // a type this model does not hold: the compiler reports it
-      scope = type;
-      if (d == std::string::npos) break;
-      from = d + 1;
-    }
-    if (!scope) {
+    bool unknown_type = false;
+    const Pou* type = instance_type(owner, unknown_type);
+    if (unknown_type) return;  // a type this model does not hold: the compiler reports it
+    if (!type) {
       error(here, "call of " + quoted(s.target) + ": " + quoted(owner) +
                       " is not an instance of a user function block of this model");
       return;
@@ -161,10 +170,17 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
         inner && inner->type.kind == TypeKind::FunctionBlock) {
       return;  // `a.b(...)`: a call of a nested instance, checked by the compiler
     }
-    if (!s.arguments.empty() || !s.outputs.empty())
-      error(here, "call of action " + quoted(s.target) + " with parameters");
+    if (!s.outputs.empty())
+      error(here, "call of action " + quoted(s.target) + " with an output binding '=>'");
     else if (!type->find_action(action))
       error(here, "function block " + type->name + " has no action " + quoted(action));
+    // Inputs passed to an action call (CODESYS, TwinCAT: `inst.ACT(SFCReset := TRUE)`) are
+    // assigned to the instance's VAR_INPUTs before the action runs: checked as an instance call.
+    for (const auto& [param, value] : s.arguments) {
+      const Variable* m = type->find_variable(param);
+      if (!m || m->direction != VarDirection::Input)
+        error(here, "function block " + type->name + " has no input " + quoted(param));
+    }
     return;
   }
   const Variable* v = pou_->find_variable(s.target);

@@ -4,7 +4,9 @@
 #include "semantics/iec61131_system.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
+#include <string>
 
 #include "semantics/detail/iec_program.hpp"
 #include "semantics/detail/iec_system_impl.hpp"
@@ -91,7 +93,16 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
   anomalies_used_ = 0;
   machine_.load(state);
   machine_.reset_trail();
+  std::uint32_t leaves = 0;
   do {
+    // A cycle that reads many inputs has exponentially many leaves: one state alone may
+    // outlast the run's deadline, so the clock is read here too, not only between states.
+    if ((++leaves & 4095U) == 0 && p_->options.deadline &&
+        std::chrono::steady_clock::now() > *p_->options.deadline)
+      throw LimitReached(Limit::Time,
+                         "time limit reached while computing the successors of "
+                         "one state (" +
+                             std::to_string(leaves) + " input valuations so far)");
     try {
       if (!machine_.run()) continue;  // excluded by an assumption
     } catch (const RangeAbort& e) {

@@ -155,6 +155,7 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     PouScope sc;
     sc.pou = pous[pi];
     sc.index = pi;
+    sc.owner = pi;
     sc.name = pous[pi]->name;
     scopes.push_back(std::move(sc));
     const auto up = model::to_upper(pous[pi]->name);

@@ -138,6 +138,15 @@ void Compiler::actions_and_transitions() {
         continue;
       }
       auto it = sc.actions.find(model::to_upper(as.action));
+      if (it == sc.actions.end() && callable_association(sc, as.action)) {
+        // `inst.ACT` or an SFC action run as a unit: an action whose body calls it, so that
+        // the step runs it in every cycle where the association keeps the action active.
+        const auto id = add_action(sc, as.action, model::ActionBodyKind::Statements, as.where);
+        model::StmtList call;
+        call.push_back(model::make_fb_call(as.action, {}, as.where));
+        p.actions[id].body = block(sc, call);
+        it = sc.actions.find(model::to_upper(as.action));
+      }
       if (it == sc.actions.end()) {
         // An action block may name a Boolean variable directly.
         auto v = sc.names.find(model::to_upper(as.action));

@@ -41,8 +41,9 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
   const auto si = static_cast<std::uint32_t>(scopes.size());
   {
     PouScope sc;
-    sc.pou = type;
+    sc.pou = instance_view(type);
     sc.index = si;
+    sc.owner = si;
     sc.name = parent_name + "." + v.name;
     sc.alias = scopes[parent].instance ? scopes[parent].alias + "." + v.name : v.name;
     sc.instance = true;
@@ -81,9 +82,26 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
       default:
         break;
     }
+    const auto t = value_type(w.type);
+    if (w.direction != model::VarDirection::Input && w.address.rfind("%I", 0) == 0) {
+      // `x AT %I*` (TwinCAT, CODESYS): the I/O configuration maps it to a sensor, so it is an
+      // input of the plant, one per instance; code that writes it sees its write until the
+      // instance's next cycle reads the input again (as for a program's %I variable).
+      const std::string display = scopes[si].name + "." + w.name;
+      const auto in = add_input(display, t, false);
+      if (!written.count(up_type + "|" + up)) {
+        scopes[si].names[up] = Ref{Ref::Input, in, t.kind == TypeKind::Bool};
+        continue;
+      }
+      const auto f = add_field(display, FieldKind::Variable, t.lo, t.hi,
+                               std::clamp<std::int64_t>(0, t.lo, t.hi), t.kind == TypeKind::Bool);
+      scopes[si].names[up] = Ref{Ref::Field, f, t.kind == TypeKind::Bool};
+      scopes[si].input_copies.emplace_back(f, in);
+      continue;
+    }
     // Every other variable (VAR_INPUT, VAR_OUTPUT, VAR, VAR_TEMP) is a field of the instance:
     // its inputs are set by the caller, not read from the plant.
-    const auto t = value_type(w.type);
+
     std::int64_t init = w.initial.value_or(0);
     if (!w.initial && (0 < t.lo || 0 > t.hi)) init = t.lo;
     if (init < t.lo || init > t.hi) {
@@ -104,6 +122,7 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
     p.observables.push_back(std::move(o));
     p.observable_refs.push_back(ObservableRef{ObservableKind::Variable, f});
   }
+  make_units(si, *type);
   types.pop_back();
 }
 
@@ -155,7 +174,7 @@ std::optional<Ref> Compiler::dotted(const PouScope& sc, const std::string& path,
 }
 
 void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst,
-                             Stmt& out) {
+                             Stmt& out, const Block* inline_body) {
   // An IF TRUE around: the input assignments, the Call, the output copies.
   const auto& callee = scopes[inst];
   std::vector<std::uint32_t> items;
@@ -184,9 +203,16 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
     push(std::move(a));
   }
   Stmt call;
-  call.op = SOp::Call;
   call.where = s.where.str();
-  call.target = inst;
+  if (inline_body) {
+    call.op = SOp::If;
+    call.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+    call.arm_count = 1;
+    p.if_arms.push_back(IfArm{constant(1), *inline_body});
+  } else {
+    call.op = SOp::Call;
+    call.target = inst;
+  }
   push(std::move(call));
   for (const auto& [output, var] : s.outputs) {
     const auto* decl = callee.pou->find_variable(output);

@@ -121,6 +121,11 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
             break;
           }
         }
+        if (const auto unit = unit_named(sc, s.target)) {
+          // `inst.ACT(...)` of an SFC action run as a unit: one cycle of its chart.
+          instance_call(sc, s, *unit, out);
+          break;
+        }
         const model::Action* act = nullptr;
         if (used + 1 == parts.size() && scopes[si].instance)
           act = scopes[si].pou->find_action(parts.back());
@@ -142,12 +147,22 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
           error(s.where, "action '" + s.target + "' calls itself (recursion)");
           break;
         }
-        IfArm arm{constant(1), block(scopes[si], act->body)};
+        const Block body = block(scopes[si], act->body);
         inlining.erase(key);
+        if (!s.arguments.empty()) {
+          // `inst.ACT(a := x)`: the instance's inputs are assigned, then the action runs.
+          instance_call(sc, s, si, out, &body);
+          break;
+        }
         out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
         out.arm_count = 1;
-        p.if_arms.push_back(arm);
+        p.if_arms.push_back(IfArm{constant(1), body});
         out.else_body = block(sc, {});
+        break;
+      }
+      if (const auto unit = unit_named(sc, s.target)) {
+        // `ACT();` in the body or an action of an instance whose SFC actions are units.
+        instance_call(sc, s, *unit, out);
         break;
       }
       if (const auto* act = called_action(sc, s)) {
@@ -263,7 +278,9 @@ void Compiler::loop(const PouScope& sc, const model::Stmt& s, Stmt& out) {
 
 const model::Action* Compiler::called_action(const PouScope& sc, const model::Stmt& s) const {
   if (!s.arguments.empty() || sc.names.count(model::to_upper(s.target))) return nullptr;
-  return sc.pou->find_action(s.target);
+  if (const auto* a = sc.pou->find_action(s.target)) return a;
+  // A unit holds only the actions its steps name; the body of one may call any other.
+  return sc.unit ? scopes[sc.owner].pou->find_action(s.target) : nullptr;
 }
 
 }  // namespace sfcv::semantics::iec::detail

@@ -248,6 +248,11 @@ class Validator {
   void check_statements(const StmtList& body, const SourceLocation& fallback);
 
   void check_fb_call(const Stmt& s, const SourceLocation& here);
+
+  /// The function block type of instance path `owner` ("a" or "a.b", user FB instances from
+  /// the POU being validated), or nullptr when it names none. `unknown_type`: the last part is
+  /// an instance of a type this model does not hold (the compiler reports it).
+  const Pou* instance_type(const std::string& owner, bool& unknown_type) const;
 };
 
 }  // namespace sfcv::model::detail

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <set>
@@ -40,7 +41,11 @@ struct PouScope {
   std::string name;   // the program "Main", or the instance path "Main.Crane"
   std::string alias;  // instances: the path below the program, "Crane" ("" for programs)
   bool instance = false;
-  bool function = false;                         // a user FUNCTION's body (names its own variables)
+  bool function = false;  // a user FUNCTION's body (names its own variables)
+  // A called SFC action of an instance (Compiler::make_units): its own chart and action
+  // control, on the variables of the instance scope `owner` (every other scope: itself).
+  bool unit = false;
+  std::uint32_t owner = 0;
   std::map<std::string, Ref> names;              // upper-case variable names
   std::vector<std::uint32_t> chart_ids;          // global chart index per pou chart
   std::map<std::string, std::uint32_t> actions;  // upper name -> global action index
@@ -116,9 +121,33 @@ struct Compiler {
   std::optional<Ref> dotted(const PouScope& sc, const std::string& path,
                             const model::SourceLocation& where);
   /// `inst(a := x, q => y);`: the input assignments, the Call, the output copies.
-  void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out);
+  /// `inline_body`: instead of the Call, an instance action's statements (`inst.ACT(a := x);`).
+  void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out,
+                     const Block* inline_body = nullptr);
   /// Per instance Pou: the chart state fields a call commits.
   void instance_commits();
+
+  // --------------------------------------- SFC actions called by name (TwinCAT, CODESYS)
+  // A function block whose body is not SFC but whose actions are (the TwinCAT idiom: `ST`
+  // body, SFC actions `ACT_Init`, `ACT_AutomaticExecute`) runs each SFC action as its own
+  // chart, one cycle of it per call: `inst.ACT_Init();` in ST, or a step's association naming
+  // `inst.ACT_Init` (the step calls it while the association is active). Each such action is a
+  // *unit*: an instance Pou of its own, with the action's chart at top level and a private
+  // action control for the actions its steps name, reading and writing the instance's
+  // variables (docs/semantics.md 1.3b).
+  static bool runs_sfc_actions_as_units(const model::Pou& type);
+  /// The type as its instance scope sees it: without the SFC actions (they are units).
+  const model::Pou* instance_view(const model::Pou* type);
+  /// Creates the unit scopes of instance scope `inst` (after its variables).
+  void make_units(std::uint32_t inst, const model::Pou& type);
+  /// The unit a call target names from scope `sc` ("ACT", "inst.ACT", "a.b.ACT"), if any.
+  std::optional<std::uint32_t> unit_named(const PouScope& sc, const std::string& target) const;
+  /// An association naming no action of its scope that a call can run: `inst.ACT` (an action
+  /// of an instance) or a unit of the scope's instance. Its action calls it while active.
+  bool callable_association(const PouScope& sc, const std::string& action) const;
+  std::deque<model::Pou> synthetic_pous;  // instance views and units (stable addresses)
+  std::map<const model::Pou*, const model::Pou*> instance_views;
+  std::map<std::pair<std::uint32_t, std::string>, std::uint32_t> units;  // (owner, ACTION)
 
   // ------------------------------------------------------------------- user functions
   /// Upper-case name -> index in Program::functions; nullopt when refused (reported once).

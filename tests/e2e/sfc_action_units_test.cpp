@@ -1,0 +1,140 @@
+// SFC actions of function block instances called by name (issue 18, the TwinCAT idiom of the
+// xPPU projects): a function block with no SFC body whose actions are SFC runs each of them as
+// its own chart, one cycle per call, called from ST (`cyl.ACT_Extend(SFCReset := reset);`) or
+// by a step's association (`STEP Run: cyl.ACT_Extend; END_STEP`); its `AT %I` variables are
+// inputs of the plant (docs/semantics.md 1.3b). Every engine gives the same verdicts.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+// The cylinder's SFC action: Idle -> Moving (unless reset) -> Ended (on its end sensor, a
+// plant input `atEnd AT %IX1` of the instance). `out` and `done` follow Moving and Ended.
+const std::string kCylinder =
+    "FUNCTION_BLOCK Cylinder\n"
+    "  VAR_INPUT SFCReset : BOOL; END_VAR\n"
+    "  VAR_OUTPUT out : BOOL; done : BOOL; END_VAR\n"
+    "  VAR atEnd AT %IX1 : BOOL; END_VAR\n"
+    "  ACTION ACT_Extend:\n"
+    "    INITIAL_STEP Idle: END_STEP\n"
+    "    STEP Moving: out; END_STEP\n"
+    "    STEP Ended: done; END_STEP\n"
+    "    TRANSITION FROM Idle TO Moving := NOT SFCReset; END_TRANSITION\n"
+    "    TRANSITION FROM Moving TO Ended := atEnd; END_TRANSITION\n"
+    "  END_ACTION\n"
+    "END_FUNCTION_BLOCK\n";
+
+// A step calls the instance's SFC action while it is active.
+const std::string kByAssociation = kCylinder +
+                                   "PROGRAM Main\n"
+                                   "  VAR_INPUT go : BOOL; END_VAR\n"
+                                   "  VAR cyl : Cylinder; END_VAR\n"
+                                   "  INITIAL_STEP Wait: END_STEP\n"
+                                   "  STEP Run: cyl.ACT_Extend; END_STEP\n"
+                                   "  TRANSITION FROM Wait TO Run := go; END_TRANSITION\n"
+                                   "  TRANSITION FROM Run TO Wait := cyl.done; END_TRANSITION\n"
+                                   "END_PROGRAM\n";
+
+// ST calls it, passing the instance's SFCReset input.
+const std::string kByCall = kCylinder +
+                            "PROGRAM Cell\n"
+                            "  VAR_INPUT go, reset : BOOL; END_VAR\n"
+                            "  VAR cyl : Cylinder; END_VAR\n"
+                            "  IF go OR reset THEN cyl.ACT_Extend(SFCReset := reset); END_IF;\n"
+                            "END_PROGRAM\n";
+
+std::string check(const std::string& file, const std::string& engine, const std::string& props) {
+  return "check " + file + " --engine " + engine + " --checks none " + props +
+         " --trace none --timeout 60";
+}
+
+// The chart evolves only in the cycles where the step calls it, keeps its step when it is not
+// called (Ended stays), and reaches Ended only through the plant's end sensor: a model that
+// read `atEnd` as a constant, or never ran the action, would claim `AG !cyl.done`.
+TEST(SfcActionUnits, AStepRunsTheInstancesChartOnlyWhileItsAssociationIsActive) {
+  const auto file = write_temp(kByAssociation, ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(file, engine, "--ctl 'AG !cyl.done'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    if (std::string(engine) == "bmc") continue;  // BMC cannot prove
+    r = run_sfcv(check(file, engine,
+                       "--ctl 'AG (cyl.ACT_Extend.Moving -> cyl.out)' "
+                       "--ctl 'AG ((Wait & cyl.ACT_Extend.Idle) -> AX cyl.ACT_Extend.Idle)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.out.find("VACUOUS"), std::string::npos) << r.out;
+  }
+  for (const char* engine : {"explicit", "bdd"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(
+        check(file, engine, "--ctl 'AG (cyl.ACT_Extend.Ended -> AG cyl.ACT_Extend.Ended)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+}
+
+// `cyl.ACT_Extend(SFCReset := reset)` assigns the input, then runs one cycle of the chart,
+// which the flag resets to Idle: Ended can always be left, and only thanks to the reset.
+TEST(SfcActionUnits, AnStCallPassesInputsAndSfcResetRestartsTheChart) {
+  const auto file = write_temp(kByCall, ".st");
+  for (const char* engine : {"explicit", "bdd"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(file, engine,
+                            "--ctl 'AG !cyl.done' "
+                            "--ctl 'AG (cyl.ACT_Extend.Ended -> EF cyl.ACT_Extend.Idle)'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("AG !cyl.done"), std::string::npos);
+    r = run_sfcv(
+        check(file, engine, "--ctl 'AG (cyl.ACT_Extend.Ended -> EF cyl.ACT_Extend.Idle)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv(check(file, engine,
+                       "--assume '!reset' "
+                       "--ctl 'AG (cyl.ACT_Extend.Ended -> EF cyl.ACT_Extend.Idle)'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+}
+
+// The counterexample of each engine replays in `sfcv simulate`, step for step.
+TEST(SfcActionUnits, CounterexamplesReplayInSimulate) {
+  for (const auto* text : {&kByAssociation, &kByCall}) {
+    const auto file = write_temp(*text, ".st");
+    for (const char* engine : {"explicit", "bdd", "bmc", "ic3"}) {
+      SCOPED_TRACE(engine);
+      const auto csv = write_temp("", ".csv");
+      const auto r = run_sfcv("check " + file + " --engine " + engine +
+                              " --checks none --quiet --ctl 'AG !cyl.done' --trace csv "
+                              "--trace-file '" +
+                              csv + "'");
+      ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+      const auto sim = run_sfcv("simulate " + file + " --inputs '" + csv + "'");
+      EXPECT_EQ(sim.exit_code, 0) << sim.out << sim.err;
+      EXPECT_NE(sim.out.find("Ended"), std::string::npos) << sim.out;
+    }
+  }
+}
+
+// What cannot be called is refused with its place: an action the type does not have, inputs
+// the type does not declare, an output binding.
+TEST(SfcActionUnits, CallsOfMissingActionsAndInputsAreLocatedErrors) {
+  auto text = kByAssociation;
+  text.replace(text.find("cyl.ACT_Extend;"), 15, "cyl.ACT_Retract;");
+  auto r = run_sfcv("check " + write_temp(text, ".st") + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":17:13: error: step 'Run' names action 'cyl.ACT_Retract', but function "
+                       "block Cylinder has no action 'ACT_Retract'"),
+            std::string::npos)
+      << r.err;
+  text = kByCall;
+  text.replace(text.find("SFCReset := reset"), 17, "Speed := 3");
+  r = run_sfcv("check " + write_temp(text, ".st") + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("error: function block Cylinder has no input 'Speed'"), std::string::npos)
+      << r.err;
+}
+
+}  // namespace
+}  // namespace sfcv::test
