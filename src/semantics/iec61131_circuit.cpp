@@ -85,6 +85,48 @@ class SymbolicMachine {
     }
     return negative ? neg(acc, guard) : acc;
   }
+  /// x / k or x MOD k for a constant k, truncating toward zero as int64 does (the remainder
+  /// has the dividend's sign): restoring long division of |x| by |k|, then the signs. It runs
+  /// on the bits x really has: a small-range value's upper bits are copies of its sign, so |x|
+  /// fits in w bits and the division takes w rounds of w + 1 bits, not 64 of 64.
+  Value div_mod_constant(const Value& x, std::int64_t k, bool want_quotient, AigLit guard) {
+    if (k == 0) {
+      raise(guard, Aig::kTrue);
+      return constant(0);
+    }
+    if (k == -1) return want_quotient ? neg(x, guard) : constant(0);
+    const AigLit negative = x[kWidth - 1];
+    std::uint32_t w = kWidth;  // x[w - 1 .. 63] are all the sign
+    while (w > 1 && x[w - 2] == negative) --w;
+    const auto divisor = k < 0 ? static_cast<std::uint64_t>(0) - static_cast<std::uint64_t>(k)
+                               : static_cast<std::uint64_t>(k);
+    if (w < kWidth && divisor >= (std::uint64_t{1} << w))  // |x| <= 2^(w-1) < divisor
+      return want_quotient ? constant(0) : x;
+    // |x| as w unsigned bits (2^63 for the minimum), and the divisor in w + 1 bits.
+    const Value full = mux(negative, bv_neg(aig_, x), x);
+    const Value magnitude(full.begin(), full.begin() + w);
+    BitVector d(w + 1, Aig::kFalse);
+    for (std::uint32_t b = 0; b < std::min<std::uint32_t>(w + 1, 64); ++b)
+      if ((divisor >> b) & 1U) d[b] = Aig::kTrue;
+    Value quotient = constant(0);
+    BitVector rest(w + 1, Aig::kFalse);
+    for (std::uint32_t i = w; i-- > 0;) {
+      // rest < divisor and rest < 2^w, so 2 * rest + 1 fits in w + 1 bits.
+      BitVector shifted(w + 1);
+      shifted[0] = magnitude[i];
+      for (std::uint32_t b = 1; b <= w; ++b) shifted[b] = rest[b - 1];
+      const AigLit fits = aig_.make_not(bv_less_unsigned(aig_, shifted, d));
+      rest = bv_mux(aig_, fits, bv_sub(aig_, shifted, d), shifted);
+      quotient[i] = fits;
+    }
+    if (want_quotient) {
+      const AigLit flip = k < 0 ? aig_.make_not(negative) : negative;
+      return mux(flip, bv_neg(aig_, quotient), quotient);
+    }
+    Value remainder = constant(0);
+    for (std::uint32_t b = 0; b < w; ++b) remainder[b] = rest[b];
+    return mux(negative, bv_neg(aig_, remainder), remainder);
+  }
   static std::optional<std::int64_t> as_constant(const Value& v) {
     std::uint64_t r = 0;
     for (std::uint32_t i = 0; i < kWidth; ++i) {
@@ -154,9 +196,25 @@ class SymbolicMachine {
 
   // ------------------------------------------------------------------- statements
   void assign(std::uint32_t field, const Value& v, AigLit guard) {
-    raise(guard, aig_.make_or(less(v, constant(p_.field_lo[field])),
-                              less(constant(p_.field_hi[field]), v)));
-    nxt_[field] = mux(guard, v, nxt_[field]);
+    const auto lo = p_.field_lo[field], hi = p_.field_hi[field];
+    raise(guard, aig_.make_or(less(v, constant(lo)), less(constant(hi), v)));
+    // Where no range error is raised, v lies in [lo, hi], so its upper bits are known: FALSE
+    // when lo >= 0, else copies of bit b - 1. Storing them as such costs no gate and lets later
+    // operations (comparisons, a division by a constant) see how few bits the value has.
+    Value canonical;
+    if (lo >= 0) {
+      const auto b = static_cast<std::uint32_t>(std::bit_width(static_cast<std::uint64_t>(hi)));
+      canonical.assign(v.begin(), v.begin() + b);
+      canonical.resize(kWidth, Aig::kFalse);
+    } else {
+      std::uint32_t b = 1;
+      while (b < kWidth &&
+             (lo < -(std::int64_t{1} << (b - 1)) || hi > (std::int64_t{1} << (b - 1)) - 1))
+        ++b;
+      canonical.assign(v.begin(), v.begin() + b);
+      canonical.resize(kWidth, v[b - 1]);
+    }
+    nxt_[field] = mux(guard, canonical, nxt_[field]);
   }
   void set(std::uint32_t field, const Value& v, AigLit guard) {
     nxt_[field] = mux(guard, v, nxt_[field]);
@@ -321,6 +379,7 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
         }
         return constant(n.op == Op::Div ? *kx / *ky : *kx % *ky);
       }
+      if (ky) return div_mod_constant(x, *ky, n.op == Op::Div, guard);
       throw CircuitUnsupported(n.op == Op::Div ? "a division of variables" : "a MOD of variables");
     }
     case Op::Eq:

@@ -422,6 +422,68 @@ TEST(Iec61131Circuit, AgreesOnUserFunctionBlockInstances) {
   }
 }
 
+// SFC actions of an instance run as units (issue 18, docs/semantics.md 1.3b): called from ST
+// with and without SFCReset, twice in one cycle, and from a step of another unit; their steps
+// call ST actions of a nested instance and copy the instance's own actions (P1) and Boolean
+// variables; a sensor `AT %IX1` of the instance. Also DIV and MOD by constants of either sign
+// on negative and positive values (the circuit divides by a constant bit by bit), and a
+// MOD 0 range error.
+const char* kUnits = R"(
+FUNCTION_BLOCK Motor
+  VAR_OUTPUT on : BOOL; dir : INT(-1..1); END_VAR
+  ACTION ACT_Fwd : on := TRUE; dir := 1; END_ACTION
+  ACTION ACT_Stop : on := FALSE; dir := 0; END_ACTION
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Station
+  VAR_INPUT SFCReset : BOOL; req : BOOL; END_VAR
+  VAR_OUTPUT busy, ready : BOOL; n : INT(-8..8); END_VAR
+  VAR m : Motor; sensor AT %IX1 : BOOL; END_VAR
+  ACTION Count : IF n < 8 THEN n := n + 1; ELSE n := -8; END_IF; END_ACTION
+  ACTION ACT_Init :
+    INITIAL_STEP I0 : m.ACT_Stop; END_STEP
+    STEP I1 : ready; Count(P1); END_STEP
+    TRANSITION FROM I0 TO I1 := NOT SFCReset; END_TRANSITION
+    TRANSITION FROM I1 TO I0 := sensor; END_TRANSITION
+  END_ACTION
+  ACTION ACT_Run :
+    INITIAL_STEP R0 : END_STEP
+    STEP R1 : m.ACT_Fwd; busy; ACT_Init; Count(P1); END_STEP
+    STEP R2 : m.ACT_Stop(P1); END_STEP
+    TRANSITION FROM R0 TO R1 := req; END_TRANSITION
+    TRANSITION FROM R1 TO R2 := sensor OR ready; END_TRANSITION
+    TRANSITION FROM R2 TO R0 := NOT req; END_TRANSITION
+  END_ACTION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT a, b, r : BOOL; k : INT(-7..7); END_VAR
+  VAR_OUTPUT q1, q2, q3, q4 : INT; END_VAR
+  VAR s : Station; END_VAR
+  IF r THEN
+    s.ACT_Init(SFCReset := TRUE); s.ACT_Run(SFCReset := TRUE);
+  ELSE
+    s.ACT_Run(SFCReset := FALSE, req := a);
+  END_IF;
+  IF b THEN s.ACT_Run(); END_IF;
+  q1 := k / 2 + s.n MOD 5 - s.n / 4;
+  q2 := k MOD 3;
+  q3 := k / -3 + s.n / -2;
+  q4 := k MOD -2 + s.n MOD -3;
+  IF a AND b AND r AND k = 7 THEN q4 := k MOD 0; END_IF;
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnSfcActionUnitsAndDivisionByConstants) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = 500;
+    auto ts = system_for(kUnits, options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, 3000, 53);
+  }
+}
+
 // User FUNCTIONs in ST (issue 18): formal calls with defaulted inputs and positional ones,
 // calls nested in arguments, a function calling a function, RETURN and EXIT in a function,
 // range errors on the result and on an input reached only for some inputs, calls in guards, in
