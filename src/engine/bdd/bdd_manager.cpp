@@ -48,7 +48,17 @@ bool past_deadline() {
           std::chrono::steady_clock::now() > g_deadline);
 }
 
+// Automatic reordering waits until a collection leaves this many live nodes
+// (set_automatic_reordering): BuDDy's own trigger is the initial table.
+int g_armed_passes = 0;
+int g_first_pass_nodes = 0;
+
 void quiet_gbc(int pre, bddGbcStat*) {
+  if (!pre && g_armed_passes > 0 && bdd_getnodenum() >= g_first_pass_nodes) {
+    // BuDDy checks its trigger right after this collection: the pass runs at once.
+    bdd_autoreorder_times(BDD_REORDER_SIFT, g_armed_passes);
+    g_armed_passes = 0;
+  }
   // Before the collection starts (the node table is still consistent). The manager is replaced
   // at the next start all the same, as after any error.
   if (pre && past_deadline()) {
@@ -108,6 +118,7 @@ void init_manager(int nodes, int cache, int ratio, int max_nodes) {
   bdd_reorder_hook(count_reorder);
   bdd_reorder_verbose(0);
   bdd_autoreorder(BDD_REORDER_NONE);
+  g_armed_passes = 0;
   // BuDDy rounds the table up to a prime and refuses a limit not above it.
   bdd_setmaxnodenum(max_nodes > 0 ? std::max(max_nodes, bdd_getallocnum() + 1) : 0);
   bdd_setvarnum(1);
@@ -157,6 +168,7 @@ void start_manager(const ManagerOptions& o) {
       bdd_setmaxnodenum(o.max_nodes > 0 ? std::max(o.max_nodes, bdd_getallocnum() + 1) : 0);
       bdd_clrvarblocks();
       bdd_autoreorder(BDD_REORDER_NONE);
+      g_armed_passes = 0;
       return;
     }
     if (g_live > 0) {
@@ -164,6 +176,7 @@ void start_manager(const ManagerOptions& o) {
       // Cannot replace it: keep the order it has and bound its growth from here on.
       if (o.max_nodes == 0 || o.max_nodes > bdd_getallocnum()) bdd_setmaxnodenum(o.max_nodes);
       bdd_clrvarblocks();
+      g_armed_passes = 0;
       return;
     }
     bdd_done();
@@ -176,15 +189,35 @@ void add_variable_block(int first, int last) {
   bdd_intaddvarblock(first, last, BDD_REORDER_FIXED);
 }
 
-void set_automatic_reordering(int max_passes, int min_gain_percent) {
+void set_automatic_reordering(int max_passes, int min_gain_percent, int first_pass_nodes) {
   ensure_manager();
   g_min_gain = min_gain_percent;
+  g_armed_passes = 0;
+  bdd_autoreorder(BDD_REORDER_NONE);
   if (max_passes > 0) {
-    bdd_autoreorder_times(BDD_REORDER_SIFT, max_passes);
     g_reordering_used = true;
-  } else {
-    bdd_autoreorder(BDD_REORDER_NONE);
+    if (first_pass_nodes <= bdd_getallocnum()) {
+      bdd_autoreorder_times(BDD_REORDER_SIFT, max_passes);
+    } else {
+      g_armed_passes = max_passes;
+      g_first_pass_nodes = first_pass_nodes;
+    }
   }
+}
+
+void delay_automatic_reordering(int first_pass_nodes) {
+  if (g_armed_passes > 0) g_first_pass_nodes = std::max(g_first_pass_nodes, first_pass_nodes);
+}
+
+bool automatic_reordering_waits() {
+  return g_armed_passes > 0;
+}
+
+void start_automatic_reordering() {
+  if (g_armed_passes == 0) return;
+  // BuDDy's trigger (the initial table) is below the live nodes: the next collection sifts.
+  bdd_autoreorder_times(BDD_REORDER_SIFT, g_armed_passes);
+  g_armed_passes = 0;
 }
 
 void reorder_now() {
@@ -425,6 +458,51 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
 
 int Bdd::node_count() const {
   return bdd_nodecount(root_);
+}
+
+bool Bdd::for_each_assignment(const std::vector<int>& vars,
+                              const std::function<bool(const std::vector<bool>&)>& visit) const {
+  if (root_ == 0) return true;
+  // The variables in level order; a path fixes the ones it meets and leaves the others free.
+  const int levels = bdd_varnum();
+  std::vector<int> position_at_level(static_cast<std::size_t>(levels), -1);
+  for (std::size_t k = 0; k < vars.size(); ++k)
+    position_at_level[static_cast<std::size_t>(bdd_var2level(vars[k]))] = static_cast<int>(k);
+  std::vector<int> order;  // positions in vars, by level
+  for (int l = 0; l < levels; ++l)
+    if (position_at_level[static_cast<std::size_t>(l)] >= 0)
+      order.push_back(position_at_level[static_cast<std::size_t>(l)]);
+  std::vector<bool> values(vars.size(), false);
+  // Depth-first over (depth in `order`, node); each frame tries value 0, then value 1.
+  struct Frame {
+    std::size_t depth;
+    int node;
+    int next_value;
+  };
+  std::vector<Frame> stack{{0, root_, 0}};
+  while (!stack.empty()) {
+    Frame& f = stack.back();
+    if (f.node == 0 || f.next_value > 1) {
+      stack.pop_back();
+      continue;
+    }
+    if (f.depth == order.size()) {
+      if (f.node != 1) return false;  // a variable outside `vars`
+      stack.pop_back();
+      if (!visit(values)) return false;
+      continue;
+    }
+    const int pos = order[f.depth];
+    const int var = vars[static_cast<std::size_t>(pos)];
+    const bool tested = f.node > 1 && bdd_var(f.node) == var;
+    if (f.node > 1 && !tested && bdd_var2level(bdd_var(f.node)) < bdd_var2level(var))
+      return false;  // tests a variable outside `vars`
+    const int value = f.next_value++;
+    values[static_cast<std::size_t>(pos)] = value == 1;
+    const int child = !tested ? f.node : value == 1 ? bdd_high(f.node) : bdd_low(f.node);
+    stack.push_back({f.depth + 1, child, 0});
+  }
+  return true;
 }
 
 VarMap::VarMap() : pair_(nullptr) {

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -78,11 +79,19 @@ void start_manager(const ManagerOptions& options);
 /// Makes variables first..last (adjacent levels) one block for dynamic reordering, in a fixed
 /// order inside (a current/next pair). Without blocks BuDDy's reordering moves nothing.
 void add_variable_block(int first, int last);
-/// Automatic reordering by sifting of the blocks, at most `max_passes` times (0: off). BuDDy
-/// sifts when a garbage collection of a full table leaves at least twice the live nodes of the
-/// last pass (more when that pass gained less than 20 %), first when the table's initial size
-/// is in use. Stops after a pass that shrank the live nodes by less than `min_gain_percent`.
-void set_automatic_reordering(int max_passes, int min_gain_percent);
+/// Automatic reordering by sifting of the blocks, at most `max_passes` times (0: off). The
+/// first pass runs when a garbage collection leaves `first_pass_nodes` live nodes (at most the
+/// table: when its initial size is in use, BuDDy's own rule), or after
+/// start_automatic_reordering(); then BuDDy sifts when a collection of a full table leaves at
+/// least twice the live nodes of the last pass (more when that pass gained less than 20 %).
+/// Stops after a pass that shrank the live nodes by less than `min_gain_percent`.
+void set_automatic_reordering(int max_passes, int min_gain_percent, int first_pass_nodes = 0);
+/// Before the first automatic pass: it now waits for at least `first_pass_nodes` live nodes.
+void delay_automatic_reordering(int first_pass_nodes);
+/// Whether automatic reordering is on and its first pass has not started yet.
+bool automatic_reordering_waits();
+/// The first automatic pass runs at the next garbage collection, whatever the live nodes.
+void start_automatic_reordering();
 /// Sifts the blocks once, now (a first order for the relation just built).
 void reorder_now();
 /// Reorderings done since the program started (each sifting pass counts once).
@@ -161,6 +170,12 @@ class Bdd {
   /// overflows).
   logic::BigCount sat_count_exact(const std::vector<int>& vars) const;
   int node_count() const;
+  /// Calls `visit(values)` once per satisfying assignment of `vars` (values[k]: vars[k]), in
+  /// no particular order, until it returns false; returns false then, or when *this mentions
+  /// a variable outside `vars` (nothing more is visited). Creates no node: `visit` must not
+  /// either (a garbage collection would reuse the nodes being walked).
+  bool for_each_assignment(const std::vector<int>& vars,
+                           const std::function<bool(const std::vector<bool>&)>& visit) const;
   bool operator==(const Bdd& o) const { return root_ == o.root_; }
   bool operator!=(const Bdd& o) const { return root_ != o.root_; }
 

@@ -87,10 +87,15 @@ class SymbolicSystem {
   double count(const Bdd& states) const;
   /// Number of states in `states`, exactly.
   logic::BigCount count_exact(const Bdd& states) const;
+  /// How count_edges counts: on the relation (symbolic), by simulating the circuit on every
+  /// state of the set and every input valuation (bit-parallel; when the set and the inputs are
+  /// small), or whichever is expected to be cheaper.
+  enum class EdgeCounting { Auto, Symbolic, Simulation };
   /// Number of pairs (s, s') with s in `from` and s' a successor of s: the explicit graph's
   /// edges (one per source and target), exactly; nullopt when the engine cannot count them
-  /// (Grafcet).
-  std::optional<logic::BigCount> count_edges(const Bdd& from) const;
+  /// (Grafcet; Simulation on a set or input count too large for it).
+  std::optional<logic::BigCount> count_edges(const Bdd& from,
+                                             EdgeCounting how = EdgeCounting::Auto) const;
   /// One concrete state of a non-empty set.
   std::vector<semantics::StateWord> pick(const Bdd& states) const;
   /// The singleton set of a concrete state.
@@ -156,6 +161,9 @@ class SymbolicSystem {
 
  private:
   Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)
+  /// count_edges by simulation; nullopt when it would cost more than `max_work` node words.
+  std::optional<logic::BigCount> count_edges_by_simulation(const Bdd& from,
+                                                           std::uint64_t max_work) const;
   void prepare_choice_cubes();
   Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
 
