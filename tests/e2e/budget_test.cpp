@@ -145,6 +145,20 @@ TEST(Budget, TimeoutHoldsUnderAutoOnTheQualityControlPlant) {
   }
 }
 
+TEST(Budget, TimeoutHoldsWhileTheBddEngineWouldReorderALargeSystem) {
+  // Corpus 11 (860 latches: about 1,800 BDD variables): a sifting pass, which BuDDy cannot
+  // interrupt, started while the relation was built and ran for minutes: --timeout 20 ended
+  // after 43 s. Systems that large are no longer reordered under a time limit.
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "11_twincat_xppu_scenario12.xml").string() + "'";
+  const auto t = timed_run("check " + path +
+                           " --engine bdd --timeout 3 --checks none --trace none --quiet"
+                           " --ctl 'AG !PPU.Initialisation_2'");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("time limit reached"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
 TEST(Budget, InvariantCounterexamplesOnTheQualityControlPlantStayWithinTheBudget) {
   // Corpus 22 has about 2^40 initial situations. The on-the-fly search found AG !X2 violated
   // at an initial situation at once, then enumerated every initial situation again to pick the
