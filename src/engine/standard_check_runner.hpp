@@ -805,7 +805,7 @@ class StandardCheckRunner {
     std::optional<State> first;
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      for (const auto& conflict : logic::write_conflicts(pou)) {
+      for (const auto& conflict : logic::write_conflicts(pou, task_.project)) {
         const auto& var = conflict.variable;
         const auto& a = conflict.first;
         const auto& b = conflict.second;

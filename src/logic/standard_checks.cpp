@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 
 #include "logic/formula.hpp"
 #include "model/names.hpp"
@@ -177,36 +178,91 @@ std::string ActionWrite::shown() const {
   return action + (value ? " (:= " + std::to_string(*value) + ")" : "");
 }
 
-std::vector<WriteConflict> write_conflicts(const model::Pou& pou) {
+std::vector<WriteConflict> write_conflicts(const model::Pou& pou, const model::Project* project) {
   std::map<std::string, std::vector<ActionWrite>> writes;  // by variable, in action order
-  std::function<void(const model::StmtList&, const std::string&, bool)> walk =
-      [&](const model::StmtList& body, const std::string& action, bool conditional) {
-        auto add = [&](const std::string& variable, std::optional<std::int64_t> v) {
-          auto& list = writes[model::to_upper(variable)];
-          bool dup = false;
-          for (const auto& w : list) dup |= w.action == action;
-          if (!dup) list.push_back({action, v});
-        };
-        for (const auto& st : body) {
-          if (st->kind == model::StmtKind::Assign) {
-            std::optional<std::int64_t> v;
-            if (!conditional && st->value &&
-                (st->value->kind == model::ExprKind::BoolConst ||
-                 st->value->kind == model::ExprKind::IntConst))
-              v = st->value->value;
-            add(st->target, v);
+  std::string action;                                      // the action being walked
+  std::set<std::string> entered;  // actions and functions on the walk's stack (recursion)
+  auto add = [&](const std::string& variable, std::optional<std::int64_t> v) {
+    auto& list = writes[model::to_upper(variable)];
+    bool dup = false;
+    for (const auto& w : list) dup |= w.action == action;
+    if (!dup) list.push_back({action, v});
+  };
+  std::function<void(const model::StmtList&, bool)> walk;
+  // A call of a user FUNCTION writes what its body writes outside its own variables (globals),
+  // wherever the call stands: in a value, a condition or an argument.
+  std::function<void(const model::ExprPtr&)> calls_in = [&](const model::ExprPtr& e) {
+    if (!e) return;
+    for (const auto& a : e->args) calls_in(a);
+    if (e->kind != model::ExprKind::Call || !project) return;
+    const auto* f = project->find_pou(e->name);
+    if (!f || f->kind != model::PouKind::Function) return;
+    const auto key = "F|" + model::to_upper(f->name);
+    if (!entered.insert(key).second) return;
+    std::function<void(const model::StmtList&)> globals = [&](const model::StmtList& body) {
+      for (const auto& st : body) {
+        const auto* own = f->find_variable(st->target);
+        if ((st->kind == model::StmtKind::Assign || st->kind == model::StmtKind::For) &&
+            !model::iequals(st->target, f->name) &&
+            (!own || own->direction == model::VarDirection::External ||
+             own->direction == model::VarDirection::Global))
+          add(st->target, std::nullopt);
+        calls_in(st->value);
+        for (const auto& c : st->conditions) calls_in(c);
+        for (const auto& [param, value] : st->arguments) calls_in(value);
+        for (const auto& b : st->bodies) globals(b);
+        globals(st->else_body);
+      }
+    };
+    globals(f->body);
+    entered.erase(key);
+  };
+  walk = [&](const model::StmtList& body, bool conditional) {
+    for (const auto& st : body) {
+      if (st->kind == model::StmtKind::Assign) {
+        std::optional<std::int64_t> v;
+        if (!conditional && st->value &&
+            (st->value->kind == model::ExprKind::BoolConst ||
+             st->value->kind == model::ExprKind::IntConst))
+          v = st->value->value;
+        add(st->target, v);
+      }
+      // A FOR loop assigns its index, and `inst(Q => y)` copies an output into y: writes
+      // as much as an assignment (their values are not constants).
+      if (st->kind == model::StmtKind::For) add(st->target, std::nullopt);
+      if (st->kind == model::StmtKind::FbCall) {
+        for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
+        const auto* called = st->target.find('.') == std::string::npos && st->arguments.empty() &&
+                                     !pou.find_variable(st->target)
+                                 ? pou.find_action(st->target)
+                                 : nullptr;
+        if (called && called->kind == model::ActionBodyKind::Statements) {
+          // `ACT();`: the called action's writes are the caller's.
+          const auto key = "A|" + model::to_upper(called->name);
+          if (entered.insert(key).second) {
+            walk(called->body, true);
+            entered.erase(key);
           }
-          // A FOR loop assigns its index, and `inst(Q => y)` copies an output into y: writes
-          // as much as an assignment (their values are not constants).
-          if (st->kind == model::StmtKind::For) add(st->target, std::nullopt);
-          if (st->kind == model::StmtKind::FbCall)
-            for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
-          for (const auto& b : st->bodies) walk(b, action, true);
-          walk(st->else_body, action, true);
+        } else {
+          // `inst(...)`, `inst.ACT(...)`: a call changes the instance (its inputs, its state,
+          // what its body and actions write), so two actions calling one instance in a cycle
+          // are a conflict on the instance.
+          add(st->target.substr(0, st->target.find('.')), std::nullopt);
         }
-      };
-  for (const auto& a : pou.actions)
-    if (a.kind == model::ActionBodyKind::Statements) walk(a.body, a.name, false);
+      }
+      calls_in(st->value);
+      for (const auto& c : st->conditions) calls_in(c);
+      for (const auto& [param, value] : st->arguments) calls_in(value);
+      for (const auto& b : st->bodies) walk(b, true);
+      walk(st->else_body, true);
+    }
+  };
+  for (const auto& a : pou.actions) {
+    if (a.kind != model::ActionBodyKind::Statements) continue;
+    action = a.name;
+    entered = {"A|" + model::to_upper(a.name)};
+    walk(a.body, false);
+  }
   std::vector<WriteConflict> out;
   for (const auto& [var, list] : writes)
     for (std::size_t i = 0; i < list.size(); ++i)

@@ -78,11 +78,15 @@ struct ActionWrite {
 
 /// Two actions of a POU whose ST bodies both assign `variable` and are not known to assign the
 /// same constant: the pairs the output-conflicts check asks about, by variable (upper case),
-/// then in action order. The one list every engine's check reads.
+/// then in action order. The one list every engine's check reads. Writes made through calls
+/// count as the calling action's: `ACT();` (the called action's writes), a user FUNCTION
+/// called anywhere in the action (the globals it assigns; needs `project`), and a call of an
+/// instance `inst(...)` or `inst.ACT(...)` (a write of `inst` itself).
 struct WriteConflict {
   std::string variable;
   ActionWrite first, second;
 };
-std::vector<WriteConflict> write_conflicts(const model::Pou& pou);
+std::vector<WriteConflict> write_conflicts(const model::Pou& pou,
+                                           const model::Project* project = nullptr);
 
 }  // namespace sfcv::logic

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/explicit/explicit_model_checker.hpp"
+#include "io/load.hpp"
 #include "model/statement.hpp"
 #include "support/toy_system.hpp"
 
@@ -304,6 +305,52 @@ TEST(StandardChecks, OutputConflictsCountLoopIndicesAndOutputBindingsAsWrites) {
   EXPECT_EQ(conflicts[1].variable, "Y");
   EXPECT_EQ(conflicts[1].first.action, "Timer");
   EXPECT_EQ(conflicts[1].second.action, "Set");
+}
+
+TEST(StandardChecks, OutputConflictsFollowCallsOfActionsFunctionsAndInstances) {
+  // Writes made through calls are the calling action's: `Helper();` assigns y for Fill, the
+  // function Bump assigns the global g for Count, and Open and Close both call the timer t (a
+  // call changes the instance). Before, none of these was seen, so two actions writing through
+  // them were never reported.
+  const auto loaded = io::load_iec_text(R"(
+FUNCTION Bump : INT
+  VAR_INPUT k : INT; END_VAR
+  VAR_EXTERNAL g : INT; END_VAR
+  g := g + k;
+  Bump := g;
+END_FUNCTION
+PROGRAM P
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_GLOBAL g : INT; END_VAR
+  VAR y : BOOL; n : INT; t : TON; END_VAR
+  INITIAL_STEP S0 : Fill; Drain; Count; Reset; Open; Close; END_STEP
+  TRANSITION FROM S0 TO S0 := go; END_TRANSITION
+  ACTION Helper : y := TRUE; END_ACTION
+  ACTION Fill : Helper(); END_ACTION
+  ACTION Drain : y := FALSE; END_ACTION
+  ACTION Count : IF go THEN n := Bump(1); END_IF; END_ACTION
+  ACTION Reset : g := 0; END_ACTION
+  ACTION Open : t(IN := TRUE, PT := T#1s); END_ACTION
+  ACTION Close : t(IN := FALSE, PT := T#1s); END_ACTION
+END_PROGRAM
+)",
+                                        "calls.st");
+  ASSERT_TRUE(loaded.ok());
+  const auto& project = *loaded.project;
+  const auto* pou = project.find_pou("P");
+  ASSERT_NE(pou, nullptr);
+  std::vector<std::string> found;
+  for (const auto& c : logic::write_conflicts(*pou, &project))
+    found.push_back(c.variable + ":" + c.first.action + "/" + c.second.action);
+  // Helper alone also writes y: its pairs are asked too (it is active only if a step names it).
+  EXPECT_EQ(found, (std::vector<std::string>{"G:Count/Reset", "T:Open/Close", "Y:Helper/Fill",
+                                             "Y:Helper/Drain", "Y:Fill/Drain"}));
+  // Without the project the function's writes are unknown, the others are still seen.
+  found.clear();
+  for (const auto& c : logic::write_conflicts(*pou))
+    found.push_back(c.variable + ":" + c.first.action + "/" + c.second.action);
+  EXPECT_EQ(found, (std::vector<std::string>{"T:Open/Close", "Y:Helper/Fill", "Y:Helper/Drain",
+                                             "Y:Fill/Drain"}));
 }
 
 // A system that reports an instability from its initial state.

@@ -438,7 +438,7 @@ class Run {
     q.trace_note = "in the last cycle both actions are active";
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      for (const auto& conflict : logic::write_conflicts(pou)) {
+      for (const auto& conflict : logic::write_conflicts(pou, task_.project)) {
         const auto& var = conflict.variable;
         const auto& a = conflict.first;
         const auto& b = conflict.second;
