@@ -564,25 +564,38 @@ Value SymbolicMachine::bit_op(const Node& n, const std::uint32_t* kid, AigLit gu
     return x;
   }
   const Value by = eval(kid[1], guard);
-  const auto k = as_constant(by);
-  if (!k) throw CircuitUnsupported("a shift or rotation by a variable count");
-  if (*k < 0) {
-    raise(guard, Aig::kTrue);
-    return constant(0);
-  }
-  Value r = constant(0);
-  if (n.op == Op::Shl || n.op == Op::Shr) {
-    if (*k >= static_cast<std::int64_t>(width)) return r;
-    const auto s = static_cast<std::uint32_t>(*k);
-    for (std::uint32_t i = 0; i < width; ++i) {
-      if (n.op == Op::Shl && i >= s) r[i] = x[i - s];
-      if (n.op == Op::Shr && i + s < width) r[i] = x[i + s];
+  const bool shift = n.op == Op::Shl || n.op == Op::Shr;
+  // x moved by a constant count c >= 0 (a rotation's count already below the width).
+  auto moved = [&](std::uint64_t c) {
+    Value r = constant(0);
+    if (shift) {
+      if (c >= width) return r;
+      const auto s = static_cast<std::uint32_t>(c);
+      for (std::uint32_t i = 0; i < width; ++i) {
+        if (n.op == Op::Shl && i >= s) r[i] = x[i - s];
+        if (n.op == Op::Shr && i + s < width) r[i] = x[i + s];
+      }
+      return r;
     }
+    const auto s = static_cast<std::uint32_t>(c % width);
+    const auto left = n.op == Op::Rol ? s : (width - s) % width;
+    for (std::uint32_t i = 0; i < width; ++i) r[(i + left) % width] = x[i];
     return r;
+  };
+  if (const auto k = as_constant(by)) {
+    if (*k < 0) {
+      raise(guard, Aig::kTrue);
+      return constant(0);
+    }
+    return moved(static_cast<std::uint64_t>(*k));
   }
-  const auto s = static_cast<std::uint32_t>(*k % width);
-  const auto left = n.op == Op::Rol ? s : (width - s) % width;
-  for (std::uint32_t i = 0; i < width; ++i) r[(i + left) % width] = x[i];
+  // A variable count: a negative one is a range error, as in the machine; then one result per
+  // count that can make a difference (0 .. width - 1; a shift by more gives 0, a rotation
+  // takes the count modulo the width), chosen by the count.
+  raise(guard, by[kWidth - 1]);
+  const Value count = shift ? by : div_mod_constant(by, width, false, guard);
+  Value r = shift ? constant(0) : moved(0);
+  for (std::uint32_t c = 0; c < width; ++c) r = mux(equal(count, constant(c)), moved(c), r);
   return r;
 }
 

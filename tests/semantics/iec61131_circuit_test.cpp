@@ -362,6 +362,17 @@ PROGRAM Bits
     IF b.0 THEN b := ROR(b, 1); ELSE b := SHL(b, 1); END_IF;
   END_FOR;
 END_PROGRAM
+)",
+    // Shifts and rotations by a variable count: counts past the width, rotations modulo it,
+    // a negative count (a range error).
+    R"(
+PROGRAM VarShifts
+  VAR_INPUT v : BYTE; c : INT(-1..19); END_VAR
+  VAR_OUTPUT w : WORD; b, d : BYTE; END_VAR
+  b := SHL(v, c) XOR SHR(v, c + 1);
+  d := ROL(v, c) OR ROR(b, c);
+  w := SHL(w, c) XOR b;
+END_PROGRAM
 )"};
 
 TEST(Iec61131Circuit, AgreesOnLoopsFunctionsAndBitStrings) {
