@@ -24,6 +24,7 @@ std::optional<Ty> Validator::assignable(const std::string& target, const SourceL
   const auto dot = target.find('.');
   const std::string name = target.substr(0, dot);
   const Variable* v = pou_->find_variable(name);
+  if (!v && dot == std::string::npos && !grafcet()) v = project_global(name);
   if (dot == std::string::npos) {
     if (!v) {
       error(here, "assignment to undeclared variable " + quoted(target));
@@ -152,6 +153,13 @@ const Pou* Validator::instance_type(const std::string& owner, bool& unknown_type
     from = d + 1;
   }
   return type;
+}
+
+const Variable* Validator::project_global(std::string_view name) const {
+  for (const auto& q : project_.pous)
+    for (const auto& v : q.variables)
+      if (v.direction == VarDirection::Global && iequals(v.name, name)) return &v;
+  return nullptr;
 }
 
 void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {

@@ -249,6 +249,9 @@ Ty Validator::resolve_name(const Expr& e, const SourceLocation& here) {
                     " used as a value (name one of its outputs, e.g. " + e.name + ".Q)");
     return Ty::Unknown;
   }
+  if (const Variable* g = grafcet() ? nullptr : project_global(e.name)) {
+    if (auto t = value_type(g->type)) return *t;
+  }
   if (step_exists(e.name)) return Ty::Bool;  // a step used as a Boolean: its activity
   // IEC 60848 step variable: X12 is the activity of step 12.
   if (grafcet() && e.name.size() > 1 && (e.name[0] == 'X' || e.name[0] == 'x') &&

@@ -261,6 +261,54 @@ TEST(Instances, GlobalVariableListsAreSharedFields) {
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
 }
 
+// CODESYS and TwinCAT let every POU use a global without VAR_EXTERNAL: programs and an FB
+// instance read and write `level` and `alarm` of the list GVL by their bare names, and share
+// them (before, each bare name was "unknown name"). Panel runs after Main in the cycle, so its
+// lamp shows the alarm Main computed.
+TEST(Instances, GlobalsAreUsableWithoutVarExternal) {
+  const auto file = write_temp(R"(
+PROGRAM GVL
+  VAR_GLOBAL level : INT(0..5); alarm : BOOL; END_VAR
+END_PROGRAM
+PROGRAM Main
+  VAR_INPUT up : BOOL; END_VAR
+  IF up AND level < 5 THEN level := level + 1; END_IF;
+  alarm := level >= 4;
+END_PROGRAM
+FUNCTION_BLOCK Lamp
+  VAR_OUTPUT on : BOOL; END_VAR
+  on := alarm;
+END_FUNCTION_BLOCK
+PROGRAM Panel
+  VAR l : Lamp; END_VAR
+  VAR_OUTPUT lit : BOOL; END_VAR
+  l();
+  lit := l.on;
+END_PROGRAM
+)",
+                               ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv("check " + file + " --engine " + engine +
+                      " --checks none --trace none --ctl 'AG (lit <-> level >= 4)'");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv("check " + file + " --engine " + engine +
+                 " --checks none --trace none --ctl 'AG !lit'");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+  // A bare name that no POU declares is still an error.
+  const auto typo = write_temp(R"(
+PROGRAM Main
+  VAR_INPUT up : BOOL; END_VAR
+  levle := 1;
+END_PROGRAM
+)",
+                               ".st");
+  const auto r = run_sfcv("check " + typo + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("assignment to undeclared variable 'levle'"), std::string::npos) << r.err;
+}
+
 // ------------------------------------------------------------------------------------ corpus
 
 // CODESYS's pick-and-place unit (07: Magazin, Crane, Stamp; 12: also Conveyor and Pusher) is

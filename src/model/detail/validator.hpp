@@ -253,6 +253,10 @@ class Validator {
   /// the POU being validated), or nullptr when it names none. `unknown_type`: the last part is
   /// an instance of a type this model does not hold (the compiler reports it).
   const Pou* instance_type(const std::string& owner, bool& unknown_type) const;
+
+  /// A VAR_GLOBAL named `name` in some POU of the project (a GVL, a program): CODESYS and
+  /// TwinCAT let every POU use a global without declaring it VAR_EXTERNAL.
+  const Variable* project_global(std::string_view name) const;
 };
 
 }  // namespace sfcv::model::detail
