@@ -311,6 +311,7 @@ bool Compiler::run() {
                     a->where, "assumption"));
   step_timers();
   sfc_flags();
+  reject_call_cycles();
   instance_commits();
   step_observables();
   // A program without steps may keep no state at all (it only maps inputs to outputs of

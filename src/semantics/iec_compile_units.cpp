@@ -3,8 +3,11 @@
 // call (docs/semantics.md 1.3b). A unit is an instance Pou: the machine and the circuit run it
 // with their instance call (body, flags, actions, transitions, next configuration, commit).
 
+#include <algorithm>
+#include <functional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "model/names.hpp"
 #include "semantics/detail/iec_compiler.hpp"
@@ -114,6 +117,52 @@ bool Compiler::callable_association(const PouScope& sc, const std::string& actio
   if (used == 0 || used + 1 != parts.size() || !scopes[si].instance) return false;
   const auto* act = scopes[si].pou->find_action(parts.back());
   return act && act->kind == model::ActionBodyKind::Statements;
+}
+
+void Compiler::reject_call_cycles() {
+  // Units call units (a step naming another SFC action, an action calling `ACT();`): a cycle
+  // of calls would run forever in one scan (CODESYS overflows its stack), so it is refused.
+  std::vector<std::vector<std::uint32_t>> callees(p.pous.size());
+  std::function<void(Block, std::vector<std::uint32_t>&)> calls = [&](Block b, auto& out) {
+    for (std::uint32_t i = 0; i < b.count; ++i) {
+      const Stmt& st = p.stmts[p.block_items[b.first + i]];
+      if (st.op == SOp::Call) out.push_back(st.target);
+      for (std::uint32_t a = 0; a < st.arm_count; ++a)
+        calls(st.op == SOp::Case ? p.case_arms[st.arm_first + a].body
+                                 : p.if_arms[st.arm_first + a].body,
+              out);
+      calls(st.else_body, out);
+      calls(st.init, out);
+      calls(st.body, out);
+      calls(st.step, out);
+    }
+  };
+  for (std::uint32_t pi = 0; pi < p.pous.size(); ++pi) calls(p.pous[pi].body, callees[pi]);
+  for (const auto& a : p.actions) calls(a.body, callees[a.pou]);
+  std::vector<int> mark(p.pous.size(), 0);
+  std::vector<std::uint32_t> path;
+  std::function<bool(std::uint32_t)> visit = [&](std::uint32_t pi) {
+    if (mark[pi] == 2) return false;
+    path.push_back(pi);
+    if (mark[pi] == 1) {
+      std::string chain;
+      for (auto it = std::find(path.begin(), path.end(), pi); it != path.end(); ++it)
+        chain += (chain.empty() ? "" : " -> ") + p.pous[*it].name;
+      error(scopes[pi].pou->where, "'" + p.pous[pi].name + "' calls itself (" + chain +
+                                       "): a cycle of calls within one scan is not modelled");
+      return true;
+    }
+    mark[pi] = 1;
+    for (auto c : callees[pi])
+      if (visit(c)) return true;
+    mark[pi] = 2;
+    path.pop_back();
+    return false;
+  };
+  for (std::uint32_t pi = 0; pi < p.pous.size(); ++pi) {
+    path.clear();
+    if (visit(pi)) return;
+  }
 }
 
 }  // namespace sfcv::semantics::iec::detail

@@ -136,5 +136,32 @@ TEST(SfcActionUnits, CallsOfMissingActionsAndInputsAreLocatedErrors) {
       << r.err;
 }
 
+// A unit whose steps call, through another unit and an ST action, the unit itself would run
+// forever within one scan: refused at the action, with the chain of calls.
+TEST(SfcActionUnits, ACycleOfCallsIsRefused) {
+  const auto file = write_temp(R"(FUNCTION_BLOCK Ping
+  VAR_OUTPUT n : BOOL; END_VAR
+  ACTION ACT_A:
+    INITIAL_STEP A0: ACT_B; END_STEP
+  END_ACTION
+  ACTION ACT_B:
+    INITIAL_STEP B0: Again; END_STEP
+  END_ACTION
+  ACTION Again: ACT_A(); END_ACTION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR p : Ping; END_VAR
+  p.ACT_A();
+END_PROGRAM
+)",
+                               ".st");
+  const auto r = run_sfcv("check " + file + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":3:3: error: 'Main.p.ACT_A' calls itself (Main.p.ACT_A -> "
+                       "Main.p.ACT_B -> Main.p.ACT_A)"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -145,6 +145,8 @@ struct Compiler {
   /// An association naming no action of its scope that a call can run: `inst.ACT` (an action
   /// of an instance) or a unit of the scope's instance. Its action calls it while active.
   bool callable_association(const PouScope& sc, const std::string& action) const;
+  /// A unit or instance that calls itself through other calls: a located error.
+  void reject_call_cycles();
   std::deque<model::Pou> synthetic_pous;  // instance views and units (stable addresses)
   std::map<const model::Pou*, const model::Pou*> instance_views;
   std::map<std::pair<std::uint32_t, std::string>, std::uint32_t> units;  // (owner, ACTION)
