@@ -362,7 +362,7 @@ TEST(InstancesCorpus, TwinCatSfcActionsOfInstancesRun) {
   // (unknown, exit 3, never a verdict), inside one state's successors.
   const std::string eleven = "'" + (corpus / "11_twincat_xppu_scenario12.xml").string() + "'";
   const auto r = run_sfcv("check " + eleven +
-                          " --engine explicit --checks none --trace none --timeout 3"
+                          " --engine explicit --checks none --trace none --timeout 8"
                           " --ctl 'AG !PPU.Crane.ACT_Init.SetInitCompleted'");
   EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
   EXPECT_NE(r.err.find("time limit reached while computing the successors of one state"),
