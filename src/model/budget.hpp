@@ -31,9 +31,13 @@ struct Progress {
 struct Budget {
   using Clock = std::chrono::steady_clock;
 
-  std::optional<Clock::time_point> deadline;      ///< none: no time limit
-  std::uint64_t max_states = 0;                   ///< 0 = unlimited
-  std::uint64_t max_memory_bytes = 0;             ///< 0 = unlimited
+  std::optional<Clock::time_point> deadline;  ///< none: no time limit
+  std::uint64_t max_states = 0;               ///< 0 = unlimited
+  std::uint64_t max_memory_bytes = 0;         ///< 0 = unlimited
+  /// Input valuations the explicit engine may enumerate for the successors of one state (0 =
+  /// unlimited): a state past it stays unexpanded, Limit::Valuations. Set only by the probe of
+  /// --engine auto (engine/auto_policy.hpp), which then hands the rest to the symbolic engines.
+  std::uint64_t max_valuations = 0;
   std::function<void(const Progress&)> progress;  ///< may be empty
   /// Raised by another thread to stop the run (the portfolio of --engine auto cancels the
   /// engines that lost): every engine reads it where it reads the deadline, so a cancelled run

@@ -40,8 +40,10 @@ class UsageError : public Error {
 };
 
 /// Which resource ran out. Enumeration: an integer input whose values the explicit engine
-/// would have to list one by one (semantics::kMaxEnumeratedValues).
-enum class Limit { States, Time, Memory, Enumeration };
+/// would have to list one by one (semantics::kMaxEnumeratedValues). Valuations: one state's
+/// successors need more input valuations than model::Budget::max_valuations allows (the probe of
+/// --engine auto, engine/auto_policy.hpp).
+enum class Limit { States, Time, Memory, Enumeration, Valuations };
 
 /// "states", "time", "memory": the word reports use (CheckReport::limit, JSON "limit").
 inline const char* to_string(Limit limit) {
@@ -54,6 +56,8 @@ inline const char* to_string(Limit limit) {
       return "memory";
     case Limit::Enumeration:
       return "enumeration";
+    case Limit::Valuations:
+      return "valuations";
   }
   return "?";
 }

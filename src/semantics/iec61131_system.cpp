@@ -93,16 +93,18 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
   anomalies_used_ = 0;
   machine_.load(state);
   machine_.reset_trail();
-  std::uint32_t leaves = 0;
+  std::uint64_t leaves = 0;
   do {
     // A cycle that reads many inputs has exponentially many leaves: one state alone may
     // outlast the run's deadline, so the clock is read here too, not only between states.
-    if ((++leaves & 4095U) == 0 && p_->options.deadline &&
-        std::chrono::steady_clock::now() > *p_->options.deadline)
-      throw LimitReached(Limit::Time,
-                         "time limit reached while computing the successors of "
-                         "one state (" +
-                             std::to_string(leaves) + " input valuations so far)");
+    if ((++leaves & 4095U) == 0) {
+      if (p_->options.deadline && std::chrono::steady_clock::now() > *p_->options.deadline)
+        throw LimitReached(Limit::Time,
+                           "time limit reached while computing the successors of "
+                           "one state (" +
+                               std::to_string(leaves) + " input valuations so far)");
+      sink.valuations(leaves);  // the engine's own limits (--engine auto's probe)
+    }
     try {
       if (!machine_.run()) continue;  // excluded by an assumption
     } catch (const RangeAbort& e) {

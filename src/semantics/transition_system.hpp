@@ -62,6 +62,11 @@ class SuccessorSink {
   virtual ~SuccessorSink() = default;
   virtual void successor(const Successor& s) = 0;
   virtual void anomaly(const Anomaly&) {}
+  /// Called by a semantics that enumerates input valuations one by one (IEC 61131-3: the leaves
+  /// of the scan cycle's input decisions) every so many of them, with the count for this state
+  /// so far: the sink may throw (a limit of its engine, which the semantics cannot know) to stop
+  /// the enumeration; the state then has no successors from this call.
+  virtual void valuations(std::uint64_t /*count*/) {}
 };
 
 class TransitionSystem {

@@ -107,5 +107,51 @@ TEST(SatCheck, AutoRacesPastTheProbeAndSaysWhoDecided) {
   EXPECT_LT(seconds, 20.0);
 }
 
+// --engine auto on a state too wide for the explicit engine: the cycle XORs 24 free inputs, so
+// each state's successors take 2^24 input valuations (about 30 s each). The probe stops at
+// kAutoProbeValuations and the race answers; before, auto spent the whole --timeout on the
+// first states and answered unknown. The explicit engine alone is not bounded.
+TEST(SatCheck, AutoHandsAStateTooWideToTheRace) {
+  std::string inputs, xors;
+  for (int k = 0; k < 24; ++k) {
+    inputs += (k ? ", i" : "i") + std::to_string(k);
+    xors += (k ? " XOR i" : "i") + std::to_string(k);
+  }
+  const auto wide = write_temp("PROGRAM Wide\n  VAR_INPUT " + inputs +
+                                   " : BOOL; END_VAR\n  VAR x : BOOL; END_VAR\n"
+                                   "  INITIAL_STEP s0: a(N); END_STEP\n"
+                                   "  STEP s1: a(N); END_STEP\n  STEP s2: END_STEP\n"
+                                   "  TRANSITION FROM s0 TO s1 := x; END_TRANSITION\n"
+                                   "  TRANSITION FROM s1 TO s2 := NOT x; END_TRANSITION\n"
+                                   "  TRANSITION FROM s2 TO s0 := TRUE; END_TRANSITION\n"
+                                   "  ACTION a: x := " +
+                                   xors + "; END_ACTION\nEND_PROGRAM\n",
+                               ".st");
+  const std::string why =
+      "--engine auto: a state has more than 65536 input valuations (the explicit probe stopped "
+      "after 1 state): the bdd, ic3 and bmc engines race on the rest";
+  // Invariants alone (the explicit engine's on-the-fly search).
+  auto r = run_sfcv("check '" + wide +
+                    "' --timeout 300 --checks none --ctl 'AG !s2.X' --ctl 'AG !(s0.X & s1.X)'"
+                    " --json --quiet");
+  ASSERT_EQ(r.exit_code, 1) << r.out << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["engine"], "auto");
+  EXPECT_EQ(j["properties"][0]["verdict"], "violated");
+  EXPECT_EQ(j["properties"][1]["verdict"], "holds");
+  for (const auto& p : j["properties"]) EXPECT_NE(p["decided_by"], "explicit") << p;
+  r = run_sfcv("check '" + wide + "' --timeout 300 --checks none --ctl 'AG !s2.X' --trace none");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+  // With a standard check (the graph the checks need): the same hand-over.
+  r = run_sfcv("check '" + wide + "' --timeout 300 --checks reachable --json --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["properties"][0]["verdict"], "holds") << r.out;
+  EXPECT_NE(j["properties"][0]["decided_by"], "explicit") << r.out;
+  r = run_sfcv("check '" + wide + "' --timeout 300 --checks reachable");
+  EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -42,9 +42,11 @@ struct DynamicBit {
 
 class CompiledEnumerator final : public TargetEnumerator {
  public:
-  CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c)
+  CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c,
+                     const model::Budget& limits)
       : ts_(ts),
-        fallback_(make_interpreted_enumerator(ts)),
+        limits_(limits),
+        fallback_(make_interpreted_enumerator(ts, limits_)),
         words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
     compile(ts, c);
   }
@@ -53,7 +55,7 @@ class CompiledEnumerator final : public TargetEnumerator {
   // the calls into its scratch machine).
   std::unique_ptr<TargetEnumerator> clone() const override {
     auto copy = std::make_unique<CompiledEnumerator>(*this);
-    copy->fallback_ = make_interpreted_enumerator(ts_);
+    copy->fallback_ = make_interpreted_enumerator(ts_, limits_);
     return copy;
   }
 
@@ -252,6 +254,7 @@ class CompiledEnumerator final : public TargetEnumerator {
   }
 
   const semantics::TransitionSystem& ts_;
+  model::Budget limits_;  ///< the run's, copied: the fallback's valuation bound and deadline
   std::shared_ptr<TargetEnumerator> fallback_;  ///< replaced in every clone
   std::uint32_t words_;
   std::uint32_t first_latch_ = 0, first_input_ = 0, first_gate_ = 0;
@@ -284,7 +287,7 @@ std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::Tran
     const auto circuit =
         semantics::build_iec61131_circuit(ts, limits.deadline, limits.max_memory_bytes);
     if (circuit.aig.inputs().size() > 64) return nullptr;
-    return std::make_unique<CompiledEnumerator>(ts, circuit);
+    return std::make_unique<CompiledEnumerator>(ts, circuit, limits);
   } catch (const semantics::CircuitUnsupported&) {
     return nullptr;
   } catch (const LimitReached& e) {

@@ -8,6 +8,7 @@
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <utility>
 
 #include "engine/explicit/state_store.hpp"
 #include "logic/formula.hpp"
@@ -24,17 +25,33 @@ constexpr std::uint32_t kNone = ~0U;
 
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
-  explicit InterpretedEnumerator(const semantics::TransitionSystem& ts) : ts_(ts) {}
+  InterpretedEnumerator(const semantics::TransitionSystem& ts, model::Budget limits)
+      : ts_(ts), limits_(std::move(limits)) {}
   void targets(StateView state, std::vector<StateWord>& out) override {
     out_ = &out;
-    ts_.successors(state, *this);
+    const auto size = out.size();
+    try {
+      ts_.successors(state, *this);
+    } catch (...) {
+      out.resize(size);  // no partial successors of a state a limit stopped
+      throw;
+    }
   }
 
  private:
   void successor(const semantics::Successor& s) override {
     out_->insert(out_->end(), s.target.begin(), s.target.end());
   }
+  // Inside one wide state: the valuation bound of --engine auto's probe, and the run's
+  // deadline or cancel (the system reads only the deadline it was built with).
+  void valuations(std::uint64_t count) override {
+    if (limits_.max_valuations > 0 && count > limits_.max_valuations)
+      throw LimitReached(Limit::Valuations, "more than " + std::to_string(limits_.max_valuations) +
+                                                " input valuations in the successors of one state");
+    limits_.check_time("computing the successors of one state");
+  }
   const semantics::TransitionSystem& ts_;
+  model::Budget limits_;  ///< a copy (the cancel flag is shared)
   std::vector<StateWord>* out_ = nullptr;
 };
 
@@ -314,9 +331,9 @@ class ParallelTargets {
 
 }  // namespace
 
-std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(
-    const semantics::TransitionSystem& ts) {
-  return std::make_unique<InterpretedEnumerator>(ts);
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts,
+                                                              model::Budget limits) {
+  return std::make_unique<InterpretedEnumerator>(ts, std::move(limits));
 }
 
 bool invariants_only(const logic::CheckTask& task) {
@@ -337,7 +354,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   const auto& limits = task.limits;
   std::unique_ptr<TargetEnumerator> own;
   if (!enumerator) {
-    own = make_interpreted_enumerator(ts);
+    own = make_interpreted_enumerator(ts, limits);
     enumerator = own.get();
   }
 
@@ -465,27 +482,47 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     edges += out_edges;
     return true;
   };
+  // A limit inside one state's enumeration (a wide state past --engine auto's valuation bound,
+  // or the deadline): that state stays unexpanded, as a state limit leaves it. An integer input
+  // too wide to enumerate (Limit::Enumeration) still ends the run: the caller names it.
+  auto enumerate = [&](std::uint32_t from) {
+    try {
+      targets.clear();
+      const auto view = store.at(from);
+      current.assign(view.begin(), view.end());
+      enumerator->targets(current, targets);
+      return true;
+    } catch (const LimitReached& stop) {
+      if (stop.which() == Limit::Enumeration) throw;
+      limit = to_string(stop.which());
+      return false;
+    }
+  };
   std::uint32_t s = 0;
   ParallelTargets::Batch batches[2];  // outlive the pool's workers
   ParallelTargets pool(*enumerator, threads, words);
-  if (!pool.parallel()) {
-    for (; limit.empty() && open > 0 && s < store.size(); ++s) {
-      if (!before(s)) break;
-      const auto view = store.at(s);
-      current.assign(view.begin(), view.end());
-      targets.clear();
-      enumerator->targets(current, targets);
-      if (!expand(s, targets.data(), targets.size())) break;
-    }
-  } else {
+  // A batch whose enumeration threw (a limit, on some worker): the search goes on from its
+  // first state on this thread alone, so the state that stops it is the one-thread search's.
+  bool serial = !pool.parallel();
+  if (!serial) {
     auto* cur = &batches[0];
     auto* next = &batches[1];
     auto batch_end = [&](std::uint32_t from) {
       return std::min<std::uint32_t>(store.size(), from + ParallelTargets::kBatchStates);
     };
+    auto finished = [&](ParallelTargets::Batch& b) {
+      try {
+        pool.finish(b);
+        return true;
+      } catch (const LimitReached& stop) {
+        if (stop.which() == Limit::Enumeration) throw;
+        serial = true;
+        s = b.begin();
+        return false;
+      }
+    };
     pool.start(*cur, store, 0, batch_end(0));
-    pool.finish(*cur);
-    bool stopped = false;
+    bool stopped = !finished(*cur);
     while (!stopped && !cur->empty()) {
       // The states already stored past this batch are enumerated while it is stored.
       pool.start(*next, store, cur->end(), batch_end(cur->end()));
@@ -504,14 +541,21 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         pool.abandon(*next);
         break;
       }
-      pool.finish(*next);
+      if (!finished(*next)) break;
       if (next->empty()) {
         pool.start(*next, store, cur->end(), batch_end(cur->end()));
-        pool.finish(*next);
+        if (!finished(*next)) break;
       }
       std::swap(cur, next);
     }
-    if (!stopped) s = store.size();
+    if (!stopped && !serial) s = store.size();
+  }
+  if (serial) {
+    for (; limit.empty() && open > 0 && s < store.size(); ++s) {
+      if (!before(s)) break;
+      if (!enumerate(s)) break;
+      if (!expand(s, targets.data(), targets.size())) break;
+    }
   }
   const bool complete = limit.empty() && s >= store.size();
 

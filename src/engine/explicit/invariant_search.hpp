@@ -31,8 +31,10 @@ class TargetEnumerator {
   virtual std::unique_ptr<TargetEnumerator> clone() const { return nullptr; }
 };
 
-std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(
-    const semantics::TransitionSystem& ts);
+/// `limits` bounds the enumeration of one state: past its max_valuations, deadline or cancel,
+/// targets() throws LimitReached (Valuations, Time) and appends nothing.
+std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts,
+                                                              model::Budget limits = {});
 
 /// Whether `task` asks only for invariants (every property AG p with p propositional, no
 /// fairness, no standard check, no coverage), which check_invariants decides without the graph.

@@ -91,6 +91,19 @@ class Collector final : public semantics::SuccessorSink {
 
   void anomaly(const semantics::Anomaly& a) override { anomalies.push_back(a); }
 
+  /// Inside one state's enumeration (the semantics calls it every few thousand valuations): the
+  /// valuation bound, and the deadline, which successor() reads only once the state is done.
+  void valuations(std::uint64_t count) override {
+    if (limits_.max_valuations > 0 && count > limits_.max_valuations)
+      throw StopExploring{"valuations"};
+    if ((limits_.timeout_seconds > 0 &&
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() >
+             limits_.timeout_seconds) ||
+        (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline) ||
+        (limits_.cancel && limits_.cancel->load(std::memory_order_relaxed)))
+      throw StopExploring{"time"};
+  }
+
   std::vector<PendingEdge> pending;
   std::vector<semantics::Anomaly> anomalies;
 

@@ -34,8 +34,11 @@ struct ExplorationOptions {
   /// model::Budget::cancel (may be null): raised, exploration stops as at the deadline.
   const std::atomic<bool>* cancel = nullptr;
   std::uint64_t max_memory_bytes = 0;  ///< 0 = unlimited; approximate (states + edges)
-  bool keep_conditions = true;         ///< store each edge's input condition (RSG listing, traces)
-  bool keep_fired = true;              ///< store each edge's fired transitions
+  /// model::Budget::max_valuations: input valuations one state's successors may take (0 =
+  /// unlimited); past it the state stays unexpanded and the limit is "valuations".
+  std::uint64_t max_valuations = 0;
+  bool keep_conditions = true;  ///< store each edge's input condition (RSG listing, traces)
+  bool keep_fired = true;       ///< store each edge's fired transitions
   /// Called about every `progress_interval` states; may be empty.
   std::function<void(const ExplorationProgress&)> progress;
   std::uint64_t progress_interval = 1u << 16;

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -22,6 +23,12 @@ using logic::CheckReport;
 using logic::PropertyResult;
 using logic::Verdict;
 using Clock = std::chrono::steady_clock;
+
+std::string seconds_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", seconds);
+  return text;
+}
 
 bool decided(const PropertyResult& r) {
   return r.verdict == Verdict::Holds || r.verdict == Verdict::Violated;
@@ -133,23 +140,45 @@ class PortfolioModelChecker final : public ModelChecker {
       logic::CheckTask bounded = task;
       const auto policy = auto_probe(task.limits, options_.probe_states);
       bounded.limits.max_states = policy.max_states;
+      // Too wide: a state whose successors take more input valuations than the probe may
+      // enumerate stops it at once. Too slow: under --timeout the probe has a share of the time
+      // left; a chart it cannot finish in it gets the symbolic engines for the rest.
+      bounded.limits.max_valuations = options_.probe_valuations;
+      bool probe_deadline = false;
+      if (task.limits.deadline) {
+        const auto share = std::chrono::duration_cast<Clock::duration>(
+            std::chrono::duration<double>(task.limits.seconds_left() * kAutoProbeTimeShare));
+        bounded.limits.deadline = Clock::now() + share;
+        probe_deadline = bounded.limits.deadline < task.limits.deadline;
+      }
       probe = explicit_->check(bounded);
       const bool too_many = probe->limit == to_string(Limit::States) && !policy.user_bound;
       const bool not_enumerable = probe->limit == to_string(Limit::Enumeration);
+      const bool too_wide = probe->limit == to_string(Limit::Valuations);
       bool all_decided = true;
       for (const auto& r : probe->results) all_decided = all_decided && decided(r);
-      if (probe->complete || !(too_many || not_enumerable) || all_decided ||
-          task.limits.expired()) {
+      // Its share spent, in the exploration or in the checks after it (both read its deadline),
+      // with time left in the run.
+      const bool too_slow = probe_deadline && !all_decided && !task.limits.expired() &&
+                            Clock::now() >= *bounded.limits.deadline &&
+                            (probe->complete || probe->limit == to_string(Limit::Time));
+      if (all_decided || task.limits.expired() ||
+          !(too_many || not_enumerable || too_wide || too_slow)) {
         note("using the explicit engine");
         for (auto& r : probe->results)
           if (decided(r)) r.decided_by = "explicit";
         return *probe;
       }
-      note(too_many ? "more than " + std::to_string(policy.max_states) +
-                          " states: the bdd, ic3 and bmc engines race on the rest"
-                    : (probe->results.empty() ? std::string("the explicit engine cannot enumerate")
-                                              : probe->results.front().message) +
-                          ": the bdd, ic3 and bmc engines race on the rest");
+      const std::string reason =
+          too_many   ? "more than " + std::to_string(policy.max_states) + " states"
+          : too_wide ? "a state has more than " + std::to_string(options_.probe_valuations) +
+                           " input valuations (the explicit probe stopped after " +
+                           probe->states.str() + (probe->states == 1 ? " state)" : " states)")
+          : too_slow ? "the explicit engine used its share of the time (" + probe->states.str() +
+                           " states in " + seconds_text(probe->seconds) + ")"
+                     : (probe->results.empty() ? std::string("the explicit engine cannot enumerate")
+                                               : probe->results.front().message);
+      note(reason + ": the bdd, ic3 and bmc engines race on the rest");
     } else {
       note("the bdd, ic3 and bmc engines race (the explicit engine cannot: " + why + ")");
     }

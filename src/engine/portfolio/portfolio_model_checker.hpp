@@ -25,6 +25,9 @@ struct PortfolioOptions {
   /// The explicit probe's bound: kAutoProbeStates (engine/auto_policy.hpp), the one policy;
   /// tests set a smaller one to make small charts race (0: no probe).
   std::uint64_t probe_states = kAutoProbeStates;
+  /// Input valuations per state the probe may enumerate: kAutoProbeValuations; tests set a
+  /// smaller one (0: unbounded).
+  std::uint64_t probe_valuations = kAutoProbeValuations;
 };
 
 ModelCheckerPtr make_portfolio_model_checker(PortfolioOptions options = {});
