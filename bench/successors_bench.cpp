@@ -31,6 +31,8 @@ model::Project make_chart(Shape shape, int n) {
                                             model::Type::boolean(),
                                             std::nullopt,
                                             "",
+                                            {},
+                                            {},
                                             {}});
   model::Chart c;
   c.name = "MAIN";

@@ -12,6 +12,7 @@
 #include "io/load.hpp"
 #include "io/st_lexer.hpp"
 #include "io/st_parser.hpp"
+#include "model/data_types.hpp"
 #include "model/names.hpp"
 
 namespace sfcv::io {
@@ -54,7 +55,7 @@ class IecTextReader {
         } else if (p.at_word("CONFIGURATION")) {
           skip_block("CONFIGURATION", "END_CONFIGURATION", "tasks and resources are not modelled");
         } else if (p.at_word("TYPE")) {
-          skip_block("TYPE", "END_TYPE", "user-defined types are not modelled");
+          p.type_declarations(project.data_types);
         } else {
           p.fail_unexpected("PROGRAM, FUNCTION_BLOCK, FUNCTION, CONFIGURATION or TYPE");
         }
@@ -76,6 +77,7 @@ class IecTextReader {
     for (const auto& pou : project.pous)
       if (project.name.empty() && pou.kind != model::PouKind::Function) project.name = pou.name;
     if (project.name.empty() && !project.pous.empty()) project.name = project.pous.front().name;
+    if (!model::has_errors(diags_)) model::lower_data_types(project, diags_);
     LoadResult r;
     if (!model::has_errors(diags_)) r.project = std::move(project);
     r.diagnostics = std::move(diags_);

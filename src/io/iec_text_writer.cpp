@@ -301,6 +301,10 @@ class Writer {
 std::string write_iec_text(const model::Project& project) {
   if (project.dialect == model::Dialect::Grafcet)
     cannot("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
+  if (project.data_types_lowered)
+    cannot(
+        "a project with user data types (ARRAY, STRUCT, enumerations): sfcv models them "
+        "element by element and does not print them back as declared");
   std::string out;
   for (std::size_t i = 0; i < project.pous.size(); ++i) {
     if (i) out += "\n";

@@ -530,6 +530,10 @@ std::string now_utc() {
 std::string write_plcopen_xml(const model::Project& project) {
   if (project.dialect == model::Dialect::Grafcet)
     cannot("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
+  if (project.data_types_lowered)
+    cannot(
+        "a project with user data types (ARRAY, STRUCT, enumerations): sfcv models them "
+        "element by element and does not print them back as declared");
   pugi::xml_document doc;
   auto decl = doc.append_child(pugi::node_declaration);
   decl.append_attribute("version") = "1.0";

@@ -16,6 +16,8 @@
 #include "io/plcopen_pou.hpp"
 #include "io/plcopen_st.hpp"
 #include "io/plcopen_xml_dom.hpp"
+#include "io/st_parser.hpp"
+#include "model/data_types.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
 #include "model/validate.hpp"
@@ -35,10 +37,14 @@ constexpr const char* kNamespaces[] = {
 
 struct TypeRead {
   std::optional<model::Type> type;
-  std::string written;  ///< for messages: "REAL", "derived Motor", "array"
+  std::string written;                            ///< for messages: "REAL", "derived Motor"
+  std::vector<model::ArrayDimension> dimensions;  ///< <array>: its bounds, `type` its elements
 };
 
-TypeRead read_type(pugi::xml_node t) {
+/// `user_types`: the upper-case names of the project's function blocks and data types; a
+/// derived type of such a name is read as a placeholder that lowering (data types) or the
+/// semantics (function blocks) resolves.
+TypeRead read_type(pugi::xml_node t, const std::set<std::string>& user_types) {
   TypeRead r;
   if (!t) {
     r.written = "(none)";
@@ -48,13 +54,41 @@ TypeRead read_type(pugi::xml_node t) {
   if (k == "derived") {
     r.written = t.attribute("name").value();
     r.type = model::elementary_type(r.written);
+    if (!r.type && user_types.count(model::to_upper(r.written))) {
+      model::Type placeholder;
+      placeholder.kind = model::TypeKind::FunctionBlock;
+      placeholder.fb = model::StandardFb::None;
+      placeholder.name = r.written;
+      r.type = placeholder;
+    }
+    return r;
+  }
+  const auto base_of = [&](pugi::xml_node n) {
+    const auto b = element_children(child(n, "baseType"));
+    return read_type(b.empty() ? pugi::xml_node{} : b.front(), user_types);
+  };
+  if (k == "array") {
+    std::vector<model::ArrayDimension> dims;
+    for (auto d : children(t, "dimension")) {
+      const auto lo = parse_int_literal(d.attribute("lower").value());
+      const auto hi = parse_int_literal(d.attribute("upper").value());
+      if (!lo || !hi || *lo > *hi) {
+        r.written = "array with bounds '" + std::string(d.attribute("lower").value()) + ".." +
+                    d.attribute("upper").value() + "'";
+        return r;
+      }
+      dims.push_back({*lo, *hi});
+    }
+    r = base_of(t);
+    if (dims.empty()) r.type.reset();
+    dims.insert(dims.end(), r.dimensions.begin(), r.dimensions.end());
+    r.dimensions = std::move(dims);
+    r.written = "ARRAY OF " + r.written;
     return r;
   }
   if (k == "subrangeSigned" || k == "subrangeUnsigned") {
     const auto range = child(t, "range");
-    const auto base = read_type(element_children(child(t, "baseType")).empty()
-                                    ? pugi::xml_node{}
-                                    : element_children(child(t, "baseType")).front());
+    const auto base = base_of(t);
     const auto lo = parse_int_literal(range.attribute("lower").value());
     const auto hi = parse_int_literal(range.attribute("upper").value());
     r.written = base.written + "(" + range.attribute("lower").value() + ".." +
@@ -69,6 +103,51 @@ TypeRead read_type(pugi::xml_node t) {
   return r;
 }
 
+/// An <initialValue>'s content as the ST parser gives initial values: an expression, an array
+/// (Call "[", repetitions expanded) or a structure (formal Call "(").
+model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value) {
+  const std::string k(local_name(value));
+  if (k == "simpleValue") {
+    model::Diagnostics problems;
+    auto e =
+        parse_st_expression(trim(value.attribute("value").value()), ctx.where(value), problems);
+    for (auto& d : problems) ctx.diagnostics().push_back(d);
+    return e;
+  }
+  if (k == "arrayValue") {
+    std::vector<model::ExprPtr> elements;
+    for (auto v : children(value, "value")) {
+      const auto inner = element_children(v);
+      if (inner.empty()) continue;
+      auto e = read_initial_value(ctx, inner.front());
+      if (!e) return nullptr;
+      const auto repeat = parse_int_literal(v.attribute("repetitionValue").value());
+      const std::int64_t n = repeat ? *repeat : 1;
+      if (n < 0 || n > 100000) {
+        ctx.error(v, "repetition count out of range");
+        return nullptr;
+      }
+      for (std::int64_t i = 0; i < n; ++i) elements.push_back(e);
+    }
+    return model::make_call("[", std::move(elements), ctx.where(value));
+  }
+  if (k == "structValue") {
+    std::vector<std::string> names;
+    std::vector<model::ExprPtr> values;
+    for (auto v : children(value, "value")) {
+      const auto inner = element_children(v);
+      if (inner.empty()) continue;
+      auto e = read_initial_value(ctx, inner.front());
+      if (!e) return nullptr;
+      names.push_back(trim(v.attribute("member").value()));
+      values.push_back(std::move(e));
+    }
+    return model::make_formal_call("(", std::move(names), std::move(values), ctx.where(value));
+  }
+  ctx.error(value, "unsupported initial value <" + k + ">");
+  return nullptr;
+}
+
 std::optional<model::VarDirection> section_direction(std::string_view k) {
   using D = model::VarDirection;
   if (k == "inputVars") return D::Input;
@@ -80,9 +159,9 @@ std::optional<model::VarDirection> section_direction(std::string_view k) {
   return std::nullopt;
 }
 
-/// `user_fbs`: the upper-case names of the project's function block POUs; a variable of such a
-/// derived type is an instance of that function block (its own copy of the FB's variables and
-/// charts, compiled by the semantics).
+/// `user_fbs`: the upper-case names of the project's function block POUs and data types; a
+/// variable of such a derived type is an instance of that function block (its own copy of the
+/// FB's variables and charts, compiled by the semantics) or lowered by its data type.
 void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection direction,
                   model::Pou& pou, const std::set<std::string>& user_fbs) {
   const std::optional<model::VarDirection> dir = direction;
@@ -98,22 +177,22 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
         continue;
       }
       const auto type_el = element_children(child(v, "type"));
-      auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
-      if (!t.type && !type_el.empty() && local_name(type_el.front()) == "derived" &&
-          user_fbs.count(model::to_upper(t.written))) {
-        model::Type fb;
-        fb.kind = model::TypeKind::FunctionBlock;
-        fb.fb = model::StandardFb::None;
-        fb.name = t.written;
-        t.type = fb;
-      }
+      auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front(), user_fbs);
       if (!t.type) {
         ctx.warning(v, "unsupported type " + t.written + " of variable '" + var.name +
                            "': variable ignored");
         continue;
       }
       var.type = *t.type;
-      if (const auto init = child(v, "initialValue")) {
+      var.dimensions = t.dimensions;
+      const bool user_type =
+          var.type.kind == model::TypeKind::FunctionBlock && var.type.fb == model::StandardFb::None;
+      const auto init = child(v, "initialValue");
+      if (init && (user_type || !var.dimensions.empty())) {
+        // Checked when the types are lowered (model::lower_data_types).
+        const auto inner = element_children(init);
+        if (!inner.empty()) var.declared_initial = read_initial_value(ctx, inner.front());
+      } else if (init) {
         const auto simple = child(init, "simpleValue");
         const std::string text = trim(simple.attribute("value").value());
         if (!simple || var.type.kind == model::TypeKind::FunctionBlock) {
@@ -156,6 +235,57 @@ void read_variables(XmlContext& ctx, pugi::xml_node interface, model::Pou& pou,
     if (!dir) continue;  // returnType, accessVars, documentation, addData
     read_section(ctx, section, *dir, pou, user_fbs);
   }
+}
+
+/// A <dataType>: an enumeration, a structure, or an alias of another type (an array, a
+/// subrange, a derived type).
+void read_data_type(XmlContext& ctx, pugi::xml_node node, model::Project& project,
+                    const std::set<std::string>& user_types) {
+  model::DataType t;
+  t.name = trim(node.attribute("name").value());
+  t.where = ctx.where(node);
+  const auto base = element_children(child(node, "baseType"));
+  if (t.name.empty() || base.empty()) {
+    ctx.error(node, "data type without a name or a base type");
+    return;
+  }
+  const std::string k(local_name(base.front()));
+  if (k == "enum") {
+    t.kind = model::DataTypeKind::Enumeration;
+    std::int64_t value = 0;
+    for (auto v : children(child(base.front(), "values"), "value")) {
+      if (const auto given = parse_int_literal(v.attribute("value").value())) value = *given;
+      t.enumerators.emplace_back(trim(v.attribute("name").value()), value++);
+    }
+    if (t.enumerators.empty()) {
+      ctx.error(node, "enumeration '" + t.name + "' has no value");
+      return;
+    }
+  } else if (k == "struct") {
+    t.kind = model::DataTypeKind::Structure;
+    model::Pou fields;
+    read_section(ctx, base.front(), model::VarDirection::Local, fields, user_types);
+    t.fields = std::move(fields.variables);
+    if (t.fields.empty()) {
+      ctx.error(node, "structure '" + t.name + "' has no field sfcv models");
+      return;
+    }
+  } else {
+    t.kind = model::DataTypeKind::Alias;
+    const auto r = read_type(base.front(), user_types);
+    if (!r.type) {
+      ctx.error(node, "unsupported type " + r.written + " of data type '" + t.name + "'");
+      return;
+    }
+    model::Variable v;
+    v.type = *r.type;
+    v.dimensions = r.dimensions;
+    v.where = t.where;
+    if (const auto init = element_children(child(node, "initialValue")); !init.empty())
+      v.declared_initial = read_initial_value(ctx, init.front());
+    t.fields.push_back(std::move(v));
+  }
+  project.data_types.push_back(std::move(t));
 }
 
 /// Global variable lists: PLCopen `instances/configurations/configuration` and its `resource`s,
@@ -225,8 +355,8 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
   std::string unmodelled_function;
   if (pou.kind == model::PouKind::Function) {
     const auto type_el = element_children(child(child(node, "interface"), "returnType"));
-    const auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front());
-    if (t.type && t.type->kind != model::TypeKind::FunctionBlock) {
+    const auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front(), {});
+    if (t.type && t.type->kind != model::TypeKind::FunctionBlock && t.dimensions.empty()) {
       model::Variable result;
       result.name = pou.name;
       result.direction = model::VarDirection::Output;
@@ -317,8 +447,13 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
       scope.body = *stmts;
       scope.where = pou.where;
       alone.pous.push_back(std::move(scope));
-      for (auto& d : model::validate(alone))
-        if (d.severity == model::Severity::Error) problems.push_back(std::move(d));
+      // Validated as the project will be: with its data types lowered (the body itself is
+      // lowered with the whole project, once every POU is read).
+      alone.data_types = project.data_types;
+      model::lower_data_types(alone, problems);
+      if (!model::has_errors(problems))
+        for (auto& d : model::validate(alone))
+          if (d.severity == model::Severity::Error) problems.push_back(std::move(d));
       if (model::has_errors(problems)) stmts.reset();
     }
     if (stmts && !pou.body_unsupported) {
@@ -435,6 +570,10 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     if (kind == "function")
       ctx.user_functions.insert(model::to_upper(trim(p.attribute("name").value())));
   }
+  for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))
+    user_fbs.insert(model::to_upper(trim(dt.attribute("name").value())));
+  for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))
+    read_data_type(ctx, dt, project, user_fbs);
   std::set<std::string> seen;
   for (auto p : pous) {
     ctx.poll();
@@ -480,6 +619,7 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     read_global_lists(ctx, conf, project, user_fbs);
   for (auto data : children(child(root, "addData"), "data"))
     read_global_lists(ctx, data, project, user_fbs);
+  if (!model::has_errors(r.diagnostics)) model::lower_data_types(project, r.diagnostics);
   r.project = std::move(project);
   return r;
 }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <set>
+#include <string>
 
 #include "model/names.hpp"
 
@@ -318,7 +320,20 @@ class Lexer {
       error(t.line, t.column, "malformed BOOL literal");
       return false;
     }
-    // REAL#1.5, DATE#..., TOD#..., STRING#'...', enumerations: outside the model.
+    // `Color#Red`: an enumerator qualified by its type, a name the model resolves.
+    static const std::set<std::string> kLiteralTypes{
+        "REAL",  "LREAL", "DATE", "D",      "TOD",     "TIME_OF_DAY", "DT",   "DATE_AND_TIME",
+        "LDATE", "LTOD",  "LDT",  "STRING", "WSTRING", "CHAR",        "WCHAR"};
+    if (!kLiteralTypes.count(p) && is_ident_start(peek())) {
+      std::size_t end = pos_;
+      while (end < s_.size() && is_ident_char(s_[end])) ++end;
+      if (end == s_.size() || (s_[end] != '.' && s_[end] != '#' && s_[end] != '\'')) {
+        while (pos_ < end) advance();
+        t.kind = TokenKind::Identifier;
+        return true;
+      }
+    }
+    // REAL#1.5, DATE#..., TOD#..., STRING#'...': outside the model.
     while (is_ident_char(peek()) || peek() == '.' || peek() == ':' || peek() == '-' ||
            peek() == '#')
       advance();

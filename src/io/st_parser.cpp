@@ -1,5 +1,6 @@
 #include "io/st_parser.hpp"
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <limits>
@@ -292,28 +293,68 @@ ExprPtr Parser::primary() {
   if (is_reserved(t.text)) fail_unexpected("an expression");
   next();
   if (at(TokenKind::LParen)) return call(t);
-  if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
   if (at(TokenKind::Caret)) fail(peek(), "unsupported: pointer dereference of '" + t.text + "'");
-  if (!at(TokenKind::Dot)) return model::make_name(t.text, loc);
-  next();
-  // Bit access `w.3`: the member is the bit number.
-  if (at(TokenKind::Integer) && peek().value >= 0 && peek().value < 64) {
-    const Token& bit = next();
-    return model::make_member(t.text, std::to_string(bit.value), loc);
-  }
-  if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '" + t.text + ".'");
-  // `a.b.c` (a member of a nested instance): name "a.b", member "c".
-  std::string base = t.text;
-  const Token* member = &next();
-  while (at(TokenKind::Dot)) {
-    next();
+  if (!at(TokenKind::Dot) && !at(TokenKind::LBracket)) return model::make_name(t.text, loc);
+  std::string path = t.text;
+  std::vector<ExprPtr> indices;
+  for (;;) {
+    if (at(TokenKind::LBracket)) {
+      subscript(path, indices);
+      continue;
+    }
+    if (!accept(TokenKind::Dot)) break;
+    // Bit access `w.3`: the member is the bit number.
+    if (at(TokenKind::Integer) && peek().value >= 0 && peek().value < 64 && indices.empty()) {
+      const Token& bit = next();
+      return model::make_member(path, std::to_string(bit.value), loc);
+    }
     if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
-    base += "." + member->text;
-    member = &next();
+    const Token& member = next();
+    if (at(TokenKind::LParen))
+      fail(member, "unsupported: call of method '" + path + "." + member.text + "'");
+    path += "." + member.text;
   }
-  if (at(TokenKind::LParen))
-    fail(*member, "unsupported: call of method '" + base + "." + member->text + "'");
-  return model::make_member(base, member->text, loc);
+  if (!indices.empty()) return model::make_index(path, std::move(indices), loc);
+  // `a.b.c` (a member of a nested instance, or an element `s.x`): name "a.b", member "c".
+  const auto dot = path.rfind('.');
+  if (dot == std::string::npos) return model::make_name(path, loc);
+  return model::make_member(path.substr(0, dot), path.substr(dot + 1), loc);
+}
+
+void Parser::subscript(std::string& path, std::vector<ExprPtr>& indices) {
+  const Token& open = next();  // '['
+  std::vector<ExprPtr> k;
+  do k.push_back(expression());
+  while (accept(TokenKind::Comma));
+  expect(TokenKind::RBracket, "']' after the index");
+  // Constant indices are part of the element's name (`a[2]`); others are chosen by the model.
+  std::string constant = "[";
+  bool all_constant = true;
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    const auto& e = k[i];
+    std::optional<std::int64_t> v;
+    if (e->kind == ExprKind::IntConst) v = e->value;
+    if (e->kind == ExprKind::Neg && e->args[0]->kind == ExprKind::IntConst) v = -e->args[0]->value;
+    if (!v)
+      all_constant = false;
+    else
+      constant += (i ? "," : "") + std::to_string(*v);
+  }
+  if (all_constant) {
+    // `a[1][2]` (CODESYS's ARRAY OF ARRAY) is `a[1,2]`: one array of both dimensions.
+    if (!path.empty() && path.back() == ']' && !path.ends_with("[*]")) {
+      path.back() = ',';
+      path += constant.substr(1) + "]";
+    } else {
+      path += constant + "]";
+    }
+    return;
+  }
+  if (!indices.empty())
+    fail(open,
+         "unsupported: a second non-constant index in '" + path.substr(0, path.find('[')) + "'");
+  path += "[*]";
+  indices = std::move(k);
 }
 
 // ------------------------------------------------------------------------------- statements
@@ -326,6 +367,13 @@ model::StmtList Parser::statements() {
     const std::string w = upper(peek().text);
     if (w.rfind("END_", 0) == 0 || w == "ELSE" || w == "ELSIF" || w == "STEP" ||
         w == "INITIAL_STEP" || w == "TRANSITION" || w == "ACTION" || w == "UNTIL")
+      return out;
+    // `Idle:`, `A, B:`, `E.Idle:`: the next CASE label, an enumerator.
+    const auto label_end = [&](std::size_t k) {
+      return at(TokenKind::Colon, k) || at(TokenKind::Comma, k) || at(TokenKind::DotDot, k);
+    };
+    if (in_case_ > 0 &&
+        (label_end(1) || (at(TokenKind::Dot, 1) && at(TokenKind::Identifier, 2) && label_end(3))))
       return out;
     out.push_back(statement());
   }
@@ -361,22 +409,24 @@ model::StmtPtr Parser::statement() {
   if (at_word("CASE")) return case_statement();
   if (is_reserved(t.text)) fail_unexpected("a statement");
   next();
-  if (at(TokenKind::Assign)) {
-    next();
-    ExprPtr value = expression();
-    end_statement("the assignment");
-    return model::make_assign(t.text, value, where(t));
-  }
   if (at(TokenKind::LParen)) return fb_call(t);
-  if (at(TokenKind::Dot)) {
-    // `inst.x := v` (a member of a function block instance, possibly nested: `a.b.x`).
+  if (at(TokenKind::Dot) || at(TokenKind::LBracket) || at(TokenKind::Assign)) {
+    // `x := v`, `inst.x := v` (a member of an instance, possibly nested: `a.b.x`), `a[i].y := v`.
     std::string target = t.text;
-    while (accept(TokenKind::Dot)) {
+    std::vector<ExprPtr> indices;
+    for (;;) {
+      if (at(TokenKind::LBracket)) {
+        subscript(target, indices);
+        continue;
+      }
+      if (!accept(TokenKind::Dot)) break;
       if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
       target += "." + next().text;
     }
     if (at(TokenKind::LParen)) {
       // `inst.ACT();` (TwinCAT): a call of an action of a function block instance.
+      if (!indices.empty())
+        fail(peek(), "unsupported: a call of an instance chosen by a variable index");
       Token call = t;
       call.text = target;
       return fb_call(call);
@@ -384,9 +434,12 @@ model::StmtPtr Parser::statement() {
     expect(TokenKind::Assign, "':='");
     ExprPtr value = expression();
     end_statement("the assignment");
-    return model::make_assign(target, value, where(t));
+    auto assign = model::make_assign(target, value, where(t));
+    if (indices.empty()) return assign;
+    auto s = std::make_shared<model::Stmt>(*assign);
+    s->target_indices = std::move(indices);
+    return s;
   }
-  if (at(TokenKind::LBracket)) fail(peek(), "unsupported: array indexing of '" + t.text + "'");
   if (at(TokenKind::Colon))
     fail(t,
          "unsupported: label '" + t.text + "' (jump labels; CASE labels must be integer literals)");
@@ -518,11 +571,19 @@ model::StmtPtr Parser::while_statement() {
 std::int64_t Parser::case_bound() {
   const bool negative = accept(TokenKind::Minus);
   const Token& t = peek();
-  if (t.kind == TokenKind::Identifier && !is_reserved(t.text))
-    fail(t, "unsupported: symbolic bound '" + t.text + "' (integer literals only)");
   if (t.kind != TokenKind::Integer) fail_unexpected("an integer literal");
   next();
   return negative ? -t.value : t.value;
+}
+
+void Parser::case_label_bound(std::int64_t& value, std::string& name) {
+  if (at(TokenKind::Identifier) && !is_reserved(peek().text)) {
+    // An enumerator (`Idle`, `E_State#Idle`, `E_State.Idle`), resolved when types are lowered.
+    name = next().text;
+    if (accept(TokenKind::Dot)) name += "." + identifier("an enumerator after '.'");
+    return;
+  }
+  value = case_bound();
 }
 
 model::StmtPtr Parser::case_statement() {
@@ -532,13 +593,20 @@ model::StmtPtr Parser::case_statement() {
   s->where = where(kw);
   s->value = expression();
   expect_word("OF");
+  ++in_case_;
+  DepthGuard in_case([this] { --in_case_; });
   while (at(TokenKind::Integer) || at(TokenKind::Minus) ||
          (at(TokenKind::Identifier) && !is_reserved(peek().text))) {
     std::vector<model::CaseLabel> labels;
     do {
       model::CaseLabel l;
-      l.lo = l.hi = case_bound();
-      if (accept(TokenKind::DotDot)) l.hi = case_bound();
+      case_label_bound(l.lo, l.lo_name);
+      l.hi = l.lo;
+      l.hi_name = l.lo_name;
+      if (accept(TokenKind::DotDot)) {
+        l.hi_name.clear();
+        case_label_bound(l.hi, l.hi_name);
+      }
       labels.push_back(l);
     } while (accept(TokenKind::Comma));
     expect(TokenKind::Colon, "':' after the CASE labels");
@@ -576,18 +644,38 @@ bool Parser::at_var_section() const {
   return at_word("VAR_ACCESS") || at_word("VAR_CONFIG");
 }
 
-model::Type Parser::var_type() {
+model::Type Parser::var_type(std::vector<model::ArrayDimension>* dimensions) {
   const Token& t = peek();
   if (t.kind != TokenKind::Identifier) fail_unexpected("a type name");
   const std::string name = upper(t.text);
+  if (name == "ARRAY" && dimensions) {
+    // ARRAY [lo..hi, ...] OF T; ARRAY[..] OF ARRAY[..] OF T is one array of both dimensions.
+    next();
+    expect(TokenKind::LBracket, "'[' after ARRAY");
+    do {
+      model::ArrayDimension d;
+      d.lo = case_bound();
+      expect(TokenKind::DotDot, "'..' in the array bounds");
+      d.hi = case_bound();
+      if (d.lo > d.hi)
+        fail(t,
+             "array bounds [" + std::to_string(d.lo) + ".." + std::to_string(d.hi) + "] are empty");
+      dimensions->push_back(d);
+    } while (accept(TokenKind::Comma));
+    expect(TokenKind::RBracket, "']' after the array bounds");
+    expect_word("OF");
+    return var_type(dimensions);
+  }
   if (name == "ARRAY" || name == "POINTER" || name == "REF_TO" || name == "STRUCT" ||
       name == "STRING" || name == "WSTRING" || name == "REAL" || name == "LREAL")
-    fail(t, "unsupported type " + name + " (sfcv models BOOL, integers, TIME and standard FBs)");
+    fail(t, "unsupported type " + name +
+                " (sfcv models BOOL, integers, TIME, enumerations, arrays, structures and FBs)");
   next();
   auto type = model::elementary_type(name);
   if (!type && !at(TokenKind::LParen)) {
-    // Any other name is an instance of a user function block; the semantics looks the type up
-    // in the project and refuses, with this location, a name that is no FUNCTION_BLOCK of it.
+    // Any other name is a user type (TYPE ... END_TYPE) or a user function block: lowering
+    // resolves the types (model::lower_data_types), the semantics the function blocks, and
+    // each refuses, with this location, a name that is neither.
     model::Type fb;
     fb.kind = model::TypeKind::FunctionBlock;
     fb.fb = model::StandardFb::None;
@@ -613,6 +701,43 @@ model::Type Parser::var_type() {
   return *type;
 }
 
+model::ExprPtr Parser::initialiser() {
+  const Token& t = peek();
+  if (accept(TokenKind::LBracket)) {
+    // `[1, 2, 3(0)]`: one argument per element, repetitions expanded.
+    std::vector<ExprPtr> elements;
+    do {
+      if (at(TokenKind::Integer) && at(TokenKind::LParen, 1)) {
+        const Token& count = next();
+        next();
+        ExprPtr e = at(TokenKind::RParen) ? nullptr : initialiser();
+        expect(TokenKind::RParen, "')' after the repeated value");
+        if (count.value > 100000) fail(count, "repetition count too large");
+        if (!e) fail(count, "unsupported: a repetition without a value");
+        for (std::int64_t i = 0; i < count.value; ++i) elements.push_back(e);
+        continue;
+      }
+      elements.push_back(initialiser());
+    } while (accept(TokenKind::Comma));
+    expect(TokenKind::RBracket, "']' after the array initialiser");
+    return model::make_call("[", std::move(elements), where(t));
+  }
+  if (at(TokenKind::LParen) && at(TokenKind::Identifier, 1) && at(TokenKind::Assign, 2)) {
+    // `(x := 1, y := Red)`: a structure.
+    next();
+    std::vector<std::string> names;
+    std::vector<ExprPtr> values;
+    do {
+      names.push_back(identifier("a field name"));
+      expect(TokenKind::Assign, "':='");
+      values.push_back(initialiser());
+    } while (accept(TokenKind::Comma));
+    expect(TokenKind::RParen, "')' after the structure initialiser");
+    return model::make_formal_call("(", std::move(names), std::move(values), where(t));
+  }
+  return expression();
+}
+
 void Parser::var_section(std::vector<model::Variable>& out) {
   const Token& kw = next();
   std::optional<model::VarDirection> direction;
@@ -622,8 +747,14 @@ void Parser::var_section(std::vector<model::Variable>& out) {
   while (accept_word("CONSTANT") || accept_word("RETAIN") || accept_word("NON_RETAIN") ||
          accept_word("PERSISTENT")) {
   }
-  while (!at_word("END_VAR")) {
-    if (at(TokenKind::End)) fail_unexpected("END_VAR");
+  declarations(*direction, "END_VAR", out);
+  next();  // END_VAR
+}
+
+void Parser::declarations(model::VarDirection direction, std::string_view end,
+                          std::vector<model::Variable>& out) {
+  while (!at_word(end)) {
+    if (at(TokenKind::End)) fail_unexpected(end);
     std::vector<const Token*> names;
     do {
       const Token& n = peek();
@@ -636,9 +767,16 @@ void Parser::var_section(std::vector<model::Variable>& out) {
       address = expect(TokenKind::DirectAddress, "a direct address such as %IX1").text;
     }
     expect(TokenKind::Colon, "':' and a type");
-    model::Type type = var_type();
+    std::vector<model::ArrayDimension> dimensions;
+    model::Type type = var_type(&dimensions);
     std::optional<std::int64_t> initial;
-    if (accept(TokenKind::Assign)) {
+    ExprPtr declared_initial;
+    const bool user_type =
+        type.kind == model::TypeKind::FunctionBlock && type.fb == model::StandardFb::None;
+    const bool has_initial = accept(TokenKind::Assign);
+    if (has_initial && (user_type || !dimensions.empty())) {
+      declared_initial = initialiser();  // checked when the types are lowered
+    } else if (has_initial) {
       const Token& init_tok = peek();
       if (type.kind == model::TypeKind::FunctionBlock)
         fail(init_tok, "unsupported: initial values of function block instances");
@@ -668,15 +806,69 @@ void Parser::var_section(std::vector<model::Variable>& out) {
     for (const Token* n : names) {
       model::Variable v;
       v.name = n->text;
-      v.direction = *direction;
+      v.direction = direction;
       v.type = type;
       v.initial = initial;
+      v.declared_initial = declared_initial;
+      v.dimensions = dimensions;
       v.address = address;
       v.where = where(*n);
       out.push_back(std::move(v));
     }
   }
-  next();  // END_VAR
+}
+
+void Parser::type_declarations(std::vector<model::DataType>& out) {
+  expect_word("TYPE");
+  while (!at_word("END_TYPE")) {
+    if (at(TokenKind::End)) fail_unexpected("END_TYPE");
+    model::DataType t;
+    const Token& name = peek();
+    t.name = identifier("a type name or END_TYPE");
+    t.where = where(name);
+    expect(TokenKind::Colon, "':' after the type name");
+    if (accept_word("STRUCT")) {
+      t.kind = model::DataTypeKind::Structure;
+      declarations(model::VarDirection::Local, "END_STRUCT", t.fields);
+      next();  // END_STRUCT
+      if (t.fields.empty()) fail(name, "structure '" + t.name + "' has no field");
+    } else if (at(TokenKind::LParen)) {
+      // (A, B := 5, C): values count on from the previous one, from 0.
+      t.kind = model::DataTypeKind::Enumeration;
+      next();
+      std::int64_t value = 0;
+      do {
+        const std::string e = identifier("an enumerator");
+        if (accept(TokenKind::Assign)) {
+          const bool negative = accept(TokenKind::Minus);
+          const Token& v = expect(TokenKind::Integer, "an integer value of the enumerator");
+          value = negative ? -v.value : v.value;
+        }
+        t.enumerators.emplace_back(e, value);
+        ++value;
+      } while (accept(TokenKind::Comma));
+      expect(TokenKind::RParen, "')' after the enumerators");
+      // `(A, B) := B`: the default of the type's variables, first enumerator otherwise.
+      if (accept(TokenKind::Assign)) {
+        const std::string d = identifier("the enumerator the type starts with");
+        auto it = std::find_if(t.enumerators.begin(), t.enumerators.end(),
+                               [&](const auto& en) { return model::iequals(en.first, d); });
+        if (it == t.enumerators.end()) fail(name, "'" + d + "' is no enumerator of " + t.name);
+        std::rotate(t.enumerators.begin(), it, it + 1);
+      }
+    } else {
+      // An alias: `T : INT(0..5)`, `T : ARRAY[1..3] OF INT := [..]`, `T : Other`.
+      t.kind = model::DataTypeKind::Alias;
+      model::Variable v;
+      v.where = t.where;
+      v.type = var_type(&v.dimensions);
+      if (accept(TokenKind::Assign)) v.declared_initial = initialiser();
+      t.fields.push_back(std::move(v));
+    }
+    expect(TokenKind::Semicolon, "';' after the type declaration");
+    out.push_back(std::move(t));
+  }
+  next();  // END_TYPE
 }
 
 }  // namespace st

@@ -83,8 +83,17 @@ class Parser {
   bool at_var_section() const;
   /// One VAR... END_VAR section; appends its variables.
   void var_section(std::vector<model::Variable>& out);
-  /// A type name: BOOL, an integer type or subrange, TIME, a (standard or user) FB type.
-  model::Type var_type();
+  /// `a, b : T [:= init];` ... up to the word `end` (not consumed).
+  void declarations(model::VarDirection direction, std::string_view end,
+                    std::vector<model::Variable>& out);
+  /// A type name: BOOL, an integer type or subrange, TIME, a (standard or user) FB type, a
+  /// user type's name; with `dimensions`, also ARRAY[..] OF a type (its bounds appended there).
+  model::Type var_type(std::vector<model::ArrayDimension>* dimensions = nullptr);
+  /// An initial value: an expression, `[a, b, n(c)]` (an array: Call "[") or `(x := a, ...)`
+  /// (a structure: formal Call "(").
+  model::ExprPtr initialiser();
+  /// `TYPE name : ...; ... END_TYPE`: appends the declared types.
+  void type_declarations(std::vector<model::DataType>& out);
 
  private:
   model::ExprPtr or_expr();
@@ -106,6 +115,11 @@ class Parser {
   /// A function call in an expression, `name(` next: positional arguments.
   model::ExprPtr call(const Token& name);
   std::int64_t case_bound();
+  /// A CASE label's bound: an integer literal into `value`, or an enumerator into `name`.
+  void case_label_bound(std::int64_t& value, std::string& name);
+  /// `[i, j]` after a name: constant indices join `path` (`a[1,2]`); others become its one
+  /// "[*]", with `indices` receiving them.
+  void subscript(std::string& path, std::vector<model::ExprPtr>& indices);
   void end_statement(std::string_view what);
 
   /// Bounds recursion so that absurd nesting is an error, not a stack overflow.
@@ -117,6 +131,7 @@ class Parser {
   Locator locator_;
   std::size_t pos_ = 0;
   int depth_ = 0;
+  int in_case_ = 0;  ///< inside CASE bodies, `name:` starts the next label
   model::BudgetPoll poll_;
 };
 

@@ -84,9 +84,19 @@ std::vector<Token> lex(std::string_view s) {
     const auto rest = s.substr(i);
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       std::size_t n = 0;
-      while (n < rest.size() && (std::isalnum(static_cast<unsigned char>(rest[n])) ||
-                                 rest[n] == '_' || rest[n] == '.'))
-        ++n;
+      for (;;) {
+        while (n < rest.size() && (std::isalnum(static_cast<unsigned char>(rest[n])) ||
+                                   rest[n] == '_' || rest[n] == '.'))
+          ++n;
+        // An array element `a[2]`, `m[1,-2].x`: constant indices are part of its name.
+        if (n >= rest.size() || rest[n] != '[') break;
+        std::size_t close = n + 1;
+        while (close < rest.size() && (std::isdigit(static_cast<unsigned char>(rest[close])) ||
+                                       rest[close] == ',' || rest[close] == '-'))
+          ++close;
+        if (close == n + 1 || close >= rest.size() || rest[close] != ']') break;
+        n = close + 1;
+      }
       sym(Tok::Ident, n);
     } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                (c == '-' && rest.size() > 1 && std::isdigit(static_cast<unsigned char>(rest[1])))) {

@@ -91,9 +91,19 @@ class Lexer {
     const char c = text_[i_];
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       const auto start = i_;
-      while (i_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i_])) ||
-                                   text_[i_] == '_' || text_[i_] == '.'))
-        advance();
+      for (;;) {
+        while (i_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[i_])) ||
+                                     text_[i_] == '_' || text_[i_] == '.'))
+          advance();
+        // An array element `a[2]`: constant indices are part of its name.
+        if (i_ >= text_.size() || text_[i_] != '[') break;
+        std::size_t close = i_ + 1;
+        while (close < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[close])) ||
+                                        text_[close] == ',' || text_[close] == '-'))
+          ++close;
+        if (close == i_ + 1 || close >= text_.size() || text_[close] != ']') break;
+        while (i_ <= close) advance();
+      }
       t.kind = Tok::Ident;
       t.text = std::string(text_.substr(start, i_ - start));
       return t;

@@ -24,12 +24,41 @@ enum class Dialect { Iec61131, Grafcet };
 
 enum class VarDirection { Input, Output, InOut, Local, Global, External };
 
+/// One dimension of an ARRAY declaration: [lo..hi].
+struct ArrayDimension {
+  std::int64_t lo = 0, hi = 0;
+  bool operator==(const ArrayDimension&) const = default;
+};
+
 struct Variable {
   std::string name;
   VarDirection direction = VarDirection::Local;
   Type type;
   std::optional<std::int64_t> initial;  ///< BOOL as 0/1, TIME in ms
   std::string address;                  ///< "%IX1" when declared with AT, else empty
+  SourceLocation where;
+  // As read, before model::lower_data_types replaces the variable by its elements:
+  /// non-empty: an ARRAY of `type` with these dimensions.
+  std::vector<ArrayDimension> dimensions;
+  /// The initial value of an ARRAY, STRUCT or enumeration variable as written
+  /// (`[1, 2(0)]`, `(x := 1)`, `Red`); null when none.
+  ExprPtr declared_initial;
+};
+
+// -------------------------------------------------------------------------- user data types
+
+/// A TYPE declaration (PLCopen <dataType>). model::lower_data_types replaces every variable of
+/// such a type by its elements (`s.x`, `a[2]`) and every enumerator by its value.
+enum class DataTypeKind { Enumeration, Structure, Alias };
+
+struct DataType {
+  std::string name;
+  DataTypeKind kind = DataTypeKind::Alias;
+  /// Enumeration: the enumerators and their values, in declaration order.
+  std::vector<std::pair<std::string, std::int64_t>> enumerators;
+  /// Structure: the fields. Alias (`TYPE T : ARRAY[1..3] OF INT`, `TYPE T : INT(0..5)`): one
+  /// field, unnamed, whose type (and dimensions) T stands for.
+  std::vector<Variable> fields;
   SourceLocation where;
 };
 
@@ -197,6 +226,11 @@ struct Project {
   Dialect dialect = Dialect::Iec61131;
   std::string source_format;  ///< "plcopen-xml", "iec-text", "g7", "agrafe-xmi", ...
   std::vector<Pou> pous;
+  /// User data types as read; after model::lower_data_types, kept for reference only.
+  std::vector<DataType> data_types;
+  /// lower_data_types replaced aggregates by their elements: the writers cannot give the
+  /// declarations back as written, so they refuse to print such a project.
+  bool data_types_lowered = false;
   SourceLocation where;
 
   const Pou* find_pou(std::string_view pou_name) const;

@@ -125,6 +125,15 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
         s += (i ? ", " : "") + (i < e.arg_names.size() ? e.arg_names[i] + " := " : "") +
              print(*e.args[i], 0, false);
       return s + ")";
+    case ExprKind::Index: {
+      std::string indices;
+      for (std::size_t i = 0; i < e.args.size(); ++i)
+        indices += (i ? ", " : "") + print(*e.args[i], 0, false);
+      std::string path = e.name;
+      if (const auto at = path.find("[*]"); at != std::string::npos)
+        path.replace(at, 3, "[" + indices + "]");
+      return path;
+    }
     case ExprKind::Delay:
       return time_literal(e.value) + "/" + print(*e.args[0], 9, false) + "/" +
              time_literal(e.value2);
@@ -200,6 +209,13 @@ ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
   e->arg_names = std::move(names);
   return e;
 }
+ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Index, std::move(where)));
+  e->name = std::move(path);
+  e->args = std::move(indices);
+  set_height(*e);
+  return e;
+}
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
   e->value = t1_ms;
@@ -213,7 +229,8 @@ bool equal(const Expr& a, const Expr& b) {
   if (a.kind != b.kind || a.value != b.value || a.value2 != b.value2 ||
       a.args.size() != b.args.size())
     return false;
-  if (a.kind == ExprKind::Name || a.kind == ExprKind::Member || a.kind == ExprKind::Call) {
+  if (a.kind == ExprKind::Name || a.kind == ExprKind::Member || a.kind == ExprKind::Call ||
+      a.kind == ExprKind::Index) {
     // Identifiers are case-insensitive.
     auto ieq = [](const std::string& x, const std::string& y) {
       if (x.size() != y.size()) return false;

@@ -38,6 +38,10 @@ enum class ExprKind {
   Falling,  ///< Grafcet ↓e: args[0]
   Delay,    ///< Grafcet t1/e/t2: args[0] = e, value = t1 (ms), value2 = t2 (ms)
   Call,     ///< function call name(args...): a standard function (MAX, INT_TO_BOOL, ...)
+  /// An array element chosen by a non-constant index, before model::lower_data_types: `name`
+  /// is the path with one `[*]` where args (one per dimension) go: `a[i].x` is ("a[*].x", i).
+  /// Constant indices are part of names (`a[3]`), so after lowering no Index remains.
+  Index,
 };
 
 struct Expr;
@@ -72,6 +76,8 @@ ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocatio
 /// `function(names[0] := args[0], ...)`.
 ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
                          std::vector<ExprPtr> args, SourceLocation where = {});
+/// `path` holds one "[*]", replaced by the indices when printed: make_index("a[*]", {i}).
+ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).

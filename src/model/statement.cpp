@@ -32,8 +32,11 @@ bool equal(const Stmt& a, const Stmt& b) {
       to_upper(a.target) != to_upper(b.target) || !equal(a.value, b.value) ||
       a.conditions.size() != b.conditions.size() || a.labels != b.labels ||
       a.bodies.size() != b.bodies.size() || !equal(a.else_body, b.else_body) ||
-      a.arguments.size() != b.arguments.size() || a.outputs.size() != b.outputs.size())
+      a.arguments.size() != b.arguments.size() || a.outputs.size() != b.outputs.size() ||
+      a.target_indices.size() != b.target_indices.size())
     return false;
+  for (std::size_t i = 0; i < a.target_indices.size(); ++i)
+    if (!equal(a.target_indices[i], b.target_indices[i])) return false;
   for (std::size_t i = 0; i < a.outputs.size(); ++i)
     if (to_upper(a.outputs[i].first) != to_upper(b.outputs[i].first) ||
         to_upper(a.outputs[i].second) != to_upper(b.outputs[i].second))
@@ -62,7 +65,10 @@ void print(const StmtList& body, int indent, std::string& out) {
   for (const auto& s : body) {
     switch (s->kind) {
       case StmtKind::Assign:
-        out += pad + s->target + " := " + to_st(s->value) + ";\n";
+        out += pad +
+               (s->target_indices.empty() ? s->target
+                                          : to_st(make_index(s->target, s->target_indices))) +
+               " := " + to_st(s->value) + ";\n";
         break;
       case StmtKind::FbCall: {
         out += pad + s->target + "(";
@@ -95,8 +101,9 @@ void print(const StmtList& body, int indent, std::string& out) {
           for (std::size_t j = 0; j < s->labels[i].size(); ++j) {
             if (j) out += ", ";
             const auto& l = s->labels[i][j];
-            out += std::to_string(l.lo);
-            if (l.hi != l.lo) out += ".." + std::to_string(l.hi);
+            out += l.lo_name.empty() ? std::to_string(l.lo) : l.lo_name;
+            if (l.hi != l.lo || l.hi_name != l.lo_name)
+              out += ".." + (l.hi_name.empty() ? std::to_string(l.hi) : l.hi_name);
           }
           out += ":\n";
           print(s->bodies[i], indent + 4, out);

@@ -33,6 +33,9 @@ using StmtList = std::vector<StmtPtr>;
 
 struct CaseLabel {
   std::int64_t lo = 0, hi = 0;  ///< a single value has lo == hi
+  /// An enumerator written as the bound (`Idle:`, `E_State.Idle:`), before
+  /// model::lower_data_types sets lo/hi to its value; empty for an integer literal.
+  std::string lo_name, hi_name;
   bool operator==(const CaseLabel&) const = default;
 };
 
@@ -57,6 +60,9 @@ struct Stmt {
   // For: the TO bound and the BY increment (null when BY is omitted, i.e. 1).
   ExprPtr limit;
   ExprPtr step;
+  // Assign to an array element chosen by non-constant indices (before model::lower_data_types):
+  // target holds one "[*]" where these go, as in ExprKind::Index.
+  std::vector<ExprPtr> target_indices;
   // FbCall: output bindings `Q => y` (the instance's output, the variable it is copied to).
   std::vector<std::pair<std::string, std::string>> outputs;
 };

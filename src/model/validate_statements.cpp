@@ -21,9 +21,12 @@
 namespace sfcv::model::detail {
 
 std::optional<Ty> Validator::assignable(const std::string& target, const SourceLocation& here) {
-  const auto dot = target.find('.');
+  // `s.x`, `a[2].y`: an element of a structure or array is a variable of that name.
+  const Variable* element = pou_->find_variable(target);
+  if (!element && !grafcet()) element = project_global(target);
+  const auto dot = element ? std::string::npos : target.find('.');
   const std::string name = target.substr(0, dot);
-  const Variable* v = pou_->find_variable(name);
+  const Variable* v = element ? element : pou_->find_variable(name);
   if (!v && dot == std::string::npos && !grafcet()) v = project_global(name);
   if (dot == std::string::npos) {
     if (!v) {

@@ -221,6 +221,10 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
     case ExprKind::TimeConst:
       type = VT::Int;
       return constant(e.value);
+    case ExprKind::Index:  // lowered by the readers (model::lower_data_types)
+      error(e.where, "unsupported: array index in '" + model::to_st(e) + "'");
+      type = VT::Int;
+      return constant(0);
     case ExprKind::Name: {
       std::optional<Ref> found;
       if (auto it = sc.names.find(model::to_upper(e.name)); it != sc.names.end())

@@ -49,8 +49,8 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         found = global_ref(model::to_upper(s.target));  // an unqualified global
       VT t;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
-      if (s.target.find('.') != std::string::npos) {
-        // `inst.x := v`, `a.b.x := v`, `Main.x := v`.
+      if (s.target.find('.') != std::string::npos && !found) {
+        // `inst.x := v`, `a.b.x := v`, `Main.x := v` (`s.x` of a structure is a variable).
         if (const auto r = dotted(sc, s.target, s.where)) {
           if (r->kind != Ref::Field) {
             error(s.where, "assignment to '" + s.target + "', which is an input");

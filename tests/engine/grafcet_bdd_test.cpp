@@ -194,8 +194,14 @@ TEST(GrafcetBdd, InstabilityIsDetectedSymbolically) {
 TEST(GrafcetBdd, StoredValueOutOfRangeIsARangeError) {
   GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back(
-      {"k", model::VarDirection::Local, model::Type::integer("INT", 0, 1), std::nullopt, "", {}});
+  b.pou().variables.push_back({"k",
+                               model::VarDirection::Local,
+                               model::Type::integer("INT", 0, 1),
+                               std::nullopt,
+                               "",
+                               {},
+                               {},
+                               {}});
   b.transition({"1"}, {"2"}, test::rise(test::v("a")))
       .transition({"2"}, {"1"}, test::fall(test::v("a")));
   b.stored("2", model::StoredWhen::Activation, "k",

@@ -259,7 +259,7 @@ TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
       "<pou name=\"P\" pouType=\"program\"><interface>" + std::string(kVarA) +
       "</interface><actions>"
       "<action name=\"Loop\"><body>" +
-      st("x := arr[1];") +
+      st("x := p^;") +
       "</body></action>"
       "<action name=\"Il\"><body><IL><xhtml:p><![CDATA[LD a\nST x]]></xhtml:p></IL></body></action>"
       "</actions><body><SFC>" +

@@ -738,7 +738,7 @@ TEST(PlcopenXml, InlineActionNamesAvoidDeclaredNames) {
 TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
   const auto blocks = action_block(
       20, 3,
-      R"(<action localId="0"><inline><ST><xhtml:p><![CDATA[n := arr[1];]]></xhtml:p></ST></inline></action>)");
+      R"(<action localId="0"><inline><ST><xhtml:p><![CDATA[n := p^;]]></xhtml:p></ST></inline></action>)");
   const auto actions =
       "<actions><action name=\"IL_ACT\"><body><IL><xhtml:p><![CDATA[LD a\nST "
       "x]]></xhtml:p></IL></body></action></actions>";

@@ -613,7 +613,7 @@ TEST(Validate, ControlStatementsAndFbCalls) {
   case_stmt->kind = StmtKind::Case;
   case_stmt->where = {"test.sfc", 201, 1, {}};
   case_stmt->value = make_name("lamp");  // not an integer
-  case_stmt->labels = {{{1, 1}}};
+  case_stmt->labels = {{{1, 1, {}, {}}}};
   case_stmt->bodies = {{}};
   b.action_st("Act", {if_stmt, case_stmt,
                       make_fb_call("T1", {{"IN", make_int(5)}, {"XX", make_bool(true)}},

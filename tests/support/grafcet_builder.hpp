@@ -26,11 +26,13 @@ class GrafcetBuilder {
   const model::Project& project() const { return project_; }
 
   GrafcetBuilder& input(const std::string& name, model::Type type = model::Type::boolean()) {
-    pou().variables.push_back({name, model::VarDirection::Input, type, std::nullopt, "", {}});
+    pou().variables.push_back(
+        {name, model::VarDirection::Input, type, std::nullopt, "", {}, {}, {}});
     return *this;
   }
   GrafcetBuilder& output(const std::string& name, model::Type type = model::Type::boolean()) {
-    pou().variables.push_back({name, model::VarDirection::Output, type, std::nullopt, "", {}});
+    pou().variables.push_back(
+        {name, model::VarDirection::Output, type, std::nullopt, "", {}, {}, {}});
     return *this;
   }
   GrafcetBuilder& chart(const std::string& name) {

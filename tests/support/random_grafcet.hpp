@@ -19,8 +19,14 @@ inline model::Project random_grafcet(std::uint64_t seed) {
   GrafcetBuilder b;
   b.input("a").input("b").input("c").input("n", model::Type::integer("INT", 0, 9));
   b.output("y").output("z").output("w").output("f");
-  b.pou().variables.push_back(
-      {"cnt", model::VarDirection::Local, model::Type::integer("INT", 0, 3), std::nullopt, "", {}});
+  b.pou().variables.push_back({"cnt",
+                               model::VarDirection::Local,
+                               model::Type::integer("INT", 0, 3),
+                               std::nullopt,
+                               "",
+                               {},
+                               {},
+                               {}});
   const std::uint32_t n1 = 3 + pick(3), n2 = 2 + pick(2);
   const bool macro = pick(4) == 0, enclosing = !macro && pick(4) == 0, forcing = pick(3) == 0;
   auto s1 = [](std::uint32_t i) { return std::to_string(1 + i); };
