@@ -99,7 +99,7 @@ TypeRead read_type(pugi::xml_node t, const std::set<std::string>& user_types) {
     return r;
   }
   r.written = k;
-  r.type = model::elementary_type(k);
+  r.type = k == "string" ? model::Type::string() : model::elementary_type(k);
   return r;
 }
 
@@ -188,7 +188,7 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
       const bool user_type =
           var.type.kind == model::TypeKind::FunctionBlock && var.type.fb == model::StandardFb::None;
       const auto init = child(v, "initialValue");
-      if (init && (user_type || !var.dimensions.empty())) {
+      if (init && (user_type || !var.dimensions.empty() || var.type.is_string())) {
         // Checked when the types are lowered (model::lower_data_types).
         const auto inner = element_children(init);
         if (!inner.empty()) var.declared_initial = read_initial_value(ctx, inner.front());

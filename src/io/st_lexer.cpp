@@ -365,7 +365,7 @@ class Lexer {
         return false;
       }
       advance();
-      t.kind = TokenKind::Unsupported;
+      t.kind = TokenKind::String;
       return true;
     }
     if (c == '%') {

@@ -21,7 +21,8 @@ enum class TokenKind {
   Time,           ///< value in ms (T#1m30s, TIME#100ms)
   Bool,           ///< value 0/1 from BOOL#TRUE, BOOL#0 (plain TRUE/FALSE are identifiers)
   DirectAddress,  ///< %IX1, %QW3.2: text
-  Unsupported,    ///< a literal sfcv does not model (REAL, STRING, dates): text names it
+  Unsupported,    ///< a literal sfcv does not model (REAL, dates): text names it
+  String,         ///< a character string literal: text is it as written, quotes included
   Assign,         ///< :=
   Arrow,          ///< =>
   Colon,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -254,6 +255,40 @@ ExprPtr Parser::unary_expr() {
   return e;
 }
 
+std::string Parser::string_characters(const Token& t) const {
+  // IEC 61131-3 6.3.3: '$' escapes: $$ $' $L $N $P $R $T and two hex digits.
+  std::string out;
+  const std::string& w = t.text;
+  for (std::size_t i = 1; i + 1 < w.size(); ++i) {
+    if (w[i] != '$') {
+      out += w[i];
+      continue;
+    }
+    const char e = i + 2 < w.size()
+                       ? static_cast<char>(std::toupper(static_cast<unsigned char>(w[i + 1])))
+                       : '\0';
+    if (e == '$' || e == '\'' || e == '"')
+      out += e;
+    else if (e == 'L' || e == 'N')
+      out += '\n';
+    else if (e == 'P')
+      out += '\f';
+    else if (e == 'R')
+      out += '\r';
+    else if (e == 'T')
+      out += '\t';
+    else if (std::isxdigit(static_cast<unsigned char>(e)) && i + 3 < w.size() &&
+             std::isxdigit(static_cast<unsigned char>(w[i + 2]))) {
+      out += static_cast<char>(std::stoi(w.substr(i + 1, 2), nullptr, 16));
+      ++i;
+    } else {
+      fail(t, "malformed '$' escape in the string " + w);
+    }
+    ++i;
+  }
+  return out;
+}
+
 ExprPtr Parser::primary() {
   const Token& t = peek();
   const auto loc = where(t);
@@ -278,6 +313,11 @@ ExprPtr Parser::primary() {
     }
     case TokenKind::Unsupported:
       fail(t, "unsupported: literal " + t.text);
+    case TokenKind::String: {
+      next();
+      if (t.text.front() == '"') fail(t, "unsupported: WSTRING literal " + t.text);
+      return model::make_string(string_characters(t), loc);
+    }
     case TokenKind::DirectAddress:
       fail(t, "unsupported: direct address " + t.text +
                   " in an expression (declare a variable AT it)");
@@ -666,10 +706,22 @@ model::Type Parser::var_type(std::vector<model::ArrayDimension>* dimensions) {
     expect_word("OF");
     return var_type(dimensions);
   }
+  if (name == "STRING") {
+    // STRING, STRING(80), STRING[80]: the length does not matter to = and <> (1.7a).
+    next();
+    if (at(TokenKind::LParen) || at(TokenKind::LBracket)) {
+      const bool paren = at(TokenKind::LParen);
+      next();
+      expect(TokenKind::Integer, "the string's length");
+      expect(paren ? TokenKind::RParen : TokenKind::RBracket, paren ? "')'" : "']'");
+    }
+    return model::Type::string();
+  }
   if (name == "ARRAY" || name == "POINTER" || name == "REF_TO" || name == "STRUCT" ||
-      name == "STRING" || name == "WSTRING" || name == "REAL" || name == "LREAL")
+      name == "WSTRING" || name == "REAL" || name == "LREAL")
     fail(t, "unsupported type " + name +
-                " (sfcv models BOOL, integers, TIME, enumerations, arrays, structures and FBs)");
+                " (sfcv models BOOL, integers, TIME, STRING, enumerations, arrays, structures and "
+                "FBs)");
   next();
   auto type = model::elementary_type(name);
   if (!type && !at(TokenKind::LParen)) {
@@ -774,7 +826,7 @@ void Parser::declarations(model::VarDirection direction, std::string_view end,
     const bool user_type =
         type.kind == model::TypeKind::FunctionBlock && type.fb == model::StandardFb::None;
     const bool has_initial = accept(TokenKind::Assign);
-    if (has_initial && (user_type || !dimensions.empty())) {
+    if (has_initial && (user_type || !dimensions.empty() || type.is_string())) {
       declared_initial = initialiser();  // checked when the types are lowered
     } else if (has_initial) {
       const Token& init_tok = peek();

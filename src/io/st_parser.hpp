@@ -115,6 +115,8 @@ class Parser {
   /// A function call in an expression, `name(` next: positional arguments.
   model::ExprPtr call(const Token& name);
   std::int64_t case_bound();
+  /// The characters of a STRING literal token, its '$' escapes decoded.
+  std::string string_characters(const Token& t) const;
   /// A CASE label's bound: an integer literal into `value`, or an enumerator into `name`.
   void case_label_bound(std::int64_t& value, std::string& name);
   /// `[i, j]` after a name: constant indices join `path` (`a[1,2]`); others become its one

@@ -1,6 +1,7 @@
 #include "model/data_types.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -28,6 +29,7 @@ struct LoweringError {
 /// What lowering knows of one POU's variables, by upper-case path.
 struct Scope {
   std::set<std::string> leaves;                               ///< element variables
+  std::set<std::string> strings;                              ///< leaves of type STRING
   std::map<std::string, std::string> instances;               ///< leaf -> user FB type (upper)
   std::map<std::string, std::vector<ArrayDimension>> arrays;  ///< path of an array -> bounds
   bool globals = false;                                       ///< holds VAR_GLOBAL variables
@@ -58,13 +60,14 @@ class Lowering {
         if (!fresh && it->second != value) ambiguous_.insert(to_upper(name));
       }
     }
-    bool any = !project_.data_types.empty();
+    collect_strings();
+    bool any = !project_.data_types.empty() || string_codes_.size() > 1;
     // Declarations first (every POU's scope is needed to resolve `inst.arr[i]`), then uses.
     for (auto& pou : project_.pous) {
       Scope& sc = scopes_[to_upper(pou.name)];
       std::vector<Variable> lowered;
       for (const auto& v : pou.variables) {
-        any = any || !v.dimensions.empty() || v.declared_initial;
+        any = any || !v.dimensions.empty() || v.declared_initial || v.type.is_string();
         try {
           expand(v, v.declared_initial, lowered, sc, 0);
         } catch (const LoweringError& e) {
@@ -73,6 +76,7 @@ class Lowering {
       }
       pou.variables = std::move(lowered);
     }
+    give_strings_their_range();
     if (!any) return;
     project_.data_types_lowered = true;
     for (auto& pou : project_.pous) {
@@ -82,7 +86,10 @@ class Lowering {
         for (auto& a : pou.actions) a.body = statements(a.body);
         for (auto& c : pou.charts)
           for (auto& t : c.transitions)
-            if (t.guard) t.guard = expression(t.guard);
+            if (t.guard) {
+              check_strings(*t.guard);
+              t.guard = expression(t.guard);
+            }
         for (auto& a : pou.associations)
           if (a.condition) a.condition = expression(a.condition);
       } catch (const LoweringError& e) {
@@ -177,7 +184,7 @@ class Lowering {
     Variable e = v;
     if (init) e.initial = constant(init, v.name);
     e.declared_initial = nullptr;
-    if (e.initial && e.type.kind == TypeKind::Int &&
+    if (e.initial && e.type.kind == TypeKind::Int && !e.type.is_string() &&
         (*e.initial < e.type.lo || *e.initial > e.type.hi))
       fail(init ? init->where : v.where, "initial value " + std::to_string(*e.initial) + " of '" +
                                              e.name + "' is outside " + e.type.name);
@@ -239,6 +246,10 @@ class Lowering {
   void leaf(Variable v, std::vector<Variable>& out, Scope& sc) {
     const std::string key = to_upper(v.name);
     sc.leaves.insert(key);
+    if (v.type.is_string()) {
+      sc.strings.insert(key);
+      if (!v.initial) v.initial = string_codes_.at("");
+    }
     if (v.direction == VarDirection::Global) sc.globals = true;
     if (v.type.kind == TypeKind::FunctionBlock && v.type.fb == StandardFb::None)
       sc.instances[key] = to_upper(v.type.name);
@@ -252,6 +263,8 @@ class Lowering {
       case ExprKind::IntConst:
       case ExprKind::TimeConst:
         return e->value;
+      case ExprKind::StringConst:
+        return string_codes_.at(e->name);
       case ExprKind::Neg:
         if (e->args[0]->kind == ExprKind::IntConst) return -e->args[0]->value;
         break;
@@ -381,6 +394,8 @@ class Lowering {
       }
       case ExprKind::Index:
         return index(*e);
+      case ExprKind::StringConst:
+        return make_int(string_codes_.at(e->name), e->where);
       default:
         break;
     }
@@ -452,6 +467,7 @@ class Lowering {
   }
 
   StmtPtr statement(const Stmt& s) {
+    check_strings(s);
     auto c = std::make_shared<Stmt>(s);
     if (c->value) c->value = expression(c->value);
     if (c->limit) c->limit = expression(c->limit);
@@ -543,8 +559,108 @@ class Lowering {
     return c;
   }
 
+  // ---------------------------------------------------------------------------------- STRING
+
+  /// Every STRING literal of the project gets a code (in sorted order, '' included); a STRING
+  /// variable holds a code. = and <> compare codes, which is exact for literals. A STRING input
+  /// can hold any string: the codes after the literals' stand for strings no literal spells,
+  /// one per STRING input, so that any pattern of equalities between inputs is a state.
+  void collect_strings() {
+    std::set<std::string> literals{""};
+    std::function<void(const ExprPtr&)> in_expr = [&](const ExprPtr& e) {
+      if (!e) return;
+      if (e->kind == ExprKind::StringConst) literals.insert(e->name);
+      for (const auto& a : e->args) in_expr(a);
+    };
+    std::function<void(const StmtList&)> in_body = [&](const StmtList& body) {
+      for (const auto& st : body) {
+        in_expr(st->value);
+        in_expr(st->limit);
+        in_expr(st->step);
+        for (const auto& c : st->conditions) in_expr(c);
+        for (const auto& a : st->arguments) in_expr(a.second);
+        for (const auto& b : st->bodies) in_body(b);
+        in_body(st->else_body);
+      }
+    };
+    for (const auto& t : project_.data_types)
+      for (const auto& f : t.fields) in_expr(f.declared_initial);
+    for (const auto& pou : project_.pous) {
+      for (const auto& v : pou.variables) in_expr(v.declared_initial);
+      in_body(pou.body);
+      for (const auto& a : pou.actions) in_body(a.body);
+      for (const auto& c : pou.charts)
+        for (const auto& t : c.transitions) in_expr(t.guard);
+    }
+    std::int64_t code = 0;
+    for (const auto& l : literals) string_codes_[l] = code++;
+  }
+
+  void give_strings_their_range() {
+    std::int64_t inputs = 0;
+    for (const auto& pou : project_.pous)
+      for (const auto& v : pou.variables)
+        if (v.type.is_string() &&
+            (v.direction == VarDirection::Input || v.address.starts_with("%I")))
+          ++inputs;
+    const auto hi = static_cast<std::int64_t>(string_codes_.size()) + inputs - 1;
+    for (auto& pou : project_.pous)
+      for (auto& v : pou.variables)
+        if (v.type.is_string()) v.type.hi = hi;
+  }
+
+  /// Whether `e` is a STRING: a literal or a STRING variable (before lowering).
+  bool is_string(const Expr& e) const {
+    if (e.kind == ExprKind::StringConst) return true;
+    std::string path;
+    if (e.kind == ExprKind::Name)
+      path = e.name;
+    else if (e.kind == ExprKind::Member)
+      path = e.name + "." + e.member;
+    else
+      return false;
+    std::string local, prefix;
+    const Scope* s = locate(to_upper(path), local, prefix);
+    return s && s->strings.count(local);
+  }
+
+  /// STRINGs are compared with = and <> and assigned, nothing else (1.7a).
+  void check_strings(const Expr& e) const {
+    const bool compare = e.kind == ExprKind::Eq || e.kind == ExprKind::Ne;
+    if (compare && e.args.size() == 2 && is_string(*e.args[0]) != is_string(*e.args[1]))
+      fail(e.where, "comparison of a STRING with a value that is not one in '" + to_st(e) + "'");
+    if (!compare)
+      for (const auto& a : e.args)
+        if (a && is_string(*a))
+          fail(a->where, "unsupported: '" + to_st(e) +
+                             "' uses a STRING (sfcv compares STRINGs with = and <> and assigns "
+                             "them, nothing else)");
+    for (const auto& a : e.args)
+      if (a) check_strings(*a);
+  }
+  void check_strings(const Stmt& s) const {
+    for (const auto* e : {&s.value, &s.limit, &s.step})
+      if (*e) check_strings(**e);
+    for (const auto& c : s.conditions) check_strings(*c);
+    for (const auto& a : s.arguments) check_strings(*a.second);
+    if (s.kind == StmtKind::Case && s.value && is_string(*s.value))
+      fail(s.where, "unsupported: CASE on a STRING");
+    if (s.kind == StmtKind::Assign && s.value && s.target_indices.empty()) {
+      const auto dot = s.target.rfind('.');
+      const ExprPtr target = dot == std::string::npos
+                                 ? make_name(s.target)
+                                 : make_member(s.target.substr(0, dot), s.target.substr(dot + 1));
+      const bool to_string = is_string(*target), of_string = is_string(*s.value);
+      if (to_string != of_string)
+        fail(s.where, std::string(of_string ? "assignment of a STRING to '"
+                                            : "assignment of a value that is no STRING to '") +
+                          s.target + "'" + (to_string ? ", a STRING" : ""));
+    }
+  }
+
   Project& project_;
   Diagnostics& diags_;
+  std::map<std::string, std::int64_t> string_codes_;
   std::map<std::string, const DataType*> types_;
   std::map<std::string, std::int64_t> enumerators_, qualified_;
   std::set<std::string> ambiguous_;

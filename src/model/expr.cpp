@@ -125,6 +125,22 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
         s += (i ? ", " : "") + (i < e.arg_names.size() ? e.arg_names[i] + " := " : "") +
              print(*e.args[i], 0, false);
       return s + ")";
+    case ExprKind::StringConst: {
+      std::string q = "'";
+      for (const char ch : e.name) {
+        if (ch == '\n')
+          q += "$N";
+        else if (ch == '\r')
+          q += "$R";
+        else if (ch == '\t')
+          q += "$T";
+        else if (ch == '\f')
+          q += "$P";
+        else
+          q += (ch == '\'' || ch == '$') ? std::string("$") + ch : std::string(1, ch);
+      }
+      return q + "'";
+    }
     case ExprKind::Index: {
       std::string indices;
       for (std::size_t i = 0; i < e.args.size(); ++i)
@@ -216,6 +232,11 @@ ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocatio
   set_height(*e);
   return e;
 }
+ExprPtr make_string(std::string characters, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::StringConst, std::move(where)));
+  e->name = std::move(characters);
+  return e;
+}
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
   e->value = t1_ms;
@@ -229,6 +250,7 @@ bool equal(const Expr& a, const Expr& b) {
   if (a.kind != b.kind || a.value != b.value || a.value2 != b.value2 ||
       a.args.size() != b.args.size())
     return false;
+  if (a.kind == ExprKind::StringConst) return a.name == b.name;
   if (a.kind == ExprKind::Name || a.kind == ExprKind::Member || a.kind == ExprKind::Call ||
       a.kind == ExprKind::Index) {
     // Identifiers are case-insensitive.

@@ -42,6 +42,9 @@ enum class ExprKind {
   /// is the path with one `[*]` where args (one per dimension) go: `a[i].x` is ("a[*].x", i).
   /// Constant indices are part of names (`a[3]`), so after lowering no Index remains.
   Index,
+  /// A STRING literal, `name` its characters ('$' escapes decoded), before
+  /// model::lower_data_types replaces it by its code (docs/semantics.md 1.7a).
+  StringConst,
 };
 
 struct Expr;
@@ -78,6 +81,7 @@ ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
                          std::vector<ExprPtr> args, SourceLocation where = {});
 /// `path` holds one "[*]", replaced by the indices when printed: make_index("a[*]", {i}).
 ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocation where = {});
+ExprPtr make_string(std::string characters, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).

@@ -47,6 +47,10 @@ Type Type::function_block(StandardFb fb) {
   return t;
 }
 
+Type Type::string() {
+  return integer("STRING", 0, 0);
+}
+
 std::optional<Type> elementary_type(std::string_view name) {
   const std::string n = upper(name);
   if (n == "BOOL") return Type::boolean();

@@ -24,6 +24,10 @@ struct Type {
   static Type time();
   static Type integer(std::string name, std::int64_t lo, std::int64_t hi);
   static Type function_block(StandardFb fb);
+  /// STRING, as read: model::lower_data_types gives it the range of the project's string
+  /// codes (docs/semantics.md 1.7a).
+  static Type string();
+  bool is_string() const { return kind == TypeKind::Int && name == "STRING"; }
 
   bool operator==(const Type&) const = default;
 };

@@ -142,6 +142,9 @@ Ty Validator::type_of(const Expr& e, const SourceLocation& fallback) {
       return e.value == 0 || e.value == 1 ? Ty::Bit : Ty::Int;
     case ExprKind::TimeConst:
       return Ty::Time;
+    case ExprKind::StringConst:
+      error(here, "unsupported: STRING literal in '" + op() + "'");
+      return Ty::Unknown;
     case ExprKind::Index:
       // The readers lower arrays (model::lower_data_types); an index left is not modelled.
       error(here, "unsupported: array index in '" + op() + "'");

@@ -221,8 +221,9 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
     case ExprKind::TimeConst:
       type = VT::Int;
       return constant(e.value);
-    case ExprKind::Index:  // lowered by the readers (model::lower_data_types)
-      error(e.where, "unsupported: array index in '" + model::to_st(e) + "'");
+    case ExprKind::StringConst:  // lowered by the readers (model::lower_data_types)
+    case ExprKind::Index:
+      error(e.where, "unsupported: '" + model::to_st(e) + "' (not lowered)");
       type = VT::Int;
       return constant(0);
     case ExprKind::Name: {

@@ -109,6 +109,48 @@ TEST(DataTypes, AVariableIndexOutOfBoundsIsARangeError) {
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
+// STRINGs are compared and assigned: each literal is a code, and each STRING input may also be
+// a string no literal spells, so two inputs can differ from every literal and from each other.
+TEST(DataTypes, StringsAreComparedAndAssigned) {
+  const auto file = write_temp(
+      "PROGRAM P\n"
+      "VAR_INPUT cmd : STRING; other : STRING(20); END_VAR\n"
+      "VAR mode : STRING := 'idle'; last : STRING; run, same, odd : BOOL; END_VAR\n"
+      "IF cmd = 'start' THEN mode := 'running'; ELSIF cmd = 'stop' THEN mode := 'idle'; END_IF;\n"
+      "last := cmd;\n"
+      "same := last = other;\n"
+      "odd := last <> other AND last <> 'start' AND last <> 'stop' AND other <> 'start'\n"
+      "  AND other <> 'stop' AND last <> '' AND other <> '' AND last <> 'idle'\n"
+      "  AND other <> 'idle' AND last <> 'running' AND other <> 'running';\n"
+      "run := mode <> 'idle';\n"
+      "END_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    // Literals in sorted order: '' 0, 'idle' 1, 'running' 2, 'start' 3, 'stop' 4.
+    auto r = run_sfcv(check(file, engine,
+                            "--checks none --ctl 'AG (mode = 1 | mode = 2)' "
+                            "--ctl 'AG (run <-> mode = 2)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    for (const char* reached : {"run", "same", "odd"}) {
+      r = run_sfcv(check(file, engine, std::string("--checks none --ctl 'AG !") + reached + "'"));
+      EXPECT_EQ(r.exit_code, 1) << reached << r.out << r.err;
+    }
+  }
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"i := s;", ":3:1: error: assignment of a STRING to 'i'"},
+           {"s := 1;", ":3:1: error: assignment of a value that is no STRING to 's', a STRING"},
+           {"b := s < 'a';", ":3:6: error: unsupported: 's < 'a'' uses a STRING"},
+           {"b := s = 1;", ":3:8: error: comparison of a STRING with a value that is not one"}}) {
+    const auto bad = write_temp(
+        "PROGRAM P\nVAR s : STRING; i : INT; b : BOOL; END_VAR\n" + text + "\nEND_PROGRAM\n",
+        ".st");
+    const auto r = run_sfcv("check " + bad + " --checks none");
+    EXPECT_EQ(r.exit_code, 2) << text << r.out << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+}
+
 // A CODESYS/TwinCAT-like export: <dataTypes> with an enumeration and a structure, an <array>
 // variable with an <arrayValue>, a <structValue> initial value.
 const std::string kPlcopen = R"(<?xml version="1.0" encoding="utf-8"?>

@@ -304,9 +304,10 @@ TEST(IecText, SyntaxErrorsAreLocated) {
             "2:34: expected an expression, found ';'\n");
   EXPECT_EQ(errors("PROGRAM p\n  ACTION a:\n    JMP lbl;\n  END_ACTION\nEND_PROGRAM\n"),
             "3:5: unsupported: JMP statement\n");
-  EXPECT_EQ(errors("PROGRAM p\n  VAR r : REAL; END_VAR\n  INITIAL_STEP a: END_STEP\nEND_PROGRAM\n"),
-            "2:11: unsupported type REAL "
-            "(sfcv models BOOL, integers, TIME, enumerations, arrays, structures and FBs)\n");
+  EXPECT_EQ(
+      errors("PROGRAM p\n  VAR r : REAL; END_VAR\n  INITIAL_STEP a: END_STEP\nEND_PROGRAM\n"),
+      "2:11: unsupported type REAL "
+      "(sfcv models BOOL, integers, TIME, STRING, enumerations, arrays, structures and FBs)\n");
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: END_STEP\n"),
             "3:1: expected END_PROGRAM, found end of text\n");
   EXPECT_EQ(

@@ -949,7 +949,8 @@ TEST(PlcopenXml, VariablesDirectionsTypesAndInitialValues) {
     <localVars><variable name="t"><type><TIME/></type><initialValue><simpleValue value="T#1m30s"/></initialValue></variable>
       <variable name="r"><type><subrangeSigned><range lower="0" upper="10"/><baseType><INT/></baseType></subrangeSigned></type><initialValue><simpleValue value="5"/></initialValue></variable>
       <variable name="f"><type><REAL/></type></variable>
-      <variable name="s"><type><string/></type></variable>
+      <variable name="s"><type><wstring/></type></variable>
+      <variable name="str"><type><string length="20"/></type></variable>
       <variable name="u"><type><derived name="MyFb"/></type></variable>
       <variable name="tp"><type><derived name="TP"/></type></variable>
       <variable name="a"><type><BOOL/></type></variable></localVars>
@@ -973,6 +974,9 @@ TEST(PlcopenXml, VariablesDirectionsTypesAndInitialValues) {
   EXPECT_EQ(pou.find_variable("r")->initial, 5);
   EXPECT_EQ(pou.find_variable("tp")->type.fb, model::StandardFb::TP);
   EXPECT_EQ(pou.find_variable("e")->direction, model::VarDirection::External);
+  // STRING is modelled (its range is set when the project's types are lowered, 1.7a).
+  ASSERT_NE(pou.find_variable("str"), nullptr);
+  EXPECT_TRUE(pou.find_variable("str")->type.is_string());
   for (const char* ignored : {"f", "s", "u"}) {
     EXPECT_EQ(pou.find_variable(ignored), nullptr) << ignored;
     EXPECT_TRUE(has_message(r, Severity::Warning,

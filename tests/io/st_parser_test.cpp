@@ -139,7 +139,8 @@ TEST(StExpression, ErrorsAreLocated) {
   EXPECT_EQ(expr_error("a AND\n  (b OR )"), "2:9: expected an expression, found ')'");
   EXPECT_EQ(expr_error("x > y[i][j]"), "1:9: unsupported: a second non-constant index in 'y'");
   EXPECT_EQ(expr_error("x > 1.5"), "1:5: unsupported: literal 1.5");
-  EXPECT_EQ(expr_error("s = 'abc'"), "1:5: unsupported: literal 'abc'");
+  EXPECT_EQ(expr_error("s = \"abc\""), "1:5: unsupported: WSTRING literal \"abc\"");
+  EXPECT_EQ(expr_error("s = 'a$Qb'"), "1:5: malformed '$' escape in the string 'a$Qb'");
   EXPECT_EQ(expr_error("p^"), "1:2: unsupported: pointer dereference of 'p'");
   EXPECT_EQ(expr_error("a ** 2"), "1:3: unsupported: operator '**'");
   EXPECT_EQ(expr_error("a b"), "1:3: expected end of text, found 'b'");
@@ -377,14 +378,14 @@ TEST(StVarSections, UnsupportedAndMalformedDeclarations) {
   };
   EXPECT_EQ(err("VAR r : REAL; END_VAR"),
             "1:9: unsupported type REAL "
-            "(sfcv models BOOL, integers, TIME, enumerations, arrays, structures and FBs)");
+            "(sfcv models BOOL, integers, TIME, STRING, enumerations, arrays, structures and FBs)");
   // Any other type name is an instance of a user function block (resolved by the semantics).
   EXPECT_EQ(err("VAR\n  s : MyType; END_VAR"), "<no error>");
   EXPECT_EQ(err("VAR a : ARRAY[1..2] OF BOOL; END_VAR"), "<no error>");
   EXPECT_EQ(err("VAR a : ARRAY[2..1] OF BOOL; END_VAR"), "1:9: array bounds [2..1] are empty");
   EXPECT_EQ(err("VAR p : POINTER TO INT; END_VAR"),
             "1:9: unsupported type POINTER "
-            "(sfcv models BOOL, integers, TIME, enumerations, arrays, structures and FBs)");
+            "(sfcv models BOOL, integers, TIME, STRING, enumerations, arrays, structures and FBs)");
   EXPECT_EQ(err("VAR b : BOOL := T#1s; END_VAR"), "1:17: initial value does not match type BOOL");
   EXPECT_EQ(err("VAR n : INT(0..10) := 11; END_VAR"),
             "1:23: initial value 11 is outside INT(0..10)");
