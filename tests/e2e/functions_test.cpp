@@ -37,21 +37,18 @@ const std::string kPumpText =
     "  high := level >= 4;\n"
     "END_PROGRAM\n";
 
-std::string check(const std::string& file, const std::string& engine, const std::string& props) {
-  return "check " + file + " --engine " + engine + " " + props + " --trace none --timeout 60";
-}
-
 // The pump runs only with the door closed (RETURN) and a low level (Permit calls Cap); it does
 // run (a model that lost the function's result would claim `AG !pump`).
 TEST(FunctionsE2E, PropertiesHoldAndFailThroughAFunctionsResult) {
   const auto file = write_temp(kPumpText, ".st");
   for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
     SCOPED_TRACE(engine);
-    auto r = run_sfcv(check(file, engine, "--ctl 'AG !pump'"));
+    auto r = run_sfcv(check_command(file, engine, "--ctl 'AG !pump'"));
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
     if (std::string(engine) == "bmc") continue;  // BMC cannot prove
-    r = run_sfcv(check(file, engine, "--ctl 'AG (pump -> !open)' --ctl 'AG (pump -> !high)'"));
+    r = run_sfcv(
+        check_command(file, engine, "--ctl 'AG (pump -> !open)' --ctl 'AG (pump -> !high)'"));
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   }
 }
@@ -68,9 +65,9 @@ TEST(FunctionsE2E, TemporariesStartFreshAtEveryCall) {
       "  y := Next() + Next();\n  z := Never(a);\nEND_PROGRAM\n",
       ".st");
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    auto r = run_sfcv(check(file, engine, "--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'"));
+    auto r = run_sfcv(check_command(file, engine, "--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'"));
     EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
-    r = run_sfcv(check(file, engine, "--ctl 'AG y = 0'"));
+    r = run_sfcv(check_command(file, engine, "--ctl 'AG y = 0'"));
     EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
   }
 }
@@ -85,7 +82,7 @@ TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
       "  y := F(BOOL_TO_INT(a));\nEND_PROGRAM\n",
       ".st");
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    const auto r = run_sfcv(check(file, engine, "--ctl 'AG y >= 0'"));
+    const auto r = run_sfcv(check_command(file, engine, "--ctl 'AG y >= 0'"));
     EXPECT_EQ(r.exit_code, 2) << engine << r.out << r.err;
     EXPECT_NE(r.err.find(":7:22: error: function 'F' calls itself (F -> G -> F): recursion"),
               std::string::npos)
@@ -104,7 +101,7 @@ TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
                                    "  VAR_OUTPUT y : INT; END_VAR\n  y := F0(BOOL_TO_INT(a));\n"
                                    "END_PROGRAM\n",
                                ".st");
-  const auto r = run_sfcv(check(deep, "explicit", "--ctl 'AG y >= 0'"));
+  const auto r = run_sfcv(check_command(deep, "explicit", "--ctl 'AG y >= 0'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("call of function 'F32' nested deeper than 32 function calls"),
             std::string::npos)
@@ -119,7 +116,7 @@ TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
       "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; END_VAR\n"
       "  y := F(BOOL_TO_INT(a));\nEND_PROGRAM\n",
       ".st");
-  auto r = run_sfcv(check(file, "explicit", "--ctl 'AG y >= 0'"));
+  auto r = run_sfcv(check_command(file, "explicit", "--ctl 'AG y >= 0'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find(":3:14: error: VAR_IN_OUT 'z' of function F is not modelled"),
             std::string::npos)
@@ -131,7 +128,7 @@ TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
       "PROGRAM Main\n  VAR_OUTPUT y : INT; END_VAR\n"
       "  y := F(1, 2) + F(q := 1);\n  y := F(x := TRUE);\nEND_PROGRAM\n",
       ".st");
-  r = run_sfcv(check(file, "explicit", "--ctl 'AG y >= 0'"));
+  r = run_sfcv(check_command(file, "explicit", "--ctl 'AG y >= 0'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find(":7:8: error: 'F(1, 2)': function F has 1 input(s), the call gives 2"),
             std::string::npos)
@@ -202,10 +199,10 @@ TEST(FunctionsE2E, PlcopenFunctionGuardsATransition) {
       ".xml");
   for (const char* engine : {"explicit", "bdd", "ic3", "bmc"}) {
     SCOPED_TRACE(engine);
-    auto r = run_sfcv(check(reaches, engine, "--ctl 'AG !Run'"));
+    auto r = run_sfcv(check_command(reaches, engine, "--ctl 'AG !Run'"));
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
     if (std::string(engine) == "bmc") continue;
-    r = run_sfcv(check(never, engine, "--ctl 'AG !Run' --ctl 'AG !motor'"));
+    r = run_sfcv(check_command(never, engine, "--ctl 'AG !Run' --ctl 'AG !motor'"));
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   }
 }
@@ -242,18 +239,18 @@ TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
       write_temp(kPlcopenHeader + functions() + fbd_main("", result) + kPlcopenFooter, ".xml");
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
     SCOPED_TRACE(engine);
-    auto r = run_sfcv(check(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
+    auto r = run_sfcv(check_command(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_sfcv(check(both, engine, "--ctl 'AG !motor'"));
+    r = run_sfcv(check_command(both, engine, "--ctl 'AG !motor'"));
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-    r = run_sfcv(check(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
+    r = run_sfcv(check_command(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   }
   const auto unused =
       write_temp(kPlcopenHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") +
                      kPlcopenFooter,
                  ".xml");
-  const auto r = run_sfcv(check(unused, "explicit", "--ctl 'AG !motor'"));
+  const auto r = run_sfcv(check_command(unused, "explicit", "--ctl 'AG !motor'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("unsupported: the result of function Both is not used"), std::string::npos)
       << r.err;
@@ -268,7 +265,7 @@ TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
       "<expression>Both</expression></outVariable></FBD>";
   const auto file = write_temp(
       kPlcopenHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kPlcopenFooter, ".xml");
-  const auto r = run_sfcv(check(file, "explicit", "--ctl 'AG !Run'"));
+  const auto r = run_sfcv(check_command(file, "explicit", "--ctl 'AG !Run'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("FUNCTION bodies in FBD are not modelled (only ST)"), std::string::npos)
       << r.err;

@@ -97,5 +97,51 @@ TEST(QueryBddCli, RefusesWhatItCannotDo) {
   EXPECT_EQ(r.out.find("holds"), std::string::npos) << r.out;
 }
 
+/// A chart whose cycle reads `inputs` free Boolean inputs (their parity steers the steps) and
+/// counts its cycles up to `top`: 2^inputs input valuations per situation for the explicit
+/// engine, a few BDD operations per layer for the symbolic one.
+std::string parity_counter(int inputs, int top) {
+  std::string names, parity;
+  for (int k = 0; k < inputs; ++k) {
+    names += (k ? ", i" : "i") + std::to_string(k);
+    parity += (k ? " XOR i" : "i") + std::to_string(k);
+  }
+  const auto bound = std::to_string(top);
+  return write_temp("PROGRAM Parity\n  VAR_INPUT " + names +
+                        " : BOOL; END_VAR\n  VAR x : BOOL; n : INT(0.." + bound +
+                        "); END_VAR\n"
+                        "  INITIAL_STEP s0: a(N); END_STEP\n  STEP s1: a(N); END_STEP\n"
+                        "  TRANSITION FROM s0 TO s1 := x; END_TRANSITION\n"
+                        "  TRANSITION FROM s1 TO s0 := NOT x; END_TRANSITION\n"
+                        "  ACTION a: x := " +
+                        parity + "; IF n < " + bound + " THEN n := n + 1; END_IF; END_ACTION\n" +
+                        "END_PROGRAM\n",
+                    ".st");
+}
+
+// Issue 15: where the explicit engine stalls, auto hands the query to the BDD engine, which
+// prints what it prints alone: a situation wider than the probe's input valuations, and under
+// --timeout a probe that used its share of the time (0.2 s a situation here, 601 situations).
+TEST(QueryBddCli, AutoHandsAStalledExplicitEngineToTheBddEngine) {
+  const std::string queries = " 'Emis(s1 & n = 300) = {}' 'Emis(n > 300) = {}' --assert";
+  const auto wide = quoted(parity_counter(24, 300));
+  const auto b = run_sfcv("query " + wide + queries + " --engine bdd");
+  ASSERT_EQ(b.exit_code, 1) << b.out << b.err;
+  auto a = run_sfcv("query " + wide + queries + " --engine auto");
+  EXPECT_EQ(a.exit_code, 1) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(a.err.find("input valuations: switching to the bdd engine"), std::string::npos)
+      << a.err;
+  const auto slow = quoted(parity_counter(14, 300));
+  a = run_sfcv("query " + slow + queries + " --engine auto --timeout 6");
+  EXPECT_EQ(a.exit_code, 1) << a.err;
+  EXPECT_EQ(a.out, run_sfcv("query " + slow + queries + " --engine bdd").out);
+  EXPECT_NE(a.err.find("used its share of the time"), std::string::npos) << a.err;
+  // The user's state bound still ends the run in the explicit engine: unknown, not a hand-over.
+  a = run_sfcv("query " + slow + queries + " --engine auto --max-states 2");
+  EXPECT_EQ(a.exit_code, 3) << a.out << a.err;
+  EXPECT_EQ(a.out.find("holds"), std::string::npos) << a.out;
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -48,9 +48,9 @@ const std::string kByCall = kCylinder +
                             "  IF go OR reset THEN cyl.ACT_Extend(SFCReset := reset); END_IF;\n"
                             "END_PROGRAM\n";
 
+/// The properties alone: the standard checks are not what these tests are about.
 std::string check(const std::string& file, const std::string& engine, const std::string& props) {
-  return "check " + file + " --engine " + engine + " --checks none " + props +
-         " --trace none --timeout 60";
+  return check_command(file, engine, "--checks none " + props);
 }
 
 // The chart evolves only in the cycles where the step calls it, keeps its step when it is not

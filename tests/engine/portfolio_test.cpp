@@ -59,8 +59,12 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
                                   "EF (" + gen.atom() + " & " + gen.atom() + ")",
                                   "AF " + gen.atom(), gen.formula(3)};
   auto task = test::task_for(s.project, *s.ts, ctl, {});
-  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
-                 logic::StandardCheck::Instability, logic::StandardCheck::GlobalDeadlock};
+  // Reentry, local-deadlock and initial-return too: the engines fill in their formula once
+  // decided, which the race must still read as the answer to the question (issue 15).
+  task.checks = {logic::StandardCheck::Reachable,    logic::StandardCheck::DeadTransitions,
+                 logic::StandardCheck::Instability,  logic::StandardCheck::GlobalDeadlock,
+                 logic::StandardCheck::Reentry,      logic::StandardCheck::LocalDeadlock,
+                 logic::StandardCheck::InitialReturn};
   const auto reference = make_explicit_model_checker()->check(task);
   ASSERT_TRUE(reference.complete);
   const auto symbolic = make_bdd_model_checker()->check(task);
@@ -180,6 +184,54 @@ TEST(Portfolio, TheDeadlineBoundsTheRace) {
   EXPECT_FALSE(report.complete);
   EXPECT_EQ(report.limit, "time");
   EXPECT_EQ(report.results[0].verdict, Verdict::Unknown);
+}
+
+/// The checks only the BDD engine decides in the race (IC3 and BMC do not check them).
+std::vector<logic::StandardCheck> bdd_only_checks() {
+  return {logic::StandardCheck::Reentry, logic::StandardCheck::LocalDeadlock,
+          logic::StandardCheck::InitialReturn};
+}
+
+TEST(Portfolio, TheBddEnginesAnswerToACheckOnlyItDecidesCounts) {
+  // 40 branches on their own inputs, 2^40 + 1 states: the BDD engine decides these at once; it
+  // used to be dropped for IC3's "not checked" (and a violated local-deadlock exited 0).
+  const auto s = load_iec(bench::parallel_branches_iec(40, false));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {}, {});
+  task.checks = bdd_only_checks();
+  const auto symbolic = make_bdd_model_checker()->check(task);
+  PortfolioOptions options;
+  options.probe_states = 0;
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  ASSERT_EQ(report.results.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& r = report.results[i];
+    SCOPED_TRACE(r.name);
+    ASSERT_TRUE(definite(symbolic.results[i].verdict)) << symbolic.results[i].message;
+    EXPECT_EQ(r.verdict, symbolic.results[i].verdict) << r.message;
+    EXPECT_EQ(r.decided_by, "bdd");
+  }
+}
+
+TEST(Portfolio, AnUndecidedCheckNamesTheLimitOfAnEngineThatChecksIt) {
+  // The BDD engine runs out of time on the deep counter; IC3 and BMC do not check these: the
+  // answer is the BDD engine's unknown with its limit, not "not checked by the ic3 engine".
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {}, {});
+  task.checks = bdd_only_checks();
+  task.limits.set_timeout(1.0);
+  PortfolioOptions options;
+  options.probe_states = 0;
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  EXPECT_EQ(report.limit, "time");
+  ASSERT_EQ(report.results.size(), 3u);
+  for (const auto& r : report.results) {
+    SCOPED_TRACE(r.name);
+    EXPECT_EQ(r.verdict, Verdict::Unknown);
+    EXPECT_NE(r.message.find("time limit"), std::string::npos) << r.message;
+    EXPECT_EQ(r.message.find("not checked"), std::string::npos) << r.message;
+  }
 }
 
 TEST(Portfolio, AWinnerCancelsTheOtherEngine) {

@@ -123,6 +123,21 @@ void expect_agreement(const TransitionSystem& ts, std::uint32_t max_states, std:
   }
 }
 
+// expect_agreement on `text` in both time modes (discrete time adds the timers' elapsed
+// cycles to the state).
+void expect_agreement_in_both_time_modes(const char* text, std::uint32_t max_states,
+                                         std::uint64_t seed, std::uint32_t cycle_ms = 500) {
+  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
+    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
+    Iec61131Options options;
+    options.time = time;
+    options.cycle_ms = cycle_ms;
+    auto ts = system_for(text, options);
+    ASSERT_TRUE(ts);
+    expect_agreement(*ts, max_states, seed);
+  }
+}
+
 TEST(Iec61131Circuit, AgreesWithTheMachineOnRandomCharts) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SCOPED_TRACE("random chart seed " + std::to_string(seed));
@@ -261,15 +276,7 @@ END_PROGRAM
 )";
 
 TEST(Iec61131Circuit, AgreesOnTimersCountersAndData) {
-  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
-    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
-    Iec61131Options options;
-    options.time = time;
-    options.cycle_ms = 250;
-    auto ts = system_for(kTimersAndData, options);
-    ASSERT_TRUE(ts);
-    expect_agreement(*ts, 1500, 11);
-  }
+  expect_agreement_in_both_time_modes(kTimersAndData, 1500, 11, 250);
 }
 
 // Programs without steps (ST bodies that run every cycle), two programs in one cycle in
@@ -297,16 +304,10 @@ END_PROGRAM
 )";
 
 TEST(Iec61131Circuit, AgreesOnProgramsWithoutSteps) {
-  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
-    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
-    Iec61131Options options;
-    options.time = time;
-    options.cycle_ms = 500;
-    auto ts = system_for(kBodyPrograms, options);
-    ASSERT_TRUE(ts);
-    EXPECT_GT(ts->layout().fields().size(), 5u);
-    expect_agreement(*ts, 1500, 21);
-  }
+  const auto ts = system_for(kBodyPrograms);
+  ASSERT_TRUE(ts);
+  EXPECT_GT(ts->layout().fields().size(), 5u);
+  expect_agreement_in_both_time_modes(kBodyPrograms, 1500, 21);
 }
 
 // Loops with state- and input-dependent bounds, EXIT/CONTINUE/RETURN, the iteration bound as a
@@ -422,15 +423,7 @@ END_PROGRAM
 )";
 
 TEST(Iec61131Circuit, AgreesOnUserFunctionBlockInstances) {
-  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
-    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
-    Iec61131Options options;
-    options.time = time;
-    options.cycle_ms = 500;
-    auto ts = system_for(kInstances, options);
-    ASSERT_TRUE(ts);
-    expect_agreement(*ts, 3000, 31);
-  }
+  expect_agreement_in_both_time_modes(kInstances, 3000, 31);
 }
 
 // SFC actions of an instance run as units (issue 18, docs/semantics.md 1.3b): called from ST
@@ -484,15 +477,7 @@ END_PROGRAM
 )";
 
 TEST(Iec61131Circuit, AgreesOnSfcActionUnitsAndDivisionByConstants) {
-  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
-    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
-    Iec61131Options options;
-    options.time = time;
-    options.cycle_ms = 500;
-    auto ts = system_for(kUnits, options);
-    ASSERT_TRUE(ts);
-    expect_agreement(*ts, 3000, 53);
-  }
+  expect_agreement_in_both_time_modes(kUnits, 3000, 53);
 }
 
 // User FUNCTIONs in ST (issue 18): formal calls with defaulted inputs and positional ones,
@@ -566,15 +551,7 @@ END_PROGRAM
 )";
 
 TEST(Iec61131Circuit, AgreesOnUserFunctions) {
-  for (auto time : {TimeMode::Abstract, TimeMode::Discrete}) {
-    SCOPED_TRACE(time == TimeMode::Abstract ? "abstract time" : "discrete time");
-    Iec61131Options options;
-    options.time = time;
-    options.cycle_ms = 500;
-    auto ts = system_for(kFunctions, options);
-    ASSERT_TRUE(ts);
-    expect_agreement(*ts, 3000, 47);
-  }
+  expect_agreement_in_both_time_modes(kFunctions, 3000, 47);
 }
 
 }  // namespace

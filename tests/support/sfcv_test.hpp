@@ -76,6 +76,13 @@ inline std::string write_temp(const std::string& text, const std::string& suffix
   return p.string();
 }
 
+/// The arguments of `sfcv check FILE --engine ENGINE OPTIONS` without traces, within a minute
+/// (the engine-by-engine tests of a small chart).
+inline std::string check_command(const std::string& file, const std::string& engine,
+                                 const std::string& options) {
+  return "check " + file + " --engine " + engine + " " + options + " --trace none --timeout 60";
+}
+
 /// IEC 61131-3 text of a chain of `n` steps s0..s{n-1} in one loop, each crossed on input `go`
 /// (the long charts of the size and time-limit tests; 1,000,000 steps are 80 MB).
 inline std::string iec_chain_text(int n) {

@@ -34,8 +34,10 @@ bool decided(const PropertyResult& r) {
   return r.verdict == Verdict::Holds || r.verdict == Verdict::Violated;
 }
 
+/// A standard check is its name: an engine fills in its formula ("AG EF init") only once it
+/// has checked it, so a decided answer's formula need not be the question's.
 bool same_question(const PropertyResult& a, const PropertyResult& b) {
-  return a.name == b.name && a.check == b.check && a.formula == b.formula;
+  return a.name == b.name && a.check == b.check && (!a.check.empty() || a.formula == b.formula);
 }
 
 /// The result for `question` in `report` (engines answer in the task's order; the name check
@@ -50,12 +52,13 @@ const PropertyResult* find_result(const CheckReport& report, std::size_t index,
 }
 
 /// One engine of the race: its report (none when it stopped on a limit before reporting, or
-/// threw) and what it threw.
+/// threw), the limit that stopped it, and what it threw.
 struct Racer {
   std::string name;
   const ModelChecker* engine = nullptr;
   logic::CheckTask task;
   std::optional<CheckReport> report;
+  std::string stopped;
   std::exception_ptr error;
 };
 
@@ -203,9 +206,9 @@ class PortfolioModelChecker final : public ModelChecker {
                    Clock::time_point start) const {
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     std::vector<Racer> racers;
-    racers.push_back({"bdd", bdd_.get(), task, {}, {}});
-    racers.push_back({"ic3", ic3_.get(), task, {}, {}});
-    racers.push_back({"bmc", bmc_.get(), task, {}, {}});
+    racers.push_back({"bdd", bdd_.get(), task, {}, {}, {}});
+    racers.push_back({"ic3", ic3_.get(), task, {}, {}, {}});
+    racers.push_back({"bmc", bmc_.get(), task, {}, {}, {}});
     for (auto& r : racers) r.task.limits.cancel = cancel;
     // One progress line, one thread calling it: the BDD engine's (the SAT engines report none).
     racers[1].task.limits.progress = nullptr;
@@ -253,8 +256,9 @@ class PortfolioModelChecker final : public ModelChecker {
           try {
             r.report = r.engine->check(r.task);
             board->offer(*r.report, r.name);
-          } catch (const LimitReached&) {
+          } catch (const LimitReached& e) {
             // Out of budget (or cancelled) before a report: no answer from this engine.
+            r.stopped = e.what();
           } catch (...) {
             r.error = std::current_exception();
           }
@@ -292,11 +296,7 @@ class PortfolioModelChecker final : public ModelChecker {
         out.results.push_back(*w);
         continue;
       }
-      // Undecided: the first engine's own account (not checked by it, or why unknown).
-      const PropertyResult* best = nullptr;
-      for (const auto& r : racers)
-        if (!best && r.report) best = find_result(*r.report, i, questions[i]);
-      out.results.push_back(best ? *best : questions[i]);
+      out.results.push_back(undecided_account(racers, probe, i, questions[i]));
       unknown = unknown || out.results.back().verdict == Verdict::Unknown;
     }
     if (unknown) {
@@ -318,6 +318,33 @@ class PortfolioModelChecker final : public ModelChecker {
     }
     out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return out;
+  }
+
+  /// Why `question` is undecided, in the words of an engine that handles it (unknown, and the
+  /// limit that stopped it). The BDD engine and the explicit probe handle every question of
+  /// the race, IC3 and BMC only some: their "not checked by the ic3 engine" is the account
+  /// only when no engine handles the question.
+  static PropertyResult undecided_account(const std::vector<Racer>& racers,
+                                          const std::optional<CheckReport>& probe,
+                                          std::size_t index, const PropertyResult& question) {
+    const auto& bdd = racers[0];
+    std::vector<PropertyResult> accounts;
+    if (bdd.report) {
+      if (const auto* r = find_result(*bdd.report, index, question)) accounts.push_back(*r);
+    } else if (!bdd.stopped.empty()) {
+      PropertyResult r = question;
+      r.verdict = Verdict::Unknown;
+      r.message = bdd.stopped;
+      accounts.push_back(std::move(r));
+    }
+    if (probe)
+      if (const auto* r = find_result(*probe, index, question)) accounts.push_back(*r);
+    for (std::size_t k = 1; k < racers.size(); ++k)
+      if (racers[k].report)
+        if (const auto* r = find_result(*racers[k].report, index, question)) accounts.push_back(*r);
+    for (const auto& a : accounts)
+      if (a.verdict != Verdict::NotChecked) return a;
+    return accounts.empty() ? question : accounts.front();
   }
 
   PortfolioOptions options_;

@@ -1,6 +1,7 @@
 #include "engine/query/query_service.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <optional>
 
@@ -164,12 +165,14 @@ class SymbolicQueryService final : public QueryService {
   logic::QueryGraphSummary summary_;
 };
 
-std::unique_ptr<ExplicitQueryService> explore(const semantics::TransitionSystem& ts,
-                                              const model::Budget& budget,
-                                              std::uint64_t max_states) {
+std::unique_ptr<ExplicitQueryService> explore(
+    const semantics::TransitionSystem& ts, const model::Budget& budget, std::uint64_t max_states,
+    std::uint64_t max_valuations = 0,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt) {
   ExplorationOptions eo;
   eo.max_states = max_states;
-  eo.deadline = budget.deadline;
+  eo.max_valuations = max_valuations;
+  eo.deadline = deadline ? deadline : budget.deadline;
   eo.keep_conditions = true;
   eo.keep_fired = true;  // Tclear
   return std::make_unique<ExplicitQueryService>(build_reachable_situation_graph(ts, eo));
@@ -213,16 +216,34 @@ QueryServicePtr make_query_service(const semantics::TransitionSystem& ts,
     if (!circuit) {
       note("using the explicit engine (" + why + ")");
     } else {
-      // The one auto policy (engine/auto_policy.hpp), as for sfcv check.
+      // The one auto policy (engine/auto_policy.hpp), as for sfcv check: the explicit graph
+      // within the probe's states, input valuations per state and share of the time left; a
+      // chart past one of them goes to the BDD engine, which answers exactly or not at all.
       const auto probe = auto_probe(budget);
+      std::optional<std::chrono::steady_clock::time_point> probe_deadline;
+      if (budget.deadline)
+        probe_deadline =
+            std::chrono::steady_clock::now() +
+            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                std::chrono::duration<double>(budget.seconds_left() * kAutoProbeTimeShare));
       try {
-        explicit_service = explore(ts, budget, probe.max_states);
+        explicit_service =
+            explore(ts, budget, probe.max_states, kAutoProbeValuations, probe_deadline);
         const auto& g = explicit_service->situation_graph();
-        if (g.complete() || probe.user_bound || g.limit_reached() != "states") {
+        const auto limit = g.limit_reached();
+        const bool too_many = limit == to_string(Limit::States) && !probe.user_bound;
+        const bool too_wide = limit == to_string(Limit::Valuations);
+        // Its share spent with time left in the run (the run's own deadline: unknown).
+        const bool too_slow = limit == to_string(Limit::Time) && !budget.expired();
+        if (g.complete() || !(too_many || too_wide || too_slow)) {
           note("using the explicit engine");
         } else {
-          note("more than " + std::to_string(kAutoProbeStates) +
-               " situations: switching to the bdd engine");
+          note((too_many   ? "more than " + std::to_string(kAutoProbeStates) + " situations"
+                : too_wide ? "a situation has more than " + std::to_string(kAutoProbeValuations) +
+                                 " input valuations"
+                           : "the explicit engine used its share of the time (" +
+                                 std::to_string(g.num_states()) + " situations)") +
+               ": switching to the bdd engine");
           explicit_service.reset();
           use_bdd = true;
         }
