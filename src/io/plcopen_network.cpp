@@ -198,7 +198,14 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string type = block.attribute("typeName").value();
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
-  if (model::iequals(pin, "ENO")) return fail(block, "unsupported: ENO output of block " + type);
+  if (model::iequals(pin, "ENO")) {
+    // A standard FB instance's ENO is its EN (they raise no error). A user FB may clear ENO in
+    // its body, and a function with EN is not modelled: both refused.
+    if (instance.empty() || model::standard_fb(type) == model::StandardFb::None)
+      return fail(block, "unsupported: ENO output of block " + type);
+    if (!call_block(block)) return nullptr;
+    return enable_of(block);
+  }
   bool out_negated = false;
   std::string out_pin = pin;
   for (auto o : outputs) {
@@ -322,13 +329,15 @@ bool Network::call_block(pugi::xml_node block) {
   called_.insert(id);
   const std::string type = block.attribute("typeName").value();
   std::vector<std::pair<std::string, ExprPtr>> args;
+  ExprPtr enable;  // EN: the instance is called only when it is TRUE (IEC 61131-3 2.5.1.2)
   for (auto v : children(child(block, "inputVariables"), "variable")) {
     const std::string f = v.attribute("formalParameter").value();
     const auto cpi = child(v, "connectionPointIn");
     if (!cpi || !child(cpi, "connection")) continue;  // unconnected input keeps its value
     if (model::iequals(f, "EN")) {
-      fail(v, "unsupported: EN input of block " + type);
-      return false;
+      enable = enable_of(block);
+      if (!enable) return false;
+      continue;
     }
     if (const auto edge = std::string(v.attribute("edge").value());
         !edge.empty() && edge != "none") {
@@ -344,9 +353,30 @@ bool Network::call_block(pugi::xml_node block) {
     fail(block, "unsupported: in/out parameters of block " + type);
     return false;
   }
-  calls_.push_back(model::make_fb_call(block.attribute("instanceName").value(), std::move(args),
-                                       ctx_.where(block)));
+  auto call = model::make_fb_call(block.attribute("instanceName").value(), std::move(args),
+                                  ctx_.where(block));
+  if (!enable) {
+    calls_.push_back(std::move(call));
+    return true;
+  }
+  // With EN FALSE the instance is not called: its outputs keep their values.
+  auto guarded = std::make_shared<model::Stmt>();
+  guarded->kind = model::StmtKind::If;
+  guarded->where = call->where;
+  guarded->conditions.push_back(std::move(enable));
+  guarded->bodies.push_back({std::move(call)});
+  calls_.push_back(std::move(guarded));
   return true;
+}
+
+ExprPtr Network::enable_of(pugi::xml_node block) {
+  for (auto v : children(child(block, "inputVariables"), "variable")) {
+    const auto cpi = child(v, "connectionPointIn");
+    if (model::iequals(v.attribute("formalParameter").value(), "EN") && cpi &&
+        child(cpi, "connection"))
+      return negate_if(attribute_true(v, "negated"), input(cpi));
+  }
+  return model::make_bool(true, ctx_.where(block));
 }
 
 ExprPtr Network::output_named(std::string_view name, bool& found) {

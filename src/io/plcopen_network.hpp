@@ -57,6 +57,8 @@ class Network {
   model::ExprPtr block_value(pugi::xml_node block, const std::string& pin);
   model::ExprPtr text_value(pugi::xml_node holder, pugi::xml_node text_element);
   bool call_block(pugi::xml_node block);
+  /// The block's EN input (TRUE when not connected).
+  model::ExprPtr enable_of(pugi::xml_node block);
   /// `edge` ("rising"/"falling") of `value`, through a new R_TRIG/F_TRIG instance called first.
   model::ExprPtr edge_of(pugi::xml_node node, const std::string& edge, model::ExprPtr value);
   model::ExprPtr fail(pugi::xml_node node, std::string message);

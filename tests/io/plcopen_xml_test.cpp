@@ -792,6 +792,40 @@ TEST(PlcopenXml, LdActionBodyBecomesStatements) {
             "T1(IN := NOT x, PT := T#500ms);\nIF T1.Q THEN\n  x := TRUE;\nEND_IF;\ny := NOT x;\n");
 }
 
+// EN of a standard FB instance in FBD/LD: the instance is called only while EN is TRUE (its
+// outputs keep their values otherwise), and its ENO is EN. A function's EN stays refused.
+TEST(PlcopenXml, EnAndEnoOfStandardFunctionBlockInstances) {
+  const auto actions = R"(<actions><action name="COUNT"><body><LD>
+    <leftPowerRail localId="1"><connectionPointOut/></leftPowerRail>
+    <contact localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>x</variable></contact>
+    <contact localId="8"><connectionPointIn><connection refLocalId="1"/></connectionPointIn><variable>a</variable></contact>
+    <block localId="3" typeName="CTU" instanceName="C1"><inputVariables>
+      <variable formalParameter="EN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+      <variable formalParameter="CU"><connectionPointIn><connection refLocalId="8"/></connectionPointIn></variable>
+      <variable formalParameter="R"><connectionPointIn><connection refLocalId="9"/></connectionPointIn></variable>
+      <variable formalParameter="PV"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable>
+    </inputVariables><inOutVariables/><outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="Q"><connectionPointOut/></variable></outputVariables></block>
+    <inVariable localId="4"><connectionPointOut/><expression>3</expression></inVariable>
+    <inVariable localId="9"><connectionPointOut/><expression>FALSE</expression></inVariable>
+    <coil localId="5"><connectionPointIn><connection refLocalId="3" formalParameter="ENO"/></connectionPointIn><variable>y</variable></coil>
+    <coil localId="6"><connectionPointIn><connection refLocalId="3" formalParameter="Q"/></connectionPointIn><variable>z</variable></coil>
+    <rightPowerRail localId="7"><connectionPointIn><connection refLocalId="5"/></connectionPointIn></rightPowerRail>
+    </LD></body></action></actions>)";
+  const auto vars = std::string(kVarA) + kOutputs +
+                    "<localVars><variable name=\"C1\"><type><derived "
+                    "name=\"CTU\"/></type></variable><variable name=\"z\"><type><BOOL/></type>"
+                    "</variable></localVars>";
+  const auto blocks = action_block(20, 3, R"(<action><reference name="COUNT"/></action>)");
+  const auto r =
+      load_plcopen_xml(project(two_steps(inline_st("a"), blocks), vars, actions), "en.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* act = r.project->pous[0].find_action("COUNT");
+  ASSERT_NE(act, nullptr);
+  ASSERT_FALSE(act->body_unsupported) << act->unsupported_reason;
+  EXPECT_EQ(model::to_st(act->body),
+            "IF x THEN\n  C1(CU := a, R := FALSE, PV := 3);\nEND_IF;\ny := x;\nz := C1.Q;\n");
+}
+
 TEST(PlcopenXml, ActionWithAnSfcBodyIsANestedChart) {
   const auto actions =
       std::string("<actions><action name=\"SUB\"><body><SFC>") + step(0, "Init", -1, true) +
