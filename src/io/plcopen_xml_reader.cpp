@@ -19,6 +19,7 @@
 #include "io/st_parser.hpp"
 #include "model/data_types.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 #include "model/types.hpp"
 #include "model/validate.hpp"
 
@@ -105,8 +106,13 @@ TypeRead read_type(pugi::xml_node t, const std::set<std::string>& user_types) {
 
 /// An <initialValue>'s content as the ST parser gives initial values: an expression, an array
 /// (Call "[", repetitions expanded) or a structure (formal Call "(").
-model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value) {
+model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value, int depth = 0) {
   const std::string k(local_name(value));
+  if (depth > model::kMaxNesting) {
+    ctx.error(value,
+              "initial value nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
+    return nullptr;
+  }
   if (k == "simpleValue") {
     model::Diagnostics problems;
     auto e =
@@ -119,12 +125,12 @@ model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value) {
     for (auto v : children(value, "value")) {
       const auto inner = element_children(v);
       if (inner.empty()) continue;
-      auto e = read_initial_value(ctx, inner.front());
+      auto e = read_initial_value(ctx, inner.front(), depth + 1);
       if (!e) return nullptr;
       const auto repeat = parse_int_literal(v.attribute("repetitionValue").value());
       const std::int64_t n = repeat ? *repeat : 1;
-      if (n < 0 || n > 100000) {
-        ctx.error(v, "repetition count out of range");
+      if (n < 0 || n > 100000 - static_cast<std::int64_t>(elements.size())) {
+        ctx.error(v, "repetition count out of range (at most 100000 elements)");
         return nullptr;
       }
       for (std::int64_t i = 0; i < n; ++i) elements.push_back(e);
@@ -137,7 +143,7 @@ model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value) {
     for (auto v : children(value, "value")) {
       const auto inner = element_children(v);
       if (inner.empty()) continue;
-      auto e = read_initial_value(ctx, inner.front());
+      auto e = read_initial_value(ctx, inner.front(), depth + 1);
       if (!e) return nullptr;
       names.push_back(trim(v.attribute("member").value()));
       values.push_back(std::move(e));

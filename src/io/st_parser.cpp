@@ -755,6 +755,8 @@ model::Type Parser::var_type(std::vector<model::ArrayDimension>* dimensions) {
 
 model::ExprPtr Parser::initialiser() {
   const Token& t = peek();
+  enter(t);
+  DepthGuard guard([this] { leave(); });
   if (accept(TokenKind::LBracket)) {
     // `[1, 2, 3(0)]`: one argument per element, repetitions expanded.
     std::vector<ExprPtr> elements;
@@ -764,7 +766,8 @@ model::ExprPtr Parser::initialiser() {
         next();
         ExprPtr e = at(TokenKind::RParen) ? nullptr : initialiser();
         expect(TokenKind::RParen, "')' after the repeated value");
-        if (count.value > 100000) fail(count, "repetition count too large");
+        if (count.value > 100000 - static_cast<std::int64_t>(elements.size()))
+          fail(count, "array initialiser with more than 100000 elements");
         if (!e) fail(count, "unsupported: a repetition without a value");
         for (std::int64_t i = 0; i < count.value; ++i) elements.push_back(e);
         continue;

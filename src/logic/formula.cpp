@@ -111,7 +111,7 @@ void print(const Formula& f, int context, std::string& out) {
       out += ' ';
       out += to_string(f.cmp);
       out += ' ';
-      out += std::to_string(f.value);
+      out += f.value_name.empty() ? std::to_string(f.value) : f.value_name;
       break;
     case Op::Not:
     case Op::EX:

@@ -47,7 +47,10 @@ struct Formula {
   Op op = Op::True;
   std::string name;  ///< Atom, Compare: as written ("FILL_A.X", "level")
   CompareOp cmp = CompareOp::Eq;
-  std::int64_t value = 0;        ///< Compare: the constant
+  std::int64_t value = 0;  ///< Compare: the constant
+  /// Compare: the enumerator written for the constant (`state = Filling`), empty for a number;
+  /// resolve() sets `value` from the variable's type.
+  std::string value_name;
   std::int32_t observable = -1;  ///< Atom, Compare: index into observables() once resolved
   /// Atom, Compare: the value `prev` cycles back (0 = now): prev(x) is 1, prev(prev(x)) is 2.
   std::uint32_t prev = 0;

@@ -429,8 +429,15 @@ class Parser {
         const auto c = cmp_of(next().kind);
         const Token& rhs = next();
         std::int64_t value = 0;
+        if (Op keyword; rhs.kind == Tok::Ident && !constant(rhs, value) &&
+                        !is_temporal_keyword(rhs.text, keyword)) {
+          // An enumerator, `state = Filling`: resolve() gives its value.
+          auto cmp = std::make_shared<Formula>(*make_compare(t.text, c, 0, t.line, t.column));
+          cmp->value_name = rhs.text;
+          return cmp;
+        }
         if (!constant(rhs, value))
-          throw SyntaxError(rhs, "expected an integer constant after '" +
+          throw SyntaxError(rhs, "expected an integer constant or an enumerator after '" +
                                      std::string(to_string(c)) + "', found " + describe(rhs));
         return make_compare(t.text, c, value, t.line, t.column);
       }

@@ -1,5 +1,7 @@
 #include "logic/resolve.hpp"
 
+#include <algorithm>
+
 #include "logic/formula.hpp"
 #include "model/names.hpp"
 
@@ -33,6 +35,18 @@ FormulaPtr bind(const FormulaPtr& f, const semantics::TransitionSystem& ts,
     if (f->op == Op::Atom && obs.type.kind != model::TypeKind::Bool)
       return error("'" + f->name + "' is an integer (" + obs.type.name +
                    "): compare it with a constant, e.g. '" + f->name + " > 0'");
+    std::int64_t value = f->value;
+    if (f->op == Op::Compare && !f->value_name.empty()) {
+      const auto& es = obs.type.enumerators;
+      const auto it = std::find_if(es.begin(), es.end(), [&](const auto& e) {
+        return model::iequals(e.first, f->value_name) ||
+               model::iequals(obs.type.name + "#" + e.first, f->value_name);
+      });
+      if (it == es.end())
+        return error("'" + f->value_name + "' is no enumerator of '" + f->name + "' (" +
+                     obs.type.name + ")");
+      value = it->second;
+    }
     // prev(x): the observable that keeps x's previous value (logic::history_system_for).
     auto bound = *index;
     for (std::uint32_t d = 0; d < f->prev; ++d) {
@@ -43,7 +57,10 @@ FormulaPtr bind(const FormulaPtr& f, const semantics::TransitionSystem& ts,
                      "(resolve against logic::history_system_for)");
       bound = *previous;
     }
-    return with_observable(*f, static_cast<std::int32_t>(bound));
+    if (value == f->value) return with_observable(*f, static_cast<std::int32_t>(bound));
+    Formula valued = *f;
+    valued.value = value;
+    return with_observable(valued, static_cast<std::int32_t>(bound));
   }
   if (f->args.empty()) return f;
   std::vector<FormulaPtr> args;

@@ -134,6 +134,7 @@ class Lowering {
             hi = std::max(hi, en.second);
           }
           e.type = Type::integer(t->name, lo, hi);
+          e.type.enumerators = t->enumerators;
           e.initial = init ? constant(init, v.name) : t->enumerators.front().second;
           e.declared_initial = nullptr;
           leaf(std::move(e), out, sc);

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sfcv::model {
 
@@ -19,6 +21,8 @@ struct Type {
   std::int64_t lo = 0;               ///< Int: smallest value
   std::int64_t hi = 1;               ///< Int: largest value
   StandardFb fb = StandardFb::None;  ///< FunctionBlock: which one
+  /// Int of an enumeration: its enumerators and their values (properties may name them).
+  std::vector<std::pair<std::string, std::int64_t>> enumerators;
 
   static Type boolean();
   static Type time();

@@ -70,6 +70,21 @@ TEST(DataTypes, EnumerationsStructuresAndArraysAgreeOnEveryEngine) {
   // The range of an enumeration variable is its enumerators': Filling is 5, never 1.
   auto r = run_sfcv(check(file, "explicit", "--checks none --ctl 'EF state = 5'"));
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  // Properties may name the enumerators; an unknown one is a located error.
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    r = run_sfcv(check(file, engine,
+                       "--checks none --ctl 'AG (state = Idle | state = Filling | "
+                       "state = Draining)' --ctl 'AG (state != Filling | !valves[1].open)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv(check(file, engine, "--checks none --ctl 'AG (state = Draining -> !v.open)'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+  r = run_sfcv(check(file, "explicit", "--checks none --ctl 'AG state != Blue'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":1:4: error: 'Blue' is no enumerator of 'state' (E_State)"),
+            std::string::npos)
+      << r.err;
   // CODESYS's ARRAY OF ARRAY: m[1][2] and m[1,2] are one element.
   const auto matrix = write_temp(
       "PROGRAM P\nVAR_INPUT go : BOOL; END_VAR\n"

@@ -65,9 +65,11 @@ TEST(FormulaParser, ErrorsPointAtTheColumn) {
   r = parse_formula("p $ q");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.diagnostics[0].where.column, 3);
-  r = parse_formula("level >= x");
+  r = parse_formula("level >= )");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.diagnostics[0].where.column, 10);
+  // `level >= x` names an enumerator, resolved against level's type (an error there if none).
+  EXPECT_TRUE(parse_formula("level >= x").ok());
   r = parse_formula("AG 3");
   ASSERT_FALSE(r.ok());
   r = parse_formula("p q");
