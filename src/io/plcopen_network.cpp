@@ -199,11 +199,16 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
   if (model::iequals(pin, "ENO")) {
-    // A standard FB instance's ENO is its EN (they raise no error). A user FB may clear ENO in
-    // its body, and a function with EN is not modelled: both refused.
-    if (instance.empty() || model::standard_fb(type) == model::StandardFb::None)
+    // ENO is EN where nothing can clear it: a standard FB instance (called here) and a standard
+    // function (an error inside it is a range error of the cycle, not an ENO). A user FB or
+    // function may clear ENO in its body: refused.
+    ExprKind cmp = ExprKind::Eq;
+    const bool standard_function = instance.empty() && function_of(type, cmp) != Fn::None;
+    const bool standard_instance =
+        !instance.empty() && model::standard_fb(type) != model::StandardFb::None;
+    if (!standard_function && !standard_instance)
       return fail(block, "unsupported: ENO output of block " + type);
-    if (!call_block(block)) return nullptr;
+    if (standard_instance && !call_block(block)) return nullptr;
     return enable_of(block);
   }
   bool out_negated = false;
@@ -253,7 +258,19 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     const std::string f = v.attribute("formalParameter").value();
     const auto cpi = child(v, "connectionPointIn");
     if (model::iequals(f, "EN")) {
-      if (cpi && child(cpi, "connection")) return fail(v, "unsupported: EN input of block " + type);
+      if (!cpi || !child(cpi, "connection")) continue;
+      // With EN FALSE a function is not executed and its result is not defined: modelled only
+      // where the result is assigned straight to a variable, which then keeps its value.
+      if (id != enabled_function_)
+        return fail(v, "unsupported: EN input of block " + type +
+                           " whose result is not assigned straight to a variable");
+      enabled_function_.clear();
+      if (const auto edge = std::string(v.attribute("edge").value());
+          !edge.empty() && edge != "none")
+        return fail(v, "unsupported: " + edge + " edge input of block " + type);
+      enable_ = input(cpi);
+      if (!enable_) return nullptr;
+      enable_ = negate_if(attribute_true(v, "negated"), std::move(enable_));
       continue;
     }
     if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
@@ -334,11 +351,6 @@ bool Network::call_block(pugi::xml_node block) {
     const std::string f = v.attribute("formalParameter").value();
     const auto cpi = child(v, "connectionPointIn");
     if (!cpi || !child(cpi, "connection")) continue;  // unconnected input keeps its value
-    if (model::iequals(f, "EN")) {
-      enable = enable_of(block);
-      if (!enable) return false;
-      continue;
-    }
     if (const auto edge = std::string(v.attribute("edge").value());
         !edge.empty() && edge != "none") {
       fail(v, "unsupported: " + edge + " edge input of block " + type);
@@ -346,7 +358,11 @@ bool Network::call_block(pugi::xml_node block) {
     }
     auto a = input(cpi);
     if (!a) return false;
-    args.emplace_back(f, negate_if(attribute_true(v, "negated"), std::move(a)));
+    a = negate_if(attribute_true(v, "negated"), std::move(a));
+    if (model::iequals(f, "EN"))
+      enable = std::move(a);
+    else
+      args.emplace_back(f, std::move(a));
   }
   if (child(block, "inOutVariables") &&
       !children(child(block, "inOutVariables"), "variable").empty()) {
@@ -369,12 +385,27 @@ bool Network::call_block(pugi::xml_node block) {
   return true;
 }
 
+std::string Network::straight_function(pugi::xml_node cpi) const {
+  const auto connections = children(cpi, "connection");
+  if (connections.size() != 1) return {};
+  const auto it = by_id_.find(connections.front().attribute("refLocalId").value());
+  if (it == by_id_.end() || local_name(it->second) != "block" ||
+      *it->second.attribute("instanceName").value())
+    return {};
+  return it->second.attribute("localId").value();
+}
+
 ExprPtr Network::enable_of(pugi::xml_node block) {
   for (auto v : children(child(block, "inputVariables"), "variable")) {
     const auto cpi = child(v, "connectionPointIn");
-    if (model::iequals(v.attribute("formalParameter").value(), "EN") && cpi &&
-        child(cpi, "connection"))
-      return negate_if(attribute_true(v, "negated"), input(cpi));
+    if (!model::iequals(v.attribute("formalParameter").value(), "EN") || !cpi ||
+        !child(cpi, "connection"))
+      continue;
+    if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")
+      return fail(v, "unsupported: " + edge + " edge input of block " +
+                         block.attribute("typeName").value());
+    auto enable = input(cpi);
+    return enable ? negate_if(attribute_true(v, "negated"), std::move(enable)) : nullptr;
   }
   return model::make_bool(true, ctx_.where(block));
 }
@@ -427,24 +458,40 @@ std::optional<model::StmtList> Network::statements() {
       fail(n, std::string(kind) + " has no variable");
       return std::nullopt;
     }
-    auto v = input(child(n, "connectionPointIn"));
+    const auto cpi = child(n, "connectionPointIn");
+    enabled_function_ = straight_function(cpi);
+    enable_ = nullptr;
+    auto v = input(cpi);
+    enabled_function_.clear();
     if (!v) return std::nullopt;
     for (auto& c : take_calls()) body.push_back(std::move(c));
     const bool negated = attribute_true(n, "negated");
     const std::string storage = n.attribute("storage").value();
-    if (kind == "coil") {
-      if (const std::string edge = n.attribute("edge").value(); !edge.empty() && edge != "none") {
-        v = edge_of(n, edge, v);
-        if (!v) return std::nullopt;
-        for (auto& c : take_calls()) body.push_back(std::move(c));
-      }
-      if (storage == "set" || storage == "reset") {
-        body.push_back(make_if_assign(negate_if(negated, v), target,
-                                      model::make_bool(storage == "set", where), where));
-        continue;
-      }
+    const std::string edge = kind == "coil" ? n.attribute("edge").value() : "";
+    if (enable_ && !edge.empty() && edge != "none") {
+      fail(n, "unsupported: " + edge + " edge coil fed by a function with EN");
+      return std::nullopt;
     }
-    body.push_back(model::make_assign(target, negate_if(negated, v), where));
+    if (!edge.empty() && edge != "none") {
+      v = edge_of(n, edge, v);
+      if (!v) return std::nullopt;
+      for (auto& c : take_calls()) body.push_back(std::move(c));
+    }
+    model::StmtPtr assignment =
+        kind == "coil" && (storage == "set" || storage == "reset")
+            ? make_if_assign(negate_if(negated, v), target,
+                             model::make_bool(storage == "set", where), where)
+            : model::make_assign(target, negate_if(negated, v), where);
+    if (enable_) {
+      // EN FALSE: the function does not run, the variable keeps its value.
+      auto guarded = std::make_shared<model::Stmt>();
+      guarded->kind = model::StmtKind::If;
+      guarded->where = where;
+      guarded->conditions.push_back(std::move(enable_));
+      guarded->bodies.push_back({std::move(assignment)});
+      assignment = std::move(guarded);
+    }
+    body.push_back(std::move(assignment));
   }
   // A user function whose result nobody reads would not run: refused, not dropped (it may
   // have a range error or write a global).

@@ -57,7 +57,9 @@ class Network {
   model::ExprPtr block_value(pugi::xml_node block, const std::string& pin);
   model::ExprPtr text_value(pugi::xml_node holder, pugi::xml_node text_element);
   bool call_block(pugi::xml_node block);
-  /// The block's EN input (TRUE when not connected).
+  /// The localId of the function block (no instance) wired alone into `cpi`, else empty.
+  std::string straight_function(pugi::xml_node cpi) const;
+  /// The block's EN input (TRUE when not connected; null after a diagnostic).
   model::ExprPtr enable_of(pugi::xml_node block);
   /// `edge` ("rising"/"falling") of `value`, through a new R_TRIG/F_TRIG instance called first.
   model::ExprPtr edge_of(pugi::xml_node node, const std::string& edge, model::ExprPtr value);
@@ -70,6 +72,10 @@ class Network {
   std::set<std::string> called_;                      ///< FB blocks (localId) already called
   std::set<std::string> visiting_;                    ///< localIds on the evaluation path
   std::set<std::string> evaluated_;                   ///< user function blocks (localId) read
+  /// The function block (localId) whose result goes straight to the output being assigned:
+  /// its EN may be connected, and guards that assignment (`enable_`, once read).
+  std::string enabled_function_;
+  model::ExprPtr enable_;
   model::StmtList calls_;
   std::vector<model::Variable> edge_instances_;
   std::string edge_prefix_;

@@ -120,35 +120,42 @@ model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value, int dep
     for (auto& d : problems) ctx.diagnostics().push_back(d);
     return e;
   }
-  if (k == "arrayValue") {
-    std::vector<model::ExprPtr> elements;
+  // The <value> children of an array or structure, empty ones skipped: `take(v, element)`
+  // for each; false when one cannot be read or `take` refuses it.
+  const auto each_value = [&](const auto& take) {
     for (auto v : children(value, "value")) {
       const auto inner = element_children(v);
       if (inner.empty()) continue;
       auto e = read_initial_value(ctx, inner.front(), depth + 1);
-      if (!e) return nullptr;
+      if (!e || !take(v, std::move(e))) return false;
+    }
+    return true;
+  };
+  if (k == "arrayValue") {
+    std::vector<model::ExprPtr> elements;
+    const bool read = each_value([&](pugi::xml_node v, model::ExprPtr e) {
       const auto repeat = parse_int_literal(v.attribute("repetitionValue").value());
       const std::int64_t n = repeat ? *repeat : 1;
       if (n < 0 || n > 100000 - static_cast<std::int64_t>(elements.size())) {
         ctx.error(v, "repetition count out of range (at most 100000 elements)");
-        return nullptr;
+        return false;
       }
       for (std::int64_t i = 0; i < n; ++i) elements.push_back(e);
-    }
-    return model::make_call("[", std::move(elements), ctx.where(value));
+      return true;
+    });
+    return read ? model::make_call("[", std::move(elements), ctx.where(value)) : nullptr;
   }
   if (k == "structValue") {
     std::vector<std::string> names;
     std::vector<model::ExprPtr> values;
-    for (auto v : children(value, "value")) {
-      const auto inner = element_children(v);
-      if (inner.empty()) continue;
-      auto e = read_initial_value(ctx, inner.front(), depth + 1);
-      if (!e) return nullptr;
+    const bool read = each_value([&](pugi::xml_node v, model::ExprPtr e) {
       names.push_back(trim(v.attribute("member").value()));
       values.push_back(std::move(e));
-    }
-    return model::make_formal_call("(", std::move(names), std::move(values), ctx.where(value));
+      return true;
+    });
+    return read
+               ? model::make_formal_call("(", std::move(names), std::move(values), ctx.where(value))
+               : nullptr;
   }
   ctx.error(value, "unsupported initial value <" + k + ">");
   return nullptr;

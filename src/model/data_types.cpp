@@ -438,24 +438,39 @@ class Lowering {
     return d.lo == 0 ? i : make_binary(ExprKind::Sub, i, make_int(d.lo, i->where), i->where);
   }
 
+  /// Walks the index tuples of `dims` depth first: `element(k)` is the result for the element
+  /// `k`, `level(depth, children)` combines the results for the values of dimension `depth`.
+  /// Reads (MUX) and writes (CASE) of a variable index are both this walk.
+  template <class Result, class Element, class Level>
+  static Result over_index_tuples(const std::vector<ArrayDimension>& dims,
+                                  std::vector<std::int64_t>& k, const Element& element,
+                                  const Level& level) {
+    if (k.size() == dims.size()) return element(k);
+    const std::size_t depth = k.size();
+    std::vector<Result> children;
+    for (std::int64_t v = dims[depth].lo; v <= dims[depth].hi; ++v) {
+      k.push_back(v);
+      children.push_back(over_index_tuples<Result>(dims, k, element, level));
+      k.pop_back();
+    }
+    return level(depth, std::move(children));
+  }
+
   /// `a[i, j]` -> MUX(i - lo1, MUX(j - lo2, a[lo1,lo2], ...), ...): an index outside the bounds
   /// is MUX's range error.
   ExprPtr index(const Expr& e) {
     const auto dims = bounds(e.name, e.args.size(), e.where);
     std::vector<std::int64_t> k;
-    return choose(e, dims, k);
-  }
-  ExprPtr choose(const Expr& e, const std::vector<ArrayDimension>& dims,
-                 std::vector<std::int64_t>& k) {
-    if (k.size() == dims.size()) return expression(designate(element_path(e.name, k), e.where));
-    const auto& d = dims[k.size()];
-    std::vector<ExprPtr> args{offset(e.args[k.size()], d)};
-    for (std::int64_t v = d.lo; v <= d.hi; ++v) {
-      k.push_back(v);
-      args.push_back(choose(e, dims, k));
-      k.pop_back();
-    }
-    return make_call("MUX", std::move(args), e.where);
+    return over_index_tuples<ExprPtr>(
+        dims, k,
+        [&](const std::vector<std::int64_t>& at) {
+          return expression(designate(element_path(e.name, at), e.where));
+        },
+        [&](std::size_t depth, std::vector<ExprPtr> elements) {
+          std::vector<ExprPtr> args{offset(e.args[depth], dims[depth])};
+          for (auto& x : elements) args.push_back(std::move(x));
+          return make_call("MUX", std::move(args), e.where);
+        });
   }
 
   // ------------------------------------------------------------------------------- statements
@@ -529,35 +544,32 @@ class Lowering {
   /// the ELSE branch runs only for an index outside the bounds, where the MUX is a range error.
   StmtPtr indexed_assignment(const Stmt& s) {
     const auto dims = bounds(s.target, s.target_indices.size(), s.where);
-    std::vector<std::int64_t> k;
-    return assign_choice(s, dims, k);
-  }
-  StmtPtr assign_choice(const Stmt& s, const std::vector<ArrayDimension>& dims,
-                        std::vector<std::int64_t>& k) {
-    if (k.size() == dims.size()) {
-      const std::string path = element_path(s.target, k);
-      return make_assign(target(path, s.where), s.value, s.where);
-    }
-    const auto& d = dims[k.size()];
-    auto c = std::make_shared<Stmt>();
-    c->kind = StmtKind::Case;
-    c->where = s.where;
-    c->value = expression(s.target_indices[k.size()]);
-    for (std::int64_t v = d.lo; v <= d.hi; ++v) {
-      c->labels.push_back({CaseLabel{v, v, {}, {}}});
-      k.push_back(v);
-      c->bodies.push_back({assign_choice(s, dims, k)});
-      k.pop_back();
-    }
-    // ELSE: a range error, by a MUX whose selector is out of its bounds here.
     std::vector<std::int64_t> first;
-    for (const auto& dd : dims) first.push_back(dd.lo);
+    for (const auto& d : dims) first.push_back(d.lo);
     const std::string first_path = element_path(s.target, first);
-    std::vector<ExprPtr> mux{offset(s.target_indices[k.size()], d)};
-    for (std::int64_t v = d.lo; v <= d.hi; ++v) mux.push_back(s.value);
-    c->else_body.push_back(make_assign(target(first_path, s.where),
-                                       make_call("MUX", std::move(mux), s.where), s.where));
-    return c;
+    std::vector<std::int64_t> k;
+    return over_index_tuples<StmtPtr>(
+        dims, k,
+        [&](const std::vector<std::int64_t>& at) {
+          return make_assign(target(element_path(s.target, at), s.where), s.value, s.where);
+        },
+        [&](std::size_t depth, std::vector<StmtPtr> assignments) {
+          const auto& d = dims[depth];
+          auto c = std::make_shared<Stmt>();
+          c->kind = StmtKind::Case;
+          c->where = s.where;
+          c->value = expression(s.target_indices[depth]);
+          for (std::int64_t v = d.lo; v <= d.hi; ++v) {
+            c->labels.push_back({CaseLabel{v, v, {}, {}}});
+            c->bodies.push_back({std::move(assignments[static_cast<std::size_t>(v - d.lo)])});
+          }
+          // ELSE: a range error, by a MUX whose selector is out of its bounds here.
+          std::vector<ExprPtr> mux{offset(s.target_indices[depth], d)};
+          for (std::int64_t v = d.lo; v <= d.hi; ++v) mux.push_back(s.value);
+          c->else_body.push_back(make_assign(target(first_path, s.where),
+                                             make_call("MUX", std::move(mux), s.where), s.where));
+          return StmtPtr(c);
+        });
   }
 
   // ---------------------------------------------------------------------------------- STRING
@@ -646,17 +658,32 @@ class Lowering {
     for (const auto& a : s.arguments) check_strings(*a.second);
     if (s.kind == StmtKind::Case && s.value && is_string(*s.value))
       fail(s.where, "unsupported: CASE on a STRING");
-    if (s.kind == StmtKind::Assign && s.value && s.target_indices.empty()) {
-      const auto dot = s.target.rfind('.');
-      const ExprPtr target = dot == std::string::npos
-                                 ? make_name(s.target)
-                                 : make_member(s.target.substr(0, dot), s.target.substr(dot + 1));
-      const bool to_string = is_string(*target), of_string = is_string(*s.value);
-      if (to_string != of_string)
-        fail(s.where, std::string(of_string ? "assignment of a STRING to '"
-                                            : "assignment of a value that is no STRING to '") +
-                          s.target + "'" + (to_string ? ", a STRING" : ""));
+    if (s.kind == StmtKind::Assign && s.value && s.target_indices.empty())
+      check_string_transfer(s.target, *s.value, s.where);
+    // An FB call passes its arguments to the instance's inputs and copies outputs out: the same
+    // rule as an assignment, so a literal's code never lands in an integer input.
+    if (s.kind == StmtKind::FbCall) {
+      for (const auto& [input, value] : s.arguments)
+        if (value) check_string_transfer(s.target + "." + input, *value, value->where);
+      for (const auto& [output, variable] : s.outputs)
+        check_string_transfer(variable, *variable_expr(s.target + "." + output), s.where);
     }
+  }
+
+  static ExprPtr variable_expr(const std::string& path) {
+    const auto dot = path.rfind('.');
+    return dot == std::string::npos ? make_name(path)
+                                    : make_member(path.substr(0, dot), path.substr(dot + 1));
+  }
+
+  /// `target := value`: both are STRINGs or neither is.
+  void check_string_transfer(const std::string& target, const Expr& value,
+                             const SourceLocation& where) const {
+    const bool to_string = is_string(*variable_expr(target)), of_string = is_string(value);
+    if (to_string != of_string)
+      fail(where, std::string(of_string ? "assignment of a STRING to '"
+                                        : "assignment of a value that is no STRING to '") +
+                      target + "'" + (to_string ? ", a STRING" : ""));
   }
 
   Project& project_;

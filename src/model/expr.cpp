@@ -212,12 +212,20 @@ ExprPtr make_nary(ExprKind kind, std::vector<ExprPtr> args, SourceLocation where
   set_height(*e);
   return e;
 }
-ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocation where) {
-  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Call, std::move(where)));
-  e->name = std::move(function);
+namespace {
+/// A node naming something (a function, an array) with operands: calls and indexed reads.
+ExprPtr make_named(ExprKind kind, std::string name, std::vector<ExprPtr> args,
+                   SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(kind, std::move(where)));
+  e->name = std::move(name);
   e->args = std::move(args);
   set_height(*e);
   return e;
+}
+}  // namespace
+
+ExprPtr make_call(std::string function, std::vector<ExprPtr> args, SourceLocation where) {
+  return make_named(ExprKind::Call, std::move(function), std::move(args), std::move(where));
 }
 ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
                          std::vector<ExprPtr> args, SourceLocation where) {
@@ -226,11 +234,7 @@ ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
   return e;
 }
 ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocation where) {
-  auto e = std::const_pointer_cast<Expr>(make(ExprKind::Index, std::move(where)));
-  e->name = std::move(path);
-  e->args = std::move(indices);
-  set_height(*e);
-  return e;
+  return make_named(ExprKind::Index, std::move(path), std::move(indices), std::move(where));
 }
 ExprPtr make_string(std::string characters, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::StringConst, std::move(where)));

@@ -22,9 +22,17 @@ bool marked(const logic::Trace& t, std::uint32_t obs) {
   return std::find(t.marked.begin(), t.marked.end(), obs) != t.marked.end();
 }
 
+/// An integer as its type names it: the enumerator of an enumeration (`Filling`), else the
+/// number (the JSON and CSV traces keep numbers, for replay).
+std::string value_text(const model::Type& type, std::int64_t v) {
+  for (const auto& [name, value] : type.enumerators)
+    if (value == v) return name;
+  return std::to_string(v);
+}
+
 std::string input_change(const semantics::InputVariable& in, std::int64_t v) {
   if (is_bool(in)) return (v ? "+" : "-") + in.name;
-  return in.name + "=" + std::to_string(v);
+  return in.name + "=" + value_text(in.type, v);
 }
 
 std::string vcd_id(std::size_t i) {
@@ -102,11 +110,12 @@ std::string trace_table(const logic::Trace& trace, const semantics::TransitionSy
         if (obs[o].type.kind == model::TypeKind::Bool) {
           if (v) row[4] += (row[4].empty() ? "" : " ") + names[o] + mark;
         } else {
-          row[4] += (row[4].empty() ? "" : " ") + names[o] + "=" + std::to_string(v) + mark;
+          row[4] +=
+              (row[4].empty() ? "" : " ") + names[o] + "=" + value_text(obs[o].type, v) + mark;
         }
       }
       if (marked(trace, o))
-        row[5] += (row[5].empty() ? "" : " ") + names[o] + "=" + std::to_string(v);
+        row[5] += (row[5].empty() ? "" : " ") + names[o] + "=" + value_text(obs[o].type, v);
     }
     rows.push_back(std::move(row));
   }

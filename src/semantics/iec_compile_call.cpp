@@ -8,7 +8,9 @@
 #include <array>
 #include <cctype>
 #include <string>
+#include <vector>
 
+#include "model/expr.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
 #include "semantics/detail/iec_compiler.hpp"
@@ -23,6 +25,62 @@ int width_of_range(std::int64_t lo, std::int64_t hi) {
   if (hi == 65535) return 16;
   if (hi == 4294967295LL) return 32;
   return -1;
+}
+
+/// The call with its formal arguments (`LIMIT(MN := 0, IN := x, MX := 9)`) put in the order of
+/// the standard function's parameters (IEC 61131-3 2.5.1.5): IN1..INn for the extensible and
+/// binary ones, G/IN0/IN1 for SEL, MN/IN/MX for LIMIT, K/IN0..INn for MUX, IN/N for the shifts,
+/// IN for the unary ones. Null with `why` when they do not fit; EN is refused: in an expression
+/// the result is undefined while it is FALSE.
+model::ExprPtr in_parameter_order(const model::Expr& e, std::string& why) {
+  const auto f = model::to_upper(e.name);
+  const auto n = e.args.size();
+  std::vector<std::string> order;
+  if (f == "SEL") {
+    order = {"G", "IN0", "IN1"};
+  } else if (f == "LIMIT") {
+    order = {"MN", "IN", "MX"};
+  } else if (f == "MUX") {
+    order = {"K"};
+    for (std::size_t i = 0; i + 1 < n; ++i) order.push_back("IN" + std::to_string(i));
+  } else if (f == "SHL" || f == "SHR" || f == "ROL" || f == "ROR") {
+    order = {"IN", "N"};
+  } else if (f == "NOT" || f == "ABS" || f == "MOVE" || f.find("_TO_") != std::string::npos) {
+    order = {"IN"};
+  } else {
+    for (std::size_t i = 1; i <= n; ++i) order.push_back("IN" + std::to_string(i));
+  }
+  std::vector<model::ExprPtr> args(order.size());
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto& name = e.arg_names[a];
+    if (model::iequals(name, "EN")) {
+      why =
+          "EN of a standard function inside an expression (its result is undefined while EN "
+          "is FALSE): write IF en THEN ... END_IF";
+      return nullptr;
+    }
+    const auto at = std::find_if(order.begin(), order.end(),
+                                 [&](const std::string& p) { return model::iequals(p, name); });
+    if (at == order.end()) {
+      std::string list;
+      for (const auto& p : order) list += (list.empty() ? "" : ", ") + p;
+      why = e.name + " has no parameter '" + name + "'" +
+            (list.empty() ? "" : " (its parameters here: " + list + ")");
+      return nullptr;
+    }
+    auto& slot = args[static_cast<std::size_t>(at - order.begin())];
+    if (slot) {
+      why = "parameter '" + name + "' is given twice";
+      return nullptr;
+    }
+    slot = e.args[a];
+  }
+  for (std::size_t i = 0; i < order.size(); ++i)
+    if (!args[i]) {
+      why = "parameter '" + order[i] + "' of " + e.name + " is not given";
+      return nullptr;
+    }
+  return model::make_call(e.name, std::move(args), e.where);
 }
 
 bool all_digits(const std::string& s) {
@@ -157,9 +215,12 @@ std::uint32_t Compiler::call(const PouScope& sc, const model::Expr& e, int conte
   auto all_int = [&](const std::vector<VT>& ts) {
     return std::all_of(ts.begin(), ts.end(), [](VT t) { return t == VT::Int; });
   };
-  if (!e.arg_names.empty())
-    return fail("formal arguments ('" + e.arg_names.front() +
-                " := ...') in the call of a standard function (pass them in order)");
+  if (!e.arg_names.empty()) {
+    std::string why;
+    const auto in_order = in_parameter_order(e, why);
+    if (!in_order) return fail(why);
+    return call(sc, *in_order, context, type);
+  }
 
   // Comparisons, extensible: GT(a, b, c) = a > b AND b > c.
   static constexpr std::array<std::pair<const char*, ExprKind>, 6> kCompare{{{"GT", ExprKind::Gt},

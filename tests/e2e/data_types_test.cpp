@@ -79,6 +79,9 @@ TEST(DataTypes, EnumerationsStructuresAndArraysAgreeOnEveryEngine) {
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     r = run_sfcv(check(file, engine, "--checks none --ctl 'AG (state = Draining -> !v.open)'"));
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    // The trace names the enumerators too.
+    EXPECT_NE(r.out.find("state=Draining"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("state=6"), std::string::npos) << r.out;
   }
   r = run_sfcv(check(file, "explicit", "--checks none --ctl 'AG state != Blue'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -244,6 +247,16 @@ TEST(DataTypes, MistakesAreLocatedErrors) {
       {"TYPE A : (Red, Green); END_TYPE\nPROGRAM P\nVAR x : A; END_VAR\n"
        "CASE x OF Blue: x := Red; END_CASE;\nEND_PROGRAM\n",
        "error: CASE label 'Blue' is no enumerator"},
+      // FB call arguments and output bindings follow the rule of assignments.
+      {"FUNCTION_BLOCK F\nVAR_INPUT n : INT; END_VAR\nVAR_OUTPUT s : STRING; END_VAR\n"
+       "END_FUNCTION_BLOCK\nPROGRAM P\nVAR f : F; END_VAR\nf(n := 'x');\nEND_PROGRAM\n",
+       ":7:8: error: assignment of a STRING to 'f.n'"},
+      {"FUNCTION_BLOCK F\nVAR_INPUT t : STRING; END_VAR\nEND_FUNCTION_BLOCK\n"
+       "PROGRAM P\nVAR f : F; k : INT; END_VAR\nf(t := k);\nEND_PROGRAM\n",
+       "error: assignment of a value that is no STRING to 'f.t', a STRING"},
+      {"FUNCTION_BLOCK F\nVAR_OUTPUT s : STRING; END_VAR\nEND_FUNCTION_BLOCK\n"
+       "PROGRAM P\nVAR f : F; k : INT; END_VAR\nf(s => k);\nEND_PROGRAM\n",
+       "error: assignment of a STRING to 'k'"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.text);

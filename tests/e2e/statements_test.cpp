@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "support/sfcv_test.hpp"
 
@@ -109,6 +111,42 @@ TEST(StatementsE2E, UnsupportedFunctionsAreLocatedErrors) {
     const auto said = r.out + r.err;  // lint reports on standard output, check on its error
     EXPECT_NE(said.find("3:7"), std::string::npos) << cmd << said;
     EXPECT_NE(said.find("SQRT"), std::string::npos) << cmd << said;
+  }
+}
+
+// Formal arguments of standard functions (IEC 61131-3 2.5.1.5), in any order, give what the
+// positional call gives; EN inside an expression, an unknown, missing or repeated parameter
+// are located errors.
+TEST(StatementsE2E, StandardFunctionsTakeFormalArguments) {
+  const auto file = write_temp(
+      "PROGRAM Formal\n VAR_INPUT k : INT(-5..10); g : BOOL; END_VAR\n"
+      " VAR_OUTPUT lim : INT; same, started : BOOL; END_VAR\n"
+      " started := TRUE;\n lim := LIMIT(MX := 3, IN := k, MN := 0);\n"
+      " same := lim = LIMIT(0, k, 3) AND SEL(IN1 := k, G := g, IN0 := 7) = SEL(g, 7, k)\n"
+      "   AND MAX(IN2 := k, IN1 := 2) = MAX(2, k) AND MUX(K := 1, IN0 := 4, IN1 := k) = k\n"
+      "   AND GT(IN1 := k, IN2 := 0) = (k > 0) AND SUB(IN2 := 1, IN1 := k) = k - 1\n"
+      "   AND ABS(IN := k) = ABS(k) AND MOVE(IN := k) = k;\n"
+      "END_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check_command(file, engine, "--checks none --ctl 'AG (started -> same)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv(check_command(file, engine, "--checks none --ctl 'AG lim <= 2'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+  for (const auto& [call, message] : std::vector<std::pair<std::string, std::string>>{
+           {"MAX(EN := TRUE, IN1 := 1, IN2 := 2)",
+            "EN of a standard function inside an expression"},
+           {"LIMIT(MN := 0, X := 1, MX := 2)", "LIMIT has no parameter 'X'"},
+           {"LIMIT(MN := 0, IN := 1)", "parameter 'MX' of LIMIT is not given"},
+           {"SUB(IN1 := 1, IN1 := 2)", "parameter 'IN1' is given twice"}}) {
+    const auto bad = write_temp(
+        "PROGRAM Bad\n VAR_OUTPUT x : INT; END_VAR\n x := " + call + ";\nEND_PROGRAM\n", ".st");
+    const auto r = run_sfcv("check " + bad);
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("3:7"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
   }
 }
 

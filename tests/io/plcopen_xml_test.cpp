@@ -824,6 +824,65 @@ TEST(PlcopenXml, EnAndEnoOfStandardFunctionBlockInstances) {
   ASSERT_FALSE(act->body_unsupported) << act->unsupported_reason;
   EXPECT_EQ(model::to_st(act->body),
             "IF x THEN\n  C1(CU := a, R := FALSE, PV := 3);\nEND_IF;\ny := x;\nz := C1.Q;\n");
+
+  // An edge on EN would call the instance on a rising edge only: not modelled, so refused.
+  std::string edged = actions;
+  edged.replace(edged.find(R"(formalParameter="EN")"), 20, R"(formalParameter="EN" edge="rising")");
+  const auto e =
+      load_plcopen_xml(project(two_steps(inline_st("a"), blocks), vars, edged), "en.xml");
+  const auto* refused = e.ok() ? e.project->pous[0].find_action("COUNT") : nullptr;
+  ASSERT_NE(refused, nullptr) << errors_of(e);
+  EXPECT_TRUE(refused->body_unsupported);
+  EXPECT_NE(refused->unsupported_reason.find("rising edge input of block CTU"), std::string::npos)
+      << refused->unsupported_reason;
+}
+
+// A function with EN runs only while EN is TRUE; its result is defined only then, so EN is
+// modelled where the result is assigned straight to a variable, which otherwise keeps its value.
+TEST(PlcopenXml, EnOfAFunctionGuardsTheAssignmentOfItsResult) {
+  const auto body = [](const std::string& sink) {
+    return R"(<actions><action name="SUM"><body><FBD>
+    <inVariable localId="1"><connectionPointOut/><expression>a</expression></inVariable>
+    <inVariable localId="2"><connectionPointOut/><expression>n</expression></inVariable>
+    <inVariable localId="3"><connectionPointOut/><expression>1</expression></inVariable>
+    <block localId="4" typeName="ADD"><inputVariables>
+      <variable formalParameter="EN" negated="true"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+      <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+      <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+    </inputVariables><inOutVariables/><outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+    )" + sink +
+           "</FBD></body></action></actions>";
+  };
+  const auto blocks = action_block(20, 3, R"(<action><reference name="SUM"/></action>)");
+  const auto load = [&](const std::string& sink) {
+    return load_plcopen_xml(
+        project(two_steps(inline_st("a"), blocks), kVarA + kOutputs, body(sink)), "en.xml");
+  };
+  // ENO of a standard function is EN (an error inside it is a range error, not ENO FALSE).
+  const auto r = load(
+      R"(<outVariable localId="5"><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn><expression>n</expression></outVariable>
+    <outVariable localId="9"><connectionPointIn><connection refLocalId="4" formalParameter="ENO"/></connectionPointIn><expression>y</expression></outVariable>)");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* act = r.project->pous[0].find_action("SUM");
+  ASSERT_NE(act, nullptr);
+  ASSERT_FALSE(act->body_unsupported) << act->unsupported_reason;
+  EXPECT_EQ(model::to_st(act->body), "IF NOT a THEN\n  n := n + 1;\nEND_IF;\ny := NOT a;\n");
+
+  // Read by another block, the result would be undefined while EN is FALSE: refused by name.
+  const auto e =
+      load(R"(<inVariable localId="6"><connectionPointOut/><expression>5</expression></inVariable>
+    <block localId="7" typeName="GT"><inputVariables>
+      <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="4" formalParameter="OUT"/></connectionPointIn></variable>
+      <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="6"/></connectionPointIn></variable>
+    </inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+    <outVariable localId="8"><connectionPointIn><connection refLocalId="7" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>)");
+  const auto* refused = e.ok() ? e.project->pous[0].find_action("SUM") : nullptr;
+  ASSERT_NE(refused, nullptr) << errors_of(e);
+  EXPECT_TRUE(refused->body_unsupported);
+  EXPECT_NE(refused->unsupported_reason.find(
+                "EN input of block ADD whose result is not assigned straight to a variable"),
+            std::string::npos)
+      << refused->unsupported_reason;
 }
 
 TEST(PlcopenXml, ActionWithAnSfcBodyIsANestedChart) {
