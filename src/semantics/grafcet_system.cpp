@@ -682,15 +682,20 @@ void GrafcetSystem::emit(StateView source, const Partial& v, const Result& r,
 
 /// Splits the partial valuation on demand: each leaf decides the whole evolution, so the
 /// number of evolutions computed follows the inputs that matter, not 2^inputs.
-void GrafcetSystem::explore(StateView source, Partial start, bool initial,
-                            SuccessorSink& sink) const {
+void GrafcetSystem::explore(StateView source, Partial start, bool initial, SuccessorSink& sink,
+                            std::uint64_t* leaves) const {
   std::vector<Partial> work{std::move(start)};
   Result r;
   while (!work.empty()) {
     Partial p = std::move(work.back());
     work.pop_back();
     r.split = -1;
-    switch (evolve(source, p, initial, r)) {
+    const auto status = evolve(source, p, initial, r);
+    // A state whose evolutions split on many inputs is wide: the engine may stop it (the
+    // probe of --engine auto hands such charts to the symbolic engines), as for IEC 61131-3.
+    if (leaves && status != Status::Split && (++*leaves & 4095U) == 0)
+      sink.valuations(*leaves, work.capacity() * sizeof(Partial));
+    switch (status) {
       case Status::Stable:
         emit(initial ? StateView{} : source, p, r, sink);
         break;
@@ -720,18 +725,19 @@ void GrafcetSystem::initial_states(SuccessorSink& sink) const {
   // Pseudo-inputs play no role at the start: no delay is running yet.
   for (std::size_t i = 0; i < gin_.size(); ++i)
     if (gin_[i].pseudo) p.known[i] = 1;
-  explore(initial_template_, p, true, sink);
+  explore(initial_template_, p, true, sink, nullptr);
 }
 
 void GrafcetSystem::successors(StateView stored_state, SuccessorSink& sink) const {
   // The sink may store new states and move the memory `stored_state` points into: work on a copy.
   const std::vector<StateWord> copy(stored_state.begin(), stored_state.end());
   const StateView state(copy);
+  std::uint64_t leaves = 0;
   if (!options_.single_input_change) {
     Partial p;
     p.val.assign(gin_.size(), 0);
     p.known.assign(gin_.size(), 0);
-    explore(state, p, false, sink);
+    explore(state, p, false, sink, &leaves);
     return;
   }
   // One event at a time: an input takes another value, or a running delay elapses.
@@ -751,14 +757,14 @@ void GrafcetSystem::successors(StateView stored_state, SuccessorSink& sink) cons
       if (!base.known[i]) continue;
       Partial p = base;
       p.val[i] = 1;
-      explore(state, p, false, sink);
+      explore(state, p, false, sink, &leaves);
       continue;
     }
     for (std::int64_t x = 0; x < gin_[i].regions(); ++x) {
       if (x == base.val[i]) continue;
       Partial p = base;
       p.val[i] = x;
-      explore(state, p, false, sink);
+      explore(state, p, false, sink, &leaves);
     }
   }
 }

@@ -89,11 +89,19 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
     table_[entries_[i].slot] = 0;
   }
   for (std::size_t i = 0; i < anomalies_used_; ++i) trim(anomalies_[i].condition, 0);
+  // The pool keeps the cubes of the widest state so far: after a state with millions of
+  // valuations, give most of them back rather than hold them for the rest of the run.
+  constexpr std::size_t kSpareCubesKept = 1U << 16;
+  if (spare_cubes_.size() > kSpareCubesKept) {
+    spare_cubes_.resize(kSpareCubesKept);
+    spare_cubes_.shrink_to_fit();
+  }
   used_ = 0;
   anomalies_used_ = 0;
   machine_.load(state);
   machine_.reset_trail();
   std::uint64_t leaves = 0;
+  std::size_t widest_cube = 0;  // literals: the bytes held are about leaves times a cube
   do {
     // A cycle that reads many inputs has exponentially many leaves: one state alone may
     // outlast the run's deadline, so the clock is read here too, not only between states.
@@ -103,7 +111,9 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
                            "time limit reached while computing the successors of "
                            "one state (" +
                                std::to_string(leaves) + " input valuations so far)");
-      sink.valuations(leaves);  // the engine's own limits (--engine auto's probe)
+      const std::uint64_t cube_bytes = sizeof(InputCube) + widest_cube * sizeof(InputLiteral);
+      // The engine's own limits (--engine auto's probe, --memory).
+      sink.valuations(leaves, (leaves + spare_cubes_.size()) * cube_bytes);
     }
     try {
       if (!machine_.run()) continue;  // excluded by an assumption
@@ -125,6 +135,7 @@ void Iec61131System::successors(StateView state, SuccessorSink& sink) const {
     machine_.pack(scratch_);
     auto& e = entry_for(machine_.fired());
     add_cube(e.condition, e.cubes);
+    widest_cube = std::max(widest_cube, e.condition.cubes[e.cubes - 1].literals.capacity());
   } while (machine_.next_leaf());
   for (std::size_t i = 0; i < used_; ++i) {
     auto& e = entries_[i];

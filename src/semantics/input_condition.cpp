@@ -1,5 +1,7 @@
 #include "semantics/input_condition.hpp"
 
+#include <algorithm>
+
 namespace sfcv::semantics {
 
 bool InputCondition::is_true() const {
@@ -59,6 +61,40 @@ std::string InputCondition::to_string(const std::vector<InputVariable>& inputs) 
     }
   }
   return out;
+}
+
+namespace {
+std::uint64_t hash_cube(const InputCube& c) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const auto& l : c.literals)
+    for (const std::uint64_t v : {std::uint64_t{l.input}, static_cast<std::uint64_t>(l.lo),
+                                  static_cast<std::uint64_t>(l.hi)})
+      h = (h ^ v) * 1099511628211ULL;
+  h ^= h >> 33;  // a final mix: the literals differ in few bits
+  h *= 0xff51afd7ed558ccdULL;
+  return h ^ (h >> 33);
+}
+}  // namespace
+
+void ConditionBuilder::add(const InputCube& cube) {
+  constexpr std::size_t kSearchUpTo = 16;
+  auto& cubes = condition_.cubes;
+  if (cubes.size() < kSearchUpTo) {
+    if (std::find(cubes.begin(), cubes.end(), cube) == cubes.end()) cubes.push_back(cube);
+    return;
+  }
+  if (hashes_.empty())
+    for (const auto& c : cubes) hashes_.insert(hash_cube(c));
+  // A new hash is a new cube; a known one is searched (a repeat, or a rare collision).
+  if (hashes_.insert(hash_cube(cube)).second ||
+      std::find(cubes.begin(), cubes.end(), cube) == cubes.end())
+    cubes.push_back(cube);
+}
+
+std::uint64_t InputCondition::memory_bytes() const {
+  std::uint64_t bytes = cubes.capacity() * sizeof(InputCube);
+  for (const auto& c : cubes) bytes += c.literals.capacity() * sizeof(InputLiteral);
+  return bytes;
 }
 
 }  // namespace sfcv::semantics

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "model/types.hpp"
@@ -47,6 +48,27 @@ struct InputCondition {
 
   /// "LIS1 & !LIS2 | i <= 562" (the RSG's notation: & | !, integer ranges as comparisons).
   std::string to_string(const std::vector<InputVariable>& inputs) const;
+
+  /// Approximate heap bytes of the cubes (the memory budget of one state's enumeration).
+  std::uint64_t memory_bytes() const;
+};
+
+/// A condition built cube by cube without repeats, in first-occurrence order: a search while
+/// it is small, then a hash of every cube, so that adding n cubes costs O(n) however they come
+/// (a wide state may bring millions, in one successor or one per successor).
+class ConditionBuilder {
+ public:
+  void add(const InputCube& cube);
+  void add(const std::vector<InputCube>& cubes) {
+    for (const auto& c : cubes) add(c);
+  }
+  const InputCondition& condition() const { return condition_; }
+  InputCondition take() && { return std::move(condition_); }
+  std::uint64_t memory_bytes() const { return condition_.memory_bytes() + hashes_.size() * 16; }
+
+ private:
+  InputCondition condition_;
+  std::unordered_set<std::uint64_t> hashes_;  ///< of every cube, once past a few
 };
 
 }  // namespace sfcv::semantics

@@ -65,8 +65,10 @@ class SuccessorSink {
   /// Called by a semantics that enumerates input valuations one by one (IEC 61131-3: the leaves
   /// of the scan cycle's input decisions) every so many of them, with the count for this state
   /// so far: the sink may throw (a limit of its engine, which the semantics cannot know) to stop
-  /// the enumeration; the state then has no successors from this call.
-  virtual void valuations(std::uint64_t /*count*/) {}
+  /// the enumeration; the state then has no successors from this call. `held_bytes`: what the
+  /// semantics holds for this state so far (the input conditions of its successors), for the
+  /// engine's memory budget.
+  virtual void valuations(std::uint64_t /*count*/, std::uint64_t /*held_bytes*/) {}
 };
 
 class TransitionSystem {

@@ -207,6 +207,77 @@ TEST(Budget, MemoryHoldsWhileBuildingTheCircuit) {
   EXPECT_LT(t.seconds, 15.0);
 }
 
+/// A counter whose step alternates with the parity of `inputs` Boolean inputs: every situation
+/// has 2^inputs input valuations and no two share a cube, so one situation's conditions grow
+/// with 2^inputs cubes of `inputs` literals (about 500 MB for 20).
+std::string parity_chart(int inputs) {
+  std::string names, parity;
+  for (int k = 0; k < inputs; ++k) {
+    names += (k ? ", i" : "i") + std::to_string(k);
+    parity += (k ? " XOR i" : "i") + std::to_string(k);
+  }
+  return write_temp("PROGRAM Parity\n  VAR_INPUT " + names +
+                        " : BOOL; END_VAR\n  VAR x : BOOL; n : INT(0..300); END_VAR\n"
+                        "  INITIAL_STEP s0: a(N); END_STEP\n  STEP s1: a(N); END_STEP\n"
+                        "  TRANSITION FROM s0 TO s1 := x; END_TRANSITION\n"
+                        "  TRANSITION FROM s1 TO s0 := NOT x; END_TRANSITION\n"
+                        "  ACTION a: x := " +
+                        parity + "; IF n < 300 THEN n := n + 1; END_IF; END_ACTION\nEND_PROGRAM\n",
+                    ".st");
+}
+
+// Issue 15: --memory holds inside the successors of one wide situation, in the graph builder
+// (all checks) and in the on-the-fly invariant search. Before, neither counted the conditions
+// of the situation being expanded, and the graph builder merged its cubes with a search per
+// cube: 3.4 GB resident under --memory 200M, and a run past ten minutes under --timeout 20.
+TEST(Budget, MemoryHoldsInsideOneWideSituation) {
+  const auto wide = parity_chart(20);
+  for (const std::string what : {"", " --checks none --ctl 'AG !(s1 & n = 300)'"}) {
+    SCOPED_TRACE(what);
+    const auto t = timed_run("check " + wide + " --engine explicit --memory 100M" + what +
+                             " --trace none --quiet");
+    EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+    EXPECT_NE(t.run.out.find("memory"), std::string::npos) << t.run.out;
+    EXPECT_EQ(t.run.out.find("holds"), std::string::npos) << t.run.out;
+    EXPECT_LT(t.seconds, 60.0);
+  }
+  // The deadline too: 2^18 cubes per situation took minutes to merge, without a look at the
+  // clock.
+  const auto t = timed_run("check " + parity_chart(18) +
+                           " --engine explicit --timeout 1 --trace none --quiet");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("time limit"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 15.0);
+}
+
+// Issue 15: the same for Grafcet. 17 partial grafcets, each following its own input: under
+// --multi-input-change every situation has 2^17 evolutions. Before, the explicit engine read
+// the clock only between situations (375 s under --timeout 60) and auto's probe never handed
+// the chart over; now the evolutions count against the deadline and the width bound.
+TEST(Budget, WideGrafcetSituationsHoldTheDeadlineAndGoToTheSymbolicEngines) {
+  std::string g7 = "project wide;\ninput a0";
+  for (int i = 1; i < 17; ++i) g7 += ", a" + std::to_string(i);
+  g7 += ";\noutput o;\n";
+  for (int i = 0; i < 17; ++i) {
+    const auto n = std::to_string(i);
+    g7 += "grafcet G" + n + " {\n  step 0 initial;\n  step 1;\n  transition t" + n +
+          "a: 0 -> 1 when a" + n + ";\n  transition t" + n + "b: 1 -> 0 when !a" + n + ";\n}\n";
+  }
+  g7 += "grafcet Out {\n  step 0 initial;\n  action 0: o;\n}\n";
+  const auto wide = write_temp(g7, ".g7");
+  const std::string args = " --multi-input-change --checks none --ctl 'AG o' --trace none";
+  auto t = timed_run("check " + wide + args + " --engine explicit --timeout 3 --quiet");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("time limit"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 20.0);
+  t = timed_run("check " + wide + args + " --engine auto --timeout 120");
+  EXPECT_EQ(t.run.exit_code, 0) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.err.find("more than 65536 input valuations"), std::string::npos) << t.run.err;
+  // Decided by whichever of the racing engines answers first (bdd or ic3 here).
+  EXPECT_NE(t.run.out.find("holds"), std::string::npos) << t.run.out;
+  EXPECT_EQ(t.run.out.find("[explicit]"), std::string::npos) << t.run.out;
+}
+
 // --engine auto: the explicit probe finds stored-actions violated, gives up at its state bound
 // (4^11 situations) and hands over to the other engines; the violation must stay (issue 14:
 // it was reported unknown after the switch).

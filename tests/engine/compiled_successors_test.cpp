@@ -23,6 +23,7 @@
 namespace sfcv::engine {
 namespace {
 
+using semantics::StateView;
 using semantics::StateWord;
 
 struct Loaded {
@@ -83,6 +84,31 @@ std::uint32_t expect_same_successors(const semantics::TransitionSystem& ts,
       EXPECT_EQ(cb.size(), graph.edges_end(s) - graph.edges_begin(s));
     }
     ++compared;
+  }
+  // Several states at once: the same targets in the same order as state by state, in chunks
+  // of every size up to 64 states (so every packing of states into lanes is met).
+  std::vector<StateWord> states, one_by_one, together;
+  std::vector<std::uint32_t> ends;
+  for (std::uint32_t s = 0; s < compared; ++s) {
+    const auto view = graph.states().at(s);
+    states.insert(states.end(), view.begin(), view.end());
+  }
+  for (std::uint32_t first = 0, size = 1; first < compared; first += size, size = size % 64 + 1) {
+    const auto count = std::min(size, compared - first);
+    const auto chunk = StateView(states).subspan(static_cast<std::size_t>(first) * words,
+                                                 static_cast<std::size_t>(count) * words);
+    one_by_one.clear();
+    together.clear();
+    ends.clear();
+    std::vector<std::uint32_t> expected_ends;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      compiled->targets(chunk.subspan(static_cast<std::size_t>(i) * words, words), one_by_one);
+      expected_ends.push_back(static_cast<std::uint32_t>(one_by_one.size()));
+    }
+    compiled->targets_of(chunk, count, together, ends);
+    EXPECT_EQ(together, one_by_one) << "states " << first << " to " << first + count - 1;
+    EXPECT_EQ(ends, expected_ends);
+    if (together != one_by_one) break;
   }
   return compared;
 }

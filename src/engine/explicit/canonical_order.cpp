@@ -39,13 +39,11 @@ EvolutionLabel evolution_label(const semantics::TransitionSystem& ts, semantics:
   struct Sink final : semantics::SuccessorSink {
     semantics::StateView target;
     EvolutionLabel label;
+    semantics::ConditionBuilder condition;
     bool seen = false;
     void successor(const semantics::Successor& s) override {
       if (!std::equal(s.target.begin(), s.target.end(), target.begin(), target.end())) return;
-      for (const auto& cube : s.condition.cubes)
-        if (std::find(label.condition.cubes.begin(), label.condition.cubes.end(), cube) ==
-            label.condition.cubes.end())
-          label.condition.cubes.push_back(cube);
+      condition.add(s.condition.cubes);
       if (!seen || label.fired.empty()) {
         label.fired.assign(s.fired.begin(), s.fired.end());
       } else if (!std::equal(label.fired.begin(), label.fired.end(), s.fired.begin(),
@@ -61,6 +59,7 @@ EvolutionLabel evolution_label(const semantics::TransitionSystem& ts, semantics:
   sink.target = target;
   const std::vector<semantics::StateWord> copy(source.begin(), source.end());
   ts.successors(copy, sink);
+  sink.label.condition = std::move(sink.condition).take();
   return std::move(sink.label);
 }
 

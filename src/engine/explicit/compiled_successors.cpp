@@ -97,6 +97,7 @@ class CompiledEnumerator final : public TargetEnumerator {
     for (const auto& d : dynamic_bits_) relevant |= mask_[d.lit >> 1];
     const auto r = static_cast<std::uint32_t>(std::popcount(relevant));
     if (r > kMaxRelevantBits) {
+      fallback_->set_memory_in_use(memory_in_use_);
       fallback_->targets(state, out);
       return;
     }
@@ -116,7 +117,81 @@ class CompiledEnumerator final : public TargetEnumerator {
     }
   }
 
+  // Up to 6 input bits, a state needs 2^inputs lanes: 64 / 2^inputs states are evaluated at
+  // once, state g in lanes [g * 2^inputs, (g + 1) * 2^inputs), valuation j in its lane j as in
+  // targets(). Each target starts as a copy of its state and only the latches whose next value
+  // differs from the current one are flipped: a cycle changes few of them.
+  void targets_of(StateView states, std::uint32_t count, std::vector<StateWord>& out,
+                  std::vector<std::uint32_t>& ends) override {
+    const auto inputs = static_cast<std::uint32_t>(input_ids_.size());
+    if (inputs > 6) {
+      TargetEnumerator::targets_of(states, count, out, ends);
+      return;
+    }
+    const std::uint32_t group = 1U << inputs;  // lanes per state
+    const std::uint32_t per = 64 / group;      // states per evaluation
+    const Word fill = lanes(inputs);           // the lanes of state 0
+    for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], kLane[k]);  // period group
+    for (std::uint32_t first = 0; first < count; first += per) {
+      const std::uint32_t n = std::min(per, count - first);
+      const StateWord* s = states.data() + static_cast<std::size_t>(first) * words_;
+      // The latches: about half of them are set in a state, so only the set bits are visited.
+      Word* latches = val_.data() + 2 * first_latch_;
+      const std::size_t num_latches = latch_pos_.size();
+      for (std::size_t i = 0; i < num_latches; ++i) latches[2 * i] = 0;
+      for (std::uint32_t g = 0; g < n; ++g) {
+        const Word lanes_of_g = fill << (g * group);
+        for (std::uint32_t w = 0; w < words_; ++w)
+          for (Word m = s[static_cast<std::size_t>(g) * words_ + w] & held_[w]; m; m &= m - 1)
+            val_[latch_at_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(m))]] |= lanes_of_g;
+      }
+      for (std::size_t i = 0; i < num_latches; ++i) latches[2 * i + 1] = ~latches[2 * i];
+      run(0, gates_.size());
+      const std::uint32_t used = n * group;
+      const Word valid =
+          value(allowed_) & ~value(range_error_) & (used >= 64 ? ~Word{0} : (Word{1} << used) - 1);
+      const std::size_t base = out.size();
+      out.resize(base + static_cast<std::size_t>(std::popcount(valid)) * words_);
+      StateWord* t = out.data() + base;
+      std::uint32_t k = 0;  // targets so far
+      std::uint32_t* rank = rank_;
+      for (std::uint32_t g = 0; g < n; ++g) {
+        const StateWord* state = s + static_cast<std::size_t>(g) * words_;
+        for (Word m = (valid >> (g * group)) & fill; m; m &= m - 1) {
+          rank[g * group + static_cast<std::uint32_t>(std::countr_zero(m))] = k;
+          if (words_ == 1) {
+            t[k] = state[0] & held_[0];
+          } else {
+            for (std::uint32_t w = 0; w < words_; ++w)
+              t[static_cast<std::size_t>(k) * words_ + w] = state[w] & held_[w];
+          }
+          ++k;
+        }
+        ends.push_back(static_cast<std::uint32_t>(base + static_cast<std::size_t>(k) * words_));
+      }
+      const Word* v = val_.data();
+      for (const auto& u : updates_) {
+        Word m = (v[u.next] ^ v[u.current]) & valid;
+        if (!m) continue;
+        const Word bit = u.bit;
+        StateWord* column = t + u.word;
+        if (words_ == 1) {
+          for (; m; m &= m - 1) column[rank[std::countr_zero(m)]] ^= bit;
+        } else {
+          for (; m; m &= m - 1)
+            column[static_cast<std::size_t>(rank[std::countr_zero(m)]) * words_] ^= bit;
+        }
+      }
+    }
+  }
+
  private:
+  /// A latch as targets_of() updates it: the compact literals of its next and current value
+  /// and its place in the packed state.
+  struct LatchUpdate {
+    std::uint32_t next, current, word;
+    Word bit;
+  };
   struct Position {
     std::uint32_t word;
     Word bit;
@@ -242,10 +317,18 @@ class CompiledEnumerator final : public TargetEnumerator {
         const auto bit = fields[f].offset + k;
         latch_pos_[c.field_latches[f][k]] = {bit / 64, Word{1} << (bit % 64)};
       }
+    held_.assign(words_, 0);
+    latch_at_.assign(static_cast<std::size_t>(words_) * 64, 0);
     for (std::size_t i = 0; i < c.aig.latches().size(); ++i) {
       const auto& next_lit = c.aig.latches()[i].next;
       const DynamicBit d{compact(next_lit), latch_pos_[i].word, latch_pos_[i].bit};
       (reads_input[Aig::node_of(next_lit)] ? dynamic_bits_ : static_bits_).push_back(d);
+      updates_.push_back(
+          {d.lit, 2 * (first_latch_ + static_cast<std::uint32_t>(i)), d.word, d.bit});
+      held_[d.word] |= d.bit;
+      if (d.bit)
+        latch_at_[d.word * 64 + static_cast<std::uint32_t>(std::countr_zero(d.bit))] =
+            2 * (first_latch_ + static_cast<std::uint32_t>(i));
     }
     allowed_ = compact(c.allowed);
     range_error_ = compact(c.range_error);
@@ -263,6 +346,9 @@ class CompiledEnumerator final : public TargetEnumerator {
   std::vector<Gate> gates_;
   std::size_t static_state_gates_ = 0;  ///< gates_[0, this) read no input
   std::vector<DynamicBit> static_bits_, dynamic_bits_;
+  std::vector<LatchUpdate> updates_;     ///< every latch
+  std::vector<StateWord> held_;          ///< per state word: the bits some latch holds
+  std::vector<std::uint32_t> latch_at_;  ///< per state bit held by a latch: its literal
   std::uint32_t allowed_ = 1, range_error_ = 0;
   bool allowed_static_ = false;
   std::vector<Word> val_, mask_;

@@ -19,9 +19,23 @@ using logic::Op;
 using semantics::StateView;
 using semantics::StateWord;
 
+void TargetEnumerator::targets_of(StateView states, std::uint32_t count,
+                                  std::vector<StateWord>& out, std::vector<std::uint32_t>& ends) {
+  const std::size_t words = count == 0 ? 0 : states.size() / count;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    targets(states.subspan(i * words, words), out);
+    ends.push_back(static_cast<std::uint32_t>(out.size()));
+  }
+}
+
 namespace {
 
 constexpr std::uint32_t kNone = ~0U;
+
+/// States enumerated together by the serial search: enough for a compiled enumerator to fill
+/// its 64 lanes with several states, few enough that the work done past a stopping state is
+/// small.
+constexpr std::uint32_t kSerialChunkStates = 64;
 
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
@@ -44,10 +58,15 @@ class InterpretedEnumerator final : public TargetEnumerator, semantics::Successo
   }
   // Inside one wide state: the valuation bound of --engine auto's probe, and the run's
   // deadline or cancel (the system reads only the deadline it was built with).
-  void valuations(std::uint64_t count) override {
+  void valuations(std::uint64_t count, std::uint64_t held_bytes) override {
     if (limits_.max_valuations > 0 && count > limits_.max_valuations)
       throw LimitReached(Limit::Valuations, "more than " + std::to_string(limits_.max_valuations) +
                                                 " input valuations in the successors of one state");
+    if (limits_.max_memory_bytes > 0 &&
+        memory_in_use_ + held_bytes + out_->capacity() * sizeof(StateWord) >
+            limits_.max_memory_bytes)
+      throw LimitReached(Limit::Memory,
+                         "memory limit reached while computing the successors of one state");
     limits_.check_time("computing the successors of one state");
   }
   const semantics::TransitionSystem& ts_;
@@ -63,19 +82,18 @@ class EdgeLabel final : public semantics::SuccessorSink {
   explicit EdgeLabel(StateView target) : target_(target) {}
   void successor(const semantics::Successor& s) override {
     if (!std::equal(s.target.begin(), s.target.end(), target_.begin(), target_.end())) return;
-    for (const auto& cube : s.condition.cubes)
-      if (std::find(condition.cubes.begin(), condition.cubes.end(), cube) == condition.cubes.end())
-        condition.cubes.push_back(cube);
+    builder_.add(s.condition.cubes);
     std::vector<std::uint32_t> merged;
     std::set_union(fired.begin(), fired.end(), s.fired.begin(), s.fired.end(),
                    std::back_inserter(merged));
     fired = std::move(merged);
   }
-  semantics::InputCondition condition;
+  const semantics::InputCondition& condition() const { return builder_.condition(); }
   std::vector<std::uint32_t> fired;
 
  private:
   StateView target_;
+  semantics::ConditionBuilder builder_;
 };
 
 bool holds(const logic::Formula& f, const semantics::TransitionSystem& ts, StateView s) {
@@ -161,7 +179,7 @@ logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateSt
       const auto from = store.at(path[i - 1]);
       const std::vector<StateWord> source(from.begin(), from.end());
       ts.successors(source, label);
-      step.inputs = logic::pick_inputs(label.condition, ts.inputs(), previous);
+      step.inputs = logic::pick_inputs(label.condition(), ts.inputs(), previous);
       step.fired = label.fired;
     }
     previous = step.inputs;
@@ -304,11 +322,9 @@ class ParallelTargets {
       try {
         const auto first = c * kChunkStates;
         const auto last = std::min(first + kChunkStates, b.end_ - b.begin_);
-        for (auto i = first; i < last; ++i) {
-          e.targets(StateView(b.states_.data() + static_cast<std::size_t>(i) * words_, words_),
-                    chunk.targets);
-          chunk.ends.push_back(static_cast<std::uint32_t>(chunk.targets.size()));
-        }
+        e.targets_of(StateView(b.states_.data() + static_cast<std::size_t>(first) * words_,
+                               static_cast<std::size_t>(last - first) * words_),
+                     last - first, chunk.targets, chunk.ends);
       } catch (...) {
         error = std::current_exception();
       }
@@ -419,7 +435,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
 
   std::string limit = initial.limit;
   std::uint64_t edges = 0;
-  std::vector<StateWord> current, targets;
+  std::vector<StateWord> targets;
   std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it
   const std::uint32_t words = std::max<std::uint32_t>(ts.layout().words(), 1);
   auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
@@ -458,10 +474,11 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   auto expand = [&](std::uint32_t s, const StateWord* found, std::size_t count) {
     std::uint64_t out_edges = 0;
     just_violated.clear();
+    const std::uint64_t max_states = limits.max_states;
     for (std::size_t k = 0; k < count; k += words) {
       // As the graph builder: no state is stored beyond the limit, and the state being expanded
       // when it is reached stays unexpanded.
-      if (limits.max_states > 0 && store.size() > limits.max_states) {
+      if (max_states > 0 && store.size() > max_states) {
         limit = "states";
         break;
       }
@@ -482,21 +499,33 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     edges += out_edges;
     return true;
   };
+  // The serial search enumerates the stored states [chunk_begin, chunk_end) together; `ends`
+  // holds the end of each one's targets in `targets`. A chunk never crosses a clock poll, so
+  // the enumeration done between two reads of the clock is what it was state by state.
+  std::vector<std::uint32_t> ends;
+  std::uint32_t chunk_begin = 0, chunk_end = 0;
   // A limit inside one state's enumeration (a wide state past --engine auto's valuation bound,
-  // or the deadline): that state stays unexpanded, as a state limit leaves it. An integer input
-  // too wide to enumerate (Limit::Enumeration) still ends the run: the caller names it.
+  // or the deadline): that state stays unexpanded, as a state limit leaves it; the states of
+  // its chunk before it are expanded first. An integer input too wide to enumerate
+  // (Limit::Enumeration) still ends the run: the caller names it.
+  std::uint32_t stopped_at = kNone;  ///< the state whose enumeration threw
+  Limit stopped_by = Limit::Time;
   auto enumerate = [&](std::uint32_t from) {
+    const auto end = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>({store.size(), std::uint64_t{from} + kSerialChunkStates,
+                                 (std::uint64_t{from} | poll_mask) + 1}));
+    targets.clear();
+    ends.clear();
+    chunk_begin = from;
     try {
-      targets.clear();
-      const auto view = store.at(from);
-      current.assign(view.begin(), view.end());
-      enumerator->targets(current, targets);
-      return true;
+      if (limits.max_memory_bytes > 0) enumerator->set_memory_in_use(memory());
+      enumerator->targets_of(store.range(from, end - from), end - from, targets, ends);
     } catch (const LimitReached& stop) {
       if (stop.which() == Limit::Enumeration) throw;
-      limit = to_string(stop.which());
-      return false;
+      stopped_at = from + static_cast<std::uint32_t>(ends.size());
+      stopped_by = stop.which();
     }
+    chunk_end = from + static_cast<std::uint32_t>(ends.size());
   };
   std::uint32_t s = 0;
   ParallelTargets::Batch batches[2];  // outlive the pool's workers
@@ -553,8 +582,13 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   if (serial) {
     for (; limit.empty() && open > 0 && s < store.size(); ++s) {
       if (!before(s)) break;
-      if (!enumerate(s)) break;
-      if (!expand(s, targets.data(), targets.size())) break;
+      if (s >= chunk_end && s != stopped_at) enumerate(s);
+      if (s == stopped_at) {
+        limit = to_string(stopped_by);
+        break;
+      }
+      const std::uint32_t from = s == chunk_begin ? 0 : ends[s - chunk_begin - 1];
+      if (!expand(s, targets.data() + from, ends[s - chunk_begin] - from)) break;
     }
   }
   const bool complete = limit.empty() && s >= store.size();

@@ -9,7 +9,9 @@
 // parents), and the same state and edge counts whenever the whole space is explored. When the
 // search stops early, the counts are those of the part explored.
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "logic/check_result.hpp"
 #include "logic/check_task.hpp"
@@ -25,14 +27,27 @@ class TargetEnumerator {
   virtual ~TargetEnumerator() = default;
   /// Appends the successors of `state` to `out` (words_per_state words each, duplicates allowed).
   virtual void targets(semantics::StateView state, std::vector<semantics::StateWord>& out) = 0;
+  /// The targets of `count` states packed one after another in `states`, in that order, as
+  /// targets() gives them; after each state, the end of its targets in `out` is appended to
+  /// `ends`. A compiled enumerator evaluates several states at once. When it throws, the
+  /// states whose ends were appended are complete and the next one is the one that threw.
+  virtual void targets_of(semantics::StateView states, std::uint32_t count,
+                          std::vector<semantics::StateWord>& out, std::vector<std::uint32_t>& ends);
   /// An enumerator giving the same targets in the same order that may run on another thread
   /// beside this one; null when this one cannot (the interpreted system keeps its scratch
   /// state in the TransitionSystem).
   virtual std::unique_ptr<TargetEnumerator> clone() const { return nullptr; }
+  /// The bytes the caller holds (the store, the parents): one state's enumeration may add to
+  /// them only what the budget's memory leaves.
+  void set_memory_in_use(std::uint64_t bytes) { memory_in_use_ = bytes; }
+
+ protected:
+  std::uint64_t memory_in_use_ = 0;
 };
 
-/// `limits` bounds the enumeration of one state: past its max_valuations, deadline or cancel,
-/// targets() throws LimitReached (Valuations, Time) and appends nothing.
+/// `limits` bounds the enumeration of one state: past its max_valuations, deadline, cancel or
+/// memory (with set_memory_in_use()), targets() throws LimitReached (Valuations, Time,
+/// Memory) and appends nothing.
 std::unique_ptr<TargetEnumerator> make_interpreted_enumerator(const semantics::TransitionSystem& ts,
                                                               model::Budget limits = {});
 

@@ -31,7 +31,7 @@ std::uint64_t hash_condition(const InputCondition& c) {
 /// (source, target) pair, as in the seed's RSG, with the union of the conditions.
 struct PendingEdge {
   std::uint32_t target;
-  std::vector<InputCube> cubes;
+  semantics::ConditionBuilder condition;
   std::vector<std::uint32_t> fired;
 };
 
@@ -48,22 +48,22 @@ class Collector final : public semantics::SuccessorSink {
             std::chrono::steady_clock::time_point start)
       : store_(store), limits_(limits), start_(start) {}
 
-  void begin() {
+  /// Before the successors of a state: `graph_bytes` is what the graph holds besides its store.
+  void begin(std::uint64_t graph_bytes) {
     pending.clear();
+    pending_bytes_ = 0;
+    graph_bytes_ = graph_bytes;
     ++generation_;
   }
 
   void successor(const semantics::Successor& s) override {
     if (limits_.max_states > 0 && store_.size() > limits_.max_states) throw StopExploring{"states"};
-    if ((++calls_ & 1023U) == 0) {
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-      if ((limits_.timeout_seconds > 0 && seconds > limits_.timeout_seconds) ||
-          (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline) ||
-          (limits_.cancel && limits_.cancel->load(std::memory_order_relaxed)))
-        throw StopExploring{"time"};
-      if (limits_.max_memory_bytes > 0 && store_.memory_bytes() > limits_.max_memory_bytes)
-        throw StopExploring{"memory"};
+    // Polled by work, not by calls: one successor of a wide state may bring millions of cubes,
+    // so the limits are read before they are copied.
+    work_ += 1 + s.condition.cubes.size();
+    if (work_ >= next_poll_) {
+      next_poll_ = work_ + 1024;
+      check_limits(s.condition.memory_bytes());
     }
     const std::uint32_t index = store_.insert(s.target).first;
     // Find this target's pending edge in O(1): a generation-stamped slot per state index.
@@ -77,8 +77,9 @@ class Collector final : public semantics::SuccessorSink {
       pending.push_back({index, {}, {}});
     }
     PendingEdge& e = pending[slot_[index]];
-    for (const auto& cube : s.condition.cubes)
-      if (std::find(e.cubes.begin(), e.cubes.end(), cube) == e.cubes.end()) e.cubes.push_back(cube);
+    const auto before = e.condition.memory_bytes();
+    e.condition.add(s.condition.cubes);
+    pending_bytes_ += e.condition.memory_bytes() - before;
     if (e.fired.empty()) {
       e.fired.assign(s.fired.begin(), s.fired.end());
     } else if (!std::equal(e.fired.begin(), e.fired.end(), s.fired.begin(), s.fired.end())) {
@@ -93,25 +94,42 @@ class Collector final : public semantics::SuccessorSink {
 
   /// Inside one state's enumeration (the semantics calls it every few thousand valuations): the
   /// valuation bound, and the deadline, which successor() reads only once the state is done.
-  void valuations(std::uint64_t count) override {
+  void valuations(std::uint64_t count, std::uint64_t held_bytes) override {
     if (limits_.max_valuations > 0 && count > limits_.max_valuations)
       throw StopExploring{"valuations"};
+    check_limits(held_bytes);
+  }
+
+  /// The time and memory limits, `more_bytes` about to be held besides the graph: throws
+  /// StopExploring past one.
+  void check_limits(std::uint64_t more_bytes) const {
     if ((limits_.timeout_seconds > 0 &&
          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count() >
              limits_.timeout_seconds) ||
         (limits_.deadline && std::chrono::steady_clock::now() > *limits_.deadline) ||
         (limits_.cancel && limits_.cancel->load(std::memory_order_relaxed)))
       throw StopExploring{"time"};
+    if (over_memory(more_bytes)) throw StopExploring{"memory"};
   }
 
   std::vector<PendingEdge> pending;
   std::vector<semantics::Anomaly> anomalies;
+  std::uint64_t pending_bytes() const { return pending_bytes_; }
 
  private:
+  /// The graph, the states stored since begin(), the edges pending and what the semantics holds
+  /// for this state (`held_bytes`) against --memory.
+  bool over_memory(std::uint64_t held_bytes) const {
+    return limits_.max_memory_bytes > 0 &&
+           graph_bytes_ + store_.memory_bytes() + pending_bytes_ + held_bytes >
+               limits_.max_memory_bytes;
+  }
+
   StateStore& store_;
   const ExplorationOptions& limits_;
   std::chrono::steady_clock::time_point start_;
-  std::uint64_t calls_ = 0;
+  std::uint64_t work_ = 0, next_poll_ = 1024;
+  std::uint64_t pending_bytes_ = 0, graph_bytes_ = 0;
   std::vector<std::uint32_t> stamp_, slot_;
   std::uint32_t generation_ = 0;
 };
@@ -121,7 +139,7 @@ class Collector final : public semantics::SuccessorSink {
 ReachableSituationGraph::ReachableSituationGraph(const semantics::TransitionSystem& ts)
     : ts_(&ts), states_(ts.layout().words()), fired_somewhere_(ts.transitions().size(), false) {}
 
-std::uint32_t ReachableSituationGraph::intern_condition(const InputCondition& c) {
+std::uint32_t ReachableSituationGraph::intern_condition(InputCondition c) {
   if (2 * (conditions_.size() + 1) > condition_table_.size()) {
     std::vector<std::uint32_t> table(std::max<std::size_t>(1024, 2 * condition_table_.size()), 0);
     const std::size_t mask = table.size() - 1;
@@ -139,7 +157,8 @@ std::uint32_t ReachableSituationGraph::intern_condition(const InputCondition& c)
     const auto id = condition_table_[i] - 1;
     if (condition_hashes_[id] == h && conditions_[id].cubes == c.cubes) return id;
   }
-  conditions_.push_back(c);
+  condition_bytes_ += c.memory_bytes();
+  conditions_.push_back(std::move(c));
   condition_hashes_.push_back(h);
   const auto id = static_cast<std::uint32_t>(conditions_.size() - 1);
   condition_table_[i] = id + 1;
@@ -199,7 +218,9 @@ std::size_t ReachableSituationGraph::memory_bytes() const {
   return states_.memory_bytes() + targets_.capacity() * 4 + offsets_.capacity() * 8 +
          edge_condition_ids_.capacity() * 4 + fired_offsets_.capacity() * 8 +
          fired_.capacity() * 4 + parent_edge_.capacity() * 8 + parent_edge_state_.capacity() * 4 +
-         depth_.capacity() * 4;
+         depth_.capacity() * 4 + condition_table_.capacity() * 4 +
+         condition_hashes_.capacity() * 8 + conditions_.capacity() * sizeof(InputCondition) +
+         condition_bytes_;
 }
 
 ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem& ts,
@@ -212,7 +233,7 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   // Initial states: merge the conditions of duplicates.
   {
     Collector init(g.states_, options, start);
-    init.begin();
+    init.begin(0);
     try {
       ts.initial_states(init);
     } catch (const StopExploring& stop) {
@@ -222,9 +243,9 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
       g.limit_ = to_string(stop.which());
     }
     for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
-    for (const auto& p : init.pending) {
+    for (auto& p : init.pending) {
       g.initial_.push_back(p.target);
-      g.initial_condition_ids_.push_back(g.intern_condition(InputCondition{p.cubes}));
+      g.initial_condition_ids_.push_back(g.intern_condition(std::move(p.condition).take()));
     }
     const auto n = g.states_.size();
     g.parent_edge_state_.assign(n, ReachableSituationGraph::kNone);
@@ -259,12 +280,15 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     }
 
     const std::uint32_t known = g.states_.size();
-    collect.begin();
+    collect.begin(g.memory_bytes() - g.states_.memory_bytes());
     // The sink inserts into the store, which may reallocate: the system must read a copy.
     const auto view = g.states_.at(s);
     current.assign(view.begin(), view.end());
     try {
       ts.successors(current, collect);
+      // The last successors of a wide state may have taken long to merge: read the clock again
+      // before they are stored.
+      if (collect.pending_bytes() > (1U << 20)) collect.check_limits(0);
     } catch (const StopExploring& stop) {
       // State s stays unexpanded: the edges found so far are dropped with it.
       g.limit_ = stop.which;
@@ -284,11 +308,11 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     for (auto& a : collect.anomalies) g.anomalies_.push_back(std::move(a));
     collect.anomalies.clear();
 
-    for (const auto& p : collect.pending) {
+    for (auto& p : collect.pending) {
       const std::uint64_t edge = g.targets_.size();
       g.targets_.push_back(p.target);
       if (options.keep_conditions)
-        g.edge_condition_ids_.push_back(g.intern_condition(InputCondition{p.cubes}));
+        g.edge_condition_ids_.push_back(g.intern_condition(std::move(p.condition).take()));
       if (options.keep_fired) {
         g.fired_.insert(g.fired_.end(), p.fired.begin(), p.fired.end());
         g.fired_offsets_.push_back(g.fired_.size());

@@ -111,7 +111,7 @@ class ReachableSituationGraph {
  private:
   friend ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem&,
                                                                  const ExplorationOptions&);
-  std::uint32_t intern_condition(const semantics::InputCondition& c);
+  std::uint32_t intern_condition(semantics::InputCondition c);
 
   const semantics::TransitionSystem* ts_;
   StateStore states_;
@@ -123,6 +123,7 @@ class ReachableSituationGraph {
   std::vector<std::uint64_t> fired_offsets_{0};
   std::vector<std::uint32_t> fired_;
   std::vector<semantics::InputCondition> conditions_;
+  std::uint64_t condition_bytes_ = 0;  ///< heap bytes of conditions_' cubes
   // Interning of conditions: open addressing over condition ids + 1 (0 = empty), grown at half
   // load, because a Grafcet start can bring millions of distinct conditions (corpus 22).
   std::vector<std::uint32_t> condition_table_;

@@ -5,18 +5,6 @@
 
 namespace sfcv::engine {
 
-namespace {
-constexpr std::uint64_t mix(std::uint64_t h) {
-  // splitmix64 finaliser: cheap and good enough for packed bit vectors.
-  h ^= h >> 30;
-  h *= 0xbf58476d1ce4e5b9ULL;
-  h ^= h >> 27;
-  h *= 0x94d049bb133111ebULL;
-  h ^= h >> 31;
-  return h;
-}
-}  // namespace
-
 StateStore::StateStore(std::uint32_t words_per_state)
     : words_(std::max<std::uint32_t>(words_per_state, 1)), slots_(1024, 0) {}
 
@@ -44,9 +32,7 @@ std::uint32_t StateStore::find(StateView state) const {
   }
 }
 
-std::pair<std::uint32_t, bool> StateStore::insert(StateView state) {
-  if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
-  if (words_ == 1) return insert_word(state[0]);
+std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state) {
   const std::uint64_t h = hash(state);
   const auto tag = static_cast<std::uint32_t>(h >> 32);
   const std::size_t mask = slots_.size() - 1;
@@ -63,19 +49,11 @@ std::pair<std::uint32_t, bool> StateStore::insert(StateView state) {
   }
 }
 
-// A one-word state is its own key: no stored hash tag, no call to compare.
-std::pair<std::uint32_t, bool> StateStore::insert_word(StateWord word) {
-  const std::size_t mask = slots_.size() - 1;
-  for (std::size_t i = mix(0x9e3779b97f4a7c15ULL ^ word) & mask;; i = (i + 1) & mask) {
-    const std::uint32_t s = slots_[i];
-    if (s == 0) {
-      if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
-      data_.push_back(word);
-      slots_[i] = ++size_;
-      return {size_ - 1, true};
-    }
-    if (data_[s - 1] == word) return {s - 1, false};
-  }
+std::uint32_t StateStore::add_word(std::size_t slot, StateWord word) {
+  if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
+  data_.push_back(word);
+  slots_[slot] = ++size_;
+  return size_ - 1;
 }
 
 void StateStore::grow() {

@@ -29,12 +29,20 @@ class StateStore {
   explicit StateStore(std::uint32_t words_per_state);
 
   /// Inserts `state` unless present; returns its index and whether it was new.
-  std::pair<std::uint32_t, bool> insert(StateView state);
+  std::pair<std::uint32_t, bool> insert(StateView state) {
+    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
+    return words_ == 1 ? insert_word(state[0]) : insert_wide(state);
+  }
   /// Index of `state`, or kAbsent.
   std::uint32_t find(StateView state) const;
 
   StateView at(std::uint32_t index) const {
     return {data_.data() + static_cast<std::size_t>(index) * words_, words_};
+  }
+  /// The states [first, first + count), packed one after another.
+  StateView range(std::uint32_t first, std::uint32_t count) const {
+    return {data_.data() + static_cast<std::size_t>(first) * words_,
+            static_cast<std::size_t>(count) * words_};
   }
   std::uint32_t size() const { return size_; }
   std::uint32_t words_per_state() const { return words_; }
@@ -45,7 +53,30 @@ class StateStore {
  private:
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
-  std::pair<std::uint32_t, bool> insert_word(StateWord word);
+  // A one-word state is its own key: no stored hash tag, no call to compare. Inline: the
+  // search inserts every edge's target.
+  std::pair<std::uint32_t, bool> insert_word(StateWord word) {
+    const std::size_t mask = slots_.size() - 1;
+    const std::uint32_t* slots = slots_.data();
+    const StateWord* data = data_.data();
+    for (std::size_t i = hash_word(word) & mask;; i = (i + 1) & mask) {
+      const std::uint32_t s = slots[i];
+      if (s == 0) return {add_word(i, word), true};
+      if (data[s - 1] == word) return {s - 1, false};
+    }
+  }
+  std::uint32_t add_word(std::size_t slot, StateWord word);
+  std::pair<std::uint32_t, bool> insert_wide(StateView state);
+  static std::uint64_t mix(std::uint64_t h) {
+    // splitmix64 finaliser: cheap and good enough for packed bit vectors.
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ULL;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    return h;
+  }
+  static std::uint64_t hash_word(StateWord word) { return mix(0x9e3779b97f4a7c15ULL ^ word); }
   void grow();
 
   std::uint32_t words_;

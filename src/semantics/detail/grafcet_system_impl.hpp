@@ -253,7 +253,10 @@ class GrafcetSystem final : public TransitionSystem {
   Status evolve(StateView source, const Partial& v, bool initial, Result& r) const;
   void init_chart(std::vector<StateWord>& s, int chart) const;
   void clear_chart(std::vector<StateWord>& s, int chart) const;
-  void explore(StateView source, Partial start, bool initial, SuccessorSink& sink) const;
+  /// `leaves` counts the evolutions computed for one state (the engine's width bound reads it
+  /// through SuccessorSink::valuations); null for the initial situations.
+  void explore(StateView source, Partial start, bool initial, SuccessorSink& sink,
+               std::uint64_t* leaves) const;
   void emit(StateView source, const Partial& v, const Result& r, SuccessorSink& sink) const;
 
   GrafcetOptions options_;
