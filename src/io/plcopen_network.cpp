@@ -265,12 +265,8 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
         return fail(v, "unsupported: EN input of block " + type +
                            " whose result is not assigned straight to a variable");
       enabled_function_.clear();
-      if (const auto edge = std::string(v.attribute("edge").value());
-          !edge.empty() && edge != "none")
-        return fail(v, "unsupported: " + edge + " edge input of block " + type);
-      enable_ = input(cpi);
+      enable_ = enable_of(block);
       if (!enable_) return nullptr;
-      enable_ = negate_if(attribute_true(v, "negated"), std::move(enable_));
       continue;
     }
     if (const auto edge = std::string(v.attribute("edge").value()); !edge.empty() && edge != "none")

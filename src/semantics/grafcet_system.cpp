@@ -694,7 +694,8 @@ void GrafcetSystem::explore(StateView source, Partial start, bool initial, Succe
     // A state whose evolutions split on many inputs is wide: the engine may stop it (the
     // probe of --engine auto hands such charts to the symbolic engines), as for IEC 61131-3.
     if (leaves && status != Status::Split && (++*leaves & 4095U) == 0)
-      sink.valuations(*leaves, work.capacity() * sizeof(Partial));
+      sink.valuations(*leaves, work.capacity() * sizeof(Partial) +
+                                   work.size() * gin_.size() * (sizeof(std::int64_t) + 1));
     switch (status) {
       case Status::Stable:
         emit(initial ? StateView{} : source, p, r, sink);

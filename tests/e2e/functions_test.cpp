@@ -64,12 +64,8 @@ TEST(FunctionsE2E, TemporariesStartFreshAtEveryCall) {
       "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; z : BOOL; END_VAR\n"
       "  y := Next() + Next();\n  z := Never(a);\nEND_PROGRAM\n",
       ".st");
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    auto r = run_sfcv(check_command(file, engine, "--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'"));
-    EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
-    r = run_sfcv(check_command(file, engine, "--ctl 'AG y = 0'"));
-    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
-  }
+  expect_on_every_engine(
+      file, {{"--ctl 'AG (y = 0 | y = 12)' --ctl 'AG !z'", 0}, {"--ctl 'AG y = 0'", 1}});
 }
 
 // Recursion through a second function is refused at the call that closes the cycle.
@@ -237,15 +233,8 @@ TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
       write_temp(kPlcopenHeader + functions() + fbd_main(wired, result) + kPlcopenFooter, ".xml");
   const auto open_y =
       write_temp(kPlcopenHeader + functions() + fbd_main("", result) + kPlcopenFooter, ".xml");
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    SCOPED_TRACE(engine);
-    auto r = run_sfcv(check_command(both, engine, "--ctl 'AG (motor -> s1 & s2)'"));
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_sfcv(check_command(both, engine, "--ctl 'AG !motor'"));
-    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-    r = run_sfcv(check_command(open_y, engine, "--ctl 'AG !motor'"));  // y is FALSE: never 2
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-  }
+  expect_on_every_engine(both, {{"--ctl 'AG (motor -> s1 & s2)'", 0}, {"--ctl 'AG !motor'", 1}});
+  expect_on_every_engine(open_y, {{"--ctl 'AG !motor'", 0}});  // y is FALSE: never 2
   const auto unused =
       write_temp(kPlcopenHeader + functions() + fbd_main(wired, "<connection refLocalId=\"1\"/>") +
                      kPlcopenFooter,

@@ -288,15 +288,8 @@ PROGRAM Panel
 END_PROGRAM
 )",
                                ".st");
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    SCOPED_TRACE(engine);
-    auto r = run_sfcv("check " + file + " --engine " + engine +
-                      " --checks none --trace none --ctl 'AG (lit <-> level >= 4)'");
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_sfcv("check " + file + " --engine " + engine +
-                 " --checks none --trace none --ctl 'AG !lit'");
-    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  }
+  expect_on_every_engine(file, {{"--checks none --ctl 'AG (lit <-> level >= 4)'", 0},
+                                {"--checks none --ctl 'AG !lit'", 1}});
   // A bare name that no POU declares is still an error.
   const auto typo = write_temp(R"(
 PROGRAM Main

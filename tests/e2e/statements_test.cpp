@@ -128,13 +128,8 @@ TEST(StatementsE2E, StandardFunctionsTakeFormalArguments) {
       "   AND ABS(IN := k) = ABS(k) AND MOVE(IN := k) = k;\n"
       "END_PROGRAM\n",
       ".st");
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    SCOPED_TRACE(engine);
-    auto r = run_sfcv(check_command(file, engine, "--checks none --ctl 'AG (started -> same)'"));
-    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_sfcv(check_command(file, engine, "--checks none --ctl 'AG lim <= 2'"));
-    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  }
+  expect_on_every_engine(file, {{"--checks none --ctl 'AG (started -> same)'", 0},
+                                {"--checks none --ctl 'AG lim <= 2'", 1}});
   for (const auto& [call, message] : std::vector<std::pair<std::string, std::string>>{
            {"MAX(EN := TRUE, IN1 := 1, IN2 := 2)",
             "EN of a standard function inside an expression"},

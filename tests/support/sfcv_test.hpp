@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace sfcv::test {
 
@@ -81,6 +82,23 @@ inline std::string write_temp(const std::string& text, const std::string& suffix
 inline std::string check_command(const std::string& file, const std::string& engine,
                                  const std::string& options) {
   return "check " + file + " --engine " + engine + " " + options + " --trace none --timeout 60";
+}
+
+/// One verdict of `sfcv check`: its options and the exit code expected (0 holds, 1 violated).
+struct Verdict {
+  std::string options;
+  int exit_code;
+};
+
+/// Each verdict, on the explicit, BDD and IC3 engines alike (check_command's arguments).
+inline void expect_on_every_engine(const std::string& file, const std::vector<Verdict>& verdicts) {
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    for (const auto& v : verdicts) {
+      const auto r = run_sfcv(check_command(file, engine, v.options));
+      EXPECT_EQ(r.exit_code, v.exit_code) << v.options << "\n" << r.out << r.err;
+    }
+  }
 }
 
 /// IEC 61131-3 text of a chain of `n` steps s0..s{n-1} in one loop, each crossed on input `go`
