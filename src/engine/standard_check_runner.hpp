@@ -218,10 +218,11 @@ class StandardCheckRunner {
     return !sp_.empty(sp_.meet(set, sp_.singleton(x)));
   }
   Set step_set(const StepRef& step) { return sp_.observable(step.observable); }
-  const StepRef* find_step(const std::string& pou, const std::string& chart,
+  /// Step `step` of `chart` in the POU instance `path` (logic::instance_paths).
+  const StepRef* find_step(const std::string& path, const std::string& chart,
                            const std::string& step) const {
     for (const auto& s : steps_)
-      if (model::iequals(s.pou, pou) && model::iequals(s.chart, chart) &&
+      if (model::iequals(s.instance, path) && model::iequals(s.chart, chart) &&
           model::iequals(s.step, step))
         return &s;
     return nullptr;
@@ -637,137 +638,133 @@ class StandardCheckRunner {
     std::vector<std::string> not_checked;
     std::size_t stored = 0;
     std::optional<State> first;
-    for (const auto& pou : task_.project->pous) {
-      // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it.
-      std::map<std::string, std::pair<std::vector<const StepRef*>, std::vector<const StepRef*>>> sr;
-      std::map<std::string, std::string> first_set_where;
-      for (const auto& a : pou.associations) {
-        const bool set = a.qualifier == model::Qualifier::S ||
-                         a.qualifier == model::Qualifier::SD ||
-                         a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
-        const bool reset = a.qualifier == model::Qualifier::R;
-        if (!set && !reset) continue;
-        auto& entry = sr[model::to_upper(a.action)];
-        const auto* step = find_step(pou.name, a.chart, a.step);
-        if (set && !first_set_where.count(model::to_upper(a.action)))
-          first_set_where[model::to_upper(a.action)] =
-              a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
-        if (!step) {
-          not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
-          continue;
-        }
-        (set ? entry.first : entry.second).push_back(step);
-      }
-      for (const auto& [action, lists] : sr) {
-        const auto& [sets, resets] = lists;
-        if (!first_set_where.count(action)) continue;
-        ++stored;
-        const std::string name = qualify(pou.name, action);
-        if (resets.empty())
-          add(r, "action " + name + " is stored at step " + first_set_where[action] +
-                     " and never reset (no R qualifier anywhere)");
-        // Set and reset in one situation.
-        std::vector<Set> set_at, reset_at;
-        Set any_set = sp_.none(), any_reset = sp_.none();
-        for (const auto* x : sets) any_set = sp_.join(any_set, set_at.emplace_back(step_set(*x)));
-        for (const auto* y : resets)
-          any_reset = sp_.join(any_reset, reset_at.emplace_back(step_set(*y)));
-        poll();
-        if (const Set both = sp_.meet(any_set, any_reset); !sp_.empty(both)) {
-          const State s = sp_.one(both);
-          std::size_t i = 0, j = 0;
-          while (!contains(set_at[i], s)) ++i;
-          while (!contains(reset_at[j], s)) ++j;
-          add(r, "action " + name + " is set (S at " + sets[i]->step + ") and reset (R at " +
-                     resets[j]->step + ") in the same situation " + sp_.describe(s));
-          note(first, s);
-        }
-        // Set again while stored: needs the stored flag.
-        std::int64_t field = -1;
-        const auto& fields = ts_.layout().fields();
-        for (std::size_t i = 0; i < fields.size(); ++i)
-          if (fields[i].kind == semantics::FieldKind::ActionStored) {
-            std::string fname = fields[i].name;
-            if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
-              fname.resize(fname.size() - 7);
-            if (model::iequals(fname, name) || model::iequals(fname, action))
-              field = static_cast<std::int64_t>(i);
+    for (const auto& pou : task_.project->pous)
+      for (const auto& path : logic::instance_paths(ts_, pou)) {
+        // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it. Each
+        // instance of the POU has its own steps and stored flags.
+        std::map<std::string, std::pair<std::vector<const StepRef*>, std::vector<const StepRef*>>>
+            sr;
+        std::map<std::string, std::string> first_set_where;
+        std::set<std::string> reset_somewhere;  // by the chart, whatever the system shows
+        for (const auto& a : pou.associations) {
+          const bool set =
+              a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
+              a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
+          const bool reset = a.qualifier == model::Qualifier::R;
+          if (!set && !reset) continue;
+          auto& entry = sr[model::to_upper(a.action)];
+          const auto* step = find_step(path, a.chart, a.step);
+          if (set && !first_set_where.count(model::to_upper(a.action)))
+            first_set_where[model::to_upper(a.action)] =
+                a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
+          if (reset) reset_somewhere.insert(model::to_upper(a.action));
+          if (!step) {
+            not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
+            continue;
           }
-        if (field < 0) {
-          not_checked.push_back("set again while stored (" + name +
-                                "): the system exposes no "
-                                "stored flag for it");
-          continue;
+          (set ? entry.first : entry.second).push_back(step);
         }
-        const Set flagged = sp_.field_nonzero(static_cast<std::uint32_t>(field));
-        std::vector<Set> again;
-        Set any_again = sp_.none();
-        for (const auto& x : set_at) {
+        for (const auto& [action, lists] : sr) {
+          const auto& [sets, resets] = lists;
+          if (!first_set_where.count(action)) continue;
+          ++stored;
+          const std::string name = qualify(path, action);
+          if (!reset_somewhere.count(action))
+            add(r, "action " + name + " is stored at step " + first_set_where[action] +
+                       " and never reset (no R qualifier anywhere)");
+          // Set and reset in one situation.
+          std::vector<Set> set_at, reset_at;
+          Set any_set = sp_.none(), any_reset = sp_.none();
+          for (const auto* x : sets) any_set = sp_.join(any_set, set_at.emplace_back(step_set(*x)));
+          for (const auto* y : resets)
+            any_reset = sp_.join(any_reset, reset_at.emplace_back(step_set(*y)));
           poll();
-          any_again =
-              sp_.join(any_again, again.emplace_back(sp_.meet(sp_.minus(flagged, x), sp_.pre(x))));
-        }
-        if (!sp_.empty(any_again)) {
-          const State s = sp_.one(any_again);
-          std::size_t i = 0;
-          while (!contains(again[i], s)) ++i;
-          add(r, "action " + name + " is set again (S at " + sets[i]->step +
-                     ") while already stored, from situation " + sp_.describe(s));
-          note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), set_at[i])));
-        }
-      }
-      // IEC 60848 stored actions: a variable set to 1 and never to 0, or to different values
-      // on one evolution.
-      std::map<std::string, std::vector<const model::StoredAction*>> by_var;
-      for (const auto& a : pou.stored_actions) by_var[model::to_upper(a.variable)].push_back(&a);
-      for (const auto& [var, list] : by_var) {
-        ++stored;
-        std::set<std::int64_t> values;
-        bool non_constant = false;
-        for (const auto* a : list) {
-          if (a->value && (a->value->kind == model::ExprKind::BoolConst ||
-                           a->value->kind == model::ExprKind::IntConst))
-            values.insert(a->value->value);
-          else
-            non_constant = true;
-        }
-        if (!non_constant && values.size() == 1 && *values.begin() == 1)
-          add(r, "output " + list.front()->variable + " is set to 1 by stored actions (" +
-                     list.front()->where.str() + ") and never reset to 0");
-        for (std::size_t i = 0; i < list.size(); ++i)
-          for (std::size_t j = i + 1; j < list.size(); ++j) {
-            const auto* a = list[i];
-            const auto* b = list[j];
-            if (a->when != model::StoredWhen::Activation ||
-                b->when != model::StoredWhen::Activation)
-              continue;
-            if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
-            const auto* sa = find_step(pou.name, a->chart, a->step);
-            const auto* sb = find_step(pou.name, b->chart, b->step);
-            if (!sa || !sb) {
-              not_checked.push_back("stored actions on " + a->variable +
-                                    " at steps without "
-                                    "an observable");
-              continue;
-            }
-            poll();
-            // Both steps activated by one evolution.
-            const Set both = sp_.meet(step_set(*sa), step_set(*sb));
-            const Set from = sp_.meet(
-                sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)), sp_.pre(both));
-            if (sp_.empty(from)) continue;
-            const State s = sp_.one(from);
-            add(r, "output " + a->variable +
-                       " is set to different values at once by the "
-                       "activation of " +
-                       sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
-            note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
+          if (const Set both = sp_.meet(any_set, any_reset); !sp_.empty(both)) {
+            const State s = sp_.one(both);
+            std::size_t i = 0, j = 0;
+            while (!contains(set_at[i], s)) ++i;
+            while (!contains(reset_at[j], s)) ++j;
+            add(r, "action " + name + " is set (S at " + sets[i]->step + ") and reset (R at " +
+                       resets[j]->step + ") in the same situation " + sp_.describe(s));
+            note(first, s);
           }
-        if (list.size() > 0)
-          not_checked.push_back("set again while stored (" + list.front()->variable +
-                                "): not checked for IEC 60848 stored actions");
+          // Set again while stored: needs the stored flag.
+          const auto field = logic::stored_flag_field(ts_, path, action);
+          if (!field) {
+            not_checked.push_back("set again while stored (" + name +
+                                  "): the system exposes no "
+                                  "stored flag for it");
+            continue;
+          }
+          const Set flagged = sp_.field_nonzero(*field);
+          std::vector<Set> again;
+          Set any_again = sp_.none();
+          for (const auto& x : set_at) {
+            poll();
+            any_again = sp_.join(any_again,
+                                 again.emplace_back(sp_.meet(sp_.minus(flagged, x), sp_.pre(x))));
+          }
+          if (!sp_.empty(any_again)) {
+            const State s = sp_.one(any_again);
+            std::size_t i = 0;
+            while (!contains(again[i], s)) ++i;
+            add(r, "action " + name + " is set again (S at " + sets[i]->step +
+                       ") while already stored, from situation " + sp_.describe(s));
+            note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), set_at[i])));
+          }
+        }
+        // IEC 60848 stored actions: a variable set to 1 and never to 0, or to different values
+        // on one evolution.
+        std::map<std::string, std::vector<const model::StoredAction*>> by_var;
+        for (const auto& a : pou.stored_actions) by_var[model::to_upper(a.variable)].push_back(&a);
+        for (const auto& [var, list] : by_var) {
+          ++stored;
+          std::set<std::int64_t> values;
+          bool non_constant = false;
+          for (const auto* a : list) {
+            if (a->value && (a->value->kind == model::ExprKind::BoolConst ||
+                             a->value->kind == model::ExprKind::IntConst))
+              values.insert(a->value->value);
+            else
+              non_constant = true;
+          }
+          if (!non_constant && values.size() == 1 && *values.begin() == 1)
+            add(r, "output " + list.front()->variable + " is set to 1 by stored actions (" +
+                       list.front()->where.str() + ") and never reset to 0");
+          for (std::size_t i = 0; i < list.size(); ++i)
+            for (std::size_t j = i + 1; j < list.size(); ++j) {
+              const auto* a = list[i];
+              const auto* b = list[j];
+              if (a->when != model::StoredWhen::Activation ||
+                  b->when != model::StoredWhen::Activation)
+                continue;
+              if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
+              const auto* sa = find_step(path, a->chart, a->step);
+              const auto* sb = find_step(path, b->chart, b->step);
+              if (!sa || !sb) {
+                not_checked.push_back("stored actions on " + a->variable +
+                                      " at steps without "
+                                      "an observable");
+                continue;
+              }
+              poll();
+              // Both steps activated by one evolution.
+              const Set both = sp_.meet(step_set(*sa), step_set(*sb));
+              const Set from = sp_.meet(
+                  sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)), sp_.pre(both));
+              if (sp_.empty(from)) continue;
+              const State s = sp_.one(from);
+              add(r, "output " + a->variable +
+                         " is set to different values at once by the "
+                         "activation of " +
+                         sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
+              note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
+            }
+          if (list.size() > 0)
+            not_checked.push_back("set again while stored (" + list.front()->variable +
+                                  "): not checked for IEC 60848 stored actions");
+        }
       }
-    }
     if (first) {
       r.trace = sp_.path_to(sp_.singleton(*first));
       r.trace->note = "the last situation shows the stored-action defect";
@@ -805,38 +802,30 @@ class StandardCheckRunner {
     std::optional<State> first;
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      for (const auto& conflict : logic::write_conflicts(pou, task_.project)) {
-        const auto& var = conflict.variable;
-        const auto& a = conflict.first;
-        const auto& b = conflict.second;
-        ++pairs;
-        std::uint32_t ia = 0, ib = 0;
-        bool ok = true;
-        for (auto [name, idx] : {std::pair{&a.action, &ia}, std::pair{&b.action, &ib}}) {
-          std::optional<std::uint32_t> hit;
-          for (const auto& cand : {qualify(pou.name, *name), *name}) {
-            hit = semantics::find_observable(ts_, cand);
-            if (hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action) break;
-            hit.reset();
+      const auto conflicts = logic::write_conflicts(pou, task_.project);
+      // Each instance writes its own variables: its actions are judged among themselves.
+      for (const auto& path : logic::instance_paths(ts_, pou))
+        for (const auto& conflict : conflicts) {
+          const auto& var = conflict.variable;
+          const auto& a = conflict.first;
+          const auto& b = conflict.second;
+          ++pairs;
+          const auto ia = logic::action_observable(ts_, path, a.action);
+          const auto ib = logic::action_observable(ts_, path, b.action);
+          if (!ia || !ib) {
+            not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                  ": the system exposes no activity for these actions");
+            continue;
           }
-          if (hit)
-            *idx = *hit;
-          else
-            ok = false;
+          poll();
+          const Set both = sp_.meet(sp_.observable(*ia), sp_.observable(*ib));
+          if (sp_.empty(both)) continue;
+          const State s = sp_.one(both);
+          add(r, "variable " + var + (model::iequals(path, pou.name) ? "" : " of " + path) +
+                     " is written by " + a.shown() + " and " + b.shown() +
+                     " in the same cycle, in situation " + sp_.describe(s));
+          note(first, s);
         }
-        if (!ok) {
-          not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                ": the system exposes no activity for these actions");
-          continue;
-        }
-        poll();
-        const Set both = sp_.meet(sp_.observable(ia), sp_.observable(ib));
-        if (sp_.empty(both)) continue;
-        const State s = sp_.one(both);
-        add(r, "variable " + var + " is written by " + a.shown() + " and " + b.shown() +
-                   " in the same cycle, in situation " + sp_.describe(s));
-        note(first, s);
-      }
     }
     if (first) {
       r.trace = sp_.path_to(sp_.singleton(*first));

@@ -102,33 +102,46 @@ std::vector<bool> loop_steps(const model::Chart& chart) {
 }
 }  // namespace
 
+std::vector<std::string> instance_paths(const semantics::TransitionSystem& ts,
+                                        const model::Pou& pou) {
+  const auto instances = ts.pou_instances();
+  if (instances.empty()) return {pou.name};
+  std::vector<std::string> out;
+  for (const auto& i : instances)
+    if (model::iequals(i.pou, pou.name)) out.push_back(i.path);
+  return out;
+}
+
 std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
                                const model::Project* project) {
   const auto& obs = ts.observables();
+  const bool by_instance = !ts.pou_instances().empty();
   std::map<std::uint32_t, StepRef> matched;
   if (project) {
     for (const auto& pou : project->pous)
-      for (const auto& chart : pou.charts) {
-        const auto loops = loop_steps(chart);
-        for (std::size_t i = 0; i < chart.steps.size(); ++i) {
-          const auto& step = chart.steps[i];
-          std::uint32_t idx = 0;
-          bool found = false;
-          for (const auto& candidate :
-               {pou.name + "." + chart.name + "." + step.name, pou.name + "." + step.name,
-                chart.name + "." + step.name, step.name}) {
-            const auto hit = semantics::find_observable(ts, candidate);
-            if (hit && obs[*hit].kind == semantics::ObservableKind::Step) {
-              idx = *hit;
-              found = true;
+      for (const auto& path : instance_paths(ts, pou))
+        for (const auto& chart : pou.charts) {
+          const auto loops = loop_steps(chart);
+          for (std::size_t i = 0; i < chart.steps.size(); ++i) {
+            const auto& step = chart.steps[i];
+            // A system with instances names every step from its instance; else the bare names
+            // are tried too (Grafcet: "X12").
+            std::vector<std::string> candidates{path + "." + chart.name + "." + step.name,
+                                                path + "." + step.name};
+            if (!by_instance) {
+              candidates.push_back(chart.name + "." + step.name);
+              candidates.push_back(step.name);
+            }
+            for (const auto& candidate : candidates) {
+              const auto hit = semantics::find_observable(ts, candidate);
+              if (!hit || obs[*hit].kind != semantics::ObservableKind::Step) continue;
+              if (!matched.count(*hit))
+                matched[*hit] = StepRef{*hit, pou.name, chart.name, step.name,
+                                        path, loops[i], step.where, obs[*hit].name};
               break;
             }
           }
-          if (!found || matched.count(idx)) continue;
-          matched[idx] =
-              StepRef{idx, pou.name, chart.name, step.name, loops[i], step.where, obs[idx].name};
         }
-      }
   }
   std::vector<StepRef> out;
   for (std::uint32_t i = 0; i < obs.size(); ++i) {
@@ -145,6 +158,33 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
     }
   }
   return out;
+}
+
+std::optional<std::uint32_t> action_observable(const semantics::TransitionSystem& ts,
+                                               const std::string& path, const std::string& action) {
+  std::vector<std::string> candidates{path.empty() ? action : path + "." + action};
+  if (ts.pou_instances().empty()) candidates.push_back(action);
+  for (const auto& c : candidates)
+    if (const auto hit = semantics::find_observable(ts, c);
+        hit && ts.observables()[*hit].kind == semantics::ObservableKind::Action)
+      return hit;
+  return std::nullopt;
+}
+
+std::optional<std::uint32_t> stored_flag_field(const semantics::TransitionSystem& ts,
+                                               const std::string& path, const std::string& action) {
+  const std::string qualified = path.empty() ? action : path + "." + action;
+  const bool bare_too = ts.pou_instances().empty();
+  std::optional<std::uint32_t> field;
+  const auto& fields = ts.layout().fields();
+  for (std::uint32_t i = 0; i < fields.size(); ++i) {
+    if (fields[i].kind != semantics::FieldKind::ActionStored) continue;
+    std::string name = fields[i].name;
+    if (name.size() > 7 && model::iequals(name.substr(name.size() - 7), ".stored"))
+      name.resize(name.size() - 7);
+    if (model::iequals(name, qualified) || (bare_too && model::iequals(name, action))) field = i;
+  }
+  return field;
 }
 
 FormulaPtr observable_atom(const semantics::TransitionSystem& ts, std::uint32_t index) {

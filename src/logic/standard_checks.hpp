@@ -47,16 +47,33 @@ std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view
 struct StepRef {
   std::uint32_t observable = 0;
   std::string pou, chart, step;
+  std::string instance;  ///< the POU instance whose step it is ("Main.v1"; `pou` without instances)
   bool on_loop = false;  ///< the step lies on a cycle of its chart's step/transition graph
   model::SourceLocation where;
   std::string display;  ///< the observable's name ("MAIN.FILL_A", "X12")
 };
 
 /// The step observables of `ts`, matched with the chart's steps when `project` is given
-/// (names "POU.STEP", then "STEP"); steps of the system that match no chart step are kept,
-/// with on_loop unknown (false) and no location.
+/// (names "INSTANCE.STEP" for each instance of the POU the system runs, else "POU.STEP", then
+/// "STEP"); steps of the system that match no chart step are kept, with on_loop unknown (false)
+/// and no location.
 std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
                                const model::Project* project);
+
+/// The paths under which `ts` runs `pou`: one per instance ("Main.v1", "Main.v2"), a program's
+/// name; none when the system does not run it; the POU's name where the system has no
+/// instances (Grafcet). The checks that read the chart (stored actions, output conflicts)
+/// judge each instance apart.
+std::vector<std::string> instance_paths(const semantics::TransitionSystem& ts,
+                                        const model::Pou& pou);
+
+/// The activity observable of action `action` of the instance `path` (instance_paths).
+std::optional<std::uint32_t> action_observable(const semantics::TransitionSystem& ts,
+                                               const std::string& path, const std::string& action);
+
+/// The state field holding the stored flag of action `action` of the instance `path`.
+std::optional<std::uint32_t> stored_flag_field(const semantics::TransitionSystem& ts,
+                                               const std::string& path, const std::string& action);
 
 /// Formulas of the CTL-expressible checks, over a resolved step observable.
 FormulaPtr reentry_formula(const semantics::TransitionSystem& ts, std::uint32_t step);

@@ -48,6 +48,7 @@ class HistorySystem final : public TransitionSystem {
   const std::vector<InputVariable>& inputs() const override { return base_.inputs(); }
   const std::vector<Observable>& observables() const override { return observables_; }
   const std::vector<TransitionInfo>& transitions() const override { return base_.transitions(); }
+  std::vector<PouInstance> pou_instances() const override { return base_.pou_instances(); }
   void initial_states(SuccessorSink& sink) const override;
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;

@@ -18,6 +18,13 @@ namespace iec {
 Iec61131System::Iec61131System(std::unique_ptr<Program> p)
     : p_(std::move(p)), machine_(*p_), scratch_(p_->layout.words()) {}
 
+std::vector<PouInstance> Iec61131System::pou_instances() const {
+  std::vector<PouInstance> out;
+  for (const auto& pou : p_->pous)
+    if (!pou.unit) out.push_back({pou.name, pou.type});
+  return out;
+}
+
 void Iec61131System::initial_states(SuccessorSink& sink) const {
   const std::lock_guard<std::recursive_mutex> lock(scratch_lock_);
   std::vector<StateWord> s(p_->layout.words());

@@ -19,6 +19,8 @@ void Compiler::structure() {
     const auto& pou = *sc.pou;
     Pou cp;
     cp.name = sc.name;
+    cp.type = sc.pou->name;
+    cp.unit = sc.unit;
     cp.instance = sc.instance;
     for (std::size_t ci = 0; ci < pou.charts.size(); ++ci) {
       const auto& ch = pou.charts[ci];

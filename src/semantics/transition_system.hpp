@@ -42,6 +42,14 @@ struct TransitionInfo {
   model::SourceLocation where;
 };
 
+/// A POU as the system runs it: a program under its name, an instance of a function block type
+/// under its path ("Main.v1"), whose steps and actions are named from that path; `pou` is its
+/// POU in the project ("Valve").
+struct PouInstance {
+  std::string path;
+  std::string pou;
+};
+
 struct Successor {
   StateView target;
   const InputCondition& condition;       ///< inputs under which this evolution happens
@@ -80,6 +88,9 @@ class TransitionSystem {
   virtual const std::vector<InputVariable>& inputs() const = 0;
   virtual const std::vector<Observable>& observables() const = 0;
   virtual const std::vector<TransitionInfo>& transitions() const = 0;
+  /// The POUs this system runs, each instance apart; empty where every POU of the project
+  /// runs once, under its own name (Grafcet).
+  virtual std::vector<PouInstance> pou_instances() const { return {}; }
 
   /// The initial states, each with the condition on the initial inputs that yields it.
   virtual void initial_states(SuccessorSink& sink) const = 0;

@@ -311,6 +311,64 @@ END_PROGRAM
 // variables that nothing writes (the export holds no I/O mapping), so they stay FALSE: the
 // ELSIF branch runs every cycle, no instance is ever called, and every chart stays in Init.
 // Pinned: 2 states (the initial one and the one after the first cycle set the actuators).
+// The checks that read the chart (reentry, stored-actions, output-conflicts) judge each
+// instance of an FB type apart, on its own steps, flags and actions. Before, the steps of an
+// instance matched no chart step: reentry held with "no step lies on a loop", stored-actions
+// reported an R it could not see as "never reset", output-conflicts was "not checked".
+TEST(Instances, ChartChecksJudgeEachInstanceApart) {
+  auto project = [](const std::string& v2_force) {
+    return write_temp(
+        "FUNCTION_BLOCK Valve\n  VAR_INPUT cmd, force : BOOL; END_VAR\n"
+        "  VAR_OUTPUT open : BOOL; END_VAR\n"
+        "  INITIAL_STEP Closed : ACT_Close(N); END_STEP\n"
+        "  STEP Opened : ACT_Open(N); ACT_Latch(S); END_STEP\n"
+        "  STEP Jammed : ACT_Close(N); END_STEP\n"
+        "  STEP Releasing : ACT_Latch(R); END_STEP\n"
+        "  TRANSITION FROM Closed TO Opened := cmd; END_TRANSITION\n"
+        "  TRANSITION FROM Opened TO Releasing := NOT cmd; END_TRANSITION\n"
+        "  TRANSITION FROM Opened TO Jammed := force; END_TRANSITION\n"
+        "  TRANSITION FROM Jammed TO Opened := NOT force; END_TRANSITION\n"
+        "  TRANSITION FROM Releasing TO Closed := TRUE; END_TRANSITION\n"
+        "  ACTION ACT_Open: open := TRUE; END_ACTION\n"
+        "  ACTION ACT_Close: open := FALSE; END_ACTION\n"
+        "  ACTION ACT_Latch: open := TRUE; END_ACTION\n"
+        "END_FUNCTION_BLOCK\n"
+        "PROGRAM Main\n  VAR_INPUT a, b, f : BOOL; END_VAR\n  VAR v1, v2 : Valve; END_VAR\n"
+        "  v1(cmd := a, force := FALSE);\n  v2(cmd := b, force := " +
+            v2_force + ");\nEND_PROGRAM\n",
+        ".st");
+  };
+  // Only v2 can jam: in Jammed its latch is still stored while ACT_Close writes FALSE, and
+  // leaving Jammed sets the latch again.
+  const auto jams = project("f");
+  const auto never = project("FALSE");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check_command(jams, engine, "--checks stored-actions,output-conflicts"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("action Main.v2.ACT_LATCH is set again (S at Opened) while already"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("variable OPEN of Main.v2 is written by"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("Main.v1.ACT_"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("of Main.v1 "), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("never reset"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("not checked"), std::string::npos) << r.out;
+    r = run_sfcv(check_command(never, engine, "--checks stored-actions,output-conflicts"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("stored actions are used correctly"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("never active together"), std::string::npos) << r.out;
+  }
+  for (const char* engine : {"explicit", "bdd"}) {
+    SCOPED_TRACE(engine);
+    // v1 never jams: its Jammed, on a loop of the chart, is never entered again.
+    const auto r = run_sfcv(check_command(jams, engine, "--checks reentry"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("step Main.v1.Jammed"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("Main.v2.Jammed"), std::string::npos) << r.out;
+  }
+}
+
 TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
   SFCV_REQUIRE_CORPUS(corpus);
   for (const char* f : {"07_codesys_ppu_scenario3v1.xml", "12_codesys_ppu_scenario10.xml"}) {

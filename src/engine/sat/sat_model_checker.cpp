@@ -271,10 +271,11 @@ class Run {
   static std::string qualify(const std::string& pou, const std::string& name) {
     return pou.empty() ? name : pou + "." + name;
   }
-  const logic::StepRef* find_step(const std::string& pou, const std::string& chart,
+  /// Step `step` of `chart` in the POU instance `path` (logic::instance_paths).
+  const logic::StepRef* find_step(const std::string& path, const std::string& chart,
                                   const std::string& step) const {
     for (const auto& s : steps_)
-      if (model::iequals(s.pou, pou) && model::iequals(s.chart, chart) &&
+      if (model::iequals(s.instance, path) && model::iequals(s.chart, chart) &&
           model::iequals(s.step, step))
         return &s;
     return nullptr;
@@ -326,82 +327,79 @@ class Run {
         q.shape = Question::Shape::Unsupported;
         return;
       }
-      // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it.
-      std::map<std::string,
-               std::pair<std::vector<const logic::StepRef*>, std::vector<const logic::StepRef*>>>
-          sr;
-      std::map<std::string, std::string> first_set_where;
-      for (const auto& a : pou.associations) {
-        const bool set = a.qualifier == model::Qualifier::S ||
-                         a.qualifier == model::Qualifier::SD ||
-                         a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
-        const bool reset = a.qualifier == model::Qualifier::R;
-        if (!set && !reset) continue;
-        auto& entry = sr[model::to_upper(a.action)];
-        const auto* step = find_step(pou.name, a.chart, a.step);
-        if (set && !first_set_where.count(model::to_upper(a.action)))
-          first_set_where[model::to_upper(a.action)] =
-              a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
-        if (!step) {
-          q.not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
-          continue;
-        }
-        (set ? entry.first : entry.second).push_back(step);
-      }
-      for (const auto& [action, lists] : sr) {
-        const auto& [sets, resets] = lists;
-        if (!first_set_where.count(action)) continue;
-        ++stored;
-        const std::string name = qualify(pou.name, action);
-        if (resets.empty())
-          q.findings.push_back({std::nullopt,
-                                "action " + name + " is stored at step " +
-                                    first_set_where.at(action) +
-                                    " and never reset (no R qualifier anywhere)",
-                                {}});
-        std::vector<AigLit> set_at, reset_at;
-        for (const auto* x : sets) set_at.push_back(observable_lit(x->observable));
-        for (const auto* y : resets) reset_at.push_back(observable_lit(y->observable));
-        // Set and reset in one situation.
-        finding_if(q, aig.make_and(aig.make_or(set_at), aig.make_or(reset_at)),
-                   [=, this](const ReachResult& r, const logic::Trace& t) {
-                     return "action " + name + " is set (S at " +
-                            sets[first_true(r, set_at)]->step + ") and reset (R at " +
-                            resets[first_true(r, reset_at)]->step + ") in the same situation " +
-                            describe_at(t, 0);
-                   });
-        // Set again while stored: from a situation where the stored flag is set and a set step
-        // is not active, into one where it is (observer latch per set step).
-        std::int64_t field = -1;
-        const auto& fields = ts_.layout().fields();
-        for (std::size_t i = 0; i < fields.size(); ++i)
-          if (fields[i].kind == semantics::FieldKind::ActionStored) {
-            std::string fname = fields[i].name;
-            if (fname.size() > 7 && model::iequals(fname.substr(fname.size() - 7), ".stored"))
-              fname.resize(fname.size() - 7);
-            if (model::iequals(fname, name) || model::iequals(fname, action))
-              field = static_cast<std::int64_t>(i);
-          }
-        if (field < 0) {
-          q.not_checked.push_back("set again while stored (" + name +
-                                  "): the system exposes no stored flag for it");
-          continue;
-        }
-        const AigLit flagged = field_nonzero(static_cast<std::uint32_t>(field));
-        std::vector<AigLit> again;
-        for (std::size_t i = 0; i < set_at.size(); ++i) {
-          const AigLit before =
-              aig.add_latch("stored-again(" + name + ", " + sets[i]->step + ")", false);
-          aig.set_next(static_cast<std::uint32_t>(aig.latches().size() - 1),
-                       aig.make_and(flagged, Aig::make_not(set_at[i])));
-          again.push_back(aig.make_and(before, set_at[i]));
-        }
-        finding_if(q, aig.make_or(again), [=, this](const ReachResult& r, const logic::Trace& t) {
-          return "action " + name + " is set again (S at " + sets[first_true(r, again)]->step +
-                 ") while already stored, from situation " + describe_at(t, 1);
-        });
-      }
     }
+    for (const auto& pou : task_.project->pous)
+      for (const auto& path : logic::instance_paths(ts_, pou)) {
+        // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it. Each
+        // instance of the POU has its own steps and stored flags.
+        std::map<std::string,
+                 std::pair<std::vector<const logic::StepRef*>, std::vector<const logic::StepRef*>>>
+            sr;
+        std::map<std::string, std::string> first_set_where;
+        std::set<std::string> reset_somewhere;  // by the chart, whatever the system shows
+        for (const auto& a : pou.associations) {
+          const bool set =
+              a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
+              a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
+          const bool reset = a.qualifier == model::Qualifier::R;
+          if (!set && !reset) continue;
+          auto& entry = sr[model::to_upper(a.action)];
+          const auto* step = find_step(path, a.chart, a.step);
+          if (set && !first_set_where.count(model::to_upper(a.action)))
+            first_set_where[model::to_upper(a.action)] =
+                a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
+          if (reset) reset_somewhere.insert(model::to_upper(a.action));
+          if (!step) {
+            q.not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
+            continue;
+          }
+          (set ? entry.first : entry.second).push_back(step);
+        }
+        for (const auto& [action, lists] : sr) {
+          const auto& [sets, resets] = lists;
+          if (!first_set_where.count(action)) continue;
+          ++stored;
+          const std::string name = qualify(path, action);
+          if (!reset_somewhere.count(action))
+            q.findings.push_back({std::nullopt,
+                                  "action " + name + " is stored at step " +
+                                      first_set_where.at(action) +
+                                      " and never reset (no R qualifier anywhere)",
+                                  {}});
+          std::vector<AigLit> set_at, reset_at;
+          for (const auto* x : sets) set_at.push_back(observable_lit(x->observable));
+          for (const auto* y : resets) reset_at.push_back(observable_lit(y->observable));
+          // Set and reset in one situation.
+          finding_if(q, aig.make_and(aig.make_or(set_at), aig.make_or(reset_at)),
+                     [=, this](const ReachResult& r, const logic::Trace& t) {
+                       return "action " + name + " is set (S at " +
+                              sets[first_true(r, set_at)]->step + ") and reset (R at " +
+                              resets[first_true(r, reset_at)]->step + ") in the same situation " +
+                              describe_at(t, 0);
+                     });
+          // Set again while stored: from a situation where the stored flag is set and a set step
+          // is not active, into one where it is (observer latch per set step).
+          const auto field = logic::stored_flag_field(ts_, path, action);
+          if (!field) {
+            q.not_checked.push_back("set again while stored (" + name +
+                                    "): the system exposes no stored flag for it");
+            continue;
+          }
+          const AigLit flagged = field_nonzero(*field);
+          std::vector<AigLit> again;
+          for (std::size_t i = 0; i < set_at.size(); ++i) {
+            const AigLit before =
+                aig.add_latch("stored-again(" + name + ", " + sets[i]->step + ")", false);
+            aig.set_next(static_cast<std::uint32_t>(aig.latches().size() - 1),
+                         aig.make_and(flagged, Aig::make_not(set_at[i])));
+            again.push_back(aig.make_and(before, set_at[i]));
+          }
+          finding_if(q, aig.make_or(again), [=, this](const ReachResult& r, const logic::Trace& t) {
+            return "action " + name + " is set again (S at " + sets[first_true(r, again)]->step +
+                   ") while already stored, from situation " + describe_at(t, 1);
+          });
+        }
+      }
     q.holds_message =
         stored == 0 ? "the chart has no stored action" : "stored actions are used correctly";
     if (stored == 0) q.not_checked.clear();  // as the explicit engine: nothing stored to check
@@ -419,15 +417,6 @@ class Run {
     return Aig::make_not(semantics::bv_equal(aig, value, semantics::bv_constant(-lo, width)));
   }
 
-  /// The activity observable of action `name` of POU `pou` ("POU.NAME", then "NAME"); -1 if none.
-  std::int64_t action_observable(const std::string& pou, const std::string& name) const {
-    for (const auto& cand : {qualify(pou, name), name})
-      if (const auto hit = semantics::find_observable(ts_, cand);
-          hit && ts_.observables()[*hit].kind == semantics::ObservableKind::Action)
-        return *hit;
-    return -1;
-  }
-
   void output_conflicts_question(Question& q) {
     if (!task_.project) {
       q.refusal = "not checked: needs the chart (no project given)";
@@ -438,28 +427,29 @@ class Run {
     q.trace_note = "in the last cycle both actions are active";
     std::size_t pairs = 0;
     for (const auto& pou : task_.project->pous) {
-      for (const auto& conflict : logic::write_conflicts(pou, task_.project)) {
-        const auto& var = conflict.variable;
-        const auto& a = conflict.first;
-        const auto& b = conflict.second;
-        ++pairs;
-        const auto ia = action_observable(pou.name, a.action);
-        const auto ib = action_observable(pou.name, b.action);
-        const bool ok = ia >= 0 && ib >= 0;
-        if (!ok) {
-          q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                  ": the system exposes no activity for these actions");
-          continue;
+      const auto conflicts = logic::write_conflicts(pou, task_.project);
+      // Each instance writes its own variables: its actions are judged among themselves.
+      for (const auto& path : logic::instance_paths(ts_, pou))
+        for (const auto& conflict : conflicts) {
+          const auto& var = conflict.variable;
+          const auto& a = conflict.first;
+          const auto& b = conflict.second;
+          ++pairs;
+          const auto ia = logic::action_observable(ts_, path, a.action);
+          const auto ib = logic::action_observable(ts_, path, b.action);
+          if (!ia || !ib) {
+            q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
+                                    ": the system exposes no activity for these actions");
+            continue;
+          }
+          const std::string what = "variable " + var +
+                                   (model::iequals(path, pou.name) ? "" : " of " + path) +
+                                   " is written by " + a.shown() + " and " + b.shown();
+          finding_if(q, aig.make_and(observable_lit(*ia), observable_lit(*ib)),
+                     [=, this](const ReachResult&, const logic::Trace& t) {
+                       return what + " in the same cycle, in situation " + describe_at(t, 0);
+                     });
         }
-        const std::string what =
-            "variable " + var + " is written by " + a.shown() + " and " + b.shown();
-        finding_if(q,
-                   aig.make_and(observable_lit(static_cast<std::uint32_t>(ia)),
-                                observable_lit(static_cast<std::uint32_t>(ib))),
-                   [=, this](const ReachResult&, const logic::Trace& t) {
-                     return what + " in the same cycle, in situation " + describe_at(t, 0);
-                   });
-      }
     }
     q.holds_message = pairs == 0 ? "no variable is written by two actions with different values"
                                  : "actions writing the same variable are never active together";

@@ -21,6 +21,7 @@ class Iec61131System final : public TransitionSystem {
   const std::vector<InputVariable>& inputs() const override { return p_->inputs; }
   const std::vector<Observable>& observables() const override { return p_->observables; }
   const std::vector<TransitionInfo>& transitions() const override { return p_->transition_infos; }
+  std::vector<PouInstance> pou_instances() const override;
   void initial_states(SuccessorSink& sink) const override;
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;
