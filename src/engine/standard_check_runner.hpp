@@ -218,15 +218,6 @@ class StandardCheckRunner {
     return !sp_.empty(sp_.meet(set, sp_.singleton(x)));
   }
   Set step_set(const StepRef& step) { return sp_.observable(step.observable); }
-  /// Step `step` of `chart` in the POU instance `path` (logic::instance_paths).
-  const StepRef* find_step(const std::string& path, const std::string& chart,
-                           const std::string& step) const {
-    for (const auto& s : steps_)
-      if (model::iequals(s.instance, path) && model::iequals(s.chart, chart) &&
-          model::iequals(s.step, step))
-        return &s;
-    return nullptr;
-  }
   /// "and N more": the count of `set` beyond the `shown` situations listed.
   std::string more_than(const Set& set, std::size_t shown) {
     const auto total = sp_.count(set).to_u64();
@@ -639,38 +630,17 @@ class StandardCheckRunner {
     std::size_t stored = 0;
     std::optional<State> first;
     for (const auto& pou : task_.project->pous)
-      for (const auto& path : logic::instance_paths(ts_, pou)) {
+      for (const auto& instance : logic::instances_of(ts_, pou)) {
+        const auto& path = instance.path;
         // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it. Each
         // instance of the POU has its own steps and stored flags.
-        std::map<std::string, std::pair<std::vector<const StepRef*>, std::vector<const StepRef*>>>
-            sr;
-        std::map<std::string, std::string> first_set_where;
-        std::set<std::string> reset_somewhere;  // by the chart, whatever the system shows
-        for (const auto& a : pou.associations) {
-          const bool set =
-              a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
-              a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
-          const bool reset = a.qualifier == model::Qualifier::R;
-          if (!set && !reset) continue;
-          auto& entry = sr[model::to_upper(a.action)];
-          const auto* step = find_step(path, a.chart, a.step);
-          if (set && !first_set_where.count(model::to_upper(a.action)))
-            first_set_where[model::to_upper(a.action)] =
-                a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
-          if (reset) reset_somewhere.insert(model::to_upper(a.action));
-          if (!step) {
-            not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
-            continue;
-          }
-          (set ? entry.first : entry.second).push_back(step);
-        }
-        for (const auto& [action, lists] : sr) {
-          const auto& [sets, resets] = lists;
-          if (!first_set_where.count(action)) continue;
+        for (const auto& entry : logic::stored_action_steps(pou, instance, steps_, not_checked)) {
+          const auto& sets = entry.sets;
+          const auto& resets = entry.resets;
           ++stored;
-          const std::string name = qualify(path, action);
-          if (!reset_somewhere.count(action))
-            add(r, "action " + name + " is stored at step " + first_set_where[action] +
+          const std::string name = qualify(entry.scope, entry.action);
+          if (!entry.reset_anywhere)
+            add(r, "action " + name + " is stored at step " + entry.first_set +
                        " and never reset (no R qualifier anywhere)");
           // Set and reset in one situation.
           std::vector<Set> set_at, reset_at;
@@ -689,7 +659,7 @@ class StandardCheckRunner {
             note(first, s);
           }
           // Set again while stored: needs the stored flag.
-          const auto field = logic::stored_flag_field(ts_, path, action);
+          const auto field = logic::stored_flag_field(ts_, entry.scope, entry.action);
           if (!field) {
             not_checked.push_back("set again while stored (" + name +
                                   "): the system exposes no "
@@ -739,8 +709,8 @@ class StandardCheckRunner {
                   b->when != model::StoredWhen::Activation)
                 continue;
               if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
-              const auto* sa = find_step(path, a->chart, a->step);
-              const auto* sb = find_step(path, b->chart, b->step);
+              const auto* sa = logic::find_step(steps_, path, a->chart, a->step);
+              const auto* sb = logic::find_step(steps_, path, b->chart, b->step);
               if (!sa || !sb) {
                 not_checked.push_back("stored actions on " + a->variable +
                                       " at steps without "
@@ -804,21 +774,26 @@ class StandardCheckRunner {
     for (const auto& pou : task_.project->pous) {
       const auto conflicts = logic::write_conflicts(pou, task_.project);
       // Each instance writes its own variables: its actions are judged among themselves.
-      for (const auto& path : logic::instance_paths(ts_, pou))
+      for (const auto& instance : logic::instances_of(ts_, pou))
         for (const auto& conflict : conflicts) {
+          const auto& path = instance.path;
           const auto& var = conflict.variable;
           const auto& a = conflict.first;
           const auto& b = conflict.second;
           ++pairs;
-          const auto ia = logic::action_observable(ts_, path, a.action);
-          const auto ib = logic::action_observable(ts_, path, b.action);
-          if (!ia || !ib) {
+          // The instance's action and its units' copies (each SFC action unit has its own).
+          const auto as = logic::action_observables(ts_, instance, a.action);
+          const auto bs = logic::action_observables(ts_, instance, b.action);
+          if (as.empty() || bs.empty()) {
             not_checked.push_back(var + " written by " + a.action + " and " + b.action +
                                   ": the system exposes no activity for these actions");
             continue;
           }
           poll();
-          const Set both = sp_.meet(sp_.observable(*ia), sp_.observable(*ib));
+          Set both = sp_.none();
+          for (const auto ia : as)
+            for (const auto ib : bs)
+              if (ia != ib) both = sp_.join(both, sp_.meet(sp_.observable(ia), sp_.observable(ib)));
           if (sp_.empty(both)) continue;
           const State s = sp_.one(both);
           add(r, "variable " + var + (model::iequals(path, pou.name) ? "" : " of " + path) +

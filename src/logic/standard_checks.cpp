@@ -1,5 +1,6 @@
 #include "logic/standard_checks.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <set>
@@ -102,14 +103,20 @@ std::vector<bool> loop_steps(const model::Chart& chart) {
 }
 }  // namespace
 
-std::vector<std::string> instance_paths(const semantics::TransitionSystem& ts,
-                                        const model::Pou& pou) {
-  const auto instances = ts.pou_instances();
-  if (instances.empty()) return {pou.name};
-  std::vector<std::string> out;
-  for (const auto& i : instances)
-    if (model::iequals(i.pou, pou.name)) out.push_back(i.path);
-  return out;
+std::vector<semantics::PouInstance> instances_of(const semantics::TransitionSystem& ts,
+                                                 const model::Pou& pou) {
+  auto instances = ts.pou_instances();
+  if (instances.empty()) return {{pou.name, pou.name, {}}};
+  std::erase_if(instances, [&](const auto& i) { return !model::iequals(i.pou, pou.name); });
+  return instances;
+}
+
+std::string chart_scope(const semantics::PouInstance& instance, const std::string& chart) {
+  for (const auto& u : instance.units)
+    if (u.size() > instance.path.size() + 1 &&
+        model::iequals(u.substr(instance.path.size() + 1), chart))
+      return u;
+  return instance.path;
 }
 
 std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
@@ -119,8 +126,9 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
   std::map<std::uint32_t, StepRef> matched;
   if (project) {
     for (const auto& pou : project->pous)
-      for (const auto& path : instance_paths(ts, pou))
+      for (const auto& instance : instances_of(ts, pou))
         for (const auto& chart : pou.charts) {
+          const auto& path = instance.path;
           const auto loops = loop_steps(chart);
           for (std::size_t i = 0; i < chart.steps.size(); ++i) {
             const auto& step = chart.steps[i];
@@ -160,20 +168,73 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
   return out;
 }
 
-std::optional<std::uint32_t> action_observable(const semantics::TransitionSystem& ts,
-                                               const std::string& path, const std::string& action) {
-  std::vector<std::string> candidates{path.empty() ? action : path + "." + action};
-  if (ts.pou_instances().empty()) candidates.push_back(action);
-  for (const auto& c : candidates)
-    if (const auto hit = semantics::find_observable(ts, c);
-        hit && ts.observables()[*hit].kind == semantics::ObservableKind::Action)
-      return hit;
-  return std::nullopt;
+std::vector<std::uint32_t> action_observables(const semantics::TransitionSystem& ts,
+                                              const semantics::PouInstance& instance,
+                                              const std::string& action) {
+  auto find = [&](const std::string& name) -> std::optional<std::uint32_t> {
+    const auto hit = semantics::find_observable(ts, name);
+    if (hit && ts.observables()[*hit].kind == semantics::ObservableKind::Action) return hit;
+    return std::nullopt;
+  };
+  std::vector<std::uint32_t> out;
+  const auto& path = instance.path;
+  if (const auto own = find(path.empty() ? action : path + "." + action)) {
+    out.push_back(*own);
+  } else if (ts.pou_instances().empty()) {  // Grafcet: the bare name too
+    if (const auto bare = find(action)) out.push_back(*bare);
+  }
+  for (const auto& u : instance.units)
+    if (const auto copy = find(u + "." + action)) out.push_back(*copy);
+  return out;
+}
+
+const StepRef* find_step(const std::vector<StepRef>& steps, const std::string& path,
+                         const std::string& chart, const std::string& step) {
+  for (const auto& s : steps)
+    if (model::iequals(s.instance, path) && model::iequals(s.chart, chart) &&
+        model::iequals(s.step, step))
+      return &s;
+  return nullptr;
+}
+
+std::vector<StoredActionSteps> stored_action_steps(const model::Pou& pou,
+                                                   const semantics::PouInstance& instance,
+                                                   const std::vector<StepRef>& steps,
+                                                   std::vector<std::string>& not_checked) {
+  std::vector<StoredActionSteps> out;
+  std::map<std::pair<std::string, std::string>, std::size_t> at;  // (scope, ACTION) -> out
+  for (const auto& a : pou.associations) {
+    const bool set = a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
+                     a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
+    const bool reset = a.qualifier == model::Qualifier::R;
+    if (!set && !reset) continue;
+    const auto scope = chart_scope(instance, a.chart);
+    const auto action = model::to_upper(a.action);
+    const auto [it, added] = at.try_emplace({model::to_upper(scope), action}, out.size());
+    if (added) out.push_back({scope, action, {}, false, {}, {}});
+    auto& entry = out[it->second];
+    if (set && entry.first_set.empty())
+      entry.first_set = a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
+    entry.reset_anywhere |= reset;
+    const auto* step = find_step(steps, instance.path, a.chart, a.step);
+    if (!step) {
+      not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
+      continue;
+    }
+    (set ? entry.sets : entry.resets).push_back(step);
+  }
+  // Only actions that something sets are stored; reported by scope and name.
+  std::erase_if(out, [](const StoredActionSteps& s) { return s.first_set.empty(); });
+  std::sort(out.begin(), out.end(), [](const StoredActionSteps& x, const StoredActionSteps& y) {
+    return std::pair(x.scope, x.action) < std::pair(y.scope, y.action);
+  });
+  return out;
 }
 
 std::optional<std::uint32_t> stored_flag_field(const semantics::TransitionSystem& ts,
-                                               const std::string& path, const std::string& action) {
-  const std::string qualified = path.empty() ? action : path + "." + action;
+                                               const std::string& scope,
+                                               const std::string& action) {
+  const std::string qualified = scope.empty() ? action : scope + "." + action;
   const bool bare_too = ts.pou_instances().empty();
   std::optional<std::uint32_t> field;
   const auto& fields = ts.layout().fields();

@@ -60,20 +60,48 @@ struct StepRef {
 std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
                                const model::Project* project);
 
-/// The paths under which `ts` runs `pou`: one per instance ("Main.v1", "Main.v2"), a program's
-/// name; none when the system does not run it; the POU's name where the system has no
-/// instances (Grafcet). The checks that read the chart (stored actions, output conflicts)
-/// judge each instance apart.
-std::vector<std::string> instance_paths(const semantics::TransitionSystem& ts,
-                                        const model::Pou& pou);
+/// The instances under which `ts` runs `pou`: one per instance ("Main.v1", "Main.v2"), a
+/// program under its name; none when the system does not run it; the POU under its own name
+/// where the system has no instances (Grafcet). The checks that read the chart (stored
+/// actions, output conflicts) judge each instance apart.
+std::vector<semantics::PouInstance> instances_of(const semantics::TransitionSystem& ts,
+                                                 const model::Pou& pou);
 
-/// The activity observable of action `action` of the instance `path` (instance_paths).
-std::optional<std::uint32_t> action_observable(const semantics::TransitionSystem& ts,
-                                               const std::string& path, const std::string& action);
+/// Where the steps of `chart` of `instance` and the actions they control are named: the unit
+/// path of an SFC action run as a unit ("Main.v1.ACT_Init"), else the instance's path.
+std::string chart_scope(const semantics::PouInstance& instance, const std::string& chart);
 
-/// The state field holding the stored flag of action `action` of the instance `path`.
+/// The activity observables of action `action` of `instance`: the instance's own and those of
+/// its units' copies.
+std::vector<std::uint32_t> action_observables(const semantics::TransitionSystem& ts,
+                                              const semantics::PouInstance& instance,
+                                              const std::string& action);
+
+/// Step `step` of `chart` of the instance at `path` among `steps` (step_refs), or null.
+const StepRef* find_step(const std::vector<StepRef>& steps, const std::string& path,
+                         const std::string& chart, const std::string& step);
+
+/// An IEC 61131-3 stored action of one instance: the steps that set it (S, SD, DS, SL) and
+/// reset it (R), in the scope where its copy and stored flag live (chart_scope).
+struct StoredActionSteps {
+  std::string scope;
+  std::string action;           ///< upper case
+  std::string first_set;        ///< the first S step, with its location
+  bool reset_anywhere = false;  ///< some R in the chart, whether or not its step is observable
+  std::vector<const StepRef*> sets, resets;
+};
+
+/// The stored actions of `instance` of `pou`; an association whose step has no observable is
+/// named in `not_checked`.
+std::vector<StoredActionSteps> stored_action_steps(const model::Pou& pou,
+                                                   const semantics::PouInstance& instance,
+                                                   const std::vector<StepRef>& steps,
+                                                   std::vector<std::string>& not_checked);
+
+/// The state field holding the stored flag of action `action` controlled in `scope`
+/// (chart_scope).
 std::optional<std::uint32_t> stored_flag_field(const semantics::TransitionSystem& ts,
-                                               const std::string& path, const std::string& action);
+                                               const std::string& scope, const std::string& action);
 
 /// Formulas of the CTL-expressible checks, over a resolved step observable.
 FormulaPtr reentry_formula(const semantics::TransitionSystem& ts, std::uint32_t step);

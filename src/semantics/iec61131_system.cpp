@@ -20,8 +20,14 @@ Iec61131System::Iec61131System(std::unique_ptr<Program> p)
 
 std::vector<PouInstance> Iec61131System::pou_instances() const {
   std::vector<PouInstance> out;
+  std::vector<std::size_t> at(p_->pous.size(), 0);  // Pou -> its entry in `out`
+  for (std::size_t i = 0; i < p_->pous.size(); ++i)
+    if (!p_->pous[i].unit) {
+      at[i] = out.size();
+      out.push_back({p_->pous[i].name, p_->pous[i].type, {}});
+    }
   for (const auto& pou : p_->pous)
-    if (!pou.unit) out.push_back({pou.name, pou.type});
+    if (pou.unit) out[at[pou.owner]].units.push_back(pou.name);
   return out;
 }
 

@@ -21,6 +21,7 @@ void Compiler::structure() {
     cp.name = sc.name;
     cp.type = sc.pou->name;
     cp.unit = sc.unit;
+    cp.owner = sc.owner;
     cp.instance = sc.instance;
     for (std::size_t ci = 0; ci < pou.charts.size(); ++ci) {
       const auto& ch = pou.charts[ci];

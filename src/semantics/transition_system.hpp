@@ -44,10 +44,12 @@ struct TransitionInfo {
 
 /// A POU as the system runs it: a program under its name, an instance of a function block type
 /// under its path ("Main.v1"), whose steps and actions are named from that path; `pou` is its
-/// POU in the project ("Valve").
+/// POU in the project ("Valve"). `units`: the paths of its SFC actions run as units of their
+/// own ("Main.v1.ACT_Init"), whose steps and action copies are named from those paths.
 struct PouInstance {
   std::string path;
   std::string pou;
+  std::vector<std::string> units;
 };
 
 struct Successor {

@@ -99,6 +99,50 @@ TEST(SfcActionUnits, AnStCallPassesInputsAndSfcResetRestartsTheChart) {
 }
 
 // The counterexample of each engine replays in `sfcv simulate`, step for step.
+// An SFC action run as a unit has its own copies of the actions its steps name, with their
+// own stored flags: stored-actions and output-conflicts judge them there, under the unit's
+// path. The cylinder's `Drive` is set at Moving; reset at Ended, it holds; without the reset,
+// Drive stays stored into Ended, where Stop writes `out` too, and Moving sets it again.
+TEST(SfcActionUnits, StoredActionsAndConflictsAreJudgedInsideTheUnit) {
+  auto project = [](const std::string& ended) {
+    return write_temp(
+        "FUNCTION_BLOCK Cylinder\n  VAR_INPUT SFCReset : BOOL; END_VAR\n"
+        "  VAR_OUTPUT out : BOOL; END_VAR\n  VAR atEnd AT %IX1 : BOOL; END_VAR\n"
+        "  ACTION Drive: out := TRUE; END_ACTION\n  ACTION Stop: out := FALSE; END_ACTION\n"
+        "  ACTION ACT_Extend:\n    INITIAL_STEP Idle: END_STEP\n"
+        "    STEP Moving: Drive(S); END_STEP\n    STEP Ended: " +
+            ended +
+            " END_STEP\n"
+            "    TRANSITION FROM Idle TO Moving := NOT SFCReset; END_TRANSITION\n"
+            "    TRANSITION FROM Moving TO Ended := atEnd; END_TRANSITION\n"
+            "    TRANSITION FROM Ended TO Idle := TRUE; END_TRANSITION\n"
+            "  END_ACTION\nEND_FUNCTION_BLOCK\n" +
+            "PROGRAM Main\n  VAR_INPUT go : BOOL; END_VAR\n  VAR cyl : Cylinder; END_VAR\n"
+            "  INITIAL_STEP Wait: END_STEP\n  STEP Run: cyl.ACT_Extend; END_STEP\n"
+            "  TRANSITION FROM Wait TO Run := go; END_TRANSITION\n"
+            "  TRANSITION FROM Run TO Wait := NOT go; END_TRANSITION\nEND_PROGRAM\n",
+        ".st");
+  };
+  const auto good = project("Drive(R); Stop(N);");
+  const auto bad = project("Stop(N);");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check_command(good, engine, "--checks stored-actions,output-conflicts"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("stored actions are used correctly"), std::string::npos) << r.out;
+    r = run_sfcv(check_command(bad, engine, "--checks stored-actions,output-conflicts"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("action Main.cyl.ACT_Extend.DRIVE is stored at step Moving"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("action Main.cyl.ACT_Extend.DRIVE is set again (S at Moving)"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("variable OUT of Main.cyl is written by"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("not checked"), std::string::npos) << r.out;
+  }
+}
+
 TEST(SfcActionUnits, CounterexamplesReplayInSimulate) {
   for (const auto* text : {&kByAssociation, &kByCall}) {
     const auto file = write_temp(*text, ".st");

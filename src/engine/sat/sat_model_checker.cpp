@@ -271,15 +271,6 @@ class Run {
   static std::string qualify(const std::string& pou, const std::string& name) {
     return pou.empty() ? name : pou + "." + name;
   }
-  /// Step `step` of `chart` in the POU instance `path` (logic::instance_paths).
-  const logic::StepRef* find_step(const std::string& path, const std::string& chart,
-                                  const std::string& step) const {
-    for (const auto& s : steps_)
-      if (model::iequals(s.instance, path) && model::iequals(s.chart, chart) &&
-          model::iequals(s.step, step))
-        return &s;
-    return nullptr;
-  }
   AigLit observable_lit(std::uint32_t o) {
     return logic::circuit_literal(*iec_, *logic::observable_atom(ts_, o));
   }
@@ -329,41 +320,17 @@ class Run {
       }
     }
     for (const auto& pou : task_.project->pous)
-      for (const auto& path : logic::instance_paths(ts_, pou)) {
+      for (const auto& instance : logic::instances_of(ts_, pou)) {
         // IEC 61131-3: S (and SD, DS, SL) sets an action's stored flag, R resets it. Each
         // instance of the POU has its own steps and stored flags.
-        std::map<std::string,
-                 std::pair<std::vector<const logic::StepRef*>, std::vector<const logic::StepRef*>>>
-            sr;
-        std::map<std::string, std::string> first_set_where;
-        std::set<std::string> reset_somewhere;  // by the chart, whatever the system shows
-        for (const auto& a : pou.associations) {
-          const bool set =
-              a.qualifier == model::Qualifier::S || a.qualifier == model::Qualifier::SD ||
-              a.qualifier == model::Qualifier::DS || a.qualifier == model::Qualifier::SL;
-          const bool reset = a.qualifier == model::Qualifier::R;
-          if (!set && !reset) continue;
-          auto& entry = sr[model::to_upper(a.action)];
-          const auto* step = find_step(path, a.chart, a.step);
-          if (set && !first_set_where.count(model::to_upper(a.action)))
-            first_set_where[model::to_upper(a.action)] =
-                a.step + (a.where.known() ? " (" + a.where.str() + ")" : "");
-          if (reset) reset_somewhere.insert(model::to_upper(a.action));
-          if (!step) {
-            q.not_checked.push_back("step " + a.step + " of " + a.action + " has no observable");
-            continue;
-          }
-          (set ? entry.first : entry.second).push_back(step);
-        }
-        for (const auto& [action, lists] : sr) {
-          const auto& [sets, resets] = lists;
-          if (!first_set_where.count(action)) continue;
+        for (const auto& entry : logic::stored_action_steps(pou, instance, steps_, q.not_checked)) {
+          const auto& sets = entry.sets;
+          const auto& resets = entry.resets;
           ++stored;
-          const std::string name = qualify(path, action);
-          if (!reset_somewhere.count(action))
+          const std::string name = qualify(entry.scope, entry.action);
+          if (!entry.reset_anywhere)
             q.findings.push_back({std::nullopt,
-                                  "action " + name + " is stored at step " +
-                                      first_set_where.at(action) +
+                                  "action " + name + " is stored at step " + entry.first_set +
                                       " and never reset (no R qualifier anywhere)",
                                   {}});
           std::vector<AigLit> set_at, reset_at;
@@ -379,7 +346,7 @@ class Run {
                      });
           // Set again while stored: from a situation where the stored flag is set and a set step
           // is not active, into one where it is (observer latch per set step).
-          const auto field = logic::stored_flag_field(ts_, path, action);
+          const auto field = logic::stored_flag_field(ts_, entry.scope, entry.action);
           if (!field) {
             q.not_checked.push_back("set again while stored (" + name +
                                     "): the system exposes no stored flag for it");
@@ -429,15 +396,17 @@ class Run {
     for (const auto& pou : task_.project->pous) {
       const auto conflicts = logic::write_conflicts(pou, task_.project);
       // Each instance writes its own variables: its actions are judged among themselves.
-      for (const auto& path : logic::instance_paths(ts_, pou))
+      for (const auto& instance : logic::instances_of(ts_, pou))
         for (const auto& conflict : conflicts) {
+          const auto& path = instance.path;
           const auto& var = conflict.variable;
           const auto& a = conflict.first;
           const auto& b = conflict.second;
           ++pairs;
-          const auto ia = logic::action_observable(ts_, path, a.action);
-          const auto ib = logic::action_observable(ts_, path, b.action);
-          if (!ia || !ib) {
+          // The instance's action and its units' copies (each SFC action unit has its own).
+          const auto as = logic::action_observables(ts_, instance, a.action);
+          const auto bs = logic::action_observables(ts_, instance, b.action);
+          if (as.empty() || bs.empty()) {
             q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
                                     ": the system exposes no activity for these actions");
             continue;
@@ -445,10 +414,13 @@ class Run {
           const std::string what = "variable " + var +
                                    (model::iequals(path, pou.name) ? "" : " of " + path) +
                                    " is written by " + a.shown() + " and " + b.shown();
-          finding_if(q, aig.make_and(observable_lit(*ia), observable_lit(*ib)),
-                     [=, this](const ReachResult&, const logic::Trace& t) {
-                       return what + " in the same cycle, in situation " + describe_at(t, 0);
-                     });
+          std::vector<AigLit> both;
+          for (const auto ia : as)
+            for (const auto ib : bs)
+              if (ia != ib) both.push_back(aig.make_and(observable_lit(ia), observable_lit(ib)));
+          finding_if(q, aig.make_or(both), [=, this](const ReachResult&, const logic::Trace& t) {
+            return what + " in the same cycle, in situation " + describe_at(t, 0);
+          });
         }
     }
     q.holds_message = pairs == 0 ? "no variable is written by two actions with different values"

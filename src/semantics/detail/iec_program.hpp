@@ -207,8 +207,10 @@ struct Pou {
   std::string name;  ///< a program "Main", or an instance of a user FB "Main.Crane"
   std::string type;  ///< the POU of the project it runs ("Main", "Crane")
   /// A called SFC action of an instance, run as its own unit ("Main.Crane.ACT_Init"): its
-  /// steps are the instance's, named under the action.
+  /// steps, and its copies of the actions they name, are named under the action; `owner` is
+  /// the instance's Pou.
   bool unit = false;
+  std::uint32_t owner = 0;
   /// An instance of a user function block: the cycle does not run it; a Call statement of its
   /// caller does (each call is one cycle of the instance: body, chart evolution, actions).
   bool instance = false;
