@@ -167,6 +167,19 @@ TEST(Budget, TimeoutHoldsOnALargeTwinCatProjectInEveryEngine) {
   }
 }
 
+TEST(Budget, TimeoutHoldsWhenASiftingPassWouldOutlastIt) {
+  // Corpus 09 (641 BDD variables, below the bound of the test above): sifting passes from
+  // 0.4-0.8 M nodes take 6-31 s and cannot be interrupted; one started before the deadline
+  // ended --timeout 15 after 39 s. A pass now starts only if its estimated cost fits in the
+  // time left (15.4 s).
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "09_twincat_xppu_scenario1.xml").string() + "'";
+  const auto t = timed_run("check " + path + " --engine bdd --timeout 15 --trace none --quiet");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_NE(t.run.out.find("time limit"), std::string::npos) << t.run.out;
+  EXPECT_LT(t.seconds, 25.0);
+}
+
 TEST(Budget, InvariantCounterexamplesOnTheQualityControlPlantStayWithinTheBudget) {
   // Corpus 22 has about 2^40 initial situations. The on-the-fly search found AG !X2 violated
   // at an initial situation at once, then enumerated every initial situation again to pick the
