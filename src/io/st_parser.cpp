@@ -248,6 +248,15 @@ ExprPtr Parser::unary_expr() {
   }
   if (at_word("NOT")) {
     const Token& op = next();
+    // NOT is also the standard function NOT(IN := x) (IEC 61131-3 2.5.1.5.1), formal call.
+    if (at(TokenKind::LParen) && at_word("IN", 1) && at(TokenKind::Assign, 2)) {
+      next();
+      next();
+      next();
+      ExprPtr operand = expression();
+      expect(TokenKind::RParen, "')' after the argument of NOT");
+      return model::make_unary(ExprKind::Not, std::move(operand), where(op));
+    }
     return model::make_unary(ExprKind::Not, unary_expr(), where(op));
   }
   ExprPtr e = primary();

@@ -125,7 +125,8 @@ TEST(StatementsE2E, StandardFunctionsTakeFormalArguments) {
       " same := lim = LIMIT(0, k, 3) AND SEL(IN1 := k, G := g, IN0 := 7) = SEL(g, 7, k)\n"
       "   AND MAX(IN2 := k, IN1 := 2) = MAX(2, k) AND MUX(K := 1, IN0 := 4, IN1 := k) = k\n"
       "   AND GT(IN1 := k, IN2 := 0) = (k > 0) AND SUB(IN2 := 1, IN1 := k) = k - 1\n"
-      "   AND ABS(IN := k) = ABS(k) AND MOVE(IN := k) = k;\n"
+      "   AND ABS(IN := k) = ABS(k) AND MOVE(IN := k) = k AND NOT(IN := g) = NOT g\n"
+      "   AND (NOT(IN := g) AND g) = FALSE;\n"
       "END_PROGRAM\n",
       ".st");
   expect_on_every_engine(file, {{"--checks none --ctl 'AG (started -> same)'", 0},
