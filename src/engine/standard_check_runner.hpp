@@ -21,9 +21,11 @@
 //   logic::Trace path_to(s)                  a shortest run from an initial situation into s
 //   State one(s); std::vector<State> first(s, k); Set singleton(x)
 //   std::uint32_t depth(x); std::string describe(x)
-//   bool simultaneous(visit)                 calls visit(fired_a, fired_b, x) for transitions
+//   bool simultaneous(visit, related)        calls visit(fired_a, fired_b, x) for transitions
 //                                            enabled together (see conflicts()); false when
-//                                            the engine cannot enumerate them
+//                                            the engine cannot enumerate them. Grafcet: only
+//                                            evolutions that clear two transitions i, j with
+//                                            related(i, j) need be visited
 //   std::vector<Anomaly<Set>> anomalies()    instabilities and range errors, described
 //   std::optional<std::string> failure()     set once a limit ended the engine's work
 //   std::string note_limit(e)                the message of a limit that stopped a check
@@ -571,7 +573,8 @@ class StandardCheckRunner {
             if (!first) first = s;
             add(r, "transitions " + text + " can both fire from situation " + sp_.describe(s) +
                        " (no priority between them)");
-          });
+          },
+          [](std::uint32_t, std::uint32_t) { return true; });
     } else {
       // Grafcet clears every clearable transition at once: a conflict is two transitions
       // with a common upstream step cleared together.
@@ -589,23 +592,29 @@ class StandardCheckRunner {
             "chart's transitions";
         return;
       }
-      visited = sp_.simultaneous([&](std::span<const std::uint32_t> fired,
-                                     std::span<const std::uint32_t>, const State& s) {
-        for (std::size_t i = 0; i < fired.size(); ++i)
-          for (std::size_t j = i + 1; j < fired.size(); ++j) {
-            poll();
-            std::vector<std::string> common;
-            for (const auto& x : upstream[fired[i]])
-              for (const auto& y : upstream[fired[j]])
-                if (x == y) common.push_back(x);
-            if (common.empty()) continue;
-            const auto text = trs[fired[i]].name + " and " + trs[fired[j]].name;
-            if (!seen.insert(text).second) continue;
-            if (!first) first = s;
-            add(r, "transitions " + text + " share the upstream step " + common.front() +
-                       " and are cleared together from situation " + sp_.describe(s));
-          }
-      });
+      auto common_upstream = [&](std::uint32_t i, std::uint32_t j) {
+        std::vector<std::string> common;
+        for (const auto& x : upstream[i])
+          for (const auto& y : upstream[j])
+            if (x == y) common.push_back(x);
+        return common;
+      };
+      visited = sp_.simultaneous(
+          [&](std::span<const std::uint32_t> fired, std::span<const std::uint32_t>,
+              const State& s) {
+            for (std::size_t i = 0; i < fired.size(); ++i)
+              for (std::size_t j = i + 1; j < fired.size(); ++j) {
+                poll();
+                const auto common = common_upstream(fired[i], fired[j]);
+                if (common.empty()) continue;
+                const auto text = trs[fired[i]].name + " and " + trs[fired[j]].name;
+                if (!seen.insert(text).second) continue;
+                if (!first) first = s;
+                add(r, "transitions " + text + " share the upstream step " + common.front() +
+                           " and are cleared together from situation " + sp_.describe(s));
+              }
+          },
+          [&](std::uint32_t i, std::uint32_t j) { return !common_upstream(i, j).empty(); });
     }
     if (!visited) {
       r.verdict = Verdict::NotChecked;

@@ -400,10 +400,12 @@ class Run {
     /// (merged by target). IEC 61131-3 (--priority none): the (x, plant inputs) where the
     /// choice inputs change the fired set; once a situation is expanded, every (x, plant
     /// inputs) whose fired sets are among its own is dropped. Grafcet: per pair of
-    /// transitions, the situations where both fire; a pair is dropped once one evolution fired
-    /// both, a situation once expanded.
-    template <class Visit>
-    bool simultaneous(Visit&& visit) {
+    /// transitions related(i, j), the situations where both fire; a pair is dropped once one
+    /// evolution fired both, a situation once expanded. (Each situation is expanded through the
+    /// successor function: on corpus 22, looking at all 2,346 pairs instead of the few with a
+    /// common upstream step took the whole --timeout.)
+    template <class Visit, class Related>
+    bool simultaneous(Visit&& visit, Related&& related) {
       const auto& ts = run_.ts_;
       const auto& limits = run_.task_.limits;
       const auto ignored = conflict_ignored_inputs(ts);
@@ -440,6 +442,7 @@ class Run {
       std::vector<Bdd> open;
       for (std::uint32_t i = 0; i < n; ++i)
         for (std::uint32_t j = i + 1; j < n; ++j) {
+          if (!related(i, j)) continue;
           limits.check_time("looking for conflicts");
           const Bdd both = fires(i) & fires(j);
           if (both.is_false()) continue;

@@ -145,9 +145,10 @@ class ExplicitSpace {
   std::string describe(State s) const { return ts_.describe(g_.states().at(s)); }
 
   /// IEC 61131-3: pairs of edges out of one state under overlapping input conditions;
-  /// Grafcet: every edge, with the transitions it clears.
-  template <class Visit>
-  bool simultaneous(Visit&& visit) const {
+  /// Grafcet: every edge, with the transitions it clears (the graph is at hand: no pair is
+  /// left out, `related` is not needed).
+  template <class Visit, class Related>
+  bool simultaneous(Visit&& visit, Related&& /*related*/) const {
     const bool iec = ts_.kind() == semantics::SemanticsKind::Iec61131;
     const auto ignored = conflict_ignored_inputs(ts_);
     for (std::uint32_t s = 0; s < n_; ++s) {
