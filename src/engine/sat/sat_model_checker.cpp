@@ -32,6 +32,10 @@ using semantics::AigLit;
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// --engine ic3 with several targets: the depth of the BMC pass that comes first (solve()).
+constexpr std::uint32_t kBmcFirstDepth = 32;
+
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
@@ -458,9 +462,28 @@ class Run {
       case SatAlgorithm::Ic3:
         break;
     }
+    out.resize(targets_.size());
+    std::vector<bool> decided(targets_.size(), false);
+    if (targets_.size() > 1) {
+      // Many targets (the standard checks: one per step, transition or finding): BMC first, to
+      // a shallow depth and for a quarter of the time left, reaches the shallow ones with
+      // shortest runs at once, and IC3 works on the rest only. IC3 alone, target by target,
+      // left 71 of the 101 steps of corpus 09 undecided at --timeout 40.
+      sat::BoundOptions shallow;
+      shallow.max_depth = std::min<std::uint32_t>(options_.max_depth, kBmcFirstDepth);
+      shallow.deadline = deadline_;
+      if (deadline_.at) shallow.deadline.at = Clock::now() + (*deadline_.at - Clock::now()) / 4;
+      auto first = sat::bmc(query, shallow);
+      for (std::size_t t = 0; t < first.size(); ++t)
+        if (first[t].kind == ReachResult::Kind::Reached) {
+          out[t] = std::move(first[t]);
+          decided[t] = true;
+        }
+    }
     sat::Ic3Options io;
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
+      if (decided[t]) continue;
       auto r = sat::ic3(query, t, io);
       if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
         // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
@@ -478,7 +501,7 @@ class Run {
       }
       // At once: a later target that runs out of time must not cost this proof.
       recheck(t, r);
-      out.push_back(std::move(r));
+      out[t] = std::move(r);
     }
     return out;
   }
