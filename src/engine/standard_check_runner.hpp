@@ -779,44 +779,27 @@ class StandardCheckRunner {
     }
     std::vector<std::string> not_checked;
     std::optional<State> first;
-    std::size_t pairs = 0;
-    for (const auto& pou : task_.project->pous) {
-      const auto conflicts = logic::write_conflicts(pou, task_.project);
-      // Each instance writes its own variables: its actions are judged among themselves.
-      for (const auto& instance : logic::instances_of(ts_, pou))
-        for (const auto& conflict : conflicts) {
-          const auto& path = instance.path;
-          const auto& var = conflict.variable;
-          const auto& a = conflict.first;
-          const auto& b = conflict.second;
-          ++pairs;
-          // The instance's action and its units' copies (each SFC action unit has its own).
-          const auto as = logic::action_observables(ts_, instance, a.action);
-          const auto bs = logic::action_observables(ts_, instance, b.action);
-          if (as.empty() || bs.empty()) {
-            not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                  ": the system exposes no activity for these actions");
-            continue;
-          }
-          poll();
-          Set both = sp_.none();
-          for (const auto ia : as)
-            for (const auto ib : bs)
-              if (ia != ib) both = sp_.join(both, sp_.meet(sp_.observable(ia), sp_.observable(ib)));
-          if (sp_.empty(both)) continue;
-          const State s = sp_.one(both);
-          add(r, "variable " + var + (model::iequals(path, pou.name) ? "" : " of " + path) +
-                     " is written by " + a.shown() + " and " + b.shown() +
-                     " in the same cycle, in situation " + sp_.describe(s));
-          note(first, s);
-        }
+    const auto conflicts = logic::instance_write_conflicts(ts_, *task_.project);
+    for (const auto& c : conflicts) {
+      if (!c.not_checked.empty()) {
+        not_checked.push_back(c.not_checked);
+        continue;
+      }
+      poll();
+      Set both = sp_.none();
+      for (const auto& [a, b] : c.together)
+        both = sp_.join(both, sp_.meet(sp_.observable(a), sp_.observable(b)));
+      if (sp_.empty(both)) continue;
+      const State s = sp_.one(both);
+      add(r, c.what + " in the same cycle, in situation " + sp_.describe(s));
+      note(first, s);
     }
     if (first) {
       r.trace = sp_.path_to(sp_.singleton(*first));
       r.trace->note = "in the last cycle both actions are active";
     }
-    finish(r, pairs == 0 ? "no variable is written by two actions with different values"
-                         : "actions writing the same variable are never active together");
+    finish(r, conflicts.empty() ? "no variable is written by two actions with different values"
+                                : "actions writing the same variable are never active together");
     if (r.verdict == Verdict::Holds && !not_checked.empty()) {
       r.verdict = Verdict::NotChecked;
       r.message = "not checked: " + not_checked.front();

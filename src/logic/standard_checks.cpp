@@ -375,4 +375,31 @@ std::vector<WriteConflict> write_conflicts(const model::Pou& pou, const model::P
   return out;
 }
 
+std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::TransitionSystem& ts,
+                                                            const model::Project& project) {
+  std::vector<InstanceWriteConflict> out;
+  for (const auto& pou : project.pous) {
+    const auto conflicts = write_conflicts(pou, &project);
+    // Each instance writes its own variables: its actions are judged among themselves.
+    for (const auto& instance : instances_of(ts, pou))
+      for (const auto& c : conflicts) {
+        auto& q = out.emplace_back();
+        q.what = "variable " + c.variable +
+                 (model::iequals(instance.path, pou.name) ? "" : " of " + instance.path) +
+                 " is written by " + c.first.shown() + " and " + c.second.shown();
+        const auto as = action_observables(ts, instance, c.first.action);
+        const auto bs = action_observables(ts, instance, c.second.action);
+        if (as.empty() || bs.empty()) {
+          q.not_checked = c.variable + " written by " + c.first.action + " and " + c.second.action +
+                          ": the system exposes no activity for these actions";
+          continue;
+        }
+        for (const auto a : as)
+          for (const auto b : bs)
+            if (a != b) q.together.emplace_back(a, b);
+      }
+  }
+  return out;
+}
+
 }  // namespace sfcv::logic

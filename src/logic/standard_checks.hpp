@@ -134,4 +134,18 @@ struct WriteConflict {
 std::vector<WriteConflict> write_conflicts(const model::Pou& pou,
                                            const model::Project* project = nullptr);
 
+/// A write conflict (write_conflicts) in one instance the system runs, as the engines ask it:
+/// the pairs of activity observables (of the two actions, the instance's own or its units'
+/// copies) that must never be active together. `what` names it ("variable OPEN of Main.v2 is
+/// written by ACT_Close (:= 0) and ACT_Latch (:= 1)"); `not_checked` says why it cannot be
+/// asked when the system shows no activity for an action.
+struct InstanceWriteConflict {
+  std::string what;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> together;
+  std::string not_checked;
+};
+/// Every write conflict of every POU of `project`, per instance of it that `ts` runs.
+std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::TransitionSystem& ts,
+                                                            const model::Project& project);
+
 }  // namespace sfcv::logic

@@ -396,39 +396,23 @@ class Run {
     auto& aig = iec_->aig;
     q.shape = Question::Shape::Findings;
     q.trace_note = "in the last cycle both actions are active";
-    std::size_t pairs = 0;
-    for (const auto& pou : task_.project->pous) {
-      const auto conflicts = logic::write_conflicts(pou, task_.project);
-      // Each instance writes its own variables: its actions are judged among themselves.
-      for (const auto& instance : logic::instances_of(ts_, pou))
-        for (const auto& conflict : conflicts) {
-          const auto& path = instance.path;
-          const auto& var = conflict.variable;
-          const auto& a = conflict.first;
-          const auto& b = conflict.second;
-          ++pairs;
-          // The instance's action and its units' copies (each SFC action unit has its own).
-          const auto as = logic::action_observables(ts_, instance, a.action);
-          const auto bs = logic::action_observables(ts_, instance, b.action);
-          if (as.empty() || bs.empty()) {
-            q.not_checked.push_back(var + " written by " + a.action + " and " + b.action +
-                                    ": the system exposes no activity for these actions");
-            continue;
-          }
-          const std::string what = "variable " + var +
-                                   (model::iequals(path, pou.name) ? "" : " of " + path) +
-                                   " is written by " + a.shown() + " and " + b.shown();
-          std::vector<AigLit> both;
-          for (const auto ia : as)
-            for (const auto ib : bs)
-              if (ia != ib) both.push_back(aig.make_and(observable_lit(ia), observable_lit(ib)));
-          finding_if(q, aig.make_or(both), [=, this](const ReachResult&, const logic::Trace& t) {
-            return what + " in the same cycle, in situation " + describe_at(t, 0);
-          });
-        }
+    const auto conflicts = logic::instance_write_conflicts(ts_, *task_.project);
+    for (const auto& c : conflicts) {
+      if (!c.not_checked.empty()) {
+        q.not_checked.push_back(c.not_checked);
+        continue;
+      }
+      std::vector<AigLit> both;
+      for (const auto& [a, b] : c.together)
+        both.push_back(aig.make_and(observable_lit(a), observable_lit(b)));
+      finding_if(q, aig.make_or(both),
+                 [=, this, what = c.what](const ReachResult&, const logic::Trace& t) {
+                   return what + " in the same cycle, in situation " + describe_at(t, 0);
+                 });
     }
-    q.holds_message = pairs == 0 ? "no variable is written by two actions with different values"
-                                 : "actions writing the same variable are never active together";
+    q.holds_message = conflicts.empty()
+                          ? "no variable is written by two actions with different values"
+                          : "actions writing the same variable are never active together";
   }
 
   std::vector<ReachResult> solve() {
