@@ -16,6 +16,7 @@
 //   Set stuck()                              reached situations without any successor
 //   Set pre(s), post(s)                      reached predecessors / successors of s
 //   Set backward(s)                          the reached situations from which s is reachable
+//   Set forward(s)                           the situations reachable from s (s included)
 //   Set ctl(f, fair)                         the situations satisfying CTL formula f
 //   logic::Trace explain(f, from, fair)      a run from `from` explaining f
 //   logic::Trace path_to(s)                  a shortest run from an initial situation into s
@@ -143,6 +144,8 @@ class StandardCheckRunner {
 
  private:
   static constexpr std::size_t kMaxSituations = 3;  ///< situation findings listed before a summary
+  /// Rounds of bottom_components() before the checks fall back to one formula per step.
+  static constexpr std::size_t kMaxBottomRounds = 64;
 
   static PropertyResult unknown(const std::string& name, StandardCheck id, const std::string& why) {
     PropertyResult r;
@@ -220,6 +223,55 @@ class StandardCheckRunner {
     return !sp_.empty(sp_.meet(set, sp_.singleton(x)));
   }
   Set step_set(const StepRef& step) { return sp_.observable(step.observable); }
+
+  /// The bottom strongly connected components of the reached graph: the classes of mutually
+  /// reachable situations that no evolution leaves (a situation without a successor is one on
+  /// its own). AG EF p holds iff p meets every one of them: from any situation one is reached,
+  /// and inside it every situation stays reachable. The checks that hold read it from here in a
+  /// few fixpoints; the formulas run only for a step that fails (to explain it), instead of
+  /// three fixpoints per step (50 steps: 12.6 s to 0.1 s on the BDD engine). Each round picks a
+  /// situation x: when nothing ahead of x lies outside what reaches x, what lies ahead is a
+  /// component; either way nothing that reaches x belongs to another one, and the next pick
+  /// descends into what lies ahead. Nothing after kMaxBottomRounds rounds (each round finds a
+  /// component or drops one of the graph's components above them).
+  const std::optional<std::vector<Set>>& bottom_components() {
+    if (bottoms_tried_) return bottoms_;
+    bottoms_tried_ = true;
+    if (!sp_.complete()) return bottoms_;
+    std::vector<Set> found;
+    Set candidates = sp_.reached();
+    Set below = sp_.none();
+    for (std::size_t round = 0; !sp_.empty(candidates); ++round) {
+      if (round == kMaxBottomRounds) return bottoms_;
+      poll();
+      const Set inside = sp_.meet(candidates, below);
+      const Set x = sp_.singleton(sp_.one(sp_.empty(inside) ? candidates : inside));
+      const Set ahead = sp_.forward(x);
+      const Set behind = sp_.backward(x);
+      below = sp_.minus(ahead, behind);
+      if (sp_.empty(below)) found.push_back(ahead);
+      candidates = sp_.minus(candidates, behind);
+    }
+    bottoms_ = std::move(found);
+    return bottoms_;
+  }
+  /// Whether `set` meets every bottom component, i.e. whether AG EF set holds; nothing when
+  /// the components are not known. The checks of one set (global-deadlock, initial-return)
+  /// ask only when the per-step checks need the components anyway: for them alone, the two
+  /// closures of a round cost more than their one backward closure.
+  std::optional<bool> meets_every_bottom(const Set& set, bool for_one_set = false) {
+    if (for_one_set && !bottoms_tried_) {
+      const auto& c = task_.checks;
+      if (std::find(c.begin(), c.end(), StandardCheck::Reentry) == c.end() &&
+          std::find(c.begin(), c.end(), StandardCheck::LocalDeadlock) == c.end())
+        return std::nullopt;
+    }
+    const auto& bottoms = bottom_components();
+    if (!bottoms) return std::nullopt;
+    for (const auto& b : *bottoms)
+      if (sp_.empty(sp_.meet(b, set))) return false;
+    return true;
+  }
   /// "and N more": the count of `set` beyond the `shown` situations listed.
   std::string more_than(const Set& set, std::size_t shown) {
     const auto total = sp_.count(set).to_u64();
@@ -398,10 +450,13 @@ class StandardCheckRunner {
                             "which it can never be crossed again");
         continue;
       }
+      const auto known = af ? std::nullopt : meets_every_bottom(step_set(*step));
+      if (known == true) continue;
       auto f = af ? logic::reentry_fair_formula(ts_, step->observable)
                   : logic::reentry_formula(ts_, step->observable);
-      const Set bad = sp_.minus(sp_.initial(), sp_.ctl(f, af));
-      if (sp_.empty(bad)) continue;
+      // Once the components decided the step, the formula runs only for the first trace.
+      const Set bad = known && r.trace ? sp_.none() : sp_.minus(sp_.initial(), sp_.ctl(f, af));
+      if (!known && sp_.empty(bad)) continue;
       add(r, "step " + logic::describe_step(*step) +
                  (af ? " is not re-entered on every fair run (AG AF "
                      : ": a reachable situation exists from which it can never become active "
@@ -429,9 +484,12 @@ class StandardCheckRunner {
       return;
     }
     const Set stuck = sp_.stuck();
-    // On an incomplete graph only a situation without any successor is certainly dead.
-    const Set dead =
-        sp_.complete() ? sp_.minus(sp_.reached(), sp_.backward(sp_.fires_any())) : stuck;
+    // On an incomplete graph only a situation without any successor is certainly dead. A
+    // transition fires in every bottom component: none is dead.
+    const Set dead = !sp_.complete() ? stuck
+                     : meets_every_bottom(sp_.fires_any(), true) == true
+                         ? sp_.none()
+                         : sp_.minus(sp_.reached(), sp_.backward(sp_.fires_any()));
     const auto shown = sp_.first(dead, kMaxSituations + 1);
     for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i) {
       const auto& s = shown[i];
@@ -472,6 +530,10 @@ class StandardCheckRunner {
         transient_reentry(r, index, it->second, ", once crossed, is never crossed again");
         continue;
       }
+      const Set active = step_set(step);
+      const std::optional<bool> known[] = {meets_every_bottom(sp_.minus(sp_.reached(), active)),
+                                           meets_every_bottom(active)};
+      if (known[0] == true && known[1] == true) continue;
       // The two ways logic::local_deadlock_formula fails, each explained on its own.
       const auto x = logic::observable_atom(ts_, step.observable);
       const auto never_left =
@@ -479,11 +541,14 @@ class StandardCheckRunner {
       const auto nx = logic::make_not(x);
       const auto never_back =
           logic::make_op(logic::Op::EF, {logic::make_and(nx, logic::make_op(logic::Op::AG, {nx}))});
-      for (const auto& [f, what] :
-           {std::pair{never_left, "once active, is never left"},
-            std::pair{never_back, "once inactive, never becomes active again"}}) {
-        const Set at = sp_.meet(sp_.initial(), sp_.ctl(f, false));
-        if (sp_.empty(at)) continue;
+      for (std::size_t way = 0; way < 2; ++way) {
+        const auto& f = way == 0 ? never_left : never_back;
+        const char* what =
+            way == 0 ? "once active, is never left" : "once inactive, never becomes active again";
+        if (known[way] == true) continue;
+        const Set at =
+            known[way] && r.trace ? sp_.none() : sp_.meet(sp_.initial(), sp_.ctl(f, false));
+        if (!known[way] && sp_.empty(at)) continue;
         add(r, "step " + logic::describe_step(step) + ", " + what);
         if (!r.trace) {
           auto t = sp_.explain(f, at, false);
@@ -524,7 +589,9 @@ class StandardCheckRunner {
     // may differ); a system without steps compares whole states.
     const Set target =
         steps_.empty() ? sp_.initial() : same_activity(sp_.initial(), sp_.reached(), 0);
-    const Set bad = sp_.minus(sp_.reached(), sp_.backward(target));
+    const Set bad = meets_every_bottom(target, true) == true
+                        ? sp_.none()
+                        : sp_.minus(sp_.reached(), sp_.backward(target));
     const auto shown = sp_.first(bad, kMaxSituations + 1);
     const auto init = sp_.describe(sp_.one(sp_.initial()));
     for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i)
@@ -822,6 +889,8 @@ class StandardCheckRunner {
   const semantics::TransitionSystem& ts_;
   const logic::CheckTask& task_;
   std::vector<StepRef> steps_;
+  bool bottoms_tried_ = false;
+  std::optional<std::vector<Set>> bottoms_;  ///< bottom_components(), once tried
 };
 
 /// Runs task.checks through the runner on `space`.

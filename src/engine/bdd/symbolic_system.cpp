@@ -22,7 +22,7 @@ namespace {
 // (4096 valuations a state), this much work (node words and successor bits, about a
 // nanosecond each), and only on sets of at most this many states per BDD node.
 constexpr std::size_t kMaxSimulatedInputs = 12;
-constexpr std::uint64_t kSimulatedEdgeWork = std::uint64_t{1} << 27;
+constexpr std::uint64_t kSimulatedEdgeWork = std::uint64_t{1} << 30;
 constexpr std::uint64_t kSimulatedStatesPerNode = 8;
 
 // The node table a circuit starts with when the options leave it at 0: a few dozen BDD nodes

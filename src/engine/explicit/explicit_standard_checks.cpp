@@ -114,6 +114,23 @@ class ExplicitSpace {
     }
     return seeds;
   }
+  /// Forward closure of `seeds`.
+  Set forward(Set seeds) const {
+    std::vector<std::uint32_t> queue;
+    for (std::uint32_t s = 0; s < seeds.size(); ++s)
+      if (seeds[s]) queue.push_back(s);
+    while (!queue.empty()) {
+      const auto s = queue.back();
+      queue.pop_back();
+      if (!g_.expanded(s)) continue;
+      for (auto e = g_.edges_begin(s); e < g_.edges_end(s); ++e)
+        if (const auto t = g_.target(e); !seeds[t]) {
+          seeds[t] = 1;
+          queue.push_back(t);
+        }
+    }
+    return seeds;
+  }
   Set ctl(const logic::FormulaPtr& f, bool fair) { return (fair ? fair_ : plain_).sat(f); }
   logic::Trace explain(const logic::FormulaPtr& f, const Set& from, bool fair) {
     std::vector<std::uint32_t> sources;
