@@ -42,10 +42,14 @@ const std::atomic<bool>* g_cancel = nullptr;
 // not thrown from a hook while it runs (LeakSanitizer saw the leaks under --engine auto).
 bool g_in_reorder = false;
 
-bool past_deadline() {
+using Clock = std::chrono::steady_clock;
+
+bool past_deadline(Clock::time_point now) {
   return g_has_deadline && !g_in_reorder &&
-         ((g_cancel && g_cancel->load(std::memory_order_relaxed)) ||
-          std::chrono::steady_clock::now() > g_deadline);
+         ((g_cancel && g_cancel->load(std::memory_order_relaxed)) || now > g_deadline);
+}
+bool past_deadline() {
+  return g_has_deadline && past_deadline(Clock::now());
 }
 
 // A sifting pass cannot be interrupted (see g_in_reorder) and moves every variable through
@@ -59,13 +63,15 @@ constexpr int kMaxSiftedVariables = 1200;
 // if this many seconds per variable and node (the worst measured, with a margin for slower
 // machines and a trigger that fires above the current count) fit in the time left.
 constexpr double kSiftSecondsPerVariableNode = 1e-7;
-bool sifting_too_long() {
+bool sifting_too_long(Clock::time_point now) {
   if (!g_has_deadline) return false;
   if (bdd_varnum() > kMaxSiftedVariables) return true;
-  if (g_deadline == std::chrono::steady_clock::time_point::max()) return false;  // cancel only
-  const double left =
-      std::chrono::duration<double>(g_deadline - std::chrono::steady_clock::now()).count();
+  if (g_deadline == Clock::time_point::max()) return false;  // cancel only
+  const double left = std::chrono::duration<double>(g_deadline - now).count();
   return kSiftSecondsPerVariableNode * bdd_varnum() * std::max(bdd_getnodenum(), 1) > left;
+}
+bool sifting_too_long() {
+  return g_has_deadline && sifting_too_long(Clock::now());
 }
 
 // Automatic reordering waits until a collection leaves this many live nodes
@@ -105,9 +111,11 @@ void deadline_on_resize(int, int) {
 // a large model can take a second, and sampling every 16th overshot a 20 s limit by 22 s); the
 // garbage-collection and resize hooks above stop a single operation that blows up.
 void check_deadline() {
-  if (past_deadline()) throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
+  if (!g_has_deadline) return;
+  const auto now = Clock::now();  // read once: this runs before every operation
+  if (past_deadline(now)) throw LimitReached(Limit::Time, "time limit reached in a BDD operation");
   // An automatic pass may start inside the next operation: none that would outlast the time.
-  if (g_has_deadline && bdd_getreorder_method() != BDD_REORDER_NONE && sifting_too_long()) {
+  if (bdd_getreorder_method() != BDD_REORDER_NONE && sifting_too_long(now)) {
     bdd_autoreorder(BDD_REORDER_NONE);
     g_armed_passes = 0;
   }
