@@ -126,12 +126,32 @@ model::Type Compiler::value_type(const model::Type& t) {
 }
 
 void Compiler::collect_written(const model::StmtList& body, const std::string& pou) {
+  // `x.m := ...` and `inst(Q => x.m)` write member m of another instance: "*|M" marks m
+  // written in every POU.
+  auto write = [&](const std::string& target) {
+    const auto up = model::to_upper(target);
+    written.insert(pou + "|" + up);
+    if (const auto dot = up.rfind('.'); dot != std::string::npos)
+      written.insert("*|" + up.substr(dot + 1));
+  };
   for (const auto& s : body) {
-    if (s->kind == model::StmtKind::Assign || s->kind == model::StmtKind::For)
-      written.insert(pou + "|" + model::to_upper(s->target));
+    if (s->kind == model::StmtKind::Assign || s->kind == model::StmtKind::For) write(s->target);
+    for (const auto& [output, variable] : s->outputs) write(variable);
     for (const auto& b : s->bodies) collect_written(b, pou);
     collect_written(s->else_body, pou);
   }
+}
+
+std::optional<std::int64_t> Compiler::constant_variable(const model::Pou& pou,
+                                                        const std::string& name) {
+  const auto* var = pou.find_variable(name);
+  if (!var || (var->direction != model::VarDirection::Local &&
+               var->direction != model::VarDirection::Output))
+    return std::nullopt;
+  const auto up = model::to_upper(var->name);
+  if (written.count(model::to_upper(pou.name) + "|" + up) || written.count("*|" + up))
+    return std::nullopt;
+  return var->initial.value_or(0);
 }
 
 void Compiler::variables(const std::vector<const model::Pou*>& pous) {
@@ -161,6 +181,12 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     const auto up = model::to_upper(pous[pi]->name);
     collect_written(pous[pi]->body, up);
     for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
+  }
+  // Every POU of the project, called or not: a write `x.m` in any of them changes member m.
+  for (const auto& pou : project.pous) {
+    const auto up = model::to_upper(pou.name);
+    collect_written(pou.body, up);
+    for (const auto& a : pou.actions) collect_written(a.body, up);
   }
   // Pass 1: state variables (non-inputs). Instances of user function blocks add scopes, so
   // the scope is found by index each time.

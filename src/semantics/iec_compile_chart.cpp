@@ -178,14 +178,11 @@ void Compiler::actions_and_transitions() {
       }
       if (model::is_timed(as.qualifier)) {
         std::optional<std::int64_t> d = as.duration_ms;
-        if (!d && !as.duration_variable.empty()) {
-          const auto* var = pou.find_variable(as.duration_variable);
-          if (var && !written.count(model::to_upper(pou.name) + "|" + model::to_upper(var->name)))
-            d = var->initial.value_or(0);
-        }
+        if (!d && !as.duration_variable.empty()) d = constant_variable(pou, as.duration_variable);
         if (!d) {
           error(as.where, "qualifier " + std::string(model::to_string(as.qualifier)) +
-                              " needs a constant duration");
+                              " needs a constant duration (a literal, or a VAR or VAR_OUTPUT "
+                              "that nothing writes)");
           continue;
         }
         const std::string nm = p.steps[*step].name + "." + as.action + "." +

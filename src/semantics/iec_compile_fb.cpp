@@ -113,17 +113,12 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
     if (up == "PT") {
       pt_given = true;
       std::optional<std::int64_t> pt = literal(*value);
-      if (!pt && value->kind == ExprKind::Name) {
-        const auto* var = sc.pou->find_variable(value->name);
-        if (var &&
-            !written.count(model::to_upper(sc.pou->name) + "|" + model::to_upper(var->name)) &&
-            var->direction != model::VarDirection::Input)
-          pt = var->initial.value_or(0);
-      }
+      if (!pt && value->kind == ExprKind::Name) pt = constant_variable(*sc.pou, value->name);
       if (!pt) {
         error(value->where.known() ? value->where : s.where,
               "PT of '" + s.target +
-                  "' must be a constant (a literal or a variable no statement writes)");
+                  "' must be a constant (a literal, or a VAR or VAR_OUTPUT that no statement, "
+                  "output binding or other POU writes)");
         continue;
       }
       // Abstract time only distinguishes PT = 0 (at once) from PT > 0 (some later cycle), so

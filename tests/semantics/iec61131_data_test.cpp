@@ -1,6 +1,7 @@
 // Data and action bodies (docs/semantics.md, Part 1, "Actions and data"): action order, ST
 // statements, integer ranges, standard function blocks, step .T.
 
+#include "io/load.hpp"
 #include "semantics/iec_builder.hpp"
 
 namespace sfcv::test {
@@ -266,6 +267,81 @@ TEST(Iec61131Data, SeveralPositivePtValuesInAbstractTimeOnly) {
   EXPECT_NE(
       discrete.build_error(o).find("called with different PT values; discrete time needs one"),
       std::string::npos);
+}
+
+// A timer's PT and a timed qualifier's duration are read as constants only from a variable
+// nothing can change. Each case below was modelled with the variable's initial value before,
+// so `AG (go -> q)` was answered "holds" though the timer runs with PT = 5 s (or the plant sets
+// the duration): an output binding `src(Q => d)`, a write of another POU through VAR_EXTERNAL,
+// a write `h.d := ...` of another instance's member, and a VAR_INPUT. Now each is refused by
+// name; a VAR that nothing writes stays a constant.
+TEST(Iec61131Data, OnlyAVariableNothingWritesIsAConstantPtOrDuration) {
+  auto error_of = [](const std::string& text) {
+    auto loaded = io::load_iec_text(text, "constants.st");
+    EXPECT_TRUE(loaded.ok());
+    if (!loaded.ok()) return std::string("not loaded");
+    model::Diagnostics diags;
+    auto ts = semantics::make_iec61131_system(*loaded.project, {}, diags);
+    return ts ? std::string() : diags.empty() ? std::string("no message") : diags.front().str();
+  };
+  const std::string main_head = R"(PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+)";
+  const std::string timer = "  t(IN := go, PT := d);\n  q := t.Q;\nEND_PROGRAM\n";
+  const std::string src = R"(FUNCTION_BLOCK Src
+  VAR_OUTPUT Q : TIME; END_VAR
+  Q := T#5S;
+END_FUNCTION_BLOCK
+)";
+  const std::string pt = "PT of 't' must be a constant";
+  EXPECT_NE(error_of(src + main_head +
+                     "  VAR d : TIME := T#0MS; t : TON; s : Src; END_VAR\n  s(Q => d);\n" + timer)
+                .find(pt),
+            std::string::npos);
+  const std::string setter = R"(PROGRAM Setter
+  VAR_EXTERNAL d : TIME; END_VAR
+  d := T#5S;
+END_PROGRAM
+)";
+  const std::string config = R"(CONFIGURATION Cfg
+  VAR_GLOBAL d : TIME := T#0MS; END_VAR
+  RESOURCE Res ON PLC
+    TASK Cyc(INTERVAL := T#10MS, PRIORITY := 1);
+    PROGRAM P1 WITH Cyc : Setter;
+    PROGRAM P2 WITH Cyc : Main;
+  END_RESOURCE
+END_CONFIGURATION
+)";
+  EXPECT_NE(error_of(setter + main_head +
+                     "  VAR_EXTERNAL d : TIME; END_VAR\n  VAR t : TON; END_VAR\n" + timer + config)
+                .find(pt),
+            std::string::npos);
+  const std::string holder = R"(FUNCTION_BLOCK Holder
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  VAR d : TIME := T#0MS; t : TON; END_VAR
+)" + timer.substr(0, timer.size() - 12) +
+                             "END_FUNCTION_BLOCK\n";
+  EXPECT_NE(
+      error_of(
+          holder + main_head +
+          "  VAR h : Holder; END_VAR\n  h.d := T#5S;\n  h(go := go);\n  q := h.q;\nEND_PROGRAM\n")
+          .find(pt),
+      std::string::npos);
+  EXPECT_NE(error_of(R"(PROGRAM Main
+  VAR_INPUT go : BOOL; dur : TIME; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  INITIAL_STEP S0: END_STEP
+  STEP S1: q(L, dur); END_STEP
+  TRANSITION FROM S0 TO S1 := go; END_TRANSITION
+  TRANSITION FROM S1 TO S0 := NOT go; END_TRANSITION
+END_PROGRAM
+)")
+                .find("qualifier L needs a constant duration"),
+            std::string::npos);
+  // A VAR nothing writes is still a constant PT.
+  EXPECT_EQ(error_of(main_head + "  VAR d : TIME := T#5S; t : TON; END_VAR\n" + timer), "");
 }
 
 TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
