@@ -344,6 +344,35 @@ END_PROGRAM
   EXPECT_EQ(error_of(main_head + "  VAR d : TIME := T#5S; t : TON; END_VAR\n" + timer), "");
 }
 
+// An output binding counts as a write like an assignment: bound to a VAR_INPUT (CODESYS and
+// TwinCAT accept writing inputs), it writes the program's copy of the input, loaded again at
+// the next cycle (before, "output binding to 'go', which is an input").
+TEST(Iec61131Data, AnOutputBindingWritesTheProgramsCopyOfAnInput) {
+  auto loaded = io::load_iec_text(R"(FUNCTION_BLOCK Inv
+  VAR_INPUT x : BOOL; END_VAR
+  VAR_OUTPUT Q : BOOL; END_VAR
+  Q := NOT x;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  VAR s : Inv; END_VAR
+  s(x := go, Q => go);
+  q := go;
+END_PROGRAM
+)",
+                                  "binding.st");
+  ASSERT_TRUE(loaded.ok());
+  model::Diagnostics diags;
+  auto ts = semantics::make_iec61131_system(*loaded.project, {}, diags);
+  ASSERT_TRUE(ts) << (diags.empty() ? "" : diags.front().str());
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"go", 1}}));
+  EXPECT_EQ(r["q"], 0);
+  ASSERT_TRUE(r.cycle({{"go", 0}}));
+  EXPECT_EQ(r["q"], 1);
+}
+
 TEST(Iec61131Data, UnsupportedConstructsAreErrors) {
   {
     IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR x : INT; END_VAR");
