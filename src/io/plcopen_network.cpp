@@ -222,7 +222,10 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     }
   }
 
-  if (!instance.empty() && model::standard_fb(type) != model::StandardFb::None) {
+  if (!instance.empty() && (model::standard_fb(type) != model::StandardFb::None ||
+                            ctx_.user_function_blocks.count(model::to_upper(type)))) {
+    // A standard or user FB instance: called once where the network first needs it, its
+    // output read as a member (`inst.Q`, which the semantics resolves for either kind).
     if (!call_block(block)) return nullptr;
     if (out_pin.empty()) return fail(block, "block " + instance + " has no output");
     return negate_if(out_negated, model::make_member(instance, out_pin, ctx_.where(block)));
@@ -235,8 +238,8 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   if (fn == Fn::None) {
     if (!instance.empty())
       return fail(block, "unsupported: function block " + type + " (instance " + instance +
-                             "); only the standard function blocks R_TRIG, F_TRIG, SR, RS, TON, "
-                             "TOF, TP, CTU, CTD are modelled");
+                             "): neither a standard function block (R_TRIG, F_TRIG, SR, RS, "
+                             "TON, TOF, TP, CTU, CTD) nor one of this project");
     return fail(block, "unsupported: function " + type +
                            " (AND, OR, XOR, NOT, MOVE, comparisons and ADD, SUB, MUL, DIV, MOD "
                            "are modelled)");
@@ -503,9 +506,11 @@ std::optional<model::StmtList> Network::statements() {
   for (auto n : element_children(container_)) {
     if (local_name(n) != "block" || !*n.attribute("instanceName").value()) continue;
     if (called_.count(n.attribute("localId").value())) continue;
-    if (model::standard_fb(n.attribute("typeName").value()) == model::StandardFb::None) {
+    if (model::standard_fb(n.attribute("typeName").value()) == model::StandardFb::None &&
+        !ctx_.user_function_blocks.count(model::to_upper(n.attribute("typeName").value()))) {
       fail(n, std::string("unsupported: function block ") + n.attribute("typeName").value() +
-                  " (instance " + n.attribute("instanceName").value() + ")");
+                  " (instance " + n.attribute("instanceName").value() +
+                  "): not a function block of this project");
       return std::nullopt;
     }
     if (!call_block(n)) return std::nullopt;

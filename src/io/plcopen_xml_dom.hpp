@@ -54,6 +54,9 @@ class XmlContext {
   /// Upper-case names of the project's FUNCTION POUs: a block of such a type in an FBD/LD
   /// network is a call of that function.
   std::set<std::string> user_functions;
+  /// Upper-case names of the project's FUNCTION_BLOCK POUs: a block of such a type with an
+  /// instance name is a call of that instance.
+  std::set<std::string> user_function_blocks;
 
  private:
   std::string file_;

@@ -578,8 +578,10 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
   std::set<std::string> user_fbs;
   for (auto p : pous) {
     const std::string_view kind = p.attribute("pouType").value();
-    if (kind == "functionBlock")
+    if (kind == "functionBlock") {
       user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
+      ctx.user_function_blocks.insert(model::to_upper(trim(p.attribute("name").value())));
+    }
     if (kind == "function")
       ctx.user_functions.insert(model::to_upper(trim(p.attribute("name").value())));
   }

@@ -1,0 +1,110 @@
+// Instances of the project's own function blocks as blocks of an FBD network (PLCopen
+// `block` with an `instanceName` and the `typeName` of a FUNCTION_BLOCK POU): called once where
+// the network first needs them, outputs read as members, EN guarding the call. Checked on
+// every engine, and against the same program written in ST.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/plcopen_text.hpp"
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+// Latch: q is set by `set`, cleared by `reset` (reset wins), and kept in between.
+std::string latch_fb() {
+  return "<pou name=\"Latch\" pouType=\"functionBlock\"><interface>" +
+         plcopen_vars("inputVars", {"set", "reset"}) + plcopen_vars("outputVars", {"q"}) +
+         "</interface><body>" +
+         plcopen_st("IF set THEN q := TRUE; END_IF; IF reset THEN q := FALSE; END_IF;") +
+         "</body></pou>\n";
+}
+
+std::string in_variable(int id, const std::string& name) {
+  return "<inVariable localId=\"" + std::to_string(id) +
+         "\"><position x=\"0\" y=\"0\"/><connectionPointOut/><expression>" + name +
+         "</expression></inVariable>";
+}
+
+std::string wired(const std::string& pin, int from) {
+  return "<variable formalParameter=\"" + pin + "\"><connectionPointIn><connection refLocalId=\"" +
+         std::to_string(from) + "\"/></connectionPointIn></variable>";
+}
+
+/// Main in FBD: L1 : Latch(set := s1, reset := s2) drives `motor`; with `enable`, EN of L1 is
+/// wired to input `en`; with `spare`, a second instance L2 whose output nobody reads latches
+/// s2 (it still runs: its q is observable).
+std::string fbd_main(bool enable, bool spare) {
+  std::string vars =
+      plcopen_vars("inputVars", {"s1", "s2", "en"}) + plcopen_vars("outputVars", {"motor"}) +
+      "<localVars>" + "<variable name=\"L1\"><type><derived name=\"Latch\"/></type></variable>" +
+      "<variable name=\"L2\"><type><derived name=\"Latch\"/></type></variable>" + "</localVars>";
+  std::string fbd = in_variable(1, "s1") + in_variable(2, "s2") + in_variable(3, "en") +
+                    "<block localId=\"4\" typeName=\"Latch\" instanceName=\"L1\"><position x=\"0\" "
+                    "y=\"0\"/><inputVariables>" +
+                    (enable ? wired("EN", 3) : "") + wired("set", 1) + wired("reset", 2) +
+                    "</inputVariables><inOutVariables/><outputVariables><variable "
+                    "formalParameter=\"q\"><connectionPointOut/></variable></outputVariables>"
+                    "</block><outVariable localId=\"5\"><position x=\"0\" y=\"0\"/>"
+                    "<connectionPointIn><connection refLocalId=\"4\" formalParameter=\"q\"/>"
+                    "</connectionPointIn><expression>motor</expression></outVariable>";
+  if (spare)
+    fbd +=
+        "<block localId=\"6\" typeName=\"Latch\" instanceName=\"L2\"><position x=\"0\" "
+        "y=\"0\"/><inputVariables>" +
+        wired("set", 2) +
+        "</inputVariables><inOutVariables/><outputVariables><variable "
+        "formalParameter=\"q\"><connectionPointOut/></variable></outputVariables></block>";
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" + vars + "</interface><body><FBD>" +
+         fbd + "</FBD></body></pou>\n";
+}
+
+std::string st_main(bool enable) {
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"s1", "s2", "en"}) + plcopen_vars("outputVars", {"motor"}) +
+         "<localVars><variable name=\"L1\"><type><derived name=\"Latch\"/></type></variable>"
+         "</localVars></interface><body>" +
+         plcopen_st(enable ? "IF en THEN L1(set := s1, reset := s2); END_IF; motor := L1.q;"
+                           : "L1(set := s1, reset := s2); motor := L1.q;") +
+         "</body></pou>\n";
+}
+
+TEST(FbdUserInstances, AUserFunctionBlockBlockIsCalledAndItsOutputRead) {
+  const auto file =
+      write_temp(kPlcopenHeader + latch_fb() + fbd_main(false, false) + kPlcopenFooter, ".xml");
+  // The latch keeps motor on after s1 falls (a model without the instance's memory would not
+  // reach it), reset wins, and motor does come on.
+  expect_on_every_engine(file, {{"--checks none --ctl 'EF (motor & !s1)'", 0},
+                                {"--checks none --ctl 'AG (s2 -> !motor)'", 0},
+                                {"--checks none --ctl 'AG !motor'", 1}});
+}
+
+TEST(FbdUserInstances, EnGuardsTheCallAndAnUnreadInstanceStillRuns) {
+  const auto file =
+      write_temp(kPlcopenHeader + latch_fb() + fbd_main(true, true) + kPlcopenFooter, ".xml");
+  // EN FALSE: L1 is not called, so reset no longer wins (motor may stay on with s2).
+  expect_on_every_engine(file, {{"--checks none --ctl 'AG (s2 -> !motor)'", 1},
+                                {"--checks none --ctl 'AG (en & s2 -> !motor)'", 0},
+                                {"--checks none --ctl 'AG !L2.q'", 1}});
+}
+
+TEST(FbdUserInstances, FbdAndStGiveTheSameStateSpace) {
+  for (const bool enable : {false, true}) {
+    SCOPED_TRACE(enable ? "with EN" : "without EN");
+    const auto fbd =
+        write_temp(kPlcopenHeader + latch_fb() + fbd_main(enable, false) + kPlcopenFooter, ".xml");
+    const auto st =
+        write_temp(kPlcopenHeader + latch_fb() + st_main(enable) + kPlcopenFooter, ".xml");
+    const auto a = run_sfcv(check_command(fbd, "explicit", "--checks none --ctl 'AG !motor'"));
+    const auto b = run_sfcv(check_command(st, "explicit", "--checks none --ctl 'AG !motor'"));
+    ASSERT_EQ(a.exit_code, 1) << a.out << a.err;
+    ASSERT_EQ(b.exit_code, 1) << b.out << b.err;
+    EXPECT_EQ(a.out.substr(0, a.out.find('(')), b.out.substr(0, b.out.find('(')));
+    EXPECT_NE(a.out.find(" states, "), std::string::npos) << a.out;
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
