@@ -199,16 +199,21 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
   if (model::iequals(pin, "ENO")) {
-    // ENO is EN where nothing can clear it: a standard FB instance (called here) and a standard
-    // function (an error inside it is a range error of the cycle, not an ENO). A user FB or
-    // function may clear ENO in its body: refused.
+    // ENO is EN where nothing can clear it: a standard FB instance (called here), a standard
+    // function (an error inside it is a range error of the cycle, not an ENO), and a user FB
+    // or function whose POU never names ENO. One that names it may clear it: refused.
     ExprKind cmp = ExprKind::Eq;
-    const bool standard_function = instance.empty() && function_of(type, cmp) != Fn::None;
-    const bool standard_instance =
-        !instance.empty() && model::standard_fb(type) != model::StandardFb::None;
-    if (!standard_function && !standard_instance)
-      return fail(block, "unsupported: ENO output of block " + type);
-    if (standard_instance && !call_block(block)) return nullptr;
+    const auto upper = model::to_upper(type);
+    const bool quiet = !ctx_.pous_naming_eno.count(upper);
+    const bool function = instance.empty() && (function_of(type, cmp) != Fn::None ||
+                                               (quiet && ctx_.user_functions.count(upper)));
+    const bool fb_instance =
+        !instance.empty() && (model::standard_fb(type) != model::StandardFb::None ||
+                              (quiet && ctx_.user_function_blocks.count(upper)));
+    if (!function && !fb_instance)
+      return fail(block, "unsupported: ENO output of block " + type +
+                             (ctx_.pous_naming_eno.count(upper) ? " (its body names ENO)" : ""));
+    if (fb_instance && !call_block(block)) return nullptr;
     return enable_of(block);
   }
   bool out_negated = false;

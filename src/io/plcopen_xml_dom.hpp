@@ -57,6 +57,9 @@ class XmlContext {
   /// Upper-case names of the project's FUNCTION_BLOCK POUs: a block of such a type with an
   /// instance name is a call of that instance.
   std::set<std::string> user_function_blocks;
+  /// Upper-case names of the user FUNCTIONs and FUNCTION_BLOCKs whose POU element names ENO
+  /// anywhere (declaration or body): only those may clear their ENO; for the others ENO is EN.
+  std::set<std::string> pous_naming_eno;
 
  private:
   std::string file_;

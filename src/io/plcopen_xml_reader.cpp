@@ -5,6 +5,7 @@
 // types/pous and from the addData sections where CODESYS/TwinCAT keep them.
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <pugixml.hpp>
 #include <set>
@@ -41,6 +42,26 @@ struct TypeRead {
   std::string written;                            ///< for messages: "REAL", "derived Motor"
   std::vector<model::ArrayDimension> dimensions;  ///< <array>: its bounds, `type` its elements
 };
+
+/// Whether the word ENO (any case) occurs in a text or attribute under `node`: a body that
+/// never names it cannot clear it.
+bool names_eno(pugi::xml_node node) {
+  auto has_word = [](std::string_view text) {
+    const auto up = model::to_upper(std::string(text));
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (auto at = up.find("ENO"); at != std::string::npos; at = up.find("ENO", at + 1))
+      if ((at == 0 || !word(up[at - 1])) && (at + 3 == up.size() || !word(up[at + 3]))) return true;
+    return false;
+  };
+  for (auto a : node.attributes())
+    if (has_word(a.value())) return true;
+  for (auto c : node.children()) {
+    if ((c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) && has_word(c.value()))
+      return true;
+    if (c.type() == pugi::node_element && names_eno(c)) return true;
+  }
+  return false;
+}
 
 /// `user_types`: the upper-case names of the project's function blocks and data types; a
 /// derived type of such a name is read as a placeholder that lowering (data types) or the
@@ -578,12 +599,14 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
   std::set<std::string> user_fbs;
   for (auto p : pous) {
     const std::string_view kind = p.attribute("pouType").value();
+    const auto upper = model::to_upper(trim(p.attribute("name").value()));
     if (kind == "functionBlock") {
-      user_fbs.insert(model::to_upper(trim(p.attribute("name").value())));
-      ctx.user_function_blocks.insert(model::to_upper(trim(p.attribute("name").value())));
+      user_fbs.insert(upper);
+      ctx.user_function_blocks.insert(upper);
     }
-    if (kind == "function")
-      ctx.user_functions.insert(model::to_upper(trim(p.attribute("name").value())));
+    if (kind == "function") ctx.user_functions.insert(upper);
+    if ((kind == "functionBlock" || kind == "function") && names_eno(p))
+      ctx.pous_naming_eno.insert(upper);
   }
   for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))
     user_fbs.insert(model::to_upper(trim(dt.attribute("name").value())));

@@ -106,5 +106,40 @@ TEST(FbdUserInstances, FbdAndStGiveTheSameStateSpace) {
   }
 }
 
+// ENO of a user FB instance is EN when its POU never names ENO (nothing in it can clear it);
+// an FB whose body names ENO is refused by name.
+std::string eno_main(const std::string& type) {
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"s1", "s2", "en"}) + plcopen_vars("outputVars", {"ok"}) +
+         "<localVars><variable name=\"L1\"><type><derived name=\"" + type +
+         "\"/></type></variable></localVars></interface><body><FBD>" + in_variable(1, "s1") +
+         in_variable(2, "s2") + in_variable(3, "en") + "<block localId=\"4\" typeName=\"" + type +
+         "\" instanceName=\"L1\"><position x=\"0\" y=\"0\"/><inputVariables>" + wired("EN", 3) +
+         wired("set", 1) + wired("reset", 2) +
+         "</inputVariables><inOutVariables/><outputVariables><variable formalParameter=\"ENO\">"
+         "<connectionPointOut/></variable><variable formalParameter=\"q\"><connectionPointOut/>"
+         "</variable></outputVariables></block><outVariable localId=\"5\"><position x=\"0\" "
+         "y=\"0\"/><connectionPointIn><connection refLocalId=\"4\" formalParameter=\"ENO\"/>"
+         "</connectionPointIn><expression>ok</expression></outVariable></FBD></body></pou>\n";
+}
+
+TEST(FbdUserInstances, EnoOfAnInstanceIsEnUnlessItsBlockNamesEno) {
+  const auto quiet =
+      write_temp(kPlcopenHeader + latch_fb() + eno_main("Latch") + kPlcopenFooter, ".xml");
+  expect_on_every_engine(
+      quiet, {{"--checks none --ctl 'AG (ok <-> en)'", 0}, {"--checks none --ctl 'AG ok'", 1}});
+  const std::string clearer = "<pou name=\"Clearer\" pouType=\"functionBlock\"><interface>" +
+                              plcopen_vars("inputVars", {"set", "reset"}) +
+                              plcopen_vars("outputVars", {"q"}) + "</interface><body>" +
+                              plcopen_st("q := set; ENO := NOT reset;") + "</body></pou>\n";
+  const auto loud =
+      write_temp(kPlcopenHeader + clearer + eno_main("Clearer") + kPlcopenFooter, ".xml");
+  const auto r = run_sfcv(check_command(loud, "explicit", "--checks none --ctl 'AG ok'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("unsupported: ENO output of block Clearer (its body names ENO)"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test
