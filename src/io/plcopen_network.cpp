@@ -29,7 +29,10 @@ ExprPtr negate_if(bool negated, ExprPtr e) {
 
 // Functions of the standard library the model can express.
 /// User: a FUNCTION of the project, called with the block's formal parameters.
-enum class Fn { None, And, Or, Xor, Not, Move, Cmp, Add, Mul, Sub, Div, Mod, User };
+// Standard: the other standard functions the semantics models (MAX, MIN, LIMIT, SEL, MUX, ABS,
+// the shifts and rotations, *_TO_* conversions), read as a formal call with the block's
+// parameter names, which the semantics puts in the standard's order.
+enum class Fn { None, And, Or, Xor, Not, Move, Cmp, Add, Mul, Sub, Div, Mod, Standard, User };
 
 Fn function_of(std::string_view type, ExprKind& cmp) {
   const std::string t = model::to_upper(type);
@@ -51,6 +54,11 @@ Fn function_of(std::string_view type, ExprKind& cmp) {
       cmp = kind;
       return Fn::Cmp;
     }
+  static const char* const standard[] = {"MAX", "MIN", "LIMIT", "SEL", "MUX",
+                                         "ABS", "SHL", "SHR",   "ROL", "ROR"};
+  for (const char* name : standard)
+    if (t == name) return Fn::Standard;
+  if (t.find("_TO_") != std::string::npos) return Fn::Standard;
   return Fn::None;
 }
 
@@ -246,8 +254,9 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
                              "): neither a standard function block (R_TRIG, F_TRIG, SR, RS, "
                              "TON, TOF, TP, CTU, CTD) nor one of this project");
     return fail(block, "unsupported: function " + type +
-                           " (AND, OR, XOR, NOT, MOVE, comparisons and ADD, SUB, MUL, DIV, MOD "
-                           "are modelled)");
+                           " (modelled: AND, OR, XOR, NOT, MOVE, the comparisons, ADD, SUB, MUL, "
+                           "DIV, MOD, MAX, MIN, LIMIT, SEL, MUX, ABS, the shifts, *_TO_* "
+                           "conversions and the project's functions)");
   }
 
   const std::string id = block.attribute("localId").value();
@@ -330,6 +339,10 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
       r = model::make_binary(k, args[0], args[1], where);
       break;
     }
+    case Fn::Standard:
+      if (args.empty()) return fail(block, type + " block without inputs");
+      r = model::make_formal_call(type, std::move(names), std::move(args), where);
+      break;
     case Fn::User:
       if (outputs.size() > 1 || !children(child(block, "inOutVariables"), "variable").empty())
         return fail(block, "unsupported: function " + type +
@@ -433,6 +446,88 @@ ExprPtr Network::output_named(std::string_view name, bool& found) {
   return nullptr;
 }
 
+std::vector<std::size_t> Network::variables_read(pugi::xml_node output,
+                                                 const std::map<std::string, std::size_t>& at) {
+  std::vector<std::size_t> out;
+  std::set<std::string> seen;
+  std::vector<pugi::xml_node> stack{output};
+  while (!stack.empty()) {
+    const auto n = stack.back();
+    stack.pop_back();
+    // Every connection under n (its inputs, a block's input variables), then what feeds them.
+    std::vector<pugi::xml_node> walk{n};
+    while (!walk.empty()) {
+      const auto e = walk.back();
+      walk.pop_back();
+      for (auto c : element_children(e)) {
+        if (local_name(c) != "connection") {
+          walk.push_back(c);
+          continue;
+        }
+        const std::string ref = c.attribute("refLocalId").value();
+        if (!seen.insert(ref).second) continue;
+        const auto it = by_id_.find(ref);
+        if (it == by_id_.end()) continue;
+        const auto from = it->second;
+        const auto kind = local_name(from);
+        if (kind == "inOutVariable") {  // read as the variable: stop here
+          if (const auto k = at.find(ref); k != at.end()) out.push_back(k->second);
+          continue;
+        }
+        if (kind == "continuation") {
+          const auto con = connectors_.find(model::to_upper(from.attribute("name").value()));
+          if (con != connectors_.end()) stack.push_back(con->second);
+          continue;
+        }
+        stack.push_back(from);
+      }
+    }
+  }
+  return out;
+}
+
+bool Network::in_data_flow_order(std::vector<pugi::xml_node>& outputs) {
+  // Without an execution order, an element reading a variable that the network assigns through
+  // an inOutVariable runs after that assignment (IEC 61131-3 FBD: an element is evaluated once
+  // its inputs are; Beremiz's `first_steps` CounterFBD reads `Cnt` for OUT after assigning it).
+  // Otherwise document order.
+  std::map<std::string, std::size_t> at;  // localId of an assigned inOutVariable -> position
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    if (local_name(outputs[i]) == "inOutVariable")
+      at.emplace(outputs[i].attribute("localId").value(), i);
+  if (at.empty()) return true;
+  std::vector<std::vector<std::size_t>> after(outputs.size());  // after[j]: the readers of j
+  std::vector<std::size_t> waiting(outputs.size(), 0);
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (const auto j : variables_read(outputs[i], at))
+      if (j != i) {  // an element reading its own variable reads the value before it (feedback)
+        after[j].push_back(i);
+        ++waiting[i];
+      }
+  std::vector<pugi::xml_node> order;
+  std::vector<bool> done(outputs.size(), false);
+  while (order.size() < outputs.size()) {
+    std::size_t next = outputs.size();
+    for (std::size_t i = 0; i < outputs.size() && next == outputs.size(); ++i)
+      if (!done[i] && waiting[i] == 0) next = i;
+    if (next == outputs.size()) {
+      for (std::size_t i = 0; i < outputs.size(); ++i)
+        if (!done[i]) {
+          fail(outputs[i],
+               "unsupported: variables of the network read each other in a cycle and no "
+               "execution order is given (executionOrderId), so the order of their assignments "
+               "is not defined");
+          return false;
+        }
+    }
+    done[next] = true;
+    order.push_back(outputs[next]);
+    for (const auto k : after[next]) --waiting[k];
+  }
+  outputs = std::move(order);
+  return true;
+}
+
 std::optional<model::StmtList> Network::statements() {
   std::vector<pugi::xml_node> outputs;
   for (auto n : element_children(container_)) {
@@ -451,6 +546,8 @@ std::optional<model::StmtList> Network::statements() {
       return std::atoi(a.attribute("executionOrderId").value()) <
              std::atoi(b.attribute("executionOrderId").value());
     });
+  else if (!in_data_flow_order(outputs))
+    return std::nullopt;
 
   model::StmtList body;
   for (auto n : outputs) {

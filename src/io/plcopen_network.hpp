@@ -50,6 +50,13 @@ class Network {
   /// Outputs (outVariable expression / coil variable) named `name`: the value driving it.
   /// Used for transitions written in FBD/LD. Null when absent (no diagnostic) or on error.
   model::ExprPtr output_named(std::string_view name, bool& found);
+  /// The positions (in `at`, by localId) of the assigned inOutVariables that `output`'s input
+  /// cone reads.
+  std::vector<std::size_t> variables_read(pugi::xml_node output,
+                                          const std::map<std::string, std::size_t>& at);
+  /// Puts the output elements of a network without execution order in data-flow order; false
+  /// (after an error) on a cycle.
+  bool in_data_flow_order(std::vector<pugi::xml_node>& outputs);
 
  private:
   model::ExprPtr value(pugi::xml_node connection);

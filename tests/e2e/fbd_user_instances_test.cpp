@@ -1,7 +1,9 @@
-// Instances of the project's own function blocks as blocks of an FBD network (PLCopen
-// `block` with an `instanceName` and the `typeName` of a FUNCTION_BLOCK POU): called once where
-// the network first needs them, outputs read as members, EN guarding the call. Checked on
-// every engine, and against the same program written in ST.
+// FBD networks as programs: instances of the project's own function blocks as blocks (PLCopen
+// `block` with an `instanceName` and the `typeName` of a FUNCTION_BLOCK POU: called once where
+// the network first needs them, outputs read as members, EN guarding the call), standard
+// functions such as SEL, and the data-flow order of assignments. Checked on every engine, and
+// against the same program written in ST (and, on the corpus, against Beremiz's own ST, FBD and
+// LD versions of one counter).
 
 #include <gtest/gtest.h>
 
@@ -137,6 +139,61 @@ TEST(FbdUserInstances, EnoOfAnInstanceIsEnUnlessItsBlockNamesEno) {
   const auto r = run_sfcv(check_command(loud, "explicit", "--checks none --ctl 'AG ok'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("unsupported: ENO output of block Clearer (its body names ENO)"),
+            std::string::npos)
+      << r.err;
+}
+
+// Beremiz's first_steps (corpus 02) writes one counter in ST, FBD and LD: `Cnt := SEL(Reset,
+// Cnt + 1, ResetCounterValue); OUT := Cnt`. The FBD network assigns Cnt through an
+// inOutVariable placed after the outVariable OUT in the document and reads it for OUT; before,
+// SEL was refused, and assignments in document order made OUT lag one cycle (65,535 states
+// instead of 32,768). The three agree now, state for state.
+TEST(FbdCorpus, BeremizCounterInStFbdAndLdAgree) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "02_beremiz_first_steps.xml").string() + "'";
+  for (const char* pou : {"CounterST", "CounterFBD", "CounterLD"}) {
+    SCOPED_TRACE(pou);
+    // OUT = 18 takes a reset (OUT = 17) and one count: 3 situations; a lag of one cycle would
+    // take 4.
+    const auto r = run_sfcv("check " + path + " --pou " + pou +
+                            " --engine explicit --checks none --ctl 'AG OUT <= 32767' "
+                            "--ctl 'AG !(OUT = 18)'");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("32768 states, 65534 edges"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("counterexample (3 situations)"), std::string::npos) << r.out;
+  }
+}
+
+// Data-flow order: OUT reads the variable `n` that an inOutVariable later in the document
+// assigns: it reads the new value. Two variables reading each other without an execution
+// order are refused by name.
+std::string flow_main(bool cycle) {
+  const std::string second_source = cycle ? "<connection refLocalId=\"3\"/>"  // m reads n
+                                          : "<connection refLocalId=\"1\"/>";
+  return "<pou name=\"Main\" pouType=\"program\"><interface>" + plcopen_vars("inputVars", {"go"}) +
+         plcopen_vars("outputVars", {"OUT"}) + plcopen_vars("localVars", {"n", "m"}) +
+         "</interface><body><FBD>" + in_variable(1, "go") +
+         "<outVariable localId=\"2\"><position x=\"0\" y=\"0\"/><connectionPointIn>"
+         "<connection refLocalId=\"3\"/></connectionPointIn><expression>OUT</expression>"
+         "</outVariable>"
+         "<inOutVariable localId=\"3\"><position x=\"0\" y=\"0\"/><connectionPointIn>"
+         "<connection refLocalId=\"4\"/></connectionPointIn><connectionPointOut/>"
+         "<expression>n</expression></inOutVariable>"
+         "<inOutVariable localId=\"4\"><position x=\"0\" y=\"0\"/><connectionPointIn>" +
+         second_source +
+         "</connectionPointIn><connectionPointOut/><expression>m</expression></inOutVariable>"
+         "</FBD></body></pou>\n";
+}
+
+TEST(FbdUserInstances, AssignmentsFollowTheDataFlowWithoutAnExecutionOrder) {
+  const auto file = write_temp(kPlcopenHeader + flow_main(false) + kPlcopenFooter, ".xml");
+  // m := go; n := m; OUT := n, all in one cycle: OUT is go of this cycle.
+  expect_on_every_engine(
+      file, {{"--checks none --ctl 'AG (OUT <-> go)'", 0}, {"--checks none --ctl 'AG !OUT'", 1}});
+  const auto cyclic = write_temp(kPlcopenHeader + flow_main(true) + kPlcopenFooter, ".xml");
+  const auto r = run_sfcv(check_command(cyclic, "explicit", "--checks none --ctl 'AG !OUT'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("read each other in a cycle and no execution order is given"),
             std::string::npos)
       << r.err;
 }
