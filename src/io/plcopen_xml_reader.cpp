@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <optional>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -193,6 +194,17 @@ std::optional<model::VarDirection> section_direction(std::string_view k) {
   return std::nullopt;
 }
 
+/// The base type of a local variable of a Beremiz HMI type (`HMI_BOOL`, `HMI_INT`: HMI_ and an
+/// elementary type the project does not redefine), or nothing.
+std::optional<model::Type> hmi_type(const TypeRead& t, const model::Variable& var,
+                                    const std::set<std::string>& user_types) {
+  if (t.type || var.direction != model::VarDirection::Local || !t.dimensions.empty())
+    return std::nullopt;
+  const auto up = model::to_upper(t.written);
+  if (up.rfind("HMI_", 0) != 0 || user_types.count(up)) return std::nullopt;
+  return model::elementary_type(up.substr(4));
+}
+
 /// `user_fbs`: the upper-case names of the project's function block POUs and data types; a
 /// variable of such a derived type is an instance of that function block (its own copy of the
 /// FB's variables and charts, compiled by the semantics) or lowered by its data type.
@@ -212,6 +224,17 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
       }
       const auto type_el = element_children(child(v, "type"));
       auto t = read_type(type_el.empty() ? pugi::xml_node{} : type_el.front(), user_fbs);
+      if (const auto hmi = hmi_type(t, var, user_fbs)) {
+        // Beremiz's HMI types (HMI_BOOL, HMI_INT, ...): the operator sets them through the HMI
+        // between any two cycles, so a program's own such variable is an input of the plant of
+        // the base type, which the program's writes overwrite until the next cycle reads it.
+        t.type = hmi;
+        var.address = "%I*";
+        ctx.note(v, "HMI variable '" + var.name + "' (" + t.written +
+                        "): the operator may set it at any cycle, modelled as an input (%I) of "
+                        "type " +
+                        hmi->name);
+      }
       if (!t.type) {
         ctx.warning(v, "unsupported type " + t.written + " of variable '" + var.name +
                            "': variable ignored");

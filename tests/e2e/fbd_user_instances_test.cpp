@@ -198,5 +198,28 @@ TEST(FbdUserInstances, AssignmentsFollowTheDataFlowWithoutAnExecutionOrder) {
       << r.err;
 }
 
+// Beremiz SVGHMI programs declare their operator controls and lamps with the HMI types
+// (corpus 01: `SwitchButton : HMI_BOOL`). The operator may set such a variable between any two
+// cycles: a program's own HMI variable is an input of the plant of the base type, which the
+// program's writes overwrite. Before, the variables were dropped ("unsupported type") and the
+// body that uses them refused; an HMI type elsewhere (a VAR_OUTPUT) still is.
+TEST(FbdUserInstances, BeremizHmiVariablesAreInputsTheOperatorSets) {
+  auto program = [](const std::string& section) {
+    return "<pou name=\"Main\" pouType=\"program\"><interface><" + section +
+           "><variable name=\"Button\"><type><derived name=\"HMI_BOOL\"/></type></variable>"
+           "<variable name=\"Lamp\"><type><derived name=\"HMI_BOOL\"/></type></variable></" +
+           section + "></interface><body>" + plcopen_st("Lamp := Button;") + "</body></pou>\n";
+  };
+  const auto local = write_temp(kPlcopenHeader + program("localVars") + kPlcopenFooter, ".xml");
+  // The button can be pressed (a model keeping it FALSE would claim AG !Lamp), and Lamp is
+  // the program's value, not the HMI's.
+  expect_on_every_engine(local, {{"--checks none --ctl 'AG !Lamp'", 1},
+                                 {"--checks none --ctl 'AG (Lamp <-> Button)'", 0}});
+  const auto out = write_temp(kPlcopenHeader + program("outputVars") + kPlcopenFooter, ".xml");
+  const auto r = run_sfcv(check_command(out, "explicit", "--checks none --ctl 'AG !Lamp'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("unsupported type HMI_BOOL of variable 'Lamp'"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test
