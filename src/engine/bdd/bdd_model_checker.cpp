@@ -364,20 +364,19 @@ class Run {
     // from one situation, the full-space preimage of everything found so far blew up (a
     // 39,027-state random chart: 33 s for one closure).
     Set backward(const Set& to) const {
-      Bdd back = run_.reached_ & to, ring = back;
-      while (!ring.is_false()) {
-        ring = pre(ring) & !back;
-        back = back | ring;
-      }
-      return back;
+      return closure(to, [&](const Bdd& ring) { return pre(ring); });
     }
     Set forward(const Set& from) const {
-      Bdd ahead = run_.reached_ & from, ring = ahead;
+      return closure(from, [&](const Bdd& ring) { return post(ring); });
+    }
+    template <class Step>
+    Set closure(const Set& seeds, Step&& step) const {
+      Bdd all = run_.reached_ & seeds, ring = all;
       while (!ring.is_false()) {
-        ring = post(ring) & !ahead;
-        ahead = ahead | ring;
+        ring = step(ring) & !all;
+        all = all | ring;
       }
-      return ahead;
+      return all;
     }
     Set ctl(const logic::FormulaPtr& f, bool fair) { return checker(fair).sat(f); }
     logic::Trace explain(const logic::FormulaPtr& f, const Set& from, bool fair) {

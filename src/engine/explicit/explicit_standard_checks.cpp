@@ -98,36 +98,32 @@ class ExplicitSpace {
   Set backward(Set seeds) const {
     const auto& po = g_.predecessor_offsets();
     const auto& pe = g_.predecessor_edges();
-    std::vector<std::uint32_t> queue;
-    for (std::uint32_t s = 0; s < seeds.size(); ++s)
-      if (seeds[s]) queue.push_back(s);
-    while (!queue.empty()) {
-      const auto t = queue.back();
-      queue.pop_back();
-      for (auto i = po[t]; i < po[t + 1]; ++i) {
-        const auto s = g_.source(pe[i]);
-        if (!seeds[s]) {
-          seeds[s] = 1;
-          queue.push_back(s);
-        }
-      }
-    }
-    return seeds;
+    return closure(std::move(seeds), [&](std::uint32_t t, auto&& add) {
+      for (auto i = po[t]; i < po[t + 1]; ++i) add(g_.source(pe[i]));
+    });
   }
   /// Forward closure of `seeds`.
   Set forward(Set seeds) const {
+    return closure(std::move(seeds), [&](std::uint32_t s, auto&& add) {
+      if (!g_.expanded(s)) return;
+      for (auto e = g_.edges_begin(s); e < g_.edges_end(s); ++e) add(g_.target(e));
+    });
+  }
+  /// `seeds` and every state `neighbours(x, add)` adds from a state x in it, transitively.
+  template <class Neighbours>
+  Set closure(Set seeds, Neighbours&& neighbours) const {
     std::vector<std::uint32_t> queue;
     for (std::uint32_t s = 0; s < seeds.size(); ++s)
       if (seeds[s]) queue.push_back(s);
+    auto add = [&](std::uint32_t x) {
+      if (seeds[x]) return;
+      seeds[x] = 1;
+      queue.push_back(x);
+    };
     while (!queue.empty()) {
-      const auto s = queue.back();
+      const auto x = queue.back();
       queue.pop_back();
-      if (!g_.expanded(s)) continue;
-      for (auto e = g_.edges_begin(s); e < g_.edges_end(s); ++e)
-        if (const auto t = g_.target(e); !seeds[t]) {
-          seeds[t] = 1;
-          queue.push_back(t);
-        }
+      neighbours(x, add);
     }
     return seeds;
   }
