@@ -145,8 +145,10 @@ void Compiler::collect_written(const model::StmtList& body, const std::string& p
 std::optional<std::int64_t> Compiler::constant_variable(const model::Pou& pou,
                                                         const std::string& name) {
   const auto* var = pou.find_variable(name);
-  if (!var || (var->direction != model::VarDirection::Local &&
-               var->direction != model::VarDirection::Output))
+  // A located variable (AT %I..., %M...; an HMI variable) is set from outside the program.
+  if (!var || !var->address.empty() ||
+      (var->direction != model::VarDirection::Local &&
+       var->direction != model::VarDirection::Output))
     return std::nullopt;
   const auto up = model::to_upper(var->name);
   if (written.count(model::to_upper(pou.name) + "|" + up) || written.count("*|" + up))

@@ -273,8 +273,9 @@ TEST(Iec61131Data, SeveralPositivePtValuesInAbstractTimeOnly) {
 // nothing can change. Each case below was modelled with the variable's initial value before,
 // so `AG (go -> q)` was answered "holds" though the timer runs with PT = 5 s (or the plant sets
 // the duration): an output binding `src(Q => d)`, a write of another POU through VAR_EXTERNAL,
-// a write `h.d := ...` of another instance's member, and a VAR_INPUT. Now each is refused by
-// name; a VAR that nothing writes stays a constant.
+// a write `h.d := ...` of another instance's member, a VAR_INPUT, and a located VAR
+// (`AT %IW3`, set by the plant). Now each is refused by name; a VAR that nothing writes stays a
+// constant.
 TEST(Iec61131Data, OnlyAVariableNothingWritesIsAConstantPtOrDuration) {
   auto error_of = [](const std::string& text) {
     auto loaded = io::load_iec_text(text, "constants.st");
@@ -340,6 +341,10 @@ END_PROGRAM
 )")
                 .find("qualifier L needs a constant duration"),
             std::string::npos);
+  // A located VAR (the plant sets it) is no constant either.
+  EXPECT_NE(
+      error_of(main_head + "  VAR d AT %IW3 : TIME := T#0MS; t : TON; END_VAR\n" + timer).find(pt),
+      std::string::npos);
   // A VAR nothing writes is still a constant PT.
   EXPECT_EQ(error_of(main_head + "  VAR d : TIME := T#5S; t : TON; END_VAR\n" + timer), "");
 }

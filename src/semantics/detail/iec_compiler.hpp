@@ -104,8 +104,8 @@ struct Compiler {
   /// The value of `pou`'s variable `name` when nothing can change it, to be read as a
   /// constant (PT of a timer, the duration of a timed qualifier): a VAR or VAR_OUTPUT with its
   /// initial value that no assignment, FOR loop or output binding `=> name` of `pou` writes,
-  /// and no write `x.name` anywhere. An input, in/out, external or global variable is never
-  /// constant (its caller, the plant or another POU sets it).
+  /// and no write `x.name` anywhere. An input, in/out, external, global or located (`AT %...`)
+  /// variable is never constant (its caller, the plant or another POU sets it).
   std::optional<std::int64_t> constant_variable(const model::Pou& pou, const std::string& name);
 
   void variables(const std::vector<const model::Pou*>& pous);
