@@ -180,11 +180,9 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     sc.owner = pi;
     sc.name = pous[pi]->name;
     scopes.push_back(std::move(sc));
-    const auto up = model::to_upper(pous[pi]->name);
-    collect_written(pous[pi]->body, up);
-    for (const auto& a : pous[pi]->actions) collect_written(a.body, up);
   }
-  // Every POU of the project, called or not: a write `x.m` in any of them changes member m.
+  // Every POU of the project (the selected ones, the FB types, the uncalled ones): a write
+  // `x.m` in any of them changes member m.
   for (const auto& pou : project.pous) {
     const auto up = model::to_upper(pou.name);
     collect_written(pou.body, up);

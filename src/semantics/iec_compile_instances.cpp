@@ -34,9 +34,7 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
                        " function block instances");
     return;
   }
-  reject_foreign({type});
-  collect_written(type->body, up_type);
-  for (const auto& a : type->actions) collect_written(a.body, up_type);
+  reject_foreign({type});  // what it writes: collected with every POU (variables())
 
   const auto si = static_cast<std::uint32_t>(scopes.size());
   {
