@@ -307,7 +307,9 @@ TEST(InvariantSearch, AgreesWithTheGraphCheckerOnRandomCharts) {
 TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
   auto selector = load(bench::parallel_branches_iec(14, true));
   auto tanks = load(bench::tanks_iec(3, true));
-  ASSERT_TRUE(selector && tanks);
+  auto wide = load(bench::parallel_branches_iec(40, true));
+  ASSERT_TRUE(selector && tanks && wide);
+  ASSERT_GT(wide->ts->layout().words(), 1u);
   struct Case {
     const semantics::TransitionSystem* ts;
     std::vector<logic::Property> props;
@@ -319,7 +321,16 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
       {&p, {invariant(p, "A0", "B0")}, 9000},                          // a limit inside a batch
       {&p, {invariant(p, "B0", "B13"), invariant(p, "A0", "B0")}, 0},  // one violated at depth 3
       {tanks->ts.get(), {invariant(*tanks->ts, "FB_0", "EB_0")}, 0},
+      // States of two words; limits inside the sixth batch and exactly at a batch's end.
+      {wide->ts.get(), {invariant(*wide->ts, "A0", "B0")}, 25000},
+      {wide->ts.get(), {invariant(*wide->ts, "A0", "B0")}, 4096},
   };
+  // State limits falling anywhere: between two sources, after a source's last new state,
+  // before one of its repeated targets, at the last state.
+  for (std::uint64_t limit : {4097U, 4098U, 5000U, 8191U, 12345U, 16384U, 16385U, 16386U})
+    cases.push_back({&p, {invariant(p, "A0", "B0")}, limit});
+  for (std::uint64_t limit : {100U, 700U, 729U, 730U, 1000U})
+    cases.push_back({tanks->ts.get(), {invariant(*tanks->ts, "FB_0", "EB_0")}, limit});
   std::uint32_t complete = 0, violated = 0;
   for (const auto& c : cases) {
     logic::CheckTask task;
@@ -336,7 +347,7 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
     complete += single.complete;
     for (const auto& r : single.results) violated += r.verdict == logic::Verdict::Violated;
   }
-  EXPECT_GE(complete, 2u);
+  EXPECT_GE(complete, 3u);
   EXPECT_GE(violated, 1u);
   EXPECT_EQ(check_invariants(
                 [&] {

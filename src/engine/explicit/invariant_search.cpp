@@ -188,50 +188,56 @@ logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateSt
   return trace;
 }
 
-/// Successor generation for batches of stored states on several threads. The search stores
-/// and judges states on its own thread, in BFS order, from the targets computed here, so the
-/// numbering and every result are those of the one-thread search; only the enumeration, two
-/// thirds of the instructions of a compiled search, runs in parallel, and the next batch is
-/// enumerated while the current one is stored.
-class ParallelTargets {
- public:
-  static constexpr std::uint32_t kBatchStates = 4096;
-  static constexpr std::uint32_t kChunkStates = 64;
-
-  /// The states [begin, end) of one batch, copied (the store grows while they are expanded),
-  /// and their targets, chunk by chunk.
-  class Batch {
-   public:
-    std::uint32_t begin() const { return begin_; }
-    std::uint32_t end() const { return end_; }
-    bool empty() const { return begin_ == end_; }
-    /// The targets of state `s` of this batch: (first word, number of words).
-    std::pair<const StateWord*, std::size_t> targets(std::uint32_t s) const {
-      const auto i = s - begin_;
-      const auto& c = chunks_[i / kChunkStates];
-      const auto k = i % kChunkStates;
-      const std::uint32_t from = k == 0 ? 0 : c.ends[k - 1];
-      return {c.targets.data() + from, c.ends[k] - from};
+/// Keeps the first occurrence of each of the `count` targets at `first` (`words` words each),
+/// in their order, and returns how many remain: one edge per (source, target), as the graph.
+/// `last_repeats`: whether the last target repeats an earlier one.
+std::size_t keep_distinct_targets(StateWord* first, std::size_t count, std::uint32_t words,
+                                  std::vector<std::uint32_t>& table, bool& last_repeats) {
+  last_repeats = false;
+  auto at = [&](std::size_t i) { return first + i * words; };
+  auto same = [&](std::size_t i, std::size_t j) { return std::equal(at(i), at(i) + words, at(j)); };
+  std::size_t kept = 0;
+  if (count <= 16) {
+    for (std::size_t i = 0; i < count; ++i) {
+      bool seen = false;
+      for (std::size_t j = 0; j < kept && !seen; ++j) seen = same(i, j);
+      last_repeats = seen;
+      if (seen) continue;
+      if (kept != i) std::copy(at(i), at(i) + words, at(kept));
+      ++kept;
     }
+    return kept;
+  }
+  std::size_t size = 64;
+  while (size < 2 * count) size *= 2;
+  table.assign(size, 0);
+  const std::size_t mask = size - 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    for (std::uint32_t w = 0; w < words; ++w) h = (h ^ at(i)[w]) * 0xbf58476d1ce4e5b9ULL;
+    std::size_t slot = (h ^ (h >> 29)) & mask;
+    bool seen = false;
+    for (; table[slot] != 0; slot = (slot + 1) & mask)
+      if (same(i, table[slot] - 1)) {
+        seen = true;
+        break;
+      }
+    last_repeats = seen;
+    if (seen) continue;
+    if (kept != i) std::copy(at(i), at(i) + words, at(kept));
+    table[slot] = static_cast<std::uint32_t>(++kept);
+  }
+  return kept;
+}
 
-   private:
-    friend class ParallelTargets;
-    struct Chunk {
-      std::vector<StateWord> targets;
-      std::vector<std::uint32_t> ends;  ///< per state: end of its targets in `targets`
-    };
-    std::uint32_t begin_ = 0, end_ = 0;
-    std::vector<StateWord> states_;
-    std::vector<Chunk> chunks_;
-    std::uint32_t num_chunks_ = 0;
-    std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
-    std::uint32_t completed_ = 0;         ///< guarded by the pool's mutex, as active_
-    std::uint32_t active_ = 0;            ///< workers inside this batch
-    std::exception_ptr error_;
-  };
+/// The threads of the parallel search. A job runs on this thread and on every worker at once,
+/// each with its own enumerator, and takes its share of the work itself (from an atomic
+/// counter), so it is over once its work is taken and every thread has left it.
+class WorkerPool {
+ public:
+  using Job = std::function<void(TargetEnumerator&)>;
 
-  ParallelTargets(TargetEnumerator& own, unsigned threads, std::uint32_t words)
-      : own_(own), words_(words) {
+  WorkerPool(TargetEnumerator& own, unsigned threads) : own_(own) {
     for (unsigned t = 1; t < threads; ++t) {
       auto e = own.clone();
       if (!e) break;
@@ -239,7 +245,7 @@ class ParallelTargets {
     }
     for (auto& e : enumerators_) workers_.emplace_back([this, en = e.get()] { work(*en); });
   }
-  ~ParallelTargets() {
+  ~WorkerPool() {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       stop_ = true;
@@ -247,50 +253,30 @@ class ParallelTargets {
     wake_.notify_all();
     for (auto& w : workers_) w.join();
   }
-  ParallelTargets(const ParallelTargets&) = delete;
-  ParallelTargets& operator=(const ParallelTargets&) = delete;
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
 
   bool parallel() const { return !workers_.empty(); }
 
-  /// Copies the states [begin, end) of `store` into `b` and lets the workers enumerate them.
-  void start(Batch& b, const StateStore& store, std::uint32_t begin, std::uint32_t end) {
-    b.begin_ = begin;
-    b.end_ = end;
-    b.states_.resize(static_cast<std::size_t>(end - begin) * words_);
-    for (std::uint32_t s = begin; s < end; ++s) {
-      const auto v = store.at(s);
-      std::copy(v.begin(), v.end(),
-                b.states_.begin() + static_cast<std::ptrdiff_t>(s - begin) * words_);
-    }
-    b.num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
-    if (b.chunks_.size() < b.num_chunks_) b.chunks_.resize(b.num_chunks_);
-    b.next_.store(0);
-    b.completed_ = 0;
-    b.error_ = nullptr;
+  /// Starts `job` on the workers; join() ends it.
+  void post(Job job) {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      job_ = &b;
+      job_ = std::move(job);
+      posted_ = true;
+      error_ = nullptr;
       ++generation_;
     }
     wake_.notify_all();
   }
-
-  /// Enumerates what is left of `b` on this thread, waits for the workers, and rethrows what
-  /// an enumeration threw.
-  void finish(Batch& b) {
-    run(b, own_);
+  /// Runs the posted job on this thread too (when `help`; otherwise its work must already be
+  /// taken), waits until no worker is inside it, and rethrows what one of its runs threw.
+  void join(bool help = true) {
+    if (help) run(own_);
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return b.completed_ == b.num_chunks_ && b.active_ == 0; });
-    if (job_ == &b) job_ = nullptr;
-    if (b.error_) std::rethrow_exception(b.error_);
-  }
-
-  /// Stops handing out the chunks of `b` and waits until no worker is inside it.
-  void abandon(Batch& b) {
-    b.next_.store(b.num_chunks_);
-    std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return b.active_ == 0; });
-    if (job_ == &b) job_ = nullptr;
+    done_.wait(lock, [&] { return active_ == 0; });
+    posted_ = false;  // a worker waking late finds nothing to run
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
   }
 
  private:
@@ -298,51 +284,202 @@ class ParallelTargets {
     std::unique_lock<std::mutex> lock(mutex_);
     std::uint64_t seen = 0;
     for (;;) {
-      wake_.wait(lock, [&] { return stop_ || (job_ && generation_ != seen); });
+      wake_.wait(lock, [&] { return stop_ || (posted_ && generation_ != seen); });
       if (stop_) return;
       seen = generation_;
-      Batch& b = *job_;
-      ++b.active_;
+      ++active_;
       lock.unlock();
-      run(b, e);
+      run(e);
       lock.lock();
-      --b.active_;
-      done_.notify_all();
+      if (--active_ == 0) done_.notify_all();
     }
   }
-
-  void run(Batch& b, TargetEnumerator& e) {
-    for (;;) {
-      const auto c = b.next_.fetch_add(1);
-      if (c >= b.num_chunks_) return;
-      auto& chunk = b.chunks_[c];
-      chunk.targets.clear();
-      chunk.ends.clear();
-      std::exception_ptr error;
-      try {
-        const auto first = c * kChunkStates;
-        const auto last = std::min(first + kChunkStates, b.end_ - b.begin_);
-        e.targets_of(StateView(b.states_.data() + static_cast<std::size_t>(first) * words_,
-                               static_cast<std::size_t>(last - first) * words_),
-                     last - first, chunk.targets, chunk.ends);
-      } catch (...) {
-        error = std::current_exception();
-      }
+  void run(TargetEnumerator& e) {
+    try {
+      job_(e);
+    } catch (...) {
       const std::lock_guard<std::mutex> lock(mutex_);
-      if (error && !b.error_) b.error_ = error;
-      if (++b.completed_ == b.num_chunks_) done_.notify_all();
+      if (!error_) error_ = std::current_exception();
     }
   }
 
   TargetEnumerator& own_;
-  std::uint32_t words_;
   std::vector<std::unique_ptr<TargetEnumerator>> enumerators_;
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  Batch* job_ = nullptr;
+  Job job_;
+  bool posted_ = false;
   std::uint64_t generation_ = 0;
+  std::uint32_t active_ = 0;
   bool stop_ = false;
+  std::exception_ptr error_;
+};
+
+/// A batch of stored states of the parallel search and, once enumerated, their distinct
+/// targets concatenated in source order: the position of a target there (its pair) is the
+/// order in which the serial search inserts it.
+class Batch {
+ public:
+  static constexpr std::uint32_t kStates = 4096;
+  static constexpr std::uint32_t kChunkStates = 64;
+
+  std::uint32_t begin() const { return begin_; }
+  std::uint32_t end() const { return end_; }
+  bool empty() const { return begin_ == end_; }
+  std::uint32_t pairs() const { return pair_end_.empty() ? 0 : pair_end_.back(); }
+  /// The pairs of source `s` of this batch: [first, end).
+  std::uint32_t first_pair(std::uint32_t s) const {
+    return s == begin_ ? 0 : pair_end_[s - begin_ - 1];
+  }
+  std::uint32_t end_pair(std::uint32_t s) const { return pair_end_[s - begin_]; }
+  /// Whether the last target the enumeration gave for source `s` repeats an earlier one.
+  bool ends_with_repeat(std::uint32_t s) const { return ends_with_repeat_[s - begin_] != 0; }
+  const StateWord* targets() const { return targets_.data(); }
+
+  /// Copies the states [begin, end) of `store` and posts their enumeration on `pool`.
+  void enumerate(WorkerPool& pool, const StateStore& store, std::uint32_t begin,
+                 std::uint32_t end) {
+    begin_ = begin;
+    end_ = end;
+    words_ = store.words_per_state();
+    const auto v = store.range(begin, end - begin);
+    states_.assign(v.begin(), v.end());
+    num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
+    if (chunks_.size() < num_chunks_) chunks_.resize(num_chunks_);
+    next_.store(0);
+    pool.post([this](TargetEnumerator& e) { enumerate_chunks(e); });
+  }
+  /// Ends the enumeration, helping with it, and concatenates the targets. An exception of an
+  /// enumeration (a limit) is rethrown: the batch's targets are then not complete.
+  void finish(WorkerPool& pool) {
+    pool.join();
+    pair_end_.clear();
+    ends_with_repeat_.clear();
+    targets_.clear();
+    for (std::uint32_t c = 0; c < num_chunks_; ++c) {
+      const auto& chunk = chunks_[c];
+      const auto base = static_cast<std::uint32_t>(targets_.size() / words_);
+      for (auto end : chunk.ends) pair_end_.push_back(base + end / words_);
+      ends_with_repeat_.insert(ends_with_repeat_.end(), chunk.repeats.begin(), chunk.repeats.end());
+      targets_.insert(targets_.end(), chunk.targets.begin(), chunk.targets.end());
+    }
+  }
+  /// Takes the rest of the enumeration away from the workers and waits for them.
+  void abandon(WorkerPool& pool) {
+    next_.store(num_chunks_);
+    pool.join(false);
+  }
+
+ private:
+  struct Chunk {
+    std::vector<StateWord> targets;
+    std::vector<std::uint32_t> ends;    ///< per state: end of its targets in `targets`, in words
+    std::vector<std::uint8_t> repeats;  ///< per state: its last target repeats an earlier one
+    std::vector<std::uint32_t> table;   ///< scratch of keep_distinct_targets
+  };
+  void enumerate_chunks(TargetEnumerator& e) {
+    for (;;) {
+      const auto c = next_.fetch_add(1);
+      if (c >= num_chunks_) return;
+      auto& chunk = chunks_[c];
+      chunk.targets.clear();
+      chunk.ends.clear();
+      chunk.repeats.clear();
+      const auto first = c * kChunkStates;
+      const auto last = std::min(first + kChunkStates, end_ - begin_);
+      e.targets_of(StateView(states_.data() + static_cast<std::size_t>(first) * words_,
+                             static_cast<std::size_t>(last - first) * words_),
+                   last - first, chunk.targets, chunk.ends);
+      // Each state's distinct targets, moved down in place.
+      std::uint32_t from = 0, kept = 0;
+      for (auto& end : chunk.ends) {
+        bool repeat = false;
+        const auto count = keep_distinct_targets(chunk.targets.data() + from, (end - from) / words_,
+                                                 words_, chunk.table, repeat);
+        chunk.repeats.push_back(repeat ? 1 : 0);
+        if (kept != from)
+          std::copy_n(chunk.targets.begin() + from, count * words_, chunk.targets.begin() + kept);
+        from = end;
+        kept += static_cast<std::uint32_t>(count * words_);
+        end = kept;
+      }
+      chunk.targets.resize(kept);
+    }
+  }
+
+  std::uint32_t begin_ = 0, end_ = 0, words_ = 1;
+  std::vector<StateWord> states_;
+  std::vector<Chunk> chunks_;
+  std::uint32_t num_chunks_ = 0;
+  std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
+  std::vector<StateWord> targets_;
+  std::vector<std::uint32_t> pair_end_;         ///< per state: end of its pairs
+  std::vector<std::uint8_t> ends_with_repeat_;  ///< per state
+};
+
+/// The new targets of a batch, found on every thread: each is staged by the first pair that
+/// looks it up, and claimed by the first pair in serial order that reaches it.
+class BatchStaging {
+ public:
+  struct Entry {
+    std::uint32_t claim;  ///< the first pair reaching the state
+    std::uint32_t pair;   ///< the pair whose words hold it
+    std::uint32_t slot;
+  };
+  /// Stages the targets of `batch` on every thread of `pool`; false when the store cannot
+  /// number that many more states. Afterwards, entries() lists the new states by claim.
+  bool stage(WorkerPool& pool, StateStore& store, const Batch& batch) {
+    const std::uint32_t pairs = batch.pairs();
+    entries_.clear();
+    if (!store.reserve_for_staging(pairs)) return false;
+    claims_.resize(pairs);
+    next_.store(0);
+    pool.post([&](TargetEnumerator&) { stage_sources(store, batch); });
+    pool.join();
+    for (auto& e : entries_) e.claim = claims_[e.pair];
+    std::sort(entries_.begin(), entries_.end(),
+              [](const Entry& a, const Entry& b) { return a.claim < b.claim; });
+    return true;
+  }
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  static constexpr std::uint32_t kSourcesPerTake = 64;
+  void stage_sources(StateStore& store, const Batch& batch) {
+    const std::uint32_t words = store.words_per_state();
+    const std::uint32_t sources = batch.end() - batch.begin();
+    std::vector<Entry> mine;
+    for (;;) {
+      const auto first = next_.fetch_add(kSourcesPerTake);
+      if (first >= sources) break;
+      const auto last = std::min(first + kSourcesPerTake, sources);
+      for (auto p = batch.first_pair(batch.begin() + first);
+           p < batch.end_pair(batch.begin() + last - 1); ++p) {
+        // Written before stage() can publish pair p, read by the threads that find it there.
+        std::atomic_ref<std::uint32_t>(claims_[p]).store(p, std::memory_order_relaxed);
+        const auto found =
+            store.stage(StateView(batch.targets() + static_cast<std::size_t>(p) * words, words), p,
+                        batch.targets());
+        if (found.index != StateStore::kAbsent) continue;
+        if (found.first) {
+          mine.push_back({0, p, found.slot});
+          continue;
+        }
+        std::atomic_ref<std::uint32_t> claim(claims_[found.entry]);
+        auto seen = claim.load(std::memory_order_relaxed);
+        while (p < seen && !claim.compare_exchange_weak(seen, p, std::memory_order_relaxed)) {
+        }
+      }
+    }
+    const std::lock_guard<std::mutex> lock(mutex_);
+    entries_.insert(entries_.end(), mine.begin(), mine.end());
+  }
+
+  std::vector<std::uint32_t> claims_;  ///< per pair that staged a state: its claim
+  std::vector<Entry> entries_;
+  std::atomic<std::uint32_t> next_{0};  ///< the next source to take
+  std::mutex mutex_;
 };
 
 }  // namespace
@@ -528,20 +665,22 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     chunk_end = from + static_cast<std::uint32_t>(ends.size());
   };
   std::uint32_t s = 0;
-  ParallelTargets::Batch batches[2];  // outlive the pool's workers
-  ParallelTargets pool(*enumerator, threads, words);
-  // A batch whose enumeration threw (a limit, on some worker): the search goes on from its
-  // first state on this thread alone, so the state that stops it is the one-thread search's.
+  Batch batches[2];  // outlive the pool's workers
+  BatchStaging staging;
+  WorkerPool pool(*enumerator, threads);
+  // A batch whose enumeration threw (a limit, on some thread) or that the store cannot number:
+  // the search goes on from its first state on this thread alone, so the state that stops it
+  // is the one-thread search's.
   bool serial = !pool.parallel();
   if (!serial) {
     auto* cur = &batches[0];
     auto* next = &batches[1];
-    auto batch_end = [&](std::uint32_t from) {
-      return std::min<std::uint32_t>(store.size(), from + ParallelTargets::kBatchStates);
+    auto enumerate_from = [&](Batch& b, std::uint32_t from) {
+      b.enumerate(pool, store, from, std::min<std::uint32_t>(store.size(), from + Batch::kStates));
     };
-    auto finished = [&](ParallelTargets::Batch& b) {
+    auto enumerated = [&](Batch& b) {
       try {
-        pool.finish(b);
+        b.finish(pool);
         return true;
       } catch (const LimitReached& stop) {
         if (stop.which() == Limit::Enumeration) throw;
@@ -550,30 +689,59 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         return false;
       }
     };
-    pool.start(*cur, store, 0, batch_end(0));
-    bool stopped = !finished(*cur);
+    enumerate_from(*cur, 0);
+    bool stopped = !enumerated(*cur);
     while (!stopped && !cur->empty()) {
-      // The states already stored past this batch are enumerated while it is stored.
-      pool.start(*next, store, cur->end(), batch_end(cur->end()));
+      if (!staging.stage(pool, store, *cur)) {
+        serial = true;
+        s = cur->begin();
+        break;
+      }
+      // The states already stored past this batch are enumerated while its new states are
+      // numbered, stored and judged here, in the serial search's order: source by source,
+      // each source's new states in the order of their first pairs.
+      enumerate_from(*next, cur->end());
+      const auto& fresh = staging.entries();
+      std::size_t k = 0;
       for (s = cur->begin(); s < cur->end(); ++s) {
         if (!limit.empty() || open == 0 || !before(s)) {
           stopped = true;
           break;
         }
-        const auto [first, count] = cur->targets(s);
-        if (!expand(s, first, count)) {
+        const auto pairs_end = cur->end_pair(s);
+        just_violated.clear();
+        for (; k < fresh.size() && fresh[k].claim < pairs_end; ++k) {
+          const auto t = store.commit_staged(
+              fresh[k].slot,
+              StateView(cur->targets() + static_cast<std::size_t>(fresh[k].pair) * words, words));
+          parent.push_back(s);
+          if (open > 0) judge(t);
+          // As expand(): the next target of this source, if any (a repeat counts), finds
+          // the store past the limit.
+          if (limits.max_states > 0 && store.size() > limits.max_states &&
+              (fresh[k].claim + 1 < pairs_end || cur->ends_with_repeat(s))) {
+            limit = "states";
+            ++k;
+            break;
+          }
+        }
+        if (!limit.empty()) {
+          for (auto i : just_violated) violation[i] = kNone;
+          open += just_violated.size();
           stopped = true;
           break;
         }
+        edges += pairs_end - cur->first_pair(s);
       }
+      if (k < fresh.size()) store.drop_staged();
       if (stopped) {
-        pool.abandon(*next);
+        next->abandon(pool);
         break;
       }
-      if (!finished(*next)) break;
+      if (!enumerated(*next)) break;
       if (next->empty()) {
-        pool.start(*next, store, cur->end(), batch_end(cur->end()));
-        if (!finished(*next)) break;
+        enumerate_from(*next, cur->end());
+        if (!enumerated(*next)) break;
       }
       std::swap(cur, next);
     }

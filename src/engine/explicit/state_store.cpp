@@ -1,6 +1,7 @@
 #include "engine/explicit/state_store.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace sfcv::engine {
@@ -57,15 +58,67 @@ std::uint32_t StateStore::add_word(std::size_t slot, StateWord word) {
 }
 
 void StateStore::grow() {
-  std::vector<std::uint32_t> bigger(slots_.size() * 2, 0);
-  const std::size_t mask = bigger.size() - 1;
+  rehash(slots_.size() * 2);
+}
+
+void StateStore::rehash(std::size_t slot_count) {
+  std::vector<std::uint32_t> table(slot_count, 0);
+  const std::size_t mask = table.size() - 1;
   for (std::uint32_t idx = 0; idx < size_; ++idx) {
-    const std::uint64_t h = hash(at(idx));
-    std::size_t i = h & mask;
-    while (bigger[i] != 0) i = (i + 1) & mask;
-    bigger[i] = idx + 1;
+    std::size_t i = hash(at(idx)) & mask;
+    while (table[i] != 0) i = (i + 1) & mask;
+    table[i] = idx + 1;
   }
-  slots_ = std::move(bigger);
+  slots_ = std::move(table);
+}
+
+bool StateStore::reserve_for_staging(std::uint64_t count) {
+  if (size_ + count >= kStagedBit - 1) return false;
+  // At most three quarters full once every staged state is new: probes stay short.
+  while ((size_ + count) * 4 > slots_.size() * 3) grow();
+  return true;
+}
+
+StateStore::Staged StateStore::stage(StateView state, std::uint32_t entry,
+                                     const StateWord* staged_words) {
+  const std::uint64_t h = words_ == 1 ? hash_word(state[0]) : hash(state);
+  const auto tag = static_cast<std::uint32_t>(h >> 32);
+  const std::size_t mask = slots_.size() - 1;
+  auto same_staged = [&](std::uint32_t e) {
+    const StateWord* p = staged_words + static_cast<std::size_t>(e) * words_;
+    return std::equal(p, p + words_, state.begin());
+  };
+  for (std::size_t i = h & mask;; i = (i + 1) & mask) {
+    std::atomic_ref<std::uint32_t> slot(slots_[i]);
+    std::uint32_t s = slot.load(std::memory_order_acquire);
+    if (s == 0) {
+      // The entry's words are written before its slot is published (release), so a thread
+      // that sees the slot (acquire) sees the words.
+      if (slot.compare_exchange_strong(s, kStagedBit | entry, std::memory_order_acq_rel,
+                                       std::memory_order_acquire))
+        return {kAbsent, entry, static_cast<std::uint32_t>(i), true};
+      // Another thread took this slot first: `s` now holds what it stored there.
+    }
+    if ((s & kStagedBit) != 0) {
+      if (same_staged(s & ~kStagedBit))
+        return {kAbsent, s & ~kStagedBit, static_cast<std::uint32_t>(i), false};
+    } else if (words_ == 1 ? data_[s - 1] == state[0]
+                           : hashes_[s - 1] == tag && equal_at(s - 1, state)) {
+      return {s - 1, 0, 0, false};
+    }
+  }
+}
+
+std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
+  data_.insert(data_.end(), state.begin(), state.begin() + words_);
+  if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(hash(state) >> 32));
+  slots_[slot] = ++size_;
+  return size_ - 1;
+}
+
+void StateStore::drop_staged() {
+  // Emptying a slot would cut the probe sequences through it: the table is rebuilt instead.
+  rehash(slots_.size());
 }
 
 std::size_t StateStore::memory_bytes() const {

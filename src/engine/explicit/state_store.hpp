@@ -50,7 +50,33 @@ class StateStore {
 
   static constexpr std::uint32_t kAbsent = ~0U;
 
+  // Staging: the targets of a batch of sources are looked up on several threads at once, and
+  // the new ones are numbered afterwards, on one thread, in the order the serial insertion
+  // would have numbered them. A staged state lives in the caller's buffer (`staged_words`,
+  // `words_per_state` words per entry) and its slot refers to that entry until it is committed.
+  // Between reserve_for_staging() and the last commit_staged() or drop_staged(), only stage()
+  // may run concurrently, and only with itself.
+
+  /// What stage() found.
+  struct Staged {
+    std::uint32_t index;  ///< the stored state's index, or kAbsent when it is staged
+    std::uint32_t entry;  ///< when staged: the entry of the buffer that holds it
+    std::uint32_t slot;   ///< when staged: its slot, for commit_staged()
+    bool first;           ///< when staged: this call staged it
+  };
+  /// Grows the table so that `count` states can be staged without growing; false when the
+  /// store cannot number that many more states (more than 2^31-2 in all).
+  bool reserve_for_staging(std::uint64_t count);
+  /// Thread-safe: the index of `state` if it is stored; else stages it as `entry` unless
+  /// another entry holds it already.
+  Staged stage(StateView state, std::uint32_t entry, const StateWord* staged_words);
+  /// Stores the staged state `state` of `slot` as the next state; returns its index.
+  std::uint32_t commit_staged(std::uint32_t slot, StateView state);
+  /// Forgets every state staged and not committed.
+  void drop_staged();
+
  private:
+  static constexpr std::uint32_t kStagedBit = 0x80000000U;
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
   // A one-word state is its own key: no stored hash tag, no call to compare. Inline: the
@@ -78,6 +104,7 @@ class StateStore {
   }
   static std::uint64_t hash_word(StateWord word) { return mix(0x9e3779b97f4a7c15ULL ^ word); }
   void grow();
+  void rehash(std::size_t slot_count);
 
   std::uint32_t words_;
   std::uint32_t size_ = 0;
