@@ -37,6 +37,10 @@ constexpr std::uint32_t kNone = ~0U;
 /// small.
 constexpr std::uint32_t kSerialChunkStates = 64;
 
+/// How many targets ahead a store look-up is started: each misses the cache twice (its slot,
+/// then the state the slot refers to), and the misses of several look-ups overlap.
+constexpr std::uint32_t kAhead = 16;
+
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
   InterpretedEnumerator(const semantics::TransitionSystem& ts, model::Budget limits)
@@ -195,7 +199,7 @@ std::size_t keep_distinct_targets(StateWord* first, std::size_t count, std::uint
                                   std::vector<std::uint32_t>& table, bool& last_repeats) {
   last_repeats = false;
   auto at = [&](std::size_t i) { return first + i * words; };
-  auto same = [&](std::size_t i, std::size_t j) { return std::equal(at(i), at(i) + words, at(j)); };
+  auto same = [&](std::size_t i, std::size_t j) { return same_state(at(i), at(j), words); };
   std::size_t kept = 0;
   if (count <= 16) {
     for (std::size_t i = 0; i < count; ++i) {
@@ -447,6 +451,7 @@ class BatchStaging {
  private:
   static constexpr std::uint32_t kSourcesPerTake = 64;
   void stage_sources(StateStore& store, const Batch& batch) {
+    std::uint64_t ahead[kAhead];  ///< the hashes of the pairs [p, p + kAhead)
     const std::uint32_t words = store.words_per_state();
     const std::uint32_t sources = batch.end() - batch.begin();
     std::vector<Entry> mine;
@@ -454,13 +459,27 @@ class BatchStaging {
       const auto first = next_.fetch_add(kSourcesPerTake);
       if (first >= sources) break;
       const auto last = std::min(first + kSourcesPerTake, sources);
-      for (auto p = batch.first_pair(batch.begin() + first);
-           p < batch.end_pair(batch.begin() + last - 1); ++p) {
+      const auto begin = batch.first_pair(batch.begin() + first);
+      const auto end = batch.end_pair(batch.begin() + last - 1);
+      auto target = [&](std::uint32_t p) {
+        return StateView(batch.targets() + static_cast<std::size_t>(p) * words, words);
+      };
+      // The look-ups miss the cache: the slot of the pair kAhead ahead, and the state its slot
+      // refers to kAhead / 2 ahead, are loaded while this one is looked up.
+      for (auto p = begin; p < std::min(end, begin + kAhead); ++p) {
+        ahead[p % kAhead] = store.state_hash(target(p));
+        store.prefetch_slot(ahead[p % kAhead]);
+      }
+      for (auto p = begin; p < end; ++p) {
+        const std::uint64_t hash = ahead[p % kAhead];
+        if (p + kAhead / 2 < end) store.prefetch_state(ahead[(p + kAhead / 2) % kAhead]);
+        if (p + kAhead < end) {
+          ahead[p % kAhead] = store.state_hash(target(p + kAhead));
+          store.prefetch_slot(ahead[p % kAhead]);
+        }
         // Written before stage() can publish pair p, read by the threads that find it there.
         std::atomic_ref<std::uint32_t>(claims_[p]).store(p, std::memory_order_relaxed);
-        const auto found =
-            store.stage(StateView(batch.targets() + static_cast<std::size_t>(p) * words, words), p,
-                        batch.targets());
+        const auto found = store.stage(target(p), hash, p, batch.targets());
         if (found.index != StateStore::kAbsent) continue;
         if (found.first) {
           mine.push_back({0, p, found.slot});
@@ -608,11 +627,16 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     return true;
   };
   // Stores the targets of state s and judges the new ones. False: a limit stopped it.
-  auto expand = [&](std::uint32_t s, const StateWord* found, std::size_t count) {
+  // `ahead`: the targets enumerated after these ones, whose look-ups are started early.
+  auto expand = [&](std::uint32_t s, const StateWord* found, std::size_t count, std::size_t ahead) {
     std::uint64_t out_edges = 0;
     just_violated.clear();
     const std::uint64_t max_states = limits.max_states;
     for (std::size_t k = 0; k < count; k += words) {
+      if (k + kAhead * words < count + ahead)
+        store.prefetch_slot(store.state_hash(StateView(found + k + kAhead * words, words)));
+      if (k + kAhead / 2 * words < count + ahead)
+        store.prefetch_state(store.state_hash(StateView(found + k + kAhead / 2 * words, words)));
       // As the graph builder: no state is stored beyond the limit, and the state being expanded
       // when it is reached stays unexpanded.
       if (max_states > 0 && store.size() > max_states) {
@@ -756,7 +780,9 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         break;
       }
       const std::uint32_t from = s == chunk_begin ? 0 : ends[s - chunk_begin - 1];
-      if (!expand(s, targets.data() + from, ends[s - chunk_begin] - from)) break;
+      if (!expand(s, targets.data() + from, ends[s - chunk_begin] - from,
+                  targets.size() - ends[s - chunk_begin]))
+        break;
     }
   }
   const bool complete = limit.empty() && s >= store.size();

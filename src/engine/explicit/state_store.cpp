@@ -17,7 +17,7 @@ std::uint64_t StateStore::hash(StateView state) const {
 
 bool StateStore::equal_at(std::uint32_t index, StateView state) const {
   const StateWord* p = data_.data() + static_cast<std::size_t>(index) * words_;
-  return std::equal(p, p + words_, state.begin());
+  return same_state(p, state.data(), words_);
 }
 
 std::uint32_t StateStore::find(StateView state) const {
@@ -74,19 +74,19 @@ void StateStore::rehash(std::size_t slot_count) {
 
 bool StateStore::reserve_for_staging(std::uint64_t count) {
   if (size_ + count >= kStagedBit - 1) return false;
-  // At most three quarters full once every staged state is new: probes stay short.
-  while ((size_ + count) * 4 > slots_.size() * 3) grow();
+  // At most half full once every staged state is new, as insert() keeps it: each slot probed
+  // past the first costs a read of a stored state.
+  while ((size_ + count) * 2 > slots_.size()) grow();
   return true;
 }
 
-StateStore::Staged StateStore::stage(StateView state, std::uint32_t entry,
+StateStore::Staged StateStore::stage(StateView state, std::uint64_t h, std::uint32_t entry,
                                      const StateWord* staged_words) {
-  const std::uint64_t h = words_ == 1 ? hash_word(state[0]) : hash(state);
   const auto tag = static_cast<std::uint32_t>(h >> 32);
   const std::size_t mask = slots_.size() - 1;
   auto same_staged = [&](std::uint32_t e) {
     const StateWord* p = staged_words + static_cast<std::size_t>(e) * words_;
-    return std::equal(p, p + words_, state.begin());
+    return same_state(p, state.data(), words_);
   };
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     std::atomic_ref<std::uint32_t> slot(slots_[i]);

@@ -24,6 +24,14 @@ inline std::uint32_t clock_poll_mask(std::uint32_t words_per_state) {
   return every - 1;
 }
 
+/// Whether the states at `a` and `b` of `words` words are equal. A plain loop: states are a few
+/// words, where a call to memcmp costs more than the compare.
+inline bool same_state(const StateWord* a, const StateWord* b, std::uint32_t words) {
+  for (std::uint32_t i = 0; i < words; ++i)
+    if (a[i] != b[i]) return false;
+  return true;
+}
+
 class StateStore {
  public:
   explicit StateStore(std::uint32_t words_per_state);
@@ -68,8 +76,24 @@ class StateStore {
   /// store cannot number that many more states (more than 2^31-2 in all).
   bool reserve_for_staging(std::uint64_t count);
   /// Thread-safe: the index of `state` if it is stored; else stages it as `entry` unless
-  /// another entry holds it already.
-  Staged stage(StateView state, std::uint32_t entry, const StateWord* staged_words);
+  /// another entry holds it already. `hash` is state_hash(state).
+  Staged stage(StateView state, std::uint64_t hash, std::uint32_t entry,
+               const StateWord* staged_words);
+  std::uint64_t state_hash(StateView state) const {
+    return words_ == 1 ? hash_word(state[0]) : hash(state);
+  }
+  /// Hints that a look-up of a state of hash `hash` follows: loads its first slot.
+  void prefetch_slot(std::uint64_t hash) const {
+    __builtin_prefetch(slots_.data() + (hash & (slots_.size() - 1)));
+  }
+  /// Hints that a look-up of a state of hash `hash` follows soon (after prefetch_slot()): loads
+  /// the stored state its first slot refers to.
+  void prefetch_state(std::uint64_t hash) const {
+    const std::uint32_t s = slots_[hash & (slots_.size() - 1)];
+    if (s == 0 || (s & kStagedBit) != 0) return;
+    __builtin_prefetch(data_.data() + static_cast<std::size_t>(s - 1) * words_);
+    if (words_ > 1) __builtin_prefetch(hashes_.data() + (s - 1));
+  }
   /// Stores the staged state `state` of `slot` as the next state; returns its index.
   std::uint32_t commit_staged(std::uint32_t slot, StateView state);
   /// Forgets every state staged and not committed.
