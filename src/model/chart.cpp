@@ -90,4 +90,28 @@ std::size_t count_transitions(const Project& p) {
   return n;
 }
 
+std::vector<std::string> in_out_bindings(const Project* project, std::string_view pou,
+                                         const Stmt& call) {
+  std::vector<std::string> bound;
+  if (!project || call.kind != StmtKind::FbCall || call.arguments.empty()) return bound;
+  const Pou* type = project->find_pou(pou);
+  const auto parts = split_path(call.target);
+  for (std::size_t i = 0; type && i < parts.size(); ++i) {
+    const Variable* v = type->find_variable(parts[i]);
+    if (!v && i == 0 && parts.size() > 1) {  // `Main.inst(...)`: an instance of a program
+      type = project->find_pou(parts[0]);
+      continue;
+    }
+    type = v && v->type.kind == TypeKind::FunctionBlock ? project->find_pou(v->type.name) : nullptr;
+  }
+  if (!type || type->kind != PouKind::FunctionBlock) return bound;
+  for (const auto& [param, value] : call.arguments) {
+    const Variable* m = type->find_variable(param);
+    if (!m || m->direction != VarDirection::InOut || !value) continue;
+    if (value->kind == ExprKind::Name) bound.push_back(value->name);
+    if (value->kind == ExprKind::Member) bound.push_back(value->name + "." + value->member);
+  }
+  return bound;
+}
+
 }  // namespace sfcv::model

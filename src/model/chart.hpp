@@ -236,6 +236,11 @@ struct Project {
   const Pou* find_pou(std::string_view pou_name) const;
 };
 
+/// The variables (`x`, `a.b`) that the call `call` in POU `pou` binds to VAR_IN_OUTs of a
+/// user function block instance: the call writes them back (docs/semantics.md 1.3c).
+std::vector<std::string> in_out_bindings(const Project* project, std::string_view pou,
+                                         const Stmt& call);
+
 // Counting helpers (sfcv info, tests against the corpus MANIFEST).
 std::size_t count_steps(const Project& p);
 std::size_t count_transitions(const Project& p);

@@ -185,6 +185,14 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
       error(here, "call of action " + quoted(s.target) + " with an output binding '=>'");
     else if (!type->find_action(action))
       error(here, "function block " + type->name + " has no action " + quoted(action));
+    else if (const auto io =
+                 std::find_if(type->variables.begin(), type->variables.end(),
+                              [](const Variable& m) { return m.direction == VarDirection::InOut; });
+             io != type->variables.end())
+      // Its VAR_IN_OUT would refer to the variable of the last call, which sfcv does not keep.
+      error(here, "call of action " + quoted(s.target) + ": function block " + type->name +
+                      " has the VAR_IN_OUT " + quoted(io->name) +
+                      ", and actions of such instances are not modelled");
     // Inputs passed to an action call (CODESYS, TwinCAT: `inst.ACT(SFCReset := TRUE)`) are
     // assigned to the instance's VAR_INPUTs before the action runs: checked as an instance call.
     for (const auto& [param, value] : s.arguments) {
@@ -215,11 +223,24 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
     if (!type) return;  // the compiler reports the missing type
     for (const auto& [param, value] : s.arguments) {
       const Variable* m = type->find_variable(param);
-      if (!m || m->direction != VarDirection::Input) {
+      const bool in_out = m && m->direction == VarDirection::InOut;
+      if (!m || (m->direction != VarDirection::Input && !in_out)) {
         error(here, "function block " + type->name + " has no input " + quoted(param));
         continue;
       }
       if (!value) continue;
+      if (in_out) {
+        // Passed by reference: the call reads and writes the variable itself (docs/semantics.md
+        // 1.3c), so it must be one.
+        if (value->kind != ExprKind::Name && value->kind != ExprKind::Member) {
+          error(at(value->where, here), "VAR_IN_OUT " + param + " of " + type->name +
+                                            " is bound to '" + to_st(*value) +
+                                            "', which is no variable");
+          continue;
+        }
+        assignable(value->kind == ExprKind::Name ? value->name : value->name + "." + value->member,
+                   here);
+      }
       const auto want = value_type(m->type);
       const Ty t = type_of(*value, here);
       if (want && clash(t, *want))

@@ -137,6 +137,8 @@ void Compiler::collect_written(const model::StmtList& body, const std::string& p
   for (const auto& s : body) {
     if (s->kind == model::StmtKind::Assign || s->kind == model::StmtKind::For) write(s->target);
     for (const auto& [output, variable] : s->outputs) write(variable);
+    // A variable bound to a VAR_IN_OUT is written back after the call.
+    for (const auto& variable : model::in_out_bindings(&project, pou, *s)) write(variable);
     for (const auto& b : s->bodies) collect_written(b, pou);
     collect_written(s->else_body, pou);
   }

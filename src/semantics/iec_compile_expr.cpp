@@ -338,6 +338,10 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
       const auto& inner = scopes[si];
       if (used + 1 == parts.size()) {
         auto it = inner.names.find(model::to_upper(parts.back()));
+        if (refuse_in_out_member(sc, si, parts.back(), model::to_st(e), e.where)) {
+          if (it != inner.names.end()) type = it->second.is_bool ? VT::Bool : VT::Int;
+          return constant(0);
+        }
         if (it != inner.names.end() &&
             (it->second.kind == Ref::Field || it->second.kind == Ref::Input)) {
           type = it->second.is_bool ? VT::Bool : VT::Int;

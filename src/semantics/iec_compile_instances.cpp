@@ -4,6 +4,7 @@
 // instance (Call) and copies the outputs; `inst.x` names the instance's variables.
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,10 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
     }
     switch (w.direction) {
       case model::VarDirection::InOut:
-        error(w.where, "VAR_IN_OUT '" + w.name + "' of function block " + type->name +
-                           ": in/out parameters of instances are not modelled");
-        continue;
+        // A field of the instance that each call loads from the variable it binds and copies
+        // back after the instance ran (docs/semantics.md 1.3c).
+        scopes[si].in_outs.push_back(w.name);
+        break;
       case model::VarDirection::External:
         // VAR_EXTERNAL: the global of that name, shared with everyone.
         if (const auto g = global_ref(up); g && g->is_bool == (w.type.kind == TypeKind::Bool)) {
@@ -168,6 +170,7 @@ std::optional<Ref> Compiler::dotted(const PouScope& sc, const std::string& path,
     error(where, "'" + path + "' is a function block instance, not a variable");
     return std::nullopt;
   }
+  if (refuse_in_out_member(sc, si, parts.back(), path, where)) return std::nullopt;
   return it->second;
 }
 
@@ -180,13 +183,28 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
     p.stmts.push_back(std::move(st));
     items.push_back(static_cast<std::uint32_t>(p.stmts.size() - 1));
   };
+  // VAR_IN_OUT: (field of the instance, the variable bound), copied back after the call.
+  std::vector<std::pair<std::uint32_t, Ref>> copy_back;
+  if (callee.unit && sc.owner != callee.owner && refuse_in_out_action(inst, s)) return;
+  for (const auto& name : callee.in_outs)
+    if (std::none_of(s.arguments.begin(), s.arguments.end(),
+                     [&](const auto& a) { return model::iequals(a.first, name) && a.second; }))
+      error(s.where, "the call of '" + s.target + "' does not bind its VAR_IN_OUT '" + name +
+                         "' (IEC 61131-3 requires it at every call)");
   for (const auto& [param, value] : s.arguments) {
     const auto* var = callee.pou->find_variable(param);
     auto it = callee.names.find(model::to_upper(param));
-    if (!var || var->direction != model::VarDirection::Input || it == callee.names.end() ||
-        it->second.kind != Ref::Field) {
+    const bool in_out = var && var->direction == model::VarDirection::InOut;
+    if (!var || (var->direction != model::VarDirection::Input && !in_out) ||
+        it == callee.names.end() || it->second.kind != Ref::Field) {
       error(s.where, "'" + s.target + "' (" + callee.pou->name + ") has no input '" + param + "'");
       continue;
+    }
+    if (in_out && value) {
+      if (auto bound = in_out_variable(sc, s, inst, param, *value, copy_back))
+        copy_back.emplace_back(it->second.index, *bound);
+      else
+        continue;
     }
     Stmt a;
     a.op = SOp::Assign;
@@ -212,6 +230,19 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
     call.target = inst;
   }
   push(std::move(call));
+  // Copied back before the outputs: `inst(io := x, q => x)` leaves q in x, as the call by
+  // reference does.
+  for (const auto& [field, bound] : copy_back) {
+    Stmt a;
+    a.op = SOp::Assign;
+    a.where = s.where.str();
+    a.target = bound.index;
+    Node n;
+    n.op = Op::Field;
+    n.a = field;
+    a.expr = node(n);
+    push(std::move(a));
+  }
   for (const auto& [output, var] : s.outputs) {
     const auto* decl = callee.pou->find_variable(output);
     auto it = callee.names.find(model::to_upper(output));
@@ -260,6 +291,129 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
   out.arm_count = 1;
   p.if_arms.push_back(IfArm{constant(1), b});
   out.else_body = Block{};
+}
+
+const std::set<std::string>& Compiler::names_mentioned(const model::Pou& type) {
+  const auto key = model::to_upper(type.name);
+  if (auto it = mentioned_by_type.find(key); it != mentioned_by_type.end()) return it->second;
+  auto& names = mentioned_by_type[key];  // empty while it is filled: recursion stops here
+  std::set<std::string> found;
+  auto path = [&](const std::string& text) {
+    for (const auto& part : model::split_path(text)) found.insert(model::to_upper(part));
+  };
+  std::function<void(const model::Expr&)> expr = [&](const model::Expr& e) {
+    if (e.kind == model::ExprKind::Name || e.kind == model::ExprKind::Member ||
+        e.kind == model::ExprKind::Index)
+      path(e.name);
+    for (const auto& a : e.args)
+      if (a) expr(*a);
+  };
+  std::function<void(const model::StmtList&)> body = [&](const model::StmtList& list) {
+    for (const auto& st : list) {
+      path(st->target);
+      for (const auto* e : {&st->value, &st->limit, &st->step})
+        if (*e) expr(**e);
+      for (const auto& c : st->conditions) expr(*c);
+      for (const auto& i : st->target_indices) expr(*i);
+      for (const auto& [param, value] : st->arguments)
+        if (value) expr(*value);
+      for (const auto& [output, variable] : st->outputs) path(variable);
+      for (const auto& b : st->bodies) body(b);
+      body(st->else_body);
+    }
+  };
+  body(type.body);
+  for (const auto& a : type.actions) body(a.body);
+  for (const auto& c : type.charts)
+    for (const auto& t : c.transitions) expr(*t.guard);
+  for (const auto& as : type.associations) path(as.action);
+  for (const auto& v : type.variables) {
+    found.insert(model::to_upper(v.name));
+    if (v.type.kind == TypeKind::FunctionBlock && v.type.fb == StandardFb::None)
+      if (const auto* inner = project.find_pou(v.type.name)) {
+        const auto& more = names_mentioned(*inner);
+        found.insert(more.begin(), more.end());
+      }
+  }
+  names = std::move(found);
+  return names;
+}
+
+bool Compiler::refuse_in_out_member(const PouScope& sc, std::uint32_t si, const std::string& name,
+                                    const std::string& path, const model::SourceLocation& where) {
+  if (si == sc.owner || std::none_of(scopes[si].in_outs.begin(), scopes[si].in_outs.end(),
+                                     [&](const auto& n) { return model::iequals(n, name); }))
+    return false;
+  // By reference, it is whatever variable the running call binds: outside a call, none.
+  error(where, "'" + path + "' is a VAR_IN_OUT of " + scopes[si].pou->name +
+                   ", which only the instance itself reads and writes");
+  return true;
+}
+
+bool Compiler::refuse_in_out_action(std::uint32_t inst, const model::Stmt& s) {
+  const auto& owner = scopes[scopes[inst].unit ? scopes[inst].owner : inst];
+  if (owner.in_outs.empty()) return false;
+  // Its VAR_IN_OUT would refer to the variable of the last call, which is not kept.
+  error(s.where, "call of '" + s.target + "': " + owner.pou->name + " has the VAR_IN_OUT '" +
+                     owner.in_outs.front() +
+                     "', and actions of such instances run from outside are not modelled");
+  return true;
+}
+
+std::optional<Ref> Compiler::in_out_variable(
+    const PouScope& sc, const model::Stmt& s, std::uint32_t inst, const std::string& param,
+    const model::Expr& value, const std::vector<std::pair<std::uint32_t, Ref>>& bound) {
+  const auto& callee = scopes[inst];
+  const std::string var =
+      value.kind == model::ExprKind::Member ? value.name + "." + value.member : value.name;
+  const auto where = value.where.known() ? value.where : s.where;
+  if (value.kind != model::ExprKind::Name && value.kind != model::ExprKind::Member) {
+    error(where, "VAR_IN_OUT " + param + " of '" + s.target + "' is bound to '" +
+                     model::to_st(value) + "', which is no variable");
+    return std::nullopt;
+  }
+  std::optional<Ref> ref;
+  if (var.find('.') != std::string::npos) {
+    ref = dotted(sc, var, where);
+  } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
+    ref = d->second;
+  } else if (auto g = global_ref(model::to_upper(var))) {
+    ref = g;
+  } else {
+    error(where, "VAR_IN_OUT " + param + " bound to unknown variable '" + var + "'");
+  }
+  if (!ref) return std::nullopt;
+  if (ref->kind != Ref::Field) {
+    error(where, "VAR_IN_OUT " + param + " of '" + s.target + "' is bound to '" + var +
+                     "', which is " +
+                     (ref->kind == Ref::Input ? "an input" : "a function block instance"));
+    return std::nullopt;
+  }
+  if (ref->is_bool != callee.names.at(model::to_upper(param)).is_bool) {
+    error(where, "VAR_IN_OUT " + param + " of '" + s.target + "' is bound to '" + var +
+                     "', of another type");
+    return std::nullopt;
+  }
+  // The copy in and back is the call by reference only if, during the call, nothing reaches
+  // the variable but the parameter (docs/semantics.md 1.3c): refuse every way it could.
+  auto alias = [&](const std::string& why) {
+    error(where, "VAR_IN_OUT " + param + " of '" + s.target + "' is bound to '" + var + "', " +
+                     why + " (the call by reference is modelled only without aliases)");
+    return std::nullopt;
+  };
+  for (const auto& [field, other] : bound)
+    if (other.index == ref->index) return alias("which another VAR_IN_OUT of the call binds");
+  const auto parts = model::split_path(var);
+  if (parts.size() > 1 && model::iequals(parts.front(), s.target))
+    return alias("a variable of the instance itself");
+  const auto& mentioned = names_mentioned(*callee.pou);
+  for (const auto& [name, field] : global_fields)
+    if (field == ref->index && mentioned.count(name))
+      return alias("a global variable that " + callee.pou->name + " names");
+  for (const auto& pou : project.pous)
+    if (pou.kind == model::PouKind::Program && mentioned.count(model::to_upper(pou.name)))
+      return alias("and " + callee.pou->name + " names variables of program " + pou.name);
+  return ref;
 }
 
 void Compiler::instance_commits() {

@@ -134,6 +134,7 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
           error(s.where, "call of '" + s.target + "': not an action of a function block instance");
           break;
         }
+        if (si != sc.owner && refuse_in_out_action(si, s)) break;
         if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
           error(s.where, "call of action '" + s.target + "': " +
                              (act->body_unsupported

@@ -52,6 +52,8 @@ struct PouScope {
   // Inputs the POU's own code writes: a field holds the program's copy, loaded from the input
   // at the start of the POU's cycle (field, input).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> input_copies;
+  // Instances: the type's VAR_IN_OUTs, as declared (bound at each call, docs/semantics.md 1.3c).
+  std::vector<std::string> in_outs;
 };
 
 enum class VT { Bool, Int };
@@ -128,6 +130,22 @@ struct Compiler {
                             const model::SourceLocation& where);
   /// `inst(a := x, q => y);`: the input assignments, the Call, the output copies.
   /// `inline_body`: instead of the Call, an instance action's statements (`inst.ACT(a := x);`).
+  /// Every name a function block type mentions, in its code and in the types of its
+  /// instances, upper-case, each part of a dotted path apart (the VAR_IN_OUT alias check).
+  const std::set<std::string>& names_mentioned(const model::Pou& type);
+  std::map<std::string, std::set<std::string>> mentioned_by_type;
+  /// Refuses a call of an action of instance scope `inst` from outside it when its type has a
+  /// VAR_IN_OUT (true: refused).
+  bool refuse_in_out_action(std::uint32_t inst, const model::Stmt& s);
+  /// Refuses `path`, naming VAR_IN_OUT `name` of instance scope `si` from scope `sc` outside
+  /// it (true: refused).
+  bool refuse_in_out_member(const PouScope& sc, std::uint32_t si, const std::string& name,
+                            const std::string& path, const model::SourceLocation& where);
+  /// The variable that `value` binds to VAR_IN_OUT `param` of instance scope `inst` in the
+  /// call `s` (nullopt after an error); `bound`: the variables bound before it in the call.
+  std::optional<Ref> in_out_variable(const PouScope& sc, const model::Stmt& s, std::uint32_t inst,
+                                     const std::string& param, const model::Expr& value,
+                                     const std::vector<std::pair<std::uint32_t, Ref>>& bound);
   void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out,
                      const Block* inline_body = nullptr);
   /// Per instance Pou: the chart state fields a call commits.

@@ -1,0 +1,188 @@
+// VAR_IN_OUT of user function block instances (issue 18, docs/semantics.md 1.3c): each call
+// loads the parameter from the variable it binds and copies it back after the instance ran,
+// which is the call by reference when nothing else reaches the variable during the call; every
+// way something could (a global the block names, a program variable named by path, two
+// parameters bound to one variable, the member read from outside, an action run from outside)
+// is refused by name, never modelled as a copy that could differ from the reference.
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "support/sfcv_test.hpp"
+
+namespace sfcv::test {
+namespace {
+
+// Counts up to 5 in whatever variable the call binds, while `en`.
+const std::string kInc = R"(FUNCTION_BLOCK Inc
+  VAR_INPUT en : BOOL; END_VAR
+  VAR_IN_OUT c : INT(0..5); END_VAR
+  IF en AND c < 5 THEN c := c + 1; END_IF
+END_FUNCTION_BLOCK
+)";
+
+const std::string kProperties =
+    "--ctl 'EF a = 5' --ctl 'AG (a = 5 -> b = 5)' --ctl 'AG b <= 4' --ctl 'AG (a = 2 -> b >= 2)' "
+    "--ctl 'EF (a = 0 & b = 5)'";
+
+std::string check(const std::string& file, const std::string& engine) {
+  return "check " + file + " --engine " + engine + " --checks none " + kProperties +
+         " --trace none --timeout 60";
+}
+
+// The report without its timings.
+std::string without_times(const std::string& out) {
+  return std::regex_replace(out, std::regex("[0-9]+\\.[0-9]+s"), "");
+}
+
+// One instance called twice per cycle with two different variables: the same model, state for
+// state and verdict for verdict, as the program with the block's code written out in place.
+TEST(InOut, OneInstanceBindingTwoVariablesAgreesWithTheCodeInline) {
+  const auto by_reference = write_temp(kInc + R"(PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR a : INT(0..5); b : INT(0..5); i : Inc; END_VAR
+  i(en := go, c := a);
+  i(en := TRUE, c := b);
+END_PROGRAM
+)",
+                                       ".st");
+  const auto inline_code = write_temp(R"(PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR a : INT(0..5); b : INT(0..5); END_VAR
+  IF go AND a < 5 THEN a := a + 1; END_IF
+  IF TRUE AND b < 5 THEN b := b + 1; END_IF
+END_PROGRAM
+)",
+                                      ".st");
+  const auto expected = run_sfcv(check(inline_code, "explicit"));
+  ASSERT_EQ(expected.exit_code, 1) << expected.out << expected.err;
+  EXPECT_NE(expected.out.find("21 states"), std::string::npos) << expected.out;
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(check(by_reference, engine));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    const auto inline_r = run_sfcv(check(inline_code, engine));
+    EXPECT_EQ(without_times(r.out), without_times(inline_r.out)) << r.out << inline_r.out;
+  }
+}
+
+// The parameter copied back before the outputs: `q => x` after `io := x` leaves q in x, as the
+// call by reference does (the block writes its parameter, then the output overwrites it).
+TEST(InOut, AnOutputBoundToTheSameVariableIsCopiedLast) {
+  const auto file = write_temp(R"(FUNCTION_BLOCK Both
+  VAR_IN_OUT c : INT(0..5); END_VAR
+  VAR_OUTPUT q : INT(0..5); END_VAR
+  c := 4;
+  q := 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR a : INT(0..5); i : Both; END_VAR
+  i(c := a, q => a);
+END_PROGRAM
+)",
+                               ".st");
+  const auto r =
+      run_sfcv("check " + file + " --checks none --ctl 'AG a <= 1' --ctl 'EF a = 1' --trace none");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// A timer's PT bound to a VAR_IN_OUT is written by the call: never a constant (before, the
+// write analyses did not see the copy back, and the initial T#0MS would be read as PT).
+TEST(InOut, AVariableBoundToAnInOutIsWrittenByTheCall) {
+  const auto file = write_temp(R"(FUNCTION_BLOCK Setter
+  VAR_IN_OUT p : TIME; END_VAR
+  p := T#5S;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  VAR d : TIME := T#0MS; t : TON; s : Setter; END_VAR
+  s(p := d);
+  t(IN := go, PT := d);
+  q := t.Q;
+END_PROGRAM
+)",
+                               ".st");
+  const auto r = run_sfcv("check " + file + " --checks none --ctl 'AG (go -> q)' --trace none");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("PT of 't' must be a constant"), std::string::npos) << r.err;
+}
+
+TEST(InOut, EveryPossibleAliasIsRefusedByName) {
+  const std::string config = R"(CONFIGURATION Cfg
+  VAR_GLOBAL g : INT(0..5); END_VAR
+  RESOURCE Res ON PLC
+    TASK Cyc(INTERVAL := T#10MS, PRIORITY := 1);
+    PROGRAM P WITH Cyc : Main;
+  END_RESOURCE
+END_CONFIGURATION
+)";
+  const std::string inc_with_action = R"(FUNCTION_BLOCK Inc
+  VAR_INPUT en : BOOL; END_VAR
+  VAR_IN_OUT c : INT(0..5); END_VAR
+  INITIAL_STEP S0: Bump; END_STEP
+  ACTION Bump: IF en AND c < 5 THEN c := c + 1; END_IF END_ACTION
+  ACTION Clear: c := 0; END_ACTION
+END_FUNCTION_BLOCK
+)";
+  // `global`: Main declares the global g of `config`.
+  auto main = [](const std::string& body, bool global = false) {
+    return std::string("PROGRAM Main\n  VAR_INPUT go : BOOL; END_VAR\n") +
+           (global ? "  VAR_EXTERNAL g : INT(0..5); END_VAR\n" : "") +
+           "  VAR a : INT(0..5); i : Inc; END_VAR\n" + body + "END_PROGRAM\n";
+  };
+  struct Case {
+    std::string text, error;
+  };
+  const std::vector<Case> cases = {
+      {kInc + main("  i(en := go);\n"), "does not bind its VAR_IN_OUT 'c'"},
+      {kInc + main("  i(en := go, c := a + 1);\n"), "which is no variable"},
+      {kInc + main("  i(en := go, c := a);\n  a := i.c;\n"), "'i.c' is a VAR_IN_OUT of Inc"},
+      {kInc + main("  i(en := go, c := i.c);\n"), "'i.c' is a VAR_IN_OUT of Inc"},
+      {inc_with_action + main("  i(en := go, c := a);\n  i.Clear();\n"),
+       "actions of such instances"},
+      {R"(FUNCTION_BLOCK Inc
+  VAR_IN_OUT c : INT(0..5); END_VAR
+  VAR_EXTERNAL g : INT(0..5); END_VAR
+  IF c < 5 THEN c := c + 1; END_IF
+  g := 0;
+END_FUNCTION_BLOCK
+)" + main("  i(c := g);\n", true) +
+           config,
+       "a global variable that Inc names"},
+      {R"(FUNCTION_BLOCK Inc
+  VAR_IN_OUT c : INT(0..5); END_VAR
+  IF c < 5 THEN c := c + 1; END_IF
+  Main.a := 0;
+END_FUNCTION_BLOCK
+)" + main("  i(c := a);\n"),
+       "Inc names variables of program Main"},
+      {R"(FUNCTION_BLOCK Inc
+  VAR_IN_OUT c : INT(0..5); d : INT(0..5); END_VAR
+  c := 1;
+  d := 0;
+END_FUNCTION_BLOCK
+)" + main("  i(c := a, d := a);\n"),
+       "which another VAR_IN_OUT of the call binds"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.text);
+    const auto file = write_temp(c.text, ".st");
+    const auto r = run_sfcv("check " + file + " --checks none --ctl 'EF a = 5' --trace none");
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find(c.error), std::string::npos) << r.err;
+    // lint names the same reason.
+    const auto lint = run_sfcv("lint " + file);
+    EXPECT_NE((lint.out + lint.err).find(c.error), std::string::npos) << lint.out << lint.err;
+  }
+  // A global that the block does not name may be bound: nothing else reaches it in the call.
+  const auto file = write_temp(kInc + main("  i(en := go, c := g);\n", true) + config, ".st");
+  const auto r = run_sfcv("check " + file + " --checks none --ctl 'EF g = 5' --trace none");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+}  // namespace
+}  // namespace sfcv::test
