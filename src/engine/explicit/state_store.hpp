@@ -4,6 +4,7 @@
 // state index. A state of at most 64 bits is one word compared directly: 16 bytes per state at
 // the table's half load (8 for the word, 8 for two slots).
 
+#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -89,7 +90,9 @@ class StateStore {
   /// Hints that a look-up of a state of hash `hash` follows soon (after prefetch_slot()): loads
   /// the stored state its first slot refers to.
   void prefetch_state(std::uint64_t hash) const {
-    const std::uint32_t s = slots_[hash & (slots_.size() - 1)];
+    // Atomic: other threads may be staging into the table (relaxed: only a hint is read).
+    auto& slot = const_cast<std::uint32_t&>(slots_[hash & (slots_.size() - 1)]);
+    const std::uint32_t s = std::atomic_ref<std::uint32_t>(slot).load(std::memory_order_relaxed);
     if (s == 0 || (s & kStagedBit) != 0) return;
     __builtin_prefetch(data_.data() + static_cast<std::size_t>(s - 1) * words_);
     if (words_ > 1) __builtin_prefetch(hashes_.data() + (s - 1));
