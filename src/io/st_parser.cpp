@@ -481,12 +481,16 @@ model::StmtPtr Parser::statement() {
       return fb_call(call);
     }
     expect(TokenKind::Assign, "':='");
+    outputs_call_at_ = position();
+    call_outputs_.clear();
     ExprPtr value = expression();
+    outputs_call_at_ = static_cast<std::size_t>(-1);
     end_statement("the assignment");
     auto assign = model::make_assign(target, value, where(t));
-    if (indices.empty()) return assign;
+    if (indices.empty() && call_outputs_.empty()) return assign;
     auto s = std::make_shared<model::Stmt>(*assign);
     s->target_indices = std::move(indices);
+    s->outputs = std::move(call_outputs_);
     return s;
   }
   if (at(TokenKind::Colon))
@@ -552,17 +556,35 @@ model::StmtPtr Parser::if_statement() {
 }
 
 model::ExprPtr Parser::call(const Token& name) {
+  // Outputs only where the call is the whole right side: `y := F(x, q => z);`.
+  const bool may_bind_outputs = position() == outputs_call_at_ + 1;
   expect(TokenKind::LParen, "'('");
   std::vector<ExprPtr> args;
   // IEC 61131-3 2.5.1.1: a call is formal (every argument `name := value`) or positional.
   std::vector<std::string> names;
+  std::vector<std::pair<std::string, std::string>> outputs;
   if (!at(TokenKind::RParen)) {
     do {
       const bool formal = at(TokenKind::Identifier) && at(TokenKind::Assign, 1);
-      if (at(TokenKind::Identifier) && at(TokenKind::Arrow, 1))
-        fail(peek(), "unsupported: output argument '" + peek().text +
-                         " =>' in the call of function '" + name.text + "'");
-      if (!args.empty() && formal != !names.empty())
+      if (at(TokenKind::Identifier) && at(TokenKind::Arrow, 1)) {
+        if (!may_bind_outputs)
+          fail(peek(), "unsupported: output argument '" + peek().text +
+                           " =>' in the call of function '" + name.text +
+                           "' (outputs are bound only by a call that is the whole right side of "
+                           "an assignment: y := " +
+                           name.text + "(..., " + peek().text + " => z);)");
+        const Token& output = next();
+        next();  // =>
+        if (!at(TokenKind::Identifier)) fail_unexpected("a variable after '=>'");
+        std::string var = next().text;
+        while (accept(TokenKind::Dot)) {
+          if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
+          var += "." + next().text;
+        }
+        outputs.emplace_back(output.text, std::move(var));
+        continue;
+      }
+      if ((!args.empty() && formal != !names.empty()) || (!formal && !outputs.empty()))
         fail(peek(), "the call of function '" + name.text +
                          "' mixes formal ('name := value') and positional arguments");
       if (formal) {
@@ -573,6 +595,16 @@ model::ExprPtr Parser::call(const Token& name) {
     } while (accept(TokenKind::Comma));
   }
   expect(TokenKind::RParen, "',' or ')'");
+  if (!outputs.empty()) {
+    if (!args.empty() && names.empty())
+      fail(name, "the call of function '" + name.text +
+                     "' mixes formal ('name := value') and positional arguments");
+    call_outputs_ = std::move(outputs);
+    // The right side must end here: `y := F(q => z) + 1` would copy z in the middle of it.
+    if (!at(TokenKind::Semicolon))
+      fail(peek(), "output arguments '=>' in the call of function '" + name.text +
+                       "': the call must be the whole right side of the assignment");
+  }
   if (!names.empty())
     return model::make_formal_call(name.text, std::move(names), std::move(args), where(name));
   return model::make_call(name.text, std::move(args), where(name));

@@ -134,6 +134,10 @@ class Parser {
   std::size_t pos_ = 0;
   int depth_ = 0;
   int in_case_ = 0;  ///< inside CASE bodies, `name:` starts the next label
+  /// The token of the function call that is the whole right side of the assignment being
+  /// parsed: only that call may bind outputs, into `call_outputs_` (`y := F(x, q => z);`).
+  std::size_t outputs_call_at_ = static_cast<std::size_t>(-1);
+  std::vector<std::pair<std::string, std::string>> call_outputs_;
   model::BudgetPoll poll_;
 };
 

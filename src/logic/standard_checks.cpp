@@ -331,8 +331,9 @@ std::vector<WriteConflict> write_conflicts(const model::Pou& pou, const model::P
       // A FOR loop assigns its index, and `inst(Q => y)` copies an output into y: writes
       // as much as an assignment (their values are not constants).
       if (st->kind == model::StmtKind::For) add(st->target, std::nullopt);
+      // `inst(q => y)` and `x := F(q => y)` copy an output into y.
+      for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
       if (st->kind == model::StmtKind::FbCall) {
-        for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
         for (const auto& variable : model::in_out_bindings(project, pou.name, *st))
           add(variable, std::nullopt);
         const auto* called = st->target.find('.') == std::string::npos && st->arguments.empty() &&

@@ -64,12 +64,21 @@ void print(const StmtList& body, int indent, std::string& out) {
   const std::string pad(static_cast<std::size_t>(indent), ' ');
   for (const auto& s : body) {
     switch (s->kind) {
-      case StmtKind::Assign:
+      case StmtKind::Assign: {
+        std::string value = to_st(s->value);
+        if (!s->outputs.empty()) {  // `y := F(x := 1, q => z)`: the call gets its outputs back
+          value.pop_back();
+          for (std::size_t i = 0; i < s->outputs.size(); ++i)
+            value += (i == 0 && value.back() == '(' ? "" : ", ") + s->outputs[i].first + " => " +
+                     s->outputs[i].second;
+          value += ")";
+        }
         out += pad +
                (s->target_indices.empty() ? s->target
                                           : to_st(make_index(s->target, s->target_indices))) +
-               " := " + to_st(s->value) + ";\n";
+               " := " + value + ";\n";
         break;
+      }
       case StmtKind::FbCall: {
         out += pad + s->target + "(";
         for (std::size_t i = 0; i < s->arguments.size(); ++i) {

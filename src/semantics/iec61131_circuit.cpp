@@ -551,6 +551,9 @@ Value SymbolicMachine::call_function(const Node& n, const std::uint32_t* kid, Ai
   for (std::uint32_t i = 0; i < n.count; ++i) assign(fn.inputs[i], args[i], guard);
   exec_body(fn.body, guard);
   const Value result = nxt_[fn.result];
+  if (n.k > 0)
+    for (const auto& [from, to] : p_.call_output_copies[static_cast<std::size_t>(n.k - 1)])
+      assign(to, nxt_[from], guard);
   for (auto f : fn.fields) nxt_[f] = constant(p_.initial[f]);
   return result;
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/names.hpp"
@@ -66,12 +67,12 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
         error(v.where, "VAR_EXTERNAL " + what + ": no VAR_GLOBAL of that name and type");
       continue;
     }
+    const bool output = v.direction == model::VarDirection::Output && !result;
     if (v.direction != model::VarDirection::Input && v.direction != model::VarDirection::Local &&
-        !result) {
-      error(v.where, std::string(v.direction == model::VarDirection::InOut    ? "VAR_IN_OUT"
-                                 : v.direction == model::VarDirection::Output ? "VAR_OUTPUT"
-                                                                              : "VAR_GLOBAL") +
-                         " " + what + " is not modelled (only VAR_INPUT, VAR and VAR_TEMP)");
+        !result && !output) {
+      error(v.where,
+            std::string(v.direction == model::VarDirection::InOut ? "VAR_IN_OUT" : "VAR_GLOBAL") +
+                " " + what + " is not modelled (only VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP)");
       continue;
     }
     // Every variable starts each call from its initial value: the function has no memory.
@@ -88,6 +89,7 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
     sc.names[var] = Ref{Ref::Field, field, is_bool};
     fn.fields.push_back(field);
     if (v.direction == model::VarDirection::Input) fn.inputs.push_back(field);
+    if (output) function_outputs[up][var] = field;
     if (result) {
       fn.result = field;
       has_result = true;
@@ -116,6 +118,11 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
 std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, const model::Pou& f,
                                       int context, VT& type) {
   // The declared result type, also after a refusal (no second error about the same call).
+  // Taken before anything else compiles: the function's body may hold such assignments too.
+  const model::Stmt* binding = assignment_with_outputs && assignment_with_outputs->value.get() == &e
+                                   ? std::exchange(assignment_with_outputs, nullptr)
+                                   : nullptr;
+  if (binding) outputs_taken_by = binding;
   const auto* declared = f.find_variable(f.name);
   type = declared && declared->type.kind == TypeKind::Bool ? VT::Bool : VT::Int;
   const auto index = function(f, e.where);
@@ -168,6 +175,28 @@ std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, 
   Node n;
   n.op = Op::Call;
   n.a = *index;
+  if (binding) {
+    // `y := F(x, q => z)`: q copied into z after the body (docs/semantics.md 1.9.1).
+    const auto& s = *binding;
+    const auto& outputs = function_outputs[model::to_upper(f.name)];
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
+    for (const auto& [output, var] : s.outputs) {
+      const auto it = outputs.find(model::to_upper(output));
+      if (it == outputs.end()) {
+        fail(e.where, "function " + f.name + " has no VAR_OUTPUT '" + output + "'");
+        continue;
+      }
+      if (model::iequals(var, s.target)) {
+        fail(e.where, "output " + output + " is bound to '" + var +
+                          "', which the assignment writes too (which one wins is not defined)");
+        continue;
+      }
+      if (const auto dst = output_binding(sc, output, var, field_is_bool[it->second], e.where))
+        copies.emplace_back(it->second, dst->index);
+    }
+    p.call_output_copies.push_back(std::move(copies));
+    n.k = static_cast<std::int64_t>(p.call_output_copies.size());
+  }
   return node(n, std::move(kids));
 }
 

@@ -252,26 +252,8 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
             "'" + s.target + "' (" + callee.pou->name + ") has no output '" + output + "'");
       continue;
     }
-    std::optional<Ref> dst;
-    if (var.find('.') != std::string::npos) {
-      dst = dotted(sc, var, s.where);
-    } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
-      dst = d->second;
-    } else if (auto g = global_ref(model::to_upper(var))) {
-      dst = g;
-    } else {
-      error(s.where, "output binding to unknown variable '" + var + "'");
-    }
+    const auto dst = output_binding(sc, output, var, it->second.is_bool, s.where);
     if (!dst) continue;
-    if (dst->kind != Ref::Field) {
-      error(s.where, "output binding to '" + var + "', which is " +
-                         (dst->kind == Ref::Input ? "an input" : "a function block instance"));
-      continue;
-    }
-    if (dst->is_bool != it->second.is_bool) {
-      error(s.where, "type mismatch in the output binding " + output + " => " + var);
-      continue;
-    }
     Stmt a;
     a.op = SOp::Assign;
     a.where = s.where.str();
@@ -291,6 +273,32 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
   out.arm_count = 1;
   p.if_arms.push_back(IfArm{constant(1), b});
   out.else_body = Block{};
+}
+
+std::optional<Ref> Compiler::output_binding(const PouScope& sc, const std::string& output,
+                                            const std::string& var, bool is_bool,
+                                            const model::SourceLocation& where) {
+  std::optional<Ref> dst;
+  if (var.find('.') != std::string::npos) {
+    dst = dotted(sc, var, where);
+  } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
+    dst = d->second;
+  } else if (auto g = global_ref(model::to_upper(var))) {
+    dst = g;
+  } else {
+    error(where, "output binding to unknown variable '" + var + "'");
+  }
+  if (!dst) return std::nullopt;
+  if (dst->kind != Ref::Field) {
+    error(where, "output binding to '" + var + "', which is " +
+                     (dst->kind == Ref::Input ? "an input" : "a function block instance"));
+    return std::nullopt;
+  }
+  if (dst->is_bool != is_bool) {
+    error(where, "type mismatch in the output binding " + output + " => " + var);
+    return std::nullopt;
+  }
+  return dst;
 }
 
 const std::set<std::string>& Compiler::names_mentioned(const model::Pou& type) {

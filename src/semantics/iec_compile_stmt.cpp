@@ -48,7 +48,13 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       else
         found = global_ref(model::to_upper(s.target));  // an unqualified global
       VT t;
+      assignment_with_outputs = s.outputs.empty() ? nullptr : &s;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
+      assignment_with_outputs = nullptr;
+      if (!s.outputs.empty() && outputs_taken_by != &s)
+        error(s.where, "output arguments '=>' in '" + s.target +
+                           " := " + (s.value ? model::to_st(*s.value) : std::string()) +
+                           "': only a call of a user FUNCTION binds outputs");
       if (s.target.find('.') != std::string::npos && !found) {
         // `inst.x := v`, `a.b.x := v`, `Main.x := v` (`s.x` of a structure is a variable).
         if (const auto r = dotted(sc, s.target, s.where)) {

@@ -55,6 +55,9 @@ std::int64_t Machine::call_function(const Node& n, const std::uint32_t* kid) {
   for (std::uint32_t i = 0; i < n.count; ++i) assign(fn.inputs[i], args[i], fn.where);
   exec_block(fn.body);  // RETURN only ends the body
   const auto result = nxt_[fn.result];
+  if (n.k > 0)
+    for (const auto& [from, to] : p_.call_output_copies[static_cast<std::size_t>(n.k - 1)])
+      assign(to, nxt_[from], fn.where);
   for (auto f : fn.fields) nxt_[f] = p_.initial[f];
   return result;
 }

@@ -261,5 +261,97 @@ TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
   EXPECT_EQ(r.err.find("not Boolean"), std::string::npos) << r.err;  // no follow-up error
 }
 
+// VAR_OUTPUTs of a function, bound with `=>` by the call that is the whole right side of an
+// assignment (docs/semantics.md 1.9.1): the same model, on every engine, as the program with
+// the function's code written out in place.
+const std::string kSplit =
+    "FUNCTION Split : BOOL\n"
+    "  VAR_INPUT x : INT(0..7); END_VAR\n"
+    "  VAR_OUTPUT lo : INT(0..3); hi : BOOL; END_VAR\n"
+    "  lo := x MOD 4;\n"
+    "  hi := x >= 4;\n"
+    "  Split := x = 0;\n"
+    "END_FUNCTION\n";
+
+TEST(FunctionsE2E, OutputsBoundWithArrowsAgreeWithTheCodeInline) {
+  const auto with_outputs = write_temp(kSplit +
+                                           "PROGRAM Main\n"
+                                           "  VAR_INPUT v : INT(0..7); END_VAR\n"
+                                           "  VAR z : BOOL; l : INT(0..3); h : BOOL; END_VAR\n"
+                                           "  z := Split(x := v, lo => l, hi => h);\n"
+                                           "END_PROGRAM\n",
+                                       ".st");
+  const auto in_place = write_temp(
+      "PROGRAM Main\n"
+      "  VAR_INPUT v : INT(0..7); END_VAR\n"
+      "  VAR z : BOOL; l : INT(0..3); h : BOOL; END_VAR\n"
+      "  l := v MOD 4;\n  h := v >= 4;\n  z := v = 0;\n"
+      "END_PROGRAM\n",
+      ".st");
+  const std::string props =
+      "--ctl 'EF (l = 3 & h)' --ctl 'AG (z -> (l = 0 & !h))' --ctl 'AG (h -> l <= 2)'";
+  auto verdicts = [](const std::string& out) {
+    std::string kept;
+    for (const char* v : {"holds", "violated"})
+      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
+        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
+    return kept;
+  };
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto a = run_sfcv(check_command(with_outputs, engine, props));
+    const auto b = run_sfcv(check_command(in_place, engine, props));
+    EXPECT_EQ(a.exit_code, 1) << a.out << a.err;
+    EXPECT_EQ(verdicts(a.out), verdicts(b.out)) << a.out << b.out;
+    EXPECT_NE(verdicts(a.out).find("violated"), std::string::npos) << a.out;
+  }
+  // Printed back (IEC text, PLCopen) and reloaded, the bindings are still there.
+  for (const char* to : {"iec", "plcopen"}) {
+    const auto out = write_temp("", std::string(to) == "iec" ? ".st" : ".xml");
+    ASSERT_EQ(run_sfcv("export " + with_outputs + " --to " + to + " -o " + out).exit_code, 0);
+    const auto r = run_sfcv(check_command(out, "explicit", props));
+    EXPECT_EQ(verdicts(r.out), verdicts(run_sfcv(check_command(in_place, "explicit", props)).out))
+        << to << r.out << r.err;
+  }
+}
+
+TEST(FunctionsE2E, FunctionOutputsAreWritesAndMisusesAreLocatedErrors) {
+  auto error_of = [](const std::string& text) {
+    const auto r = run_sfcv(check_command(write_temp(text, ".st"), "explicit", "--ctl 'EF h'"));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    return r.err;
+  };
+  auto main = [](const std::string& body) {
+    return kSplit +
+           "PROGRAM Main\n  VAR_INPUT v : INT(0..7); END_VAR\n"
+           "  VAR z : BOOL; l : INT(0..3); h : BOOL; END_VAR\n" +
+           body + "END_PROGRAM\n";
+  };
+  EXPECT_NE(error_of(main("  z := Split(x := v, lo => l) OR TRUE;\n"))
+                .find("the call must be the whole right side of the assignment"),
+            std::string::npos);
+  EXPECT_NE(error_of(main("  z := NOT Split(x := v, hi => h);\n"))
+                .find("outputs are bound only by a call that is the whole right side"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of(main("  h := Split(x := v, hi => h);\n")).find("which the assignment writes too"),
+      std::string::npos);
+  EXPECT_NE(error_of(main("  z := Split(x := v, mid => l);\n"))
+                .find("function Split has no VAR_OUTPUT 'mid'"),
+            std::string::npos);
+  EXPECT_NE(error_of(main("  l := MAX(IN0 := v, lo => l);\n"))
+                .find("only a call of a user FUNCTION binds outputs"),
+            std::string::npos);
+  // A duration that a function's output writes is no constant PT (docs/semantics.md 1.6).
+  EXPECT_NE(
+      error_of("FUNCTION Dur : BOOL\n  VAR_OUTPUT d : TIME; END_VAR\n  d := T#5S;\n"
+               "  Dur := TRUE;\nEND_FUNCTION\n"
+               "PROGRAM Main\n  VAR_INPUT go : BOOL; END_VAR\n  VAR_OUTPUT q : BOOL; END_VAR\n"
+               "  VAR d : TIME := T#0MS; t : TON; ok : BOOL; END_VAR\n"
+               "  ok := Dur(d => d);\n  t(IN := go, PT := d);\n  q := t.Q;\nEND_PROGRAM\n")
+          .find("PT of 't' must be a constant"),
+      std::string::npos);
+}
+
 }  // namespace
 }  // namespace sfcv::test

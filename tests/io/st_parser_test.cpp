@@ -294,7 +294,19 @@ TEST(StStatements, UnsupportedConstructsAreNamed) {
             "1:19: the call of function 'MAX' mixes formal ('name := value') and positional "
             "arguments");
   EXPECT_EQ(stmt_error("x := F(a, q => b);"),
-            "1:11: unsupported: output argument 'q =>' in the call of function 'F'");
+            "1:6: the call of function 'F' mixes formal ('name := value') and positional "
+            "arguments");
+  EXPECT_EQ(stmt_error("x := 1 + F(a := 1, q => b);"),
+            "1:20: unsupported: output argument 'q =>' in the call of function 'F' (outputs are "
+            "bound only by a call that is the whole right side of an assignment: y := F(..., q "
+            "=> z);)");
+  EXPECT_EQ(stmt_error("x := F(a := 1, q => b) + 1;"),
+            "1:24: output arguments '=>' in the call of function 'F': the call must be the whole "
+            "right side of the assignment");
+  EXPECT_EQ(stmt_error("x := F(a := G(q => c), q => b);"),
+            "1:15: unsupported: output argument 'q =>' in the call of function 'G' (outputs are "
+            "bound only by a call that is the whole right side of an assignment: y := G(..., q "
+            "=> z);)");
   EXPECT_EQ(stmt_error("t1(a, b);"),
             "1:4: unsupported: positional arguments in the call of 't1' (write IN := value)");
   EXPECT_EQ(stmt_error("a[i, 1][k] := 1;"), "1:8: unsupported: a second non-constant index in 'a'");
@@ -421,6 +433,21 @@ TEST(StStatements, InstanceMembersAndOutputBindings) {
   EXPECT_EQ(body[0]->outputs[0].second, "b");
   EXPECT_EQ(body[1]->target, "t1.IN");
   EXPECT_EQ(body[2]->target, "x.y.z");
+}
+
+// `y := F(x := a, q => b.c);`: the assignment carries the function's output bindings, and
+// prints back as written.
+TEST(StStatements, FunctionOutputsBoundByTheAssignment) {
+  model::Diagnostics d;
+  const std::string text = "y := F(x := a, q => b.c, r => e);\nz := G(q => w);\n";
+  auto body = parse_st_statements(text, file_start(), d);
+  ASSERT_TRUE(d.empty()) << d[0].message;
+  ASSERT_EQ(body.size(), 2u);
+  EXPECT_EQ(body[0]->kind, model::StmtKind::Assign);
+  EXPECT_EQ(body[0]->outputs,
+            (std::vector<std::pair<std::string, std::string>>{{"q", "b.c"}, {"r", "e"}}));
+  EXPECT_EQ(body[0]->value->args.size(), 1u);
+  EXPECT_EQ(model::to_st(body), text);
 }
 
 }  // namespace

@@ -527,9 +527,18 @@ FUNCTION Mask : BYTE
   VAR_INPUT v : BYTE; END_VAR
   Mask := SHL(v, 1) OR 16#01;
 END_FUNCTION
+FUNCTION Split : BOOL
+  VAR_INPUT v : INT(0..7); END_VAR
+  VAR_OUTPUT lo : INT(0..3); hi : BOOL; END_VAR
+  IF v > 6 THEN RETURN; END_IF;
+  lo := v MOD 4;
+  hi := v >= 4;
+  Split := lo = 0;
+END_FUNCTION
 PROGRAM Main
   VAR_INPUT n : INT(0..5); x, y : BOOL; END_VAR
-  VAR_OUTPUT c : INT; s : SINT; q, w : BOOL; m : BYTE; k : INT(0..6); END_VAR
+  VAR_OUTPUT c : INT; s : SINT; q, w : BOOL; m : BYTE; k : INT(0..6); d : INT(0..3); e : BOOL;
+  END_VAR
   VAR a : Acc; END_VAR
   INITIAL_STEP Idle : Calc(N); END_STEP
   STEP Run : Count(N); END_STEP
@@ -546,6 +555,7 @@ PROGRAM Main
     IF x THEN a(go := Busy(TRUE, y)); END_IF;
     w := x AND Busy(y, w);
     IF x AND NOT y THEN w := Small(k); END_IF;
+    IF y AND NOT x THEN q := Split(v := k + BOOL_TO_INT(e), lo => d, hi => e); END_IF;
   END_ACTION
 END_PROGRAM
 )";

@@ -146,6 +146,16 @@ struct Compiler {
   std::optional<Ref> in_out_variable(const PouScope& sc, const model::Stmt& s, std::uint32_t inst,
                                      const std::string& param, const model::Expr& value,
                                      const std::vector<std::pair<std::uint32_t, Ref>>& bound);
+  /// The field that `output => var` copies into, in scope `sc` (nullopt after an error).
+  std::optional<Ref> output_binding(const PouScope& sc, const std::string& output,
+                                    const std::string& var, bool is_bool,
+                                    const model::SourceLocation& where);
+  /// The `=>` outputs of the assignment being compiled, for the function call that is its
+  /// whole right side (Compiler::function_call takes them).
+  const model::Stmt* assignment_with_outputs = nullptr;
+  const model::Stmt* outputs_taken_by = nullptr;  ///< the last assignment whose outputs a call took
+  /// Per user function (upper-case name): its VAR_OUTPUT fields by upper-case name.
+  std::map<std::string, std::map<std::string, std::uint32_t>> function_outputs;
   void instance_call(const PouScope& sc, const model::Stmt& s, std::uint32_t inst, Stmt& out,
                      const Block* inline_body = nullptr);
   /// Per instance Pou: the chart state fields a call commits.

@@ -57,7 +57,8 @@ enum class Op : std::uint8_t {
   Shr,
   Rol,  ///< rotations of a k-bit value by child 1 (mod k)
   Ror,
-  Call,  ///< user FUNCTION a (Program::functions) on the children, one per VAR_INPUT
+  Call,  ///< user FUNCTION a (Program::functions) on the children, one per VAR_INPUT; k > 0:
+         ///< then Program::call_output_copies[k - 1] (`y := F(x, q => z)`)
 };
 
 /// The most iterations a loop may run in one execution of its statement (FOR, WHILE, REPEAT):
@@ -259,6 +260,9 @@ struct Program {
   std::vector<Action> actions;
   std::vector<Pou> pous;
   std::vector<Function> functions;
+  /// Per call binding VAR_OUTPUTs with `=>`: (the function's output field, the caller's
+  /// field), copied after the body, before the function's fields are reset.
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> call_output_copies;
   std::vector<std::uint32_t> assumptions;        ///< nodes
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
