@@ -500,6 +500,16 @@ model::StmtPtr Parser::statement() {
   fail_unexpected("':=' or '(' after '" + t.text + "'");
 }
 
+std::string Parser::bound_variable() {
+  if (!at(TokenKind::Identifier)) fail_unexpected("a variable after '=>'");
+  std::string var = next().text;
+  while (accept(TokenKind::Dot)) {
+    if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
+    var += "." + next().text;
+  }
+  return var;
+}
+
 model::StmtPtr Parser::fb_call(const Token& name) {
   expect(TokenKind::LParen, "'('");
   std::vector<std::pair<std::string, ExprPtr>> args;
@@ -515,13 +525,7 @@ model::StmtPtr Parser::fb_call(const Token& name) {
       }
       const Token& input = next();
       if (accept(TokenKind::Arrow)) {  // `Q => y`: y receives the output after the call
-        if (!at(TokenKind::Identifier)) fail_unexpected("a variable after '=>'");
-        std::string var = next().text;
-        while (accept(TokenKind::Dot)) {
-          if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
-          var += "." + next().text;
-        }
-        outputs.emplace_back(input.text, std::move(var));
+        outputs.emplace_back(input.text, bound_variable());
         continue;
       }
       next();
@@ -575,13 +579,7 @@ model::ExprPtr Parser::call(const Token& name) {
                            name.text + "(..., " + peek().text + " => z);)");
         const Token& output = next();
         next();  // =>
-        if (!at(TokenKind::Identifier)) fail_unexpected("a variable after '=>'");
-        std::string var = next().text;
-        while (accept(TokenKind::Dot)) {
-          if (!at(TokenKind::Identifier)) fail_unexpected("a member name after '.'");
-          var += "." + next().text;
-        }
-        outputs.emplace_back(output.text, std::move(var));
+        outputs.emplace_back(output.text, bound_variable());
         continue;
       }
       if ((!args.empty() && formal != !names.empty()) || (!formal && !outputs.empty()))

@@ -123,6 +123,8 @@ class Parser {
   /// "[*]", with `indices` receiving them.
   void subscript(std::string& path, std::vector<model::ExprPtr>& indices);
   void end_statement(std::string_view what);
+  /// The variable after `=>` (`y`, `a.b`).
+  std::string bound_variable();
 
   /// Bounds recursion so that absurd nesting is an error, not a stack overflow.
   void enter(const Token& t);

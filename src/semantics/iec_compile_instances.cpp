@@ -275,19 +275,20 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
   out.else_body = Block{};
 }
 
+std::optional<Ref> Compiler::variable_ref(const PouScope& sc, const std::string& var,
+                                          const model::SourceLocation& where,
+                                          const std::string& unknown) {
+  if (var.find('.') != std::string::npos) return dotted(sc, var, where);
+  if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) return d->second;
+  if (auto g = global_ref(model::to_upper(var))) return g;
+  error(where, unknown);
+  return std::nullopt;
+}
+
 std::optional<Ref> Compiler::output_binding(const PouScope& sc, const std::string& output,
                                             const std::string& var, bool is_bool,
                                             const model::SourceLocation& where) {
-  std::optional<Ref> dst;
-  if (var.find('.') != std::string::npos) {
-    dst = dotted(sc, var, where);
-  } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
-    dst = d->second;
-  } else if (auto g = global_ref(model::to_upper(var))) {
-    dst = g;
-  } else {
-    error(where, "output binding to unknown variable '" + var + "'");
-  }
+  const auto dst = variable_ref(sc, var, where, "output binding to unknown variable '" + var + "'");
   if (!dst) return std::nullopt;
   if (dst->kind != Ref::Field) {
     error(where, "output binding to '" + var + "', which is " +
@@ -380,16 +381,8 @@ std::optional<Ref> Compiler::in_out_variable(
                      model::to_st(value) + "', which is no variable");
     return std::nullopt;
   }
-  std::optional<Ref> ref;
-  if (var.find('.') != std::string::npos) {
-    ref = dotted(sc, var, where);
-  } else if (auto d = sc.names.find(model::to_upper(var)); d != sc.names.end()) {
-    ref = d->second;
-  } else if (auto g = global_ref(model::to_upper(var))) {
-    ref = g;
-  } else {
-    error(where, "VAR_IN_OUT " + param + " bound to unknown variable '" + var + "'");
-  }
+  const auto ref = variable_ref(sc, var, where,
+                                "VAR_IN_OUT " + param + " bound to unknown variable '" + var + "'");
   if (!ref) return std::nullopt;
   if (ref->kind != Ref::Field) {
     error(where, "VAR_IN_OUT " + param + " of '" + s.target + "' is bound to '" + var +

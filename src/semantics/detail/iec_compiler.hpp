@@ -146,6 +146,10 @@ struct Compiler {
   std::optional<Ref> in_out_variable(const PouScope& sc, const model::Stmt& s, std::uint32_t inst,
                                      const std::string& param, const model::Expr& value,
                                      const std::vector<std::pair<std::uint32_t, Ref>>& bound);
+  /// What `var` (`x`, `a.b`, an unqualified global) names in scope `sc`; nullopt after an
+  /// error (`unknown` when it names nothing).
+  std::optional<Ref> variable_ref(const PouScope& sc, const std::string& var,
+                                  const model::SourceLocation& where, const std::string& unknown);
   /// The field that `output => var` copies into, in scope `sc` (nullopt after an error).
   std::optional<Ref> output_binding(const PouScope& sc, const std::string& output,
                                     const std::string& var, bool is_bool,
