@@ -307,8 +307,9 @@ class IecTextReader {
     } else if (p.at(TokenKind::Colon)) {
       const Token& colon = p.next();
       model::StmtList body = p.statements();
+      // `T := F(x, q => z);` would copy q into z: a condition has no outputs to bind.
       if (body.size() != 1 || body[0]->kind != model::StmtKind::Assign || t.name.empty() ||
-          !model::iequals(body[0]->target, t.name))
+          !model::iequals(body[0]->target, t.name) || !body[0]->outputs.empty())
         p.fail(colon,
                "unsupported: transition body other than '<transition name> := <condition>;'");
       t.guard = body[0]->value;

@@ -313,6 +313,10 @@ TEST(IecText, SyntaxErrorsAreLocated) {
   EXPECT_EQ(
       errors("PROGRAM p\n  TRANSITION FROM a TO b : x := TRUE; END_TRANSITION\nEND_PROGRAM\n"),
       "2:26: unsupported: transition body other than '<transition name> := <condition>;'\n");
+  // A function's outputs bound in a transition body would be writes of a condition.
+  EXPECT_EQ(errors("PROGRAM p\n  TRANSITION t1 FROM a TO b : t1 := F(x := 1, q => z); "
+                   "END_TRANSITION\nEND_PROGRAM\n"),
+            "2:29: unsupported: transition body other than '<transition name> := <condition>;'\n");
   EXPECT_EQ(errors("PROGRAM p\n  INITIAL_STEP a: END_STEP\n  € \nEND_PROGRAM\n"),
             "3:3: unexpected character '\\xE2'\n");
   // Lexical errors are all reported, without the parse errors they would cause.
