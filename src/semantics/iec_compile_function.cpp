@@ -117,12 +117,13 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
 
 std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, const model::Pou& f,
                                       int context, VT& type) {
-  // The declared result type, also after a refusal (no second error about the same call).
-  // Taken before anything else compiles: the function's body may hold such assignments too.
+  // The `=>` outputs of the assignment whose whole right side this call is, taken before
+  // anything else compiles: the function's body may hold such assignments too.
   const model::Stmt* binding = assignment_with_outputs && assignment_with_outputs->value.get() == &e
                                    ? std::exchange(assignment_with_outputs, nullptr)
                                    : nullptr;
   if (binding) outputs_taken_by = binding;
+  // The declared result type, also after a refusal (no second error about the same call).
   const auto* declared = f.find_variable(f.name);
   type = declared && declared->type.kind == TypeKind::Bool ? VT::Bool : VT::Int;
   const auto index = function(f, e.where);
