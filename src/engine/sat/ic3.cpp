@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <queue>
+#include <stdexcept>
 
 #include "engine/sat/unrolling.hpp"
 
@@ -38,8 +39,9 @@ struct FrameSolver {
     for (const auto& l : c) clause.push_back(-current(l));
     solver->add_clause(clause);
   }
-  SatResult solve(const std::vector<int>& assumptions) const {
-    const auto r = solver->solve(assumptions);
+  SatResult solve(const std::vector<int>& assumptions,
+                  const std::vector<int>& constraint = {}) const {
+    const auto r = solver->solve(assumptions, constraint);
     if (r == SatResult::Interrupted) throw TimeUp{};
     return r;
   }
@@ -89,8 +91,10 @@ class Ic3 {
     std::size_t level;
     std::uint32_t depth;  ///< steps from these states to the target
     Cube cube;
-    std::size_t link;                                                      ///< into links_
-    bool operator<(const Obligation& o) const { return level > o.level; }  // lowest level first
+    std::size_t link;                            ///< into links_
+    bool operator<(const Obligation& o) const {  // lowest level first, then the deepest
+      return level != o.level ? level > o.level : depth < o.depth;
+    }
   };
 
   ReachResult search() {
@@ -183,24 +187,20 @@ class Ic3 {
       }
     std::vector<int> state_lits;
     for (const auto& l : state) state_lits.push_back(lift_.current(l));
-    const int act = lift_.solver->new_var();
-    std::vector<int> goal{-act};
+    std::vector<int> goal;  // the opposite of the step, for this call only
     if (successor) {
       goal.push_back(-lift_.frames->literal(step_ok_, 0));
       for (const auto& l : *successor) goal.push_back(-lift_.next(l));
     } else {
       goal.push_back(-lift_.frames->literal(target_, 0));
     }
-    lift_.solver->add_clause(goal);
-    assume.push_back(act);
     assume.insert(assume.end(), state_lits.begin(), state_lits.end());
     Cube lifted = state;
-    if (lift_.solve(assume) == SatResult::Unsat) {
+    if (lift_.solve(assume, goal) == SatResult::Unsat) {
       lifted.clear();
       for (std::size_t k = 0; k < state.size(); ++k)
         if (lift_.solver->failed(state_lits[k])) lifted.push_back(state[k]);
     }
-    lift_.solver->add_clause({-act});
     return lifted;
   }
 
@@ -209,18 +209,19 @@ class Ic3 {
   /// if not, `pred` gets a lifted predecessor.
   bool relatively_inductive(std::size_t level, const Cube& c, Cube* core, Cube* pred,
                             std::vector<bool>* pred_inputs = nullptr) {
+    // An empty cube (every state) contains the initial state and is never blocked; the
+    // constraint below would read as none.
+    if (c.empty()) throw std::logic_error("ic3: relative induction of the empty cube");
     const auto& f = frames_[level - 1];
-    const int act = f.solver->new_var();
-    std::vector<int> clause{-act};
-    for (const auto& l : c) clause.push_back(-f.current(l));
-    f.solver->add_clause(clause);
-    std::vector<int> assume{act, f.frames->literal(step_ok_, 0)};
+    std::vector<int> not_c;  // !c, for this call only
+    for (const auto& l : c) not_c.push_back(-f.current(l));
+    std::vector<int> assume{f.frames->literal(step_ok_, 0)};
     for (const auto& l : c) assume.push_back(f.next(l));
-    const bool unsat = f.solve(assume) == SatResult::Unsat;
+    const bool unsat = f.solve(assume, not_c) == SatResult::Unsat;
     if (unsat && core) {
       core->clear();
       for (std::size_t k = 0; k < c.size(); ++k)
-        if (f.solver->failed(assume[k + 2])) core->push_back(c[k]);
+        if (f.solver->failed(assume[k + 1])) core->push_back(c[k]);
       if (intersects_initial(*core))  // put back a literal that excludes the initial state
         for (const auto& l : c)
           if (aig_.latches()[l.latch].initial != l.value) {
@@ -230,7 +231,6 @@ class Ic3 {
           }
     }
     if (!unsat && pred) *pred = lift(f, state_of(f), &c, pred_inputs);
-    f.solver->add_clause({-act});  // retire the temporary clause
     return unsat;
   }
 
@@ -333,6 +333,7 @@ class Ic3 {
   Ic3Options options_;
   Ic3Stats* stats_;
   std::vector<std::uint32_t> cone_;
+  std::vector<double> activity_;            ///< per latch: how often generalised cubes kept it
   std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;

@@ -63,9 +63,20 @@ void Solver::add_clause(const std::vector<int>& lits) {
 }
 
 SatResult Solver::solve(const std::vector<int>& assumptions) {
+  return solve(assumptions, {});
+}
+
+SatResult Solver::solve(const std::vector<int>& assumptions, const std::vector<int>& constraint) {
   if (impl_->deadline.passed()) return SatResult::Interrupted;
   ++calls_;
   for (int l : assumptions) impl_->solver.assume(l);
+  if (!constraint.empty()) {
+    for (int l : constraint) {
+      if (l == 0) throw std::logic_error("sat::Solver::solve: literal 0 in the constraint");
+      impl_->solver.constrain(l);
+    }
+    impl_->solver.constrain(0);
+  }
   const int r = impl_->solver.solve();
   if (r == 10) return SatResult::Sat;
   if (r == 20) return SatResult::Unsat;

@@ -43,6 +43,10 @@ class Solver {
   /// Solves under the assumptions (they hold only for this call). Interrupted when the
   /// deadline passed before or during the search.
   SatResult solve(const std::vector<int>& assumptions = {});
+  /// The same with one more clause that holds only for this call (CaDiCaL's `constrain`): a
+  /// temporary clause costs no activation variable, which would stay in the solver for good
+  /// and slow down every later call (IC3 makes hundreds of thousands of such calls).
+  SatResult solve(const std::vector<int>& assumptions, const std::vector<int>& constraint);
   /// After Sat: the value of a literal in the model.
   bool value(int lit) const;
   /// After Unsat: whether assumption `lit` is part of the reason (the core).
