@@ -504,6 +504,16 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
       scope.body = *stmts;
       scope.where = pou.where;
       alone.pous.push_back(std::move(scope));
+      // The file's user functions by name, so that a call of one as a statement
+      // (`F(x := a, q => z);`) is not taken for an undeclared instance; the compiler checks
+      // the call against the function itself.
+      for (const auto& f : ctx.user_functions)
+        if (f != model::to_upper(pou.name)) {
+          model::Pou declared;
+          declared.name = f;
+          declared.kind = model::PouKind::Function;
+          alone.pous.push_back(std::move(declared));
+        }
       // Validated as the project will be: with its data types lowered (the body itself is
       // lowered with the whole project, once every POU is read).
       alone.data_types = project.data_types;

@@ -206,11 +206,12 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
   // `ACT();`: a call of an action of the POU (IEC 61131-3 lets a body call its actions).
   if (!v && s.arguments.empty() && pou_->find_action(s.target)) return;
   if (!v) {
-    const Pou* callee = project_.find_pou(s.target);
-    error(here, callee && callee->kind == PouKind::Function
-                    ? "call of function " + quoted(s.target) +
-                          " as a statement (use its result: x := " + s.target + "(...))"
-                    : "call of undeclared function block instance " + quoted(s.target));
+    // A user function called as a statement (`F(x := a, q => z);`): its inputs and outputs
+    // are checked where it is compiled, as in an assignment `y := F(...)`.
+    if (const Pou* callee = project_.find_pou(s.target);
+        callee && callee->kind == PouKind::Function)
+      return;
+    error(here, "call of undeclared function block instance " + quoted(s.target));
     return;
   }
   if (v->type.kind != TypeKind::FunctionBlock) {

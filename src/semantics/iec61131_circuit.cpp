@@ -433,6 +433,9 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
     case SOp::Assign:
       assign(s.target, eval(s.expr, guard), guard);
       return;
+    case SOp::Eval:
+      eval(s.expr, guard);
+      return;
     case SOp::If: {
       AigLit rest = guard;
       for (std::uint32_t i = 0; i < s.arm_count; ++i) {

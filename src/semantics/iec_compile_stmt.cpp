@@ -36,6 +36,28 @@ Block Compiler::block(const PouScope& sc, const model::StmtList& body,
   return b;
 }
 
+// `F(x := a, q => z);`: the call compiled as the right side of an assignment without a target
+// (so its `=>` outputs are bound exactly as in `y := F(x := a, q => z);`), its value dropped.
+void Compiler::function_statement(const PouScope& sc, const model::Stmt& s, Stmt& out) {
+  std::vector<std::string> names;
+  std::vector<model::ExprPtr> args;
+  for (const auto& [name, value] : s.arguments) {
+    names.push_back(name);
+    args.push_back(value);
+  }
+  model::Stmt as_assignment;
+  as_assignment.where = s.where;
+  as_assignment.value =
+      model::make_formal_call(s.target, std::move(names), std::move(args), s.where);
+  as_assignment.outputs = s.outputs;
+  out.op = SOp::Eval;
+  VT t;
+  assignment_with_outputs = s.outputs.empty() ? nullptr : &as_assignment;
+  out.expr = expr(sc, *as_assignment.value, -1, t);
+  assignment_with_outputs = nullptr;
+  outputs_taken_by = nullptr;  // it pointed at the local statement
+}
+
 std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
   Stmt out;
   out.where = s.where.str();
@@ -198,6 +220,11 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       if (auto it = sc.names.find(model::to_upper(s.target));
           it != sc.names.end() && it->second.kind == Ref::Instance) {
         instance_call(sc, s, it->second.index, out);
+        break;
+      }
+      if (const auto* f = project.find_pou(s.target);
+          f && f->kind == model::PouKind::Function && !sc.names.count(model::to_upper(s.target))) {
+        function_statement(sc, s, out);
         break;
       }
       if (!s.outputs.empty()) {

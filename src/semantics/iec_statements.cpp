@@ -95,6 +95,13 @@ Flow Machine::exec_stmt(const Stmt& s) {
       assign(s.target, v, s.where);
       return Flow::Normal;
     }
+    case SOp::Eval:
+      try {
+        eval(s.expr);
+      } catch (const RangeAbort& e) {
+        throw RangeAbort{e.what, &s.where};
+      }
+      return Flow::Normal;
     case SOp::If:
       for (std::uint32_t i = 0; i < s.arm_count; ++i) {
         const auto& arm = p_.if_arms[s.arm_first + i];

@@ -315,6 +315,55 @@ TEST(FunctionsE2E, OutputsBoundWithArrowsAgreeWithTheCodeInline) {
   }
 }
 
+// `Split(x := v, lo => l, hi => h);` as a statement: the outputs are copied as in an
+// assignment, the result is dropped; a call without outputs changes nothing.
+TEST(FunctionsE2E, CalledAsAStatementItsOutputsAreCopiedAndItsResultDropped) {
+  const auto as_statement = write_temp(kSplit +
+                                           "PROGRAM Main\n"
+                                           "  VAR_INPUT v : INT(0..7); END_VAR\n"
+                                           "  VAR l : INT(0..3); h : BOOL; END_VAR\n"
+                                           "  Split(x := v, lo => l, hi => h);\n"
+                                           "  Split(x := 1);\n"
+                                           "END_PROGRAM\n",
+                                       ".st");
+  const auto in_place = write_temp(
+      "PROGRAM Main\n"
+      "  VAR_INPUT v : INT(0..7); END_VAR\n"
+      "  VAR l : INT(0..3); h : BOOL; END_VAR\n"
+      "  l := v MOD 4;\n  h := v >= 4;\n"
+      "END_PROGRAM\n",
+      ".st");
+  const std::string props =
+      "--ctl 'EF (l = 3 & h)' --ctl 'AG (h -> l <= 2)' --ctl 'AG (l = 0 | l = 1 | l = 2 | l = 3)'";
+  auto verdicts = [](const std::string& out) {
+    std::string kept;
+    for (const char* v : {"holds", "violated"})
+      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
+        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
+    return kept;
+  };
+  const auto expected = verdicts(run_sfcv(check_command(in_place, "explicit", props)).out);
+  const auto bound = expected.find("AG (h -> l <= 2)");
+  ASSERT_NE(bound, std::string::npos) << expected;
+  EXPECT_EQ(expected.substr(expected.find_first_not_of(' ', bound + 16), 8), "violated")
+      << expected;
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(check_command(as_statement, engine, props));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(verdicts(r.out), expected) << r.out;
+  }
+  // The state space is the same: the dropped results and the call without outputs add nothing.
+  const auto a = run_sfcv(check_command(as_statement, "explicit", "--ctl 'AG TRUE'"));
+  const auto b = run_sfcv(check_command(in_place, "explicit", "--ctl 'AG TRUE'"));
+  EXPECT_EQ(a.out.substr(0, a.out.find(',')), b.out.substr(0, b.out.find(','))) << a.out << b.out;
+  for (const char* to : {"iec", "plcopen"}) {
+    const auto out = write_temp("", std::string(to) == "iec" ? ".st" : ".xml");
+    ASSERT_EQ(run_sfcv("export " + as_statement + " --to " + to + " -o " + out).exit_code, 0);
+    EXPECT_EQ(verdicts(run_sfcv(check_command(out, "explicit", props)).out), expected) << to;
+  }
+}
+
 TEST(FunctionsE2E, FunctionOutputsAreWritesAndMisusesAreLocatedErrors) {
   auto error_of = [](const std::string& text) {
     const auto r = run_sfcv(check_command(write_temp(text, ".st"), "explicit", "--ctl 'EF h'"));
@@ -338,6 +387,13 @@ TEST(FunctionsE2E, FunctionOutputsAreWritesAndMisusesAreLocatedErrors) {
       std::string::npos);
   EXPECT_NE(error_of(main("  z := Split(x := v, mid => l);\n"))
                 .find("function Split has no VAR_OUTPUT 'mid'"),
+            std::string::npos);
+  EXPECT_NE(error_of(main("  Split(x := v, mid => l);\n"))
+                .find(": error: 'Split(x := v)': function Split has no VAR_OUTPUT 'mid'"),
+            std::string::npos);
+  EXPECT_NE(error_of(main("  Split(y := v);\n")).find("function Split has no input 'y'"),
+            std::string::npos);
+  EXPECT_NE(error_of(main("  Split(v);\n")).find("positional arguments in the call of 'Split'"),
             std::string::npos);
   EXPECT_NE(error_of(main("  l := MAX(IN0 := v, lo => l);\n"))
                 .find("only a call of a user FUNCTION binds outputs"),

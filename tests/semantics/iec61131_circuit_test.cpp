@@ -538,7 +538,7 @@ END_FUNCTION
 PROGRAM Main
   VAR_INPUT n : INT(0..5); x, y : BOOL; END_VAR
   VAR_OUTPUT c : INT; s : SINT; q, w : BOOL; m : BYTE; k : INT(0..6); d : INT(0..3); e : BOOL;
-  END_VAR
+  f : BOOL; END_VAR
   VAR a : Acc; END_VAR
   INITIAL_STEP Idle : Calc(N); END_STEP
   STEP Run : Count(N); END_STEP
@@ -556,6 +556,7 @@ PROGRAM Main
     w := x AND Busy(y, w);
     IF x AND NOT y THEN w := Small(k); END_IF;
     IF y AND NOT x THEN q := Split(v := k + BOOL_TO_INT(e), lo => d, hi => e); END_IF;
+    IF x THEN Split(v := k + 1, hi => f); END_IF;
   END_ACTION
 END_PROGRAM
 )";

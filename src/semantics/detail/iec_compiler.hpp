@@ -244,6 +244,7 @@ struct Compiler {
   Block block(const PouScope& sc, const model::StmtList& body,
               const std::vector<std::pair<std::uint32_t, std::uint32_t>>& input_copies = {});
 
+  void function_statement(const PouScope& sc, const model::Stmt& s, Stmt& out);
   std::uint32_t stmt(const PouScope& sc, const model::Stmt& s);
   /// FOR, WHILE, REPEAT into an SOp::Loop (iec_compile_stmt.cpp).
   void loop(const PouScope& sc, const model::Stmt& s, Stmt& out);

@@ -79,7 +79,20 @@ struct Node {
 
 /// Call: one cycle of the user function block instance whose Pou is `target` (the inputs are
 /// assigned before it and the `=>` outputs copied after it by ordinary Assign statements).
-enum class SOp : std::uint8_t { Assign, If, Case, FbCall, Loop, Exit, Continue, Return, Call };
+/// Eval: `expr` evaluated for its effects only, its value dropped (a user function called as a
+/// statement, `F(x := a, q => z);`: the `=>` copies of its Call node are the effect).
+enum class SOp : std::uint8_t {
+  Assign,
+  If,
+  Case,
+  FbCall,
+  Loop,
+  Exit,
+  Continue,
+  Return,
+  Call,
+  Eval
+};
 
 /// How control leaves a block: normally, or by EXIT, CONTINUE or RETURN.
 enum class Flow : std::uint8_t { Normal, Exit, Continue, Return };
