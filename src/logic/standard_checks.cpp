@@ -333,9 +333,9 @@ std::vector<WriteConflict> write_conflicts(const model::Pou& pou, const model::P
       if (st->kind == model::StmtKind::For) add(st->target, std::nullopt);
       // `inst(q => y)` and `x := F(q => y)` copy an output into y.
       for (const auto& [output, variable] : st->outputs) add(variable, std::nullopt);
+      for (const auto& variable : model::in_out_bindings(project, pou.name, *st))
+        add(variable, std::nullopt);
       if (st->kind == model::StmtKind::FbCall) {
-        for (const auto& variable : model::in_out_bindings(project, pou.name, *st))
-          add(variable, std::nullopt);
         const auto* called = st->target.find('.') == std::string::npos && st->arguments.empty() &&
                                      !pou.find_variable(st->target)
                                  ? pou.find_action(st->target)

@@ -93,8 +93,31 @@ std::size_t count_transitions(const Project& p) {
 std::vector<std::string> in_out_bindings(const Project* project, std::string_view pou,
                                          const Stmt& call) {
   std::vector<std::string> bound;
-  if (!project || call.kind != StmtKind::FbCall || call.arguments.empty()) return bound;
-  const Pou* type = project->find_pou(pou);
+  if (!project) return bound;
+  auto bind = [&](const Pou& callee, const std::string& param, const ExprPtr& value) {
+    const Variable* m = callee.find_variable(param);
+    if (!m || m->direction != VarDirection::InOut || !value) return;
+    if (value->kind == ExprKind::Name) bound.push_back(value->name);
+    if (value->kind == ExprKind::Member) bound.push_back(value->name + "." + value->member);
+  };
+  // `y := F(io := v)`, `F(io := v);`: a user function's VAR_IN_OUT (a formal call).
+  const Pou* caller = project->find_pou(pou);
+  const Pou* function = nullptr;
+  if (call.kind == StmtKind::Assign && call.value && call.value->kind == ExprKind::Call)
+    function = project->find_pou(call.value->name);
+  else if (call.kind == StmtKind::FbCall && !(caller && caller->find_variable(call.target)))
+    function = project->find_pou(call.target);
+  if (function && function->kind == PouKind::Function) {
+    if (call.kind == StmtKind::Assign) {
+      for (std::size_t a = 0; a < call.value->arg_names.size(); ++a)
+        bind(*function, call.value->arg_names[a], call.value->args[a]);
+    } else {
+      for (const auto& [param, value] : call.arguments) bind(*function, param, value);
+    }
+    return bound;
+  }
+  if (call.kind != StmtKind::FbCall || call.arguments.empty()) return bound;
+  const Pou* type = caller;
   const auto parts = split_path(call.target);
   for (std::size_t i = 0; type && i < parts.size(); ++i) {
     const Variable* v = type->find_variable(parts[i]);
@@ -105,12 +128,7 @@ std::vector<std::string> in_out_bindings(const Project* project, std::string_vie
     type = v && v->type.kind == TypeKind::FunctionBlock ? project->find_pou(v->type.name) : nullptr;
   }
   if (!type || type->kind != PouKind::FunctionBlock) return bound;
-  for (const auto& [param, value] : call.arguments) {
-    const Variable* m = type->find_variable(param);
-    if (!m || m->direction != VarDirection::InOut || !value) continue;
-    if (value->kind == ExprKind::Name) bound.push_back(value->name);
-    if (value->kind == ExprKind::Member) bound.push_back(value->name + "." + value->member);
-  }
+  for (const auto& [param, value] : call.arguments) bind(*type, param, value);
   return bound;
 }
 

@@ -237,7 +237,8 @@ struct Project {
 };
 
 /// The variables (`x`, `a.b`) that the call `call` in POU `pou` binds to VAR_IN_OUTs of a
-/// user function block instance: the call writes them back (docs/semantics.md 1.3c).
+/// user function block instance (docs/semantics.md 1.3c) or of a user function called by an
+/// assignment or as a statement (1.9.1): the call writes them back.
 std::vector<std::string> in_out_bindings(const Project* project, std::string_view pou,
                                          const Stmt& call);
 

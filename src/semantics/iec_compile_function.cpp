@@ -68,11 +68,12 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
       continue;
     }
     const bool output = v.direction == model::VarDirection::Output && !result;
+    const bool in_out = v.direction == model::VarDirection::InOut;
     if (v.direction != model::VarDirection::Input && v.direction != model::VarDirection::Local &&
-        !result && !output) {
-      error(v.where,
-            std::string(v.direction == model::VarDirection::InOut ? "VAR_IN_OUT" : "VAR_GLOBAL") +
-                " " + what + " is not modelled (only VAR_INPUT, VAR_OUTPUT, VAR and VAR_TEMP)");
+        !result && !output && !in_out) {
+      error(v.where, "VAR_GLOBAL " + what +
+                         " is not modelled (only VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR and "
+                         "VAR_TEMP)");
       continue;
     }
     // Every variable starts each call from its initial value: the function has no memory.
@@ -88,7 +89,8 @@ std::optional<std::uint32_t> Compiler::function(const model::Pou& f,
         add_field(f.name + "." + v.name, FieldKind::Variable, t.lo, t.hi, init, is_bool);
     sc.names[var] = Ref{Ref::Field, field, is_bool};
     fn.fields.push_back(field);
-    if (v.direction == model::VarDirection::Input) fn.inputs.push_back(field);
+    // A VAR_IN_OUT is an input copied in, and copied back after the body (like an output).
+    if (v.direction == model::VarDirection::Input || in_out) fn.inputs.push_back(field);
     if (output) function_outputs[up][var] = field;
     if (result) {
       fn.result = field;
@@ -128,9 +130,10 @@ std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, 
   type = declared && declared->type.kind == TypeKind::Bool ? VT::Bool : VT::Int;
   const auto index = function(f, e.where);
   if (!index) return constant(0);
-  std::vector<const model::Variable*> inputs;
+  std::vector<const model::Variable*> inputs;  // VAR_INPUT and VAR_IN_OUT, as fn.inputs
   for (const auto& v : f.variables)
-    if (v.direction == model::VarDirection::Input) inputs.push_back(&v);
+    if (v.direction == model::VarDirection::Input || v.direction == model::VarDirection::InOut)
+      inputs.push_back(&v);
   // Copied: compiling an argument may compile another function (and grow p.functions).
   const auto fields = p.functions[*index].inputs;
   type = field_is_bool[p.functions[*index].result] ? VT::Bool : VT::Int;
@@ -176,11 +179,16 @@ std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, 
   Node n;
   n.op = Op::Call;
   n.a = *index;
-  if (binding) {
+  // `y := F(io := v)`: v copied into io before the body (above, as an input) and back after it.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    if (inputs[i]->direction == model::VarDirection::InOut)
+      if (const auto dst = function_in_out(sc, e, f, *inputs[i], given[i], binding, copies))
+        copies.emplace_back(fields[i], dst->index);
+  if (binding && (!binding->outputs.empty() || !copies.empty())) {
     // `y := F(x, q => z)`: q copied into z after the body (docs/semantics.md 1.9.1).
     const auto& s = *binding;
     const auto& outputs = function_outputs[model::to_upper(f.name)];
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> copies;
     for (const auto& [output, var] : s.outputs) {
       const auto it = outputs.find(model::to_upper(output));
       if (it == outputs.end()) {
@@ -199,6 +207,50 @@ std::uint32_t Compiler::function_call(const PouScope& sc, const model::Expr& e, 
     n.k = static_cast<std::int64_t>(p.call_output_copies.size());
   }
   return node(n, std::move(kids));
+}
+
+std::optional<Ref> Compiler::function_in_out(
+    const PouScope& sc, const model::Expr& call, const model::Pou& f, const model::Variable& param,
+    const model::Expr* value, const model::Stmt* binding,
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& bound) {
+  const auto what = "VAR_IN_OUT '" + param.name + "' of function " + f.name;
+  const auto where = value && value->where.known() ? value->where : call.where;
+  auto refuse = [&](const std::string& why) {
+    error(where, "'" + model::to_st(call) + "': " + what + " " + why);
+    return std::nullopt;
+  };
+  if (!value) return refuse("is not bound (IEC 61131-3 requires it)");
+  // The copy back needs one place after the body: the end of the assignment or statement.
+  if (!binding)
+    return refuse(
+        "is bound only by a call that is the whole right side of an assignment or a statement");
+  if (value->kind != model::ExprKind::Name && value->kind != model::ExprKind::Member)
+    return refuse("is bound to '" + model::to_st(*value) + "', which is no variable");
+  const std::string var =
+      value->kind == model::ExprKind::Member ? value->name + "." + value->member : value->name;
+  const auto ref = variable_ref(sc, var, where, what + " bound to unknown variable '" + var + "'");
+  if (!ref) return std::nullopt;
+  if (ref->kind != Ref::Field)
+    return refuse("is bound to '" + var + "', which is " +
+                  (ref->kind == Ref::Input ? "an input" : "a function block instance"));
+  if (ref->is_bool != (param.type.kind == TypeKind::Bool))
+    return refuse("is bound to '" + var + "', of another type");
+  // The copy in and back is the call by reference only if, during the call, nothing reaches
+  // the variable but the parameter (docs/semantics.md 1.9.1): refuse every way it could.
+  const auto alias = [&](const std::string& why) {
+    return refuse("is bound to '" + var + "', " + why +
+                  " (the call by reference is modelled only without aliases)");
+  };
+  if (model::iequals(var, binding->target)) return alias("which the assignment writes too");
+  for (const auto& [field, other] : bound)
+    if (other == ref->index) return alias("which another VAR_IN_OUT of the call binds");
+  for (const auto& [output, other] : binding->outputs)
+    if (model::iequals(other, var)) return alias("which an output of the call is bound to");
+  const auto& mentioned = names_mentioned(f);
+  for (const auto& [name, field] : global_fields)
+    if (field == ref->index && mentioned.count(name))
+      return alias("a global variable that " + f.name + " names");
+  return ref;
 }
 
 }  // namespace sfcv::semantics::iec::detail

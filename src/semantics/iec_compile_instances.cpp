@@ -310,16 +310,25 @@ const std::set<std::string>& Compiler::names_mentioned(const model::Pou& type) {
   auto path = [&](const std::string& text) {
     for (const auto& part : model::split_path(text)) found.insert(model::to_upper(part));
   };
+  // What a called user function names, the caller names too (it runs inside the call).
+  auto called = [&](const std::string& name) {
+    if (const auto* f = project.find_pou(name); f && f->kind == model::PouKind::Function) {
+      const auto& more = names_mentioned(*f);
+      found.insert(more.begin(), more.end());
+    }
+  };
   std::function<void(const model::Expr&)> expr = [&](const model::Expr& e) {
     if (e.kind == model::ExprKind::Name || e.kind == model::ExprKind::Member ||
         e.kind == model::ExprKind::Index)
       path(e.name);
+    if (e.kind == model::ExprKind::Call) called(e.name);
     for (const auto& a : e.args)
       if (a) expr(*a);
   };
   std::function<void(const model::StmtList&)> body = [&](const model::StmtList& list) {
     for (const auto& st : list) {
       path(st->target);
+      if (st->kind == model::StmtKind::FbCall) called(st->target);
       for (const auto* e : {&st->value, &st->limit, &st->step})
         if (*e) expr(**e);
       for (const auto& c : st->conditions) expr(*c);

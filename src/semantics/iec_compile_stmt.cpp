@@ -52,7 +52,7 @@ void Compiler::function_statement(const PouScope& sc, const model::Stmt& s, Stmt
   as_assignment.outputs = s.outputs;
   out.op = SOp::Eval;
   VT t;
-  assignment_with_outputs = s.outputs.empty() ? nullptr : &as_assignment;
+  assignment_with_outputs = &as_assignment;
   out.expr = expr(sc, *as_assignment.value, -1, t);
   assignment_with_outputs = nullptr;
   outputs_taken_by = nullptr;  // it pointed at the local statement
@@ -70,7 +70,7 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
       else
         found = global_ref(model::to_upper(s.target));  // an unqualified global
       VT t;
-      assignment_with_outputs = s.outputs.empty() ? nullptr : &s;
+      assignment_with_outputs = &s;
       out.expr = s.value ? expr(sc, *s.value, -1, t) : constant(0);
       assignment_with_outputs = nullptr;
       if (!s.outputs.empty() && outputs_taken_by != &s)

@@ -104,17 +104,17 @@ TEST(FunctionsE2E, RecursionIsRefusedWithItsLocation) {
       << r.err;
 }
 
-// VAR_IN_OUT and FB instances in a function, and calls that do not fit the declaration.
+// FB instances in a function, and calls that do not fit the declaration.
 TEST(FunctionsE2E, UnmodelledFunctionsAndBadCallsAreLocatedErrors) {
   auto file = write_temp(
-      "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  VAR_IN_OUT z : INT; END_VAR\n"
+      "FUNCTION F : INT\n  VAR_INPUT x : INT; END_VAR\n  VAR_GLOBAL z : INT; END_VAR\n"
       "  VAR t : TON; END_VAR\n  F := x;\nEND_FUNCTION\n"
       "PROGRAM Main\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT y : INT; END_VAR\n"
       "  y := F(BOOL_TO_INT(a));\nEND_PROGRAM\n",
       ".st");
   auto r = run_sfcv(check_command(file, "explicit", "--ctl 'AG y >= 0'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find(":3:14: error: VAR_IN_OUT 'z' of function F is not modelled"),
+  EXPECT_NE(r.err.find(":3:14: error: VAR_GLOBAL 'z' of function F is not modelled"),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find(":4:7: error: function block instance 't' of function F"), std::string::npos)
@@ -362,6 +362,100 @@ TEST(FunctionsE2E, CalledAsAStatementItsOutputsAreCopiedAndItsResultDropped) {
     ASSERT_EQ(run_sfcv("export " + as_statement + " --to " + to + " -o " + out).exit_code, 0);
     EXPECT_EQ(verdicts(run_sfcv(check_command(out, "explicit", props)).out), expected) << to;
   }
+}
+
+// A VAR_IN_OUT of a function is copied in and back around the body: the program agrees,
+// state for state, with the same code written in place; every way the variable could be
+// reached during the call otherwise is refused by name.
+constexpr const char* kAdvance =
+    "FUNCTION Advance : BOOL\n"
+    "  VAR_INPUT limit : INT; END_VAR\n"
+    "  VAR_IN_OUT n : INT(0..7); END_VAR\n"
+    "  VAR_OUTPUT was : INT(0..7); END_VAR\n"
+    "  VAR_EXTERNAL g : INT(0..7); END_VAR\n"
+    "  was := n;\n"
+    "  Advance := n < limit;\n"
+    "  IF Advance THEN n := n + 1; END_IF;\n"
+    "END_FUNCTION\n";
+
+std::string advance_main(const std::string& vars, const std::string& body) {
+  return std::string(kAdvance) +
+         "PROGRAM Main\n  VAR_INPUT go : BOOL; END_VAR\n  VAR_EXTERNAL g : INT(0..7); END_VAR\n"
+         "  VAR c, d, w : INT(0..7); more : BOOL; " +
+         vars + "END_VAR\n" + body +
+         "END_PROGRAM\n"
+         "CONFIGURATION Cfg\n  VAR_GLOBAL g : INT(0..7); END_VAR\n"
+         "  RESOURCE R ON PLC\n    TASK T(INTERVAL := T#10MS);\n"
+         "    PROGRAM P WITH T : Main;\n  END_RESOURCE\nEND_CONFIGURATION\n";
+}
+
+TEST(FunctionsE2E, InOutOfAFunctionIsCopiedInAndBackAroundTheBody) {
+  const auto by_reference =
+      write_temp(advance_main("",
+                              "  IF go THEN more := Advance(limit := 5, n := c); END_IF;\n"
+                              "  Advance(limit := 3, n := d, was => w);\n"),
+                 ".st");
+  const auto in_place = write_temp(
+      advance_main("",
+                   "  IF go THEN more := c < 5; IF more THEN c := c + 1; END_IF; END_IF;\n"
+                   "  w := d;\n  IF d < 3 THEN d := d + 1; END_IF;\n"),
+      ".st");
+  const std::string props =
+      "--ctl 'AG c <= 5' --ctl 'AG c <= 4' --ctl 'AG d <= 3' --ctl 'AG w <= 2' "
+      "--ctl 'EF (d = 3 & c = 5 & !more)' --ctl 'AG (more -> c >= 1)'";
+  auto verdicts = [](const std::string& out) {
+    std::string kept;
+    for (const char* v : {"holds", "violated"})
+      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
+        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
+    return kept;
+  };
+  const auto reference = run_sfcv(check_command(in_place, "explicit", props));
+  const auto expected = verdicts(reference.out);
+  EXPECT_NE(expected.find("violated"), std::string::npos) << expected;
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(check_command(by_reference, engine, props));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(verdicts(r.out), expected) << r.out;
+  }
+  // The same reachable states: the function's fields return to their initial values.
+  const auto all = run_sfcv(check_command(by_reference, "explicit", "--ctl 'AG TRUE'"));
+  EXPECT_NE(all.out.find("17 states,"), std::string::npos) << all.out;
+  EXPECT_NE(run_sfcv(check_command(in_place, "explicit", "--ctl 'AG TRUE'")).out.find("17 states,"),
+            std::string::npos);
+}
+
+TEST(FunctionsE2E, InOutOfAFunctionRefusesEveryAlias) {
+  auto error_of = [](const std::string& vars, const std::string& body) {
+    const auto r = run_sfcv(
+        check_command(write_temp(advance_main(vars, body), ".st"), "explicit", "--ctl 'AG TRUE'"));
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    return r.err;
+  };
+  const std::pair<const char*, const char*> cases[] = {
+      {"  more := Advance(limit := 5);\n", "VAR_IN_OUT 'n' of function Advance is not bound"},
+      {"  more := Advance(limit := 5, n := c + 1);\n", "bound to 'c + 1', which is no variable"},
+      {"  more := NOT Advance(limit := 5, n := c);\n",
+       "is bound only by a call that is the whole right side of an assignment or a statement"},
+      {"  Advance(limit := 5, n := c, was => c);\n", "which an output of the call is bound to"},
+      {"  Advance(limit := 5, n := g);\n", "a global variable that Advance names"},
+      {"  Advance(limit := 5, n := go);\n", "of another type"},
+  };
+  for (const auto& [body, why] : cases) {
+    SCOPED_TRACE(body);
+    EXPECT_NE(error_of("", body).find(why), std::string::npos) << error_of("", body);
+  }
+  // An INT function: its VAR_IN_OUT bound to the assignment's own target.
+  const auto r = run_sfcv(check_command(
+      write_temp("FUNCTION Inc : INT\n  VAR_IN_OUT n : INT(0..7); END_VAR\n"
+                 "  IF n < 7 THEN n := n + 1; END_IF;\n  Inc := n;\nEND_FUNCTION\n"
+                 "PROGRAM Main\n  VAR c : INT(0..7); END_VAR\n  c := Inc(n := c);\nEND_PROGRAM\n",
+                 ".st"),
+      "explicit", "--ctl 'AG TRUE'"));
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("bound to 'c', which the assignment writes too"), std::string::npos)
+      << r.err;
 }
 
 TEST(FunctionsE2E, FunctionOutputsAreWritesAndMisusesAreLocatedErrors) {

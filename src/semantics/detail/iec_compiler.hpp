@@ -132,6 +132,12 @@ struct Compiler {
   /// `inline_body`: instead of the Call, an instance action's statements (`inst.ACT(a := x);`).
   /// Every name a function block type mentions, in its code and in the types of its
   /// instances, upper-case, each part of a dotted path apart (the VAR_IN_OUT alias check).
+  /// The variable a call binds to the function's VAR_IN_OUT `param` (copied back after the
+  /// body), or nullopt with an error: unbound, not a variable, or reachable another way.
+  std::optional<Ref> function_in_out(
+      const PouScope& sc, const model::Expr& call, const model::Pou& f,
+      const model::Variable& param, const model::Expr* value, const model::Stmt* binding,
+      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& bound);
   const std::set<std::string>& names_mentioned(const model::Pou& type);
   std::map<std::string, std::set<std::string>> mentioned_by_type;
   /// Refuses a call of an action of instance scope `inst` from outside it when its type has a
