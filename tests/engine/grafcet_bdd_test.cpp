@@ -58,7 +58,7 @@ Built make(model::Project p, bool single) {
 }
 
 struct Tally {
-  int unstable = 0, traces = 0, violated = 0, stored = 0;
+  int unstable = 0, traces = 0, violated = 0, stored = 0, conflicts = 0;
 };
 
 /// Explicit and BDD reports on the same task: equal states and verdicts, BDD traces replay.
@@ -107,6 +107,8 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
         s.results[i].check == "stored-actions" && s.results[i].verdict == logic::Verdict::Violated;
     tally.unstable +=
         s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
+    tally.conflicts +=
+        s.results[i].check == "conflicts" && s.results[i].verdict == logic::Verdict::Violated;
   }
 }
 
@@ -126,6 +128,7 @@ TEST(GrafcetBdd, RandomGrafcetsAgreeWithTheExplicitRsg) {
   EXPECT_GT(tally.traces, 100);
   EXPECT_GT(tally.violated, 100);
   EXPECT_GT(tally.stored, 2) << tally.stored;  // stored actions set to different values at once
+  EXPECT_GT(tally.conflicts, 5) << tally.conflicts;  // two transitions of one step fire together
 }
 
 /// The circuit's reachable set, counted by the symbolic system alone, equals the RSG's nodes

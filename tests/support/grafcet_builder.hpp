@@ -61,6 +61,10 @@ class GrafcetBuilder {
     t.targets = std::move(to);
     t.guard = std::move(guard);
     t.order = static_cast<int>(pou().charts.back().transitions.size());
+    // Located as a file's transitions are: the checks that read the chart (conflicts) match
+    // the system's transitions with the chart's by their location.
+    t.where.file = "builder:" + pou().charts.back().name;
+    t.where.line = t.order + 1;
     pou().charts.back().transitions.push_back(t);
     return *this;
   }

@@ -454,7 +454,8 @@ class Run {
         for (std::uint32_t j = i + 1; j < n; ++j) {
           if (!related(i, j)) continue;
           limits.check_time("looking for conflicts");
-          const Bdd both = fires(i) & fires(j);
+          if ((fires(i) & fires(j)).is_false()) continue;  // cheap, and usually settles it
+          const Bdd both = run_.reached_ & sys_.fires_on_one_edge(i, j);
           if (both.is_false()) continue;
           pairs.emplace_back(i, j);
           open.push_back(both);

@@ -309,6 +309,27 @@ Bdd GrafcetClosure::fires(std::uint32_t t) {
   return fires_[t];
 }
 
+Bdd GrafcetClosure::fires_on_one_edge(std::uint32_t i, std::uint32_t j) {
+  compute_relation();
+  // Runs are deterministic and carry their source C, so the configurations reached from one
+  // that clears t are exactly those of runs clearing t (a run merging into such a
+  // configuration shares its end, hence its edge); their non-stuttering ends, emitted, are the
+  // edges whose fired set holds t.
+  auto edges_clearing = [&](std::uint32_t t) -> const Bdd& {
+    if (edges_clearing_.size() != cleared_.size()) {
+      edges_clearing_.assign(cleared_.size(), Bdd::constant(false));
+      edges_clearing_set_.assign(cleared_.size(), false);
+    }
+    if (!edges_clearing_set_[t]) {
+      edges_clearing_[t] = emitted(forward(reach_ & cleared_[t]) & ends_ne_);
+      edges_clearing_set_[t] = true;
+    }
+    return edges_clearing_[t];
+  };
+  const Bdd with_i = edges_clearing(i);
+  return (with_i & edges_clearing(j)).exist(n_cube_);
+}
+
 Bdd GrafcetClosure::unstable_states() {
   compute_relation();
   return unstable_;

@@ -54,6 +54,10 @@ class GrafcetClosure {
   Bdd preimage(const Bdd& states);  ///< over C
   Bdd has_successor();
   Bdd fires(std::uint32_t transition);
+  /// Sources (over C) with an edge that fires both transitions: some stable situation D is
+  /// reached from C by a run that clears i and by a run that clears j (the explicit graph
+  /// merges the events from C to D into one edge, its fired set the union of theirs).
+  Bdd fires_on_one_edge(std::uint32_t i, std::uint32_t j);
   /// Sources (over C) with an event whose evolutions never stabilise / raise a range error.
   Bdd unstable_states();
   Bdd range_error_states();
@@ -97,6 +101,8 @@ class GrafcetClosure {
   bool have_good_ = false, have_anomalies_ = false;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
+  std::vector<Bdd> edges_clearing_;  ///< per transition: R(C, N) of the runs that clear it
+  std::vector<bool> edges_clearing_set_;
   bool have_initial_ = false;
   Bdd initial_set_;
   bool initial_anomaly_ = false, initial_range_ = false;

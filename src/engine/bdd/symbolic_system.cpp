@@ -487,6 +487,11 @@ Bdd SymbolicSystem::fires(std::uint32_t t) {
   return fires_[t];
 }
 
+Bdd SymbolicSystem::fires_on_one_edge(std::uint32_t i, std::uint32_t j) {
+  if (!grafcet_) throw std::logic_error("fires_on_one_edge: Grafcet only");
+  return grafcet_->fires_on_one_edge(i, j);
+}
+
 void SymbolicSystem::prepare_choice_cubes() {
   if (choice_cube_) return;
   if (grafcet_) throw std::logic_error("choice inputs: IEC 61131-3 only");

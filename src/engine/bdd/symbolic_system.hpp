@@ -80,6 +80,8 @@ class SymbolicSystem {
   Bdd atom(const logic::Formula& f);
   /// States where transition t fires under some allowed, error-free input.
   Bdd fires(std::uint32_t transition);
+  /// Grafcet: states with an edge (events merged by target) that fires both transitions.
+  Bdd fires_on_one_edge(std::uint32_t i, std::uint32_t j);
   /// States that fire at least one transition under some allowed, error-free input.
   Bdd fires_any();
 
