@@ -273,6 +273,26 @@ const std::string kSplit =
     "  Split := x = 0;\n"
     "END_FUNCTION\n";
 
+/// Each property line of a check's output, up to and with its verdict (the times dropped).
+std::string verdict_lines(const std::string& out) {
+  std::string kept;
+  for (const char* v : {"holds", "violated"})
+    for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
+      kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
+  return kept;
+}
+
+/// `model` gives the `expected` verdict lines on the explicit, BDD and IC3 engines (exit 1).
+void expect_verdicts_on_three_engines(const std::string& model, const std::string& props,
+                                      const std::string& expected) {
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(check_command(model, engine, props));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(verdict_lines(r.out), expected) << r.out;
+  }
+}
+
 TEST(FunctionsE2E, OutputsBoundWithArrowsAgreeWithTheCodeInline) {
   const auto with_outputs = write_temp(kSplit +
                                            "PROGRAM Main\n"
@@ -290,27 +310,21 @@ TEST(FunctionsE2E, OutputsBoundWithArrowsAgreeWithTheCodeInline) {
       ".st");
   const std::string props =
       "--ctl 'EF (l = 3 & h)' --ctl 'AG (z -> (l = 0 & !h))' --ctl 'AG (h -> l <= 2)'";
-  auto verdicts = [](const std::string& out) {
-    std::string kept;
-    for (const char* v : {"holds", "violated"})
-      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
-        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
-    return kept;
-  };
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
     SCOPED_TRACE(engine);
     const auto a = run_sfcv(check_command(with_outputs, engine, props));
     const auto b = run_sfcv(check_command(in_place, engine, props));
     EXPECT_EQ(a.exit_code, 1) << a.out << a.err;
-    EXPECT_EQ(verdicts(a.out), verdicts(b.out)) << a.out << b.out;
-    EXPECT_NE(verdicts(a.out).find("violated"), std::string::npos) << a.out;
+    EXPECT_EQ(verdict_lines(a.out), verdict_lines(b.out)) << a.out << b.out;
+    EXPECT_NE(verdict_lines(a.out).find("violated"), std::string::npos) << a.out;
   }
   // Printed back (IEC text, PLCopen) and reloaded, the bindings are still there.
   for (const char* to : {"iec", "plcopen"}) {
     const auto out = write_temp("", std::string(to) == "iec" ? ".st" : ".xml");
     ASSERT_EQ(run_sfcv("export " + with_outputs + " --to " + to + " -o " + out).exit_code, 0);
     const auto r = run_sfcv(check_command(out, "explicit", props));
-    EXPECT_EQ(verdicts(r.out), verdicts(run_sfcv(check_command(in_place, "explicit", props)).out))
+    EXPECT_EQ(verdict_lines(r.out),
+              verdict_lines(run_sfcv(check_command(in_place, "explicit", props)).out))
         << to << r.out << r.err;
   }
 }
@@ -335,24 +349,12 @@ TEST(FunctionsE2E, CalledAsAStatementItsOutputsAreCopiedAndItsResultDropped) {
       ".st");
   const std::string props =
       "--ctl 'EF (l = 3 & h)' --ctl 'AG (h -> l <= 2)' --ctl 'AG (l = 0 | l = 1 | l = 2 | l = 3)'";
-  auto verdicts = [](const std::string& out) {
-    std::string kept;
-    for (const char* v : {"holds", "violated"})
-      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
-        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
-    return kept;
-  };
-  const auto expected = verdicts(run_sfcv(check_command(in_place, "explicit", props)).out);
+  const auto expected = verdict_lines(run_sfcv(check_command(in_place, "explicit", props)).out);
   const auto bound = expected.find("AG (h -> l <= 2)");
   ASSERT_NE(bound, std::string::npos) << expected;
   EXPECT_EQ(expected.substr(expected.find_first_not_of(' ', bound + 16), 8), "violated")
       << expected;
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    SCOPED_TRACE(engine);
-    const auto r = run_sfcv(check_command(as_statement, engine, props));
-    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-    EXPECT_EQ(verdicts(r.out), expected) << r.out;
-  }
+  expect_verdicts_on_three_engines(as_statement, props, expected);
   // The state space is the same: the dropped results and the call without outputs add nothing.
   const auto a = run_sfcv(check_command(as_statement, "explicit", "--ctl 'AG TRUE'"));
   const auto b = run_sfcv(check_command(in_place, "explicit", "--ctl 'AG TRUE'"));
@@ -360,7 +362,7 @@ TEST(FunctionsE2E, CalledAsAStatementItsOutputsAreCopiedAndItsResultDropped) {
   for (const char* to : {"iec", "plcopen"}) {
     const auto out = write_temp("", std::string(to) == "iec" ? ".st" : ".xml");
     ASSERT_EQ(run_sfcv("export " + as_statement + " --to " + to + " -o " + out).exit_code, 0);
-    EXPECT_EQ(verdicts(run_sfcv(check_command(out, "explicit", props)).out), expected) << to;
+    EXPECT_EQ(verdict_lines(run_sfcv(check_command(out, "explicit", props)).out), expected) << to;
   }
 }
 
@@ -403,22 +405,10 @@ TEST(FunctionsE2E, InOutOfAFunctionIsCopiedInAndBackAroundTheBody) {
   const std::string props =
       "--ctl 'AG c <= 5' --ctl 'AG c <= 4' --ctl 'AG d <= 3' --ctl 'AG w <= 2' "
       "--ctl 'EF (d = 3 & c = 5 & !more)' --ctl 'AG (more -> c >= 1)'";
-  auto verdicts = [](const std::string& out) {
-    std::string kept;
-    for (const char* v : {"holds", "violated"})
-      for (auto at = out.find(v); at != std::string::npos; at = out.find(v, at + 1))
-        kept += out.substr(out.rfind('\n', at) + 1, at - out.rfind('\n', at) - 1) + v + "\n";
-    return kept;
-  };
   const auto reference = run_sfcv(check_command(in_place, "explicit", props));
-  const auto expected = verdicts(reference.out);
+  const auto expected = verdict_lines(reference.out);
   EXPECT_NE(expected.find("violated"), std::string::npos) << expected;
-  for (const char* engine : {"explicit", "bdd", "ic3"}) {
-    SCOPED_TRACE(engine);
-    const auto r = run_sfcv(check_command(by_reference, engine, props));
-    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-    EXPECT_EQ(verdicts(r.out), expected) << r.out;
-  }
+  expect_verdicts_on_three_engines(by_reference, props, expected);
   // The same reachable states: the function's fields return to their initial values.
   const auto all = run_sfcv(check_command(by_reference, "explicit", "--ctl 'AG TRUE'"));
   EXPECT_NE(all.out.find("17 states,"), std::string::npos) << all.out;
