@@ -202,10 +202,34 @@ ExprPtr Network::node_value(pugi::xml_node node, const std::string& pin) {
   return fail(node, "unsupported: a " + std::string(kind) + " cannot be used as a value here");
 }
 
+ExprPtr Network::in_out_variable(pugi::xml_node block, pugi::xml_node pin) {
+  const std::string f = pin.attribute("formalParameter").value();
+  const std::string what =
+      "in/out parameter " + f + " of block " + std::string(block.attribute("typeName").value());
+  const auto cpi = child(pin, "connectionPointIn");
+  if (!cpi || !child(cpi, "connection"))
+    return fail(pin, what + " is not connected (IEC 61131-3 requires a variable there)");
+  if (attribute_true(pin, "negated") || (!std::string(pin.attribute("edge").value()).empty() &&
+                                         std::string(pin.attribute("edge").value()) != "none"))
+    return fail(pin, "unsupported: negated or edge " + what);
+  auto bound = input(cpi);
+  if (!bound) return nullptr;
+  if (bound->kind != ExprKind::Name && bound->kind != ExprKind::Member)
+    return fail(pin, what + " is wired to '" + model::to_st(*bound) + "', which is no variable");
+  return bound;
+}
+
 ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string type = block.attribute("typeName").value();
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
+  if (!pin.empty() && !instance.empty())
+    for (auto io : children(child(block, "inOutVariables"), "variable"))
+      if (model::iequals(io.attribute("formalParameter").value(), pin)) {
+        // The output side of a VAR_IN_OUT pin: the bound variable, after the call.
+        if (!call_block(block)) return nullptr;
+        return in_out_variable(block, io);
+      }
   if (model::iequals(pin, "ENO")) {
     // ENO is EN where nothing can clear it: a standard FB instance (called here), a standard
     // function (an error inside it is a range error of the cycle, not an ENO), and a user FB
@@ -381,10 +405,13 @@ bool Network::call_block(pugi::xml_node block) {
     else
       args.emplace_back(f, std::move(a));
   }
-  if (child(block, "inOutVariables") &&
-      !children(child(block, "inOutVariables"), "variable").empty()) {
-    fail(block, "unsupported: in/out parameters of block " + type);
-    return false;
+  // A VAR_IN_OUT pin binds the variable wired to it (docs/semantics.md 1.3c); its output side
+  // reads that variable after the call (block_value).
+  for (auto v : children(child(block, "inOutVariables"), "variable")) {
+    const std::string f = v.attribute("formalParameter").value();
+    auto bound = in_out_variable(block, v);
+    if (!bound) return false;
+    args.emplace_back(f, std::move(bound));
   }
   auto call = model::make_fb_call(block.attribute("instanceName").value(), std::move(args),
                                   ctx_.where(block));

@@ -62,6 +62,9 @@ class Network {
   model::ExprPtr value(pugi::xml_node connection);
   model::ExprPtr node_value(pugi::xml_node node, const std::string& pin);
   model::ExprPtr block_value(pugi::xml_node block, const std::string& pin);
+  /// The variable wired to the VAR_IN_OUT pin `pin` of `block` (a name or member), or null
+  /// with a located error.
+  model::ExprPtr in_out_variable(pugi::xml_node block, pugi::xml_node pin);
   model::ExprPtr text_value(pugi::xml_node holder, pugi::xml_node text_element);
   bool call_block(pugi::xml_node block);
   /// The localId of the function block (no instance) wired alone into `cpi`, else empty.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/plcopen_text.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -182,6 +183,83 @@ END_FUNCTION_BLOCK
   const auto file = write_temp(kInc + main("  i(en := go, c := g);\n", true) + config, ".st");
   const auto r = run_sfcv("check " + file + " --checks none --ctl 'EF g = 5' --trace none");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// An FBD block of a user function block with a VAR_IN_OUT pin (PLCopen `inOutVariables`, as
+// Beremiz and CODESYS export it): the variable wired to the pin is bound, and the pin's output
+// side reads that variable after the call. Same model as the ST call `i(up := go, c := a);
+// b := a;` on every engine; a pin wired to an expression or left open is a located error.
+std::string inc_fbd(const std::string& c_source, const std::string& b_source,
+                    const std::string& a_expression = "a") {
+  const auto local = [](const std::string& id, const std::string& name) {
+    return "<inVariable localId=\"" + id +
+           "\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+           "<expression>" +
+           name + "</expression></inVariable>";
+  };
+  return kPlcopenHeader + "<pou name=\"Inc\" pouType=\"functionBlock\"><interface>" +
+         plcopen_vars("inputVars", {"up"}) + plcopen_vars("inOutVars", {"c"}, "<INT/>") +
+         "</interface><body>" + plcopen_st("IF up AND c &lt; 5 THEN c := c + 1; END_IF;") +
+         "</body></pou>\n"
+         "<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"go"}) + plcopen_vars("localVars", {"a", "b"}, "<INT/>") +
+         plcopen_vars("localVars", {"i"}, "<derived name=\"Inc\"/>") + "</interface><body><FBD>" +
+         local("1", "go") + local("2", a_expression) +
+         "<block localId=\"3\" typeName=\"Inc\" instanceName=\"i\"><position x=\"0\" y=\"0\"/>"
+         "<inputVariables><variable formalParameter=\"up\"><connectionPointIn>"
+         "<connection refLocalId=\"1\"/></connectionPointIn></variable></inputVariables>"
+         "<inOutVariables><variable formalParameter=\"c\"><connectionPointIn>" +
+         c_source +
+         "</connectionPointIn><connectionPointOut/></variable></inOutVariables>"
+         "<outputVariables/></block>"
+         "<outVariable localId=\"4\"><position x=\"0\" y=\"0\"/><connectionPointIn>" +
+         b_source + "</connectionPointIn><expression>b</expression></outVariable>" +
+         "</FBD></body></pou>\n" + kPlcopenFooter;
+}
+
+TEST(InOut, FbdBlockPinBindsTheWiredVariable) {
+  const std::string pin_out = "<connection refLocalId=\"3\" formalParameter=\"c\"/>";
+  const auto fbd = write_temp(inc_fbd("<connection refLocalId=\"2\"/>", pin_out), ".xml");
+  const auto st = write_temp(R"(FUNCTION_BLOCK Inc
+  VAR_INPUT up : BOOL; END_VAR
+  VAR_IN_OUT c : INT; END_VAR
+  IF up AND c < 5 THEN c := c + 1; END_IF;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR a : INT; b : INT; i : Inc; END_VAR
+  i(up := go, c := a);
+  b := a;
+END_PROGRAM
+)",
+                             ".st");
+  const std::string props =
+      "--ctl 'EF b = 5' --ctl 'AG (a = 5 -> b = 5)' --ctl 'AG b <= 4' --ctl 'AG (b = 2 -> a = 2)'";
+  const auto expected =
+      run_sfcv("check " + st + " --engine explicit --checks none " + props + " --trace none");
+  ASSERT_EQ(expected.exit_code, 1) << expected.out << expected.err;
+  EXPECT_NE(expected.out.find("11 states"), std::string::npos) << expected.out;
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto a = run_sfcv("check " + fbd + " --engine " + engine + " --checks none " + props +
+                            " --trace none");
+    const auto b = run_sfcv("check " + st + " --engine " + engine + " --checks none " + props +
+                            " --trace none");
+    EXPECT_EQ(a.exit_code, 1) << a.out << a.err;
+    EXPECT_EQ(without_times(a.out), without_times(b.out)) << a.out << b.out;
+  }
+  // Left open, or wired to an expression: refused where the pin is.
+  auto error_of = [&](const std::string& source, const std::string& a_expression) {
+    const auto file = write_temp(inc_fbd(source, pin_out, a_expression), ".xml");
+    const auto r = run_sfcv("check " + file + " --engine explicit --checks none --ctl 'AG TRUE'");
+    EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+    return r.err;
+  };
+  EXPECT_NE(error_of("", "a").find("in/out parameter c of block Inc is not connected"),
+            std::string::npos);
+  EXPECT_NE(error_of("<connection refLocalId=\"2\"/>", "a + 1")
+                .find("in/out parameter c of block Inc is wired to 'a + 1', which is no variable"),
+            std::string::npos);
 }
 
 }  // namespace
