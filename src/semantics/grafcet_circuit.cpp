@@ -191,8 +191,15 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
       return constant(e.value);
     case Op::Input: {
       const auto i = static_cast<std::size_t>(e.ref);
-      if (s_.gin_[i].type.kind == model::TypeKind::Int)
-        throw CircuitUnsupported("integer input '" + s_.gin_[i].name + "' outside a comparison");
+      const auto& in = s_.gin_[i];
+      if (in.type.kind == model::TypeKind::Int) {
+        // An exact input (one region per value, GrafcetSystem::int_inputs_ok): lo + index.
+        if (!in.exact)
+          throw CircuitUnsupported("integer input '" + in.name + "' outside a comparison");
+        BitVector index = region_in(*c.cur, i);
+        index.resize(kWidth, Aig::kFalse);  // unsigned: zero-extended
+        return bv_add(aig_, index, constant(in.type.lo));
+      }
       return from_bool(region_in(*c.cur, i)[0]);
     }
     case Op::Step:
@@ -235,7 +242,7 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
     case Op::Gt:
     case Op::Ge: {
       const auto& l = e.args[0];
-      if (l.op == Op::Input &&
+      if (l.op == Op::Input && e.args[1].op == Op::Const &&
           s_.gin_[static_cast<std::size_t>(l.ref)].type.kind == model::TypeKind::Int) {
         // Only comparisons with a constant (GrafcetSystem::int_inputs_ok): constant on each
         // region, so a table over the region index.

@@ -183,12 +183,7 @@ bool GrafcetSystem::compile(const model::Pou& pou, const model::Expr& e, CExpr& 
                                              {Op::Le, Op::Ge}, {Op::Gt, Op::Lt}, {Op::Ge, Op::Le}};
         op = mirror.at(op);
       }
-      if (is_int_input(l)) {
-        if (r.op != Op::Const) {
-          error(e.where, "integer input '" + gin_[l.ref].name +
-                             "' can only be compared with a constant in the Grafcet semantics");
-          return false;
-        }
+      if (is_int_input(l) && r.op == Op::Const) {
         const std::int64_t c = r.value;
         auto& th = gin_[l.ref].thresholds;
         // Values < c / >= c behave alike for Lt and Ge; Le, Gt split at c + 1; Eq, Ne at both.
@@ -241,12 +236,27 @@ bool GrafcetSystem::int_inputs_ok(const CExpr& e, const model::Expr& where) {
   for (std::size_t i = 0; i < e.args.size(); ++i) {
     const auto& a = e.args[i];
     if (a.op == Op::Input && gin_[a.ref].type.kind == model::TypeKind::Int) {
-      if (!(comparison && i == 0 && e.args[1].op == Op::Const)) {
-        error(where.where, "integer input '" + gin_[a.ref].name +
-                               "' can only be compared with a constant in the Grafcet semantics: " +
-                               model::to_st(where));
+      if (comparison && i == 0 && e.args[1].op == Op::Const) continue;  // regions (2.9)
+      const bool integer_context = comparison || e.op == Op::Add || e.op == Op::Sub ||
+                                   e.op == Op::Mul || e.op == Op::Div || e.op == Op::Mod ||
+                                   e.op == Op::Neg;
+      if (!integer_context) {
+        error(where.where,
+              "integer input '" + gin_[a.ref].name + "' used as a Boolean: " + model::to_st(where));
         return false;
       }
+      // Compared with another value or computed with: its exact value, one region per value.
+      auto& in = gin_[a.ref];
+      if (in.type.hi - in.type.lo + 1 > kMaxExactInputValues) {
+        error(where.where, "integer input '" + in.name + "' in " + model::to_st(where) +
+                               ": compared with a non-constant or computed with, it needs its "
+                               "exact value, and its range " +
+                               std::to_string(in.type.lo) + ".." + std::to_string(in.type.hi) +
+                               " has more than " + std::to_string(kMaxExactInputValues) +
+                               " values (give it a subrange type)");
+        return false;
+      }
+      in.exact = true;
       continue;
     }
     if (!int_inputs_ok(a, where)) return false;
@@ -285,6 +295,8 @@ void GrafcetSystem::finish_inputs() {
   for (auto& in : gin_) {
     if (in.type.kind != model::TypeKind::Int) continue;
     auto& th = in.thresholds;
+    if (in.exact)
+      for (std::int64_t x = in.type.lo + 1; x <= in.type.hi; ++x) th.push_back(x);
     std::sort(th.begin(), th.end());
     th.erase(std::unique(th.begin(), th.end()), th.end());
     in.region_lo = {in.type.lo};

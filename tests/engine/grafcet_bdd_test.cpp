@@ -193,6 +193,61 @@ TEST(GrafcetBdd, InstabilityIsDetectedSymbolically) {
   EXPECT_FALSE(s.results[0].findings.empty());
 }
 
+// Integer inputs compared with each other and computed with (an AGRAFE project writes
+// `i1 < e3 - 1`): they keep their exact value (docs/semantics.md 2.9). 1 --n < m--> 2
+// --n + m = 18--> 3 --n - m = 9--> 1, and 1 --2 * n = m + 19--> 3 can never fire (2n <= 18).
+// Both engines give the same states and verdicts; t3 from 3 needs n = 9 and m = 0 while 3 is
+// entered with n = m = 9: two input changes, so it fires only after m fell to 0.
+TEST(GrafcetBdd, IntegerInputsComputedWithKeepTheirExactValues) {
+  using model::ExprKind;
+  GrafcetBuilder b;
+  b.input("n", model::Type::integer("INT(0..9)", 0, 9))
+      .input("m", model::Type::integer("INT(0..9)", 0, 9));
+  b.chart("G").step("1", true).step("2").step("3");
+  const auto add = [](model::ExprPtr x, model::ExprPtr y) {
+    return model::make_binary(ExprKind::Add, std::move(x), std::move(y));
+  };
+  b.transition({"1"}, {"2"}, test::cmp(ExprKind::Lt, test::v("n"), test::v("m")));
+  b.transition({"2"}, {"3"},
+               test::cmp(ExprKind::Eq, add(test::v("n"), test::v("m")), test::num(18)));
+  b.transition(
+      {"3"}, {"1"},
+      test::cmp(ExprKind::Eq, model::make_binary(ExprKind::Sub, test::v("n"), test::v("m")),
+                test::num(9)));
+  b.transition(
+      {"1"}, {"3"},
+      test::cmp(ExprKind::Eq, model::make_binary(ExprKind::Mul, test::num(2), test::v("n")),
+                add(test::v("m"), test::num(19))));
+  const auto built = make(b.project(), true);
+  ASSERT_TRUE(built.ts);
+  Tally tally;
+  compare(built, 7, false, tally);
+  auto task = task_for(built.project, *built.ts, {"EF X3", "AG (X3 -> !X2)"}, {});
+  task.checks = {logic::StandardCheck::DeadTransitions};
+  const auto e = make_explicit_model_checker()->check(task);
+  ASSERT_EQ(e.results.size(), 3u);
+  EXPECT_EQ(e.results[0].verdict, logic::Verdict::Holds);  // n = m = 9 is reached
+  EXPECT_EQ(e.results[1].verdict, logic::Verdict::Holds);
+  EXPECT_EQ(e.results[2].verdict, logic::Verdict::Violated);  // 2 * n = m + 19 never holds
+  ASSERT_EQ(e.results[2].findings.size(), 1u);
+  EXPECT_NE(e.results[2].findings[0].find("X1 -> X3"), std::string::npos)
+      << e.results[2].findings[0];
+  // Each input keeps one region per value: 10 x 10 valuations at most per step.
+  EXPECT_GT(e.states.to_double(), 100.0);
+  // Used as a Boolean, or too wide to keep exactly: located errors.
+  GrafcetBuilder bad;
+  bad.input("n", model::Type::integer("INT", -32768, 32767))
+      .input("m", model::Type::integer("INT(0..9)", 0, 9));
+  bad.chart("G").step("1", true).step("2");
+  bad.transition({"1"}, {"2"}, test::cmp(ExprKind::Lt, test::v("n"), test::v("m")));
+  model::Diagnostics d;
+  semantics::GrafcetOptions o;
+  EXPECT_EQ(semantics::make_grafcet_system(bad.project(), o, d), nullptr);
+  ASSERT_FALSE(d.empty());
+  EXPECT_NE(d.back().message.find("has more than 1024 values"), std::string::npos)
+      << d.back().message;
+}
+
 // A counter stored out of its range is a range error, not a successor.
 TEST(GrafcetBdd, StoredValueOutOfRangeIsARangeError) {
   GrafcetBuilder b;

@@ -65,16 +65,18 @@ TEST(GrafcetInputs, IntegerInputsAreAbstractedByTheirComparisons) {
   EXPECT_NE(std::find(lines.begin(), lines.end(), "{2} --[3 <= n <= 4]--> {2}"), lines.end());
 }
 
-TEST(GrafcetInputs, ArithmeticOnIntegerInputsIsRejected) {
+// An integer input used as a Boolean is refused; compared with another input it keeps its
+// exact value (GrafcetBdd.IntegerInputsComputedWithKeepTheirExactValues).
+TEST(GrafcetInputs, IntegerInputUsedAsABooleanIsRejected) {
   GrafcetBuilder b;
-  b.input("n", model::Type::integer("INT(0..9)", 0, 9))
-      .input("m", model::Type::integer("INT(0..9)", 0, 9));
+  b.input("n", model::Type::integer("INT(0..9)", 0, 9)).input("a");
   b.chart("G").step("1", true).step("2");
-  b.transition({"1"}, {"2"}, cmp(ExprKind::Lt, v("n"), v("m")));
+  b.transition({"1"}, {"2"}, and_(v("a"), v("n")));
   model::Diagnostics d;
   EXPECT_EQ(semantics::make_grafcet_system(b.project(), {}, d), nullptr);
   ASSERT_FALSE(d.empty());
-  EXPECT_NE(d.back().message.find("compared with a constant"), std::string::npos);
+  EXPECT_NE(d.back().message.find("integer input 'n' used as a Boolean"), std::string::npos)
+      << d.back().message;
 }
 
 // Unused inputs are not part of the system: they cannot change the RSG.

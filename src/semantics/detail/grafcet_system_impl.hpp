@@ -123,13 +123,19 @@ struct GContinuous {
   CExpr condition;
 };
 
+/// Largest range of an integer input whose exact value the system keeps (docs/semantics.md 2.9).
+inline constexpr std::int64_t kMaxExactInputValues = 1024;
+
 struct GInput {
   std::string name;
   model::Type type;
   std::vector<std::int64_t> thresholds;  ///< integer: the region boundaries
   std::vector<std::int64_t> region_lo;   ///< integer: first value of each region
-  bool edge = false;                     ///< read under an edge
-  int order = 0;                         ///< declaration order (undeclared: after, by first use)
+  /// Integer, compared with a non-constant or used in arithmetic: one region per value (its
+  /// value is then exact, not the region's representative).
+  bool exact = false;
+  bool edge = false;  ///< read under an edge
+  int order = 0;      ///< declaration order (undeclared: after, by first use)
   bool pseudo = false;
   int delay = -1;  ///< pseudo: the delay it elapses
   int field = -1;  ///< InputMemory field, -1 when not stored
