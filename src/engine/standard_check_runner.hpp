@@ -13,6 +13,8 @@
 //   Set observable(o)                        reached situations where observable o is non-zero
 //   Set field_nonzero(f)                     reached situations where layout field f is non-zero
 //   bool can_fire(t); Set fires(t), fires_any()   reached situations where t (any) fires
+//   bool fires_initially(t)                  t is cleared while an initial situation
+//                                            stabilises (Grafcet; IEC 61131-3: false)
 //   Set stuck()                              reached situations without any successor
 //   Set pre(s), post(s)                      reached predecessors / successors of s
 //   Set backward(s)                          the reached situations from which s is reachable
@@ -342,6 +344,28 @@ class StandardCheckRunner {
     return out;
   }
 
+  /// Grafcet steps never active in a stable situation nor crossed after an event, but active
+  /// while an initial situation stabilises: the sources and targets of the transitions cleared
+  /// then (docs/semantics.md 2.11).
+  std::set<std::size_t> initially_crossed_steps(const std::map<std::size_t, Set>& transient) {
+    std::set<std::size_t> out;
+    if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
+    const auto matched = chart_transitions();
+    for (std::uint32_t t = 0; t < matched.size(); ++t) {
+      poll();
+      if (!sp_.fires_initially(t)) continue;
+      for (std::size_t i = 0; i < steps_.size(); ++i) {
+        if (transient.count(i) || !model::iequals(ts_.transitions()[t].chart, steps_[i].chart))
+          continue;
+        bool crossed = false;
+        for (const auto* list : {&matched[t]->sources, &matched[t]->targets})
+          for (const auto& d : *list) crossed = crossed || model::iequals(d, steps_[i].step);
+        if (crossed && sp_.empty(step_set(steps_[i]))) out.insert(i);
+      }
+    }
+    return out;
+  }
+
   /// Re-entry of a transient step: from every reachable situation an evolution entering it
   /// stays reachable. Adds a finding and a trace when not.
   void transient_reentry(PropertyResult& r, std::size_t step, const Set& entry,
@@ -373,9 +397,10 @@ class StandardCheckRunner {
       seen[i] = !sp_.empty(step_set(steps_[i]));
     }
     const auto transient = sp_.complete() ? transient_steps() : std::map<std::size_t, Set>{};
+    const auto at_start = initially_crossed_steps(transient);
     std::size_t missing = 0;
     for (std::size_t i = 0; i < steps_.size(); ++i)
-      if (!seen[i] && !transient.count(i)) {
+      if (!seen[i] && !transient.count(i) && !at_start.count(i)) {
         ++missing;
         if (sp_.complete()) add(r, "step " + logic::describe_step(steps_[i]) + " is never active");
       }
@@ -385,10 +410,14 @@ class StandardCheckRunner {
                   " steps not reached before the limit; " + limit_message();
       return;
     }
+    std::string apart;
+    if (!transient.empty())
+      apart = std::to_string(transient.size()) + " only during transient evolutions";
+    if (!at_start.empty())
+      apart += (apart.empty() ? "" : ", ") + std::to_string(at_start.size()) +
+               " only while the initial situation stabilises";
     finish(r, "all " + std::to_string(steps_.size()) + " steps are reachable" +
-                  (transient.empty() ? ""
-                                     : " (" + std::to_string(transient.size()) +
-                                           " only during transient evolutions)"));
+                  (apart.empty() ? "" : " (" + apart + ")"));
   }
 
   void dead_transitions(PropertyResult& r) {
@@ -401,7 +430,8 @@ class StandardCheckRunner {
     std::size_t dead = 0;
     for (std::uint32_t t = 0; t < trs.size(); ++t) {
       poll();
-      if (!sp_.can_fire(t)) {
+      // Cleared while an initial situation stabilises counts as firing (docs/semantics.md 2.11).
+      if (!sp_.can_fire(t) && !sp_.fires_initially(t)) {
         ++dead;
         if (sp_.complete())
           add(r, "transition " + trs[t].name +

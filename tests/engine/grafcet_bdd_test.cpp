@@ -248,6 +248,38 @@ TEST(GrafcetBdd, IntegerInputsComputedWithKeepTheirExactValues) {
       << d.back().message;
 }
 
+// 1 --1--> 2 --a--> 3 --1--> 4 --!a--> 2: step 1 is active only while the initial situation
+// stabilises, step 3 only during the evolutions after a rises. Both count as reached, apart,
+// and `1 -> 2` fires (docs/semantics.md 2.5); X1 is still left for good (local-deadlock).
+TEST(GrafcetBdd, StepsCrossedAtTheStartAreReachedApart) {
+  GrafcetBuilder b;
+  b.input("a").chart("G").step("1", true).step("2").step("3").step("4");
+  b.transition({"1"}, {"2"}, test::lit(true))
+      .transition({"2"}, {"3"}, test::v("a"))
+      .transition({"3"}, {"4"}, test::lit(true))
+      .transition({"4"}, {"2"}, test::not_(test::v("a")));
+  const auto built = make(b.project(), true);
+  ASSERT_TRUE(built.ts);
+  auto task = task_for(built.project, *built.ts, {}, {});
+  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::DeadTransitions,
+                 logic::StandardCheck::LocalDeadlock};
+  const auto e = make_explicit_model_checker()->check(task);
+  const auto s = make_bdd_model_checker()->check(task);
+  for (const auto* r : {&e, &s}) {
+    ASSERT_EQ(r->results.size(), 3u);
+    EXPECT_EQ(r->results[0].verdict, logic::Verdict::Holds) << r->results[0].message;
+    EXPECT_NE(r->results[0].message.find(
+                  "1 only during transient evolutions, 1 only while the initial situation "
+                  "stabilises"),
+              std::string::npos)
+        << r->results[0].message;
+    EXPECT_EQ(r->results[1].verdict, logic::Verdict::Holds) << r->results[1].message;
+    EXPECT_EQ(r->results[2].verdict, logic::Verdict::Violated);
+    ASSERT_EQ(r->results[2].findings.size(), 1u);
+    EXPECT_NE(r->results[2].findings[0].find("X1"), std::string::npos);
+  }
+}
+
 // A counter stored out of its range is a range error, not a successor.
 TEST(GrafcetBdd, StoredValueOutOfRangeIsARangeError) {
   GrafcetBuilder b;

@@ -355,6 +355,7 @@ class Run {
     }
     Set field_nonzero(std::uint32_t f) { return run_.reached_ & sys_.field_nonzero(f); }
     bool can_fire(std::uint32_t t) { return !fires(t).is_false(); }
+    bool fires_initially(std::uint32_t t) const { return sys_.fires_initially(t); }
     Set fires(std::uint32_t t) { return run_.reached_ & sys_.fires(t); }
     Set fires_any() { return run_.reached_ & sys_.fires_any(); }
     Set stuck() const { return run_.reached_ & !sys_.has_successor(); }

@@ -259,12 +259,19 @@ void GrafcetClosure::compute_initial() {
   const Bdd errors = backward(reach & error_, reach);
   initial_anomaly_ = !(st & !good).is_false();
   initial_range_ = !(st & errors).is_false();
+  initial_good_ = good;
   have_initial_ = true;
 }
 
 Bdd GrafcetClosure::initial() {
   compute_initial();
   return initial_set_;
+}
+
+bool GrafcetClosure::fires_initially(std::uint32_t transition) {
+  compute_initial();
+  // Cleared on a run that stabilises (as the explicit engine's initial edges record it).
+  return !(initial_good_ & cleared_[transition]).is_false();
 }
 
 bool GrafcetClosure::initial_anomaly() {

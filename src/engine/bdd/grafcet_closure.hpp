@@ -43,6 +43,8 @@ class GrafcetClosure {
   /// Initial stable situations (over C), and whether some initial valuation is anomalous.
   Bdd initial();
   bool initial_anomaly();
+  /// Whether transition t is cleared while some initial valuation stabilises.
+  bool fires_initially(std::uint32_t transition);
   bool initial_range_error();
 
   /// The sources the relation is computed from (preimage, has_successor, fires, anomalies): by
@@ -106,6 +108,7 @@ class GrafcetClosure {
   bool have_initial_ = false;
   Bdd initial_set_;
   bool initial_anomaly_ = false, initial_range_ = false;
+  Bdd initial_good_;  ///< initial configurations whose run stabilises
 };
 
 }  // namespace sfcv::engine

@@ -310,6 +310,10 @@ Bdd SymbolicSystem::unstable_states() const {
   return grafcet_ ? grafcet_->unstable_states() : Bdd::constant(false);
 }
 
+bool SymbolicSystem::fires_initially(std::uint32_t transition) const {
+  return grafcet_ && grafcet_->fires_initially(transition);
+}
+
 bool SymbolicSystem::initial_unstable() const {
   return grafcet_ && grafcet_->initial_anomaly() && !grafcet_->initial_range_error();
 }

@@ -66,6 +66,8 @@ class SymbolicSystem {
   /// initial_range_error(): some raises a range error.
   Bdd unstable_states() const;
   bool initial_unstable() const;
+  /// Grafcet: transition t is cleared while an initial situation stabilises (IEC: false).
+  bool fires_initially(std::uint32_t transition) const;
   bool initial_range_error() const;
   /// Grafcet: the situations whose successors preimage, has_successor, fires and the anomaly
   /// sets describe (the reached set); without it the system computes the reachable set itself.

@@ -68,6 +68,7 @@ class ExplicitSpace {
     return r;
   }
   bool can_fire(std::uint32_t t) const { return g_.fired_somewhere()[t]; }
+  bool fires_initially(std::uint32_t t) const { return g_.fired_initially()[t]; }
   Set fires(std::uint32_t t) const {
     return edge_sources([&](std::uint64_t e) {
       for (auto x : g_.fired(e))

@@ -137,7 +137,10 @@ class Collector final : public semantics::SuccessorSink {
 }  // namespace
 
 ReachableSituationGraph::ReachableSituationGraph(const semantics::TransitionSystem& ts)
-    : ts_(&ts), states_(ts.layout().words()), fired_somewhere_(ts.transitions().size(), false) {}
+    : ts_(&ts),
+      states_(ts.layout().words()),
+      fired_somewhere_(ts.transitions().size(), false),
+      fired_initially_(ts.transitions().size(), false) {}
 
 std::uint32_t ReachableSituationGraph::intern_condition(InputCondition c) {
   if (2 * (conditions_.size() + 1) > condition_table_.size()) {
@@ -244,6 +247,7 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
     }
     for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
     for (auto& p : init.pending) {
+      for (auto t : p.fired) g.fired_initially_[t] = true;
       g.initial_.push_back(p.target);
       g.initial_condition_ids_.push_back(g.intern_condition(std::move(p.condition).take()));
     }

@@ -98,6 +98,8 @@ class ReachableSituationGraph {
 
   /// Transitions that fired on at least one edge (dead-transition check), by TS index.
   const std::vector<bool>& fired_somewhere() const { return fired_somewhere_; }
+  /// Transitions cleared while an initial situation stabilised (Grafcet), by TS index.
+  const std::vector<bool>& fired_initially() const { return fired_initially_; }
 
   const std::vector<semantics::Anomaly>& anomalies() const { return anomalies_; }
 
@@ -132,6 +134,7 @@ class ReachableSituationGraph {
   std::vector<std::uint64_t> parent_edge_;        ///< BFS parent edge id
   std::vector<std::uint32_t> depth_;
   std::vector<bool> fired_somewhere_;
+  std::vector<bool> fired_initially_;
   std::vector<semantics::Anomaly> anomalies_;
   mutable std::vector<std::uint64_t> pred_offsets_, pred_edges_;
   bool complete_ = false;
