@@ -250,6 +250,9 @@ std::optional<Ref> Compiler::function_in_out(
   for (const auto& [name, field] : global_fields)
     if (field == ref->index && mentioned.count(name))
       return alias("a global variable that " + f.name + " names");
+  for (const auto& pou : project.pous)
+    if (pou.kind == model::PouKind::Program && mentioned.count(model::to_upper(pou.name)))
+      return alias("and " + f.name + " names variables of program " + pou.name);
   return ref;
 }
 

@@ -436,6 +436,17 @@ TEST(FunctionsE2E, InOutOfAFunctionRefusesEveryAlias) {
     SCOPED_TRACE(body);
     EXPECT_NE(error_of("", body).find(why), std::string::npos) << error_of("", body);
   }
+  // A function that reads a program's variable by path could reach the bound variable.
+  const auto by_path = run_sfcv(
+      check_command(write_temp("FUNCTION Peek : BOOL\n  VAR_IN_OUT n : INT(0..7); END_VAR\n"
+                               "  n := 1;\n  Peek := Main.c > 0;\nEND_FUNCTION\n"
+                               "PROGRAM Main\n  VAR c : INT(0..7); p : BOOL; END_VAR\n"
+                               "  p := Peek(n := c);\nEND_PROGRAM\n",
+                               ".st"),
+                    "explicit", "--ctl 'AG TRUE'"));
+  EXPECT_EQ(by_path.exit_code, 2) << by_path.out << by_path.err;
+  EXPECT_NE(by_path.err.find("Peek names variables of program Main"), std::string::npos)
+      << by_path.err;
   // An INT function: its VAR_IN_OUT bound to the assignment's own target.
   const auto r = run_sfcv(check_command(
       write_temp("FUNCTION Inc : INT\n  VAR_IN_OUT n : INT(0..7); END_VAR\n"
