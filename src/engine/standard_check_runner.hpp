@@ -868,10 +868,7 @@ class StandardCheckRunner {
       return;
     }
     if (ts_.kind() == semantics::SemanticsKind::Grafcet) {
-      r.verdict = Verdict::NotChecked;
-      r.message =
-          "not checked for Grafcet: continuous actions only assert their output; stored "
-          "actions assigning different values at once are reported by stored-actions";
+      grafcet_output_conflicts(r);
       return;
     }
     std::vector<std::string> not_checked;
@@ -901,6 +898,39 @@ class StandardCheckRunner {
       r.verdict = Verdict::NotChecked;
       r.message = "not checked: " + not_checked.front();
     }
+  }
+
+  /// Grafcet: a variable written by both continuous and stored actions, in the situations
+  /// where its continuous assignation and its stored value disagree (docs/semantics.md 2.7).
+  /// Continuous actions only assert their output, and stored actions writing different values
+  /// in one evolution are stored-actions' findings.
+  void grafcet_output_conflicts(PropertyResult& r) {
+    std::optional<State> first;
+    const auto mixed = logic::grafcet_mixed_writers(ts_, *task_.project);
+    for (const auto& m : mixed) {
+      poll();
+      const Set assigned = sp_.field_nonzero(m.assigned), stored = sp_.field_nonzero(m.stored);
+      const std::pair<Set, const char*> disagreements[] = {
+          {sp_.minus(assigned, stored),
+           "a continuous action assigns it 1 while its stored value is 0"},
+          {sp_.minus(stored, assigned),
+           "its stored value is 1 while no continuous action assigns it (the assignation rule "
+           "gives 0)"}};
+      for (const auto& [where, what] : disagreements) {
+        if (sp_.empty(where)) continue;
+        const State s = sp_.one(where);
+        add(r, m.what + ": " + what + ", in situation " + sp_.describe(s));
+        note(first, s);
+      }
+    }
+    if (first) {
+      r.trace = sp_.path_to(sp_.singleton(*first));
+      r.trace->note =
+          "in the last situation the continuous assignation and the stored value disagree";
+    }
+    finish(r, mixed.empty() ? "no variable is written by both continuous and stored actions"
+                            : "the continuous assignation and the stored value of every variable "
+                              "written both ways always agree");
   }
 
   void instability(PropertyResult& r) {

@@ -7,6 +7,7 @@
 
 #include "logic/formula.hpp"
 #include "model/names.hpp"
+#include "semantics/grafcet_system.hpp"
 
 namespace sfcv::logic {
 
@@ -401,6 +402,48 @@ std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::Tra
           for (const auto b : bs)
             if (a != b) q.together.emplace_back(a, b);
       }
+  }
+  return out;
+}
+
+std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem& ts,
+                                               const model::Project& project) {
+  std::vector<MixedWriter> out;
+  if (ts.kind() != semantics::SemanticsKind::Grafcet) return out;
+  const auto& fields = ts.layout().fields();
+  const std::string_view suffix = semantics::kStoredFieldSuffix;
+  auto steps_list = [](const std::vector<std::string>& steps) {
+    std::string text = steps.size() == 1 ? "step " : "steps ";
+    for (std::size_t i = 0; i < steps.size(); ++i) text += (i ? ", " : "") + steps[i];
+    return text;
+  };
+  auto add_once = [](std::vector<std::string>& list, const std::string& step) {
+    if (std::find(list.begin(), list.end(), step) == list.end()) list.push_back(step);
+  };
+  for (std::uint32_t f = 0; f < fields.size(); ++f) {
+    const auto& name = fields[f].name;
+    if (fields[f].kind != semantics::FieldKind::Variable || name.size() <= suffix.size() ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    MixedWriter m;
+    m.variable = name.substr(0, name.size() - suffix.size());
+    m.stored = f;
+    // The assignation field is declared just before (GrafcetSystem::build_variable_fields).
+    if (f == 0 || fields[f - 1].name != m.variable) continue;
+    m.assigned = f - 1;
+    std::vector<std::string> continuous, stored;
+    for (const auto& pou : project.pous) {
+      for (const auto& sa : pou.stored_actions)
+        if (model::iequals(sa.variable, m.variable)) add_once(stored, sa.step);
+      for (const auto& as : pou.associations) {
+        const auto* action = pou.find_action(as.action);
+        if (model::iequals(action ? action->variable : as.action, m.variable))
+          add_once(continuous, as.step);
+      }
+    }
+    m.what = m.variable + " is written by continuous actions (" + steps_list(continuous) +
+             ") and by stored actions (" + steps_list(stored) + ")";
+    out.push_back(std::move(m));
   }
   return out;
 }

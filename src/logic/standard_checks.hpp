@@ -148,4 +148,17 @@ struct InstanceWriteConflict {
 std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::TransitionSystem& ts,
                                                             const model::Project& project);
 
+/// A Boolean variable of a Grafcet written by both continuous and stored actions, which
+/// IEC 60848 gives one mode only: the layout fields of its continuous assignation and of its
+/// stored value (semantics::kStoredFieldSuffix). output-conflicts reports the situations where
+/// the two disagree. `what` names the writers ("Y is written by continuous actions (steps 2)
+/// and stored actions (step 3)").
+struct MixedWriter {
+  std::string variable;
+  std::uint32_t assigned = 0, stored = 0;
+  std::string what;
+};
+std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem& ts,
+                                               const model::Project& project);
+
 }  // namespace sfcv::logic

@@ -139,6 +139,21 @@ void Validator::check_stored_action(const StoredAction& sa) {
   }
   if (v->direction == VarDirection::Input)
     write_to_input(here, "stored action assigns input variable " + quoted(sa.variable));
+  // Once per variable, at its first stored action.
+  const bool first_stored =
+      &sa ==
+      &*std::find_if(pou_->stored_actions.begin(), pou_->stored_actions.end(),
+                     [&](const StoredAction& x) { return iequals(x.variable, sa.variable); });
+  const bool continuous =
+      std::any_of(pou_->associations.begin(), pou_->associations.end(), [&](const auto& as) {
+        const Action* a = pou_->find_action(as.action);
+        return iequals(a ? a->variable : as.action, sa.variable);
+      });
+  if (first_stored && continuous)
+    warning(here, "variable " + quoted(sa.variable) +
+                      " is written by both continuous and stored actions: IEC 60848 gives a "
+                      "variable one mode; sfcv reads it as 1 when either gives 1, and "
+                      "output-conflicts reports where the two disagree");
   const auto target = value_type(v->type);
   if (!target) {
     error(here, "stored action assigns function block instance " + quoted(sa.variable));

@@ -173,18 +173,20 @@ void GrafcetSystem::build_macro_step_activity() {
   }
 }
 
-// Writers: stored actions and continuous actions (a variable is written by one kind only).
+// Writers: stored actions and continuous actions. A Boolean variable both kinds write is kept
+// (IEC 60848 gives it one mode; output-conflicts reports where the two disagree, 2.7).
 void GrafcetSystem::build_variables(const model::Project& project) {
   for (const auto& pou : project.pous) {
     auto var_of = [&](const std::string& name, bool continuous,
                       const model::SourceLocation& where) -> int {
       const std::string key = model::to_upper(pou.name) + "." + model::to_upper(name);
       if (auto it = var_index_.find(key); it != var_index_.end()) {
-        if (vars_[it->second].continuous != continuous) {
-          error(where, "variable '" + name +
-                           "' is written by both continuous and stored actions (IEC 60848 forbids "
-                           "it)");
+        auto& v = vars_[static_cast<std::size_t>(it->second)];
+        if (continuous && v.type.kind != model::TypeKind::Bool) {
+          error(where, "continuous action on non-Boolean variable '" + name + "'");
+          return -1;
         }
+        (continuous ? v.continuous : v.stored) = true;
         return it->second;
       }
       GVar v;
@@ -199,7 +201,7 @@ void GrafcetSystem::build_variables(const model::Project& project) {
         error(where, "continuous action on non-Boolean variable '" + name + "'");
         return -1;
       }
-      v.continuous = continuous;
+      (continuous ? v.continuous : v.stored) = true;
       vars_.push_back(v);
       var_index_[key] = static_cast<int>(vars_.size() - 1);
       return static_cast<int>(vars_.size() - 1);
@@ -231,6 +233,9 @@ void GrafcetSystem::build_variable_fields() {
     const auto lo = v.type.kind == model::TypeKind::Bool ? 0 : v.type.lo;
     const auto hi = v.type.kind == model::TypeKind::Bool ? 1 : v.type.hi;
     v.field = static_cast<int>(layout_.add_field(v.name, FieldKind::Variable, lo, hi));
+    if (v.mixed())
+      v.memory_field = static_cast<int>(
+          layout_.add_field(v.name + std::string(kStoredFieldSuffix), FieldKind::Variable, 0, 1));
   }
 }
 
@@ -420,7 +425,8 @@ void GrafcetSystem::build_observables(const model::Project& project) {
     observables_.push_back(o);
     obs_info_.push_back({ObsRef::Step, static_cast<int>(i)});
   }
-  for (const auto& v : vars_) {
+  for (std::size_t i = 0; i < vars_.size(); ++i) {
+    const auto& v = vars_[i];
     Observable o;
     o.name = v.name;
     o.type = v.type;
@@ -431,7 +437,7 @@ void GrafcetSystem::build_observables(const model::Project& project) {
         o.is_output = decl->direction == model::VarDirection::Output ||
                       decl->direction == model::VarDirection::InOut;
     observables_.push_back(o);
-    obs_info_.push_back({ObsRef::Field, v.field});
+    obs_info_.push_back({ObsRef::Variable, static_cast<int>(i)});
   }
   for (std::size_t i = 0; i < gin_.size(); ++i) {
     if (gin_[i].field < 0) continue;
@@ -455,7 +461,7 @@ void GrafcetSystem::build_initial_situation(const model::Project& project) {
     for (const auto& pou : project.pous)
       if (const auto* decl = pou.find_variable(v.name); decl && decl->initial)
         init = *decl->initial;
-    layout_.set(initial_template_, static_cast<std::uint32_t>(v.field), init);
+    layout_.set(initial_template_, static_cast<std::uint32_t>(v.stored_field()), init);
   }
 }
 

@@ -59,6 +59,12 @@ class CircuitBuilder {
     if (bits.empty()) throw std::logic_error("grafcet circuit: field read outside its context");
     return bv_add(aig_, bv_resize(bits, kWidth, false), constant(field(f).lo));
   }
+  /// Variable `var`'s value: either field when both kinds of action write it (Boolean).
+  Value variable(const State& st, int var) {
+    const auto& gv = s_.vars_[static_cast<std::size_t>(var)];
+    if (!gv.mixed()) return decode(st, gv.field);
+    return from_bool(aig_.make_or(bit(st, gv.field), bit(st, gv.memory_field)));
+  }
   BitVector encode(const Value& v, int f) {
     const Value shifted = bv_sub(aig_, v, constant(field(f).lo));
     return BitVector(shifted.begin(), shifted.begin() + field(f).width);
@@ -167,9 +173,12 @@ void CircuitBuilder::collect_edge_fields(const CExpr& e, bool under_edge,
         for (int f : gs.derived_from) out.insert(f);
         break;
       }
-      case Op::Var:
-        out.insert(s_.vars_[static_cast<std::size_t>(e.ref)].field);
+      case Op::Var: {
+        const auto& gv = s_.vars_[static_cast<std::size_t>(e.ref)];
+        out.insert(gv.field);
+        if (gv.mixed()) out.insert(gv.memory_field);
         break;
+      }
       case Op::Delay:
         out.insert(s_.delays_[static_cast<std::size_t>(e.ref)].field);
         break;
@@ -205,7 +214,7 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
     case Op::Step:
       return from_bool(active(*c.cur, e.ref));
     case Op::Var:
-      return decode(*c.cur, s_.vars_[static_cast<std::size_t>(e.ref)].field);
+      return variable(*c.cur, e.ref);
     case Op::Delay: {
       const auto& bits =
           (*c.cur)[static_cast<std::size_t>(s_.delays_[static_cast<std::size_t>(e.ref)].field)];
@@ -452,8 +461,8 @@ State CircuitBuilder::evolve(const State& cur, const State& prev, AigLit& error,
                                       bv_less_signed(aig_, constant(gv.type.hi), v));
       error = aig_.make_or(error, aig_.make_and(w.when, out));
     }
-    auto& bits = next[static_cast<std::size_t>(gv.field)];
-    bits = bv_mux(aig_, w.when, encode(v, gv.field), bits);
+    auto& bits = next[static_cast<std::size_t>(gv.stored_field())];
+    bits = bv_mux(aig_, w.when, encode(v, gv.stored_field()), bits);
   }
   // Delay phases follow their expression in the new situation (edges relative to `cur`, with
   // the same inputs), one delay after the other.
@@ -635,9 +644,15 @@ void CircuitBuilder::build() {
         c_.observable_bits.push_back({active(cur, o.index)});
         c_.observable_lo.push_back(0);
         break;
-      case ObsRef::Field: {
-        c_.observable_bits.push_back(cur[static_cast<std::size_t>(o.index)]);
-        c_.observable_lo.push_back(fields[static_cast<std::size_t>(o.index)].lo);
+      case ObsRef::Variable: {
+        const int f = s_.vars_[static_cast<std::size_t>(o.index)].field;
+        if (s_.vars_[static_cast<std::size_t>(o.index)].mixed()) {
+          c_.observable_bits.push_back({truth(variable(cur, o.index))});
+          c_.observable_lo.push_back(0);
+          break;
+        }
+        c_.observable_bits.push_back(cur[static_cast<std::size_t>(f)]);
+        c_.observable_lo.push_back(fields[static_cast<std::size_t>(f)].lo);
         break;
       }
       case ObsRef::Input: {

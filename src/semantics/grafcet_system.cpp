@@ -315,6 +315,13 @@ bool GrafcetSystem::active(StateView s, int step) const {
   return false;
 }
 
+std::int64_t GrafcetSystem::value_of(StateView s, int var) const {
+  const auto& gv = vars_[static_cast<std::size_t>(var)];
+  const auto x = layout_.get(s, static_cast<std::uint32_t>(gv.field));
+  if (!gv.mixed()) return x;
+  return (x | layout_.get(s, static_cast<std::uint32_t>(gv.memory_field))) != 0 ? 1 : 0;
+}
+
 Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
   switch (e.op) {
     case Op::Const:
@@ -333,7 +340,7 @@ Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
     case Op::Step:
       return {true, active(c.cur, e.ref) ? 1 : 0};
     case Op::Var:
-      return {true, layout_.get(c.cur, static_cast<std::uint32_t>(vars_[e.ref].field))};
+      return {true, value_of(c.cur, e.ref)};
     case Op::Delay: {
       const auto ph = layout_.get(c.cur, static_cast<std::uint32_t>(delays_[e.ref].field));
       return {true, ph >= 2 ? 1 : 0};
@@ -613,7 +620,7 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
         r.anomaly.condition.cubes = {cube_of(v)};
         return Status::Anomaly;
       }
-      layout_.set(next, static_cast<std::uint32_t>(gv.field), val);
+      layout_.set(next, static_cast<std::uint32_t>(gv.stored_field()), val);
     }
     // Delay phases follow their expression in the new situation.
     {
@@ -787,8 +794,8 @@ std::int64_t GrafcetSystem::observe(StateView state, std::uint32_t index) const 
   switch (o.ref) {
     case ObsRef::Step:
       return active(state, o.index) ? 1 : 0;
-    case ObsRef::Field:
-      return layout_.get(state, static_cast<std::uint32_t>(o.index));
+    case ObsRef::Variable:
+      return value_of(state, o.index);
     case ObsRef::Input: {
       const auto& in = gin_[static_cast<std::size_t>(o.index)];
       const auto v = layout_.get(state, static_cast<std::uint32_t>(in.field));
@@ -809,8 +816,9 @@ std::string GrafcetSystem::describe(StateView state) const {
   std::string out = "{";
   for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + names[i];
   out += "}";
-  for (const auto& v : vars_) {
-    const auto x = layout_.get(state, static_cast<std::uint32_t>(v.field));
+  for (std::size_t i = 0; i < vars_.size(); ++i) {
+    const auto& v = vars_[i];
+    const auto x = value_of(state, static_cast<int>(i));
     if (v.type.kind == model::TypeKind::Bool) {
       if (x) out += " " + v.name;
     } else {

@@ -18,12 +18,19 @@
 // modelled by one pseudo-input per delay (InputVariable::pseudo), so each input valuation still
 // gives one successor. Inputs that the grafcet never reads are not part of the system.
 
+#include <string_view>
+
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
 #include "semantics/options.hpp"
 #include "semantics/transition_system.hpp"
 
 namespace sfcv::semantics {
+
+/// A Boolean variable written by both continuous and stored actions has two Variable fields:
+/// its name holds the continuous assignation as emitted, its name with this suffix the value
+/// the stored actions keep; the variable reads 1 when either does (docs/semantics.md 2.7).
+inline constexpr std::string_view kStoredFieldSuffix = ".stored";
 
 /// Compiles every POU of `project` that has charts into one Grafcet system (the partial grafcets
 /// run together). Returns null and adds diagnostics when the model is out of scope (unknown

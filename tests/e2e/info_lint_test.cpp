@@ -139,6 +139,32 @@ TEST(Lint, WarningsAloneExitZero) {
   EXPECT_NE(r.out.find("0 errors, 1 warning\n"), std::string::npos) << r.out;
 }
 
+// A Grafcet output written by both continuous and stored actions: lint warns once, at its
+// first stored action; check loads it and output-conflicts is violated (exit 1).
+TEST(Lint, GrafcetOutputWrittenBothWaysIsAWarningAndAFinding) {
+  const std::string path = write_temp(
+      "project lamp;\ninput a, b;\noutput y;\ngrafcet G {\n  step 1 initial;\n  step 2, 3;\n"
+      "  transition 1: 1 -> 2 when a;\n  transition 2: 2 -> 3 when b;\n"
+      "  transition 3: 3 -> 1 when !a;\n  action 2: y;\n  action 3 on_enter: y := 1;\n"
+      "  action 1 on_enter: y := 0;\n}\n",
+      ".g7");
+  const auto lint = run_sfcv("lint " + q(path));
+  EXPECT_EQ(lint.exit_code, 0) << lint.out;
+  EXPECT_NE(lint.out.find(path + ":11:3: warning: variable 'y' is written by both continuous and "
+                                 "stored actions"),
+            std::string::npos)
+      << lint.out;
+  EXPECT_NE(lint.out.find("0 errors, 1 warning\n"), std::string::npos) << lint.out;
+  for (const char* engine : {"explicit", "bdd"}) {
+    const auto check =
+        run_sfcv("check " + q(path) + " --engine " + engine + " --checks output-conflicts");
+    EXPECT_EQ(check.exit_code, 1) << check.out << check.err;
+    EXPECT_NE(check.out.find("its stored value is 1 while no continuous action assigns it"),
+              std::string::npos)
+        << check.out;
+  }
+}
+
 TEST(Lint, ErrorsExitTwoWithEveryDiagnosticLocated) {
   const std::string path = write_temp(
       program(kValidLoop +

@@ -58,7 +58,7 @@ Built make(model::Project p, bool single) {
 }
 
 struct Tally {
-  int unstable = 0, traces = 0, violated = 0, stored = 0, conflicts = 0;
+  int unstable = 0, traces = 0, violated = 0, stored = 0, conflicts = 0, mixed = 0;
 };
 
 /// Explicit and BDD reports on the same task: equal states and verdicts, BDD traces replay.
@@ -109,6 +109,8 @@ void compare(const Built& b, std::uint64_t seed, bool with_fairness, Tally& tall
         s.results[i].check == "instability" && s.results[i].verdict == logic::Verdict::Violated;
     tally.conflicts +=
         s.results[i].check == "conflicts" && s.results[i].verdict == logic::Verdict::Violated;
+    tally.mixed += s.results[i].check == "output-conflicts" &&
+                   s.results[i].verdict == logic::Verdict::Violated;
   }
 }
 
@@ -129,6 +131,7 @@ TEST(GrafcetBdd, RandomGrafcetsAgreeWithTheExplicitRsg) {
   EXPECT_GT(tally.violated, 100);
   EXPECT_GT(tally.stored, 2) << tally.stored;  // stored actions set to different values at once
   EXPECT_GT(tally.conflicts, 5) << tally.conflicts;  // two transitions of one step fire together
+  EXPECT_GT(tally.mixed, 5) << tally.mixed;          // y's continuous and stored writers disagree
 }
 
 /// The circuit's reachable set, counted by the symbolic system alone, equals the RSG's nodes
@@ -278,6 +281,86 @@ TEST(GrafcetBdd, StepsCrossedAtTheStartAreReachedApart) {
     ASSERT_EQ(r->results[2].findings.size(), 1u);
     EXPECT_NE(r->results[2].findings[0].find("X1"), std::string::npos);
   }
+}
+
+// A Boolean output written by both continuous and stored actions (IEC 60848 gives a variable
+// one mode) loads; it reads 1 when either mode gives 1, and output-conflicts reports both ways
+// the modes disagree, on both engines (docs/semantics.md 2.7):
+// 1 --a--> 2 --b--> 3 --!a--> 1, y continuous in 2, stored y := 1 entering 3, y := 0 entering 1.
+TEST(GrafcetBdd, VariableWrittenByContinuousAndStoredActionsIsReadAsEither) {
+  GrafcetBuilder b;
+  b.input("a").input("b").output("y").chart("G").step("1", true).step("2").step("3");
+  b.transition({"1"}, {"2"}, test::v("a"))
+      .transition({"2"}, {"3"}, test::v("b"))
+      .transition({"3"}, {"1"}, test::not_(test::v("a")));
+  b.continuous("2", "y");
+  b.stored("3", model::StoredWhen::Activation, "y", test::lit(true));
+  b.stored("1", model::StoredWhen::Activation, "y", test::lit(false));
+  const auto built = make(b.project(), true);
+  ASSERT_TRUE(built.ts);
+  auto task = task_for(built.project, *built.ts,
+                       {"AG (X2 -> y)", "AG (X3 -> y)", "AG (X1 -> !y)", "EF (X1 & y)"}, {});
+  task.checks = {logic::StandardCheck::OutputConflicts};
+  const auto e = make_explicit_model_checker()->check(task);
+  const auto s = make_bdd_model_checker()->check(task);
+  EXPECT_EQ(e.states, s.states);
+  for (const auto* r : {&e, &s}) {
+    ASSERT_EQ(r->results.size(), 5u);
+    for (std::size_t i = 0; i < 3; ++i)
+      EXPECT_EQ(r->results[i].verdict, logic::Verdict::Holds) << r->results[i].formula;
+    EXPECT_EQ(r->results[3].verdict, logic::Verdict::Violated);
+    const auto& oc = r->results[4];
+    EXPECT_EQ(oc.verdict, logic::Verdict::Violated);
+    ASSERT_EQ(oc.findings.size(), 2u);
+    EXPECT_NE(oc.findings[0].find("y is written by continuous actions (step 2) and by stored "
+                                  "actions (steps 3, 1): a continuous action assigns it 1 while "
+                                  "its stored value is 0, in situation {2}"),
+              std::string::npos)
+        << oc.findings[0];
+    EXPECT_NE(oc.findings[1].find("its stored value is 1 while no continuous action assigns it"),
+              std::string::npos)
+        << oc.findings[1];
+    ASSERT_TRUE(oc.trace);
+    test::expect_trace_replays(*built.ts, *oc.trace);
+  }
+  // Without the stored actions the check has nothing to judge and holds.
+  GrafcetBuilder plain;
+  plain.input("a").output("y").chart("G").step("1", true).step("2");
+  plain.transition({"1"}, {"2"}, test::v("a")).transition({"2"}, {"1"}, test::not_(test::v("a")));
+  plain.continuous("2", "y");
+  const auto p = make(plain.project(), true);
+  ASSERT_TRUE(p.ts);
+  auto plain_task = task_for(p.project, *p.ts, {}, {});
+  plain_task.checks = {logic::StandardCheck::OutputConflicts};
+  for (const auto& r : {make_explicit_model_checker()->check(plain_task),
+                        make_bdd_model_checker()->check(plain_task)}) {
+    ASSERT_EQ(r.results.size(), 1u);
+    EXPECT_EQ(r.results[0].verdict, logic::Verdict::Holds) << r.results[0].message;
+  }
+}
+
+// An integer counter cannot also be a continuous action's output: a located error.
+TEST(GrafcetBdd, IntegerVariableWithAContinuousActionIsRejected) {
+  GrafcetBuilder b;
+  b.input("a").chart("G").step("1", true).step("2");
+  b.pou().variables.push_back({"k",
+                               model::VarDirection::Local,
+                               model::Type::integer("INT", 0, 3),
+                               std::nullopt,
+                               "",
+                               {},
+                               {},
+                               {}});
+  b.transition({"1"}, {"2"}, test::v("a")).transition({"2"}, {"1"}, test::not_(test::v("a")));
+  b.stored("2", model::StoredWhen::Activation, "k", test::num(1));
+  b.continuous("1", "k");
+  b.pou().associations.back().where = {"k.g7", 7, 3, ""};
+  semantics::GrafcetOptions o;
+  model::Diagnostics d;
+  const auto project = b.project();
+  EXPECT_FALSE(semantics::make_grafcet_system(project, o, d));
+  ASSERT_FALSE(d.empty());
+  EXPECT_EQ(d.front().str(), "k.g7:7:3: error: continuous action on non-Boolean variable 'k'");
 }
 
 // A counter stored out of its range is a range error, not a successor.

@@ -109,6 +109,14 @@ inline model::Project random_grafcet(std::uint64_t seed) {
     b.transition({"31"}, {"32"}, guard(1));
     b.transition({"32"}, {"31"}, guard(1));
   }
+  // Sometimes the continuous output y is also written by a stored action (read as either,
+  // docs/semantics.md 2.7); drawn last so that the charts above do not change with it.
+  if (pick(3) == 0) {
+    const auto step = s1(pick(n1 - 1));
+    const auto when = pick(2) ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
+    b.stored(step, when, "y", lit(pick(2) == 0));
+    b.pou().stored_actions.back().chart = "G1";
+  }
   return b.project();
 }
 

@@ -11,6 +11,7 @@
 
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
+#include "semantics/grafcet_system.hpp"
 #include "semantics/options.hpp"
 #include "semantics/state_layout.hpp"
 #include "semantics/transition_system.hpp"
@@ -111,9 +112,15 @@ struct GForce {
 
 struct GVar {
   std::string name;
-  int field = -1;
+  int field = -1;  ///< the value; when both kinds write it, the continuous assignation
   model::Type type;
-  bool continuous = false;
+  bool continuous = false;  ///< written by continuous actions
+  bool stored = false;      ///< written by stored actions
+  int memory_field = -1;    ///< both kinds: the stored value (docs/semantics.md 2.7)
+
+  bool mixed() const { return continuous && stored; }
+  /// The field stored actions write.
+  int stored_field() const { return mixed() ? memory_field : field; }
 };
 
 struct GContinuous {
@@ -156,10 +163,10 @@ struct GDelay {
   int pseudo = -1;
 };
 
-enum class ObsRef { Step, Field, Input };
+enum class ObsRef { Step, Variable, Input };
 struct ObsInfo {
-  ObsRef ref = ObsRef::Field;
-  int index = 0;
+  ObsRef ref = ObsRef::Variable;
+  int index = 0;  ///< into steps_, vars_ or gin_
 };
 
 inline bool all_digits(const std::string& s) {
@@ -245,6 +252,8 @@ class GrafcetSystem final : public TransitionSystem {
     mutable int wanted = -1;  ///< first free input met
   };
   bool active(StateView s, int step) const;
+  /// Variable `var`'s value: its field, or either field when both kinds of action write it.
+  std::int64_t value_of(StateView s, int var) const;
   Val eval(const CExpr& e, const Ctx& c) const;
   Partial inputs_of(StateView s) const;
   InputCube cube_of(const Partial& p) const;
