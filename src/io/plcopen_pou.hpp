@@ -6,7 +6,9 @@
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "io/plcopen_xml_dom.hpp"
 #include "model/chart.hpp"
@@ -40,6 +42,20 @@ int build_sfc_chart(PouContext& pc, pugi::xml_node sfc, const std::string& chart
 std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_node language,
                                                    const std::string& edge_prefix,
                                                    model::Diagnostics& problems);
+
+/// The user FUNCTIONs of `pous` whose ST body only assigns their own result and variables
+/// (no VAR_IN_OUT, VAR_OUTPUT or VAR_EXTERNAL, no instance call) and calls only standard
+/// functions and such functions: leaving out a call of one changes nothing but its value.
+std::set<std::string> pure_functions(XmlContext& ctx, const std::vector<pugi::xml_node>& pous);
+
+/// Leaves out of `body` each assignment to a variable of a type sfcv does not model
+/// (XmlContext::unmodelled_variables) whose right side only computes the value, with a note
+/// in `problems` for each.
+void leave_out_unmodelled_writes(PouContext& pc, model::StmtList& body,
+                                 model::Diagnostics& problems);
+
+/// Adds to each error of `problems` about such a variable the type it was declared with.
+void name_unmodelled_types(const PouContext& pc, model::Diagnostics& problems);
 
 /// Sets `action`'s body from a language element (ST, FBD, LD; IL and others are not modelled).
 /// A body that cannot be modelled does not block loading: a warning with the element path,

@@ -555,6 +555,7 @@ std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_nod
   }
   if (!body || model::has_errors(problems)) return std::nullopt;
   for (auto& v : edges) pc.pou.variables.push_back(std::move(v));
+  leave_out_unmodelled_writes(pc, *body, problems);
   return body;
 }
 

@@ -5,6 +5,7 @@
 // values). Internal to src/io.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <pugixml.hpp>
 #include <set>
@@ -60,6 +61,13 @@ class XmlContext {
   /// Upper-case names of the user FUNCTIONs and FUNCTION_BLOCKs whose POU element names ENO
   /// anywhere (declaration or body): only those may clear their ENO; for the others ENO is EN.
   std::set<std::string> pous_naming_eno;
+  /// Variables dropped for a type sfcv does not model (REAL, LREAL...): upper-case POU name ->
+  /// upper-case variable name -> the type as written. A write nothing modelled reads is left
+  /// out (leave_out_unmodelled_writes); any other use stays an error, which names the type.
+  std::map<std::string, std::map<std::string, std::string>> unmodelled_variables;
+  /// Upper-case names of the user FUNCTIONs whose body only computes their result (pure_functions):
+  /// a call of one may be left out with the write it feeds.
+  std::set<std::string> pure_functions;
 
  private:
   std::string file_;

@@ -238,6 +238,7 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
       if (!t.type) {
         ctx.warning(v, "unsupported type " + t.written + " of variable '" + var.name +
                            "': variable ignored");
+        ctx.unmodelled_variables[model::to_upper(pou.name)][model::to_upper(var.name)] = t.written;
         continue;
       }
       var.type = *t.type;
@@ -523,6 +524,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
           if (d.severity == model::Severity::Error) problems.push_back(std::move(d));
       if (model::has_errors(problems)) stmts.reset();
     }
+    name_unmodelled_types(pc, problems);
     if (stmts && !pou.body_unsupported) {
       for (auto& st : *stmts) pou.body.push_back(std::move(st));
       for (auto& d : problems) ctx.add(std::move(d));
@@ -641,6 +643,7 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     if ((kind == "functionBlock" || kind == "function") && names_eno(p))
       ctx.pous_naming_eno.insert(upper);
   }
+  ctx.pure_functions = pure_functions(ctx, pous);
   for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))
     user_fbs.insert(model::to_upper(trim(dt.attribute("name").value())));
   for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))

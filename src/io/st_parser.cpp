@@ -320,8 +320,9 @@ ExprPtr Parser::primary() {
       expect(TokenKind::RParen, "')'");
       return e;
     }
-    case TokenKind::Unsupported:
-      fail(t, "unsupported: literal " + t.text);
+    case TokenKind::Unsupported:  // refused where it is used (model::UnmodelledConst)
+      next();
+      return model::make_unmodelled_literal(t.text, loc);
     case TokenKind::String: {
       next();
       if (t.text.front() == '"') fail(t, "unsupported: WSTRING literal " + t.text);

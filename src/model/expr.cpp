@@ -125,6 +125,8 @@ std::string print(const Expr& e, int parent_prec, bool right_operand) {
         s += (i ? ", " : "") + (i < e.arg_names.size() ? e.arg_names[i] + " := " : "") +
              print(*e.args[i], 0, false);
       return s + ")";
+    case ExprKind::UnmodelledConst:
+      return e.name;
     case ExprKind::StringConst: {
       std::string q = "'";
       for (const char ch : e.name) {
@@ -241,6 +243,11 @@ ExprPtr make_string(std::string characters, SourceLocation where) {
   e->name = std::move(characters);
   return e;
 }
+ExprPtr make_unmodelled_literal(std::string text, SourceLocation where) {
+  auto e = std::const_pointer_cast<Expr>(make(ExprKind::UnmodelledConst, std::move(where)));
+  e->name = std::move(text);
+  return e;
+}
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLocation where) {
   auto e = std::const_pointer_cast<Expr>(make(ExprKind::Delay, std::move(where)));
   e->value = t1_ms;
@@ -254,7 +261,8 @@ bool equal(const Expr& a, const Expr& b) {
   if (a.kind != b.kind || a.value != b.value || a.value2 != b.value2 ||
       a.args.size() != b.args.size())
     return false;
-  if (a.kind == ExprKind::StringConst) return a.name == b.name;
+  if (a.kind == ExprKind::StringConst || a.kind == ExprKind::UnmodelledConst)
+    return a.name == b.name;
   if (a.kind == ExprKind::Name || a.kind == ExprKind::Member || a.kind == ExprKind::Call ||
       a.kind == ExprKind::Index) {
     // Identifiers are case-insensitive.

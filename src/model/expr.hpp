@@ -45,6 +45,10 @@ enum class ExprKind {
   /// A STRING literal, `name` its characters ('$' escapes decoded), before
   /// model::lower_data_types replaces it by its code (docs/semantics.md 1.7a).
   StringConst,
+  /// A literal of a type sfcv does not model (REAL `1.5`, `REAL#2`, dates): `name` is its
+  /// text. It parses so that a write nothing modelled reads can be left out (io reads it);
+  /// anywhere else the validator refuses it.
+  UnmodelledConst,
 };
 
 struct Expr;
@@ -82,6 +86,7 @@ ExprPtr make_formal_call(std::string function, std::vector<std::string> names,
 /// `path` holds one "[*]", replaced by the indices when printed: make_index("a[*]", {i}).
 ExprPtr make_index(std::string path, std::vector<ExprPtr> indices, SourceLocation where = {});
 ExprPtr make_string(std::string characters, SourceLocation where = {});
+ExprPtr make_unmodelled_literal(std::string text, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).

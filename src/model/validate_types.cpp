@@ -145,6 +145,9 @@ Ty Validator::type_of(const Expr& e, const SourceLocation& fallback) {
     case ExprKind::StringConst:
       error(here, "unsupported: STRING literal in '" + op() + "'");
       return Ty::Unknown;
+    case ExprKind::UnmodelledConst:
+      error(at(e.where, here), "unsupported: literal " + e.name);
+      return Ty::Unknown;
     case ExprKind::Index:
       // The readers lower arrays (model::lower_data_types); an index left is not modelled.
       error(here, "unsupported: array index in '" + op() + "'");

@@ -68,24 +68,41 @@ std::vector<const model::Pou*> Compiler::select() {
   // Without --pou: every PROGRAM in document order (a PLC task runs its programs one after
   // another in one cycle), when all of them can be modelled; else, as before, the one POU
   // with an SFC body (a function block then runs alone, its inputs free).
+  // The POU whose body sfcv does not model among `q` and the function block types it
+  // instantiates, recursively (null: none).
+  std::set<const model::Pou*> visited;
+  std::function<const model::Pou*(const model::Pou&)> unmodelled = [&](const model::Pou& q) {
+    if (!visited.insert(&q).second) return static_cast<const model::Pou*>(nullptr);
+    if (q.body_unsupported) return &q;
+    for (const auto& v : q.variables) {
+      if (v.type.kind != model::TypeKind::FunctionBlock || v.type.fb != model::StandardFb::None)
+        continue;
+      if (const auto* type = project.find_pou(v.type.name))
+        if (const auto* found = unmodelled(*type)) return found;
+    }
+    return static_cast<const model::Pou*>(nullptr);
+  };
   std::vector<const model::Pou*> programs, sfc_programs, sfc_others;
-  bool programs_modelled = true;
+  std::vector<std::pair<const model::Pou*, const model::Pou*>> not_run;  // program, why
   for (const auto& q : project.pous) {
     const bool runs = q.has_sfc() || !q.body.empty() || q.body_unsupported;
     if (q.kind == model::PouKind::Program && runs) {
       programs.push_back(&q);
-      programs_modelled = programs_modelled && !q.body_unsupported;
+      visited.clear();
+      if (const auto* why = unmodelled(q)) not_run.emplace_back(&q, why);
     }
     if (q.has_sfc()) (q.kind == model::PouKind::Program ? sfc_programs : sfc_others).push_back(&q);
   }
-  if (!programs.empty() && programs_modelled) return programs;
+  if (!programs.empty() && not_run.empty()) return programs;
   const auto& cands = sfc_programs.empty() ? sfc_others : sfc_programs;
   if (cands.size() == 1) {
-    for (const auto* q : programs)
-      if (q->body_unsupported)
-        diags.push_back({model::Severity::Note, q->where,
-                         "program '" + q->name + "' is not run (its body is not modelled); '" +
-                             cands.front()->name + "' runs alone"});
+    for (const auto& [q, why] : not_run)
+      diags.push_back({model::Severity::Note, q->where,
+                       "program '" + q->name + "' is not run (" +
+                           (why == q ? std::string("its body is not modelled")
+                                     : "it runs an instance of '" + why->name +
+                                           "', whose body is not modelled") +
+                           "); '" + cands.front()->name + "' runs alone"});
     return {cands.front()};
   }
   if (cands.empty()) {

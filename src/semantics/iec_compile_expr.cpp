@@ -221,6 +221,10 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
     case ExprKind::TimeConst:
       type = VT::Int;
       return constant(e.value);
+    case ExprKind::UnmodelledConst:
+      error(e.where, "unsupported: literal " + e.name);
+      type = VT::Int;
+      return constant(0);
     case ExprKind::StringConst:  // lowered by the readers (model::lower_data_types)
     case ExprKind::Index:
       error(e.where, "unsupported: '" + model::to_st(e) + "' (not lowered)");
