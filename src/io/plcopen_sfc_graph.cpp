@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/il_reader.hpp"
 #include "io/plcopen_network.hpp"
 #include "io/plcopen_pou.hpp"
 #include "io/plcopen_st.hpp"
@@ -545,6 +546,8 @@ std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_nod
   std::vector<model::Variable> edges;
   if (k == "ST") {
     body = parse_statements_text(body_text(language, pc.ctx), problems);
+  } else if (k == "IL") {
+    body = read_il_statements(body_text(language, pc.ctx), problems);
   } else if (k == "FBD" || k == "LD") {
     Network net(language, pc.ctx, problems, edge_prefix);
     body = net.statements();

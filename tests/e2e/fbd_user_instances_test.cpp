@@ -143,15 +143,16 @@ TEST(FbdUserInstances, EnoOfAnInstanceIsEnUnlessItsBlockNamesEno) {
       << r.err;
 }
 
-// Beremiz's first_steps (corpus 02) writes one counter in ST, FBD and LD: `Cnt := SEL(Reset,
-// Cnt + 1, ResetCounterValue); OUT := Cnt`. The FBD network assigns Cnt through an
-// inOutVariable placed after the outVariable OUT in the document and reads it for OUT; before,
-// SEL was refused, and assignments in document order made OUT lag one cycle (65,535 states
-// instead of 32,768). The three agree now, state for state.
-TEST(FbdCorpus, BeremizCounterInStFbdAndLdAgree) {
+// Beremiz's first_steps (corpus 02) writes one counter in ST, FBD, LD and IL: `Cnt := SEL(Reset,
+// Cnt + 1, ResetCounterValue); OUT := Cnt` (IL: LD Reset, JMPC ResetCnt, LD Cnt, ADD 1, JMP
+// QuitFb, ResetCnt: LD ResetCounterValue, QuitFb: ST Cnt, ST Out). The FBD network assigns Cnt
+// through an inOutVariable placed after the outVariable OUT in the document and reads it for OUT;
+// before, SEL was refused, and assignments in document order made OUT lag one cycle (65,535 states
+// instead of 32,768), and IL was refused. The four agree now, state for state.
+TEST(FbdCorpus, BeremizCounterInStFbdLdAndIlAgree) {
   SFCV_REQUIRE_CORPUS(corpus);
   const std::string path = "'" + (corpus / "02_beremiz_first_steps.xml").string() + "'";
-  for (const char* pou : {"CounterST", "CounterFBD", "CounterLD"}) {
+  for (const char* pou : {"CounterST", "CounterFBD", "CounterLD", "CounterIL"}) {
     SCOPED_TRACE(pou);
     // OUT = 18 takes a reset (OUT = 17) and one count: 3 situations; a lag of one cycle would
     // take 4.

@@ -65,16 +65,22 @@ std::string drive_pou(const std::string& language, const std::string& body) {
 const std::string kDriveSt =
     drive_pou("ST", "IF start THEN\n  motor_fwd := TRUE;\n  motor_rev := TRUE;\nEND_IF;\n");
 const std::string kDriveIl = drive_pou("IL", "LD start\nST motor_fwd\nST motor_rev\n");
+// IL with a backward jump (a loop): a body sfcv does not model.
+const std::string kDriveIlLoop =
+    drive_pou("IL", "again: LD start\nST motor_fwd\nST motor_rev\nJMPC again\n");
 
 TEST(NeverASilentModel, StBodiedPouUnderPouIsCheckedNotEmpty) {
-  const auto path = write_temp(kHeader + sfc_pou() + kDriveSt + kFooter, ".xml");
-  const auto r = run_sfcv("check " + q(path) + " --pou drive --ctl 'AG !(motor_fwd & motor_rev)'");
-  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
+  for (const auto* drive : {&kDriveSt, &kDriveIl}) {
+    const auto path = write_temp(kHeader + sfc_pou() + *drive + kFooter, ".xml");
+    const auto r =
+        run_sfcv("check " + q(path) + " --pou drive --ctl 'AG !(motor_fwd & motor_rev)'");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("violated"), std::string::npos) << r.out;
+  }
 }
 
 TEST(NeverASilentModel, UnmodelledPouBodyUnderPouIsAnErrorInEverySubcommand) {
-  const auto path = write_temp(kHeader + sfc_pou() + kDriveIl + kFooter, ".xml");
+  const auto path = write_temp(kHeader + sfc_pou() + kDriveIlLoop + kFooter, ".xml");
   const std::string file = q(path);
   const auto inputs = write_temp("start\n1\n0\n", ".csv");
   for (const std::string& cmd :
@@ -99,19 +105,20 @@ TEST(NeverASilentModel, UnmodelledPouBodyUnderPouIsAnErrorInEverySubcommand) {
 }
 
 TEST(NeverASilentModel, LintFailsWhenNoPouCanBeModelled) {
-  // Only an IL program: check has nothing it can run, so lint is not clean.
-  const auto path = write_temp(kHeader + kDriveIl + kFooter, ".xml");
+  // Only an IL program with a loop: check has nothing it can run, so lint is not clean.
+  const auto path = write_temp(kHeader + kDriveIlLoop + kFooter, ".xml");
   const auto r = run_sfcv("lint " + q(path));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   // With an SFC program beside it, lint is clean: `check --pou seq` models the file.
-  const auto both = write_temp(kHeader + sfc_pou() + kDriveIl + kFooter, ".xml");
+  const auto both = write_temp(kHeader + sfc_pou() + kDriveIlLoop + kFooter, ".xml");
   const auto r2 = run_sfcv("lint " + q(both));
   EXPECT_EQ(r2.exit_code, 0) << r2.out << r2.err;
 }
 
 TEST(NeverASilentModel, ActionWithUnmodelledBodyIsRefusedWhereAStepUsesIt) {
   const std::string il_action =
-      "<actions><action name=\"Pulse\"><body><IL><xhtml:p><![CDATA[LD TRUE\nST lamp\n]]>"
+      "<actions><action name=\"Pulse\"><body><IL><xhtml:p><![CDATA[again: LD TRUE\nST lamp\n"
+      "JMPC again\n]]>"
       "</xhtml:p></IL></body></action></actions>\n";
   const auto used = write_temp(kHeader + sfc_pou("Pulse", il_action) + kFooter, ".xml");
   for (const char* sub : {"check", "lint"}) {

@@ -65,17 +65,26 @@ TEST(Programs, InterlockedStBodyHolds) {
   EXPECT_EQ(run_sfcv("check " + file + " --ctl 'EF M2' --trace none").exit_code, 1);
 }
 
-// An IL body is refused by name (exit 2), never run as a no-op.
-TEST(Programs, IlBodyIsRefusedWithItsLocation) {
-  const std::string pou = "<pou name=\"Motors\" pouType=\"program\"><interface>" +
-                          bool_vars("outputVars", {"M1"}) +
-                          "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">LD "
-                          "TRUE\nST M1</xhtml></IL></body></pou>\n";
-  const auto file = write_temp(plcopen(pou), ".xml");
-  auto r = run_sfcv("check " + file + " --pou Motors --ctl 'AG !M1'");
+// An IL body is a program (docs/semantics.md 1.9.2); one with a loop (a backward jump) is
+// refused by name and place (exit 2), never run as a no-op.
+TEST(Programs, IlBodyIsModelledAndALoopIsRefusedWithItsLocation) {
+  auto motors = [](const std::string& il) {
+    return plcopen("<pou name=\"Motors\" pouType=\"program\"><interface>" +
+                   bool_vars("outputVars", {"M1"}) +
+                   "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">" + il +
+                   "</xhtml></IL></body></pou>\n");
+  };
+  const auto file = write_temp(motors("LD TRUE\nST M1"), ".xml");
+  auto r = run_sfcv("check " + file + " --ctl 'AG !M1' --trace none");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const auto loop = write_temp(motors("top: LD M1\nSTN M1\nJMPCN top"), ".xml");
+  r = run_sfcv("check " + loop + " --pou Motors --ctl 'AG !M1'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("IL body is not modelled"), std::string::npos) << r.err;
-  r = run_sfcv("check " + file + " --ctl 'AG !M1'");
+  EXPECT_NE(r.err.find(":8:1"), std::string::npos) << r.err;  // JMPCN, the body's third line
+  EXPECT_NE(r.err.find("IL: backward jump to 'top' (a loop) is not modelled"), std::string::npos)
+      << r.err;
+  r = run_sfcv("check " + loop + " --ctl 'AG !M1'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("--pou"), std::string::npos) << r.err;
 }

@@ -261,7 +261,8 @@ TEST(PlcopenWriter, UnmodelledActionBodiesKeepTheirText) {
       "<action name=\"Loop\"><body>" +
       st("x := p^;") +
       "</body></action>"
-      "<action name=\"Il\"><body><IL><xhtml:p><![CDATA[LD a\nST x]]></xhtml:p></IL></body></action>"
+      "<action name=\"Il\"><body><IL><xhtml:p><![CDATA[top: LD a\nST x\nJMPC top]]></xhtml:p></IL>"
+      "</body></action>"
       "</actions><body><SFC>" +
       two_steps(
           R"(<actionBlock localId="9"><connectionPointIn><connection refLocalId="3"/></connectionPointIn>

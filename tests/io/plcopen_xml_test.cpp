@@ -740,8 +740,8 @@ TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
       20, 3,
       R"(<action localId="0"><inline><ST><xhtml:p><![CDATA[n := p^;]]></xhtml:p></ST></inline></action>)");
   const auto actions =
-      "<actions><action name=\"IL_ACT\"><body><IL><xhtml:p><![CDATA[LD a\nST "
-      "x]]></xhtml:p></IL></body></action></actions>";
+      "<actions><action name=\"IL_ACT\"><body><IL><xhtml:p><![CDATA[top: LD a\nST "
+      "x\nJMPC top]]></xhtml:p></IL></body></action></actions>";
   const auto r = load_plcopen_xml(
       project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions),
       "act.xml");
@@ -761,7 +761,8 @@ TEST(PlcopenXml, UnparsableActionBodyIsKeptAsUnsupportedWithAWarning) {
   ASSERT_NE(il, nullptr);
   EXPECT_TRUE(il->body_unsupported);
   EXPECT_TRUE(has_message(r, Severity::Warning,
-                          "action 'IL_ACT': body not modelled (bodies in IL are not modelled)"));
+                          "action 'IL_ACT': body not modelled (IL: backward jump to 'top' (a "
+                          "loop) is not modelled)"));
 }
 
 TEST(PlcopenXml, LdActionBodyBecomesStatements) {
@@ -1243,10 +1244,12 @@ TEST(PlcopenXml, LdEdgeContactBecomesAnRTrigInstance) {
             "SFCV_EDGE_BODY_2(CLK := a);\nx := SFCV_EDGE_BODY_2.Q AND NOT b;\n");
 }
 
-// An IL body, and an ST body calling an instance of a user function block (its variable was
-// dropped), load but are marked: running the POU is refused, never an empty program.
+// An IL body with a loop, and an ST body calling an instance of a user function block (its
+// variable was dropped), load but are marked: running the POU is refused, never an empty
+// program.
 TEST(PlcopenXml, BodiesThatCannotBeModelledAreMarked) {
-  auto r = load_plcopen_xml(body_project("<IL><xhtml:p>LD a\nST x</xhtml:p></IL>"), "il.xml");
+  auto r = load_plcopen_xml(body_project("<IL><xhtml:p>top: LD a\nST x\nJMPC top</xhtml:p></IL>"),
+                            "il.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   EXPECT_TRUE(r.project->pous.at(0).body_unsupported);
   EXPECT_EQ(r.project->pous.at(0).unsupported_language, "IL");
