@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/st_lexer.hpp"
 #include "io/st_parser.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
@@ -45,15 +46,7 @@ constexpr std::size_t kMaxUnfoldedStatements = 20000;
 constexpr std::uint32_t kMaxResultHeight = model::kMaxNesting - 20;
 
 model::SourceLocation at(const model::SourceLocation& start, int line, int column) {
-  model::SourceLocation loc = start;
-  if (start.line > 0) {
-    loc.line = start.line + line - 1;
-    loc.column = line == 1 ? std::max(start.column, 1) + column - 1 : column;
-  } else {
-    loc.line = line;
-    loc.column = column;
-  }
-  return loc;
+  return st::Locator(start).at(line, column);
 }
 
 bool ident_start(char c) {

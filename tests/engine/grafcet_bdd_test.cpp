@@ -343,14 +343,7 @@ TEST(GrafcetBdd, VariableWrittenByContinuousAndStoredActionsIsReadAsEither) {
 TEST(GrafcetBdd, IntegerVariableWithAContinuousActionIsRejected) {
   GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back({"k",
-                               model::VarDirection::Local,
-                               model::Type::integer("INT", 0, 3),
-                               std::nullopt,
-                               "",
-                               {},
-                               {},
-                               {}});
+  b.local("k", model::Type::integer("INT", 0, 3));
   b.transition({"1"}, {"2"}, test::v("a")).transition({"2"}, {"1"}, test::not_(test::v("a")));
   b.stored("2", model::StoredWhen::Activation, "k", test::num(1));
   b.continuous("1", "k");
@@ -367,14 +360,7 @@ TEST(GrafcetBdd, IntegerVariableWithAContinuousActionIsRejected) {
 TEST(GrafcetBdd, StoredValueOutOfRangeIsARangeError) {
   GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back({"k",
-                               model::VarDirection::Local,
-                               model::Type::integer("INT", 0, 1),
-                               std::nullopt,
-                               "",
-                               {},
-                               {},
-                               {}});
+  b.local("k", model::Type::integer("INT", 0, 1));
   b.transition({"1"}, {"2"}, test::rise(test::v("a")))
       .transition({"2"}, {"1"}, test::fall(test::v("a")));
   b.stored("2", model::StoredWhen::Activation, "k",

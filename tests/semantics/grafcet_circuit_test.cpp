@@ -157,14 +157,7 @@ TEST(GrafcetCircuit, EvolutionsMatchTheExplicitSystemOnRandomGrafcets) {
 TEST(GrafcetCircuit, RejectsAProductOfVariables) {
   test::GrafcetBuilder b;
   b.input("a").chart("G").step("1", true).step("2");
-  b.pou().variables.push_back({"k",
-                               model::VarDirection::Local,
-                               model::Type::integer("INT", 0, 3),
-                               std::nullopt,
-                               "",
-                               {},
-                               {},
-                               {}});
+  b.local("k", model::Type::integer("INT", 0, 3));
   b.transition({"1"}, {"2"}, test::v("a"));
   b.transition({"2"}, {"1"},
                test::cmp(model::ExprKind::Gt,

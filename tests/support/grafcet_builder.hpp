@@ -35,6 +35,11 @@ class GrafcetBuilder {
         {name, model::VarDirection::Output, type, std::nullopt, "", {}, {}, {}});
     return *this;
   }
+  GrafcetBuilder& local(const std::string& name, model::Type type) {
+    pou().variables.push_back(
+        {name, model::VarDirection::Local, std::move(type), std::nullopt, "", {}, {}, {}});
+    return *this;
+  }
   GrafcetBuilder& chart(const std::string& name) {
     model::Chart c;
     c.name = name;
