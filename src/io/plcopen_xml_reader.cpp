@@ -479,8 +479,6 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
     const auto lang = other_bodies[bi];
     const std::string k(local_name(lang));
     model::Diagnostics problems;
-    if (pou.kind == model::PouKind::Function && unmodelled_function.empty() && k != "ST")
-      unmodelled_function = "FUNCTION bodies in " + k + " are not modelled (only ST)";
     if (!unmodelled_function.empty())
       problems.push_back({model::Severity::Error, ctx.where(lang),
                           "function '" + pou.name + "': " + unmodelled_function});

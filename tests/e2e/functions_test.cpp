@@ -245,20 +245,61 @@ TEST(FunctionsE2E, PlcopenFbdBlockCallsAFunction) {
       << r.err;
 }
 
-// A function whose body is in FBD is refused at its location when a program calls it.
-TEST(FunctionsE2E, PlcopenFunctionInFbdIsRefused) {
+// Function bodies in FBD, LD and IL are read as statements, as programs' are (docs/semantics.md
+// 1.9.2): Both := x AND y written in each gives the model of the ST body on every engine (Run
+// is reached through Both(s1, s2), never through Both(s1, FALSE)). An edge contact in an LD
+// function needs memory, which a function has not: refused where the function is called.
+TEST(FunctionsE2E, PlcopenFunctionBodiesInFbdLdAndIlAreModelled) {
+  const std::string in_vars =
+      "<inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
+      "<expression>x</expression></inVariable><inVariable localId=\"2\"><position x=\"0\" "
+      "y=\"0\"/><connectionPointOut/><expression>y</expression></inVariable>";
+  auto pin = [](const char* name, int from) {
+    return std::string("<variable formalParameter=\"") + name +
+           "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+           "\"/></connectionPointIn></variable>";
+  };
   const std::string fbd =
-      "<FBD><inVariable localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut/>"
-      "<expression>x</expression></inVariable><outVariable localId=\"2\"><position x=\"0\" "
-      "y=\"0\"/><connectionPointIn><connection refLocalId=\"1\"/></connectionPointIn>"
-      "<expression>Both</expression></outVariable></FBD>";
-  const auto file = write_temp(
-      kPlcopenHeader + functions(fbd) + main_sfc("Both(s1, s2)") + kPlcopenFooter, ".xml");
-  const auto r = run_sfcv(check_command(file, "explicit", "--ctl 'AG !Run'"));
+      "<FBD>" + in_vars +
+      "<block localId=\"3\" typeName=\"AND\"><position x=\"0\" y=\"0\"/><inputVariables>" +
+      pin("IN1", 1) + pin("IN2", 2) +
+      "</inputVariables><inOutVariables/><outputVariables><variable formalParameter=\"OUT\">"
+      "<connectionPointOut/></variable></outputVariables></block><outVariable localId=\"4\">"
+      "<position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"3\" "
+      "formalParameter=\"OUT\"/></connectionPointIn><expression>Both</expression></outVariable>"
+      "</FBD>";
+  auto ld = [](const char* x_edge) {
+    auto element = [](const std::string& kind, int id, int from, const std::string& var,
+                      const std::string& extra) {
+      return "<" + kind + " localId=\"" + std::to_string(id) + "\"" + extra +
+             "><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"" +
+             std::to_string(from) + "\"/></connectionPointIn><connectionPointOut/><variable>" +
+             var + "</variable></" + kind + ">";
+    };
+    return "<LD><leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut "
+           "formalParameter=\"\"/></leftPowerRail>" +
+           element("contact", 2, 1, "x", x_edge) + element("contact", 3, 2, "y", "") +
+           element("coil", 4, 3, "Both", "") + "</LD>";
+  };
+  const std::string il =
+      "<IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">LD x\nAND y\nST Both</xhtml></IL>";
+  for (const auto& body : {plcopen_st("Both := x AND y;"), fbd, ld(""), il}) {
+    SCOPED_TRACE(body);
+    const auto reaches = write_temp(
+        kPlcopenHeader + functions(body) + main_sfc("Both(s1, s2)") + kPlcopenFooter, ".xml");
+    const auto never = write_temp(
+        kPlcopenHeader + functions(body) + main_sfc("Both(s1, FALSE)") + kPlcopenFooter, ".xml");
+    expect_on_every_engine(reaches, {{"--ctl 'AG !Run'", 1}, {"--ctl 'AG (Run -> s1)'", 0}});
+    expect_on_every_engine(never, {{"--ctl 'AG !Run'", 0}});
+  }
+  const auto edge = write_temp(kPlcopenHeader + functions(ld(" edge=\"rising\"")) +
+                                   main_sfc("Both(s1, s2)") + kPlcopenFooter,
+                               ".xml");
+  const auto r = run_sfcv(check_command(edge, "explicit", "--ctl 'AG !Run'"));
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("FUNCTION bodies in FBD are not modelled (only ST)"), std::string::npos)
+  EXPECT_NE(r.err.find("of function Both: a function keeps no state between calls"),
+            std::string::npos)
       << r.err;
-  EXPECT_EQ(r.err.find("not Boolean"), std::string::npos) << r.err;  // no follow-up error
 }
 
 // VAR_OUTPUTs of a function, bound with `=>` by the call that is the whole right side of an
