@@ -223,10 +223,16 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
   const std::string type = block.attribute("typeName").value();
   const std::string instance = block.attribute("instanceName").value();
   const auto outputs = children(child(block, "outputVariables"), "variable");
-  if (!pin.empty() && !instance.empty())
+  const bool user_function =
+      instance.empty() && ctx_.user_functions.count(model::to_upper(type)) > 0;
+  if (!pin.empty() && (!instance.empty() || user_function))
     for (auto io : children(child(block, "inOutVariables"), "variable"))
       if (model::iequals(io.attribute("formalParameter").value(), pin)) {
-        // The output side of a VAR_IN_OUT pin: the bound variable, after the call.
+        // The output side of a VAR_IN_OUT pin: the bound variable, after the call (of a
+        // function: run as a statement, so its result may not be read as well).
+        if (user_function && evaluated_.count(block.attribute("localId").value()))
+          return fail(block, "unsupported: function " + type +
+                                 " with both its result and an in/out parameter read");
         if (!call_block(block)) return nullptr;
         return in_out_variable(block, io);
       }
@@ -370,7 +376,9 @@ ExprPtr Network::block_value(pugi::xml_node block, const std::string& pin) {
     case Fn::User:
       if (outputs.size() > 1 || !children(child(block, "inOutVariables"), "variable").empty())
         return fail(block, "unsupported: function " + type +
-                               " with outputs or in/out parameters besides its result");
+                               (children(child(block, "inOutVariables"), "variable").empty()
+                                    ? " with outputs besides its result"
+                                    : " with both its result and an in/out parameter read"));
       evaluated_.insert(id);
       r = model::make_formal_call(type, std::move(names), std::move(args), where);
       break;
@@ -413,8 +421,11 @@ bool Network::call_block(pugi::xml_node block) {
     if (!bound) return false;
     args.emplace_back(f, std::move(bound));
   }
-  auto call = model::make_fb_call(block.attribute("instanceName").value(), std::move(args),
-                                  ctx_.where(block));
+  // An instance, or a user function run for its effects (its in/out parameters, the globals it
+  // writes) where nothing reads its result: `F(x := a, io := v);` (docs/semantics.md 1.9.1).
+  const std::string instance = block.attribute("instanceName").value();
+  auto call =
+      model::make_fb_call(instance.empty() ? type : instance, std::move(args), ctx_.where(block));
   if (!enable) {
     calls_.push_back(std::move(call));
     return true;
@@ -621,15 +632,20 @@ std::optional<model::StmtList> Network::statements() {
     }
     body.push_back(std::move(assignment));
   }
-  // A user function whose result nobody reads would not run: refused, not dropped (it may
-  // have a range error or write a global).
+  // A user function whose result nobody reads still runs, as a statement, at the end (it may
+  // write its in/out parameters or globals, or meet a range error).
   for (auto n : element_children(container_))
     if (local_name(n) == "block" && !*n.attribute("instanceName").value() &&
         ctx_.user_functions.count(model::to_upper(n.attribute("typeName").value())) &&
-        !evaluated_.count(n.attribute("localId").value())) {
-      fail(n, std::string("unsupported: the result of function ") +
-                  n.attribute("typeName").value() + " is not used");
-      return std::nullopt;
+        !evaluated_.count(n.attribute("localId").value()) &&
+        !called_.count(n.attribute("localId").value())) {
+      if (children(child(n, "outputVariables"), "variable").size() > 1) {
+        fail(n, std::string("unsupported: function ") + n.attribute("typeName").value() +
+                    " with outputs besides its result");
+        return std::nullopt;
+      }
+      if (!call_block(n)) return std::nullopt;
+      for (auto& c : take_calls()) body.push_back(std::move(c));
     }
   // Function blocks whose outputs nobody reads still run.
   for (auto n : element_children(container_)) {

@@ -262,5 +262,74 @@ END_PROGRAM
             std::string::npos);
 }
 
+// An FBD block of a user FUNCTION with a VAR_IN_OUT pin, its result read by nothing: the
+// function runs as the statement `Bump(up := go, c := a);`, and the pin's output side reads a
+// after it, as in ST (docs/semantics.md 1.9.1). Reading the result as well is refused.
+std::string bump_fbd(bool read_result) {
+  const auto local = [](const std::string& id, const std::string& name) {
+    return "<inVariable localId=\"" + id +
+           "\"><position x=\"0\" y=\"0\"/><connectionPointOut/><expression>" + name +
+           "</expression></inVariable>";
+  };
+  const auto out = [](const std::string& id, const std::string& source, const std::string& var) {
+    return "<outVariable localId=\"" + id + "\"><position x=\"0\" y=\"0\"/><connectionPointIn>" +
+           source + "</connectionPointIn><expression>" + var + "</expression></outVariable>";
+  };
+  return kPlcopenHeader +
+         "<pou name=\"Bump\" pouType=\"function\"><interface><returnType><BOOL/></returnType>" +
+         plcopen_vars("inputVars", {"up"}) + plcopen_vars("inOutVars", {"c"}, "<INT/>") +
+         "</interface><body>" +
+         plcopen_st("IF up AND c &lt; 5 THEN c := c + 1; END_IF; Bump := c = 5;") +
+         "</body></pou>\n<pou name=\"Main\" pouType=\"program\"><interface>" +
+         plcopen_vars("inputVars", {"go"}) + plcopen_vars("localVars", {"a", "b"}, "<INT/>") +
+         plcopen_vars("localVars", {"full"}) + "</interface><body><FBD>" + local("1", "go") +
+         local("2", "a") +
+         "<block localId=\"3\" typeName=\"Bump\"><position x=\"0\" y=\"0\"/>"
+         "<inputVariables><variable formalParameter=\"up\"><connectionPointIn>"
+         "<connection refLocalId=\"1\"/></connectionPointIn></variable></inputVariables>"
+         "<inOutVariables><variable formalParameter=\"c\"><connectionPointIn>"
+         "<connection refLocalId=\"2\"/></connectionPointIn><connectionPointOut/></variable>"
+         "</inOutVariables><outputVariables><variable formalParameter=\"Bump\">"
+         "<connectionPointOut/></variable></outputVariables></block>" +
+         out("4", "<connection refLocalId=\"3\" formalParameter=\"c\"/>", "b") +
+         (read_result ? out("5", "<connection refLocalId=\"3\" formalParameter=\"Bump\"/>", "full")
+                      : "") +
+         "</FBD></body></pou>\n" + kPlcopenFooter;
+}
+
+TEST(InOut, FbdFunctionBlockWithAnInOutPinRunsAsAStatement) {
+  const auto fbd = write_temp(bump_fbd(false), ".xml");
+  const auto st = write_temp(R"(FUNCTION Bump : BOOL
+  VAR_INPUT up : BOOL; END_VAR
+  VAR_IN_OUT c : INT; END_VAR
+  IF up AND c < 5 THEN c := c + 1; END_IF; Bump := c = 5;
+END_FUNCTION
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR a : INT; b : INT; full : BOOL; END_VAR
+  Bump(up := go, c := a);
+  b := a;
+END_PROGRAM
+)",
+                             ".st");
+  const std::string props = "--ctl 'EF b = 5' --ctl 'AG (a = 5 -> b = 5)' --ctl 'AG b <= 4'";
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    const auto a = run_sfcv("check " + fbd + " --engine " + engine + " --checks none " + props +
+                            " --trace none");
+    const auto b = run_sfcv("check " + st + " --engine " + engine + " --checks none " + props +
+                            " --trace none");
+    EXPECT_EQ(a.exit_code, 1) << a.out << a.err;
+    EXPECT_EQ(without_times(a.out), without_times(b.out)) << a.out << b.out;
+  }
+  const auto both =
+      run_sfcv("check " + write_temp(bump_fbd(true), ".xml") + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(both.exit_code, 2) << both.out << both.err;
+  EXPECT_NE(both.err.find("unsupported: function Bump with both its result and an in/out "
+                          "parameter read"),
+            std::string::npos)
+      << both.err;
+}
+
 }  // namespace
 }  // namespace sfcv::test
