@@ -431,6 +431,17 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
       return node(n);
     }
   }
+  // `Main.x` of a program this run does not include (a TwinCAT FB reading MAIN's variables,
+  // checked alone with --pou).
+  if (const auto* program = project.find_pou(e.name);
+      program && program->kind == model::PouKind::Program && program->find_variable(e.member)) {
+    error(e.where, "'" + e.name + "." + e.member + "' in " + sc.pou->name +
+                       " is a variable of program " + program->name +
+                       ", which this run does not include: check the whole project (without "
+                       "--pou), where " +
+                       program->name + " runs the instances that need it");
+    return constant(0);
+  }
   error(e.where, "unknown name '" + e.name + "." + e.member + "' in " + sc.pou->name);
   return constant(0);
 }
