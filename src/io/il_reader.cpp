@@ -56,9 +56,14 @@ bool ident_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
-/// Comments become blanks, so that positions stay.
+/// Comments, `(* ... *)` and CODESYS/TwinCAT `// ...` to the end of the line, become blanks,
+/// so that positions stay.
 std::string without_comments(std::string text) {
   for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+    if (text[i] == '/' && text[i + 1] == '/') {
+      for (; i < text.size() && text[i] != '\n'; ++i) text[i] = ' ';
+      continue;
+    }
     if (text[i] != '(' || text[i + 1] != '*') continue;
     const auto end = text.find("*)", i + 2);
     const auto stop = end == std::string::npos ? text.size() : end + 2;

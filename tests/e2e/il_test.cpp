@@ -36,7 +36,7 @@ const std::string kIl =
     "JMPCN skip\n"
     "LD n\n"
     "ADD 1\n"
-    "MIN 5 (* at most five *)\n"
+    "MIN 5 // at most five\n"
     "ST n\n"
     "skip: LD n\n"
     "GE 3\n"
