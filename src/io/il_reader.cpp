@@ -155,16 +155,6 @@ std::string name_of(const model::Expr& e) {
   return e.kind == ExprKind::Member ? e.name + "." + e.member : e.name;
 }
 
-/// True when `e` reads `variable` ("x", or "inst" for every member of inst).
-bool reads(const model::Expr& e, const std::string& variable) {
-  if (e.kind == ExprKind::Name && model::iequals(e.name, variable)) return true;
-  if (e.kind == ExprKind::Member &&
-      (model::iequals(e.name, variable) || model::iequals(name_of(e), variable)))
-    return true;
-  return std::any_of(e.args.begin(), e.args.end(),
-                     [&](const ExprPtr& a) { return a && reads(*a, variable); });
-}
-
 /// A result the code still holds: null when undefined, `why` saying since when.
 struct Held {
   ExprPtr result;
@@ -352,7 +342,7 @@ class Translator {
     const std::string why = "stale: '" + in.op + " " + in.operand + "' changed " + variable +
                             ", which it reads (not modelled: load it again)";
     auto forget = [&](Held& h) {
-      if (h.result && reads(*h.result, variable)) h = {nullptr, why};
+      if (h.result && model::reads(*h.result, variable)) h = {nullptr, why};
     };
     forget(s.current);
     for (auto& x : s.saved) forget(x.held);

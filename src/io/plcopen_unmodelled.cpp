@@ -19,7 +19,7 @@ namespace sfcv::io::plcopen {
 
 namespace {
 
-/// The user functions `e` calls (upper case), and whether it calls any other function.
+/// Adds to `user` the user functions `e` calls (upper case).
 void calls_in(const model::Expr& e, const XmlContext& ctx, std::set<std::string>& user) {
   if (e.kind == model::ExprKind::Call && ctx.user_functions.count(model::to_upper(e.name)))
     user.insert(model::to_upper(e.name));
@@ -62,29 +62,6 @@ bool only_computes(const model::Expr& e, const XmlContext& ctx) {
   calls_in(e, ctx, user);
   return std::all_of(user.begin(), user.end(),
                      [&](const std::string& f) { return ctx.pure_functions.count(f) > 0; });
-}
-
-/// True when `e` reads the variable `upper` (upper case).
-bool reads(const model::Expr& e, const std::string& upper) {
-  if ((e.kind == model::ExprKind::Name || e.kind == model::ExprKind::Member) &&
-      model::to_upper(e.name) == upper)
-    return true;
-  return std::any_of(e.args.begin(), e.args.end(),
-                     [&](const auto& a) { return a && reads(*a, upper); });
-}
-bool reads(const model::StmtList& body, const std::string& upper) {
-  for (const auto& s : body) {
-    for (const auto* e : {&s->value, &s->limit, &s->step})
-      if (*e && reads(**e, upper)) return true;
-    for (const auto& c : s->conditions)
-      if (c && reads(*c, upper)) return true;
-    for (const auto& [name, arg] : s->arguments)
-      if (arg && reads(*arg, upper)) return true;
-    for (const auto& b : s->bodies)
-      if (reads(b, upper)) return true;
-    if (reads(s->else_body, upper)) return true;
-  }
-  return false;
 }
 
 /// Leaves out the assignments to a variable of `dropped` whose right side only computes.
@@ -162,7 +139,7 @@ void leave_out_unmodelled_writes(PouContext& pc, model::StmtList& body,
   // A variable this body also reads keeps its writes: the read is refused, and so is the POU.
   std::map<std::string, std::string> dropped;
   for (const auto& [name, type] : it->second)
-    if (!reads(body, name)) dropped.emplace(name, type);
+    if (!model::reads(body, name)) dropped.emplace(name, type);
   if (!dropped.empty()) leave_out(pc.ctx, dropped, body, problems);
 }
 

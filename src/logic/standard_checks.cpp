@@ -435,11 +435,8 @@ std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem
     for (const auto& pou : project.pous) {
       for (const auto& sa : pou.stored_actions)
         if (model::iequals(sa.variable, m.variable)) add_once(stored, sa.step);
-      for (const auto& as : pou.associations) {
-        const auto* action = pou.find_action(as.action);
-        if (model::iequals(action ? action->variable : as.action, m.variable))
-          add_once(continuous, as.step);
-      }
+      for (const auto& as : pou.associations)
+        if (model::iequals(pou.assigned_variable(as), m.variable)) add_once(continuous, as.step);
     }
     m.what = m.variable + " is written by continuous actions (" + steps_list(continuous) +
              ") and by stored actions (" + steps_list(stored) + ")";

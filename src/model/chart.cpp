@@ -65,6 +65,10 @@ const Variable* Pou::find_variable(std::string_view n) const {
 const Action* Pou::find_action(std::string_view n) const {
   return find(actions, n);
 }
+const std::string& Pou::assigned_variable(const ActionAssociation& as) const {
+  const Action* a = find_action(as.action);
+  return a ? a->variable : as.action;
+}
 const Chart* Pou::find_chart(std::string_view n) const {
   return find(charts, n);
 }

@@ -217,6 +217,9 @@ struct Pou {
   bool has_sfc() const { return !charts.empty(); }
   const Variable* find_variable(std::string_view var_name) const;
   const Action* find_action(std::string_view action_name) const;
+  /// Grafcet: the variable a continuous action assigns, the named action's variable, or the
+  /// association's own name when it names a variable directly (`X1 -> Y`).
+  const std::string& assigned_variable(const ActionAssociation& as) const;
   const Chart* find_chart(std::string_view chart_name) const;
   int chart_index(std::string_view chart_name) const;  ///< -1 when absent
 };

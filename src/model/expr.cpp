@@ -4,6 +4,8 @@
 #include <cctype>
 #include <utility>
 
+#include "model/names.hpp"
+
 namespace sfcv::model {
 
 namespace {
@@ -255,6 +257,24 @@ ExprPtr make_delay(std::int64_t t1_ms, ExprPtr arg, std::int64_t t2_ms, SourceLo
   e->args.push_back(std::move(arg));
   set_height(*e);
   return e;
+}
+
+bool reads(const Expr& e, std::string_view variable) {
+  switch (e.kind) {
+    case ExprKind::Name:
+      if (iequals(e.name, variable)) return true;
+      break;
+    case ExprKind::Member:
+      if (iequals(e.name, variable) || iequals(e.name + "." + e.member, variable)) return true;
+      break;
+    case ExprKind::Index:
+      if (iequals(std::string_view(e.name).substr(0, e.name.find('[')), variable)) return true;
+      break;
+    default:
+      break;
+  }
+  return std::any_of(e.args.begin(), e.args.end(),
+                     [&](const ExprPtr& a) { return a && reads(*a, variable); });
 }
 
 bool equal(const Expr& a, const Expr& b) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/source_location.hpp"
@@ -90,6 +91,11 @@ ExprPtr make_unmodelled_literal(std::string text, SourceLocation where = {});
 ExprPtr make_delay(std::int64_t t1_ms, ExprPtr e, std::int64_t t2_ms, SourceLocation where = {});
 
 /// Structural equality (ignores source locations).
+/// True when evaluating `e` reads `variable` (case-insensitive): a name `x`, a member `x.m`
+/// (so an instance's name covers all its members) or its written form `x.m`, or an element
+/// of an array `x`.
+bool reads(const Expr& e, std::string_view variable);
+
 bool equal(const Expr& a, const Expr& b);
 bool equal(const ExprPtr& a, const ExprPtr& b);
 

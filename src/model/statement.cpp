@@ -1,5 +1,7 @@
 #include "model/statement.hpp"
 
+#include <algorithm>
+
 #include "model/names.hpp"
 
 namespace sfcv::model {
@@ -25,6 +27,22 @@ StmtPtr make_fb_call(std::string instance, std::vector<std::pair<std::string, Ex
 
 bool is_loop(StmtKind k) {
   return k == StmtKind::For || k == StmtKind::While || k == StmtKind::Repeat;
+}
+
+bool reads(const StmtList& body, std::string_view variable) {
+  auto read = [&](const ExprPtr& e) { return e && reads(*e, variable); };
+  for (const auto& s : body) {
+    if (read(s->value) || read(s->limit) || read(s->step)) return true;
+    if (std::any_of(s->conditions.begin(), s->conditions.end(), read) ||
+        std::any_of(s->target_indices.begin(), s->target_indices.end(), read))
+      return true;
+    for (const auto& [name, argument] : s->arguments)
+      if (read(argument)) return true;
+    for (const auto& b : s->bodies)
+      if (reads(b, variable)) return true;
+    if (reads(s->else_body, variable)) return true;
+  }
+  return false;
 }
 
 bool equal(const Stmt& a, const Stmt& b) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -73,6 +74,9 @@ StmtPtr make_fb_call(std::string instance, std::vector<std::pair<std::string, Ex
 
 /// A loop statement (FOR, WHILE, REPEAT).
 bool is_loop(StmtKind k);
+
+/// True when executing `body` evaluates an expression that reads `variable` (model::reads).
+bool reads(const StmtList& body, std::string_view variable);
 
 bool equal(const Stmt& a, const Stmt& b);
 bool equal(const StmtList& a, const StmtList& b);

@@ -144,11 +144,9 @@ void Validator::check_stored_action(const StoredAction& sa) {
       &sa ==
       &*std::find_if(pou_->stored_actions.begin(), pou_->stored_actions.end(),
                      [&](const StoredAction& x) { return iequals(x.variable, sa.variable); });
-  const bool continuous =
-      std::any_of(pou_->associations.begin(), pou_->associations.end(), [&](const auto& as) {
-        const Action* a = pou_->find_action(as.action);
-        return iequals(a ? a->variable : as.action, sa.variable);
-      });
+  const bool continuous = std::any_of(
+      pou_->associations.begin(), pou_->associations.end(),
+      [&](const auto& as) { return iequals(pou_->assigned_variable(as), sa.variable); });
   if (first_stored && continuous)
     warning(here, "variable " + quoted(sa.variable) +
                       " is written by both continuous and stored actions: IEC 60848 gives a "

@@ -338,9 +338,8 @@ void GrafcetSystem::build_continuous_actions(const model::Pou& pou) {
   for (const auto& as : pou.associations) {
     GContinuous g;
     g.step = step_in(pou, as.chart, as.step, as.where);
-    std::string target = as.action;
-    if (const auto* a = pou.find_action(as.action)) target = a->variable;
-    g.var = var_index_.at(model::to_upper(pou.name) + "." + model::to_upper(target));
+    g.var =
+        var_index_.at(model::to_upper(pou.name) + "." + model::to_upper(pou.assigned_variable(as)));
     if (g.step < 0) continue;
     if (as.condition) {
       g.has_condition = true;
