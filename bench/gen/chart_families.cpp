@@ -275,6 +275,7 @@ class RandomChart {
     o << "  END_VAR\n  VAR_OUTPUT\n";
     for (std::uint32_t i = 0; i < outputs_; ++i) o << "    " << idx("Q", i) << " : BOOL;\n";
     if (features_.writing_actions) o << "    Y : INT(0..3);\n";
+    if (features_.counter) o << "    C : INT(0..3);\n";
     o << "  END_VAR\n";
     if (reset_step) o << "  VAR\n    SFCReset : BOOL;\n  END_VAR\n";
     // The nested chart's action is started by one step and, when stored, reset by another.
@@ -298,6 +299,8 @@ class RandomChart {
       if (reset_step && s == reset_step) o << "    Restart(P1);\n";
       if (reset_step && s == 0) o << "    Restarted(N);\n";
       if (features_.nested_chart && stored && s == stopper && s != starter) o << "    Sub(R);\n";
+      if (features_.counter && (s == 0 || pick(3) == 0))
+        o << "    " << (s ? "Up" : "Clear") << "(N);\n";
       if (features_.writing_actions && s > 0 && pick(2) == 0) {
         static const char* qualifiers[] = {"N", "N", "S", "R"};
         o << "    " << idx("W", pick(3)) << "(" << qualifiers[pick(4)] << ");\n";
@@ -324,6 +327,10 @@ class RandomChart {
         << "  ACTION W1 : Y := " << (pick(2) ? value : (value + 1) % 4) << "; END_ACTION\n"
         << "  ACTION W2 : IF " << guard() << " THEN Y := 2; END_IF; END_ACTION\n";
     }
+    if (features_.counter)
+      o << "  ACTION Up : " << (pick(2) ? "IF C < 3 THEN C := C + 1; END_IF;" : "C := C + 1;")
+        << " END_ACTION\n"
+        << "  ACTION Clear : C := 0; END_ACTION\n";
     o << "END_PROGRAM\n";
     return o.str();
   }
@@ -339,6 +346,7 @@ class RandomChart {
     return s + ")";
   }
   std::string guard() {
+    if (features_.counter && pick(5) == 0) return pick(2) ? "C >= 2" : "C < 2";
     if (inputs_ == 0 || pick(4) == 0) return "TRUE";
     std::string g = (pick(2) ? "" : "NOT ") + idx("i", pick(inputs_));
     if (pick(3) == 0) g += (pick(2) ? " AND " : " OR ") + idx("i", pick(inputs_));

@@ -32,6 +32,10 @@ struct RandomChartFeatures {
   /// conditionally), associated to random steps with N, S or R: output conflicts and stored
   /// actions with bodies.
   bool writing_actions = false;
+  /// An output C : INT(0..3) counted up by an action Up (N) of random steps, guarded against
+  /// overflow in half of the charts only (a range error, reachable or not), cleared while S0 is
+  /// active, and read by some transition guards.
+  bool counter = false;
 };
 
 /// A deep counter: an n-bit variable `c` (INT(0..2^n - 1)) counts up by one on `tick`, every

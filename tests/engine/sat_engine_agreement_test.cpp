@@ -18,6 +18,7 @@
 #include "engine/sat/certificate.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
+#include "engine/sat/range_check.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
@@ -220,6 +221,75 @@ TEST(SatEngineAgreement, RandomCharts) {
   EXPECT_GT(tally.violated, 2000);
   EXPECT_GT(tally.traces, 2000);
   EXPECT_GT(tally.certificates, 1000);
+}
+
+/// `ts`'s circuit query with step_ok = allowed & !range_error and no target.
+struct CircuitQuery {
+  semantics::TransitionCircuit circuit;
+  sat::ReachQuery query;
+  explicit CircuitQuery(const semantics::TransitionSystem& ts)
+      : circuit(semantics::build_iec61131_circuit(ts)) {
+    query.aig = &circuit.aig;
+    query.step_ok =
+        circuit.aig.make_and(circuit.allowed, semantics::Aig::make_not(circuit.range_error));
+  }
+  CircuitQuery(const CircuitQuery&) = delete;
+};
+
+// Range errors: random charts with a counter that overflows in some (the check `instability`
+// violated) and never in others, where IC3 and BMC search without the range check
+// (range_check.hpp). The check is left out exactly when no range error is reachable, and every
+// engine agrees on every verdict either way.
+TEST(SatEngineAgreement, RandomChartsWithACounter) {
+  Tally tally;
+  int relaxed = 0, kept = 0;
+  for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    bench::RandomChartFeatures features;
+    features.counter = true;
+    features.timed_qualifiers = seed % 3 == 0;
+    semantics::Iec61131Options options;
+    options.time = seed % 2 == 0 ? semantics::TimeMode::Abstract : semantics::TimeMode::Discrete;
+    const auto s =
+        load(bench::random_chart_iec(4 + static_cast<std::uint32_t>(seed % 5), 2, seed, features),
+             options);
+    ASSERT_TRUE(s.ts);
+    auto instability = test::task_for(s.project, *s.ts, {}, {});
+    instability.checks = {logic::StandardCheck::Instability};
+    const auto reference = make_explicit_model_checker()->check(instability);
+    ASSERT_EQ(reference.results.size(), 1u);
+    const bool range_error_reachable = reference.results[0].verdict == logic::Verdict::Violated;
+    CircuitQuery q(*s.ts);
+    const auto search = sat::without_range_check(q.query, q.circuit, {});
+    EXPECT_EQ(search.step_ok == q.circuit.allowed, !range_error_reachable);
+    (range_error_reachable ? kept : relaxed) += 1;
+    compare(s, seed, tally);
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(relaxed, 20);
+  EXPECT_GT(kept, 20);
+  EXPECT_GT(tally.violated, 300);
+  EXPECT_GT(tally.holds, 300);
+}
+
+// On `levels 3` no range error is reachable: the check is left out, and IC3 then decides a
+// bound of tank 1 (which reads tank 0) both ways, as the explicit engine does.
+TEST(SatEngine, RangeCheckLeftOutWhenNoRangeErrorIsReachable) {
+  const auto s = load(bench::level_tanks_iec(3, 10));
+  ASSERT_TRUE(s.ts);
+  CircuitQuery q(*s.ts);
+  const auto search = sat::without_range_check(q.query, q.circuit, {});
+  EXPECT_EQ(search.step_ok, q.circuit.allowed);
+  auto task = test::task_for(s.project, *s.ts, {"AG lvl_1 <= 10", "AG lvl_1 <= 11"}, {});
+  const auto e = make_explicit_model_checker()->check(task);
+  const auto r = make_sat_model_checker(SatEngineOptions{})->check(task);
+  ASSERT_EQ(r.results.size(), 2u);
+  EXPECT_EQ(e.results[0].verdict, logic::Verdict::Violated);
+  EXPECT_EQ(e.results[1].verdict, logic::Verdict::Holds);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_EQ(r.results[i].verdict, e.results[i].verdict);
+  ASSERT_TRUE(r.results[0].trace);
+  expect_replays(*s.ts, *r.results[0].trace);
+  EXPECT_FALSE(r.results[1].certificate.empty());
 }
 
 TEST(SatEngineAgreement, RandomGrafcets) {

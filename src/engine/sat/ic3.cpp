@@ -333,7 +333,6 @@ class Ic3 {
   Ic3Options options_;
   Ic3Stats* stats_;
   std::vector<std::uint32_t> cone_;
-  std::vector<double> activity_;            ///< per latch: how often generalised cubes kept it
   std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;

@@ -13,6 +13,7 @@
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
 #include "engine/sat/observers.hpp"
+#include "engine/sat/range_check.hpp"
 #include "logic/circuit_atom.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
@@ -35,6 +36,9 @@ using Clock = std::chrono::steady_clock;
 
 /// --engine ic3 with several targets: the depth of the BMC pass that comes first (solve()).
 constexpr std::uint32_t kBmcFirstDepth = 32;
+/// The longest IC3 may try to prove that no range error can occur before the other targets
+/// (Run::without_range_check); less when an eighth of the time left is less.
+constexpr double kRangeProbeSeconds = 5.0;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -448,6 +452,7 @@ class Run {
     }
     out.resize(targets_.size());
     std::vector<bool> decided(targets_.size(), false);
+    const sat::ReachQuery search = without_range_check(query);
     if (targets_.size() > 1) {
       // Many targets (the standard checks: one per step, transition or finding): BMC first, to
       // a shallow depth and for a quarter of the time left, reaches the shallow ones with
@@ -457,7 +462,7 @@ class Run {
       shallow.max_depth = std::min<std::uint32_t>(options_.max_depth, kBmcFirstDepth);
       shallow.deadline = deadline_;
       if (deadline_.at) shallow.deadline.at = Clock::now() + (*deadline_.at - Clock::now()) / 4;
-      auto first = sat::bmc(query, shallow);
+      auto first = sat::bmc(search, shallow);
       for (std::size_t t = 0; t < first.size(); ++t)
         if (first[t].kind == ReachResult::Kind::Reached) {
           out[t] = std::move(first[t]);
@@ -468,7 +473,7 @@ class Run {
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
       if (decided[t]) continue;
-      auto r = sat::ic3(query, t, io);
+      auto r = sat::ic3(search, t, io);
       if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
         // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
         // knows only that a run of r.depth cycles exists, and BMC up to that depth rebuilds a
@@ -488,6 +493,21 @@ class Run {
       out[t] = std::move(r);
     }
     return out;
+  }
+
+  /// The query IC3 (and the BMC pass before it) searches: `query`, or, when IC3 proves
+  /// within a short budget that no range error can occur, `query` without the range check
+  /// (range_check.hpp: on `sfcv-gen levels 6` the cone of `lvl_0 <= 9` shrinks from six tanks
+  /// to one). Proofs are still re-checked against `query`, and runs replay on it.
+  sat::ReachQuery without_range_check(const sat::ReachQuery& query) {
+    if (!iec_ || targets_.empty()) return query;
+    // An eighth of the time left, at most kRangeProbeSeconds: a probe that fails costs little.
+    sat::Deadline probe = deadline_;
+    const auto now = Clock::now();
+    probe.at = now + std::chrono::duration_cast<Clock::duration>(
+                         std::chrono::duration<double>(kRangeProbeSeconds));
+    if (deadline_.at) probe.at = std::min(*probe.at, now + (*deadline_.at - now) / 8);
+    return sat::without_range_check(query, *iec_, probe);
   }
 
   /// `r` cut at the first frame where `target` holds (IC3's run may pass one before its end):
