@@ -23,7 +23,7 @@ struct FrameSolver {
   std::unique_ptr<Solver> solver;
   std::unique_ptr<Unrolling> frames;
   FrameSolver(const semantics::Aig& aig, bool initial, Deadline d)
-      : solver(std::make_unique<Solver>(d)),
+      : solver(std::make_unique<Solver>(d, SolverProfile::ManySmallQueries)),
         frames(std::make_unique<Unrolling>(aig, *solver, initial)) {}
   int current(const LatchLiteral& l) const {
     const int x = frames->latch(l.latch, 0);

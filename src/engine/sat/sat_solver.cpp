@@ -30,8 +30,12 @@ struct Solver::Impl {
   CaDiCaL::Solver solver;
   DeadlineTerminator terminator;
   Deadline deadline;
-  explicit Impl(Deadline d) : terminator(d), deadline(d) {
+  Impl(Deadline d, SolverProfile profile) : terminator(d), deadline(d) {
     solver.set("quiet", 1);  // library code prints nothing
+    if (profile == SolverProfile::ManySmallQueries) {
+      solver.set("phase", 0);
+      solver.set("reduce", 0);
+    }
     if (d.set()) solver.connect_terminator(&terminator);
   }
   ~Impl() {
@@ -39,7 +43,8 @@ struct Solver::Impl {
   }
 };
 
-Solver::Solver(Deadline deadline) : impl_(std::make_unique<Impl>(deadline)) {}
+Solver::Solver(Deadline deadline, SolverProfile profile)
+    : impl_(std::make_unique<Impl>(deadline, profile)) {}
 Solver::~Solver() = default;
 
 int Solver::new_var() {
