@@ -452,6 +452,23 @@ TEST(InstancesCorpus, Ic3ProvesAnUnreachableStepOfTheTwinCatProject) {
   EXPECT_NE(r.out.find("is never active"), std::string::npos) << r.out;
 }
 
+// Corpus 06 counts INT i while Step0 waits (abstract time: it may wait forever): i overflows
+// after 32 767 cycles, far beyond BMC and, frame by frame, beyond IC3 in a minute (it reached
+// frame 83 of 32 768 in 60 s). The ic3 engine finds the run by repeating a one-cycle loop
+// (engine/sat/loop_pumping.hpp): every invariant-shaped check is decided within the minute.
+TEST(InstancesCorpus, Ic3DecidesEveryInvariantCheckOfTheCodesysNestedCounters) {
+  SFCV_REQUIRE_CORPUS(corpus);
+  const std::string path = "'" + (corpus / "06_codesys_nested_sfc_action.xml").string() + "'";
+  const auto r =
+      run_sfcv("check " + path +
+               " --engine ic3 --checks reachable,dead-transitions,stored-actions,output-conflicts,"
+               "instability --trace none --timeout 60 --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_EQ(r.out.find("unknown"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("instability       violated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("depth 32768"), std::string::npos) << r.out;
+}
+
 TEST(InstancesCorpus, TwinCatSfcActionsOfInstancesRun) {
   SFCV_REQUIRE_CORPUS(corpus);
   const std::string path = "'" + (corpus / "09_twincat_xppu_scenario1.xml").string() + "'";

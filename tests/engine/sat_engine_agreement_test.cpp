@@ -18,6 +18,7 @@
 #include "engine/sat/certificate.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
+#include "engine/sat/loop_pumping.hpp"
 #include "engine/sat/range_check.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "io/load.hpp"
@@ -290,6 +291,56 @@ TEST(SatEngine, RangeCheckLeftOutWhenNoRangeErrorIsReachable) {
   ASSERT_TRUE(r.results[0].trace);
   expect_replays(*s.ts, *r.results[0].trace);
   EXPECT_FALSE(r.results[1].certificate.empty());
+}
+
+// An INT counter that counts while a step may wait forever overflows after 32 767 cycles.
+// Pumping a loop finds that run; it is as short as the explicit engine's breadth-first one and
+// replays. A target no run meets gets no run from pumping.
+TEST(SatEngine, LoopPumpingReachesADeepOverflow) {
+  const auto s = load(R"(PROGRAM Waiting
+  VAR_INPUT go : BOOL; END_VAR
+  VAR n : INT; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Count: Inc(N); END_STEP
+  TRANSITION FROM Idle TO Count := TRUE; END_TRANSITION
+  TRANSITION FROM Count TO Idle := go; END_TRANSITION
+  ACTION Inc: n := n + 1; END_ACTION
+END_PROGRAM
+)");
+  ASSERT_TRUE(s.ts);
+  CircuitQuery q(*s.ts);
+  auto task = test::task_for(s.project, *s.ts, {"AG n >= 0"}, {});
+  q.query.targets = {q.circuit.aig.make_and(q.circuit.allowed, q.circuit.range_error),
+                     semantics::Aig::make_not(
+                         logic::circuit_literal(q.circuit, *task.properties[0].formula->args[0]))};
+  std::vector<std::uint32_t> counters;
+  for (const auto& latches : q.circuit.field_latches)
+    if (latches.size() > 1) counters.insert(counters.end(), latches.begin(), latches.end());
+  const auto pumped = sat::pump_loops(q.query, counters, {true, true}, {});
+  ASSERT_EQ(pumped.size(), 2u);
+  ASSERT_EQ(pumped[0].kind, sat::ReachResult::Kind::Reached);
+  EXPECT_EQ(pumped[1].kind, sat::ReachResult::Kind::Unknown);  // n >= 0 holds
+
+  // Through the engine: the overflow (instability) and the last value before it, as the
+  // explicit engine finds them.
+  auto deep = test::task_for(s.project, *s.ts, {"AG n <= 32766"}, {});
+  deep.checks = {logic::StandardCheck::Instability};
+  const auto e = make_explicit_model_checker()->check(deep);
+  const auto r = make_sat_model_checker(SatEngineOptions{})->check(deep);
+  ASSERT_EQ(e.results.size(), 2u);
+  ASSERT_EQ(r.results.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(e.results[i].verdict, logic::Verdict::Violated);
+    EXPECT_EQ(r.results[i].verdict, logic::Verdict::Violated);
+  }
+  ASSERT_TRUE(e.results[0].trace && r.results[0].trace);
+  // Idle; Count entered (its action runs from the next cycle on, docs/semantics.md 1.2); then
+  // n = 1 .. 32767: a shortest run, and pumping the one-cycle loop in Count gives the same.
+  EXPECT_EQ(e.results[0].trace->steps.size(), 32769u);
+  EXPECT_EQ(r.results[0].trace->steps.size(), e.results[0].trace->steps.size());
+  EXPECT_EQ(pumped[0].depth, e.results[0].trace->steps.size() - 1);  // that cycle overflows
+  expect_replays(*s.ts, *r.results[0].trace);
+  if (r.results[1].trace) expect_replays(*s.ts, *r.results[1].trace);
 }
 
 TEST(SatEngineAgreement, RandomGrafcets) {

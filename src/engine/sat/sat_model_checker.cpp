@@ -12,6 +12,7 @@
 #include "engine/sat/grafcet_machine.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
+#include "engine/sat/loop_pumping.hpp"
 #include "engine/sat/observers.hpp"
 #include "engine/sat/range_check.hpp"
 #include "logic/circuit_atom.hpp"
@@ -39,6 +40,8 @@ constexpr std::uint32_t kBmcFirstDepth = 32;
 /// The longest IC3 may try to prove that no range error can occur before the other targets
 /// (Run::without_range_check); less when an eighth of the time left is less.
 constexpr double kRangeProbeSeconds = 5.0;
+/// The longest IC3 may spend pumping loops for deep runs before its search (Run::solve).
+constexpr double kPumpSeconds = 1.0;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -452,7 +455,6 @@ class Run {
     }
     out.resize(targets_.size());
     std::vector<bool> decided(targets_.size(), false);
-    const sat::ReachQuery search = without_range_check(query);
     if (targets_.size() > 1) {
       // Many targets (the standard checks: one per step, transition or finding): BMC first, to
       // a shallow depth and for a quarter of the time left, reaches the shallow ones with
@@ -462,13 +464,35 @@ class Run {
       shallow.max_depth = std::min<std::uint32_t>(options_.max_depth, kBmcFirstDepth);
       shallow.deadline = deadline_;
       if (deadline_.at) shallow.deadline.at = Clock::now() + (*deadline_.at - Clock::now()) / 4;
-      auto first = sat::bmc(search, shallow);
+      auto first = sat::bmc(query, shallow);
       for (std::size_t t = 0; t < first.size(); ++t)
         if (first[t].kind == ReachResult::Kind::Reached) {
           out[t] = std::move(first[t]);
           decided[t] = true;
         }
     }
+    bool range_error_reached = false;
+    if (iec_ && std::find(decided.begin(), decided.end(), false) != decided.end()) {
+      // Deep runs that repeat a short loop (an INT counter counting while a step waits), for
+      // the targets and for a range error (which then needs no proof that it cannot occur).
+      sat::ReachQuery pumped_query = query;
+      pumped_query.targets.push_back(iec_->aig.make_and(iec_->allowed, iec_->range_error));
+      std::vector<bool> wanted(decided.size());
+      for (std::size_t t = 0; t < targets_.size(); ++t) wanted[t] = !decided[t];
+      wanted.push_back(iec_->range_error != Aig::kFalse);
+      sat::PumpOptions pumping;
+      pumping.deadline = share_of_time_left(kPumpSeconds);
+      auto pumped = sat::pump_loops(pumped_query, counter_latches(), wanted, pumping);
+      range_error_reached = pumped.back().kind == ReachResult::Kind::Reached;
+      for (std::size_t t = 0; t < targets_.size(); ++t)
+        if (pumped[t].kind == ReachResult::Kind::Reached) {
+          out[t] = std::move(pumped[t]);
+          decided[t] = true;
+        }
+    }
+    const bool undecided = std::find(decided.begin(), decided.end(), false) != decided.end();
+    const sat::ReachQuery search =
+        undecided && !range_error_reached ? without_range_check(query) : query;
     sat::Ic3Options io;
     io.deadline = deadline_;
     for (std::size_t t = 0; t < targets_.size(); ++t) {
@@ -495,19 +519,41 @@ class Run {
     return out;
   }
 
-  /// The query IC3 (and the BMC pass before it) searches: `query`, or, when IC3 proves
+  /// The query IC3 searches: `query`, or, when IC3 proves
   /// within a short budget that no range error can occur, `query` without the range check
   /// (range_check.hpp: on `sfcv-gen levels 6` the cone of `lvl_0 <= 9` shrinks from six tanks
   /// to one). Proofs are still re-checked against `query`, and runs replay on it.
   sat::ReachQuery without_range_check(const sat::ReachQuery& query) {
     if (!iec_ || targets_.empty()) return query;
-    // An eighth of the time left, at most kRangeProbeSeconds: a probe that fails costs little.
-    sat::Deadline probe = deadline_;
+    return sat::without_range_check(query, *iec_, share_of_time_left(kRangeProbeSeconds));
+  }
+
+  /// The run's deadline cut to an eighth of the time left, and to at most `seconds`: for a
+  /// pass that may fail, so that failing costs little.
+  sat::Deadline share_of_time_left(double seconds) const {
+    sat::Deadline d = deadline_;
     const auto now = Clock::now();
-    probe.at = now + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(kRangeProbeSeconds));
-    if (deadline_.at) probe.at = std::min(*probe.at, now + (*deadline_.at - now) / 8);
-    return sat::without_range_check(query, *iec_, probe);
+    d.at =
+        now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    if (deadline_.at) d.at = std::min(*d.at, now + (*deadline_.at - now) / 8);
+    return d;
+  }
+
+  /// The latches of fields of two bits or more (integer variables, timers, counters of
+  /// standard FBs): what a pumped loop may change (loop_pumping.hpp).
+  std::vector<std::uint32_t> counter_latches() const {
+    std::vector<std::uint32_t> out;
+    const auto& fields = ts_.layout().fields();
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const auto kind = fields[f].kind;
+      if (kind != semantics::FieldKind::Variable && kind != semantics::FieldKind::Timer &&
+          kind != semantics::FieldKind::FbState)
+        continue;
+      if (fields[f].width < 2) continue;
+      for (auto l : iec_->field_latches[f]) out.push_back(l);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
   }
 
   /// `r` cut at the first frame where `target` holds (IC3's run may pass one before its end):
