@@ -9,16 +9,54 @@ namespace sfcv::engine::sat {
 namespace {
 
 using semantics::Aig;
+using semantics::AigLit;
+
+/// The circuit as a flat program over one byte per node: the pumped runs are tens of
+/// thousands of cycles, and Aig::evaluate (bit vectors, checked access, one allocation per
+/// cycle) made them several times slower (too slow for the sanitizer build's budget).
+class Simulator {
+ public:
+  explicit Simulator(const Aig& aig) : aig_(aig), value_(aig.nodes().size(), 0) {
+    for (std::uint32_t i = 1; i < aig.nodes().size(); ++i)
+      if (aig.nodes()[i].kind == Aig::NodeKind::And)
+        ands_.push_back({i, aig.nodes()[i].left, aig.nodes()[i].right});
+  }
+  /// One cycle from `latches` under `inputs`; read the nodes with value().
+  void evaluate(const std::vector<bool>& inputs, const std::vector<std::uint8_t>& latches) {
+    for (std::size_t i = 0; i < aig_.inputs().size(); ++i)
+      value_[Aig::node_of(aig_.inputs()[i].literal)] = inputs[i];
+    for (std::size_t l = 0; l < aig_.latches().size(); ++l)
+      value_[Aig::node_of(aig_.latches()[l].current)] = latches[l];
+    for (const auto& g : ands_) value_[g.node] = value(g.left) & value(g.right);
+  }
+  std::uint8_t value(AigLit l) const {
+    return static_cast<std::uint8_t>(value_[Aig::node_of(l)] ^ (Aig::is_negated(l) ? 1 : 0));
+  }
+
+ private:
+  struct And {
+    std::uint32_t node;
+    AigLit left, right;
+  };
+  const Aig& aig_;
+  std::vector<And> ands_;  ///< in node order: operands come first
+  std::vector<std::uint8_t> value_;
+};
 
 /// Simulates `prefix` and then `loop` over and over from the initial state; every wanted
 /// target met on the way gets its run. Stops when every wanted target is met, a step is not
-/// allowed (the run ends there), the state at a loop's start repeats the previous one (no
-/// progress: the run is periodic), after `max_frames` frames, or at the deadline.
+/// allowed (the run ends there), a turn leaves the loop or the run turns periodic, after
+/// `max_frames` frames, or at the deadline.
 class Pump {
  public:
   Pump(const ReachQuery& q, const std::vector<bool>& is_counter, const std::vector<bool>& wanted,
        std::vector<ReachResult>& out)
-      : q_(q), aig_(*q.aig), is_counter_(is_counter), wanted_(wanted), out_(out) {}
+      : q_(q),
+        aig_(*q.aig),
+        simulator_(aig_),
+        is_counter_(is_counter),
+        wanted_(wanted),
+        out_(out) {}
 
   /// Wanted targets not met yet.
   std::size_t left() const {
@@ -30,11 +68,11 @@ class Pump {
 
   void run(const std::vector<std::vector<bool>>& prefix, const std::vector<std::vector<bool>>& loop,
            const PumpOptions& o) {
-    std::vector<bool> latches;
-    for (const auto& l : aig_.latches()) latches.push_back(l.initial);
+    std::vector<std::uint8_t> latches, next(aig_.latches().size());
+    for (const auto& l : aig_.latches()) latches.push_back(l.initial ? 1 : 0);
     // The state at the first turn's start, and Brent's cycle detection over the turns' starts:
     // `saved` is the start of turn 2^i - 1, compared with each later start up to turn 2^(i+1).
-    std::vector<bool> first_start, saved;
+    std::vector<std::uint8_t> first_start, saved;
     std::uint64_t turns = 0, power = 1;
     for (std::uint64_t f = 0; f < o.max_frames; ++f) {
       if ((f & 1023) == 0 && o.deadline.passed()) return;
@@ -51,19 +89,21 @@ class Pump {
           power *= 2;
         }
       }
-      const auto nodes = aig_.evaluate(in_loop ? loop[at] : prefix[at], latches);
+      simulator_.evaluate(in_loop ? loop[at] : prefix[at], latches);
       for (std::size_t t = 0; t < out_.size(); ++t)
         if (wanted_[t] && out_[t].kind != ReachResult::Kind::Reached &&
-            Aig::value_of(nodes, q_.targets[t]))
+            simulator_.value(q_.targets[t]))
           reached(t, f, prefix, loop);
-      if (left() == 0 || !Aig::value_of(nodes, q_.step_ok)) return;
-      for (std::size_t l = 0; l < latches.size(); ++l)
-        latches[l] = Aig::value_of(nodes, aig_.latches()[l].next);
+      if (left() == 0 || !simulator_.value(q_.step_ok)) return;
+      for (std::size_t l = 0; l < next.size(); ++l)
+        next[l] = simulator_.value(aig_.latches()[l].next);
+      latches.swap(next);
     }
   }
 
  private:
-  bool same_outside_counters(const std::vector<bool>& a, const std::vector<bool>& b) const {
+  bool same_outside_counters(const std::vector<std::uint8_t>& a,
+                             const std::vector<std::uint8_t>& b) const {
     for (std::size_t l = 0; l < a.size(); ++l)
       if (!is_counter_[l] && a[l] != b[l]) return false;
     return true;
@@ -81,6 +121,7 @@ class Pump {
 
   const ReachQuery& q_;
   const Aig& aig_;
+  Simulator simulator_;
   const std::vector<bool>& is_counter_;
   const std::vector<bool>& wanted_;
   std::vector<ReachResult>& out_;

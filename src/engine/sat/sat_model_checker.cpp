@@ -40,8 +40,6 @@ constexpr std::uint32_t kBmcFirstDepth = 32;
 /// The longest IC3 may try to prove that no range error can occur before the other targets
 /// (Run::without_range_check); less when an eighth of the time left is less.
 constexpr double kRangeProbeSeconds = 5.0;
-/// The longest IC3 may spend pumping loops for deep runs before its search (Run::solve).
-constexpr double kPumpSeconds = 1.0;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -481,7 +479,7 @@ class Run {
       for (std::size_t t = 0; t < targets_.size(); ++t) wanted[t] = !decided[t];
       wanted.push_back(iec_->range_error != Aig::kFalse);
       sat::PumpOptions pumping;
-      pumping.deadline = share_of_time_left(kPumpSeconds);
+      pumping.deadline = eighth_of_time_left();  // and its frame caps
       auto pumped = sat::pump_loops(pumped_query, counter_latches(), wanted, pumping);
       range_error_reached = pumped.back().kind == ReachResult::Kind::Reached;
       for (std::size_t t = 0; t < targets_.size(); ++t)
@@ -528,14 +526,22 @@ class Run {
     return sat::without_range_check(query, *iec_, share_of_time_left(kRangeProbeSeconds));
   }
 
-  /// The run's deadline cut to an eighth of the time left, and to at most `seconds`: for a
+  /// The run's deadline cut to an eighth of the time left (none without a deadline): for a
   /// pass that may fail, so that failing costs little.
-  sat::Deadline share_of_time_left(double seconds) const {
+  sat::Deadline eighth_of_time_left() const {
     sat::Deadline d = deadline_;
-    const auto now = Clock::now();
-    d.at =
-        now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-    if (deadline_.at) d.at = std::min(*d.at, now + (*deadline_.at - now) / 8);
+    if (deadline_.at) {
+      const auto now = Clock::now();
+      d.at = now + (*deadline_.at - now) / 8;
+    }
+    return d;
+  }
+  /// The same, and at most `seconds` from now.
+  sat::Deadline share_of_time_left(double seconds) const {
+    sat::Deadline d = eighth_of_time_left();
+    const auto cap = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                        std::chrono::duration<double>(seconds));
+    d.at = d.at ? std::min(*d.at, cap) : cap;
     return d;
   }
 
