@@ -40,6 +40,8 @@ constexpr std::uint32_t kBmcFirstDepth = 32;
 /// The longest IC3 may try to prove that no range error can occur before the other targets
 /// (Run::without_range_check); less when an eighth of the time left is less.
 constexpr double kRangeProbeSeconds = 5.0;
+/// The first, short IC3 pass of `--engine ic3` on IEC charts (Run::solve).
+constexpr double kFirstIc3Seconds = 1.0;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -469,8 +471,46 @@ class Run {
           decided[t] = true;
         }
     }
+    // IC3 on each target, within `deadline`; with `last` false, a target it leaves unknown
+    // stays undecided for the passes after.
+    auto ic3_pass = [&](const sat::ReachQuery& search, sat::Deadline deadline, bool last) {
+      sat::Ic3Options io;
+      io.deadline = deadline;
+      for (std::size_t t = 0; t < targets_.size(); ++t) {
+        if (decided[t]) continue;
+        auto r = sat::ic3(search, t, io);
+        if (!last && r.kind == ReachResult::Kind::Unknown) continue;
+        if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
+          // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
+          // knows only that a run of r.depth cycles exists, and BMC up to that depth rebuilds
+          // a shortest one with its inputs (and double-checks IC3's claim).
+          sat::ReachQuery one = query;
+          one.targets = {targets_[t]};
+          sat::BoundOptions b;
+          b.max_depth = r.depth;
+          b.deadline = deadline_;
+          auto run = sat::bmc(one, b).front();
+          if (run.kind == ReachResult::Kind::Unknown && run.why.find("time") == std::string::npos)
+            throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
+          r = std::move(run);
+        }
+        // At once: a later target that runs out of time must not cost this proof.
+        recheck(t, r);
+        if (!last && r.kind == ReachResult::Kind::Unknown) continue;
+        out[t] = std::move(r);
+        decided[t] = true;
+      }
+    };
+    auto undecided = [&] {
+      return std::find(decided.begin(), decided.end(), false) != decided.end();
+    };
     bool range_error_reached = false;
-    if (iec_ && std::find(decided.begin(), decided.end(), false) != decided.end()) {
+    if (iec_ && undecided()) {
+      // A short IC3 pass first: what it proves at once (most bounds that hold) needs no
+      // pumping, whose frame caps can cost seconds on a counter that never repeats.
+      ic3_pass(query, share_of_time_left(kFirstIc3Seconds), false);
+    }
+    if (iec_ && undecided()) {
       // Deep runs that repeat a short loop (an INT counter counting while a step waits), for
       // the targets and for a range error (which then needs no proof that it cannot occur).
       sat::ReachQuery pumped_query = query;
@@ -488,32 +528,8 @@ class Run {
           decided[t] = true;
         }
     }
-    const bool undecided = std::find(decided.begin(), decided.end(), false) != decided.end();
-    const sat::ReachQuery search =
-        undecided && !range_error_reached ? without_range_check(query) : query;
-    sat::Ic3Options io;
-    io.deadline = deadline_;
-    for (std::size_t t = 0; t < targets_.size(); ++t) {
-      if (decided[t]) continue;
-      auto r = sat::ic3(search, t, io);
-      if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
-        // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
-        // knows only that a run of r.depth cycles exists, and BMC up to that depth rebuilds a
-        // shortest one with its inputs (and double-checks IC3's claim).
-        sat::ReachQuery one = query;
-        one.targets = {targets_[t]};
-        sat::BoundOptions b;
-        b.max_depth = r.depth;
-        b.deadline = deadline_;
-        auto run = sat::bmc(one, b).front();
-        if (run.kind == ReachResult::Kind::Unknown && run.why.find("time") == std::string::npos)
-          throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
-        r = std::move(run);
-      }
-      // At once: a later target that runs out of time must not cost this proof.
-      recheck(t, r);
-      out[t] = std::move(r);
-    }
+    if (undecided())
+      ic3_pass(range_error_reached ? query : without_range_check(query), deadline_, true);
     return out;
   }
 
