@@ -42,14 +42,18 @@ struct DynamicBit {
 
 class CompiledEnumerator final : public TargetEnumerator {
  public:
+  /// `initial`: every initial state, packed (empty: too many to list, no latch is merged).
   CompiledEnumerator(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c,
-                     const model::Budget& limits)
+                     const model::Budget& limits, const std::vector<StateWord>& initial)
       : ts_(ts),
         limits_(limits),
         fallback_(make_interpreted_enumerator(ts, limits_)),
-        words_(std::max<std::uint32_t>(ts.layout().words(), 1)) {
-    compile(ts, c);
+        full_words_(std::max<std::uint32_t>(ts.layout().words(), 1)),
+        words_(full_words_) {
+    compile(ts, c, initial);
   }
+
+  const StateCodec* codec() const override { return codec_.get(); }
 
   // A copy has its own scratch words and its own interpreted fallback (the system serialises
   // the calls into its scratch machine).
@@ -97,8 +101,7 @@ class CompiledEnumerator final : public TargetEnumerator {
     for (const auto& d : dynamic_bits_) relevant |= mask_[d.lit >> 1];
     const auto r = static_cast<std::uint32_t>(std::popcount(relevant));
     if (r > kMaxRelevantBits) {
-      fallback_->set_memory_in_use(memory_in_use_);
-      fallback_->targets(state, out);
+      interpret(state, out);
       return;
     }
     std::uint32_t order[64];
@@ -202,6 +205,27 @@ class CompiledEnumerator final : public TargetEnumerator {
     Word bit;
   };
 
+  /// The interpreter's targets of `state`, in the stored form.
+  void interpret(StateView state, std::vector<StateWord>& out) {
+    fallback_->set_memory_in_use(memory_in_use_);
+    if (!codec_) {
+      fallback_->targets(state, out);
+      return;
+    }
+    full_.resize(full_words_);
+    codec_->to_full(state.data(), full_.data());
+    full_targets_.clear();
+    fallback_->targets(full_, full_targets_);
+    const std::size_t first = out.size();
+    out.resize(first + full_targets_.size() / full_words_ * words_);
+    for (std::size_t t = 0; t * full_words_ < full_targets_.size(); ++t)
+      if (!codec_->to_stored(full_targets_.data() + t * full_words_,
+                             out.data() + first + t * words_))
+        throw std::logic_error(
+            "compiled successors: an interpreted target breaks a latch equivalence of the "
+            "circuit (the circuit and the interpreter disagree)");
+  }
+
   static Word lanes(std::uint32_t bits) {
     return bits >= 6 ? ~Word{0} : (Word{1} << (1U << bits)) - 1;
   }
@@ -261,11 +285,72 @@ class CompiledEnumerator final : public TargetEnumerator {
         t[static_cast<std::size_t>(rank_[std::countr_zero(m)]) * words_ + e.word] ^= e.bit;
   }
 
-  void compile(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c) {
+  /// Which latches another one determines. Two latches whose next-state literals share a node
+  /// are equal (or opposite) after every cycle; if they are also equal (opposite) in every
+  /// initial state, they are in every reachable state, and only the first is stored. A latch
+  /// whose next state is a constant it already holds initially is not stored at all.
+  struct LatchMerge {
+    std::vector<std::uint32_t> rep;   ///< per latch: the stored latch it follows; kNone: constant
+    std::vector<std::uint8_t> flip;   ///< per latch: opposite to its stored latch (or the value)
+    std::vector<std::uint32_t> kept;  ///< the stored latches, in latch order
+  };
+  static constexpr std::uint32_t kNone = ~0U;
+
+  static LatchMerge merge_latches(const semantics::TransitionCircuit& c,
+                                  const std::vector<std::uint32_t>& latch_bit,
+                                  const std::vector<StateWord>& initial, std::uint32_t words) {
+    const auto& latches = c.aig.latches();
+    const std::size_t count = latches.size();
+    LatchMerge m{std::vector<std::uint32_t>(count), std::vector<std::uint8_t>(count, 0), {}};
+    const std::size_t states = initial.size() / words;
+    auto bit = [&](std::size_t state, std::uint32_t latch) {
+      const auto b = latch_bit[latch];
+      return ((initial[state * words + b / 64] >> (b % 64)) & 1U) != 0;
+    };
+    // The stored latches so far, by the node of their next-state literal.
+    std::vector<std::vector<std::uint32_t>> by_node(c.aig.nodes().size());
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const AigLit next = latches[i].next;
+      const auto node = Aig::node_of(next);
+      m.rep[i] = i;
+      if (states > 0 && node == 0) {
+        const bool value = (next & 1U) != 0;
+        bool constant = true;
+        for (std::size_t s = 0; s < states && constant; ++s) constant = bit(s, i) == value;
+        if (constant) {
+          m.rep[i] = kNone;
+          m.flip[i] = value;
+          continue;
+        }
+      }
+      if (states > 0 && node != 0) {
+        for (const auto r : by_node[node]) {
+          const bool flip = ((next ^ latches[r].next) & 1U) != 0;
+          bool follows = true;
+          for (std::size_t s = 0; s < states && follows; ++s)
+            follows = bit(s, i) == (bit(s, r) != flip);
+          if (follows) {
+            m.rep[i] = r;
+            m.flip[i] = flip;
+            break;
+          }
+        }
+      }
+      if (m.rep[i] == i) {
+        m.kept.push_back(i);
+        by_node[node].push_back(i);
+      }
+    }
+    return m;
+  }
+
+  void compile(const semantics::TransitionSystem& ts, const semantics::TransitionCircuit& c,
+               const std::vector<StateWord>& initial) {
     const auto& nodes = c.aig.nodes();
     const auto& fields = ts.layout().fields();
+    const auto& latches = c.aig.latches();
     std::vector<AigLit> roots{c.allowed, c.range_error};
-    for (const auto& l : c.aig.latches()) roots.push_back(l.next);
+    for (const auto& l : latches) roots.push_back(l.next);
     // Cone of influence; node order is topological, so one backward sweep marks it.
     std::vector<std::uint8_t> needed(nodes.size(), 0), reads_input(nodes.size(), 0);
     for (auto r : roots) needed[Aig::node_of(r)] = 1;
@@ -280,15 +365,62 @@ class CompiledEnumerator final : public TargetEnumerator {
         reads_input[n] =
             reads_input[Aig::node_of(nodes[n].left)] | reads_input[Aig::node_of(nodes[n].right)];
     }
-    // Compact ids: 0 the constant, then every latch, every input, the static gates, the
-    // input-reading gates.
+    // Where each latch lives in the full packed state.
+    std::vector<std::uint32_t> latch_bit(latches.size(), 0);
+    for (std::uint32_t f = 0; f < c.field_latches.size(); ++f)
+      for (std::uint32_t k = 0; k < c.field_latches[f].size(); ++k)
+        latch_bit[c.field_latches[f][k]] = fields[f].offset + k;
+    auto merge = merge_latches(c, latch_bit, initial, full_words_);
+    if (merge.kept.size() < latches.size()) {
+      std::vector<StateCodec::Follower> followers;
+      std::vector<StateWord> constant(full_words_, 0);
+      std::vector<std::uint32_t> stored_bit(latches.size(), 0);
+      for (std::uint32_t k = 0; k < merge.kept.size(); ++k) stored_bit[merge.kept[k]] = k;
+      for (std::uint32_t i = 0; i < latches.size(); ++i) {
+        if (merge.rep[i] == kNone) {
+          if (merge.flip[i]) constant[latch_bit[i] / 64] |= Word{1} << (latch_bit[i] % 64);
+          continue;
+        }
+        followers.push_back({stored_bit[merge.rep[i]], latch_bit[i], merge.flip[i] != 0});
+      }
+      auto codec = std::make_shared<const StateCodec>(full_words_,
+                                                      static_cast<std::uint32_t>(merge.kept.size()),
+                                                      std::move(followers), std::move(constant));
+      const auto stored_words = codec->stored_words();
+      // Every initial state must survive the round trip (a full-state bit no latch holds, set
+      // in an initial state, would not): else every latch is stored.
+      std::vector<StateWord> stored(stored_words), back(full_words_);
+      bool exact = true;
+      for (std::size_t s = 0; exact && (s + 1) * full_words_ <= initial.size(); ++s) {
+        const StateWord* full = initial.data() + s * full_words_;
+        exact = codec->to_stored(full, stored.data());
+      }
+      if (exact) {
+        codec_ = std::move(codec);
+        words_ = stored_words;
+      }
+    }
+    if (!codec_) {
+      merge.kept.resize(latches.size());
+      for (std::uint32_t i = 0; i < latches.size(); ++i) {
+        merge.rep[i] = i;
+        merge.flip[i] = 0;
+        merge.kept[i] = i;
+      }
+    }
+    // Compact ids: 0 the constant, then every stored latch, every input, the static gates, the
+    // input-reading gates. A latch that follows another reads its id (negated when opposite);
+    // a constant one reads the constant.
     std::vector<std::uint32_t> id(nodes.size(), 0);
+    std::vector<std::uint8_t> flip(nodes.size(), 0);
     std::uint32_t next = 1;
     first_latch_ = next;
-    std::vector<std::uint32_t> latch_node(c.aig.latches().size());
-    for (std::size_t i = 0; i < c.aig.latches().size(); ++i) {
-      latch_node[i] = Aig::node_of(c.aig.latches()[i].current);
-      id[latch_node[i]] = next++;
+    for (const auto i : merge.kept) id[Aig::node_of(latches[i].current)] = next++;
+    for (std::uint32_t i = 0; i < latches.size(); ++i) {
+      const auto node = Aig::node_of(latches[i].current);
+      flip[node] = merge.flip[i];
+      if (merge.rep[i] != i)
+        id[node] = merge.rep[i] == kNone ? 0 : id[Aig::node_of(latches[merge.rep[i]].current)];
     }
     first_input_ = next;
     for (const auto& in : c.aig.inputs()) {
@@ -296,7 +428,10 @@ class CompiledEnumerator final : public TargetEnumerator {
       input_ids_.push_back(next++);
     }
     first_gate_ = next;
-    auto compact = [&](AigLit l) { return id[Aig::node_of(l)] * 2 + (l & 1U); };
+    auto compact = [&](AigLit l) {
+      const auto n = Aig::node_of(l);
+      return (id[n] * 2 + (l & 1U)) ^ flip[n];
+    };
     for (int pass = 0; pass < 2; ++pass)
       for (std::size_t n = 1; n < nodes.size(); ++n)
         if (needed[n] && nodes[n].kind == Aig::NodeKind::And && reads_input[n] == pass) {
@@ -308,28 +443,25 @@ class CompiledEnumerator final : public TargetEnumerator {
     val_[1] = ~Word{0};  // TRUE
     base_.assign(words_, 0);
     common_.assign(words_, 0);
-    exceptions_.reserve(dynamic_bits_.size());
     mask_.assign(next, 0);
-    // Where each latch lives in the packed state.
-    latch_pos_.resize(c.aig.latches().size());
-    for (std::uint32_t f = 0; f < c.field_latches.size(); ++f)
-      for (std::uint32_t k = 0; k < c.field_latches[f].size(); ++k) {
-        const auto bit = fields[f].offset + k;
-        latch_pos_[c.field_latches[f][k]] = {bit / 64, Word{1} << (bit % 64)};
-      }
+    // Where each stored latch lives in the stored state.
+    latch_pos_.resize(merge.kept.size());
+    for (std::uint32_t k = 0; k < merge.kept.size(); ++k) {
+      const auto bit = codec_ ? k : latch_bit[merge.kept[k]];
+      latch_pos_[k] = {bit / 64, Word{1} << (bit % 64)};
+    }
     held_.assign(words_, 0);
     latch_at_.assign(static_cast<std::size_t>(words_) * 64, 0);
-    for (std::size_t i = 0; i < c.aig.latches().size(); ++i) {
-      const auto& next_lit = c.aig.latches()[i].next;
-      const DynamicBit d{compact(next_lit), latch_pos_[i].word, latch_pos_[i].bit};
+    for (std::uint32_t k = 0; k < merge.kept.size(); ++k) {
+      const auto& next_lit = latches[merge.kept[k]].next;
+      const DynamicBit d{compact(next_lit), latch_pos_[k].word, latch_pos_[k].bit};
       (reads_input[Aig::node_of(next_lit)] ? dynamic_bits_ : static_bits_).push_back(d);
-      updates_.push_back(
-          {d.lit, 2 * (first_latch_ + static_cast<std::uint32_t>(i)), d.word, d.bit});
+      updates_.push_back({d.lit, 2 * (first_latch_ + k), d.word, d.bit});
       held_[d.word] |= d.bit;
-      if (d.bit)
-        latch_at_[d.word * 64 + static_cast<std::uint32_t>(std::countr_zero(d.bit))] =
-            2 * (first_latch_ + static_cast<std::uint32_t>(i));
+      latch_at_[d.word * 64 + static_cast<std::uint32_t>(std::countr_zero(d.bit))] =
+          2 * (first_latch_ + k);
     }
+    exceptions_.reserve(dynamic_bits_.size());
     allowed_ = compact(c.allowed);
     range_error_ = compact(c.range_error);
     allowed_static_ =
@@ -339,7 +471,10 @@ class CompiledEnumerator final : public TargetEnumerator {
   const semantics::TransitionSystem& ts_;
   model::Budget limits_;  ///< the run's, copied: the fallback's valuation bound and deadline
   std::shared_ptr<TargetEnumerator> fallback_;  ///< replaced in every clone
-  std::uint32_t words_;
+  std::uint32_t full_words_;                    ///< of the system's layout
+  std::uint32_t words_;                         ///< of the stored form (codec_), or full_words_
+  std::shared_ptr<const StateCodec> codec_;  ///< null: states are stored as the layout packs them
+  std::vector<StateWord> full_, full_targets_;  ///< scratch of interpret()
   std::uint32_t first_latch_ = 0, first_input_ = 0, first_gate_ = 0;
   std::vector<Position> latch_pos_;
   std::vector<std::uint32_t> input_ids_;
@@ -357,6 +492,28 @@ class CompiledEnumerator final : public TargetEnumerator {
   std::uint32_t rank_[64] = {};
 };
 
+/// Every initial state of `ts`, packed; empty when there are more than kMaxListedInitial
+/// (then no latch is merged: the merge is proved on each initial state).
+std::vector<StateWord> initial_states(const semantics::TransitionSystem& ts) {
+  constexpr std::size_t kMaxListedInitial = 256;
+  struct TooMany {};
+  class List final : public semantics::SuccessorSink {
+   public:
+    void successor(const semantics::Successor& s) override {
+      if (++count > kMaxListedInitial) throw TooMany{};
+      states.insert(states.end(), s.target.begin(), s.target.end());
+    }
+    std::vector<StateWord> states;
+    std::size_t count = 0;
+  } list;
+  try {
+    ts.initial_states(list);
+  } catch (const TooMany&) {
+    return {};
+  }
+  return list.states;
+}
+
 }  // namespace
 
 std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::TransitionSystem& ts,
@@ -373,7 +530,7 @@ std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::Tran
     const auto circuit =
         semantics::build_iec61131_circuit(ts, limits.deadline, limits.max_memory_bytes);
     if (circuit.aig.inputs().size() > 64) return nullptr;
-    return std::make_unique<CompiledEnumerator>(ts, circuit, limits);
+    return std::make_unique<CompiledEnumerator>(ts, circuit, limits, initial_states(ts));
   } catch (const semantics::CircuitUnsupported&) {
     return nullptr;
   } catch (const LimitReached& e) {

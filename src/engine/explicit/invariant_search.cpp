@@ -7,6 +7,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
@@ -39,7 +40,7 @@ constexpr std::uint32_t kSerialChunkStates = 64;
 
 /// How many targets ahead a store look-up is started: each misses the cache twice (its slot,
 /// then the state the slot refers to), and the misses of several look-ups overlap.
-constexpr std::uint32_t kAhead = 16;
+constexpr std::uint32_t kAhead = 32;
 
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
@@ -164,8 +165,15 @@ std::vector<std::int64_t> initial_inputs(const semantics::TransitionSystem& ts, 
 /// The run from an initial state to `s` through BFS parents, with the inputs of each edge
 /// picked as the graph-based engine picks them.
 logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateStore& store,
-                            const std::vector<std::uint32_t>& parent, std::uint32_t s,
-                            const model::Budget& budget) {
+                            const StateCodec* codec, const std::vector<std::uint32_t>& parent,
+                            std::uint32_t s, const model::Budget& budget) {
+  auto full = [&](std::uint32_t x) {
+    const auto view = store.at(x);
+    if (!codec) return std::vector<StateWord>(view.begin(), view.end());
+    std::vector<StateWord> state(codec->full_words());
+    codec->to_full(view.data(), state.data());
+    return state;
+  };
   std::vector<std::uint32_t> path;
   for (auto x = s; x != kNone; x = parent[x]) path.push_back(x);
   std::reverse(path.begin(), path.end());
@@ -173,16 +181,13 @@ logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateSt
   trace.kind = logic::TraceKind::Counterexample;
   std::vector<std::int64_t> previous;
   for (std::size_t i = 0; i < path.size(); ++i) {
-    const auto view = store.at(path[i]);
     logic::TraceStep step;
-    step.state.assign(view.begin(), view.end());
+    step.state = full(path[i]);
     if (i == 0) {
       step.inputs = initial_inputs(ts, step.state, budget);
     } else {
       EdgeLabel label(step.state);
-      const auto from = store.at(path[i - 1]);
-      const std::vector<StateWord> source(from.begin(), from.end());
-      ts.successors(source, label);
+      ts.successors(full(path[i - 1]), label);
       step.inputs = logic::pick_inputs(label.condition(), ts.inputs(), previous);
       step.fired = label.fired;
     }
@@ -201,6 +206,28 @@ std::size_t keep_distinct_targets(StateWord* first, std::size_t count, std::uint
   auto at = [&](std::size_t i) { return first + i * words; };
   auto same = [&](std::size_t i, std::size_t j) { return same_state(at(i), at(j), words); };
   std::size_t kept = 0;
+  if (words == 1 && count > 8 && count <= 64) {
+    // One-word targets (the common case of a compiled enumerator): the words themselves in a
+    // 128-slot table on the stack, its occupancy in two words.
+    StateWord keys[128];
+    std::uint64_t used[2] = {0, 0};
+    for (std::size_t i = 0; i < count; ++i) {
+      const StateWord w = first[i];
+      auto slot = static_cast<std::uint32_t>((w * 0x9e3779b97f4a7c15ULL) >> 57);
+      bool seen = false;
+      for (; (used[slot >> 6] >> (slot & 63U)) & 1U; slot = (slot + 1) & 127U)
+        if (keys[slot] == w) {
+          seen = true;
+          break;
+        }
+      last_repeats = seen;
+      if (seen) continue;
+      keys[slot] = w;
+      used[slot >> 6] |= std::uint64_t{1} << (slot & 63U);
+      first[kept++] = w;
+    }
+    return kept;
+  }
   if (count <= 16) {
     for (std::size_t i = 0; i < count; ++i) {
       bool seen = false;
@@ -232,6 +259,27 @@ std::size_t keep_distinct_targets(StateWord* first, std::size_t count, std::uint
     table[slot] = static_cast<std::uint32_t>(++kept);
   }
   return kept;
+}
+
+/// Keeps the distinct targets of each state (keep_distinct_targets), moved down in place:
+/// `ends` (per state, the end of its targets in words) is updated and `repeats` gets, per state,
+/// whether its last target repeated an earlier one.
+void keep_distinct_targets_of_each(std::vector<StateWord>& targets,
+                                   std::vector<std::uint32_t>& ends, std::uint32_t words,
+                                   std::vector<std::uint32_t>& table,
+                                   std::vector<std::uint8_t>& repeats) {
+  std::uint32_t from = 0, kept = 0;
+  for (auto& end : ends) {
+    bool repeat = false;
+    const auto count =
+        keep_distinct_targets(targets.data() + from, (end - from) / words, words, table, repeat);
+    repeats.push_back(repeat ? 1 : 0);
+    if (kept != from) std::copy_n(targets.begin() + from, count * words, targets.begin() + kept);
+    from = end;
+    kept += static_cast<std::uint32_t>(count * words);
+    end = kept;
+  }
+  targets.resize(kept);
 }
 
 /// The threads of the parallel search. A job runs on this thread and on every worker at once,
@@ -395,20 +443,7 @@ class Batch {
       e.targets_of(StateView(states_.data() + static_cast<std::size_t>(first) * words_,
                              static_cast<std::size_t>(last - first) * words_),
                    last - first, chunk.targets, chunk.ends);
-      // Each state's distinct targets, moved down in place.
-      std::uint32_t from = 0, kept = 0;
-      for (auto& end : chunk.ends) {
-        bool repeat = false;
-        const auto count = keep_distinct_targets(chunk.targets.data() + from, (end - from) / words_,
-                                                 words_, chunk.table, repeat);
-        chunk.repeats.push_back(repeat ? 1 : 0);
-        if (kept != from)
-          std::copy_n(chunk.targets.begin() + from, count * words_, chunk.targets.begin() + kept);
-        from = end;
-        kept += static_cast<std::uint32_t>(count * words_);
-        end = kept;
-      }
-      chunk.targets.resize(kept);
+      keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table, chunk.repeats);
     }
   }
 
@@ -530,16 +565,25 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     enumerator = own.get();
   }
 
+  // The stored form of the states (fewer words when some bits follow others): converted back
+  // only to judge a new state and to rebuild a counterexample.
+  const StateCodec* codec = enumerator->codec();
+  std::vector<StateWord> full(codec ? codec->full_words() : 0), stored;
   const std::size_t n = task.properties.size();
   std::vector<std::uint32_t> violation(n, kNone);  ///< first violating state per property
   std::vector<double> decided_at(n, 0);
   std::size_t open = n;
-  StateStore store(ts.layout().words());
+  StateStore store(codec ? codec->stored_words() : ts.layout().words());
+  if (codec) stored.resize(codec->stored_words());
   std::vector<std::uint32_t> parent;
   // Checks a newly stored state against every invariant still open.
   std::vector<std::size_t> just_violated;  ///< properties violated while expanding this state
   auto judge = [&](std::uint32_t s) {
-    const auto view = store.at(s);
+    auto view = store.at(s);
+    if (codec) {
+      codec->to_full(view.data(), full.data());
+      view = full;
+    }
     for (std::size_t i = 0; i < n; ++i)
       if (violation[i] == kNone && !holds(*task.properties[i].formula->args[0], ts, view)) {
         violation[i] = s;
@@ -557,8 +601,13 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   struct StopInitial {};
   class Initial final : public semantics::SuccessorSink {
    public:
-    Initial(StateStore& st, const model::Budget& b, std::function<bool(std::uint32_t)> judge)
-        : store(st), max_states(b.max_states), poll(b, 64), judge_(std::move(judge)) {}
+    Initial(StateStore& st, const model::Budget& b, std::function<bool(std::uint32_t)> judge,
+            std::function<StateView(StateView)> stored_form)
+        : store(st),
+          max_states(b.max_states),
+          poll(b, 64),
+          judge_(std::move(judge)),
+          stored_form_(std::move(stored_form)) {}
     void successor(const semantics::Successor& s) override {
       if (max_states > 0 && store.size() > max_states) {
         limit = "states";
@@ -568,7 +617,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         limit = "time";
         throw StopInitial{};
       }
-      const auto [index, fresh] = store.insert(s.target);
+      const auto [index, fresh] = store.insert(stored_form_(s.target));
       if (fresh && !judge_(index)) throw StopInitial{};
     }
     StateStore& store;
@@ -578,10 +627,20 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
 
    private:
     std::function<bool(std::uint32_t)> judge_;
-  } initial(store, limits, [&](std::uint32_t s) {
-    judge(s);
-    return open > 0;
-  });
+    std::function<StateView(StateView)> stored_form_;
+  } initial(
+      store, limits,
+      [&](std::uint32_t s) {
+        judge(s);
+        return open > 0;
+      },
+      [&](StateView state) {
+        if (!codec) return state;
+        // The compiled enumerator proved its codec on every initial state.
+        if (!codec->to_stored(state.data(), stored.data()))
+          throw std::logic_error("invariant search: an initial state outside the stored form");
+        return StateView(stored);
+      });
   try {
     ts.initial_states(initial);
   } catch (const StopInitial&) {
@@ -592,9 +651,8 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::string limit = initial.limit;
   std::uint64_t edges = 0;
   std::vector<StateWord> targets;
-  std::vector<std::uint32_t> stamp;  ///< per state: 1 + the last source that reached it
-  const std::uint32_t words = std::max<std::uint32_t>(ts.layout().words(), 1);
-  auto memory = [&] { return store.memory_bytes() + (parent.capacity() + stamp.capacity()) * 4; };
+  const std::uint32_t words = store.words_per_state();
+  auto memory = [&] { return store.memory_bytes() + parent.capacity() * 4; };
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
   std::uint32_t level = 0, level_end = initial_count;
   const std::uint32_t poll_mask = clock_poll_mask(words);
@@ -626,45 +684,50 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     }
     return true;
   };
-  // Stores the targets of state s and judges the new ones. False: a limit stopped it.
-  // `ahead`: the targets enumerated after these ones, whose look-ups are started early.
-  auto expand = [&](std::uint32_t s, const StateWord* found, std::size_t count, std::size_t ahead) {
-    std::uint64_t out_edges = 0;
+  // The serial search enumerates the stored states [chunk_begin, chunk_end) together: their
+  // distinct targets (one edge per source and target, as the graph) are `targets`, the end of
+  // each one's in `ends` (in words), whether its last target repeated an earlier one in
+  // `repeats`, and each target's hash in `hashes`.
+  std::vector<std::uint32_t> ends, table;
+  std::vector<std::uint8_t> repeats;
+  std::vector<std::uint64_t> hashes;
+  std::uint32_t chunk_begin = 0, chunk_end = 0;
+  // Stores the targets [first, last) of state s and judges the new ones. False: a limit
+  // stopped it. The look-ups of the chunk's later targets are started early.
+  auto expand = [&](std::uint32_t s, std::size_t first, std::size_t last) {
     just_violated.clear();
     const std::uint64_t max_states = limits.max_states;
-    for (std::size_t k = 0; k < count; k += words) {
-      if (k + kAhead * words < count + ahead)
-        store.prefetch_slot(store.state_hash(StateView(found + k + kAhead * words, words)));
-      if (k + kAhead / 2 * words < count + ahead)
-        store.prefetch_state(store.state_hash(StateView(found + k + kAhead / 2 * words, words)));
+    const std::size_t chunk_targets = hashes.size();
+    for (std::size_t k = first; k < last; ++k) {
+      if (k + kAhead < chunk_targets) store.prefetch_slot(hashes[k + kAhead]);
+      if (k + kAhead / 2 < chunk_targets) store.prefetch_state(hashes[k + kAhead / 2]);
       // As the graph builder: no state is stored beyond the limit, and the state being expanded
       // when it is reached stays unexpanded.
       if (max_states > 0 && store.size() > max_states) {
         limit = "states";
         break;
       }
-      const auto [t, fresh] = store.insert(StateView(found + k, words));
-      if (fresh) parent.push_back(s);
-      if (t >= stamp.size()) stamp.resize(std::max<std::size_t>(t + 1, 2 * stamp.size()), 0);
-      if (stamp[t] == s + 1) continue;  // the same target again: one edge per (source, target)
-      stamp[t] = s + 1;
-      ++out_edges;
-      if (fresh && open > 0) judge(t);
+      const auto t = store.insert_if_new(StateView(targets.data() + k * words, words), hashes[k]);
+      if (t == StateStore::kAbsent) continue;
+      parent.push_back(s);
+      if (open > 0) judge(t);
     }
+    // A repeated last target counts as a look-up past the limit, as in the graph builder.
+    if (limit.empty() && max_states > 0 && store.size() > max_states &&
+        repeats[s - chunk_begin] != 0)
+      limit = "states";
     if (!limit.empty()) {
       // As in the graph, the state stays unexpanded and what it reached has no known path.
       for (auto i : just_violated) violation[i] = kNone;
       open += just_violated.size();
       return false;
     }
-    edges += out_edges;
+    edges += last - first;
     return true;
   };
-  // The serial search enumerates the stored states [chunk_begin, chunk_end) together; `ends`
-  // holds the end of each one's targets in `targets`. A chunk never crosses a clock poll, so
-  // the enumeration done between two reads of the clock is what it was state by state.
-  std::vector<std::uint32_t> ends;
-  std::uint32_t chunk_begin = 0, chunk_end = 0;
+  // A chunk never crosses a clock poll, so the enumeration done between two reads of the
+  // clock is what it was state by state.
+  //
   // A limit inside one state's enumeration (a wide state past --engine auto's valuation bound,
   // or the deadline): that state stays unexpanded, as a state limit leaves it; the states of
   // its chunk before it are expanded first. An integer input too wide to enumerate
@@ -687,6 +750,11 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       stopped_by = stop.which();
     }
     chunk_end = from + static_cast<std::uint32_t>(ends.size());
+    repeats.clear();
+    keep_distinct_targets_of_each(targets, ends, words, table, repeats);
+    hashes.resize(targets.size() / words);
+    for (std::size_t k = 0; k < hashes.size(); ++k)
+      hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
   };
   std::uint32_t s = 0;
   Batch batches[2];  // outlive the pool's workers
@@ -780,9 +848,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         break;
       }
       const std::uint32_t from = s == chunk_begin ? 0 : ends[s - chunk_begin - 1];
-      if (!expand(s, targets.data() + from, ends[s - chunk_begin] - from,
-                  targets.size() - ends[s - chunk_begin]))
-        break;
+      if (!expand(s, from / words, ends[s - chunk_begin] / words)) break;
     }
   }
   const bool complete = limit.empty() && s >= store.size();
@@ -806,7 +872,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       r.message = "no initial state: the assumptions exclude every initial situation";
     } else if (violation[i] != kNone) {
       r.verdict = logic::Verdict::Violated;
-      r.trace = counterexample(ts, store, parent, violation[i], limits);
+      r.trace = counterexample(ts, store, codec, parent, violation[i], limits);
       r.trace->marked = logic::atom_observables(*p.formula);
     } else if (complete) {
       r.verdict = logic::Verdict::Holds;

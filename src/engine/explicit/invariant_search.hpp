@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/explicit/state_codec.hpp"
 #include "logic/check_result.hpp"
 #include "logic/check_task.hpp"
 #include "semantics/transition_system.hpp"
@@ -25,7 +26,8 @@ namespace sfcv::engine {
 class TargetEnumerator {
  public:
   virtual ~TargetEnumerator() = default;
-  /// Appends the successors of `state` to `out` (words_per_state words each, duplicates allowed).
+  /// Appends the successors of `state` to `out` (words_per_state words each, duplicates
+  /// allowed); both in the stored form of codec().
   virtual void targets(semantics::StateView state, std::vector<semantics::StateWord>& out) = 0;
   /// The targets of `count` states packed one after another in `states`, in that order, as
   /// targets() gives them; after each state, the end of its targets in `out` is appended to
@@ -37,6 +39,8 @@ class TargetEnumerator {
   /// beside this one; null when this one cannot (the interpreted system keeps its scratch
   /// state in the TransitionSystem).
   virtual std::unique_ptr<TargetEnumerator> clone() const { return nullptr; }
+  /// The form of the states it reads and writes; null: as the system's layout packs them.
+  virtual const StateCodec* codec() const { return nullptr; }
   /// The bytes the caller holds (the store, the parents): one state's enumeration may add to
   /// them only what the budget's memory leaves.
   void set_memory_in_use(std::uint64_t bytes) { memory_in_use_ = bytes; }

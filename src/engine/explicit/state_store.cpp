@@ -33,8 +33,7 @@ std::uint32_t StateStore::find(StateView state) const {
   }
 }
 
-std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state) {
-  const std::uint64_t h = hash(state);
+std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state, std::uint64_t h) {
   const auto tag = static_cast<std::uint32_t>(h >> 32);
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
@@ -62,7 +61,7 @@ void StateStore::grow() {
 }
 
 void StateStore::rehash(std::size_t slot_count) {
-  std::vector<std::uint32_t> table(slot_count, 0);
+  Table<std::uint32_t> table(slot_count, 0);
   const std::size_t mask = table.size() - 1;
   for (std::uint32_t idx = 0; idx < size_; ++idx) {
     std::size_t i = hash(at(idx)) & mask;

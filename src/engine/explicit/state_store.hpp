@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/explicit/huge_page_allocator.hpp"
 #include "semantics/state_layout.hpp"
 
 namespace sfcv::engine {
@@ -40,7 +41,25 @@ class StateStore {
   /// Inserts `state` unless present; returns its index and whether it was new.
   std::pair<std::uint32_t, bool> insert(StateView state) {
     if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
-    return words_ == 1 ? insert_word(state[0]) : insert_wide(state);
+    return words_ == 1 ? insert_word(state[0]) : insert_wide(state, hash(state));
+  }
+  /// Inserts `state` unless present: its index when it is new, kAbsent when it was stored.
+  /// `hash` is state_hash(state).
+  std::uint32_t insert_if_new(StateView state, std::uint64_t hash) {
+    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
+    if (words_ != 1) {
+      const auto [index, fresh] = insert_wide(state, hash);
+      return fresh ? index : kAbsent;
+    }
+    const std::size_t mask = slots_.size() - 1;
+    const StateWord word = state[0];
+    const std::uint32_t* slots = slots_.data();
+    const StateWord* data = data_.data();
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      const std::uint32_t s = slots[i];
+      if (s == 0) return add_word(i, word);
+      if (data[s - 1] == word) return kAbsent;
+    }
   }
   /// Index of `state`, or kAbsent.
   std::uint32_t find(StateView state) const;
@@ -119,7 +138,7 @@ class StateStore {
     }
   }
   std::uint32_t add_word(std::size_t slot, StateWord word);
-  std::pair<std::uint32_t, bool> insert_wide(StateView state);
+  std::pair<std::uint32_t, bool> insert_wide(StateView state, std::uint64_t hash);
   static std::uint64_t mix(std::uint64_t h) {
     // splitmix64 finaliser: cheap and good enough for packed bit vectors.
     h ^= h >> 30;
@@ -135,10 +154,12 @@ class StateStore {
 
   std::uint32_t words_;
   std::uint32_t size_ = 0;
-  std::vector<StateWord> data_;
-  std::vector<std::uint32_t> slots_;   ///< state index + 1; 0 = empty
-  std::vector<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
-                                       ///< (not kept for one-word states: compared directly)
+  template <class T>
+  using Table = std::vector<T, HugePageAllocator<T>>;
+  Table<StateWord> data_;
+  Table<std::uint32_t> slots_;   ///< state index + 1; 0 = empty
+  Table<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
+                                 ///< (not kept for one-word states: compared directly)
 };
 
 }  // namespace sfcv::engine
