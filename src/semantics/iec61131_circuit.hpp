@@ -27,6 +27,11 @@ struct TransitionCircuit {
   std::vector<AigLit> fired;         ///< per transition of the system: it fires in this cycle
   AigLit allowed = Aig::kTrue;       ///< the inputs are in range and satisfy the assumptions
   AigLit range_error = Aig::kFalse;  ///< this cycle raises a range error (no successor)
+
+  /// A cycle with a successor: allowed, without a range error (the step relation's guard).
+  AigLit step_ok() { return aig.make_and(allowed, Aig::make_not(range_error)); }
+  /// An allowed cycle that raises a range error: the target of instability and overflow checks.
+  AigLit range_error_step() { return aig.make_and(allowed, range_error); }
 };
 
 /// A construct the circuit cannot express (a product of two variables, a division): the

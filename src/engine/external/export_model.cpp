@@ -264,6 +264,7 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
   m.header = request.header;
   m.header.push_back("IEC 61131-3 scan cycle of sfcv as a circuit: one Boolean variable per state");
   m.header.push_back("bit of sfcv's transition system, one input per bit of each (pseudo-)input.");
+  // Built on the copy `aig`: the circuit's own graph stays as the engines see it.
   const AigLit cut = aig.make_and(out.circuit.allowed, Aig::make_not(out.circuit.range_error));
   if (cut != Aig::kTrue) {
     m.header.push_back("A cycle whose inputs break the assumptions or the input ranges, or which");

@@ -9,10 +9,10 @@ ReachQuery without_range_check(const ReachQuery& query, semantics::TransitionCir
                                Deadline deadline) {
   using semantics::Aig;
   if (circuit.range_error == Aig::kFalse || query.aig != &circuit.aig ||
-      query.step_ok != circuit.aig.make_and(circuit.allowed, Aig::make_not(circuit.range_error)))
+      query.step_ok != circuit.step_ok())
     return query;
   ReachQuery probe = query;
-  probe.targets = {circuit.aig.make_and(circuit.allowed, circuit.range_error)};
+  probe.targets = {circuit.range_error_step()};
   Ic3Options options;
   options.deadline = deadline;
   const auto proof = ic3(probe, 0, options);

@@ -40,6 +40,8 @@ constexpr std::uint32_t kBmcFirstDepth = 32;
 /// The longest IC3 may try to prove that no range error can occur before the other targets
 /// (Run::without_range_check); less when an eighth of the time left is less.
 constexpr double kRangeProbeSeconds = 5.0;
+/// The first try of that proof, before the first IC3 pass (Run::solve).
+constexpr double kQuickRangeProbeSeconds = 0.25;
 /// The first, short IC3 pass of `--engine ic3` on IEC charts (Run::solve).
 constexpr double kFirstIc3Seconds = 1.0;
 
@@ -92,7 +94,7 @@ class Run {
     } else {
       iec_.emplace(semantics::build_iec61131_circuit(ts_, task.limits.deadline,
                                                      task.limits.max_memory_bytes));
-      step_ok_ = iec_->aig.make_and(iec_->allowed, Aig::make_not(iec_->range_error));
+      step_ok_ = iec_->step_ok();
       steps_ = logic::step_refs(ts_, task_.project);
     }
   }
@@ -260,7 +262,7 @@ class Run {
       case StandardCheck::Instability:
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         q.shape = Question::Shape::Invariant;
-        q.targets.push_back(add_target(iec.aig.make_and(iec.allowed, iec.range_error)));
+        q.targets.push_back(add_target(iec.range_error_step()));
         break;
       case StandardCheck::StoredActions:
         stored_actions_question(q);
@@ -462,8 +464,7 @@ class Run {
       // left 71 of the 101 steps of corpus 09 undecided at --timeout 40.
       sat::BoundOptions shallow;
       shallow.max_depth = std::min<std::uint32_t>(options_.max_depth, kBmcFirstDepth);
-      shallow.deadline = deadline_;
-      if (deadline_.at) shallow.deadline.at = Clock::now() + (*deadline_.at - Clock::now()) / 4;
+      shallow.deadline = part_of_time_left(4);
       auto first = sat::bmc(query, shallow);
       for (std::size_t t = 0; t < first.size(); ++t)
         if (first[t].kind == ReachResult::Kind::Reached) {
@@ -505,16 +506,22 @@ class Run {
       return std::find(decided.begin(), decided.end(), false) != decided.end();
     };
     bool range_error_reached = false;
+    sat::ReachQuery search = query;
+    bool relaxed = false;
     if (iec_ && undecided()) {
+      // A quick proof that no range error can occur (levels 4: 0.05 s) lets the first IC3 pass
+      // search without the range check already; a reachable range error costs only its budget.
+      search = without_range_check(query, kQuickRangeProbeSeconds);
+      relaxed = search.step_ok != query.step_ok;
       // A short IC3 pass first: what it proves at once (most bounds that hold) needs no
       // pumping, whose frame caps can cost seconds on a counter that never repeats.
-      ic3_pass(query, share_of_time_left(kFirstIc3Seconds), false);
+      ic3_pass(search, share_of_time_left(kFirstIc3Seconds), false);
     }
     if (iec_ && undecided()) {
       // Deep runs that repeat a short loop (an INT counter counting while a step waits), for
       // the targets and for a range error (which then needs no proof that it cannot occur).
       sat::ReachQuery pumped_query = query;
-      pumped_query.targets.push_back(iec_->aig.make_and(iec_->allowed, iec_->range_error));
+      pumped_query.targets.push_back(iec_->range_error_step());
       std::vector<bool> wanted(decided.size());
       for (std::size_t t = 0; t < targets_.size(); ++t) wanted[t] = !decided[t];
       wanted.push_back(iec_->range_error != Aig::kFalse);
@@ -528,8 +535,13 @@ class Run {
           decided[t] = true;
         }
     }
-    if (undecided())
-      ic3_pass(range_error_reached ? query : without_range_check(query), deadline_, true);
+    if (undecided()) {
+      if (!relaxed && !range_error_reached)
+        search = without_range_check(query, kRangeProbeSeconds);
+      else if (range_error_reached)
+        search = query;
+      ic3_pass(search, deadline_, true);
+    }
     return out;
   }
 
@@ -537,21 +549,22 @@ class Run {
   /// within a short budget that no range error can occur, `query` without the range check
   /// (range_check.hpp: on `sfcv-gen levels 6` the cone of `lvl_0 <= 9` shrinks from six tanks
   /// to one). Proofs are still re-checked against `query`, and runs replay on it.
-  sat::ReachQuery without_range_check(const sat::ReachQuery& query) {
+  sat::ReachQuery without_range_check(const sat::ReachQuery& query, double seconds) {
     if (!iec_ || targets_.empty()) return query;
-    return sat::without_range_check(query, *iec_, share_of_time_left(kRangeProbeSeconds));
+    return sat::without_range_check(query, *iec_, share_of_time_left(seconds));
   }
 
-  /// The run's deadline cut to an eighth of the time left (none without a deadline): for a
+  /// The run's deadline cut to 1 / `parts` of the time left (none without a deadline): for a
   /// pass that may fail, so that failing costs little.
-  sat::Deadline eighth_of_time_left() const {
+  sat::Deadline part_of_time_left(int parts) const {
     sat::Deadline d = deadline_;
     if (deadline_.at) {
       const auto now = Clock::now();
-      d.at = now + (*deadline_.at - now) / 8;
+      d.at = now + (*deadline_.at - now) / parts;
     }
     return d;
   }
+  sat::Deadline eighth_of_time_left() const { return part_of_time_left(8); }
   /// The same, and at most `seconds` from now.
   sat::Deadline share_of_time_left(double seconds) const {
     sat::Deadline d = eighth_of_time_left();
