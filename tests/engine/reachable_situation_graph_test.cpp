@@ -112,6 +112,42 @@ TEST(StateStore, InsertsFindsAndGrows) {
   EXPECT_EQ(store.find(absent), StateStore::kAbsent);
 }
 
+TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
+  // Past `tagged_states` one-word states the slots stop holding hash bits: every state must
+  // still be found with its index, whether it was inserted or staged and committed.
+  StateStore store(1, 1000);
+  auto word = [](std::uint64_t i) { return (i * 0x9e3779b97f4a7c15ULL) >> 1; };
+  for (std::uint64_t i = 0; i < 3000; ++i) {
+    const StateWord w[1] = {word(i)};
+    EXPECT_EQ(store.insert(w), std::make_pair(static_cast<std::uint32_t>(i), true));
+  }
+  StateStore staged(1, 1000);
+  std::vector<StateWord> buffer;
+  for (std::uint64_t i = 0; i < 3000; ++i) buffer.push_back(word(i));
+  for (std::uint64_t first = 0; first < 3000; first += 600) {
+    ASSERT_TRUE(staged.reserve_for_staging(600));
+    for (std::uint64_t i = first; i < first + 600; ++i) {
+      const StateView v(buffer.data() + i, 1);
+      const auto s =
+          staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i), buffer.data());
+      ASSERT_EQ(s.index, StateStore::kAbsent);
+      ASSERT_TRUE(s.first);
+      EXPECT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
+    }
+  }
+  for (auto* st : {&store, &staged})
+    for (std::uint64_t i = 0; i < 3000; ++i) {
+      const StateWord w[1] = {word(i)};
+      EXPECT_EQ(st->find(w), static_cast<std::uint32_t>(i));
+      EXPECT_FALSE(st->insert(w).second);
+      EXPECT_EQ(st->insert_if_new(w, st->state_hash(w)), StateStore::kAbsent);
+      const auto s = st->stage(w, st->state_hash(w), 0, buffer.data());
+      EXPECT_EQ(s.index, static_cast<std::uint32_t>(i));
+    }
+  const StateWord absent[1] = {1};
+  EXPECT_EQ(store.find(absent), StateStore::kAbsent);
+}
+
 }  // namespace
 }  // namespace sfcv::engine
 

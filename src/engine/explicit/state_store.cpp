@@ -6,8 +6,11 @@
 
 namespace sfcv::engine {
 
-StateStore::StateStore(std::uint32_t words_per_state)
-    : words_(std::max<std::uint32_t>(words_per_state, 1)), slots_(1024, 0) {}
+StateStore::StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states)
+    : words_(std::max<std::uint32_t>(words_per_state, 1)),
+      tag_mask_(words_ == 1 ? kTagBits : 0),
+      tagged_states_(std::min(tagged_states, kTaggedStates)),
+      slots_(1024, 0) {}
 
 std::uint64_t StateStore::hash(StateView state) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
@@ -27,9 +30,9 @@ std::uint32_t StateStore::find(StateView state) const {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
     if (words_ == 1
-            ? data_[s - 1] == state[0]
+            ? (s & tag_mask_) == tag_of(h) && data_[index_of(s)] == state[0]
             : hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
-      return s - 1;
+      return index_of(s);
   }
 }
 
@@ -49,14 +52,19 @@ std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state, std::uin
   }
 }
 
-std::uint32_t StateStore::add_word(std::size_t slot, StateWord word) {
+std::uint32_t StateStore::add_word(std::size_t slot, StateWord word, std::uint64_t hash) {
   if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
   data_.push_back(word);
-  slots_[slot] = ++size_;
+  slots_[slot] = slot_of(size_++, hash);
   return size_ - 1;
 }
 
 void StateStore::grow() {
+  if (size_ == tag_limit()) {
+    tag_mask_ = 0;  // more states than a tagged slot can number
+    rehash(slots_.size());
+    if ((static_cast<std::size_t>(size_) + 1) * 2 <= slots_.size()) return;
+  }
   rehash(slots_.size() * 2);
 }
 
@@ -64,15 +72,20 @@ void StateStore::rehash(std::size_t slot_count) {
   Table<std::uint32_t> table(slot_count, 0);
   const std::size_t mask = table.size() - 1;
   for (std::uint32_t idx = 0; idx < size_; ++idx) {
-    std::size_t i = hash(at(idx)) & mask;
+    const std::uint64_t h = state_hash(at(idx));
+    std::size_t i = h & mask;
     while (table[i] != 0) i = (i + 1) & mask;
-    table[i] = idx + 1;
+    table[i] = slot_of(idx, h);
   }
   slots_ = std::move(table);
 }
 
 bool StateStore::reserve_for_staging(std::uint64_t count) {
   if (size_ + count >= kStagedBit - 1) return false;
+  if (tag_mask_ && size_ + count >= tagged_states_) {
+    tag_mask_ = 0;  // the staged states may number past the tagged slots' indices
+    rehash(slots_.size());
+  }
   // At most half full once every staged state is new, as insert() keeps it: each slot probed
   // past the first costs a read of a stored state.
   while ((size_ + count) * 2 > slots_.size()) grow();
@@ -101,17 +114,18 @@ StateStore::Staged StateStore::stage(StateView state, std::uint64_t h, std::uint
     if ((s & kStagedBit) != 0) {
       if (same_staged(s & ~kStagedBit))
         return {kAbsent, s & ~kStagedBit, static_cast<std::uint32_t>(i), false};
-    } else if (words_ == 1 ? data_[s - 1] == state[0]
+    } else if (words_ == 1 ? (s & tag_mask_) == tag_of(h) && data_[index_of(s)] == state[0]
                            : hashes_[s - 1] == tag && equal_at(s - 1, state)) {
-      return {s - 1, 0, 0, false};
+      return {index_of(s), 0, 0, false};
     }
   }
 }
 
 std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
   data_.insert(data_.end(), state.begin(), state.begin() + words_);
-  if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(hash(state) >> 32));
-  slots_[slot] = ++size_;
+  const std::uint64_t h = state_hash(state);
+  if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(h >> 32));
+  slots_[slot] = slot_of(size_++, h);
   return size_ - 1;
 }
 

@@ -2,7 +2,9 @@
 // Open-addressing hash set of fixed-width packed states. States live contiguously in one vector
 // (no per-state heap allocation) and are numbered in insertion order, so BFS numbering is the
 // state index. A state of at most 64 bits is one word compared directly: 16 bytes per state at
-// the table's half load (8 for the word, 8 for two slots).
+// the table's half load (8 for the word, 8 for two slots). Below 2^24 states, a one-word state's
+// slot also holds 7 bits of its hash: a probe passes a slot of another state without reading
+// that state (a third of the look-ups probe past their first slot, each a cache miss).
 
 #include <atomic>
 #include <cstdint>
@@ -36,17 +38,20 @@ inline bool same_state(const StateWord* a, const StateWord* b, std::uint32_t wor
 
 class StateStore {
  public:
-  explicit StateStore(std::uint32_t words_per_state);
+  static constexpr std::uint32_t kTaggedStates = (1U << 24) - 2;
+  /// `tagged_states`: how many one-word states are stored with a tag in their slot (at most
+  /// the 2^24 - 2 that the slot can number; fewer only to test the change of mode).
+  explicit StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states = kTaggedStates);
 
   /// Inserts `state` unless present; returns its index and whether it was new.
   std::pair<std::uint32_t, bool> insert(StateView state) {
-    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
+    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit()) grow();
     return words_ == 1 ? insert_word(state[0]) : insert_wide(state, hash(state));
   }
   /// Inserts `state` unless present: its index when it is new, kAbsent when it was stored.
   /// `hash` is state_hash(state).
   std::uint32_t insert_if_new(StateView state, std::uint64_t hash) {
-    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size()) grow();
+    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit()) grow();
     if (words_ != 1) {
       const auto [index, fresh] = insert_wide(state, hash);
       return fresh ? index : kAbsent;
@@ -55,10 +60,11 @@ class StateStore {
     const StateWord word = state[0];
     const std::uint32_t* slots = slots_.data();
     const StateWord* data = data_.data();
+    const std::uint32_t tag = tag_of(hash);
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       const std::uint32_t s = slots[i];
-      if (s == 0) return add_word(i, word);
-      if (data[s - 1] == word) return kAbsent;
+      if (s == 0) return add_word(i, word, hash);
+      if ((s & tag_mask_) == tag && data[index_of(s)] == word) return kAbsent;
     }
   }
   /// Index of `state`, or kAbsent.
@@ -112,9 +118,9 @@ class StateStore {
     // Atomic: other threads may be staging into the table (relaxed: only a hint is read).
     auto& slot = const_cast<std::uint32_t&>(slots_[hash & (slots_.size() - 1)]);
     const std::uint32_t s = std::atomic_ref<std::uint32_t>(slot).load(std::memory_order_relaxed);
-    if (s == 0 || (s & kStagedBit) != 0) return;
-    __builtin_prefetch(data_.data() + static_cast<std::size_t>(s - 1) * words_);
-    if (words_ > 1) __builtin_prefetch(hashes_.data() + (s - 1));
+    if (s == 0 || (s & kStagedBit) != 0 || (s & tag_mask_) != tag_of(hash)) return;
+    __builtin_prefetch(data_.data() + static_cast<std::size_t>(index_of(s)) * words_);
+    if (words_ > 1) __builtin_prefetch(hashes_.data() + index_of(s));
   }
   /// Stores the staged state `state` of `slot` as the next state; returns its index.
   std::uint32_t commit_staged(std::uint32_t slot, StateView state);
@@ -131,13 +137,25 @@ class StateStore {
     const std::size_t mask = slots_.size() - 1;
     const std::uint32_t* slots = slots_.data();
     const StateWord* data = data_.data();
-    for (std::size_t i = hash_word(word) & mask;; i = (i + 1) & mask) {
+    const std::uint64_t hash = hash_word(word);
+    const std::uint32_t tag = tag_of(hash);
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       const std::uint32_t s = slots[i];
-      if (s == 0) return {add_word(i, word), true};
-      if (data[s - 1] == word) return {s - 1, false};
+      if (s == 0) return {add_word(i, word, hash), true};
+      if ((s & tag_mask_) == tag && data[index_of(s)] == word) return {index_of(s), false};
     }
   }
-  std::uint32_t add_word(std::size_t slot, StateWord word);
+  std::uint32_t add_word(std::size_t slot, StateWord word, std::uint64_t hash);
+  // Tagged slots (tag_mask_ != 0): bits 24 to 30 hold the top 7 bits of the state's hash, bits 0
+  // to 23 its index + 1. A staged slot (kStagedBit) is never tagged.
+  static constexpr std::uint32_t kTagBits = 0x7F000000U;
+  std::uint32_t tag_of(std::uint64_t hash) const {
+    return static_cast<std::uint32_t>(hash >> 33) & tag_mask_;
+  }
+  std::uint32_t index_of(std::uint32_t slot) const { return (slot & ~tag_mask_) - 1; }
+  std::uint32_t slot_of(std::uint32_t index, std::uint64_t hash) const {
+    return tag_of(hash) | (index + 1);
+  }
   std::pair<std::uint32_t, bool> insert_wide(StateView state, std::uint64_t hash);
   static std::uint64_t mix(std::uint64_t h) {
     // splitmix64 finaliser: cheap and good enough for packed bit vectors.
@@ -150,9 +168,13 @@ class StateStore {
   }
   static std::uint64_t hash_word(StateWord word) { return mix(0x9e3779b97f4a7c15ULL ^ word); }
   void grow();
+  /// The size at which tagging stops (never reached when it has stopped).
+  std::uint32_t tag_limit() const { return tag_mask_ ? tagged_states_ : kAbsent; }
   void rehash(std::size_t slot_count);
 
   std::uint32_t words_;
+  std::uint32_t tag_mask_;  ///< kTagBits while one-word states are tagged, else 0
+  std::uint32_t tagged_states_;
   std::uint32_t size_ = 0;
   template <class T>
   using Table = std::vector<T, HugePageAllocator<T>>;
