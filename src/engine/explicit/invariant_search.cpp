@@ -512,6 +512,7 @@ class BatchStaging {
           ahead[p % kAhead] = store.state_hash(target(p + kAhead));
           store.prefetch_slot(ahead[p % kAhead]);
         }
+        if (store.find_stored(target(p), hash) != StateStore::kAbsent) continue;
         // Written before stage() can publish pair p, read by the threads that find it there.
         std::atomic_ref<std::uint32_t>(claims_[p]).store(p, std::memory_order_relaxed);
         const auto found = store.stage(target(p), hash, p, batch.targets());

@@ -105,6 +105,21 @@ class StateStore {
   /// another entry holds it already. `hash` is state_hash(state).
   Staged stage(StateView state, std::uint64_t hash, std::uint32_t entry,
                const StateWord* staged_words);
+  /// Thread-safe while staging: the index of the one-word `state` if it was stored before the
+  /// staging began, else kAbsent (also for wider states: ask stage()). Inline, for the many
+  /// targets that are stored already. A stored state lies before every slot staged since,
+  /// which were empty when it was stored, so the probe stops at the first of either.
+  std::uint32_t find_stored(StateView state, std::uint64_t hash) const {
+    if (words_ != 1) return kAbsent;
+    const std::size_t mask = slots_.size() - 1;
+    const std::uint32_t tag = tag_of(hash);
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      const std::uint32_t s =
+          std::atomic_ref<const std::uint32_t>(slots_[i]).load(std::memory_order_relaxed);
+      if (s == 0 || (s & kStagedBit) != 0) return kAbsent;
+      if ((s & tag_mask_) == tag && data_[index_of(s)] == state[0]) return index_of(s);
+    }
+  }
   std::uint64_t state_hash(StateView state) const {
     return words_ == 1 ? hash_word(state[0]) : hash(state);
   }
