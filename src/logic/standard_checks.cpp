@@ -409,9 +409,6 @@ std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::Tra
 std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem& ts,
                                                const model::Project& project) {
   std::vector<MixedWriter> out;
-  if (ts.kind() != semantics::SemanticsKind::Grafcet) return out;
-  const auto& fields = ts.layout().fields();
-  const std::string_view suffix = semantics::kStoredFieldSuffix;
   auto steps_list = [](const std::vector<std::string>& steps) {
     std::string text = steps.size() == 1 ? "step " : "steps ";
     for (std::size_t i = 0; i < steps.size(); ++i) text += (i ? ", " : "") + steps[i];
@@ -420,17 +417,11 @@ std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem
   auto add_once = [](std::vector<std::string>& list, const std::string& step) {
     if (std::find(list.begin(), list.end(), step) == list.end()) list.push_back(step);
   };
-  for (std::uint32_t f = 0; f < fields.size(); ++f) {
-    const auto& name = fields[f].name;
-    if (fields[f].kind != semantics::FieldKind::Variable || name.size() <= suffix.size() ||
-        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
-      continue;
+  for (const auto& mixed : ts.mixed_variables()) {
     MixedWriter m;
-    m.variable = name.substr(0, name.size() - suffix.size());
-    m.stored = f;
-    // The assignation field is declared just before (GrafcetSystem::build_variable_fields).
-    if (f == 0 || fields[f - 1].name != m.variable) continue;
-    m.assigned = f - 1;
+    m.variable = mixed.name;
+    m.assigned = mixed.assigned_field;
+    m.stored = mixed.stored_field;
     std::vector<std::string> continuous, stored;
     for (const auto& pou : project.pous) {
       for (const auto& sa : pou.stored_actions)

@@ -150,7 +150,7 @@ std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::Tra
 
 /// A Boolean variable of a Grafcet written by both continuous and stored actions, which
 /// IEC 60848 gives one mode only: the layout fields of its continuous assignation and of its
-/// stored value (semantics::kStoredFieldSuffix). output-conflicts reports the situations where
+/// stored value (TransitionSystem::mixed_variables). output-conflicts reports the situations where
 /// the two disagree. `what` names the writers ("Y is written by continuous actions (steps 2)
 /// and stored actions (step 3)").
 struct MixedWriter {

@@ -49,6 +49,8 @@ class HistorySystem final : public TransitionSystem {
   const std::vector<Observable>& observables() const override { return observables_; }
   const std::vector<TransitionInfo>& transitions() const override { return base_.transitions(); }
   std::vector<PouInstance> pou_instances() const override { return base_.pou_instances(); }
+  // The base layout's fields keep their indices here (the history fields come after).
+  std::vector<MixedVariable> mixed_variables() const override { return base_.mixed_variables(); }
   void initial_states(SuccessorSink& sink) const override;
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;

@@ -52,6 +52,14 @@ struct PouInstance {
   std::vector<std::string> units;
 };
 
+/// A Boolean variable written by both continuous and stored actions (Grafcet, docs/semantics.md
+/// 2.7): the layout field of its continuous assignation and that of the value the stored
+/// actions keep; the variable reads 1 when either does.
+struct MixedVariable {
+  std::string name;
+  std::uint32_t assigned_field = 0, stored_field = 0;
+};
+
 struct Successor {
   StateView target;
   const InputCondition& condition;       ///< inputs under which this evolution happens
@@ -93,6 +101,8 @@ class TransitionSystem {
   /// The POUs this system runs, each instance apart; empty where every POU of the project
   /// runs once, under its own name (Grafcet).
   virtual std::vector<PouInstance> pou_instances() const { return {}; }
+  /// The variables written in both modes, each with its two fields; empty where there are none.
+  virtual std::vector<MixedVariable> mixed_variables() const { return {}; }
 
   /// The initial states, each with the condition on the initial inputs that yields it.
   virtual void initial_states(SuccessorSink& sink) const = 0;

@@ -199,6 +199,14 @@ class GrafcetSystem final : public TransitionSystem {
   const std::vector<InputVariable>& inputs() const override { return input_vars_; }
   const std::vector<Observable>& observables() const override { return observables_; }
   const std::vector<TransitionInfo>& transitions() const override { return trans_info_; }
+  std::vector<MixedVariable> mixed_variables() const override {
+    std::vector<MixedVariable> out;
+    for (const auto& v : vars_)
+      if (v.mixed())
+        out.push_back({v.name, static_cast<std::uint32_t>(v.field),
+                       static_cast<std::uint32_t>(v.memory_field)});
+    return out;
+  }
 
   void initial_states(SuccessorSink& sink) const override;
   void successors(StateView state, SuccessorSink& sink) const override;
