@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 #include "semantics/iec61131_circuit.hpp"
@@ -307,8 +308,9 @@ class CompiledEnumerator final : public TargetEnumerator {
       const auto b = latch_bit[latch];
       return ((initial[state * words + b / 64] >> (b % 64)) & 1U) != 0;
     };
-    // The stored latches so far, by the node of their next-state literal.
-    std::vector<std::vector<std::uint32_t>> by_node(c.aig.nodes().size());
+    // The stored latches so far, by the node of their next-state literal (a map: the circuit
+    // may have millions of nodes and a few latches).
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> by_node;
     for (std::uint32_t i = 0; i < count; ++i) {
       const AigLit next = latches[i].next;
       const auto node = Aig::node_of(next);
