@@ -294,6 +294,14 @@ class CompiledEnumerator final : public TargetEnumerator {
     std::vector<std::uint32_t> rep;   ///< per latch: the stored latch it follows; kNone: constant
     std::vector<std::uint8_t> flip;   ///< per latch: opposite to its stored latch (or the value)
     std::vector<std::uint32_t> kept;  ///< the stored latches, in latch order
+
+    /// Every latch stored, none following another.
+    static LatchMerge none(std::size_t count) {
+      LatchMerge m{std::vector<std::uint32_t>(count), std::vector<std::uint8_t>(count, 0), {}};
+      for (std::uint32_t i = 0; i < count; ++i) m.rep[i] = i;
+      m.kept = m.rep;
+      return m;
+    }
   };
   static constexpr std::uint32_t kNone = ~0U;
 
@@ -391,7 +399,7 @@ class CompiledEnumerator final : public TargetEnumerator {
       const auto stored_words = codec->stored_words();
       // Every initial state must survive the round trip (a full-state bit no latch holds, set
       // in an initial state, would not): else every latch is stored.
-      std::vector<StateWord> stored(stored_words), back(full_words_);
+      std::vector<StateWord> stored(stored_words);
       bool exact = true;
       for (std::size_t s = 0; exact && (s + 1) * full_words_ <= initial.size(); ++s) {
         const StateWord* full = initial.data() + s * full_words_;
@@ -402,14 +410,7 @@ class CompiledEnumerator final : public TargetEnumerator {
         words_ = stored_words;
       }
     }
-    if (!codec_) {
-      merge.kept.resize(latches.size());
-      for (std::uint32_t i = 0; i < latches.size(); ++i) {
-        merge.rep[i] = i;
-        merge.flip[i] = 0;
-        merge.kept[i] = i;
-      }
-    }
+    if (!codec_) merge = LatchMerge::none(latches.size());
     // Compact ids: 0 the constant, then every stored latch, every input, the static gates, the
     // input-reading gates. A latch that follows another reads its id (negated when opposite);
     // a constant one reads the constant.

@@ -24,15 +24,17 @@ bool StateStore::equal_at(std::uint32_t index, StateView state) const {
 }
 
 std::uint32_t StateStore::find(StateView state) const {
-  const std::uint64_t h = hash(state);
+  const std::uint64_t h = state_hash(state);
+  if (words_ == 1) {
+    const std::uint32_t s = slots_[probe_word(state[0], h)];
+    return s == 0 ? kAbsent : index_of(s);
+  }
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
-    if (words_ == 1
-            ? (s & tag_mask_) == tag_of(h) && data_[index_of(s)] == state[0]
-            : hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
-      return index_of(s);
+    if (hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
+      return s - 1;
   }
 }
 
@@ -63,7 +65,7 @@ void StateStore::grow() {
   if (size_ == tag_limit()) {
     tag_mask_ = 0;  // more states than a tagged slot can number
     rehash(slots_.size());
-    if ((static_cast<std::size_t>(size_) + 1) * 2 <= slots_.size()) return;
+    if (!full_for_one_more()) return;
   }
   rehash(slots_.size() * 2);
 }

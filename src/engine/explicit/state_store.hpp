@@ -45,27 +45,23 @@ class StateStore {
 
   /// Inserts `state` unless present; returns its index and whether it was new.
   std::pair<std::uint32_t, bool> insert(StateView state) {
-    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit()) grow();
-    return words_ == 1 ? insert_word(state[0]) : insert_wide(state, hash(state));
+    if (full_for_one_more()) grow();
+    if (words_ != 1) return insert_wide(state, hash(state));
+    const std::uint64_t h = hash_word(state[0]);
+    const std::size_t i = probe_word(state[0], h);
+    if (slots_[i] == 0) return {add_word(i, state[0], h), true};
+    return {index_of(slots_[i]), false};
   }
   /// Inserts `state` unless present: its index when it is new, kAbsent when it was stored.
   /// `hash` is state_hash(state).
   std::uint32_t insert_if_new(StateView state, std::uint64_t hash) {
-    if ((static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit()) grow();
+    if (full_for_one_more()) grow();
     if (words_ != 1) {
       const auto [index, fresh] = insert_wide(state, hash);
       return fresh ? index : kAbsent;
     }
-    const std::size_t mask = slots_.size() - 1;
-    const StateWord word = state[0];
-    const std::uint32_t* slots = slots_.data();
-    const StateWord* data = data_.data();
-    const std::uint32_t tag = tag_of(hash);
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      const std::uint32_t s = slots[i];
-      if (s == 0) return add_word(i, word, hash);
-      if ((s & tag_mask_) == tag && data[index_of(s)] == word) return kAbsent;
-    }
+    const std::size_t i = probe_word(state[0], hash);
+    return slots_[i] == 0 ? add_word(i, state[0], hash) : kAbsent;
   }
   /// Index of `state`, or kAbsent.
   std::uint32_t find(StateView state) const;
@@ -146,19 +142,22 @@ class StateStore {
   static constexpr std::uint32_t kStagedBit = 0x80000000U;
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
-  // A one-word state is its own key: no stored hash tag, no call to compare. Inline: the
-  // search inserts every edge's target.
-  std::pair<std::uint32_t, bool> insert_word(StateWord word) {
+  // A one-word state is its own key: no stored hash, no call to compare. Inline: the search
+  // looks up every edge's target. The slot of the one-word state `word` of hash `hash`: the
+  // one that holds it, or the empty one where it goes (no staging under way).
+  std::size_t probe_word(StateWord word, std::uint64_t hash) const {
     const std::size_t mask = slots_.size() - 1;
     const std::uint32_t* slots = slots_.data();
     const StateWord* data = data_.data();
-    const std::uint64_t hash = hash_word(word);
     const std::uint32_t tag = tag_of(hash);
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       const std::uint32_t s = slots[i];
-      if (s == 0) return {add_word(i, word, hash), true};
-      if ((s & tag_mask_) == tag && data[index_of(s)] == word) return {index_of(s), false};
+      if (s == 0 || ((s & tag_mask_) == tag && data[index_of(s)] == word)) return i;
     }
+  }
+  /// Whether one more state would fill the table past half, or past the tagged states.
+  bool full_for_one_more() const {
+    return (static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit();
   }
   std::uint32_t add_word(std::size_t slot, StateWord word, std::uint64_t hash);
   // Tagged slots (tag_mask_ != 0): bits 24 to 30 hold the top 7 bits of the state's hash, bits 0

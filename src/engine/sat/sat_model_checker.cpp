@@ -524,7 +524,7 @@ class Run {
       pumped_query.targets.push_back(iec_->range_error_step());
       std::vector<bool> wanted(decided.size());
       for (std::size_t t = 0; t < targets_.size(); ++t) wanted[t] = !decided[t];
-      wanted.push_back(iec_->range_error != Aig::kFalse);
+      wanted.push_back(!relaxed && iec_->range_error != Aig::kFalse);  // else proved unreachable
       sat::PumpOptions pumping;
       pumping.deadline = eighth_of_time_left();  // and its frame caps
       auto pumped = sat::pump_loops(pumped_query, counter_latches(), wanted, pumping);
@@ -536,10 +536,10 @@ class Run {
         }
     }
     if (undecided()) {
-      if (!relaxed && !range_error_reached)
-        search = without_range_check(query, kRangeProbeSeconds);
-      else if (range_error_reached)
+      if (range_error_reached)
         search = query;
+      else if (!relaxed)
+        search = without_range_check(query, kRangeProbeSeconds);
       ic3_pass(search, deadline_, true);
     }
     return out;
