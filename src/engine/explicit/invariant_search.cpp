@@ -11,6 +11,7 @@
 #include <thread>
 #include <utility>
 
+#include "engine/explicit/mapped_array.hpp"
 #include "engine/explicit/state_store.hpp"
 #include "logic/formula.hpp"
 
@@ -165,7 +166,7 @@ std::vector<std::int64_t> initial_inputs(const semantics::TransitionSystem& ts, 
 /// The run from an initial state to `s` through BFS parents, with the inputs of each edge
 /// picked as the graph-based engine picks them.
 logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateStore& store,
-                            const StateCodec* codec, const std::vector<std::uint32_t>& parent,
+                            const StateCodec* codec, const MappedArray<std::uint32_t>& parent,
                             std::uint32_t s, const model::Budget& budget) {
   auto full = [&](std::uint32_t x) {
     const auto view = store.at(x);
@@ -576,7 +577,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::size_t open = n;
   StateStore store(codec ? codec->stored_words() : ts.layout().words());
   if (codec) stored.resize(codec->stored_words());
-  std::vector<std::uint32_t> parent;
+  MappedArray<std::uint32_t> parent;  ///< per state: the state it was first reached from
   // Checks a newly stored state against every invariant still open.
   std::vector<std::size_t> just_violated;  ///< properties violated while expanding this state
   auto judge = [&](std::uint32_t s) {
@@ -653,7 +654,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::uint64_t edges = 0;
   std::vector<StateWord> targets;
   const std::uint32_t words = store.words_per_state();
-  auto memory = [&] { return store.memory_bytes() + parent.capacity() * 4; };
+  auto memory = [&] { return store.memory_bytes() + parent.resident_bytes(); };
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
   std::uint32_t level = 0, level_end = initial_count;
   const std::uint32_t poll_mask = clock_poll_mask(words);

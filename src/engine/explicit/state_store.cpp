@@ -45,7 +45,7 @@ std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state, std::uin
     const std::uint32_t s = slots_[i];
     if (s == 0) {
       if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
-      data_.insert(data_.end(), state.begin(), state.begin() + words_);
+      data_.append(state.data(), words_);
       hashes_.push_back(tag);
       slots_[i] = ++size_;
       return {size_ - 1, true};
@@ -63,11 +63,16 @@ std::uint32_t StateStore::add_word(std::size_t slot, StateWord word, std::uint64
 
 void StateStore::grow() {
   if (size_ == tag_limit()) {
-    tag_mask_ = 0;  // more states than a tagged slot can number
-    rehash(slots_.size());
+    untag();  // more states than a tagged slot can number
     if (!full_for_one_more()) return;
   }
   rehash(slots_.size() * 2);
+}
+
+void StateStore::untag() {
+  for (std::uint32_t& s : slots_)
+    if (s != 0 && (s & kStagedBit) == 0) s &= ~tag_mask_;
+  tag_mask_ = 0;
 }
 
 void StateStore::rehash(std::size_t slot_count) {
@@ -84,13 +89,10 @@ void StateStore::rehash(std::size_t slot_count) {
 
 bool StateStore::reserve_for_staging(std::uint64_t count) {
   if (size_ + count >= kStagedBit - 1) return false;
-  if (tag_mask_ && size_ + count >= tagged_states_) {
-    tag_mask_ = 0;  // the staged states may number past the tagged slots' indices
-    rehash(slots_.size());
-  }
-  // At most half full once every staged state is new, as insert() keeps it: each slot probed
-  // past the first costs a read of a stored state.
-  while ((size_ + count) * 2 > slots_.size()) grow();
+  if (tag_mask_ && size_ + count >= tagged_states_)
+    untag();  // the staged states may number past the tagged slots' indices
+  // No fuller than insert() keeps it once every staged state is new.
+  while (size_ + count > states_before_growth(slots_.size())) grow();
   return true;
 }
 
@@ -124,7 +126,7 @@ StateStore::Staged StateStore::stage(StateView state, std::uint64_t h, std::uint
 }
 
 std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
-  data_.insert(data_.end(), state.begin(), state.begin() + words_);
+  data_.append(state.data(), words_);
   const std::uint64_t h = state_hash(state);
   if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(h >> 32));
   slots_[slot] = slot_of(size_++, h);
@@ -137,8 +139,8 @@ void StateStore::drop_staged() {
 }
 
 std::size_t StateStore::memory_bytes() const {
-  return data_.capacity() * sizeof(StateWord) + slots_.capacity() * sizeof(std::uint32_t) +
-         hashes_.capacity() * sizeof(std::uint32_t);
+  return data_.resident_bytes() + slots_.capacity() * sizeof(std::uint32_t) +
+         hashes_.resident_bytes();
 }
 
 }  // namespace sfcv::engine

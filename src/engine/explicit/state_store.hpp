@@ -11,7 +11,12 @@
 #include <utility>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "engine/explicit/huge_page_allocator.hpp"
+#include "engine/explicit/mapped_array.hpp"
 #include "semantics/state_layout.hpp"
 
 namespace sfcv::engine {
@@ -144,20 +149,67 @@ class StateStore {
   bool equal_at(std::uint32_t index, StateView state) const;
   // A one-word state is its own key: no stored hash, no call to compare. Inline: the search
   // looks up every edge's target. The slot of the one-word state `word` of hash `hash`: the
-  // one that holds it, or the empty one where it goes (no staging under way).
+  // one that holds it, or the empty one where it goes (no staging under way). Linear probing,
+  // read four slots at a time: the slots whose tag matches and the empty ones are found at
+  // once, so a look-up takes one round (and one branch) where a slot at a time took several at
+  // the load of three quarters.
   std::size_t probe_word(StateWord word, std::uint64_t hash) const {
-    const std::size_t mask = slots_.size() - 1;
+    const std::size_t mask = slots_.size() - 1;  // a power of two of at least 16
     const std::uint32_t* slots = slots_.data();
     const StateWord* data = data_.data();
     const std::uint32_t tag = tag_of(hash);
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      const std::uint32_t s = slots[i];
-      if (s == 0 || ((s & tag_mask_) == tag && data[index_of(s)] == word)) return i;
+    const std::size_t start = hash & mask;
+    std::size_t group = start & ~kGroupMask;
+    // Slots before the start belong to other probe paths.
+    std::uint32_t on_path = ~std::uint32_t{0} << (start & kGroupMask);
+    for (;;) {
+      std::uint32_t empty, match;
+      group_masks(slots + group, tag, empty, match);
+      empty &= on_path;
+      // Candidates before the path's first empty slot (an empty slot also matches tag 0).
+      match &= on_path & ((empty & (0U - empty)) - 1U);
+      for (; match != 0; match &= match - 1) {
+        const std::size_t i = group + static_cast<std::size_t>(__builtin_ctz(match));
+        if (data[index_of(slots[i])] == word) return i;
+      }
+      if (empty != 0) return group + static_cast<std::size_t>(__builtin_ctz(empty));
+      group = (group + kGroupSlots) & mask;
+      on_path = ~std::uint32_t{0};
     }
   }
-  /// Whether one more state would fill the table past half, or past the tagged states.
+  static constexpr std::size_t kGroupSlots = 4;
+  static constexpr std::size_t kGroupMask = kGroupSlots - 1;
+  /// Bit k of `empty` (`match`): slot k of the kGroupSlots at `group` is empty (holds `tag`
+  /// under the tag mask).
+  void group_masks(const std::uint32_t* group, std::uint32_t tag, std::uint32_t& empty,
+                   std::uint32_t& match) const {
+#if defined(__SSE2__)
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(group));
+    const __m128i masked = _mm_and_si128(v, _mm_set1_epi32(static_cast<int>(tag_mask_)));
+    empty = static_cast<std::uint32_t>(
+        _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))));
+    match = static_cast<std::uint32_t>(_mm_movemask_ps(
+        _mm_castsi128_ps(_mm_cmpeq_epi32(masked, _mm_set1_epi32(static_cast<int>(tag))))));
+#else
+    empty = match = 0;
+    for (std::uint32_t k = 0; k < kGroupSlots; ++k) {
+      empty |= static_cast<std::uint32_t>(group[k] == 0) << k;
+      match |= static_cast<std::uint32_t>((group[k] & tag_mask_) == tag) << k;
+    }
+#endif
+  }
+  /// How many states the table holds before it grows: half its slots, and three quarters from
+  /// 2^22 slots (16 MB) on. Each slot probed past the first costs a read of a stored state, but
+  /// past a few million states memory bounds the search, and the load of three quarters takes
+  /// a state from 16 to 8 bytes of table just after a doubling (docs/benchmarks.md).
+  std::size_t states_before_growth(std::size_t slot_count) const {
+    return slot_count < kDenseTableSlots ? slot_count / 2 : slot_count / 4 * 3;
+  }
+  static constexpr std::size_t kDenseTableSlots = std::size_t{1} << 22;
+  /// Whether one more state would fill the table past its load, or past the tagged states.
   bool full_for_one_more() const {
-    return (static_cast<std::size_t>(size_) + 1) * 2 > slots_.size() || size_ == tag_limit();
+    return static_cast<std::size_t>(size_) + 1 > states_before_growth(slots_.size()) ||
+           size_ == tag_limit();
   }
   std::uint32_t add_word(std::size_t slot, StateWord word, std::uint64_t hash);
   // Tagged slots (tag_mask_ != 0): bits 24 to 30 hold the top 7 bits of the state's hash, bits 0
@@ -166,7 +218,9 @@ class StateStore {
   std::uint32_t tag_of(std::uint64_t hash) const {
     return static_cast<std::uint32_t>(hash >> 33) & tag_mask_;
   }
-  std::uint32_t index_of(std::uint32_t slot) const { return (slot & ~tag_mask_) - 1; }
+  std::uint32_t index_of(std::uint32_t slot) const {
+    return (slot & ~tag_mask_) - 1;
+  }
   std::uint32_t slot_of(std::uint32_t index, std::uint64_t hash) const {
     return tag_of(hash) | (index + 1);
   }
@@ -180,11 +234,17 @@ class StateStore {
     h ^= h >> 31;
     return h;
   }
-  static std::uint64_t hash_word(StateWord word) { return mix(0x9e3779b97f4a7c15ULL ^ word); }
+  static std::uint64_t hash_word(StateWord word) {
+    return mix(0x9e3779b97f4a7c15ULL ^ word);
+  }
   void grow();
   /// The size at which tagging stops (never reached when it has stopped).
-  std::uint32_t tag_limit() const { return tag_mask_ ? tagged_states_ : kAbsent; }
+  std::uint32_t tag_limit() const {
+    return tag_mask_ ? tagged_states_ : kAbsent;
+  }
   void rehash(std::size_t slot_count);
+  /// Stops tagging one-word slots. In place: a slot's position depends on the hash, not the tag.
+  void untag();
 
   std::uint32_t words_;
   std::uint32_t tag_mask_;  ///< kTagBits while one-word states are tagged, else 0
@@ -192,10 +252,10 @@ class StateStore {
   std::uint32_t size_ = 0;
   template <class T>
   using Table = std::vector<T, HugePageAllocator<T>>;
-  Table<StateWord> data_;
-  Table<std::uint32_t> slots_;   ///< state index + 1; 0 = empty
-  Table<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
-                                 ///< (not kept for one-word states: compared directly)
+  MappedArray<StateWord> data_;
+  Table<std::uint32_t> slots_;         ///< state index + 1; 0 = empty
+  MappedArray<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
+                                       ///< (not kept for one-word states: compared directly)
 };
 
 }  // namespace sfcv::engine
