@@ -555,6 +555,43 @@ TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
   EXPECT_GE(simulated, 12);
 }
 
+// Images are computed on the relation or by simulating the circuit on every state of the set
+// and building the successors' BDD from their sorted list (the default on small sets with
+// about a node per state): the same set both ways, for every ring of the reachability, for
+// the whole reached set, and after a reordering has changed the variable levels.
+TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
+  using How = SymbolicSystem::ImageMethod;
+  int rings = 0;
+  for (std::uint64_t seed = 70; seed <= 81; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    bench::RandomChartFeatures features;
+    features.timed_qualifiers = seed % 2 == 0;
+    features.nested_chart = seed % 3 == 0;
+    features.sfc_flags = seed % 4 == 1;
+    features.writing_actions = seed % 5 == 2;
+    semantics::Iec61131Options options;
+    if (seed % 3 == 1) options.priority = semantics::PriorityMode::None;
+    const auto s =
+        load(bench::random_chart_iec(10 + static_cast<std::uint32_t>(seed % 7), 3, seed, features),
+             options);
+    ASSERT_TRUE(s.ts);
+    const auto sys = make_symbolic_system(*s.ts);
+    auto reached = sys->initial();
+    for (auto frontier = reached; !frontier.is_false();) {
+      const auto on_relation = sys->image(frontier, How::Symbolic);
+      ASSERT_TRUE(sys->image(frontier, How::Simulation) == on_relation);
+      ++rings;
+      frontier = on_relation & !reached;
+      reached = reached | frontier;
+    }
+    EXPECT_TRUE(sys->image(reached, How::Simulation) == sys->image(reached, How::Symbolic));
+    bdd::reorder_now();
+    EXPECT_TRUE(sys->image(reached, How::Simulation) == sys->image(reached, How::Symbolic));
+    EXPECT_TRUE(sys->image(reached) == sys->image(reached, How::Symbolic));
+  }
+  EXPECT_GE(rings, 60);
+}
+
 // Reordering changes the variable order, never an answer, a count or a trace's validity.
 TEST(EngineAgreement, ReorderingOnAndOff) {
   BddEngineOptions reorder;

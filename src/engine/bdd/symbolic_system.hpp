@@ -75,7 +75,14 @@ class SymbolicSystem {
   /// the reached states instead of every valuation of the bits (measured: `EF S1` on
   /// `sfcv-gen random 60 --seed 1`, 3548 states, took 3.9 s over all valuations).
   void restrict_sources(const Bdd& states);
-  Bdd image(const Bdd& states) const;
+  /// How image computes: on the clustered relation, by simulating the circuit on every state
+  /// of the set and every input valuation (bit-parallel; the successors' BDD is built from
+  /// their sorted list), or by simulation when the set is small and near-explicit (a few states
+  /// per BDD node, as random charts' sets are) and on the relation otherwise.
+  enum class ImageMethod { Auto, Symbolic, Simulation };
+  /// The successors of `states`. Simulation throws std::logic_error when the set or the
+  /// inputs are too large to simulate (more than 12 inputs, a Grafcet, a set of 2^64 states).
+  Bdd image(const Bdd& states, ImageMethod how = ImageMethod::Auto) const;
   Bdd preimage(const Bdd& states) const;
 
   /// The states where a propositional formula over observables holds.
@@ -168,6 +175,15 @@ class SymbolicSystem {
   /// count_edges by simulation; nullopt when it would cost more than `max_work` node words.
   std::optional<logic::BigCount> count_edges_by_simulation(const Bdd& from,
                                                            std::uint64_t max_work) const;
+  /// image by simulation; nullopt when it would cost more than `max_work` node words.
+  std::optional<Bdd> image_by_simulation(const Bdd& from, std::uint64_t max_work) const;
+  Bdd symbolic_image(const Bdd& states) const;  ///< on the clustered relation
+  /// Whether `from` can be simulated within `max_work` (IEC 61131-3, few inputs).
+  bool simulation_fits(const Bdd& from, std::uint64_t max_work) const;
+  /// Whether `states` has at least `min_nodes` BDD nodes and at most a few states per node:
+  /// simulating them is cheaper than conjoining the relation, whose intermediate products are
+  /// near-explicit too.
+  bool near_explicit(const Bdd& states, int min_nodes) const;
   void prepare_choice_cubes();
   Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
 
