@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -30,6 +31,13 @@ constexpr std::uint64_t kSimulatedStatesPerNode = 8;
 // the relation costs microseconds, less than setting up a simulation or even counting the set
 // (`counter 16`, 131 069 rings of one state: 0.28 s on the relation, 1.4 s simulated).
 constexpr int kMinSimulatedImageNodes = 256;
+
+/// The cost of simulating one state of `aig` in node words and successor bits (about a
+/// nanosecond each).
+std::uint64_t simulation_work_per_state(const Aig& aig) {
+  const std::uint64_t valuations = std::uint64_t{1} << aig.inputs().size();
+  return aig.nodes().size() * ((valuations + 63) / 64) + valuations * aig.latches().size();
+}
 
 // The node table a circuit starts with when the options leave it at 0: a few dozen BDD nodes
 // per circuit node (the relation's conjuncts and the first rings fit without a resize),
@@ -420,23 +428,32 @@ Bdd SymbolicSystem::node_bdd(AigLit lit) {
   return Aig::is_negated(lit) ? !memo_[root] : memo_[root];
 }
 
-bool SymbolicSystem::near_explicit(const Bdd& states, int min_nodes) const {
-  if (states.is_false()) return false;
-  const int nodes = states.node_count();
-  if (nodes < min_nodes) return false;
-  const auto count = states.sat_count_u64(current_vars_);
-  return count &&
-         *count <= kSimulatedStatesPerNode * static_cast<std::uint64_t>(std::max(1, nodes));
+bool SymbolicSystem::simulates(const Bdd& from, std::uint64_t max_work,
+                               bool near_explicit_only) const {
+  if (grafcet_ || from.is_false() || circuit_.aig.inputs().size() > kMaxSimulatedInputs)
+    return false;
+  const int nodes = near_explicit_only ? from.node_count() : 0;
+  const auto states = from.sat_count_u64(current_vars_);
+  if (!states) return false;
+  if (near_explicit_only &&
+      *states > kSimulatedStatesPerNode * static_cast<std::uint64_t>(std::max(1, nodes)))
+    return false;
+  return *states <= max_work / std::max<std::uint64_t>(simulation_work_per_state(circuit_.aig), 1);
 }
 
 Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how) const {
-  if (!grafcet_ && (how == ImageMethod::Simulation ||
-                    (how == ImageMethod::Auto && near_explicit(states, kMinSimulatedImageNodes))))
-    if (auto result = image_by_simulation(
-            states, how == ImageMethod::Simulation ? ~std::uint64_t{0} : kSimulationWork))
-      return *result;
-  if (how == ImageMethod::Simulation)
+  if (how == ImageMethod::Simulation) {
+    if (states.is_false()) return states;
+    if (!simulates(states, ~std::uint64_t{0}, false))
+      throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
+    if (auto result = image_by_simulation(states)) return *result;
     throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
+  }
+  // A small set's image on the relation costs microseconds: only a set of many nodes is
+  // counted, to see whether it is near-explicit.
+  if (how == ImageMethod::Auto && !grafcet_ && states.node_count() >= kMinSimulatedImageNodes &&
+      simulates(states, kSimulationWork, true))
+    if (auto result = image_by_simulation(states)) return *result;
   return symbolic_image(states);
 }
 
@@ -598,13 +615,16 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges(const Bdd& from,
   // Grafcet: the closure computes images, never the pair relation; the count stays unknown
   // rather than wrong.
   if (grafcet_) return std::nullopt;
-  if (how == EdgeCounting::Simulation) return count_edges_by_simulation(from, ~std::uint64_t{0});
+  if (from.is_false()) return logic::BigCount(0);
+  if (how == EdgeCounting::Simulation)
+    return simulates(from, ~std::uint64_t{0}, false) ? count_edges_by_simulation(from)
+                                                     : std::nullopt;
   // A set with few BDD nodes per state (a counter's, the structured families') is counted on
   // the relation at almost no cost; one with about a node per state (random charts: 10 004
   // states in 23 442 nodes, whose pair relation has 295 000) by simulation, when small enough
   // (measured on `sfcv-gen random 60 --seed 2`: 0.78 s on the relation).
-  if (how == EdgeCounting::Auto && near_explicit(from, 0))
-    if (auto edges = count_edges_by_simulation(from, kSimulationWork)) return edges;
+  if (how == EdgeCounting::Auto && simulates(from, kSimulationWork, true))
+    if (auto edges = count_edges_by_simulation(from)) return edges;
   // exists i. T(x, i, x') & from(x), quantifying each input after the last cluster reading it.
   Bdd acc = from.exist(inputs_first_);
   for (std::size_t k = 0; k < clusters_.size(); ++k)
@@ -616,20 +636,17 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges(const Bdd& from,
 
 namespace {
 
-/// The cost of simulating one state of `aig` in node words and successor bits (about a
-/// nanosecond each).
-std::uint64_t simulation_work_per_state(const Aig& aig) {
-  const std::uint64_t valuations = std::uint64_t{1} << aig.inputs().size();
-  return aig.nodes().size() * ((valuations + 63) / 64) + valuations * aig.latches().size();
-}
-
 /// The circuit simulated on one state under every input valuation at once (bit v of a node's
 /// words is its value under valuation v, input i being bit i of v): the distinct successors
-/// of a state, each a key of latch bits.
+/// of a state, each a key of latch bits. Latch l is bit position[l] of a key, counted from the
+/// top bit of its first word, so that keys compared word by word compare the latches in the
+/// order of their positions.
 class SuccessorSimulator {
  public:
-  explicit SuccessorSimulator(const semantics::TransitionCircuit& circuit)
-      : circuit_(circuit),
+  SuccessorSimulator(const semantics::TransitionCircuit& circuit,
+                     std::vector<std::uint32_t> position)
+      : position_(std::move(position)),
+        circuit_(circuit),
         aig_(circuit.aig),
         valuations_(std::size_t{1} << aig_.inputs().size()),
         words_((valuations_ + 63) / 64),
@@ -642,7 +659,10 @@ class SuccessorSimulator {
         order_(valuations_) {
     for (std::size_t n = 0; n < aig_.nodes().size(); ++n) {
       const auto& node = aig_.nodes()[n];
-      if (node.kind == Aig::NodeKind::And) ands_.push_back(static_cast<std::uint32_t>(n));
+      if (node.kind == Aig::NodeKind::And)
+        gates_.push_back({static_cast<std::uint32_t>(n), Aig::node_of(node.left),
+                          Aig::node_of(node.right), Aig::is_negated(node.left) ? ~0ULL : 0,
+                          Aig::is_negated(node.right) ? ~0ULL : 0});
       if (node.kind == Aig::NodeKind::Latch)
         latch_nodes_[node.index] = static_cast<std::uint32_t>(n);
       if (node.kind != Aig::NodeKind::Input) continue;
@@ -663,10 +683,15 @@ class SuccessorSimulator {
     for (std::size_t l = 0; l < latches; ++l)
       std::fill_n(value_.begin() + static_cast<std::ptrdiff_t>(latch_nodes_[l] * words_), words_,
                   x[l] ? ~std::uint64_t{0} : 0);
-    for (const auto n : ands_) {
-      const auto& node = aig_.nodes()[n];
-      for (std::size_t w = 0; w < words_; ++w)
-        value_[n * words_ + w] = lit(node.left, w) & lit(node.right, w);
+    std::uint64_t* value = value_.data();
+    if (words_ == 1) {
+      for (const auto& g : gates_)
+        value[g.out] = (value[g.left] ^ g.left_flip) & (value[g.right] ^ g.right_flip);
+    } else {
+      for (const auto& g : gates_)
+        for (std::size_t w = 0; w < words_; ++w)
+          value[g.out * words_ + w] = (value[g.left * words_ + w] ^ g.left_flip) &
+                                      (value[g.right * words_ + w] ^ g.right_flip);
     }
     for (std::size_t w = 0; w < words_; ++w)
       ok_[w] = lit(circuit_.allowed, w) & ~lit(circuit_.range_error, w) & used_;
@@ -677,7 +702,7 @@ class SuccessorSimulator {
         const std::uint64_t bits = lit(next, w) & ok_[w];
         for (std::uint64_t b = bits; b != 0; b &= b - 1) {
           const std::size_t v = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-          keys_[v * latch_words_ + l / 64] |= 1ULL << (l % 64);
+          keys_[v * latch_words_ + position_[l] / 64] |= 1ULL << (63 - position_[l] % 64);
         }
       }
     }
@@ -696,9 +721,9 @@ class SuccessorSimulator {
       if (j == 0 || key_less(order_[distinct - 1], order_[j])) order_[distinct++] = order_[j];
     return distinct;
   }
-  /// Latch l of the j-th distinct successor of the last simulate().
-  bool successor_bit(std::size_t j, std::size_t l) const {
-    return ((keys_[order_[j] * latch_words_ + l / 64] >> (l % 64)) & 1U) != 0;
+  /// The key of the j-th distinct successor of the last simulate(): latch_words() words.
+  const std::uint64_t* successor(std::size_t j) const {
+    return keys_.data() + static_cast<std::size_t>(order_[j]) * latch_words_;
   }
 
  private:
@@ -707,31 +732,29 @@ class SuccessorSimulator {
     return Aig::is_negated(l) ? ~v : v;
   }
 
+  std::vector<std::uint32_t> position_;
   const semantics::TransitionCircuit& circuit_;
   const Aig& aig_;
   std::size_t valuations_, words_, latch_words_;
   std::uint64_t used_;
   std::vector<std::uint64_t> value_;
-  std::vector<std::uint32_t> ands_, latch_nodes_;
+  /// An AND gate with its operands' negations as masks: one branch-free line per gate.
+  struct Gate {
+    std::uint32_t out, left, right;
+    std::uint64_t left_flip, right_flip;
+  };
+  std::vector<Gate> gates_;
+  std::vector<std::uint32_t> latch_nodes_;
   std::vector<std::uint64_t> keys_, ok_;
   std::vector<std::uint32_t> order_;
 };
 
 }  // namespace
 
-bool SymbolicSystem::simulation_fits(const Bdd& from, std::uint64_t max_work) const {
-  if (grafcet_ || from.is_false() || circuit_.aig.inputs().size() > kMaxSimulatedInputs)
-    return false;
-  const auto states = from.sat_count_u64(current_vars_);
-  if (!states) return false;
-  return *states <= max_work / std::max<std::uint64_t>(simulation_work_per_state(circuit_.aig), 1);
-}
-
-std::optional<logic::BigCount> SymbolicSystem::count_edges_by_simulation(
-    const Bdd& from, std::uint64_t max_work) const {
-  if (from.is_false()) return logic::BigCount(0);
-  if (!simulation_fits(from, max_work)) return std::nullopt;
-  SuccessorSimulator sim(circuit_);
+std::optional<logic::BigCount> SymbolicSystem::count_edges_by_simulation(const Bdd& from) const {
+  std::vector<std::uint32_t> position(current_var_.size());
+  std::iota(position.begin(), position.end(), 0U);
+  SuccessorSimulator sim(circuit_, std::move(position));
   std::uint64_t edges = 0;
   const bool walked = from.for_each_assignment(current_var_, [&](const std::vector<bool>& x) {
     edges += sim.simulate(x);
@@ -741,29 +764,23 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges_by_simulation(
   return logic::BigCount(edges);
 }
 
-std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
-                                                       std::uint64_t max_work) const {
-  if (from.is_false()) return Bdd::constant(false);
-  if (!simulation_fits(from, max_work)) return std::nullopt;
-  // The latches by level: a successor becomes a key whose bit r (from the top of word 0) is
-  // the latch at rank r, so that sorted keys split by the top variable first.
+std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from) const {
+  // The latches by level: a successor's key has the latch at rank r as its bit r, so that
+  // sorted keys split by the top variable first.
   const std::size_t latches = current_var_.size();
-  std::vector<std::uint32_t> by_level(latches);
-  for (std::uint32_t l = 0; l < latches; ++l) by_level[l] = l;
+  std::vector<std::uint32_t> by_level(latches), rank_of(latches);
+  std::iota(by_level.begin(), by_level.end(), 0U);
   std::sort(by_level.begin(), by_level.end(), [&](std::uint32_t a, std::uint32_t b) {
     return bdd::level_of(current_var_[a]) < bdd::level_of(current_var_[b]);
   });
-  const std::size_t key_words = (latches + 63) / 64;
+  for (std::uint32_t r = 0; r < latches; ++r) rank_of[by_level[r]] = r;
+  SuccessorSimulator sim(circuit_, std::move(rank_of));
+  const std::size_t key_words = sim.latch_words();
   std::vector<std::uint64_t> keys;
-  SuccessorSimulator sim(circuit_);
   const bool walked = from.for_each_assignment(current_var_, [&](const std::vector<bool>& x) {
     const std::size_t count = sim.simulate(x);
-    for (std::size_t j = 0; j < count; ++j) {
-      const std::size_t at = keys.size();
-      keys.resize(at + key_words, 0);
-      for (std::size_t r = 0; r < latches; ++r)
-        if (sim.successor_bit(j, by_level[r])) keys[at + r / 64] |= 1ULL << (63 - r % 64);
-    }
+    for (std::size_t j = 0; j < count; ++j)
+      keys.insert(keys.end(), sim.successor(j), sim.successor(j) + key_words);
     return true;
   });
   if (!walked) return std::nullopt;
@@ -788,21 +805,23 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
   // in a local table first, so BuDDy makes each node of the result once however many states
   // share it (a trie of the states would make a node per state and bit).
   std::vector<Bdd> nodes{Bdd::constant(false), Bdd::constant(true)};
-  struct Triple {
-    std::uint32_t rank, low, high;
-    bool operator==(const Triple&) const = default;
+  // The local table: open addressing over (rank, low, high), at most half full.
+  struct Entry {
+    std::uint32_t rank, low, high, id;  // id 0: empty (the constants are never entered)
   };
-  struct TripleHash {
-    std::size_t operator()(const Triple& t) const {
-      return std::hash<std::uint64_t>()((std::uint64_t{t.rank} << 40) ^
-                                        (std::uint64_t{t.low} << 20) ^ t.high) ^
-             (std::uint64_t{t.low} >> 20) * 0x9e3779b97f4a7c15ULL;
+  std::vector<Entry> table(1024, Entry{0, 0, 0, 0});
+  auto slot_of = [&](std::uint32_t rank, std::uint32_t low, std::uint32_t high) {
+    std::uint64_t h = (std::uint64_t{rank} << 42) ^ (std::uint64_t{low} << 21) ^ high;
+    h *= 0x9e3779b97f4a7c15ULL;
+    const std::size_t mask = table.size() - 1;
+    for (std::size_t i = (h >> 20) & mask;; i = (i + 1) & mask) {
+      const Entry& e = table[i];
+      if (e.id == 0 || (e.rank == rank && e.low == low && e.high == high)) return i;
     }
   };
-  std::unordered_map<Triple, std::uint32_t, TripleHash> unique;
   // Sets of the keys order[first, last), which agree on every rank above `rank`.
   auto build = [&](auto& self, std::size_t first, std::size_t last,
-                   std::size_t rank) -> std::uint32_t {
+                   std::uint32_t rank) -> std::uint32_t {
     if (first == last) return 0;
     if (rank == latches) return 1;
     const auto split = std::partition_point(order.begin() + static_cast<std::ptrdiff_t>(first),
@@ -812,14 +831,19 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
     const std::uint32_t low = self(self, first, static_cast<std::size_t>(split), rank + 1);
     const std::uint32_t high = self(self, static_cast<std::size_t>(split), last, rank + 1);
     if (low == high) return low;
-    const Triple t{static_cast<std::uint32_t>(rank), low, high};
-    if (const auto it = unique.find(t); it != unique.end()) return it->second;
+    if (const Entry& e = table[slot_of(rank, low, high)]; e.id != 0) return e.id;
     nodes.push_back(Bdd::variable(current_var_[by_level[rank]]).ite(nodes[high], nodes[low]));
     const auto id = static_cast<std::uint32_t>(nodes.size() - 1);
-    unique.emplace(t, id);
+    if (2 * nodes.size() > table.size()) {
+      std::vector<Entry> old(table.size() * 2, Entry{0, 0, 0, 0});
+      old.swap(table);
+      for (const Entry& e : old)
+        if (e.id != 0) table[slot_of(e.rank, e.low, e.high)] = e;
+    }
+    table[slot_of(rank, low, high)] = Entry{rank, low, high, id};
     return id;
   };
-  return nodes[build(build, 0, order.size(), 0)];
+  return nodes[build(build, 0, order.size(), 0U)];
 }
 
 std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {

@@ -172,18 +172,16 @@ class SymbolicSystem {
 
  private:
   Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)
-  /// count_edges by simulation; nullopt when it would cost more than `max_work` node words.
-  std::optional<logic::BigCount> count_edges_by_simulation(const Bdd& from,
-                                                           std::uint64_t max_work) const;
-  /// image by simulation; nullopt when it would cost more than `max_work` node words.
-  std::optional<Bdd> image_by_simulation(const Bdd& from, std::uint64_t max_work) const;
+  /// Whether count_edges and image may simulate `from`: an IEC 61131-3 system of at most 12
+  /// inputs, a set of fewer than 2^64 states costing at most `max_work` node words, and when
+  /// `near_explicit_only`, at most a few states per BDD node (where simulating is cheaper than
+  /// conjoining the relation, whose intermediate products are near-explicit too).
+  bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
+  /// count_edges and image by simulation (after simulates()); nullopt when `from` mentions a
+  /// variable other than the current ones.
+  std::optional<logic::BigCount> count_edges_by_simulation(const Bdd& from) const;
+  std::optional<Bdd> image_by_simulation(const Bdd& from) const;
   Bdd symbolic_image(const Bdd& states) const;  ///< on the clustered relation
-  /// Whether `from` can be simulated within `max_work` (IEC 61131-3, few inputs).
-  bool simulation_fits(const Bdd& from, std::uint64_t max_work) const;
-  /// Whether `states` has at least `min_nodes` BDD nodes and at most a few states per node:
-  /// simulating them is cheaper than conjoining the relation, whose intermediate products are
-  /// near-explicit too.
-  bool near_explicit(const Bdd& states, int min_nodes) const;
   void prepare_choice_cubes();
   Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
 
