@@ -505,16 +505,14 @@ END_PROGRAM
   EXPECT_GT(g_tally.deadlocks, 1);
 }
 
-// Edges are counted on the relation or by simulating the circuit on every reached state (the
-// default on small sets with about a node per state): the same number both ways, and the
-// explicit engine's, with abstract-time, choice and SFCReset inputs among the circuit's.
-TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
-  using How = SymbolicSystem::EdgeCounting;
-  struct Chart {
-    std::string text;
-    semantics::Iec61131Options options;
-  };
-  std::vector<Chart> charts;
+// Charts for the simulated edges and images: random charts with abstract-time, choice and
+// SFCReset inputs among the circuit's, with and without priorities, and two of the families.
+struct SimulatedChart {
+  std::string text;
+  semantics::Iec61131Options options;
+};
+std::vector<SimulatedChart> simulated_charts() {
+  std::vector<SimulatedChart> charts;
   for (std::uint64_t seed = 70; seed <= 81; ++seed) {
     bench::RandomChartFeatures features;
     features.timed_qualifiers = seed % 2 == 0;
@@ -529,6 +527,15 @@ TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
   }
   charts.push_back({bench::tanks_iec(2, true), {}});
   charts.push_back({bench::parallel_branches_iec(5, true), {}});
+  return charts;
+}
+
+// Edges are counted on the relation or by simulating the circuit on every reached state (the
+// default on small sets with about a node per state): the same number both ways, and the
+// explicit engine's.
+TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
+  using How = SymbolicSystem::EdgeCounting;
+  const auto charts = simulated_charts();
   int simulated = 0;
   for (std::size_t k = 0; k < charts.size(); ++k) {
     SCOPED_TRACE("chart " + std::to_string(k));
@@ -556,24 +563,16 @@ TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
 }
 
 // Images are computed on the relation or by simulating the circuit on every state of the set
-// and building the successors' BDD from their sorted list (the default on small sets with
-// about a node per state): the same set both ways, for every ring of the reachability, for
+// and building the successors' BDD from their sorted list (the default on sets of many nodes
+// and few states per node): the same set both ways, for every ring of the reachability, for
 // the whole reached set, and after a reordering has changed the variable levels.
 TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
   using How = SymbolicSystem::ImageMethod;
+  const auto charts = simulated_charts();
   int rings = 0;
-  for (std::uint64_t seed = 70; seed <= 81; ++seed) {
-    SCOPED_TRACE("seed " + std::to_string(seed));
-    bench::RandomChartFeatures features;
-    features.timed_qualifiers = seed % 2 == 0;
-    features.nested_chart = seed % 3 == 0;
-    features.sfc_flags = seed % 4 == 1;
-    features.writing_actions = seed % 5 == 2;
-    semantics::Iec61131Options options;
-    if (seed % 3 == 1) options.priority = semantics::PriorityMode::None;
-    const auto s =
-        load(bench::random_chart_iec(10 + static_cast<std::uint32_t>(seed % 7), 3, seed, features),
-             options);
+  for (std::size_t k = 0; k < charts.size(); ++k) {
+    SCOPED_TRACE("chart " + std::to_string(k));
+    const auto s = load(charts[k].text, charts[k].options);
     ASSERT_TRUE(s.ts);
     const auto sys = make_symbolic_system(*s.ts);
     auto reached = sys->initial();

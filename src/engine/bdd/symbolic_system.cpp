@@ -6,7 +6,6 @@
 #include <memory>
 #include <numeric>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "engine/bdd/grafcet_closure.hpp"
 #include "engine/bdd/variable_order.hpp"
@@ -31,6 +30,9 @@ constexpr std::uint64_t kSimulatedStatesPerNode = 8;
 // the relation costs microseconds, less than setting up a simulation or even counting the set
 // (`counter 16`, 131 069 rings of one state: 0.28 s on the relation, 1.4 s simulated).
 constexpr int kMinSimulatedImageNodes = 256;
+// An image by simulation holds every distinct successor of the set (up to a word per 8 latch
+// bits each): a quarter of the work bound keeps that under 64 MB.
+constexpr std::uint64_t kSimulatedImageWork = kSimulationWork / 4;
 
 /// The cost of simulating one state of `aig` in node words and successor bits (about a
 /// nanosecond each).
@@ -444,15 +446,15 @@ bool SymbolicSystem::simulates(const Bdd& from, std::uint64_t max_work,
 Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how) const {
   if (how == ImageMethod::Simulation) {
     if (states.is_false()) return states;
-    if (!simulates(states, ~std::uint64_t{0}, false))
-      throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
-    if (auto result = image_by_simulation(states)) return *result;
-    throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
+    std::optional<Bdd> result;
+    if (simulates(states, ~std::uint64_t{0}, false)) result = image_by_simulation(states);
+    if (!result) throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
+    return *result;
   }
   // A small set's image on the relation costs microseconds: only a set of many nodes is
   // counted, to see whether it is near-explicit.
   if (how == ImageMethod::Auto && !grafcet_ && states.node_count() >= kMinSimulatedImageNodes &&
-      simulates(states, kSimulationWork, true))
+      simulates(states, kSimulatedImageWork, true))
     if (auto result = image_by_simulation(states)) return *result;
   return symbolic_image(states);
 }
