@@ -578,7 +578,14 @@ TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
     auto reached = sys->initial();
     for (auto frontier = reached; !frontier.is_false();) {
       const auto on_relation = sys->image(frontier, How::Symbolic);
-      ASSERT_TRUE(sys->image(frontier, How::Simulation) == on_relation);
+      std::optional<std::uint64_t> edges;
+      ASSERT_TRUE(sys->image(frontier, How::Simulation, &edges) == on_relation);
+      // A simulated image counts the ring's edges as count_edges does on the relation.
+      ASSERT_TRUE(edges.has_value());
+      EXPECT_EQ(std::to_string(*edges),
+                sys->count_edges(frontier, SymbolicSystem::EdgeCounting::Symbolic)->str());
+      sys->image(frontier, How::Symbolic, &edges);
+      EXPECT_FALSE(edges.has_value());
       ++rings;
       frontier = on_relation & !reached;
       reached = reached | frontier;
@@ -589,6 +596,48 @@ TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
     EXPECT_TRUE(sys->image(reached) == sys->image(reached, How::Symbolic));
   }
   EXPECT_GE(rings, 60);
+}
+
+// The relation is built on first use. Small random charts explore by simulation alone (and
+// report the explicit engine's states and edges); a counter's thousands of one-state rings
+// build it after a few dozen images; a pre-image builds it, and then agrees with the images.
+TEST(EngineAgreement, RelationBuiltOnlyWhenNeeded) {
+  auto explore = [](const SymbolicSystem& sys) {
+    auto reached = sys.initial();
+    for (auto frontier = reached; !frontier.is_false();) {
+      frontier = sys.image(frontier) & !reached;
+      reached = reached | frontier;
+    }
+    return reached;
+  };
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto s = load(bench::random_chart_iec(30, 4, seed));
+    ASSERT_TRUE(s.ts);
+    const auto task = task_for(s, {"AG TRUE"}, {});
+    const auto explicit_report = make_explicit_model_checker()->check(task);
+    const auto bdd_report = make_bdd_model_checker()->check(task);
+    EXPECT_EQ(bdd_report.states, explicit_report.states);
+    ASSERT_TRUE(bdd_report.edges_known);
+    EXPECT_EQ(bdd_report.edges, explicit_report.edges);
+    const auto sys = make_symbolic_system(*s.ts);
+    const auto reached = explore(*sys);
+    EXPECT_FALSE(sys->has_relation());
+    EXPECT_EQ(sys->count_exact(reached), explicit_report.states);
+    // Every reached state but the initial ones has a predecessor among the reached states.
+    sys->restrict_sources(reached);
+    const auto successors = sys->image(reached);
+    EXPECT_TRUE((reached & !sys->initial() & !successors).is_false());
+    EXPECT_TRUE((successors & !reached).is_false());
+    EXPECT_TRUE((sys->preimage(successors) & reached) == (reached & sys->has_successor()));
+    EXPECT_TRUE(sys->has_relation());
+    EXPECT_TRUE(sys->image(reached, SymbolicSystem::ImageMethod::Symbolic) == successors);
+  }
+  const auto counter = load(bench::counter_iec(8));
+  ASSERT_TRUE(counter.ts);
+  const auto sys = make_symbolic_system(*counter.ts);
+  explore(*sys);
+  EXPECT_TRUE(sys->has_relation());
 }
 
 // Reordering changes the variable order, never an answer, a count or a trace's validity.
@@ -646,11 +695,12 @@ TEST(EngineAgreement, ReorderModesGiveTheSameAnswers) {
 }
 
 // A node table too small for the relation: every answer unknown, no crash, no "holds"; the
-// manager recovers for the next system.
+// manager recovers for the next system. Four tanks read 16 inputs, too many to simulate: the
+// first image already needs the relation.
 TEST(EngineAgreement, TinyMemoryBudgetGivesUnknown) {
-  const auto s = load(bench::parallel_branches_iec(8, true));
+  const auto s = load(bench::tanks_iec(4, false));
   ASSERT_TRUE(s.ts);
-  auto task = task_for(s, {"AG !(B1 & B2)", "EF (B3 & O4)"}, {});
+  auto task = task_for(s, {"AG !(V1_0 & V3_0)", "EF (FA_0 & FA_1)"}, {});
   task.checks = {logic::StandardCheck::Reachable};
   task.limits.max_memory_bytes = 64 * 1024;
   const auto r = make_bdd_model_checker()->check(task);
@@ -664,6 +714,46 @@ TEST(EngineAgreement, TinyMemoryBudgetGivesUnknown) {
   const auto again = make_bdd_model_checker()->check(task);
   EXPECT_TRUE(again.complete);
   EXPECT_EQ(again.results[2].verdict, logic::Verdict::Holds);
+  EXPECT_EQ(bdd::live_bdds(), 0);
+}
+
+// Small budgets on a chart whose images are simulated (no relation needed to explore): each
+// answer is the explicit engine's or unknown, the states are the explicit engine's whenever
+// exploration completes, and edges are only reported when right. A budget that fits nothing
+// ends with the memory limit.
+TEST(EngineAgreement, SmallMemoryBudgetsAgreeOrAreUnknown) {
+  const auto s = load(bench::parallel_branches_iec(8, true));
+  ASSERT_TRUE(s.ts);
+  auto task = task_for(s, {"AG !(B1 & B2)", "EF (B3 & O4)", "AG EF B1"}, {});
+  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::GlobalDeadlock};
+  const auto reference = make_explicit_model_checker()->check(task);
+  ASSERT_TRUE(reference.complete);
+  int decided = 0, unknown = 0;
+  for (const std::uint64_t kb : {1, 16, 32, 64, 128, 256, 1024}) {
+    SCOPED_TRACE(std::to_string(kb) + " KB");
+    task.limits.max_memory_bytes = kb * 1024;
+    const auto r = make_bdd_model_checker()->check(task);
+    if (kb == 1) {
+      EXPECT_EQ(r.limit, "memory");
+    }
+    if (r.complete) {
+      EXPECT_EQ(r.states, reference.states);
+    }
+    if (r.edges_known) {
+      EXPECT_EQ(r.edges, reference.edges);
+    }
+    ASSERT_EQ(r.results.size(), reference.results.size());
+    for (std::size_t i = 0; i < r.results.size(); ++i) {
+      if (r.results[i].verdict == logic::Verdict::Unknown) {
+        ++unknown;
+        continue;
+      }
+      ++decided;
+      EXPECT_EQ(r.results[i].verdict, reference.results[i].verdict) << r.results[i].name;
+    }
+  }
+  EXPECT_GT(decided, 0);
+  EXPECT_GT(unknown, 0);
   EXPECT_EQ(bdd::live_bdds(), 0);
 }
 

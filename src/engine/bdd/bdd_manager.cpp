@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
-#include <unordered_map>
 
 #include "model/errors.hpp"
 
@@ -411,20 +410,65 @@ double Bdd::sat_count_log2(const Bdd& vars) const {
 
 namespace {
 
+/// A value per internal node (index >= 2) of one BDD: open addressing, at most half full. A
+/// walk's memo is most of a count's cost, and std::unordered_map's node per entry tripled it.
+template <typename T>
+class NodeMemo {
+ public:
+  bool contains(int n) const { return keys_[slot(n)] == n; }
+  T& operator[](int n) {
+    std::size_t i = slot(n);
+    if (keys_[i] != n) {
+      if (2 * (size_ + 1) > keys_.size()) {
+        grow();
+        i = slot(n);
+      }
+      keys_[i] = n;
+      ++size_;
+    }
+    return values_[i];
+  }
+  const T& at(int n) const { return values_[slot(n)]; }
+  std::size_t size() const { return size_; }
+
+ private:
+  std::size_t slot(int n) const {
+    const std::size_t mask = keys_.size() - 1;
+    std::size_t i = (static_cast<std::size_t>(n) * 0x9e3779b97f4a7c15ULL) >> 20 & mask;
+    while (keys_[i] != 0 && keys_[i] != n) i = (i + 1) & mask;
+    return i;
+  }
+  void grow() {
+    std::vector<int> keys(keys_.size() * 2, 0);
+    std::vector<T> values(keys.size());
+    keys.swap(keys_);
+    values.swap(values_);
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      if (keys[k] != 0) {
+        const std::size_t i = slot(keys[k]);
+        keys_[i] = keys[k];
+        values_[i] = std::move(values[k]);
+      }
+  }
+  std::vector<int> keys_ = std::vector<int>(64, 0);  // 0: empty (never an internal node)
+  std::vector<T> values_ = std::vector<T>(64);
+  std::size_t size_ = 0;
+};
+
 /// Calls `combine(n, low, high)` once for every internal node below `root`, children first,
 /// with an explicit stack (a BDD may be deeper than the call stack); `combine` stores n's value
 /// in `memo` and returns false to stop the walk.
 template <typename T, typename Combine>
-void fold_post_order(int root, std::unordered_map<int, T>& memo, Combine&& combine) {
+void fold_post_order(int root, NodeMemo<T>& memo, Combine&& combine) {
   std::vector<int> stack{root};
   while (!stack.empty()) {
     const int n = stack.back();
-    if (n <= 1 || memo.count(n)) {
+    if (n <= 1 || memo.contains(n)) {
       stack.pop_back();
       continue;
     }
     const int lo = bdd_low(n), hi = bdd_high(n);
-    const bool lo_done = lo <= 1 || memo.count(lo), hi_done = hi <= 1 || memo.count(hi);
+    const bool lo_done = lo <= 1 || memo.contains(lo), hi_done = hi <= 1 || memo.contains(hi);
     if (!lo_done || !hi_done) {
       if (!lo_done) stack.push_back(lo);
       if (!hi_done) stack.push_back(hi);
@@ -437,7 +481,7 @@ void fold_post_order(int root, std::unordered_map<int, T>& memo, Combine&& combi
 
 }  // namespace
 
-std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) const {
+std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars, int* nodes) const {
   // below[l]: how many counted variables lie above level l. count(n) counts the assignments of
   // the counted variables at or below n's level; a skipped counted variable doubles it.
   __extension__ typedef unsigned __int128 Wide;
@@ -458,8 +502,8 @@ std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) co
     }
     return c << skipped;
   };
-  std::unordered_map<int, Wide> memo;
-  auto value = [&](int c) -> Wide { return c <= 1 ? Wide(c) : memo[c]; };
+  NodeMemo<Wide> memo;
+  auto value = [&](int c) -> Wide { return c <= 1 ? Wide(c) : memo.at(c); };
   fold_post_order(root_, memo, [&](int n, int lo, int hi) {
     const int l = level(n);
     const Wide sum = scale(value(lo), l + 1, level(lo)) + scale(value(hi), l + 1, level(hi));
@@ -467,8 +511,9 @@ std::optional<std::uint64_t> Bdd::sat_count_u64(const std::vector<int>& vars) co
     memo[n] = sum;
     return !overflow;
   });
+  if (nodes) *nodes = overflow ? node_count() : static_cast<int>(memo.size());
   if (overflow) return std::nullopt;
-  const Wide top = root_ <= 1 ? Wide(root_) : memo[root_];
+  const Wide top = root_ <= 1 ? Wide(root_) : memo.at(root_);
   const Wide total = scale(top, 0, level(root_));
   if (overflow || total > limit) return std::nullopt;
   return static_cast<std::uint64_t>(total);
@@ -486,7 +531,7 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
   auto scale = [&](const logic::BigCount& c, int from_level, int to_level) {
     return c.shifted_left(static_cast<unsigned>(above[to_level] - above[from_level]));
   };
-  std::unordered_map<int, logic::BigCount> memo;
+  NodeMemo<logic::BigCount> memo;
   auto value = [&](int c) {
     return c <= 1 ? logic::BigCount(static_cast<std::uint64_t>(c)) : memo.at(c);
   };
@@ -494,7 +539,7 @@ logic::BigCount Bdd::sat_count_exact(const std::vector<int>& vars) const {
     const int l = level(n);
     auto sum = scale(value(lo), l + 1, level(lo));
     sum += scale(value(hi), l + 1, level(hi));
-    memo.emplace(n, std::move(sum));
+    memo[n] = std::move(sum);
     return true;
   });
   return scale(value(root_), 0, level(root_));

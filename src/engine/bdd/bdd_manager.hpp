@@ -164,8 +164,10 @@ class Bdd {
   /// log2 of the number of assignments of the variables of `vars` that satisfy *this.
   double sat_count_log2(const Bdd& vars) const;
   /// The exact number of assignments of `vars` (every variable *this mentions must be among
-  /// them) that satisfy *this; nullopt when it does not fit in 64 bits.
-  std::optional<std::uint64_t> sat_count_u64(const std::vector<int>& vars) const;
+  /// them) that satisfy *this; nullopt when it does not fit in 64 bits. With `nodes`, it
+  /// receives node_count(), which the same walk counts.
+  std::optional<std::uint64_t> sat_count_u64(const std::vector<int>& vars,
+                                             int* nodes = nullptr) const;
   /// The same count exactly, of any size (64-bit arithmetic first, big integers when that
   /// overflows).
   logic::BigCount sat_count_exact(const std::vector<int>& vars) const;

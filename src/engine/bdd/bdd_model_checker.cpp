@@ -77,6 +77,11 @@ class Run {
       try {
         if (report.stopped_early) {
           // Only rings so far: the edges out of the last one are not known.
+        } else if (imaged_edges_) {
+          // Every imaged ring was simulated, which counted its edges: the imaged rings are
+          // the reached set, or all of it but the frontier when a limit stopped the rings.
+          report.edges = logic::BigCount(*imaged_edges_);
+          report.edges_known = true;
         } else if (const auto edges =
                        sys_.count_edges(report.complete ? reached_ : reached_ & !frontier_)) {
           report.edges = *edges;
@@ -164,7 +169,11 @@ class Run {
         report.limit = "time";
         break;
       }
-      const Bdd next = sys_.image(frontier_) & !reached_;
+      std::optional<std::uint64_t> ring_edges;
+      const Bdd next =
+          sys_.image(frontier_, SymbolicSystem::ImageMethod::Auto, &ring_edges) & !reached_;
+      imaged_edges_ =
+          imaged_edges_ && ring_edges ? std::optional(*imaged_edges_ + *ring_edges) : std::nullopt;
       if (next.is_false()) {
         frontier_ = next;
         break;
@@ -257,6 +266,18 @@ class Run {
       return r;
     }
     if (logic::is_ltl(*f)) return ltl_property(p, ctl, std::move(r));
+    // An invariant is decided on the reached states, and a bad one is met by a shortest run
+    // through the rings: no fixpoint, and no relation when every image was simulated.
+    if (ag && task_.fairness.empty()) {
+      const Bdd hit = reached_ & !sys_.atom(*f->args[0]);
+      r.verdict = hit.is_false() ? Verdict::Holds : Verdict::Violated;
+      if (!hit.is_false()) {
+        r.trace = path_to(hit);
+        r.trace->kind = logic::TraceKind::Counterexample;
+        r.trace->marked = marked;
+      }
+      return r;
+    }
     const Bdd holds = ctl.sat(f);
     const Bdd bad = sys_.initial() & !holds;
     if (bad.is_false()) {
@@ -554,6 +575,8 @@ class Run {
   Bdd frontier_;  ///< the last ring, not expanded when a limit stopped exploration
   std::vector<Bdd> rings_;
   logic::BigCount last_count_;
+  /// The edges out of the rings imaged so far, while every image counted them (simulated).
+  std::optional<std::uint64_t> imaged_edges_ = 0;
   std::string failed_;  ///< the limit that ended the run, if any
   Limit failed_limit_ = Limit::Memory;
 };

@@ -18,9 +18,10 @@ Bdd SymbolicSystem::evolutions(const Bdd& from, const Bdd& on_inputs) const {
   // exists i. from(x) & on_inputs(x, i) & T(x, i, x'), conjoining the clusters in order; an
   // input is quantified after the last cluster that reads it (the pre-image schedule without
   // its next variables, which stay).
-  Bdd acc = (from & on_inputs).exist(pre_quantify_first_);
-  for (std::size_t k = 0; k < clusters_.size(); ++k)
-    acc = acc.and_exist(clusters_[k], pre_quantify_after_[k].exist(next_cube_));
+  const Relation& r = relation();
+  Bdd acc = (from & on_inputs).exist(r.pre_quantify_first);
+  for (std::size_t k = 0; k < r.clusters.size(); ++k)
+    acc = acc.and_exist(r.clusters[k], r.pre_quantify_after[k].exist(next_cube_));
   // An input that `on_inputs` reads but no cluster does is still free here.
   return acc.exist(input_cube_);
 }

@@ -1,6 +1,7 @@
 #include "engine/bdd/symbolic_system.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <memory>
@@ -26,10 +27,15 @@ namespace {
 constexpr std::size_t kMaxSimulatedInputs = 12;
 constexpr std::uint64_t kSimulationWork = std::uint64_t{1} << 30;
 constexpr std::uint64_t kSimulatedStatesPerNode = 8;
-// Images by simulation: only of sets of at least this many BDD nodes. A smaller set's image on
-// the relation costs microseconds, less than setting up a simulation or even counting the set
-// (`counter 16`, 131 069 rings of one state: 0.28 s on the relation, 1.4 s simulated).
+// Images by simulation, once the relation is built: only of sets of at least this many BDD
+// nodes (image()).
 constexpr int kMinSimulatedImageNodes = 256;
+// Before the relation is built, at most this many images of smaller sets are simulated, for at
+// most this much work in all (about 4 ms): a random chart's dozen rings then never need the
+// relation (`random 60 --seed 2`: 7 ms of 60), a counter's thousands of rings of one state
+// and a chart of 12 inputs (4096 valuations a state) do.
+constexpr std::uint32_t kSmallImagesBeforeRelation = 64;
+constexpr std::uint64_t kSmallWorkBeforeRelation = std::uint64_t{1} << 22;
 // An image by simulation holds every distinct successor of the set (up to a word per 8 latch
 // bits each): a quarter of the work bound keeps that under 64 MB.
 constexpr std::uint64_t kSimulatedImageWork = kSimulationWork / 4;
@@ -124,98 +130,6 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   range_error_states_ =
       (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
 
-  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in
-  // variable order while small; then each current/input variable is quantified right after the last
-  // cluster that mentions it.
-  std::vector<Bdd> parts;
-  std::vector<std::vector<bool>> part_support;
-  std::vector<std::vector<int>> part_next_vars;  // next variables defined by each cluster
-  const std::size_t num_vars = static_cast<std::size_t>(var);
-  {
-    std::vector<bool> seen(aig.nodes().size());
-    Bdd cluster = ok_;
-    std::vector<bool> cluster_support(num_vars, false);
-    std::vector<int> cluster_next;
-    auto add_support = [&](AigLit lit, std::vector<bool>& into) {
-      std::fill(seen.begin(), seen.end(), false);
-      std::vector<std::uint32_t> ins, lats;
-      aig_support(aig, lit, seen, ins, lats);
-      for (auto i : ins) into[static_cast<std::size_t>(input_var_[i])] = true;
-      for (auto l : lats) into[static_cast<std::size_t>(current_var_[l])] = true;
-    };
-    add_support(circuit_.allowed, cluster_support);
-    add_support(circuit_.range_error, cluster_support);
-    // Conjuncts in the variable order (measured against latch order: random 60 seed 1 from
-    // 0.62 to 0.37 s, counter 16 from 0.70 to 0.45 s): a cluster then covers adjacent levels,
-    // and a current bit is quantified once the clusters around its level are in.
-    std::vector<std::size_t> latch_order(num_latches);
-    for (std::size_t l = 0; l < num_latches; ++l) latch_order[l] = l;
-    std::sort(latch_order.begin(), latch_order.end(),
-              [&](auto a, auto b) { return current_var_[a] < current_var_[b]; });
-    for (const std::size_t l : latch_order) {
-      const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
-      const Bdd merged = cluster & conjunct;
-      if (merged.node_count() > options.cluster_nodes && !cluster.is_true()) {
-        parts.push_back(cluster);
-        part_support.push_back(cluster_support);
-        part_next_vars.push_back(cluster_next);
-        cluster = conjunct;
-        cluster_support.assign(num_vars, false);
-        cluster_next.clear();
-      } else {
-        cluster = merged;
-      }
-      cluster_next.push_back(next_var_[l]);
-      add_support(aig.latches()[l].next, cluster_support);
-    }
-    parts.push_back(cluster);
-    part_support.push_back(cluster_support);
-    part_next_vars.push_back(cluster_next);
-  }
-  std::vector<int> last(num_vars, -1);
-  for (std::size_t k = 0; k < parts.size(); ++k)
-    for (std::size_t v = 0; v < num_vars; ++v)
-      if (part_support[k][v]) last[v] = static_cast<int>(k);
-  std::vector<std::vector<int>> after(parts.size());
-  std::vector<int> first;
-  auto quantified = [&](int v) {
-    return std::find(input_var_.begin(), input_var_.end(), v) != input_var_.end() ||
-           std::find(current_var_.begin(), current_var_.end(), v) != current_var_.end();
-  };
-  for (std::size_t v = 0; v < num_vars; ++v) {
-    if (!quantified(static_cast<int>(v))) continue;
-    if (last[v] < 0)
-      first.push_back(static_cast<int>(v));
-    else
-      after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
-  }
-  // Pre-image: the next variables of a cluster and the inputs it is the last to read.
-  std::vector<int> input_last(num_inputs, -1);
-  for (std::size_t i = 0; i < num_inputs; ++i)
-    input_last[i] = last[static_cast<std::size_t>(input_var_[i])];
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    std::vector<int> vs = part_next_vars[k];
-    for (std::size_t i = 0; i < num_inputs; ++i)
-      if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
-    pre_quantify_after_.push_back(Bdd::cube(vs));
-  }
-  {
-    std::vector<int> unused_inputs;
-    for (std::size_t i = 0; i < num_inputs; ++i)
-      if (input_last[i] < 0) unused_inputs.push_back(input_var_[i]);
-    pre_quantify_first_ = Bdd::cube(unused_inputs);
-    inputs_first_ = pre_quantify_first_;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      std::vector<int> vs;
-      for (std::size_t i = 0; i < num_inputs; ++i)
-        if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
-      inputs_after_.push_back(Bdd::cube(vs));
-    }
-  }
-  clusters_ = std::move(parts);
-  for (auto& vs : after) quantify_after_.push_back(Bdd::cube(vs));
-  quantify_first_ = Bdd::cube(first);
-
   next_to_current_ = std::make_unique<bdd::VarMap>();
   current_to_next_ = std::make_unique<bdd::VarMap>();
   for (std::size_t l = 0; l < aig.latches().size(); ++l) {
@@ -224,8 +138,13 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   }
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
-  // Automatic reordering waits for a full table; sift once for the relation just built.
-  if (options.reorder == ReorderMode::Once) bdd::reorder_now();
+  cluster_nodes_ = options.cluster_nodes;
+  max_simulation_bytes_ = options.max_circuit_bytes / 4;
+  // Automatic reordering waits for a full table; sift once for the relation, built now.
+  if (options.reorder == ReorderMode::Once) {
+    relation();
+    bdd::reorder_now();
+  }
   // Dynamic, from here on: when an image blows up (image(), preimage()). An explicit initial
   // table keeps BuDDy's rule (tests make small charts sift with it).
   if (options.reorder == ReorderMode::Dynamic && options.nodes == 0)
@@ -308,6 +227,108 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   if (options.reorder == ReorderMode::Once) bdd::reorder_now();
 }
 
+const SymbolicSystem::Relation& SymbolicSystem::relation() const {
+  if (relation_) return *relation_;
+  const Aig& aig = circuit_.aig;
+  const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
+  auto built = std::make_unique<Relation>();
+  Relation& r = *built;
+  // Partitioned relation: one conjunct next_l <-> f_l per latch, clustered greedily in
+  // variable order while small; then each current/input variable is quantified right after the last
+  // cluster that mentions it.
+  std::vector<Bdd> parts;
+  std::vector<std::vector<bool>> part_support;
+  std::vector<std::vector<int>> part_next_vars;  // next variables defined by each cluster
+  const std::size_t num_vars = 2 * num_latches + num_inputs;
+  {
+    std::vector<bool> seen(aig.nodes().size());
+    Bdd cluster = ok_;
+    std::vector<bool> cluster_support(num_vars, false);
+    std::vector<int> cluster_next;
+    auto add_support = [&](AigLit lit, std::vector<bool>& into) {
+      std::fill(seen.begin(), seen.end(), false);
+      std::vector<std::uint32_t> ins, lats;
+      aig_support(aig, lit, seen, ins, lats);
+      for (auto i : ins) into[static_cast<std::size_t>(input_var_[i])] = true;
+      for (auto l : lats) into[static_cast<std::size_t>(current_var_[l])] = true;
+    };
+    add_support(circuit_.allowed, cluster_support);
+    add_support(circuit_.range_error, cluster_support);
+    // Conjuncts in the variable order (measured against latch order: random 60 seed 1 from
+    // 0.62 to 0.37 s, counter 16 from 0.70 to 0.45 s): a cluster then covers adjacent levels,
+    // and a current bit is quantified once the clusters around its level are in.
+    std::vector<std::size_t> latch_order(num_latches);
+    for (std::size_t l = 0; l < num_latches; ++l) latch_order[l] = l;
+    std::sort(latch_order.begin(), latch_order.end(),
+              [&](auto a, auto b) { return current_var_[a] < current_var_[b]; });
+    for (const std::size_t l : latch_order) {
+      const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
+      const Bdd merged = cluster & conjunct;
+      if (merged.node_count() > cluster_nodes_ && !cluster.is_true()) {
+        parts.push_back(cluster);
+        part_support.push_back(cluster_support);
+        part_next_vars.push_back(cluster_next);
+        cluster = conjunct;
+        cluster_support.assign(num_vars, false);
+        cluster_next.clear();
+      } else {
+        cluster = merged;
+      }
+      cluster_next.push_back(next_var_[l]);
+      add_support(aig.latches()[l].next, cluster_support);
+    }
+    parts.push_back(cluster);
+    part_support.push_back(cluster_support);
+    part_next_vars.push_back(cluster_next);
+  }
+  std::vector<int> last(num_vars, -1);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    for (std::size_t v = 0; v < num_vars; ++v)
+      if (part_support[k][v]) last[v] = static_cast<int>(k);
+  std::vector<std::vector<int>> after(parts.size());
+  std::vector<int> first;
+  auto quantified = [&](int v) {
+    return std::find(input_var_.begin(), input_var_.end(), v) != input_var_.end() ||
+           std::find(current_var_.begin(), current_var_.end(), v) != current_var_.end();
+  };
+  for (std::size_t v = 0; v < num_vars; ++v) {
+    if (!quantified(static_cast<int>(v))) continue;
+    if (last[v] < 0)
+      first.push_back(static_cast<int>(v));
+    else
+      after[static_cast<std::size_t>(last[v])].push_back(static_cast<int>(v));
+  }
+  // Pre-image: the next variables of a cluster and the inputs it is the last to read.
+  std::vector<int> input_last(num_inputs, -1);
+  for (std::size_t i = 0; i < num_inputs; ++i)
+    input_last[i] = last[static_cast<std::size_t>(input_var_[i])];
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    std::vector<int> vs = part_next_vars[k];
+    for (std::size_t i = 0; i < num_inputs; ++i)
+      if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
+    r.pre_quantify_after.push_back(Bdd::cube(vs));
+  }
+  {
+    std::vector<int> unused_inputs;
+    for (std::size_t i = 0; i < num_inputs; ++i)
+      if (input_last[i] < 0) unused_inputs.push_back(input_var_[i]);
+    r.pre_quantify_first = Bdd::cube(unused_inputs);
+    r.inputs_first = r.pre_quantify_first;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      std::vector<int> vs;
+      for (std::size_t i = 0; i < num_inputs; ++i)
+        if (input_last[i] == static_cast<int>(k)) vs.push_back(input_var_[i]);
+      r.inputs_after.push_back(Bdd::cube(vs));
+    }
+  }
+  r.clusters = std::move(parts);
+  for (auto& vs : after) r.quantify_after.push_back(Bdd::cube(vs));
+  r.quantify_first = Bdd::cube(first);
+
+  relation_ = std::move(built);
+  return *relation_;
+}
+
 SymbolicSystem::~SymbolicSystem() = default;
 
 const Bdd& SymbolicSystem::has_successor() const {
@@ -387,7 +408,7 @@ std::vector<std::uint32_t> SymbolicSystem::fired_between(semantics::StateView fr
   return fired;
 }
 
-Bdd SymbolicSystem::node_bdd(AigLit lit) {
+Bdd SymbolicSystem::node_bdd(AigLit lit) const {
   const Aig& aig = circuit_.aig;
   const auto root = Aig::node_of(lit);
   if (!memo_set_[root]) {
@@ -430,42 +451,85 @@ Bdd SymbolicSystem::node_bdd(AigLit lit) {
   return Aig::is_negated(lit) ? !memo_[root] : memo_[root];
 }
 
-bool SymbolicSystem::simulates(const Bdd& from, std::uint64_t max_work,
-                               bool near_explicit_only) const {
+std::optional<SymbolicSystem::SimulatedSet> SymbolicSystem::simulation_of(
+    const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const {
   if (grafcet_ || from.is_false() || circuit_.aig.inputs().size() > kMaxSimulatedInputs)
-    return false;
-  const int nodes = near_explicit_only ? from.node_count() : 0;
-  const auto states = from.sat_count_u64(current_vars_);
-  if (!states) return false;
+    return std::nullopt;
+  SimulatedSet set;
+  const auto states = from.sat_count_u64(current_vars_, &set.nodes);
+  if (!states) return std::nullopt;
+  set.states = *states;
   if (near_explicit_only &&
-      *states > kSimulatedStatesPerNode * static_cast<std::uint64_t>(std::max(1, nodes)))
-    return false;
-  return *states <= max_work / std::max<std::uint64_t>(simulation_work_per_state(circuit_.aig), 1);
+      set.states > kSimulatedStatesPerNode * static_cast<std::uint64_t>(std::max(1, set.nodes)))
+    return std::nullopt;
+  if (set.states > max_work / std::max<std::uint64_t>(simulation_work_per_state(circuit_.aig), 1))
+    return std::nullopt;
+  // Under --memory, the successors a simulation holds (at most one key per state and input
+  // valuation) stay within a quarter of it, as BuDDy's table does within the rest.
+  const Aig& aig = circuit_.aig;
+  const std::uint64_t key_bytes = 8 * ((aig.latches().size() + 63) / 64);
+  if (max_simulation_bytes_ > 0 &&
+      set.states > max_simulation_bytes_ / (key_bytes << aig.inputs().size()))
+    return std::nullopt;
+  return set;
 }
 
-Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how) const {
+bool SymbolicSystem::simulates(const Bdd& from, std::uint64_t max_work,
+                               bool near_explicit_only) const {
+  return simulation_of(from, max_work, near_explicit_only).has_value();
+}
+
+Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how,
+                          std::optional<std::uint64_t>* edges) const {
+  if (edges) edges->reset();
+  SimulationTally tally;
   if (how == ImageMethod::Simulation) {
     if (states.is_false()) return states;
     std::optional<Bdd> result;
-    if (simulates(states, ~std::uint64_t{0}, false)) result = image_by_simulation(states);
+    if (simulates(states, ~std::uint64_t{0}, false)) result = image_by_simulation(states, tally);
     if (!result) throw std::logic_error("SymbolicSystem::image: the set cannot be simulated");
+    if (edges) *edges = tally.edges;
     return *result;
   }
-  // A small set's image on the relation costs microseconds: only a set of many nodes is
-  // counted, to see whether it is near-explicit.
-  if (how == ImageMethod::Auto && !grafcet_ && states.node_count() >= kMinSimulatedImageNodes &&
-      simulates(states, kSimulatedImageWork, true))
-    if (auto result = image_by_simulation(states)) return *result;
+  // BuDDy counts a small set's nodes faster than simulation_of walks it (`counter 16`:
+  // 131 069 rings of a few nodes).
+  const bool small_sets_simulated = !relation_ &&
+                                    small_images_simulated_ < kSmallImagesBeforeRelation &&
+                                    small_work_simulated_ < kSmallWorkBeforeRelation;
+  if (how == ImageMethod::Auto && !grafcet_ &&
+      (small_sets_simulated || states.node_count() >= kMinSimulatedImageNodes)) {
+    if (const auto set = simulation_of(states, kSimulatedImageWork, true)) {
+      // A set of many nodes is simulated. A small set's image on the relation costs
+      // microseconds, less than setting up a simulation (`counter 16`, 131 069 rings of one
+      // state: 0.28 s on the relation, 0.95 s simulated), but the relation must be built
+      // first, which costs more than a small chart's whole exploration: before it exists, a
+      // few cheap small sets are simulated too.
+      bool simulate = set->nodes >= kMinSimulatedImageNodes;
+      const std::uint64_t work = set->states * simulation_work_per_state(circuit_.aig);
+      if (!simulate && small_sets_simulated &&
+          small_work_simulated_ + work <= kSmallWorkBeforeRelation) {
+        simulate = true;
+        ++small_images_simulated_;
+        small_work_simulated_ += work;
+      }
+      if (simulate)
+        if (auto result = image_by_simulation(states, tally)) {
+          if (edges) *edges = tally.edges;
+          return *result;
+        }
+    }
+  }
   return symbolic_image(states);
 }
 
 Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {
   if (grafcet_) return grafcet_->image(states);
-  Bdd acc = states.exist(quantify_first_);
+  const Relation& r = relation();
+  Bdd acc = states.exist(r.quantify_first);
   const bool watch = bdd::automatic_reordering_waits();
   int peak = 0;
-  for (std::size_t k = 0; k < clusters_.size(); ++k) {
-    acc = acc.and_exist(clusters_[k], quantify_after_[k]);
+  for (std::size_t k = 0; k < r.clusters.size(); ++k) {
+    acc = acc.and_exist(r.clusters[k], r.quantify_after[k]);
     if (watch) peak = std::max(peak, acc.node_count());
   }
   Bdd result = acc.replace(*next_to_current_);
@@ -475,13 +539,15 @@ Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {
 
 Bdd SymbolicSystem::preimage(const Bdd& states) const {
   if (grafcet_) return grafcet_->preimage(states);
+  if (states.is_false()) return states;
   // exists x', i. T(x, i, x') & S(x'), conjoining the clusters in order; ok_ (inputs allowed,
   // no range error) is part of the first cluster.
-  Bdd acc = states.replace(*current_to_next_).exist(pre_quantify_first_);
+  const Relation& r = relation();
+  Bdd acc = states.replace(*current_to_next_).exist(r.pre_quantify_first);
   const bool watch = bdd::automatic_reordering_waits();
   int peak = 0;
-  for (std::size_t k = 0; k < clusters_.size(); ++k) {
-    acc = acc.and_exist(clusters_[k], pre_quantify_after_[k]);
+  for (std::size_t k = 0; k < r.clusters.size(); ++k) {
+    acc = acc.and_exist(r.clusters[k], r.pre_quantify_after[k]);
     if (watch) peak = std::max(peak, acc.node_count());
   }
   Bdd result = acc & preimage_care_;
@@ -495,7 +561,7 @@ std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
   // T(from, i, to) over the inputs: every current and next variable is fixed, so each cluster
   // only shrinks the set of inputs.
   Bdd acc = singleton(from) & singleton(to).replace(*current_to_next_);
-  for (const auto& c : clusters_) acc = acc & c;
+  for (const auto& c : relation().clusters) acc = acc & c;
   const Bdd on_inputs = acc.exist(current_cube_).exist(next_cube_);
   const Bdd one = on_inputs.sat_one(input_cube_);
   if (one.is_false()) return {};
@@ -628,15 +694,67 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges(const Bdd& from,
   if (how == EdgeCounting::Auto && simulates(from, kSimulationWork, true))
     if (auto edges = count_edges_by_simulation(from)) return edges;
   // exists i. T(x, i, x') & from(x), quantifying each input after the last cluster reading it.
-  Bdd acc = from.exist(inputs_first_);
-  for (std::size_t k = 0; k < clusters_.size(); ++k)
-    acc = acc.and_exist(clusters_[k], inputs_after_[k]);
+  const Relation& r = relation();
+  Bdd acc = from.exist(r.inputs_first);
+  for (std::size_t k = 0; k < r.clusters.size(); ++k)
+    acc = acc.and_exist(r.clusters[k], r.inputs_after[k]);
   std::vector<int> vars = current_var_;
   vars.insert(vars.end(), next_var_.begin(), next_var_.end());
   return acc.sat_count_exact(vars);
 }
 
 namespace {
+
+/// Sorts `keys` (records of `width` words, compared word by word) and keeps one of each;
+/// returns how many are left. Records of up to 4 words are sorted as values: comparing through
+/// indices cost twice as much.
+template <std::size_t Width>
+std::size_t sort_distinct_records(std::vector<std::uint64_t>& keys) {
+  using Record = std::array<std::uint64_t, Width>;
+  std::vector<Record> records(keys.size() / Width);
+  for (std::size_t k = 0; k < records.size(); ++k)
+    std::copy_n(keys.begin() + static_cast<std::ptrdiff_t>(k * Width), Width, records[k].begin());
+  std::sort(records.begin(), records.end());
+  records.erase(std::unique(records.begin(), records.end()), records.end());
+  keys.resize(records.size() * Width);
+  for (std::size_t k = 0; k < records.size(); ++k)
+    std::copy_n(records[k].begin(), Width, keys.begin() + static_cast<std::ptrdiff_t>(k * Width));
+  return records.size();
+}
+
+std::size_t sort_distinct_keys(std::vector<std::uint64_t>& keys, std::size_t width) {
+  switch (width) {
+    case 0:
+      return keys.empty() ? 0 : 1;
+    case 1:
+      return sort_distinct_records<1>(keys);
+    case 2:
+      return sort_distinct_records<2>(keys);
+    case 3:
+      return sort_distinct_records<3>(keys);
+    case 4:
+      return sort_distinct_records<4>(keys);
+    default:
+      break;
+  }
+  const std::size_t count = keys.size() / width;
+  std::vector<std::uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0U);
+  auto key_at = [&](std::uint32_t k) { return keys.begin() + k * width; };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::lexicographical_compare(key_at(a), key_at(a) + width, key_at(b), key_at(b) + width);
+  });
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](std::uint32_t a, std::uint32_t b) {
+                            return std::equal(key_at(a), key_at(a) + width, key_at(b));
+                          }),
+              order.end());
+  std::vector<std::uint64_t> sorted;
+  sorted.reserve(order.size() * width);
+  for (auto k : order) sorted.insert(sorted.end(), key_at(k), key_at(k) + width);
+  keys.swap(sorted);
+  return order.size();
+}
 
 /// The circuit simulated on one state under every input valuation at once (bit v of a node's
 /// words is its value under valuation v, input i being bit i of v): the distinct successors
@@ -766,7 +884,8 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges_by_simulation(const B
   return logic::BigCount(edges);
 }
 
-std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from) const {
+std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
+                                                       SimulationTally& tally) const {
   // The latches by level: a successor's key has the latch at rank r as its bit r, so that
   // sorted keys split by the top variable first.
   const std::size_t latches = current_var_.size();
@@ -783,24 +902,13 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from) const {
     const std::size_t count = sim.simulate(x);
     for (std::size_t j = 0; j < count; ++j)
       keys.insert(keys.end(), sim.successor(j), sim.successor(j) + key_words);
+    ++tally.states;
+    tally.edges += count;
     return true;
   });
   if (!walked) return std::nullopt;
-  const std::size_t count = keys.size() / std::max<std::size_t>(key_words, 1);
-  std::vector<std::uint32_t> order(count);
-  for (std::uint32_t k = 0; k < count; ++k) order[k] = k;
-  auto key_at = [&](std::uint32_t k) { return keys.begin() + k * key_words; };
-  auto key_less = [&](std::uint32_t a, std::uint32_t b) {
-    return std::lexicographical_compare(key_at(a), key_at(a) + key_words, key_at(b),
-                                        key_at(b) + key_words);
-  };
-  std::sort(order.begin(), order.end(), key_less);
-  order.erase(std::unique(order.begin(), order.end(),
-                          [&](std::uint32_t a, std::uint32_t b) {
-                            return std::equal(key_at(a), key_at(a) + key_words, key_at(b));
-                          }),
-              order.end());
-  auto bit = [&](std::uint32_t k, std::size_t r) {
+  const std::size_t count = sort_distinct_keys(keys, key_words);
+  auto bit = [&](std::size_t k, std::size_t r) {
     return ((keys[k * key_words + r / 64] >> (63 - r % 64)) & 1U) != 0;
   };
   // The BDD of the sorted set, from the bottom: a node per distinct (rank, low, high), found
@@ -821,17 +929,21 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from) const {
       if (e.id == 0 || (e.rank == rank && e.low == low && e.high == high)) return i;
     }
   };
-  // Sets of the keys order[first, last), which agree on every rank above `rank`.
+  // The set of the sorted keys [first, last), which agree on every rank above `rank`.
   auto build = [&](auto& self, std::size_t first, std::size_t last,
                    std::uint32_t rank) -> std::uint32_t {
     if (first == last) return 0;
     if (rank == latches) return 1;
-    const auto split = std::partition_point(order.begin() + static_cast<std::ptrdiff_t>(first),
-                                            order.begin() + static_cast<std::ptrdiff_t>(last),
-                                            [&](std::uint32_t k) { return !bit(k, rank); }) -
-                       order.begin();
-    const std::uint32_t low = self(self, first, static_cast<std::size_t>(split), rank + 1);
-    const std::uint32_t high = self(self, static_cast<std::size_t>(split), last, rank + 1);
+    std::size_t split = first, above = last;  // the first key of [first, last) with the bit
+    while (split < above) {
+      const std::size_t mid = split + (above - split) / 2;
+      if (bit(mid, rank))
+        above = mid;
+      else
+        split = mid + 1;
+    }
+    const std::uint32_t low = self(self, first, split, rank + 1);
+    const std::uint32_t high = self(self, split, last, rank + 1);
     if (low == high) return low;
     if (const Entry& e = table[slot_of(rank, low, high)]; e.id != 0) return e.id;
     nodes.push_back(Bdd::variable(current_var_[by_level[rank]]).ite(nodes[high], nodes[low]));
@@ -845,7 +957,7 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from) const {
     table[slot_of(rank, low, high)] = Entry{rank, low, high, id};
     return id;
   };
-  return nodes[build(build, 0, order.size(), 0U)];
+  return nodes[build(build, 0, count, 0U)];
 }
 
 std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {

@@ -82,7 +82,10 @@ class SymbolicSystem {
   enum class ImageMethod { Auto, Symbolic, Simulation };
   /// The successors of `states`. Simulation throws std::logic_error when the set or the
   /// inputs are too large to simulate (more than 12 inputs, a Grafcet, a set of 2^64 states).
-  Bdd image(const Bdd& states, ImageMethod how = ImageMethod::Auto) const;
+  /// With `edges`: it receives the number of edges out of `states` (count_edges) when the
+  /// image was simulated, which counts them at no cost, and nullopt otherwise.
+  Bdd image(const Bdd& states, ImageMethod how = ImageMethod::Auto,
+            std::optional<std::uint64_t>* edges = nullptr) const;
   Bdd preimage(const Bdd& states) const;
 
   /// The states where a propositional formula over observables holds.
@@ -121,6 +124,8 @@ class SymbolicSystem {
                                            const std::vector<bool>& inputs) const;
 
   std::size_t num_state_variables() const { return current_vars_.size(); }
+  /// Whether the partitioned relation has been built (it is, on first use: relation()).
+  bool has_relation() const { return relation_ != nullptr; }
 
   // Conflicts under --priority none (IEC 61131-3, the `conflicts` check): sets over the current
   // variables and the "plant" inputs, every input but the `choice:` pseudo-inputs
@@ -171,16 +176,43 @@ class SymbolicSystem {
   Bdd canonically_before(semantics::StateView state) const;
 
  private:
-  Bdd node_bdd(semantics::AigLit lit);  ///< the BDD of an Aig literal (memoised per node)
-  /// Whether count_edges and image may simulate `from`: an IEC 61131-3 system of at most 12
-  /// inputs, a set of fewer than 2^64 states costing at most `max_work` node words, and when
-  /// `near_explicit_only`, at most a few states per BDD node (where simulating is cheaper than
-  /// conjoining the relation, whose intermediate products are near-explicit too).
+  Bdd node_bdd(semantics::AigLit lit) const;  ///< the BDD of an Aig literal (memoised per node)
+  /// The partitioned relation: clusters of (next_l <-> f_l), with the variables each image,
+  /// pre-image and edge count quantifies after each cluster. Built on first use: images by
+  /// simulation need none, and on a small chart building it costs more than exploring.
+  struct Relation {
+    std::vector<Bdd> clusters;
+    // Image: the current and input variables quantified before any cluster and after each.
+    Bdd quantify_first;
+    std::vector<Bdd> quantify_after;
+    // Pre-image: the next variables a cluster defines and the inputs it is the last to read.
+    Bdd pre_quantify_first;
+    std::vector<Bdd> pre_quantify_after;
+    // Edge counting: the inputs a cluster is the last to read.
+    Bdd inputs_first;
+    std::vector<Bdd> inputs_after;
+  };
+  const Relation& relation() const;
+  /// A set count_edges and image may simulate: an IEC 61131-3 system of at most 12 inputs, a
+  /// set of fewer than 2^64 states costing at most `max_work` node words (and within a
+  /// quarter of --memory), and when `near_explicit_only`, at most a few states per BDD node
+  /// (where simulating is cheaper than conjoining the relation, whose intermediate products
+  /// are near-explicit too). Its states and nodes; nullopt when it may not be simulated.
+  struct SimulatedSet {
+    std::uint64_t states = 0;
+    int nodes = 0;
+  };
+  std::optional<SimulatedSet> simulation_of(const Bdd& from, std::uint64_t max_work,
+                                            bool near_explicit_only) const;
   bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
   /// count_edges and image by simulation (after simulates()); nullopt when `from` mentions a
-  /// variable other than the current ones.
+  /// variable other than the current ones. image_by_simulation counts in `tally` the states
+  /// it simulated and their edges.
+  struct SimulationTally {
+    std::uint64_t states = 0, edges = 0;
+  };
   std::optional<logic::BigCount> count_edges_by_simulation(const Bdd& from) const;
-  std::optional<Bdd> image_by_simulation(const Bdd& from) const;
+  std::optional<Bdd> image_by_simulation(const Bdd& from, SimulationTally& tally) const;
   Bdd symbolic_image(const Bdd& states) const;  ///< on the clustered relation
   void prepare_choice_cubes();
   Bdd field_value_equals(std::uint32_t observable, std::int64_t value);
@@ -191,22 +223,20 @@ class SymbolicSystem {
   std::vector<int> current_var_;  ///< per latch
   std::vector<int> next_var_;     ///< per latch
   std::vector<int> current_vars_;
-  std::vector<Bdd> memo_;
-  std::vector<bool> memo_set_;
+  mutable std::vector<Bdd> memo_;  // node_bdd's memo: a cache, filled by const queries too
+  mutable std::vector<bool> memo_set_;
   Bdd current_cube_, next_cube_, input_cube_;
   Bdd initial_, ok_, has_successor_, range_error_states_;
-  // Image: clusters of (next_l <-> f_l), each with the current/input variables that can be
-  // quantified once it has been conjoined.
-  std::vector<Bdd> clusters_;
-  std::vector<Bdd> quantify_after_;
-  Bdd quantify_first_;
+  int cluster_nodes_;
+  mutable std::unique_ptr<Relation> relation_;  // relation(): null until first used
+  /// Images of small sets simulated before the relation was built, and their work
+  /// (simulation_work_per_state units): image() stops past a number or an amount.
+  mutable std::uint32_t small_images_simulated_ = 0;
+  mutable std::uint64_t small_work_simulated_ = 0;
+  std::uint64_t max_simulation_bytes_ = 0;  ///< successors a simulation holds (0: no limit)
   std::unique_ptr<bdd::VarMap> next_to_current_;
   std::unique_ptr<bdd::VarMap> current_to_next_;
-  std::vector<Bdd> pre_quantify_after_;  ///< pre-image: next variables and inputs per cluster
-  Bdd pre_quantify_first_;
   Bdd preimage_care_ = Bdd::constant(true);  ///< restrict_sources (IEC 61131-3)
-  std::vector<Bdd> inputs_after_;  ///< inputs a cluster is the last to read (edge counting)
-  Bdd inputs_first_;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
   std::optional<Bdd> choice_cube_;  ///< the `choice:` input variables (prepare_choice_cubes)

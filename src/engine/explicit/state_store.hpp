@@ -1,10 +1,12 @@
 #pragma once
-// Open-addressing hash set of fixed-width packed states. States live contiguously in one vector
-// (no per-state heap allocation) and are numbered in insertion order, so BFS numbering is the
-// state index. A state of at most 64 bits is one word compared directly: 16 bytes per state at
-// the table's half load (8 for the word, 8 for two slots). Below 2^24 states, a one-word state's
-// slot also holds 7 bits of its hash: a probe passes a slot of another state without reading
-// that state (a third of the look-ups probe past their first slot, each a cache miss).
+// Open-addressing hash set of fixed-width packed states. States live contiguously in one
+// remapped array (no per-state heap allocation) and are numbered in insertion order, so BFS
+// numbering is the state index. A state of at most 64 bits is one word compared directly: 8
+// bytes for the word and 4 per slot, so 16 bytes per state at half load and 13.3 at three
+// quarters, the load that tables of 2^22 slots and more reach before they grow
+// (states_before_growth()). Below 2^24 states, a one-word state's slot also holds 7 bits of its
+// hash: a probe passes a slot of another state without reading that state (a third of the
+// look-ups probe past their first slot, each a cache miss).
 
 #include <atomic>
 #include <cstdint>
