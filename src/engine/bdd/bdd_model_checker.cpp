@@ -169,16 +169,15 @@ class Run {
         report.limit = "time";
         break;
       }
-      std::optional<std::uint64_t> ring_edges;
-      const Bdd next =
-          sys_.image(frontier_, SymbolicSystem::ImageMethod::Auto, &ring_edges) & !reached_;
+      auto step = sys_.step(frontier_, reached_);
       imaged_edges_ =
-          imaged_edges_ && ring_edges ? std::optional(*imaged_edges_ + *ring_edges) : std::nullopt;
+          imaged_edges_ && step.edges ? std::optional(*imaged_edges_ + *step.edges) : std::nullopt;
+      const Bdd next = std::move(step.ring);
       if (next.is_false()) {
         frontier_ = next;
         break;
       }
-      reached_ = reached_ | next;
+      reached_ = std::move(step.reached);
       rings_.push_back(next);
       frontier_ = next;
       stopped = early && every_invariant_violated(next);

@@ -10,6 +10,7 @@
 #include "engine/bdd/grafcet_closure.hpp"
 #include "engine/bdd/successor_simulator.hpp"
 #include "engine/bdd/variable_order.hpp"
+#include "engine/explicit/state_store.hpp"
 #include "logic/circuit_atom.hpp"
 
 namespace sfcv::engine {
@@ -36,6 +37,8 @@ constexpr int kMinSimulatedImageNodes = 256;
 // and a chart of 12 inputs (4096 valuations a state) do.
 constexpr std::uint32_t kSmallImagesBeforeRelation = 64;
 constexpr std::uint64_t kSmallWorkBeforeRelation = std::uint64_t{1} << 22;
+// step() keeps at most this many reached states as keys (16 bytes or more each).
+constexpr std::uint32_t kMaxReachedKeys = std::uint32_t{1} << 24;
 // An image by simulation holds every distinct successor of the set (up to a word per 8 latch
 // bits each): a quarter of the work bound keeps that under 64 MB.
 constexpr std::uint64_t kSimulatedImageWork = kSimulationWork / 4;
@@ -84,6 +87,16 @@ void start_reordering_on_blowup(int peak, const Bdd& operand, const Bdd& result)
 }
 
 }  // namespace
+
+struct SymbolicSystem::ReachedKeys {
+  ReachedKeys(const semantics::TransitionCircuit& circuit, std::vector<std::uint32_t> ranks)
+      : rank_of(ranks), sim(circuit, std::move(ranks)), store(sim.latch_words()) {}
+  std::vector<std::uint32_t> rank_of;  ///< each latch's key bit (latch_ranks() when made)
+  SuccessorSimulator sim;
+  StateStore store;  ///< every reached state's key, in ring order: the frontier's are last
+  std::uint32_t frontier_first = 0;
+  Bdd reached, frontier;  ///< the sets the keys are
+};
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
                                semantics::TransitionCircuit circuit, const SymbolicOptions& options)
@@ -459,24 +472,49 @@ std::optional<SymbolicSystem::SimulatedSet> SymbolicSystem::simulation_of(
   const auto states = from.sat_count_u64(current_vars_, &set.nodes);
   if (!states) return std::nullopt;
   set.states = *states;
+  if (!may_simulate(set, max_work, near_explicit_only)) return std::nullopt;
+  return set;
+}
+
+bool SymbolicSystem::may_simulate(const SimulatedSet& set, std::uint64_t max_work,
+                                  bool near_explicit_only) const {
+  const Aig& aig = circuit_.aig;
+  if (grafcet_ || aig.inputs().size() > kMaxSimulatedInputs) return false;
   if (near_explicit_only &&
       set.states > kSimulatedStatesPerNode * static_cast<std::uint64_t>(std::max(1, set.nodes)))
-    return std::nullopt;
-  if (set.states > max_work / std::max<std::uint64_t>(simulation_work_per_state(circuit_.aig), 1))
-    return std::nullopt;
+    return false;
+  if (set.states > max_work / std::max<std::uint64_t>(simulation_work_per_state(aig), 1))
+    return false;
   // Under --memory, the successors a simulation holds (at most one key per state and input
   // valuation) stay within a quarter of it, as BuDDy's table does within the rest.
-  const Aig& aig = circuit_.aig;
   const std::uint64_t key_bytes = 8 * ((aig.latches().size() + 63) / 64);
-  if (max_simulation_bytes_ > 0 &&
-      set.states > max_simulation_bytes_ / (key_bytes << aig.inputs().size()))
-    return std::nullopt;
-  return set;
+  return max_simulation_bytes_ == 0 ||
+         set.states <= max_simulation_bytes_ / (key_bytes << aig.inputs().size());
 }
 
 bool SymbolicSystem::simulates(const Bdd& from, std::uint64_t max_work,
                                bool near_explicit_only) const {
   return simulation_of(from, max_work, near_explicit_only).has_value();
+}
+
+bool SymbolicSystem::simulates_small_sets() const {
+  return !relation_ && small_images_simulated_ < kSmallImagesBeforeRelation &&
+         small_work_simulated_ < kSmallWorkBeforeRelation;
+}
+
+bool SymbolicSystem::chooses_simulation(const SimulatedSet& set) const {
+  // A set of many nodes is simulated. A small set's image on the relation costs microseconds,
+  // less than setting up a simulation (`counter 16`, 131 069 rings of one state: 0.28 s on
+  // the relation, 0.95 s simulated), but the relation must be built first, which costs more
+  // than a small chart's whole exploration: before it exists, a few cheap small sets are
+  // simulated too.
+  if (set.nodes >= kMinSimulatedImageNodes) return true;
+  const std::uint64_t work = set.states * simulation_work_per_state(circuit_.aig);
+  if (!simulates_small_sets() || small_work_simulated_ + work > kSmallWorkBeforeRelation)
+    return false;
+  ++small_images_simulated_;
+  small_work_simulated_ += work;
+  return true;
 }
 
 Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how,
@@ -493,33 +531,102 @@ Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how,
   }
   // BuDDy counts a small set's nodes faster than simulation_of walks it (`counter 16`:
   // 131 069 rings of a few nodes).
-  const bool small_sets_simulated = !relation_ &&
-                                    small_images_simulated_ < kSmallImagesBeforeRelation &&
-                                    small_work_simulated_ < kSmallWorkBeforeRelation;
   if (how == ImageMethod::Auto && !grafcet_ &&
-      (small_sets_simulated || states.node_count() >= kMinSimulatedImageNodes)) {
-    if (const auto set = simulation_of(states, kSimulatedImageWork, true)) {
-      // A set of many nodes is simulated. A small set's image on the relation costs
-      // microseconds, less than setting up a simulation (`counter 16`, 131 069 rings of one
-      // state: 0.28 s on the relation, 0.95 s simulated), but the relation must be built
-      // first, which costs more than a small chart's whole exploration: before it exists, a
-      // few cheap small sets are simulated too.
-      bool simulate = set->nodes >= kMinSimulatedImageNodes;
-      const std::uint64_t work = set->states * simulation_work_per_state(circuit_.aig);
-      if (!simulate && small_sets_simulated &&
-          small_work_simulated_ + work <= kSmallWorkBeforeRelation) {
-        simulate = true;
-        ++small_images_simulated_;
-        small_work_simulated_ += work;
+      (simulates_small_sets() || states.node_count() >= kMinSimulatedImageNodes))
+    if (const auto set = simulation_of(states, kSimulatedImageWork, true);
+        set && chooses_simulation(*set))
+      if (auto result = image_by_simulation(states, tally)) {
+        if (edges) *edges = tally.edges;
+        return *result;
       }
-      if (simulate)
-        if (auto result = image_by_simulation(states, tally)) {
-          if (edges) *edges = tally.edges;
-          return *result;
-        }
-    }
-  }
   return symbolic_image(states);
+}
+
+SymbolicSystem::Step SymbolicSystem::step(const Bdd& frontier, const Bdd& reached) const {
+  if (auto simulated = simulated_step(frontier, reached)) return *std::move(simulated);
+  reached_keys_.reset();  // the keys no longer follow the reached set
+  Step s;
+  s.ring = image(frontier, ImageMethod::Auto, &s.edges) & !reached;
+  s.reached = reached | s.ring;
+  return s;
+}
+
+std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& frontier,
+                                                                   const Bdd& reached) const {
+  const std::size_t latches = current_var_.size();
+  if (grafcet_ || latches == 0 || circuit_.aig.inputs().size() > kMaxSimulatedInputs ||
+      frontier.is_false())
+    return std::nullopt;
+  // The keys start from the first ring, whose states are listed once; they are dropped for
+  // good when a ring is not simulated, a reordering moves the levels or they grow too large.
+  auto& keys = reached_keys_;
+  if (keys && (keys->reached != reached || keys->frontier != frontier)) keys.reset();
+  if (!keys && reached != frontier) return std::nullopt;
+  std::vector<std::uint32_t> rank_of = latch_ranks(current_var_);
+  if (keys && keys->rank_of != rank_of) {
+    keys.reset();
+    return std::nullopt;
+  }
+  SimulatedSet set;
+  if (keys) {
+    set.states = keys->store.size() - keys->frontier_first;
+    set.nodes = frontier.node_count();
+  } else if (const auto measured = simulation_of(frontier, kSimulatedImageWork, true)) {
+    set = *measured;
+  } else {
+    return std::nullopt;
+  }
+  if (!may_simulate(set, kSimulatedImageWork, true) || !chooses_simulation(set))
+    return std::nullopt;
+  std::vector<int> var_at_rank(latches);
+  for (std::size_t l = 0; l < latches; ++l) var_at_rank[rank_of[l]] = current_var_[l];
+  auto key_bit = [](const StateWord* key, std::uint32_t rank) {
+    return ((key[rank / 64] >> (63 - rank % 64)) & 1U) != 0;
+  };
+  if (!keys) {
+    keys = std::make_unique<ReachedKeys>(circuit_, rank_of);
+    const std::size_t words = keys->sim.latch_words();
+    std::vector<StateWord> key(words);
+    const bool walked = frontier.for_each_assignment(current_var_, [&](const std::vector<bool>& x) {
+      std::fill(key.begin(), key.end(), 0);
+      for (std::size_t l = 0; l < latches; ++l)
+        if (x[l]) key[rank_of[l] / 64] |= std::uint64_t{1} << (63 - rank_of[l] % 64);
+      keys->store.insert(key);
+      return true;
+    });
+    if (!walked) {
+      keys.reset();
+      return std::nullopt;
+    }
+    keys->frontier_first = 0;
+  }
+  ReachedKeys& k = *keys;
+  const std::uint32_t words = k.store.words_per_state();
+  const std::uint32_t first = k.frontier_first, end = k.store.size();
+  std::vector<bool> x(latches);
+  Step s;
+  std::uint64_t edges = 0;
+  for (std::uint32_t i = first; i < end; ++i) {
+    // Decoded before the inserts below, which may move the store's array.
+    const StateWord* key = k.store.at(i).data();
+    for (std::size_t l = 0; l < latches; ++l) x[l] = key_bit(key, rank_of[l]);
+    const std::size_t count = k.sim.simulate(x);
+    edges += count;
+    for (std::size_t j = 0; j < count; ++j) k.store.insert(StateView(k.sim.successor(j), words));
+  }
+  const StateView added = k.store.range(end, k.store.size() - end);
+  std::vector<std::uint64_t> ring_keys(added.begin(), added.end());
+  const std::size_t count = sort_distinct_keys(ring_keys, words);
+  s.ring = bdd_of_sorted_keys(ring_keys, count, words, var_at_rank);
+  s.reached = reached | s.ring;
+  s.edges = edges;
+  k.reached = s.reached;
+  k.frontier = s.ring;
+  k.frontier_first = end;
+  if (k.store.size() > kMaxReachedKeys ||
+      (max_simulation_bytes_ > 0 && k.store.memory_bytes() > max_simulation_bytes_))
+    keys.reset();
+  return s;
 }
 
 Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {

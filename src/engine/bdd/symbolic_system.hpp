@@ -87,6 +87,18 @@ class SymbolicSystem {
   Bdd image(const Bdd& states, ImageMethod how = ImageMethod::Auto,
             std::optional<std::uint64_t>* edges = nullptr) const;
   Bdd preimage(const Bdd& states) const;
+  /// One breadth-first step of reachability: the successors of `frontier` (the last ring)
+  /// outside `reached`, their union with `reached`, and the edges out of `frontier` when the
+  /// step counted them (simulated). From the first ring on (`frontier` == `reached`), while
+  /// each step is fed the previous one's ring and reached set and every ring is simulated
+  /// (image()'s choice), the reached states are also kept as keys: the next frontier's states
+  /// are simulated from them, and only the new successors make the ring's BDD, with no walk of
+  /// the frontier's BDD and no `& !reached`.
+  struct Step {
+    Bdd ring, reached;
+    std::optional<std::uint64_t> edges;
+  };
+  Step step(const Bdd& frontier, const Bdd& reached) const;
 
   /// The states where a propositional formula over observables holds.
   Bdd atom(const logic::Formula& f);
@@ -204,6 +216,16 @@ class SymbolicSystem {
   };
   std::optional<SimulatedSet> simulation_of(const Bdd& from, std::uint64_t max_work,
                                             bool near_explicit_only) const;
+  /// simulation_of()'s bounds on a set already measured.
+  bool may_simulate(const SimulatedSet& set, std::uint64_t max_work, bool near_explicit_only) const;
+  /// Whether small sets (under kMinSimulatedImageNodes nodes) are still simulated: before the
+  /// relation is built, within a number of images and an amount of work.
+  bool simulates_small_sets() const;
+  /// image()'s choice for a set that may be simulated: whether to simulate it (counting a
+  /// small one against the small-set budget).
+  bool chooses_simulation(const SimulatedSet& set) const;
+  /// step() with the reached states as keys; nullopt when the step is not simulated.
+  std::optional<Step> simulated_step(const Bdd& frontier, const Bdd& reached) const;
   bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
   /// count_edges and image by simulation (after simulates()); nullopt when `from` mentions a
   /// variable other than the current ones. image_by_simulation counts in `tally` the states
@@ -229,6 +251,8 @@ class SymbolicSystem {
   Bdd initial_, ok_, has_successor_, range_error_states_;
   int cluster_nodes_;
   mutable std::unique_ptr<Relation> relation_;  // relation(): null until first used
+  struct ReachedKeys;                           // step(): the reached states as keys
+  mutable std::unique_ptr<ReachedKeys> reached_keys_;
   /// Images of small sets simulated before the relation was built, and their work
   /// (simulation_work_per_state units): image() stops past a number or an amount.
   mutable std::uint32_t small_images_simulated_ = 0;
