@@ -29,6 +29,8 @@ class SuccessorSimulator {
   const std::uint64_t* successor(std::size_t j) const {
     return keys_.data() + static_cast<std::size_t>(order_[j]) * latch_words_;
   }
+  /// An input valuation (bit i: input i) that leads to successor(j).
+  std::uint32_t valuation(std::size_t j) const { return order_[j]; }
 
  private:
   std::uint64_t lit(semantics::AigLit l, std::size_t w) const {

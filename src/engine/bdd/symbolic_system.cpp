@@ -39,6 +39,8 @@ constexpr std::uint32_t kSmallImagesBeforeRelation = 64;
 constexpr std::uint64_t kSmallWorkBeforeRelation = std::uint64_t{1} << 22;
 // step() keeps at most this many reached states as keys (16 bytes or more each).
 constexpr std::uint32_t kMaxReachedKeys = std::uint32_t{1} << 24;
+// Pre-images on the graph of the reached states: at most this many edges (4 bytes each).
+constexpr std::size_t kMaxReachedGraphEdges = std::size_t{1} << 26;
 // An image by simulation holds every distinct successor of the set (up to a word per 8 latch
 // bits each): a quarter of the work bound keeps that under 64 MB.
 constexpr std::uint64_t kSimulatedImageWork = kSimulationWork / 4;
@@ -96,6 +98,27 @@ struct SymbolicSystem::ReachedKeys {
   StateStore store;  ///< every reached state's key, in ring order: the frontier's are last
   std::uint32_t frontier_first = 0;
   Bdd reached, frontier;  ///< the sets the keys are
+  // After exploration (preimage_on_reached_graph): the stored successors of state i are
+  // successors[first_successor[i] .. first_successor[i + 1]).
+  std::vector<std::uint64_t> first_successor;
+  std::vector<std::uint32_t> successors;
+  /// The key of a state of latch values `x`.
+  void key_of(const std::vector<bool>& x, std::vector<StateWord>& key) const {
+    std::fill(key.begin(), key.end(), 0);
+    for (std::size_t l = 0; l < x.size(); ++l)
+      if (x[l]) key[rank_of[l] / 64] |= std::uint64_t{1} << (63 - rank_of[l] % 64);
+  }
+  /// The latch values of the state of a key.
+  void latches_of(const StateWord* key, std::vector<bool>& x) const {
+    for (std::size_t l = 0; l < x.size(); ++l)
+      x[l] = ((key[rank_of[l] / 64] >> (63 - rank_of[l] % 64)) & 1U) != 0;
+  }
+  /// Each rank's current variable.
+  std::vector<int> var_at_rank(const std::vector<int>& current_var) const {
+    std::vector<int> var(rank_of.size());
+    for (std::size_t l = 0; l < rank_of.size(); ++l) var[rank_of[l]] = current_var[l];
+    return var;
+  }
 };
 
 SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
@@ -379,16 +402,21 @@ bool SymbolicSystem::initial_range_error() const {
   return grafcet_ && grafcet_->initial_range_error();
 }
 
-std::vector<std::uint32_t> SymbolicSystem::fired_between(semantics::StateView from,
-                                                         const std::vector<bool>& inputs) const {
-  const Aig& aig = circuit_.aig;
+std::vector<bool> SymbolicSystem::latches_of(semantics::StateView state) const {
   const auto& layout = ts_.layout();
-  std::vector<bool> latches(aig.latches().size());
+  std::vector<bool> latches(circuit_.aig.latches().size());
   for (std::uint32_t f = 0; f < circuit_.field_latches.size(); ++f) {
-    const auto v = static_cast<std::uint64_t>(layout.get(from, f) - layout.fields()[f].lo);
+    const auto v = static_cast<std::uint64_t>(layout.get(state, f) - layout.fields()[f].lo);
     for (std::size_t b = 0; b < circuit_.field_latches[f].size(); ++b)
       latches[circuit_.field_latches[f][b]] = ((v >> b) & 1U) != 0;
   }
+  return latches;
+}
+
+std::vector<std::uint32_t> SymbolicSystem::fired_between(semantics::StateView from,
+                                                         const std::vector<bool>& inputs) const {
+  const Aig& aig = circuit_.aig;
+  const std::vector<bool> latches = latches_of(from);
   std::vector<bool> on(circuit_.fired.size(), false);
   auto collect = [&](const std::vector<bool>& nodes) {
     for (std::size_t t = 0; t < circuit_.fired.size(); ++t)
@@ -578,19 +606,11 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
   }
   if (!may_simulate(set, kSimulatedImageWork, true) || !chooses_simulation(set))
     return std::nullopt;
-  std::vector<int> var_at_rank(latches);
-  for (std::size_t l = 0; l < latches; ++l) var_at_rank[rank_of[l]] = current_var_[l];
-  auto key_bit = [](const StateWord* key, std::uint32_t rank) {
-    return ((key[rank / 64] >> (63 - rank % 64)) & 1U) != 0;
-  };
   if (!keys) {
     keys = std::make_unique<ReachedKeys>(circuit_, rank_of);
-    const std::size_t words = keys->sim.latch_words();
-    std::vector<StateWord> key(words);
+    std::vector<StateWord> key(keys->sim.latch_words());
     const bool walked = frontier.for_each_assignment(current_var_, [&](const std::vector<bool>& x) {
-      std::fill(key.begin(), key.end(), 0);
-      for (std::size_t l = 0; l < latches; ++l)
-        if (x[l]) key[rank_of[l] / 64] |= std::uint64_t{1} << (63 - rank_of[l] % 64);
+      keys->key_of(x, key);
       keys->store.insert(key);
       return true;
     });
@@ -608,8 +628,7 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
   std::uint64_t edges = 0;
   for (std::uint32_t i = first; i < end; ++i) {
     // Decoded before the inserts below, which may move the store's array.
-    const StateWord* key = k.store.at(i).data();
-    for (std::size_t l = 0; l < latches; ++l) x[l] = key_bit(key, rank_of[l]);
+    k.latches_of(k.store.at(i).data(), x);
     const std::size_t count = k.sim.simulate(x);
     edges += count;
     for (std::size_t j = 0; j < count; ++j) k.store.insert(StateView(k.sim.successor(j), words));
@@ -617,7 +636,7 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
   const StateView added = k.store.range(end, k.store.size() - end);
   std::vector<std::uint64_t> ring_keys(added.begin(), added.end());
   const std::size_t count = sort_distinct_keys(ring_keys, words);
-  s.ring = bdd_of_sorted_keys(ring_keys, count, words, var_at_rank);
+  s.ring = bdd_of_sorted_keys(ring_keys, count, words, k.var_at_rank(current_var_));
   s.reached = reached | s.ring;
   s.edges = edges;
   k.reached = s.reached;
@@ -627,6 +646,55 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
       (max_simulation_bytes_ > 0 && k.store.memory_bytes() > max_simulation_bytes_))
     keys.reset();
   return s;
+}
+
+std::optional<Bdd> SymbolicSystem::preimage_on_reached_graph(const Bdd& states) const {
+  auto& keys = reached_keys_;
+  if (!keys || keys->reached != preimage_care_) return std::nullopt;
+  ReachedKeys& k = *keys;
+  const std::uint32_t n = k.store.size(), words = k.store.words_per_state();
+  std::vector<bool> x(current_var_.size());
+  if (k.first_successor.empty()) {
+    // Each stored state's successors among the stored ones: the rest lie outside the reached
+    // set, where no pre-image looks.
+    k.first_successor.reserve(std::size_t{n} + 1);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      k.first_successor.push_back(k.successors.size());
+      k.latches_of(k.store.at(i).data(), x);
+      const std::size_t count = k.sim.simulate(x);
+      for (std::size_t j = 0; j < count; ++j) {
+        const std::uint32_t target = k.store.find(StateView(k.sim.successor(j), words));
+        if (target != StateStore::kAbsent) k.successors.push_back(target);
+      }
+      if (k.successors.size() > kMaxReachedGraphEdges ||
+          (max_simulation_bytes_ > 0 &&
+           k.store.memory_bytes() + 4 * k.successors.size() > max_simulation_bytes_)) {
+        keys.reset();  // too large: pre-images on the relation
+        return std::nullopt;
+      }
+    }
+    k.first_successor.push_back(k.successors.size());
+  }
+  std::vector<bool> in(n, false);
+  std::vector<StateWord> key(words);
+  const bool walked =
+      (states & preimage_care_).for_each_assignment(current_var_, [&](const std::vector<bool>& v) {
+        k.key_of(v, key);
+        const std::uint32_t i = k.store.find(key);
+        if (i != StateStore::kAbsent) in[i] = true;
+        return i != StateStore::kAbsent;
+      });
+  if (!walked) return std::nullopt;
+  std::vector<std::uint64_t> pre;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint64_t e = k.first_successor[i]; e < k.first_successor[i + 1]; ++e)
+      if (in[k.successors[e]]) {
+        const StateView source = k.store.at(i);
+        pre.insert(pre.end(), source.begin(), source.end());
+        break;
+      }
+  const std::size_t count = sort_distinct_keys(pre, words);
+  return bdd_of_sorted_keys(pre, count, words, k.var_at_rank(current_var_));
 }
 
 Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {
@@ -647,6 +715,7 @@ Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {
 Bdd SymbolicSystem::preimage(const Bdd& states) const {
   if (grafcet_) return grafcet_->preimage(states);
   if (states.is_false()) return states;
+  if (auto on_graph = preimage_on_reached_graph(states)) return *on_graph;
   // exists x', i. T(x, i, x') & S(x'), conjoining the clusters in order; ok_ (inputs allowed,
   // no range error) is part of the first cluster.
   const Relation& r = relation();
@@ -665,6 +734,24 @@ Bdd SymbolicSystem::preimage(const Bdd& states) const {
 std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
                                                  semantics::StateView to) const {
   if (grafcet_) return grafcet_->inputs_between(singleton(from), singleton(to));
+  if (circuit_.aig.inputs().size() <= kMaxSimulatedInputs && !current_var_.empty()) {
+    // Simulated: `from` under every input valuation, without the relation.
+    std::vector<std::uint32_t> position(current_var_.size());
+    std::iota(position.begin(), position.end(), 0U);
+    SuccessorSimulator sim(circuit_, std::move(position));
+    const std::vector<bool> target = latches_of(to);
+    std::vector<std::uint64_t> key(sim.latch_words(), 0);
+    for (std::size_t l = 0; l < target.size(); ++l)
+      if (target[l]) key[l / 64] |= std::uint64_t{1} << (63 - l % 64);
+    const std::size_t count = sim.simulate(latches_of(from));
+    for (std::size_t j = 0; j < count; ++j)
+      if (std::equal(key.begin(), key.end(), sim.successor(j))) {
+        std::vector<bool> bits(input_var_.size());
+        for (std::size_t i = 0; i < bits.size(); ++i) bits[i] = ((sim.valuation(j) >> i) & 1U) != 0;
+        return bits;
+      }
+    return {};
+  }
   // T(from, i, to) over the inputs: every current and next variable is fixed, so each cluster
   // only shrinks the set of inputs.
   Bdd acc = singleton(from) & singleton(to).replace(*current_to_next_);

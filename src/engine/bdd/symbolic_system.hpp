@@ -226,6 +226,11 @@ class SymbolicSystem {
   bool chooses_simulation(const SimulatedSet& set) const;
   /// step() with the reached states as keys; nullopt when the step is not simulated.
   std::optional<Step> simulated_step(const Bdd& frontier, const Bdd& reached) const;
+  /// preimage() on the graph of the reached states' keys, when step() kept every state of
+  /// restrict_sources()'s set (built on first use); nullopt otherwise.
+  std::optional<Bdd> preimage_on_reached_graph(const Bdd& states) const;
+  /// The latch values of a state.
+  std::vector<bool> latches_of(semantics::StateView state) const;
   bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
   /// count_edges and image by simulation (after simulates()); nullopt when `from` mentions a
   /// variable other than the current ones. image_by_simulation counts in `tally` the states
