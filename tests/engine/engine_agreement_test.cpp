@@ -649,6 +649,7 @@ TEST(EngineAgreement, ReachabilityStepsBySimulationAndOnTheRelation) {
 // After reachability by simulated steps, pre-images within the reached set are computed on the
 // graph of the reached states' keys, without the relation: the same sets as the states whose
 // successors (imaged one by one on the relation) meet the target, also after a reordering.
+// Images of its subsets, and their edges, are the relation's.
 TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
   const auto charts = simulated_charts();
   int compared = 0;
@@ -682,6 +683,16 @@ TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
       }
       EXPECT_TRUE(on_graph[t] == expected) << "target " << t;
       ++compared;
+    }
+    // Images of subsets of the (closed) reached set too, with their edges.
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      std::optional<std::uint64_t> edges;
+      EXPECT_TRUE(sys->image(targets[t], SymbolicSystem::ImageMethod::Auto, &edges) ==
+                  sys->image(targets[t], SymbolicSystem::ImageMethod::Symbolic))
+          << "image of target " << t;
+      ASSERT_TRUE(edges.has_value());
+      EXPECT_EQ(std::to_string(*edges),
+                sys->count_edges(targets[t], SymbolicSystem::EdgeCounting::Symbolic)->str());
     }
     bdd::reorder_now();
     for (std::size_t t = 0; t < targets.size(); ++t)

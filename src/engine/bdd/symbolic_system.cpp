@@ -102,6 +102,7 @@ struct SymbolicSystem::ReachedKeys {
   // successors[first_successor[i] .. first_successor[i + 1]).
   std::vector<std::uint64_t> first_successor;
   std::vector<std::uint32_t> successors;
+  bool closed = false;  ///< every successor of a stored state is stored
   /// The key of a state of latch values `x`.
   void key_of(const std::vector<bool>& x, std::vector<StateWord>& key) const {
     std::fill(key.begin(), key.end(), 0);
@@ -557,6 +558,12 @@ Bdd SymbolicSystem::image(const Bdd& states, ImageMethod how,
     if (edges) *edges = tally.edges;
     return *result;
   }
+  if (states.is_false()) {
+    if (edges) *edges = 0;
+    return states;
+  }
+  if (how == ImageMethod::Auto && !grafcet_)
+    if (auto on_graph = image_on_reached_graph(states, edges)) return *on_graph;
   // BuDDy counts a small set's nodes faster than simulation_of walks it (`counter 16`:
   // 131 069 rings of a few nodes).
   if (how == ImageMethod::Auto && !grafcet_ &&
@@ -648,53 +655,93 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
   return s;
 }
 
-std::optional<Bdd> SymbolicSystem::preimage_on_reached_graph(const Bdd& states) const {
+SymbolicSystem::ReachedKeys* SymbolicSystem::reached_graph() const {
   auto& keys = reached_keys_;
-  if (!keys || keys->reached != preimage_care_) return std::nullopt;
+  if (!keys || keys->reached != preimage_care_) return nullptr;
   ReachedKeys& k = *keys;
+  if (!k.first_successor.empty()) return &k;
+  // Each stored state's successors among the stored ones; the others lie outside the reached
+  // set (exploration stopped early), where no pre-image looks and no image may be taken.
   const std::uint32_t n = k.store.size(), words = k.store.words_per_state();
   std::vector<bool> x(current_var_.size());
-  if (k.first_successor.empty()) {
-    // Each stored state's successors among the stored ones: the rest lie outside the reached
-    // set, where no pre-image looks.
-    k.first_successor.reserve(std::size_t{n} + 1);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      k.first_successor.push_back(k.successors.size());
-      k.latches_of(k.store.at(i).data(), x);
-      const std::size_t count = k.sim.simulate(x);
-      for (std::size_t j = 0; j < count; ++j) {
-        const std::uint32_t target = k.store.find(StateView(k.sim.successor(j), words));
-        if (target != StateStore::kAbsent) k.successors.push_back(target);
-      }
-      if (k.successors.size() > kMaxReachedGraphEdges ||
-          (max_simulation_bytes_ > 0 &&
-           k.store.memory_bytes() + 4 * k.successors.size() > max_simulation_bytes_)) {
-        keys.reset();  // too large: pre-images on the relation
-        return std::nullopt;
-      }
-    }
+  k.first_successor.reserve(std::size_t{n} + 1);
+  k.closed = true;
+  for (std::uint32_t i = 0; i < n; ++i) {
     k.first_successor.push_back(k.successors.size());
+    k.latches_of(k.store.at(i).data(), x);
+    const std::size_t count = k.sim.simulate(x);
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::uint32_t target = k.store.find(StateView(k.sim.successor(j), words));
+      if (target == StateStore::kAbsent)
+        k.closed = false;
+      else
+        k.successors.push_back(target);
+    }
+    if (k.successors.size() > kMaxReachedGraphEdges ||
+        (max_simulation_bytes_ > 0 &&
+         k.store.memory_bytes() + 4 * k.successors.size() > max_simulation_bytes_)) {
+      keys.reset();  // too large: images and pre-images on the relation
+      return nullptr;
+    }
   }
-  std::vector<bool> in(n, false);
-  std::vector<StateWord> key(words);
+  k.first_successor.push_back(k.successors.size());
+  return &k;
+}
+
+std::optional<std::vector<bool>> SymbolicSystem::reached_indices(const ReachedKeys& k,
+                                                                 const Bdd& states) const {
+  std::vector<bool> in(k.store.size(), false);
+  std::vector<StateWord> key(k.store.words_per_state());
   const bool walked =
-      (states & preimage_care_).for_each_assignment(current_var_, [&](const std::vector<bool>& v) {
-        k.key_of(v, key);
+      (states & preimage_care_).for_each_assignment(current_var_, [&](const std::vector<bool>& x) {
+        k.key_of(x, key);
         const std::uint32_t i = k.store.find(key);
         if (i != StateStore::kAbsent) in[i] = true;
         return i != StateStore::kAbsent;
       });
   if (!walked) return std::nullopt;
-  std::vector<std::uint64_t> pre;
-  for (std::uint32_t i = 0; i < n; ++i)
-    for (std::uint64_t e = k.first_successor[i]; e < k.first_successor[i + 1]; ++e)
-      if (in[k.successors[e]]) {
-        const StateView source = k.store.at(i);
-        pre.insert(pre.end(), source.begin(), source.end());
-        break;
-      }
-  const std::size_t count = sort_distinct_keys(pre, words);
-  return bdd_of_sorted_keys(pre, count, words, k.var_at_rank(current_var_));
+  return in;
+}
+
+Bdd SymbolicSystem::bdd_of_reached(const ReachedKeys& k, const std::vector<bool>& in) const {
+  const std::uint32_t words = k.store.words_per_state();
+  std::vector<std::uint64_t> keys;
+  for (std::uint32_t i = 0; i < in.size(); ++i)
+    if (in[i]) {
+      const StateView key = k.store.at(i);
+      keys.insert(keys.end(), key.begin(), key.end());
+    }
+  const std::size_t count = sort_distinct_keys(keys, words);
+  return bdd_of_sorted_keys(keys, count, words, k.var_at_rank(current_var_));
+}
+
+std::optional<Bdd> SymbolicSystem::preimage_on_reached_graph(const Bdd& states) const {
+  const ReachedKeys* k = reached_graph();
+  if (!k) return std::nullopt;
+  const auto in = reached_indices(*k, states);
+  if (!in) return std::nullopt;
+  std::vector<bool> pre(in->size(), false);
+  for (std::uint32_t i = 0; i < pre.size(); ++i)
+    for (std::uint64_t e = k->first_successor[i]; e < k->first_successor[i + 1] && !pre[i]; ++e)
+      pre[i] = (*in)[k->successors[e]];
+  return bdd_of_reached(*k, pre);
+}
+
+std::optional<Bdd> SymbolicSystem::image_on_reached_graph(
+    const Bdd& states, std::optional<std::uint64_t>* edges) const {
+  const ReachedKeys* k = reached_graph();
+  // Only within a closed reached set: every successor of its states is a stored one.
+  if (!k || !k->closed || !(states & !preimage_care_).is_false()) return std::nullopt;
+  const auto in = reached_indices(*k, states);
+  if (!in) return std::nullopt;
+  std::vector<bool> post(in->size(), false);
+  std::uint64_t count = 0;
+  for (std::uint32_t i = 0; i < post.size(); ++i)
+    if ((*in)[i])
+      for (std::uint64_t e = k->first_successor[i]; e < k->first_successor[i + 1]; ++e, ++count)
+        post[k->successors[e]] = true;
+  if (edges) *edges = count;
+  return bdd_of_reached(*k, post);
 }
 
 Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {

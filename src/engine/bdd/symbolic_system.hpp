@@ -83,9 +83,14 @@ class SymbolicSystem {
   /// The successors of `states`. Simulation throws std::logic_error when the set or the
   /// inputs are too large to simulate (more than 12 inputs, a Grafcet, a set of 2^64 states).
   /// With `edges`: it receives the number of edges out of `states` (count_edges) when the
-  /// image was simulated, which counts them at no cost, and nullopt otherwise.
+  /// image counted them at no cost (simulated, on the reached graph, or of the empty set),
+  /// and nullopt otherwise. Auto images a subset of a closed reached set on the graph of its
+  /// keys when step() kept them (preimage()).
   Bdd image(const Bdd& states, ImageMethod how = ImageMethod::Auto,
             std::optional<std::uint64_t>* edges = nullptr) const;
+  /// The states with a successor in `states` (within restrict_sources()'s set). When step()
+  /// kept that set's states as keys, on the graph of their successors (built once, by
+  /// simulation), not on the relation.
   Bdd preimage(const Bdd& states) const;
   /// One breadth-first step of reachability: the successors of `frontier` (the last ring)
   /// outside `reached`, their union with `reached`, and the edges out of `frontier` when the
@@ -188,6 +193,7 @@ class SymbolicSystem {
   Bdd canonically_before(semantics::StateView state) const;
 
  private:
+  struct ReachedKeys;  // the reached states as keys (step()), defined in the .cpp
   Bdd node_bdd(semantics::AigLit lit) const;  ///< the BDD of an Aig literal (memoised per node)
   /// The partitioned relation: clusters of (next_l <-> f_l), with the variables each image,
   /// pre-image and edge count quantifies after each cluster. Built on first use: images by
@@ -226,9 +232,20 @@ class SymbolicSystem {
   bool chooses_simulation(const SimulatedSet& set) const;
   /// step() with the reached states as keys; nullopt when the step is not simulated.
   std::optional<Step> simulated_step(const Bdd& frontier, const Bdd& reached) const;
-  /// preimage() on the graph of the reached states' keys, when step() kept every state of
-  /// restrict_sources()'s set (built on first use); nullopt otherwise.
+  /// The reached states' keys with their successor graph (built on first use), when step()
+  /// kept every state of restrict_sources()'s set; null otherwise.
+  ReachedKeys* reached_graph() const;
+  /// Which stored states a set (within the reached set) holds; nullopt when the set mentions
+  /// other variables.
+  std::optional<std::vector<bool>> reached_indices(const ReachedKeys& keys,
+                                                   const Bdd& states) const;
+  /// The BDD of the stored states `in` marks.
+  Bdd bdd_of_reached(const ReachedKeys& keys, const std::vector<bool>& in) const;
+  /// preimage() within the reached set, and image() of a subset of a closed reached set, on
+  /// the reached graph; nullopt when there is none.
   std::optional<Bdd> preimage_on_reached_graph(const Bdd& states) const;
+  std::optional<Bdd> image_on_reached_graph(const Bdd& states,
+                                            std::optional<std::uint64_t>* edges) const;
   /// The latch values of a state.
   std::vector<bool> latches_of(semantics::StateView state) const;
   bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
@@ -255,9 +272,8 @@ class SymbolicSystem {
   Bdd current_cube_, next_cube_, input_cube_;
   Bdd initial_, ok_, has_successor_, range_error_states_;
   int cluster_nodes_;
-  mutable std::unique_ptr<Relation> relation_;  // relation(): null until first used
-  struct ReachedKeys;                           // step(): the reached states as keys
-  mutable std::unique_ptr<ReachedKeys> reached_keys_;
+  mutable std::unique_ptr<Relation> relation_;         // relation(): null until first used
+  mutable std::unique_ptr<ReachedKeys> reached_keys_;  // step(): the reached states as keys
   /// Images of small sets simulated before the relation was built, and their work
   /// (simulation_work_per_state units): image() stops past a number or an amount.
   mutable std::uint32_t small_images_simulated_ = 0;
