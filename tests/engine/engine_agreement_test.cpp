@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -21,6 +22,7 @@
 #include "logic/check_inputs.hpp"
 #include "logic/formula.hpp"
 #include "logic/push_negation.hpp"
+#include "model/errors.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/check_findings.hpp"
@@ -699,6 +701,25 @@ TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
       EXPECT_TRUE(sys->preimage(targets[t]) == on_graph[t]) << "after reordering, target " << t;
   }
   EXPECT_GE(compared, 60);
+}
+
+// A simulated step reads the clock: past the deadline it throws LimitReached(Time) and leaves
+// no half-made keys behind, so the next step is still right. The deadline check is the
+// run's (--timeout), which a simulation would otherwise outlast (it makes no BDD node).
+TEST(EngineAgreement, SimulatedStepsMeetTheDeadline) {
+  const auto s = load(bench::random_chart_iec(30, 4, 2));
+  ASSERT_TRUE(s.ts);
+  const auto sys = make_symbolic_system(*s.ts);
+  const auto first = sys->step(sys->initial(), sys->initial());
+  ASSERT_TRUE(first.edges.has_value());  // simulated: the keys are kept
+  {
+    const bdd::DeadlineScope past(std::chrono::steady_clock::now() - std::chrono::seconds(1));
+    EXPECT_THROW(sys->step(first.ring, first.reached), LimitReached);
+  }
+  const auto second = sys->step(first.ring, first.reached);
+  EXPECT_TRUE(second.ring ==
+              (sys->image(first.ring, SymbolicSystem::ImageMethod::Symbolic) & !first.reached));
+  EXPECT_TRUE(second.reached == (first.reached | second.ring));
 }
 
 // The relation is built on first use. Small random charts explore by simulation alone (and

@@ -177,6 +177,14 @@ void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline,
   }
 }
 
+bool deadline_passed() {
+  return past_deadline();
+}
+
+void poll_deadline() {
+  if (past_deadline()) throw LimitReached(Limit::Time, "time limit reached in a simulation");
+}
+
 int allocated_nodes() {
   return bdd_isrunning() ? bdd_getnodenum() : 0;
 }

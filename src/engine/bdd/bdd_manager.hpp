@@ -54,6 +54,12 @@ class DeadlineScope {
   DeadlineScope& operator=(const DeadlineScope&) = delete;
 };
 
+/// Whether the deadline set_deadline() gave has passed (or the cancel flag is raised).
+bool deadline_passed();
+/// Throws LimitReached(Time) once deadline_passed(): for the long loops between BDD operations
+/// (simulating the circuit on explicit states).
+void poll_deadline();
+
 /// Nodes currently allocated in the manager's table.
 int allocated_nodes();
 

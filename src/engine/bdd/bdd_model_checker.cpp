@@ -52,6 +52,12 @@ class Run {
       failed_limit_ = e.which();
       report.complete = false;
       report.limit = to_string(e.which());
+      // The rings so far are exact: count them (a walk, no BDD node made), unless a limit
+      // stops that too.
+      try {
+        last_count_ = sys_.count_exact(reached_);
+      } catch (const LimitReached&) {
+      }
       report.states = last_count_;
       report.depth = static_cast<std::uint32_t>(rings_.empty() ? 0 : rings_.size() - 1);
     }
