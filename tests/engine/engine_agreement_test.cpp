@@ -532,17 +532,25 @@ std::vector<SimulatedChart> simulated_charts() {
   return charts;
 }
 
+/// Runs `check` on each chart of simulated_charts(), loaded, under a trace naming it.
+template <class Check>
+void for_each_simulated_chart(Check&& check) {
+  const auto charts = simulated_charts();
+  for (std::size_t k = 0; k < charts.size(); ++k) {
+    SCOPED_TRACE("chart " + std::to_string(k));
+    const auto s = load(charts[k].text, charts[k].options);
+    ASSERT_TRUE(s.ts);
+    check(s);
+  }
+}
+
 // Edges are counted on the relation or by simulating the circuit on every reached state (the
 // default on small sets with about a node per state): the same number both ways, and the
 // explicit engine's.
 TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
   using How = SymbolicSystem::EdgeCounting;
-  const auto charts = simulated_charts();
   int simulated = 0;
-  for (std::size_t k = 0; k < charts.size(); ++k) {
-    SCOPED_TRACE("chart " + std::to_string(k));
-    const auto s = load(charts[k].text, charts[k].options);
-    ASSERT_TRUE(s.ts);
+  for_each_simulated_chart([&](const auto& s) {
     const auto task = task_for(s, {"AG TRUE"}, {});
     const auto explicit_report = make_explicit_model_checker()->check(task);
     const auto sys = make_symbolic_system(*s.ts);
@@ -560,7 +568,7 @@ TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
       EXPECT_EQ(by_simulation->str(), on_relation->str());
     }
     EXPECT_EQ(sys->count_edges(reached)->str(), on_relation->str());
-  }
+  });
   EXPECT_GE(simulated, 12);
 }
 
@@ -570,12 +578,8 @@ TEST(EngineAgreement, EdgeCountsBySimulationAndOnTheRelation) {
 // the whole reached set, and after a reordering has changed the variable levels.
 TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
   using How = SymbolicSystem::ImageMethod;
-  const auto charts = simulated_charts();
   int rings = 0;
-  for (std::size_t k = 0; k < charts.size(); ++k) {
-    SCOPED_TRACE("chart " + std::to_string(k));
-    const auto s = load(charts[k].text, charts[k].options);
-    ASSERT_TRUE(s.ts);
+  for_each_simulated_chart([&](const auto& s) {
     const auto sys = make_symbolic_system(*s.ts);
     auto reached = sys->initial();
     for (auto frontier = reached; !frontier.is_false();) {
@@ -596,7 +600,7 @@ TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
     bdd::reorder_now();
     EXPECT_TRUE(sys->image(reached, How::Simulation) == sys->image(reached, How::Symbolic));
     EXPECT_TRUE(sys->image(reached) == sys->image(reached, How::Symbolic));
-  }
+  });
   EXPECT_GE(rings, 60);
 }
 
@@ -605,12 +609,8 @@ TEST(EngineAgreement, ImagesBySimulationAndOnTheRelation) {
 // frontier when it counts them, through a reordering (which drops the keys) and when fed a
 // set that is not the previous step's.
 TEST(EngineAgreement, ReachabilityStepsBySimulationAndOnTheRelation) {
-  const auto charts = simulated_charts();
   int counted = 0;
-  for (std::size_t k = 0; k < charts.size(); ++k) {
-    SCOPED_TRACE("chart " + std::to_string(k));
-    const auto s = load(charts[k].text, charts[k].options);
-    ASSERT_TRUE(s.ts);
+  for_each_simulated_chart([&](const auto& s) {
     const auto sys = make_symbolic_system(*s.ts);
     // The steps first: an image on the relation builds it, after which small rings are imaged
     // on it too.
@@ -644,7 +644,7 @@ TEST(EngineAgreement, ReachabilityStepsBySimulationAndOnTheRelation) {
     EXPECT_TRUE(
         from_initial.ring ==
         (sys->image(sys->initial(), SymbolicSystem::ImageMethod::Symbolic) & !sys->initial()));
-  }
+  });
   EXPECT_GE(counted, 40);
 }
 
@@ -653,12 +653,8 @@ TEST(EngineAgreement, ReachabilityStepsBySimulationAndOnTheRelation) {
 // successors (imaged one by one on the relation) meet the target, also after a reordering.
 // Images of its subsets, and their edges, are the relation's.
 TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
-  const auto charts = simulated_charts();
   int compared = 0;
-  for (std::size_t k = 0; k < charts.size(); ++k) {
-    SCOPED_TRACE("chart " + std::to_string(k));
-    const auto s = load(charts[k].text, charts[k].options);
-    ASSERT_TRUE(s.ts);
+  for_each_simulated_chart([&](const auto& s) {
     const auto sys = make_symbolic_system(*s.ts);
     std::vector<SymbolicSystem::Bdd> rings{sys->initial()};
     auto reached = sys->initial();
@@ -674,7 +670,7 @@ TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
     targets.push_back(reached & !sys->has_successor());
     std::vector<SymbolicSystem::Bdd> on_graph;
     for (const auto& t : targets) on_graph.push_back(sys->preimage(t));
-    if (sys->has_relation()) continue;  // a ring was imaged on the relation: no graph
+    if (sys->has_relation()) return;  // a ring was imaged on the relation: no graph
     const auto states = sys->enumerate(reached, 100'000);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       auto expected = SymbolicSystem::Bdd::constant(false);
@@ -699,7 +695,7 @@ TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
     bdd::reorder_now();
     for (std::size_t t = 0; t < targets.size(); ++t)
       EXPECT_TRUE(sys->preimage(targets[t]) == on_graph[t]) << "after reordering, target " << t;
-  }
+  });
   EXPECT_GE(compared, 60);
 }
 
