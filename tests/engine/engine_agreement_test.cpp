@@ -651,7 +651,8 @@ TEST(EngineAgreement, ReachabilityStepsBySimulationAndOnTheRelation) {
 // After reachability by simulated steps, pre-images within the reached set are computed on the
 // graph of the reached states' keys, without the relation: the same sets as the states whose
 // successors (imaged one by one on the relation) meet the target, also after a reordering.
-// Images of its subsets, and their edges, are the relation's.
+// Images of its subsets, and their edges, are the relation's; searches on the graph (closures,
+// E[p U q]) are the fixpoints of those pre-images and images.
 TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
   int compared = 0;
   for_each_simulated_chart([&](const auto& s) {
@@ -691,6 +692,25 @@ TEST(EngineAgreement, PreimagesOnTheReachedGraph) {
       ASSERT_TRUE(edges.has_value());
       EXPECT_EQ(std::to_string(*edges),
                 sys->count_edges(targets[t], SymbolicSystem::EdgeCounting::Symbolic)->str());
+    }
+    // Searches on the graph: the fixpoints of those pre-images and images, through every
+    // reached state or through the even rings only (E[p U q]).
+    auto even_rings = SymbolicSystem::Bdd::constant(false);
+    for (std::size_t r = 0; r < rings.size(); r += 2) even_rings = even_rings | rings[r];
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      for (const auto& through : {SymbolicSystem::Bdd::constant(true), even_rings}) {
+        for (const bool backward : {true, false}) {
+          if (!backward && !through.is_true()) continue;
+          auto z = targets[t] & reached;
+          for (auto previous = !z; !(previous == z);) {
+            previous = z;
+            z = z | (reached & through & (backward ? sys->preimage(z) : sys->image(z)));
+          }
+          const auto searched = sys->reach_on_reached_graph(targets[t], through, backward);
+          ASSERT_TRUE(searched.has_value());
+          EXPECT_TRUE(*searched == z) << "target " << t << (backward ? " backward" : " forward");
+        }
+      }
     }
     bdd::reorder_now();
     for (std::size_t t = 0; t < targets.size(); ++t)

@@ -86,6 +86,8 @@ Bdd SymbolicCtl::ex(const Bdd& p) {
 
 Bdd SymbolicCtl::eu(const Bdd& p, const Bdd& q) {
   const Bdd target = fair_and(q);
+  // The least fixpoint below, in one backward search when the reached graph is known.
+  if (auto on_graph = sys_.reach_on_reached_graph(target, p, true)) return target | *on_graph;
   Bdd z = target;
   for (;;) {
     const Bdd next = target | (p & sys_.preimage(z));

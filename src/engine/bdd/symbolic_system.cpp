@@ -105,6 +105,9 @@ struct SymbolicSystem::ReachedKeys {
   std::vector<std::uint64_t> first_successor;
   std::vector<std::uint32_t> successors;
   bool closed = false;  ///< every successor of a stored state is stored
+  // The same edges reversed (reach_on_reached_graph, built on first use).
+  std::vector<std::uint64_t> first_predecessor;
+  std::vector<std::uint32_t> predecessors;
   /// The key of a state of latch values `x`.
   void key_of(const std::vector<bool>& x, std::vector<StateWord>& key) const {
     std::fill(key.begin(), key.end(), 0);
@@ -762,6 +765,48 @@ std::optional<Bdd> SymbolicSystem::image_on_reached_graph(
         post[k->successors[e]] = true;
   if (edges) *edges = count;
   return bdd_of_reached(*k, post);
+}
+
+std::optional<Bdd> SymbolicSystem::reach_on_reached_graph(const Bdd& seeds, const Bdd& through,
+                                                          bool backward) const {
+  ReachedKeys* k = reached_graph();
+  if (!k || !k->closed) return std::nullopt;
+  const std::uint32_t n = k->store.size();
+  if (backward && k->first_predecessor.empty()) {
+    std::vector<std::uint64_t> first(std::size_t{n} + 1, 0);
+    for (const std::uint32_t target : k->successors) ++first[target + 1];
+    for (std::uint32_t i = 0; i < n; ++i) first[i + 1] += first[i];
+    std::vector<std::uint32_t> sources(k->successors.size());
+    std::vector<std::uint64_t> next(first.begin(), first.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i)
+      for (std::uint64_t e = k->first_successor[i]; e < k->first_successor[i + 1]; ++e)
+        sources[next[k->successors[e]]++] = i;
+    k->first_predecessor = std::move(first);
+    k->predecessors = std::move(sources);
+  }
+  auto reached = reached_indices(*k, seeds);
+  if (!reached) return std::nullopt;
+  std::optional<std::vector<bool>> allowed;
+  if (!through.is_true()) {
+    allowed = reached_indices(*k, through);
+    if (!allowed) return std::nullopt;
+  }
+  const auto& first = backward ? k->first_predecessor : k->first_successor;
+  const auto& edges = backward ? k->predecessors : k->successors;
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if ((*reached)[i]) queue.push_back(i);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    if (head % (std::size_t{kStatesBetweenPolls} * 64) == 0) bdd::poll_deadline();
+    const std::uint32_t v = queue[head];
+    for (std::uint64_t e = first[v]; e < first[v + 1]; ++e) {
+      const std::uint32_t u = edges[e];
+      if ((*reached)[u] || (allowed && !(*allowed)[u])) continue;
+      (*reached)[u] = true;
+      queue.push_back(u);
+    }
+  }
+  return bdd_of_reached(*k, *reached);
 }
 
 Bdd SymbolicSystem::symbolic_image(const Bdd& states) const {

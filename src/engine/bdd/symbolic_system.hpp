@@ -92,6 +92,12 @@ class SymbolicSystem {
   /// kept that set's states as keys, on the graph of their successors (built once, by
   /// simulation), not on the relation.
   Bdd preimage(const Bdd& states) const;
+  /// On the reached graph (preimage()), when the reached set is closed: the reached states
+  /// from which (`backward`) or to which (forward) a path leads from or to a reached state of
+  /// `seeds` with every other state of it in `through`, in one search instead of a fixpoint of
+  /// pre-images or images. nullopt without a closed reached graph.
+  std::optional<Bdd> reach_on_reached_graph(const Bdd& seeds, const Bdd& through,
+                                            bool backward) const;
   /// One breadth-first step of reachability: the successors of `frontier` (the last ring)
   /// outside `reached`, their union with `reached`, and the edges out of `frontier` when the
   /// step counted them (simulated). From the first ring on (`frontier` == `reached`), while
