@@ -67,7 +67,7 @@ std::size_t SuccessorSimulator::simulate(const std::vector<bool>& x) {
       const std::uint64_t bits = lit(next, w) & ok_[w];
       for (std::uint64_t b = bits; b != 0; b &= b - 1) {
         const std::size_t v = w * 64 + static_cast<std::size_t>(std::countr_zero(b));
-        keys_[v * latch_words_ + position_[l] / 64] |= 1ULL << (63 - position_[l] % 64);
+        set_key_bit(keys_.data() + v * latch_words_, position_[l]);
       }
     }
   }
@@ -96,6 +96,13 @@ std::vector<std::uint32_t> latch_ranks(const std::vector<int>& current_var) {
   });
   for (std::uint32_t r = 0; r < latches; ++r) rank_of[by_level[r]] = r;
   return rank_of;
+}
+
+std::vector<int> var_at_rank(const std::vector<std::uint32_t>& rank_of,
+                             const std::vector<int>& current_var) {
+  std::vector<int> var(rank_of.size());
+  for (std::size_t l = 0; l < rank_of.size(); ++l) var[rank_of[l]] = current_var[l];
+  return var;
 }
 
 namespace {

@@ -55,10 +55,23 @@ class SuccessorSimulator {
   std::vector<std::uint32_t> order_;
 };
 
+/// Bit `position` of a key, counted from the top bit of its first word (the order in which
+/// keys compared word by word compare their bits).
+inline void set_key_bit(std::uint64_t* key, std::uint32_t position) {
+  key[position / 64] |= std::uint64_t{1} << (63 - position % 64);
+}
+inline bool key_bit(const std::uint64_t* key, std::uint32_t position) {
+  return ((key[position / 64] >> (63 - position % 64)) & 1U) != 0;
+}
+
 /// The rank of each latch among the latches sorted by the level of its current variable
 /// (`current_var[l]`): the key bit a SuccessorSimulator gives it, so that sorted keys split by
 /// the top variable first.
 std::vector<std::uint32_t> latch_ranks(const std::vector<int>& current_var);
+
+/// Each rank's current variable: the inverse of `rank_of` (latch_ranks()) over `current_var`.
+std::vector<int> var_at_rank(const std::vector<std::uint32_t>& rank_of,
+                             const std::vector<int>& current_var);
 
 /// Sorts `keys` (records of `width` words, compared word by word) and keeps one of each;
 /// returns how many are left.

@@ -112,18 +112,11 @@ struct SymbolicSystem::ReachedKeys {
   void key_of(const std::vector<bool>& x, std::vector<StateWord>& key) const {
     std::fill(key.begin(), key.end(), 0);
     for (std::size_t l = 0; l < x.size(); ++l)
-      if (x[l]) key[rank_of[l] / 64] |= std::uint64_t{1} << (63 - rank_of[l] % 64);
+      if (x[l]) set_key_bit(key.data(), rank_of[l]);
   }
   /// The latch values of the state of a key.
   void latches_of(const StateWord* key, std::vector<bool>& x) const {
-    for (std::size_t l = 0; l < x.size(); ++l)
-      x[l] = ((key[rank_of[l] / 64] >> (63 - rank_of[l] % 64)) & 1U) != 0;
-  }
-  /// Each rank's current variable.
-  std::vector<int> var_at_rank(const std::vector<int>& current_var) const {
-    std::vector<int> var(rank_of.size());
-    for (std::size_t l = 0; l < rank_of.size(); ++l) var[rank_of[l]] = current_var[l];
-    return var;
+    for (std::size_t l = 0; l < x.size(); ++l) x[l] = key_bit(key, rank_of[l]);
   }
 };
 
@@ -607,20 +600,21 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
     keys.reset();
     return std::nullopt;
   }
+  // No bound on the work: the new successors go to the store at once, so a step holds no
+  // more than the reached states, and a step of many states is exploration the relation
+  // would do no faster (`random 60 --seed 2 --inputs 8`: rings of 20 000 states of 256
+  // valuations each). A first ring is measured by simulation_of(), which checks the bounds.
   SimulatedSet set;
   if (keys) {
     set.states = keys->store.size() - keys->frontier_first;
     set.nodes = frontier.node_count();
+    if (!may_simulate(set, ~std::uint64_t{0}, true)) return std::nullopt;
   } else if (const auto measured = simulation_of(frontier, ~std::uint64_t{0}, true)) {
     set = *measured;
   } else {
     return std::nullopt;
   }
-  // No bound on the work: the new successors go to the store at once, so a step holds no
-  // more than the reached states, and a step of many states is exploration the relation
-  // would do no faster (`random 60 --seed 2 --inputs 8`: rings of 20 000 states of 256
-  // valuations each).
-  if (!may_simulate(set, ~std::uint64_t{0}, true) || !chooses_simulation(set)) return std::nullopt;
+  if (!chooses_simulation(set)) return std::nullopt;
   if (!keys) {
     keys = std::make_unique<ReachedKeys>(circuit_, rank_of);
     std::vector<StateWord> key(keys->sim.latch_words());
@@ -661,7 +655,7 @@ std::optional<SymbolicSystem::Step> SymbolicSystem::simulated_step(const Bdd& fr
   const StateView added = k.store.range(end, k.store.size() - end);
   std::vector<std::uint64_t> ring_keys(added.begin(), added.end());
   const std::size_t count = sort_distinct_keys(ring_keys, words);
-  s.ring = bdd_of_sorted_keys(ring_keys, count, words, k.var_at_rank(current_var_));
+  s.ring = bdd_of_sorted_keys(ring_keys, count, words, var_at_rank(k.rank_of, current_var_));
   s.reached = reached | s.ring;
   s.edges = edges;
   k.reached = s.reached;
@@ -735,7 +729,7 @@ Bdd SymbolicSystem::bdd_of_reached(const ReachedKeys& k, const std::vector<bool>
       keys.insert(keys.end(), key.begin(), key.end());
     }
   const std::size_t count = sort_distinct_keys(keys, words);
-  return bdd_of_sorted_keys(keys, count, words, k.var_at_rank(current_var_));
+  return bdd_of_sorted_keys(keys, count, words, var_at_rank(k.rank_of, current_var_));
 }
 
 std::optional<Bdd> SymbolicSystem::preimage_on_reached_graph(const Bdd& states) const {
@@ -853,8 +847,8 @@ std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
     SuccessorSimulator sim(circuit_, std::move(position));
     const std::vector<bool> target = latches_of(to);
     std::vector<std::uint64_t> key(sim.latch_words(), 0);
-    for (std::size_t l = 0; l < target.size(); ++l)
-      if (target[l]) key[l / 64] |= std::uint64_t{1} << (63 - l % 64);
+    for (std::uint32_t l = 0; l < target.size(); ++l)
+      if (target[l]) set_key_bit(key.data(), l);
     const std::size_t count = sim.simulate(latches_of(from));
     for (std::size_t j = 0; j < count; ++j)
       if (std::equal(key.begin(), key.end(), sim.successor(j))) {
@@ -1025,8 +1019,7 @@ std::optional<logic::BigCount> SymbolicSystem::count_edges_by_simulation(const B
 std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
                                                        SimulationTally& tally) const {
   std::vector<std::uint32_t> rank_of = latch_ranks(current_var_);
-  std::vector<int> var_at_rank(rank_of.size());
-  for (std::size_t l = 0; l < rank_of.size(); ++l) var_at_rank[rank_of[l]] = current_var_[l];
+  const std::vector<int> var_of_rank = var_at_rank(rank_of, current_var_);
   SuccessorSimulator sim(circuit_, std::move(rank_of));
   const std::size_t key_words = sim.latch_words();
   std::vector<std::uint64_t> keys;
@@ -1040,7 +1033,7 @@ std::optional<Bdd> SymbolicSystem::image_by_simulation(const Bdd& from,
   });
   if (!walked) return std::nullopt;
   const std::size_t count = sort_distinct_keys(keys, key_words);
-  return bdd_of_sorted_keys(keys, count, key_words, var_at_rank);
+  return bdd_of_sorted_keys(keys, count, key_words, var_of_rank);
 }
 
 std::vector<semantics::StateWord> SymbolicSystem::pick(const Bdd& states) const {
