@@ -184,6 +184,25 @@ std::int64_t Iec61131System::observe(StateView state, std::uint32_t index) const
   return 0;
 }
 
+std::optional<std::vector<std::uint32_t>> Iec61131System::observed_fields(
+    std::uint32_t index) const {
+  // The fields observe() reads, case by case.
+  const auto& r = p_->observable_refs[index];
+  switch (r.kind) {
+    case ObservableKind::Step: {
+      const auto& s = p_->steps[r.a];
+      const auto pa = p_->charts[s.chart].parent_action;
+      if (pa == kNone) return std::vector<std::uint32_t>{s.ready};
+      return std::vector<std::uint32_t>{s.ready, p_->actions[static_cast<std::size_t>(pa)].active};
+    }
+    case ObservableKind::Action:
+      return std::vector<std::uint32_t>{p_->actions[r.a].active};
+    case ObservableKind::Variable:
+      return std::vector<std::uint32_t>{r.a};
+  }
+  return std::nullopt;
+}
+
 bool Iec61131System::step_once(StateView state, const std::vector<std::int64_t>& valuation,
                                std::vector<StateWord>& out, std::vector<std::uint32_t>* fired,
                                std::string* error) const {

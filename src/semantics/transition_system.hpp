@@ -113,6 +113,11 @@ class TransitionSystem {
 
   /// Value of observable `index` in `state` (0/1 for steps and actions).
   virtual std::int64_t observe(StateView state, std::uint32_t index) const = 0;
+  /// The layout fields observe(state, index) reads: its value is a function of theirs alone.
+  /// nullopt when the system does not say.
+  virtual std::optional<std::vector<std::uint32_t>> observed_fields(std::uint32_t) const {
+    return std::nullopt;
+  }
 
   /// "{S1, S5} V1 V3" : active steps and true Boolean outputs, for traces and listings.
   virtual std::string describe(StateView state) const;

@@ -324,6 +324,49 @@ TEST(InvariantSearch, AgreesWithTheGraphCheckerOnRandomCharts) {
   EXPECT_GT(held, 3u);
 }
 
+TEST(InvariantSearch, AgreesWithTheGraphCheckerOnNestedSteps) {
+  // A nested step is active while it is ready and its chart's action is active: the search
+  // memoises verdicts on both fields' bits (TransitionSystem::observed_fields()).
+  auto m = load(bench::nested_charts_iec(3));
+  ASSERT_TRUE(m);
+  const auto& ts = *m->ts;
+  std::uint32_t violated = 0, held = 0;
+  const char* pairs[][2] = {{"L0_B", "L1_A"}, {"L1_B", "L2_A"}, {"L0_B", "L2_B"}, {"L2_A", "L2_B"}};
+  for (const auto& [a, b] : pairs)
+    expect_same_results(ts, {invariant(ts, a, b)}, 0, violated, held);
+  // AG (L1_A | L1_B): it holds in the initial state, where L1_A is ready and A1 active, and
+  // fails once L0_B has suspended A1 with L1_A still ready. The ready bits alone do not decide.
+  // (The compiled successors order a state's targets by input valuation, the interpreter by
+  // its input decisions: the searches may end at different violations, of the same depth.)
+  for (const char* level : {"1", "2"}) {
+    const std::string a = std::string("L") + level + "_A", b = std::string("L") + level + "_B";
+    const auto oa = *semantics::find_observable(ts, a), ob = *semantics::find_observable(ts, b);
+    logic::CheckTask task;
+    task.system = &ts;
+    task.properties.resize(1);
+    task.properties[0].name = "AG (" + a + " | " + b + ")";
+    task.properties[0].formula = logic::make_op(
+        logic::Op::AG,
+        {logic::make_or(
+            logic::with_observable(*logic::make_atom(a), static_cast<std::int32_t>(oa)),
+            logic::with_observable(*logic::make_atom(b), static_cast<std::int32_t>(ob)))});
+    auto compiled = make_compiled_enumerator(ts, model::Budget{});
+    const auto fast = check_invariants(task, compiled.get());
+    const auto slow = check_invariants(task);  // interpreted successors
+    for (const auto* report : {&fast, &slow}) {
+      const auto& r = report->results[0];
+      ASSERT_EQ(r.verdict, logic::Verdict::Violated) << task.properties[0].name;
+      ASSERT_TRUE(r.trace);
+      EXPECT_EQ(r.trace->steps.size(), slow.results[0].trace->steps.size());
+      const auto& last = r.trace->steps.back().state;
+      EXPECT_EQ(ts.observe(last, oa) + ts.observe(last, ob), 0);
+    }
+    ++violated;
+  }
+  EXPECT_EQ(violated, 2u);  // the nested-step pairs above all hold
+  EXPECT_GE(held, 2u);
+}
+
 // Charts large enough for many batches of the threaded search (4096 states each), with
 // violations found deep in the search, mid-batch state limits and complete explorations.
 TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {

@@ -1,6 +1,7 @@
 // Nested charts (docs/semantics.md, Part 1, "Nested charts and history").
 
 #include <algorithm>
+#include <random>
 
 #include "semantics/iec_builder.hpp"
 
@@ -116,6 +117,34 @@ TEST(Iec61131Hierarchy, ObservableNamesAndAmbiguity) {
   // A guard naming an ambiguous nested step is an error, not a guess.
   b.in(0).trans("S2", "S1", "Run.X");
   EXPECT_NE(b.build_error().find("ambiguous"), std::string::npos);
+}
+
+TEST(Iec61131Hierarchy, ObservablesReadOnlyTheFieldsTheyName) {
+  // The explicit search memoises an invariant's verdicts on the bits of observed_fields(): a
+  // field observe() reads and that list misses would make it reuse a wrong verdict.
+  auto b = nested();
+  auto ts = b.build();
+  const auto& layout = ts->layout();
+  std::mt19937_64 rng(7);
+  std::vector<semantics::StateWord> state(layout.words()), other(layout.words());
+  for (std::uint32_t o = 0; o < ts->observables().size(); ++o) {
+    SCOPED_TRACE(ts->observables()[o].name);
+    const auto fields = ts->observed_fields(o);
+    ASSERT_TRUE(fields);
+    std::vector<semantics::StateWord> kept(layout.words(), 0);
+    for (const auto f : *fields)
+      for (std::uint32_t bit = 0; bit < layout.fields()[f].width; ++bit) {
+        const auto at = layout.fields()[f].offset + bit;
+        kept[at / 64] |= semantics::StateWord{1} << (at % 64);
+      }
+    for (int trial = 0; trial < 200; ++trial) {
+      for (std::size_t w = 0; w < state.size(); ++w) {
+        state[w] = rng();
+        other[w] = (state[w] & kept[w]) | (rng() & ~kept[w]);
+      }
+      EXPECT_EQ(ts->observe(other, o), ts->observe(state, o));
+    }
+  }
 }
 
 }  // namespace

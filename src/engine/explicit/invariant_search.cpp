@@ -131,6 +131,64 @@ bool holds(const logic::Formula& f, const semantics::TransitionSystem& ts, State
   }
 }
 
+/// The verdicts of an invariant's state formula, memoised on the few stored bits it reads: the
+/// bits of the fields its observables read (TransitionSystem::observed_fields()), through the
+/// codec. Its value is a function of those bits, so a new state is judged by a table look-up
+/// and the semantics runs once per value of them.
+class FormulaMemo {
+ public:
+  static constexpr std::uint32_t kMaxBits = 12;
+  /// Unusable (every state judged by the semantics) when the system does not name the fields
+  /// its observables read, or they span more than kMaxBits stored bits.
+  FormulaMemo(const logic::Formula& f, const semantics::TransitionSystem& ts,
+              const StateCodec* codec) {
+    std::vector<std::uint32_t> bits;
+    if (!collect_bits(f, ts, codec, bits)) return;
+    std::sort(bits.begin(), bits.end());
+    bits.erase(std::unique(bits.begin(), bits.end()), bits.end());
+    if (bits.size() > kMaxBits) return;
+    bits_ = std::move(bits);
+    verdicts_.assign(std::size_t{1} << bits_.size(), kUnknown);
+  }
+  bool usable() const { return !verdicts_.empty(); }
+  static constexpr std::uint8_t kUnknown = 0, kHolds = 1, kViolated = 2;
+  /// The memoised verdict of the stored state `stored` (kUnknown the first time its bits are
+  /// seen: set it then).
+  std::uint8_t& verdict(const StateWord* stored) {
+    std::size_t key = 0;
+    for (std::size_t j = 0; j < bits_.size(); ++j)
+      key |= static_cast<std::size_t>((stored[bits_[j] / 64] >> (bits_[j] % 64)) & 1U) << j;
+    return verdicts_[key];
+  }
+
+ private:
+  static bool collect_bits(const logic::Formula& f, const semantics::TransitionSystem& ts,
+                           const StateCodec* codec, std::vector<std::uint32_t>& bits) {
+    if (f.op == Op::Atom || f.op == Op::Compare) {
+      if (f.observable < 0) return false;
+      const auto fields = ts.observed_fields(static_cast<std::uint32_t>(f.observable));
+      if (!fields) return false;
+      for (const auto field : *fields) {
+        const auto& info = ts.layout().fields()[field];
+        for (std::uint32_t b = info.offset; b < info.offset + info.width; ++b) {
+          if (!codec) {
+            bits.push_back(b);
+            continue;
+          }
+          const auto source = codec->source_of(b);
+          if (!source.constant) bits.push_back(source.stored_bit);
+        }
+        if (bits.size() > 4 * kMaxBits) return false;  // before the duplicates go: a bound
+      }
+    }
+    for (const auto& a : f.args)
+      if (!collect_bits(*a, ts, codec, bits)) return false;
+    return true;
+  }
+  std::vector<std::uint32_t> bits_;  ///< the stored bits read, in key order
+  std::vector<std::uint8_t> verdicts_;
+};
+
 /// The inputs of the initial situation `target`, picked as the graph-based engine picks them.
 /// A Grafcet may have very many initial situations: the enumeration stops as soon as no later
 /// one can change the pick, or once the budget has run out and some inputs lead to `target`
@@ -580,19 +638,32 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   MappedArray<std::uint32_t> parent;  ///< per state: the state it was first reached from
   // Checks a newly stored state against every invariant still open.
   std::vector<std::size_t> just_violated;  ///< properties violated while expanding this state
+  std::vector<FormulaMemo> memos;
+  for (const auto& p : task.properties) memos.emplace_back(*p.formula->args[0], ts, codec);
   auto judge = [&](std::uint32_t s) {
-    auto view = store.at(s);
-    if (codec) {
-      codec->to_full(view.data(), full.data());
-      view = full;
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      if (violation[i] == kNone && !holds(*task.properties[i].formula->args[0], ts, view)) {
+    const auto stored_view = store.at(s);
+    auto view = stored_view;
+    bool converted = !codec;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (violation[i] != kNone) continue;
+      std::uint8_t scratch = FormulaMemo::kUnknown;
+      std::uint8_t& verdict = memos[i].usable() ? memos[i].verdict(stored_view.data()) : scratch;
+      if (verdict == FormulaMemo::kUnknown) {
+        if (!converted) {
+          codec->to_full(stored_view.data(), full.data());
+          view = full;
+          converted = true;
+        }
+        verdict = holds(*task.properties[i].formula->args[0], ts, view) ? FormulaMemo::kHolds
+                                                                        : FormulaMemo::kViolated;
+      }
+      if (verdict == FormulaMemo::kViolated) {
         violation[i] = s;
         decided_at[i] = elapsed();
         just_violated.push_back(i);
         --open;
       }
+    }
   };
 
   // A Grafcet may start in very many situations (one per initial valuation): the state limit

@@ -50,6 +50,19 @@ class StateCodec {
   std::uint32_t stored_words() const { return stored_words_; }
   std::uint32_t stored_bits() const { return stored_bits_; }
 
+  /// Where a bit of the full state comes from: a stored bit (negated or not), or a constant.
+  struct BitSource {
+    bool constant;
+    bool value;  ///< when constant
+    std::uint32_t stored_bit;
+    bool negated;
+  };
+  BitSource source_of(std::uint32_t full_bit) const {
+    for (const auto& f : followers_)
+      if (f.full_bit == full_bit) return {false, false, f.stored_bit, f.negated};
+    return {true, bit(constant_.data(), full_bit), 0, false};
+  }
+
   /// Writes the full state of `stored` to `full` (full_words() words).
   void to_full(const semantics::StateWord* stored, semantics::StateWord* full) const {
     for (std::uint32_t w = 0; w < full_words_; ++w) full[w] = constant_[w];

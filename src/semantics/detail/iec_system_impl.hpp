@@ -25,6 +25,7 @@ class Iec61131System final : public TransitionSystem {
   void initial_states(SuccessorSink& sink) const override;
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;
+  std::optional<std::vector<std::uint32_t>> observed_fields(std::uint32_t index) const override;
 
   /// One cycle under a complete input valuation; false (and `error`) on an assumption
   /// violation or a range error.
