@@ -29,6 +29,11 @@ constexpr std::uint32_t kMaxRelevantBits = 12;
 constexpr Word kLane[6] = {0xAAAAAAAAAAAAAAAAULL, 0xCCCCCCCCCCCCCCCCULL, 0xF0F0F0F0F0F0F0F0ULL,
                            0xFF00FF00FF00FF00ULL, 0xFFFF0000FFFF0000ULL, 0xFFFFFFFF00000000ULL};
 
+/// Words evaluated at once by targets_of(): a vector the compiler maps to the machine's SIMD
+/// registers (two SSE2 operations per AND on plain x86-64).
+constexpr std::uint32_t kBlockWords = 4;
+using Block = Word __attribute__((vector_size(8 * kBlockWords)));
+
 /// A gate: value = (val[a] ^ neg a) & (val[b] ^ neg b), on compact literals (2 * id + negation).
 struct Gate {
   std::uint32_t a, b;
@@ -121,10 +126,12 @@ class CompiledEnumerator final : public TargetEnumerator {
     }
   }
 
-  // Up to 6 input bits, a state needs 2^inputs lanes: 64 / 2^inputs states are evaluated at
-  // once, state g in lanes [g * 2^inputs, (g + 1) * 2^inputs), valuation j in its lane j as in
-  // targets(). Each target starts as a copy of its state and only the latches whose next value
-  // differs from the current one are flipped: a cycle changes few of them.
+  // Up to 6 input bits, a state needs 2^inputs lanes: 64 / 2^inputs states share a word, and
+  // kBlockWords words are evaluated at once (a vector of words: one gate's operands are read
+  // once for all of them), state g in lanes [g * 2^inputs, (g + 1) * 2^inputs) of the block,
+  // valuation j in its lane j as in targets(). Each target starts as a copy of its state and
+  // only the latches whose next value differs from the current one are flipped: a cycle
+  // changes few of them.
   void targets_of(StateView states, std::uint32_t count, std::vector<StateWord>& out,
                   std::vector<std::uint32_t>& ends) override {
     const auto inputs = static_cast<std::uint32_t>(input_ids_.size());
@@ -133,36 +140,50 @@ class CompiledEnumerator final : public TargetEnumerator {
       return;
     }
     const std::uint32_t group = 1U << inputs;  // lanes per state
-    const std::uint32_t per = 64 / group;      // states per evaluation
-    const Word fill = lanes(inputs);           // the lanes of state 0
-    for (std::uint32_t k = 0; k < inputs; ++k) set(input_ids_[k], kLane[k]);  // period group
-    for (std::uint32_t first = 0; first < count; first += per) {
-      const std::uint32_t n = std::min(per, count - first);
+    const std::uint32_t per = 64 / group;      // states per word
+    const Word fill = lanes(inputs);           // the lanes of a word's state 0
+    Block* block = block_.data();
+    for (std::uint32_t k = 0; k < inputs; ++k) {
+      const Block pattern = Block{} | kLane[k];  // period group, in every word
+      block[2 * input_ids_[k]] = pattern;
+      block[2 * input_ids_[k] + 1] = ~pattern;
+    }
+    const std::size_t num_latches = latch_pos_.size();
+    Block* latches = block + 2 * first_latch_;
+    for (std::uint32_t first = 0; first < count; first += per * kBlockWords) {
+      const std::uint32_t n = std::min(per * kBlockWords, count - first);
       const StateWord* s = states.data() + static_cast<std::size_t>(first) * words_;
       // The latches: about half of them are set in a state, so only the set bits are visited.
-      Word* latches = val_.data() + 2 * first_latch_;
-      const std::size_t num_latches = latch_pos_.size();
-      for (std::size_t i = 0; i < num_latches; ++i) latches[2 * i] = 0;
+      for (std::size_t i = 0; i < num_latches; ++i) latches[2 * i] = Block{};
       for (std::uint32_t g = 0; g < n; ++g) {
-        const Word lanes_of_g = fill << (g * group);
+        const Word lanes_of_g = fill << ((g % per) * group);
+        const std::uint32_t word = g / per;
         for (std::uint32_t w = 0; w < words_; ++w)
           for (Word m = s[static_cast<std::size_t>(g) * words_ + w] & held_[w]; m; m &= m - 1)
-            val_[latch_at_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(m))]] |= lanes_of_g;
+            block[latch_at_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(m))]][word] |=
+                lanes_of_g;
       }
       for (std::size_t i = 0; i < num_latches; ++i) latches[2 * i + 1] = ~latches[2 * i];
-      run(0, gates_.size());
-      const std::uint32_t used = n * group;
-      const Word valid =
-          value(allowed_) & ~value(range_error_) & (used >= 64 ? ~Word{0} : (Word{1} << used) - 1);
+      run_block();
+      Word valid[kBlockWords];
+      const Block ok = block[allowed_] & ~block[range_error_];
+      for (std::uint32_t word = 0; word < kBlockWords; ++word) {
+        const std::uint32_t states_here =
+            n > word * per ? std::min(per, n - word * per) : 0;  // states in this word
+        const std::uint32_t used = states_here * group;
+        valid[word] = ok[word] & (used >= 64 ? ~Word{0} : (Word{1} << used) - 1);
+      }
+      std::uint32_t total = 0;
+      for (const Word v : valid) total += static_cast<std::uint32_t>(std::popcount(v));
       const std::size_t base = out.size();
-      out.resize(base + static_cast<std::size_t>(std::popcount(valid)) * words_);
+      out.resize(base + static_cast<std::size_t>(total) * words_);
       StateWord* t = out.data() + base;
       std::uint32_t k = 0;  // targets so far
-      std::uint32_t* rank = rank_;
       for (std::uint32_t g = 0; g < n; ++g) {
         const StateWord* state = s + static_cast<std::size_t>(g) * words_;
-        for (Word m = (valid >> (g * group)) & fill; m; m &= m - 1) {
-          rank[g * group + static_cast<std::uint32_t>(std::countr_zero(m))] = k;
+        const std::uint32_t word = g / per, shift = (g % per) * group;
+        for (Word m = (valid[word] >> shift) & fill; m; m &= m - 1) {
+          rank_[word * 64 + shift + static_cast<std::uint32_t>(std::countr_zero(m))] = k;
           if (words_ == 1) {
             t[k] = state[0] & held_[0];
           } else {
@@ -173,17 +194,20 @@ class CompiledEnumerator final : public TargetEnumerator {
         }
         ends.push_back(static_cast<std::uint32_t>(base + static_cast<std::size_t>(k) * words_));
       }
-      const Word* v = val_.data();
       for (const auto& u : updates_) {
-        Word m = (v[u.next] ^ v[u.current]) & valid;
-        if (!m) continue;
-        const Word bit = u.bit;
-        StateWord* column = t + u.word;
-        if (words_ == 1) {
-          for (; m; m &= m - 1) column[rank[std::countr_zero(m)]] ^= bit;
-        } else {
-          for (; m; m &= m - 1)
-            column[static_cast<std::size_t>(rank[std::countr_zero(m)]) * words_] ^= bit;
+        const Block differ = block[u.next] ^ block[u.current];
+        for (std::uint32_t word = 0; word < kBlockWords; ++word) {
+          Word m = differ[word] & valid[word];
+          if (!m) continue;
+          const Word bit = u.bit;
+          StateWord* column = t + u.word;
+          const std::uint32_t* rank = rank_ + word * 64;
+          if (words_ == 1) {
+            for (; m; m &= m - 1) column[rank[std::countr_zero(m)]] ^= bit;
+          } else {
+            for (; m; m &= m - 1)
+              column[static_cast<std::size_t>(rank[std::countr_zero(m)]) * words_] ^= bit;
+          }
         }
       }
     }
@@ -235,6 +259,17 @@ class CompiledEnumerator final : public TargetEnumerator {
   void set(std::uint32_t id, Word w) {
     val_[2 * id] = w;
     val_[2 * id + 1] = ~w;
+  }
+  /// Every gate, on blocks: block_ holds both polarities of every node, as val_ does.
+  void run_block() {
+    Block* v = block_.data() + 2 * first_gate_;
+    const Block* in = block_.data();
+    const Gate* g = gates_.data();
+    for (std::size_t i = 0, end = gates_.size(); i < end; ++i) {
+      const Block x = in[g[i].a] & in[g[i].b];
+      v[2 * i] = x;
+      v[2 * i + 1] = ~x;
+    }
   }
   void run(std::size_t from, std::size_t to) {
     Word* v = val_.data() + 2 * first_gate_;
@@ -444,6 +479,8 @@ class CompiledEnumerator final : public TargetEnumerator {
         }
     val_.assign(2 * static_cast<std::size_t>(next), 0);
     val_[1] = ~Word{0};  // TRUE
+    block_.assign(2 * static_cast<std::size_t>(next), Block{});
+    block_[1] = ~Block{};
     base_.assign(words_, 0);
     common_.assign(words_, 0);
     mask_.assign(next, 0);
@@ -490,9 +527,10 @@ class CompiledEnumerator final : public TargetEnumerator {
   std::uint32_t allowed_ = 1, range_error_ = 0;
   bool allowed_static_ = false;
   std::vector<Word> val_, mask_;
+  std::vector<Block> block_;  ///< targets_of()'s node values: kBlockWords words per literal
   std::vector<StateWord> base_, common_;
   std::vector<Exception> exceptions_;
-  std::uint32_t rank_[64] = {};
+  std::uint32_t rank_[64 * kBlockWords] = {};
 };
 
 /// Every initial state of `ts`, packed; empty when there are more than kMaxListedInitial

@@ -132,7 +132,7 @@ class StateStore {
   }
   /// Hints that a look-up of a state of hash `hash` follows soon (after prefetch_slot()): loads
   /// the stored state its first slot refers to.
-  void prefetch_state(std::uint64_t hash) const {
+  [[gnu::always_inline]] void prefetch_state(std::uint64_t hash) const {
     // Atomic: other threads may be staging into the table (relaxed: only a hint is read).
     auto& slot = const_cast<std::uint32_t&>(slots_[hash & (slots_.size() - 1)]);
     const std::uint32_t s = std::atomic_ref<std::uint32_t>(slot).load(std::memory_order_relaxed);
@@ -155,7 +155,7 @@ class StateStore {
   // read four slots at a time: the slots whose tag matches and the empty ones are found at
   // once, so a look-up takes one round (and one branch) where a slot at a time took several at
   // the load of three quarters.
-  std::size_t probe_word(StateWord word, std::uint64_t hash) const {
+  [[gnu::always_inline]] std::size_t probe_word(StateWord word, std::uint64_t hash) const {
     const std::size_t mask = slots_.size() - 1;  // a power of two of at least 16
     const std::uint32_t* slots = slots_.data();
     const StateWord* data = data_.data();
@@ -207,7 +207,7 @@ class StateStore {
   std::size_t states_before_growth(std::size_t slot_count) const {
     return slot_count < kDenseTableSlots ? slot_count / 2 : slot_count / 4 * 3;
   }
-  static constexpr std::size_t kDenseTableSlots = std::size_t{1} << 22;
+  static constexpr std::size_t kDenseTableSlots = std::size_t{1} << 20;
   /// Whether one more state would fill the table past its load, or past the tagged states.
   bool full_for_one_more() const {
     return static_cast<std::size_t>(size_) + 1 > states_before_growth(slots_.size()) ||
