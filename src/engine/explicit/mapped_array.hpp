@@ -69,7 +69,6 @@ class MappedArray {
 
  private:
   static constexpr std::size_t kPage = 4096;
-  static constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
   void swap(MappedArray& other) noexcept {
     std::swap(data_, other.data_);
@@ -88,8 +87,9 @@ class MappedArray {
                   ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0)
                   : mremap(data_, old_bytes, bytes, MREMAP_MAYMOVE);
     if (p == MAP_FAILED) throw std::bad_alloc();
-    // A hint: random reads of millions of states miss the TLB on 4 KB pages.
-    if (bytes >= kHugePage) madvise(p, bytes, MADV_HUGEPAGE);
+      // No MADV_HUGEPAGE: with the kernel's default "defrag=madvise", a fault on a huge page
+      // compacts memory first, and that system time outgrew the TLB misses it saves
+      // (docs/benchmarks.md, round 2 session 19).
 #else
     void* p = std::realloc(data_, bytes);
     if (p == nullptr) throw std::bad_alloc();

@@ -76,7 +76,7 @@ void StateStore::untag() {
 }
 
 void StateStore::rehash(std::size_t slot_count) {
-  Table<std::uint32_t> table(slot_count, 0);
+  std::vector<std::uint32_t> table(slot_count, 0);
   const std::size_t mask = table.size() - 1;
   for (std::uint32_t idx = 0; idx < size_; ++idx) {
     const std::uint64_t h = state_hash(at(idx));

@@ -3,7 +3,7 @@
 // remapped array (no per-state heap allocation) and are numbered in insertion order, so BFS
 // numbering is the state index. A state of at most 64 bits is one word compared directly: 8
 // bytes for the word and 4 per slot, so 16 bytes per state at half load and 13.3 at three
-// quarters, the load that tables of 2^22 slots and more reach before they grow
+// quarters, the load that tables of 2^20 slots and more reach before they grow
 // (states_before_growth()). Below 2^24 states, a one-word state's slot also holds 7 bits of its
 // hash: a probe passes a slot of another state without reading that state (a third of the
 // look-ups probe past their first slot, each a cache miss).
@@ -17,7 +17,6 @@
 #include <emmintrin.h>
 #endif
 
-#include "engine/explicit/huge_page_allocator.hpp"
 #include "engine/explicit/mapped_array.hpp"
 #include "semantics/state_layout.hpp"
 
@@ -201,9 +200,10 @@ class StateStore {
 #endif
   }
   /// How many states the table holds before it grows: half its slots, and three quarters from
-  /// 2^22 slots (16 MB) on. Each slot probed past the first costs a read of a stored state, but
-  /// past a few million states memory bounds the search, and the load of three quarters takes
-  /// a state from 16 to 8 bytes of table just after a doubling (docs/benchmarks.md).
+  /// 2^20 slots (4 MB) on. Each slot probed past the first costs a read of a stored state, but
+  /// the grouped probe finds most within the first cache line, past a million states memory
+  /// bounds the search, and the load of three quarters takes a state from 16 to 8 bytes of
+  /// table just after a doubling (docs/benchmarks.md).
   std::size_t states_before_growth(std::size_t slot_count) const {
     return slot_count < kDenseTableSlots ? slot_count / 2 : slot_count / 4 * 3;
   }
@@ -252,10 +252,8 @@ class StateStore {
   std::uint32_t tag_mask_;  ///< kTagBits while one-word states are tagged, else 0
   std::uint32_t tagged_states_;
   std::uint32_t size_ = 0;
-  template <class T>
-  using Table = std::vector<T, HugePageAllocator<T>>;
   MappedArray<StateWord> data_;
-  Table<std::uint32_t> slots_;         ///< state index + 1; 0 = empty
+  std::vector<std::uint32_t> slots_;   ///< state index + 1; 0 = empty
   MappedArray<std::uint32_t> hashes_;  ///< high bits of each state's hash, to skip most compares
                                        ///< (not kept for one-word states: compared directly)
 };
