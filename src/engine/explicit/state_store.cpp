@@ -78,8 +78,19 @@ void StateStore::untag() {
 void StateStore::rehash(std::size_t slot_count) {
   std::vector<std::uint32_t> table(slot_count, 0);
   const std::size_t mask = table.size() - 1;
+  // Each insertion misses the cache: the slot of the state kAhead on is loaded meanwhile.
+  constexpr std::uint32_t kAhead = 16;
+  std::uint64_t ahead[kAhead];
+  for (std::uint32_t idx = 0; idx < std::min(size_, kAhead); ++idx) {
+    ahead[idx] = state_hash(at(idx));
+    __builtin_prefetch(table.data() + (ahead[idx] & mask), 1);
+  }
   for (std::uint32_t idx = 0; idx < size_; ++idx) {
-    const std::uint64_t h = state_hash(at(idx));
+    const std::uint64_t h = ahead[idx % kAhead];
+    if (idx + kAhead < size_) {
+      ahead[idx % kAhead] = state_hash(at(idx + kAhead));
+      __builtin_prefetch(table.data() + (ahead[idx % kAhead] & mask), 1);
+    }
     std::size_t i = h & mask;
     while (table[i] != 0) i = (i + 1) & mask;
     table[i] = slot_of(idx, h);

@@ -3,7 +3,7 @@
 // remapped array (no per-state heap allocation) and are numbered in insertion order, so BFS
 // numbering is the state index. A state of at most 64 bits is one word compared directly: 8
 // bytes for the word and 4 per slot, so 16 bytes per state at half load and 13.3 at three
-// quarters, the load that tables of 2^20 slots and more reach before they grow
+// quarters, the load that tables of 2^22 slots and more reach before they grow
 // (states_before_growth()). Below 2^24 states, a one-word state's slot also holds 7 bits of its
 // hash: a probe passes a slot of another state without reading that state (a third of the
 // look-ups probe past their first slot, each a cache miss).
@@ -200,14 +200,14 @@ class StateStore {
 #endif
   }
   /// How many states the table holds before it grows: half its slots, and three quarters from
-  /// 2^20 slots (4 MB) on. Each slot probed past the first costs a read of a stored state, but
+  /// 2^22 slots (16 MB) on. Each slot probed past the first costs a read of a stored state, but
   /// the grouped probe finds most within the first cache line, past a million states memory
   /// bounds the search, and the load of three quarters takes a state from 16 to 8 bytes of
   /// table just after a doubling (docs/benchmarks.md).
   std::size_t states_before_growth(std::size_t slot_count) const {
     return slot_count < kDenseTableSlots ? slot_count / 2 : slot_count / 4 * 3;
   }
-  static constexpr std::size_t kDenseTableSlots = std::size_t{1} << 20;
+  static constexpr std::size_t kDenseTableSlots = std::size_t{1} << 22;
   /// Whether one more state would fill the table past its load, or past the tagged states.
   bool full_for_one_more() const {
     return static_cast<std::size_t>(size_) + 1 > states_before_growth(slots_.size()) ||
