@@ -4,10 +4,14 @@
 // decide, and keeps neither edges nor their labels (the conditions and fired transitions of the
 // few edges on a counterexample are recomputed from their source state).
 //
-// Results equal those of the graph-based engine (explicit_model_checker.hpp): same verdicts, the
-// same shortest counterexamples (the first violating state in BFS order, reached through its BFS
-// parents), and the same state and edge counts whenever the whole space is explored. When the
-// search stops early, the counts are those of the part explored.
+// Results equal those of the graph-based engine (explicit_model_checker.hpp): the same verdicts
+// (a state limit aside), shortest counterexamples (the first violating state in BFS order,
+// reached through its BFS parents), and the same state and edge counts whenever the whole space
+// is explored. When the search stops early, the counts are those of the part explored. With the
+// interpreted enumerator the BFS order is the graph's, and so are the counterexamples and the
+// part a state limit explores; the compiled one orders a state's targets by input valuation, the
+// interpreter by its input decisions, so where a cycle reads several inputs one after another
+// (nested charts) the counterexample may end at another violating state of the same depth.
 
 #include <cstdint>
 #include <memory>
