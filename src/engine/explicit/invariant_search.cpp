@@ -175,8 +175,7 @@ class FormulaMemo {
             bits.push_back(b);
             continue;
           }
-          const auto source = codec->source_of(b);
-          if (!source.constant) bits.push_back(source.stored_bit);
+          if (const auto stored = codec->stored_bit_of(b)) bits.push_back(*stored);
         }
         if (bits.size() > 4 * kMaxBits) return false;  // before the duplicates go: a bound
       }

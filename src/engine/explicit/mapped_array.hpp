@@ -86,10 +86,10 @@ class MappedArray {
     void* p = data_ == nullptr
                   ? mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0)
                   : mremap(data_, old_bytes, bytes, MREMAP_MAYMOVE);
+    // No MADV_HUGEPAGE: with the kernel's default "defrag=madvise", a fault on a huge page
+    // compacts memory first, and that system time outgrew the TLB misses it saves
+    // (docs/benchmarks.md, round 2 session 19).
     if (p == MAP_FAILED) throw std::bad_alloc();
-      // No MADV_HUGEPAGE: with the kernel's default "defrag=madvise", a fault on a huge page
-      // compacts memory first, and that system time outgrew the TLB misses it saves
-      // (docs/benchmarks.md, round 2 session 19).
 #else
     void* p = std::realloc(data_, bytes);
     if (p == nullptr) throw std::bad_alloc();

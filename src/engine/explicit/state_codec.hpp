@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -50,17 +51,11 @@ class StateCodec {
   std::uint32_t stored_words() const { return stored_words_; }
   std::uint32_t stored_bits() const { return stored_bits_; }
 
-  /// Where a bit of the full state comes from: a stored bit (negated or not), or a constant.
-  struct BitSource {
-    bool constant;
-    bool value;  ///< when constant
-    std::uint32_t stored_bit;
-    bool negated;
-  };
-  BitSource source_of(std::uint32_t full_bit) const {
+  /// The stored bit a bit of the full state follows; nullopt when the full bit is a constant.
+  std::optional<std::uint32_t> stored_bit_of(std::uint32_t full_bit) const {
     for (const auto& f : followers_)
-      if (f.full_bit == full_bit) return {false, false, f.stored_bit, f.negated};
-    return {true, bit(constant_.data(), full_bit), 0, false};
+      if (f.full_bit == full_bit) return f.stored_bit;
+    return std::nullopt;
   }
 
   /// Writes the full state of `stored` to `full` (full_words() words).
