@@ -128,8 +128,8 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
     ASSERT_TRUE(staged.reserve_for_staging(600));
     for (std::uint64_t i = first; i < first + 600; ++i) {
       const StateView v(buffer.data() + i, 1);
-      const auto s =
-          staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i), buffer.data());
+      const auto s = staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i),
+                                  [&](std::uint32_t e) { return buffer.data() + e; });
       ASSERT_EQ(s.index, StateStore::kAbsent);
       ASSERT_TRUE(s.first);
       EXPECT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
@@ -141,7 +141,8 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
       EXPECT_EQ(st->find(w), static_cast<std::uint32_t>(i));
       EXPECT_FALSE(st->insert(w).second);
       EXPECT_EQ(st->insert_if_new(w, st->state_hash(w)), StateStore::kAbsent);
-      const auto s = st->stage(w, st->state_hash(w), 0, buffer.data());
+      const auto s =
+          st->stage(w, st->state_hash(w), 0, [&](std::uint32_t e) { return buffer.data() + e; });
       EXPECT_EQ(s.index, static_cast<std::uint32_t>(i));
     }
   const StateWord absent[1] = {1};

@@ -426,172 +426,198 @@ class WorkerPool {
   std::exception_ptr error_;
 };
 
-/// A batch of stored states of the parallel search and, once enumerated, their distinct
-/// targets concatenated in source order: the position of a target there (its pair) is the
-/// order in which the serial search inserts it.
-class Batch {
+/// A batch of stored states of the parallel search, expanded on every thread at once. A thread
+/// takes kChunkStates sources at a time, enumerates their distinct targets and looks them up
+/// while they are in its cache (a whole batch enumerated first and looked up afterwards cost
+/// more per look-up: docs/benchmarks.md). A target not stored is staged by the first pair that
+/// looks it up and claimed by the first pair in serial order that reaches it; the search
+/// numbers the new states in claim order, which is the serial search's.
+///
+/// A pair's key is its chunk and its place among the chunk's targets, so keys follow the
+/// serial order; a staged state's entry in the store is the key of the pair that staged it.
+class ParallelBatch {
  public:
   static constexpr std::uint32_t kStates = 4096;
   static constexpr std::uint32_t kChunkStates = 64;
+  struct Entry {
+    std::uint32_t claim;  ///< the key of the first pair in serial order reaching the state
+    std::uint32_t key;    ///< the key of the pair that staged it, whose words hold it
+    std::uint32_t slot;
+  };
 
-  std::uint32_t begin() const { return begin_; }
-  std::uint32_t end() const { return end_; }
-  bool empty() const { return begin_ == end_; }
-  std::uint32_t pairs() const { return pair_end_.empty() ? 0 : pair_end_.back(); }
-  /// The pairs of source `s` of this batch: [first, end).
-  std::uint32_t first_pair(std::uint32_t s) const {
-    return s == begin_ ? 0 : pair_end_[s - begin_ - 1];
-  }
-  std::uint32_t end_pair(std::uint32_t s) const { return pair_end_[s - begin_]; }
-  /// Whether the last target the enumeration gave for source `s` repeats an earlier one.
-  bool ends_with_repeat(std::uint32_t s) const { return ends_with_repeat_[s - begin_] != 0; }
-  const StateWord* targets() const { return targets_.data(); }
-
-  /// Copies the states [begin, end) of `store` and posts their enumeration on `pool`.
-  void enumerate(WorkerPool& pool, const StateStore& store, std::uint32_t begin,
-                 std::uint32_t end) {
+  /// Expands the stored states [begin, end) on every thread of `pool`; afterwards entries()
+  /// lists their new targets by claim. False when the store cannot stage them (more states
+  /// than it numbers, or a chunk of 2^24 targets): nothing is staged then. An exception of an
+  /// enumeration (a limit) is rethrown, with nothing staged.
+  bool expand(WorkerPool& pool, StateStore& store, std::uint32_t begin, std::uint32_t end) {
     begin_ = begin;
     end_ = end;
     words_ = store.words_per_state();
-    const auto v = store.range(begin, end - begin);
-    states_.assign(v.begin(), v.end());
     num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
     if (chunks_.size() < num_chunks_) chunks_.resize(num_chunks_);
-    next_.store(0);
-    pool.post([this](TargetEnumerator& e) { enumerate_chunks(e); });
-  }
-  /// Ends the enumeration, helping with it, and concatenates the targets. An exception of an
-  /// enumeration (a limit) is rethrown: the batch's targets are then not complete.
-  void finish(WorkerPool& pool) {
-    pool.join();
-    pair_end_.clear();
-    ends_with_repeat_.clear();
-    targets_.clear();
-    for (std::uint32_t c = 0; c < num_chunks_; ++c) {
-      const auto& chunk = chunks_[c];
-      const auto base = static_cast<std::uint32_t>(targets_.size() / words_);
-      for (auto end : chunk.ends) pair_end_.push_back(base + end / words_);
-      ends_with_repeat_.insert(ends_with_repeat_.end(), chunk.repeats.begin(), chunk.repeats.end());
-      targets_.insert(targets_.end(), chunk.targets.begin(), chunk.targets.end());
+    for (std::uint32_t c = 0; c < num_chunks_; ++c) chunks_[c].enumerated = false;
+    unstageable_.store(false);
+    if (!run(pool, store, static_cast<std::uint64_t>(end - begin) * pairs_per_state_)) {
+      // More targets than the room made: stage them again in a table that holds them all.
+      if (unstageable_.load() || !run(pool, store, pairs())) return false;
     }
-  }
-  /// Takes the rest of the enumeration away from the workers and waits for them.
-  void abandon(WorkerPool& pool) {
-    next_.store(num_chunks_);
-    pool.join(false);
-  }
-
- private:
-  struct Chunk {
-    std::vector<StateWord> targets;
-    std::vector<std::uint32_t> ends;    ///< per state: end of its targets in `targets`, in words
-    std::vector<std::uint8_t> repeats;  ///< per state: its last target repeats an earlier one
-    std::vector<std::uint32_t> table;   ///< scratch of keep_distinct_targets
-  };
-  void enumerate_chunks(TargetEnumerator& e) {
-    for (;;) {
-      const auto c = next_.fetch_add(1);
-      if (c >= num_chunks_) return;
-      auto& chunk = chunks_[c];
-      chunk.targets.clear();
-      chunk.ends.clear();
-      chunk.repeats.clear();
-      const auto first = c * kChunkStates;
-      const auto last = std::min(first + kChunkStates, end_ - begin_);
-      e.targets_of(StateView(states_.data() + static_cast<std::size_t>(first) * words_,
-                             static_cast<std::size_t>(last - first) * words_),
-                   last - first, chunk.targets, chunk.ends);
-      keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table, chunk.repeats);
-    }
-  }
-
-  std::uint32_t begin_ = 0, end_ = 0, words_ = 1;
-  std::vector<StateWord> states_;
-  std::vector<Chunk> chunks_;
-  std::uint32_t num_chunks_ = 0;
-  std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
-  std::vector<StateWord> targets_;
-  std::vector<std::uint32_t> pair_end_;         ///< per state: end of its pairs
-  std::vector<std::uint8_t> ends_with_repeat_;  ///< per state
-};
-
-/// The new targets of a batch, found on every thread: each is staged by the first pair that
-/// looks it up, and claimed by the first pair in serial order that reaches it.
-class BatchStaging {
- public:
-  struct Entry {
-    std::uint32_t claim;  ///< the first pair reaching the state
-    std::uint32_t pair;   ///< the pair whose words hold it
-    std::uint32_t slot;
-  };
-  /// Stages the targets of `batch` on every thread of `pool`; false when the store cannot
-  /// number that many more states. Afterwards, entries() lists the new states by claim.
-  bool stage(WorkerPool& pool, StateStore& store, const Batch& batch) {
-    const std::uint32_t pairs = batch.pairs();
-    entries_.clear();
-    if (!store.reserve_for_staging(pairs)) return false;
-    claims_.resize(pairs);
-    next_.store(0);
-    pool.post([&](TargetEnumerator&) { stage_sources(store, batch); });
-    pool.join();
-    for (auto& e : entries_) e.claim = claims_[e.pair];
+    pairs_per_state_ = std::max<std::uint64_t>(pairs_per_state_, pairs() / (end - begin) + 1);
+    for (auto& e : entries_) e.claim = claim_of(e.key);
     std::sort(entries_.begin(), entries_.end(),
               [](const Entry& a, const Entry& b) { return a.claim < b.claim; });
     return true;
   }
   const std::vector<Entry>& entries() const { return entries_; }
 
+  std::uint32_t end() const { return end_; }
+  /// The keys of the pairs of source `s`: [first_key(s), end_key(s)), contiguous.
+  std::uint32_t first_key(std::uint32_t s) const {
+    const auto i = s - begin_;
+    return i % kChunkStates == 0 ? key(i / kChunkStates, 0)
+                                 : end_key_in_chunk(i / kChunkStates, i % kChunkStates - 1);
+  }
+  std::uint32_t end_key(std::uint32_t s) const {
+    const auto i = s - begin_;
+    return end_key_in_chunk(i / kChunkStates, i % kChunkStates);
+  }
+  /// Whether the last target the enumeration gave for source `s` repeats an earlier one.
+  bool ends_with_repeat(std::uint32_t s) const {
+    const auto i = s - begin_;
+    return chunks_[i / kChunkStates].repeats[i % kChunkStates] != 0;
+  }
+  /// The words of the target of the pair of key `k`.
+  const StateWord* target(std::uint32_t k) const {
+    return chunks_[k >> kPairBits].targets.data() +
+           static_cast<std::size_t>(k & kPairMask) * words_;
+  }
+
  private:
-  static constexpr std::uint32_t kSourcesPerTake = 64;
-  void stage_sources(StateStore& store, const Batch& batch) {
-    std::uint64_t ahead[kAhead];  ///< the hashes of the pairs [p, p + kAhead)
-    const std::uint32_t words = store.words_per_state();
-    const std::uint32_t sources = batch.end() - batch.begin();
+  static constexpr std::uint32_t kPairBits = 24;
+  static constexpr std::uint32_t kPairMask = (1U << kPairBits) - 1;
+  // Keys stay below the staged bit of a slot.
+  static_assert(kStates / kChunkStates <= (1U << (31 - kPairBits)));
+
+  struct Chunk {
+    bool enumerated = false;
+    std::vector<StateWord> targets;
+    std::vector<std::uint32_t> ends;    ///< per state: end of its targets in `targets`, in words
+    std::vector<std::uint8_t> repeats;  ///< per state: its last target repeats an earlier one
+    std::vector<std::uint32_t> table;   ///< scratch of keep_distinct_targets
+    std::vector<std::uint32_t> claims;  ///< per pair that staged a state: its claim
+  };
+  static std::uint32_t key(std::uint32_t chunk, std::uint32_t pair) {
+    return chunk << kPairBits | pair;
+  }
+  std::uint32_t end_key_in_chunk(std::uint32_t c, std::uint32_t i) const {
+    return key(c, chunks_[c].ends[i] / words_);
+  }
+  std::uint32_t& claim_of(std::uint32_t k) { return chunks_[k >> kPairBits].claims[k & kPairMask]; }
+  std::uint64_t pairs() const {
+    std::uint64_t n = 0;
+    for (std::uint32_t c = 0; c < num_chunks_; ++c) n += chunks_[c].targets.size() / words_;
+    return n;
+  }
+
+  /// One pass over the chunks on every thread, after making room for `reserve` new states.
+  /// False, with nothing staged, when their targets did not fit in the room (every chunk is
+  /// enumerated then) or the store cannot number them.
+  bool run(WorkerPool& pool, StateStore& store, std::uint64_t reserve) {
+    entries_.clear();
+    if (!store.reserve_for_staging(reserve)) {
+      unstageable_.store(true);
+      return false;
+    }
+    room_ = store.staging_room();
+    used_.store(0);
+    full_.store(false);
+    next_.store(0);
+    pool.post([&](TargetEnumerator& e) { expand_chunks(e, store); });
+    try {
+      pool.join();
+    } catch (...) {
+      store.drop_staged();
+      throw;
+    }
+    if (!full_.load()) return true;
+    store.drop_staged();
+    return false;
+  }
+
+  void expand_chunks(TargetEnumerator& e, StateStore& store) {
+    std::vector<std::uint64_t> hashes;
     std::vector<Entry> mine;
     for (;;) {
-      const auto first = next_.fetch_add(kSourcesPerTake);
-      if (first >= sources) break;
-      const auto last = std::min(first + kSourcesPerTake, sources);
-      const auto begin = batch.first_pair(batch.begin() + first);
-      const auto end = batch.end_pair(batch.begin() + last - 1);
-      auto target = [&](std::uint32_t p) {
-        return StateView(batch.targets() + static_cast<std::size_t>(p) * words, words);
-      };
-      // The look-ups miss the cache: the slot of the pair kAhead ahead, and the state its slot
-      // refers to kAhead / 2 ahead, are loaded while this one is looked up.
-      for (auto p = begin; p < std::min(end, begin + kAhead); ++p) {
-        ahead[p % kAhead] = store.state_hash(target(p));
-        store.prefetch_slot(ahead[p % kAhead]);
+      const auto c = next_.fetch_add(1);
+      if (c >= num_chunks_) break;
+      auto& chunk = chunks_[c];
+      if (!chunk.enumerated) {
+        chunk.targets.clear();
+        chunk.ends.clear();
+        chunk.repeats.clear();
+        const auto first = c * kChunkStates;
+        const auto last = std::min(first + kChunkStates, end_ - begin_);
+        e.targets_of(store.range(begin_ + first, last - first), last - first, chunk.targets,
+                     chunk.ends);
+        keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table,
+                                      chunk.repeats);
+        chunk.enumerated = true;
       }
-      for (auto p = begin; p < end; ++p) {
-        const std::uint64_t hash = ahead[p % kAhead];
-        if (p + kAhead / 2 < end) store.prefetch_state(ahead[(p + kAhead / 2) % kAhead]);
-        if (p + kAhead < end) {
-          ahead[p % kAhead] = store.state_hash(target(p + kAhead));
-          store.prefetch_slot(ahead[p % kAhead]);
-        }
-        if (store.find_stored(target(p), hash) != StateStore::kAbsent) continue;
-        // Written before stage() can publish pair p, read by the threads that find it there.
-        std::atomic_ref<std::uint32_t>(claims_[p]).store(p, std::memory_order_relaxed);
-        const auto found = store.stage(target(p), hash, p, batch.targets());
-        if (found.index != StateStore::kAbsent) continue;
-        if (found.first) {
-          mine.push_back({0, p, found.slot});
-          continue;
-        }
-        std::atomic_ref<std::uint32_t> claim(claims_[found.entry]);
-        auto seen = claim.load(std::memory_order_relaxed);
-        while (p < seen && !claim.compare_exchange_weak(seen, p, std::memory_order_relaxed)) {
-        }
+      const std::size_t pairs = chunk.targets.size() / words_;
+      if (pairs > kPairMask) unstageable_.store(true, std::memory_order_relaxed);
+      // Past the room the table would fill: the rest is only enumerated, for a second run.
+      if (unstageable_.load(std::memory_order_relaxed) || full_.load(std::memory_order_relaxed) ||
+          used_.fetch_add(pairs) + pairs > room_) {
+        full_.store(true, std::memory_order_relaxed);
+        continue;
       }
+      stage_chunk(c, store, hashes, mine);
     }
     const std::lock_guard<std::mutex> lock(mutex_);
     entries_.insert(entries_.end(), mine.begin(), mine.end());
   }
 
-  std::vector<std::uint32_t> claims_;  ///< per pair that staged a state: its claim
+  void stage_chunk(std::uint32_t c, StateStore& store, std::vector<std::uint64_t>& hashes,
+                   std::vector<Entry>& mine) {
+    auto& chunk = chunks_[c];
+    const auto pairs = static_cast<std::uint32_t>(chunk.targets.size() / words_);
+    chunk.claims.resize(pairs);
+    hashes.resize(pairs);
+    auto target_of = [&](std::uint32_t p) { return StateView(target(key(c, p)), words_); };
+    for (std::uint32_t p = 0; p < pairs; ++p) hashes[p] = store.state_hash(target_of(p));
+    auto words_of = [this](std::uint32_t k) { return target(k); };
+    // As the serial search: the look-ups miss the cache, so the slot of the pair kAhead ahead,
+    // and the state its slot refers to kAhead / 2 ahead, are loaded while this one is looked up.
+    for (std::uint32_t p = 0; p < pairs; ++p) {
+      if (p + kAhead < pairs) store.prefetch_slot(hashes[p + kAhead]);
+      if (p + kAhead / 2 < pairs) store.prefetch_state(hashes[p + kAhead / 2]);
+      const auto t = target_of(p);
+      if (store.find_stored(t, hashes[p]) != StateStore::kAbsent) continue;
+      const auto k = key(c, p);
+      // Written before stage() can publish pair p, read by the threads that find it there.
+      std::atomic_ref<std::uint32_t>(chunk.claims[p]).store(k, std::memory_order_relaxed);
+      const auto found = store.stage(t, hashes[p], k, words_of);
+      if (found.index != StateStore::kAbsent) continue;
+      if (found.first) {
+        mine.push_back({0, k, found.slot});
+        continue;
+      }
+      std::atomic_ref<std::uint32_t> claim(claim_of(found.entry));
+      auto seen = claim.load(std::memory_order_relaxed);
+      while (k < seen && !claim.compare_exchange_weak(seen, k, std::memory_order_relaxed)) {
+      }
+    }
+  }
+
+  std::uint32_t begin_ = 0, end_ = 0, words_ = 1;
+  std::vector<Chunk> chunks_;
+  std::uint32_t num_chunks_ = 0;
+  std::uint64_t pairs_per_state_ = 16;  ///< the most per source of a batch so far, plus one
   std::vector<Entry> entries_;
-  std::atomic<std::uint32_t> next_{0};  ///< the next source to take
+  std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
+  std::uint64_t room_ = 0;              ///< how many pairs may stage states in this run
+  std::atomic<std::uint64_t> used_{0};  ///< the pairs of the chunks staged so far
+  std::atomic<bool> full_{false};       ///< a chunk did not fit in the room
+  std::atomic<bool> unstageable_{false};
   std::mutex mutex_;
 };
 
@@ -829,61 +855,45 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
   };
   std::uint32_t s = 0;
-  Batch batches[2];  // outlive the pool's workers
-  BatchStaging staging;
+  ParallelBatch batch;  // outlives the pool's workers
   WorkerPool pool(*enumerator, threads);
-  // A batch whose enumeration threw (a limit, on some thread) or that the store cannot number:
+  // A batch whose enumeration threw (a limit, on some thread) or that the store cannot stage:
   // the search goes on from its first state on this thread alone, so the state that stops it
   // is the one-thread search's.
   bool serial = !pool.parallel();
   if (!serial) {
-    auto* cur = &batches[0];
-    auto* next = &batches[1];
-    auto enumerate_from = [&](Batch& b, std::uint32_t from) {
-      b.enumerate(pool, store, from, std::min<std::uint32_t>(store.size(), from + Batch::kStates));
-    };
-    auto enumerated = [&](Batch& b) {
+    bool stopped = false;
+    while (!stopped && s < store.size()) {
       try {
-        b.finish(pool);
-        return true;
+        if (!batch.expand(pool, store, s, std::min(store.size(), s + ParallelBatch::kStates))) {
+          serial = true;
+          break;
+        }
       } catch (const LimitReached& stop) {
         if (stop.which() == Limit::Enumeration) throw;
         serial = true;
-        s = b.begin();
-        return false;
-      }
-    };
-    enumerate_from(*cur, 0);
-    bool stopped = !enumerated(*cur);
-    while (!stopped && !cur->empty()) {
-      if (!staging.stage(pool, store, *cur)) {
-        serial = true;
-        s = cur->begin();
         break;
       }
-      // The states already stored past this batch are enumerated while its new states are
-      // numbered, stored and judged here, in the serial search's order: source by source,
-      // each source's new states in the order of their first pairs.
-      enumerate_from(*next, cur->end());
-      const auto& fresh = staging.entries();
+      // The batch's new states are numbered, stored and judged here, in the serial search's
+      // order: source by source, each source's new states in the order of their first pairs.
+      const auto& fresh = batch.entries();
       std::size_t k = 0;
-      for (s = cur->begin(); s < cur->end(); ++s) {
+      for (; s < batch.end(); ++s) {
         if (!limit.empty() || open == 0 || !before(s)) {
           stopped = true;
           break;
         }
-        const auto pairs_end = cur->end_pair(s);
+        const auto pairs_end = batch.end_key(s);
         just_violated.clear();
         for (; k < fresh.size() && fresh[k].claim < pairs_end; ++k) {
-          const auto t = store.commit_staged(
-              fresh[k].slot,
-              StateView(cur->targets() + static_cast<std::size_t>(fresh[k].pair) * words, words));
+          const auto t =
+              store.commit_staged(fresh[k].slot, StateView(batch.target(fresh[k].key), words));
           parent.push_back(s);
           if (open > 0) judge(t);
           // As expand(): the next target of this source, if any (a repeat counts), finds
           // the store past the limit.
           if (limits.max_states > 0 && store.size() > limits.max_states &&
-              (fresh[k].claim + 1 < pairs_end || cur->ends_with_repeat(s))) {
+              (fresh[k].claim + 1 < pairs_end || batch.ends_with_repeat(s))) {
             limit = "states";
             ++k;
             break;
@@ -895,21 +905,10 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
           stopped = true;
           break;
         }
-        edges += pairs_end - cur->first_pair(s);
+        edges += pairs_end - batch.first_key(s);
       }
       if (k < fresh.size()) store.drop_staged();
-      if (stopped) {
-        next->abandon(pool);
-        break;
-      }
-      if (!enumerated(*next)) break;
-      if (next->empty()) {
-        enumerate_from(*next, cur->end());
-        if (!enumerated(*next)) break;
-      }
-      std::swap(cur, next);
     }
-    if (!stopped && !serial) s = store.size();
   }
   if (serial) {
     for (; limit.empty() && open > 0 && s < store.size(); ++s) {

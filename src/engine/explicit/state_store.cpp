@@ -107,35 +107,6 @@ bool StateStore::reserve_for_staging(std::uint64_t count) {
   return true;
 }
 
-StateStore::Staged StateStore::stage(StateView state, std::uint64_t h, std::uint32_t entry,
-                                     const StateWord* staged_words) {
-  const auto tag = static_cast<std::uint32_t>(h >> 32);
-  const std::size_t mask = slots_.size() - 1;
-  auto same_staged = [&](std::uint32_t e) {
-    const StateWord* p = staged_words + static_cast<std::size_t>(e) * words_;
-    return same_state(p, state.data(), words_);
-  };
-  for (std::size_t i = h & mask;; i = (i + 1) & mask) {
-    std::atomic_ref<std::uint32_t> slot(slots_[i]);
-    std::uint32_t s = slot.load(std::memory_order_acquire);
-    if (s == 0) {
-      // The entry's words are written before its slot is published (release), so a thread
-      // that sees the slot (acquire) sees the words.
-      if (slot.compare_exchange_strong(s, kStagedBit | entry, std::memory_order_acq_rel,
-                                       std::memory_order_acquire))
-        return {kAbsent, entry, static_cast<std::uint32_t>(i), true};
-      // Another thread took this slot first: `s` now holds what it stored there.
-    }
-    if ((s & kStagedBit) != 0) {
-      if (same_staged(s & ~kStagedBit))
-        return {kAbsent, s & ~kStagedBit, static_cast<std::uint32_t>(i), false};
-    } else if (words_ == 1 ? (s & tag_mask_) == tag_of(h) && data_[index_of(s)] == state[0]
-                           : hashes_[s - 1] == tag && equal_at(s - 1, state)) {
-      return {index_of(s), 0, 0, false};
-    }
-  }
-}
-
 std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
   data_.append(state.data(), words_);
   const std::uint64_t h = state_hash(state);

@@ -103,10 +103,39 @@ class StateStore {
   /// Grows the table so that `count` states can be staged without growing; false when the
   /// store cannot number that many more states (more than 2^31-2 in all).
   bool reserve_for_staging(std::uint64_t count);
-  /// Thread-safe: the index of `state` if it is stored; else stages it as `entry` unless
-  /// another entry holds it already. `hash` is state_hash(state).
+  /// How many states may be staged past those reserve_for_staging() made room for: the table
+  /// keeps an eighth of its slots empty, so that every probe ends.
+  std::uint64_t staging_room() const {
+    const std::size_t usable = slots_.size() - slots_.size() / 8;
+    return usable > size_ ? usable - size_ : 0;
+  }
+  /// Thread-safe: the index of `state` if it is stored; else stages it as `entry` (below
+  /// 2^31) unless another entry holds it already. `hash` is state_hash(state);
+  /// `entry_words(e)` points to the words of the state staged as entry e.
+  template <class EntryWords>
   Staged stage(StateView state, std::uint64_t hash, std::uint32_t entry,
-               const StateWord* staged_words);
+               const EntryWords& entry_words) {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
+      std::atomic_ref<std::uint32_t> slot(slots_[i]);
+      std::uint32_t s = slot.load(std::memory_order_acquire);
+      if (s == 0) {
+        // The entry's words are written before its slot is published (release), so a thread
+        // that sees the slot (acquire) sees the words.
+        if (slot.compare_exchange_strong(s, kStagedBit | entry, std::memory_order_acq_rel,
+                                         std::memory_order_acquire))
+          return {kAbsent, entry, static_cast<std::uint32_t>(i), true};
+        // Another thread took this slot first: `s` now holds what it stored there.
+      }
+      if ((s & kStagedBit) != 0) {
+        const std::uint32_t e = s & ~kStagedBit;
+        if (same_state(entry_words(e), state.data(), words_))
+          return {kAbsent, e, static_cast<std::uint32_t>(i), false};
+      } else if (stored_at(s, state, hash)) {
+        return {index_of(s), 0, 0, false};
+      }
+    }
+  }
   /// Thread-safe while staging: the index of the one-word `state` if it was stored before the
   /// staging began, else kAbsent (also for wider states: ask stage()). Inline, for the many
   /// targets that are stored already. A stored state lies before every slot staged since,
@@ -148,6 +177,12 @@ class StateStore {
   static constexpr std::uint32_t kStagedBit = 0x80000000U;
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
+  /// Whether the stored (not staged) slot value `s` holds `state`, of hash `hash`.
+  bool stored_at(std::uint32_t s, StateView state, std::uint64_t hash) const {
+    return words_ == 1
+               ? (s & tag_mask_) == tag_of(hash) && data_[index_of(s)] == state[0]
+               : hashes_[s - 1] == static_cast<std::uint32_t>(hash >> 32) && equal_at(s - 1, state);
+  }
   // A one-word state is its own key: no stored hash, no call to compare. Inline: the search
   // looks up every edge's target. The slot of the one-word state `word` of hash `hash`: the
   // one that holds it, or the empty one where it goes (no staging under way). Linear probing,
