@@ -33,8 +33,7 @@ std::uint32_t StateStore::find(StateView state) const {
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
-    if (hashes_[s - 1] == static_cast<std::uint32_t>(h >> 32) && equal_at(s - 1, state))
-      return s - 1;
+    if (stored_at(s, state, h)) return s - 1;
   }
 }
 
@@ -50,7 +49,7 @@ std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state, std::uin
       slots_[i] = ++size_;
       return {size_ - 1, true};
     }
-    if (hashes_[s - 1] == tag && equal_at(s - 1, state)) return {s - 1, false};
+    if (stored_at(s, state, h)) return {s - 1, false};
   }
 }
 

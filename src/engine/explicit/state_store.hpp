@@ -143,12 +143,11 @@ class StateStore {
   std::uint32_t find_stored(StateView state, std::uint64_t hash) const {
     if (words_ != 1) return kAbsent;
     const std::size_t mask = slots_.size() - 1;
-    const std::uint32_t tag = tag_of(hash);
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       const std::uint32_t s =
           std::atomic_ref<const std::uint32_t>(slots_[i]).load(std::memory_order_relaxed);
       if (s == 0 || (s & kStagedBit) != 0) return kAbsent;
-      if ((s & tag_mask_) == tag && data_[index_of(s)] == state[0]) return index_of(s);
+      if (stored_at(s, state, hash)) return index_of(s);
     }
   }
   std::uint64_t state_hash(StateView state) const {
