@@ -67,13 +67,23 @@ inline std::string source_path(const std::string& relative) {
   return std::string(SFCV_SOURCE_DIR) + "/" + relative;
 }
 
-/// Writes `text` to a fresh temporary file with the given suffix and returns its path.
+/// Writes `text` to a fresh temporary file with the given suffix and returns its path. The file
+/// is removed when the test program exits (a CI run wrote some 17,000 of them to /tmp).
 inline std::string write_temp(const std::string& text, const std::string& suffix) {
   namespace fs = std::filesystem;
+  struct Written {
+    std::vector<fs::path> paths;
+    ~Written() {
+      std::error_code ignored;
+      for (const auto& p : paths) fs::remove(p, ignored);
+    }
+  };
+  static Written written;
   static int counter = 0;
   const auto p = fs::temp_directory_path() / ("sfcv-input-" + std::to_string(::getpid()) + "-" +
                                               std::to_string(counter++) + suffix);
   std::ofstream(p) << text;
+  written.paths.push_back(p);
   return p.string();
 }
 
