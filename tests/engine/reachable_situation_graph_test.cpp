@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "support/toy_system.hpp"
 
 namespace sfcv::engine {
@@ -130,7 +132,7 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
       const StateView v(buffer.data() + i, 1);
       const auto s = staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i),
                                   [&](std::uint32_t e) { return buffer.data() + e; });
-      ASSERT_EQ(s.index, StateStore::kAbsent);
+      ASSERT_FALSE(s.stored);
       ASSERT_TRUE(s.first);
       EXPECT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
     }
@@ -147,6 +149,111 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
     }
   const StateWord absent[1] = {1};
   EXPECT_EQ(store.find(absent), StateStore::kAbsent);
+}
+
+// The quotient form: a store asked only membership holds each one-word state in its slot once
+// the remainder fits. Every state must be found, whether inserted or staged and committed, as
+// the table grows from the indexed form into the quotient form.
+TEST(StateStore, MembershipStoreHoldsStatesAsQuotientsAndFindsEveryOne) {
+  constexpr std::uint32_t kBits = 41;  // indexed below 2^18 slots, quotients from there on
+  auto word = [](std::uint64_t i) { return (i * 0x9e3779b97f4a7c15ULL) >> (64 - kBits); };
+  constexpr std::uint64_t kCount = 300000;
+  StateStore inserted(1, StateStore::kTaggedStates, kBits);
+  EXPECT_FALSE(inserted.quotient_form());
+  for (std::uint64_t i = 0; i < kCount; ++i) {
+    const StateWord w[1] = {word(i)};
+    ASSERT_EQ(inserted.insert(w), std::make_pair(static_cast<std::uint32_t>(i), true));
+  }
+  EXPECT_TRUE(inserted.quotient_form());
+  StateStore staged(1, StateStore::kTaggedStates, kBits);
+  std::vector<StateWord> buffer;
+  for (std::uint64_t i = 0; i < kCount; ++i) buffer.push_back(word(i));
+  for (std::uint64_t first = 0; first < kCount; first += 50000) {
+    ASSERT_TRUE(staged.reserve_for_staging(50000));
+    for (std::uint64_t i = first; i < first + 50000; ++i) {
+      const StateView v(buffer.data() + i, 1);
+      ASSERT_FALSE(staged.stored_before_staging(v, staged.state_hash(v)));
+      const auto s = staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i),
+                                  [&](std::uint32_t e) { return buffer.data() + e; });
+      ASSERT_FALSE(s.stored);
+      ASSERT_FALSE(s.no_room);
+      ASSERT_TRUE(s.first);
+      ASSERT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
+    }
+  }
+  EXPECT_TRUE(staged.quotient_form());
+  for (auto* st : {&inserted, &staged}) {
+    for (std::uint64_t i = 0; i < kCount; ++i) {
+      const StateWord w[1] = {word(i)};
+      ASSERT_EQ(st->insert(w), std::make_pair(StateStore::kAbsent, false));
+      ASSERT_TRUE(st->stored_before_staging(w, st->state_hash(w)));
+      ASSERT_EQ(st->at(static_cast<std::uint32_t>(i))[0], word(i));
+    }
+    // Words one bit away from stored ones (same home for some, other remainders) are absent.
+    for (std::uint64_t i = 0; i < 100; ++i) {
+      const StateWord w[1] = {word(i) ^ (std::uint64_t{1} << (i % kBits))};
+      if (std::find(buffer.begin(), buffer.end(), w[0]) != buffer.end()) continue;
+      EXPECT_FALSE(st->stored_before_staging(w, st->state_hash(w)));
+      const auto size = st->size();
+      EXPECT_EQ(st->insert_if_new(w, st->state_hash(w)), size);
+    }
+  }
+  EXPECT_THROW((void)inserted.find(StateView(buffer.data(), 1)), std::logic_error);
+}
+
+// The hash is a bijection of the state's bits: every one of the 2^20 states of 20 bits is new
+// once, then found (two states of one hash would be taken for each other).
+TEST(StateStore, MembershipStoreTellsEveryStateOfItsWidthApart) {
+  constexpr std::uint32_t kBits = 20;
+  StateStore store(1, StateStore::kTaggedStates, kBits);
+  for (StateWord w = 0; w < (StateWord{1} << kBits); ++w) {
+    const StateWord one[1] = {w};
+    ASSERT_TRUE(store.insert(one).second) << w;
+  }
+  EXPECT_TRUE(store.quotient_form());
+  for (StateWord w = 0; w < (StateWord{1} << kBits); ++w) {
+    const StateWord one[1] = {w};
+    ASSERT_FALSE(store.insert(one).second) << w;
+  }
+}
+
+// A probe farther from home than a quotient can record (states chosen with one home) leaves the
+// quotient form for the indexed one, for good; no state is lost on the way.
+TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
+  constexpr std::uint32_t kBits = 20;
+  StateStore store(1, StateStore::kTaggedStates, kBits);
+  ASSERT_TRUE(store.quotient_form());
+  std::vector<StateWord> same_home;
+  for (StateWord w = 0; w < (StateWord{1} << kBits) && same_home.size() < 300; ++w) {
+    const StateWord one[1] = {w};
+    if ((store.state_hash(one) & 1023) == 7) same_home.push_back(w);
+  }
+  ASSERT_EQ(same_home.size(), 300U);
+  // Staging meets the limit first: it refuses, and stages nothing.
+  ASSERT_TRUE(store.reserve_for_staging(300));
+  bool refused = false;
+  for (std::uint32_t i = 0; i < same_home.size() && !refused; ++i) {
+    const StateView v(same_home.data() + i, 1);
+    const auto s = store.stage(v, store.state_hash(v), i,
+                               [&](std::uint32_t e) { return same_home.data() + e; });
+    refused = s.no_room;
+  }
+  EXPECT_TRUE(refused);
+  store.drop_staged();
+  ASSERT_TRUE(store.quotient_form());
+  for (std::uint32_t i = 0; i < same_home.size(); ++i) {
+    const StateView v(same_home.data() + i, 1);
+    ASSERT_EQ(store.insert(v), std::make_pair(i, true));
+  }
+  EXPECT_FALSE(store.quotient_form());
+  for (std::uint32_t i = 0; i < same_home.size(); ++i) {
+    const StateView v(same_home.data() + i, 1);
+    ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), StateStore::kAbsent);
+  }
+  EXPECT_EQ(store.size(), 300U);
+  // A state wider than promised would share a narrower one's slot: refused.
+  const StateWord wide[1] = {StateWord{1} << kBits};
+  EXPECT_THROW((void)store.insert(wide), std::logic_error);
 }
 
 }  // namespace

@@ -530,7 +530,8 @@ class ParallelBatch {
     room_ = store.staging_room();
     used_.store(0);
     full_.store(false);
-    next_.store(0);
+    range_.store(std::uint64_t{num_chunks_} << 32);
+    arrivals_.store(0);
     pool.post([&](TargetEnumerator& e) { expand_chunks(e, store); });
     try {
       pool.join();
@@ -546,9 +547,10 @@ class ParallelBatch {
   void expand_chunks(TargetEnumerator& e, StateStore& store) {
     std::vector<std::uint64_t> hashes;
     std::vector<Entry> mine;
+    const bool from_back = (arrivals_.fetch_add(1) & 1U) != 0;
     for (;;) {
-      const auto c = next_.fetch_add(1);
-      if (c >= num_chunks_) break;
+      const auto c = take(from_back);
+      if (c == kNone) break;
       auto& chunk = chunks_[c];
       if (!chunk.enumerated) {
         chunk.targets.clear();
@@ -591,12 +593,12 @@ class ParallelBatch {
       if (p + kAhead < pairs) store.prefetch_slot(hashes[p + kAhead]);
       if (p + kAhead / 2 < pairs) store.prefetch_state(hashes[p + kAhead / 2]);
       const auto t = target_of(p);
-      if (store.find_stored(t, hashes[p]) != StateStore::kAbsent) continue;
+      if (store.stored_before_staging(t, hashes[p])) continue;
       const auto k = key(c, p);
       // Written before stage() can publish pair p, read by the threads that find it there.
       std::atomic_ref<std::uint32_t>(chunk.claims[p]).store(k, std::memory_order_relaxed);
       const auto found = store.stage(t, hashes[p], k, words_of);
-      if (found.index != StateStore::kAbsent) continue;
+      if (found.stored) continue;
       if (found.first) {
         mine.push_back({0, k, found.slot});
         continue;
@@ -613,7 +615,20 @@ class ParallelBatch {
   std::uint32_t num_chunks_ = 0;
   std::uint64_t pairs_per_state_ = 16;  ///< the most per source of a batch so far, plus one
   std::vector<Entry> entries_;
-  std::atomic<std::uint32_t> next_{0};  ///< the next chunk to take
+  /// The chunks not taken yet, [low, high) as high << 32 | low: half the threads take them
+  /// from the front, half from the back, so that each works on sources far from the others'.
+  std::atomic<std::uint64_t> range_{0};
+  std::atomic<std::uint32_t> arrivals_{0};
+  std::uint32_t take(bool from_back) {
+    auto r = range_.load(std::memory_order_relaxed);
+    for (;;) {
+      const auto low = static_cast<std::uint32_t>(r), high = static_cast<std::uint32_t>(r >> 32);
+      if (low >= high) return kNone;
+      const auto next = from_back ? (r - (std::uint64_t{1} << 32)) : r + 1;
+      if (range_.compare_exchange_weak(r, next, std::memory_order_relaxed))
+        return from_back ? high - 1 : low;
+    }
+  }
   std::uint64_t room_ = 0;              ///< how many pairs may stage states in this run
   std::atomic<std::uint64_t> used_{0};  ///< the pairs of the chunks staged so far
   std::atomic<bool> full_{false};       ///< a chunk did not fit in the room
@@ -658,7 +673,12 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::vector<std::uint32_t> violation(n, kNone);  ///< first violating state per property
   std::vector<double> decided_at(n, 0);
   std::size_t open = n;
-  StateStore store(codec ? codec->stored_words() : ts.layout().words());
+  // The search asks the store only whether a target is stored (a new state's index is the
+  // store's size): one-word states may be held in the table's slots, in quotient form.
+  const std::uint32_t stored_words = codec ? codec->stored_words() : ts.layout().words();
+  const std::uint32_t stored_bits = codec ? codec->stored_bits() : ts.layout().bits();
+  StateStore store(stored_words, StateStore::kTaggedStates,
+                   stored_words == 1 ? std::max<std::uint32_t>(stored_bits, 1) : 0);
   if (codec) stored.resize(codec->stored_words());
   MappedArray<std::uint32_t> parent;  ///< per state: the state it was first reached from
   // Checks a newly stored state against every invariant still open.

@@ -6,11 +6,29 @@
 
 namespace sfcv::engine {
 
-StateStore::StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states)
+StateStore::StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states,
+                       std::uint32_t membership_bits)
     : words_(std::max<std::uint32_t>(words_per_state, 1)),
-      tag_mask_(words_ == 1 ? kTagBits : 0),
+      membership_(membership_bits > 0),
+      state_bits_(std::min<std::uint32_t>(membership_bits, 64)),
+      bits_mask_(state_bits_ >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << state_bits_) - 1),
+      shift_{std::max<std::uint32_t>(1, state_bits_ * 30 / 64),
+             std::max<std::uint32_t>(1, state_bits_ * 27 / 64),
+             std::max<std::uint32_t>(1, state_bits_ * 31 / 64)},
+      // A hash of b bits has its top 7 at b - 7: shifted to the tag's bits 24-30. Fewer than 31
+      // bits: no tags (a narrow state leaves the indexed form at once).
+      tag_shift_(membership_ ? (state_bits_ >= 31 ? state_bits_ - 31 : 0) : 33),
+      tag_mask_(words_ == 1 && (!membership_ || state_bits_ >= 31) ? kTagBits : 0),
       tagged_states_(std::min(tagged_states, kTaggedStates)),
-      slots_(1024, 0) {}
+      slots_(1024, 0) {
+  if (membership_ && words_ != 1)
+    throw std::logic_error("StateStore: membership_bits is for one-word states only");
+  rehash(slots_.size());  // takes the quotient form if it fits already
+}
+
+void StateStore::throw_too_wide() {
+  throw std::logic_error("StateStore: a state wider than the membership_bits it was promised");
+}
 
 std::uint64_t StateStore::hash(StateView state) const {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
@@ -24,6 +42,7 @@ bool StateStore::equal_at(std::uint32_t index, StateView state) const {
 }
 
 std::uint32_t StateStore::find(StateView state) const {
+  if (membership_) throw std::logic_error("StateStore::find: only membership is asked");
   const std::uint64_t h = state_hash(state);
   if (words_ == 1) {
     const std::uint32_t s = slots_[probe_word(state[0], h)];
@@ -33,7 +52,7 @@ std::uint32_t StateStore::find(StateView state) const {
   for (std::size_t i = h & mask;; i = (i + 1) & mask) {
     const std::uint32_t s = slots_[i];
     if (s == 0) return kAbsent;
-    if (stored_at(s, state, h)) return s - 1;
+    if (stored_at(s, i, state, h)) return s - 1;
   }
 }
 
@@ -49,15 +68,16 @@ std::pair<std::uint32_t, bool> StateStore::insert_wide(StateView state, std::uin
       slots_[i] = ++size_;
       return {size_ - 1, true};
     }
-    if (stored_at(s, state, h)) return {s - 1, false};
+    if (stored_at(s, i, state, h)) return {s - 1, false};
   }
 }
 
 std::uint32_t StateStore::add_word(std::size_t slot, StateWord word, std::uint64_t hash) {
   if (size_ == kAbsent - 1) throw std::length_error("StateStore: more than 2^32-2 states");
+  const std::uint32_t value = slot_of(size_, hash, slot);
   data_.push_back(word);
-  slots_[slot] = slot_of(size_++, hash);
-  return size_ - 1;
+  slots_[slot] = value;
+  return size_++;
 }
 
 void StateStore::grow() {
@@ -74,9 +94,23 @@ void StateStore::untag() {
   tag_mask_ = 0;
 }
 
+void StateStore::leave_quotient_form() {
+  left_quotient_ = true;
+  rehash(slots_.size());
+}
+
 void StateStore::rehash(std::size_t slot_count) {
   std::vector<std::uint32_t> table(slot_count, 0);
   const std::size_t mask = table.size() - 1;
+  slot_bits_ = static_cast<std::uint32_t>(__builtin_ctzll(slot_count));
+  const bool was_quotient = quotient_;
+  // The remainder and the distance in 31 bits.
+  quotient_ = membership_ && !left_quotient_ && state_bits_ <= slot_bits_ + (31 - kDistanceBits);
+  remainder_bits_ = quotient_ && state_bits_ > slot_bits_ ? state_bits_ - slot_bits_ : 0;
+  if (quotient_)
+    tag_mask_ = 0;
+  else if (was_quotient)  // left: tags again while the indices fit beside them
+    tag_mask_ = state_bits_ >= 31 && size_ < tagged_states_ ? kTagBits : 0;
   // Each insertion misses the cache: the slot of the state kAhead on is loaded meanwhile.
   constexpr std::uint32_t kAhead = 16;
   std::uint64_t ahead[kAhead];
@@ -92,7 +126,13 @@ void StateStore::rehash(std::size_t slot_count) {
     }
     std::size_t i = h & mask;
     while (table[i] != 0) i = (i + 1) & mask;
-    table[i] = slot_of(idx, h);
+    const std::uint32_t value = slot_of(idx, h, i);
+    if (value == 0) {  // farther from home than a quotient records
+      left_quotient_ = true;
+      rehash(slot_count);
+      return;
+    }
+    table[i] = value;
   }
   slots_ = std::move(table);
 }
@@ -107,11 +147,12 @@ bool StateStore::reserve_for_staging(std::uint64_t count) {
 }
 
 std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
-  data_.append(state.data(), words_);
   const std::uint64_t h = state_hash(state);
+  const std::uint32_t value = slot_of(size_, h, slot);
+  data_.append(state.data(), words_);
   if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(h >> 32));
-  slots_[slot] = slot_of(size_++, h);
-  return size_ - 1;
+  slots_[slot] = value;
+  return size_++;
 }
 
 void StateStore::drop_staged() {

@@ -7,6 +7,12 @@
 // (states_before_growth()). Below 2^24 states, a one-word state's slot also holds 7 bits of its
 // hash: a probe passes a slot of another state without reading that state (a third of the
 // look-ups probe past their first slot, each a cache miss).
+//
+// A store asked only whether a one-word state is stored (the invariant search: a new state's
+// index is the size at its insertion) holds each state in its slot once the table is large
+// enough (the quotient form): the hash is a bijection of the state's bits, its low bits give
+// the state's home slot, and the slot keeps the rest and the distance from home. A look-up
+// then reads one cache line, not two, and the table keeps its 4 bytes per slot.
 
 #include <atomic>
 #include <cstdint>
@@ -47,10 +53,20 @@ class StateStore {
   static constexpr std::uint32_t kTaggedStates = (1U << 24) - 2;
   /// `tagged_states`: how many one-word states are stored with a tag in their slot (at most
   /// the 2^24 - 2 that the slot can number; fewer only to test the change of mode).
-  explicit StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states = kTaggedStates);
+  /// `membership_bits` > 0: the states are one word of at most that many bits, and the store is
+  /// never asked the index of a state stored before (find() is refused, insert() and stage()
+  /// give kAbsent for it), so it may hold them in quotient form. A wider state is then a logic
+  /// error.
+  explicit StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states = kTaggedStates,
+                      std::uint32_t membership_bits = 0);
 
-  /// Inserts `state` unless present; returns its index and whether it was new.
+  /// Inserts `state` unless present; returns its index and whether it was new (kAbsent for a
+  /// state stored before, when only membership is asked).
   std::pair<std::uint32_t, bool> insert(StateView state) {
+    if (membership_) {
+      const auto index = insert_if_new(state, state_hash(state));
+      return {index, index != kAbsent};
+    }
     if (full_for_one_more()) grow();
     if (words_ != 1) return insert_wide(state, hash(state));
     const std::uint64_t h = hash_word(state[0]);
@@ -60,17 +76,24 @@ class StateStore {
   }
   /// Inserts `state` unless present: its index when it is new, kAbsent when it was stored.
   /// `hash` is state_hash(state).
-  std::uint32_t insert_if_new(StateView state, std::uint64_t hash) {
+  [[gnu::always_inline]] std::uint32_t insert_if_new(StateView state, std::uint64_t hash) {
     if (full_for_one_more()) grow();
     if (words_ != 1) {
       const auto [index, fresh] = insert_wide(state, hash);
       return fresh ? index : kAbsent;
     }
+    if (quotient_) {
+      const std::size_t i = probe_quotient(hash);
+      if (i != kNoRoom) return slots_[i] == 0 ? add_word(i, state[0], hash) : kAbsent;
+      leave_quotient_form();  // its probe would pass the farthest distance a slot records
+    }
     const std::size_t i = probe_word(state[0], hash);
     return slots_[i] == 0 ? add_word(i, state[0], hash) : kAbsent;
   }
-  /// Index of `state`, or kAbsent.
+  /// Index of `state`, or kAbsent. Refused when only membership is asked.
   std::uint32_t find(StateView state) const;
+  /// Whether the slots hold the states (quotients), not their indices.
+  bool quotient_form() const { return quotient_; }
 
   StateView at(std::uint32_t index) const {
     return {data_.data() + static_cast<std::size_t>(index) * words_, words_};
@@ -95,10 +118,12 @@ class StateStore {
 
   /// What stage() found.
   struct Staged {
-    std::uint32_t index;  ///< the stored state's index, or kAbsent when it is staged
+    bool stored;          ///< the state was stored before the staging began
+    std::uint32_t index;  ///< when stored: its index (kAbsent when only membership is asked)
     std::uint32_t entry;  ///< when staged: the entry of the buffer that holds it
     std::uint32_t slot;   ///< when staged: its slot, for commit_staged()
     bool first;           ///< when staged: this call staged it
+    bool no_room;         ///< not staged: the quotient form cannot record the state's slot
   };
   /// Grows the table so that `count` states can be staged without growing; false when the
   /// store cannot number that many more states (more than 2^31-2 in all).
@@ -120,38 +145,40 @@ class StateStore {
       std::atomic_ref<std::uint32_t> slot(slots_[i]);
       std::uint32_t s = slot.load(std::memory_order_acquire);
       if (s == 0) {
+        if (quotient_ && quotient_at(hash, i) == 0) return {false, kAbsent, 0, 0, false, true};
         // The entry's words are written before its slot is published (release), so a thread
         // that sees the slot (acquire) sees the words.
         if (slot.compare_exchange_strong(s, kStagedBit | entry, std::memory_order_acq_rel,
                                          std::memory_order_acquire))
-          return {kAbsent, entry, static_cast<std::uint32_t>(i), true};
+          return {false, kAbsent, entry, static_cast<std::uint32_t>(i), true, false};
         // Another thread took this slot first: `s` now holds what it stored there.
       }
       if ((s & kStagedBit) != 0) {
         const std::uint32_t e = s & ~kStagedBit;
         if (same_state(entry_words(e), state.data(), words_))
-          return {kAbsent, e, static_cast<std::uint32_t>(i), false};
-      } else if (stored_at(s, state, hash)) {
-        return {index_of(s), 0, 0, false};
+          return {false, kAbsent, e, static_cast<std::uint32_t>(i), false, false};
+      } else if (stored_at(s, i, state, hash)) {
+        return {true, membership_ ? kAbsent : index_of(s), 0, 0, false, false};
       }
     }
   }
-  /// Thread-safe while staging: the index of the one-word `state` if it was stored before the
-  /// staging began, else kAbsent (also for wider states: ask stage()). Inline, for the many
-  /// targets that are stored already. A stored state lies before every slot staged since,
-  /// which were empty when it was stored, so the probe stops at the first of either.
-  std::uint32_t find_stored(StateView state, std::uint64_t hash) const {
-    if (words_ != 1) return kAbsent;
+  /// Thread-safe while staging: whether the one-word `state` was stored before the staging
+  /// began (false for wider states: ask stage()). Inline, for the many targets that are stored
+  /// already. A stored state lies before every slot staged since, which were empty when it was
+  /// stored, so the probe stops at the first of either.
+  bool stored_before_staging(StateView state, std::uint64_t hash) const {
+    if (words_ != 1) return false;
     const std::size_t mask = slots_.size() - 1;
     for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
       const std::uint32_t s =
           std::atomic_ref<const std::uint32_t>(slots_[i]).load(std::memory_order_relaxed);
-      if (s == 0 || (s & kStagedBit) != 0) return kAbsent;
-      if (stored_at(s, state, hash)) return index_of(s);
+      if (s == 0 || (s & kStagedBit) != 0) return false;
+      if (stored_at(s, i, state, hash)) return true;
     }
   }
-  std::uint64_t state_hash(StateView state) const {
-    return words_ == 1 ? hash_word(state[0]) : hash(state);
+  [[gnu::always_inline]] std::uint64_t state_hash(StateView state) const {
+    if (words_ != 1) return hash(state);
+    return membership_ ? mix_bits(state[0]) : hash_word(state[0]);
   }
   /// Hints that a look-up of a state of hash `hash` follows: loads its first slot.
   void prefetch_slot(std::uint64_t hash) const {
@@ -160,6 +187,7 @@ class StateStore {
   /// Hints that a look-up of a state of hash `hash` follows soon (after prefetch_slot()): loads
   /// the stored state its first slot refers to.
   [[gnu::always_inline]] void prefetch_state(std::uint64_t hash) const {
+    if (quotient_) return;  // the slot holds the state
     // Atomic: other threads may be staging into the table (relaxed: only a hint is read).
     auto& slot = const_cast<std::uint32_t&>(slots_[hash & (slots_.size() - 1)]);
     const std::uint32_t s = std::atomic_ref<std::uint32_t>(slot).load(std::memory_order_relaxed);
@@ -176,8 +204,9 @@ class StateStore {
   static constexpr std::uint32_t kStagedBit = 0x80000000U;
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
-  /// Whether the stored (not staged) slot value `s` holds `state`, of hash `hash`.
-  bool stored_at(std::uint32_t s, StateView state, std::uint64_t hash) const {
+  /// Whether the stored (not staged) value `s` of slot `i` holds `state`, of hash `hash`.
+  bool stored_at(std::uint32_t s, std::size_t i, StateView state, std::uint64_t hash) const {
+    if (quotient_) return s == quotient_at(hash, i);
     return words_ == 1
                ? (s & tag_mask_) == tag_of(hash) && data_[index_of(s)] == state[0]
                : hashes_[s - 1] == static_cast<std::uint32_t>(hash >> 32) && equal_at(s - 1, state);
@@ -199,7 +228,7 @@ class StateStore {
     std::uint32_t on_path = ~std::uint32_t{0} << (start & kGroupMask);
     for (;;) {
       std::uint32_t empty, match;
-      group_masks(slots + group, tag, empty, match);
+      group_masks(slots + group, tag_mask_, tag, empty, match);
       empty &= on_path;
       // Candidates before the path's first empty slot (an empty slot also matches tag 0).
       match &= on_path & ((empty & (0U - empty)) - 1U);
@@ -214,22 +243,22 @@ class StateStore {
   }
   static constexpr std::size_t kGroupSlots = 4;
   static constexpr std::size_t kGroupMask = kGroupSlots - 1;
-  /// Bit k of `empty` (`match`): slot k of the kGroupSlots at `group` is empty (holds `tag`
-  /// under the tag mask).
-  void group_masks(const std::uint32_t* group, std::uint32_t tag, std::uint32_t& empty,
-                   std::uint32_t& match) const {
+  /// Bit k of `empty` (`match`): slot k of the kGroupSlots at `group` is empty (holds `key`
+  /// under `key_mask`). Tags are compared in the indexed form only.
+  static void group_masks(const std::uint32_t* group, std::uint32_t key_mask, std::uint32_t key,
+                          std::uint32_t& empty, std::uint32_t& match) {
 #if defined(__SSE2__)
     const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(group));
-    const __m128i masked = _mm_and_si128(v, _mm_set1_epi32(static_cast<int>(tag_mask_)));
+    const __m128i masked = _mm_and_si128(v, _mm_set1_epi32(static_cast<int>(key_mask)));
     empty = static_cast<std::uint32_t>(
         _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))));
     match = static_cast<std::uint32_t>(_mm_movemask_ps(
-        _mm_castsi128_ps(_mm_cmpeq_epi32(masked, _mm_set1_epi32(static_cast<int>(tag))))));
+        _mm_castsi128_ps(_mm_cmpeq_epi32(masked, _mm_set1_epi32(static_cast<int>(key))))));
 #else
     empty = match = 0;
     for (std::uint32_t k = 0; k < kGroupSlots; ++k) {
       empty |= static_cast<std::uint32_t>(group[k] == 0) << k;
-      match |= static_cast<std::uint32_t>((group[k] & tag_mask_) == tag) << k;
+      match |= static_cast<std::uint32_t>((group[k] & key_mask) == key) << k;
     }
 #endif
   }
@@ -252,14 +281,60 @@ class StateStore {
   // to 23 its index + 1. A staged slot (kStagedBit) is never tagged.
   static constexpr std::uint32_t kTagBits = 0x7F000000U;
   std::uint32_t tag_of(std::uint64_t hash) const {
-    return static_cast<std::uint32_t>(hash >> 33) & tag_mask_;
+    return static_cast<std::uint32_t>(hash >> tag_shift_) & tag_mask_;
   }
   std::uint32_t index_of(std::uint32_t slot) const {
     return (slot & ~tag_mask_) - 1;
   }
-  std::uint32_t slot_of(std::uint32_t index, std::uint64_t hash) const {
-    return tag_of(hash) | (index + 1);
+  /// The value of slot `i` for the state of index `index` and hash `hash`.
+  std::uint32_t slot_of(std::uint32_t index, std::uint64_t hash, std::size_t i) const {
+    return quotient_ ? quotient_at(hash, i) : tag_of(hash) | (index + 1);
   }
+
+  // The quotient form. The hash of a state of b bits is a bijection onto b bits; a table of
+  // 2^k slots takes its low k bits as the home slot, so the other b - k (the remainder) and
+  // the slot's distance d from home give the state back. A stored slot holds the remainder,
+  // and d + 1 above it: never 0, never staged (bit 31). The form is taken once the remainder
+  // and kDistanceBits fit in 31 bits; a probe farther than kMaxDistance from home (never seen
+  // at the loads kept) leaves it for the indexed form, for good.
+  static constexpr std::uint32_t kDistanceBits = 8;
+  static constexpr std::uint32_t kMaxDistance = (1U << kDistanceBits) - 2;
+  static constexpr std::size_t kNoRoom = ~std::size_t{0};
+  /// The value slot `i` holds for the state of hash `hash`; 0 when the state cannot lie there.
+  std::uint32_t quotient_at(std::uint64_t hash, std::size_t i) const {
+    const std::size_t mask = (std::size_t{1} << slot_bits_) - 1;
+    const std::size_t d = (i - hash) & mask;
+    if (d > kMaxDistance) return 0;
+    return static_cast<std::uint32_t>(hash >> slot_bits_) | static_cast<std::uint32_t>(d + 1)
+                                                                << remainder_bits_;
+  }
+  /// The slot that holds the state of hash `hash`, the empty one where it goes, or kNoRoom
+  /// when neither lies within kMaxDistance of its home.
+  [[gnu::always_inline]] std::size_t probe_quotient(std::uint64_t hash) const {
+    const std::size_t mask = slots_.size() - 1;
+    const std::uint32_t step = 1U << remainder_bits_;
+    std::uint32_t expected = static_cast<std::uint32_t>(hash >> slot_bits_) | step;
+    std::size_t i = hash & mask;
+    for (std::uint32_t d = 0;; ++d, i = (i + 1) & mask, expected += step) {
+      const std::uint32_t s = slots_[i];
+      if (s == expected || s == 0) return i;
+      if (d == kMaxDistance) return kNoRoom;
+    }
+  }
+  void leave_quotient_form();
+  /// A bijection of the words below 2^membership_bits: xor-shifts and odd multiplications
+  /// (splitmix64's), each invertible modulo 2^b.
+  [[gnu::always_inline]] std::uint64_t mix_bits(StateWord word) const {
+    if ((word & ~bits_mask_) != 0) throw_too_wide();
+    std::uint64_t h = word;
+    h ^= h >> shift_[0];
+    h = (h * 0xbf58476d1ce4e5b9ULL) & bits_mask_;
+    h ^= h >> shift_[1];
+    h = (h * 0x94d049bb133111ebULL) & bits_mask_;
+    h ^= h >> shift_[2];
+    return h;
+  }
+  [[noreturn]] static void throw_too_wide();
   std::pair<std::uint32_t, bool> insert_wide(StateView state, std::uint64_t hash);
   static std::uint64_t mix(std::uint64_t h) {
     // splitmix64 finaliser: cheap and good enough for packed bit vectors.
@@ -283,7 +358,16 @@ class StateStore {
   void untag();
 
   std::uint32_t words_;
-  std::uint32_t tag_mask_;  ///< kTagBits while one-word states are tagged, else 0
+  bool membership_;        ///< only membership is asked (membership_bits > 0)
+  bool quotient_ = false;  ///< the slots hold quotients
+  bool left_quotient_ = false;
+  std::uint32_t state_bits_;  ///< membership_bits
+  std::uint64_t bits_mask_;
+  std::uint32_t shift_[3];
+  std::uint32_t slot_bits_ = 10;  ///< log2 of the slot count
+  std::uint32_t remainder_bits_ = 0;
+  std::uint32_t tag_shift_;  ///< the hash bits a tag takes: its top 7 (the tag is bits 24-30)
+  std::uint32_t tag_mask_;   ///< kTagBits while one-word states are tagged, else 0
   std::uint32_t tagged_states_;
   std::uint32_t size_ = 0;
   MappedArray<StateWord> data_;
