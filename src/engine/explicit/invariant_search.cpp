@@ -447,8 +447,9 @@ class ParallelBatch {
 
   /// Expands the stored states [begin, end) on every thread of `pool`; afterwards entries()
   /// lists their new targets by claim. False when the store cannot stage them (more states
-  /// than it numbers, or a chunk of 2^24 targets): nothing is staged then. An exception of an
-  /// enumeration (a limit) is rethrown, with nothing staged.
+  /// than it numbers, a chunk of 2^24 targets, a slot its quotient form cannot record):
+  /// nothing is staged then. An exception of an enumeration (a limit) is rethrown, with
+  /// nothing staged.
   bool expand(WorkerPool& pool, StateStore& store, std::uint32_t begin, std::uint32_t end) {
     begin_ = begin;
     end_ = end;
@@ -598,6 +599,14 @@ class ParallelBatch {
       // Written before stage() can publish pair p, read by the threads that find it there.
       std::atomic_ref<std::uint32_t>(chunk.claims[p]).store(k, std::memory_order_relaxed);
       const auto found = store.stage(t, hashes[p], k, words_of);
+      if (found.no_room) {
+        // The quotient form cannot record the slot (a probe too long, never seen at the
+        // loads kept): nothing of the batch is kept, and the search goes on serially, where
+        // the store leaves that form.
+        unstageable_.store(true, std::memory_order_relaxed);
+        full_.store(true, std::memory_order_relaxed);
+        return;
+      }
       if (found.stored) continue;
       if (found.first) {
         mine.push_back({0, k, found.slot});
