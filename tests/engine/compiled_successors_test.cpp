@@ -373,7 +373,9 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
   auto selector = load(bench::parallel_branches_iec(14, true));
   auto tanks = load(bench::tanks_iec(3, true));
   auto wide = load(bench::parallel_branches_iec(40, true));
-  ASSERT_TRUE(selector && tanks && wide);
+  // Levels wider than a batch: the workers enumerate the next batch while one is committed.
+  auto broad = load(bench::parallel_branches_iec(16, true));
+  ASSERT_TRUE(selector && tanks && wide && broad);
   ASSERT_GT(wide->ts->layout().words(), 1u);
   struct Case {
     const semantics::TransitionSystem* ts;
@@ -389,6 +391,8 @@ TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
       // States of two words; limits inside the sixth batch and exactly at a batch's end.
       {wide->ts.get(), {invariant(*wide->ts, "A0", "B0")}, 25000},
       {wide->ts.get(), {invariant(*wide->ts, "A0", "B0")}, 4096},
+      {broad->ts.get(), {invariant(*broad->ts, "A0", "B0")}, 0},  // holds: all 65537 states
+      {broad->ts.get(), {invariant(*broad->ts, "A0", "B0")}, 30000},
   };
   // State limits falling anywhere: between two sources, after a source's last new state,
   // before one of its repeated targets, at the last state.

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -456,7 +457,10 @@ class ParallelBatch {
     words_ = store.words_per_state();
     num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
     if (chunks_.size() < num_chunks_) chunks_.resize(num_chunks_);
-    for (std::uint32_t c = 0; c < num_chunks_; ++c) chunks_[c].enumerated = false;
+    // Chunks prepare() enumerated for this batch are only staged.
+    const std::uint32_t prepared = begin == prepared_begin_ ? prepared_chunks_ : 0;
+    for (std::uint32_t c = prepared; c < num_chunks_; ++c) chunks_[c].enumerated = false;
+    prepared_chunks_ = 0;
     unstageable_.store(false);
     if (!run(pool, store, static_cast<std::uint64_t>(end - begin) * pairs_per_state_)) {
       // More targets than the room made: stage them again in a table that holds them all.
@@ -464,11 +468,20 @@ class ParallelBatch {
     }
     pairs_per_state_ = std::max<std::uint64_t>(pairs_per_state_, pairs() / (end - begin) + 1);
     for (auto& e : entries_) e.claim = claim_of(e.key);
-    std::sort(entries_.begin(), entries_.end(),
-              [](const Entry& a, const Entry& b) { return a.claim < b.claim; });
     return true;
   }
+  /// The batch's new states, in claim order once sort_entries() has run (after expand(), on
+  /// one thread while the workers prepare the next batch).
   const std::vector<Entry>& entries() const { return entries_; }
+  void sort_entries() {
+    std::sort(entries_.begin(), entries_.end(),
+              [](const Entry& a, const Entry& b) { return a.claim < b.claim; });
+  }
+  /// Grows the store for the batch [begin, end) before expand() does, so that the table
+  /// grows on this thread while the workers prepare the batch.
+  void reserve_room(StateStore& store, std::uint32_t begin, std::uint32_t end) const {
+    static_cast<void>(store.reserve_for_staging(std::uint64_t{end - begin} * pairs_per_state_));
+  }
 
   std::uint32_t end() const { return end_; }
   /// The keys of the pairs of source `s`: [first_key(s), end_key(s)), contiguous.
@@ -545,6 +558,57 @@ class ParallelBatch {
     return false;
   }
 
+  /// Enumerates chunk `c` of the batch at begin_, of `sources` sources in all.
+  void enumerate_chunk(TargetEnumerator& e, const StateStore& store, std::uint32_t c,
+                       std::uint32_t sources) {
+    auto& chunk = chunks_[c];
+    chunk.targets.clear();
+    chunk.ends.clear();
+    chunk.repeats.clear();
+    const auto first = c * kChunkStates;
+    const auto last = std::min(first + kChunkStates, sources);
+    e.targets_of(store.range(begin_ + first, last - first), last - first, chunk.targets,
+                 chunk.ends);
+    keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table, chunk.repeats);
+    chunk.enumerated = true;
+  }
+
+ public:
+  /// Starts enumerating, on the workers of `pool`, the whole chunks of the batch that will
+  /// begin at `begin` whose sources lie below `stored` (stored already, so they do not move
+  /// while the caller stores more: it reserved the room). Meanwhile the caller commits the
+  /// batch before, and finish_preparing() ends the job; expand() then only stages those chunks.
+  void prepare(WorkerPool& pool, const StateStore& store, std::uint32_t begin,
+               std::uint32_t stored) {
+    prepared_begin_ = begin;
+    prepared_chunks_ = stored > begin ? std::min(stored - begin, kStates) / kChunkStates : 0;
+    if (prepared_chunks_ == 0) return;
+    begin_ = begin;
+    words_ = store.words_per_state();
+    if (chunks_.size() < prepared_chunks_) chunks_.resize(prepared_chunks_);
+    for (std::uint32_t c = 0; c < prepared_chunks_; ++c) chunks_[c].enumerated = false;
+    next_prepared_.store(0);
+    preparing_ = true;
+    pool.post([this, &store](TargetEnumerator& e) {
+      for (;;) {
+        const auto c = next_prepared_.fetch_add(1);
+        if (c >= prepared_chunks_) break;
+        enumerate_chunk(e, store, c, prepared_chunks_ * kChunkStates);
+      }
+    });
+  }
+  /// Ends prepare()'s job, taking a share of what is left. A limit met by an enumeration
+  /// drops every prepared chunk: expand() enumerates them again, and meets it there.
+  void finish_preparing(WorkerPool& pool) {
+    if (!std::exchange(preparing_, false)) return;
+    try {
+      pool.join();
+    } catch (const LimitReached&) {
+      prepared_chunks_ = 0;
+    }
+  }
+
+ private:
   void expand_chunks(TargetEnumerator& e, StateStore& store) {
     std::vector<std::uint64_t> hashes;
     std::vector<Entry> mine;
@@ -553,18 +617,7 @@ class ParallelBatch {
       const auto c = take(from_back);
       if (c == kNone) break;
       auto& chunk = chunks_[c];
-      if (!chunk.enumerated) {
-        chunk.targets.clear();
-        chunk.ends.clear();
-        chunk.repeats.clear();
-        const auto first = c * kChunkStates;
-        const auto last = std::min(first + kChunkStates, end_ - begin_);
-        e.targets_of(store.range(begin_ + first, last - first), last - first, chunk.targets,
-                     chunk.ends);
-        keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table,
-                                      chunk.repeats);
-        chunk.enumerated = true;
-      }
+      if (!chunk.enumerated) enumerate_chunk(e, store, c, end_ - begin_);
       const std::size_t pairs = chunk.targets.size() / words_;
       if (pairs > kPairMask) unstageable_.store(true, std::memory_order_relaxed);
       // Past the room the table would fill: the rest is only enumerated, for a second run.
@@ -623,6 +676,9 @@ class ParallelBatch {
   std::vector<Chunk> chunks_;
   std::uint32_t num_chunks_ = 0;
   std::uint64_t pairs_per_state_ = 16;  ///< the most per source of a batch so far, plus one
+  std::uint32_t prepared_begin_ = kNone, prepared_chunks_ = 0;
+  std::atomic<std::uint32_t> next_prepared_{0};
+  bool preparing_ = false;
   std::vector<Entry> entries_;
   /// The chunks not taken yet, [low, high) as high << 32 | low: half the threads take them
   /// from the front, half from the back, so that each works on sources far from the others'.
@@ -884,7 +940,9 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
   };
   std::uint32_t s = 0;
-  ParallelBatch batch;  // outlives the pool's workers
+  // Two batches: while this thread commits one, the workers enumerate the next one's sources.
+  ParallelBatch batches[2];  // outlive the pool's workers
+  unsigned current = 0;
   WorkerPool pool(*enumerator, threads);
   // A batch whose enumeration threw (a limit, on some thread) or that the store cannot stage:
   // the search goes on from its first state on this thread alone, so the state that stops it
@@ -893,6 +951,9 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   if (!serial) {
     bool stopped = false;
     while (!stopped && s < store.size()) {
+      auto& batch = batches[current];
+      auto& next = batches[current ^ 1];
+      current ^= 1;
       try {
         if (!batch.expand(pool, store, s, std::min(store.size(), s + ParallelBatch::kStates))) {
           serial = true;
@@ -906,6 +967,11 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       // The batch's new states are numbered, stored and judged here, in the serial search's
       // order: source by source, each source's new states in the order of their first pairs.
       const auto& fresh = batch.entries();
+      // The workers enumerate the next batch's stored sources meanwhile: they read the stored
+      // states, which the room reserved keeps in place.
+      store.reserve_states(fresh.size());
+      next.prepare(pool, store, batch.end(), store.size());
+      batch.sort_entries();
       std::size_t k = 0;
       for (; s < batch.end(); ++s) {
         if (!limit.empty() || open == 0 || !before(s)) {
@@ -937,6 +1003,10 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
         edges += pairs_end - batch.first_key(s);
       }
       if (k < fresh.size()) store.drop_staged();
+      // Meanwhile too: the table grows for the next batch (it holds no staged state now).
+      if (!stopped && s < store.size())
+        next.reserve_room(store, s, std::min(store.size(), s + ParallelBatch::kStates));
+      next.finish_preparing(pool);
     }
   }
   if (serial) {

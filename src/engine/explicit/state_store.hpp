@@ -195,6 +195,11 @@ class StateStore {
     __builtin_prefetch(data_.data() + static_cast<std::size_t>(index_of(s)) * words_);
     if (words_ > 1) __builtin_prefetch(hashes_.data() + index_of(s));
   }
+  /// Room for `count` more states, so that those stored do not move while they are added.
+  void reserve_states(std::uint64_t count) {
+    data_.reserve(static_cast<std::size_t>((size_ + count) * words_));
+    if (words_ > 1) hashes_.reserve(static_cast<std::size_t>(size_ + count));
+  }
   /// Stores the staged state `state` of `slot` as the next state; returns its index.
   std::uint32_t commit_staged(std::uint32_t slot, StateView state);
   /// Forgets every state staged and not committed.
