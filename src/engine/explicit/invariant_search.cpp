@@ -461,7 +461,7 @@ class ParallelBatch {
     for (std::uint32_t c = prepared; c < num_chunks_; ++c) chunks_[c].enumerated = false;
     prepared_chunks_ = 0;
     unstageable_.store(false);
-    if (!run(pool, store, static_cast<std::uint64_t>(end - begin) * pairs_per_state_)) {
+    if (!run(pool, store, room_for(begin, end))) {
       // More targets than the room made: stage them again in a table that holds them all.
       if (unstageable_.load() || !run(pool, store, pairs())) return false;
     }
@@ -479,7 +479,7 @@ class ParallelBatch {
   /// Grows the store for the batch [begin, end) before expand() does, so that the table
   /// grows on this thread while the workers prepare the batch.
   void reserve_room(StateStore& store, std::uint32_t begin, std::uint32_t end) const {
-    static_cast<void>(store.reserve_for_staging(std::uint64_t{end - begin} * pairs_per_state_));
+    static_cast<void>(store.reserve_for_staging(room_for(begin, end)));
   }
 
   std::uint32_t end() const { return end_; }
@@ -669,6 +669,12 @@ class ParallelBatch {
       while (k < seen && !claim.compare_exchange_weak(seen, k, std::memory_order_relaxed)) {
       }
     }
+  }
+
+  /// The targets to make room for when expanding the sources [begin, end): as many per source
+  /// as the most any batch gave so far.
+  std::uint64_t room_for(std::uint32_t begin, std::uint32_t end) const {
+    return std::uint64_t{end - begin} * pairs_per_state_;
   }
 
   std::uint32_t begin_ = 0, end_ = 0, words_ = 1;

@@ -233,7 +233,7 @@ class StateStore {
     std::uint32_t on_path = ~std::uint32_t{0} << (start & kGroupMask);
     for (;;) {
       std::uint32_t empty, match;
-      group_masks(slots + group, tag_mask_, tag, empty, match);
+      group_masks(slots + group, tag, empty, match);
       empty &= on_path;
       // Candidates before the path's first empty slot (an empty slot also matches tag 0).
       match &= on_path & ((empty & (0U - empty)) - 1U);
@@ -248,22 +248,22 @@ class StateStore {
   }
   static constexpr std::size_t kGroupSlots = 4;
   static constexpr std::size_t kGroupMask = kGroupSlots - 1;
-  /// Bit k of `empty` (`match`): slot k of the kGroupSlots at `group` is empty (holds `key`
-  /// under `key_mask`). Tags are compared in the indexed form only.
-  static void group_masks(const std::uint32_t* group, std::uint32_t key_mask, std::uint32_t key,
-                          std::uint32_t& empty, std::uint32_t& match) {
+  /// Bit k of `empty` (`match`): slot k of the kGroupSlots at `group` is empty (carries the
+  /// tag `tag`). Tags are compared in the indexed form only.
+  void group_masks(const std::uint32_t* group, std::uint32_t tag, std::uint32_t& empty,
+                   std::uint32_t& match) const {
 #if defined(__SSE2__)
     const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(group));
-    const __m128i masked = _mm_and_si128(v, _mm_set1_epi32(static_cast<int>(key_mask)));
+    const __m128i masked = _mm_and_si128(v, _mm_set1_epi32(static_cast<int>(tag_mask_)));
     empty = static_cast<std::uint32_t>(
         _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))));
     match = static_cast<std::uint32_t>(_mm_movemask_ps(
-        _mm_castsi128_ps(_mm_cmpeq_epi32(masked, _mm_set1_epi32(static_cast<int>(key))))));
+        _mm_castsi128_ps(_mm_cmpeq_epi32(masked, _mm_set1_epi32(static_cast<int>(tag))))));
 #else
     empty = match = 0;
     for (std::uint32_t k = 0; k < kGroupSlots; ++k) {
       empty |= static_cast<std::uint32_t>(group[k] == 0) << k;
-      match |= static_cast<std::uint32_t>((group[k] & key_mask) == key) << k;
+      match |= static_cast<std::uint32_t>((group[k] & tag_mask_) == tag) << k;
     }
 #endif
   }
