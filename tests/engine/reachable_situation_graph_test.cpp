@@ -256,6 +256,91 @@ TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
   EXPECT_THROW((void)store.insert(wide), std::logic_error);
 }
 
+// insert_new_words() is the serial search's insertion of a source's targets: it must number
+// them as insert_if_new() one by one does, through growths, the change to the quotient form
+// (41-bit states: from 2^18 slots on) or none (64-bit states), and stop where the search's
+// state limit stops it.
+TEST(StateStore, InsertsASourcesTargetsAsOneByOneInsertions) {
+  for (const std::uint32_t bits : {41U, 64U}) {
+    SCOPED_TRACE(bits);
+    StateStore batch(1, StateStore::kTaggedStates, bits),
+        single(1, StateStore::kTaggedStates, bits);
+    const bool starts_quotient = batch.quotient_form();
+    std::uint64_t seed = 12345;
+    auto next = [&] {
+      seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+      return seed >> 11;
+    };
+    const StateWord mask = bits == 64 ? ~StateWord{0} : (StateWord{1} << bits) - 1;
+    // Half the targets repeat a word of a pool already (mostly) stored, or one of their group.
+    std::vector<StateWord> pool;
+    std::vector<StateWord> words;
+    std::vector<std::uint64_t> hashes;
+    std::uint64_t stopped_groups = 0;
+    while (single.size() < 300000) {
+      words.clear();
+      const std::size_t count = 1 + next() % 30;
+      for (std::size_t k = 0; k < count; ++k) {
+        const bool repeat = !pool.empty() && next() % 2 == 0;
+        const StateWord w =
+            repeat ? pool[next() % pool.size()] : (next() * 0x9E3779B97F4A7C15ULL) & mask;
+        words.push_back(w);
+        if (!repeat) pool.push_back(w);
+      }
+      hashes.clear();
+      for (const StateWord w : words) hashes.push_back(batch.state_hash(StateView(&w, 1)));
+      // Every 50th group meets a limit a few states on.
+      const bool capped = next() % 50 == 0;
+      const std::uint64_t cap = capped ? single.size() + next() % 4 : ~std::uint64_t{0};
+      std::size_t expected_stop = count;
+      for (std::size_t k = 0; k < count; ++k) {
+        if (single.size() >= cap) {
+          expected_stop = k;
+          break;
+        }
+        const auto index = single.insert_if_new(StateView(&words[k], 1), hashes[k]);
+        if (index != StateStore::kAbsent) {
+          ASSERT_EQ(index, single.size() - 1);
+        }
+      }
+      const std::uint32_t before = batch.size();
+      ASSERT_EQ(batch.insert_new_words(words.data(), hashes.data(), 0, count, count, cap),
+                expected_stop);
+      ASSERT_EQ(batch.size(), single.size());
+      for (std::uint32_t i = before; i < batch.size(); ++i)
+        ASSERT_EQ(batch.at(i)[0], single.at(i)[0]);
+      stopped_groups += expected_stop < count ? 1 : 0;
+    }
+    EXPECT_GT(stopped_groups, 0U);
+    EXPECT_EQ(batch.quotient_form(), bits == 41);
+    EXPECT_FALSE(starts_quotient);
+    // The table finds every state stored.
+    for (std::uint32_t i = 0; i < single.size(); ++i) {
+      const StateView v = single.at(i);
+      ASSERT_EQ(batch.insert_if_new(v, batch.state_hash(v)), StateStore::kAbsent);
+    }
+  }
+  // A probe past the farthest distance a quotient records: the store leaves the form and the
+  // states are numbered all the same.
+  constexpr std::uint32_t kBits = 20;
+  StateStore store(1, StateStore::kTaggedStates, kBits);
+  ASSERT_TRUE(store.quotient_form());
+  std::vector<StateWord> same_home;
+  std::vector<std::uint64_t> hashes;
+  for (StateWord w = 0; w < (StateWord{1} << kBits) && same_home.size() < 300; ++w) {
+    const auto h = store.state_hash(StateView(&w, 1));
+    if ((h & 1023) != 7) continue;
+    same_home.push_back(w);
+    hashes.push_back(h);
+  }
+  ASSERT_EQ(same_home.size(), 300U);
+  EXPECT_EQ(store.insert_new_words(same_home.data(), hashes.data(), 0, 300, 300, ~std::uint64_t{0}),
+            300U);
+  EXPECT_EQ(store.size(), 300U);
+  EXPECT_FALSE(store.quotient_form());
+  for (std::uint32_t i = 0; i < 300; ++i) ASSERT_EQ(store.at(i)[0], same_home[i]);
+}
+
 }  // namespace
 }  // namespace sfcv::engine
 

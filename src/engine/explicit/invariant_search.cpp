@@ -41,7 +41,7 @@ constexpr std::uint32_t kSerialChunkStates = 64;
 
 /// How many targets ahead a store look-up is started: each misses the cache twice (its slot,
 /// then the state the slot refers to), and the misses of several look-ups overlap.
-constexpr std::uint32_t kAhead = 32;
+constexpr std::uint32_t kAhead = StateStore::kLookAhead;
 
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
@@ -886,19 +886,31 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     just_violated.clear();
     const std::uint64_t max_states = limits.max_states;
     const std::size_t chunk_targets = hashes.size();
-    for (std::size_t k = first; k < last; ++k) {
-      if (k + kAhead < chunk_targets) store.prefetch_slot(hashes[k + kAhead]);
-      if (k + kAhead / 2 < chunk_targets) store.prefetch_state(hashes[k + kAhead / 2]);
+    if (words == 1) {
       // As the graph builder: no state is stored beyond the limit, and the state being expanded
       // when it is reached stays unexpanded.
-      if (max_states > 0 && store.size() > max_states) {
+      const std::uint32_t known = store.size();
+      const std::uint64_t size_cap = max_states > 0 ? max_states + 1 : ~std::uint64_t{0};
+      if (store.insert_new_words(targets.data(), hashes.data(), first, last, chunk_targets,
+                                 size_cap) < last)
         limit = "states";
-        break;
+      for (std::uint32_t t = known; t < store.size(); ++t) {
+        parent.push_back(s);
+        if (open > 0) judge(t);
       }
-      const auto t = store.insert_if_new(StateView(targets.data() + k * words, words), hashes[k]);
-      if (t == StateStore::kAbsent) continue;
-      parent.push_back(s);
-      if (open > 0) judge(t);
+    } else {
+      for (std::size_t k = first; k < last; ++k) {
+        if (k + kAhead < chunk_targets) store.prefetch_slot(hashes[k + kAhead]);
+        if (k + kAhead / 2 < chunk_targets) store.prefetch_state(hashes[k + kAhead / 2]);
+        if (max_states > 0 && store.size() > max_states) {
+          limit = "states";
+          break;
+        }
+        const auto t = store.insert_if_new(StateView(targets.data() + k * words, words), hashes[k]);
+        if (t == StateStore::kAbsent) continue;
+        parent.push_back(s);
+        if (open > 0) judge(t);
+      }
     }
     // A repeated last target counts as a look-up past the limit, as in the graph builder.
     if (limit.empty() && max_states > 0 && store.size() > max_states &&

@@ -80,6 +80,64 @@ std::uint32_t StateStore::add_word(std::size_t slot, StateWord word, std::uint64
   return size_++;
 }
 
+std::size_t StateStore::insert_new_words(const StateWord* words, const std::uint64_t* hashes,
+                                         std::size_t first, std::size_t last, std::size_t ahead_end,
+                                         std::uint64_t size_cap) {
+  if (words_ != 1) throw std::logic_error("StateStore::insert_new_words: wider states");
+  std::size_t k = first;
+  while (k < last) {
+    if (size_ >= size_cap) return k;
+    if (full_for_one_more()) grow();
+    if (!quotient_) {
+      // The indexed form: the slots refer to the stored states, compared in probe_word().
+      const std::uint64_t h = hashes[k];
+      if (k + kLookAhead < ahead_end) prefetch_slot(hashes[k + kLookAhead]);
+      if (k + kLookAhead / 2 < ahead_end) prefetch_state(hashes[k + kLookAhead / 2]);
+      const std::size_t i = probe_word(words[k], h);
+      if (slots_[i] == 0) add_word(i, words[k], h);
+      ++k;
+      continue;
+    }
+    // The quotient form, until the table grows or a probe runs past the farthest distance.
+    std::uint32_t* const slots = slots_.data();
+    const std::size_t mask = slots_.size() - 1;
+    const std::uint32_t slot_bits = slot_bits_;
+    const std::uint32_t step = 1U << remainder_bits_;
+    // Each one-word state takes the next index, up to the last a slot may number.
+    const std::uint64_t stop_at = std::min<std::uint64_t>(
+        {size_cap, states_before_growth(slots_.size()), std::uint64_t{kAbsent} - 1});
+    std::uint64_t size = size_;
+    bool no_room = false;
+    for (; k < last && size < stop_at; ++k) {
+      if (k + kLookAhead < ahead_end) __builtin_prefetch(slots + (hashes[k + kLookAhead] & mask));
+      const std::uint64_t h = hashes[k];
+      std::uint32_t expected = static_cast<std::uint32_t>(h >> slot_bits) | step;
+      std::size_t i = h & mask;
+      std::uint32_t s = slots[i];
+      for (std::uint32_t d = 0; s != expected && s != 0; s = slots[i]) {
+        if (d == kMaxDistance) {
+          no_room = true;
+          break;
+        }
+        ++d;
+        i = (i + 1) & mask;
+        expected += step;
+      }
+      if (no_room) break;
+      if (s == 0) {
+        slots[i] = expected;
+        data_.push_back(words[k]);
+        ++size;
+      }
+    }
+    size_ = static_cast<std::uint32_t>(size);
+    if (no_room) leave_quotient_form();
+    if (size_ == kAbsent - 1 && k < last)
+      throw std::length_error("StateStore: more than 2^32-2 states");
+  }
+  return k;
+}
+
 void StateStore::grow() {
   if (size_ == tag_limit()) {
     untag();  // more states than a tagged slot can number
