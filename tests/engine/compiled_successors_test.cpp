@@ -369,6 +369,60 @@ TEST(InvariantSearch, AgreesWithTheGraphCheckerOnNestedSteps) {
 
 // Charts large enough for many batches of the threaded search (4096 states each), with
 // violations found deep in the search, mid-batch state limits and complete explorations.
+/// A compiled enumerator that meets the deadline at one chosen state, on every thread, and
+/// may record the sources it is asked for (on one thread: the states in BFS order).
+class DeadlineAt final : public TargetEnumerator {
+ public:
+  using State = std::vector<StateWord>;
+  DeadlineAt(std::unique_ptr<TargetEnumerator> inner, State at, std::vector<State>* asked = nullptr)
+      : inner_(std::move(inner)), at_(std::move(at)), asked_(asked) {}
+  void targets(StateView state, std::vector<StateWord>& out) override {
+    if (asked_) asked_->emplace_back(state.begin(), state.end());
+    if (std::equal(state.begin(), state.end(), at_.begin(), at_.end()))
+      throw LimitReached(Limit::Time, "time limit reached (test)");
+    inner_->targets(state, out);
+  }
+  std::unique_ptr<TargetEnumerator> clone() const override {
+    return std::make_unique<DeadlineAt>(inner_->clone(), at_);
+  }
+  const StateCodec* codec() const override { return inner_->codec(); }
+
+ private:
+  std::unique_ptr<TargetEnumerator> inner_;
+  State at_;  ///< none when empty
+  std::vector<State>* asked_;
+};
+
+// A limit met inside a worker's enumeration: the chunk is enumerated again on the search's
+// thread, which meets it at the same state, so the search stops where one thread stops.
+TEST(InvariantSearch, ThreadsStopAtTheStateWhoseEnumerationMeetsALimit) {
+  auto broad = load(bench::parallel_branches_iec(16, true));
+  ASSERT_TRUE(broad);
+  const auto& ts = *broad->ts;
+  logic::CheckTask task;
+  task.system = &ts;
+  task.properties = {invariant(ts, "A0", "B0")};
+  std::vector<DeadlineAt::State> bfs;
+  {
+    DeadlineAt recording(make_compiled_enumerator(ts, model::Budget{}), {}, &bfs);
+    ASSERT_EQ(check_invariants(task, &recording, 1).states, 65537u);
+  }
+  ASSERT_EQ(bfs.size(), 65537u);
+  // Past the first blocks, where the workers enumerate ahead of the search.
+  for (const std::size_t index : {std::size_t{20000}, std::size_t{40000}}) {
+    SCOPED_TRACE(index);
+    DeadlineAt failing(make_compiled_enumerator(ts, model::Budget{}), bfs[index]);
+    const auto single = check_invariants(task, &failing, 1);
+    EXPECT_EQ(single.limit, "time");
+    EXPECT_FALSE(single.complete);
+    EXPECT_EQ(single.results[0].verdict, logic::Verdict::Unknown);
+    for (unsigned threads : {2U, 4U}) {
+      SCOPED_TRACE(std::to_string(threads) + " threads");
+      expect_same_report(check_invariants(task, &failing, threads), single);
+    }
+  }
+}
+
 TEST(InvariantSearch, ThreadsGiveTheOneThreadResults) {
   auto selector = load(bench::parallel_branches_iec(14, true));
   auto tanks = load(bench::tanks_iec(3, true));

@@ -116,44 +116,38 @@ TEST(StateStore, InsertsFindsAndGrows) {
 
 TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
   // Past `tagged_states` one-word states the slots stop holding hash bits: every state must
-  // still be found with its index, whether it was inserted or staged and committed.
+  // still be found with its index, whether it was inserted alone or with others.
   StateStore store(1, 1000);
   auto word = [](std::uint64_t i) { return (i * 0x9e3779b97f4a7c15ULL) >> 1; };
   for (std::uint64_t i = 0; i < 3000; ++i) {
     const StateWord w[1] = {word(i)};
     EXPECT_EQ(store.insert(w), std::make_pair(static_cast<std::uint32_t>(i), true));
   }
-  StateStore staged(1, 1000);
+  StateStore batched(1, 1000);
   std::vector<StateWord> buffer;
-  for (std::uint64_t i = 0; i < 3000; ++i) buffer.push_back(word(i));
-  for (std::uint64_t first = 0; first < 3000; first += 600) {
-    ASSERT_TRUE(staged.reserve_for_staging(600));
-    for (std::uint64_t i = first; i < first + 600; ++i) {
-      const StateView v(buffer.data() + i, 1);
-      const auto s = staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i),
-                                  [&](std::uint32_t e) { return buffer.data() + e; });
-      ASSERT_FALSE(s.stored);
-      ASSERT_TRUE(s.first);
-      EXPECT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
-    }
+  std::vector<std::uint64_t> hashes;
+  for (std::uint64_t i = 0; i < 3000; ++i) {
+    buffer.push_back(word(i));
+    hashes.push_back(batched.state_hash(StateView(&buffer.back(), 1)));
   }
-  for (auto* st : {&store, &staged})
+  for (std::size_t first = 0; first < 3000; first += 600)
+    ASSERT_EQ(batched.insert_new_words(buffer.data(), hashes.data(), first, first + 600, 3000,
+                                       ~std::uint64_t{0}),
+              first + 600);
+  for (auto* st : {&store, &batched})
     for (std::uint64_t i = 0; i < 3000; ++i) {
       const StateWord w[1] = {word(i)};
       EXPECT_EQ(st->find(w), static_cast<std::uint32_t>(i));
       EXPECT_FALSE(st->insert(w).second);
       EXPECT_EQ(st->insert_if_new(w, st->state_hash(w)), StateStore::kAbsent);
-      const auto s =
-          st->stage(w, st->state_hash(w), 0, [&](std::uint32_t e) { return buffer.data() + e; });
-      EXPECT_EQ(s.index, static_cast<std::uint32_t>(i));
     }
   const StateWord absent[1] = {1};
   EXPECT_EQ(store.find(absent), StateStore::kAbsent);
 }
 
 // The quotient form: a store asked only membership holds each one-word state in its slot once
-// the remainder fits. Every state must be found, whether inserted or staged and committed, as
-// the table grows from the indexed form into the quotient form.
+// the remainder fits. Every state must be found, whether inserted alone or with others, as the
+// table grows from the indexed form into the quotient form.
 TEST(StateStore, MembershipStoreHoldsStatesAsQuotientsAndFindsEveryOne) {
   constexpr std::uint32_t kBits = 41;  // indexed below 2^18 slots, quotients from there on
   auto word = [](std::uint64_t i) { return (i * 0x9e3779b97f4a7c15ULL) >> (64 - kBits); };
@@ -165,35 +159,28 @@ TEST(StateStore, MembershipStoreHoldsStatesAsQuotientsAndFindsEveryOne) {
     ASSERT_EQ(inserted.insert(w), std::make_pair(static_cast<std::uint32_t>(i), true));
   }
   EXPECT_TRUE(inserted.quotient_form());
-  StateStore staged(1, StateStore::kTaggedStates, kBits);
+  StateStore batched(1, StateStore::kTaggedStates, kBits);
   std::vector<StateWord> buffer;
-  for (std::uint64_t i = 0; i < kCount; ++i) buffer.push_back(word(i));
-  for (std::uint64_t first = 0; first < kCount; first += 50000) {
-    ASSERT_TRUE(staged.reserve_for_staging(50000));
-    for (std::uint64_t i = first; i < first + 50000; ++i) {
-      const StateView v(buffer.data() + i, 1);
-      ASSERT_FALSE(staged.stored_before_staging(v, staged.state_hash(v)));
-      const auto s = staged.stage(v, staged.state_hash(v), static_cast<std::uint32_t>(i),
-                                  [&](std::uint32_t e) { return buffer.data() + e; });
-      ASSERT_FALSE(s.stored);
-      ASSERT_FALSE(s.no_room);
-      ASSERT_TRUE(s.first);
-      ASSERT_EQ(staged.commit_staged(s.slot, v), static_cast<std::uint32_t>(i));
-    }
+  std::vector<std::uint64_t> hashes;
+  for (std::uint64_t i = 0; i < kCount; ++i) {
+    buffer.push_back(word(i));
+    hashes.push_back(batched.state_hash(StateView(&buffer.back(), 1)));
   }
-  EXPECT_TRUE(staged.quotient_form());
-  for (auto* st : {&inserted, &staged}) {
+  for (std::size_t first = 0; first < kCount; first += 50000)
+    ASSERT_EQ(batched.insert_new_words(buffer.data(), hashes.data(), first, first + 50000, kCount,
+                                       ~std::uint64_t{0}),
+              first + 50000);
+  EXPECT_TRUE(batched.quotient_form());
+  for (auto* st : {&inserted, &batched}) {
     for (std::uint64_t i = 0; i < kCount; ++i) {
       const StateWord w[1] = {word(i)};
       ASSERT_EQ(st->insert(w), std::make_pair(StateStore::kAbsent, false));
-      ASSERT_TRUE(st->stored_before_staging(w, st->state_hash(w)));
       ASSERT_EQ(st->at(static_cast<std::uint32_t>(i))[0], word(i));
     }
     // Words one bit away from stored ones (same home for some, other remainders) are absent.
     for (std::uint64_t i = 0; i < 100; ++i) {
       const StateWord w[1] = {word(i) ^ (std::uint64_t{1} << (i % kBits))};
       if (std::find(buffer.begin(), buffer.end(), w[0]) != buffer.end()) continue;
-      EXPECT_FALSE(st->stored_before_staging(w, st->state_hash(w)));
       const auto size = st->size();
       EXPECT_EQ(st->insert_if_new(w, st->state_hash(w)), size);
     }
@@ -229,18 +216,6 @@ TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
     if ((store.state_hash(one) & 1023) == 7) same_home.push_back(w);
   }
   ASSERT_EQ(same_home.size(), 300U);
-  // Staging meets the limit first: it refuses, and stages nothing.
-  ASSERT_TRUE(store.reserve_for_staging(300));
-  bool refused = false;
-  for (std::uint32_t i = 0; i < same_home.size() && !refused; ++i) {
-    const StateView v(same_home.data() + i, 1);
-    const auto s = store.stage(v, store.state_hash(v), i,
-                               [&](std::uint32_t e) { return same_home.data() + e; });
-    refused = s.no_room;
-  }
-  EXPECT_TRUE(refused);
-  store.drop_staged();
-  ASSERT_TRUE(store.quotient_form());
   for (std::uint32_t i = 0; i < same_home.size(); ++i) {
     const StateView v(same_home.data() + i, 1);
     ASSERT_EQ(store.insert(v), std::make_pair(i, true));

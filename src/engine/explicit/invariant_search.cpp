@@ -7,6 +7,7 @@
 #include <exception>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -426,284 +427,148 @@ class WorkerPool {
   std::exception_ptr error_;
 };
 
-/// A batch of stored states of the parallel search, expanded on every thread at once. A thread
-/// takes kChunkStates sources at a time, enumerates their distinct targets and looks them up
-/// while they are in its cache (a whole batch enumerated first and looked up afterwards cost
-/// more per look-up: docs/benchmarks.md). A target not stored is staged by the first pair that
-/// looks it up and claimed by the first pair in serial order that reaches it; the search
-/// numbers the new states in claim order, which is the serial search's.
+/// What the serial search enumerates at once: the distinct targets of a run of stored states
+/// (a chunk), and their hashes.
+struct ChunkTargets {
+  std::vector<StateWord> targets;     ///< each source's distinct targets, one after another
+  std::vector<std::uint32_t> ends;    ///< per source, the end of its targets (in words)
+  std::vector<std::uint8_t> repeats;  ///< per source, whether its last target repeated one
+  std::vector<std::uint64_t> hashes;  ///< per target, its state_hash()
+  std::vector<std::uint32_t> table;   ///< keep_distinct_targets()'s
+
+  /// Enumerates the `count` states `sources` of `store`. A limit met inside the enumeration
+  /// is returned (the sources in `ends` were enumerated before it), except Limit::Enumeration,
+  /// which is rethrown.
+  std::optional<Limit> enumerate(TargetEnumerator& e, const StateStore& store, StateView sources,
+                                 std::uint32_t count) {
+    const std::uint32_t words = store.words_per_state();
+    targets.clear();
+    ends.clear();
+    repeats.clear();
+    std::optional<Limit> stopped;
+    try {
+      e.targets_of(sources, count, targets, ends);
+    } catch (const LimitReached& stop) {
+      if (stop.which() == Limit::Enumeration) throw;
+      stopped = stop.which();
+    }
+    keep_distinct_targets_of_each(targets, ends, words, table, repeats);
+    hashes.resize(targets.size() / words);
+    for (std::size_t k = 0; k < hashes.size(); ++k)
+      hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
+    return stopped;
+  }
+};
+
+/// The serial search on several threads: while this thread stores the targets of one block of
+/// kStates sources, the workers enumerate the next block's chunks, whose sources are stored
+/// already. The search itself is the one-thread search, so every count, verdict and trace is
+/// its own: a chunk the workers did not enumerate (a limit, an error) is enumerated again on
+/// this thread, where it meets the limit or the error as the one-thread search does.
 ///
-/// A pair's key is its chunk and its place among the chunk's targets, so keys follow the
-/// serial order; a staged state's entry in the store is the key of the pair that staged it.
-class ParallelBatch {
+/// The sources of a block do not move while the workers read them: before they start, the
+/// store makes room for as many new states as the block being stored has targets.
+class EnumerationAhead {
  public:
   static constexpr std::uint32_t kStates = 4096;
-  static constexpr std::uint32_t kChunkStates = 64;
-  struct Entry {
-    std::uint32_t claim;  ///< the key of the first pair in serial order reaching the state
-    std::uint32_t key;    ///< the key of the pair that staged it, whose words hold it
-    std::uint32_t slot;
-  };
 
-  /// Expands the stored states [begin, end) on every thread of `pool`; afterwards entries()
-  /// lists their new targets by claim. False when the store cannot stage them (more states
-  /// than it numbers, a chunk of 2^24 targets, a slot its quotient form cannot record):
-  /// nothing is staged then. An exception of an enumeration (a limit) is rethrown, with
-  /// nothing staged.
-  bool expand(WorkerPool& pool, StateStore& store, std::uint32_t begin, std::uint32_t end) {
-    begin_ = begin;
-    end_ = end;
-    words_ = store.words_per_state();
-    num_chunks_ = (end - begin + kChunkStates - 1) / kChunkStates;
-    if (chunks_.size() < num_chunks_) chunks_.resize(num_chunks_);
-    // Chunks prepare() enumerated for this batch are only staged.
-    const std::uint32_t prepared = begin == prepared_begin_ ? prepared_chunks_ : 0;
-    for (std::uint32_t c = prepared; c < num_chunks_; ++c) chunks_[c].enumerated = false;
-    prepared_chunks_ = 0;
-    unstageable_.store(false);
-    if (!run(pool, store, room_for(begin, end))) {
-      // More targets than the room made: stage them again in a table that holds them all.
-      if (unstageable_.load() || !run(pool, store, pairs())) return false;
+  /// Chunks of `chunk_states` sources, a power of two dividing kStates.
+  EnumerationAhead(WorkerPool& pool, StateStore& store, std::uint32_t chunk_states)
+      : pool_(pool), store_(store), chunk_states_(chunk_states), chunks_(kStates / chunk_states) {
+    for (auto* set : {&current_, &next_}) set->chunks.resize(chunks_);
+  }
+  ~EnumerationAhead() {
+    try {
+      finish();
+    } catch (...) {  // the job catches what an enumeration throws
     }
-    pairs_per_state_ = std::max<std::uint64_t>(pairs_per_state_, pairs() / (end - begin) + 1);
-    for (auto& e : entries_) e.claim = claim_of(e.key);
+  }
+  EnumerationAhead(const EnumerationAhead&) = delete;
+  EnumerationAhead& operator=(const EnumerationAhead&) = delete;
+
+  /// The search begins the block at `begin` (a multiple of kStates), with `store` holding
+  /// the sources up to its size: takes the block the workers enumerated, enumerates it on
+  /// every thread when they did not and it is stored, and starts the next block on the
+  /// workers when its sources are stored and this block's are enumerated.
+  void begin_block(std::uint32_t begin, std::uint64_t memory_in_use) {
+    finish();
+    std::swap(current_, next_);
+    StateStore& store = store_;
+    if (current_.begin != begin && std::uint64_t{begin} + kStates <= store.size()) {
+      post(current_, begin, store, memory_in_use);
+      join(true);
+    }
+    if (current_.begin != begin) return;
+    std::uint64_t targets = 0;
+    for (const auto& c : current_.chunks) {
+      if (!c.ready) return;  // its targets are not counted: the workers wait
+      targets += c.hashes.size();
+    }
+    if (std::uint64_t{begin} + 2 * kStates > store.size()) return;
+    store.reserve_states(targets);
+    post(next_, begin + kStates, store, memory_in_use);
+  }
+  /// Hands over the chunk of sources starting at `from` when the workers enumerated it.
+  bool take(std::uint32_t from, ChunkTargets& chunk) {
+    if (from < current_.begin || from - current_.begin >= kStates ||
+        (from - current_.begin) % chunk_states_ != 0)
+      return false;
+    auto& c = current_.chunks[(from - current_.begin) / chunk_states_];
+    if (!c.ready) return false;
+    c.ready = false;
+    std::swap(chunk, static_cast<ChunkTargets&>(c));
     return true;
   }
-  /// The batch's new states, in claim order once sort_entries() has run (after expand(), on
-  /// one thread while the workers prepare the next batch).
-  const std::vector<Entry>& entries() const { return entries_; }
-  void sort_entries() {
-    std::sort(entries_.begin(), entries_.end(),
-              [](const Entry& a, const Entry& b) { return a.claim < b.claim; });
-  }
-  /// Grows the store for the batch [begin, end) before expand() does, so that the table
-  /// grows on this thread while the workers prepare the batch.
-  void reserve_room(StateStore& store, std::uint32_t begin, std::uint32_t end) const {
-    static_cast<void>(store.reserve_for_staging(room_for(begin, end)));
-  }
-
-  std::uint32_t end() const { return end_; }
-  /// The keys of the pairs of source `s`: [first_key(s), end_key(s)), contiguous.
-  std::uint32_t first_key(std::uint32_t s) const {
-    const auto i = s - begin_;
-    return i % kChunkStates == 0 ? key(i / kChunkStates, 0)
-                                 : end_key_in_chunk(i / kChunkStates, i % kChunkStates - 1);
-  }
-  std::uint32_t end_key(std::uint32_t s) const {
-    const auto i = s - begin_;
-    return end_key_in_chunk(i / kChunkStates, i % kChunkStates);
-  }
-  /// Whether the last target the enumeration gave for source `s` repeats an earlier one.
-  bool ends_with_repeat(std::uint32_t s) const {
-    const auto i = s - begin_;
-    return chunks_[i / kChunkStates].repeats[i % kChunkStates] != 0;
-  }
-  /// The words of the target of the pair of key `k`.
-  const StateWord* target(std::uint32_t k) const {
-    return chunks_[k >> kPairBits].targets.data() +
-           static_cast<std::size_t>(k & kPairMask) * words_;
+  /// Waits for the workers' job to end (before the search ends, or begins their block).
+  void finish() {
+    if (running_) join(false);
   }
 
  private:
-  static constexpr std::uint32_t kPairBits = 24;
-  static constexpr std::uint32_t kPairMask = (1U << kPairBits) - 1;
-  // Keys stay below the staged bit of a slot.
-  static_assert(kStates / kChunkStates <= (1U << (31 - kPairBits)));
-
-  struct Chunk {
-    bool enumerated = false;
-    std::vector<StateWord> targets;
-    std::vector<std::uint32_t> ends;    ///< per state: end of its targets in `targets`, in words
-    std::vector<std::uint8_t> repeats;  ///< per state: its last target repeats an earlier one
-    std::vector<std::uint32_t> table;   ///< scratch of keep_distinct_targets
-    std::vector<std::uint32_t> claims;  ///< per pair that staged a state: its claim
+  struct Chunk : ChunkTargets {
+    bool ready = false;  ///< enumerated by a worker
   };
-  static std::uint32_t key(std::uint32_t chunk, std::uint32_t pair) {
-    return chunk << kPairBits | pair;
-  }
-  std::uint32_t end_key_in_chunk(std::uint32_t c, std::uint32_t i) const {
-    return key(c, chunks_[c].ends[i] / words_);
-  }
-  std::uint32_t& claim_of(std::uint32_t k) { return chunks_[k >> kPairBits].claims[k & kPairMask]; }
-  std::uint64_t pairs() const {
-    std::uint64_t n = 0;
-    for (std::uint32_t c = 0; c < num_chunks_; ++c) n += chunks_[c].targets.size() / words_;
-    return n;
-  }
+  struct Block {
+    std::uint32_t begin = kNone;
+    std::vector<Chunk> chunks;
+  };
 
-  /// One pass over the chunks on every thread, after making room for `reserve` new states.
-  /// False, with nothing staged, when their targets did not fit in the room (every chunk is
-  /// enumerated then) or the store cannot number them.
-  bool run(WorkerPool& pool, StateStore& store, std::uint64_t reserve) {
-    entries_.clear();
-    if (!store.reserve_for_staging(reserve)) {
-      unstageable_.store(true);
-      return false;
-    }
-    room_ = store.staging_room();
-    used_.store(0);
-    full_.store(false);
-    range_.store(std::uint64_t{num_chunks_} << 32);
-    arrivals_.store(0);
-    pool.post([&](TargetEnumerator& e) { expand_chunks(e, store); });
-    try {
-      pool.join();
-    } catch (...) {
-      store.drop_staged();
-      throw;
-    }
-    if (!full_.load()) return true;
-    store.drop_staged();
-    return false;
-  }
-
-  /// Enumerates chunk `c` of the batch at begin_, of `sources` sources in all.
-  void enumerate_chunk(TargetEnumerator& e, const StateStore& store, std::uint32_t c,
-                       std::uint32_t sources) {
-    auto& chunk = chunks_[c];
-    chunk.targets.clear();
-    chunk.ends.clear();
-    chunk.repeats.clear();
-    const auto first = c * kChunkStates;
-    const auto last = std::min(first + kChunkStates, sources);
-    e.targets_of(store.range(begin_ + first, last - first), last - first, chunk.targets,
-                 chunk.ends);
-    keep_distinct_targets_of_each(chunk.targets, chunk.ends, words_, chunk.table, chunk.repeats);
-    chunk.enumerated = true;
-  }
-
- public:
-  /// Starts enumerating, on the workers of `pool`, the whole chunks of the batch that will
-  /// begin at `begin` whose sources lie below `stored` (stored already, so they do not move
-  /// while the caller stores more: it reserved the room). Meanwhile the caller commits the
-  /// batch before, and finish_preparing() ends the job; expand() then only stages those chunks.
-  void prepare(WorkerPool& pool, const StateStore& store, std::uint32_t begin,
-               std::uint32_t stored) {
-    prepared_begin_ = begin;
-    prepared_chunks_ = stored > begin ? std::min(stored - begin, kStates) / kChunkStates : 0;
-    if (prepared_chunks_ == 0) return;
-    begin_ = begin;
-    words_ = store.words_per_state();
-    if (chunks_.size() < prepared_chunks_) chunks_.resize(prepared_chunks_);
-    for (std::uint32_t c = 0; c < prepared_chunks_; ++c) chunks_[c].enumerated = false;
-    next_prepared_.store(0);
-    preparing_ = true;
-    pool.post([this, &store](TargetEnumerator& e) {
+  void post(Block& block, std::uint32_t begin, const StateStore& store,
+            std::uint64_t memory_in_use) {
+    block.begin = begin;
+    for (auto& c : block.chunks) c.ready = false;
+    next_chunk_.store(0);
+    const StateView sources = store.range(begin, kStates);
+    const std::uint32_t words = store.words_per_state();
+    running_ = true;
+    pool_.post([this, &block, &store, sources, words, memory_in_use](TargetEnumerator& e) {
+      e.set_memory_in_use(memory_in_use);
       for (;;) {
-        const auto c = next_prepared_.fetch_add(1);
-        if (c >= prepared_chunks_) break;
-        enumerate_chunk(e, store, c, prepared_chunks_ * kChunkStates);
+        const auto c = next_chunk_.fetch_add(1);
+        if (c >= chunks_) break;
+        auto& chunk = block.chunks[c];
+        const StateView run(sources.data() + std::size_t{c} * chunk_states_ * words,
+                            std::size_t{chunk_states_} * words);
+        try {
+          chunk.ready = !chunk.enumerate(e, store, run, chunk_states_);
+        } catch (...) {
+          // Enumerated again on the search's thread, which meets the error itself.
+        }
       }
     });
   }
-  /// Ends prepare()'s job, taking a share of what is left. A limit met by an enumeration
-  /// drops every prepared chunk: expand() enumerates them again, and meets it there.
-  void finish_preparing(WorkerPool& pool) {
-    if (!std::exchange(preparing_, false)) return;
-    try {
-      pool.join();
-    } catch (const LimitReached&) {
-      prepared_chunks_ = 0;
-    }
+  void join(bool help) {
+    running_ = false;
+    pool_.join(help);
   }
 
- private:
-  void expand_chunks(TargetEnumerator& e, StateStore& store) {
-    std::vector<std::uint64_t> hashes;
-    std::vector<Entry> mine;
-    const bool from_back = (arrivals_.fetch_add(1) & 1U) != 0;
-    for (;;) {
-      const auto c = take(from_back);
-      if (c == kNone) break;
-      auto& chunk = chunks_[c];
-      if (!chunk.enumerated) enumerate_chunk(e, store, c, end_ - begin_);
-      const std::size_t pairs = chunk.targets.size() / words_;
-      if (pairs > kPairMask) unstageable_.store(true, std::memory_order_relaxed);
-      // Past the room the table would fill: the rest is only enumerated, for a second run.
-      if (unstageable_.load(std::memory_order_relaxed) || full_.load(std::memory_order_relaxed) ||
-          used_.fetch_add(pairs) + pairs > room_) {
-        full_.store(true, std::memory_order_relaxed);
-        continue;
-      }
-      stage_chunk(c, store, hashes, mine);
-    }
-    const std::lock_guard<std::mutex> lock(mutex_);
-    entries_.insert(entries_.end(), mine.begin(), mine.end());
-  }
-
-  void stage_chunk(std::uint32_t c, StateStore& store, std::vector<std::uint64_t>& hashes,
-                   std::vector<Entry>& mine) {
-    auto& chunk = chunks_[c];
-    const auto pairs = static_cast<std::uint32_t>(chunk.targets.size() / words_);
-    chunk.claims.resize(pairs);
-    hashes.resize(pairs);
-    auto target_of = [&](std::uint32_t p) { return StateView(target(key(c, p)), words_); };
-    for (std::uint32_t p = 0; p < pairs; ++p) hashes[p] = store.state_hash(target_of(p));
-    auto words_of = [this](std::uint32_t k) { return target(k); };
-    // As the serial search: the look-ups miss the cache, so the slot of the pair kAhead ahead,
-    // and the state its slot refers to kAhead / 2 ahead, are loaded while this one is looked up.
-    for (std::uint32_t p = 0; p < pairs; ++p) {
-      if (p + kAhead < pairs) store.prefetch_slot(hashes[p + kAhead]);
-      if (p + kAhead / 2 < pairs) store.prefetch_state(hashes[p + kAhead / 2]);
-      const auto t = target_of(p);
-      if (store.stored_before_staging(t, hashes[p])) continue;
-      const auto k = key(c, p);
-      // Written before stage() can publish pair p, read by the threads that find it there.
-      std::atomic_ref<std::uint32_t>(chunk.claims[p]).store(k, std::memory_order_relaxed);
-      const auto found = store.stage(t, hashes[p], k, words_of);
-      if (found.no_room) {
-        // The quotient form cannot record the slot (a probe too long, never seen at the
-        // loads kept): nothing of the batch is kept, and the search goes on serially, where
-        // the store leaves that form.
-        unstageable_.store(true, std::memory_order_relaxed);
-        full_.store(true, std::memory_order_relaxed);
-        return;
-      }
-      if (found.stored) continue;
-      if (found.first) {
-        mine.push_back({0, k, found.slot});
-        continue;
-      }
-      std::atomic_ref<std::uint32_t> claim(claim_of(found.entry));
-      auto seen = claim.load(std::memory_order_relaxed);
-      while (k < seen && !claim.compare_exchange_weak(seen, k, std::memory_order_relaxed)) {
-      }
-    }
-  }
-
-  /// The targets to make room for when expanding the sources [begin, end): as many per source
-  /// as the most any batch gave so far.
-  std::uint64_t room_for(std::uint32_t begin, std::uint32_t end) const {
-    return std::uint64_t{end - begin} * pairs_per_state_;
-  }
-
-  std::uint32_t begin_ = 0, end_ = 0, words_ = 1;
-  std::vector<Chunk> chunks_;
-  std::uint32_t num_chunks_ = 0;
-  std::uint64_t pairs_per_state_ = 16;  ///< the most per source of a batch so far, plus one
-  std::uint32_t prepared_begin_ = kNone, prepared_chunks_ = 0;
-  std::atomic<std::uint32_t> next_prepared_{0};
-  bool preparing_ = false;
-  std::vector<Entry> entries_;
-  /// The chunks not taken yet, [low, high) as high << 32 | low: half the threads take them
-  /// from the front, half from the back, so that each works on sources far from the others'.
-  std::atomic<std::uint64_t> range_{0};
-  std::atomic<std::uint32_t> arrivals_{0};
-  std::uint32_t take(bool from_back) {
-    auto r = range_.load(std::memory_order_relaxed);
-    for (;;) {
-      const auto low = static_cast<std::uint32_t>(r), high = static_cast<std::uint32_t>(r >> 32);
-      if (low >= high) return kNone;
-      const auto next = from_back ? (r - (std::uint64_t{1} << 32)) : r + 1;
-      if (range_.compare_exchange_weak(r, next, std::memory_order_relaxed))
-        return from_back ? high - 1 : low;
-    }
-  }
-  std::uint64_t room_ = 0;              ///< how many pairs may stage states in this run
-  std::atomic<std::uint64_t> used_{0};  ///< the pairs of the chunks staged so far
-  std::atomic<bool> full_{false};       ///< a chunk did not fit in the room
-  std::atomic<bool> unstageable_{false};
-  std::mutex mutex_;
+  WorkerPool& pool_;
+  StateStore& store_;
+  std::uint32_t chunk_states_;
+  std::uint32_t chunks_;
+  Block current_, next_;
+  std::atomic<std::uint32_t> next_chunk_{0};
+  bool running_ = false;
 };
 
 }  // namespace
@@ -838,7 +703,6 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
 
   std::string limit = initial.limit;
   std::uint64_t edges = 0;
-  std::vector<StateWord> targets;
   const std::uint32_t words = store.words_per_state();
   auto memory = [&] { return store.memory_bytes() + parent.resident_bytes(); };
   // BFS numbers states level by level: [level_begin, level_end) are the states at `level`.
@@ -873,12 +737,11 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     return true;
   };
   // The serial search enumerates the stored states [chunk_begin, chunk_end) together: their
-  // distinct targets (one edge per source and target, as the graph) are `targets`, the end of
-  // each one's in `ends` (in words), whether its last target repeated an earlier one in
-  // `repeats`, and each target's hash in `hashes`.
-  std::vector<std::uint32_t> ends, table;
-  std::vector<std::uint8_t> repeats;
-  std::vector<std::uint64_t> hashes;
+  // distinct targets (one edge per source and target, as the graph) are in `chunk`.
+  ChunkTargets chunk;
+  const auto& targets = chunk.targets;
+  const auto& ends = chunk.ends;
+  const auto& hashes = chunk.hashes;
   std::uint32_t chunk_begin = 0, chunk_end = 0;
   // Stores the targets [first, last) of state s and judges the new ones. False: a limit
   // stopped it. The look-ups of the chunk's later targets are started early.
@@ -914,7 +777,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     }
     // A repeated last target counts as a look-up past the limit, as in the graph builder.
     if (limit.empty() && max_states > 0 && store.size() > max_states &&
-        repeats[s - chunk_begin] != 0)
+        chunk.repeats[s - chunk_begin] != 0)
       limit = "states";
     if (!limit.empty()) {
       // As in the graph, the state stays unexpanded and what it reached has no known path.
@@ -934,110 +797,41 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   // (Limit::Enumeration) still ends the run: the caller names it.
   std::uint32_t stopped_at = kNone;  ///< the state whose enumeration threw
   Limit stopped_by = Limit::Time;
+  WorkerPool pool(*enumerator, threads);
+  // Chunks are aligned, so the workers of EnumerationAhead enumerate the chunks the search does.
+  const std::uint32_t chunk_states = std::min(kSerialChunkStates, poll_mask + 1);
+  std::optional<EnumerationAhead> ahead;  // ends its job before the pool ends
   auto enumerate = [&](std::uint32_t from) {
-    const auto end = static_cast<std::uint32_t>(
-        std::min<std::uint64_t>({store.size(), std::uint64_t{from} + kSerialChunkStates,
-                                 (std::uint64_t{from} | poll_mask) + 1}));
-    targets.clear();
-    ends.clear();
     chunk_begin = from;
-    try {
-      if (limits.max_memory_bytes > 0) enumerator->set_memory_in_use(memory());
-      enumerator->targets_of(store.range(from, end - from), end - from, targets, ends);
-    } catch (const LimitReached& stop) {
-      if (stop.which() == Limit::Enumeration) throw;
+    if (ahead && ahead->take(from, chunk)) {
+      chunk_end = from + static_cast<std::uint32_t>(ends.size());
+      return;
+    }
+    const auto end = static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(store.size(), (from | (chunk_states - 1)) + std::uint64_t{1}));
+    if (limits.max_memory_bytes > 0) enumerator->set_memory_in_use(memory());
+    if (const auto stop =
+            chunk.enumerate(*enumerator, store, store.range(from, end - from), end - from)) {
       stopped_at = from + static_cast<std::uint32_t>(ends.size());
-      stopped_by = stop.which();
+      stopped_by = *stop;
     }
     chunk_end = from + static_cast<std::uint32_t>(ends.size());
-    repeats.clear();
-    keep_distinct_targets_of_each(targets, ends, words, table, repeats);
-    hashes.resize(targets.size() / words);
-    for (std::size_t k = 0; k < hashes.size(); ++k)
-      hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
   };
+  if (pool.parallel()) ahead.emplace(pool, store, chunk_states);
   std::uint32_t s = 0;
-  // Two batches: while this thread commits one, the workers enumerate the next one's sources.
-  ParallelBatch batches[2];  // outlive the pool's workers
-  unsigned current = 0;
-  WorkerPool pool(*enumerator, threads);
-  // A batch whose enumeration threw (a limit, on some thread) or that the store cannot stage:
-  // the search goes on from its first state on this thread alone, so the state that stops it
-  // is the one-thread search's.
-  bool serial = !pool.parallel();
-  if (!serial) {
-    bool stopped = false;
-    while (!stopped && s < store.size()) {
-      auto& batch = batches[current];
-      auto& next = batches[current ^ 1];
-      current ^= 1;
-      try {
-        if (!batch.expand(pool, store, s, std::min(store.size(), s + ParallelBatch::kStates))) {
-          serial = true;
-          break;
-        }
-      } catch (const LimitReached& stop) {
-        if (stop.which() == Limit::Enumeration) throw;
-        serial = true;
-        break;
-      }
-      // The batch's new states are numbered, stored and judged here, in the serial search's
-      // order: source by source, each source's new states in the order of their first pairs.
-      const auto& fresh = batch.entries();
-      // The workers enumerate the next batch's stored sources meanwhile: they read the stored
-      // states, which the room reserved keeps in place.
-      store.reserve_states(fresh.size());
-      next.prepare(pool, store, batch.end(), store.size());
-      batch.sort_entries();
-      std::size_t k = 0;
-      for (; s < batch.end(); ++s) {
-        if (!limit.empty() || open == 0 || !before(s)) {
-          stopped = true;
-          break;
-        }
-        const auto pairs_end = batch.end_key(s);
-        just_violated.clear();
-        for (; k < fresh.size() && fresh[k].claim < pairs_end; ++k) {
-          const auto t =
-              store.commit_staged(fresh[k].slot, StateView(batch.target(fresh[k].key), words));
-          parent.push_back(s);
-          if (open > 0) judge(t);
-          // As expand(): the next target of this source, if any (a repeat counts), finds
-          // the store past the limit.
-          if (limits.max_states > 0 && store.size() > limits.max_states &&
-              (fresh[k].claim + 1 < pairs_end || batch.ends_with_repeat(s))) {
-            limit = "states";
-            ++k;
-            break;
-          }
-        }
-        if (!limit.empty()) {
-          for (auto i : just_violated) violation[i] = kNone;
-          open += just_violated.size();
-          stopped = true;
-          break;
-        }
-        edges += pairs_end - batch.first_key(s);
-      }
-      if (k < fresh.size()) store.drop_staged();
-      // Meanwhile too: the table grows for the next batch (it holds no staged state now).
-      if (!stopped && s < store.size())
-        next.reserve_room(store, s, std::min(store.size(), s + ParallelBatch::kStates));
-      next.finish_preparing(pool);
+  for (; limit.empty() && open > 0 && s < store.size(); ++s) {
+    if (!before(s)) break;
+    if (ahead && s % EnumerationAhead::kStates == 0)
+      ahead->begin_block(s, limits.max_memory_bytes > 0 ? memory() : 0);
+    if (s >= chunk_end && s != stopped_at) enumerate(s);
+    if (s == stopped_at) {
+      limit = to_string(stopped_by);
+      break;
     }
+    const std::uint32_t from = s == chunk_begin ? 0 : ends[s - chunk_begin - 1];
+    if (!expand(s, from / words, ends[s - chunk_begin] / words)) break;
   }
-  if (serial) {
-    for (; limit.empty() && open > 0 && s < store.size(); ++s) {
-      if (!before(s)) break;
-      if (s >= chunk_end && s != stopped_at) enumerate(s);
-      if (s == stopped_at) {
-        limit = to_string(stopped_by);
-        break;
-      }
-      const std::uint32_t from = s == chunk_begin ? 0 : ends[s - chunk_begin - 1];
-      if (!expand(s, from / words, ends[s - chunk_begin] / words)) break;
-    }
-  }
+  ahead.reset();
   const bool complete = limit.empty() && s >= store.size();
 
   logic::CheckReport report;

@@ -1,7 +1,6 @@
 #include "engine/explicit/state_store.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <stdexcept>
 
 namespace sfcv::engine {
@@ -148,7 +147,7 @@ void StateStore::grow() {
 
 void StateStore::untag() {
   for (std::uint32_t& s : slots_)
-    if (s != 0 && (s & kStagedBit) == 0) s &= ~tag_mask_;
+    if (s != 0) s &= ~tag_mask_;
   tag_mask_ = 0;
 }
 
@@ -193,29 +192,6 @@ void StateStore::rehash(std::size_t slot_count) {
     table[i] = value;
   }
   slots_ = std::move(table);
-}
-
-bool StateStore::reserve_for_staging(std::uint64_t count) {
-  if (size_ + count >= kStagedBit - 1) return false;
-  if (tag_mask_ && size_ + count >= tagged_states_)
-    untag();  // the staged states may number past the tagged slots' indices
-  // No fuller than insert() keeps it once every staged state is new.
-  while (size_ + count > states_before_growth(slots_.size())) grow();
-  return true;
-}
-
-std::uint32_t StateStore::commit_staged(std::uint32_t slot, StateView state) {
-  const std::uint64_t h = state_hash(state);
-  const std::uint32_t value = slot_of(size_, h, slot);
-  data_.append(state.data(), words_);
-  if (words_ > 1) hashes_.push_back(static_cast<std::uint32_t>(h >> 32));
-  slots_[slot] = value;
-  return size_++;
-}
-
-void StateStore::drop_staged() {
-  // Emptying a slot would cut the probe sequences through it: the table is rebuilt instead.
-  rehash(slots_.size());
 }
 
 std::size_t StateStore::memory_bytes() const {

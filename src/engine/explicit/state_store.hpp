@@ -14,7 +14,6 @@
 // the state's home slot, and the slot keeps the rest and the distance from home. A look-up
 // then reads one cache line, not two, and the table keeps its 4 bytes per slot.
 
-#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -54,9 +53,8 @@ class StateStore {
   /// `tagged_states`: how many one-word states are stored with a tag in their slot (at most
   /// the 2^24 - 2 that the slot can number; fewer only to test the change of mode).
   /// `membership_bits` > 0: the states are one word of at most that many bits, and the store is
-  /// never asked the index of a state stored before (find() is refused, insert() and stage()
-  /// give kAbsent for it), so it may hold them in quotient form. A wider state is then a logic
-  /// error.
+  /// never asked the index of a state stored before (find() is refused, insert() gives kAbsent
+  /// for it), so it may hold them in quotient form. A wider state is then a logic error.
   explicit StateStore(std::uint32_t words_per_state, std::uint32_t tagged_states = kTaggedStates,
                       std::uint32_t membership_bits = 0);
 
@@ -121,73 +119,6 @@ class StateStore {
 
   static constexpr std::uint32_t kAbsent = ~0U;
 
-  // Staging: the targets of a batch of sources are looked up on several threads at once, and
-  // the new ones are numbered afterwards, on one thread, in the order the serial insertion
-  // would have numbered them. A staged state lives in the caller's buffer (`staged_words`,
-  // `words_per_state` words per entry) and its slot refers to that entry until it is committed.
-  // Between reserve_for_staging() and the last commit_staged() or drop_staged(), only stage()
-  // may run concurrently, and only with itself.
-
-  /// What stage() found.
-  struct Staged {
-    bool stored;          ///< the state was stored before the staging began
-    std::uint32_t index;  ///< when stored: its index (kAbsent when only membership is asked)
-    std::uint32_t entry;  ///< when staged: the entry of the buffer that holds it
-    std::uint32_t slot;   ///< when staged: its slot, for commit_staged()
-    bool first;           ///< when staged: this call staged it
-    bool no_room;         ///< not staged: the quotient form cannot record the state's slot
-  };
-  /// Grows the table so that `count` states can be staged without growing; false when the
-  /// store cannot number that many more states (more than 2^31-2 in all).
-  bool reserve_for_staging(std::uint64_t count);
-  /// How many states may be staged past those reserve_for_staging() made room for: the table
-  /// keeps an eighth of its slots empty, so that every probe ends.
-  std::uint64_t staging_room() const {
-    const std::size_t usable = slots_.size() - slots_.size() / 8;
-    return usable > size_ ? usable - size_ : 0;
-  }
-  /// Thread-safe: the index of `state` if it is stored; else stages it as `entry` (below
-  /// 2^31) unless another entry holds it already. `hash` is state_hash(state);
-  /// `entry_words(e)` points to the words of the state staged as entry e.
-  template <class EntryWords>
-  Staged stage(StateView state, std::uint64_t hash, std::uint32_t entry,
-               const EntryWords& entry_words) {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      std::atomic_ref<std::uint32_t> slot(slots_[i]);
-      std::uint32_t s = slot.load(std::memory_order_acquire);
-      if (s == 0) {
-        if (quotient_ && quotient_at(hash, i) == 0) return {false, kAbsent, 0, 0, false, true};
-        // The entry's words are written before its slot is published (release), so a thread
-        // that sees the slot (acquire) sees the words.
-        if (slot.compare_exchange_strong(s, kStagedBit | entry, std::memory_order_acq_rel,
-                                         std::memory_order_acquire))
-          return {false, kAbsent, entry, static_cast<std::uint32_t>(i), true, false};
-        // Another thread took this slot first: `s` now holds what it stored there.
-      }
-      if ((s & kStagedBit) != 0) {
-        const std::uint32_t e = s & ~kStagedBit;
-        if (same_state(entry_words(e), state.data(), words_))
-          return {false, kAbsent, e, static_cast<std::uint32_t>(i), false, false};
-      } else if (stored_at(s, i, state, hash)) {
-        return {true, membership_ ? kAbsent : index_of(s), 0, 0, false, false};
-      }
-    }
-  }
-  /// Thread-safe while staging: whether the one-word `state` was stored before the staging
-  /// began (false for wider states: ask stage()). Inline, for the many targets that are stored
-  /// already. A stored state lies before every slot staged since, which were empty when it was
-  /// stored, so the probe stops at the first of either.
-  bool stored_before_staging(StateView state, std::uint64_t hash) const {
-    if (words_ != 1) return false;
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash & mask;; i = (i + 1) & mask) {
-      const std::uint32_t s =
-          std::atomic_ref<const std::uint32_t>(slots_[i]).load(std::memory_order_relaxed);
-      if (s == 0 || (s & kStagedBit) != 0) return false;
-      if (stored_at(s, i, state, hash)) return true;
-    }
-  }
   [[gnu::always_inline]] std::uint64_t state_hash(StateView state) const {
     if (words_ != 1) return hash(state);
     return membership_ ? mix_bits(state[0]) : hash_word(state[0]);
@@ -200,28 +131,22 @@ class StateStore {
   /// the stored state its first slot refers to.
   [[gnu::always_inline]] void prefetch_state(std::uint64_t hash) const {
     if (quotient_) return;  // the slot holds the state
-    // Atomic: other threads may be staging into the table (relaxed: only a hint is read).
-    auto& slot = const_cast<std::uint32_t&>(slots_[hash & (slots_.size() - 1)]);
-    const std::uint32_t s = std::atomic_ref<std::uint32_t>(slot).load(std::memory_order_relaxed);
-    if (s == 0 || (s & kStagedBit) != 0 || (s & tag_mask_) != tag_of(hash)) return;
+    const std::uint32_t s = slots_[hash & (slots_.size() - 1)];
+    if (s == 0 || (s & tag_mask_) != tag_of(hash)) return;
     __builtin_prefetch(data_.data() + static_cast<std::size_t>(index_of(s)) * words_);
     if (words_ > 1) __builtin_prefetch(hashes_.data() + index_of(s));
   }
-  /// Room for `count` more states, so that those stored do not move while they are added.
+  /// Room for `count` more states, so that those stored do not move while they are added
+  /// (other threads may read them meanwhile).
   void reserve_states(std::uint64_t count) {
     data_.reserve(static_cast<std::size_t>((size_ + count) * words_));
     if (words_ > 1) hashes_.reserve(static_cast<std::size_t>(size_ + count));
   }
-  /// Stores the staged state `state` of `slot` as the next state; returns its index.
-  std::uint32_t commit_staged(std::uint32_t slot, StateView state);
-  /// Forgets every state staged and not committed.
-  void drop_staged();
 
  private:
-  static constexpr std::uint32_t kStagedBit = 0x80000000U;
   std::uint64_t hash(StateView state) const;
   bool equal_at(std::uint32_t index, StateView state) const;
-  /// Whether the stored (not staged) value `s` of slot `i` holds `state`, of hash `hash`.
+  /// Whether the value `s` of slot `i` holds `state`, of hash `hash`.
   bool stored_at(std::uint32_t s, std::size_t i, StateView state, std::uint64_t hash) const {
     if (quotient_) return s == quotient_at(hash, i);
     return words_ == 1
@@ -230,7 +155,7 @@ class StateStore {
   }
   // A one-word state is its own key: no stored hash, no call to compare. Inline: the search
   // looks up every edge's target. The slot of the one-word state `word` of hash `hash`: the
-  // one that holds it, or the empty one where it goes (no staging under way). Linear probing,
+  // one that holds it, or the empty one where it goes. Linear probing,
   // read four slots at a time: the slots whose tag matches and the empty ones are found at
   // once, so a look-up takes one round (and one branch) where a slot at a time took several at
   // the load of three quarters.
@@ -295,7 +220,7 @@ class StateStore {
   }
   std::uint32_t add_word(std::size_t slot, StateWord word, std::uint64_t hash);
   // Tagged slots (tag_mask_ != 0): bits 24 to 30 hold the top 7 bits of the state's hash, bits 0
-  // to 23 its index + 1. A staged slot (kStagedBit) is never tagged.
+  // to 23 its index + 1; bit 31 stays clear.
   static constexpr std::uint32_t kTagBits = 0x7F000000U;
   std::uint32_t tag_of(std::uint64_t hash) const {
     return static_cast<std::uint32_t>(hash >> tag_shift_) & tag_mask_;
@@ -311,7 +236,7 @@ class StateStore {
   // The quotient form. The hash of a state of b bits is a bijection onto b bits; a table of
   // 2^k slots takes its low k bits as the home slot, so the other b - k (the remainder) and
   // the slot's distance d from home give the state back. A stored slot holds the remainder,
-  // and d + 1 above it: never 0, never staged (bit 31). The form is taken once the remainder
+  // and d + 1 above it: never 0, and bit 31 stays clear. The form is taken once the remainder
   // and kDistanceBits fit in 31 bits; a probe farther than kMaxDistance from home (never seen
   // at the loads kept) leaves it for the indexed form, for good.
   static constexpr std::uint32_t kDistanceBits = 8;
