@@ -803,19 +803,20 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   std::optional<EnumerationAhead> ahead;  // ends its job before the pool ends
   auto enumerate = [&](std::uint32_t from) {
     chunk_begin = from;
-    if (ahead && ahead->take(from, chunk)) {
-      chunk_end = from + static_cast<std::uint32_t>(ends.size());
-      return;
-    }
-    const auto end = static_cast<std::uint32_t>(
-        std::min<std::uint64_t>(store.size(), (from | (chunk_states - 1)) + std::uint64_t{1}));
-    if (limits.max_memory_bytes > 0) enumerator->set_memory_in_use(memory());
-    if (const auto stop =
-            chunk.enumerate(*enumerator, store, store.range(from, end - from), end - from)) {
-      stopped_at = from + static_cast<std::uint32_t>(ends.size());
-      stopped_by = *stop;
+    if (!ahead || !ahead->take(from, chunk)) {
+      const auto end = static_cast<std::uint32_t>(
+          std::min<std::uint64_t>(store.size(), (from | (chunk_states - 1)) + std::uint64_t{1}));
+      if (limits.max_memory_bytes > 0) enumerator->set_memory_in_use(memory());
+      if (const auto stop =
+              chunk.enumerate(*enumerator, store, store.range(from, end - from), end - from)) {
+        stopped_at = from + static_cast<std::uint32_t>(ends.size());
+        stopped_by = *stop;
+      }
     }
     chunk_end = from + static_cast<std::uint32_t>(ends.size());
+    // The look-ups start kAhead targets ahead of the insertions: the first ones start here.
+    for (std::size_t k = 0; k < std::min<std::size_t>(kAhead, hashes.size()); ++k)
+      store.prefetch_slot(hashes[k]);
   };
   if (pool.parallel()) ahead.emplace(pool, store, chunk_states);
   std::uint32_t s = 0;
