@@ -341,9 +341,10 @@ void keep_distinct_targets_of_each(std::vector<StateWord>& targets,
   targets.resize(kept);
 }
 
-/// The threads of the parallel search. A job runs on this thread and on every worker at once,
-/// each with its own enumerator, and takes its share of the work itself (from an atomic
-/// counter), so it is over once its work is taken and every thread has left it.
+/// The threads of the parallel search. A job runs on every worker at once, and on this thread
+/// too when it joins to help, each with its own enumerator; it takes its share of the work
+/// itself (from an atomic counter), so it is over once its work is taken and every thread has
+/// left it.
 class WorkerPool {
  public:
   using Job = std::function<void(TargetEnumerator&)>;
@@ -486,10 +487,10 @@ class EnumerationAhead {
   EnumerationAhead(const EnumerationAhead&) = delete;
   EnumerationAhead& operator=(const EnumerationAhead&) = delete;
 
-  /// The search begins the block at `begin` (a multiple of kStates), with `store` holding
-  /// the sources up to its size: takes the block the workers enumerated, enumerates it on
-  /// every thread when they did not and it is stored, and starts the next block on the
-  /// workers when its sources are stored and this block's are enumerated.
+  /// The search begins the block at `begin` (a multiple of kStates): takes the block the
+  /// workers enumerated, enumerates it on every thread when they did not and it is stored, and
+  /// starts the next block on the workers when its sources are stored and this block's are
+  /// enumerated. `memory_in_use`: for their enumerators (set_memory_in_use()).
   void begin_block(std::uint32_t begin, std::uint64_t memory_in_use) {
     finish();
     std::swap(current_, next_);
