@@ -264,6 +264,9 @@ TEST(StateStore, InsertsASourcesTargetsAsOneByOneInsertions) {
       }
       hashes.clear();
       for (const StateWord w : words) hashes.push_back(batch.state_hash(StateView(&w, 1)));
+      std::vector<std::uint64_t> together(count);  // state_hashes() as state_hash() one by one
+      batch.state_hashes(words, count, together.data());
+      ASSERT_EQ(together, hashes);
       // Every 50th group meets a limit a few states on.
       const bool capped = next() % 50 == 0;
       const std::uint64_t cap = capped ? single.size() + next() % 4 : ~std::uint64_t{0};

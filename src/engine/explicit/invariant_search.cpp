@@ -455,8 +455,7 @@ struct ChunkTargets {
     }
     keep_distinct_targets_of_each(targets, ends, words, table, repeats);
     hashes.resize(targets.size() / words);
-    for (std::size_t k = 0; k < hashes.size(); ++k)
-      hashes[k] = store.state_hash(StateView(targets.data() + k * words, words));
+    store.state_hashes(targets, hashes.size(), hashes.data());
     return stopped;
   }
 };

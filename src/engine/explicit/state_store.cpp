@@ -25,6 +25,17 @@ StateStore::StateStore(std::uint32_t words_per_state, std::uint32_t tagged_state
   rehash(slots_.size());  // takes the quotient form if it fits already
 }
 
+void StateStore::state_hashes(StateView states, std::size_t count, std::uint64_t* out) const {
+  if (words_ != 1 || !membership_) {
+    for (std::size_t k = 0; k < count; ++k) out[k] = state_hash(states.subspan(k * words_, words_));
+    return;
+  }
+  const std::uint64_t mask = bits_mask_;
+  const std::uint32_t shift0 = shift_[0], shift1 = shift_[1], shift2 = shift_[2];
+  for (std::size_t k = 0; k < count; ++k)
+    out[k] = mix_bits(states[k], mask, shift0, shift1, shift2);
+}
+
 void StateStore::throw_too_wide() {
   throw std::logic_error("StateStore: a state wider than the membership_bits it was promised");
 }

@@ -119,6 +119,10 @@ class StateStore {
 
   static constexpr std::uint32_t kAbsent = ~0U;
 
+  /// state_hash() of each of the `count` states packed in `states`, into `out`: one call for
+  /// a chunk's targets keeps the hash's parameters in registers, which a call per state
+  /// reloads after each store of a hash.
+  void state_hashes(StateView states, std::size_t count, std::uint64_t* out) const;
   [[gnu::always_inline]] std::uint64_t state_hash(StateView state) const {
     if (words_ != 1) return hash(state);
     return membership_ ? mix_bits(state[0]) : hash_word(state[0]);
@@ -267,13 +271,19 @@ class StateStore {
   /// A bijection of the words below 2^membership_bits: xor-shifts and odd multiplications
   /// (splitmix64's), each invertible modulo 2^b.
   [[gnu::always_inline]] std::uint64_t mix_bits(StateWord word) const {
-    if ((word & ~bits_mask_) != 0) throw_too_wide();
+    return mix_bits(word, bits_mask_, shift_[0], shift_[1], shift_[2]);
+  }
+  /// mix_bits() with its parameters given: a loop keeps them in registers.
+  [[gnu::always_inline]] static std::uint64_t mix_bits(StateWord word, std::uint64_t mask,
+                                                       std::uint32_t shift0, std::uint32_t shift1,
+                                                       std::uint32_t shift2) {
+    if ((word & ~mask) != 0) throw_too_wide();
     std::uint64_t h = word;
-    h ^= h >> shift_[0];
-    h = (h * 0xbf58476d1ce4e5b9ULL) & bits_mask_;
-    h ^= h >> shift_[1];
-    h = (h * 0x94d049bb133111ebULL) & bits_mask_;
-    h ^= h >> shift_[2];
+    h ^= h >> shift0;
+    h = (h * 0xbf58476d1ce4e5b9ULL) & mask;
+    h ^= h >> shift1;
+    h = (h * 0x94d049bb133111ebULL) & mask;
+    h ^= h >> shift2;
     return h;
   }
   [[noreturn]] static void throw_too_wide();
