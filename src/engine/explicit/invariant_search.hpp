@@ -65,8 +65,8 @@ bool invariants_only(const logic::CheckTask& task);
 
 /// Decides the invariants of `task` (precondition: invariants_only(task)) with `enumerator`
 /// generating successors (null: the interpreted one). With `threads` > 1 and an enumerator
-/// that clones, the successors of a batch of states are generated on that many threads while
-/// the previous batch is stored: states are still numbered and judged in BFS order on one
+/// that clones, the other threads generate the successors of the next block of stored states
+/// while this one stores a block's: states are still numbered and judged in BFS order on one
 /// thread, so every count, verdict and counterexample equals the one-thread run.
 logic::CheckReport check_invariants(const logic::CheckTask& task,
                                     TargetEnumerator* enumerator = nullptr, unsigned threads = 1);
