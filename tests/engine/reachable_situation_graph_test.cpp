@@ -131,8 +131,8 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
     hashes.push_back(batched.state_hash(StateView(&buffer.back(), 1)));
   }
   for (std::size_t first = 0; first < 3000; first += 600)
-    ASSERT_EQ(batched.insert_new_words(buffer.data(), hashes.data(), first, first + 600, 3000,
-                                       ~std::uint64_t{0}),
+    ASSERT_EQ(batched.insert_new_states(buffer.data(), hashes.data(), first, first + 600, 3000,
+                                        ~std::uint64_t{0}),
               first + 600);
   for (auto* st : {&store, &batched})
     for (std::uint64_t i = 0; i < 3000; ++i) {
@@ -167,8 +167,8 @@ TEST(StateStore, MembershipStoreHoldsStatesAsQuotientsAndFindsEveryOne) {
     hashes.push_back(batched.state_hash(StateView(&buffer.back(), 1)));
   }
   for (std::size_t first = 0; first < kCount; first += 50000)
-    ASSERT_EQ(batched.insert_new_words(buffer.data(), hashes.data(), first, first + 50000, kCount,
-                                       ~std::uint64_t{0}),
+    ASSERT_EQ(batched.insert_new_states(buffer.data(), hashes.data(), first, first + 50000, kCount,
+                                        ~std::uint64_t{0}),
               first + 50000);
   EXPECT_TRUE(batched.quotient_form());
   for (auto* st : {&inserted, &batched}) {
@@ -231,7 +231,7 @@ TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
   EXPECT_THROW((void)store.insert(wide), std::logic_error);
 }
 
-// insert_new_words() is the serial search's insertion of a source's targets: it must number
+// insert_new_states() is the serial search's insertion of a source's targets: it must number
 // them as insert_if_new() one by one does, through growths, the change to the quotient form
 // (41-bit states: from 2^18 slots on) or none (64-bit states), and stop where the search's
 // state limit stops it.
@@ -282,7 +282,7 @@ TEST(StateStore, InsertsASourcesTargetsAsOneByOneInsertions) {
         }
       }
       const std::uint32_t before = batch.size();
-      ASSERT_EQ(batch.insert_new_words(words.data(), hashes.data(), 0, count, count, cap),
+      ASSERT_EQ(batch.insert_new_states(words.data(), hashes.data(), 0, count, count, cap),
                 expected_stop);
       ASSERT_EQ(batch.size(), single.size());
       for (std::uint32_t i = before; i < batch.size(); ++i)
@@ -312,8 +312,9 @@ TEST(StateStore, InsertsASourcesTargetsAsOneByOneInsertions) {
     hashes.push_back(h);
   }
   ASSERT_EQ(same_home.size(), 300U);
-  EXPECT_EQ(store.insert_new_words(same_home.data(), hashes.data(), 0, 300, 300, ~std::uint64_t{0}),
-            300U);
+  EXPECT_EQ(
+      store.insert_new_states(same_home.data(), hashes.data(), 0, 300, 300, ~std::uint64_t{0}),
+      300U);
   EXPECT_EQ(store.size(), 300U);
   EXPECT_FALSE(store.quotient_form());
   for (std::uint32_t i = 0; i < 300; ++i) ASSERT_EQ(store.at(i)[0], same_home[i]);

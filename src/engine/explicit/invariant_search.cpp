@@ -40,10 +40,6 @@ constexpr std::uint32_t kNone = ~0U;
 /// small.
 constexpr std::uint32_t kSerialChunkStates = 64;
 
-/// How many targets ahead a store look-up is started: each misses the cache twice (its slot,
-/// then the state the slot refers to), and the misses of several look-ups overlap.
-constexpr std::uint32_t kAhead = StateStore::kLookAhead;
-
 class InterpretedEnumerator final : public TargetEnumerator, semantics::SuccessorSink {
  public:
   InterpretedEnumerator(const semantics::TransitionSystem& ts, model::Budget limits)
@@ -493,9 +489,8 @@ class EnumerationAhead {
   void begin_block(std::uint32_t begin, std::uint64_t memory_in_use) {
     finish();
     std::swap(current_, next_);
-    StateStore& store = store_;
-    if (current_.begin != begin && std::uint64_t{begin} + kStates <= store.size()) {
-      post(current_, begin, store, memory_in_use);
+    if (current_.begin != begin && std::uint64_t{begin} + kStates <= store_.size()) {
+      post(current_, begin, memory_in_use);
       join(true);
     }
     if (current_.begin != begin) return;
@@ -504,9 +499,9 @@ class EnumerationAhead {
       if (!c.ready) return;  // its targets are not counted: the workers wait
       targets += c.hashes.size();
     }
-    if (std::uint64_t{begin} + 2 * kStates > store.size()) return;
-    store.reserve_states(targets);
-    post(next_, begin + kStates, store, memory_in_use);
+    if (std::uint64_t{begin} + 2 * kStates > store_.size()) return;
+    store_.reserve_states(targets);
+    post(next_, begin + kStates, memory_in_use);
   }
   /// Hands over the chunk of sources starting at `from` when the workers enumerated it.
   bool take(std::uint32_t from, ChunkTargets& chunk) {
@@ -533,15 +528,14 @@ class EnumerationAhead {
     std::vector<Chunk> chunks;
   };
 
-  void post(Block& block, std::uint32_t begin, const StateStore& store,
-            std::uint64_t memory_in_use) {
+  void post(Block& block, std::uint32_t begin, std::uint64_t memory_in_use) {
     block.begin = begin;
     for (auto& c : block.chunks) c.ready = false;
     next_chunk_.store(0);
-    const StateView sources = store.range(begin, kStates);
-    const std::uint32_t words = store.words_per_state();
+    const StateView sources = store_.range(begin, kStates);
+    const std::uint32_t words = store_.words_per_state();
     running_ = true;
-    pool_.post([this, &block, &store, sources, words, memory_in_use](TargetEnumerator& e) {
+    pool_.post([this, &block, sources, words, memory_in_use](TargetEnumerator& e) {
       e.set_memory_in_use(memory_in_use);
       for (;;) {
         const auto c = next_chunk_.fetch_add(1);
@@ -550,7 +544,7 @@ class EnumerationAhead {
         const StateView run(sources.data() + std::size_t{c} * chunk_states_ * words,
                             std::size_t{chunk_states_} * words);
         try {
-          chunk.ready = !chunk.enumerate(e, store, run, chunk_states_);
+          chunk.ready = !chunk.enumerate(e, store_, run, chunk_states_);
         } catch (...) {
           // Enumerated again on the search's thread, which meets the error itself.
         }
@@ -748,32 +742,16 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   auto expand = [&](std::uint32_t s, std::size_t first, std::size_t last) {
     just_violated.clear();
     const std::uint64_t max_states = limits.max_states;
-    const std::size_t chunk_targets = hashes.size();
-    if (words == 1) {
-      // As the graph builder: no state is stored beyond the limit, and the state being expanded
-      // when it is reached stays unexpanded.
-      const std::uint32_t known = store.size();
-      const std::uint64_t size_cap = max_states > 0 ? max_states + 1 : ~std::uint64_t{0};
-      if (store.insert_new_words(targets.data(), hashes.data(), first, last, chunk_targets,
-                                 size_cap) < last)
-        limit = "states";
-      for (std::uint32_t t = known; t < store.size(); ++t) {
-        parent.push_back(s);
-        if (open > 0) judge(t);
-      }
-    } else {
-      for (std::size_t k = first; k < last; ++k) {
-        if (k + kAhead < chunk_targets) store.prefetch_slot(hashes[k + kAhead]);
-        if (k + kAhead / 2 < chunk_targets) store.prefetch_state(hashes[k + kAhead / 2]);
-        if (max_states > 0 && store.size() > max_states) {
-          limit = "states";
-          break;
-        }
-        const auto t = store.insert_if_new(StateView(targets.data() + k * words, words), hashes[k]);
-        if (t == StateStore::kAbsent) continue;
-        parent.push_back(s);
-        if (open > 0) judge(t);
-      }
+    // As the graph builder: no state is stored beyond the limit, and the state being expanded
+    // when it is reached stays unexpanded.
+    const std::uint32_t known = store.size();
+    const std::uint64_t size_cap = max_states > 0 ? max_states + 1 : ~std::uint64_t{0};
+    if (store.insert_new_states(targets.data(), hashes.data(), first, last, hashes.size(),
+                                size_cap) < last)
+      limit = "states";
+    for (std::uint32_t t = known; t < store.size(); ++t) {
+      parent.push_back(s);
+      if (open > 0) judge(t);
     }
     // A repeated last target counts as a look-up past the limit, as in the graph builder.
     if (limit.empty() && max_states > 0 && store.size() > max_states &&
@@ -814,8 +792,8 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       }
     }
     chunk_end = from + static_cast<std::uint32_t>(ends.size());
-    // The look-ups start kAhead targets ahead of the insertions: the first ones start here.
-    for (std::size_t k = 0; k < std::min<std::size_t>(kAhead, hashes.size()); ++k)
+    // The store starts its look-ups kLookAhead targets ahead: the first ones start here.
+    for (std::size_t k = 0; k < std::min(StateStore::kLookAhead, hashes.size()); ++k)
       store.prefetch_slot(hashes[k]);
   };
   if (pool.parallel()) ahead.emplace(pool, store, chunk_states);

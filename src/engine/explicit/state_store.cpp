@@ -90,25 +90,23 @@ std::uint32_t StateStore::add_word(std::size_t slot, StateWord word, std::uint64
   return size_++;
 }
 
-std::size_t StateStore::insert_new_words(const StateWord* words, const std::uint64_t* hashes,
-                                         std::size_t first, std::size_t last, std::size_t ahead_end,
-                                         std::uint64_t size_cap) {
-  if (words_ != 1) throw std::logic_error("StateStore::insert_new_words: wider states");
+std::size_t StateStore::insert_new_states(const StateWord* states, const std::uint64_t* hashes,
+                                          std::size_t first, std::size_t last,
+                                          std::size_t ahead_end, std::uint64_t size_cap) {
   std::size_t k = first;
   while (k < last) {
     if (size_ >= size_cap) return k;
     if (full_for_one_more()) grow();
     if (!quotient_) {
-      // The indexed form: the slots refer to the stored states, compared in probe_word().
-      const std::uint64_t h = hashes[k];
+      // The indexed form: the slots refer to the stored states.
       if (k + kLookAhead < ahead_end) prefetch_slot(hashes[k + kLookAhead]);
       if (k + kLookAhead / 2 < ahead_end) prefetch_state(hashes[k + kLookAhead / 2]);
-      const std::size_t i = probe_word(words[k], h);
-      if (slots_[i] == 0) add_word(i, words[k], h);
+      static_cast<void>(insert_if_new(StateView(states + k * words_, words_), hashes[k]));
       ++k;
       continue;
     }
-    // The quotient form, until the table grows or a probe runs past the farthest distance.
+    // The quotient form (one-word states), until the table grows or a probe runs past the
+    // farthest distance.
     std::uint32_t* const slots = slots_.data();
     const std::size_t mask = slots_.size() - 1;
     const std::uint32_t slot_bits = slot_bits_;
@@ -136,7 +134,7 @@ std::size_t StateStore::insert_new_words(const StateWord* words, const std::uint
       if (no_room) break;
       if (s == 0) {
         slots[i] = expected;
-        data_.push_back(words[k]);
+        data_.push_back(states[k]);
         ++size;
       }
     }

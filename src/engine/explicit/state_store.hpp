@@ -88,18 +88,19 @@ class StateStore {
     const std::size_t i = probe_word(state[0], hash);
     return slots_[i] == 0 ? add_word(i, state[0], hash) : kAbsent;
   }
-  /// How many look-ups ahead insert_new_words() loads a slot: each misses the cache, and the
+  /// How many look-ups ahead insert_new_states() loads a slot: each misses the cache, and the
   /// misses of several look-ups overlap.
   static constexpr std::size_t kLookAhead = 32;
-  /// The serial searches' insertion of one source's targets, for one-word states: inserts
-  /// words[k], of hash hashes[k] (state_hash()), for k from `first` on, in order, while the
-  /// store holds fewer than `size_cap` states; the new ones take the next indices. Returns the
-  /// first k not looked up: `last` when every one was. Loads the slot of hashes[k +
-  /// kLookAhead] below `ahead_end` meanwhile. One call per source keeps the table's fields in
-  /// registers, which a call per target reloads after each store to a slot.
-  std::size_t insert_new_words(const StateWord* words, const std::uint64_t* hashes,
-                               std::size_t first, std::size_t last, std::size_t ahead_end,
-                               std::uint64_t size_cap);
+  /// The serial searches' insertion of one source's targets: inserts state k of `states`
+  /// (packed, words_per_state() words each), of hash hashes[k] (state_hash()), for k from
+  /// `first` on, in order, while the store holds fewer than `size_cap` states; the new ones
+  /// take the next indices. Returns the first k not looked up: `last` when every one was.
+  /// Loads the slot of hashes[k + kLookAhead] below `ahead_end` meanwhile. One call per source
+  /// keeps the table's fields in registers, which a call per target reloads after each store
+  /// to a slot.
+  std::size_t insert_new_states(const StateWord* states, const std::uint64_t* hashes,
+                                std::size_t first, std::size_t last, std::size_t ahead_end,
+                                std::uint64_t size_cap);
   /// Index of `state`, or kAbsent. Refused when only membership is asked.
   std::uint32_t find(StateView state) const;
   /// Whether the slots hold the states (quotients), not their indices.
