@@ -149,7 +149,7 @@ TEST(StateStore, OneWordStatesKeepTheirIndicesWhenTheSlotTagsStop) {
 // the remainder fits. Every state must be found, whether inserted alone or with others, as the
 // table grows from the indexed form into the quotient form.
 TEST(StateStore, MembershipStoreHoldsStatesAsQuotientsAndFindsEveryOne) {
-  constexpr std::uint32_t kBits = 41;  // indexed below 2^18 slots, quotients from there on
+  constexpr std::uint32_t kBits = 41;  // indexed below 2^17 slots, quotients from there on
   auto word = [](std::uint64_t i) { return (i * 0x9e3779b97f4a7c15ULL) >> (64 - kBits); };
   constexpr std::uint64_t kCount = 300000;
   StateStore inserted(1, StateStore::kTaggedStates, kBits);
@@ -231,9 +231,42 @@ TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
   EXPECT_THROW((void)store.insert(wide), std::logic_error);
 }
 
+// A remainder of 24 bits and the distance fill a slot's 32 bits: states far from their home
+// (the distance's top bit, the slot's bit 31, set) are found again and told apart from others.
+TEST(StateStore, MembershipStoreUsesEveryBitOfASlot) {
+  constexpr std::uint32_t kBits = 34;  // 1024 slots: a remainder of 24 bits
+  StateStore store(1, StateStore::kTaggedStates, kBits);
+  ASSERT_TRUE(store.quotient_form());
+  std::vector<StateWord> same_home, other;
+  for (StateWord w = 0; same_home.size() < 250 || other.size() < 250; ++w) {
+    const StateWord one[1] = {w};
+    auto& list = (store.state_hash(one) & 1023) == 7 ? same_home : other;
+    if (list.size() < 250) list.push_back(w);
+  }
+  for (std::uint32_t i = 0; i < same_home.size(); ++i)
+    ASSERT_EQ(store.insert(StateView(same_home.data() + i, 1)), std::make_pair(i, true));
+  ASSERT_TRUE(store.quotient_form());  // 249 slots from home at most: within the distance
+  for (std::uint32_t i = 0; i < same_home.size(); ++i) {
+    const StateView v(same_home.data() + i, 1);
+    ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), StateStore::kAbsent) << i;
+  }
+  // The other states, some of whose homes lie on that long path (which pushes some of them too
+  // far from home: the form is left), are new once, then found.
+  for (std::uint32_t i = 0; i < other.size(); ++i) {
+    const StateView v(other.data() + i, 1);
+    ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), 250 + i);
+  }
+  for (const auto* list : {&same_home, &other})
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const StateView v(list->data() + i, 1);
+      ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), StateStore::kAbsent) << i;
+    }
+  EXPECT_EQ(store.size(), 500U);
+}
+
 // insert_new_states() is the serial search's insertion of a source's targets: it must number
 // them as insert_if_new() one by one does, through growths, the change to the quotient form
-// (41-bit states: from 2^18 slots on) or none (64-bit states), and stop where the search's
+// (41-bit states: from 2^17 slots on) or none (64-bit states), and stop where the search's
 // state limit stops it.
 TEST(StateStore, InsertsASourcesTargetsAsOneByOneInsertions) {
   for (const std::uint32_t bits : {41U, 64U}) {

@@ -170,8 +170,8 @@ void StateStore::rehash(std::size_t slot_count) {
   const std::size_t mask = table.size() - 1;
   slot_bits_ = static_cast<std::uint32_t>(__builtin_ctzll(slot_count));
   const bool was_quotient = quotient_;
-  // The remainder and the distance in 31 bits.
-  quotient_ = membership_ && !left_quotient_ && state_bits_ <= slot_bits_ + (31 - kDistanceBits);
+  // The remainder and the distance in 32 bits.
+  quotient_ = membership_ && !left_quotient_ && state_bits_ <= slot_bits_ + (32 - kDistanceBits);
   remainder_bits_ = quotient_ && state_bits_ > slot_bits_ ? state_bits_ - slot_bits_ : 0;
   if (quotient_)
     tag_mask_ = 0;

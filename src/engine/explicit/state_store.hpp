@@ -241,9 +241,9 @@ class StateStore {
   // The quotient form. The hash of a state of b bits is a bijection onto b bits; a table of
   // 2^k slots takes its low k bits as the home slot, so the other b - k (the remainder) and
   // the slot's distance d from home give the state back. A stored slot holds the remainder,
-  // and d + 1 above it: never 0, and bit 31 stays clear. The form is taken once the remainder
-  // and kDistanceBits fit in 31 bits; a probe farther than kMaxDistance from home (never seen
-  // at the loads kept) leaves it for the indexed form, for good.
+  // and d + 1 above it: never 0. The form is taken once the remainder and kDistanceBits fit in
+  // the slot's 32 bits; a probe farther than kMaxDistance from home (never seen at the loads
+  // kept) leaves it for the indexed form, for good.
   static constexpr std::uint32_t kDistanceBits = 8;
   static constexpr std::uint32_t kMaxDistance = (1U << kDistanceBits) - 2;
   static constexpr std::size_t kNoRoom = ~std::size_t{0};
