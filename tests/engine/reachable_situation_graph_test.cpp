@@ -232,36 +232,65 @@ TEST(StateStore, MembershipStoreLeavesTheQuotientFormWhenAProbeRunsTooFar) {
 }
 
 // A remainder of 24 bits and the distance fill a slot's 32 bits: states far from their home
-// (the distance's top bit, the slot's bit 31, set) are found again and told apart from others.
+// (the distance's top bit, the slot's bit 31, set) are found again and told apart from others,
+// one by one (insert_if_new()) and a source's targets at once (insert_new_states(), which reads
+// the first four slots of a path together), from a home in the table and from one among its
+// last three slots (a path that wraps).
 TEST(StateStore, MembershipStoreUsesEveryBitOfASlot) {
   constexpr std::uint32_t kBits = 34;  // 1024 slots: a remainder of 24 bits
-  StateStore store(1, StateStore::kTaggedStates, kBits);
-  ASSERT_TRUE(store.quotient_form());
-  std::vector<StateWord> same_home, other;
-  for (StateWord w = 0; same_home.size() < 250 || other.size() < 250; ++w) {
-    const StateWord one[1] = {w};
-    auto& list = (store.state_hash(one) & 1023) == 7 ? same_home : other;
-    if (list.size() < 250) list.push_back(w);
-  }
-  for (std::uint32_t i = 0; i < same_home.size(); ++i)
-    ASSERT_EQ(store.insert(StateView(same_home.data() + i, 1)), std::make_pair(i, true));
-  ASSERT_TRUE(store.quotient_form());  // 249 slots from home at most: within the distance
-  for (std::uint32_t i = 0; i < same_home.size(); ++i) {
-    const StateView v(same_home.data() + i, 1);
-    ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), StateStore::kAbsent) << i;
-  }
-  // The other states, some of whose homes lie on that long path (which pushes some of them too
-  // far from home: the form is left), are new once, then found.
-  for (std::uint32_t i = 0; i < other.size(); ++i) {
-    const StateView v(other.data() + i, 1);
-    ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), 250 + i);
-  }
-  for (const auto* list : {&same_home, &other})
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const StateView v(list->data() + i, 1);
-      ASSERT_EQ(store.insert_if_new(v, store.state_hash(v)), StateStore::kAbsent) << i;
+  for (const std::uint64_t home : {7U, 1022U}) {
+    SCOPED_TRACE(home);
+    StateStore single(1, StateStore::kTaggedStates, kBits),
+        batch(1, StateStore::kTaggedStates, kBits);
+    ASSERT_TRUE(single.quotient_form());
+    std::vector<StateWord> same_home, other;
+    for (StateWord w = 0; same_home.size() < 250 || other.size() < 250; ++w) {
+      const StateWord one[1] = {w};
+      auto& list = (single.state_hash(one) & 1023) == home ? same_home : other;
+      if (list.size() < 250) list.push_back(w);
     }
-  EXPECT_EQ(store.size(), 500U);
+    auto hashes_of = [&](const std::vector<StateWord>& words) {
+      std::vector<std::uint64_t> h(words.size());
+      batch.state_hashes(words, words.size(), h.data());
+      return h;
+    };
+    const auto same_hashes = hashes_of(same_home), other_hashes = hashes_of(other);
+    for (std::uint32_t i = 0; i < same_home.size(); ++i)
+      ASSERT_EQ(single.insert(StateView(same_home.data() + i, 1)), std::make_pair(i, true));
+    ASSERT_EQ(batch.insert_new_states(same_home.data(), same_hashes.data(), 0, 250, 250,
+                                      ~std::uint64_t{0}),
+              250U);
+    for (auto* store : {&single, &batch}) {
+      ASSERT_TRUE(store->quotient_form());  // 249 slots from home at most: within the distance
+      ASSERT_EQ(store->size(), 250U);
+      for (std::uint32_t i = 0; i < same_home.size(); ++i) {
+        const StateView v(same_home.data() + i, 1);
+        ASSERT_EQ(store->insert_if_new(v, store->state_hash(v)), StateStore::kAbsent) << i;
+      }
+    }
+    ASSERT_EQ(batch.insert_new_states(same_home.data(), same_hashes.data(), 0, 250, 250,
+                                      ~std::uint64_t{0}),
+              250U);
+    ASSERT_EQ(batch.size(), 250U);
+    // The other states, some of whose homes lie on that long path (which pushes some of them
+    // too far from home: the form is left), are new once, then found.
+    for (std::uint32_t i = 0; i < other.size(); ++i) {
+      const StateView v(other.data() + i, 1);
+      ASSERT_EQ(single.insert_if_new(v, single.state_hash(v)), 250 + i);
+    }
+    ASSERT_EQ(
+        batch.insert_new_states(other.data(), other_hashes.data(), 0, 250, 250, ~std::uint64_t{0}),
+        250U);
+    for (auto* store : {&single, &batch}) {
+      for (const auto* list : {&same_home, &other})
+        for (std::size_t i = 0; i < list->size(); ++i) {
+          const StateView v(list->data() + i, 1);
+          ASSERT_EQ(store->insert_if_new(v, store->state_hash(v)), StateStore::kAbsent) << i;
+        }
+      EXPECT_EQ(store->size(), 500U);
+    }
+    for (std::uint32_t i = 0; i < 500; ++i) ASSERT_EQ(batch.at(i)[0], single.at(i)[0]);
+  }
 }
 
 // insert_new_states() is the serial search's insertion of a source's targets: it must number

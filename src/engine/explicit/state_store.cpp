@@ -116,13 +116,43 @@ std::size_t StateStore::insert_new_states(const StateWord* states, const std::ui
         {size_cap, states_before_growth(slots_.size()), std::uint64_t{kAbsent} - 1});
     std::uint64_t size = size_;
     bool no_room = false;
+#if defined(__SSE2__)
+    // The values a state's slot would hold at distances 0 to 3 from home, less the first.
+    const __m128i distances = _mm_set_epi32(static_cast<int>(3 * step), static_cast<int>(2 * step),
+                                            static_cast<int>(step), 0);
+#endif
     for (; k < last && size < stop_at; ++k) {
       if (k + kLookAhead < ahead_end) __builtin_prefetch(slots + (hashes[k + kLookAhead] & mask));
       const std::uint64_t h = hashes[k];
       std::uint32_t expected = static_cast<std::uint32_t>(h >> slot_bits) | step;
       std::size_t i = h & mask;
+      std::uint32_t d = 0;
+#if defined(__SSE2__)
+      // The first four slots of the path at once: the state lies in the first that holds it
+      // or is empty. Where the look-up ends mispredicts as a branch per slot.
+      if (i + kGroupSlots <= mask + 1) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(slots + i));
+        const __m128i want = _mm_add_epi32(_mm_set1_epi32(static_cast<int>(expected)), distances);
+        const auto held =
+            static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, want))));
+        const auto empty = static_cast<std::uint32_t>(
+            _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))));
+        if ((held | empty) != 0) {
+          const auto at = static_cast<std::uint32_t>(__builtin_ctz(held | empty));
+          if ((empty >> at) & 1U) {
+            slots[i + at] = expected + at * step;
+            data_.push_back(states[k]);
+            ++size;
+          }
+          continue;
+        }
+        d = kGroupSlots;
+        i = (i + kGroupSlots) & mask;
+        expected += kGroupSlots * step;
+      }
+#endif
       std::uint32_t s = slots[i];
-      for (std::uint32_t d = 0; s != expected && s != 0; s = slots[i]) {
+      for (; s != expected && s != 0; s = slots[i]) {
         if (d == kMaxDistance) {
           no_room = true;
           break;
