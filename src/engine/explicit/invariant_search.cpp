@@ -487,7 +487,7 @@ class EnumerationAhead {
   /// starts the next block on the workers when its sources are stored and this block's are
   /// enumerated. `memory_in_use`: for their enumerators (set_memory_in_use()).
   void begin_block(std::uint32_t begin, std::uint64_t memory_in_use) {
-    finish();
+    finish(true);
     std::swap(current_, next_);
     if (current_.begin != begin && std::uint64_t{begin} + kStates <= store_.size()) {
       post(current_, begin, memory_in_use);
@@ -514,9 +514,10 @@ class EnumerationAhead {
     std::swap(chunk, static_cast<ChunkTargets&>(c));
     return true;
   }
-  /// Waits for the workers' job to end (before the search ends, or begins their block).
-  void finish() {
-    if (running_) join(false);
+  /// Waits for the workers' job to end (before the search ends, or begins their block),
+  /// enumerating what they have not taken yet when `help`.
+  void finish(bool help = false) {
+    if (running_) join(help);
   }
 
  private:
