@@ -483,7 +483,8 @@ class EnumerationAhead {
   EnumerationAhead& operator=(const EnumerationAhead&) = delete;
 
   /// The search begins the block at `begin` (a multiple of kStates): takes the block the
-  /// workers enumerated, enumerates it on every thread when they did not and it is stored, and
+  /// workers enumerated (enumerating with them the chunks they have not taken yet: storing may
+  /// be the shorter half), enumerates it on every thread when they did not and it is stored, and
   /// starts the next block on the workers when its sources are stored and this block's are
   /// enumerated. `memory_in_use`: for their enumerators (set_memory_in_use()).
   void begin_block(std::uint32_t begin, std::uint64_t memory_in_use) {

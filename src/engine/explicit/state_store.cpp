@@ -117,7 +117,7 @@ std::size_t StateStore::insert_new_states(const StateWord* states, const std::ui
     std::uint64_t size = size_;
     bool no_room = false;
 #if defined(__SSE2__)
-    // The values a state's slot would hold at distances 0 to 3 from home, less the first.
+    // What a state's slot holds at distances 0 to 3 from home, above what it holds at 0.
     const __m128i distances = _mm_set_epi32(static_cast<int>(3 * step), static_cast<int>(2 * step),
                                             static_cast<int>(step), 0);
 #endif
@@ -129,7 +129,7 @@ std::size_t StateStore::insert_new_states(const StateWord* states, const std::ui
       std::uint32_t d = 0;
 #if defined(__SSE2__)
       // The first four slots of the path at once: the state lies in the first that holds it
-      // or is empty. Where the look-up ends mispredicts as a branch per slot.
+      // or is empty. A branch per slot on where the look-up ends mispredicted (docs/benchmarks.md).
       if (i + kGroupSlots <= mask + 1) {
         const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(slots + i));
         const __m128i want = _mm_add_epi32(_mm_set1_epi32(static_cast<int>(expected)), distances);
