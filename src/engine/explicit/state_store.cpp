@@ -108,62 +108,23 @@ std::size_t StateStore::insert_new_states(const StateWord* states, const std::ui
     // The quotient form (one-word states), until the table grows or a probe runs past the
     // farthest distance.
     std::uint32_t* const slots = slots_.data();
-    const std::size_t mask = slots_.size() - 1;
-    const std::uint32_t slot_bits = slot_bits_;
-    const std::uint32_t step = 1U << remainder_bits_;
+    const QuotientProbe probe = quotient_probe();
     // Each one-word state takes the next index, up to the last a slot may number.
     const std::uint64_t stop_at = std::min<std::uint64_t>(
         {size_cap, states_before_growth(slots_.size()), std::uint64_t{kAbsent} - 1});
     std::uint64_t size = size_;
     bool no_room = false;
-#if defined(__SSE2__)
-    // What a state's slot holds at distances 0 to 3 from home, above what it holds at 0.
-    const __m128i distances = _mm_set_epi32(static_cast<int>(3 * step), static_cast<int>(2 * step),
-                                            static_cast<int>(step), 0);
-#endif
     for (; k < last && size < stop_at; ++k) {
-      if (k + kLookAhead < ahead_end) __builtin_prefetch(slots + (hashes[k + kLookAhead] & mask));
+      if (k + kLookAhead < ahead_end)
+        __builtin_prefetch(slots + probe.home(hashes[k + kLookAhead]));
       const std::uint64_t h = hashes[k];
-      std::uint32_t expected = static_cast<std::uint32_t>(h >> slot_bits) | step;
-      std::size_t i = h & mask;
-      std::uint32_t d = 0;
-#if defined(__SSE2__)
-      // The first four slots of the path at once: the state lies in the first that holds it
-      // or is empty. A branch per slot on where the look-up ends mispredicted (docs/benchmarks.md).
-      if (i + kGroupSlots <= mask + 1) {
-        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(slots + i));
-        const __m128i want = _mm_add_epi32(_mm_set1_epi32(static_cast<int>(expected)), distances);
-        const auto held =
-            static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, want))));
-        const auto empty = static_cast<std::uint32_t>(
-            _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(v, _mm_setzero_si128()))));
-        if ((held | empty) != 0) {
-          const auto at = static_cast<std::uint32_t>(__builtin_ctz(held | empty));
-          if ((empty >> at) & 1U) {
-            slots[i + at] = expected + at * step;
-            data_.push_back(states[k]);
-            ++size;
-          }
-          continue;
-        }
-        d = kGroupSlots;
-        i = (i + kGroupSlots) & mask;
-        expected += kGroupSlots * step;
+      const std::size_t i = probe.slot(h);
+      if (i == kNoRoom) {
+        no_room = true;
+        break;
       }
-#endif
-      std::uint32_t s = slots[i];
-      for (; s != expected && s != 0; s = slots[i]) {
-        if (d == kMaxDistance) {
-          no_room = true;
-          break;
-        }
-        ++d;
-        i = (i + 1) & mask;
-        expected += step;
-      }
-      if (no_room) break;
-      if (s == 0) {
-        slots[i] = expected;
+      if (slots[i] == 0) {
+        slots[i] = probe.value(h, i);
         data_.push_back(states[k]);
         ++size;
       }

@@ -255,18 +255,83 @@ class StateStore {
     return static_cast<std::uint32_t>(hash >> slot_bits_) | static_cast<std::uint32_t>(d + 1)
                                                                 << remainder_bits_;
   }
+  /// Look-ups in a table of the quotient form, its fields in registers (a loop of look-ups
+  /// keeps one). The first kGroupSlots slots of a path are compared at once (SSE2): a branch
+  /// per slot on where a look-up ends mispredicted, and cost a fifth of the search's time
+  /// (docs/benchmarks.md).
+  class QuotientProbe {
+   public:
+    QuotientProbe(const std::uint32_t* slots, std::size_t slot_count, std::uint32_t slot_bits,
+                  std::uint32_t remainder_bits)
+        : slots_(slots),
+          mask_(slot_count - 1),
+          slot_bits_(slot_bits),
+          step_(1U << remainder_bits)
+#if defined(__SSE2__)
+          ,
+          // What a slot holds at distances 0 to 3 from home, above what it holds at home.
+          distances_(_mm_set_epi32(static_cast<int>(3 * step_), static_cast<int>(2 * step_),
+                                   static_cast<int>(step_), 0))
+#endif
+    {
+    }
+    /// The home slot of the state of hash `hash`.
+    std::size_t home(std::uint64_t hash) const {
+      return hash & mask_;
+    }
+    /// The value slot `i` holds for the state of hash `hash`, on its path at most kMaxDistance
+    /// from home.
+    std::uint32_t value(std::uint64_t hash, std::size_t i) const {
+      return at_home(hash) + static_cast<std::uint32_t>((i - hash) & mask_) * step_;
+    }
+    /// The slot that holds the state of hash `hash`, the empty one where it goes, or kNoRoom
+    /// when neither lies within kMaxDistance of its home.
+    [[gnu::always_inline]] std::size_t slot(std::uint64_t hash) const {
+      const std::size_t home_slot = home(hash);
+      std::uint32_t expected = at_home(hash);
+      std::size_t i = home_slot;
+      std::uint32_t d = 0;
+#if defined(__SSE2__)
+      if (home_slot + kGroupSlots <= mask_ + 1) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(slots_ + home_slot));
+        const __m128i want = _mm_add_epi32(_mm_set1_epi32(static_cast<int>(expected)), distances_);
+        const auto ends = static_cast<std::uint32_t>(_mm_movemask_ps(_mm_castsi128_ps(
+            _mm_or_si128(_mm_cmpeq_epi32(v, want), _mm_cmpeq_epi32(v, _mm_setzero_si128())))));
+        if (ends != 0) return home_slot + static_cast<std::size_t>(__builtin_ctz(ends));
+        d = kGroupSlots;
+        i = (home_slot + kGroupSlots) & mask_;
+        expected += kGroupSlots * step_;
+      }
+#endif
+      for (std::uint32_t s = slots_[i]; s != expected && s != 0; s = slots_[i]) {
+        if (d == kMaxDistance) return kNoRoom;
+        ++d;
+        i = (i + 1) & mask_;
+        expected += step_;
+      }
+      return i;
+    }
+
+   private:
+    /// The value of the state's slot at distance 0: its remainder, and 1 above it.
+    std::uint32_t at_home(std::uint64_t hash) const {
+      return static_cast<std::uint32_t>(hash >> slot_bits_) | step_;
+    }
+    const std::uint32_t* slots_;
+    std::size_t mask_;
+    std::uint32_t slot_bits_;
+    std::uint32_t step_;
+#if defined(__SSE2__)
+    __m128i distances_;
+#endif
+  };
+  QuotientProbe quotient_probe() const {
+    return {slots_.data(), slots_.size(), slot_bits_, remainder_bits_};
+  }
   /// The slot that holds the state of hash `hash`, the empty one where it goes, or kNoRoom
   /// when neither lies within kMaxDistance of its home.
   [[gnu::always_inline]] std::size_t probe_quotient(std::uint64_t hash) const {
-    const std::size_t mask = slots_.size() - 1;
-    const std::uint32_t step = 1U << remainder_bits_;
-    std::uint32_t expected = static_cast<std::uint32_t>(hash >> slot_bits_) | step;
-    std::size_t i = hash & mask;
-    for (std::uint32_t d = 0;; ++d, i = (i + 1) & mask, expected += step) {
-      const std::uint32_t s = slots_[i];
-      if (s == expected || s == 0) return i;
-      if (d == kMaxDistance) return kNoRoom;
-    }
+    return quotient_probe().slot(hash);
   }
   void leave_quotient_form();
   /// A bijection of the words below 2^membership_bits: xor-shifts and odd multiplications
