@@ -321,7 +321,7 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
                   "bmc and kind: the deepest unrolling in cycles (default 200)");
   sub->add_option("--threads", opts->threads,
                   "explicit engine: threads generating successors when only invariants are asked "
-                  "(default 0: one per core; results do not depend on it)");
+                  "(default 0: one per core; at most one per core; results do not depend on it)");
   sub->add_option("--certificate", opts->certificate,
                   "kind and ic3: write the re-checked proof of each result there (inductive "
                   "invariant clauses over latch names, or the k of k-induction)");

@@ -169,6 +169,7 @@ class Compiler {
   std::uint32_t slots() const { return slots_; }
 
   Term value(const Node& n, const EnvPtr& env) {
+    count_expansion(n);
     switch (n.kind) {
       case NodeKind::Name:
         return value_name(n, env);
@@ -276,6 +277,7 @@ class Compiler {
 
   /// A set of steps: `{1, X3}`, `10`, `X3`, `e` (set-builder variable), or any step-set term.
   Term steps(const Node& n, const EnvPtr& env) {
+    count_expansion(n);
     switch (n.kind) {
       case NodeKind::Integer:
         return step_literal({resolve_step_number(n)}, n);
@@ -323,6 +325,7 @@ class Compiler {
   }
 
   Signal signal(const Node& n, const EnvPtr& env, Mode mode) {
+    count_expansion(n);
     switch (n.kind) {
       case NodeKind::Name: {
         if (const Env* b = lookup(env, n.name)) {
@@ -485,6 +488,18 @@ class Compiler {
     t.sort = sort;
     t.pos = n.pos;
     return t;
+  }
+
+  /// Each use of a let name or a definition is compiled where it is used, so a chain such as
+  /// `let a1 = a0 + a0; let a2 = a1 + a1; ...` doubles at every line: past this many compiled
+  /// nodes the query is refused where the count ran out, instead of growing without bound.
+  static constexpr std::size_t kMaxExpandedNodes = 1'000'000;
+  void count_expansion(const Node& n) {
+    if (++expanded_ > kMaxExpandedNodes)
+      throw QueryError(n.pos, "the query expands to more than " +
+                                  std::to_string(kMaxExpandedNodes) +
+                                  " nodes (each use of a let name or a definition is expanded "
+                                  "where it is used); share less, or split the query");
   }
 
   EnvPtr bind(const Node& let, const EnvPtr& env) {
@@ -704,6 +719,7 @@ class Compiler {
   const semantics::TransitionSystem& ts_;
   std::uint32_t slots_ = 0;
   int depth_ = 0;
+  std::size_t expanded_ = 0;
 };
 
 }  // namespace

@@ -55,6 +55,39 @@ TEST(QueryParse, DeepNestingIsAnErrorNotACrash) {
   EXPECT_NO_THROW(logic::compile_query(std::string(50, '(') + "Y" + std::string(50, ')'), lib, ts));
 }
 
+// A let chain doubling at each line (and the same through definitions) is refused where the
+// expansion passes its bound, in milliseconds, instead of growing exponentially.
+TEST(QueryParse, ExponentialLetChainsAreRefusedAtTheirBound) {
+  std::string q = "let a0 = Y;\n";
+  for (int i = 1; i <= 40; ++i)
+    q += "let a" + std::to_string(i) + " = a" + std::to_string(i - 1) + " + a" +
+         std::to_string(i - 1) + ";\n";
+  q += "a40";
+  const auto e = error_of(q);
+  EXPECT_NE(e.message.find("expands to more than"), std::string::npos) << e.message;
+  EXPECT_GT(e.column, 0u);  // located (where the count ran out)
+
+  const auto ts = make_query_toy();
+  logic::QueryLibrary lib;
+  std::string defs = "def d0() = Y;\n";
+  for (int i = 1; i <= 40; ++i)
+    defs += "def d" + std::to_string(i) + "() = d" + std::to_string(i - 1) + "() + d" +
+            std::to_string(i - 1) + "();\n";
+  lib.add_text(defs, "chain.sfq");
+  try {
+    logic::compile_query("d40()", lib, ts);
+    ADD_FAILURE() << "no error for a doubling definition chain";
+  } catch (const logic::QueryError& err) {
+    EXPECT_NE(err.message().find("expands to more than"), std::string::npos) << err.message();
+  }
+  // Twelve doublings (4,096 uses) stay well within the bound.
+  std::string small = "let a0 = Y;\n";
+  for (int i = 1; i <= 12; ++i)
+    small += "let a" + std::to_string(i) + " = a" + std::to_string(i - 1) + " + a" +
+             std::to_string(i - 1) + ";\n";
+  EXPECT_NO_THROW(logic::compile_query(small + "a12", lib, ts));
+}
+
 TEST(QueryParse, ErrorsOnLaterLinesCountLines) {
   const auto e = error_of("let a = Y;\n  a + T");
   EXPECT_EQ(e.line, 2u);

@@ -94,8 +94,10 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   // Invariants alone need neither the edges nor their labels: decided during the search.
   if (invariants_only(task)) {
     const auto compiled = make_compiled_enumerator(*task.system, task.limits);
-    const unsigned threads =
-        options_.threads > 0 ? options_.threads : std::max(1U, std::thread::hardware_concurrency());
+    // More threads than cores only add contention (and --threads 100000 would exhaust the
+    // process table): the request is capped at the cores available.
+    const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+    const unsigned threads = options_.threads > 0 ? std::min(options_.threads, cores) : cores;
     return check_invariants(task, compiled.get(), threads);
   }
   ExplorationOptions opts;

@@ -9,6 +9,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -351,7 +352,16 @@ class WorkerPool {
       if (!e) break;
       enumerators_.push_back(std::move(e));
     }
-    for (auto& e : enumerators_) workers_.emplace_back([this, en = e.get()] { work(*en); });
+    // A thread the system cannot start (process table full) leaves fewer workers: the jobs take
+    // their work from a shared counter, so results do not depend on how many started.
+    for (auto& e : enumerators_) {
+      try {
+        workers_.emplace_back([this, en = e.get()] { work(*en); });
+      } catch (const std::system_error&) {
+        break;
+      }
+    }
+    enumerators_.resize(workers_.size());
   }
   ~WorkerPool() {
     {
