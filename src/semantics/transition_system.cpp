@@ -1,5 +1,7 @@
 #include "semantics/transition_system.hpp"
 
+#include <unordered_map>
+
 #include "model/names.hpp"
 
 namespace sfcv::semantics {
@@ -26,25 +28,52 @@ std::string TransitionSystem::describe(StateView state) const {
   return "{" + steps + "}" + outputs;
 }
 
+struct TransitionSystem::NameIndex {
+  const Observable* data = nullptr;  ///< the observables it was built from
+  std::size_t size = 0;
+  std::unordered_map<std::string, std::uint32_t> by_name;  ///< the first observable of a name
+  std::unordered_map<std::string, std::vector<std::uint32_t>> by_alias;  ///< each once, in order
+};
+
+TransitionSystem::LazyNameIndex::LazyNameIndex() = default;
+TransitionSystem::LazyNameIndex::LazyNameIndex(const LazyNameIndex&) {}
+TransitionSystem::LazyNameIndex& TransitionSystem::LazyNameIndex::operator=(const LazyNameIndex&) {
+  return *this;  // the copy's index is built from its own observables
+}
+TransitionSystem::LazyNameIndex::~LazyNameIndex() = default;
+
 std::optional<std::uint32_t> find_observable(const TransitionSystem& ts, std::string_view name,
                                              std::string* error) {
   const auto& obs = ts.observables();
-  for (std::uint32_t i = 0; i < obs.size(); ++i)
-    if (model::iequals(obs[i].name, name)) return i;
-  std::vector<std::uint32_t> hits;
-  for (std::uint32_t i = 0; i < obs.size(); ++i)
-    for (const auto& a : obs[i].aliases)
-      if (model::iequals(a, name)) {
-        hits.push_back(i);
-        break;
+  const TransitionSystem::NameIndex* index = nullptr;
+  {
+    auto& lazy = ts.names_;
+    const std::lock_guard<std::mutex> lock(lazy.mutex);
+    if (!lazy.index || lazy.index->data != obs.data() || lazy.index->size != obs.size()) {
+      auto built = std::make_unique<TransitionSystem::NameIndex>();
+      built->data = obs.data();
+      built->size = obs.size();
+      for (std::uint32_t i = 0; i < obs.size(); ++i) {
+        built->by_name.emplace(model::to_upper(obs[i].name), i);
+        for (const auto& a : obs[i].aliases) {
+          auto& hits = built->by_alias[model::to_upper(a)];
+          if (hits.empty() || hits.back() != i) hits.push_back(i);
+        }
       }
-  if (hits.size() == 1) return hits.front();
+      lazy.index = std::move(built);
+    }
+    index = lazy.index.get();  // replaced only when the observables change, not during a look-up
+  }
+  const std::string key = model::to_upper(name);
+  if (const auto it = index->by_name.find(key); it != index->by_name.end()) return it->second;
+  const auto it = index->by_alias.find(key);
+  if (it != index->by_alias.end() && it->second.size() == 1) return it->second.front();
   if (error) {
-    if (hits.empty()) {
+    if (it == index->by_alias.end()) {
       *error = "unknown name '" + std::string(name) + "'";
     } else {
       *error = "ambiguous name '" + std::string(name) + "': could be";
-      for (auto h : hits) *error += " " + obs[h].name;
+      for (auto h : it->second) *error += " " + obs[h].name;
     }
   }
   return std::nullopt;

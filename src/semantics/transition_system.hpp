@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -127,6 +128,23 @@ class TransitionSystem {
   virtual std::optional<std::uint32_t> previous_observable(std::uint32_t) const {
     return std::nullopt;
   }
+
+ private:
+  friend std::optional<std::uint32_t> find_observable(const TransitionSystem&, std::string_view,
+                                                      std::string*);
+  /// Observables by upper-case name and alias, built at the first look-up (find_observable),
+  /// so that resolving every step of a 100,000-step chart is linear, not quadratic. A copy of
+  /// the system starts without it; it is rebuilt when the observables have changed size.
+  struct NameIndex;
+  struct LazyNameIndex {
+    LazyNameIndex();
+    LazyNameIndex(const LazyNameIndex&);
+    LazyNameIndex& operator=(const LazyNameIndex&);
+    ~LazyNameIndex();
+    std::mutex mutex;
+    std::unique_ptr<const NameIndex> index;
+  };
+  mutable LazyNameIndex names_;
 };
 
 using TransitionSystemPtr = std::unique_ptr<TransitionSystem>;

@@ -1,0 +1,69 @@
+// A 10,000-step chart through every subcommand and engine: name look-ups are by index, so no
+// pass is quadratic in the steps (resolving each step's name by a linear search took 20-53 s
+// under --timeout 2, and the SAT engines were killed at 60 s). The bounds are CPU seconds of
+// the sfcv child (getrusage), which a loaded machine does not inflate as it does wall time.
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <string>
+
+#include "support/sfcv_test.hpp"
+
+namespace {
+
+using sfcv::test::run_sfcv;
+
+/// A loop of `n` steps S0 -> S1 -> ... -> S0, each transition on input a; o in the last step.
+std::string chain(int n) {
+  std::string text =
+      "PROGRAM Chain\n  VAR_INPUT a : BOOL; END_VAR\n  VAR_OUTPUT o : BOOL; END_VAR\n"
+      "  INITIAL_STEP S0:\n  END_STEP\n";
+  for (int i = 1; i < n; ++i)
+    text +=
+        "  STEP S" + std::to_string(i) + ":\n" + (i == n - 1 ? "    o(N);\n" : "") + "  END_STEP\n";
+  for (int i = 0; i < n; ++i)
+    text += "  TRANSITION FROM S" + std::to_string(i) + " TO S" + std::to_string((i + 1) % n) +
+            " := a;\n  END_TRANSITION\n";
+  return sfcv::test::write_temp(text + "END_PROGRAM\n", ".st");
+}
+
+double children_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+}
+
+struct CpuRun {
+  sfcv::test::RunResult run;
+  double cpu = 0;
+};
+
+CpuRun cpu_run(const std::string& args) {
+  const double before = children_cpu_seconds();
+  CpuRun r;
+  r.run = run_sfcv(args);
+  r.cpu = children_cpu_seconds() - before;
+  return r;
+}
+
+TEST(LargeChart, EverySubcommandAndEngineStaysWithinItsBudgetOnTenThousandSteps) {
+  const std::string file = chain(10000);
+  for (const char* cmd : {"lint", "info", "info --json"}) {
+    const auto r = cpu_run(std::string(cmd) + " '" + file + "'");
+    EXPECT_EQ(r.run.exit_code, 0) << cmd << ": " << r.run.err;
+    EXPECT_LT(r.cpu, 3.0) << cmd;
+  }
+  for (const char* engine : {"explicit", "bdd", "bmc", "kind", "ic3", "auto"}) {
+    const auto r = cpu_run("check '" + file + "' --engine " + engine + " --timeout 2 --quiet");
+    EXPECT_TRUE(r.run.exit_code == 0 || r.run.exit_code == 3)
+        << engine << ": exit " << r.run.exit_code << "\n"
+        << r.run.err;
+    // 2 s of budget, then 1 s + 5 % to stop and report, and room for a loaded machine.
+    EXPECT_LT(r.cpu, 6.0) << engine;
+    EXPECT_NE(r.run.out.find("reachable"), std::string::npos) << engine << ": " << r.run.out;
+  }
+}
+
+}  // namespace
