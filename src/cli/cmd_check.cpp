@@ -27,6 +27,7 @@
 #include "engine/sat/sat_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/vacuity.hpp"
+#include "model/input_file.hpp"
 #include "model/names.hpp"
 #include "report/check_html.hpp"
 #include "report/check_junit.hpp"
@@ -88,14 +89,6 @@ void print_diagnostics(const model::Diagnostics& diags, const char* what) {
   if (errors) throw InputError(std::string("sfcv check: ") + what);
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the spec file");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       const engine::BddEngineOptions& bdd_options,
                                       const engine::ExplicitEngineOptions& explicit_options,
@@ -148,8 +141,10 @@ int run_check(const CheckOptions& o) {
   const model::Budget budget = make_budget(o.limits);
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{
-      o.ctl, o.spec.empty() ? "" : read_file(o.spec), o.spec, o.fair, o.assume, o.patterns, {},
-      o.ltl};
+      o.ctl,    o.spec.empty() ? "" : model::read_input_file(o.spec, "the spec file"),
+      o.spec,   o.fair,
+      o.assume, o.patterns,
+      {},       o.ltl};
   // A bound in time ("within 2 s") counts cycles of --cycle when time is discrete.
   if (o.system.time == "discrete") inputs.pattern_options.cycle_ms = parse_cycle_ms(o.system.cycle);
   auto parsed = logic::parse_check_inputs(inputs);

@@ -25,6 +25,7 @@
 #include "io/plcopen_writer.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/formula.hpp"
+#include "model/input_file.hpp"
 #include "model/names.hpp"
 #include "report/chart_dot.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -45,14 +46,6 @@ struct ExportOptions {
   SystemOptions system;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot open the spec file");
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
   bool errors = false;
   for (const auto& d : diags) {
@@ -65,7 +58,10 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
 void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
   logic::CheckInputs inputs{
-      o.ctl, o.spec.empty() ? "" : read_text(o.spec), o.spec, {}, o.assume, {}, {}, o.ltl};
+      o.ctl,    o.spec.empty() ? "" : model::read_input_file(o.spec, "the spec file"),
+      o.spec,   {},
+      o.assume, {},
+      {},       o.ltl};
   auto parsed = logic::parse_check_inputs(inputs);
   print_or_throw(parsed.diagnostics, "errors in the properties");
   if (!parsed.spec.fairness.empty())

@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
 #include "cli/system_options.hpp"
 #include "report/check_html.hpp"
@@ -26,14 +27,8 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& o) {
-  std::ifstream in(o.result);
-  if (!in) throw InputError(o.result + ": cannot read the result");
-  nlohmann::json result;
-  try {
-    result = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(o.result + ": not a JSON result of 'sfcv check --json': " + e.what());
-  }
+  nlohmann::json result =
+      read_json_file(o.result, "the result", "not a JSON result of 'sfcv check --json'");
   if (!result.contains("properties") || !result["properties"].is_array())
     throw InputError(o.result + ": not a JSON result of 'sfcv check --json' (no \"properties\")");
   const std::string model = !o.model.empty() ? o.model : result.value("model", std::string());

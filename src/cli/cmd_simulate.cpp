@@ -17,10 +17,12 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
+#include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
 #include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
 #include "logic/trace.hpp"
+#include "model/input_file.hpp"
 #include "model/names.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -68,8 +70,7 @@ std::vector<std::string> split_csv(const std::string& line, std::vector<std::siz
 std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
                                                   const semantics::TransitionSystem& ts,
                                                   std::vector<int>& shown) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot read the input trace");
+  std::istringstream f(model::read_input_file(path, "the input trace"));
   const auto& inputs = ts.inputs();
   std::vector<int> column_input;
   std::vector<std::vector<std::int64_t>> rows;
@@ -162,14 +163,7 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
 std::vector<std::vector<std::int64_t>> read_json_trace(const std::string& path,
                                                        const semantics::TransitionSystem& ts,
                                                        std::vector<int>& shown) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path + ": cannot read the input trace");
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(f);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path + ": not a JSON trace: " + e.what());
-  }
+  const nlohmann::json doc = read_json_file(path, "the input trace", "not a JSON trace");
   if (!doc.is_object() || !doc.contains("steps") || !doc["steps"].is_array())
     throw InputError(path + ": not a trace of 'sfcv check --trace json' (no \"steps\" array)");
   const auto& inputs = ts.inputs();

@@ -1,8 +1,8 @@
 #include "io/load.hpp"
 
 #include <cctype>
-#include <fstream>
-#include <sstream>
+
+#include "model/input_file.hpp"
 
 namespace sfcv::io {
 
@@ -37,17 +37,14 @@ Format detect_format(const std::string& path, std::string_view text) {
 }
 
 LoadResult load_file(const std::string& path, Format format, const model::Budget* budget) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::string text;
+  if (auto reason = model::try_read_input_file(path, "the model", text)) {
     LoadResult r;
     model::SourceLocation where;
     where.file = path;
-    r.diagnostics.push_back({model::Severity::Error, where, "cannot open file"});
+    r.diagnostics.push_back({model::Severity::Error, where, *reason});
     return r;
   }
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  const std::string text = buf.str();
   if (format == Format::Auto) format = detect_format(path, text);
   switch (format) {
     case Format::PlcopenXml:

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "model/input_file.hpp"
 #include "model/names.hpp"
 
 namespace sfcv::logic {
@@ -748,14 +749,12 @@ void QueryLibrary::add_text(std::string_view text, const std::string& source_nam
 }
 
 void QueryLibrary::add_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) {
+  std::string text;
+  if (auto reason = model::try_read_input_file(path, "the library file", text)) {
     QueryPos pos{std::make_shared<const std::string>(path), 0, 0};
-    throw QueryError(pos, "cannot read the library file");
+    throw QueryError(pos, *reason);
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  add_text(ss.str(), path);
+  add_text(text, path);
 }
 
 const Definition* QueryLibrary::find(std::string_view name) const {

@@ -210,7 +210,7 @@ TEST(Lint, JsonIsAnArrayOfLocatedDiagnostics) {
 TEST(Lint, MissingFileExitsTwo) {
   const auto r = run_sfcv("lint /nonexistent/chart.st");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("/nonexistent/chart.st: error: cannot open file"), std::string::npos)
+  EXPECT_NE(r.out.find("/nonexistent/chart.st: error: cannot open the model"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("1 error, 0 warnings"), std::string::npos) << r.out;
 }
