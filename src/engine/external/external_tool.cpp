@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -38,6 +39,7 @@ ToolRun run_tool(const std::vector<std::string>& argv, const std::string& workin
                  double timeout_seconds) {
   if (argv.empty()) throw std::invalid_argument("run_tool: empty command");
   const auto log = std::filesystem::path(working_dir) / ".tool-output";
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw std::runtime_error("run_tool: fork failed");
   if (pid == 0) {
@@ -49,6 +51,10 @@ ToolRun run_tool(const std::vector<std::string>& argv, const std::string& workin
     const int null_in = ::open("/dev/null", O_RDONLY);
     if (null_in >= 0) ::dup2(null_in, 0);
     ::setpgid(0, 0);
+    // The tool dies with sfcv: killed sfcv once left graphviz's dot running for minutes. (Its
+    // own process group keeps it out of a terminal's Ctrl-C, which sfcv handles itself.)
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
