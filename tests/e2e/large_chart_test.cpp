@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "support/sfcv_test.hpp"
@@ -64,6 +65,17 @@ TEST(LargeChart, EverySubcommandAndEngineStaysWithinItsBudgetOnTenThousandSteps)
     EXPECT_LT(r.cpu, 6.0) << engine;
     EXPECT_NE(r.run.out.find("reachable"), std::string::npos) << engine << ": " << r.run.out;
   }
+}
+
+TEST(LargeChart, TheBddQueryEngineHoldsTheDeadlineInsideItsOperations) {
+  // Twelve tanks: building the evolutions is one and_exist that ran 400 s past --timeout 5.
+  const std::string file = sfcv::test::write_temp("", ".st");
+  const std::string gen = std::string("'") + SFCV_GEN + "' tanks 12 -o '" + file + "'";
+  ASSERT_EQ(std::system(gen.c_str()), 0);
+  const auto r = cpu_run("query '" + file + "' 'Y - Pred(Y0, T)' --engine bdd --timeout 2");
+  EXPECT_EQ(r.run.exit_code, 3) << r.run.err;
+  EXPECT_NE(r.run.err.find("time limit"), std::string::npos) << r.run.err;
+  EXPECT_LT(r.cpu, 6.0);
 }
 
 }  // namespace

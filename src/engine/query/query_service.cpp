@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "engine/bdd/bdd_manager.hpp"
 #include "engine/bdd/symbolic_query_evaluator.hpp"
 #include "engine/explicit/canonical_order.hpp"
 #include "engine/explicit/query_evaluator.hpp"
@@ -97,8 +98,11 @@ class SymbolicQueryService final : public QueryService {
   static constexpr std::uint64_t kMaxListed = 10'000'000;
 
   SymbolicQueryService(const semantics::TransitionSystem& ts, semantics::TransitionCircuit circuit,
-                       const SymbolicQueryOptions& options)
-      : sys_(ts, std::move(circuit)), ev_(sys_, options) {
+                       const SymbolicQueryOptions& options, const model::Budget& budget)
+      : cancel_(budget.cancel),
+        deadline_(budget.deadline, cancel_.get()),
+        sys_(ts, std::move(circuit), symbolic_options(budget)),
+        ev_(sys_, options) {
     summary_.situations = static_cast<std::uint64_t>(ev_.num_states());
     summary_.evolutions = static_cast<std::uint64_t>(ev_.num_evolutions());
     summary_.anomalies = anomalies();
@@ -160,6 +164,21 @@ class SymbolicQueryService final : public QueryService {
     return std::move(sink.found);
   }
 
+  static SymbolicOptions symbolic_options(const model::Budget& budget) {
+    SymbolicOptions o;
+    if (budget.max_memory_bytes > 0)
+      o.max_nodes = static_cast<int>(std::clamp<std::uint64_t>(
+          budget.max_memory_bytes / bdd::kBytesPerNode, 1, 2'000'000'000));
+    o.timeout_seconds = budget.seconds_left();
+    o.deadline = budget.deadline;
+    o.max_circuit_bytes = budget.max_memory_bytes;
+    return o;
+  }
+
+  // Every BDD operation of the service (building the relation, the fixpoints, the listings)
+  // polls the run's deadline: one and_exist on tanks 12 ran 400 s past --timeout 5.
+  std::shared_ptr<std::atomic<bool>> cancel_;
+  bdd::DeadlineScope deadline_;
   SymbolicSystem sys_;
   SymbolicQueryEvaluator ev_;
   logic::QueryGraphSummary summary_;
@@ -258,7 +277,7 @@ QueryServicePtr make_query_service(const semantics::TransitionSystem& ts,
     SymbolicQueryOptions so;
     so.max_states = budget.max_states;
     so.timeout_seconds = budget.seconds_left();  // what is left of the one budget
-    return std::make_unique<SymbolicQueryService>(ts, std::move(*circuit), so);
+    return std::make_unique<SymbolicQueryService>(ts, std::move(*circuit), so, budget);
   }
   if (explicit_service) return explicit_service;
   try {
