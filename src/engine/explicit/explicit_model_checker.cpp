@@ -93,12 +93,20 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   const auto start = Clock::now();
   // Invariants alone need neither the edges nor their labels: decided during the search.
   if (invariants_only(task)) {
-    const auto compiled = make_compiled_enumerator(*task.system, task.limits);
-    // More threads than cores only add contention (and --threads 100000 would exhaust the
-    // process table): the request is capped at the cores available.
-    const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
-    const unsigned threads = options_.threads > 0 ? std::min(options_.threads, cores) : cores;
-    return check_invariants(task, compiled.get(), threads);
+    // An input too wide to enumerate ends the search as any limit does: a report of unknowns
+    // naming it (the portfolio then races the symbolic engines), never a bare error.
+    try {
+      const auto compiled = make_compiled_enumerator(*task.system, task.limits);
+      // More threads than cores only add contention (and --threads 100000 would exhaust the
+      // process table): the request is capped at the cores available.
+      const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
+      const unsigned threads = options_.threads > 0 ? std::min(options_.threads, cores) : cores;
+      return check_invariants(task, compiled.get(), threads);
+    } catch (const LimitReached& stop) {
+      auto report = all_unknown(task, stop);
+      report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      return report;
+    }
   }
   ExplorationOptions opts;
   opts.max_states = task.limits.max_states;
