@@ -88,6 +88,31 @@ END_PROGRAM
   expect_on_every_engine(text, "AG !(q & calls < 2)", logic::Verdict::Holds);
 }
 
+// The same inside a user function block instance that is called only under an IF: the
+// instance's TON reads the cycle clock too.
+TEST(CycleTimers, ATimerInAnInstanceCalledUnderAnIfAgesOnEveryEngine) {
+  const std::string text = R"(FUNCTION_BLOCK Delay
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT done : BOOL; END_VAR
+  VAR t : TON; END_VAR
+  t(IN := go, PT := T#30ms);
+  done := t.Q;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT a, c : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; calls : INT(0..7); END_VAR
+  VAR d : Delay; END_VAR
+  IF c THEN
+    d(go := a);
+    IF calls < 7 THEN calls := calls + 1; END_IF;
+  END_IF;
+  q := d.done;
+END_PROGRAM
+)";
+  expect_on_every_engine(text, "AG !(q & calls < 4)", logic::Verdict::Violated);
+  expect_on_every_engine(text, "AG !(q & calls < 2)", logic::Verdict::Holds);
+}
+
 // A TON called twice per cycle with the same IN reads one clock: Q 30 ms after IN rose, in
 // the 4th cycle at the earliest. The old reading aged it twice per cycle: "violated", wrongly.
 TEST(CycleTimers, ATimerCalledTwicePerCycleAgesOnceOnEveryEngine) {
