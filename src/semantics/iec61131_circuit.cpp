@@ -252,6 +252,9 @@ class SymbolicMachine {
     const std::int64_t need = d <= 0 ? 1 : 1 + (d + c - 1) / c;
     return aig_.make_not(less(v, constant(need)));
   }
+  std::size_t timer_index(const Timer& t) const {
+    return static_cast<std::size_t>(&t - p_.timers.data());
+  }
   Value timer_next(const Timer& t, AigLit run, AigLit restart) {
     const Value v = nxt_[t.field];
     const AigLit idle = equal(v, constant(0));
@@ -259,14 +262,37 @@ class SymbolicMachine {
     if (p_.options.time == TimeMode::Abstract) {
       const Value start = constant(t.duration_ms <= 0 ? 2 : 1);
       const AigLit timeout = truth(input_value(static_cast<std::uint32_t>(t.timeout_input)));
-      const Value advanced =
+      Value advanced =
           mux(equal(v, constant(2)), constant(2), mux(timeout, constant(2), constant(1)));
+      // Started in this cycle (a second call): no time has passed yet (Machine::timer_next).
+      if (t.clocked) advanced = mux(started_[timer_index(t)], v, advanced);
       running = mux(aig_.make_or(idle, restart), start, advanced);
     } else {
-      const Value bumped = min(bv_add(aig_, v, constant(1)), constant(t.max_value));
+      // A clocked timer's field already holds this cycle's age (advance_clock).
+      const Value bumped = t.clocked ? v : min(bv_add(aig_, v, constant(1)), constant(t.max_value));
       running = mux(aig_.make_or(idle, restart), constant(1), bumped);
     }
     return mux(run, running, constant(0));
+  }
+  /// Abstract time: a clocked timer started on the paths of `when`.
+  void note_start(const Timer& t, AigLit when) {
+    if (p_.options.time != TimeMode::Abstract) return;
+    auto& s = started_[timer_index(t)];
+    s = aig_.make_or(s, when);
+  }
+  /// A new cycle's clock (Machine::advance_clock).
+  void advance_clock() {
+    started_.assign(p_.timers.size(), Aig::kFalse);
+    if (p_.options.time != TimeMode::Discrete) return;
+    for (const auto& t : p_.timers) {
+      if (!t.clocked) continue;
+      const Value& v = cur_[t.field];
+      nxt_[t.field] = mux(equal(v, constant(0)), constant(0),
+                          min(bv_add(aig_, v, constant(1)), constant(t.max_value)));
+    }
+  }
+  void snapshot_et(const Fb& fb, const Timer& t, AigLit guard) {
+    if (fb.et != kNone) set(static_cast<std::uint32_t>(fb.et), nxt_[t.field], guard);
   }
 
   // -------------------------------------------------------------------- the cycle
@@ -285,6 +311,7 @@ class SymbolicMachine {
   std::vector<Value> cur_, nxt_, input_values_;
   std::vector<std::int64_t> initial_values_;  ///< per field: what SFCInit/SFCReset restore
   std::vector<AigLit> consumed_, entered_, left_;
+  std::vector<AigLit> started_;  ///< per timer: started in this cycle (abstract time)
   // Paths (under the current loop) that took EXIT or CONTINUE, and paths that took RETURN.
   AigLit left_loop_ = Aig::kFalse, exit_ = Aig::kFalse, returned_ = Aig::kFalse;
   // Range errors are raised only under this condition: inside a loop, the loop's guard.
@@ -325,8 +352,8 @@ Value SymbolicMachine::eval(std::uint32_t index, AigLit guard) {
       return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
     case Op::TimerET: {
       const auto& fb = p_.fbs[n.a];
-      if (fb.timer == kNone) return constant(0);
-      const Value v = nxt_[p_.timers[static_cast<std::size_t>(fb.timer)].field];
+      if (fb.et == kNone) return constant(0);  // never called
+      const Value v = nxt_[static_cast<std::size_t>(fb.et)];
       const Value elapsed = mul_constant(bv_sub(aig_, v, constant(1)), p_.options.cycle_ms, guard);
       return mux(equal(v, constant(0)), constant(0), min(elapsed, constant(fb.pt_ms)));
     }
@@ -663,9 +690,11 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
     case model::StandardFb::TON: {
       const AigLit in = truth(arg(s.arg1));
       const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
+      note_start(t, aig_.make_and(guard, aig_.make_and(in, equal(nxt_[t.field], constant(0)))));
       const Value v = timer_next(t, in, Aig::kFalse);
       set(t.field, v, guard);
       set_bool(q, aig_.make_and(in, timer_expired(t, v)), guard);
+      snapshot_et(fb, t, guard);
       return;
     }
     case model::StandardFb::TOF: {
@@ -675,10 +704,13 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
           aig_.make_or(nxt_truth(q), aig_.make_not(equal(nxt_[t.field], constant(0))));
       const Value v = timer_next(t, Aig::kTrue, Aig::kFalse);
       const AigLit off_running = aig_.make_and(aig_.make_not(in), was);
+      note_start(
+          t, aig_.make_and(guard, aig_.make_and(off_running, equal(nxt_[t.field], constant(0)))));
       // IN: reset the timer, Q = 1; not IN and running: advance; otherwise unchanged.
       set(t.field, mux(in, constant(0), mux(off_running, v, nxt_[t.field])), guard);
       set_bool(q, aig_.make_or(in, aig_.make_and(off_running, aig_.make_not(timer_expired(t, v)))),
                aig_.make_and(guard, aig_.make_or(in, off_running)));
+      snapshot_et(fb, t, guard);
       return;
     }
     case model::StandardFb::TP: {
@@ -698,6 +730,8 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
       const AigLit moving = aig_.make_or(start, aig_.make_not(idle));
       set(t.field, mux(moving, mux(clear, constant(0), v), nxt_[t.field]), guard);
       set_bool(q, aig_.make_and(moving, q_running), guard);
+      note_start(t, aig_.make_and(guard, start));
+      snapshot_et(fb, t, guard);
       return;
     }
     case model::StandardFb::None:
@@ -963,6 +997,7 @@ void SymbolicMachine::build(StateView initial_state) {
 
   // The cycle: assumptions on the new inputs and the current state, then the POUs in order.
   nxt_ = cur_;
+  advance_clock();
   AigLit assumed = Aig::kTrue;
   for (auto a : p_.assumptions) assumed = aig_.make_and(assumed, eval_truth(a, assumed));
   c_.allowed = aig_.make_and(allowed, assumed);

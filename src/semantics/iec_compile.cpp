@@ -354,6 +354,7 @@ bool Compiler::run() {
       p.assumptions.push_back(
           bool_expr(scopes[std::min<std::size_t>(first_program, scopes.size() - 1)], a, -1,
                     a->where, "assumption"));
+  timer_snapshots();
   step_timers();
   sfc_flags();
   reject_call_cycles();

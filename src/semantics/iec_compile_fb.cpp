@@ -156,7 +156,10 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
     // often gives none): decided once every call is compiled (finish_timers).
     if (!pt_given && !pt_irrelevant) omitted_pt.emplace(out.target, s.where);
     called_timers.insert(out.target);
-    if (fb.pt_set && fb.timer == kNone) fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
+    if (fb.pt_set && fb.timer == kNone) {
+      fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
+      p.timers[static_cast<std::size_t>(fb.timer)].clocked = true;
+    }
   }
   out.arg1 = nodes[0];
   if (nodes.size() > 1) out.arg2 = nodes[1];
@@ -184,6 +187,21 @@ void Compiler::finish_timers() {
       fb.pt_set = true;
     }
     fb.timer = make_timer(fb.name, fb.pt_ms, fb.name);
+    p.timers[static_cast<std::size_t>(fb.timer)].clocked = true;
+  }
+}
+
+void Compiler::timer_snapshots() {
+  if (p.options.time != TimeMode::Discrete) return;
+  std::set<std::uint32_t> read;
+  for (const auto& n : p.nodes)
+    if (n.op == Op::TimerET) read.insert(n.a);
+  for (const auto index : read) {
+    auto& fb = p.fbs[index];
+    if (fb.timer == kNone) continue;  // never called: ET stays 0
+    const auto& t = p.timers[static_cast<std::size_t>(fb.timer)];
+    fb.et = static_cast<std::int32_t>(
+        add_field(fb.name + ".ET_AT_CALL", FieldKind::Timer, 0, t.max_value, 0, false));
   }
 }
 

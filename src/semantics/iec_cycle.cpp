@@ -24,6 +24,7 @@ bool Machine::run() {
   touched_.clear();
   pos_ = 0;
   nxt_ = cur_;
+  advance_clock();
   fired_.clear();
   std::fill(consumed_.begin(), consumed_.end(), std::uint8_t{0});
   std::fill(entered_.begin(), entered_.end(), std::uint8_t{0});
@@ -48,6 +49,7 @@ bool Machine::run_fixed(const std::vector<std::int64_t>& valuation) {
   }
   pos_ = 0;
   nxt_ = cur_;
+  advance_clock();
   fired_.clear();
   std::fill(consumed_.begin(), consumed_.end(), std::uint8_t{0});
   std::fill(entered_.begin(), entered_.end(), std::uint8_t{0});

@@ -23,7 +23,10 @@ Machine::Machine(const Program& p)
       consumed_(p.steps.size()),
       entered_(p.steps.size()),
       left_(p.steps.size()),
-      reset_(p.actions.size()) {
+      reset_(p.actions.size()),
+      started_(p.timers.size()) {
+  for (std::uint32_t i = 0; i < p.timers.size(); ++i)
+    if (p.timers[i].clocked) clocked_.push_back(i);
   for (std::size_t i = 0; i < p.inputs.size(); ++i) {
     in_lo_[i] = p.inputs[i].type.lo;
     in_hi_[i] = p.inputs[i].type.hi;
@@ -249,9 +252,10 @@ std::int64_t Machine::eval(std::uint32_t index) {
     case Op::TimerQ:
       return nxt_[static_cast<std::size_t>(p_.fbs[n.a].q)];
     case Op::TimerET: {
+      // ET as the last call left it (the timer's own field ages between calls).
       const auto& fb = p_.fbs[n.a];
-      if (fb.timer == kNone) return 0;
-      const auto v = nxt_[p_.timers[static_cast<std::size_t>(fb.timer)].field];
+      if (fb.et == kNone) return 0;  // never called
+      const auto v = nxt_[static_cast<std::size_t>(fb.et)];
       return v == 0 ? 0 : std::min((v - 1) * p_.options.cycle_ms, fb.pt_ms);
     }
     case Op::Not:

@@ -17,12 +17,31 @@ bool Machine::timer_expired(const Timer& t, std::int64_t v) const {
   return (v - 1) * p_.options.cycle_ms >= t.duration_ms;
 }
 
+void Machine::advance_clock() {
+  if (p_.options.time == TimeMode::Abstract) {
+    std::fill(started_.begin(), started_.end(), std::uint8_t{0});
+    return;
+  }
+  // ET is the time since the start, whether or not the instance is called in between: the
+  // cycle ages every running instance, saturating where its expiry no longer changes.
+  for (auto i : clocked_) {
+    const auto& t = p_.timers[i];
+    if (const auto v = cur_[t.field]; v != 0) nxt_[t.field] = std::min(v + 1, t.max_value);
+  }
+}
+
 std::int64_t Machine::timer_next(const Timer& t, bool run, bool restart) {
   const auto v = nxt_[t.field];
   if (!run) return 0;
+  const auto index = static_cast<std::size_t>(&t - p_.timers.data());
   if (p_.options.time == TimeMode::Abstract) {
-    if (v == 0 || restart) return t.duration_ms <= 0 ? 2 : 1;
+    if (v == 0 || restart) {
+      started_[index] = 1;
+      return t.duration_ms <= 0 ? 2 : 1;
+    }
     if (v == 2) return 2;
+    // Started in this cycle (a second call): no time has passed yet.
+    if (t.clocked && started_[index]) return 1;
     // Running: the timeout pseudo-input says whether it expires in this cycle.
     std::int64_t timeout = 0;
     const auto in = static_cast<std::uint32_t>(t.timeout_input);
@@ -35,7 +54,9 @@ std::int64_t Machine::timer_next(const Timer& t, bool run, bool restart) {
     return timeout ? 2 : 1;
   }
   if (v == 0 || restart) return 1;
-  return std::min(v + 1, t.max_value);
+  // A clocked timer's field already holds this cycle's age (advance_clock); a qualifier's
+  // timer is aged here, by the one update of its step per cycle.
+  return t.clocked ? v : std::min(v + 1, t.max_value);
 }
 
 // -------------------------------------------------------------------------------- statements
@@ -202,6 +223,7 @@ void Machine::fb_call(const Stmt& s) {
       const auto v = timer_next(t, in, false);
       nxt_[t.field] = v;
       nxt_[q] = in && timer_expired(t, v);
+      snapshot_et(fb, t);
       return;
     }
     case StandardFb::TOF: {
@@ -215,6 +237,7 @@ void Machine::fb_call(const Stmt& s) {
         nxt_[t.field] = v;
         nxt_[q] = !timer_expired(t, v);
       }
+      snapshot_et(fb, t);
       return;
     }
     case StandardFb::TP: {
@@ -238,6 +261,7 @@ void Machine::fb_call(const Stmt& s) {
         nxt_[q] = !done;
         if (done && !in) nxt_[t.field] = 0;
       }
+      snapshot_et(fb, t);
       return;
     }
     case StandardFb::None:

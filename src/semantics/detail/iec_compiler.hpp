@@ -267,6 +267,10 @@ struct Compiler {
   std::int32_t make_timer(const std::string& field_name, std::int64_t d,
                           const std::string& timeout_name);
 
+  /// Discrete time: a field holding ET at the last call for every timer instance whose ET some
+  /// expression reads (after every expression is compiled).
+  void timer_snapshots();
+
   // ----------------------------------------------------------------- charts and actions
   void structure();
 

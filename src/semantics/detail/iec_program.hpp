@@ -142,11 +142,17 @@ struct Function {
 
 /// A timer in one field: 0 idle; abstract time 1 running, 2 expired; discrete time 1 + elapsed
 /// cycles, saturated at 1 + ceil(d / cycle).
+/// A clocked timer (a TON, TOF or TP instance) reads the cycle clock (docs/semantics.md §1.6):
+/// in discrete time the cycle ages it before any code runs, whether or not it is called
+/// (Machine::advance_clock), and its calls only start, stop and read it; in abstract time it
+/// cannot expire in the cycle it started, however often it is called. A qualifier's timer is
+/// aged by phase 4, once per cycle of its POU.
 struct Timer {
   std::uint32_t field = 0;
   std::int64_t duration_ms = 0;
   std::int32_t timeout_input = kNone;  ///< abstract time
   std::int64_t max_value = 2;
+  bool clocked = false;
 };
 
 struct Fb {
@@ -159,6 +165,9 @@ struct Fb {
   std::int32_t timer = kNone;  ///< index into Program::timers
   std::int64_t pt_ms = -1;     ///< timers: constant PT
   bool pt_set = false;
+  /// Discrete time, timers whose ET is read: the timer's value at the last call (its field's
+  /// encoding), since ET changes only when the instance is called while its field ages.
+  std::int32_t et = kNone;
 };
 
 // --------------------------------------------------------------------------- chart structure
@@ -342,6 +351,13 @@ class Machine {
   void assign(std::uint32_t field, std::int64_t v, const std::string& where);
   std::int64_t timer_next(const Timer& t, bool run, bool restart);
   bool timer_expired(const Timer& t, std::int64_t v) const;
+  /// A new cycle's clock: ages every running clocked timer by one cycle (discrete time), forgets
+  /// which started in the last cycle (abstract time).
+  void advance_clock();
+  /// After a call of a timer whose ET is read: ET now shows the call's reading of the clock.
+  void snapshot_et(const Fb& fb, const Timer& t) {
+    if (fb.et != kNone) nxt_[static_cast<std::uint32_t>(fb.et)] = nxt_[t.field];
+  }
 
   void cycle_pou(const Pou& pou);
   /// SFCInit/SFCReset read after the body: restores the POU's chart fields; true under SFCInit.
@@ -364,7 +380,9 @@ class Machine {
   std::vector<std::uint8_t> consumed_, entered_, left_;  ///< per step, this cycle
   std::vector<std::uint32_t> fired_;
   std::vector<std::uint32_t> enabled_scratch_;
-  std::vector<std::uint8_t> reset_;  ///< per action
+  std::vector<std::uint8_t> reset_;     ///< per action
+  std::vector<std::uint32_t> clocked_;  ///< timers that read the cycle clock
+  std::vector<std::uint8_t> started_;   ///< per timer: started in this cycle (abstract time)
   // SFCInit/SFCReset: the initial configuration they restore, and the loaded state (a flag
   // rewrites cur_ within a run; the next leaf starts again from the loaded state).
   bool has_flags_ = false, cur_dirty_ = false;
