@@ -21,6 +21,7 @@
 #include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
 #include "logic/trace.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -132,13 +133,12 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
       else if (u == "FALSE")
         v = 0;
       else {
-        try {
-          std::size_t pos = 0;
-          v = std::stoll(cells[c], &pos);
-          good = pos == cells[c].size();
-        } catch (const std::exception&) {
-          good = false;
-        }
+        // The one checked conversion (model/literal.hpp), as the model's readers.
+        const std::string& cell = cells[c];
+        const auto blanks = std::min(cell.find_first_not_of(" \t"), cell.size());
+        const auto read = model::integer_literal(std::string_view(cell).substr(blanks));
+        good = read.value.has_value();
+        v = read.value.value_or(0);
       }
       if (!good || v < in.type.lo || v > in.type.hi)
         throw InputError(at + std::to_string(cols[c]) + ": bad value '" + cells[c] +
