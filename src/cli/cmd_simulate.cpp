@@ -193,8 +193,10 @@ std::vector<std::vector<std::int64_t>> read_json_trace(const std::string& path,
       seen[i] = true;
       if (it->is_boolean())
         row[i] = it->get<bool>() ? 1 : 0;
-      else if (it->is_number_integer())
-        row[i] = it->get<std::int64_t>();
+      else if (it->is_number_integer() &&
+               !(it->is_number_unsigned() &&
+                 it->get<std::uint64_t>() > model::kMaxLiteralMagnitude - 1))
+        row[i] = it->get<std::int64_t>();  // an unsigned past LINT's range would wrap around
       else
         throw InputError(at + "bad value for input '" + in.name + "'");
       if (row[i] < in.type.lo || row[i] > in.type.hi)

@@ -48,13 +48,13 @@ LoadResult iec(const std::string& vars, const std::string& condition = "TRUE",
 }
 
 TEST(LiteralsIecText, LimitsOfEachTypeAreAccepted) {
-  const auto r = iec(
-      "i : INT := -32768; j : INT := 32767; k : INT := INT#-32768; u : UINT := 65535; "
-      "l : LINT := -9223372036854775808; m : LINT := 9223372036854775807; "
-      "t : TIME := T#24d20h31m23s647ms;",
-      "l < -9223372036854775807 AND m = 9223372036854775807 AND k = INT#-32768 AND "
-      "m > LINT#-9223372036854775808",
-      "act(L, T#24d20h31m23s647ms);");
+  const auto r =
+      iec("i : INT := -32768; j : INT := 32767; k : INT := INT#-32768; u : UINT := 65535; "
+          "l : LINT := -9223372036854775808; m : LINT := 9223372036854775807; "
+          "t : TIME := T#24d20h31m23s647ms;",
+          "l < -9223372036854775807 AND m = 9223372036854775807 AND k = INT#-32768 AND "
+          "m > LINT#-9223372036854775808",
+          "act(L, T#24d20h31m23s647ms);");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& p = r.project->pous.at(0);
   EXPECT_EQ(p.find_variable("i")->initial, -32768);
@@ -139,13 +139,12 @@ TEST(LiteralsPlcopenXml, ADurationPastTimesRangeIsALocatedErrorNotMinusOneMillis
 }
 
 TEST(LiteralsPlcopenXml, InitialValuesAtTheLimitsAndOnePast) {
-  const auto r = load_plcopen_xml(
-      xml(local("i", "INT", "-32768") + local("j", "INT", "INT#32767") +
-              local("l", "LINT", "-9223372036854775808") +
-              local("m", "LINT", "16#7FFF_FFFF_FFFF_FFFF") +
-              local("t", "TIME", "T#24d20h31m23s647ms"),
-          "T#2s"),
-      "lit.xml");
+  const auto r = load_plcopen_xml(xml(local("i", "INT", "-32768") + local("j", "INT", "INT#32767") +
+                                          local("l", "LINT", "-9223372036854775808") +
+                                          local("m", "LINT", "16#7FFF_FFFF_FFFF_FFFF") +
+                                          local("t", "TIME", "T#24d20h31m23s647ms"),
+                                      "T#2s"),
+                                  "lit.xml");
   ASSERT_TRUE(r.ok()) << errors_of(r);
   const auto& p = r.project->pous.at(0);
   EXPECT_EQ(p.find_variable("i")->initial, -32768);
@@ -199,8 +198,9 @@ TEST(LiteralsPlcopenXml, EnumeratorValuesThatCannotBeReadAreErrors) {
               "<value name=\"A\" value=\"99999999999999999999\"/><value name=\"B\"/>"
               "</values></enum></baseType></dataType></dataTypes>");
   const auto r = load_plcopen_xml(doc, "lit.xml");
-  EXPECT_TRUE(has(errors_of(r), "value of enumerator 'A': integer literal 99999999999999999999 "
-                                "is outside LINT"))
+  EXPECT_TRUE(has(errors_of(r),
+                  "value of enumerator 'A': integer literal 99999999999999999999 "
+                  "is outside LINT"))
       << errors_of(r);
 }
 
@@ -252,7 +252,8 @@ std::string agrafe(const std::string& transition_attributes, const std::string& 
     <arcs source="//@partialGrafcets.0/@steps.0" target="//@partialGrafcets.0/@transitions.0"/>
     <arcs source="//@partialGrafcets.0/@transitions.0" target="//@partialGrafcets.0/@steps.1"/>
     <transitions id="1" )" +
-         transition_attributes + R"(><term xsi:type="terms:LessThan"><subterm xsi:type="terms:Variable" variableDeclaration="//@variableDeclarationContainer/@variableDeclarations.0"/><subterm xsi:type="terms:IntegerConstant" )" +
+         transition_attributes +
+         R"(><term xsi:type="terms:LessThan"><subterm xsi:type="terms:Variable" variableDeclaration="//@variableDeclarationContainer/@variableDeclarations.0"/><subterm xsi:type="terms:IntegerConstant" )" +
          term + R"(/></term></transitions>
   </partialGrafcets>
 </grafcet:Grafcet>
@@ -260,10 +261,9 @@ std::string agrafe(const std::string& transition_attributes, const std::string& 
 }
 
 TEST(LiteralsAgrafe, IntegerConstantsAndDelaysThroughTheCheckedConversion) {
-  const auto ok = load_agrafe_xmi(
-      agrafe("timeConditionType=\"timeDelayed\" delayTime=\"2147483\"",
-             "value=\"-9223372036854775808\""),
-      "lit.grafcet");
+  const auto ok = load_agrafe_xmi(agrafe("timeConditionType=\"timeDelayed\" delayTime=\"2147483\"",
+                                         "value=\"-9223372036854775808\""),
+                                  "lit.grafcet");
   ASSERT_TRUE(ok.ok()) << errors_of(ok);
   const auto& g = ok.project->pous.at(0).charts.at(0).transitions.at(0).guard;
   ASSERT_EQ(g->kind, model::ExprKind::Delay);
@@ -278,15 +278,15 @@ TEST(LiteralsAgrafe, IntegerConstantsAndDelaysThroughTheCheckedConversion) {
                   "IntegerConstant: integer literal 9223372036854775808 is outside LINT"));
   EXPECT_TRUE(has(value("", "value=\"abc\""), "IntegerConstant: 'abc' is not an integer literal"));
   // delayTime * 1000 wrapped around.
-  EXPECT_TRUE(has(value("timeConditionType=\"timeDelayed\" delayTime=\"9223372036854775807\"",
-                        "value=\"1\""),
-                  "TIME literal delayTime 9223372036854775807 is outside TIME"));
+  EXPECT_TRUE(has(
+      value("timeConditionType=\"timeDelayed\" delayTime=\"9223372036854775807\"", "value=\"1\""),
+      "TIME literal delayTime 9223372036854775807 is outside TIME"));
   EXPECT_TRUE(has(value("timeConditionType=\"timeDelayed\" delayTime=\"2147484\"", "value=\"1\""),
                   "is outside TIME"));
   // An unknown unit was read as seconds.
-  EXPECT_TRUE(has(value("timeConditionType=\"timeDelayed\" delayTime=\"2\" unit=\"fortnight\"",
-                        "value=\"1\""),
-                  "unknown time unit 'fortnight'"));
+  EXPECT_TRUE(has(
+      value("timeConditionType=\"timeDelayed\" delayTime=\"2\" unit=\"fortnight\"", "value=\"1\""),
+      "unknown time unit 'fortnight'"));
   const std::string located = value("", "value=\"9223372036854775808\"");
   EXPECT_TRUE(has(located, "lit.grafcet:")) << located;
 }
@@ -294,13 +294,12 @@ TEST(LiteralsAgrafe, IntegerConstantsAndDelaysThroughTheCheckedConversion) {
 // ---------------------------------------------------------------------------------------- IL
 
 TEST(LiteralsIl, AnOperandPastItsRangeIsLocatedInTheBody) {
-  const std::string doc =
-      test::kPlcopenHeader +
-      "<pou name=\"Main\" pouType=\"program\"><interface>" +
-      test::plcopen_vars("localVars", {"n"}, "<LINT/>") +
-      "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
-      "LD n\nADD 9223372036854775808\nST n\n</xhtml></IL></body></pou>\n" +
-      test::kPlcopenFooter;
+  const std::string doc = test::kPlcopenHeader +
+                          "<pou name=\"Main\" pouType=\"program\"><interface>" +
+                          test::plcopen_vars("localVars", {"n"}, "<LINT/>") +
+                          "</interface><body><IL><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">"
+                          "LD n\nADD 9223372036854775808\nST n\n</xhtml></IL></body></pou>\n" +
+                          test::kPlcopenFooter;
   const auto r = load_plcopen_xml(doc, "lit.xml");
   EXPECT_TRUE(has(errors_of(r), "integer literal 9223372036854775808 is outside LINT"))
       << errors_of(r);

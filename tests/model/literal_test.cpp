@@ -41,8 +41,8 @@ TEST(Literal, BasesUnderscoresAndSigns) {
   EXPECT_EQ(*integer_literal("+3"), 3);
   EXPECT_EQ(*integer_literal("INT#-5"), -5);
   EXPECT_EQ(*integer_literal("DINT#16#7FFFFFFF"), 2147483647);
-  for (const char* bad : {"", "abc", "1.5", "1__0", "_1", "1_", "2#102", "3#1", "16#", "BOOL#1",
-                          "TIME#5", "--1"})
+  for (const char* bad :
+       {"", "abc", "1.5", "1__0", "_1", "1_", "2#102", "3#1", "16#", "BOOL#1", "TIME#5", "--1"})
     EXPECT_FALSE(integer_literal(bad)) << bad;
 }
 
