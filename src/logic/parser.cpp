@@ -332,6 +332,13 @@ class Parser {
     }
     return primary();
   }
+  /// A number the lexer could not read (Tok::Bad): the checked conversion says why.
+  static void bad_number(const Token& t) {
+    if (!t.text.empty() &&
+        (std::isdigit(static_cast<unsigned char>(t.text[0])) || t.text[0] == '-'))
+      throw SyntaxError(t, model::integer_literal(t.text).error);
+  }
+
   static bool is_cmp(Tok k) {
     return k == Tok::Eq || k == Tok::Ne || k == Tok::Lt || k == Tok::Le || k == Tok::Gt ||
            k == Tok::Ge;
@@ -438,6 +445,7 @@ class Parser {
           cmp->value_name = rhs.text;
           return cmp;
         }
+        if (rhs.kind == Tok::Bad) bad_number(rhs);
         if (!constant(rhs, value))
           throw SyntaxError(rhs, "expected an integer constant or an enumerator after '" +
                                      std::string(to_string(c)) + "', found " + describe(rhs));
@@ -445,9 +453,7 @@ class Parser {
       }
       return make_atom(t.text, t.line, t.column);
     }
-    if (t.kind == Tok::Bad && !t.text.empty() &&
-        (std::isdigit(static_cast<unsigned char>(t.text[0])) || t.text[0] == '-'))
-      throw SyntaxError(t, model::integer_literal(t.text).error);
+    if (t.kind == Tok::Bad) bad_number(t);
     if (t.kind == Tok::Bad) throw SyntaxError(t, "unexpected character " + describe(t));
     throw SyntaxError(t, "expected a formula, found " + describe(t));
   }
