@@ -135,7 +135,7 @@ TEST(Literals, EveryTextReaderRefusesTheOverflowingLiteralWithExitTwo) {
   auto r = run_sfcv("lint '" + st + "'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(
-      (r.out + r.err).find(":2:19: error: initial value 40000 is outside INT (-32768..32767)"),
+      (r.out + r.err).find(":2:18: error: initial value 40000 is outside INT (-32768..32767)"),
       std::string::npos)
       << r.out << r.err;
   const auto g7 = write_temp(
