@@ -47,7 +47,7 @@ Converted<std::int64_t> integer_literal(std::string_view text);
 std::string range_text(const Type& t);
 
 /// Empty when `v` is in the range of `t` (an integer or TIME type); otherwise
-/// "<written> is outside the range of INT (-32768..32767)".
+/// "<written> is outside INT (-32768..32767)".
 std::string range_error(std::int64_t v, const Type& t, std::string_view written);
 
 /// Milliseconds as an IEC duration: 90000 -> "T#1m30s", 0 -> "T#0ms".
