@@ -23,6 +23,7 @@
 #include "io/st_parser.hpp"
 #include "logic/trace.hpp"
 #include "model/input_file.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "report/trace_render.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -133,13 +134,12 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
       else if (u == "FALSE")
         v = 0;
       else {
-        try {
-          std::size_t pos = 0;
-          v = std::stoll(cells[c], &pos);
-          good = pos == cells[c].size();
-        } catch (const std::exception&) {
-          good = false;
-        }
+        // The one checked conversion (model/literal.hpp), as the model's readers.
+        const std::string& cell = cells[c];
+        const auto blanks = std::min(cell.find_first_not_of(" \t"), cell.size());
+        const auto read = model::integer_literal(std::string_view(cell).substr(blanks));
+        good = read.value.has_value();
+        v = read.value.value_or(0);
       }
       if (!good || v < in.type.lo || v > in.type.hi)
         throw InputError(at + std::to_string(cols[c]) + ": bad value '" + cells[c] +
@@ -187,8 +187,10 @@ std::vector<std::vector<std::int64_t>> read_json_trace(const std::string& path,
       seen[i] = true;
       if (it->is_boolean())
         row[i] = it->get<bool>() ? 1 : 0;
-      else if (it->is_number_integer())
-        row[i] = it->get<std::int64_t>();
+      else if (it->is_number_integer() &&
+               !(it->is_number_unsigned() &&
+                 it->get<std::uint64_t>() > model::kMaxLiteralMagnitude - 1))
+        row[i] = it->get<std::int64_t>();  // an unsigned past LINT's range would wrap around
       else
         throw InputError(at + "bad value for input '" + in.name + "'");
       if (row[i] < in.type.lo || row[i] > in.type.hi)

@@ -18,6 +18,7 @@
 
 #include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -226,30 +227,37 @@ class Reader {
 
   /// "2s/X202", "500ms/X3/1s": a duration (unit s when left out), '/', X and a step name, and
   /// optionally '/' and a second duration. Spaces are allowed around the parts.
-  static std::optional<Delay> delay_name(std::string_view s) {
+  /// A name of that shape whose duration cannot be read sets `why`.
+  static std::optional<Delay> delay_name(std::string_view s, std::string* why = nullptr) {
     std::size_t i = 0;
     auto spaces = [&] {
       while (i < s.size() && s[i] == ' ') ++i;
     };
+    // The one checked conversion (model/literal.hpp) reads each number; a delay's shape with a
+    // duration past TIME's range is an error (`why`), not a plain variable.
+    std::string bad;
     auto duration = [&]() -> std::optional<std::int64_t> {
       spaces();
       const std::size_t b = i;
-      std::int64_t v = 0;
-      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && i - b < 12)
-        v = v * 10 + (s[i++] - '0');
+      while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
       if (i == b) return std::nullopt;
-      std::int64_t scale = 1000;
-      for (const auto& [unit, ms] : {std::pair<std::string_view, std::int64_t>{"ms", 1},
-                                     {"min", 60000},
-                                     {"s", 1000},
-                                     {"h", 3600000}})
+      const std::string_view digits = s.substr(b, i - b);
+      std::int64_t unit_ns = 1000000000;
+      for (const auto& [unit, ns] : {std::pair<std::string_view, std::int64_t>{"ms", 1000000},
+                                     {"min", 60000000000},
+                                     {"s", 1000000000},
+                                     {"h", 3600000000000}})
         if (s.substr(i, unit.size()) == unit) {
-          scale = ms;
+          unit_ns = ns;
           i += unit.size();
           break;
         }
       spaces();
-      return v * scale;
+      model::DurationLiteral d(digits);
+      const auto ms = d.add(digits, "", unit_ns) ? d.milliseconds(false)
+                                                 : model::Converted<std::int64_t>{{}, d.error()};
+      if (!ms) bad = ms.error;  // reported once the whole name has a delay's shape
+      return ms.value.value_or(0);
     };
     const auto t1 = duration();
     if (!t1 || i >= s.size() || s[i] != '/') return std::nullopt;
@@ -268,6 +276,10 @@ class Reader {
       d.t2 = *t2;
     }
     if (i != s.size()) return std::nullopt;
+    if (!bad.empty()) {
+      if (why) *why = bad;
+      return std::nullopt;
+    }
     return d;
   }
 
@@ -287,7 +299,11 @@ class Reader {
         continue;
       }
       if (kind == "internal" && sort == "Bool") {
-        if (auto d = delay_name(name)) {
+        std::string why;
+        const auto d = delay_name(name, &why);
+        if (!d && !why.empty())
+          throw Failure{decl, "internal variable '" + name + "' names a delay: " + why};
+        if (d) {
           // AGRAFE has no delay term; models write the delay t1/Xi/t2 as an internal variable
           // of that name, which nothing assigns. Its intended meaning is the IEC 60848 delay.
           warn(decl, model::Severity::Warning,
@@ -675,6 +691,18 @@ class Reader {
     return var->name;
   }
 
+  /// A duration attribute (a whole number of `unit_ns`; 0 when absent, XMI's default) in ms,
+  /// through the one checked conversion: past TIME's range is an error.
+  static std::int64_t duration_attribute(pugi::xml_node n, const char* name, std::int64_t unit_ns) {
+    const std::string written = n.attribute(name).value();
+    if (written.empty()) return 0;
+    model::DurationLiteral d(std::string(name) + " " + written);
+    const auto ms = d.add(written, "", unit_ns) ? d.milliseconds(false)
+                                                : model::Converted<std::int64_t>{{}, d.error()};
+    if (!ms) throw Failure{n, ms.error};
+    return *ms;
+  }
+
   /// The TimeCondition of a transition or continuous action: time-delayed and time-dependent
   /// conditions become the delay t1/e/t2 of `e` (the term, else the step variable).
   ExprPtr timed(pugi::xml_node n, ExprPtr e, const std::string& step_var) {
@@ -683,9 +711,16 @@ class Reader {
     if (type != "timeDelayed" && type != "timeDependent")
       throw Failure{n, "unsupported time condition '" + type + "' (time-limited actions)"};
     const std::string unit = n.attribute("unit") ? n.attribute("unit").value() : "s";
-    const std::int64_t scale = unit == "ms" || unit == "millisecond" ? 1 : 1000;
-    const std::int64_t t1 = n.attribute("delayTime").as_llong(0) * scale;
-    const std::int64_t t2 = n.attribute("resetTime").as_llong(0) * scale;
+    std::int64_t unit_ns = 0;
+    for (const auto& [names, ns] : {std::pair<std::set<std::string>, std::int64_t>{
+                                        {"ms", "millisecond", "milliseconds"}, 1000000},
+                                    {{"s", "second", "seconds"}, 1000000000},
+                                    {{"min", "minute", "minutes"}, 60000000000},
+                                    {{"h", "hour", "hours"}, 3600000000000}})
+      if (names.count(unit)) unit_ns = ns;
+    if (unit_ns == 0) throw Failure{n, "unknown time unit '" + unit + "'"};
+    const std::int64_t t1 = duration_attribute(n, "delayTime", unit_ns);
+    const std::int64_t t2 = duration_attribute(n, "resetTime", unit_ns);
     if (!e && step_var.empty()) throw Failure{n, "a time condition needs a term"};
     return model::make_delay(t1, e ? e : model::make_name(step_var, where(n)), t2, where(n));
   }
@@ -716,7 +751,15 @@ class Reader {
     };
     if (t == "Variable") return variable(n);
     if (t == "BooleanConstant") return model::make_bool(n.attribute("value").as_bool(false), at);
-    if (t == "IntegerConstant") return model::make_int(n.attribute("value").as_llong(0), at);
+    if (t == "IntegerConstant") {
+      // Absent: XMI's default 0. Otherwise the one checked conversion (no wrap-around, no
+      // text read as 0).
+      const std::string written = n.attribute("value").value();
+      if (written.empty()) return model::make_int(0, at);
+      const auto v = model::integer_literal(written);
+      if (!v) throw Failure{n, "IntegerConstant: " + v.error};
+      return model::make_int(*v, at);
+    }
     if (t == "And" || t == "Or") {
       if (args.size() < 2) throw Failure{n, std::string(t) + " takes at least 2 subterms"};
       for (std::size_t i = 0; i < args.size(); ++i) args[i] = as_condition(args[i], n);

@@ -17,6 +17,7 @@
 
 #include "io/g7_lexicon.hpp"
 #include "io/load.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -34,6 +35,8 @@ struct Token {
   Tok kind = Tok::End;
   std::string text;        ///< identifier / string contents / punctuation / number digits
   std::int64_t value = 0;  ///< Number: the value; Time: milliseconds
+  /// Number: 2^63, LINT's smallest value once negated (value holds it); out of range otherwise.
+  bool negation_only = false;
   int line = 0, col = 0;
 };
 
@@ -136,37 +139,40 @@ class Lexer {
     const std::string word(text_.substr(b, pos_ - b));
     std::size_t digits = 0;
     while (digits < word.size() && std::isdigit(static_cast<unsigned char>(word[digits]))) ++digits;
-    std::int64_t v = 0;
-    for (std::size_t i = 0; i < digits; ++i) {
-      if (v > (std::numeric_limits<std::int64_t>::max() - 9) / 10)
-        throw ParseError{t.line, t.col, "number '" + word + "' is too large"};
-      v = v * 10 + (word[i] - '0');
-    }
+    // The one checked conversion (model/literal.hpp): numbers up to 2^63 (negated: LINT's
+    // smallest value), durations within TIME's range.
+    const std::string digit_text = word.substr(0, digits);
     const std::string unit = word.substr(digits);
-    t.text = word.substr(0, digits);
-    t.value = v;
+    t.text = digit_text;
     if (unit.empty()) {
+      const auto magnitude = model::literal_magnitude(digit_text, 10, word);
+      if (!magnitude) throw ParseError{t.line, t.col, magnitude.error};
       t.kind = Tok::Number;
+      t.negation_only = *magnitude == model::kMaxLiteralMagnitude;
+      t.value = t.negation_only ? std::numeric_limits<std::int64_t>::min()
+                                : static_cast<std::int64_t>(*magnitude);
       return;
     }
-    std::int64_t scale = 0;
+    std::int64_t unit_ns = 0;
     if (unit == "ms")
-      scale = 1;
+      unit_ns = 1000000;
     else if (unit == "s")
-      scale = 1000;
+      unit_ns = 1000000000;
     else if (unit == "min")
-      scale = 60000;
+      unit_ns = 60000000000;
     else if (unit == "h")
-      scale = 3600000;
-    if (scale == 0)
+      unit_ns = 3600000000000;
+    if (unit_ns == 0)
       throw ParseError{t.line, t.col,
                        "invalid number '" + word +
                            "' (durations end in ms, s, min or h; quote "
                            "names that start with a digit)"};
-    if (v > std::numeric_limits<std::int64_t>::max() / scale)
-      throw ParseError{t.line, t.col, "duration '" + word + "' is too large"};
+    model::DurationLiteral d("'" + word + "'");
+    const auto ms = d.add(digit_text, "", unit_ns) ? d.milliseconds(false)
+                                                   : model::Converted<std::int64_t>{{}, d.error()};
+    if (!ms) throw ParseError{t.line, t.col, "duration " + ms.error};
     t.kind = Tok::Time;
-    t.value = v * scale;
+    t.value = *ms;
   }
 
   void lex_string(Token& t) {
@@ -321,12 +327,21 @@ class Parser {
     }
     fail(t, "expected a variable name, found " + show(t));
   }
+  /// A Number token's value, negated after a unary minus (model::signed_literal: 2^63 only
+  /// as LINT's smallest value).
+  std::int64_t number_value(const Token& t, bool negated) const {
+    const std::uint64_t magnitude =
+        t.negation_only ? model::kMaxLiteralMagnitude : static_cast<std::uint64_t>(t.value);
+    const auto v = model::signed_literal(negated, magnitude, (negated ? "-" : "") + t.text);
+    if (!v) fail(t, v.error);
+    return *v;
+  }
   std::int64_t signed_number() {
     const bool neg = accept("-");
     const Token& t = peek();
     if (t.kind != Tok::Number) fail(t, "expected an integer, found " + show(t));
     next();
-    return neg ? -t.value : t.value;
+    return number_value(t, neg);
   }
 
   // ---- top level
@@ -379,7 +394,9 @@ class Parser {
                             ? (*initial == 0 || *initial == 1)
                             : (*initial >= type.lo && *initial <= type.hi);
       if (!fits)
-        fail(at, "initial value " + std::to_string(*initial) + " is out of the type's range");
+        fail(at, "initial value " + std::to_string(*initial) + " is outside " +
+                     (type.kind == model::TypeKind::Bool ? std::string("BOOL (0..1)")
+                                                         : model::range_text(type)));
     }
     expect(";");
     for (auto& n : names) {
@@ -737,7 +754,7 @@ class Parser {
     if (accept("!")) return model::make_unary(ExprKind::Not, parse_unary(), at);
     if (is_punct("-")) {
       next();
-      if (peek().kind == Tok::Number) return model::make_int(-next().value, at);
+      if (peek().kind == Tok::Number) return model::make_int(number_value(next(), true), at);
       return model::make_unary(ExprKind::Neg, parse_unary(), at);
     }
     if (is_punct("RE") || is_word("RE")) {
@@ -755,7 +772,7 @@ class Parser {
     const SourceLocation at = loc(t);
     switch (t.kind) {
       case Tok::Number:
-        return model::make_int(t.value, at);
+        return model::make_int(number_value(t, false), at);
       case Tok::Time: {
         if (!accept("/")) return model::make_time(t.value, at);
         ExprPtr inner = boolify(parse_unary());

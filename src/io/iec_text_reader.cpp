@@ -293,7 +293,7 @@ class IecTextReader {
       p.expect_word("PRIORITY");
       p.expect(TokenKind::Assign, "':=' after PRIORITY");
       const Token& n = p.expect(TokenKind::Integer, "an integer priority");
-      if (n.value > 1000000) p.fail(n, "priority too large");
+      if (n.negation_only || n.value > 1000000) p.fail(n, "priority too large");
       t.priority = static_cast<int>(n.value);
       p.expect(TokenKind::RParen, "')' after the priority");
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -575,14 +576,23 @@ std::optional<model::StmtList> Network::statements() {
     if (!cpi || !child(cpi, "connection")) continue;
     outputs.push_back(n);
   }
-  // FBD execution order, when the tool gave one to every output.
-  const bool ordered = !outputs.empty() && std::all_of(outputs.begin(), outputs.end(), [](auto n) {
-    return std::atoi(n.attribute("executionOrderId").value()) > 0;
-  });
+  // FBD execution order, when the tool gave one to every output. Read through the one checked
+  // conversion: an id that wrapped around would reorder the network's assignments.
+  std::map<const void*, std::int64_t> order_id;
+  bool ordered = !outputs.empty();
+  for (auto n : outputs) {
+    const std::string written = trim(n.attribute("executionOrderId").value());
+    const auto id = parse_int_literal(written);
+    if (!written.empty() && !id) {
+      fail(n, "executionOrderId '" + written + "': " + id.error);
+      return std::nullopt;
+    }
+    order_id[n.internal_object()] = id ? *id : 0;
+    ordered = ordered && id && *id > 0;
+  }
   if (ordered)
-    std::stable_sort(outputs.begin(), outputs.end(), [](auto a, auto b) {
-      return std::atoi(a.attribute("executionOrderId").value()) <
-             std::atoi(b.attribute("executionOrderId").value());
+    std::stable_sort(outputs.begin(), outputs.end(), [&](auto a, auto b) {
+      return order_id[a.internal_object()] < order_id[b.internal_object()];
     });
   else if (!in_data_flow_order(outputs))
     return std::nullopt;

@@ -247,9 +247,12 @@ class ChartBuilder {
       t.where = ctx_.where(n);
       const std::string id = n.attribute("localId").value();
       if (const std::string p = trim(n.attribute("priority").value()); !p.empty()) {
+        // The range the IEC text reader allows: an int, and no wrap-around on the way.
         const auto v = parse_int_literal(p);
         if (!v)
-          ctx_.error(n, "priority '" + p + "' is not an integer");
+          ctx_.error(n, "priority '" + p + "': " + v.error);
+        else if (*v < 0 || *v > 1000000)
+          ctx_.error(n, "priority " + p + " is outside 0..1000000");
         else
           t.priority = static_cast<int>(*v);
       }
@@ -411,11 +414,18 @@ class ChartBuilder {
       as.qualifier = *parsed;
     }
     if (const std::string d = trim(a.attribute("duration").value()); !d.empty()) {
-      if (const auto ms = parse_time_literal(d))
+      const auto ms = parse_time_literal(d);
+      if (ms && *ms < 0) {
+        ctx_.error(a, "negative duration '" + d + "'");
+        return;
+      } else if (ms) {
         as.duration_ms = *ms;
-      else if (is_identifier(d))
+      } else if (!ms.error.empty()) {
+        ctx_.error(a, "cannot read the duration '" + d + "': " + ms.error);
+        return;
+      } else if (is_identifier(d)) {
         as.duration_variable = d;
-      else {
+      } else {
         ctx_.error(a, "cannot read the duration '" + d + "' (a TIME literal or variable)");
         return;
       }

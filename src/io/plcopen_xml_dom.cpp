@@ -174,152 +174,17 @@ bool attribute_true(pugi::xml_node node, const char* name) {
   return v == "TRUE" || v == "1";
 }
 
-namespace {
-bool starts_with_ci(std::string_view s, std::string_view prefix) {
-  return s.size() >= prefix.size() && model::iequals(s.substr(0, prefix.size()), prefix);
+model::Converted<std::int64_t> parse_time_literal(std::string_view text) {
+  return model::time_literal(trim(text));
 }
 
-// Digits with optional '_' separators in `base`; nullopt on anything else or overflow.
-std::optional<std::int64_t> parse_digits(std::string_view s, int base) {
-  if (s.empty() || s.front() == '_') return std::nullopt;
-  std::int64_t v = 0;
-  bool any = false;
-  for (char ch : s) {
-    if (ch == '_') continue;
-    int d;
-    if (ch >= '0' && ch <= '9')
-      d = ch - '0';
-    else if (ch >= 'a' && ch <= 'f')
-      d = ch - 'a' + 10;
-    else if (ch >= 'A' && ch <= 'F')
-      d = ch - 'A' + 10;
-    else
-      return std::nullopt;
-    if (d >= base) return std::nullopt;
-    if (v > (std::numeric_limits<std::int64_t>::max() - d) / base) return std::nullopt;
-    v = v * base + d;
-    any = true;
-  }
-  if (!any) return std::nullopt;
-  return v;
-}
-}  // namespace
-
-std::optional<std::int64_t> parse_time_literal(std::string_view text) {
-  std::string s = trim(text);
-  std::string_view v = s;
-  if (starts_with_ci(v, "TIME#"))
-    v.remove_prefix(5);
-  else if (starts_with_ci(v, "LTIME#"))
-    v.remove_prefix(6);
-  else if (starts_with_ci(v, "LT#"))
-    v.remove_prefix(3);
-  else if (starts_with_ci(v, "T#"))
-    v.remove_prefix(2);
-  else
-    return std::nullopt;
-  bool negative = false;
-  if (!v.empty() && (v.front() == '-' || v.front() == '+')) {
-    negative = v.front() == '-';
-    v.remove_prefix(1);
-  }
-  if (v.empty()) return std::nullopt;
-  // Components "<number><unit>", largest unit first; the value is accumulated in microseconds
-  // so that T#1.5s and T#500us are exact until the final conversion.
-  std::int64_t total_us = 0;
-  while (!v.empty()) {
-    if (v.front() == '_') {
-      v.remove_prefix(1);
-      continue;
-    }
-    std::size_t i = 0;
-    while (i < v.size() && (std::isdigit(static_cast<unsigned char>(v[i])) || v[i] == '_')) ++i;
-    const auto int_part = parse_digits(v.substr(0, i), 10);
-    if (!int_part) return std::nullopt;
-    std::string_view frac;
-    if (i < v.size() && v[i] == '.') {
-      const std::size_t f = ++i;
-      while (i < v.size() && std::isdigit(static_cast<unsigned char>(v[i]))) ++i;
-      frac = v.substr(f, i - f);
-    }
-    v.remove_prefix(i);
-    std::int64_t unit_us;
-    auto eat = [&](std::string_view u) {
-      if (starts_with_ci(v, u)) {
-        v.remove_prefix(u.size());
-        return true;
-      }
-      return false;
-    };
-    if (eat("ms"))
-      unit_us = 1000;
-    else if (eat("us"))
-      unit_us = 1;
-    else if (eat("ns"))
-      return std::nullopt;  // below the model's resolution
-    else if (eat("d"))
-      unit_us = 86'400'000'000LL;
-    else if (eat("h"))
-      unit_us = 3'600'000'000LL;
-    else if (eat("m"))
-      unit_us = 60'000'000LL;
-    else if (eat("s"))
-      unit_us = 1'000'000LL;
-    else
-      return std::nullopt;
-    total_us += *int_part * unit_us;
-    std::int64_t scale = unit_us;
-    for (char ch : frac) {
-      scale /= 10;
-      if (scale == 0) {
-        if (ch != '0') return std::nullopt;
-        continue;
-      }
-      total_us += (ch - '0') * scale;
-    }
-  }
-  if (total_us % 1000 != 0) return std::nullopt;  // sub-millisecond durations: not modelled
-  const std::int64_t ms = total_us / 1000;
-  return negative ? -ms : ms;
-}
-
-std::optional<std::int64_t> parse_int_literal(std::string_view text) {
-  std::string s = trim(text);
-  std::string_view v = s;
-  // A type prefix such as INT# or UDINT# (letters before '#').
-  if (const auto hash = v.find('#'); hash != std::string_view::npos) {
-    const auto prefix = v.substr(0, hash);
-    if (!prefix.empty() && std::all_of(prefix.begin(), prefix.end(), [](char c) {
-          return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-        }))
-      v.remove_prefix(hash + 1);
-  }
-  bool negative = false;
-  if (!v.empty() && (v.front() == '-' || v.front() == '+')) {
-    negative = v.front() == '-';
-    v.remove_prefix(1);
-  }
-  int base = 10;
-  if (const auto hash = v.find('#'); hash != std::string_view::npos) {
-    const auto b = v.substr(0, hash);
-    if (b == "2")
-      base = 2;
-    else if (b == "8")
-      base = 8;
-    else if (b == "16")
-      base = 16;
-    else
-      return std::nullopt;
-    v.remove_prefix(hash + 1);
-  }
-  const auto d = parse_digits(v, base);
-  if (!d) return std::nullopt;
-  return negative ? -*d : *d;
+model::Converted<std::int64_t> parse_int_literal(std::string_view text) {
+  return model::integer_literal(trim(text));
 }
 
 std::optional<bool> parse_bool_literal(std::string_view text) {
   std::string s = model::to_upper(trim(text));
-  if (starts_with_ci(s, "BOOL#")) s = s.substr(5);
+  if (s.rfind("BOOL#", 0) == 0) s = s.substr(5);
   if (s == "TRUE" || s == "1") return true;
   if (s == "FALSE" || s == "0") return false;
   return std::nullopt;

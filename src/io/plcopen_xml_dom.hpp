@@ -16,6 +16,7 @@
 
 #include "model/budget.hpp"
 #include "model/diagnostic.hpp"
+#include "model/literal.hpp"
 #include "model/source_location.hpp"
 
 namespace sfcv::io::plcopen {
@@ -96,9 +97,11 @@ struct BodyText {
 BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx);
 
 /// IEC literals, as written in attributes: `T#2s`, `TIME#1h2m`, `t#500ms`; `TRUE`, `FALSE`;
-/// `42`, `-3`, `16#FF`, `INT#5`, `1_000`. nullopt when the text is not such a literal.
-std::optional<std::int64_t> parse_time_literal(std::string_view text);
-std::optional<std::int64_t> parse_int_literal(std::string_view text);
+/// `42`, `-3`, `16#FF`, `INT#5`, `1_000`, through the one checked conversion (model/literal.hpp):
+/// no value and the reason past the type's range. A text without a TIME prefix gives no value
+/// and no reason (it may be a variable's name).
+model::Converted<std::int64_t> parse_time_literal(std::string_view text);
+model::Converted<std::int64_t> parse_int_literal(std::string_view text);
 std::optional<bool> parse_bool_literal(std::string_view text);
 
 std::string trim(std::string_view s);

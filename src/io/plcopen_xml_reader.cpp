@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <pugixml.hpp>
 #include <set>
@@ -20,6 +21,7 @@
 #include "io/plcopen_xml_dom.hpp"
 #include "io/st_parser.hpp"
 #include "model/data_types.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 #include "model/types.hpp"
@@ -156,7 +158,12 @@ model::ExprPtr read_initial_value(XmlContext& ctx, pugi::xml_node value, int dep
   if (k == "arrayValue") {
     std::vector<model::ExprPtr> elements;
     const bool read = each_value([&](pugi::xml_node v, model::ExprPtr e) {
-      const auto repeat = parse_int_literal(v.attribute("repetitionValue").value());
+      const std::string written = trim(v.attribute("repetitionValue").value());
+      const auto repeat = parse_int_literal(written);
+      if (!written.empty() && !repeat) {
+        ctx.error(v, "repetition count: " + repeat.error);
+        return false;
+      }
       const std::int64_t n = repeat ? *repeat : 1;
       if (n < 0 || n > 100000 - static_cast<std::int64_t>(elements.size())) {
         ctx.error(v, "repetition count out of range (at most 100000 elements)");
@@ -256,10 +263,10 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
         if (!simple || var.type.kind == model::TypeKind::FunctionBlock) {
           ctx.error(init, "unsupported: structured initial value of variable '" + var.name + "'");
         } else {
-          std::optional<std::int64_t> value;
+          model::Converted<std::int64_t> value;
           switch (var.type.kind) {
             case model::TypeKind::Bool:
-              if (const auto b = parse_bool_literal(text)) value = *b ? 1 : 0;
+              if (const auto b = parse_bool_literal(text)) value.value = *b ? 1 : 0;
               break;
             case model::TypeKind::Int:
               value = parse_int_literal(text);
@@ -270,15 +277,19 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
             case model::TypeKind::FunctionBlock:
               break;
           }
+          const std::string range =
+              value
+                  ? model::range_error(*value, var.type,
+                                       "initial value " + text + " of variable '" + var.name + "'")
+                  : "";
           if (!value)
             ctx.error(init, "cannot read the initial value '" + text + "' of variable '" +
-                                var.name + "' (" + var.type.name + ")");
-          else if (var.type.kind == model::TypeKind::Int &&
-                   (*value < var.type.lo || *value > var.type.hi))
-            ctx.error(init, "initial value " + text + " of variable '" + var.name +
-                                "' is out of the range of " + var.type.name);
+                                var.name + "' (" + var.type.name + ")" +
+                                (value.error.empty() ? "" : ": " + value.error));
+          else if (!range.empty())
+            ctx.error(init, range);
           else
-            var.initial = value;
+            var.initial = value.value;
         }
       }
       pou.variables.push_back(std::move(var));
@@ -311,9 +322,25 @@ void read_data_type(XmlContext& ctx, pugi::xml_node node, model::Project& projec
   if (k == "enum") {
     t.kind = model::DataTypeKind::Enumeration;
     std::int64_t value = 0;
+    bool past_lint = false;  // the previous enumerator was LINT's largest value
     for (auto v : children(child(base.front(), "values"), "value")) {
-      if (const auto given = parse_int_literal(v.attribute("value").value())) value = *given;
-      t.enumerators.emplace_back(trim(v.attribute("name").value()), value++);
+      const std::string written = trim(v.attribute("value").value());
+      if (!written.empty()) {
+        const auto given = parse_int_literal(written);
+        if (!given) {
+          ctx.error(
+              v, "value of enumerator '" + trim(v.attribute("name").value()) + "': " + given.error);
+          return;
+        }
+        value = *given;
+      } else if (past_lint) {
+        ctx.error(v, "enumerator '" + trim(v.attribute("name").value()) +
+                         "' would be past the range of LINT");
+        return;
+      }
+      t.enumerators.emplace_back(trim(v.attribute("name").value()), value);
+      past_lint = value == std::numeric_limits<std::int64_t>::max();
+      if (!past_lint) ++value;
     }
     if (t.enumerators.empty()) {
       ctx.error(node, "enumeration '" + t.name + "' has no value");

@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "model/literal.hpp"
 #include "model/names.hpp"
 
 namespace sfcv::io::st {
@@ -30,9 +31,6 @@ std::string describe(const Token& t) {
 }
 
 namespace {
-
-// Exact arithmetic for durations (a day in ns times a large count overflows 64 bits).
-__extension__ using Int128 = __int128;
 
 bool is_ident_start(char c) {
   return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
@@ -143,38 +141,29 @@ class Lexer {
     }
   }
 
-  // Reads digits of `base` with '_' separators into `value`; false on overflow or no digit.
-  bool read_digits(int base, std::int64_t& value, bool& overflow) {
-    bool any = false;
-    value = 0;
-    while (digit_value(peek()) < base || (peek() == '_' && any)) {
-      if (peek() != '_') {
-        const int d = digit_value(peek());
-        if (value > (std::numeric_limits<std::int64_t>::max() - d) / base)
-          overflow = true;
-        else
-          value = value * base + d;
-        any = true;
-      }
-      advance();
-    }
-    return any;
+  // The extent of digits of `base` and '_' separators (checked by model::literal_magnitude).
+  std::string_view scan_digits(int base) {
+    const std::size_t b = pos_;
+    while (digit_value(peek()) < base || peek() == '_') advance();
+    return s_.substr(b, pos_ - b);
   }
 
-  // An integer literal with an optional base prefix (16#FF); at a digit.
+  // An integer literal with an optional base prefix (16#FF); at a digit. Its magnitude may be
+  // 2^63 (the parser accepts it only after a unary minus: LINT's smallest value).
   bool lex_integer(Token& t) {
-    std::int64_t v = 0;
-    bool overflow = false;
-    read_digits(10, v, overflow);
-    if (peek() == '#' && (v == 2 || v == 8 || v == 16) && !overflow) {
-      const int base = static_cast<int>(v);
+    const std::size_t b = pos_;
+    std::string_view digits = scan_digits(10);
+    int base = 10;
+    if (peek() == '#' && (digits == "2" || digits == "8" || digits == "16")) {
+      base = digits == "2" ? 2 : digits == "8" ? 8 : 16;
       advance();
-      if (!read_digits(base, v, overflow)) {
+      digits = scan_digits(base);
+      if (digits.empty()) {
         error(t.line, t.column, "malformed base-" + std::to_string(base) + " integer literal");
         return false;
       }
     }
-    if (peek() == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))) {
+    if (base == 10 && peek() == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))) {
       // REAL literal: 1.5, 1.0E3.
       advance();
       while (std::isdigit(static_cast<unsigned char>(peek())) || peek() == '_') advance();
@@ -186,98 +175,34 @@ class Lexer {
       t.kind = TokenKind::Unsupported;
       return true;
     }
-    if (overflow) {
-      error(t.line, t.column, "integer literal too large");
+    const auto magnitude = model::literal_magnitude(digits, base, s_.substr(b, pos_ - b));
+    if (!magnitude) {
+      error(t.line, t.column, magnitude.error);
       return false;
     }
     t.kind = TokenKind::Integer;
-    t.value = v;
+    t.negation_only = *magnitude == model::kMaxLiteralMagnitude;
+    t.value = t.negation_only ? std::numeric_limits<std::int64_t>::min()
+                              : static_cast<std::int64_t>(*magnitude);
     return true;
   }
 
-  // A duration after T# / TIME#: [-] { number [. fraction] unit } with '_' separators.
+  // A duration after T# / TIME#: [-] { number [. fraction] unit } with '_' separators, read by
+  // model::duration_body (the one conversion of durations, docs/semantics.md 1.7).
   bool lex_duration(Token& t) {
-    bool negative = false;
-    if (peek() == '-') {
-      negative = true;
+    if (peek() == '-' || peek() == '+') advance();
+    while (is_ident_char(peek()) ||
+           (peek() == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))))
       advance();
-    } else if (peek() == '+') {
-      advance();
-    }
-    // Accumulate nanoseconds exactly; a literal finer than 1 ms is rejected below.
-    Int128 total_ns = 0;
-    bool any = false;
-    while (std::isdigit(static_cast<unsigned char>(peek()))) {
-      Int128 whole = 0;
-      while (std::isdigit(static_cast<unsigned char>(peek())) || peek() == '_') {
-        if (peek() != '_') whole = whole * 10 + (peek() - '0');
-        if (whole > static_cast<Int128>(1) << 80) break;
-        advance();
-      }
-      Int128 frac = 0, frac_scale = 1;
-      if (peek() == '.' && std::isdigit(static_cast<unsigned char>(peek(1)))) {
-        advance();
-        while (std::isdigit(static_cast<unsigned char>(peek()))) {
-          if (frac_scale < 1000000000000LL) {
-            frac = frac * 10 + (peek() - '0');
-            frac_scale *= 10;
-          }
-          advance();
-        }
-      }
-      std::string unit;
-      while (std::isalpha(static_cast<unsigned char>(peek()))) {
-        unit += static_cast<char>(std::tolower(static_cast<unsigned char>(peek())));
-        advance();
-      }
-      Int128 scale = 0;
-      if (unit == "d")
-        scale = 86400LL * 1000000000LL;
-      else if (unit == "h")
-        scale = 3600LL * 1000000000LL;
-      else if (unit == "m")
-        scale = 60LL * 1000000000LL;
-      else if (unit == "s")
-        scale = 1000000000LL;
-      else if (unit == "ms")
-        scale = 1000000LL;
-      else if (unit == "us")
-        scale = 1000LL;
-      else if (unit == "ns")
-        scale = 1;
-      else {
-        error(t.line, t.column,
-              unit.empty() ? "TIME literal: missing unit (d, h, m, s, ms)"
-                           : "TIME literal: unknown unit '" + unit + "'");
-        return false;
-      }
-      total_ns += whole * scale + frac * scale / frac_scale;
-      if ((frac * scale) % frac_scale != 0) {
-        error(t.line, t.column, "TIME literal finer than a nanosecond");
-        return false;
-      }
-      any = true;
-      if (total_ns > static_cast<Int128>(1) << 100) {
-        error(t.line, t.column, "TIME literal too large");
-        return false;
-      }
-      if (peek() == '_') advance();
-    }
-    if (!any) {
-      error(t.line, t.column, "malformed TIME literal");
-      return false;
-    }
-    if (total_ns % 1000000 != 0) {
-      error(t.line, t.column, "unsupported: TIME literal finer than a millisecond");
-      return false;
-    }
-    const Int128 ms = total_ns / 1000000;
-    if (ms > std::numeric_limits<std::int32_t>::max()) {
-      error(t.line, t.column, "TIME literal too large");
+    const std::string_view written = s_.substr(t.offset, pos_ - t.offset);
+    const auto body = written.substr(written.find('#') + 1);
+    const auto ms = model::duration_body(body, written);
+    if (!ms) {
+      error(t.line, t.column, ms.error);
       return false;
     }
     t.kind = TokenKind::Time;
-    t.value = static_cast<std::int64_t>(negative ? -ms : ms);
+    t.value = *ms;
     return true;
   }
 
@@ -294,10 +219,20 @@ class Lexer {
         return false;
       }
       if (!lex_integer(t)) return false;
-      if (t.kind == TokenKind::Integer && negative) {
-        // Kept as a token with a leading '-': the parser builds Neg(literal), as for `-5`.
-        t.value = -t.value;
+      if (t.kind != TokenKind::Integer) return true;
+      // The type is written: its range applies (INT#40000 is an error naming INT's range).
+      const std::string_view written = s_.substr(t.offset, pos_ - t.offset);
+      const auto magnitude =
+          t.negation_only ? model::kMaxLiteralMagnitude : static_cast<std::uint64_t>(t.value);
+      const auto v = model::signed_literal(negative, magnitude, written);
+      std::string why = v ? model::range_error(*v, *model::elementary_type(p), written) : v.error;
+      if (!why.empty()) {
+        error(t.line, t.column, why);
+        return false;
       }
+      // A negative value is kept in the token: the parser builds Neg(literal), as for `-5`.
+      t.value = *v;
+      t.negation_only = false;
       return true;
     }
     if (p == "BOOL") {

@@ -53,8 +53,11 @@ enum class TokenKind {
 
 struct Token {
   TokenKind kind = TokenKind::End;
-  std::string text;          ///< as written (identifier, literal, operator)
-  std::int64_t value = 0;    ///< Integer, Time, Bool
+  std::string text;        ///< as written (identifier, literal, operator)
+  std::int64_t value = 0;  ///< Integer, Time, Bool
+  /// Integer: the literal is 2^63, LINT's smallest value once negated (value holds it); any
+  /// use but after a unary minus is out of range.
+  bool negation_only = false;
   int line = 1, column = 1;  ///< 1-based, relative to the lexed text
   std::size_t offset = 0;    ///< byte offset in the lexed text
 };

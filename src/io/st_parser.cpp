@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 #include "model/types.hpp"
@@ -235,9 +236,24 @@ struct DepthGuard {
 };
 }  // namespace
 
+std::int64_t Parser::integer_value(const Token& t, bool negated) const {
+  const std::uint64_t magnitude = t.negation_only ? model::kMaxLiteralMagnitude
+                                  : t.value < 0   ? 0 - static_cast<std::uint64_t>(t.value)
+                                                  : static_cast<std::uint64_t>(t.value);
+  const bool negative = negated != (t.value < 0 && !t.negation_only);
+  const auto v = model::signed_literal(negative, magnitude, negated ? "-" + t.text : t.text);
+  if (!v) fail(t, v.error);
+  return *v;
+}
+
 ExprPtr Parser::unary_expr() {
   enter(peek());
   DepthGuard guard([this] { leave(); });
+  if (at(TokenKind::Minus) && at(TokenKind::Integer, 1) && peek(1).negation_only) {
+    // -9223372036854775808: LINT's smallest value is a literal (its magnitude is not).
+    const Token& op = next();
+    return model::make_int(integer_value(next(), true), where(op));
+  }
   if (at(TokenKind::Minus)) {
     const Token& op = next();
     return model::make_unary(ExprKind::Neg, unary_expr(), where(op));
@@ -306,6 +322,9 @@ ExprPtr Parser::primary() {
     case TokenKind::Time: {
       next();
       const bool time = t.kind == TokenKind::Time;
+      if (!time && t.negation_only) integer_value(t, false);  // out of range: fails
+      // LINT#-9223372036854775808 has no positive magnitude to negate.
+      if (t.value == std::numeric_limits<std::int64_t>::min()) return model::make_int(t.value, loc);
       const std::int64_t v = t.value < 0 ? -t.value : t.value;
       ExprPtr lit = time ? model::make_time(v, loc) : model::make_int(v, loc);
       // INT#-5 is Neg(5), like -5, so that printing and re-reading give the same model.
@@ -653,7 +672,7 @@ std::int64_t Parser::case_bound() {
   const Token& t = peek();
   if (t.kind != TokenKind::Integer) fail_unexpected("an integer literal");
   next();
-  return negative ? -t.value : t.value;
+  return integer_value(t, negative);
 }
 
 void Parser::case_label_bound(std::int64_t& value, std::string& name) {
@@ -806,6 +825,8 @@ model::ExprPtr Parser::initialiser() {
         next();
         ExprPtr e = at(TokenKind::RParen) ? nullptr : initialiser();
         expect(TokenKind::RParen, "')' after the repeated value");
+        if (count.value < 0 || count.negation_only)
+          fail(count, "repetition count " + count.text + " is negative");
         if (count.value > 100000 - static_cast<std::int64_t>(elements.size()))
           fail(count, "array initialiser with more than 100000 elements");
         if (!e) fail(count, "unsupported: a repetition without a value");
@@ -890,9 +911,12 @@ void Parser::declarations(model::VarDirection direction, std::string_view end,
       if (k != ExprKind::BoolConst && k != ExprKind::IntConst && k != ExprKind::TimeConst)
         fail(init_tok, "unsupported: initial value that is not a literal");
       if (!fits) fail(init_tok, "initial value does not match type " + type.name);
+      if (negative && e->value == std::numeric_limits<std::int64_t>::min())
+        fail(init_tok, "initial value is outside " + model::range_text(type));
       const std::int64_t v = negative ? -e->value : e->value;
-      if (type.kind == model::TypeKind::Int && (v < type.lo || v > type.hi))
-        fail(init_tok, "initial value " + std::to_string(v) + " is outside " + type.name);
+      if (const auto why = model::range_error(v, type, "initial value " + std::to_string(v));
+          type.kind == model::TypeKind::Int && !why.empty())
+        fail(init_tok, why);
       initial = v;
     }
     if (at(TokenKind::Identifier) && (at_word("R_EDGE") || at_word("F_EDGE")))
@@ -932,15 +956,20 @@ void Parser::type_declarations(std::vector<model::DataType>& out) {
       t.kind = model::DataTypeKind::Enumeration;
       next();
       std::int64_t value = 0;
+      bool past_lint = false;  // the previous enumerator was LINT's largest value
       do {
+        const Token& at_name = peek();
         const std::string e = identifier("an enumerator");
         if (accept(TokenKind::Assign)) {
           const bool negative = accept(TokenKind::Minus);
           const Token& v = expect(TokenKind::Integer, "an integer value of the enumerator");
-          value = negative ? -v.value : v.value;
+          value = integer_value(v, negative);
+        } else if (past_lint) {
+          fail(at_name, "enumerator '" + e + "' would be past the range of LINT");
         }
         t.enumerators.emplace_back(e, value);
-        ++value;
+        past_lint = value == std::numeric_limits<std::int64_t>::max();
+        if (!past_lint) ++value;
       } while (accept(TokenKind::Comma));
       expect(TokenKind::RParen, "')' after the enumerators");
       // `(A, B) := B`: the default of the type's variables, first enumerator otherwise.

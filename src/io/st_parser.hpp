@@ -75,6 +75,9 @@ class Parser {
   model::SourceLocation where(const Token& t) const { return locator_.at(t); }
   [[noreturn]] void fail(const Token& t, const std::string& message) const;
   [[noreturn]] void fail_unexpected(std::string_view expected) const;
+  /// The value of the Integer token `t`, negated when `negated` (a unary minus before it):
+  /// through model::signed_literal, so 2^63 is accepted only as LINT's smallest value.
+  std::int64_t integer_value(const Token& t, bool negated) const;
 
   // ---- grammar
   model::ExprPtr expression();

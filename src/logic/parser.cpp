@@ -1,13 +1,13 @@
 #include "logic/parser.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <stdexcept>
 #include <vector>
 
 #include "logic/formula.hpp"
 #include "logic/pattern.hpp"
 #include "model/errors.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -102,8 +102,10 @@ std::vector<Token> lex(std::string_view s) {
                (c == '-' && rest.size() > 1 && std::isdigit(static_cast<unsigned char>(rest[1])))) {
       std::size_t n = 1;
       while (n < rest.size() && std::isdigit(static_cast<unsigned char>(rest[n]))) ++n;
-      const auto r = std::from_chars(rest.data(), rest.data() + n, t.value);
-      sym(r.ec == std::errc() ? Tok::Int : Tok::Bad, n);
+      // The one checked conversion (model/literal.hpp): -9223372036854775808 is a literal.
+      const auto v = model::integer_literal(rest.substr(0, n));
+      t.value = v.value.value_or(0);
+      sym(v ? Tok::Int : Tok::Bad, n);
     } else if (rest.starts_with("<->")) {
       sym(Tok::Iff, 3);
     } else if (rest.starts_with("->")) {
@@ -330,6 +332,13 @@ class Parser {
     }
     return primary();
   }
+  /// A number the lexer could not read (Tok::Bad): the checked conversion says why.
+  static void bad_number(const Token& t) {
+    if (!t.text.empty() &&
+        (std::isdigit(static_cast<unsigned char>(t.text[0])) || t.text[0] == '-'))
+      throw SyntaxError(t, model::integer_literal(t.text).error);
+  }
+
   static bool is_cmp(Tok k) {
     return k == Tok::Eq || k == Tok::Ne || k == Tok::Lt || k == Tok::Le || k == Tok::Gt ||
            k == Tok::Ge;
@@ -436,6 +445,7 @@ class Parser {
           cmp->value_name = rhs.text;
           return cmp;
         }
+        if (rhs.kind == Tok::Bad) bad_number(rhs);
         if (!constant(rhs, value))
           throw SyntaxError(rhs, "expected an integer constant or an enumerator after '" +
                                      std::string(to_string(c)) + "', found " + describe(rhs));
@@ -443,6 +453,7 @@ class Parser {
       }
       return make_atom(t.text, t.line, t.column);
     }
+    if (t.kind == Tok::Bad) bad_number(t);
     if (t.kind == Tok::Bad) throw SyntaxError(t, "unexpected character " + describe(t));
     throw SyntaxError(t, "expected a formula, found " + describe(t));
   }

@@ -1,11 +1,11 @@
 #include "logic/pattern.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <map>
 
 #include "logic/formula.hpp"
 #include "logic/parser.hpp"
+#include "model/literal.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 
@@ -434,17 +434,28 @@ class PatternReader {
   void read_bound(Piece p, std::optional<std::int64_t>& cycles, std::string& english) {
     std::size_t i = p.begin;
     while (i < p.end && std::isdigit(static_cast<unsigned char>(text_[i]))) ++i;
-    std::int64_t n = 0;
-    const auto r = std::from_chars(text_.data() + p.begin, text_.data() + i, n);
-    if (i == p.begin || r.ec != std::errc())
+    if (i == p.begin)
       fail(p.begin, "expected a number after 'within', e.g. 'within 5 cycles' or 'within 2 s'");
+    // The one checked conversion (model/literal.hpp): a count, or a duration within TIME's
+    // range (`n * 1000` once wrapped around and slipped under the bound on cycles).
+    const std::string_view digits = std::string_view(text_).substr(p.begin, i - p.begin);
     const auto unit = view(trimmed({i, p.end}));
+    const auto magnitude = model::literal_magnitude(digits, 10, digits);
+    const auto value = magnitude ? model::signed_literal(false, *magnitude, digits)
+                                 : model::Converted<std::int64_t>{{}, magnitude.error};
+    if (!value) fail(p.begin, value.error);
+    const std::int64_t n = *value;
     std::int64_t count = n;
     if (unit == "cycle" || unit == "cycles") {
       english =
           n == 1 ? "within the next cycle" : "within the next " + std::to_string(n) + " cycles";
     } else if (unit == "ms" || unit == "s") {
-      const std::int64_t ms = unit == "s" ? n * 1000 : n;
+      model::DurationLiteral d(std::string(digits) + " " + std::string(unit));
+      const auto converted = d.add(digits, "", unit == "s" ? 1000000000 : 1000000)
+                                 ? d.milliseconds(false)
+                                 : model::Converted<std::int64_t>{{}, d.error()};
+      if (!converted) fail(p.begin, converted.error);
+      const std::int64_t ms = *converted;
       if (!options_.cycle_ms || *options_.cycle_ms <= 0)
         fail(p.begin,
              "a bound in time needs a cycle time: use --time discrete (and --cycle, "

@@ -4,9 +4,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
+#include <limits>
 
 #include "logic/query_ast.hpp"
+#include "model/literal.hpp"
 #include "model/nesting.hpp"
 
 namespace sfcv::logic {
@@ -47,6 +48,8 @@ struct Token {
   Tok kind = Tok::End;
   std::string text;
   std::int64_t value = 0;
+  /// Int: 2^63, LINT's smallest value once negated (value holds it); out of range otherwise.
+  bool negation_only = false;
   QueryPos pos;
   std::string doc;  ///< `//` comment lines right before this token
 };
@@ -113,8 +116,12 @@ class Lexer {
       while (i_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i_]))) advance();
       t.kind = Tok::Int;
       t.text = std::string(text_.substr(start, i_ - start));
-      const auto r = std::from_chars(t.text.data(), t.text.data() + t.text.size(), t.value);
-      if (r.ec != std::errc()) throw QueryError(t.pos, "integer '" + t.text + "' is too large");
+      // The one checked conversion (model/literal.hpp).
+      const auto magnitude = model::literal_magnitude(t.text, 10, t.text);
+      if (!magnitude) throw QueryError(t.pos, magnitude.error);
+      t.negation_only = *magnitude == model::kMaxLiteralMagnitude;
+      t.value = t.negation_only ? std::numeric_limits<std::int64_t>::min()
+                                : static_cast<std::int64_t>(*magnitude);
       if (i_ < text_.size() &&
           (std::isalpha(static_cast<unsigned char>(text_[i_])) || text_[i_] == '_'))
         throw QueryError(here(), "unexpected '" + std::string(1, text_[i_]) + "' after a number");
@@ -372,11 +379,19 @@ class Parser {
     return primary();
   }
 
+  static std::int64_t int_value(const Token& t, bool negated) {
+    const std::uint64_t magnitude =
+        t.negation_only ? model::kMaxLiteralMagnitude : static_cast<std::uint64_t>(t.value);
+    const auto v = model::signed_literal(negated, magnitude, (negated ? "-" : "") + t.text);
+    if (!v) throw QueryError(t.pos, v.error);
+    return *v;
+  }
+
   NodePtr primary() {
     switch (tok_.kind) {
       case Tok::Int: {
         auto t = take();
-        return make(NodeKind::Integer, t.pos, {}, t.text, t.value);
+        return make(NodeKind::Integer, t.pos, {}, t.text, int_value(t, false));
       }
       case Tok::Minus: {
         // A negative literal (comparisons inside Nec/Emis): `n > -1`.
@@ -386,7 +401,7 @@ class Parser {
                            "'-' here must be followed by a number (set difference needs a "
                            "left operand)");
         auto t = take();
-        return make(NodeKind::Integer, m.pos, {}, "-" + t.text, -t.value);
+        return make(NodeKind::Integer, m.pos, {}, "-" + t.text, int_value(t, true));
       }
       case Tok::LParen: {
         take();
@@ -428,7 +443,7 @@ class Parser {
     for (;;) {
       if (tok_.kind == Tok::Int) {
         auto t = take();
-        elems.push_back(make(NodeKind::Integer, t.pos, {}, t.text, t.value));
+        elems.push_back(make(NodeKind::Integer, t.pos, {}, t.text, int_value(t, false)));
       } else if (tok_.kind == Tok::Ident && !is_keyword(tok_.text)) {
         auto t = take();
         if (elems.empty() &&

@@ -1089,7 +1089,7 @@ TEST(PlcopenXml, UnreadableInitialValueIsAnError) {
   EXPECT_TRUE(has_message(r, Severity::Error,
                           "cannot read the initial value 'MAYBE' of variable 'a' (BOOL)"));
   EXPECT_TRUE(has_message(r, Severity::Error,
-                          "initial value 300 of variable 'n' is out of the range of SINT"));
+                          "initial value 300 of variable 'n' is outside SINT (-128..127)"));
 }
 
 // ------------------------------------------------------------------------------ malformed input

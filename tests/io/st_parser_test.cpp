@@ -157,7 +157,9 @@ TEST(StExpression, ErrorsAreLocated) {
   EXPECT_EQ(expr_error("T#1us"), "1:1: unsupported: TIME literal finer than a millisecond");
   EXPECT_EQ(expr_error("a (* open"), "1:3: unterminated comment '(*'");
   EXPECT_EQ(expr_error("a ? b"), "1:3: unexpected character '?'");
-  EXPECT_EQ(expr_error("99999999999999999999"), "1:1: integer literal too large");
+  EXPECT_EQ(expr_error("99999999999999999999"),
+            "1:1: integer literal 99999999999999999999 is outside LINT "
+            "(-9223372036854775808..9223372036854775807)");
   EXPECT_EQ(expr_error("%IX1.0 AND a"),
             "1:1: unsupported: direct address %IX1.0 in an expression (declare a variable AT it)");
   EXPECT_EQ(expr_error(""), "1:1: expected an expression, found end of text");
