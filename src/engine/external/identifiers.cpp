@@ -20,8 +20,11 @@ std::string IdentifierTable::fresh(const std::string& prefix, const std::string&
 
 std::string IdentifierTable::make_unique(const std::string& prefix, const std::string& name) {
   // ASCII only: std::isalnum of the C locale, and bytes of UTF-8 sequences (>= 0x80) become '_'.
+  // A long name keeps its first kMaxStem characters (the suffix keeps it unique): the name is
+  // in the comment, and outside tools have buffers (Spin's lexer).
+  constexpr std::size_t kMaxStem = 48;
   std::string id = prefix;
-  for (char c : name) {
+  for (char c : name.substr(0, kMaxStem)) {
     const auto u = static_cast<unsigned char>(c);
     id += u < 0x80 && (std::isalnum(u) || c == '_') ? c : '_';
   }
