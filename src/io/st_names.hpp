@@ -1,5 +1,5 @@
 #pragma once
-// Internal header of sfcv_io: the one check of the writers that print names into IEC 61131-3
+// The one check of the writers that print names into IEC 61131-3
 // ST text (iec_text_writer, plcopen_writer). ST has no quoted identifiers, so a name that is
 // not an identifier would be read back as something else (`a b`, `x(*`, a keyword): such a
 // name is refused with a clear error, never written.

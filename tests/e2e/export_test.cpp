@@ -200,8 +200,8 @@ std::string hostile_plcopen() {
       previous = "H" + k;
     }
   }
-  const std::string chart = "PROGRAM P\n  VAR_INPUT go :BOOL;" + inputs + " END_VAR\n  VAR" + locals +
-                            " END_VAR\n  INITIAL_STEP Start: END_STEP\n" + steps +
+  const std::string chart = "PROGRAM P\n  VAR_INPUT go :BOOL;" + inputs + " END_VAR\n  VAR" +
+                            locals + " END_VAR\n  INITIAL_STEP Start: END_STEP\n" + steps +
                             "  STEP Bad: END_STEP\n" + transitions + "  TRANSITION FROM " +
                             previous + " TO Bad := go; END_TRANSITION\nEND_PROGRAM\n";
   const auto st = write_temp(chart, ".st");
@@ -209,8 +209,10 @@ std::string hostile_plcopen() {
   std::filesystem::remove(st);
   EXPECT_EQ(xml.exit_code, 0) << xml.err;
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const std::string plain =
-        std::string(i % 3 == 0 ? "u" : i % 3 == 1 ? "H" : "v") + std::to_string(i);
+    const std::string plain = std::string(i % 3 == 0   ? "u"
+                                          : i % 3 == 1 ? "H"
+                                                       : "v") +
+                              std::to_string(i);
     const auto at = xml.out.find("name=\"" + plain + "\"");
     EXPECT_NE(at, std::string::npos) << plain;
     if (at != std::string::npos)
@@ -247,8 +249,8 @@ TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
   EXPECT_TRUE(nlohmann::json::accept(report.out)) << report.out;
 
   // VCD: every declaration is `$var type width code reference $end`.
-  const auto vcd = run_sfcv("check " + q + " --checks none --engine explicit --ctl 'AG !Bad' " +
-                            "--trace vcd");
+  const auto vcd =
+      run_sfcv("check " + q + " --checks none --engine explicit --ctl 'AG !Bad' " + "--trace vcd");
   std::istringstream vcd_lines(vcd.out);
   std::size_t vars = 0;
   for (std::string line; std::getline(vcd_lines, line);) {
@@ -288,8 +290,8 @@ TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
     ASSERT_EQ(run_sfcv("export " + q + " --to dot -o '" + dot + "'").exit_code, 0);
     const auto rsg = write_temp("", ".dot");
     const auto states = write_temp("", ".dot");
-    ASSERT_EQ(
-        run_sfcv("rsg " + q + " --dot '" + rsg + "' --dot-states '" + states + "'").exit_code, 0);
+    ASSERT_EQ(run_sfcv("rsg " + q + " --dot '" + rsg + "' --dot-states '" + states + "'").exit_code,
+              0);
     for (const auto& d : {dot, rsg, states}) {
       const auto svg = d + ".svg";
       EXPECT_EQ(std::system(("dot -Tsvg '" + d + "' -o '" + svg + "' 2>/dev/null").c_str()), 0)

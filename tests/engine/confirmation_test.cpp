@@ -33,8 +33,7 @@ struct Checked {
   logic::CheckReport report;  ///< sfcv's own verdicts (explicit engine)
 };
 
-std::unique_ptr<Checked> check_project(model::Project project,
-                                       const std::vector<std::string>& ctl,
+std::unique_ptr<Checked> check_project(model::Project project, const std::vector<std::string>& ctl,
                                        const std::vector<std::string>& assume = {}) {
   auto c = std::make_unique<Checked>();
   c->project = std::move(project);

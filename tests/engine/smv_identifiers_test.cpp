@@ -366,8 +366,7 @@ TEST(ExportNames, HostileNamesGiveOneAigerSymbolLineEach) {
     ++symbols;
     ASSERT_GE(line.size(), 3u) << line;
     EXPECT_NE(std::string("ilobc").find(line[0]), std::string::npos) << line;
-    for (char ch : line)
-      EXPECT_TRUE(ch >= 0x20 && ch < 0x7f) << "not printable ASCII: " << line;
+    for (char ch : line) EXPECT_TRUE(ch >= 0x20 && ch < 0x7f) << "not printable ASCII: " << line;
   }
   EXPECT_EQ(line, "c");
   EXPECT_EQ(symbols, i + l + o + b + c);

@@ -72,13 +72,13 @@ inline HostileChart hostile_chart() {
   const auto n = h.steps.size();
   b.trans({"Start"}, {h.steps[0]}, model::make_name(h.inputs[0]));
   for (std::size_t k = 0; k < n; ++k) {
-    auto guard = model::make_nary(
-        model::ExprKind::And, {model::make_name(h.inputs[(k + 1) % h.inputs.size()]),
-                               model::make_name(h.variables[k % h.variables.size()])});
+    auto guard = model::make_nary(model::ExprKind::And,
+                                  {model::make_name(h.inputs[(k + 1) % h.inputs.size()]),
+                                   model::make_name(h.variables[k % h.variables.size()])});
     b.trans({h.steps[k]}, {k + 1 < n ? h.steps[k + 1] : std::string("Bad")}, guard);
     const std::string action = "Set" + std::to_string(k);
-    b.action_st(action, {model::make_assign(h.variables[k % h.variables.size()],
-                                            model::make_bool(true))});
+    b.action_st(action,
+                {model::make_assign(h.variables[k % h.variables.size()], model::make_bool(true))});
     b.assoc("main", h.steps[k], action);
   }
   h.project = b.project();
