@@ -247,6 +247,15 @@ TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
   EXPECT_TRUE(trace["steps"][1]["inputs"].contains("x,y")) << trace.dump();
   const auto report = run_sfcv("check " + q + " --checks none --ctl 'AG !Bad' --json");
   EXPECT_TRUE(nlohmann::json::accept(report.out)) << report.out;
+  const auto sarif = write_temp("", ".sarif"), junit = write_temp("", ".xml");
+  EXPECT_EQ(run_sfcv("check " + q + " --checks none --ctl 'AG !Bad' --sarif '" + sarif +
+                     "' --junit '" + junit + "'")
+                .exit_code,
+            1);
+  EXPECT_TRUE(nlohmann::json::accept(slurp(sarif))) << slurp(sarif);
+  if (std::system("command -v xmllint >/dev/null 2>&1") == 0) {
+    EXPECT_EQ(std::system(("xmllint --noout '" + junit + "'").c_str()), 0) << slurp(junit);
+  }
 
   // VCD: every declaration is `$var type width code reference $end`.
   const auto vcd =
@@ -304,7 +313,7 @@ TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
   } else {
     std::cerr << "[ NOTE ] graphviz not installed: the DOT files are not rendered\n";
   }
-  for (const auto& f : {file, csv, json_trace, again}) std::filesystem::remove(f);
+  for (const auto& f : {file, csv, json_trace, again, sarif, junit}) std::filesystem::remove(f);
 }
 
 TEST(CheckNusmv, SaysSoWhenNoNusmvIsFound) {

@@ -19,6 +19,7 @@
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/circuit_export.hpp"
 #include "engine/external/export_model.hpp"
+#include "engine/external/identifiers.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
@@ -316,6 +317,20 @@ TEST(SmvIdentifiers, HostileNamesStayInsideComments) {
   EXPECT_EQ(sections["INIT"], 0);
   // Every hostile name is in a comment, escaped, so a reader of the file finds its chart name.
   EXPECT_NE(h->nusmv.find("-- input z\\nINIT FALSE\\nVAR --"), std::string::npos) << h->nusmv;
+}
+
+// Comment text is one line that cannot close its comment, and distinct names stay distinct.
+TEST(ExportNames, CommentTextIsOneLineWithoutACloser) {
+  EXPECT_EQ(comment_text("a */\n#define", CommentKind::Block), "a *\\/\\n#define");
+  EXPECT_EQ(comment_text("a */\n#define"), "a */\\n#define");  // `--` ends at the line end
+  EXPECT_EQ(comment_text(std::string("t\tr\r\x01\x7f", 6)), "t\\tr\\r\\x01\\x7f");
+  EXPECT_NE(comment_text("a\n"), comment_text("a\\n"));   // the backslash is doubled
+  EXPECT_EQ(comment_text("\xc3\xbc"), "\xc3\xbc");        // UTF-8 kept
+  EXPECT_EQ(aiger_symbol("\xc3\xbc x"), "\\xc3\\xbc x");  // AIGER: printable ASCII
+  IdentifierTable ids({"in_MODULE"});
+  EXPECT_EQ(ids.get("in_", "MODULE"), "in_MODULE_2");  // never a reserved word
+  EXPECT_EQ(ids.get("in_", "x,y"), "in_x_y");
+  EXPECT_EQ(ids.get("in_", "x y"), "in_x_y_2");  // unique
 }
 
 // Promela goes through the C preprocessor: with its comments removed as cpp removes them,
