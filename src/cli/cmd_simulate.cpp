@@ -44,26 +44,71 @@ struct SimulateOptions {
   long long max_cycles = -1;
 };
 
-std::vector<std::string> split_csv(const std::string& line, std::vector<std::size_t>& columns) {
-  std::vector<std::string> out;
-  columns.clear();
-  std::size_t start = 0;
-  const char sep =
-      line.find(';') != std::string::npos && line.find(',') == std::string::npos ? ';' : ',';
-  while (true) {
-    const auto end = line.find(sep, start);
-    std::string cell =
-        line.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    std::size_t lead = 0;
-    while (lead < cell.size() && std::isspace(static_cast<unsigned char>(cell[lead]))) ++lead;
-    std::size_t trail = cell.size();
-    while (trail > lead && std::isspace(static_cast<unsigned char>(cell[trail - 1]))) --trail;
-    out.push_back(cell.substr(lead, trail - lead));
-    columns.push_back(start + lead + 1);
-    if (end == std::string::npos) break;
-    start = end + 1;
+/// One record of the input CSV from text[pos] on (RFC 4180, which `sfcv check --trace csv`
+/// writes: a field in double quotes may hold separators, doubled quotes and line breaks;
+/// spaces around a field are dropped). The separator is ',', or ';' when only ';' separates
+/// the record's fields. `pos` and `line` move past the record; `columns` gets each field's
+/// column (1-based, on the line where the field starts).
+std::vector<std::string> csv_record(const std::string& text, std::size_t& pos, int& line,
+                                    std::vector<std::size_t>& columns, const std::string& path) {
+  bool quoted = false, comma = false, semicolon = false;
+  std::size_t end = pos;
+  for (; end < text.size(); ++end) {
+    const char c = text[end];
+    if (c == '"')
+      quoted = !quoted;
+    else if (!quoted && c == '\n')
+      break;
+    else if (!quoted && c == ',')
+      comma = true;
+    else if (!quoted && c == ';')
+      semicolon = true;
   }
-  return out;
+  const std::string at = path + ":" + std::to_string(line) + ":";
+  if (quoted) throw InputError(at + "1: a quoted field is not closed");
+  const char sep = semicolon && !comma ? ';' : ',';
+  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  std::vector<std::string> cells;
+  columns.clear();
+  std::size_t line_start = pos, i = pos;
+  while (true) {
+    while (i < end && is_space(text[i])) ++i;
+    columns.push_back(i - line_start + 1);
+    std::string cell;
+    if (i < end && text[i] == '"') {
+      for (++i;; ++i) {
+        if (text[i] == '"') {
+          if (i + 1 < end && text[i + 1] == '"') {
+            cell += '"';
+            ++i;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        if (text[i] == '\n') {
+          ++line;
+          line_start = i + 1;
+        }
+        cell += text[i];
+      }
+      while (i < end && is_space(text[i])) ++i;
+      if (i < end && text[i] != sep)
+        throw InputError(path + ":" + std::to_string(line) + ":" +
+                         std::to_string(i - line_start + 1) + ": text after a quoted field");
+    } else {
+      const auto stop = std::min(text.find(sep, i), end);
+      cell = text.substr(i, stop - i);
+      while (!cell.empty() && is_space(cell.back())) cell.pop_back();
+      i = stop;
+    }
+    cells.push_back(std::move(cell));
+    if (i >= end) break;
+    ++i;  // the separator
+  }
+  pos = end + 1;
+  ++line;
+  return cells;
 }
 
 /// The CSV: header of input names, one row per cycle. Pseudo-inputs without a column take
@@ -71,21 +116,25 @@ std::vector<std::string> split_csv(const std::string& line, std::vector<std::siz
 std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
                                                   const semantics::TransitionSystem& ts,
                                                   std::vector<int>& shown) {
-  std::istringstream f(model::read_input_file(path, "the input trace"));
+  const std::string text = model::read_input_file(path, "the input trace");
   const auto& inputs = ts.inputs();
   std::vector<int> column_input;
   std::vector<std::vector<std::int64_t>> rows;
-  std::string line;
-  int lineno = 0;
+  int lineno = 1;
   bool header = false;
   std::vector<std::size_t> cols;
-  while (std::getline(f, line)) {
-    ++lineno;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto first = line.find_first_not_of(" \t");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const auto cells = split_csv(line, cols);
+  for (std::size_t pos = 0; pos < text.size();) {
+    // Blank lines and lines starting with '#' are comments (a name starting with '#' is
+    // quoted by the writer).
+    const auto eol = std::min(text.find('\n', pos), text.size());
+    const auto first = text.find_first_not_of(" \t\r", pos);
+    if (first >= eol || text[first] == '#') {
+      pos = eol + 1;
+      ++lineno;
+      continue;
+    }
     const std::string at = path + ":" + std::to_string(lineno) + ":";
+    const auto cells = csv_record(text, pos, lineno, cols, path);
     if (!header) {
       header = true;
       std::vector<bool> seen(inputs.size());
@@ -111,8 +160,7 @@ std::vector<std::vector<std::int64_t>> read_trace(const std::string& path,
       }
       for (std::size_t i = 0; i < inputs.size(); ++i)
         if (!seen[i] && !inputs[i].pseudo)
-          throw InputError(path + ":" + std::to_string(lineno) +
-                           ":1: the header has no column for input '" + inputs[i].name + "'");
+          throw InputError(at + "1: the header has no column for input '" + inputs[i].name + "'");
       for (std::size_t i = 0; i < inputs.size(); ++i)
         if (seen[i]) shown.push_back(static_cast<int>(i));
       continue;

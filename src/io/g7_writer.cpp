@@ -12,6 +12,17 @@ namespace {
 using model::Expr;
 using model::ExprKind;
 
+// Every name of the file goes through here: a plain name bare, any other in double quotes with
+// '"' and '\\' escaped (g7::quote_name). A quoted name cannot span lines or be empty in the
+// reader, so such a name is refused rather than written as something else.
+std::string quoted(std::string_view n, bool in_expression) {
+  if (n.empty()) throw G7WriteError(".g7 has no empty names");
+  if (n.find_first_of("\r\n") != std::string_view::npos)
+    throw G7WriteError("name '" + std::string(n.substr(0, n.find_first_of("\r\n"))) +
+                       "...' holds a line break: .g7 names are on one line");
+  return g7::quote_name(n, in_expression);
+}
+
 // Binding strength, as in the reader's grammar: | ^ & comparisons + * unary primary.
 int level(const Expr& e) {
   switch (e.kind) {
@@ -98,7 +109,7 @@ std::string expr(const Expr& e) {
     case ExprKind::TimeConst:
       return g7::duration(e.value);
     case ExprKind::Name:
-      return g7::quote_name(e.name, true);
+      return quoted(e.name, true);
     case ExprKind::Member:
       throw G7WriteError("the .g7 format has no member access ('" + e.name + "." + e.member + "')");
     case ExprKind::Not:
@@ -148,7 +159,7 @@ std::string expr(const model::ExprPtr& e) {
 }
 
 std::string name(std::string_view n) {
-  return g7::quote_name(n, false);
+  return quoted(n, false);
 }
 
 std::string step_set(const std::vector<std::string>& steps) {
@@ -177,7 +188,7 @@ void write_variable(std::string& out, const model::Variable& v) {
       throw G7WriteError("variable '" + v.name + "'" + where(v.where) +
                          ": .g7 has only input, output and internal variables");
   }
-  out += g7::quote_name(v.name, true);
+  out += quoted(v.name, true);
   if (v.type.kind == model::TypeKind::Int) {
     out += " : " + std::to_string(v.type.lo) + ".." + std::to_string(v.type.hi);
   } else if (v.type.kind != model::TypeKind::Bool) {
@@ -231,7 +242,7 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
         !a.indicator.empty() || !plain_variable)
       throw G7WriteError("action '" + a.action + "' of step '" + a.step + "'" + where(a.where) +
                          ": .g7 has only continuous actions on a Boolean variable");
-    out += "  action " + name(a.step) + ": " + g7::quote_name(a.action, true);
+    out += "  action " + name(a.step) + ": " + quoted(a.action, true);
     if (a.condition) out += " if " + expr(a.condition);
     out += ";\n";
   }
@@ -249,7 +260,7 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
         out += " on " + expr(sa.event);
         break;
     }
-    out += ": " + g7::quote_name(sa.variable, true) + " := " + expr(sa.value) + ";\n";
+    out += ": " + quoted(sa.variable, true) + " := " + expr(sa.value) + ";\n";
   }
   for (const auto& fo : pou.forcing_orders) {
     if (fo.chart != c.name) continue;
@@ -266,7 +277,7 @@ void write_chart(std::string& out, const model::Pou& pou, const model::Chart& c)
       case model::ForcingKind::Situation:
         for (std::size_t i = 0; i < fo.situation.size(); ++i)  // a step named INIT is quoted
           out += (i ? ", " : "") + (model::iequals(fo.situation[i], "INIT")
-                                        ? g7::quote_name(fo.situation[i], true)
+                                        ? quoted(fo.situation[i], true)
                                         : name(fo.situation[i]));
         break;
     }

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "io/st_names.hpp"
 #include "io/st_parser.hpp"
 #include "model/errors.hpp"
 #include "model/names.hpp"
@@ -21,14 +22,23 @@ using model::ExprKind;
 }
 
 bool is_identifier(std::string_view s) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  return !st::is_reserved(s);
+  return is_st_identifier(s);
 }
 
 const std::string& ident(const std::string& s, std::string_view role) {
   if (!is_identifier(s)) cannot(std::string(role) + " '" + s + "' is not an IEC identifier");
+  return s;
+}
+
+/// A directly represented variable (`%IX0.1`, `%QW4`, `%MD*`): '%' then letters, digits, '.'
+/// and '*' only, so that it cannot end the declaration.
+const std::string& address(const std::string& s) {
+  const bool ok = s.size() > 1 && s[0] == '%' &&
+                  s.find_first_not_of(
+                      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                      "0123456789.*",
+                      1) == std::string::npos;
+  if (!ok) cannot("address '" + s + "' is not a directly represented variable");
   return s;
 }
 
@@ -58,7 +68,14 @@ void check_expr(const model::ExprPtr& e, std::string_view where) {
   for (const auto& a : e->args) check_expr(a, where);
 }
 
+// A name of ST text that is no identifier would read back as something else.
+void check_names(const std::string& bad, std::string_view where) {
+  if (!bad.empty())
+    cannot("name '" + bad + "' in " + std::string(where) + " is not an IEC identifier");
+}
+
 void check_body(const model::StmtList& body, std::string_view where) {
+  check_names(first_non_st_name(body), where);
   for (const auto& s : body) {
     check_expr(s->value, where);
     for (const auto& c : s->conditions) check_expr(c, where);
@@ -79,7 +96,8 @@ std::string type_text(const model::Type& t) {
     case model::TypeKind::Time:
       return "TIME";
     case model::TypeKind::FunctionBlock:  // a user function block keeps its declared name
-      return t.fb == model::StandardFb::None ? t.name : std::string(model::to_string(t.fb));
+      return t.fb == model::StandardFb::None ? ident(t.name, "function block type")
+                                             : std::string(model::to_string(t.fb));
     case model::TypeKind::Int:
       break;
   }
@@ -175,7 +193,7 @@ class Writer {
       for (; i < vars.size() && vars[i]->direction == dir; ++i) {
         const auto& v = *vars[i];
         out += "    " + ident(v.name, "variable name");
-        if (!v.address.empty()) out += " AT " + v.address;
+        if (!v.address.empty()) out += " AT " + address(v.address);
         out += " : " + type_text(v.type);
         if (v.initial) {
           if (v.type.kind == model::TypeKind::FunctionBlock)
@@ -258,6 +276,7 @@ class Writer {
       out += " (PRIORITY := " + std::to_string(*t.priority) + ")";
     }
     check_expr(t.guard, "a transition condition");
+    check_names(first_non_st_name(t.guard), "a transition condition");
     out += " FROM " + list(t.sources) + " TO " + list(t.targets) + "\n";
     out += pad + "  := " + model::to_st(t.guard) + ";\n";
     out += pad + "END_TRANSITION\n";

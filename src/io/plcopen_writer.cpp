@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/st_names.hpp"
 #include "model/errors.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
@@ -43,7 +44,14 @@ void check_expr(const model::ExprPtr& e, const std::string& where) {
   for (const auto& a : e->args) check_expr(a, where);
 }
 
+// ST text names things only by identifiers: a name that is none (declared in an attribute,
+// where XML escapes it, but read in ST) would read back as something else.
+void check_names(const std::string& bad, const std::string& where) {
+  if (!bad.empty()) cannot("name '" + bad + "' in " + where + " is not an IEC identifier");
+}
+
 void check_body(const model::StmtList& body, const std::string& where) {
+  check_names(first_non_st_name(body), where);
   for (const auto& s : body) {
     check_expr(s->value, where);
     for (const auto& c : s->conditions) check_expr(c, where);
@@ -356,6 +364,7 @@ class PouWriter {
       if (t.priority && *t.priority < 0) cannot("negative transition priority");
       if (!t.guard) cannot("transition without a condition in chart '" + c.name + "'");
       check_expr(t.guard, "a transition condition");
+      check_names(first_non_st_name(t.guard), "a transition condition");
       auto& p = plans[k];
       for (const auto& s : t.sources) {
         const auto i = step_of(s, t);

@@ -12,19 +12,6 @@ namespace sfcv::report {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string r;
-  for (char c : s) {
-    if (c == '"' || c == '\\') r += '\\';
-    if (c == '\n') {
-      r += "\\n";
-      continue;
-    }
-    r += c;
-  }
-  return r;
-}
-
 std::string qualifier_text(const model::ActionAssociation& a) {
   std::string q(model::to_string(a.qualifier));
   if (a.duration_ms) q += ", T#" + std::to_string(*a.duration_ms) + "ms";
@@ -46,7 +33,7 @@ class ChartPrinter {
               ? chart.name
               : pou.name + (chart.parent_action.empty() ? std::string()
                                                         : " / action " + chart.parent_action);
-      out_ << "  subgraph cluster_" << prefix << " {\n    label=\"" << escape(title)
+      out_ << "  subgraph cluster_" << prefix << " {\n    label=\"" << dot_escape(title)
            << "\";\n    style=rounded;\n";
       for (std::size_t s = 0; s < chart.steps.size(); ++s) step(pou, chart, prefix, s);
       for (std::size_t t = 0; t < chart.transitions.size(); ++t) transition(chart, prefix, t);
@@ -72,7 +59,7 @@ class ChartPrinter {
     // id= survives into the SVG (<g id="p0c0s3" class="node step">): the HTML report's player
     // highlights steps through it.
     out_ << "    " << id << " [id=\"" << id << "\", class=\"step\", shape=box, label=\""
-         << escape(st.name) << "\"" << (st.initial ? ", peripheries=2" : "")
+         << dot_escape(st.name) << "\"" << (st.initial ? ", peripheries=2" : "")
          << (st.kind == model::StepKind::MacroStep ? ", style=\"dashed\"" : "")
          << (st.kind == model::StepKind::Enclosing ? ", style=\"rounded\"" : "") << "];\n";
     // Action blocks: one table of (qualifier | action) rows beside the step.
@@ -200,7 +187,7 @@ ChartNodeIds chart_node_ids(const model::Project& project, const semantics::Tran
 }
 
 void print_chart_dot(std::ostream& out, const model::Project& project) {
-  out << "digraph \"" << escape(project.name.empty() ? "chart" : project.name)
+  out << "digraph \"" << dot_escape(project.name.empty() ? "chart" : project.name)
       << "\" {\n  compound=true;\n  rankdir=TB;\n  node [fontname=\"Helvetica\", "
          "fontsize=11];\n  edge [fontname=\"Helvetica\", fontsize=10];\n";
   ChartPrinter printer(out, project.dialect == model::Dialect::Grafcet);

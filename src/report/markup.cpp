@@ -20,7 +20,10 @@ std::string html_escape(std::string_view s) {
         r += "&quot;";
         break;
       default:
-        r += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r')
+          r += "&#xFFFD;";
+        else
+          r += c;
     }
   }
   return r;
@@ -30,6 +33,14 @@ std::string dot_escape(std::string_view s) {
   std::string out;
   out.reserve(s.size());
   for (char c : s) {
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out += ' ';
+      continue;
+    }
     if (c == '"' || c == '\\') out += '\\';
     out += c;
   }

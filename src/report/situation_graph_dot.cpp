@@ -96,7 +96,7 @@ SituationGraphDot situation_graph_dot(const engine::ReachableSituationGraph& gra
     for (auto o : g.steps) steps += (steps.empty() ? "" : ", ") + obs[o].name;
     for (const auto& [o, n] : g.emitted)
       emitted += (emitted.empty() ? "" : " ") + obs[o].name + (n < g.members ? "?" : "");
-    std::string label = "{" + steps + "}";
+    std::string label = "{" + dot_escape(steps) + "}";
     if (!emitted.empty()) label += "\\n" + dot_escape(emitted);
     if (g.members > 1) label += "\\n" + std::to_string(g.members) + " stable situations";
     d << "  g" << i << " [id=\"sg" << i << "\", label=\"" << label << "\""

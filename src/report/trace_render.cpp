@@ -48,8 +48,25 @@ std::string vcd_id(std::size_t i) {
 /// "ChemicalPlant_s1", "timeout:T1" becomes "timeout_T1").
 std::string vcd_name(const std::string& name) {
   std::string r;
-  for (char c : name) r += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
-  return r;
+  for (char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    r += u < 0x80 && (std::isalnum(u) || c == '_') ? c : '_';
+  }
+  return r.empty() ? "_" : r;  // "$var wire 1 ! $end" would lack its reference
+}
+
+/// A CSV field as RFC 4180 quotes it: in double quotes, `"` doubled, when it holds a separator
+/// (',' or the ';' that `sfcv simulate` also accepts), a quote, a line break, a leading '#'
+/// (a comment line to the reader) or leading or trailing spaces (which the reader trims), or
+/// is empty.
+std::string csv_field(const std::string& s) {
+  const bool plain = !s.empty() && s.find_first_of(",;\"\r\n") == std::string::npos &&
+                     s[0] != '#' && !std::isspace(static_cast<unsigned char>(s.front())) &&
+                     !std::isspace(static_cast<unsigned char>(s.back()));
+  if (plain) return s;
+  std::string r = "\"";
+  for (char c : s) r += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return r + "\"";
 }
 
 /// Two's complement, 64 bits, leading zeros dropped.
@@ -269,7 +286,7 @@ std::string trace_csv(const logic::Trace& trace, const semantics::TransitionSyst
     out += "; rows from " + std::string(grafcet ? "situation " : "cycle ") +
            std::to_string(*trace.loop_start + (grafcet ? 0 : 1)) + " on repeat forever";
   out += "\n";
-  for (std::size_t k = 0; k < inputs.size(); ++k) out += (k ? "," : "") + inputs[k].name;
+  for (std::size_t k = 0; k < inputs.size(); ++k) out += (k ? "," : "") + csv_field(inputs[k].name);
   out += "\n";
   for (std::size_t i = first; i < trace.steps.size(); ++i) {
     for (std::size_t k = 0; k < inputs.size(); ++k)

@@ -7,9 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/hostile_names.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -153,6 +155,165 @@ TEST(Export, RefusesWhatTheTargetCannotSay) {
   EXPECT_EQ(bad.exit_code, 2);
   // The picture of a Grafcet is fine.
   EXPECT_EQ(run_sfcv("export " + quoted("examples/pistons/pistons.g7") + " --to g7").exit_code, 0);
+}
+
+// A PLCopen project whose unreferenced inputs, steps and local variables carry the hostile
+// names (tests/support/hostile_names.hpp): PLCopen names are XML attributes, so any of them
+// loads. Made by exporting an IEC chart to PLCopen and renaming u<k>, H<k> and v<k>.
+std::string xml_attribute(const std::string& s) {
+  std::string r;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        r += "&amp;";
+        break;
+      case '<':
+        r += "&lt;";
+        break;
+      case '"':
+        r += "&quot;";
+        break;
+      case '\n':
+        r += "&#10;";
+        break;
+      case '\r':
+        r += "&#13;";
+        break;
+      default:
+        r += c;
+    }
+  }
+  return r;
+}
+
+std::string hostile_plcopen() {
+  const auto& names = hostile_names();
+  std::string inputs, locals, steps, transitions;
+  std::string previous = "Start";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto k = std::to_string(i);
+    if (i % 3 == 0) inputs += " u" + k + " : BOOL;";
+    if (i % 3 == 2) locals += " v" + k + " : BOOL;";
+    if (i % 3 == 1) {
+      steps += "  STEP H" + k + ": END_STEP\n";
+      transitions += "  TRANSITION FROM " + previous + " TO H" + k + " := go; END_TRANSITION\n";
+      previous = "H" + k;
+    }
+  }
+  const std::string chart = "PROGRAM P\n  VAR_INPUT go :BOOL;" + inputs + " END_VAR\n  VAR" +
+                            locals + " END_VAR\n  INITIAL_STEP Start: END_STEP\n" + steps +
+                            "  STEP Bad: END_STEP\n" + transitions + "  TRANSITION FROM " +
+                            previous + " TO Bad := go; END_TRANSITION\nEND_PROGRAM\n";
+  const auto st = write_temp(chart, ".st");
+  auto xml = run_sfcv("export '" + st + "' --to plcopen");
+  std::filesystem::remove(st);
+  EXPECT_EQ(xml.exit_code, 0) << xml.err;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string plain = std::string(i % 3 == 0   ? "u"
+                                          : i % 3 == 1 ? "H"
+                                                       : "v") +
+                              std::to_string(i);
+    const auto at = xml.out.find("name=\"" + plain + "\"");
+    EXPECT_NE(at, std::string::npos) << plain;
+    if (at != std::string::npos)
+      xml.out.replace(at, plain.size() + 7, "name=\"" + xml_attribute(names[i]) + "\"");
+  }
+  return write_temp(xml.out, ".xml");
+}
+
+// Every export and trace format of a chart with hostile names stays well-formed and keeps
+// its meaning (issue 53: a name put a live INIT into the SMV export, a '"' added a DOT
+// attribute, an input "x,y" gave a CSV trace that did not replay).
+TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
+  const auto file = hostile_plcopen();
+  const auto q = "'" + file + "'";
+  ASSERT_EQ(run_sfcv("lint " + q).exit_code, 0);
+
+  // The CSV trace quotes the names and replays to Bad.
+  const auto csv = write_temp("", ".csv");
+  const auto check = run_sfcv("check " + q + " --checks none --engine explicit --ctl 'AG !Bad' " +
+                              "--trace csv --trace-file '" + csv + "'");
+  ASSERT_EQ(check.exit_code, 1) << check.err;
+  EXPECT_NE(slurp(csv).find("\"x,y\""), std::string::npos) << slurp(csv);
+  const auto replay = run_sfcv("simulate " + q + " --inputs '" + csv + "'");
+  ASSERT_EQ(replay.exit_code, 0) << replay.err << slurp(csv);
+  EXPECT_NE(replay.out.find("P.Bad"), std::string::npos) << replay.out;
+
+  // JSON (the trace file and the report) parses and keeps the names.
+  const auto json_trace = write_temp("", ".json");
+  run_sfcv("check " + q + " --checks none --engine explicit --ctl 'AG !Bad' --trace json " +
+           "--trace-file '" + json_trace + "'");
+  const auto trace = nlohmann::json::parse(slurp(json_trace));
+  EXPECT_TRUE(trace["steps"][1]["inputs"].contains("x,y")) << trace.dump();
+  const auto report = run_sfcv("check " + q + " --checks none --ctl 'AG !Bad' --json");
+  EXPECT_TRUE(nlohmann::json::accept(report.out)) << report.out;
+  const auto sarif = write_temp("", ".sarif"), junit = write_temp("", ".xml");
+  EXPECT_EQ(run_sfcv("check " + q + " --checks none --ctl 'AG !Bad' --sarif '" + sarif +
+                     "' --junit '" + junit + "'")
+                .exit_code,
+            1);
+  EXPECT_TRUE(nlohmann::json::accept(slurp(sarif))) << slurp(sarif);
+  if (std::system("command -v xmllint >/dev/null 2>&1") == 0) {
+    EXPECT_EQ(std::system(("xmllint --noout '" + junit + "'").c_str()), 0) << slurp(junit);
+  }
+
+  // VCD: every declaration is `$var type width code reference $end`.
+  const auto vcd =
+      run_sfcv("check " + q + " --checks none --engine explicit --ctl 'AG !Bad' " + "--trace vcd");
+  std::istringstream vcd_lines(vcd.out);
+  std::size_t vars = 0;
+  for (std::string line; std::getline(vcd_lines, line);) {
+    if (line.rfind("$var ", 0) != 0) continue;
+    ++vars;
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string x; words >> x;) w.push_back(x);
+    ASSERT_EQ(w.size(), 6u) << line;
+    EXPECT_EQ(w[5], "$end") << line;
+  }
+  EXPECT_GT(vars, hostile_names().size() / 3);
+
+  // NuSMV: no line starts with what follows a line break in a name.
+  const auto smv = run_sfcv("export " + q + " --to nusmv --ctl 'AG !Bad'");
+  ASSERT_EQ(smv.exit_code, 0) << smv.err;
+  std::istringstream smv_lines(smv.out);
+  for (std::string line; std::getline(smv_lines, line);)
+    for (const char* word : {"INIT", "VAR --", "#define", "l0 evil", "/* "})
+      EXPECT_NE(line.rfind(word, 0), 0u) << line;
+
+  // IEC text cannot say these names: refused, not written.
+  const auto iec = run_sfcv("export " + q + " --to iec");
+  EXPECT_EQ(iec.exit_code, 2);
+  EXPECT_NE(iec.err.find("is not an IEC identifier"), std::string::npos) << iec.err;
+  // PLCopen XML can: written back, it reads as the same chart.
+  const auto xml = run_sfcv("export " + q + " --to plcopen");
+  ASSERT_EQ(xml.exit_code, 0) << xml.err;
+  const auto again = write_temp(xml.out, ".xml");
+  const auto smv_again = run_sfcv("export '" + again + "' --to nusmv --ctl 'AG !Bad'");
+  auto body = [](const std::string& text) { return text.substr(text.find("\nMODULE main")); };
+  EXPECT_EQ(body(smv_again.out), body(smv.out));
+
+  // DOT: the chart and both situation graphs render (a '"' in a name once added attributes).
+  if (std::system("command -v dot >/dev/null 2>&1") == 0) {
+    const auto dot = write_temp("", ".dot");
+    ASSERT_EQ(run_sfcv("export " + q + " --to dot -o '" + dot + "'").exit_code, 0);
+    const auto rsg = write_temp("", ".dot");
+    const auto states = write_temp("", ".dot");
+    ASSERT_EQ(run_sfcv("rsg " + q + " --dot '" + rsg + "' --dot-states '" + states + "'").exit_code,
+              0);
+    for (const auto& d : {dot, rsg, states}) {
+      const auto svg = d + ".svg";
+      EXPECT_EQ(std::system(("dot -Tsvg '" + d + "' -o '" + svg + "' 2>/dev/null").c_str()), 0)
+          << slurp(d);
+      EXPECT_EQ(slurp(svg).find("javascript:alert(1)\""), std::string::npos);
+      EXPECT_EQ(slurp(svg).find("URL="), std::string::npos);
+      std::filesystem::remove(d);
+      std::filesystem::remove(svg);
+    }
+  } else {
+    std::cerr << "[ NOTE ] graphviz not installed: the DOT files are not rendered\n";
+  }
+  for (const auto& f : {file, csv, json_trace, again, sarif, junit}) std::filesystem::remove(f);
 }
 
 TEST(CheckNusmv, SaysSoWhenNoNusmvIsFound) {

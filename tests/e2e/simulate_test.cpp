@@ -260,3 +260,28 @@ TEST(Simulate, IecJsonCounterexampleReplays) {
 }
 
 }  // namespace
+
+// RFC 4180 fields (what `check --trace csv` writes for names that need them): quoted names
+// holding the separator, a doubled quote and a leading '#' (not a comment once quoted), with
+// ',' or ';' between fields; an unclosed quote is an error with its line.
+TEST(Simulate, ReadsQuotedCsvFields) {
+  const auto g7 = write_temp(
+      "project q;\ninput \"x,y\";\ninput \"a\\\"b\";\ninput \"#c\";\n"
+      "grafcet G {\n  step 1 initial;\n  step 2;\n"
+      "  transition t1: 1 -> 2 when \"x,y\" & \"a\\\"b\" & \"#c\";\n}\n",
+      ".g7");
+  for (const char* text : {"\"x,y\",\"a\"\"b\" , \"#c\"\n0,0,0\n1,1,1\n",
+                           "\"#c\";\"x,y\";\"a\"\"b\"\n0;0;0\n1;1;1\n"}) {
+    const auto csv = write_temp(text, ".csv");
+    const auto r = run_sfcv("simulate '" + g7 + "' --multi-input-change --inputs '" + csv + "'");
+    ASSERT_EQ(r.exit_code, 0) << text << r.err;
+    EXPECT_NE(lines(r.out).back().find("X2"), std::string::npos) << r.out;
+    std::filesystem::remove(csv);
+  }
+  const auto open = write_temp("\"x,y\",\"a\"\"b\",\"#c\n0,0,0\n", ".csv");
+  const auto r = run_sfcv("simulate '" + g7 + "' --inputs '" + open + "'");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(":1:1: a quoted field is not closed"), std::string::npos) << r.err;
+  std::filesystem::remove(open);
+  std::filesystem::remove(g7);
+}

@@ -20,6 +20,7 @@
 #include "logic/formula.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/hostile_names.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
@@ -32,13 +33,10 @@ struct Checked {
   logic::CheckReport report;  ///< sfcv's own verdicts (explicit engine)
 };
 
-std::unique_ptr<Checked> check_text(const std::string& text, const std::vector<std::string>& ctl,
-                                    const std::vector<std::string>& assume = {}) {
+std::unique_ptr<Checked> check_project(model::Project project, const std::vector<std::string>& ctl,
+                                       const std::vector<std::string>& assume = {}) {
   auto c = std::make_unique<Checked>();
-  auto loaded = io::load_iec_text(text, "chart.st");
-  EXPECT_TRUE(loaded.ok());
-  if (!loaded.ok()) return nullptr;
-  c->project = std::move(*loaded.project);
+  c->project = std::move(project);
   logic::CheckInputs in;
   in.ctl = ctl;
   in.assume = assume;
@@ -56,6 +54,14 @@ std::unique_ptr<Checked> check_text(const std::string& text, const std::vector<s
   for (const auto& d : diags) ADD_FAILURE() << d.str();
   c->report = make_explicit_model_checker()->check(c->task);
   return c;
+}
+
+std::unique_ptr<Checked> check_text(const std::string& text, const std::vector<std::string>& ctl,
+                                    const std::vector<std::string>& assume = {}) {
+  auto loaded = io::load_iec_text(text, "chart.st");
+  EXPECT_TRUE(loaded.ok());
+  if (!loaded.ok()) return nullptr;
+  return check_project(std::move(*loaded.project), ctl, assume);
 }
 
 bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
@@ -246,6 +252,20 @@ TEST(Confirmation, GeneratedChartsAgreeWithSpinAndAbc) {
   // The sample must exercise both verdicts.
   EXPECT_GT(violated, 0u);
   EXPECT_GT(holds, 0u);
+}
+
+// Names that once changed the exports' meaning (issue 53): in Promela, "*/" then
+// "#define assert(x) skip" turned every assertion into skip and Spin found no error; a name
+// with a line break split an AIGER symbol line. Each hostile name is an input, a step or a
+// variable on the way to Bad: Spin and ABC must find what sfcv finds, with counterexamples
+// that replay.
+TEST(Confirmation, HostileNamesAgreeWithSpinAndAbc) {
+  REQUIRE_TOOLS();
+  const auto c = check_project(test::hostile_chart().project, {"AG !Bad", "AG !(Start & Bad)"});
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->report.results.at(0).verdict, logic::Verdict::Violated);
+  ASSERT_EQ(c->report.results.at(1).verdict, logic::Verdict::Holds);
+  confirm(*c);
 }
 
 }  // namespace

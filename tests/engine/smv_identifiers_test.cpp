@@ -15,11 +15,16 @@
 #include <sstream>
 
 #include "chart_families.hpp"
+#include "engine/explicit/explicit_model_checker.hpp"
+#include "engine/external/aiger_writer.hpp"
 #include "engine/external/circuit_export.hpp"
 #include "engine/external/export_model.hpp"
+#include "engine/external/identifiers.hpp"
+#include "engine/external/nusmv_runner.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "semantics/iec61131_system.hpp"
+#include "support/hostile_names.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
@@ -227,6 +232,177 @@ TEST(SmvIdentifiers, RandomChartsWithNestedActionsDeclareEveryIdentifierOnce) {
     expect_casmv_declared_once(e.casmv, "seed " + std::to_string(seed));
   }
   EXPECT_GE(nested, 15u) << "too few charts had a nested action";
+}
+
+// Hostile names (tests/support/hostile_names.hpp) as inputs, steps and variables: every name
+// reaches the export only inside a comment, so the SMV reader above sees exactly the model
+// (a name's "\nINIT FALSE" once became a live INIT section), and no line of the file starts
+// with what follows a line break inside a name.
+struct HostileExport {
+  test::HostileChart chart;
+  semantics::TransitionSystemPtr ts;
+  logic::CheckTask task;
+  std::string nusmv, casmv, promela, aag;
+};
+
+std::unique_ptr<HostileExport> hostile_export() {
+  auto h = std::make_unique<HostileExport>();
+  h->chart = test::hostile_chart();
+  model::Diagnostics diags;
+  h->ts = semantics::make_iec61131_system(h->chart.project, {}, diags);
+  EXPECT_TRUE(h->ts);
+  if (!h->ts) return nullptr;
+  logic::CheckInputs in;
+  in.ctl = {"AG !Bad", "AG !(Start & Bad)", "AG EF Start", "EF Bad"};
+  auto parsed = logic::parse_check_inputs(in);
+  h->task.system = h->ts.get();
+  h->task.project = &h->chart.project;
+  logic::resolve_into(parsed.spec, *h->ts, h->task, diags);
+  for (const auto& d : diags) ADD_FAILURE() << d.str();
+  ExportRequest request;
+  request.properties = h->task.properties;
+  request.reachability = true;
+  request.header = {"model " + test::hostile_names()[0], test::hostile_names()[1]};
+  const auto e = build_export(*h->ts, request);
+  std::ostringstream nusmv, casmv;
+  write_nusmv(nusmv, e.model);
+  write_casmv(casmv, e.model);
+  h->nusmv = nusmv.str();
+  h->casmv = casmv.str();
+  // Promela and AIGER take invariants only.
+  ExportRequest circuit_request = request;
+  circuit_request.target = ExportTarget::Circuit;
+  circuit_request.properties.resize(2);
+  const auto c = build_export(*h->ts, circuit_request);
+  std::ostringstream promela, aag;
+  write_promela(promela, c.model);
+  write_aiger(aag, aiger_circuit(c.model), AigerMode::Ascii, "comment\nlines");
+  h->promela = promela.str();
+  h->aag = aag.str();
+  return h;
+}
+
+// What follows a line break in a hostile name never starts a line of `text`.
+void expect_no_line_from_a_name(const std::string& text) {
+  std::set<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.insert(line);
+  for (const auto& name : test::hostile_names())
+    for (auto nl = name.find('\n'); nl != std::string::npos; nl = name.find('\n', nl + 1)) {
+      const auto rest = name.substr(nl + 1, name.find('\n', nl + 1) - nl - 1);
+      if (rest.size() < 2) continue;
+      for (const auto& line : lines)
+        EXPECT_NE(line.rfind(rest, 0), 0u) << "a line starts with '" << rest << "' of a name";
+    }
+}
+
+TEST(SmvIdentifiers, HostileNamesStayInsideComments) {
+  const auto h = hostile_export();
+  ASSERT_TRUE(h);
+  EXPECT_GT(expect_well_declared(h->nusmv, "hostile names, NuSMV"), 40u);
+  expect_casmv_declared_once(h->casmv, "hostile names, Cadence SMV");
+  expect_no_line_from_a_name(h->nusmv);
+  expect_no_line_from_a_name(h->casmv);
+  // Lines starting with a section keyword are the writer's own: one of each at most, and
+  // none of the keywords the names hold (INIT, VAR twice, MODULE twice).
+  std::map<std::string, int> sections;
+  std::istringstream in(h->nusmv);
+  for (std::string line; std::getline(in, line);) {
+    const auto word = line.substr(0, line.find_first_of(" \t"));
+    if (kSections.count(word)) ++sections[word];
+  }
+  EXPECT_EQ(sections["MODULE"], 1);
+  EXPECT_EQ(sections["VAR"], 1);
+  EXPECT_EQ(sections["IVAR"], 1);
+  EXPECT_EQ(sections["INIT"], 0);
+  // Every hostile name is in a comment, escaped, so a reader of the file finds its chart name.
+  EXPECT_NE(h->nusmv.find("-- input z\\nINIT FALSE\\nVAR --"), std::string::npos) << h->nusmv;
+}
+
+// Comment text is one line that cannot close its comment, and distinct names stay distinct.
+TEST(ExportNames, CommentTextIsOneLineWithoutACloser) {
+  EXPECT_EQ(comment_text("a */\n#define", CommentKind::Block), "a *\\/\\n#define");
+  EXPECT_EQ(comment_text("a */\n#define"), "a */\\n#define");  // `--` ends at the line end
+  EXPECT_EQ(comment_text(std::string("t\tr\r\x01\x7f", 6)), "t\\tr\\r\\x01\\x7f");
+  EXPECT_NE(comment_text("a\n"), comment_text("a\\n"));   // the backslash is doubled
+  EXPECT_EQ(comment_text("\xc3\xbc"), "\xc3\xbc");        // UTF-8 kept
+  EXPECT_EQ(aiger_symbol("\xc3\xbc x"), "\\xc3\\xbc x");  // AIGER: printable ASCII
+  IdentifierTable ids({"in_MODULE"});
+  EXPECT_EQ(ids.get("in_", "MODULE"), "in_MODULE_2");  // never a reserved word
+  EXPECT_EQ(ids.get("in_", "x,y"), "in_x_y");
+  EXPECT_EQ(ids.get("in_", "x y"), "in_x_y_2");  // unique
+}
+
+// Promela goes through the C preprocessor: with its comments removed as cpp removes them,
+// the only directives are the writer's own and every assertion is there.
+TEST(ExportNames, HostileNamesStayInsidePromelaComments) {
+  const auto h = hostile_export();
+  ASSERT_TRUE(h);
+  std::string code;
+  for (std::size_t i = 0; i < h->promela.size();) {
+    if (h->promela.compare(i, 2, "/*") == 0) {
+      const auto end = h->promela.find("*/", i + 2);
+      ASSERT_NE(end, std::string::npos) << "a comment is not closed";
+      i = end + 2;
+      code += ' ';
+    } else {
+      code += h->promela[i++];
+    }
+  }
+  std::istringstream in(code);
+  std::size_t asserts = 0;
+  for (std::string line; std::getline(in, line);) {
+    const auto first = line.find_first_not_of(' ');
+    if (first != std::string::npos && line[first] == '#') {
+      EXPECT_EQ(line.rfind("#define sfcv_", first), first) << line;
+    }
+    asserts += line.find("assert(") != std::string::npos;
+  }
+  EXPECT_EQ(asserts, 2 + h->chart.steps.size() + 2) << "two properties, each step reachable";
+  for (const char* payload : {"skip\n", "INIT FALSE", "l0 evil", "javascript:", "%s"})
+    EXPECT_EQ(code.find(payload), std::string::npos) << payload << " outside a comment";
+}
+
+// AIGER: every symbol is one line of printable ASCII, and the table has exactly one line per
+// input, latch, output, bad and constraint before the comment section.
+TEST(ExportNames, HostileNamesGiveOneAigerSymbolLineEach) {
+  const auto h = hostile_export();
+  ASSERT_TRUE(h);
+  std::istringstream in(h->aag);
+  std::string magic;
+  std::size_t m = 0, i = 0, l = 0, o = 0, a = 0, b = 0, c = 0;
+  in >> magic >> m >> i >> l >> o >> a >> b >> c;
+  ASSERT_EQ(magic, "aag");
+  std::string line;
+  std::getline(in, line);
+  for (std::size_t k = 0; k < i + l + o + b + c + a; ++k) std::getline(in, line);
+  std::size_t symbols = 0;
+  while (std::getline(in, line) && line != "c") {
+    ++symbols;
+    ASSERT_GE(line.size(), 3u) << line;
+    EXPECT_NE(std::string("ilobc").find(line[0]), std::string::npos) << line;
+    for (char ch : line) EXPECT_TRUE(ch >= 0x20 && ch < 0x7f) << "not printable ASCII: " << line;
+  }
+  EXPECT_EQ(line, "c");
+  EXPECT_EQ(symbols, i + l + o + b + c);
+  EXPECT_NE(h->aag.find("z\\nINIT FALSE\\nVAR --"), std::string::npos) << h->aag;
+}
+
+// NuSMV on the hostile export agrees with sfcv's explicit engine; skipped, visibly, without
+// a NuSMV on PATH (it is not packaged: CI builds it by hand).
+TEST(SmvIdentifiers, HostileNamesNusmvAgreesWithSfcv) {
+  const auto nusmv = find_nusmv();
+  if (!nusmv) GTEST_SKIP() << "NuSMV not on PATH";
+  const auto h = hostile_export();
+  ASSERT_TRUE(h);
+  const auto expected = make_explicit_model_checker()->check(h->task);
+  const auto got = make_nusmv_model_checker(*nusmv)->check(h->task);
+  ASSERT_EQ(got.results.size(), expected.results.size());
+  for (std::size_t p = 0; p < got.results.size(); ++p)
+    EXPECT_EQ(got.results[p].verdict, expected.results[p].verdict)
+        << got.results[p].name << ": " << got.results[p].message;
+  EXPECT_EQ(expected.results.at(0).verdict, logic::Verdict::Violated);
+  EXPECT_EQ(expected.results.at(1).verdict, logic::Verdict::Holds);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ Aig with_single_property(const Aig& aig, std::size_t bad_index) {
   return single;
 }
 
-// "x@3=1" lines of `write_cex -n`.
+// "in3@3=1" lines of `write_cex -n`.
 std::vector<std::vector<bool>> read_cex(const std::string& text, const Aig& aig) {
   std::vector<std::vector<bool>> frames;
   std::istringstream in(text);
@@ -36,10 +36,12 @@ std::vector<std::vector<bool>> read_cex(const std::string& text, const Aig& aig)
     const std::string name = line.substr(0, at);
     const auto frame = static_cast<std::size_t>(std::stoul(line.substr(at + 1, eq - at - 1)));
     const bool value = line.substr(eq + 1) == "1";
-    std::size_t input = aig.inputs().size();
-    for (std::size_t i = 0; i < aig.inputs().size(); ++i)
-      if (aig.inputs()[i].name == name) input = i;
-    if (input == aig.inputs().size()) continue;  // a flop's initial value (q@0=0)
+    // Inputs are named in<k> in the file ABC reads (write_aiger, positional_names).
+    if (name.rfind("in", 0) != 0 || name.size() == 2 ||
+        name.find_first_not_of("0123456789", 2) != std::string::npos)
+      continue;  // a flop's initial value (la3@0=0)
+    const auto input = static_cast<std::size_t>(std::stoul(name.substr(2)));
+    if (input >= aig.inputs().size()) continue;
     if (frames.size() <= frame) frames.resize(frame + 1, std::vector<bool>(aig.inputs().size()));
     frames[frame][input] = value;
   }
@@ -58,7 +60,7 @@ AbcVerdict check_with_abc(const std::string& abc, const Aig& aig, std::size_t ba
   TempDir dir;
   {
     std::ofstream f(dir.path() + "/model.aig", std::ios::binary);
-    write_aiger(f, with_single_property(aig, bad_index), AigerMode::Binary);
+    write_aiger(f, with_single_property(aig, bad_index), AigerMode::Binary, {}, true);
   }
   const auto run =
       run_tool({abc, "-c", "read_aiger model.aig; " + command + "; write_cex -n cex.txt"},

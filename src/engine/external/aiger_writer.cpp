@@ -1,8 +1,10 @@
 #include "engine/external/aiger_writer.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
+#include "engine/external/identifiers.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine {
@@ -20,15 +22,25 @@ void write_varint(std::ostream& out, std::uint32_t x) {
   out.put(static_cast<char>(x));
 }
 
-std::string clean(std::string s) {
-  for (auto& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
-
 }  // namespace
 
-void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::string& comment) {
+std::string aiger_symbol(const std::string& name) {
+  std::string r;
+  for (char c : comment_text(name)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x80) {
+      r += c;
+      continue;
+    }
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "\\x%02x", u);
+    r += hex;
+  }
+  return r;
+}
+
+void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::string& comment,
+                 bool positional_names) {
   const auto& nodes = aig.nodes();
   const std::uint32_t num_inputs = static_cast<std::uint32_t>(aig.inputs().size());
   const std::uint32_t num_latches = static_cast<std::uint32_t>(aig.latches().size());
@@ -78,16 +90,19 @@ void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::s
       write_varint(out, r0 - r1);
     }
   }
+  auto symbol = [positional_names](const std::string& name, const char* tag, std::size_t k) {
+    return positional_names ? tag + std::to_string(k) : aiger_symbol(name);
+  };
   for (std::uint32_t i = 0; i < num_inputs; ++i)
-    out << 'i' << i << ' ' << clean(aig.inputs()[i].name) << '\n';
+    out << 'i' << i << ' ' << symbol(aig.inputs()[i].name, "in", i) << '\n';
   for (std::uint32_t l = 0; l < num_latches; ++l)
-    out << 'l' << l << ' ' << clean(aig.latches()[l].name) << '\n';
+    out << 'l' << l << ' ' << symbol(aig.latches()[l].name, "la", l) << '\n';
   for (std::size_t o = 0; o < aig.outputs().size(); ++o)
-    out << 'o' << o << ' ' << clean(aig.outputs()[o].name) << '\n';
+    out << 'o' << o << ' ' << symbol(aig.outputs()[o].name, "out", o) << '\n';
   for (std::size_t b = 0; b < aig.bad().size(); ++b)
-    out << 'b' << b << ' ' << clean(aig.bad()[b].name) << '\n';
+    out << 'b' << b << ' ' << symbol(aig.bad()[b].name, "bad", b) << '\n';
   for (std::size_t c = 0; c < aig.constraints().size(); ++c)
-    out << 'c' << c << ' ' << clean(aig.constraints()[c].name) << '\n';
+    out << 'c' << c << ' ' << symbol(aig.constraints()[c].name, "con", c) << '\n';
   if (!comment.empty()) out << "c\n" << comment << (comment.back() == '\n' ? "" : "\n");
 }
 

@@ -81,9 +81,9 @@ std::vector<std::string> output_identifiers(const Aig& aig, Naming& names) {
   return ids;
 }
 
-// Replaces each {name} in `text` by the identifier of the circuit output called name.
-std::string resolve_outputs(const std::string& text, const Aig& aig,
-                            const std::vector<std::string>& output_ids) {
+// Replaces each {k} in `text` by the expression of circuit output k (CircuitExport::ctl): the
+// placeholder is a number, so no chart name ever reaches the formula text.
+std::string resolve_outputs(const std::string& text, const std::vector<std::string>& output_ids) {
   std::string r;
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] != '{') {
@@ -91,11 +91,12 @@ std::string resolve_outputs(const std::string& text, const Aig& aig,
       continue;
     }
     const auto close = text.find('}', i);
-    const std::string name = text.substr(i + 1, close - i - 1);
-    std::string replacement = "FALSE";
-    for (std::size_t o = 0; o < aig.outputs().size(); ++o)
-      if (aig.outputs()[o].name == name) replacement = output_ids[o];
-    r += replacement;
+    if (close == std::string::npos) throw std::invalid_argument("CTL text: '{' without '}'");
+    const std::string key = text.substr(i + 1, close - i - 1);
+    if (key.empty() || key.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoul(key) >= output_ids.size())
+      throw std::invalid_argument("CTL text: '{" + key + "}' is not a circuit output");
+    r += output_ids[std::stoul(key)];
     i = close;
   }
   return r;
@@ -119,8 +120,14 @@ bool depends_on_inputs(const Aig& aig, AigLit root) {
   return false;
 }
 
-void comment_lines(std::ostream& out, const std::vector<std::string>& lines, const char* prefix) {
-  for (const auto& l : lines) out << prefix << l << "\n";
+// Every chart name, file name and property name in a comment goes through comment_text().
+std::string comment(const std::string& text, CommentKind kind = CommentKind::Line) {
+  return comment_text(text, kind);
+}
+
+void comment_lines(std::ostream& out, const std::vector<std::string>& lines, const char* prefix,
+                   CommentKind kind = CommentKind::Line) {
+  for (const auto& l : lines) out << prefix << comment(l, kind) << "\n";
 }
 
 }  // namespace
@@ -141,11 +148,11 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   if (!aig.inputs().empty()) out << "IVAR\n";
   for (std::size_t i = 0; i < aig.inputs().size(); ++i)
     out << "  " << names.node[Aig::node_of(aig.inputs()[i].literal)] << " : boolean;"
-        << (i < m.input_comments.size() ? "  -- " + m.input_comments[i] : "") << "\n";
+        << (i < m.input_comments.size() ? "  -- " + comment(m.input_comments[i]) : "") << "\n";
   if (!aig.latches().empty()) out << "VAR\n";
   for (std::size_t l = 0; l < aig.latches().size(); ++l)
     out << "  " << names.node[Aig::node_of(aig.latches()[l].current)] << " : boolean;"
-        << (l < m.latch_comments.size() ? "  -- " + m.latch_comments[l] : "") << "\n";
+        << (l < m.latch_comments.size() ? "  -- " + comment(m.latch_comments[l]) : "") << "\n";
   bool has_gates = false;
   for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
     has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
@@ -159,7 +166,7 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
   const auto output_ids = output_identifiers(aig, names);
   for (std::size_t o = 0; o < aig.outputs().size(); ++o)
     out << "  " << output_ids[o] << " := " << lit(aig.outputs()[o].literal) << ";  -- "
-        << aig.outputs()[o].name << "\n";
+        << comment(aig.outputs()[o].name) << "\n";
   if (!aig.latches().empty()) out << "ASSIGN\n";
   for (const auto& l : aig.latches()) {
     const auto& id = names.node[Aig::node_of(l.current)];
@@ -167,13 +174,13 @@ void write_nusmv(std::ostream& out, const CircuitExport& m) {
     out << "  next(" << id << ") := " << lit(l.next) << ";\n";
   }
   for (const auto& c : aig.constraints())
-    out << "TRANS " << lit(c.literal) << "  -- assumption " << c.name << "\n";
+    out << "TRANS " << lit(c.literal) << "  -- assumption " << comment(c.name) << "\n";
   for (const auto& b : aig.bad())
     out << "INVARSPEC NAME " << ids.fresh(kPropertyPrefix, b.name) << " := !(" << lit(b.literal)
         << ");\n";
   for (const auto& [name, formula] : m.ctl)
     out << "CTLSPEC NAME " << ids.fresh(kPropertyPrefix, name)
-        << " := " << resolve_outputs(formula, aig, output_ids) << ";\n";
+        << " := " << resolve_outputs(formula, output_ids) << ";\n";
 }
 
 void write_casmv(std::ostream& out, const CircuitExport& m) {
@@ -191,10 +198,10 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
   out << "module main()\n{\n";
   for (std::size_t i = 0; i < aig.inputs().size(); ++i)
     out << "  input " << names.node[Aig::node_of(aig.inputs()[i].literal)] << " : boolean;"
-        << (i < m.input_comments.size() ? "  -- " + m.input_comments[i] : "") << "\n";
+        << (i < m.input_comments.size() ? "  -- " + comment(m.input_comments[i]) : "") << "\n";
   for (std::size_t l = 0; l < aig.latches().size(); ++l)
     out << "  " << names.node[Aig::node_of(aig.latches()[l].current)] << " : boolean;"
-        << (l < m.latch_comments.size() ? "  -- " + m.latch_comments[l] : "") << "\n";
+        << (l < m.latch_comments.size() ? "  -- " + comment(m.latch_comments[l]) : "") << "\n";
   for (std::size_t n = 1; n < aig.nodes().size(); ++n)
     if (aig.nodes()[n].kind == Aig::NodeKind::And) out << "  " << names.node[n] << " : boolean;\n";
   for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
@@ -223,7 +230,7 @@ void write_casmv(std::ostream& out, const CircuitExport& m) {
   std::vector<std::string> output_exprs;
   for (const auto& o : aig.outputs()) output_exprs.push_back("(" + lit(o.literal) + ")");
   for (const auto& [name, formula] : m.ctl)
-    out << "  SPEC " << resolve_outputs(formula, aig, output_exprs) << ";  -- " << name << "\n";
+    out << "  SPEC " << resolve_outputs(formula, output_exprs) << ";  -- " << comment(name) << "\n";
   out << "}\n";
 }
 
@@ -300,18 +307,24 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   Naming names(aig, std::move(reserved));
   auto lit = [&names](AigLit l) { return names.lit(l, "1", "0", "!"); };
   out << "/*\n";
-  comment_lines(out, m.header, " * ");
+  comment_lines(out, m.header, " * ", CommentKind::Block);
   out << " */\n";
   for (std::size_t l = 0; l < aig.latches().size(); ++l)
     out << "bit " << names.node[Aig::node_of(aig.latches()[l].current)] << " = "
         << (aig.latches()[l].initial ? 1 : 0) << ";"
-        << (l < m.latch_comments.size() ? "  /* " + m.latch_comments[l] + " */" : "") << "\n";
+        << (l < m.latch_comments.size()
+                ? "  /* " + comment(m.latch_comments[l], CommentKind::Block) + " */"
+                : "")
+        << "\n";
   // Inputs, gates and next values are recomputed every cycle: hidden keeps them out of the
   // state vector, so Spin's states are exactly the circuit's latch valuations (Spin cannot
   // hide a bit, hence bytes).
   for (std::size_t i = 0; i < aig.inputs().size(); ++i)
     out << "hidden byte " << names.node[Aig::node_of(aig.inputs()[i].literal)] << ";"
-        << (i < m.input_comments.size() ? "  /* " + m.input_comments[i] + " */" : "") << "\n";
+        << (i < m.input_comments.size()
+                ? "  /* " + comment(m.input_comments[i], CommentKind::Block) + " */"
+                : "")
+        << "\n";
   for (std::size_t n = 1; n < aig.nodes().size(); ++n)
     if (aig.nodes()[n].kind == Aig::NodeKind::And) out << "hidden byte " << names.node[n] << ";\n";
   for (std::size_t l = 0; l < aig.latches().size(); ++l) out << "hidden byte next_" << l << ";\n";
@@ -337,8 +350,8 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
     }
   for (std::size_t b = 0; b < aig.bad().size(); ++b)
     if (!only_bad || *only_bad == b)
-      out << "       assert(!(" << lit(aig.bad()[b].literal) << "));  /* " << aig.bad()[b].name
-          << " */\n";
+      out << "       assert(!(" << lit(aig.bad()[b].literal) << "));  /* "
+          << comment(aig.bad()[b].name, CommentKind::Block) << " */\n";
   for (const auto& in : aig.inputs()) {
     const auto& id = names.node[Aig::node_of(in.literal)];
     out << "       if :: " << id << " = 0 :: " << id << " = 1 fi;\n";
@@ -359,8 +372,10 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
            "       if :: assumed -> skip :: else -> goto end_excluded fi;\n"
            "       d_step {\n";
   }
+  // The identifiers, not the chart names, go into the format string: a name holding '"', '%'
+  // or '\\' would change the statement (spin_runner.cpp reads the values by position).
   out << "         printf(\"@cycle";
-  for (const auto& in : aig.inputs()) out << " " << in.name << "=%d";
+  for (const auto& in : aig.inputs()) out << " " << names.node[Aig::node_of(in.literal)] << "=%d";
   out << "\\n\"";
   for (const auto& in : aig.inputs()) out << ", " << names.node[Aig::node_of(in.literal)];
   out << ");\n";
@@ -387,7 +402,8 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
       claim += key == "b" ? "sfcv_start" : "sfcv_atom_" + key;
       i = close;
     }
-    out << "\n/* " << m.ltl[k].first << " */\nltl sfcv_ltl_" << k << " { " << claim << " }\n";
+    out << "\n/* " << comment(m.ltl[k].first, CommentKind::Block) << " */\nltl sfcv_ltl_" << k
+        << " { " << claim << " }\n";
   }
 }
 

@@ -19,8 +19,9 @@ struct CircuitExport {
   std::vector<std::string> header;          ///< comment lines: source, semantics, options
   std::vector<std::string> latch_comments;  ///< per latch: what it is in the chart
   std::vector<std::string> input_comments;  ///< per input
-  /// CTL properties (NuSMV/Cadence SMV only): name and formula in NuSMV syntax, where `{x}`
-  /// stands for the circuit output named x (a step, an action, a variable).
+  /// CTL properties (NuSMV/Cadence SMV only): name and formula in NuSMV syntax, where `{k}`
+  /// stands for circuit output k, aig.outputs()[k] (a step, an action, a variable): an index,
+  /// never a name, so that a name cannot add to the formula.
   std::vector<std::pair<std::string, std::string>> ctl;
   /// LTL properties (Promela only): name and claim in Spin's LTL syntax, where `{k}` stands for
   /// the state literal ltl_atoms[k] and `{b}` for "the process is at the start of a cycle"
@@ -30,7 +31,8 @@ struct CircuitExport {
 };
 
 /// Identifiers in all three languages: in_<input>, s_<latch>, g_<gate node>, o_<output>,
-/// p_<property>, a_<assumption>; a prefix per kind keeps them unique by construction.
+/// p_<property>, a_<assumption>; a prefix per kind keeps them unique by construction. Chart
+/// names appear only in comments, through comment_text() (engine/external/identifiers.hpp).
 
 /// NuSMV 2.6: inputs as IVAR, latches as VAR with init/next, gates and outputs as DEFINE,
 /// assumptions as TRANS, invariants (the Aig bad literals) as INVARSPEC, CTL as CTLSPEC.

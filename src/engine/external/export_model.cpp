@@ -113,11 +113,12 @@ class Builder {
     }
   }
 
-  // The formula with every atom replaced by `{output name}` (NuSMV syntax via to_string).
+  // The formula with every atom replaced by `{k}`, k the index of its circuit output (NuSMV
+  // syntax via to_string): a number, so that no chart name reaches the formula text.
   logic::FormulaPtr with_output_atoms(const logic::Formula& f) {
     if (f.op == logic::Op::Atom || f.op == logic::Op::Compare) {
       atom(f);
-      return logic::make_atom("{" + output_name(f) + "}");
+      return logic::make_atom("{" + std::to_string(output_index_.at(output_name(f))) + "}");
     }
     auto copy = std::make_shared<logic::Formula>(f);
     for (auto& a : copy->args) a = with_output_atoms(*a);
@@ -146,14 +147,23 @@ class Builder {
     } else {
       l = compare_bits(aig, bits, out_.circuit.observable_lo.at(o), f.cmp, f.value);
     }
+    output_index_.emplace(name, aig.outputs().size());
     aig.add_output(name, l);
     outputs_.emplace(name, l);
     return l;
   }
 
+ public:
+  /// The circuit output of a one-bit observable (after literal() of its atom).
+  std::size_t output_of(const semantics::Observable& obs) const {
+    return output_index_.at(obs.name);
+  }
+
+ private:
   const semantics::TransitionSystem& ts_;
   ExportedModel& out_;
   std::map<std::string, AigLit> outputs_;
+  std::map<std::string, std::size_t> output_index_;
 };
 
 }  // namespace
@@ -316,7 +326,8 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       const auto& obs = ts.observables()[o];
       if (obs.kind != semantics::ObservableKind::Step) continue;
       if (request.target == ExportTarget::Smv) {
-        m.ctl.emplace_back("reachable_" + obs.name, "EF {" + obs.name + "}");
+        m.ctl.emplace_back("reachable_" + obs.name,
+                           "EF {" + std::to_string(builder.output_of(obs)) + "}");
         out.ctl_property.push_back(-1);
       } else {
         aig.add_bad("unreachable_" + obs.name, out.circuit.observable_bits[o][0]);

@@ -1,8 +1,13 @@
 #pragma once
-// Identifiers for outside languages (NuSMV, Promela): chart names like "MAIN.S1" or "T#2s" are
-// mapped to legal, unique identifiers, and the mapping is kept for comments and trace read-back.
+// The one naming policy of the exported models (NuSMV, Cadence SMV, Promela, AIGER): chart
+// names like "MAIN.S1" or "T#2s" are mapped to legal, unique identifiers (a sanitised stem of
+// letters, digits and '_' after a prefix of its kind, a _2, _3 suffix when stems meet, never a
+// reserved word of the target), and the original name only ever appears in a comment or a
+// symbol-table line, as comment_text() makes it: one line that cannot close its comment.
+// docs/exports.md, "Names in exported models".
 
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -26,5 +31,16 @@ class IdentifierTable {
 
   std::unordered_map<std::string, std::string> map_;
 };
+
+/// How a comment of the target ends: at the end of the line (`--` of SMV, AIGER symbol and
+/// comment lines) or at a closer (`/* */` of Promela, which also goes through the C
+/// preprocessor).
+enum class CommentKind { Line, Block };
+
+/// `text` made safe inside a comment: one line (a backslash doubled; newline, carriage return,
+/// tab and every other control byte as \n, \r, \t, \xNN) and, for block comments, no "*/"
+/// (written "*\/"). The escaping is reversible, so distinct names stay distinct; valid UTF-8
+/// is kept as it is.
+std::string comment_text(std::string_view text, CommentKind kind = CommentKind::Line);
 
 }  // namespace sfcv::engine
