@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/system_options.hpp"
 #include "report/check_html.hpp"
 
@@ -26,6 +27,8 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& o) {
+  const OutputPath html{o.html, "--html"};
+  check_output_paths({html});
   std::ifstream in(o.result);
   if (!in) throw InputError(o.result + ": cannot read the result");
   nlohmann::json result;
@@ -42,9 +45,8 @@ int run_report(const ReportOptions& o) {
   SystemOptions system = o.system;
   if (system.semantics.empty()) system.semantics = result.value("semantics", std::string());
   const auto built = build_system(project, system, {}, "sfcv report");
-  std::ofstream out(o.html);
-  if (!out) throw InputError(o.html + ": cannot write the HTML report");
-  out << report::check_html(report::html_report(std::move(result), project, *built.system));
+  write_output(html,
+               report::check_html(report::html_report(std::move(result), project, *built.system)));
   return kHolds;
 }
 
