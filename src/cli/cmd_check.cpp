@@ -329,7 +329,6 @@ int run_check_body(const CheckOptions& o) {
   } else {
     std::cout << report::check_text(result, *ts, render);
   }
-  std::cout.flush();
   // Every requested file is written, even when another could not be; each failure is named.
   bool write_failed = false;
   auto write = [&write_failed, &progress](const OutputPath& out, auto&& render_text) {

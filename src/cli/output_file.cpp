@@ -102,10 +102,12 @@ bool write_all(int fd, const std::string& text) {
 
 void write_stream(const OutputPath& out, std::ostream& stream, std::FILE* file,
                   const std::string& text) {
+  errno = 0;
   stream << text;
   stream.flush();
-  errno = 0;
-  if (std::fflush(file) != 0 || !stream || std::ferror(file)) fail(out, error_text(errno));
+  int error = errno;
+  if (std::fflush(file) != 0 && !error) error = errno;
+  if (!stream || std::ferror(file)) fail(out, "cannot write: " + error_text(error));
 }
 
 void write_direct(const OutputPath& out, const fs::path& file, const std::string& text) {
@@ -225,10 +227,13 @@ void write_output(const OutputPath& out, const std::string& text) {
 }
 
 void flush_standard_output() {
-  std::cout.flush();
   errno = 0;
-  if (std::fflush(stdout) != 0 || !std::cout || std::ferror(stdout))
-    throw UsageError("cannot write standard output: " + error_text(errno));
+  std::cout.flush();  // through stdout's buffer: its error, if any, sets errno here
+  int error = errno;
+  if (std::fflush(stdout) != 0 && !error) error = errno;
+  if (!std::cout || std::ferror(stdout))
+    throw UsageError("cannot write standard output" +
+                     (error ? ": " + std::string(std::strerror(error)) : std::string()));
 }
 
 }  // namespace sfcv::cli
