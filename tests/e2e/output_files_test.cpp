@@ -236,6 +236,38 @@ TEST(OutputFiles, ReportsAreReplacedWholeAndKeptWhenTheRunFailsFirst) {
   EXPECT_EQ(dir.names(), (std::vector<std::string>{"m.smv", "r.sarif", "r.xml"}));
 }
 
+TEST(OutputFiles, AnEngineStoppedByALimitStillReportsEveryQuestion) {
+  // 199 nested enclosing steps: building the SAT engines' circuit takes minutes, so --timeout 2
+  // stops IC3 before it has a report. Before, the run ended with "time limit reached while
+  // building the circuit" on standard error, no verdict printed and no report written.
+  std::string text = "project nest;\ninput a;\noutput o;\n";
+  for (int i = 0; i < 199; ++i) {
+    text += "grafcet G" + std::to_string(i) + " {\n";
+    text += i == 0 ? "  step 1 initial;\n" : "  step 1 linked;\n";
+    text += i + 1 < 199 ? "  step 2 encloses G" + std::to_string(i + 1) + ";\n" : "  step 2;\n";
+    text += "  transition t1: 1 -> 2 when a;\n  transition t2: 2 -> 1 when !a;\n}\n";
+  }
+  const auto nest = write_temp(text, ".g7");
+  TempDir dir;
+  const std::string junit = dir / "r.xml";
+  const auto t =
+      timed_run("check " + nest + " --engine ic3 --timeout 2 --checks reachable " +
+                "--ctl 'AG !(G0.X1 & G0.X2)' --json --trace none --junit '" + junit + "'");
+  EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
+  EXPECT_LT(t.seconds, 15.0);
+  nlohmann::json j;
+  ASSERT_NO_THROW(j = nlohmann::json::parse(t.run.out)) << t.run.out << t.run.err;
+  EXPECT_EQ(j.at("limit"), "time");
+  ASSERT_EQ(j.at("properties").size(), 2u) << j.dump(2);
+  for (const auto& p : j["properties"]) {
+    EXPECT_EQ(p.at("verdict"), "unknown") << p.dump();
+    EXPECT_NE(p.dump().find("time limit reached"), std::string::npos) << p.dump();
+  }
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_file(junit.c_str())) << slurp(junit);
+  EXPECT_EQ(doc.select_nodes("//testcase/error").size(), 2u) << slurp(junit);
+}
+
 /// `sfcv <args>` started in the background with its streams in files of `dir`.
 class Background {
  public:
