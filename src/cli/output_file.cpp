@@ -199,8 +199,9 @@ void check_output_paths(const std::vector<OutputPath>& outputs) {
     check_writable(out, target);
     if (target.kind != Kind::Atomic) continue;
     std::error_code ec;
-    auto same = fs::weakly_canonical(target.file, ec);
-    if (ec) same = target.file;
+    // Absolute first: weakly_canonical leaves a relative path whose folder is "." as it is.
+    auto same = fs::weakly_canonical(fs::absolute(target.file, ec), ec);
+    if (ec) same = target.file.lexically_normal();
     for (const auto& [file, other] : files)
       if (file == same) fail(out, "is also the file of " + other->option);
     files.emplace_back(same, &out);

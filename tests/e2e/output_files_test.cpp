@@ -147,6 +147,12 @@ TEST(OutputFiles, DirectoryAndSharedPathsAreRefusedBeforeTheRun) {
             std::string::npos)
       << t.run.err;
   EXPECT_LT(t.seconds, 5.0);
+  // Relative paths naming one new file in the working directory.
+  const auto same = run_sfcv("check " + kPistons + " --junit r.xml --sarif ./r.xml");
+  EXPECT_EQ(same.exit_code, 2) << same.err;
+  EXPECT_NE(same.err.find("--sarif ./r.xml: is also the file of --junit"), std::string::npos)
+      << same.err;
+  EXPECT_FALSE(fs::exists("r.xml"));
   // A missing directory in the middle of the path, and a file used as a directory.
   std::ofstream(dir / "plain") << "x";
   const auto r = run_sfcv("export " + kPlant + " --to nusmv -o '" + (dir / "plain/m.smv") + "'");
