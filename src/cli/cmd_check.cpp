@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -323,22 +324,20 @@ int run_check_body(const CheckOptions& o) {
   render.model = o.model;
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
-  // The verdicts first: a report that cannot be written must not hide them.
-  if (o.json) {
-    std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
-  } else {
-    std::cout << report::check_text(result, *ts, render);
-  }
-  // Every requested file is written, even when another could not be; each failure is named.
-  bool write_failed = false;
-  auto write = [&write_failed, &progress](const OutputPath& out, auto&& render_text) {
-    if (out.path.empty()) return;
+  // Every requested file is written, even when another could not be. The files come before
+  // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed
+  // whatever happened to them: a report that cannot be written, or a renderer's bug, must not
+  // hide a verdict.
+  std::vector<std::string> write_errors;
+  std::exception_ptr render_error;
+  auto write = [&](const OutputPath& out, auto&& render_text) {
+    if (out.path.empty() || render_error) return;
     try {
       write_output(out, render_text());
     } catch (const UsageError& e) {
-      progress.clear();
-      std::cerr << "sfcv: error: " << e.what() << "\n";
-      write_failed = true;
+      write_errors.push_back(e.what());
+    } catch (...) {
+      render_error = std::current_exception();
     }
   };
   write(outputs[0], [&] { return trace_file_text(result, *ts, trace_format, render.cycle_ms); });
@@ -355,7 +354,17 @@ int run_check_body(const CheckOptions& o) {
     return report::check_html(
         report::html_report(report::check_json(result, *ts, render), project, *ts));
   });
-  if (write_failed) return kBadInput;
+  if (o.json) {
+    std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
+  } else {
+    std::cout << report::check_text(result, *ts, render);
+  }
+  if (render_error) std::rethrow_exception(render_error);
+  if (!write_errors.empty()) {
+    progress.clear();
+    for (const auto& e : write_errors) std::cerr << "sfcv: error: " << e << "\n";
+    return kBadInput;
+  }
   return logic::exit_code(result);
 }
 
