@@ -27,8 +27,6 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& o) {
-  const OutputPath html{o.html, "--html"};
-  check_output_paths({html});
   std::ifstream in(o.result);
   if (!in) throw InputError(o.result + ": cannot read the result");
   nlohmann::json result;
@@ -41,6 +39,9 @@ int run_report(const ReportOptions& o) {
     throw InputError(o.result + ": not a JSON result of 'sfcv check --json' (no \"properties\")");
   const std::string model = !o.model.empty() ? o.model : result.value("model", std::string());
   if (model.empty()) throw InputError(o.result + ": names no model: give --model");
+  // Before the model is loaded and built (the long part).
+  const OutputPath html{o.html, "--html"};
+  check_output_paths({html});
   const auto project = load_model_or_throw(model, parse_format(o.format), true);
   SystemOptions system = o.system;
   if (system.semantics.empty()) system.semantics = result.value("semantics", std::string());
