@@ -102,7 +102,9 @@ TEST(OutputFiles, MissingDirectoryIsRefusedBeforeTheRunForEveryOutputOption) {
   const std::string missing = "/nonexistent-sfcv-dir/sub/out.file";
   TempDir dir;
   const std::string result_json = dir / "result.json";
-  ASSERT_EQ(run_sfcv("check " + kPistons + " --json --quiet > '" + result_json + "'").exit_code, 0);
+  const auto saved = run_sfcv("check " + kPistons + " --json --quiet");
+  ASSERT_EQ(saved.exit_code, 0) << saved.err;
+  std::ofstream(result_json) << saved.out;
   struct Case {
     std::string command, option;
   };
