@@ -3,6 +3,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/output_file.hpp"
 
 // SFCV_VERSION comes from the CMake project version.
 
@@ -54,7 +56,10 @@ int run(int argc, char** argv) {
     return kBadInput;  // CLI11 uses its own codes; ours are a contract
   }
   if (!selected) return kBadInput;
-  return selected();
+  install_interrupt_handlers();
+  const int code = selected();
+  flush_standard_output();  // `> /dev/full`: an error, not a silent loss (exit 2)
+  return code;
 }
 
 }  // namespace sfcv::cli

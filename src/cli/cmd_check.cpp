@@ -4,7 +4,9 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -15,7 +17,9 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
@@ -136,9 +140,93 @@ logic::CheckReport check_auto(const logic::CheckTask& task,
   return engine::make_portfolio_model_checker(options)->check(task);
 }
 
-int run_check(const CheckOptions& o) {
-  // The budget starts now and holds for every phase below.
-  const model::Budget budget = make_budget(o.limits);
+/// The files `sfcv check` writes, with their options.
+std::vector<OutputPath> output_paths(const CheckOptions& o) {
+  return {{o.trace_file, "--trace-file"},
+          {o.certificate, "--certificate"},
+          {o.junit, "--junit"},
+          {o.sarif, "--sarif"},
+          {o.html, "--html"}};
+}
+
+/// The questions of `task` (its properties, then its standard checks), each unknown for `why`:
+/// the report of an engine that stopped on a limit before it had a report of its own, so that
+/// the text and every report still list every question.
+logic::CheckReport unknown_report(const logic::CheckTask& task, const std::string& engine,
+                                  const LimitReached& why) {
+  logic::CheckReport report;
+  report.engine = engine;
+  report.states_known = false;
+  report.edges_known = false;
+  report.complete = false;
+  report.limit = to_string(why.which());
+  for (const auto& p : task.properties) {
+    logic::PropertyResult r;
+    r.name = p.name;
+    r.formula = logic::to_string(p.formula);
+    r.where = p.where;
+    r.message = why.what();
+    report.results.push_back(std::move(r));
+  }
+  for (auto c : task.checks) {
+    logic::PropertyResult r;
+    r.name = std::string(logic::to_string(c));
+    r.check = r.name;
+    r.message = why.what();
+    report.results.push_back(std::move(r));
+  }
+  return report;
+}
+
+/// After SIGINT or SIGTERM: what the engines had not decided is unknown for that reason (the
+/// engines saw the signal as a cancel, which they word as a time limit), limit "interrupted".
+void mark_interrupted(logic::CheckReport& result) {
+  const std::string why =
+      std::string("interrupted by ") + interrupt_signal_name() + " before an answer was certain";
+  bool undecided = false;
+  for (auto& r : result.results)
+    if (r.verdict == logic::Verdict::Unknown) {
+      r.message = why;
+      undecided = true;
+    }
+  if (undecided || !result.complete) {
+    result.complete = false;
+    result.limit = "interrupted";
+  }
+}
+
+/// The first counterexample (else witness) in the format of --trace; empty when none.
+std::string trace_file_text(const logic::CheckReport& result, const semantics::TransitionSystem& ts,
+                            report::TraceFormat format, std::int64_t cycle_ms) {
+  const logic::Trace* chosen = nullptr;
+  for (const auto& r : result.results)
+    if (r.trace && (!chosen || r.verdict == logic::Verdict::Violated)) {
+      chosen = &*r.trace;
+      if (r.verdict == logic::Verdict::Violated) break;
+    }
+  if (!chosen) return {};
+  switch (format) {
+    case report::TraceFormat::Json:
+      return report::trace_json(*chosen, ts);
+    case report::TraceFormat::Vcd:
+      return report::trace_vcd(*chosen, ts, {cycle_ms});
+    case report::TraceFormat::Csv:
+      return report::trace_csv(*chosen, ts);
+    default:
+      return report::trace_table(*chosen, ts);
+  }
+}
+
+int run_check_body(const CheckOptions& o) {
+  // A wrong output path ends the run now, not after the exploration (docs/reliability.md).
+  const auto outputs = output_paths(o);
+  check_output_paths(outputs);
+  // The budget starts now and holds for every phase below; SIGINT/SIGTERM cancel it.
+  const model::Budget budget = [&o] {
+    auto b = make_budget(o.limits);
+    b.cancel = interrupt_flag();
+    return b;
+  }();
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{
       o.ctl,    o.spec.empty() ? "" : model::read_input_file(o.spec, "the spec file"),
@@ -206,10 +294,17 @@ int run_check(const CheckOptions& o) {
   explicit_options.threads = o.threads;
 
   progress.phase("explore");
-  logic::CheckReport result =
-      o.engine == "auto"
-          ? check_auto(task, bdd_options, explicit_options, progress)
-          : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)->check(task);
+  logic::CheckReport result;
+  try {
+    result =
+        o.engine == "auto"
+            ? check_auto(task, bdd_options, explicit_options, progress)
+            : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)->check(task);
+  } catch (const LimitReached& e) {
+    // Stopped before it had a report: every question is unknown, and still reported.
+    result = unknown_report(task, o.engine, e);
+  }
+  if (interrupted()) mark_interrupted(result);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   logic::describe_results(result, parsed.spec);
@@ -224,60 +319,59 @@ int run_check(const CheckOptions& o) {
   render.model = o.model;
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
-  if (!o.trace_file.empty()) {
-    const logic::Trace* chosen = nullptr;
-    for (const auto& r : result.results)
-      if (r.trace && (!chosen || r.verdict == logic::Verdict::Violated)) {
-        chosen = &*r.trace;
-        if (r.verdict == logic::Verdict::Violated) break;
-      }
-    std::ofstream f(o.trace_file);
-    if (!f) throw InputError(o.trace_file + ": cannot write the trace file");
-    if (chosen) {
-      switch (trace_format) {
-        case report::TraceFormat::Json:
-          f << report::trace_json(*chosen, *ts);
-          break;
-        case report::TraceFormat::Vcd:
-          f << report::trace_vcd(*chosen, *ts, {render.cycle_ms});
-          break;
-        case report::TraceFormat::Csv:
-          f << report::trace_csv(*chosen, *ts);
-          break;
-        default:
-          f << report::trace_table(*chosen, *ts);
-          break;
-      }
+  // Every requested file is written, even when another could not be. The files come before
+  // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed
+  // whatever happened to them: a report that cannot be written, or a renderer's bug, must not
+  // hide a verdict.
+  std::vector<std::string> write_errors;
+  std::exception_ptr render_error;
+  auto write = [&](const OutputPath& out, auto&& render_text) {
+    if (out.path.empty() || render_error) return;
+    try {
+      write_output(out, render_text());
+    } catch (const UsageError& e) {
+      write_errors.push_back(e.what());
+    } catch (...) {
+      render_error = std::current_exception();
     }
-  }
-  if (!o.certificate.empty()) {
-    std::ofstream f(o.certificate);
-    if (!f) throw InputError(o.certificate + ": cannot write the certificate file");
+  };
+  write(outputs[0], [&] { return trace_file_text(result, *ts, trace_format, render.cycle_ms); });
+  write(outputs[1], [&] {
+    std::string text;
     for (const auto& r : result.results)
-      if (!r.certificate.empty()) f << "# " << r.name << "\n" << r.certificate;
-  }
-  if (!o.junit.empty()) {
-    std::ofstream f(o.junit);
-    if (!f) throw InputError(o.junit + ": cannot write the JUnit report");
-    f << report::check_junit(result, *ts, render);
-  }
-  if (!o.sarif.empty()) {
-    std::ofstream f(o.sarif);
-    if (!f) throw InputError(o.sarif + ": cannot write the SARIF report");
-    f << report::check_sarif(result, *ts, &project, render).dump(2) << "\n";
-  }
-  if (!o.html.empty()) {
-    std::ofstream f(o.html);
-    if (!f) throw InputError(o.html + ": cannot write the HTML report");
-    f << report::check_html(
+      if (!r.certificate.empty()) text += "# " + r.name + "\n" + r.certificate;
+    return text;
+  });
+  write(outputs[2], [&] { return report::check_junit(result, *ts, render); });
+  write(outputs[3],
+        [&] { return report::check_sarif(result, *ts, &project, render).dump(2) + "\n"; });
+  write(outputs[4], [&] {
+    return report::check_html(
         report::html_report(report::check_json(result, *ts, render), project, *ts));
-  }
+  });
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
   } else {
     std::cout << report::check_text(result, *ts, render);
   }
+  if (render_error) std::rethrow_exception(render_error);
+  if (!write_errors.empty()) {
+    progress.clear();
+    for (const auto& e : write_errors) std::cerr << "sfcv: error: " << e << "\n";
+    return kBadInput;
+  }
   return logic::exit_code(result);
+}
+
+int run_check(const CheckOptions& o) {
+  const InterruptScope interrupt;  // the first signal stops the engines, the reports follow
+  try {
+    return run_check_body(o);
+  } catch (const LimitReached& e) {
+    // Interrupted while loading or building: no question was asked yet.
+    if (!interrupted()) throw;
+    throw LimitReached(e.which(), std::string(interrupt_signal_name()) + ": " + e.what());
+  }
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/system_options.hpp"
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/export_model.hpp"
@@ -156,6 +157,8 @@ int run_export(const ExportOptions& o) {
     throw InputError(
         "sfcv export --to aiger writes binary AIGER: give -o FILE or redirect "
         "standard output (--to aag writes ASCII)");
+  const OutputPath output{o.output, "-o"};
+  check_output_paths({output});
   const auto project = load_model_or_throw(o.model, parse_format(o.format));
 
   std::ostringstream text;
@@ -174,14 +177,10 @@ int run_export(const ExportOptions& o) {
   } catch (const UnsupportedConstruct& e) {  // the writers' (G7WriteError among them)
     throw UnsupportedConstruct("sfcv export --to " + o.to + ": " + e.what());
   }
-  if (o.output.empty() || o.output == "-") {
+  if (o.output.empty())
     std::cout << text.str();
-    std::cout.flush();
-  } else {
-    std::ofstream f(o.output, std::ios::binary);
-    if (!f) throw InputError(o.output + ": cannot write");
-    f << text.str();
-  }
+  else
+    write_output(output, text.str());
   return kHolds;
 }
 }  // namespace

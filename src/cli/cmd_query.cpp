@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/run_limits.hpp"
 #include "cli/shipped_files.hpp"
 #include "cli/system_options.hpp"
@@ -73,6 +74,8 @@ std::string located(const logic::QueryError& e, const std::string& text,
 }
 
 int run_query(const QueryOptions& o) {
+  const OutputPath html{o.html, "--html"};
+  check_output_paths({html});
   const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
   // Library first: its errors are the user's files, independent of the model.
   logic::QueryLibrary library;
@@ -201,9 +204,7 @@ int run_query(const QueryOptions& o) {
   }
   if (o.json) std::cout << jout.dump(2) << "\n";
   if (!o.html.empty()) {
-    std::ofstream f(o.html);
-    if (!f) throw InputError(o.html + ": cannot write the HTML report");
-    f << report::query_html(jout, report::html_pictures(project, *ts));
+    write_output(html, report::query_html(jout, report::html_pictures(project, *ts)));
   }
   int exit_code = kHolds;
   if (o.assert_empty) exit_code = any_violated ? kViolated : any_unknown ? kUnknown : kHolds;

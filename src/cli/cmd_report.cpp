@@ -11,6 +11,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/system_options.hpp"
 #include "report/check_html.hpp"
 
@@ -33,13 +34,15 @@ int run_report(const ReportOptions& o) {
     throw InputError(o.result + ": not a JSON result of 'sfcv check --json' (no \"properties\")");
   const std::string model = !o.model.empty() ? o.model : result.value("model", std::string());
   if (model.empty()) throw InputError(o.result + ": names no model: give --model");
+  // Before the model is loaded and built (the long part).
+  const OutputPath html{o.html, "--html"};
+  check_output_paths({html});
   const auto project = load_model_or_throw(model, parse_format(o.format), true);
   SystemOptions system = o.system;
   if (system.semantics.empty()) system.semantics = result.value("semantics", std::string());
   const auto built = build_system(project, system, {}, "sfcv report");
-  std::ofstream out(o.html);
-  if (!out) throw InputError(o.html + ": cannot write the HTML report");
-  out << report::check_html(report::html_report(std::move(result), project, *built.system));
+  write_output(html,
+               report::check_html(report::html_report(std::move(result), project, *built.system)));
   return kHolds;
 }
 

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
@@ -36,6 +37,8 @@ struct RsgOptions {
 };
 
 int run_rsg(const RsgOptions& o) {
+  const OutputPath dot{o.dot, "--dot"}, dot_states{o.dot_states, "--dot-states"};
+  check_output_paths({dot, dot_states});
   const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
@@ -77,24 +80,15 @@ int run_rsg(const RsgOptions& o) {
   else if (!dot_to_stdout || o.list)
     std::cout << report::situation_graph_text(g, *ts, shown);
 
-  auto write = [](const std::string& path, const std::string& text) {
-    if (path == "-") {
-      std::cout << text;
-      return;
-    }
-    std::ofstream f(path);
-    if (!f) throw InputError("cannot write " + path);
-    f << text;
-  };
   if (!o.dot.empty()) {
     report::SituationGraphOptions so;
     so.max_nodes = o.max_nodes;
     const auto grouped = report::situation_graph_dot(g, so);
-    write(o.dot, grouped.dot);
+    write_output(dot, grouped.dot);
     if (!grouped.truncation_note.empty())
       std::cerr << "sfcv rsg --dot: " << grouped.truncation_note << "\n";
   }
-  if (!o.dot_states.empty()) write(o.dot_states, report::state_graph_dot(g, *ts));
+  if (!o.dot_states.empty()) write_output(dot_states, report::state_graph_dot(g, *ts));
   for (const auto& line : report::anomaly_lines(g, *ts, o.model)) std::cerr << line << "\n";
   if (!g.complete()) {
     (dot_to_stdout ? std::cerr : std::cout)

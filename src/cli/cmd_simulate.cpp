@@ -19,6 +19,7 @@
 #include "cli/iec_options.hpp"
 #include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
+#include "cli/output_file.hpp"
 #include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
 #include "logic/trace.hpp"
@@ -280,12 +281,11 @@ logic::Trace run_as_trace(const semantics::SimulationResult& r,
 void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
                const semantics::SimulationResult& r,
                const std::vector<std::vector<std::int64_t>>& rows, std::int64_t cycle_ms) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write the VCD file");
-  out << report::trace_vcd(run_as_trace(r, rows), ts, {cycle_ms});
+  write_output({path, "--vcd"}, report::trace_vcd(run_as_trace(r, rows), ts, {cycle_ms}));
 }
 
 int run_simulate(const SimulateOptions& o) {
+  check_output_paths({{o.vcd, "--vcd"}});
   auto project = load_model_or_throw(o.model, parse_format(o.format));
   semantics::ActionOrder action_order = semantics::ActionOrder::Declaration;
   if (o.action_order == "alphabetical")

@@ -246,8 +246,10 @@ std::string check_html(const HtmlReport& report) {
     meta += " &middot; " + std::to_string(r["edges"].get<std::uint64_t>()) + " edges";
   meta += " &middot; " + seconds(r["seconds"]);
   if (r.contains("complete") && !r["complete"].get<bool>())
-    meta += " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) +
-            " limit was reached</strong>";
+    meta += str(r, "limit") == "interrupted"
+                ? std::string(" &middot; <strong>incomplete: interrupted</strong>")
+                : " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) +
+                      " limit was reached</strong>";
 
   json nodes;
   nodes["steps"] = report.node_ids.steps;

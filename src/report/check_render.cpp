@@ -28,7 +28,10 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
          (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " +
          std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
-  if (!report.complete) out += " -- INCOMPLETE: the " + report.limit + " limit was reached";
+  if (!report.complete)
+    out += report.limit == "interrupted"
+               ? std::string(" -- INCOMPLETE: interrupted (SIGINT or SIGTERM)")
+               : " -- INCOMPLETE: the " + report.limit + " limit was reached";
   if (report.stopped_early) out += " -- stopped early: every invariant is violated";
   out += "\n";
   if (const auto& c = report.coverage) {
