@@ -243,14 +243,14 @@ void check_chart(const Chart& c, std::uint64_t seed, Tally& tally) {
 TEST(EveryTraceReplays, EveryEngineOnRandomChartsAndGrafcets) {
   const auto start = std::chrono::steady_clock::now();
   Tally tally;
-  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SCOPED_TRACE("iec seed " + std::to_string(seed));
     const auto c = iec_chart(seed);
     ASSERT_TRUE(c.ts);
     check_chart(c, seed, tally);
     if (HasFatalFailure()) return;
   }
-  for (std::uint64_t seed = 1; seed <= 24; ++seed)
+  for (std::uint64_t seed = 1; seed <= 16; ++seed)
     for (bool single : {true, false}) {
       SCOPED_TRACE("grafcet seed " + std::to_string(seed) +
                    (single ? "" : " --multi-input-change"));
@@ -276,7 +276,7 @@ TEST(EveryTraceReplays, EveryEngineOnRandomChartsAndGrafcets) {
     EXPECT_GE(tally["explicit LTL / " + kind].traces, 5) << kind;
   }
   EXPECT_GE(tally["bdd LTL / iec"].traces, 5);
-  EXPECT_GE(total, 1000);
+  EXPECT_GE(total, 800);
   std::cout << "[ replayed ] " << total << " traces in "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
             << " s\n";
