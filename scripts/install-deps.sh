@@ -12,6 +12,7 @@ PACKAGES=(
   python3-jsonschema chromium  # tests: SARIF schema validation, the HTML report in a browser
   clang libclang-rt-14-dev  # the libFuzzer harnesses of fuzz/ (.ci/run)
   clang-format  # scripts/check-format.sh (ctest clang_format, .ci/run)
+  valgrind  # ctest valgrind_grafcet_bdd
 )
 
 missing=()

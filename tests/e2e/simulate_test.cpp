@@ -259,6 +259,38 @@ TEST(Simulate, IecJsonCounterexampleReplays) {
   EXPECT_NE(rows.back().find("V4=1"), std::string::npos) << r.out;
 }
 
+// docs/semantics.md 2.15: a Grafcet trace's first row is an initial valuation the start
+// stabilises under, and under the single-input-change hypothesis each later row changes one
+// input. Here X3 needs a true at the start (1 -> 2 at once) and then a rise of b: every engine
+// writes the rows a,b = 1,0 then 1,1, which replay. The BDD engine used to write 0,0 (the
+// start then stays in X1) then 1,1 (two inputs changing in one row): issue 53 item 9.
+TEST(Simulate, GrafcetTraceStartsFromItsInitialInputsAndChangesOneInputPerRow) {
+  const auto g7 = sfcv::test::write_temp(
+      "project ab;\ninput a;\ninput b;\ngrafcet G {\n  step 1 initial;\n  step 2, 3;\n"
+      "  transition 1: 1 -> 2 when a;\n  transition 2: 2 -> 3 when RE b;\n}\n",
+      ".g7");
+  for (const std::string engine : {"explicit", "bdd", "bmc", "ic3"}) {
+    const auto trace = sfcv::test::write_temp("", ".csv");
+    auto r = run_sfcv("check '" + g7 + "' --engine " + engine +
+                      " --checks none --ctl 'AG !X3' --trace csv --trace-file '" + trace + "'");
+    ASSERT_EQ(r.exit_code, 1) << engine << ": " << r.out << r.err;
+    std::ifstream f(trace);
+    std::stringstream text;
+    text << f.rdbuf();
+    auto rows = lines(text.str());
+    ASSERT_EQ(rows.size(), 4u) << engine << ": " << text.str();  // comment, header, two rows
+    EXPECT_EQ(rows[1], "a,b") << engine;
+    EXPECT_EQ(rows[2], "1,0") << engine;
+    EXPECT_EQ(rows[3], "1,1") << engine;
+    r = run_sfcv("simulate '" + g7 + "' --inputs '" + trace + "'");
+    ASSERT_EQ(r.exit_code, 0) << engine << ": " << r.out << r.err;
+    rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 3u) << r.out;
+    EXPECT_NE(rows[1].find("| X2 |"), std::string::npos) << engine << ": " << r.out;
+    EXPECT_NE(rows[2].find("| X3 |"), std::string::npos) << engine << ": " << r.out;
+  }
+}
+
 }  // namespace
 
 // RFC 4180 fields (what `check --trace csv` writes for names that need them): quoted names

@@ -358,8 +358,16 @@ Bdd Bdd::operator|(const Bdd& o) const {
   check_deadline();
   return Bdd(bdd_or(root_, o.root_));
 }
+// BuDDy 2.4's bdd_not (not_rec) stores its results in the apply cache writing only the
+// entry's fields a, c and res; apply_rec then compares field b of such an entry when its
+// operand equals a, reading memory never written since the cache was allocated (valgrind:
+// "conditional jump depends on uninitialised value", allocated in BddCache_resize). The answer
+// is right all the same (field c, bddop_not, never matches an apply operator), but the report
+// hides real memory errors. x XOR true is the same function through apply_rec, which writes
+// every field.
 Bdd Bdd::operator!() const {
-  return Bdd(bdd_not(root_));
+  check_deadline();
+  return Bdd(bdd_apply(root_, 1, bddop_xor));
 }
 
 Bdd Bdd::operator^(const Bdd& o) const {
@@ -372,7 +380,16 @@ Bdd Bdd::iff(const Bdd& o) const {
 }
 Bdd Bdd::ite(const Bdd& t, const Bdd& e) const {
   check_deadline();
-  return Bdd(bdd_ite(root_, t.root_, e.root_));
+  // bdd_ite negates through not_rec (operator! above) when it meets then = false and
+  // else = true; a variable above both branches (successor_simulator's use) never recurses
+  // into such a pair, any other case is written with apply.
+  if (t.root_ == 0 && e.root_ == 1) return !*this;
+  const int top_level = root_ > 1 ? bdd_var2level(bdd_var(root_)) : -1;
+  auto below = [&](int r) { return r <= 1 || bdd_var2level(bdd_var(r)) > top_level; };
+  const bool variable = root_ > 1 && bdd_low(root_) == 0 && bdd_high(root_) == 1;
+  if (root_ <= 1 || (variable && below(t.root_) && below(e.root_)))
+    return Bdd(bdd_ite(root_, t.root_, e.root_));
+  return (*this & t) | ((!*this) & e);
 }
 
 Bdd Bdd::cube(const std::vector<int>& vars) {

@@ -222,9 +222,14 @@ class Run {
     const auto& circuit = sys_.circuit();
     std::vector<std::int64_t> inputs =
         logic::pick_inputs(semantics::InputCondition::always(), ts_.inputs(), {});
+    // Grafcet: the first row is an initial valuation the start stabilises under, and each
+    // later row changes as few inputs as the event allows (one under the single-input-change
+    // hypothesis), so that `sfcv simulate` replays the rows (docs/semantics.md 2.15).
+    if (const auto bits = sys_.initial_inputs(states.front(), inputs); !bits.empty())
+      inputs = semantics::inputs_from_bits(ts_, circuit, bits);
     t.steps.push_back({inputs, states.front(), {}});
     for (std::size_t k = 1; k < states.size(); ++k) {
-      const auto bits = sys_.inputs_between(states[k - 1], states[k]);
+      const auto bits = sys_.inputs_between(states[k - 1], states[k], inputs);
       // Consecutive states of a run are related by construction: a gap is a bug, never a trace.
       // No bits is also the answer of a system without inputs: then the relation decides.
       if (bits.empty() &&

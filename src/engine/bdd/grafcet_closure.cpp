@@ -194,12 +194,12 @@ Bdd GrafcetClosure::starts(const Bdd& sources, bool keep_all_inputs) const {
   return keep_all_inputs ? acc : acc.exist(dropped_inputs_cube_);
 }
 
-Bdd GrafcetClosure::initial_starts() const {
+Bdd GrafcetClosure::initial_starts(bool keep_all_inputs) const {
   Bdd acc = initial_event_;
   for (std::size_t l = 0; l < num_state_; ++l) acc = acc & Bdd::variable(v_.n[l]).iff(initial_[l]);
   for (std::size_t p = 0; p < v_.q.size(); ++p)
     acc = acc & Bdd::variable(v_.q[p]).iff(Bdd::variable(v_.n[circuit_.prev_of[p]]));
-  return acc.exist(dropped_inputs_cube_);
+  return keep_all_inputs ? acc : acc.exist(dropped_inputs_cube_);
 }
 
 Bdd GrafcetClosure::emitted(const Bdd& ends) const {
@@ -251,7 +251,7 @@ void GrafcetClosure::compute_relation() {
 
 void GrafcetClosure::compute_initial() {
   if (have_initial_) return;
-  const Bdd st = initial_starts();
+  const Bdd st = initial_starts(false);
   const Bdd reach = forward(st);
   const Bdd ends = reach & stable_ & !error_;
   initial_set_ = emitted(ends).replace(*n_to_c_);
@@ -347,19 +347,23 @@ Bdd GrafcetClosure::range_error_states() {
   return range_;
 }
 
-std::vector<bool> GrafcetClosure::inputs_between(const Bdd& from, const Bdd& to) {
-  const Bdd reach = forward(starts(from, true));
+Bdd GrafcetClosure::inputs_ending_in(const Bdd& reach, const Bdd& to) const {
   Bdd acc = reach & stable_ & !error_;
   for (std::size_t l = 0; l < num_state_; ++l)
     if (final_changes_[l]) acc = acc & Bdd::variable(v_.m[l]).iff(final_[l]);
   acc = acc.exist(final_changed_n_cube_).replace(*final_m_to_n_);
   acc = acc & to.replace(*c_to_n_);
-  const Bdd on_inputs = acc.exist(c_cube_).exist(n_cube_).exist(q_cube_);
-  const Bdd one = on_inputs.sat_one(all_inputs_cube_);
-  if (one.is_false()) return {};
-  std::vector<bool> bits(v_.in.size());
-  for (std::size_t i = 0; i < v_.in.size(); ++i) bits[i] = one.value_in_cube(v_.in[i]) == 1;
-  return bits;
+  return acc.exist(c_cube_).exist(n_cube_).exist(q_cube_);
+}
+
+Bdd GrafcetClosure::inputs_between(const Bdd& from, const Bdd& to) {
+  return inputs_ending_in(forward(starts(from, true)), to);
+}
+
+Bdd GrafcetClosure::initial_inputs(const Bdd& to) {
+  // Every input is kept: the trace's first row must be a valuation that stabilises in `to`,
+  // not only one that the input memory agrees with (docs/semantics.md 2.15).
+  return inputs_ending_in(forward(initial_starts(true)), to);
 }
 
 }  // namespace sfcv::engine

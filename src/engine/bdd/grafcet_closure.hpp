@@ -63,8 +63,11 @@ class GrafcetClosure {
   /// Sources (over C) with an event whose evolutions never stabilise / raise a range error.
   Bdd unstable_states();
   Bdd range_error_states();
-  /// Circuit input values of an event from `from` that stabilises in `to`; empty if none.
-  std::vector<bool> inputs_between(const Bdd& from, const Bdd& to);
+  /// The circuit input valuations (over I) of the events from `from` that stabilise in `to`.
+  Bdd inputs_between(const Bdd& from, const Bdd& to);
+  /// The initial input valuations (over I) under which the initial situation stabilises in
+  /// `to` (over C).
+  Bdd initial_inputs(const Bdd& to);
 
  private:
   void check_time() const;  ///< throws bdd::BddError past the deadline
@@ -74,9 +77,11 @@ class GrafcetClosure {
   /// mu Z. targets | (within & continue & pre(Z))
   Bdd backward(const Bdd& targets, const Bdd& within) const;
   Bdd starts(const Bdd& sources, bool keep_all_inputs) const;
-  Bdd initial_starts() const;
+  Bdd initial_starts(bool keep_all_inputs) const;
   /// Ends of `reach` related to their emitted situation over N (Q and kept inputs quantified).
   Bdd emitted(const Bdd& ends) const;
+  /// The inputs (over I) of the runs of `reach` whose end emits a situation of `to` (over C).
+  Bdd inputs_ending_in(const Bdd& reach, const Bdd& to) const;
   void compute_relation();
   void compute_initial();
 

@@ -837,9 +837,41 @@ Bdd SymbolicSystem::preimage(const Bdd& states) const {
   return result;
 }
 
-std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from,
-                                                 semantics::StateView to) const {
-  if (grafcet_) return grafcet_->inputs_between(singleton(from), singleton(to));
+std::vector<bool> SymbolicSystem::pick_inputs_near(Bdd on_inputs,
+                                                   const std::vector<std::int64_t>& near) const {
+  if (on_inputs.is_false()) return {};
+  const auto& inputs = ts_.inputs();
+  for (std::size_t i = 0; i < inputs.size() && i < circuit_.input_bits.size(); ++i) {
+    const auto& t = inputs[i].type;
+    const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo;
+    // A delay elapses only when the row says so: pseudo-inputs prefer their lowest value.
+    const std::int64_t want = !inputs[i].pseudo && i < near.size() ? near[i] : lo;
+    const auto encoded = static_cast<std::uint64_t>(want - lo);
+    Bdd same = Bdd::constant(true);
+    for (std::size_t k = 0; k < circuit_.input_bits[i].size(); ++k) {
+      const Bdd bit = node_bdd(circuit_.input_bits[i][k]);
+      same = same & ((k < 64 && ((encoded >> k) & 1U)) ? bit : !bit);
+    }
+    const Bdd kept = on_inputs & same;
+    if (!kept.is_false()) on_inputs = kept;
+  }
+  const Bdd one = on_inputs.sat_one(input_cube_);
+  std::vector<bool> bits(input_var_.size());
+  for (std::size_t i = 0; i < input_var_.size(); ++i)
+    bits[i] = one.value_in_cube(input_var_[i]) == 1;
+  return bits;
+}
+
+std::vector<bool> SymbolicSystem::initial_inputs(semantics::StateView to,
+                                                 const std::vector<std::int64_t>& near) const {
+  if (!grafcet_) return {};
+  return pick_inputs_near(grafcet_->initial_inputs(singleton(to)), near);
+}
+
+std::vector<bool> SymbolicSystem::inputs_between(semantics::StateView from, semantics::StateView to,
+                                                 const std::vector<std::int64_t>& near) const {
+  if (grafcet_)
+    return pick_inputs_near(grafcet_->inputs_between(singleton(from), singleton(to)), near);
   if (circuit_.aig.inputs().size() <= kMaxSimulatedInputs && !current_var_.empty()) {
     // Simulated: `from` under every input valuation, without the relation.
     std::vector<std::uint32_t> position(current_var_.size());

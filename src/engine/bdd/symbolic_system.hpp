@@ -139,8 +139,18 @@ class SymbolicSystem {
   Bdd singleton(semantics::StateView state) const;
 
   /// Circuit input values (one bool per circuit input) that lead from `from` to `to` in one
-  /// cycle, allowed and without range error; empty when there are none.
-  std::vector<bool> inputs_between(semantics::StateView from, semantics::StateView to) const;
+  /// cycle, allowed and without range error; empty when there are none. Grafcet: those of an
+  /// event that stabilises in `to`, keeping every input it can at its value in `near` (values
+  /// of TransitionSystem::inputs(), the trace's previous row; empty: the lowest values) and
+  /// every delay unelapsed, so that a trace changes one input per row under the
+  /// single-input-change hypothesis (docs/semantics.md 2.15).
+  std::vector<bool> inputs_between(semantics::StateView from, semantics::StateView to,
+                                   const std::vector<std::int64_t>& near = {}) const;
+  /// Grafcet: circuit input values of an initial input valuation under which the initial
+  /// situation stabilises in `to`, as near `near` as inputs_between's; empty when there are
+  /// none, and always for IEC 61131-3 (its initial state reads no input).
+  std::vector<bool> initial_inputs(semantics::StateView to,
+                                   const std::vector<std::int64_t>& near = {}) const;
   /// The transitions fired from `from` under circuit input values `inputs` (Grafcet: along the
   /// whole transient evolution), sorted.
   std::vector<std::uint32_t> fired_between(semantics::StateView from,
@@ -254,6 +264,10 @@ class SymbolicSystem {
                                             std::optional<std::uint64_t>* edges) const;
   /// The latch values of a state.
   std::vector<bool> latches_of(semantics::StateView state) const;
+  /// One valuation of `on_inputs` (over the input variables) as circuit input values: input
+  /// by input, its value in `near` (lowest values when empty; 0 for pseudo-inputs) whenever
+  /// the rest of the set allows it; empty when the set is.
+  std::vector<bool> pick_inputs_near(Bdd on_inputs, const std::vector<std::int64_t>& near) const;
   bool simulates(const Bdd& from, std::uint64_t max_work, bool near_explicit_only) const;
   /// count_edges and image by simulation (after simulates()); nullopt when `from` mentions a
   /// variable other than the current ones. image_by_simulation counts in `tally` the states
