@@ -144,3 +144,75 @@ TEST(RsgCorpus, TimeLimitEndsTheExplosiveQualityControlPlant) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 53's minimal case (docs/semantics.md 2.12): G0 has no initial step, 10 is linked.
+const char* kLinked = R"(project linked;
+input a, b, c;
+grafcet Main {
+  step 1 initial;
+  step 2 encloses G0;
+  transition 1: 1 -> 2 when a;
+  transition 2: 2 -> 1 when b;
+}
+grafcet G0 {
+  step 10 linked;
+  step 11;
+  transition 3: 10 -> 11 when c;
+  transition 4: 11 -> 10 when !c;
+}
+)";
+
+// Every engine holds the linked step to the rule: AG (X2 -> X10 | X11) and EF X10 hold (before
+// issue 53 both were violated). BMC proves no invariant: its AG is unknown at its bound, never
+// violated.
+TEST(RsgCli, ActivationLinksOnEveryEngine) {
+  const auto path = write_temp(kLinked, ".g7");
+  for (const char* engine : {"explicit", "bdd", "kind", "ic3", "auto", "bmc"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv("check " + path + " --engine " + engine +
+                            " --ctl 'AG (X2 -> X10 | X11)' --ctl 'EF X10' --ctl 'EF (X2 & X11)'");
+    if (std::string(engine) == "bmc") {
+      EXPECT_NE(r.exit_code, 1) << r.out << r.err;
+      EXPECT_EQ(r.out.find("violated"), std::string::npos) << r.out;
+    } else {
+      EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    }
+  }
+  const auto rsg = run_sfcv("rsg --list " + path);
+  EXPECT_EQ(rsg.exit_code, 0) << rsg.err;
+  EXPECT_NE(rsg.out.find("{2,10}"), std::string::npos) << rsg.out;
+  EXPECT_NE(rsg.out.find("{2,11}"), std::string::npos) << rsg.out;
+  const auto lint = run_sfcv("lint " + path);
+  EXPECT_EQ(lint.out.find("no activation-linked step"), std::string::npos) << lint.out;
+}
+
+// A chain needing more transient evolutions than max_transient_steps (10000) is unknown, exit 3,
+// with the bound named; not an instability (docs/semantics.md 2.11).
+std::string chain_g7(int n) {
+  std::string text = "project chain;\ninput a;\ngrafcet G {\n  step 0 initial;\n";
+  for (int i = 1; i <= n; ++i) text += "  step " + std::to_string(i) + ";\n";
+  text += "  transition 0 -> 1 when a;\n";
+  for (int i = 1; i < n; ++i)
+    text += "  transition " + std::to_string(i) + " -> " + std::to_string(i + 1) + ";\n";
+  text += "  transition " + std::to_string(n) + " -> 0 when !a;\n}\n";
+  return text;
+}
+
+TEST(RsgCli, TransientBoundIsUnknown) {
+  const auto over = write_temp(chain_g7(10001), ".g7");
+  const auto r = run_sfcv("check " + over + " --engine explicit --check instability");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE((r.out + r.err).find("no stable situation after 10000 transient evolutions"),
+            std::string::npos)
+      << r.out << r.err;
+  EXPECT_NE((r.out + r.err).find("max_transient_steps"), std::string::npos) << r.out << r.err;
+  EXPECT_EQ(r.out.find("violated"), std::string::npos) << r.out;
+  // Exactly 10000 evolutions: stable, the instability check holds.
+  const auto exact = write_temp(chain_g7(10000), ".g7");
+  const auto e = run_sfcv("check " + exact + " --engine explicit --check instability");
+  EXPECT_EQ(e.exit_code, 0) << e.out << e.err;
+}
+
+}  // namespace
