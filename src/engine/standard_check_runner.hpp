@@ -341,6 +341,58 @@ class StandardCheckRunner {
       }
       if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
     }
+    // A step entered with its enclosing step (docs/semantics.md 2.12 a) is crossed when the
+    // enclosing step is entered: crossed itself, or entered by a transition that fires. To a
+    // fixpoint, for nested enclosures.
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t e = 0; e < steps_.size(); ++e) {
+        const auto entries = enclosed_entry_steps(steps_[e]);
+        if (entries.empty()) continue;
+        Set entry = sp_.none();
+        if (const auto it = out.find(e); it != out.end()) {
+          entry = it->second;
+        } else {
+          for (std::uint32_t t = 0; t < matched.size(); ++t) {
+            if (!model::iequals(ts_.transitions()[t].chart, steps_[e].chart)) continue;
+            for (const auto& d : matched[t]->targets)
+              if (model::iequals(d, steps_[e].step)) entry = sp_.join(entry, sp_.fires(t));
+          }
+        }
+        if (sp_.empty(entry)) continue;
+        for (auto s : entries)
+          if (!out.count(s) && sp_.empty(step_set(steps_[s]))) {
+            out.emplace(s, entry);
+            changed = true;
+          }
+      }
+    }
+    return out;
+  }
+
+  /// The steps an enclosing step's activation activates (docs/semantics.md 2.12 a): of each
+  /// partial grafcet it encloses, the activation-linked steps, else the initial ones. Empty
+  /// for any other step, and without the project.
+  std::vector<std::size_t> enclosed_entry_steps(const StepRef& e) const {
+    std::vector<std::size_t> out;
+    if (!task_.project) return out;
+    const model::Pou* pou = task_.project->find_pou(e.pou);
+    const model::Chart* chart = pou ? pou->find_chart(e.chart) : nullptr;
+    const model::Step* step = chart ? chart->find_step(e.step) : nullptr;
+    if (!step || step->kind != model::StepKind::Enclosing) return out;
+    for (const auto& name : step->enclosed) {
+      const model::Chart* c = pou->find_chart(name);
+      if (!c) continue;
+      const bool linked = std::any_of(c->steps.begin(), c->steps.end(),
+                                      [](const model::Step& x) { return x.activation_link; });
+      for (const auto& x : c->steps) {
+        if (!(linked ? x.activation_link : x.initial)) continue;
+        for (std::size_t i = 0; i < steps_.size(); ++i)
+          if (model::iequals(steps_[i].pou, e.pou) && model::iequals(steps_[i].chart, name) &&
+              model::iequals(steps_[i].step, x.name))
+            out.push_back(i);
+      }
+    }
     return out;
   }
 
@@ -361,6 +413,27 @@ class StandardCheckRunner {
         for (const auto* list : {&matched[t]->sources, &matched[t]->targets})
           for (const auto& d : *list) crossed = crossed || model::iequals(d, steps_[i].step);
         if (crossed && sp_.empty(step_set(steps_[i]))) out.insert(i);
+      }
+    }
+    // The entry steps of an enclosing step crossed at the start, or entered at the start by a
+    // transition (2.12 a), are crossed then too.
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t e = 0; e < steps_.size(); ++e) {
+        bool entered = out.count(e) > 0;
+        for (std::uint32_t t = 0; !entered && t < matched.size(); ++t) {
+          if (!sp_.fires_initially(t) ||
+              !model::iequals(ts_.transitions()[t].chart, steps_[e].chart))
+            continue;
+          for (const auto& d : matched[t]->targets)
+            entered = entered || model::iequals(d, steps_[e].step);
+        }
+        if (!entered) continue;
+        for (auto s : enclosed_entry_steps(steps_[e]))
+          if (!transient.count(s) && !out.count(s) && sp_.empty(step_set(steps_[s]))) {
+            out.insert(s);
+            changed = true;
+          }
       }
     }
     return out;
