@@ -45,6 +45,8 @@
 #include <set>
 #include <span>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "logic/check_result.hpp"
@@ -341,7 +343,68 @@ class StandardCheckRunner {
       }
       if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
     }
+    // A step entered with its enclosing step (docs/semantics.md 2.12 a) is crossed when the
+    // enclosing step is entered: crossed itself, or entered by a transition that fires. To a
+    // fixpoint, for nested enclosures.
+    for (bool changed = !enclosure_entries().empty(); changed;) {
+      changed = false;
+      for (const auto& [e, entries] : enclosure_entries()) {
+        poll();
+        Set entry = sp_.none();
+        if (const auto it = out.find(e); it != out.end()) {
+          entry = it->second;
+        } else {
+          for (std::uint32_t t = 0; t < matched.size(); ++t) {
+            if (!model::iequals(ts_.transitions()[t].chart, steps_[e].chart)) continue;
+            for (const auto& d : matched[t]->targets)
+              if (model::iequals(d, steps_[e].step)) entry = sp_.join(entry, sp_.fires(t));
+          }
+        }
+        if (sp_.empty(entry)) continue;
+        for (auto s : entries)
+          if (!out.count(s) && sp_.empty(step_set(steps_[s]))) {
+            out.emplace(s, entry);
+            changed = true;
+          }
+      }
+    }
     return out;
+  }
+
+  /// Per enclosing step (index into steps_): the steps its activation activates (docs/semantics.md
+  /// 2.12 a), of each partial grafcet it encloses the activation-linked steps, else the initial
+  /// ones. Computed once, indexed (charts of thousands of steps); empty without the project.
+  const std::vector<std::pair<std::size_t, std::vector<std::size_t>>>& enclosure_entries() {
+    if (enclosure_entries_done_) return enclosure_entries_;
+    enclosure_entries_done_ = true;
+    if (!task_.project || ts_.kind() != semantics::SemanticsKind::Grafcet)
+      return enclosure_entries_;
+    auto key = [](const std::string& pou, const std::string& chart, const std::string& step) {
+      return model::to_upper(pou) + "\n" + model::to_upper(chart) + "\n" + model::to_upper(step);
+    };
+    std::unordered_map<std::string, std::size_t> index;
+    for (std::size_t i = 0; i < steps_.size(); ++i)
+      index.emplace(key(steps_[i].pou, steps_[i].chart, steps_[i].step), i);
+    for (const auto& pou : task_.project->pous)
+      for (const auto& chart : pou.charts)
+        for (const auto& step : chart.steps) {
+          if (step.kind != model::StepKind::Enclosing) continue;
+          const auto e = index.find(key(pou.name, chart.name, step.name));
+          if (e == index.end()) continue;
+          std::vector<std::size_t> entries;
+          for (const auto& name : step.enclosed) {
+            const model::Chart* c = pou.find_chart(name);
+            if (!c) continue;
+            const bool linked = std::any_of(c->steps.begin(), c->steps.end(),
+                                            [](const model::Step& x) { return x.activation_link; });
+            for (const auto& x : c->steps)
+              if (linked ? x.activation_link : x.initial)
+                if (const auto s = index.find(key(pou.name, name, x.name)); s != index.end())
+                  entries.push_back(s->second);
+          }
+          if (!entries.empty()) enclosure_entries_.emplace_back(e->second, std::move(entries));
+        }
+    return enclosure_entries_;
   }
 
   /// Grafcet steps never active in a stable situation nor crossed after an event, but active
@@ -361,6 +424,28 @@ class StandardCheckRunner {
         for (const auto* list : {&matched[t]->sources, &matched[t]->targets})
           for (const auto& d : *list) crossed = crossed || model::iequals(d, steps_[i].step);
         if (crossed && sp_.empty(step_set(steps_[i]))) out.insert(i);
+      }
+    }
+    // The entry steps of an enclosing step crossed at the start, or entered at the start by a
+    // transition (2.12 a), are crossed then too.
+    for (bool changed = !enclosure_entries().empty(); changed;) {
+      changed = false;
+      for (const auto& [e, entries] : enclosure_entries()) {
+        poll();
+        bool entered = out.count(e) > 0;
+        for (std::uint32_t t = 0; !entered && t < matched.size(); ++t) {
+          if (!sp_.fires_initially(t) ||
+              !model::iequals(ts_.transitions()[t].chart, steps_[e].chart))
+            continue;
+          for (const auto& d : matched[t]->targets)
+            entered = entered || model::iequals(d, steps_[e].step);
+        }
+        if (!entered) continue;
+        for (auto s : entries)
+          if (!transient.count(s) && !out.count(s) && sp_.empty(step_set(steps_[s]))) {
+            out.insert(s);
+            changed = true;
+          }
       }
     }
     return out;
@@ -949,6 +1034,9 @@ class StandardCheckRunner {
   const semantics::TransitionSystem& ts_;
   const logic::CheckTask& task_;
   std::vector<StepRef> steps_;
+  /// enclosure_entries(), once computed.
+  std::vector<std::pair<std::size_t, std::vector<std::size_t>>> enclosure_entries_;
+  bool enclosure_entries_done_ = false;
   bool bottoms_tried_ = false;
   std::optional<std::vector<Set>> bottoms_;  ///< bottom_components(), once tried
 };

@@ -82,6 +82,31 @@ void Validator::check_hierarchy() {
   };
   for (std::size_t c = 0; c < n; ++c)
     if (color[c] == 0) dfs(dfs, c);
+  if (grafcet()) check_activation_links();
+}
+
+// IEC 60848: an enclosed partial grafcet enters at its activation-linked steps (`*`) when its
+// enclosing step is activated. One without any is read with its initial steps as the entry
+// (docs/semantics.md 2.12), which files exported without the mark rely on: said, not silent.
+void Validator::check_activation_links() {
+  for (const auto& chart : pou_->charts)
+    for (const auto& s : chart.steps) {
+      if (s.kind != StepKind::Enclosing) continue;
+      for (const auto& name : s.enclosed) {
+        const Chart* enclosed = find_chart(name);
+        if (!enclosed) continue;
+        const auto has = [&](bool Step::*mark) {
+          return std::any_of(enclosed->steps.begin(), enclosed->steps.end(),
+                             [&](const Step& x) { return x.*mark; });
+        };
+        if (has(&Step::activation_link)) continue;
+        warning(s.where,
+                "partial grafcet " + quoted(name) + " enclosed by step " + quoted(s.name) +
+                    " has no activation-linked step (*): " +
+                    (has(&Step::initial) ? "its initial steps are activated with " + quoted(s.name)
+                                         : "no step of it is activated with " + quoted(s.name)));
+      }
+    }
 }
 
 int Validator::chart_index(std::string_view name) const {

@@ -54,6 +54,8 @@ void GrafcetSystem::build_charts(const model::Project& project) {
       GChart gc;
       gc.name = chart.name;
       gc.pou = pou.name;
+      gc.macro_entry = chart.macro_entry;
+      gc.macro_exit = chart.macro_exit;
       const int cid = static_cast<int>(charts_.size());
       for (const auto& st : chart.steps) {
         poll_build_deadline();
@@ -62,6 +64,9 @@ void GrafcetSystem::build_charts(const model::Project& project) {
         gs.chart = cid;
         gs.kind = st.kind;
         gs.initial = st.initial;
+        gs.linked = st.activation_link;
+        gc.has_initial = gc.has_initial || st.initial;
+        gc.has_linked = gc.has_linked || st.activation_link;
         auto& entry = step_index_[model::to_upper(pou.name) + "." + model::to_upper(st.name)];
         entry.step = static_cast<int>(steps_.size());
         ++entry.count;
@@ -106,8 +111,9 @@ void GrafcetSystem::build_enclosures_and_expansions(const model::Project& projec
       }
 }
 
-// Entry and exit steps of expansions: "E<macro>"/"S<macro>" by name (IEC 60848's naming),
-// else the initial-marked step / the steps without outgoing transition.
+// Entry and exit steps of expansions: the steps the file marks (`entry`/`exit`, AGRAFE's), else
+// "E<macro>"/"S<macro>" by name (IEC 60848's naming), else the initial-marked step / the first
+// and last steps.
 void GrafcetSystem::build_expansion_entries_and_exits() {
   for (auto& gs : steps_) {
     if (gs.kind != model::StepKind::MacroStep) continue;
@@ -123,6 +129,10 @@ void GrafcetSystem::build_expansion_entries_and_exits() {
       if (model::iequals(steps_[s].name, "S" + number) ||
           model::iequals(steps_[s].name, "S" + gs.name))
         gs.exit = s;
+    }
+    for (int s : ex.steps) {
+      if (!ex.macro_entry.empty() && steps_[s].name == ex.macro_entry) gs.entry = s;
+      if (!ex.macro_exit.empty() && steps_[s].name == ex.macro_exit) gs.exit = s;
     }
     if (gs.entry < 0)
       for (int s : ex.steps)
@@ -449,7 +459,7 @@ void GrafcetSystem::build_observables(const model::Project& project) {
 }
 
 // The initial situation before stabilisation: initial steps of the top-level partial
-// grafcets, closed under enclosure and macro-step entry.
+// grafcets, closed under enclosure (initial steps, else linked ones, 2.2) and macro-step entry.
 void GrafcetSystem::build_initial_situation(const model::Project& project) {
   initial_template_.assign(layout_.words(), 0);
   for (std::size_t c = 0; c < charts_.size(); ++c)

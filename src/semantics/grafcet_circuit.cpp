@@ -101,24 +101,26 @@ class CircuitBuilder {
     return r;
   }
   void set_bit(State& st, int f, AigLit v) { st[static_cast<std::size_t>(f)] = {v}; }
-  void init_chart(State& st, int chart) {
-    for (int id : s_.charts_[static_cast<std::size_t>(chart)].steps) {
-      const auto& gs = s_.steps_[static_cast<std::size_t>(id)];
-      if (!gs.initial) continue;
-      if (gs.field >= 0) {
-        set_bit(st, gs.field, Aig::kTrue);
-        for (int c : gs.enclosed) init_chart(st, c);
-      } else {
-        set_bit(st, s_.steps_[static_cast<std::size_t>(gs.entry)].field, Aig::kTrue);
-      }
-    }
+  int set_active(State& st, int step) {
+    const auto& gs = s_.steps_[static_cast<std::size_t>(step)];
+    const int id = gs.field >= 0 ? step : gs.entry;
+    set_bit(st, s_.steps_[static_cast<std::size_t>(id)].field, Aig::kTrue);
+    return id;
   }
-  void clear_chart(State& st, int chart) {
+  /// GrafcetSystem::activate_enclosed: the linked steps (else initial ones) of the enclosed
+  /// grafcets, recursively.
+  void activate_enclosed(State& st, int enclosing_step) {
+    for (int c : s_.steps_[static_cast<std::size_t>(enclosing_step)].enclosed)
+      for (int id : s_.charts_[static_cast<std::size_t>(c)].steps)
+        if (s_.enters_at(id, false)) activate_enclosed(st, set_active(st, id));
+  }
+  void clear_chart(State& st, int chart, bool enclosed = true) {
     for (int id : s_.charts_[static_cast<std::size_t>(chart)].steps) {
       const auto& gs = s_.steps_[static_cast<std::size_t>(id)];
       if (gs.field >= 0) set_bit(st, gs.field, Aig::kFalse);
-      if (gs.expansion >= 0) clear_chart(st, gs.expansion);
-      for (int c : gs.enclosed) clear_chart(st, c);
+      if (gs.expansion >= 0) clear_chart(st, gs.expansion, enclosed);
+      if (enclosed)
+        for (int c : gs.enclosed) clear_chart(st, c);
     }
   }
 
@@ -398,22 +400,22 @@ State CircuitBuilder::evolve(const State& cur, const State& prev, AigLit& error,
       if (static_cast<std::size_t>(fo.chart) != c) continue;
       State applied = base;
       if (fo.kind != model::ForcingKind::Current) {
-        clear_chart(applied, static_cast<int>(c));
-        if (fo.kind == model::ForcingKind::Initial) init_chart(applied, static_cast<int>(c));
-        for (int st : fo.situation) {
-          set_bit(applied, s_.steps_[static_cast<std::size_t>(st)].field, Aig::kTrue);
-          for (int e : s_.steps_[static_cast<std::size_t>(st)].enclosed) init_chart(applied, e);
-        }
+        clear_chart(applied, static_cast<int>(c), false);
+        if (fo.kind == model::ForcingKind::Initial)
+          for (int st : s_.charts_[c].steps)
+            if (s_.steps_[static_cast<std::size_t>(st)].initial) set_active(applied, st);
+        for (int st : fo.situation) set_active(applied, st);
       }
       next = mux(order_active[f], applied, next);
     }
   }
-  // Enclosing steps: activation activates the enclosed grafcets' initial steps; an inactive
-  // enclosing step clears the enclosed grafcets that still have an active step (to a fixpoint).
+  // Enclosing steps: activation activates the enclosed grafcets' linked steps (initial ones for
+  // a grafcet without any); an inactive enclosing step clears the enclosed grafcets that still
+  // have an active step (to a fixpoint).
   for (int e : s_.enclosing_) {
     const AigLit activated = aig_.make_and(aig_.make_not(active(cur, e)), active(next, e));
     State with = next;
-    for (int c : s_.steps_[static_cast<std::size_t>(e)].enclosed) init_chart(with, c);
+    activate_enclosed(with, e);
     next = mux(activated, with, next);
   }
   std::size_t passes = 1;

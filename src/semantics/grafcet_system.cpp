@@ -448,25 +448,46 @@ InputCube GrafcetSystem::cube_of(const Partial& p) const {
   return cube;
 }
 
+bool GrafcetSystem::enters_at(int step, bool at_start) const {
+  const auto& gs = steps_[step];
+  const auto& gc = charts_[gs.chart];
+  // At start a grafcet takes its initial steps; when its enclosing step is activated, its
+  // activation-linked ones. Each falls back on the other mark when the chart has none of its
+  // own (a file marking the entry of an enclosed grafcet initial; an enclosed grafcet with
+  // only linked steps under an initial enclosing step). A top-level grafcet has no enclosing
+  // step: only its initial steps.
+  if (at_start) return gc.has_initial || gc.top_level ? gs.initial : gs.linked;
+  return gc.has_linked ? gs.linked : gs.initial;
+}
+
+int GrafcetSystem::set_active(std::vector<StateWord>& s, int step) const {
+  const auto& gs = steps_[step];
+  const int id = gs.field >= 0 ? step : gs.entry;
+  layout_.set(s, static_cast<std::uint32_t>(steps_[id].field), 1);
+  return id;
+}
+
 void GrafcetSystem::init_chart(std::vector<StateWord>& s, int chart) const {
   for (int id : charts_[chart].steps) {
-    const auto& gs = steps_[id];
-    if (!gs.initial) continue;
-    if (gs.field >= 0) {
-      layout_.set(s, static_cast<std::uint32_t>(gs.field), 1);
-      for (int c : gs.enclosed) init_chart(s, c);
-    } else {
-      layout_.set(s, static_cast<std::uint32_t>(steps_[gs.entry].field), 1);
-    }
+    if (!enters_at(id, true)) continue;
+    // The enclosing steps of the initial situation are activated at start (2.2).
+    for (int c : steps_[set_active(s, id)].enclosed) init_chart(s, c);
   }
 }
 
-void GrafcetSystem::clear_chart(std::vector<StateWord>& s, int chart) const {
+void GrafcetSystem::activate_enclosed(std::vector<StateWord>& s, int enclosing_step) const {
+  for (int c : steps_[enclosing_step].enclosed)
+    for (int id : charts_[c].steps)
+      if (enters_at(id, false)) activate_enclosed(s, set_active(s, id));
+}
+
+void GrafcetSystem::clear_chart(std::vector<StateWord>& s, int chart, bool enclosed) const {
   for (int id : charts_[chart].steps) {
     const auto& gs = steps_[id];
     if (gs.field >= 0) layout_.set(s, static_cast<std::uint32_t>(gs.field), 0);
-    if (gs.expansion >= 0) clear_chart(s, gs.expansion);
-    for (int c : gs.enclosed) clear_chart(s, c);
+    if (gs.expansion >= 0) clear_chart(s, gs.expansion, enclosed);
+    if (enclosed)
+      for (int c : gs.enclosed) clear_chart(s, c);
   }
 }
 
@@ -561,22 +582,23 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
       for (int f : trans_[t].need) layout_.set(next, static_cast<std::uint32_t>(f), 0);
     for (auto t : cleared)
       for (int f : trans_[t].act) layout_.set(next, static_cast<std::uint32_t>(f), 1);
+    // A forcing order sets the forced grafcet's own steps; its enclosing steps then follow the
+    // rules below like any other (activated: their enclosed grafcets enter, 2.12).
     for (std::size_t c = 0; c < charts_.size(); ++c) {
       if (forced[c] < 0) continue;
       const auto& fo = forces_[static_cast<std::size_t>(forced[c])];
       if (fo.kind == model::ForcingKind::Current) continue;
-      clear_chart(next, static_cast<int>(c));
-      if (fo.kind == model::ForcingKind::Initial) init_chart(next, static_cast<int>(c));
-      for (int s : fo.situation) {
-        layout_.set(next, static_cast<std::uint32_t>(steps_[s].field), 1);
-        for (int e : steps_[s].enclosed) init_chart(next, e);
-      }
+      clear_chart(next, static_cast<int>(c), false);
+      if (fo.kind == model::ForcingKind::Initial)
+        for (int s : charts_[c].steps)
+          if (steps_[s].initial) set_active(next, s);
+      for (int s : fo.situation) set_active(next, s);
     }
-    // Enclosing steps: activation activates the enclosed partial grafcets' initial steps,
-    // deactivation deactivates every step they enclose.
+    // Enclosing steps: an activated one activates the enclosed partial grafcets' linked steps
+    // (initial steps for a grafcet without any), an inactive one deactivates every step they
+    // enclose.
     for (int e : enclosing_)
-      if (!active(cur, e) && active(next, e))
-        for (int c : steps_[e].enclosed) init_chart(next, c);
+      if (!active(cur, e) && active(next, e)) activate_enclosed(next, e);
     for (bool changed = true; changed;) {
       changed = false;
       for (int e : enclosing_) {
@@ -646,22 +668,26 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
     std::vector<StateWord> key = prev;
     key.insert(key.end(), cur.begin(), cur.end());
     const auto [it, fresh] = seen.emplace(std::move(key), trajectory.size());
-    if (!fresh || k + 1 >= options_.max_transient_steps) {
+    // A bound of the semantics, not a finding: the evolutions have not repeated yet, so they
+    // may still stabilise (exactly max_transient_steps evolutions that do stabilise pass).
+    if (fresh && k >= options_.max_transient_steps)
+      throw LimitReached(Limit::Enumeration,
+                         "no stable situation after " +
+                             std::to_string(options_.max_transient_steps) +
+                             " transient evolutions (the bound max_transient_steps) and no "
+                             "repeated situation: the evolutions may still stabilise, so this "
+                             "is not reported as an instability (the bdd, ic3 and bmc engines "
+                             "have no such bound)");
+    if (!fresh) {
+      // Evolutions are deterministic under fixed inputs: a repeated (previous, current) pair
+      // repeats forever.
       r.anomaly.kind = Anomaly::Kind::Instability;
       r.anomaly.condition.cubes = {cube_of(v)};
-      r.anomaly.cycle.assign(
-          trajectory.begin() +
-              static_cast<std::ptrdiff_t>(fresh ? trajectory.size() -
-                                                      std::min<std::size_t>(trajectory.size(), 16)
-                                                : it->second),
-          trajectory.end());
-      r.anomaly.message = fresh ? "no stable situation after " +
-                                      std::to_string(options_.max_transient_steps) +
-                                      " transient evolutions"
-                                : "instability: the transient evolutions cycle through " +
-                                      std::to_string(r.anomaly.cycle.size()) +
-                                      " situations and never reach a "
-                                      "stable one";
+      r.anomaly.cycle.assign(trajectory.begin() + static_cast<std::ptrdiff_t>(it->second),
+                             trajectory.end());
+      r.anomaly.message = "instability: the transient evolutions cycle through " +
+                          std::to_string(r.anomaly.cycle.size()) +
+                          " situations and never reach a stable one";
       return Status::Anomaly;
     }
     trajectory.push_back(cur);

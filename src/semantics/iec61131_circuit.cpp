@@ -519,7 +519,7 @@ void SymbolicMachine::exec_stmt(const Stmt& s, AigLit guard) {
 // values of the paths that leave (the condition fails, EXIT, RETURN, UNTIL holds) are collected
 // in `result`, merged back under `guard` at the end. Range errors inside are raised only on the
 // paths still in the loop (outer_). Past kMaxLoopIterations the paths still going raise a
-// range error, as the explicit machine does.
+// range error (the explicit machine answers unknown for a loop that does not repeat).
 void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
   const auto saved = nxt_;
   const AigLit saved_outer = outer_, saved_left = left_loop_, saved_exit = exit_,
@@ -544,6 +544,10 @@ void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
     if (going == Aig::kFalse) break;
     outer_ = aig_.make_and(base, going);
     if (n == kMaxLoopIterations) {
+      // The paths still going raise a range error. The explicit machine tells a loop that never
+      // ends (a range error) from one that is only long (a limit, unknown); the unrolled circuit
+      // cannot (`going` is rarely constant-false on symbolic values even when unsatisfiable, so
+      // refusing such loops would refuse bounded ones too): docs/semantics.md 1.9.1.
       raise(going, Aig::kTrue);
       break;
     }

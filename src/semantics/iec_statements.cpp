@@ -2,7 +2,10 @@
 // (phase 2 of a cycle).
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
+#include "model/errors.hpp"
 #include "semantics/detail/iec_program.hpp"
 
 namespace sfcv::semantics::iec {
@@ -92,10 +95,28 @@ Flow Machine::exec_block(Block b) {
 
 Flow Machine::exec_loop(const Stmt& s) {
   if (const auto f = exec_block(s.init); f != Flow::Normal) return f;
+  // Within a cycle the inputs are fixed, so an iteration depends only on the variables: when
+  // they repeat at the start of an iteration the loop never ends (a range error, as a PLC's
+  // watchdog). Checked against snapshots taken at iterations 64, 128, 256, 512 (Brent), so
+  // short loops pay nothing. A loop that reaches the bound without repeating might still end:
+  // the bound is a limit of sfcv, unknown, not a finding.
+  std::vector<std::int64_t> mark;
+  std::int64_t mark_at = 64;
   for (std::int64_t n = 0;; ++n) {
     if (!s.test_after && !eval(s.expr)) return Flow::Normal;
+    if (n >= 64) {
+      if (n == mark_at) {
+        mark = nxt_;
+        mark_at *= 2;
+      } else if (nxt_ == mark) {
+        throw RangeAbort{"loop never ends (its variables repeat)", &s.where};
+      }
+    }
     if (n == kMaxLoopIterations)
-      throw RangeAbort{"loop runs more iterations than the limit (1000)", &s.where};
+      throw LimitReached(Limit::Enumeration,
+                         "a loop at " + s.where + " ran " + std::to_string(kMaxLoopIterations) +
+                             " iterations (the bound kMaxLoopIterations) without ending or "
+                             "repeating its variables: it may still end, the verdict is unknown");
     const auto f = exec_block(s.body);
     if (f == Flow::Return) return f;
     if (f == Flow::Exit) return Flow::Normal;

@@ -144,3 +144,126 @@ TEST(RsgCorpus, TimeLimitEndsTheExplosiveQualityControlPlant) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 53's minimal case (docs/semantics.md 2.12): G0 has no initial step, 10 is linked.
+const char* kLinked = R"(project linked;
+input a, b, c;
+grafcet Main {
+  step 1 initial;
+  step 2 encloses G0;
+  transition 1: 1 -> 2 when a;
+  transition 2: 2 -> 1 when b;
+}
+grafcet G0 {
+  step 10 linked;
+  step 11;
+  transition 3: 10 -> 11 when c;
+  transition 4: 11 -> 10 when !c;
+}
+)";
+
+// Every engine holds the linked step to the rule: AG (X2 -> X10 | X11) and EF X10 hold (before
+// issue 53 both were violated). The SAT engines decide what they can and never say violated:
+// kind and ic3 prove the invariant; EF p on a Grafcet with several initial situations (6 here,
+// one per stored input valuation) and BMC's AG are unknown (docs/semantics.md 3.7).
+TEST(RsgCli, ActivationLinksOnEveryEngine) {
+  const auto path = write_temp(kLinked, ".g7");
+  for (const std::string engine : {"explicit", "bdd", "auto", "kind", "ic3", "bmc"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv("check " + path + " --engine " + engine +
+                            " --ctl 'AG (X2 -> X10 | X11)' --ctl 'EF X10' --ctl 'EF (X2 & X11)'");
+    EXPECT_EQ(r.out.find("violated"), std::string::npos) << r.out;
+    const bool sat = engine == "kind" || engine == "ic3" || engine == "bmc";
+    EXPECT_EQ(r.exit_code, sat ? 3 : 0) << r.out << r.err;
+    if (engine == "kind" || engine == "ic3") {
+      EXPECT_NE(r.out.find("AG (X2 -> X10 | X11)  holds"), std::string::npos) << r.out;
+    }
+  }
+  // With a and b both true, 1 --a--> 2 --b--> 1 never stabilises: instabilities, exit 1.
+  const auto rsg = run_sfcv("rsg --list " + path);
+  EXPECT_EQ(rsg.exit_code, 1) << rsg.err;
+  EXPECT_NE(rsg.out.find("{2,10}"), std::string::npos) << rsg.out;
+  EXPECT_NE(rsg.out.find("{2,11}"), std::string::npos) << rsg.out;
+  const auto lint = run_sfcv("lint " + path);
+  EXPECT_EQ(lint.out.find("no activation-linked step"), std::string::npos) << lint.out;
+}
+
+// A chain needing more transient evolutions than max_transient_steps (10000) is unknown, exit 3,
+// with the bound named; not an instability (docs/semantics.md 2.11).
+std::string chain_g7(int n) {
+  std::string text = "project chain;\ninput a;\ngrafcet G {\n  step 0 initial;\n";
+  for (int i = 1; i <= n; ++i) text += "  step " + std::to_string(i) + ";\n";
+  text += "  transition 0 -> 1 when a;\n";
+  for (int i = 1; i < n; ++i)
+    text += "  transition " + std::to_string(i) + " -> " + std::to_string(i + 1) + ";\n";
+  text += "  transition " + std::to_string(n) + " -> 0 when !a;\n}\n";
+  return text;
+}
+
+TEST(RsgCli, TransientBoundIsUnknown) {
+  const auto over = write_temp(chain_g7(10001), ".g7");
+  const auto r = run_sfcv("check " + over + " --engine explicit --checks instability");
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_NE((r.out + r.err).find("no stable situation after 10000 transient evolutions"),
+            std::string::npos)
+      << r.out << r.err;
+  EXPECT_NE((r.out + r.err).find("max_transient_steps"), std::string::npos) << r.out << r.err;
+  EXPECT_EQ(r.out.find("violated"), std::string::npos) << r.out;
+  // Exactly 10000 evolutions: stable, the instability check holds.
+  const auto exact = write_temp(chain_g7(10000), ".g7");
+  const auto e = run_sfcv("check " + exact + " --engine explicit --checks instability");
+  EXPECT_EQ(e.exit_code, 0) << e.out << e.err;
+}
+
+}  // namespace
+
+namespace {
+
+// A linked step is crossed when its enclosing step is (docs/semantics.md 2.5, 2.12 a): at the
+// start (AGRAFE's sitReachability4: 11 -> 12 -> 13 at once, 12 encloses G10 = {101*}) and after
+// an event (2 is crossed when a rises, 10* with it). `reachable` holds on both engines; before,
+// 101 and 10 were "never active".
+TEST(RsgCli, ReachableCountsStepsEnteredWithTheirEnclosingStep) {
+  const auto at_start = write_temp(R"(project start;
+grafcet G1 {
+  step 11 initial;
+  step 12 encloses G10;
+  step 13;
+  transition 11: 11 -> 12;
+  transition 12: 12 -> 13;
+}
+grafcet G10 {
+  step 101 linked;
+}
+)",
+                                   ".g7");
+  const auto on_event = write_temp(R"(project event;
+input a;
+grafcet G1 {
+  step 1 initial;
+  step 2 encloses G0;
+  step 3;
+  transition 1: 1 -> 2 when a;
+  transition 2: 2 -> 3;
+  transition 3: 3 -> 1 when !a;
+}
+grafcet G0 {
+  step 10 linked;
+}
+)",
+                                   ".g7");
+  for (const std::string engine : {"explicit", "bdd"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv("check " + at_start + " --engine " + engine + " --checks reachable");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("3 only while the initial situation stabilises"), std::string::npos)
+        << r.out;
+    r = run_sfcv("check " + on_event + " --engine " + engine + " --checks reachable");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("2 only during transient evolutions"), std::string::npos) << r.out;
+  }
+}
+
+}  // namespace

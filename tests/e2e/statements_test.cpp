@@ -68,17 +68,27 @@ TEST(StatementsE2E, LoopsJumpsFunctionsAndBitStrings) {
   }
 }
 
-// A loop past the bound stops the run with a range error, in every engine; a FOR loop with
-// constant bounds past it is refused with its location.
+// A loop that never ends (its variables repeat) is a range error; a loop past the bound that
+// does not repeat is unknown (exit 3) for the explicit engine, with the bound named (issue 53:
+// before, both were range errors "loop runs more iterations than the limit (1000)"); a FOR
+// loop with constant bounds past it is refused with its location.
 TEST(StatementsE2E, LoopBoundIsARangeErrorNeverACut) {
   const auto file = write_temp(
       "PROGRAM Spin\n VAR_INPUT a : BOOL; END_VAR\n VAR_OUTPUT x : INT; END_VAR\n"
       " x := 0;\n WHILE a DO x := 1; END_WHILE;\nEND_PROGRAM\n",
       ".st");
   const auto spin = run_sfcv("check " + file + " --trace none");
-  EXPECT_NE(spin.out.find("range error: loop runs more iterations than the limit (1000) at"),
+  EXPECT_NE(spin.out.find("range error: loop never ends (its variables repeat) at"),
             std::string::npos)
       << spin.out << spin.err;
+  const auto long_loop = write_temp(
+      "PROGRAM Long\n VAR_INPUT a : BOOL; END_VAR\n VAR_OUTPUT i : INT; END_VAR\n"
+      " i := 0;\n WHILE a AND i < 1500 DO i := i + 1; END_WHILE;\nEND_PROGRAM\n",
+      ".st");
+  const auto lr = run_sfcv("check " + long_loop + " --engine explicit --trace none");
+  EXPECT_EQ(lr.exit_code, 3) << lr.out << lr.err;
+  EXPECT_NE((lr.out + lr.err).find("kMaxLoopIterations"), std::string::npos) << lr.out << lr.err;
+  EXPECT_EQ(lr.out.find("violated"), std::string::npos) << lr.out;
   const auto big = write_temp(
       "PROGRAM Big\n VAR_OUTPUT x : DINT; END_VAR\n VAR i : DINT; END_VAR\n"
       " FOR i := 1 TO 5000 DO x := i; END_FOR;\nEND_PROGRAM\n",

@@ -151,7 +151,7 @@ TEST(Validate, TwoInitialStepsInOneIecNetworkIsAnError) {
 TEST(Validate, GrafcetEnclosedChartMayStartEmpty) {
   PouBuilder b;
   b.chart("G0").enclosing_step("E", {"G1"}, true).step("F").trans({"E"}, {"F"}).trans({"F"}, {"E"});
-  b.chart("G1").step("10").step("11").trans({"10"}, {"11"}).trans({"11"}, {"10"});
+  b.chart("G1").step("10").linked().step("11").trans({"10"}, {"11"}).trans({"11"}, {"10"});
   EXPECT_CLEAN(validate(b.project(Dialect::Grafcet)));
 
   PouBuilder lonely;
@@ -160,6 +160,33 @@ TEST(Validate, GrafcetEnclosedChartMayStartEmpty) {
   lonely.chart("G1").step("10").trans({"10"}, {"10"});
   const auto ds = validate(lonely.project(Dialect::Grafcet));
   EXPECT_EQ(count_at(ds, Severity::Error, g1, "chart 'G1' has no initial step"), 1u) << dump(ds);
+}
+
+// An enclosed grafcet without an activation-linked step is entered at its initial steps
+// (docs/semantics.md 2.12): a warning at the enclosing step naming both; none with a link.
+TEST(Validate, GrafcetEnclosedChartWithoutLinkedStepIsAWarning) {
+  PouBuilder b;
+  b.chart("G0").initial("1");
+  const int enclosing = b.line();
+  b.enclosing_step("2", {"G1", "G2"}).trans({"1"}, {"2"}).trans({"2"}, {"1"});
+  b.chart("G1").initial("10").step("11").trans({"10"}, {"11"}).trans({"11"}, {"10"});
+  b.chart("G2").step("20").trans({"20"}, {"20"});
+  const auto ds = validate(b.project(Dialect::Grafcet));
+  EXPECT_EQ(count(ds, Severity::Error), 0u) << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, enclosing,
+                     "partial grafcet 'G1' enclosed by step '2' has no activation-linked step"),
+            1u)
+      << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, enclosing, "its initial steps are activated with '2'"),
+            1u)
+      << dump(ds);
+  EXPECT_EQ(count_at(ds, Severity::Warning, enclosing, "no step of it is activated with '2'"), 1u)
+      << dump(ds);
+
+  PouBuilder ok;
+  ok.chart("G0").initial("1").enclosing_step("2", {"G1"}).trans({"1"}, {"2"}).trans({"2"}, {"1"});
+  ok.chart("G1").initial("10").step("11").linked().trans({"10"}, {"11"}).trans({"11"}, {"10"});
+  EXPECT_CLEAN(validate(ok.project(Dialect::Grafcet)));
 }
 
 // ----------------------------------------------------------------------------- reachability

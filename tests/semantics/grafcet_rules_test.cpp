@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/errors.hpp"
 #include "support/grafcet_builder.hpp"
 
 namespace sfcv::test {
@@ -106,6 +107,43 @@ TEST(GrafcetRules, InstabilityIsReportedNotLooped) {
     EXPECT_EQ(a.condition.to_string(r.system->inputs()), "a");
     ASSERT_EQ(a.cycle.size(), 2u);
     EXPECT_NE(r.system->describe(a.cycle[0]), r.system->describe(a.cycle[1]));
+  }
+}
+
+// A bound of the semantics is not a finding (docs/semantics.md 2.11): the chain
+// 0 --a--> 1 --1--> 2 ... --1--> n --!a--> 0 needs exactly n evolutions when a rises (and at
+// start under a). With max_transient_steps = n it stabilises in {n}, no anomaly; with n - 1 the
+// run stops with a LimitReached that names the bound (unknown), never an instability.
+model::Project chain_of_evolutions(int n) {
+  GrafcetBuilder b;
+  b.input("a").chart("G").step("0", true);
+  for (int i = 1; i <= n; ++i) b.step(std::to_string(i));
+  b.transition({"0"}, {"1"}, v("a"));
+  for (int i = 1; i < n; ++i) b.transition({std::to_string(i)}, {std::to_string(i + 1)}, lit(true));
+  b.transition({std::to_string(n)}, {"0"}, not_(v("a")));
+  return b.project();
+}
+
+TEST(GrafcetRules, TransientBoundReachedIsALimitNotAnInstability) {
+  constexpr int n = 40;
+  semantics::GrafcetOptions exact;
+  exact.max_transient_steps = n;
+  const auto r = build_rsg(chain_of_evolutions(n), exact);
+  EXPECT_TRUE(r.graph.anomalies().empty());
+  EXPECT_EQ(r.graph.num_states(), 2u);  // ({0},0) ({40},1)
+  const auto lines = rsg_lines(r);
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "{0} --[a]--> {40}"), lines.end());
+
+  semantics::GrafcetOptions short_bound;
+  short_bound.max_transient_steps = n - 1;
+  try {
+    build_rsg(chain_of_evolutions(n), short_bound);
+    ADD_FAILURE() << "no limit reported";
+  } catch (const LimitReached& e) {
+    EXPECT_NE(std::string(e.what()).find("no stable situation after 39 transient evolutions"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("max_transient_steps"), std::string::npos) << e.what();
   }
 }
 

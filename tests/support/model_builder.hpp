@@ -61,6 +61,11 @@ class PouBuilder {
     return *this;
   }
   PouBuilder& initial(std::string name) { return step(std::move(name), true); }
+  /// Marks the last step with the activation link (IEC 60848's `*`).
+  PouBuilder& linked() {
+    current().steps.back().activation_link = true;
+    return *this;
+  }
   PouBuilder& macro_step(std::string name, std::string expansion) {
     step(std::move(name), false, model::StepKind::MacroStep);
     current().steps.back().expansion = std::move(expansion);

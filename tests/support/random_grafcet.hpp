@@ -12,7 +12,7 @@ namespace sfcv::test {
 /// A random grafcet from `seed`: two partial grafcets synchronised by step variables, guards
 /// from inputs, edges, delays, an integer input, step variables; continuous actions with
 /// conditions, stored actions (Boolean and a bounded counter), and optionally a forcing order,
-/// a macro-step or an enclosing step.
+/// a macro-step or an enclosing step (whose grafcet may enter at an activation-linked step).
 inline model::Project random_grafcet(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   auto pick = [&](std::uint32_t n) { return static_cast<std::uint32_t>(rng() % n); };
@@ -116,6 +116,16 @@ inline model::Project random_grafcet(std::uint64_t seed) {
     const auto when = pick(2) ? model::StoredWhen::Deactivation : model::StoredWhen::Activation;
     b.stored(step, when, "y", lit(pick(2) == 0));
     b.pou().stored_actions.back().chart = "G1";
+  }
+  // Sometimes G3 enters at an activation-linked step (docs/semantics.md 2.12): 32 linked, with
+  // or without 31 still marked initial; drawn last, for the same reason.
+  if (enclosing) {
+    if (const auto k = pick(3); k > 0)
+      for (auto& c : b.pou().charts)
+        if (c.name == "G3") {
+          c.steps[1].activation_link = true;
+          c.steps[0].initial = k == 1;
+        }
   }
   return b.project();
 }

@@ -186,6 +186,7 @@ class Validator {
   /// Hierarchy: a chart's step activates an action whose body is a chart, encloses a partial
   /// grafcet, or is a macro-step. A cycle would nest a chart in itself without end.
   void check_hierarchy();
+  void check_activation_links();
 
   int chart_index(std::string_view name) const;
   const Chart* find_chart(std::string_view name) const;

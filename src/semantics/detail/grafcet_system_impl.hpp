@@ -74,6 +74,7 @@ struct GStep {
   int chart = -1;
   model::StepKind kind = model::StepKind::Normal;
   bool initial = false;
+  bool linked = false;            ///< IEC 60848 activation link (`*`, model::Step::activation_link)
   int field = -1;                 ///< -1 for a macro-step (derived activity)
   int expansion = -1;             ///< macro-step: chart id
   std::vector<int> enclosed;      ///< enclosing step: chart ids
@@ -85,7 +86,12 @@ struct GChart {
   std::string name;
   std::string pou;
   std::vector<int> steps;
-  bool top_level = true;  ///< neither enclosed nor an expansion
+  bool top_level = true;     ///< neither enclosed nor an expansion
+  bool has_linked = false;   ///< some step carries the activation link
+  bool has_initial = false;  ///< some step is initial-marked
+  /// Macro-step expansion: the entry and exit steps the file marks (model::Chart::macro_entry,
+  /// macro_exit), empty when unmarked.
+  std::string macro_entry, macro_exit;
 };
 
 struct GTrans {
@@ -274,8 +280,20 @@ class GrafcetSystem final : public TransitionSystem {
     Anomaly anomaly;
   };
   Status evolve(StateView source, const Partial& v, bool initial, Result& r) const;
+  /// The initial situation of `chart` (docs/semantics.md 2.2): its initial steps; an enclosing
+  /// step among them has its enclosed grafcets take their initial steps (linked ones when they
+  /// have none), recursively.
   void init_chart(std::vector<StateWord>& s, int chart) const;
-  void clear_chart(std::vector<StateWord>& s, int chart) const;
+  /// Activation of an enclosing step (2.12): each enclosed grafcet takes its activation-linked
+  /// steps (its initial steps when it has none), recursively for enclosing steps among them.
+  void activate_enclosed(std::vector<StateWord>& s, int enclosing_step) const;
+  /// The steps an enclosed chart takes when its enclosing step is activated, or at start.
+  bool enters_at(int step, bool at_start) const;
+  /// Deactivates every step of `chart` and of its macro-step expansions; with `enclosed`, of
+  /// the grafcets its enclosing steps enclose too.
+  void clear_chart(std::vector<StateWord>& s, int chart, bool enclosed = true) const;
+  /// Sets step `step` active (a macro-step: its entry step); returns the step whose bit was set.
+  int set_active(std::vector<StateWord>& s, int step) const;
   /// `leaves` counts the evolutions computed for one state (the engine's width bound reads it
   /// through SuccessorSink::valuations); null for the initial situations.
   void explore(StateView source, Partial start, bool initial, SuccessorSink& sink,
