@@ -669,8 +669,9 @@ class BddModelChecker final : public ModelChecker {
         PropertyResult r;
         r.name = std::string(logic::to_string(c));
         r.check = r.name;
-        r.verdict = Verdict::Unknown;
-        r.message = why;
+        const auto na = logic::not_applicable(c, *task.system, task.priority_resolves_conflicts);
+        r.verdict = na ? Verdict::NotApplicable : Verdict::Unknown;
+        r.message = na ? *na : why;
         report.results.push_back(std::move(r));
       }
       return report;
