@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "chart_families.hpp"
 #include "report/text_encoding.hpp"
 #include "support/sfcv_test.hpp"
 
@@ -285,6 +286,19 @@ TEST_F(ReportWriters, NotCheckedCountsAsUnknown) {
         {"instability", std::string(e) == "bmc" ? "unknown" : "holds"}};
     run_every_writer({"IEC standard checks", iec_, "", 3, checks}, e);
   }
+}
+
+TEST_F(ReportWriters, AutoRaceThatCountsNoStates) {
+  // Past its explicit probe (2^31 states) --engine auto races: IC3 proves the bound, BMC or the
+  // BDD engine meets the violation, and the BDD engine is cancelled before it counts the states
+  // ("states": null; the HTML report and sfcv report used to stop there with exit 4).
+  const auto counter = write_temp(bench::counter_iec(30), ".st");
+  const std::string bound = std::to_string((std::uint64_t{1} << 30) - 2);
+  run_every_writer({"auto race", counter, "--checks none --ctl 'AG c <= " + bound +
+                                              "' --ctl 'AG c <= 5'",
+                    1,
+                    {{"AG c <= " + bound, "holds"}, {"AG c <= 5", "violated"}}},
+                   "auto");
 }
 
 TEST_F(ReportWriters, DefaultChecksExitZeroWhenEverythingThatAppliesHolds) {
