@@ -215,10 +215,17 @@ TEST_F(ReportWriters, HoldsOnEveryEngine) {
     std::map<std::string, std::string> iec = {{"EF s2", "holds"}};
     if (!ag.empty()) iec["AG !(s0 & s1)"] = "holds";
     run_every_writer({"IEC holds", iec_, "--checks none --ctl 'EF s2'" + ag, 0, iec}, e);
-    const std::string g_ag = e == "bmc" ? "" : " --ctl 'AG !(X1 & X2)'";
-    std::map<std::string, std::string> g = {{"EF X2", "holds"}};
-    if (!g_ag.empty()) g["AG !(X1 & X2)"] = "holds";
-    run_every_writer({"Grafcet holds", grafcet_, "--checks none --ctl 'EF X2'" + g_ag, 0, g}, e);
+    // The SAT engines do not decide EF on this Grafcet (one initial situation per input
+    // valuation, and EF needs a run from each: not checked, below), and BMC no AG: no "holds"
+    // on a Grafcet from BMC.
+    if (e == "bmc") continue;
+    const bool sat = e == "kind" || e == "ic3";
+    std::map<std::string, std::string> g = {{"AG !(X1 & X2)", "holds"}};
+    if (!sat) g["EF X2"] = "holds";
+    run_every_writer(
+        {"Grafcet holds", grafcet_,
+         "--checks none --ctl 'AG !(X1 & X2)'" + std::string(sat ? "" : " --ctl 'EF X2'"), 0, g},
+        e);
   }
 }
 
@@ -271,6 +278,14 @@ TEST_F(ReportWriters, NotCheckedCountsAsUnknown) {
                       3,
                       {{"AG EF s0", "not checked"}, {"EF s1", "holds"}}},
                      e);
+    // EF on a Grafcet with several initial situations (one per valuation of a, b).
+    run_every_writer({"Grafcet not checked",
+                      grafcet_,
+                      "--checks none --ctl 'EF X2' --ctl 'AG !(X1 & X2)'",
+                      3,
+                      {{"EF X2", "not checked"},
+                       {"AG !(X1 & X2)", std::string(e) == "bmc" ? "unknown" : "holds"}}},
+                     e);
     // Their standard checks of an IEC chart: some decided, the others not checked, conflicts
     // n/a (the standard priority).
     std::map<std::string, std::string> checks = {
@@ -294,8 +309,9 @@ TEST_F(ReportWriters, AutoRaceThatCountsNoStates) {
   // ("states": null; the HTML report and sfcv report used to stop there with exit 4).
   const auto counter = write_temp(bench::counter_iec(30), ".st");
   const std::string bound = std::to_string((std::uint64_t{1} << 30) - 2);
-  run_every_writer({"auto race", counter, "--checks none --ctl 'AG c <= " + bound +
-                                              "' --ctl 'AG c <= 5'",
+  run_every_writer({"auto race",
+                    counter,
+                    "--checks none --ctl 'AG c <= " + bound + "' --ctl 'AG c <= 5'",
                     1,
                     {{"AG c <= " + bound, "holds"}, {"AG c <= 5", "violated"}}},
                    "auto");
@@ -370,10 +386,10 @@ TEST(ReportWritersUtf8, InvalidUtf8StepNameThroughEveryWriter) {
   const auto file = write_temp(invalid_utf8_chart(), ".xml");
   const auto lint = run_sfcv("lint '" + file + "' --json");
   ASSERT_EQ(lint.exit_code, 0) << lint.out << lint.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(lint.out));
+  EXPECT_TRUE(nlohmann::json::accept(lint.out));
   const auto info = run_sfcv("info '" + file + "' --json");
   ASSERT_EQ(info.exit_code, 0) << info.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(info.out));
+  EXPECT_TRUE(nlohmann::json::accept(info.out));
   const std::string replaced =
       "S\xEF\xBF\xBD"
       "0";  // U+FFFD
@@ -404,7 +420,7 @@ TEST(ReportWritersUtf8, InvalidUtf8StepNameThroughEveryWriter) {
                     .find_child_by_attribute("testcase", "name", "AG !go"));
     EXPECT_NE(xml.find(replaced), std::string::npos) << xml;
     const auto log = slurp(sarif);
-    EXPECT_NO_THROW((void)nlohmann::json::parse(log));
+    EXPECT_TRUE(nlohmann::json::accept(log));
     EXPECT_TRUE(report::is_valid_utf8(log));
     const auto report =
         run_sfcv("report '" + json_file + "' --html '" + again + "' --model '" + file + "'");
@@ -416,11 +432,11 @@ TEST(ReportWritersUtf8, InvalidUtf8StepNameThroughEveryWriter) {
   }
   const auto rsg = run_sfcv("rsg '" + file + "' --json");
   ASSERT_EQ(rsg.exit_code, 0) << rsg.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(rsg.out));
+  EXPECT_TRUE(nlohmann::json::accept(rsg.out));
   EXPECT_NE(rsg.out.find(replaced), std::string::npos);
   const auto query = run_sfcv("query '" + file + "' --json 'Y'");
   ASSERT_EQ(query.exit_code, 0) << query.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(query.out));
+  EXPECT_TRUE(nlohmann::json::accept(query.out));
   const auto trace = run_sfcv("check '" + file +
                               "' --quiet --checks none --ctl 'AG !go' "
                               "--trace json");
