@@ -124,6 +124,22 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
   return checker;
 }
 
+/// An engine that decides none of the questions asked (each is "not checked", or has no meaning
+/// on the system) is bad usage, exit 2: a run that verifies nothing must neither pass in CI nor
+/// read as a limit. The engines' "not checked" lines say which engines can decide them.
+void refuse_if_nothing_decided(const logic::CheckReport& result, const std::string& engine) {
+  if (!logic::nothing_decided(result)) return;
+  std::vector<std::string> reasons;
+  for (const auto& r : result.results)
+    if (r.verdict == logic::Verdict::NotChecked &&
+        std::find(reasons.begin(), reasons.end(), r.message) == reasons.end())
+      reasons.push_back(r.message);
+  std::string text = "sfcv check --engine " + engine + " decides none of the " +
+                     std::to_string(result.results.size()) + " questions asked:";
+  for (const auto& why : reasons) text += "\n  " + why;
+  throw UsageError(text);
+}
+
 /// --engine auto: the portfolio (engine/portfolio), its notes on stderr unless --quiet.
 logic::CheckReport check_auto(const logic::CheckTask& task,
                               const engine::BddEngineOptions& bdd_options,
@@ -307,6 +323,7 @@ int run_check_body(const CheckOptions& o) {
   if (interrupted()) mark_interrupted(result);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
+  refuse_if_nothing_decided(result, o.engine);
   logic::describe_results(result, parsed.spec);
   if (o.coverage && !result.coverage && !global_options().quiet) {
     progress.clear();
@@ -451,9 +468,10 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       "Properties: steps, actions, variables, inputs, prev(p), rise(p), fall(p); "
       "AG (a -> f) reports whether it holds vacuously. Patterns (--pattern, 'sfcv "
       "patterns' lists them) and a cookbook: docs/properties.md.\n"
-      "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or "
-      "input, 3 unknown (a limit was reached before an answer was certain), 4 internal "
-      "error.");
+      "Exit codes: 0 every property and check holds (those n/a on the chart aside), 1 some "
+      "property is violated, 2 bad usage or input (also: the engine decides nothing that was "
+      "asked), 3 unknown (a limit was reached before an answer was certain, or some answer is "
+      "'not checked' by the engine), 4 internal error.");
   sub->callback([opts, &selected] { selected = [opts] { return run_check(*opts); }; });
 }
 

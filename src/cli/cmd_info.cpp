@@ -10,6 +10,7 @@
 #include "cli/load_model.hpp"
 #include "model/names.hpp"
 #include "model/networks.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::cli {
 
@@ -191,7 +192,8 @@ void add_info_command(CLI::App& app, CommandRunner& selected) {
   sub->callback([opts, &selected] {
     selected = [opts] {
       const auto project = load_model_or_throw(opts->model, parse_format(opts->format));
-      const auto info = project_info(opts->model, project);
+      auto info = project_info(opts->model, project);
+      report::make_valid_utf8(info);  // names are bytes; the JSON is UTF-8
       if (opts->json)
         std::cout << info.dump(2) << "\n";
       else

@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "report/text_encoding.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
 
@@ -76,6 +77,7 @@ int lint(const LintOptions& opts) {
   if (opts.json) {
     auto list = nlohmann::ordered_json::array();
     for (const auto& d : checked.diagnostics) list.push_back(to_json(d));
+    report::make_valid_utf8(list);  // names are bytes; the JSON is UTF-8
     std::cout << list.dump(2) << "\n";
   } else {
     for (const auto& d : checked.diagnostics) std::cout << d.str() << "\n";

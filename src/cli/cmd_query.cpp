@@ -24,6 +24,7 @@
 #include "logic/query_compile.hpp"
 #include "report/check_html.hpp"
 #include "report/query_render.hpp"
+#include "report/text_encoding.hpp"
 
 #ifndef SFCV_SHARE_DIR
 #define SFCV_SHARE_DIR ""
@@ -202,6 +203,7 @@ int run_query(const QueryOptions& o) {
     if (want_json) jout["queries"].push_back(pr.answer_json(items[i].text, r, verdict));
     if (!o.json) pr.answer_text(items[i].text, r, verdict, graph, std::cout);
   }
+  report::make_valid_utf8(jout);  // the model's path is bytes too
   if (o.json) std::cout << jout.dump(2) << "\n";
   if (!o.html.empty()) {
     write_output(html, report::query_html(jout, report::html_pictures(project, *ts)));

@@ -118,7 +118,10 @@ class StandardCheckRunner {
     auto timed = [&](const std::string& name, StandardCheck id, auto&& compute) {
       const auto t0 = Clock::now();
       PropertyResult r;
-      if (const auto failed = sp_.failure()) {
+      // A question without meaning on this system is not applicable, whatever the engine did.
+      if (const auto why = logic::not_applicable(id, ts_, task_.priority_resolves_conflicts)) {
+        r = not_applicable(name, id, *why);
+      } else if (const auto failed = sp_.failure()) {
         r = unknown(name, id, *failed);
       } else {
         try {
@@ -156,6 +159,16 @@ class StandardCheckRunner {
     r.name = name;
     r.check = std::string(logic::to_string(id));
     r.verdict = Verdict::Unknown;
+    r.message = why;
+    return r;
+  }
+
+  static PropertyResult not_applicable(const std::string& name, StandardCheck id,
+                                       const std::string& why) {
+    PropertyResult r;
+    r.name = name;
+    r.check = std::string(logic::to_string(id));
+    r.verdict = Verdict::NotApplicable;
     r.message = why;
     return r;
   }
@@ -470,12 +483,10 @@ class StandardCheckRunner {
 
   // ----------------------------------------------------------------------------- checks
 
+  // The checks below run on systems where they apply (logic::not_applicable, run()): the step
+  // checks have steps, the transition checks transitions.
+
   void reachable(PropertyResult& r) {
-    if (steps_.empty()) {
-      r.verdict = Verdict::NotChecked;
-      r.message = "not checked: the system has no steps";
-      return;
-    }
     std::vector<bool> seen(steps_.size(), false);
     for (std::size_t i = 0; i < steps_.size(); ++i) {
       poll();
@@ -507,11 +518,6 @@ class StandardCheckRunner {
 
   void dead_transitions(PropertyResult& r) {
     const auto& trs = ts_.transitions();
-    if (trs.empty()) {
-      r.verdict = Verdict::NotChecked;
-      r.message = "not checked: the system has no transitions";
-      return;
-    }
     std::size_t dead = 0;
     for (std::uint32_t t = 0; t < trs.size(); ++t) {
       poll();
@@ -539,9 +545,8 @@ class StandardCheckRunner {
     for (const auto& s : steps_)
       if (s.on_loop || !task_.project) loop.push_back(&s);
     if (loop.empty()) {
-      r.verdict = steps_.empty() ? Verdict::NotChecked : Verdict::Holds;
-      r.message =
-          steps_.empty() ? "not checked: the system has no steps" : "no step lies on a loop";
+      r.verdict = Verdict::Holds;
+      r.message = "no step lies on a loop";
       return;
     }
     if (!sp_.complete()) {
@@ -593,11 +598,6 @@ class StandardCheckRunner {
   }
 
   void global_deadlock(PropertyResult& r) {
-    if (ts_.transitions().empty()) {
-      r.verdict = Verdict::NotChecked;
-      r.message = "not checked: the system has no transitions";
-      return;
-    }
     const Set stuck = sp_.stuck();
     // On an incomplete graph only a situation without any successor is certainly dead. A
     // transition fires in every bottom component: none is dead.
@@ -626,11 +626,6 @@ class StandardCheckRunner {
   }
 
   void local_deadlock(PropertyResult& r) {
-    if (steps_.empty()) {
-      r.verdict = Verdict::NotChecked;
-      r.message = "not checked: the system has no steps";
-      return;
-    }
     if (!sp_.complete()) {
       r.verdict = Verdict::Unknown;
       r.message = limit_message();
@@ -725,15 +720,8 @@ class StandardCheckRunner {
   // target) from one situation whose conditions intersect outside the choice pseudo-inputs
   // (conditions_intersect; fired_a, fired_b: what each fires). Grafcet: it visits each
   // evolution once (fired_a: every transition it clears, fired_b empty).
+  // (Under the standard priority IEC 61131-3 conflicts are not applicable: run().)
   void conflicts(PropertyResult& r) {
-    if (ts_.kind() == semantics::SemanticsKind::Iec61131 && task_.priority_resolves_conflicts) {
-      r.verdict = Verdict::NotChecked;
-      r.message =
-          "not checked: alternative transitions are resolved by the standard priority "
-          "(explicit priority, then document order); run with --priority none to find "
-          "the conflicts";
-      return;
-    }
     std::set<std::string> seen;
     std::optional<State> first;
     const auto& trs = ts_.transitions();
@@ -921,9 +909,8 @@ class StandardCheckRunner {
                          sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
               note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
             }
-          if (list.size() > 0)
-            not_checked.push_back("set again while stored (" + list.front()->variable +
-                                  "): not checked for IEC 60848 stored actions");
+          // "Set again while stored" is about IEC 61131-3's stored flag of an action; an
+          // IEC 60848 stored action assigns a variable and has no flag: not applicable.
         }
       }
     if (first) {

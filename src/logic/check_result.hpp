@@ -18,7 +18,10 @@ enum class Verdict {
   Holds,
   Violated,
   Unknown,     ///< a limit stopped exploration before the answer was certain
-  NotChecked,  ///< a standard check this engine or system cannot evaluate (never "holds")
+  NotChecked,  ///< a question this engine cannot evaluate (never "holds"; counts as unknown)
+  /// A standard check that has no meaning on this system (no steps, no transitions, conflicts
+  /// resolved by the standard priority; logic::not_applicable): neither holds nor unknown.
+  NotApplicable,
 };
 std::string_view to_string(Verdict v);
 
@@ -73,7 +76,14 @@ struct CheckReport {
   std::optional<Coverage> coverage;  ///< when asked for (CheckTask::coverage) and computed
 };
 
-/// Worst verdict first: Violated > Unknown > Holds (NotChecked does not count).
+/// The exit code of a check (README): 1 when some answer is Violated, else 3 when some answer is
+/// Unknown or NotChecked (a question nobody decided is not a pass), else 0. NotApplicable
+/// answers do not count: 0 means every question that has a meaning was decided and holds.
 int exit_code(const CheckReport& r);
+
+/// Whether no answer of `r` was decided by its engine although some question was asked and had
+/// a meaning: every answer is NotChecked or NotApplicable, at least one NotChecked (the CLI
+/// calls it a usage error: the engine cannot answer what was asked).
+bool nothing_decided(const CheckReport& r);
 
 }  // namespace sfcv::logic

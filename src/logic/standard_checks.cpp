@@ -41,6 +41,31 @@ std::string_view to_string(StandardCheck c) {
   return "?";
 }
 
+std::optional<std::string> not_applicable(StandardCheck c, const semantics::TransitionSystem& ts,
+                                          bool priority_resolves_conflicts) {
+  bool has_steps = false;
+  for (const auto& o : ts.observables()) has_steps |= o.kind == semantics::ObservableKind::Step;
+  switch (c) {
+    case StandardCheck::Reachable:
+    case StandardCheck::Reentry:
+    case StandardCheck::LocalDeadlock:
+      if (!has_steps) return "the system has no steps";
+      break;
+    case StandardCheck::DeadTransitions:
+    case StandardCheck::GlobalDeadlock:
+      if (ts.transitions().empty()) return "the system has no transitions";
+      break;
+    case StandardCheck::Conflicts:
+      if (ts.kind() == semantics::SemanticsKind::Iec61131 && priority_resolves_conflicts)
+        return "alternative transitions are resolved by the standard priority (explicit "
+               "priority, then document order); run with --priority none to find the conflicts";
+      break;
+    default:
+      break;
+  }
+  return std::nullopt;
+}
+
 std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view text,
                                                                 std::string* error) {
   std::vector<StandardCheck> out;

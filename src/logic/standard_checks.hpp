@@ -43,6 +43,15 @@ std::string_view to_string(StandardCheck c);
 std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view text,
                                                                 std::string* error);
 
+/// Why standard check `c` has no meaning on `ts`, or nullopt when it has one (docs/semantics.md
+/// 3.6): the step checks (reachable, reentry, local-deadlock) on a system without steps, the
+/// transition checks (dead-transitions, global-deadlock) on one without transitions, and
+/// conflicts on IEC 61131-3 under the standard priority (`priority_resolves_conflicts`), which
+/// orders every set of alternatives. A fact of the system, the same for every engine; the
+/// answer is Verdict::NotApplicable, never "not checked" (which counts as unknown).
+std::optional<std::string> not_applicable(StandardCheck c, const semantics::TransitionSystem& ts,
+                                          bool priority_resolves_conflicts);
+
 /// A step of the chart and the observable that shows its activity.
 struct StepRef {
   std::uint32_t observable = 0;

@@ -1,6 +1,7 @@
 #include "report/check_html.hpp"
 
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "engine/explicit/reachable_situation_graph.hpp"
@@ -8,6 +9,7 @@
 #include "report/markup.hpp"
 #include "report/report_assets.hpp"
 #include "report/situation_graph_dot.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::report {
 
@@ -23,6 +25,17 @@ std::string seconds(const json& j) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f s", j.is_number() ? j.get<double>() : 0.0);
   return buf;
+}
+
+/// A count of the result ("states", "edges"): a number, a decimal string past 64 bits, or
+/// nothing when the engine did not count (null: SAT engines, --engine auto's race).
+std::optional<std::string> count_text(const json& j, const char* key) {
+  if (!j.contains(key)) return std::nullopt;
+  const auto& v = j[key];
+  if (v.is_number_unsigned()) return std::to_string(v.get<std::uint64_t>());
+  if (v.is_number_integer()) return std::to_string(v.get<std::int64_t>());
+  if (v.is_string()) return html_escape(v.get<std::string>());
+  return std::nullopt;
 }
 
 /// JSON inside <script>: "</" would end the element early.
@@ -53,9 +66,9 @@ std::string summary(const json& result) {
   for (std::size_t i = 0; i < props.size(); ++i) {
     const auto& p = props[i];
     const std::string verdict = str(p, "verdict");
-    std::string cls = verdict;
+    std::string cls = verdict;  // "not checked" -> not-checked, "n/a" -> n-a
     for (auto& c : cls)
-      if (c == ' ') c = '-';
+      if (c == ' ' || c == '/') c = '-';
     std::string what = str(p, "message");
     if (p["kind"] == "property" && str(p, "formula") != str(p, "name"))
       what = "<code>" + html_escape(str(p, "formula")) + "</code> " + html_escape(what);
@@ -240,10 +253,10 @@ std::string check_html(const HtmlReport& report) {
   const auto& r = report.result;
   const std::string model = str(r, "model");
   std::string meta = html_escape(str(r, "semantics")) + " semantics &middot; " +
-                     html_escape(str(r, "engine")) + " engine &middot; " +
-                     std::to_string(r.value("states", 0ULL)) + " states";
-  if (r.contains("edges") && r["edges"].is_number())
-    meta += " &middot; " + std::to_string(r["edges"].get<std::uint64_t>()) + " edges";
+                     html_escape(str(r, "engine")) + " engine";
+  const auto states = count_text(r, "states");
+  meta += " &middot; " + (states ? *states + " states" : std::string("states not counted"));
+  if (const auto edges = count_text(r, "edges")) meta += " &middot; " + *edges + " edges";
   meta += " &middot; " + seconds(r["seconds"]);
   if (r.contains("complete") && !r["complete"].get<bool>())
     meta += str(r, "limit") == "interrupted"
@@ -258,6 +271,7 @@ std::string check_html(const HtmlReport& report) {
   json data;
   data["result"] = r;
   data["nodes"] = nodes;
+  make_valid_utf8(data);  // a result read back by `sfcv report`, names of the chart: bytes
 
   std::string out = page_head("sfcv report: " + model);
   out += "<h1>sfcv check: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
@@ -283,7 +297,7 @@ std::string check_html(const HtmlReport& report) {
   out += situation_graph_section(report);
   out += "<script type=\"application/json\" id=\"sfcv-data\">" + script_json(data) + "</script>\n";
   out += "<script>\n" + std::string(report_script()) + "</script>\n</body>\n</html>\n";
-  return out;
+  return valid_utf8(out);  // names are bytes; the page says charset=utf-8
 }
 
 std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures) {
@@ -313,7 +327,7 @@ std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures
   out +=
       "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
       "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
-  return out + "</body>\n</html>\n";
+  return valid_utf8(out + "</body>\n</html>\n");
 }
 
 }  // namespace sfcv::report

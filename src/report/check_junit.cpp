@@ -5,6 +5,7 @@
 #include <pugixml.hpp>
 #include <sstream>
 
+#include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
 namespace sfcv::report {
@@ -39,8 +40,10 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   std::size_t failures = 0, errors = 0, skipped = 0;
   for (const auto& r : report.results) {
     failures += r.verdict == logic::Verdict::Violated;
-    errors += r.verdict == logic::Verdict::Unknown;
-    skipped += r.verdict == logic::Verdict::NotChecked;
+    // Not checked counts as unknown (an error, as in the exit code); a question without
+    // meaning on the system is skipped.
+    errors += r.verdict == logic::Verdict::Unknown || r.verdict == logic::Verdict::NotChecked;
+    skipped += r.verdict == logic::Verdict::NotApplicable;
   }
   const std::string suite = options.model.empty()
                                 ? std::string("sfcv")
@@ -57,7 +60,7 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   suites.append_attribute("skipped") = static_cast<unsigned long long>(skipped);
   suites.append_attribute("time") = seconds(report.seconds).c_str();
   auto ts_node = suites.append_child("testsuite");
-  ts_node.append_attribute("name") = suite.c_str();
+  ts_node.append_attribute("name") = xml_text(suite).c_str();
   ts_node.append_attribute("tests") = static_cast<unsigned long long>(report.results.size());
   ts_node.append_attribute("failures") = static_cast<unsigned long long>(failures);
   ts_node.append_attribute("errors") = static_cast<unsigned long long>(errors);
@@ -67,20 +70,20 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   auto property = [&props](const char* name, const std::string& value) {
     auto p = props.append_child("property");
     p.append_attribute("name") = name;
-    p.append_attribute("value") = value.c_str();
+    p.append_attribute("value") = xml_text(value).c_str();
   };
   property("model", options.model);
   property("semantics", options.semantics);
   property("engine", report.engine);
-  property("states", report.states.str());
+  if (report.states_known) property("states", report.states.str());  // SAT engines count none
   property("complete", report.complete ? "true" : "false");
   if (!report.complete) property("limit", report.limit);
 
   for (const auto& r : report.results) {
     auto tc = ts_node.append_child("testcase");
     tc.append_attribute("classname") =
-        (suite + (r.check.empty() ? ".properties" : ".standard_checks")).c_str();
-    tc.append_attribute("name") = r.name.c_str();
+        xml_text(suite + (r.check.empty() ? ".properties" : ".standard_checks")).c_str();
+    tc.append_attribute("name") = xml_text(r.name).c_str();
     tc.append_attribute("time") = seconds(r.seconds).c_str();
     // A property from the command line (where.file "--ctl") or a standard check belongs to
     // the model file; a spec file property to its line there.
@@ -88,7 +91,7 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
         !r.where.file.empty() && r.where.file != "--ctl" && r.where.file != "--pattern";
     const std::string file = from_spec ? r.where.file : options.model;
     if (!file.empty()) {
-      tc.append_attribute("file") = file.c_str();
+      tc.append_attribute("file") = xml_text(file).c_str();
       if (from_spec && r.where.line > 0) tc.append_attribute("line") = r.where.line;
     }
     // A vacuous pass is still a pass; CI servers show system-out with the test case.
@@ -96,7 +99,9 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     const std::string out =
         r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
     if (!out.empty())
-      tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(out.c_str());
+      tc.append_child("system-out")
+          .append_child(pugi::node_pcdata)
+          .set_value(xml_text(out).c_str());
     const char* element = nullptr;
     switch (r.verdict) {
       case logic::Verdict::Holds:
@@ -105,9 +110,10 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
         element = "failure";
         break;
       case logic::Verdict::Unknown:
+      case logic::Verdict::NotChecked:
         element = "error";
         break;
-      case logic::Verdict::NotChecked:
+      case logic::Verdict::NotApplicable:
         element = "skipped";
         break;
     }
@@ -115,10 +121,10 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     auto e = tc.append_child(element);
     const std::string verdict(logic::to_string(r.verdict));
     e.append_attribute("message") =
-        (r.message.empty() ? verdict : verdict + ": " + r.message).c_str();
-    if (r.verdict != logic::Verdict::NotChecked) {
+        xml_text(r.message.empty() ? verdict : verdict + ": " + r.message).c_str();
+    if (r.verdict != logic::Verdict::NotApplicable) {
       e.append_attribute("type") = verdict.c_str();
-      e.append_child(pugi::node_pcdata).set_value(details(r, ts).c_str());
+      e.append_child(pugi::node_pcdata).set_value(xml_text(details(r, ts)).c_str());
     }
   }
   std::ostringstream out;

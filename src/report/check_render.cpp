@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
 namespace sfcv::report {
@@ -82,7 +83,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
       }
     }
   }
-  return out;
+  return valid_utf8(out);  // names are bytes; the report is UTF-8
 }
 
 nlohmann::json count_json(const logic::BigCount& count) {
@@ -137,6 +138,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["trace"] = r.trace ? trace_to_json(*r.trace, ts) : json(nullptr);
     j["properties"].push_back(std::move(p));
   }
+  make_valid_utf8(j);  // names are bytes; a JSON document is UTF-8 (dump() throws otherwise)
   return j;
 }
 

@@ -5,6 +5,7 @@
 
 #include "logic/standard_checks.hpp"
 #include "report/check_render.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::report {
 
@@ -80,12 +81,17 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
                                : std::string(d != descriptions.end() ? d->second : r.name);
     rule["defaultConfiguration"]["level"] = "error";
     rules.push_back(std::move(rule));
-    if (r.verdict != logic::Verdict::Violated && r.verdict != logic::Verdict::Unknown) continue;
+    if (r.verdict == logic::Verdict::Holds) continue;
 
     json base;
     base["ruleId"] = rule_id(r);
     base["ruleIndex"] = i;
-    base["level"] = r.verdict == logic::Verdict::Violated ? "error" : "warning";
+    // Not checked counts as unknown (a warning); a question without meaning on the system is
+    // SARIF's own "notApplicable" kind, which takes level "none".
+    base["level"] = r.verdict == logic::Verdict::Violated        ? "error"
+                    : r.verdict == logic::Verdict::NotApplicable ? "none"
+                                                                 : "warning";
+    if (r.verdict == logic::Verdict::NotApplicable) base["kind"] = "notApplicable";
     // Where the property was written (a spec file), else the model.
     const bool from_spec =
         !r.where.file.empty() && r.where.file != "--ctl" && r.where.file != "--pattern";
@@ -190,13 +196,15 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
   run["results"] = results;
   run["columnKind"] = "unicodeCodePoints";
   run["properties"] = {{"engine", report.engine},
-                       {"states", count_json(report.states)},
+                       // null: the engine does not count states (SAT engines, auto's race)
+                       {"states", report.states_known ? count_json(report.states) : json(nullptr)},
                        {"complete", report.complete},
                        {"semantics", options.semantics}};
   json log;
   log["$schema"] = "https://json.schemastore.org/sarif-2.1.0.json";
   log["version"] = "2.1.0";
   log["runs"] = json::array({run});
+  make_valid_utf8(log);  // names are bytes; SARIF is UTF-8 JSON
   return log;
 }
 

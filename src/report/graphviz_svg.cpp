@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "engine/external/external_tool.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::report {
 
@@ -18,7 +19,7 @@ SvgResult dot_to_svg(const std::string& dot, double timeout_seconds) {
   engine::TempDir dir;
   const auto in = std::filesystem::path(dir.path()) / "chart.dot";
   const auto out = std::filesystem::path(dir.path()) / "chart.svg";
-  std::ofstream(in) << dot;
+  std::ofstream(in) << valid_utf8(dot);  // graphviz reads UTF-8; names are bytes
   const auto run = engine::run_tool({*tool, "-Tsvg", "-o", out.string(), in.string()}, dir.path(),
                                     timeout_seconds);
   if (run.timed_out) {

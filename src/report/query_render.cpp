@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "report/text_encoding.hpp"
+
 namespace sfcv::report {
 
 namespace {
@@ -202,6 +204,7 @@ nlohmann::json QueryPrinter::answer_json(const std::string& query, const logic::
     jq["elements"] = listing_json(r.set);
   }
   if (verdict) jq["verdict"] = std::string(logic::to_string(*verdict));
+  make_valid_utf8(jq);  // names are bytes; the JSON is UTF-8
   return jq;
 }
 

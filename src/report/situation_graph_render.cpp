@@ -6,6 +6,7 @@
 
 #include "engine/bdd/condition_simplifier.hpp"
 #include "report/markup.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::report {
 
@@ -178,6 +179,7 @@ nlohmann::json situation_graph_json(const engine::ReachableSituationGraph& g,
                               {"inputs", engine::simplify(a.condition, inputs).to_string(inputs)},
                               {"cycle", cycle}});
   }
+  make_valid_utf8(j);  // names are bytes; the JSON is UTF-8
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/check_render.hpp"
+#include "report/text_encoding.hpp"
 
 namespace sfcv::report {
 
@@ -209,7 +210,9 @@ nlohmann::json trace_to_json(const logic::Trace& trace, const semantics::Transit
 }
 
 std::string trace_json(const logic::Trace& trace, const semantics::TransitionSystem& ts) {
-  return trace_to_json(trace, ts).dump(2) + "\n";
+  auto j = trace_to_json(trace, ts);
+  make_valid_utf8(j);
+  return j.dump(2) + "\n";
 }
 
 std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSystem& ts,

@@ -35,7 +35,9 @@ TEST(CheckCommand, DefaultRunsTheStandardChecks) {
         "initial-return", "conflicts", "stored-actions", "output-conflicts", "instability"})
     EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n"
                                                                              << r.out;
-  EXPECT_NE(r.out.find("not checked"), std::string::npos);
+  // Conflicts under the standard priority: n/a (was "not checked", which now counts as unknown).
+  EXPECT_NE(r.out.find("\nconflicts         n/a "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("not checked"), std::string::npos) << r.out;
 }
 
 TEST(CheckCommand, HoldsGivesExitZero) {

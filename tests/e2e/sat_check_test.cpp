@@ -60,17 +60,26 @@ END_PROGRAM
   EXPECT_EQ(run_sfcv("check " + kPlant + " --engine bmc --depth 20 --quiet --ctl 'AG !(V1 & V3)'")
                 .exit_code,
             3);
-  // CTL beyond invariants: unknown, not a guess.
-  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine ic3 --quiet --ctl 'AG EF s1'").exit_code, 3);
+  // CTL beyond invariants: not checked, not a guess; alone, nothing asked is decided: bad usage
+  // (exit 2, was 3), beside a decided property unknown (exit 3).
+  auto only = run_sfcv("check " + kPlant + " --engine ic3 --quiet --ctl 'AG EF s1'");
+  EXPECT_EQ(only.exit_code, 2) << only.out << only.err;
+  EXPECT_NE(only.err.find("use --engine explicit or bdd"), std::string::npos) << only.err;
+  EXPECT_EQ(run_sfcv("check " + kPlant + " --engine ic3 --quiet --ctl 'AG EF s1' --ctl 'EF V1'")
+                .exit_code,
+            3);
   // Grafcet: invariants over the stable situations are decided (the pistons never move at the
-  // same time; X22 is reached), its standard checks are shown as not checked, never as holding.
+  // same time; X22 is reached), its standard checks are shown as not checked, never as holding,
+  // and a not-checked check is never a pass (exit 3; issue 53: it exited 0).
   const std::string pistons = "'" + source_path("examples/pistons/pistons.g7") + "'";
   const auto g = run_sfcv("check " + pistons +
                           " --engine ic3 --quiet --ctl 'AG !((I1 | O1) & (I2 | O2))' "
                           "--checks reachable");
-  EXPECT_EQ(g.exit_code, 0) << g.out << g.err;
+  EXPECT_EQ(g.exit_code, 3) << g.out << g.err;
   EXPECT_NE(g.out.find("holds"), std::string::npos) << g.out;
-  EXPECT_NE(g.out.find("not checked by the ic3 engine on a Grafcet chart"), std::string::npos)
+  EXPECT_NE(g.out.find("not checked: the ic3 engine decides no standard check of an IEC 60848 "
+                       "grafcet; use --engine explicit, bdd or auto"),
+            std::string::npos)
       << g.out;
   for (const char* engine : {"bmc", "ic3"})
     EXPECT_EQ(

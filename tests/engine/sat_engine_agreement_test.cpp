@@ -141,7 +141,7 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
         ++tally.unsupported;
         continue;
       }
-      if (r.verdict == logic::Verdict::Unknown &&
+      if (r.verdict == logic::Verdict::NotChecked &&
           r.message.find("initial situations and EF p needs a run from each") !=
               std::string::npos) {
         // A Grafcet with several initial situations: EF is not a reachability question.
@@ -493,8 +493,10 @@ TEST(SatEngine, RefusesWhatItCannotDecide) {
   SatEngineOptions options;
   const auto r = make_sat_model_checker(options)->check(task);
   ASSERT_EQ(r.results.size(), 3u);
-  EXPECT_EQ(r.results[0].verdict, logic::Verdict::Unknown);  // fairness
-  EXPECT_EQ(r.results[1].verdict, logic::Verdict::Unknown);
+  // Not checked (the engine cannot decide them; was "unknown" for properties), which counts as
+  // unknown in the exit code.
+  EXPECT_EQ(r.results[0].verdict, logic::Verdict::NotChecked);  // fairness
+  EXPECT_EQ(r.results[1].verdict, logic::Verdict::NotChecked);
   EXPECT_EQ(r.results[2].verdict, logic::Verdict::NotChecked);
   EXPECT_EQ(logic::exit_code(r), 3);
 }

@@ -170,8 +170,9 @@ TEST(StandardChecks, ConflictsUnderNoPriority) {
   EXPECT_EQ(r.verdict, Verdict::Violated);
   ASSERT_EQ(r.findings.size(), 1u);
   EXPECT_NE(r.findings[0].find("{t0} and {t1}"), std::string::npos);
-  // With the standard priority the graph cannot show conflicts: said, never "holds".
-  EXPECT_EQ(run(ts, StandardCheck::Conflicts, nullptr, true).verdict, Verdict::NotChecked);
+  // With the standard priority the question has no meaning (the priority orders every set of
+  // alternatives): n/a, never "holds" (it was "not checked", which now counts as unknown).
+  EXPECT_EQ(run(ts, StandardCheck::Conflicts, nullptr, true).verdict, Verdict::NotApplicable);
   // Exclusive guards: no conflict.
   ToySystem ok(3, {"go", "x"}, {"A", "B", "C"});
   ok.set_initial({0});
@@ -410,6 +411,45 @@ TEST(StandardChecks, IncompleteGraphNeverHolds) {
   task.checks = *logic::parse_check_selection("all", nullptr);
   for (const auto& r : run_standard_checks(g, checker, task))
     EXPECT_NE(r.verdict, Verdict::Holds) << r.name << ": " << r.message;
+}
+
+TEST(StandardChecks, NotApplicableOnlyWhereTheQuestionHasNoMeaning) {
+  // A system without steps or transitions (a program without SFC): the step checks and the
+  // transition checks have no meaning; initial-return and instability still do.
+  ToySystem plain(2, {"go"});
+  plain.set_initial({0});
+  plain.add_arc(0, 1, ToySystem::lit(0, true));
+  plain.add_arc(0, 0, ToySystem::lit(0, false));
+  plain.add_arc(1, 0);
+  for (auto id : {StandardCheck::Reachable, StandardCheck::Reentry, StandardCheck::LocalDeadlock}) {
+    const auto r = run(plain, id);
+    EXPECT_EQ(r.verdict, Verdict::NotApplicable) << logic::to_string(id);
+    EXPECT_EQ(r.message, "the system has no steps");
+  }
+  for (auto id : {StandardCheck::DeadTransitions, StandardCheck::GlobalDeadlock}) {
+    const auto r = run(plain, id);
+    EXPECT_EQ(r.verdict, Verdict::NotApplicable) << logic::to_string(id);
+    EXPECT_EQ(r.message, "the system has no transitions");
+  }
+  EXPECT_EQ(run(plain, StandardCheck::InitialReturn).verdict, Verdict::Holds);
+  EXPECT_EQ(run(plain, StandardCheck::Instability).verdict, Verdict::Holds);
+  // Steps but no transitions: the step checks apply (a step that is never active is a finding).
+  ToySystem frozen(1, {}, {"A", "B"});
+  frozen.set_initial({0});
+  frozen.add_arc(0, 0);
+  frozen.set_true(0, 0);
+  EXPECT_EQ(run(frozen, StandardCheck::Reachable).verdict, Verdict::Violated);
+  EXPECT_EQ(run(frozen, StandardCheck::DeadTransitions).verdict, Verdict::NotApplicable);
+  // Conflicts: n/a under the standard priority of IEC 61131-3 only; Grafcet has no priority.
+  EXPECT_TRUE(logic::not_applicable(StandardCheck::Conflicts, frozen, true));
+  EXPECT_FALSE(logic::not_applicable(StandardCheck::Conflicts, frozen, false));
+  frozen.set_semantics(semantics::SemanticsKind::Grafcet);
+  EXPECT_FALSE(logic::not_applicable(StandardCheck::Conflicts, frozen, true));
+  // The answer is the system's, not the engine's: also when exploration failed at once.
+  for (auto c :
+       {StandardCheck::Reachable, StandardCheck::InitialReturn, StandardCheck::StoredActions,
+        StandardCheck::OutputConflicts, StandardCheck::Instability})
+    EXPECT_FALSE(logic::not_applicable(c, frozen, true)) << logic::to_string(c);
 }
 
 TEST(StandardChecks, SelectionByName) {

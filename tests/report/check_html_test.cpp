@@ -44,6 +44,37 @@ TEST(CheckHtml, SummaryChartAndPlayerData) {
   EXPECT_NE(html.find("document.getElementById(\"sfcv-data\")"), std::string::npos);  // the script
 }
 
+TEST(CheckHtml, StatesNotCountedOrPast64BitsAndTheNotApplicableVerdict) {
+  // The SAT engines and --engine auto's race count no states: "states": null (the report used
+  // to stop with "type must be number, but is null"); a symbolic count past 2^64 is a string.
+  HtmlReport r;
+  r.result = result();
+  r.result["engine"] = "ic3";
+  r.result["states"] = nullptr;
+  r.result["edges"] = nullptr;
+  r.result["properties"][1]["verdict"] = "n/a";
+  auto html = check_html(r);
+  EXPECT_NE(html.find("ic3 engine &middot; states not counted &middot;"), std::string::npos);
+  EXPECT_EQ(html.find(" edges"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"verdict n-a\">n/a</span>"), std::string::npos);
+  r.result["states"] = "36893488147419103232";
+  r.result["edges"] = 7;
+  html = check_html(r);
+  EXPECT_NE(html.find("36893488147419103232 states &middot; 7 edges"), std::string::npos);
+}
+
+TEST(CheckHtml, InvalidUtf8InNamesGivesAUtf8Page) {
+  HtmlReport r;
+  r.result = result();
+  r.result["properties"][0]["name"] = "S\xFF";
+  r.node_ids.steps["P.S\xE4"] = "p0c0s1";
+  const auto html = check_html(r);  // threw in the JSON dump of the player's data
+  EXPECT_NE(html.find("S\xEF\xBF\xBD</td>"), std::string::npos);
+  EXPECT_NE(html.find("\"P.S\xEF\xBF\xBD\":\"p0c0s1\""), std::string::npos);
+  EXPECT_EQ(html.find('\xFF'), std::string::npos);
+  EXPECT_EQ(html.find('\xE4'), std::string::npos);
+}
+
 TEST(CheckHtml, ShowsAPropertysDescriptionUnderItsName) {
   HtmlReport r;
   r.result = result();

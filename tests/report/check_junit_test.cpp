@@ -52,9 +52,14 @@ struct Fixture {
     logic::PropertyResult skipped;
     skipped.name = "conflicts";
     skipped.check = "conflicts";
-    skipped.verdict = logic::Verdict::NotChecked;
+    skipped.verdict = logic::Verdict::NotApplicable;
     skipped.message = "the priority resolves conflicts";
-    report.results = {holds, violated, unknown, skipped};
+    logic::PropertyResult not_checked;
+    not_checked.name = "reentry";
+    not_checked.check = "reentry";
+    not_checked.verdict = logic::Verdict::NotChecked;
+    not_checked.message = "not checked by the bmc engine";
+    report.results = {holds, violated, unknown, skipped, not_checked};
   }
 };
 
@@ -67,9 +72,10 @@ TEST(CheckJunit, OneTestCasePerResultWithItsVerdict) {
   pugi::xml_document doc;
   ASSERT_TRUE(doc.load_string(xml.c_str())) << xml;
   const auto suites = doc.child("testsuites");
-  EXPECT_EQ(suites.attribute("tests").as_int(), 4);
+  EXPECT_EQ(suites.attribute("tests").as_int(), 5);
   EXPECT_EQ(suites.attribute("failures").as_int(), 1);
-  EXPECT_EQ(suites.attribute("errors").as_int(), 1);  // unknown is never a pass
+  // Unknown and not checked are never a pass (exit code 3); n/a is skipped.
+  EXPECT_EQ(suites.attribute("errors").as_int(), 2);
   EXPECT_EQ(suites.attribute("skipped").as_int(), 1);
   const auto suite = suites.child("testsuite");
   EXPECT_STREQ(suite.attribute("name").value(), "plant.st");
@@ -109,6 +115,54 @@ TEST(CheckJunit, OneTestCasePerResultWithItsVerdict) {
   const auto conflicts = suite.find_child_by_attribute("testcase", "name", "conflicts");
   EXPECT_STREQ(conflicts.attribute("classname").value(), "plant.st.standard_checks");
   EXPECT_TRUE(conflicts.child("skipped"));
+  EXPECT_STREQ(conflicts.child("skipped").attribute("message").value(),
+               "n/a: the priority resolves conflicts");
+  const auto reentry = suite.find_child_by_attribute("testcase", "name", "reentry").child("error");
+  ASSERT_TRUE(reentry);
+  EXPECT_STREQ(reentry.attribute("type").value(), "not checked");
+}
+
+TEST(CheckJunit, StatesLeftOutWhenTheEngineDidNotCountThem) {
+  Fixture f;
+  const auto counted = check_junit(f.report, f.ts, {});
+  EXPECT_NE(counted.find("name=\"states\" value=\"2\""), std::string::npos) << counted;
+  f.report.states_known = false;  // SAT engines
+  const auto xml = check_junit(f.report, f.ts, {});
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(xml.c_str())) << xml;
+  EXPECT_FALSE(doc.child("testsuites")
+                   .child("testsuite")
+                   .child("properties")
+                   .find_child_by_attribute("property", "name", "states"));
+}
+
+TEST(CheckJunit, NamesWithInvalidUtf8AndControlCharactersGiveWellFormedXml) {
+  // Names are bytes (a Latin-1 export, a hostile file): XML 1.0 allows neither invalid UTF-8
+  // nor control characters other than tab, line feed and carriage return.
+  Fixture f;
+  f.report.results[0].name =
+      "S\xFF"
+      "1";
+  f.report.results[1].message = "step S\x01x (bell\x07) never left";
+  f.report.results[1].findings = {"at \xC3"};
+  RenderOptions options;
+  options.model = "pl\xE4nt.xml";
+  const auto xml = check_junit(f.report, f.ts, options);
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8))
+      << xml;
+  EXPECT_EQ(xml.find('\x01'), std::string::npos);
+  EXPECT_EQ(xml.find('\x07'), std::string::npos);
+  EXPECT_EQ(xml.find("\xFF"), std::string::npos);
+  const auto suite = doc.child("testsuites").child("testsuite");
+  EXPECT_STREQ(suite.attribute("name").value(), "pl\xEF\xBF\xBDnt.xml");  // U+FFFD
+  EXPECT_TRUE(suite.find_child_by_attribute("testcase", "name",
+                                            "S\xEF\xBF\xBD"
+                                            "1"));
+  const auto failure =
+      suite.find_child_by_attribute("testcase", "name", "never B").child("failure");
+  EXPECT_STREQ(failure.attribute("message").value(),
+               "violated: step S\xEF\xBF\xBDx (bell\xEF\xBF\xBD) never left");
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ using logic::Verdict;
 
 namespace {
 
+constexpr const char* kNoInitialState =
+    "no initial state: the assumptions exclude every initial situation, or none is stable (see "
+    "the instability check)";
+
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -275,6 +279,13 @@ class Run {
       }
       return r;
     }
+    // No initial state: every property would hold vacuously; the other engines answer
+    // unknown, and so must this one (a run that judged nothing is not a pass).
+    if (sys_.initial().is_false()) {
+      r.verdict = Verdict::Unknown;
+      r.message = kNoInitialState;
+      return r;
+    }
     if (logic::is_ltl(*f)) return ltl_property(p, ctl, std::move(r));
     // An invariant is decided on the reached states, and a bad one is met by a shortest run
     // through the rings: no fixpoint, and no relation when every image was simulated.
@@ -312,7 +323,7 @@ class Run {
   PropertyResult ltl_property(const logic::Property& p, SymbolicCtl& ctl, PropertyResult r) {
     if (sys_.initial().is_false()) {
       r.verdict = Verdict::Unknown;
-      r.message = "no initial state: the assumptions exclude every initial situation";
+      r.message = kNoInitialState;
       return r;
     }
     const SymbolicLtlQuery q{p.formula, task_.fairness,
@@ -674,8 +685,9 @@ class BddModelChecker final : public ModelChecker {
         PropertyResult r;
         r.name = std::string(logic::to_string(c));
         r.check = r.name;
-        r.verdict = Verdict::Unknown;
-        r.message = why;
+        const auto na = logic::not_applicable(c, *task.system, task.priority_resolves_conflicts);
+        r.verdict = na ? Verdict::NotApplicable : Verdict::Unknown;
+        r.message = na ? *na : why;
         report.results.push_back(std::move(r));
       }
       return report;

@@ -474,7 +474,9 @@ logic::PropertyResult CtlChecker::check(const logic::Property& p) {
   const auto& init = g_.initial_states();
   if (init.empty()) {
     r.verdict = logic::Verdict::Unknown;
-    r.message = "no initial state: the assumptions exclude every initial situation";
+    r.message =
+        "no initial state: the assumptions exclude every initial situation, or none is stable (see "
+        "the instability check)";
     return r;
   }
   const auto& f = p.formula;

@@ -8,6 +8,7 @@
 #include "engine/explicit/invariant_search.hpp"
 #include "engine/explicit/ltl_checker.hpp"
 #include "logic/formula.hpp"
+#include "logic/standard_checks.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine {
@@ -35,8 +36,9 @@ logic::CheckReport all_unknown(const logic::CheckTask& task, const LimitReached&
     logic::PropertyResult r;
     r.name = std::string(logic::to_string(c));
     r.check = r.name;
-    r.verdict = logic::Verdict::Unknown;
-    r.message = stop.what();
+    const auto why = logic::not_applicable(c, *task.system, task.priority_resolves_conflicts);
+    r.verdict = why ? logic::Verdict::NotApplicable : logic::Verdict::Unknown;
+    r.message = why ? *why : stop.what();
     report.results.push_back(std::move(r));
   }
   return report;

@@ -841,7 +841,9 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     r.where = p.where;
     if (initial_count == 0) {
       r.verdict = logic::Verdict::Unknown;
-      r.message = "no initial state: the assumptions exclude every initial situation";
+      r.message =
+          "no initial state: the assumptions exclude every initial situation, or none is stable "
+          "(see the instability check)";
     } else if (violation[i] != kNone) {
       r.verdict = logic::Verdict::Violated;
       r.trace = counterexample(ts, store, codec, parent, violation[i], limits);

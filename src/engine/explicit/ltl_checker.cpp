@@ -272,7 +272,9 @@ logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
   r.where = p.where;
   if (g.initial_states().empty()) {
     r.verdict = logic::Verdict::Unknown;
-    r.message = "no initial state: the assumptions exclude every initial situation";
+    r.message =
+        "no initial state: the assumptions exclude every initial situation, or none is stable (see "
+        "the instability check)";
     return r;
   }
   // A run violating p is an accepting run of the automaton of !p.

@@ -30,8 +30,11 @@ std::string seconds_text(double seconds) {
   return text;
 }
 
+/// A final answer: holds, violated, or not applicable (a fact of the system, the same for every
+/// engine: no engine can do better).
 bool decided(const PropertyResult& r) {
-  return r.verdict == Verdict::Holds || r.verdict == Verdict::Violated;
+  return r.verdict == Verdict::Holds || r.verdict == Verdict::Violated ||
+         r.verdict == Verdict::NotApplicable;
 }
 
 /// A standard check is its name: an engine fills in its formula ("AG EF init") only once it

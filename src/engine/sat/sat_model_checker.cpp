@@ -703,7 +703,7 @@ class Run {
     r.name = p.name;
     r.formula = logic::to_string(p.formula);
     if (q.shape == Question::Shape::Unsupported) {
-      r.verdict = Verdict::Unknown;
+      r.verdict = Verdict::NotChecked;  // counts as unknown (exit 3), says why
       r.message = q.refusal.empty() ? not_checked() : q.refusal;
       return r;
     }
@@ -718,7 +718,7 @@ class Run {
     if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u) {
       // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
       // situations (one per initial valuation) does not show it for the others.
-      r.verdict = Verdict::Unknown;
+      r.verdict = Verdict::NotChecked;
       r.message =
           "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
           " engine: this Grafcet has " +
@@ -828,13 +828,21 @@ class Run {
     PropertyResult r;
     r.name = std::string(logic::to_string(c));
     r.check = r.name;
+    // As every engine (standard_check_runner.hpp): a question without meaning on the system.
+    if (const auto why = logic::not_applicable(c, ts_, task_.priority_resolves_conflicts)) {
+      r.verdict = Verdict::NotApplicable;
+      r.message = *why;
+      return r;
+    }
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::NotChecked;
-      r.message = !q.refusal.empty()
-                      ? q.refusal
-                      : "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-                            " engine" + (grafcet_ ? " on a Grafcet chart" : "") +
-                            "; use --engine explicit or bdd";
+      const std::string engine(algorithm_name(options_.algorithm));
+      r.message = !q.refusal.empty() ? q.refusal
+                  : grafcet_         ? "not checked: the " + engine +
+                                   " engine decides no standard check of an IEC 60848 grafcet; "
+                                   "use --engine explicit, bdd or auto"
+                             : "not checked by the " + engine +
+                                   " engine; use --engine explicit, bdd or auto";
       return r;
     }
     if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
