@@ -987,7 +987,9 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
 
 void SymbolicMachine::call_instance(const Pou& pou, AigLit guard) {
   cycle_pou(pou, guard);
-  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  // Only where the call happens: a call not made leaves cur_ as the last call left it, while
+  // the clock has aged nxt_ (Machine::call_instance commits only when called).
+  for (auto f : pou.commit) cur_[f] = mux(guard, nxt_[f], cur_[f]);
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = Aig::kFalse;
 }

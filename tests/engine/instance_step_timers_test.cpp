@@ -214,6 +214,16 @@ std::optional<std::vector<semantics::StateWord>> circuit_step(
   return semantics::state_from_latches(ts, c, next);
 }
 
+/// Every field's value, for a failure's message.
+std::string fields(const semantics::TransitionSystem& ts,
+                   const std::vector<semantics::StateWord>& state) {
+  std::string out;
+  const auto& layout = ts.layout();
+  for (std::uint32_t f = 0; f < layout.fields().size(); ++f)
+    out += layout.fields()[f].name + "=" + std::to_string(layout.get(state, f)) + " ";
+  return out;
+}
+
 /// Every valuation of the inputs (each over its range) from `state`: circuit = machine.
 void expect_circuit_agrees(const semantics::TransitionSystem& ts,
                            semantics::TransitionCircuit& circuit,
@@ -226,7 +236,9 @@ void expect_circuit_agrees(const semantics::TransitionSystem& ts,
     const auto symbolic = circuit_step(ts, circuit, state, in);
     ASSERT_EQ(machine.ok, symbolic.has_value()) << machine.error;
     if (machine.ok) {
-      ASSERT_EQ(machine.states.back(), *symbolic) << ts.describe(state);
+      ASSERT_EQ(machine.states.back(), *symbolic)
+          << fields(ts, state) << " -> machine " << fields(ts, machine.states.back())
+          << ", circuit " << fields(ts, *symbolic) << ", inputs " << ::testing::PrintToString(in);
     }
     std::size_t i = 0;
     for (; i < ins.size(); ++i) {
