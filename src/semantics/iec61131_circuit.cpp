@@ -283,6 +283,7 @@ class SymbolicMachine {
   /// A new cycle's clock (Machine::advance_clock).
   void advance_clock() {
     started_.assign(p_.timers.size(), Aig::kFalse);
+    step_started_.assign(p_.steps.size(), Aig::kFalse);
     if (p_.options.time != TimeMode::Discrete) return;
     for (const auto& t : p_.timers) {
       if (!t.clocked) continue;
@@ -290,6 +291,25 @@ class SymbolicMachine {
       nxt_[t.field] = mux(equal(v, constant(0)), constant(0),
                           min(bv_add(aig_, v, constant(1)), constant(t.max_value)));
     }
+    for (std::uint32_t s = 0; s < p_.steps.size(); ++s)
+      if (clocked_step(s)) nxt_[static_cast<std::uint32_t>(p_.steps[s].t_field)] = aged_step(s);
+  }
+  bool clocked_step(std::uint32_t s) const {
+    return p_.steps[s].clocked && p_.steps[s].t_field != kNone;
+  }
+  /// Discrete time: a clocked step's .T one cycle older if the step was active (Machine::age_step).
+  Value aged_step(std::uint32_t s) {
+    const auto& st = p_.steps[s];
+    const Value& v = cur_[static_cast<std::uint32_t>(st.t_field)];
+    return mux(step_active_cur(s), min(bv_add(aig_, v, constant(1)), constant(st.t_max)), v);
+  }
+  /// A qualifier's timer; a clocked one notes its start (abstract time, Machine::timer_next).
+  Value qualifier_timer(const Timer& t, AigLit run, AigLit restart, AigLit guard) {
+    if (t.clocked) {
+      const AigLit starts = aig_.make_or(equal(nxt_[t.field], constant(0)), restart);
+      note_start(t, aig_.make_and(guard, aig_.make_and(run, starts)));
+    }
+    return timer_next(t, run, restart);
   }
   void snapshot_et(const Fb& fb, const Timer& t, AigLit guard) {
     if (fb.et != kNone) set(static_cast<std::uint32_t>(fb.et), nxt_[t.field], guard);
@@ -311,7 +331,8 @@ class SymbolicMachine {
   std::vector<Value> cur_, nxt_, input_values_;
   std::vector<std::int64_t> initial_values_;  ///< per field: what SFCInit/SFCReset restore
   std::vector<AigLit> consumed_, entered_, left_;
-  std::vector<AigLit> started_;  ///< per timer: started in this cycle (abstract time)
+  std::vector<AigLit> started_;       ///< per timer: started in this cycle (abstract time)
+  std::vector<AigLit> step_started_;  ///< per step: entered in this cycle (abstract time)
   // Paths (under the current loop) that took EXIT or CONTINUE, and paths that took RETURN.
   AigLit left_loop_ = Aig::kFalse, exit_ = Aig::kFalse, returned_ = Aig::kFalse;
   // Range errors are raised only under this condition: inside a loop, the loop's guard.
@@ -833,19 +854,19 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
               act, aig_.make_and(cur_truth(st.ready), aig_.make_not(nxt_truth(st.ready))));
           break;
         case model::Qualifier::L: {
-          const Value v = timer_next(*t, sa, entered);
+          const Value v = qualifier_timer(*t, sa, entered, g);
           set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, aig_.make_not(timer_expired(*t, v))));
           break;
         }
         case model::Qualifier::D: {
-          const Value v = timer_next(*t, sa, entered);
+          const Value v = qualifier_timer(*t, sa, entered, g);
           set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(sa, timer_expired(*t, v)));
           break;
         }
         case model::Qualifier::DS: {
-          const Value v = timer_next(*t, sa, entered);
+          const Value v = qualifier_timer(*t, sa, entered, g);
           set(t->field, v, g);
           const AigLit fire_now = aig_.make_and(sa, timer_expired(*t, v));
           set_flag = aig_.make_or(set_flag, fire_now);
@@ -856,7 +877,7 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
           const auto latch = static_cast<std::uint32_t>(as.latch);
           const AigLit l = aig_.make_and(aig_.make_or(cur_truth(latch), sa), aig_.make_not(reset));
           set_bool(latch, l, g);
-          const Value v = timer_next(*t, l, Aig::kFalse);
+          const Value v = qualifier_timer(*t, l, Aig::kFalse, g);
           set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, timer_expired(*t, v)));
           break;
@@ -870,7 +891,7 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
               aig_.make_or(aig_.make_and(cur_truth(latch), aig_.make_not(expired_before)), rising),
               aig_.make_not(reset));
           set_bool(latch, l, g);
-          const Value v = timer_next(*t, l, rising);
+          const Value v = qualifier_timer(*t, l, rising, g);
           set(t->field, v, g);
           act = aig_.make_or(act, aig_.make_and(l, aig_.make_not(timer_expired(*t, v))));
           break;
@@ -903,14 +924,21 @@ void SymbolicMachine::step_times(const Pou& pou, AigLit guard) {
       const Value v = cur_[f];
       Value advanced;
       if (p_.options.time == TimeMode::Discrete) {
-        advanced = min(bv_add(aig_, v, constant(1)), constant(st.t_max));
+        // An instance's step: the clock aged .T already (Machine::update_pou).
+        advanced = st.clocked ? nxt_[f] : min(bv_add(aig_, v, constant(1)), constant(st.t_max));
       } else {
         const Value top = constant(static_cast<std::int64_t>(st.thresholds.size()));
         const Value moved =
             max(v, min(input_value(static_cast<std::uint32_t>(st.elapse_input)), top));
         advanced = mux(less(v, top), moved, v);
+        // Entered at an earlier call of this cycle: no time has passed since.
+        if (st.clocked) advanced = mux(step_started_[s], nxt_[f], advanced);
       }
-      nxt_[f] = mux(guard, mux(restart, constant(0), mux(advance, advanced, nxt_[f])), nxt_[f]);
+      // Suspended: frozen; an instance's step undoes the clock's aging.
+      const Value held = st.clocked ? v : nxt_[f];
+      if (st.clocked)
+        step_started_[s] = aig_.make_or(step_started_[s], aig_.make_and(guard, entered_[s]));
+      nxt_[f] = mux(guard, mux(restart, constant(0), mux(advance, advanced, held)), nxt_[f]);
     }
 }
 
@@ -931,6 +959,16 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
       const Value v = constant(initial_values_[f]);
       cur_[f] = mux(reset, v, cur_[f]);
       nxt_[f] = mux(reset, v, nxt_[f]);
+    }
+    // A reset chart ages as a program's does in its reset cycle (Machine::sfc_flags).
+    if (p_.options.time == TimeMode::Discrete) {
+      const AigLit reset_only = aig_.make_and(reset, aig_.make_not(init));
+      for (auto c : pou.charts)
+        for (auto s : p_.charts[c].steps)
+          if (clocked_step(s)) {
+            const auto f = static_cast<std::uint32_t>(p_.steps[s].t_field);
+            nxt_[f] = mux(reset_only, aged_step(s), nxt_[f]);
+          }
     }
   }
   const AigLit run = aig_.make_and(guard, aig_.make_not(init));
@@ -953,7 +991,9 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
 
 void SymbolicMachine::call_instance(const Pou& pou, AigLit guard) {
   cycle_pou(pou, guard);
-  for (auto f : pou.commit) cur_[f] = nxt_[f];
+  // Only where the call happens: a call not made leaves cur_ as the last call left it, while
+  // the clock has aged nxt_ (Machine::call_instance commits only when called).
+  for (auto f : pou.commit) cur_[f] = mux(guard, nxt_[f], cur_[f]);
   for (auto c : pou.charts)
     for (auto s : p_.charts[c].steps) consumed_[s] = entered_[s] = left_[s] = Aig::kFalse;
 }

@@ -349,6 +349,12 @@ void Compiler::step_timers() {
           add_input("elapse:" + s.name, model::Type::integer("INT", 0, top), true));
     }
   }
+  // A user FB instance's chart runs at its calls, which need not be one per cycle: its step
+  // times and qualifier timers read the cycle clock instead (docs/semantics.md §1.6).
+  for (auto& s : p.steps) s.clocked = p.pous[p.charts[s.chart].pou].instance;
+  for (const auto& as : p.assocs)
+    if (as.timer != kNone && p.steps[as.step].clocked)
+      p.timers[static_cast<std::size_t>(as.timer)].clocked = true;
   for (auto n : t_nodes) {
     auto& node = p.nodes[n];
     const auto& th = p.steps[node.a].thresholds;

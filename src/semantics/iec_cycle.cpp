@@ -103,6 +103,12 @@ bool Machine::sfc_flags(const Pou& pou) {
   if (!reset) return false;
   for (auto f : pou.chart_fields) cur_[f] = nxt_[f] = reset_values_[f];
   cur_dirty_ = true;
+  // A reset chart ages as a program's does in its reset cycle: its steps count as active since
+  // the last cycle (the clock aged the old situation, which the reset discarded).
+  if (!init && p_.options.time == TimeMode::Discrete)
+    for (auto c : pou.charts)
+      for (auto s : p_.charts[c].steps)
+        if (p_.steps[s].clocked && p_.steps[s].t_field != kNone) age_step(s);
   return init;
 }
 
@@ -274,8 +280,14 @@ void Machine::update_pou(const Pou& pou) {
       const auto f = static_cast<std::uint32_t>(st.t_field);
       if (!nxt_[st.ready] || entered_[s]) {
         nxt_[f] = 0;
+        if (entered_[s]) step_started_[s] = 1;
       } else if (step_active_next(s) && step_active_cur(s)) {
         const auto v = cur_[f];
+        if (st.clocked) {
+          // An instance's step: the clock aged .T (discrete), or the step was entered at an
+          // earlier call of this cycle (abstract): no time has passed since.
+          if (p_.options.time == TimeMode::Discrete || step_started_[s]) continue;
+        }
         if (p_.options.time == TimeMode::Discrete) {
           nxt_[f] = std::min(v + 1, st.t_max);
         } else if (v < static_cast<std::int64_t>(st.thresholds.size())) {
@@ -292,6 +304,8 @@ void Machine::update_pou(const Pou& pou) {
             nxt_[f] = v + alt;
           }
         }
+      } else if (st.clocked) {
+        nxt_[f] = cur_[f];  // suspended: frozen, the clock's aging undone
       }
     }
 }

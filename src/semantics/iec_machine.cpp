@@ -24,9 +24,12 @@ Machine::Machine(const Program& p)
       entered_(p.steps.size()),
       left_(p.steps.size()),
       reset_(p.actions.size()),
-      started_(p.timers.size()) {
+      started_(p.timers.size()),
+      step_started_(p.steps.size()) {
   for (std::uint32_t i = 0; i < p.timers.size(); ++i)
     if (p.timers[i].clocked) clocked_.push_back(i);
+  for (std::uint32_t i = 0; i < p.steps.size(); ++i)
+    if (p.steps[i].clocked && p.steps[i].t_field != kNone) clocked_steps_.push_back(i);
   for (std::size_t i = 0; i < p.inputs.size(); ++i) {
     in_lo_[i] = p.inputs[i].type.lo;
     in_hi_[i] = p.inputs[i].type.hi;

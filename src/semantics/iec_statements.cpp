@@ -23,14 +23,23 @@ bool Machine::timer_expired(const Timer& t, std::int64_t v) const {
 void Machine::advance_clock() {
   if (p_.options.time == TimeMode::Abstract) {
     std::fill(started_.begin(), started_.end(), std::uint8_t{0});
+    std::fill(step_started_.begin(), step_started_.end(), std::uint8_t{0});
     return;
   }
+  // So does a step of an instance: .T is the time since the step's activation.
+  for (auto s : clocked_steps_) age_step(s);
   // ET is the time since the start, whether or not the instance is called in between: the
   // cycle ages every running instance, saturating where its expiry no longer changes.
   for (auto i : clocked_) {
     const auto& t = p_.timers[i];
     if (const auto v = cur_[t.field]; v != 0) nxt_[t.field] = std::min(v + 1, t.max_value);
   }
+}
+
+void Machine::age_step(std::uint32_t step) {
+  const auto& st = p_.steps[step];
+  const auto f = static_cast<std::uint32_t>(st.t_field);
+  if (step_active_cur(step)) nxt_[f] = std::min(cur_[f] + 1, st.t_max);
 }
 
 std::int64_t Machine::timer_next(const Timer& t, bool run, bool restart) {

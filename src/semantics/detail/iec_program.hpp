@@ -145,8 +145,8 @@ struct Function {
 /// A clocked timer (a TON, TOF or TP instance) reads the cycle clock (docs/semantics.md §1.6):
 /// in discrete time the cycle ages it before any code runs, whether or not it is called
 /// (Machine::advance_clock), and its calls only start, stop and read it; in abstract time it
-/// cannot expire in the cycle it started, however often it is called. A qualifier's timer is
-/// aged by phase 4, once per cycle of its POU.
+/// cannot expire in the cycle it started, however often it is called. So does a qualifier's
+/// timer in a user FB instance; in a program it is aged by phase 4, once per cycle.
 struct Timer {
   std::uint32_t field = 0;
   std::int64_t duration_ms = 0;
@@ -183,6 +183,10 @@ struct Step {
   std::int64_t t_max = 0;                ///< discrete: saturation (cycles)
   std::vector<std::int64_t> thresholds;  ///< abstract: sorted region bounds (2*c, or 2*c+1 for c+)
   std::int32_t elapse_input = kNone;     ///< abstract
+  /// A step of a user FB instance: its .T reads the cycle clock (docs/semantics.md §1.6), as
+  /// TON does: discrete time ages it before any code runs while the step is active, whether or
+  /// not the instance is called; a second call in the cycle does not age it again.
+  bool clocked = false;
 };
 
 struct Transition {
@@ -358,6 +362,8 @@ class Machine {
   void snapshot_et(const Fb& fb, const Timer& t) {
     if (fb.et != kNone) nxt_[static_cast<std::uint32_t>(fb.et)] = nxt_[t.field];
   }
+  /// Discrete time: a clocked step's .T one cycle older if the step was active (reads cur_).
+  void age_step(std::uint32_t step);
 
   void cycle_pou(const Pou& pou);
   /// SFCInit/SFCReset read after the body: restores the POU's chart fields; true under SFCInit.
@@ -380,9 +386,11 @@ class Machine {
   std::vector<std::uint8_t> consumed_, entered_, left_;  ///< per step, this cycle
   std::vector<std::uint32_t> fired_;
   std::vector<std::uint32_t> enabled_scratch_;
-  std::vector<std::uint8_t> reset_;     ///< per action
-  std::vector<std::uint32_t> clocked_;  ///< timers that read the cycle clock
-  std::vector<std::uint8_t> started_;   ///< per timer: started in this cycle (abstract time)
+  std::vector<std::uint8_t> reset_;           ///< per action
+  std::vector<std::uint32_t> clocked_;        ///< timers that read the cycle clock
+  std::vector<std::uint8_t> started_;         ///< per timer: started in this cycle (abstract time)
+  std::vector<std::uint32_t> clocked_steps_;  ///< steps whose .T reads the cycle clock
+  std::vector<std::uint8_t> step_started_;    ///< per step: entered in this cycle (abstract time)
   // SFCInit/SFCReset: the initial configuration they restore, and the loaded state (a flag
   // rewrites cur_ within a run; the next leaf starts again from the loaded state).
   bool has_flags_ = false, cur_dirty_ = false;
