@@ -241,6 +241,8 @@ Value CircuitBuilder::eval(const CExpr& e, const Ctx& c) {
     }
     case Op::Rise:
     case Op::Fall: {
+      // The previous situation seen from itself: no edge (and no doubling when edges nest).
+      if (c.cur == c.prev) return from_bool(Aig::kFalse);
       const AigLit now = eval_truth(e.args[0], c);
       const AigLit was = eval_truth(e.args[0], Ctx{c.prev, c.prev});
       return from_bool(e.op == Op::Rise ? aig_.make_and(now, aig_.make_not(was))

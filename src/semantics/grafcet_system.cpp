@@ -375,6 +375,10 @@ Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
     }
     case Op::Rise:
     case Op::Fall: {
+      // Where the current and previous situations are one (the "before" side of an enclosing
+      // edge), nothing changes: every edge is false. Said first, so that nested edges
+      // (RE RE ... RE a) cost one evaluation per level instead of doubling at each.
+      if (c.cur.data() == c.prev.data() && c.in == c.prev_in) return {true, 0};
       const Val now = eval(e.args[0], c);
       Ctx before{c.prev, c.prev_in, c.prev, c.prev_in};
       const Val was = eval(e.args[0], before);

@@ -78,4 +78,30 @@ TEST(LargeChart, TheBddQueryEngineHoldsTheDeadlineInsideItsOperations) {
   EXPECT_LT(r.cpu, 6.0);
 }
 
+TEST(LargeChart, NestedEdgesCostOneEvaluationPerLevel) {
+  // RE RE ... RE a, 199 levels (the nesting limit is 200): each level evaluated the one below
+  // twice, now and before, so check, rsg and query hung on a 1.2 KB file.
+  std::string edges;
+  for (int i = 0; i < 199; ++i) edges += "RE ";
+  const std::string file = sfcv::test::write_temp(
+      "project edges;\ninput a, b;\noutput o;\ngrafcet g {\n  step 0 initial;\n  step 1;\n"
+      "  transition 1: 0 -> 1 when " +
+          edges + "a;\n  transition 2: 1 -> 0 when b;\n  action 1: o;\n}\n",
+      ".g7");
+  for (const std::string& cmd :
+       {"check '" + file + "' --engine explicit", "check '" + file + "' --engine bdd",
+        "check '" + file + "' --engine ic3 --checks none --ctl 'AG !X1'", "rsg '" + file + "'",
+        "query '" + file + "' 'Y - Pred(Y0, T)'"}) {
+    const auto r = cpu_run(cmd + " --timeout 2 --quiet");
+    // Seen from the previous situation an edge is false, so RE RE ... RE a reads as RE a.
+    EXPECT_TRUE(r.run.exit_code == 0 || r.run.exit_code == 1) << cmd << ": " << r.run.err;
+    EXPECT_LT(r.cpu, 2.0) << cmd;
+  }
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    const auto reached = run_sfcv("check '" + file + "' --engine " + engine +
+                                  " --checks none --ctl 'AG !X1' --quiet");
+    EXPECT_EQ(reached.exit_code, 1) << engine << ": " << reached.out << reached.err;
+  }
+}
+
 }  // namespace
