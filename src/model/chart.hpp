@@ -36,6 +36,9 @@ struct Variable {
   Type type;
   std::optional<std::int64_t> initial;  ///< BOOL as 0/1, TIME in ms
   std::string address;                  ///< "%IX1" when declared with AT, else empty
+  /// Declared in a CONSTANT section (`VAR CONSTANT`, PLCopen `constant="true"`): no one may
+  /// write it, so the semantics never reads it as an input (docs/semantics.md 1.8).
+  bool constant = false;
   SourceLocation where;
   // As read, before model::lower_data_types replaces the variable by its elements:
   /// non-empty: an ARRAY of `type` with these dimensions.
