@@ -154,7 +154,8 @@ ordered_json project_info(const std::string& file, const model::Project& p) {
   auto pous = ordered_json::array();
   for (const auto& pou : p.pous) pous.push_back(pou_info(pou));
   j["pous"] = pous;
-  if (p.dialect != model::Dialect::Grafcet) j["unwritten"] = unwritten_info(p);
+  j["unwritten"] =
+      p.dialect == model::Dialect::Grafcet ? ordered_json::array() : unwritten_info(p);
   return j;
 }
 
@@ -198,7 +199,7 @@ void print_text(const ordered_json& j, std::ostream& out) {
       out << "  stored actions: " << pou["stored_actions"]
           << ", forcing orders: " << pou["forcing_orders"] << "\n";
   }
-  if (!j.contains("unwritten")) return;
+  if (grafcet) return;
   const auto& u = j["unwritten"];
   out << "\n";
   if (u.is_null()) {

@@ -36,9 +36,6 @@ struct Variable {
   Type type;
   std::optional<std::int64_t> initial;  ///< BOOL as 0/1, TIME in ms
   std::string address;                  ///< "%IX1" when declared with AT, else empty
-  /// Declared in a CONSTANT section (`VAR CONSTANT`, PLCopen `constant="true"`): no one may
-  /// write it, so the semantics never reads it as an input (docs/semantics.md 1.8).
-  bool constant = false;
   SourceLocation where;
   // As read, before model::lower_data_types replaces the variable by its elements:
   /// non-empty: an ARRAY of `type` with these dimensions.
@@ -46,6 +43,9 @@ struct Variable {
   /// The initial value of an ARRAY, STRUCT or enumeration variable as written
   /// (`[1, 2(0)]`, `(x := 1)`, `Red`); null when none.
   ExprPtr declared_initial;
+  /// Declared in a CONSTANT section (`VAR CONSTANT`, PLCopen `constant="true"`): no one may
+  /// write it, so the semantics never reads it as an input (docs/semantics.md 1.8).
+  bool constant = false;
 };
 
 // -------------------------------------------------------------------------- user data types

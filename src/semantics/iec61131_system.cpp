@@ -252,13 +252,14 @@ std::string unwritten_note(const std::vector<UnwrittenVariable>& list, std::size
                   " that no POU of the run writes " + (n == 1 ? "is" : "are") +
                   (free ? " read as " + std::string(n == 1 ? "an input" : "inputs") +
                               " (free each cycle): "
-                        : " held at " + std::string(n == 1 ? "its" : "their") +
-                              " initial value (--unwritten keep): ");
+                        : std::string(n == 1 ? " held at its initial value"
+                                             : " held at their initial values") +
+                              " (--unwritten keep): ");
   for (std::size_t i = 0; i < n && i < shown; ++i)
     s += (i ? ", " : "") + list[i].name + " (" + read_place(list[i]) + ")";
   if (n > shown) s += " and " + std::to_string(n - shown) + " more (sfcv info lists them)";
-  s += free ? std::string("; --unwritten keep holds ") + (n == 1 ? "it at its" : "them at their") +
-                  " initial value"
+  s += free ? std::string("; --unwritten keep holds ") +
+                  (n == 1 ? "it at its initial value" : "them at their initial values")
             : std::string("; by default (--unwritten free) ") + (n == 1 ? "it is" : "they are") +
                   " free each cycle";
   return s;

@@ -128,7 +128,7 @@ TEST(Unwritten, KeepFreezesTheSensorsAsBefore) {
   const auto r = run_sfcv("check " + q(path) + kInterlock + " --unwritten keep");
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.err.find("3 variables that no POU of the run writes are held at their initial "
-                       "value (--unwritten keep)"),
+                       "values (--unwritten keep)"),
             std::string::npos)
       << r.err;
   EXPECT_EQ(run_sfcv("check " + q(path) + " --unwritten maybe --ctl TRUE").exit_code, 2);

@@ -209,6 +209,27 @@ END_PROGRAM
   EXPECT_EQ(r["alarm"], 0);
 }
 
+// An SFC flag that nothing sets stays FALSE: free, a reset at any cycle would hide every
+// deadlock of the chart (docs/semantics.md 1.8).
+TEST(Unwritten, AnSfcFlagNothingSetsStaysFalse) {
+  auto b = build(R"(PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR SFCReset : BOOL; END_VAR
+  INITIAL_STEP S0 : END_STEP
+  STEP S1 : END_STEP
+  TRANSITION FROM S0 TO S1 := go; END_TRANSITION
+  TRANSITION FROM S1 TO S0 := FALSE; END_TRANSITION
+END_PROGRAM
+)");
+  ASSERT_TRUE(b.system);
+  EXPECT_TRUE(unwritten_names(*b.system).empty());
+  EXPECT_FALSE(has_input(*b.system, "SFCReset"));
+  Runner r(*b.system);
+  ASSERT_TRUE(r.cycle({{"go", 1}}));
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["S1"], 1);  // never reset
+}
+
 // A duration read from a variable stays its initial value (sfcv needs constant durations).
 TEST(Unwritten, ADurationVariableKeepsItsValue) {
   auto b = build(R"(PROGRAM Main
