@@ -154,8 +154,7 @@ ordered_json project_info(const std::string& file, const model::Project& p) {
   auto pous = ordered_json::array();
   for (const auto& pou : p.pous) pous.push_back(pou_info(pou));
   j["pous"] = pous;
-  j["unwritten"] =
-      p.dialect == model::Dialect::Grafcet ? ordered_json::array() : unwritten_info(p);
+  j["unwritten"] = p.dialect == model::Dialect::Grafcet ? ordered_json::array() : unwritten_info(p);
   return j;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // The options that choose and parametrise the semantics (--semantics, --pou, --priority, --time,
-// --cycle, --unwritten, --multi-input-change), registered and turned into a transition system in one place,
-// so that check, query, rsg, simulate and export build the same system from the same flags.
+// --cycle, --unwritten, --multi-input-change), registered and turned into a transition system in
+// one place, so that check, query, rsg, simulate and export build the same system from the same
+// flags.
 
 #include <CLI/CLI.hpp>
 #include <string>

@@ -248,13 +248,12 @@ std::string unwritten_note(const std::vector<UnwrittenVariable>& list, std::size
   if (list.empty()) return {};
   const bool free = list.front().free;
   const auto n = list.size();
-  std::string s = std::to_string(n) + (n == 1 ? " variable" : " variables") +
-                  " that no POU of the run writes " + (n == 1 ? "is" : "are") +
-                  (free ? " read as " + std::string(n == 1 ? "an input" : "inputs") +
-                              " (free each cycle): "
-                        : std::string(n == 1 ? " held at its initial value"
-                                             : " held at their initial values") +
-                              " (--unwritten keep): ");
+  std::string s =
+      std::to_string(n) + (n == 1 ? " variable" : " variables") +
+      " that no POU of the run writes " + (n == 1 ? "is" : "are") +
+      (free ? " read as " + std::string(n == 1 ? "an input" : "inputs") + " (free each cycle): "
+            : std::string(n == 1 ? " held at its initial value" : " held at their initial values") +
+                  " (--unwritten keep): ");
   for (std::size_t i = 0; i < n && i < shown; ++i)
     s += (i ? ", " : "") + list[i].name + " (" + read_place(list[i]) + ")";
   if (n > shown) s += " and " + std::to_string(n - shown) + " more (sfcv info lists them)";

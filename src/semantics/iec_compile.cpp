@@ -226,7 +226,7 @@ std::vector<UnwrittenVariable> Compiler::unwritten(std::vector<std::string>& key
 void Compiler::variables(const std::vector<const model::Pou*>& pous) {
   // Providers: outputs and globals, by name, for connecting other POUs' inputs.
   std::map<std::string, std::pair<std::uint32_t, Ref>> providers;  // name -> (pou, variable)
-  auto& globals = global_fields;                                             // name -> field
+  auto& globals = global_fields;                                   // name -> field
   std::map<std::string, int> name_count;
   auto is_input = [](const model::Variable& v) {
     return v.direction == model::VarDirection::Input ||
@@ -336,8 +336,8 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
       if (v.type.kind == TypeKind::FunctionBlock || !is_input(v)) continue;
       const auto up = model::to_upper(v.name);
       if (auto it = providers.find(up); it != providers.end() && it->second.first != pi) {
-        sc.names[up] = Ref{it->second.second.kind, it->second.second.index,
-                           v.type.kind == TypeKind::Bool};
+        sc.names[up] =
+            Ref{it->second.second.kind, it->second.second.index, v.type.kind == TypeKind::Bool};
         continue;
       }
       auto it = inputs_by_name.find(up);

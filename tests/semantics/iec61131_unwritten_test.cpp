@@ -19,8 +19,7 @@ struct Built {
   model::Diagnostics diags;
 };
 
-Built build(const std::string& text,
-            semantics::UnwrittenMode mode = semantics::UnwrittenMode::Free,
+Built build(const std::string& text, semantics::UnwrittenMode mode = semantics::UnwrittenMode::Free,
             std::vector<std::string> pous = {}) {
   Built b;
   auto loaded = io::load_iec_text(text, "unwritten.st");
@@ -108,8 +107,7 @@ TEST(Unwritten, KeepHoldsThemAtTheirInitialValues) {
   const auto list = semantics::unwritten_variables(ts);
   ASSERT_EQ(list.size(), 1u);
   EXPECT_FALSE(list.front().free);
-  EXPECT_NE(notes(b.diags).find("held at its initial value (--unwritten keep)"),
-            std::string::npos)
+  EXPECT_NE(notes(b.diags).find("held at its initial value (--unwritten keep)"), std::string::npos)
       << notes(b.diags);
   Runner r(ts);
   ASSERT_TRUE(r.cycle({{"start", 1}}));
