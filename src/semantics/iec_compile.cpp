@@ -210,7 +210,10 @@ std::vector<UnwrittenVariable> Compiler::unwritten(std::vector<std::string>& key
     // An SFC flag (1.3a) that no POU sets is an operator's command the program does not give:
     // free, a reset at any cycle would make every deadlock and return check hold through it.
     const auto up = model::to_upper(v.name);
-    if (scopes[d.scope].pou->has_sfc() && (up == "SFCINIT" || up == "SFCRESET")) continue;
+    // (The type as declared: an instance running its SFC actions as units has no chart itself.)
+    const auto* type = project.find_pou(scopes[d.scope].pou->name);
+    if ((type ? type : scopes[d.scope].pou)->has_sfc() && (up == "SFCINIT" || up == "SFCRESET"))
+      continue;
     UnwrittenVariable u;
     u.name = p.field_names[d.field];
     u.type = value_type(v.type);
