@@ -21,8 +21,15 @@ model::Project loops(int n, int unused_inputs) {
   pou.name = "LOOPS";
   for (int i = 0; i < n; ++i) {
     const std::string x = "x" + std::to_string(i);
-    pou.variables.push_back(
-        {x, model::VarDirection::Input, model::Type::boolean(), std::nullopt, "", {}, {}, {}});
+    pou.variables.push_back({x,
+                             model::VarDirection::Input,
+                             model::Type::boolean(),
+                             std::nullopt,
+                             "",
+                             {},
+                             {},
+                             {},
+                             false});
     model::Chart c;
     c.name = "G" + std::to_string(i);
     model::Step a, b;

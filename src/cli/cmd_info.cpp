@@ -11,6 +11,7 @@
 #include "model/names.hpp"
 #include "model/networks.hpp"
 #include "report/text_encoding.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
@@ -125,6 +126,25 @@ ordered_json pou_info(const model::Pou& pou) {
   return j;
 }
 
+/// The variables that the run (default options: every PROGRAM) reads and no POU of it writes,
+/// read as inputs (docs/semantics.md 1.8); null when the semantics cannot model the project.
+ordered_json unwritten_info(const model::Project& p) {
+  model::Diagnostics ignored;  // `sfcv lint` reports them
+  const auto system = semantics::make_iec61131_system(p, semantics::Iec61131Options{}, ignored);
+  if (!system) return nullptr;
+  auto list = ordered_json::array();
+  for (const auto& u : semantics::unwritten_variables(*system)) {
+    ordered_json j;
+    j["name"] = u.name;
+    j["type"] = u.type.name;
+    j["declared"] = u.declared.str();
+    j["read_in"] = u.read_in;
+    j["read_line"] = u.read_at.line;
+    list.push_back(j);
+  }
+  return list;
+}
+
 ordered_json project_info(const std::string& file, const model::Project& p) {
   ordered_json j;
   j["model"] = file;
@@ -135,6 +155,7 @@ ordered_json project_info(const std::string& file, const model::Project& p) {
   auto pous = ordered_json::array();
   for (const auto& pou : p.pous) pous.push_back(pou_info(pou));
   j["pous"] = pous;
+  j["unwritten"] = p.dialect == model::Dialect::Grafcet ? ordered_json::array() : unwritten_info(p);
   return j;
 }
 
@@ -177,6 +198,22 @@ void print_text(const ordered_json& j, std::ostream& out) {
     if (grafcet || pou["stored_actions"] != 0 || pou["forcing_orders"] != 0)
       out << "  stored actions: " << pou["stored_actions"]
           << ", forcing orders: " << pou["forcing_orders"] << "\n";
+  }
+  if (grafcet) return;
+  const auto& u = j["unwritten"];
+  out << "\n";
+  if (u.is_null()) {
+    out << "unwritten variables: not computed (the IEC 61131-3 semantics cannot model this "
+           "project as a whole: see sfcv lint)\n";
+    return;
+  }
+  out << "unwritten variables (read as inputs, free each cycle; --unwritten keep holds them): "
+      << u.size() << "\n";
+  for (const auto& v : u) {
+    out << "  " << v["name"].get<std::string>() << " : " << v["type"].get<std::string>()
+        << " (read in " << v["read_in"].get<std::string>();
+    if (v["read_line"].get<int>() > 0) out << ", line " << v["read_line"].get<int>();
+    out << ")\n";
   }
 }
 }  // namespace

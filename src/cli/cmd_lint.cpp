@@ -55,8 +55,18 @@ model::Diagnostics semantic_diagnostics(const model::Project& project) {
   model::Diagnostics out;
   if (project.dialect == model::Dialect::Grafcet)
     semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, out);
-  else
-    semantics::make_iec61131_system(project, semantics::Iec61131Options{}, out);
+  else if (const auto system =
+               semantics::make_iec61131_system(project, semantics::Iec61131Options{}, out))
+    // One warning per variable that the run reads and nothing writes, at its declaration
+    // (docs/semantics.md 1.8): perhaps a sensor whose I/O mapping is not in the file, perhaps
+    // a constant not declared CONSTANT, perhaps a forgotten assignment.
+    for (const auto& u : semantics::unwritten_variables(*system))
+      out.push_back({model::Severity::Warning, u.declared,
+                     "variable '" + u.name + "' is read (in " + u.read_in +
+                         (u.read_at.line > 0 ? ", line " + std::to_string(u.read_at.line) : "") +
+                         ") but no POU of the run writes it: it is an input, free each cycle "
+                         "(declare it CONSTANT if it is one; --unwritten keep holds it at its "
+                         "initial value)"});
   std::erase_if(out,
                 [](const model::Diagnostic& d) { return d.severity == model::Severity::Note; });
   return out;

@@ -41,4 +41,10 @@ semantics::TimeMode parse_time_mode(const std::string& text) {
   throw InputError("bad --time '" + text + "' (expected abstract or discrete)");
 }
 
+semantics::UnwrittenMode parse_unwritten(const std::string& text) {
+  if (text == "free") return semantics::UnwrittenMode::Free;
+  if (text == "keep") return semantics::UnwrittenMode::Keep;
+  throw InputError("bad --unwritten '" + text + "' (expected free or keep)");
+}
+
 }  // namespace sfcv::cli

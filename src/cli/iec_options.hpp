@@ -16,5 +16,7 @@ std::int64_t parse_cycle_ms(const std::string& text);
 semantics::PriorityMode parse_priority(const std::string& text);
 /// "abstract" or "discrete".
 semantics::TimeMode parse_time_mode(const std::string& text);
+/// "free" or "keep" (--unwritten).
+semantics::UnwrittenMode parse_unwritten(const std::string& text);
 
 }  // namespace sfcv::cli

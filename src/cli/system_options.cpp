@@ -22,6 +22,9 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
   sub.add_option("--priority", o.priority, "IEC conflicts: standard (default) or none");
   sub.add_option("--time", o.time, "IEC timers: abstract (default) or discrete");
   sub.add_option("--cycle", o.cycle, "IEC cycle time for --time discrete (default 10ms)");
+  sub.add_option("--unwritten", o.unwritten,
+                 "IEC variables that the run reads and no POU of it writes: free (default: "
+                 "inputs, any value each cycle) or keep (their initial values)");
 }
 
 std::string chosen_semantics(const model::Project& project, const SystemOptions& o) {
@@ -40,10 +43,11 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
   model::Diagnostics diags;
   if (built.semantics == "grafcet") {
     // An IEC option on a Grafcet would be silently ignored: say so instead.
-    if (!o.pous.empty() || o.priority != "standard" || o.time != "abstract" || o.cycle != "10ms")
+    if (!o.pous.empty() || o.priority != "standard" || o.time != "abstract" || o.cycle != "10ms" ||
+        o.unwritten != "free")
       throw InputError(command +
-                       ": --pou, --priority, --time and --cycle apply to the IEC 61131-3 "
-                       "semantics only");
+                       ": --pou, --priority, --time, --cycle and --unwritten apply to the IEC "
+                       "61131-3 semantics only");
     semantics::GrafcetOptions g;
     g.single_input_change = !o.multi_input_change;
     g.assumptions = assumptions;
@@ -56,6 +60,7 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     i.priority = parse_priority(o.priority);
     i.time = parse_time_mode(o.time);
     i.cycle_ms = parse_cycle_ms(o.cycle);
+    i.unwritten = parse_unwritten(o.unwritten);
     i.pous = o.pous;
     i.action_order = action_order;
     i.assumptions = assumptions;

@@ -1,8 +1,9 @@
 #pragma once
 // Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
 // The options that choose and parametrise the semantics (--semantics, --pou, --priority, --time,
-// --cycle, --multi-input-change), registered and turned into a transition system in one place,
-// so that check, query, rsg, simulate and export build the same system from the same flags.
+// --cycle, --unwritten, --multi-input-change), registered and turned into a transition system in
+// one place, so that check, query, rsg, simulate and export build the same system from the same
+// flags.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -22,6 +23,7 @@ struct SystemOptions {
   std::string priority = "standard";
   std::string time = "abstract";
   std::string cycle = "10ms";
+  std::string unwritten = "free";  ///< variables no POU of the run writes: free or keep
   bool multi_input_change = false;
 };
 

@@ -189,8 +189,9 @@ class Writer {
     std::size_t i = 0;
     while (i < vars.size()) {
       const auto dir = vars[i]->direction;
-      out += "  " + section_word(dir) + "\n";
-      for (; i < vars.size() && vars[i]->direction == dir; ++i) {
+      const bool constant = vars[i]->constant;
+      out += "  " + section_word(dir) + (constant ? " CONSTANT" : "") + "\n";
+      for (; i < vars.size() && vars[i]->direction == dir && vars[i]->constant == constant; ++i) {
         const auto& v = *vars[i];
         out += "    " + ident(v.name, "variable name");
         if (!v.address.empty()) out += " AT " + address(v.address);

@@ -250,8 +250,10 @@ class PouWriter {
     std::size_t i = 0;
     while (i < vars.size()) {
       const auto dir = vars[i]->direction;
+      const bool constant = vars[i]->constant;
       auto section = interface.append_child(section_name(dir));
-      for (; i < vars.size() && vars[i]->direction == dir; ++i) {
+      if (constant) section.append_attribute("constant") = true;
+      for (; i < vars.size() && vars[i]->direction == dir && vars[i]->constant == constant; ++i) {
         const auto& v = *vars[i];
         auto var = section.append_child("variable");
         var.append_attribute("name") = v.name.c_str();

@@ -224,6 +224,7 @@ void read_section(XmlContext& ctx, pugi::xml_node section, model::VarDirection d
       var.name = trim(v.attribute("name").value());
       var.direction = *dir;
       var.address = trim(v.attribute("address").value());
+      var.constant = section.attribute("constant").as_bool(false);
       var.where = ctx.where(v);
       if (var.name.empty()) {
         ctx.error(v, "variable without a name");

@@ -860,10 +860,16 @@ void Parser::var_section(std::vector<model::Variable>& out) {
   for (const auto& s : kSections)
     if (model::iequals(s.word, kw.text)) direction = s.direction;
   if (!direction) fail(kw, "unsupported: " + upper(kw.text) + " section");
-  while (accept_word("CONSTANT") || accept_word("RETAIN") || accept_word("NON_RETAIN") ||
-         accept_word("PERSISTENT")) {
+  bool constant = false;
+  for (;;) {
+    if (accept_word("CONSTANT"))
+      constant = true;
+    else if (!accept_word("RETAIN") && !accept_word("NON_RETAIN") && !accept_word("PERSISTENT"))
+      break;
   }
+  const auto first = out.size();
   declarations(*direction, "END_VAR", out);
+  for (auto i = first; i < out.size(); ++i) out[i].constant = constant;
   next();  // END_VAR
 }
 

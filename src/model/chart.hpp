@@ -43,6 +43,9 @@ struct Variable {
   /// The initial value of an ARRAY, STRUCT or enumeration variable as written
   /// (`[1, 2(0)]`, `(x := 1)`, `Red`); null when none.
   ExprPtr declared_initial;
+  /// Declared in a CONSTANT section (`VAR CONSTANT`, PLCopen `constant="true"`): no one may
+  /// write it, so the semantics never reads it as an input (docs/semantics.md 1.8).
+  bool constant = false;
 };
 
 // -------------------------------------------------------------------------- user data types

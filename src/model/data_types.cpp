@@ -160,6 +160,7 @@ class Lowering {
             Variable e = f;
             e.name = v.name + "." + f.name;
             e.direction = v.direction;
+            e.constant = v.constant;
             e.address.clear();
             e.where = v.where;
             const auto fi = field_init.find(to_upper(f.name));
@@ -171,6 +172,7 @@ class Lowering {
           Variable e = t->fields.front();
           e.name = v.name;
           e.direction = v.direction;
+          e.constant = v.constant;
           e.address = v.address;
           e.where = v.where;
           if (!init && v.initial) {

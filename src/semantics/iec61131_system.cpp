@@ -234,4 +234,39 @@ TransitionSystemPtr make_iec61131_system(const model::Project& project,
   return std::make_unique<iec::Iec61131System>(std::move(p));
 }
 
+namespace {
+
+std::string read_place(const UnwrittenVariable& u) {
+  std::string s = "read in " + u.read_in;
+  if (u.read_at.line > 0) s += ", line " + std::to_string(u.read_at.line);
+  return s;
+}
+
+}  // namespace
+
+std::string unwritten_note(const std::vector<UnwrittenVariable>& list, std::size_t shown) {
+  if (list.empty()) return {};
+  const bool free = list.front().free;
+  const auto n = list.size();
+  std::string s =
+      std::to_string(n) + (n == 1 ? " variable" : " variables") +
+      " that no POU of the run writes " + (n == 1 ? "is" : "are") +
+      (free ? " read as " + std::string(n == 1 ? "an input" : "inputs") + " (free each cycle): "
+            : std::string(n == 1 ? " held at its initial value" : " held at their initial values") +
+                  " (--unwritten keep): ");
+  for (std::size_t i = 0; i < n && i < shown; ++i)
+    s += (i ? ", " : "") + list[i].name + " (" + read_place(list[i]) + ")";
+  if (n > shown) s += " and " + std::to_string(n - shown) + " more (sfcv info lists them)";
+  s += free ? std::string("; --unwritten keep holds ") +
+                  (n == 1 ? "it at its initial value" : "them at their initial values")
+            : std::string("; by default (--unwritten free) ") + (n == 1 ? "it is" : "they are") +
+                  " free each cycle";
+  return s;
+}
+
+std::vector<UnwrittenVariable> unwritten_variables(const TransitionSystem& system) {
+  const auto* iec = dynamic_cast<const iec::Iec61131System*>(&system);
+  return iec ? iec->program().unwritten : std::vector<UnwrittenVariable>{};
+}
+
 }  // namespace sfcv::semantics

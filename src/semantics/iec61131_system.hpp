@@ -14,6 +14,8 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
@@ -35,6 +37,25 @@ class SemanticsLimitError : public LimitReached {
 };
 
 inline constexpr std::int64_t kMaxEnumeratedValues = 4096;
+
+/// A variable that the run reads and that no POU of the run writes (no assignment, output
+/// binding, action variable, VAR_IN_OUT binding), neither CONSTANT nor a located output (%Q) nor
+/// a duration: an input free each cycle under UnwrittenMode::Free, its initial value under Keep
+/// (docs/semantics.md 1.8).
+struct UnwrittenVariable {
+  std::string name;  ///< "Main.B1", "Main.Crane.x" (an instance's), "GVL.x" (a global)
+  model::Type type;
+  model::SourceLocation declared;
+  std::string read_in;  ///< the program, instance or function that reads it first
+  model::SourceLocation read_at;
+  bool free = true;  ///< read as an input (UnwrittenMode::Free)
+};
+
+/// The unwritten variables of a system made by make_iec61131_system (empty for any other).
+std::vector<UnwrittenVariable> unwritten_variables(const TransitionSystem& system);
+
+/// The one note that lists them (at most `shown` by name): empty when there are none.
+std::string unwritten_note(const std::vector<UnwrittenVariable>& list, std::size_t shown = 6);
 
 /// Builds the scan-cycle semantics of the POUs `options.pous` of `project` (all run in one cycle,
 /// in the given order). With `options.pous` empty: the single POU with an SFC body (PROGRAMs

@@ -133,7 +133,11 @@ bool Compiler::is_global_list(const model::Pou& pou) {
 
 std::optional<Ref> Compiler::global_ref(const std::string& upper_name) const {
   auto it = global_fields.find(upper_name);
-  if (it == global_fields.end()) return std::nullopt;
+  if (it == global_fields.end()) {
+    const auto in = global_inputs.find(upper_name);
+    if (in == global_inputs.end()) return std::nullopt;
+    return Ref{Ref::Input, in->second, p.inputs[in->second].type.kind == TypeKind::Bool};
+  }
   return Ref{Ref::Field, it->second, static_cast<bool>(field_is_bool[it->second])};
 }
 
@@ -172,13 +176,60 @@ std::optional<std::int64_t> Compiler::constant_variable(const model::Pou& pou,
   const auto up = model::to_upper(var->name);
   if (written.count(model::to_upper(pou.name) + "|" + up) || written.count("*|" + up))
     return std::nullopt;
+  // Not free even when nothing writes it (1.8): a duration must be a constant.
+  durations.insert(model::to_upper(pou.name) + "|" + up);
   return var->initial.value_or(0);
+}
+
+std::string Compiler::free_key(const std::string& scope, const std::string& var) {
+  return model::to_upper(scope) + "|" + model::to_upper(var);
+}
+
+bool Compiler::is_free(const PouScope& sc, const model::Variable& v) const {
+  return !free_variables.empty() && free_variables.count(free_key(sc.name, v.name)) > 0;
+}
+
+std::vector<UnwrittenVariable> Compiler::unwritten(std::vector<std::string>& keys) const {
+  // Every write of the compiled run: assignments (output bindings, VAR_IN_OUT copies back and
+  // FOR counters are assignments too), action variables, function outputs bound with `=>`.
+  std::vector<std::uint8_t> written_field(p.initial.size(), 0);
+  for (const auto& st : p.stmts)
+    if (st.op == SOp::Assign && st.target < written_field.size()) written_field[st.target] = 1;
+  for (const auto& a : p.actions)
+    if (a.variable != kNone) written_field[static_cast<std::size_t>(a.variable)] = 1;
+  for (const auto& copies : p.call_output_copies)
+    for (const auto& [from, to] : copies) written_field[to] = 1;
+  std::vector<UnwrittenVariable> out;
+  for (const auto& d : declared_fields) {
+    const auto& v = *d.var;
+    const auto read = first_read.find(d.field);
+    if (written_field[d.field] || read == first_read.end() || v.constant ||
+        v.address.rfind("%Q", 0) == 0 ||
+        durations.count(free_key(scopes[d.scope].pou->name, v.name)))
+      continue;
+    // An SFC flag (1.3a) that no POU sets is an operator's command the program does not give:
+    // free, a reset at any cycle would make every deadlock and return check hold through it.
+    const auto up = model::to_upper(v.name);
+    // (The type as declared: an instance running its SFC actions as units has no chart itself.)
+    const auto* type = project.find_pou(scopes[d.scope].pou->name);
+    if ((type ? type : scopes[d.scope].pou)->has_sfc() && (up == "SFCINIT" || up == "SFCRESET"))
+      continue;
+    UnwrittenVariable u;
+    u.name = p.field_names[d.field];
+    u.type = value_type(v.type);
+    u.declared = v.where;
+    u.read_in = read->second.scope;
+    u.read_at = read->second.where;
+    out.push_back(std::move(u));
+    keys.push_back(free_key(scopes[d.scope].name, v.name));
+  }
+  return out;
 }
 
 void Compiler::variables(const std::vector<const model::Pou*>& pous) {
   // Providers: outputs and globals, by name, for connecting other POUs' inputs.
-  std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> providers;  // name -> (pou, var)
-  auto& globals = global_fields;                                             // name -> field
+  std::map<std::string, std::pair<std::uint32_t, Ref>> providers;  // name -> (pou, variable)
+  auto& globals = global_fields;                                   // name -> field
   std::map<std::string, int> name_count;
   auto is_input = [](const model::Variable& v) {
     return v.direction == model::VarDirection::Input ||
@@ -192,6 +243,8 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
     for (const auto& v : pou->variables)
       if (v.type.kind != TypeKind::FunctionBlock && !is_input(v))
         ++name_count[model::to_upper(v.name)];
+      else if (v.type.kind != TypeKind::FunctionBlock)
+        input_names.insert(model::to_upper(v.name));
   for (std::uint32_t pi = 0; pi < pous.size(); ++pi) {
     PouScope sc;
     sc.pou = pous[pi];
@@ -236,8 +289,23 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
           sc.names[up] = Ref{Ref::Field, it->second, v.type.kind == TypeKind::Bool};
           continue;
         }
+        if (auto it = global_inputs.find(up); it != global_inputs.end()) {
+          sc.names[up] = Ref{Ref::Input, it->second, v.type.kind == TypeKind::Bool};
+          continue;
+        }
       }
       const auto t = value_type(v.type);
+      if (is_free(sc, v)) {
+        // No POU of the run writes it: an input, any value of its type each cycle (1.8). Named
+        // as its field would be, unless an input of the run has that name.
+        const bool unique = (name_count[up] == 1 || shared) && !input_names.count(up);
+        const auto in = add_input(unique ? v.name : pou.name + "." + v.name, t, false);
+        const Ref r{Ref::Input, in, t.kind == TypeKind::Bool};
+        sc.names[up] = r;
+        if (shared) global_inputs[up] = in;
+        if (is_output(v) || shared) providers.emplace(up, std::make_pair(pi, r));
+        continue;
+      }
       std::int64_t init = v.initial.value_or(0);
       if (!v.initial && (0 < t.lo || 0 > t.hi)) init = t.lo;
       if (init < t.lo || init > t.hi) {
@@ -249,8 +317,10 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
       const auto f =
           add_field(display, FieldKind::Variable, t.lo, t.hi, init, t.kind == TypeKind::Bool);
       sc.names[up] = Ref{Ref::Field, f, t.kind == TypeKind::Bool};
+      declared_fields.push_back({f, pi, &v});
       if (shared) globals[up] = f;
-      if (is_output(v) || shared) providers.emplace(up, std::make_pair(pi, f));
+      if (is_output(v) || shared)
+        providers.emplace(up, std::make_pair(pi, Ref{Ref::Field, f, t.kind == TypeKind::Bool}));
       Observable o;
       o.name = display;
       o.aliases = {pou.name + "." + v.name};
@@ -269,7 +339,8 @@ void Compiler::variables(const std::vector<const model::Pou*>& pous) {
       if (v.type.kind == TypeKind::FunctionBlock || !is_input(v)) continue;
       const auto up = model::to_upper(v.name);
       if (auto it = providers.find(up); it != providers.end() && it->second.first != pi) {
-        sc.names[up] = Ref{Ref::Field, it->second.second, v.type.kind == TypeKind::Bool};
+        sc.names[up] =
+            Ref{it->second.second.kind, it->second.second.index, v.type.kind == TypeKind::Bool};
         continue;
       }
       auto it = inputs_by_name.find(up);
@@ -386,8 +457,33 @@ bool compile(const model::Project& project, const Iec61131Options& options, Prog
              model::Diagnostics& diagnostics) {
   program.options = options;
   if (program.options.cycle_ms <= 0) program.options.cycle_ms = 1;
-  detail::Compiler c(project, program, diagnostics);
-  return c.run();
+  std::vector<UnwrittenVariable> unwritten;
+  std::vector<std::string> keys;
+  {
+    detail::Compiler c(project, program, diagnostics);
+    if (!c.run()) return false;
+    unwritten = c.unwritten(keys);
+  }
+  if (unwritten.empty()) return true;
+  if (options.unwritten == UnwrittenMode::Free) {
+    // Compiled again with those variables as inputs: every use of them (a comparison that splits
+    // an integer input, a global, an instance's variable) is then an input's, as for VAR_INPUT.
+    Program freed;
+    freed.options = program.options;
+    model::Diagnostics again;  // the first pass reported the rest
+    detail::Compiler c(project, freed, again);
+    c.free_variables.insert(keys.begin(), keys.end());
+    if (!c.run()) {
+      for (auto& d : again)
+        if (d.severity == model::Severity::Error) diagnostics.push_back(std::move(d));
+      return false;
+    }
+    program = std::move(freed);
+  }
+  for (auto& u : unwritten) u.free = options.unwritten == UnwrittenMode::Free;
+  diagnostics.push_back({model::Severity::Note, project.where, unwritten_note(unwritten)});
+  program.unwritten = std::move(unwritten);
+  return true;
 }
 
 }  // namespace sfcv::semantics::iec

@@ -18,6 +18,7 @@ std::uint32_t Compiler::node(Node n, std::vector<std::uint32_t> kids) {
   n.count = static_cast<std::uint32_t>(kids.size());
   p.kids.insert(p.kids.end(), kids.begin(), kids.end());
   p.nodes.push_back(n);
+  if (n.op == Op::Field && !first_read.count(n.a)) first_read.emplace(n.a, reading_at);
   return static_cast<std::uint32_t>(p.nodes.size() - 1);
 }
 
@@ -166,22 +167,26 @@ std::uint32_t Compiler::compare(const PouScope& sc, const model::Expr& e, int co
     return id;
   }
   // An integer input against a constant: the successor function splits its interval.
-  auto int_input = [&](const model::Expr& x) {
-    if (x.kind != ExprKind::Name) return false;
-    auto it = sc.names.find(model::to_upper(x.name));
-    return it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool;
+  // (A name of the scope, or an unqualified global: a free one is an input, 1.8.)
+  auto int_input = [&](const model::Expr& x) -> std::optional<Ref> {
+    if (x.kind != ExprKind::Name) return std::nullopt;
+    const auto up = model::to_upper(x.name);
+    auto it = sc.names.find(up);
+    const auto r = it != sc.names.end() ? std::optional<Ref>(it->second) : global_ref(up);
+    if (r && r->kind == Ref::Input && !r->is_bool) return r;
+    return std::nullopt;
   };
   if (!int_input(*lhs) && int_input(*rhs)) {
     std::swap(lhs, rhs);
     cmp = flip(cmp);
   }
   if (lhs->kind == ExprKind::Name) {
-    auto it = sc.names.find(model::to_upper(lhs->name));
+    const auto in = int_input(*lhs);
     const auto k = literal(*rhs);
-    if (it != sc.names.end() && it->second.kind == Ref::Input && !it->second.is_bool) {
+    if (in) {
       Node n;
       n.cmp = cmp;
-      n.a = it->second.index;
+      n.a = in->index;
       if (k) {
         n.op = Op::InputCmp;
         n.k = *k;
@@ -213,6 +218,7 @@ VT Compiler::bool_if_literal(const model::Expr& e, VT t) {
 }
 
 std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  reading(sc, e.where);
   switch (e.kind) {
     case ExprKind::BoolConst:
       type = VT::Bool;
@@ -329,6 +335,7 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
 }
 
 std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int context, VT& type) {
+  reading(sc, e.where);
   const auto mem = model::to_upper(e.member);
   type = VT::Bool;
   {

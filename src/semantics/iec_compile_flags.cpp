@@ -52,6 +52,7 @@ void Compiler::sfc_flags() {
                            " names a CODESYS/TwinCAT SFC flag and must be a BOOL variable");
         continue;
       }
+      reading(sc, v.where);
       Node n;
       n.op = it->second.kind == Ref::Field ? Op::Field : Op::Input;
       n.a = it->second.index;

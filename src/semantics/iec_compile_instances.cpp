@@ -111,7 +111,12 @@ void Compiler::instantiate(std::uint32_t parent, const model::Variable& v, int d
     const auto& sc = scopes[si];
     const std::string display = sc.name + "." + w.name;
     const bool is_bool = t.kind == TypeKind::Bool;
+    if (is_free(sc, w)) {  // no POU of the run writes it: any value each cycle (1.8)
+      scopes[si].names[up] = Ref{Ref::Input, add_input(display, t, false), is_bool};
+      continue;
+    }
     const auto f = add_field(display, FieldKind::Variable, t.lo, t.hi, init, is_bool);
+    declared_fields.push_back({f, si, &w});
     scopes[si].names[up] = Ref{Ref::Field, f, is_bool};
     Observable o;
     o.name = display;
@@ -246,8 +251,9 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
   for (const auto& [output, var] : s.outputs) {
     const auto* decl = callee.pou->find_variable(output);
     auto it = callee.names.find(model::to_upper(output));
+    // (An output that the instance never writes may be a free input, docs/semantics.md 1.8.)
     if (!decl || decl->direction != model::VarDirection::Output || it == callee.names.end() ||
-        it->second.kind != Ref::Field) {
+        (it->second.kind != Ref::Field && it->second.kind != Ref::Input)) {
       error(s.where,
             "'" + s.target + "' (" + callee.pou->name + ") has no output '" + output + "'");
       continue;
@@ -259,7 +265,7 @@ void Compiler::instance_call(const PouScope& sc, const model::Stmt& s, std::uint
     a.where = s.where.str();
     a.target = dst->index;
     Node n;
-    n.op = Op::Field;
+    n.op = it->second.kind == Ref::Field ? Op::Field : Op::Input;
     n.a = it->second.index;
     a.expr = node(n);
     push(std::move(a));

@@ -59,6 +59,7 @@ void Compiler::function_statement(const PouScope& sc, const model::Stmt& s, Stmt
 }
 
 std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
+  reading(sc, s.where);
   Stmt out;
   out.where = s.where.str();
   switch (s.kind) {

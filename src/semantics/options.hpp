@@ -24,6 +24,12 @@ enum class TimeMode {
   Discrete,  ///< exact cycle counters with the given cycle time
 };
 
+/// Variables that the run reads and no POU of the run writes (docs/semantics.md 1.8).
+enum class UnwrittenMode {
+  Free,  ///< inputs: any value of their type each cycle (sound for "holds")
+  Keep,  ///< held at their initial values (the reading before issue 53)
+};
+
 /// The order in which active actions execute within a cycle.
 enum class ActionOrder { Declaration, Alphabetical };
 
@@ -32,6 +38,7 @@ struct Iec61131Options {
   TimeMode time = TimeMode::Abstract;
   std::int64_t cycle_ms = 10;  ///< TimeMode::Discrete only
   ActionOrder action_order = ActionOrder::Declaration;
+  UnwrittenMode unwritten = UnwrittenMode::Free;
   /// POUs run one after the other in each cycle (a controller and plant models); empty = the
   /// single POU with an SFC body (PROGRAMs preferred), several candidates being an error.
   std::vector<std::string> pous;

@@ -411,6 +411,10 @@ TEST(InstancesCorpus, EveryPouIsCheckedAloneOrRefusedAsDocumented) {
   EXPECT_EQ(checked, 47);
 }
 
+// Main's sensors are plain VARs (the export has no I/O mapping). Held at their initial values
+// (--unwritten keep, the reading before issue 53) the emergency stops read FALSE, no instance
+// is ever called, and the machine has 2 states; read as inputs (the default, docs/semantics.md
+// 1.8) the instances run: the crane starts and lowers.
 TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
   SFCV_REQUIRE_CORPUS(corpus);
   for (const char* f : {"07_codesys_ppu_scenario3v1.xml", "12_codesys_ppu_scenario10.xml"}) {
@@ -420,13 +424,24 @@ TEST(InstancesCorpus, PickAndPlaceProjectsAreCheckedWhole) {
         run_sfcv("check " + path +
                  " --ctl 'AG (Crane.Init & Mag.Init & Stamp.Init)' --ctl 'AG !Actuator_CraneLower' "
                  "--ctl 'AG (Main.Crane.Init.X <-> Crane.Init)' --checks none --trace none "
-                 "--timeout 120");
+                 "--timeout 120 --unwritten keep");
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
     EXPECT_NE(r.out.find("2 states"), std::string::npos) << r.out;
     // The instances exist and are distinct: a step of one instance is not another's.
     r = run_sfcv("check " + path +
-                 " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120");
+                 " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120 "
+                 "--unwritten keep");
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    // By default the sensors are free: the crane starts, and lowers.
+    r = run_sfcv("check " + path +
+                 " --ctl 'EF Crane.Start_Crane' --checks none --trace none --timeout 120 "
+                 "--engine bmc --quiet");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv("check " + path +
+                 " --ctl 'AG (Crane.Init & Mag.Init & Stamp.Init)' --ctl 'AG !Actuator_CraneLower' "
+                 "--checks none --trace none --timeout 120 --engine bmc --quiet");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(r.out.find("holds"), std::string::npos) << r.out;
   }
 }
 

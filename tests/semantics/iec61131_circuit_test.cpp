@@ -39,7 +39,12 @@ TransitionSystemPtr system_for(const std::string& text, Iec61131Options options 
   }
   model::Diagnostics diags;
   auto ts = make_iec61131_system(*loaded.project, options, diags);
-  for (const auto& d : diags) ADD_FAILURE() << d.str();
+  // The note listing variables read as inputs (docs/semantics.md 1.8) is expected: the circuit
+  // must agree with the machine on them too.
+  for (const auto& d : diags)
+    if (d.severity != model::Severity::Note ||
+        d.message.find("no POU of the run writes") == std::string::npos)
+      ADD_FAILURE() << d.str();
   return ts;
 }
 

@@ -27,17 +27,17 @@ class GrafcetBuilder {
 
   GrafcetBuilder& input(const std::string& name, model::Type type = model::Type::boolean()) {
     pou().variables.push_back(
-        {name, model::VarDirection::Input, type, std::nullopt, "", {}, {}, {}});
+        {name, model::VarDirection::Input, type, std::nullopt, "", {}, {}, {}, false});
     return *this;
   }
   GrafcetBuilder& output(const std::string& name, model::Type type = model::Type::boolean()) {
     pou().variables.push_back(
-        {name, model::VarDirection::Output, type, std::nullopt, "", {}, {}, {}});
+        {name, model::VarDirection::Output, type, std::nullopt, "", {}, {}, {}, false});
     return *this;
   }
   GrafcetBuilder& local(const std::string& name, model::Type type) {
     pou().variables.push_back(
-        {name, model::VarDirection::Local, std::move(type), std::nullopt, "", {}, {}, {}});
+        {name, model::VarDirection::Local, std::move(type), std::nullopt, "", {}, {}, {}, false});
     return *this;
   }
   GrafcetBuilder& chart(const std::string& name) {

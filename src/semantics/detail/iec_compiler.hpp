@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -91,6 +92,41 @@ struct Compiler {
                           std::int64_t init, bool is_bool);
 
   std::uint32_t add_input(std::string name, model::Type type, bool pseudo);
+
+  // ---------------------------------------- variables no POU of the run writes (1.8)
+  /// "SCOPE|VAR" (upper-case scope name, variable): read as inputs. compile() fills it for its
+  /// second pass under UnwrittenMode::Free, with the unwritten variables of the first.
+  std::set<std::string> free_variables;
+  /// A declared variable held in a field: may be unwritten.
+  struct Declared {
+    std::uint32_t field = 0, scope = 0;
+    const model::Variable* var = nullptr;
+  };
+  std::vector<Declared> declared_fields;
+  /// Where the run first reads each field (the scope's name, the place): node() records it
+  /// from the context that expr() and stmt() set.
+  struct ReadAt {
+    std::string scope;
+    model::SourceLocation where;
+  };
+  std::unordered_map<std::uint32_t, ReadAt> first_read;
+  ReadAt reading_at;
+  void reading(const PouScope& sc, const model::SourceLocation& where) {
+    if (!where.known()) return;
+    reading_at.scope = sc.name;
+    reading_at.where = where;
+  }
+  /// "POU|VAR": variables read as a constant duration (constant_variable): they keep their
+  /// initial value, as sfcv needs constant durations (docs/semantics.md 1.6).
+  std::set<std::string> durations;
+  /// Upper-case names of the run's inputs (VAR_INPUT, %I): a free variable is not named alike.
+  std::set<std::string> input_names;
+  std::map<std::string, std::uint32_t> global_inputs;  ///< free VAR_GLOBALs by upper-case name
+  static std::string free_key(const std::string& scope, const std::string& var);
+  bool is_free(const PouScope& sc, const model::Variable& v) const;
+  /// After run(): the declared variables that the run reads and nothing writes, and for each
+  /// its key in free_variables.
+  std::vector<UnwrittenVariable> unwritten(std::vector<std::string>& keys) const;
 
   // ---------------------------------------------------------------------- POU selection
   std::vector<const model::Pou*> select();

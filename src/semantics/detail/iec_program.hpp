@@ -9,6 +9,7 @@
 
 #include "model/chart.hpp"
 #include "model/diagnostic.hpp"
+#include "semantics/iec61131_system.hpp"
 #include "semantics/input_condition.hpp"
 #include "semantics/options.hpp"
 #include "semantics/state_layout.hpp"
@@ -293,6 +294,8 @@ struct Program {
   std::vector<std::int64_t> field_lo, field_hi;  ///< value range per field (range errors)
   std::vector<std::string> field_names;
   bool has_instances = false;
+  /// The variables the run reads and no POU of it writes (inputs under UnwrittenMode::Free).
+  std::vector<UnwrittenVariable> unwritten;
 };
 
 /// Compiles; returns false with Error diagnostics when something cannot be modelled faithfully.
