@@ -165,35 +165,6 @@ std::vector<OutputPath> output_paths(const CheckOptions& o) {
           {o.html, "--html"}};
 }
 
-/// The questions of `task` (its properties, then its standard checks), each unknown for `why`:
-/// the report of an engine that stopped on a limit before it had a report of its own, so that
-/// the text and every report still list every question.
-logic::CheckReport unknown_report(const logic::CheckTask& task, const std::string& engine,
-                                  const LimitReached& why) {
-  logic::CheckReport report;
-  report.engine = engine;
-  report.states_known = false;
-  report.edges_known = false;
-  report.complete = false;
-  report.limit = to_string(why.which());
-  for (const auto& p : task.properties) {
-    logic::PropertyResult r;
-    r.name = p.name;
-    r.formula = logic::to_string(p.formula);
-    r.where = p.where;
-    r.message = why.what();
-    report.results.push_back(std::move(r));
-  }
-  for (auto c : task.checks) {
-    logic::PropertyResult r;
-    r.name = std::string(logic::to_string(c));
-    r.check = r.name;
-    r.message = why.what();
-    report.results.push_back(std::move(r));
-  }
-  return report;
-}
-
 /// After SIGINT or SIGTERM: what the engines had not decided is unknown for that reason (the
 /// engines saw the signal as a cancel, which they word as a time limit), limit "interrupted".
 void mark_interrupted(logic::CheckReport& result) {
@@ -318,7 +289,7 @@ int run_check_body(const CheckOptions& o) {
             : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)->check(task);
   } catch (const LimitReached& e) {
     // Stopped before it had a report: every question is unknown, and still reported.
-    result = unknown_report(task, o.engine, e);
+    result = logic::unknown_report(task, o.engine, e);
   }
   if (interrupted()) mark_interrupted(result);
   progress.phase("render");

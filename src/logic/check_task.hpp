@@ -5,11 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "logic/check_result.hpp"
 #include "logic/formula.hpp"
 #include "logic/fwd.hpp"
 #include "logic/standard_checks.hpp"
 #include "model/budget.hpp"
 #include "model/chart.hpp"
+#include "model/errors.hpp"
 #include "model/source_location.hpp"
 #include "semantics/transition_system.hpp"
 
@@ -66,6 +68,13 @@ inline void set_deadlock_paths(CheckTask& task, DeadlockPaths paths) {
   if (paths == DeadlockPaths::Drop && task.fairness.empty())
     task.fairness.push_back(make_const(true));
 }
+
+/// The report of an engine that stopped on a limit before it had one of its own: every question
+/// of `task` (its properties, then its standard checks) unknown for `why`, except a standard
+/// check without meaning on the system, which stays n/a; so the text and every report still
+/// list every question.
+CheckReport unknown_report(const CheckTask& task, const std::string& engine,
+                           const LimitReached& why);
 
 inline std::string ltl_refusal(std::string_view engine, const Property& p) {
   return "the " + std::string(engine) + " engine does not check LTL properties ('" + p.name +

@@ -18,29 +18,8 @@ namespace {
 /// The report of a run the semantics stopped before a graph existed (an integer input too wide
 /// to enumerate): every answer is unknown, the limit says why.
 logic::CheckReport all_unknown(const logic::CheckTask& task, const LimitReached& stop) {
-  logic::CheckReport report;
-  report.engine = "explicit";
-  report.complete = false;
-  report.limit = to_string(stop.which());
-  report.edges_known = false;
-  for (const auto& p : task.properties) {
-    logic::PropertyResult r;
-    r.name = p.name;
-    r.formula = logic::to_string(p.formula);
-    r.where = p.where;
-    r.verdict = logic::Verdict::Unknown;
-    r.message = stop.what();
-    report.results.push_back(std::move(r));
-  }
-  for (auto c : task.checks) {
-    logic::PropertyResult r;
-    r.name = std::string(logic::to_string(c));
-    r.check = r.name;
-    const auto why = logic::not_applicable(c, *task.system, task.priority_resolves_conflicts);
-    r.verdict = why ? logic::Verdict::NotApplicable : logic::Verdict::Unknown;
-    r.message = why ? *why : stop.what();
-    report.results.push_back(std::move(r));
-  }
+  auto report = logic::unknown_report(task, "explicit", stop);
+  report.states_known = true;  // none explored: zero states
   return report;
 }
 
