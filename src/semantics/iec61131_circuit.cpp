@@ -1006,7 +1006,10 @@ void SymbolicMachine::build(StateView initial_state) {
   initial_values_.resize(fields.size());
   for (std::uint32_t f = 0; f < fields.size(); ++f) {
     initial_values_[f] = p_.layout.get(initial_state, f);
-    const auto init = static_cast<std::uint64_t>(initial_values_[f] - fields[f].lo);
+    // In unsigned arithmetic: a field of the whole 64-bit range (lo = INT64_MIN) overflows
+    // the signed difference.
+    const auto init =
+        static_cast<std::uint64_t>(initial_values_[f]) - static_cast<std::uint64_t>(fields[f].lo);
     BitVector bits;
     for (std::uint32_t k = 0; k < fields[f].width; ++k) {
       c_.field_latches[f].push_back(static_cast<std::uint32_t>(aig_.latches().size()));

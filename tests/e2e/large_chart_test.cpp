@@ -29,6 +29,14 @@ std::string chain(int n) {
   return sfcv::test::write_temp(text + "END_PROGRAM\n", ".st");
 }
 
+// The bounds are for an optimised build; under AddressSanitizer every instruction costs
+// several (the ci-asan preset measured 8 to 14 CPU s where the release build stays under 6).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kSlowdown = 4;
+#else
+constexpr double kSlowdown = 1;
+#endif
+
 double children_cpu_seconds() {
   rusage u{};
   getrusage(RUSAGE_CHILDREN, &u);
@@ -54,7 +62,7 @@ TEST(LargeChart, EverySubcommandAndEngineStaysWithinItsBudgetOnTenThousandSteps)
   for (const char* cmd : {"lint", "info", "info --json"}) {
     const auto r = cpu_run(std::string(cmd) + " '" + file + "'");
     EXPECT_EQ(r.run.exit_code, 0) << cmd << ": " << r.run.err;
-    EXPECT_LT(r.cpu, 3.0) << cmd;
+    EXPECT_LT(r.cpu, 3.0 * kSlowdown) << cmd;
   }
   for (const char* engine : {"explicit", "bdd", "bmc", "kind", "ic3", "auto"}) {
     const auto r = cpu_run("check '" + file + "' --engine " + engine + " --timeout 2 --quiet");
@@ -62,7 +70,7 @@ TEST(LargeChart, EverySubcommandAndEngineStaysWithinItsBudgetOnTenThousandSteps)
         << engine << ": exit " << r.run.exit_code << "\n"
         << r.run.err;
     // 2 s of budget, then 1 s + 5 % to stop and report, and room for a loaded machine.
-    EXPECT_LT(r.cpu, 6.0) << engine;
+    EXPECT_LT(r.cpu, 6.0 * kSlowdown) << engine;
     EXPECT_NE(r.run.out.find("reachable"), std::string::npos) << engine << ": " << r.run.out;
   }
 }
@@ -75,7 +83,7 @@ TEST(LargeChart, TheBddQueryEngineHoldsTheDeadlineInsideItsOperations) {
   const auto r = cpu_run("query '" + file + "' 'Y - Pred(Y0, T)' --engine bdd --timeout 2");
   EXPECT_EQ(r.run.exit_code, 3) << r.run.err;
   EXPECT_NE(r.run.err.find("time limit"), std::string::npos) << r.run.err;
-  EXPECT_LT(r.cpu, 6.0);
+  EXPECT_LT(r.cpu, 6.0 * kSlowdown);
 }
 
 TEST(LargeChart, NestedEdgesCostOneEvaluationPerLevel) {
@@ -95,7 +103,7 @@ TEST(LargeChart, NestedEdgesCostOneEvaluationPerLevel) {
     const auto r = cpu_run(cmd + " --timeout 2 --quiet");
     // Seen from the previous situation an edge is false, so RE RE ... RE a reads as RE a.
     EXPECT_TRUE(r.run.exit_code == 0 || r.run.exit_code == 1) << cmd << ": " << r.run.err;
-    EXPECT_LT(r.cpu, 2.0) << cmd;
+    EXPECT_LT(r.cpu, 2.0 * kSlowdown) << cmd;
   }
   for (const char* engine : {"explicit", "bdd", "ic3"}) {
     const auto reached = run_sfcv("check '" + file + "' --engine " + engine +

@@ -67,7 +67,7 @@ Bdd SymbolicSystem::observable_nonzero(std::uint32_t o) {
 Bdd SymbolicSystem::field_nonzero(std::uint32_t f) {
   const auto& latches = circuit_.field_latches[f];
   // Zero is stored as (0 - lo); a field whose range excludes zero is never zero.
-  const auto zero = static_cast<std::uint64_t>(-ts_.layout().fields()[f].lo);
+  const auto zero = std::uint64_t{0} - static_cast<std::uint64_t>(ts_.layout().fields()[f].lo);
   if (ts_.layout().fields()[f].lo > 0 || (latches.size() < 64 && (zero >> latches.size()) != 0))
     return Bdd::constant(true);
   Bdd is_zero = Bdd::constant(true);

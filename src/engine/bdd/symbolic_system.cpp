@@ -846,7 +846,7 @@ std::vector<bool> SymbolicSystem::pick_inputs_near(Bdd on_inputs,
     const std::int64_t lo = t.kind == model::TypeKind::Bool ? 0 : t.lo;
     // A delay elapses only when the row says so: pseudo-inputs prefer their lowest value.
     const std::int64_t want = !inputs[i].pseudo && i < near.size() ? near[i] : lo;
-    const auto encoded = static_cast<std::uint64_t>(want - lo);
+    const auto encoded = static_cast<std::uint64_t>(want) - static_cast<std::uint64_t>(lo);
     Bdd same = Bdd::constant(true);
     for (std::size_t k = 0; k < circuit_.input_bits[i].size(); ++k) {
       const Bdd bit = node_bdd(circuit_.input_bits[i][k]);
