@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <memory>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -78,15 +80,83 @@ model::StmtPtr make_if_assign(model::ExprPtr cond, std::string target, model::Ex
   return s;
 }
 
+namespace {
+
+/// Every `connection` element under `n`, at any depth.
+void for_each_connection(pugi::xml_node n, const std::function<void(pugi::xml_node)>& f) {
+  std::vector<pugi::xml_node> stack{n};
+  while (!stack.empty()) {
+    const auto e = stack.back();
+    stack.pop_back();
+    for (auto c : element_children(e)) {
+      if (local_name(c) == "connection") f(c);
+      stack.push_back(c);
+    }
+  }
+}
+
+bool has_connected_enable(pugi::xml_node block) {
+  if (local_name(block) != "block") return false;
+  for (auto v : children(child(block, "inputVariables"), "variable"))
+    if (model::iequals(v.attribute("formalParameter").value(), "EN"))
+      if (const auto cpi = child(v, "connectionPointIn"); cpi && child(cpi, "connection"))
+        return true;
+  return false;
+}
+
+bool is_leaf(const model::Expr& e) {
+  switch (e.kind) {
+    case ExprKind::BoolConst:
+    case ExprKind::IntConst:
+    case ExprKind::TimeConst:
+    case ExprKind::Name:
+    case ExprKind::Member:
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// The size of `e` as a tree (shared nodes counted at each use), saturated above `cap`.
+std::uint64_t unfolded_size(const model::Expr& e, std::uint64_t cap,
+                            std::unordered_map<const model::Expr*, std::uint64_t>& known) {
+  if (const auto it = known.find(&e); it != known.end()) return it->second;
+  std::uint64_t n = 1;
+  for (const auto& a : e.args) {
+    if (a) n += unfolded_size(*a, cap, known);
+    if (n > cap) {
+      n = cap + 1;
+      break;
+    }
+  }
+  known.emplace(&e, n);
+  return n;
+}
+
+}  // namespace
+
 Network::Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems,
-                 std::string edge_prefix)
+                 std::string edge_prefix, const std::vector<model::Variable>* declared)
     : ctx_(ctx), problems_(problems), edge_prefix_(std::move(edge_prefix)), container_(container) {
+  if (declared)
+    for (const auto& v : *declared) declared_types_.emplace(model::to_upper(v.name), v.type);
+  std::map<std::string, int> continuations;  // connector name -> continuations reading it
   for (auto n : element_children(container)) {
     ctx_.poll();
     if (const auto id = n.attribute("localId")) by_id_.emplace(id.value(), n);
     if (local_name(n) == "connector")
       connectors_.emplace(model::to_upper(n.attribute("name").value()), n);
+    if (local_name(n) == "continuation")
+      ++continuations[model::to_upper(n.attribute("name").value())];
   }
+  for_each_connection(container,
+                      [&](pugi::xml_node c) { ++fan_out_[c.attribute("refLocalId").value()]; });
+  // Each continuation reads what feeds its connector once more.
+  for (const auto& [name, count] : continuations)
+    if (const auto it = connectors_.find(name); it != connectors_.end() && count > 1)
+      for_each_connection(it->second, [&, count = count](pugi::xml_node c) {
+        fan_out_[c.attribute("refLocalId").value()] += count - 1;
+      });
 }
 
 ExprPtr Network::fail(pugi::xml_node node, std::string message) {
@@ -117,6 +187,7 @@ ExprPtr Network::edge_of(pugi::xml_node node, const std::string& edge, ExprPtr v
   v.type = model::Type::function_block(edge == "rising" ? model::StandardFb::R_TRIG
                                                         : model::StandardFb::F_TRIG);
   v.where = ctx_.where(node);
+  declared_types_.emplace(model::to_upper(name), v.type);
   edge_instances_.push_back(std::move(v));
   calls_.push_back(model::make_fb_call(name, {{"CLK", std::move(value)}}, ctx_.where(node)));
   return model::make_member(name, "Q", ctx_.where(node));
@@ -146,7 +217,93 @@ ExprPtr Network::value(pugi::xml_node connection) {
   const auto it = by_id_.find(ref);
   if (ref.empty() || it == by_id_.end())
     return fail(connection, "connection to unknown localId '" + ref + "'");
-  return node_value(it->second, connection.attribute("formalParameter").value());
+  const std::string pin = connection.attribute("formalParameter").value();
+  const auto node = it->second;
+  // A function with EN is modelled only where its result goes straight to one variable.
+  if (fan_out_[ref] < 2 || has_connected_enable(node)) return node_value(node, pin);
+  const std::string key = ref + "/" + pin;
+  if (const auto m = memo_.find(key); m != memo_.end()) return m->second;
+  auto v = node_value(node, pin);
+  if (!v) return nullptr;
+  v = shared(node, pin, std::move(v));
+  if (v) memo_.emplace(key, v);
+  return v;
+}
+
+ExprPtr Network::shared(pugi::xml_node node, const std::string& pin, ExprPtr v) {
+  if (!hoist_ || is_leaf(*v) || !is_boolean(*v)) return v;
+  // One evaluation per element (IEC 61131-3 FBD: an element's outputs are evaluated once its
+  // inputs are), held in a hidden temporary the body assigns before the first reader.
+  const std::string name = "SFCV_NET_" + (edge_prefix_.empty() ? "" : edge_prefix_ + "_") +
+                           node.attribute("localId").value() + (pin.empty() ? "" : "_" + pin);
+  const auto where = ctx_.where(node);
+  if (std::find(temporaries_.begin(), temporaries_.end(), name) == temporaries_.end()) {
+    model::Variable t;
+    t.name = name;
+    t.direction = model::VarDirection::Local;
+    t.type = model::Type::boolean();
+    t.initial = 0;
+    t.where = where;
+    declared_types_.emplace(model::to_upper(name), t.type);
+    edge_instances_.push_back(std::move(t));
+    temporaries_.push_back(name);
+  }
+  calls_.push_back(model::make_assign(name, std::move(v), where));
+  return model::make_name(name, where);
+}
+
+std::optional<model::Type> Network::declared_type(const std::string& name) const {
+  const auto it = declared_types_.find(model::to_upper(name));
+  if (it == declared_types_.end()) return std::nullopt;
+  return it->second;
+}
+
+bool Network::is_boolean(const model::Expr& e) const {
+  switch (e.kind) {
+    case ExprKind::BoolConst:
+    case ExprKind::Eq:
+    case ExprKind::Ne:
+    case ExprKind::Lt:
+    case ExprKind::Le:
+    case ExprKind::Gt:
+    case ExprKind::Ge:
+      return true;
+    case ExprKind::Not:
+    case ExprKind::And:
+    case ExprKind::Or:
+    case ExprKind::Xor:
+      return std::all_of(e.args.begin(), e.args.end(),
+                         [&](const ExprPtr& a) { return a && is_boolean(*a); });
+    case ExprKind::Name: {
+      const auto t = declared_type(e.name);
+      return t && t->kind == model::TypeKind::Bool;
+    }
+    case ExprKind::Member: {
+      // The Boolean outputs of the standard function blocks.
+      const auto t = declared_type(e.name);
+      return t && t->kind == model::TypeKind::FunctionBlock && t->fb != model::StandardFb::None &&
+             (model::iequals(e.member, "Q") || model::iequals(e.member, "Q1") ||
+              model::iequals(e.member, "QU") || model::iequals(e.member, "QD"));
+    }
+    default:
+      return false;
+  }
+}
+
+bool Network::within_unfolded_bound(const ExprPtr& v, pugi::xml_node at) {
+  std::unordered_map<const model::Expr*, std::uint64_t> known;
+  if (unfolded_size(*v, kMaxUnfoldedOperations, known) <= kMaxUnfoldedOperations) return true;
+  fail(at, "unsupported: this value of the network unfolds into more than " +
+               std::to_string(kMaxUnfoldedOperations) +
+               " operations (elements whose output feeds several inputs, nested); a shared "
+               "non-Boolean value is not modelled at that size");
+  return false;
+}
+
+ExprPtr Network::condition(pugi::xml_node connection_point_in) {
+  auto v = input(connection_point_in);
+  if (v && !within_unfolded_bound(v, connection_point_in)) return nullptr;
+  return v;
 }
 
 ExprPtr Network::text_value(pugi::xml_node holder, pugi::xml_node text_element) {
@@ -480,6 +637,7 @@ ExprPtr Network::output_named(std::string_view name, bool& found) {
     if (!model::iequals(trim(body_text(text, ctx_).text), name)) continue;
     found = true;
     auto v = input(child(n, "connectionPointIn"), n);
+    if (v && !within_unfolded_bound(v, n)) return nullptr;
     return negate_if(attribute_true(n, "negated"), v);
   }
   return nullptr;
@@ -598,7 +756,11 @@ std::optional<model::StmtList> Network::statements() {
     return std::nullopt;
 
   model::StmtList body;
+  hoist_ = true;
   for (auto n : outputs) {
+    // Shared elements are evaluated once per statement: across statements, each reads the
+    // variables as the assignments before it left them.
+    memo_.clear();
     const auto kind = local_name(n);
     const auto where = ctx_.where(n);
     const auto text = body_text(child(n, kind == "coil" ? "variable" : "expression"), ctx_);
@@ -612,7 +774,7 @@ std::optional<model::StmtList> Network::statements() {
     enable_ = nullptr;
     auto v = input(cpi);
     enabled_function_.clear();
-    if (!v) return std::nullopt;
+    if (!v || !within_unfolded_bound(v, n)) return std::nullopt;
     for (auto& c : take_calls()) body.push_back(std::move(c));
     const bool negated = attribute_true(n, "negated");
     const std::string storage = n.attribute("storage").value();
@@ -658,6 +820,7 @@ std::optional<model::StmtList> Network::statements() {
       for (auto& c : take_calls()) body.push_back(std::move(c));
     }
   // Function blocks whose outputs nobody reads still run.
+  memo_.clear();
   for (auto n : element_children(container_)) {
     if (local_name(n) != "block" || !*n.attribute("instanceName").value()) continue;
     if (called_.count(n.attribute("localId").value())) continue;
@@ -671,6 +834,10 @@ std::optional<model::StmtList> Network::statements() {
     if (!call_block(n)) return std::nullopt;
     for (auto& c : take_calls()) body.push_back(std::move(c));
   }
+  // The temporaries hold nothing between cycles (a state they kept would multiply the states).
+  for (const auto& t : temporaries_)
+    body.push_back(model::make_assign(t, model::make_bool(false, ctx_.where(container_)),
+                                      ctx_.where(container_)));
   return body;
 }
 

@@ -9,7 +9,14 @@
 // use of one of its outputs, which reads `instance.OUTPUT`; a feedback loop through an FB
 // reads the output of the previous call, as PLCs do. Anything else is an "unsupported"
 // diagnostic naming the block.
+//
+// A network is a DAG: an element whose output feeds several inputs is built once and shared
+// (never unfolded into a tree, which doubles per level of sharing). In a body, a shared Boolean
+// element becomes a hidden BOOL temporary assigned where the statement first needs it and
+// reset at the end of the body, so it carries no state; other shared values stay shared
+// expressions, and one that would still unfold past kMaxUnfoldedOperations is refused.
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
@@ -29,8 +36,17 @@ class Network {
   /// `container`: the element holding the network (SFC, FBD, LD). Problems go to `problems`.
   /// `edge_prefix` names the R_TRIG/F_TRIG instances that LD edge contacts and coils need
   /// (`SFCV_EDGE_<prefix>_<localId>`); it must differ between the networks of one POU.
+  /// `declared`: the POU's variables, to know which shared values are Boolean (may be null).
   Network(pugi::xml_node container, const XmlContext& ctx, model::Diagnostics& problems,
-          std::string edge_prefix = "");
+          std::string edge_prefix = "", const std::vector<model::Variable>* declared = nullptr);
+
+  /// Operations an expression of the network may have once its sharing is unfolded by the
+  /// consumers that read expressions as trees; more is refused as not modelled.
+  static constexpr std::uint64_t kMaxUnfoldedOperations = 100000;
+
+  /// input() for a value used as a whole (a transition condition): also checks its unfolded
+  /// size. Null after a diagnostic.
+  model::ExprPtr condition(pugi::xml_node connection_point_in);
 
   /// The value flowing into `connection_point_in` (several connections are LD parallel
   /// branches: OR). Null after a diagnostic.
@@ -39,8 +55,9 @@ class Network {
   /// FB calls the values computed so far need, in call order; the list is emptied.
   model::StmtList take_calls();
 
-  /// The R_TRIG/F_TRIG instances created for edge contacts and coils so far, as local
-  /// variables the caller adds to the POU; the list is emptied.
+  /// The R_TRIG/F_TRIG instances created for edge contacts and coils so far, and the hidden
+  /// temporaries of shared elements, as local variables the caller adds to the POU; the list
+  /// is emptied.
   std::vector<model::Variable> take_edge_instances();
 
   /// A whole FBD/LD body as statements: every output (outVariable, inOutVariable, coil) in
@@ -74,6 +91,14 @@ class Network {
   /// `edge` ("rising"/"falling") of `value`, through a new R_TRIG/F_TRIG instance called first.
   model::ExprPtr edge_of(pugi::xml_node node, const std::string& edge, model::ExprPtr value);
   model::ExprPtr fail(pugi::xml_node node, std::string message);
+  /// `v`, the value of an element that feeds several inputs, as the network shares it (a
+  /// temporary in a body, when Boolean).
+  model::ExprPtr shared(pugi::xml_node node, const std::string& pin, model::ExprPtr v);
+  bool is_boolean(const model::Expr& e) const;
+  /// The type of a variable of the POU or of the network (edge instance, temporary).
+  std::optional<model::Type> declared_type(const std::string& name) const;
+  /// False (after a located error at `at`) when `v` unfolds past kMaxUnfoldedOperations.
+  bool within_unfolded_bound(const model::ExprPtr& v, pugi::xml_node at);
 
   const XmlContext& ctx_;
   model::Diagnostics& problems_;
@@ -89,6 +114,11 @@ class Network {
   model::StmtList calls_;
   std::vector<model::Variable> edge_instances_;
   std::string edge_prefix_;
+  std::map<std::string, model::Type> declared_types_;  ///< upper-case name -> type
+  std::map<std::string, int> fan_out_;                 ///< localId -> connections reading it
+  std::map<std::string, model::ExprPtr> memo_;  ///< "localId/pin" -> value of a shared element
+  bool hoist_ = false;                          ///< in statements(): shared Booleans to temporaries
+  std::vector<std::string> temporaries_;        ///< hidden temporaries, reset after the body
   pugi::xml_node container_;
 };
 

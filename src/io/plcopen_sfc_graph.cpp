@@ -309,7 +309,7 @@ class ChartBuilder {
     } else if (const auto ref = child(cond, "reference")) {
       guard = named_transition(trim(ref.attribute("name").value()), ref);
     } else if (const auto cpi = child(cond, "connectionPointIn")) {
-      guard = net_.input(cpi);
+      guard = net_.condition(cpi);
     } else {
       ctx_.error(cond, "condition has neither inline text, a reference nor a connection");
       return nullptr;
@@ -559,7 +559,7 @@ std::optional<model::StmtList> read_statement_body(PouContext& pc, pugi::xml_nod
   } else if (k == "IL") {
     body = read_il_statements(body_text(language, pc.ctx), problems);
   } else if (k == "FBD" || k == "LD") {
-    Network net(language, pc.ctx, problems, edge_prefix);
+    Network net(language, pc.ctx, problems, edge_prefix, &pc.pou.variables);
     body = net.statements();
     edges = net.take_edge_instances();
   } else {

@@ -107,7 +107,12 @@ std::vector<const model::Pou*> Compiler::select() {
   }
   if (cands.empty()) {
     std::string list;
-    for (const auto* q : programs) list += (list.empty() ? "" : ", ") + q->name;
+    for (const auto* q : programs) {
+      list += (list.empty() ? "" : ", ") + q->name;
+      // The importer's reason, so that the error says what to change even under --quiet.
+      if (q->body_unsupported && !q->unsupported_reason.empty())
+        list += " [" + q->unsupported_reason + "]";
+    }
     error(project.where, programs.empty()
                              ? "the model has no PROGRAM and no POU with an SFC body: choose the "
                                "POU(s) to run with --pou"

@@ -4,15 +4,17 @@
 // the sfcv child (getrusage), which a loaded machine does not inflate as it does wall time.
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
 #include <cstdlib>
 #include <string>
 
+#include "support/cpu_run.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace {
 
+using sfcv::test::cpu_run;
+using sfcv::test::kSlowdown;
 using sfcv::test::run_sfcv;
 
 /// A loop of `n` steps S0 -> S1 -> ... -> S0, each transition on input a; o in the last step.
@@ -27,34 +29,6 @@ std::string chain(int n) {
     text += "  TRANSITION FROM S" + std::to_string(i) + " TO S" + std::to_string((i + 1) % n) +
             " := a;\n  END_TRANSITION\n";
   return sfcv::test::write_temp(text + "END_PROGRAM\n", ".st");
-}
-
-// The bounds are for an optimised build; under AddressSanitizer every instruction costs
-// several (the ci-asan preset measured 8 to 14 CPU s where the release build stays under 6).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kSlowdown = 4;
-#else
-constexpr double kSlowdown = 1;
-#endif
-
-double children_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_CHILDREN, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
-}
-
-struct CpuRun {
-  sfcv::test::RunResult run;
-  double cpu = 0;
-};
-
-CpuRun cpu_run(const std::string& args) {
-  const double before = children_cpu_seconds();
-  CpuRun r;
-  r.run = run_sfcv(args);
-  r.cpu = children_cpu_seconds() - before;
-  return r;
 }
 
 TEST(LargeChart, EverySubcommandAndEngineStaysWithinItsBudgetOnTenThousandSteps) {
