@@ -231,7 +231,13 @@ ExprPtr Network::value(pugi::xml_node connection) {
 }
 
 ExprPtr Network::shared(pugi::xml_node node, const std::string& pin, ExprPtr v) {
-  if (!hoist_ || is_leaf(*v) || !is_boolean(*v)) return v;
+  // Small values stay written out (the body reads as the network does); past kHoistedSize a
+  // value is shared, so no chain of shared elements doubles more than a few levels.
+  constexpr std::uint64_t kHoistedSize = 16;
+  std::unordered_map<const model::Expr*, std::uint64_t> known;
+  if (!hoist_ || is_leaf(*v) || unfolded_size(*v, kHoistedSize, known) <= kHoistedSize ||
+      !is_boolean(*v))
+    return v;
   // One evaluation per element (IEC 61131-3 FBD: an element's outputs are evaluated once its
   // inputs are), held in a hidden temporary the body assigns before the first reader.
   const std::string name = "SFCV_NET_" + (edge_prefix_.empty() ? "" : edge_prefix_ + "_") +
