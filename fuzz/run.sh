@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-20}"
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -eq 0 ] && harnesses=(plcopen iec_text g7 agrafe ctl query)
+[ ${#harnesses[@]} -eq 0 ] && harnesses=(plcopen iec_text g7 agrafe ctl query query_library fbd)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "${JOBS:-2}" --target $(printf 'fuzz_%s ' "${harnesses[@]}")
@@ -33,6 +33,8 @@ for h in "${harnesses[@]}"; do
     agrafe) seed "$h" -name '*.grafcet' ;;
     ctl) seed "$h" -name '*.ctl' -o -name '*.spec' ;;
     query) seed "$h" -name '*.sfq' ;;
+    query_library) seed "$h" -name '*.sfq' ;;
+    fbd) mkdir -p "$work/$h/seeds" ;;  # networks only: fuzz/seeds/fbd
   esac
   # Seeds that exist only as text in fuzz/seeds/<harness>/ (formulas, queries, small charts).
   [ -d "fuzz/seeds/$h" ] && cp fuzz/seeds/"$h"/* "$work/$h/seeds/"

@@ -52,7 +52,9 @@ class Product {
   }
 
   std::vector<Step> successors(std::uint32_t v) {
-    const auto [s, q] = pairs_[v];
+    // Plain copies: a lambda may not capture a structured binding before C++20 in clang 15.
+    const auto s = pairs_[v].first;
+    const auto q = pairs_[v].second;
     std::vector<Step> out;
     auto add = [&](std::uint32_t t, std::uint64_t e) {
       for (auto q2 : aut_.nodes[q].successors)
