@@ -19,6 +19,7 @@
 #include "cli/iec_options.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/load_model.hpp"
+#include "cli/memory_watchdog.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_limits.hpp"
@@ -204,7 +205,24 @@ std::string trace_file_text(const logic::CheckReport& result, const semantics::T
   }
 }
 
-int run_check_body(const CheckOptions& o) {
+/// The process went past --memory: what is undecided is unknown for that reason.
+void mark_memory_exceeded(logic::CheckReport& result, const MemoryWatchdog& watchdog) {
+  const std::string why = "memory limit reached (the process held " +
+                          std::to_string(watchdog.seen_bytes() >> 20) +
+                          " MiB) before an answer was certain";
+  bool undecided = false;
+  for (auto& r : result.results)
+    if (r.verdict == logic::Verdict::Unknown) {
+      r.message = why;
+      undecided = true;
+    }
+  if (undecided || !result.complete) {
+    result.complete = false;
+    result.limit = to_string(Limit::Memory);
+  }
+}
+
+int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   // A wrong output path ends the run now, not after the exploration (docs/reliability.md).
   const auto outputs = output_paths(o);
   check_output_paths(outputs);
@@ -291,7 +309,10 @@ int run_check_body(const CheckOptions& o) {
     // Stopped before it had a report: every question is unknown, and still reported.
     result = logic::unknown_report(task, o.engine, e);
   }
-  if (interrupted()) mark_interrupted(result);
+  if (interrupted())
+    mark_interrupted(result);
+  else if (watchdog.tripped())
+    mark_memory_exceeded(result, watchdog);
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   refuse_if_nothing_decided(result, o.engine);
@@ -353,10 +374,17 @@ int run_check_body(const CheckOptions& o) {
 
 int run_check(const CheckOptions& o) {
   const InterruptScope interrupt;  // the first signal stops the engines, the reports follow
+  // Past --memory, the whole process stops as at its deadline (the engines' own counts miss
+  // what they share).
+  const MemoryWatchdog watchdog(make_budget(o.limits).max_memory_bytes, interrupt_flag());
   try {
-    return run_check_body(o);
+    return run_check_body(o, watchdog);
   } catch (const LimitReached& e) {
-    // Interrupted while loading or building: no question was asked yet.
+    // Interrupted, or out of memory, while loading or building: no question was asked yet.
+    if (watchdog.tripped() && !interrupted())
+      throw LimitReached(Limit::Memory, "memory limit reached (the process held " +
+                                            std::to_string(watchdog.seen_bytes() >> 20) +
+                                            " MiB) while loading or building the model");
     if (!interrupted()) throw;
     throw LimitReached(e.which(), std::string(interrupt_signal_name()) + ": " + e.what());
   }

@@ -59,7 +59,8 @@ std::shared_ptr<std::atomic<bool>> interrupt_flag() {
 }
 
 bool interrupted() {
-  return g_flag.load();
+  // The signal, not the flag: the memory watchdog raises the flag too (memory_watchdog.hpp).
+  return g_signal.load() != 0;
 }
 
 const char* interrupt_signal_name() {

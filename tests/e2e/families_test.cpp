@@ -11,19 +11,13 @@
 #include <vector>
 
 #include "io/load.hpp"
+#include "support/generate.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace {
 
+using sfcv::test::generate;
 using sfcv::test::run_sfcv;
-
-/// Runs sfcv-gen with `args` into a fresh temporary file with suffix `ext`; returns its path.
-std::string generate(const std::string& args, const std::string& ext) {
-  const std::string path = sfcv::test::write_temp("", ext);
-  const std::string cmd = std::string("'") + SFCV_GEN + "' " + args + " -o '" + path + "'";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  return path;
-}
 
 /// Whether this build's sfcv has the info command (it lands with the validate-info branch).
 bool info_is_built() {

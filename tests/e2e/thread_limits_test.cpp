@@ -7,18 +7,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/generate.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace {
 
+using sfcv::test::generate;
 using sfcv::test::run_sfcv;
-
-std::string generate(const std::string& args, const std::string& ext) {
-  const std::string path = sfcv::test::write_temp("", ext);
-  const std::string cmd = std::string("'") + SFCV_GEN + "' " + args + " -o '" + path + "'";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  return path;
-}
 
 TEST(ThreadLimits, AHugeThreadCountIsCappedAndGivesTheOneThreadReport) {
   const std::string chart = generate("parallel 12 --selector", ".st");

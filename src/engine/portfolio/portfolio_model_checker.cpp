@@ -213,6 +213,13 @@ class PortfolioModelChecker final : public ModelChecker {
     racers.push_back({"ic3", ic3_.get(), task, {}, {}, {}});
     racers.push_back({"bmc", bmc_.get(), task, {}, {}, {}});
     for (auto& r : racers) r.task.limits.cancel = cancel;
+    // One memory budget for the race, not one each: half for the BDD engine (its node table
+    // is what grows), a quarter for each SAT engine's circuit.
+    if (const auto budget = task.limits.max_memory_bytes; budget > 0) {
+      racers[0].task.limits.max_memory_bytes = budget / 2;
+      racers[1].task.limits.max_memory_bytes = budget / 4;
+      racers[2].task.limits.max_memory_bytes = budget / 4;
+    }
     // One progress line, one thread calling it: the BDD engine's (the SAT engines report none).
     racers[1].task.limits.progress = nullptr;
     racers[2].task.limits.progress = nullptr;
