@@ -355,8 +355,8 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   write(outputs[3],
         [&] { return report::check_sarif(result, *ts, &project, render).dump(2) + "\n"; });
   write(outputs[4], [&] {
-    return report::check_html(
-        report::html_report(report::check_json(result, *ts, render), project, *ts));
+    return report::check_html(report::html_report(report::check_json(result, *ts, render), project,
+                                                  *ts, picture_limits(budget)));
   });
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";

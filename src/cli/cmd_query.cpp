@@ -206,7 +206,8 @@ int run_query(const QueryOptions& o) {
   report::make_valid_utf8(jout);  // the model's path is bytes too
   if (o.json) std::cout << jout.dump(2) << "\n";
   if (!o.html.empty()) {
-    write_output(html, report::query_html(jout, report::html_pictures(project, *ts)));
+    write_output(html, report::query_html(
+                           jout, report::html_pictures(project, *ts, {}, picture_limits(budget))));
   }
   int exit_code = kHolds;
   if (o.assert_empty) exit_code = any_violated ? kViolated : any_unknown ? kUnknown : kHolds;

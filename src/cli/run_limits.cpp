@@ -1,5 +1,7 @@
 #include "cli/run_limits.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 
@@ -74,6 +76,16 @@ model::Budget make_budget(const LimitOptions& o) {
   if (!o.max_states.empty()) budget.max_states = parse_count(o.max_states);
   if (!o.memory.empty()) budget.max_memory_bytes = parse_memory(o.memory);
   return budget;
+}
+
+report::PictureLimits picture_limits(const model::Budget& budget) {
+  report::PictureLimits limits;
+  if (budget.deadline) {
+    const double left =
+        std::chrono::duration<double>(*budget.deadline - model::Budget::Clock::now()).count();
+    limits.seconds = std::min(limits.seconds, left + 0.5);
+  }
+  return limits;
 }
 
 }  // namespace sfcv::cli

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "model/budget.hpp"
+#include "report/check_html.hpp"
 
 namespace sfcv::cli {
 
@@ -26,6 +27,11 @@ void add_limit_options(CLI::App& sub, LimitOptions& options, const std::string& 
 
 /// The budget of a run starting now; throws UsageError for a bad value.
 model::Budget make_budget(const LimitOptions& options);
+
+/// The time a report's pictures may take at the end of a run under `budget`: what is left of
+/// its deadline and half a second of the grace the run has to report (docs/reliability.md),
+/// at most 60 s; none after that.
+report::PictureLimits picture_limits(const model::Budget& budget);
 
 /// "2G", "512M", "64K", "1000000" (bytes) -> bytes; throws UsageError.
 std::uint64_t parse_memory(const std::string& text);

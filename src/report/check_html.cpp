@@ -1,5 +1,6 @@
 #include "report/check_html.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -189,7 +190,7 @@ std::string query_row(const json& q) {
 }  // namespace
 
 HtmlReport html_report(nlohmann::json result, const model::Project& project,
-                       const semantics::TransitionSystem& ts) {
+                       const semantics::TransitionSystem& ts, const PictureLimits& limits) {
   // The situations the traces visit are drawn on the situation graph whatever its cap.
   std::set<std::string> visited;
   if (result.contains("properties"))
@@ -202,36 +203,76 @@ HtmlReport html_report(nlohmann::json result, const model::Project& project,
           for (const auto& n : names) key += (key.empty() ? "" : ",") + n;
           visited.insert(key);
         }
-  HtmlReport r = html_pictures(project, ts, visited);
+  HtmlReport r = html_pictures(project, ts, visited, limits);
   r.result = std::move(result);
   return r;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::size_t chart_elements(const model::Project& project) {
+  std::size_t n = 0;
+  for (const auto& pou : project.pous)
+    for (const auto& chart : pou.charts) n += chart.steps.size() + chart.transitions.size();
+  return n;
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream out;
+  out << (s >= 10 ? static_cast<double>(static_cast<long long>(s)) : s);
+  return out.str();
+}
+
+}  // namespace
+
 HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts,
-                         const std::set<std::string>& keep) {
+                         const std::set<std::string>& keep, const PictureLimits& limits) {
+  const auto start = Clock::now();
   HtmlReport r;
-  std::ostringstream dot;
-  print_chart_dot(dot, project);
-  auto svg = dot_to_svg(dot.str());
-  r.chart_svg = std::move(svg.svg);
-  r.chart_note = std::move(svg.error);
   r.node_ids = chart_node_ids(project, ts);
-  add_situation_graph(r, ts, keep);
+  if (const auto n = chart_elements(project); n > limits.max_chart_elements) {
+    r.chart_note = "the chart (" + std::to_string(n) +
+                   " steps and transitions) is not drawn: a report lays out at most " +
+                   std::to_string(limits.max_chart_elements) +
+                   " (graphviz needed 221 s for a 2,000-step loop); `sfcv export --to dot` "
+                   "gives the whole chart as DOT";
+  } else if (limits.seconds <= 0) {
+    r.chart_note = "the chart is not drawn: the run's time limit had passed";
+  } else {
+    std::ostringstream dot;
+    print_chart_dot(dot, project);
+    auto svg = dot_to_svg(dot.str(), limits.seconds);
+    r.chart_svg = std::move(svg.svg);
+    r.chart_note = std::move(svg.error);
+  }
+  // The situation graph gets what the chart's layout left.
+  PictureLimits rest = limits;
+  rest.seconds = limits.seconds - std::chrono::duration<double>(Clock::now() - start).count();
+  add_situation_graph(r, ts, keep, rest);
   return r;
 }
 
 void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts,
-                         const std::set<std::string>& keep) {
+                         const std::set<std::string>& keep, const PictureLimits& limits) {
   if (ts.kind() != semantics::SemanticsKind::Grafcet) return;
+  if (limits.seconds <= 0) {
+    report.situation_graph_note =
+        "the reachable situations graph was not drawn: the run's time limit had passed";
+    return;
+  }
+  const auto start = Clock::now();
   engine::ExplorationOptions eo;
   eo.max_states = kReportMaxSituations;
-  eo.timeout_seconds = 60;
+  eo.timeout_seconds = limits.seconds;
   eo.keep_conditions = false;
   const auto graph = engine::build_reachable_situation_graph(ts, eo);
   if (!graph.complete()) {
-    report.situation_graph_note =
-        "the reachable situations graph was not drawn: its " + graph.limit_reached() + " limit (" +
-        std::to_string(kReportMaxSituations) + " stable situations, 60 s) was reached";
+    report.situation_graph_note = "the reachable situations graph was not drawn: its " +
+                                  graph.limit_reached() + " limit (" +
+                                  std::to_string(kReportMaxSituations) + " stable situations, " +
+                                  seconds_text(limits.seconds) + " s) was reached";
     return;
   }
   SituationGraphOptions so;
@@ -239,7 +280,13 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
   so.option_name = "sfcv rsg --dot FILE --max-nodes";
   so.keep = keep;
   const auto grouped = situation_graph_dot(graph, so);
-  auto svg = dot_to_svg(grouped.dot);
+  const double left = limits.seconds - std::chrono::duration<double>(Clock::now() - start).count();
+  if (left <= 0) {
+    report.situation_graph_note =
+        "the reachable situations graph was not drawn: the report's time ran out";
+    return;
+  }
+  auto svg = dot_to_svg(grouped.dot, left);
   report.situation_graph_svg = std::move(svg.svg);
   if (!report.situation_graph_svg.empty()) report.situation_node_ids = grouped.node_ids;
   report.situation_graph_note = svg.error.empty() ? grouped.truncation_note : svg.error;

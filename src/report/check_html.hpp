@@ -32,11 +32,20 @@ std::string check_html(const HtmlReport& report);
 /// situation graph as the check report.
 std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures);
 
+/// How much time and layout the pictures of a report may take. A report written at the end of
+/// a run with --timeout gets the time left (after the deadline: no picture, a note says why);
+/// graphviz's layout grows faster than the chart (a 500-step loop: 3 s, 2,000 steps: 221 s), so
+/// a chart larger than max_chart_elements is not laid out, with a note.
+struct PictureLimits {
+  double seconds = 60;                    ///< for each of the chart layout and the situation graph
+  std::size_t max_chart_elements = 1000;  ///< steps + transitions of the chart layout
+};
+
 /// The situation graph of a Grafcet system for a report: explored within kReportMaxSituations
 /// stable situations (a larger graph is not drawn and the note says so), grouped and laid out:
 /// the first kReportMaxNodes step situations breadth-first and those in `keep`.
 void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& ts,
-                         const std::set<std::string>& keep = {});
+                         const std::set<std::string>& keep = {}, const PictureLimits& limits = {});
 inline constexpr std::uint64_t kReportMaxSituations = 100'000;
 inline constexpr std::size_t kReportMaxNodes = 40;  ///< step situations drawn on a report
 
@@ -46,9 +55,9 @@ inline constexpr std::size_t kReportMaxNodes = 40;  ///< step situations drawn o
 /// The pictures of a report without a result: the chart, its node ids, the situation graph.
 /// `keep`: step situations to draw on the situation graph even beyond its cap.
 HtmlReport html_pictures(const model::Project& project, const semantics::TransitionSystem& ts,
-                         const std::set<std::string>& keep = {});
+                         const std::set<std::string>& keep = {}, const PictureLimits& limits = {});
 
 HtmlReport html_report(nlohmann::json result, const model::Project& project,
-                       const semantics::TransitionSystem& ts);
+                       const semantics::TransitionSystem& ts, const PictureLimits& limits = {});
 
 }  // namespace sfcv::report

@@ -87,6 +87,14 @@ inline std::string write_temp(const std::string& text, const std::string& suffix
   return p.string();
 }
 
+/// The whole content of the file at `path` ("" when it cannot be read).
+inline std::string read_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
 /// The arguments of `sfcv check FILE --engine ENGINE OPTIONS` without traces, within a minute
 /// (the engine-by-engine tests of a small chart).
 inline std::string check_command(const std::string& file, const std::string& engine,
