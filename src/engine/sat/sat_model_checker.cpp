@@ -111,7 +111,11 @@ class Run {
     std::vector<Question> questions;
     for (const auto& p : task_.properties) questions.push_back(property_question(p));
     for (auto c : task_.checks) questions.push_back(check_question(c));
+    std::optional<std::size_t> loop_limit;
+    if (iec_ && iec_->loop_limit != Aig::kFalse && !targets_.empty())
+      loop_limit = add_target(iec_->loop_limit);
     answers_ = solve();
+    if (loop_limit) distrust_cut_cycles(*loop_limit);
 
     std::size_t q = 0;
     for (const auto& p : task_.properties) {
@@ -133,6 +137,22 @@ class Run {
   }
 
  private:
+  /// A cycle that meets the ST loop bound has no successor in the circuit, though the loop may
+  /// still end (docs/semantics.md 1.9.1). Unless such a cycle is proved unreachable, nothing
+  /// is known past it: every "unreachable" answer becomes unknown. A run that reaches a target
+  /// takes no cut cycle (step_ok excludes them): it stays.
+  void distrust_cut_cycles(std::size_t loop_limit) {
+    if (answers_[loop_limit].kind == ReachResult::Kind::Unreachable) return;
+    const std::string why = iec_->loop_limit_message();
+    const bool reached = answers_[loop_limit].kind == ReachResult::Kind::Reached;
+    for (auto& a : answers_)
+      if (a.kind == ReachResult::Kind::Unreachable ||
+          (reached && a.kind == ReachResult::Kind::Unknown)) {  // the bound is why
+        a = ReachResult{};
+        a.why = why;
+      }
+  }
+
   /// The circuit observables and properties are read on.
   semantics::TransitionCircuit& circuit() {
     return grafcet_ ? static_cast<semantics::TransitionCircuit&>(*grafcet_) : *iec_;
@@ -173,6 +193,11 @@ class Run {
       // the oldest p still waiting for s; its target is the invariant's violation
       // (observers.hpp, docs/engines.md).
       auto& aig = iec_->aig;
+      if (iec_->loop_limit != Aig::kFalse) {  // a cut cycle would look like a deadlock
+        q.refusal = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                    " engine: " + iec_->loop_limit_message();
+        return q;
+      }
       if (!dead_) dead_ = sat::no_successor(aig, step_ok_);
       if (!*dead_) {
         q.refusal = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
@@ -235,9 +260,7 @@ class Run {
 
   Question check_question(StandardCheck c) {
     Question q;
-    // Grafcet's standard checks judge transient evolutions too (steps crossed only during
-    // them, events that never stabilise): not invariants of the stable situations.
-    if (grafcet_) return q;
+    if (grafcet_) return grafcet_check_question(c);
     auto& iec = *iec_;
     switch (c) {
       case StandardCheck::Reachable:
@@ -262,7 +285,7 @@ class Run {
       case StandardCheck::Instability:
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         q.shape = Question::Shape::Invariant;
-        q.targets.push_back(add_target(iec.range_error_step()));
+        q.targets.push_back(add_target(iec.anomaly_step()));
         break;
       case StandardCheck::StoredActions:
         stored_actions_question(q);
@@ -274,6 +297,46 @@ class Run {
         break;
     }
     return q;
+  }
+
+  /// Grafcet (docs/engines.md): the checks that read the explicit graph's edges, whose events
+  /// end in a stable situation, as targets at the machine's stable situations with an
+  /// observer of the event (GrafcetMachine::seen_during_event): a step active in a stable
+  /// situation or crossed by an event, a transition cleared by one (the start's
+  /// stabilisation included, as fires_initially). The others stay not checked.
+  Question grafcet_check_question(StandardCheck c) {
+    Question q;
+    auto& m = *machine_;
+    switch (c) {
+      case StandardCheck::Reachable:
+        for (const auto& s : logic::step_refs(ts_, task_.project)) {
+          const AigLit x = m.in_situation(
+              logic::circuit_literal(*grafcet_, *logic::observable_atom(ts_, s.observable)));
+          q.targets.push_back(add_machine_target(m.seen_during_event(x, "seen " + s.step, true)));
+          q.labels.push_back("step " + logic::describe_step(s) + " is never active");
+        }
+        break;
+      case StandardCheck::DeadTransitions: {
+        const auto& trs = ts_.transitions();
+        for (std::uint32_t t = 0; t < trs.size(); ++t) {
+          q.targets.push_back(
+              add_machine_target(m.seen_during_event(m.fired()[t], "fired " + trs[t].name, false)));
+          q.labels.push_back("transition " + trs[t].name +
+                             (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
+                             " never fires");
+        }
+        break;
+      }
+      default:
+        return q;
+    }
+    q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
+    return q;
+  }
+  /// A target already over the machine's latches (Grafcet).
+  std::size_t add_machine_target(AigLit machine_lit) {
+    targets_.push_back(machine_lit);
+    return targets_.size() - 1;
   }
 
   // ------------------------------------------- stored-actions and output-conflicts (IEC)
@@ -837,12 +900,13 @@ class Run {
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::NotChecked;
       const std::string engine(algorithm_name(options_.algorithm));
-      r.message = !q.refusal.empty() ? q.refusal
-                  : grafcet_         ? "not checked: the " + engine +
-                                   " engine decides no standard check of an IEC 60848 grafcet; "
-                                   "use --engine explicit, bdd or auto"
-                             : "not checked by the " + engine +
-                                   " engine; use --engine explicit, bdd or auto";
+      r.message =
+          !q.refusal.empty() ? q.refusal
+          : grafcet_
+              ? "not checked: the " + engine +
+                    " engine decides only reachable and dead-transitions of an IEC 60848 grafcet; "
+                    "use --engine explicit, bdd or auto"
+              : "not checked by the " + engine + " engine; use --engine explicit, bdd or auto";
       return r;
     }
     if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
