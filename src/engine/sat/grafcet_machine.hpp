@@ -46,6 +46,11 @@ class GrafcetMachine {
   /// machine literal over N (e.g. in_situation()) or fired(). What the explicit engine reads
   /// on an edge of its graph, whose events end in a stable situation: a step crossed only
   /// during transient evolutions, a transition cleared (the start's stabilisation included).
+  /// "The run's first stable situation": an initial situation, stabilised (a latch set once
+  /// a stable situation has been left). Built on first use.
+  semantics::AigLit at_initial_stable();
+  /// For predicates the caller builds over the machine's latches (at_initial_stable, ...).
+  semantics::Aig& mutable_aig() { return aig_; }
   /// With `also_stable`, `lit` holding in the stable situation itself counts too.
   semantics::AigLit seen_during_event(semantics::AigLit lit, std::string name, bool also_stable);
   /// `circuit_lit` read on the machine's situation N (in any mode).
@@ -65,7 +70,7 @@ class GrafcetMachine {
   const semantics::GrafcetCircuit& circuit_;
   semantics::Aig aig_;
   std::vector<semantics::AigLit> on_n_, on_source_, on_boot_;  ///< translation memos
-  semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0;
+  semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0, initial_stable_ = 0;
   std::vector<semantics::AigLit> fired_;
 };
 

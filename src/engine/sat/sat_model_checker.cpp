@@ -778,17 +778,10 @@ class Run {
     }
     const auto& a = answers_[q.targets.front()];
     const bool invariant = q.shape == Question::Shape::Invariant;
-    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u) {
+    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u)
       // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
       // situations (one per initial valuation) does not show it for the others.
-      r.verdict = Verdict::NotChecked;
-      r.message =
-          "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-          " engine: this Grafcet has " +
-          (initial ? std::to_string(*initial) : std::string("maybe several")) +
-          " initial situations and EF p needs a run from each; use --engine explicit or bdd";
-      return r;
-    }
+      return grafcet_ef(std::move(r), *p.formula->args[0], targets_[q.targets.front()]);
     switch (a.kind) {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
@@ -807,6 +800,120 @@ class Run {
         break;
     }
     return r;
+  }
+
+  /// One target of `aig` (step_ok: the machine's) by the run's algorithm, its proof re-checked.
+  ReachResult reach_one(const Aig& aig, AigLit target) {
+    sat::ReachQuery query{&aig, machine_->step_ok(), {target}};
+    sat::BoundOptions bounds;
+    bounds.max_depth = options_.max_depth;
+    bounds.deadline = deadline_;
+    ReachResult r;
+    switch (options_.algorithm) {
+      case SatAlgorithm::Bmc:
+        return sat::bmc(query, bounds).front();
+      case SatAlgorithm::KInduction:
+        r = sat::k_induction(query, bounds).front();
+        break;
+      case SatAlgorithm::Ic3: {
+        sat::Ic3Options io;
+        io.deadline = deadline_;
+        r = sat::ic3(query, 0, io);
+        if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
+          bounds.max_depth = r.depth;  // rebuild the run with its inputs (as solve())
+          r = sat::bmc(query, bounds).front();
+        }
+        break;
+      }
+    }
+    if (r.kind == ReachResult::Kind::Unreachable) {
+      const auto verdict = sat::recheck(query, 0, r.certificate, deadline_);
+      if (!verdict.ok) {
+        r = ReachResult{};
+        r.why = "the certificate of EF failed its re-check (" + verdict.failed + ")";
+      }
+    }
+    return r;
+  }
+
+  /// The machine's latch values in the last frame of run `r`.
+  static std::vector<bool> last_latches(const Aig& aig, const ReachResult& r) {
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    for (std::uint32_t j = 0; j < r.depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    return latches;
+  }
+
+  /// The most initial situations EF p on a Grafcet examines one by one (grafcet_ef).
+  static constexpr std::size_t kMaxInitialSituations = 64;
+
+  /// EF p on a Grafcet whose initial situations are many (docs/engines.md, "EF on Grafcet"):
+  /// the initial situations stay a predicate of the machine (at_initial_stable: the stable
+  /// situation its Boot step reaches under any initial valuation), and the engine asks, by
+  /// its own algorithm, "an initial situation where p is false and not yet covered": none,
+  /// EF p holds (p holds there, or a run to p was found from each covered one); one, s0: a
+  /// copy of the machine started in s0 asks whether p is reachable from s0: not, EF p is
+  /// violated (the run to s0 is the counterexample); yes, s0 is covered, and again. Past
+  /// kMaxInitialSituations covered situations the answer is unknown.
+  PropertyResult grafcet_ef(PropertyResult r, const logic::Formula& body, AigLit target) {
+    auto& m = *machine_;
+    Aig& aig = m.mutable_aig();
+    const AigLit p = m.in_situation(logic::circuit_literal(*grafcet_, body));
+    const AigLit first = m.at_initial_stable();
+    const auto n = static_cast<std::uint32_t>(m.num_state_latches());
+    AigLit uncovered = Aig::kTrue;
+    for (std::size_t covered = 0;; ++covered) {
+      const AigLit probe = aig.make_and(first, aig.make_and(Aig::make_not(p), uncovered));
+      const auto a = reach_one(aig, probe);
+      if (a.kind == ReachResult::Kind::Unknown) {
+        r.verdict = Verdict::Unknown;
+        r.message = "EF p: a run to p from " + std::to_string(covered) +
+                    " initial situations without p; the others: " + a.why;
+        return r;
+      }
+      if (a.kind == ReachResult::Kind::Unreachable) {
+        r.verdict = Verdict::Holds;
+        r.message = covered == 0 ? "p holds in every initial situation"
+                                 : "p holds in every initial situation or a run reaches it (" +
+                                       std::to_string(covered) +
+                                       " initial situations without p, a run from each)";
+        r.certificate = sat::certificate_text(aig, a.certificate);
+        return r;
+      }
+      if (covered == kMaxInitialSituations) {
+        r.verdict = Verdict::Unknown;
+        r.message = "EF shown from " + std::to_string(covered) +
+                    " initial situations without p, and more remain (the bound "
+                    "kMaxInitialSituations of the SAT engines); use --engine bdd";
+        return r;
+      }
+      const auto s0 = last_latches(aig, a);
+      Aig from_s0 = aig;
+      for (std::uint32_t l = 0; l < s0.size(); ++l) from_s0.set_initial(l, s0[l]);
+      const auto b = reach_one(from_s0, target);
+      if (b.kind == ReachResult::Kind::Unknown) {
+        r.verdict = Verdict::Unknown;
+        r.message = "whether an initial situation reaches p: " + b.why;
+        return r;
+      }
+      if (b.kind == ReachResult::Kind::Unreachable) {
+        r.verdict = Verdict::Violated;
+        r.trace = trace_of(a, logic::TraceKind::Counterexample);
+        r.trace->note = "no run from this initial situation reaches p";
+        r.trace->marked = logic::atom_observables(body);
+        r.certificate = sat::certificate_text(from_s0, b.certificate);
+        return r;
+      }
+      AigLit cube = Aig::kTrue;
+      for (std::uint32_t l = 0; l < n; ++l)
+        cube = aig.make_and(
+            cube, s0[l] ? aig.latches()[l].current : Aig::make_not(aig.latches()[l].current));
+      uncovered = aig.make_and(uncovered, Aig::make_not(cube));
+    }
   }
 
   /// The number of distinct initial states (IEC: one; Grafcet: one per stable situation some
