@@ -849,7 +849,7 @@ class Run {
   }
 
   /// The most initial situations EF p on a Grafcet examines one by one (grafcet_ef).
-  static constexpr std::size_t kMaxInitialSituations = 64;
+  static constexpr std::size_t kMaxInitialSituations = 256;
 
   /// EF p on a Grafcet whose initial situations are many (docs/engines.md, "EF on Grafcet"):
   /// the initial situations stay a predicate of the machine (at_initial_stable: the stable
