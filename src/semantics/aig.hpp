@@ -49,6 +49,8 @@ class Aig {
   /// A latch with its initial value; its next-state function is set later (default: itself).
   AigLit add_latch(std::string name, bool initial = false);
   void set_next(std::uint32_t latch_index, AigLit next);
+  /// A copy started elsewhere (the SAT engines' EF on Grafcet runs from one situation).
+  void set_initial(std::uint32_t latch_index, bool value) { latches_[latch_index].initial = value; }
 
   AigLit make_and(AigLit a, AigLit b);  ///< constant folding + structural hashing
   /// Past `deadline`, make_and throws LimitReached(Time) (polled every 64k calls): building the

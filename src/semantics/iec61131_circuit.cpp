@@ -555,6 +555,11 @@ void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
     for (std::size_t f = 0; f < nxt_.size(); ++f) result[f] = mux(when, nxt_[f], result[f]);
   };
   AigLit going = Aig::kTrue, returned_any = Aig::kFalse;
+  // The explicit machine's repeat test (Machine::exec_loop): snapshots of the variables at
+  // iterations 64, 128, 256, 512; a path whose variables equal the last snapshot at the start
+  // of a later iteration never ends (a range error) and leaves the loop's paths.
+  std::vector<Value> mark;
+  std::int64_t mark_at = 64;
   for (std::int64_t n = 0;; ++n) {
     outer_ = aig_.make_and(base, going);
     if (!s.test_after) {
@@ -564,12 +569,29 @@ void SymbolicMachine::exec_loop(const Stmt& s, AigLit guard) {
     }
     if (going == Aig::kFalse) break;
     outer_ = aig_.make_and(base, going);
+    if (n >= 64) {
+      if (n == mark_at) {
+        mark = nxt_;
+        mark_at *= 2;
+      } else {
+        AigLit same = Aig::kTrue;
+        for (std::size_t f = 0; f < nxt_.size() && same != Aig::kFalse; ++f)
+          if (nxt_[f] != mark[f]) same = aig_.make_and(same, equal(nxt_[f], mark[f]));
+        raise(same, Aig::kTrue);
+        going = aig_.make_and(going, aig_.make_not(same));
+        if (going == Aig::kFalse) break;
+        outer_ = aig_.make_and(base, going);
+      }
+    }
     if (n == kMaxLoopIterations) {
-      // The paths still going raise a range error. The explicit machine tells a loop that never
-      // ends (a range error) from one that is only long (a limit, unknown); the unrolled circuit
-      // cannot (`going` is rarely constant-false on symbolic values even when unsatisfiable, so
-      // refusing such loops would refuse bounded ones too): docs/semantics.md 1.9.1.
+      // The paths still going have not repeated: the loop may still end, a limit of sfcv and
+      // not a finding (docs/semantics.md 1.9.1). They have no successor (range_error) and are
+      // marked as loop_limit, which every engine answers as unknown.
       raise(going, Aig::kTrue);
+      c_.loop_limit = aig_.make_or(c_.loop_limit, outer_);
+      const std::string at = "at " + s.where;
+      if (c_.loop_limit_where.find(at) == std::string::npos)
+        c_.loop_limit_where += (c_.loop_limit_where.empty() ? "" : ", ") + at;
       break;
     }
     left_loop_ = exit_ = returned_ = Aig::kFalse;
@@ -1053,6 +1075,7 @@ void SymbolicMachine::build(StateView initial_state) {
     if (!pou.instance) cycle_pou(pou, c_.allowed);
   cur_ = latched;
   c_.range_error = aig_.make_and(c_.range_error, c_.allowed);
+  c_.loop_limit = aig_.make_and(c_.loop_limit, c_.allowed);
 
   for (std::uint32_t f = 0; f < fields.size(); ++f) {
     const BitVector next = encode(nxt_[f], f);

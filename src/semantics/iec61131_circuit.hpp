@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "model/errors.hpp"
@@ -27,11 +28,25 @@ struct TransitionCircuit {
   std::vector<AigLit> fired;         ///< per transition of the system: it fires in this cycle
   AigLit allowed = Aig::kTrue;       ///< the inputs are in range and satisfy the assumptions
   AigLit range_error = Aig::kFalse;  ///< this cycle raises a range error (no successor)
+  /// This cycle runs an ST loop to kMaxLoopIterations without its variables repeating (a part
+  /// of range_error, under allowed): a limit of sfcv, not a finding, since the loop may still
+  /// end (docs/semantics.md 1.9.1). An engine that cannot show it unreachable answers unknown
+  /// where its verdict rests on the cut cycle; `loop_limit_where` names the loops.
+  AigLit loop_limit = Aig::kFalse;
+  std::string loop_limit_where;
 
   /// A cycle with a successor: allowed, without a range error (the step relation's guard).
   AigLit step_ok() { return aig.make_and(allowed, Aig::make_not(range_error)); }
-  /// An allowed cycle that raises a range error: the target of instability and overflow checks.
+  /// An allowed cycle that raises a range error or meets the loop bound: no successor.
   AigLit range_error_step() { return aig.make_and(allowed, range_error); }
+  /// An allowed cycle that raises a range error and meets no loop bound: a finding.
+  AigLit anomaly_step() { return aig.make_and(range_error_step(), Aig::make_not(loop_limit)); }
+  /// The message of the unknown answers when a reachable cycle may meet the loop bound.
+  std::string loop_limit_message() const {
+    return "a loop (" + loop_limit_where + ") may run past " +
+           "the bound kMaxLoopIterations (1000 iterations) without repeating its variables: "
+           "it may still end, the verdict is unknown";
+  }
 };
 
 /// A construct the circuit cannot express (a product of two variables, a division): the

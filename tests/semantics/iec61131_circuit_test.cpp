@@ -394,8 +394,9 @@ TEST(Iec61131Circuit, AgreesOnLoopsFunctionsAndBitStrings) {
 // The loop bound (docs/semantics.md 1.9.1) is not a finding for the int64 machine. A loop whose
 // variables repeat never ends: a range error ("loop never ends"), in the circuit too. A loop
 // that reaches 1000 iterations without repeating may still end: the machine stops with a
-// LimitReached naming the bound (unknown). (The circuit still raises a range error there: it
-// cannot tell the two, a gap docs/semantics.md 1.9.1 states.)
+// LimitReached naming the bound (unknown); the circuit makes the same repeat test and marks
+// the cycles past the bound as `loop_limit` (a limit every engine answers unknown), not as a
+// plain range error (issue 53: a range error there was a finding the program may not have).
 TEST(Iec61131Circuit, LoopBoundIsALimitAndANeverEndingLoopARangeError) {
   const char* forever = R"(
 PROGRAM Forever
@@ -410,7 +411,9 @@ END_PROGRAM
   ASSERT_FALSE(g.anomalies().empty());
   EXPECT_NE(g.anomalies().front().message.find("loop never ends"), std::string::npos)
       << g.anomalies().front().message;
-  EXPECT_NE(build_iec61131_circuit(*ts).range_error, Aig::kFalse);
+  const auto forever_circuit = build_iec61131_circuit(*ts);
+  EXPECT_NE(forever_circuit.range_error, Aig::kFalse);
+  EXPECT_EQ(forever_circuit.loop_limit, Aig::kFalse);  // it repeats at iteration 65
 
   const char* long_loop = R"(
 PROGRAM Long
@@ -431,6 +434,22 @@ END_PROGRAM
               std::string::npos)
         << e.what();
   }
+  {
+    // The circuit: the cut cycles are the limit's, named by the loop's location; a = TRUE
+    // reaches the bound from the initial state (the circuit is evaluated, not trusted).
+    auto c = build_iec61131_circuit(*ts);
+    ASSERT_NE(c.loop_limit, Aig::kFalse);
+    EXPECT_NE(c.loop_limit_message().find("kMaxLoopIterations"), std::string::npos);
+    EXPECT_NE(c.loop_limit_where.find("6:3"), std::string::npos) << c.loop_limit_where;
+    std::vector<bool> latches;
+    for (const auto& l : c.aig.latches()) latches.push_back(l.initial);
+    const std::vector<bool> a_true(c.aig.inputs().size(), true);
+    const auto nodes = c.aig.evaluate(a_true, latches);
+    EXPECT_TRUE(Aig::value_of(nodes, c.loop_limit));
+    EXPECT_FALSE(Aig::value_of(nodes, c.anomaly_step()));
+    const auto still = c.aig.evaluate(std::vector<bool>(c.aig.inputs().size(), false), latches);
+    EXPECT_FALSE(Aig::value_of(still, c.loop_limit));
+  }
   // 999 iterations: exact, no limit, no anomaly, and none in the circuit.
   std::string fits = long_loop;
   fits.replace(fits.find("1500"), 4, "999");
@@ -439,6 +458,7 @@ END_PROGRAM
   const auto ok = engine::build_reachable_situation_graph(*ts);
   EXPECT_TRUE(ok.anomalies().empty());
   EXPECT_EQ(build_iec61131_circuit(*ts).range_error, Aig::kFalse);
+  EXPECT_EQ(build_iec61131_circuit(*ts).loop_limit, Aig::kFalse);
 }
 
 // User function block instances (issue 18): an SFC-bodied FB called conditionally and twice

@@ -122,8 +122,9 @@ class Run {
     r.formula = formula;
     r.check = check;
     r.verdict = Verdict::Unknown;
-    r.message =
-        failed_limit_ == Limit::Time ? failed_ : "the BDD package ran out of resources: " + failed_;
+    r.message = failed_limit_ == Limit::Memory
+                    ? "the BDD package ran out of resources: " + failed_
+                    : failed_;  // the deadline, or the loop bound that names itself
     return r;
   }
 
@@ -154,6 +155,7 @@ class Run {
       return undecided.empty() && !task_.properties.empty();
     };
     const bool early = !undecided.empty();
+    meets_loop_bound(reached_);
     bool stopped = early && every_invariant_violated(reached_);
     while (!stopped && !frontier_.is_false()) {
       // Counting walks the whole set: only when a limit or the progress line needs it (a
@@ -187,6 +189,7 @@ class Run {
         frontier_ = next;
         break;
       }
+      meets_loop_bound(next);
       reached_ = std::move(step.reached);
       rings_.push_back(next);
       frontier_ = next;
@@ -197,6 +200,14 @@ class Run {
     last_count_ = report.states;
     report.depth = static_cast<std::uint32_t>(rings_.size() - 1);
     sys_.restrict_sources(reached_);  // Grafcet: its relation is computed from these only
+  }
+
+  /// A ring with a state whose cycle may meet the ST loop bound: the successors of that cycle
+  /// are not known, so no verdict past it is (docs/semantics.md 1.9.1): the run stops here,
+  /// as the explicit engine's does.
+  void meets_loop_bound(const Bdd& ring) {
+    if ((ring & sys_.loop_limit_states()).is_false()) return;
+    throw LimitReached(Limit::Enumeration, sys_.circuit().loop_limit_message());
   }
 
   std::string limit_message(const logic::CheckReport& report) const {
@@ -570,9 +581,9 @@ class Run {
 
     std::optional<std::string> failure() const {
       if (run_.failed_.empty()) return std::nullopt;
-      return run_.failed_limit_ == Limit::Time
-                 ? run_.failed_
-                 : "the BDD package ran out of resources: " + run_.failed_;
+      return run_.failed_limit_ == Limit::Memory
+                 ? "the BDD package ran out of resources: " + run_.failed_
+                 : run_.failed_;
     }
     std::string note_limit(const LimitReached& e) {
       run_.failed_ = e.what();

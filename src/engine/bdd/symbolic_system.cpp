@@ -164,6 +164,9 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   has_successor_ = ok_.exist(input_cube_);
   range_error_states_ =
       (node_bdd(circuit_.allowed) & node_bdd(circuit_.range_error)).exist(input_cube_);
+  loop_limit_states_ = circuit_.loop_limit == Aig::kFalse
+                           ? Bdd::constant(false)
+                           : node_bdd(circuit_.loop_limit).exist(input_cube_);
 
   next_to_current_ = std::make_unique<bdd::VarMap>();
   current_to_next_ = std::make_unique<bdd::VarMap>();

@@ -61,6 +61,9 @@ class SymbolicSystem {
   /// States (current variables) where some allowed input raises a range error (Grafcet: an
   /// event whose evolutions raise a range error or a forcing conflict).
   const Bdd& range_error_states() const;
+  /// IEC 61131-3: states where some allowed input runs an ST loop to the bound without its
+  /// variables repeating (TransitionCircuit::loop_limit; false when no loop can); Grafcet: false.
+  const Bdd& loop_limit_states() const { return loop_limit_states_; }
   /// Grafcet: states with an event whose transient evolutions never stabilise (empty for
   /// IEC 61131-3); initial_unstable(): some initial input valuation never stabilises, and
   /// initial_range_error(): some raises a range error.
@@ -290,7 +293,7 @@ class SymbolicSystem {
   mutable std::vector<Bdd> memo_;  // node_bdd's memo: a cache, filled by const queries too
   mutable std::vector<bool> memo_set_;
   Bdd current_cube_, next_cube_, input_cube_;
-  Bdd initial_, ok_, has_successor_, range_error_states_;
+  Bdd initial_, ok_, has_successor_, range_error_states_, loop_limit_states_;
   int cluster_nodes_;
   mutable std::unique_ptr<Relation> relation_;         // relation(): null until first used
   mutable std::unique_ptr<ReachedKeys> reached_keys_;  // step(): the reached states as keys

@@ -571,6 +571,9 @@ std::unique_ptr<TargetEnumerator> make_compiled_enumerator(const semantics::Tran
     const auto circuit =
         semantics::build_iec61131_circuit(ts, limits.deadline, limits.max_memory_bytes);
     if (circuit.aig.inputs().size() > 64) return nullptr;
+    // A cycle that may meet the loop bound: its successors are cut in the circuit, where the
+    // interpreter stops with a LimitReached (unknown); leave such systems to it.
+    if (circuit.loop_limit != Aig::kFalse) return nullptr;
     return std::make_unique<CompiledEnumerator>(ts, circuit, limits, initial_states(ts));
   } catch (const semantics::CircuitUnsupported&) {
     return nullptr;

@@ -72,6 +72,23 @@ GrafcetMachine::GrafcetMachine(const semantics::GrafcetCircuit& circuit) : circu
   for (auto f : circuit_.fired) fired_.push_back(translate(f, on_n_));
 }
 
+AigLit GrafcetMachine::seen_during_event(AigLit lit, std::string name, bool also_stable) {
+  const auto latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const AigLit seen = aig_.add_latch(std::move(name), false);
+  const AigLit now = aig_.make_and(transient_, lit);
+  aig_.set_next(latch, aig_.make_and(Aig::make_not(stable_), aig_.make_or(seen, now)));
+  return aig_.make_and(stable_, also_stable ? aig_.make_or(seen, lit) : seen);
+}
+
+AigLit GrafcetMachine::at_initial_stable() {
+  if (initial_stable_ != 0) return initial_stable_;
+  const auto latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const AigLit left = aig_.add_latch("left the initial situation", false);
+  aig_.set_next(latch, aig_.make_or(left, stable_));
+  initial_stable_ = aig_.make_and(stable_, Aig::make_not(left));
+  return initial_stable_;
+}
+
 AigLit GrafcetMachine::in_stable_situation(AigLit circuit_lit) {
   return aig_.make_and(stable_, translate(circuit_lit, on_n_));
 }

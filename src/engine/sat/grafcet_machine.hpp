@@ -20,6 +20,7 @@
 // so reaches no stable situation, as it has no successor in the explicit graph.
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "semantics/grafcet_circuit.hpp"
@@ -39,6 +40,23 @@ class GrafcetMachine {
   /// "A stable situation where `circuit_lit` holds": a literal of the Grafcet circuit over its
   /// state latches (an observable, a property) read on the machine's situation N, in Stable.
   semantics::AigLit in_stable_situation(semantics::AigLit circuit_lit);
+  /// "A stable situation reached by an event during which `lit` held in a situation the
+  /// event crossed (the source excluded, the stable one included)": an observer latch, reset
+  /// in Stable, accumulates `at_transient & lit` over the event's micro-steps. `lit` is a
+  /// machine literal over N (e.g. in_situation()) or fired(). What the explicit engine reads
+  /// on an edge of its graph, whose events end in a stable situation: a step crossed only
+  /// during transient evolutions, a transition cleared (the start's stabilisation included).
+  /// "The run's first stable situation": an initial situation, stabilised (a latch set once
+  /// a stable situation has been left). Built on first use.
+  semantics::AigLit at_initial_stable();
+  /// For predicates the caller builds over the machine's latches (at_initial_stable, ...).
+  semantics::Aig& mutable_aig() { return aig_; }
+  /// With `also_stable`, `lit` holding in the stable situation itself counts too.
+  semantics::AigLit seen_during_event(semantics::AigLit lit, std::string name, bool also_stable);
+  /// `circuit_lit` read on the machine's situation N (in any mode).
+  semantics::AigLit in_situation(semantics::AigLit circuit_lit) {
+    return translate(circuit_lit, on_n_);
+  }
   /// Per transition of the system: it is cleared by this micro-step (meaningful in Trans).
   const std::vector<semantics::AigLit>& fired() const { return fired_; }
   /// Machine latches [0, num_state_latches) are the circuit's state latches, same order.
@@ -52,7 +70,7 @@ class GrafcetMachine {
   const semantics::GrafcetCircuit& circuit_;
   semantics::Aig aig_;
   std::vector<semantics::AigLit> on_n_, on_source_, on_boot_;  ///< translation memos
-  semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0;
+  semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0, initial_stable_ = 0;
   std::vector<semantics::AigLit> fired_;
 };
 

@@ -111,7 +111,11 @@ class Run {
     std::vector<Question> questions;
     for (const auto& p : task_.properties) questions.push_back(property_question(p));
     for (auto c : task_.checks) questions.push_back(check_question(c));
+    std::optional<std::size_t> loop_limit;
+    if (iec_ && iec_->loop_limit != Aig::kFalse && !targets_.empty())
+      loop_limit = add_target(iec_->loop_limit);
     answers_ = solve();
+    if (loop_limit) distrust_cut_cycles(*loop_limit);
 
     std::size_t q = 0;
     for (const auto& p : task_.properties) {
@@ -133,6 +137,22 @@ class Run {
   }
 
  private:
+  /// A cycle that meets the ST loop bound has no successor in the circuit, though the loop may
+  /// still end (docs/semantics.md 1.9.1). Unless such a cycle is proved unreachable, nothing
+  /// is known past it: every "unreachable" answer becomes unknown. A run that reaches a target
+  /// takes no cut cycle (step_ok excludes them): it stays.
+  void distrust_cut_cycles(std::size_t loop_limit) {
+    if (answers_[loop_limit].kind == ReachResult::Kind::Unreachable) return;
+    const std::string why = iec_->loop_limit_message();
+    const bool reached = answers_[loop_limit].kind == ReachResult::Kind::Reached;
+    for (auto& a : answers_)
+      if (a.kind == ReachResult::Kind::Unreachable ||
+          (reached && a.kind == ReachResult::Kind::Unknown)) {  // the bound is why
+        a = ReachResult{};
+        a.why = why;
+      }
+  }
+
   /// The circuit observables and properties are read on.
   semantics::TransitionCircuit& circuit() {
     return grafcet_ ? static_cast<semantics::TransitionCircuit&>(*grafcet_) : *iec_;
@@ -173,6 +193,11 @@ class Run {
       // the oldest p still waiting for s; its target is the invariant's violation
       // (observers.hpp, docs/engines.md).
       auto& aig = iec_->aig;
+      if (iec_->loop_limit != Aig::kFalse) {  // a cut cycle would look like a deadlock
+        q.refusal = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
+                    " engine: " + iec_->loop_limit_message();
+        return q;
+      }
       if (!dead_) dead_ = sat::no_successor(aig, step_ok_);
       if (!*dead_) {
         q.refusal = "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
@@ -235,9 +260,7 @@ class Run {
 
   Question check_question(StandardCheck c) {
     Question q;
-    // Grafcet's standard checks judge transient evolutions too (steps crossed only during
-    // them, events that never stabilise): not invariants of the stable situations.
-    if (grafcet_) return q;
+    if (grafcet_) return grafcet_check_question(c);
     auto& iec = *iec_;
     switch (c) {
       case StandardCheck::Reachable:
@@ -262,7 +285,7 @@ class Run {
       case StandardCheck::Instability:
         // IEC 61131-3 has no transient evolutions; range errors are its anomalies.
         q.shape = Question::Shape::Invariant;
-        q.targets.push_back(add_target(iec.range_error_step()));
+        q.targets.push_back(add_target(iec.anomaly_step()));
         break;
       case StandardCheck::StoredActions:
         stored_actions_question(q);
@@ -274,6 +297,46 @@ class Run {
         break;
     }
     return q;
+  }
+
+  /// Grafcet (docs/engines.md): the checks that read the explicit graph's edges, whose events
+  /// end in a stable situation, as targets at the machine's stable situations with an
+  /// observer of the event (GrafcetMachine::seen_during_event): a step active in a stable
+  /// situation or crossed by an event, a transition cleared by one (the start's
+  /// stabilisation included, as fires_initially). The others stay not checked.
+  Question grafcet_check_question(StandardCheck c) {
+    Question q;
+    auto& m = *machine_;
+    switch (c) {
+      case StandardCheck::Reachable:
+        for (const auto& s : logic::step_refs(ts_, task_.project)) {
+          const AigLit x = m.in_situation(
+              logic::circuit_literal(*grafcet_, *logic::observable_atom(ts_, s.observable)));
+          q.targets.push_back(add_machine_target(m.seen_during_event(x, "seen " + s.step, true)));
+          q.labels.push_back("step " + logic::describe_step(s) + " is never active");
+        }
+        break;
+      case StandardCheck::DeadTransitions: {
+        const auto& trs = ts_.transitions();
+        for (std::uint32_t t = 0; t < trs.size(); ++t) {
+          q.targets.push_back(
+              add_machine_target(m.seen_during_event(m.fired()[t], "fired " + trs[t].name, false)));
+          q.labels.push_back("transition " + trs[t].name +
+                             (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +
+                             " never fires");
+        }
+        break;
+      }
+      default:
+        return q;
+    }
+    q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
+    return q;
+  }
+  /// A target already over the machine's latches (Grafcet).
+  std::size_t add_machine_target(AigLit machine_lit) {
+    targets_.push_back(machine_lit);
+    return targets_.size() - 1;
   }
 
   // ------------------------------------------- stored-actions and output-conflicts (IEC)
@@ -715,17 +778,10 @@ class Run {
     }
     const auto& a = answers_[q.targets.front()];
     const bool invariant = q.shape == Question::Shape::Invariant;
-    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u) {
+    if (!invariant && a.kind == ReachResult::Kind::Reached && initial != 1u)
       // EF p must hold in EVERY initial state; a run from one of a Grafcet's several initial
       // situations (one per initial valuation) does not show it for the others.
-      r.verdict = Verdict::NotChecked;
-      r.message =
-          "not checked by the " + std::string(algorithm_name(options_.algorithm)) +
-          " engine: this Grafcet has " +
-          (initial ? std::to_string(*initial) : std::string("maybe several")) +
-          " initial situations and EF p needs a run from each; use --engine explicit or bdd";
-      return r;
-    }
+      return grafcet_ef(std::move(r), *p.formula->args[0], targets_[q.targets.front()]);
     switch (a.kind) {
       case ReachResult::Kind::Reached:
         r.verdict = invariant ? Verdict::Violated : Verdict::Holds;
@@ -744,6 +800,120 @@ class Run {
         break;
     }
     return r;
+  }
+
+  /// One target of `aig` (step_ok: the machine's) by the run's algorithm, its proof re-checked.
+  ReachResult reach_one(const Aig& aig, AigLit target) {
+    sat::ReachQuery query{&aig, machine_->step_ok(), {target}};
+    sat::BoundOptions bounds;
+    bounds.max_depth = options_.max_depth;
+    bounds.deadline = deadline_;
+    ReachResult r;
+    switch (options_.algorithm) {
+      case SatAlgorithm::Bmc:
+        return sat::bmc(query, bounds).front();
+      case SatAlgorithm::KInduction:
+        r = sat::k_induction(query, bounds).front();
+        break;
+      case SatAlgorithm::Ic3: {
+        sat::Ic3Options io;
+        io.deadline = deadline_;
+        r = sat::ic3(query, 0, io);
+        if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
+          bounds.max_depth = r.depth;  // rebuild the run with its inputs (as solve())
+          r = sat::bmc(query, bounds).front();
+        }
+        break;
+      }
+    }
+    if (r.kind == ReachResult::Kind::Unreachable) {
+      const auto verdict = sat::recheck(query, 0, r.certificate, deadline_);
+      if (!verdict.ok) {
+        r = ReachResult{};
+        r.why = "the certificate of EF failed its re-check (" + verdict.failed + ")";
+      }
+    }
+    return r;
+  }
+
+  /// The machine's latch values in the last frame of run `r`.
+  static std::vector<bool> last_latches(const Aig& aig, const ReachResult& r) {
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    for (std::uint32_t j = 0; j < r.depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    return latches;
+  }
+
+  /// The most initial situations EF p on a Grafcet examines one by one (grafcet_ef).
+  static constexpr std::size_t kMaxInitialSituations = 256;
+
+  /// EF p on a Grafcet whose initial situations are many (docs/engines.md, "EF on Grafcet"):
+  /// the initial situations stay a predicate of the machine (at_initial_stable: the stable
+  /// situation its Boot step reaches under any initial valuation), and the engine asks, by
+  /// its own algorithm, "an initial situation where p is false and not yet covered": none,
+  /// EF p holds (p holds there, or a run to p was found from each covered one); one, s0: a
+  /// copy of the machine started in s0 asks whether p is reachable from s0: not, EF p is
+  /// violated (the run to s0 is the counterexample); yes, s0 is covered, and again. Past
+  /// kMaxInitialSituations covered situations the answer is unknown.
+  PropertyResult grafcet_ef(PropertyResult r, const logic::Formula& body, AigLit target) {
+    auto& m = *machine_;
+    Aig& aig = m.mutable_aig();
+    const AigLit p = m.in_situation(logic::circuit_literal(*grafcet_, body));
+    const AigLit first = m.at_initial_stable();
+    const auto n = static_cast<std::uint32_t>(m.num_state_latches());
+    AigLit uncovered = Aig::kTrue;
+    for (std::size_t covered = 0;; ++covered) {
+      const AigLit probe = aig.make_and(first, aig.make_and(Aig::make_not(p), uncovered));
+      const auto a = reach_one(aig, probe);
+      if (a.kind == ReachResult::Kind::Unknown) {
+        r.verdict = Verdict::Unknown;
+        r.message = "EF p: a run to p from " + std::to_string(covered) +
+                    " initial situations without p; the others: " + a.why;
+        return r;
+      }
+      if (a.kind == ReachResult::Kind::Unreachable) {
+        r.verdict = Verdict::Holds;
+        r.message = covered == 0 ? "p holds in every initial situation"
+                                 : "p holds in every initial situation or a run reaches it (" +
+                                       std::to_string(covered) +
+                                       " initial situations without p, a run from each)";
+        r.certificate = sat::certificate_text(aig, a.certificate);
+        return r;
+      }
+      if (covered == kMaxInitialSituations) {
+        r.verdict = Verdict::Unknown;
+        r.message = "EF shown from " + std::to_string(covered) +
+                    " initial situations without p, and more remain (the bound "
+                    "kMaxInitialSituations of the SAT engines); use --engine bdd";
+        return r;
+      }
+      const auto s0 = last_latches(aig, a);
+      Aig from_s0 = aig;
+      for (std::uint32_t l = 0; l < s0.size(); ++l) from_s0.set_initial(l, s0[l]);
+      const auto b = reach_one(from_s0, target);
+      if (b.kind == ReachResult::Kind::Unknown) {
+        r.verdict = Verdict::Unknown;
+        r.message = "whether an initial situation reaches p: " + b.why;
+        return r;
+      }
+      if (b.kind == ReachResult::Kind::Unreachable) {
+        r.verdict = Verdict::Violated;
+        r.trace = trace_of(a, logic::TraceKind::Counterexample);
+        r.trace->note = "no run from this initial situation reaches p";
+        r.trace->marked = logic::atom_observables(body);
+        r.certificate = sat::certificate_text(from_s0, b.certificate);
+        return r;
+      }
+      AigLit cube = Aig::kTrue;
+      for (std::uint32_t l = 0; l < n; ++l)
+        cube = aig.make_and(
+            cube, s0[l] ? aig.latches()[l].current : Aig::make_not(aig.latches()[l].current));
+      uncovered = aig.make_and(uncovered, Aig::make_not(cube));
+    }
   }
 
   /// The number of distinct initial states (IEC: one; Grafcet: one per stable situation some
@@ -837,12 +1007,13 @@ class Run {
     if (q.shape == Question::Shape::Unsupported) {
       r.verdict = Verdict::NotChecked;
       const std::string engine(algorithm_name(options_.algorithm));
-      r.message = !q.refusal.empty() ? q.refusal
-                  : grafcet_         ? "not checked: the " + engine +
-                                   " engine decides no standard check of an IEC 60848 grafcet; "
-                                   "use --engine explicit, bdd or auto"
-                             : "not checked by the " + engine +
-                                   " engine; use --engine explicit, bdd or auto";
+      r.message =
+          !q.refusal.empty() ? q.refusal
+          : grafcet_
+              ? "not checked: the " + engine +
+                    " engine decides only reachable and dead-transitions of an IEC 60848 grafcet; "
+                    "use --engine explicit, bdd or auto"
+              : "not checked by the " + engine + " engine; use --engine explicit, bdd or auto";
       return r;
     }
     if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
