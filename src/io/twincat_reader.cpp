@@ -491,6 +491,18 @@ class NativeFileReader {
     const bool broken = model::has_errors(lexical);
     for (auto& d : lexical) ctx_.add(std::move(d));
     if (broken) return nullptr;
+    // TwinCAT writes `END_STRUCT` (or an enumeration's `)`) right before END_TYPE without the
+    // `;` IEC 61131-3 puts there: supply it.
+    for (std::size_t i = 1; i < tokens.size(); ++i)
+      if (tokens[i].kind == st::TokenKind::Identifier &&
+          model::iequals(tokens[i].text, "END_TYPE") &&
+          tokens[i - 1].kind != st::TokenKind::Semicolon) {
+        st::Token semicolon = tokens[i];
+        semicolon.kind = st::TokenKind::Semicolon;
+        semicolon.text = ";";
+        tokens.insert(tokens.begin() + static_cast<std::ptrdiff_t>(i), semicolon);
+        ++i;
+      }
     return std::make_unique<st::Parser>(std::move(tokens), locator, budget_);
   }
 
@@ -648,11 +660,12 @@ class NativeFileReader {
     }
     std::string reason = k == "NWL" ? "LD/FBD network archives (<NWL>) are not read"
                                     : "bodies in " + k + " are not modelled";
-    for (const auto& d : problems)
-      if (d.severity == model::Severity::Error) {
-        reason = d.where.str() + ": " + d.message;
-        break;
-      }
+    if (k != "NWL")
+      for (const auto& d : problems)
+        if (d.severity == model::Severity::Error) {
+          reason = d.where.str() + ": " + d.message;
+          break;
+        }
     pc.pou.body_unsupported = true;
     pc.pou.unsupported_language = k == "NWL" ? "LD" : k;
     if (k == "ST") pc.pou.unsupported_text = plcopen::body_text(body, ctx_).text;
