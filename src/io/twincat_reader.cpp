@@ -746,6 +746,10 @@ void read_native_text(std::string_view text, const std::string& file, model::Pro
                         std::string(root.name()) + ">, not <TcPlcObject>");
     return;
   }
+  // `sfcv info` shows the version that wrote the files (the first that says).
+  if (const std::string v = trim(root.attribute("ProductVersion").value());
+      !v.empty() && project.source_format == "twincat")
+    project.source_format += " " + v;
   NativeFileReader(ctx, project, budget).read(root);
 }
 

@@ -41,7 +41,7 @@ TEST(TwinCat, DemoChartGivesTheModelOfItsPlcopenTwin) {
 
   // And that model is the chart as drawn, not merely the same mistake twice.
   const auto& p = *native.project;
-  EXPECT_EQ(p.source_format, "twincat");
+  EXPECT_EQ(p.source_format, "twincat 3.1.4024.12");  // TcPlcObject's ProductVersion
   ASSERT_EQ(p.pous.size(), 1u);
   const auto& pou = p.pous[0];
   EXPECT_EQ(pou.kind, model::PouKind::FunctionBlock);
@@ -251,7 +251,7 @@ TEST_F(TwinCatFiles, APlcprojOrAFolderLoadsEveryPouListAndType) {
     const auto r = io::load_file(path);
     ASSERT_TRUE(r.ok()) << path << "\n" << errors_of(r);
     const auto& p = *r.project;
-    EXPECT_EQ(p.source_format, "twincat");
+    EXPECT_EQ(p.source_format, "twincat 3.1.4024.12");  // MAIN.TcPOU's ProductVersion
     ASSERT_NE(p.find_pou("MAIN"), nullptr) << path;
     ASSERT_NE(p.find_pou("GVL_IO"), nullptr) << path;
     EXPECT_EQ(p.find_pou("GVL_IO")->variables.size(), 2u);
