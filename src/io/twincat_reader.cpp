@@ -30,6 +30,7 @@
 #include "model/data_types.hpp"
 #include "model/input_file.hpp"
 #include "model/names.hpp"
+#include "model/nesting.hpp"
 
 namespace sfcv::io {
 
@@ -384,6 +385,19 @@ class SfcArchiveReader {
   }
 
   Flow branch(pugi::xml_node e, const Flow& in) {
+    // Legs are read recursively: bound the nesting so that a hostile file is an error, not a
+    // stack overflow.
+    if (depth_ >= model::kMaxNesting) {
+      fail(e, describe(e) + ": branches nested deeper than " + std::to_string(model::kMaxNesting));
+      return in;
+    }
+    ++depth_;
+    Flow out = branch_legs(e, in);
+    --depth_;
+    return out;
+  }
+
+  Flow branch_legs(pugi::xml_node e, const Flow& in) {
     const auto a = attributes(e);
     const bool parallel = a.flag("Parallel");
     const auto legs = inner_list(e);
@@ -450,6 +464,7 @@ class SfcArchiveReader {
   AttributeTable table_;
   std::map<std::string, model::ExprPtr> guards_;
   std::string first_step_;
+  int depth_ = 0;
   bool failed_ = false;
 };
 

@@ -171,6 +171,19 @@ TEST(TwinCat, MisplacedBranchesAndUnknownElementsAreRefused) {
       << err;
 }
 
+TEST(TwinCat, BranchesNestedPastTheLimitAreAnErrorNotACrash) {
+  Archive ar(vendor_guids());
+  // Alternative branches each holding the next in a leg, 205 deep (the limit is 200).
+  std::string inner = ar.transition("TRUE");
+  for (int i = 0; i < 205; ++i)
+    inner = ar.transition("TRUE") + ar.step("S" + std::to_string(i)) +
+            ar.branch(false, {inner, ar.transition("TRUE")});
+  const std::string e = ar.step("Top", true) + ar.branch(false, {inner, ar.transition("TRUE")}) +
+                        ar.step("End") + ar.transition("TRUE");
+  const auto err = refused(tcpou("P", "PROGRAM P", ar.sfc(e)));
+  EXPECT_NE(err.find("branches nested deeper than 200"), std::string::npos) << err.substr(0, 500);
+}
+
 TEST(TwinCat, ObjectOrientedPousAreRefusedAtTheirPlace) {
   // EXTENDS: located by line and column inside the declaration's CDATA (line 4 of the file).
   auto err =
