@@ -56,9 +56,10 @@ Format detect_format(const std::string& path, std::string_view text) {
 
 LoadResult load_file(const std::string& path, Format format, const model::Budget* budget) {
   std::error_code ec;
-  if (format == Format::TwinCatProject ||
-      (format == Format::Auto &&
-       (ends_with(path, ".plcproj") || std::filesystem::is_directory(path, ec))))
+  // A folder is a TwinCAT project only when asked (--format twincat): a folder given by
+  // mistake stays an error rather than a scan of everything under it.
+  if (format == Format::TwinCatProject || (format == Format::Auto && ends_with(path, ".plcproj")) ||
+      (format == Format::TwinCat && std::filesystem::is_directory(path, ec)))
     return load_twincat_project(path, budget);
   std::string text;
   if (auto reason = model::try_read_input_file(path, "the model", text)) {

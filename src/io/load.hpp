@@ -43,7 +43,8 @@ LoadResult load_agrafe_xmi(std::string_view text, const std::string& file,
 LoadResult load_twincat(std::string_view text, const std::string& file,
                         const model::Budget* budget = nullptr);
 /// A TwinCAT 3 PLC project: a .plcproj (the object files it compiles) or a folder (every
-/// .TcPOU/.TcGVL/.TcDUT under it), read into one project.
+/// .TcPOU/.TcGVL/.TcDUT under it), read into one project. load_file reads a folder so only
+/// with Format::TwinCat.
 LoadResult load_twincat_project(const std::string& path, const model::Budget* budget = nullptr);
 
 /// Vendor formats sfcv recognises but does not read (CODESYS native .export, SimaticML,

@@ -785,6 +785,9 @@ LoadResult finish(model::Project project, model::Diagnostics diags) {
   return r;
 }
 
+// A folder given by mistake (a home directory) should not be read file by file for minutes.
+constexpr std::size_t kMaxProjectFiles = 20000;
+
 bool has_suffix(const std::string& s, std::string_view suffix) {
   return s.size() >= suffix.size() &&
          model::iequals(std::string_view(s).substr(s.size() - suffix.size()), suffix);
@@ -838,8 +841,15 @@ LoadResult load_twincat_project(const std::string& path, const model::Budget* bu
   if (std::filesystem::is_directory(path, ec)) {
     for (auto it = std::filesystem::recursive_directory_iterator(path, ec);
          !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file() && is_object_file(it->path().string()))
+      if (it->is_regular_file() && is_object_file(it->path().string())) {
+        if (files.size() == kMaxProjectFiles) {
+          diags.push_back({model::Severity::Error, project.where,
+                           "more than " + std::to_string(kMaxProjectFiles) +
+                               " TwinCAT object files under the folder"});
+          return LoadResult{std::nullopt, std::move(diags)};
+        }
         files.push_back(it->path().string());
+      }
     std::sort(files.begin(), files.end());  // directory order is not stable across systems
     project.name = std::filesystem::path(path).filename().string();
   } else {

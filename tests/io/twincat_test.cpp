@@ -260,8 +260,9 @@ TEST_F(TwinCatFiles, APlcprojOrAFolderLoadsEveryPouListAndType) {
             "<Compile Include=\"ST_Pair.TcDUT\"><SubType>Code</SubType></Compile>"
             "<Compile Include=\"PlcTask.TcTTO\"><SubType>Code</SubType></Compile>"
             "</ItemGroup></Project>\n");
+  // A folder is read as a project when the format says so (auto keeps refusing folders).
   for (const auto& path : {proj, dir_.string()}) {
-    const auto r = io::load_file(path);
+    const auto r = io::load_file(path, path == proj ? io::Format::Auto : io::Format::TwinCat);
     ASSERT_TRUE(r.ok()) << path << "\n" << errors_of(r);
     const auto& p = *r.project;
     EXPECT_EQ(p.source_format, "twincat 3.1.4024.12");  // MAIN.TcPOU's ProductVersion
@@ -270,6 +271,7 @@ TEST_F(TwinCatFiles, APlcprojOrAFolderLoadsEveryPouListAndType) {
     EXPECT_EQ(p.find_pou("GVL_IO")->variables.size(), 2u);
     EXPECT_EQ(p.find_pou("MAIN")->body.size(), 2u);
   }
+  EXPECT_FALSE(io::load_file(dir_.string()).ok());
   // A compiled file that is missing is an error naming it.
   std::filesystem::remove(dir_ / "GVL_IO.TcGVL");
   const auto r = io::load_file(proj);
