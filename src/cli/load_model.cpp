@@ -45,7 +45,9 @@ io::Format parse_format(const std::string& name) {
   if (name == "iec" || name == "st" || name == "sfc") return io::Format::IecText;
   if (name == "g7") return io::Format::G7;
   if (name == "agrafe" || name == "grafcet") return io::Format::AgrafeXmi;
-  throw InputError("unknown format '" + name + "' (expected auto, xml, iec, g7 or agrafe)");
+  if (name == "twincat") return io::Format::TwinCat;
+  throw InputError("unknown format '" + name +
+                   "' (expected auto, xml, iec, g7, agrafe or twincat)");
 }
 
 }  // namespace sfcv::cli

@@ -1,6 +1,7 @@
 #include "io/load.hpp"
 
 #include <cctype>
+#include <filesystem>
 
 #include "model/input_file.hpp"
 
@@ -18,7 +19,24 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 }
 }  // namespace
 
+std::optional<std::string> unread_vendor_format(const std::string& path, std::string_view text) {
+  const auto head = text.substr(0, 4096);
+  const auto has = [&](std::string_view s) { return head.find(s) != std::string_view::npos; };
+  const std::string tail = "; export the program as PLCopen XML (docs/formats.md)";
+  if (ends_with(path, ".export") || has("<ExportFile"))
+    return "CODESYS native export (<ExportFile>) is not read" + tail;
+  if (ends_with(path, ".l5x") || has("<RSLogix5000Content"))
+    return "Rockwell Studio 5000 L5X is not read" + tail;
+  if (has("<SW.Blocks.") || (has("<Document") && has("<Engineering")))
+    return "Siemens TIA Portal SimaticML (S7-GRAPH) is not read" + tail;
+  return std::nullopt;
+}
+
 Format detect_format(const std::string& path, std::string_view text) {
+  if (ends_with(path, ".tcpou") || ends_with(path, ".tcgvl") || ends_with(path, ".tcdut"))
+    return Format::TwinCat;
+  if (ends_with(path, ".plcproj")) return Format::TwinCatProject;
+  if (text.find("<TcPlcObject") != std::string_view::npos) return Format::TwinCat;
   if (ends_with(path, ".g7")) return Format::G7;
   if (ends_with(path, ".grafcet")) return Format::AgrafeXmi;
   if (ends_with(path, ".st") || ends_with(path, ".sfc") || ends_with(path, ".txt") ||
@@ -37,6 +55,12 @@ Format detect_format(const std::string& path, std::string_view text) {
 }
 
 LoadResult load_file(const std::string& path, Format format, const model::Budget* budget) {
+  std::error_code ec;
+  // A folder is a TwinCAT project only when asked (--format twincat): a folder given by
+  // mistake stays an error rather than a scan of everything under it.
+  if (format == Format::TwinCatProject || (format == Format::Auto && ends_with(path, ".plcproj")) ||
+      (format == Format::TwinCat && std::filesystem::is_directory(path, ec)))
+    return load_twincat_project(path, budget);
   std::string text;
   if (auto reason = model::try_read_input_file(path, "the model", text)) {
     LoadResult r;
@@ -45,7 +69,16 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
     r.diagnostics.push_back({model::Severity::Error, where, *reason});
     return r;
   }
-  if (format == Format::Auto) format = detect_format(path, text);
+  if (format == Format::Auto) {
+    if (auto reason = unread_vendor_format(path, text)) {
+      LoadResult r;
+      model::SourceLocation where;
+      where.file = path;
+      r.diagnostics.push_back({model::Severity::Error, where, "unsupported: " + *reason});
+      return r;
+    }
+    format = detect_format(path, text);
+  }
   switch (format) {
     case Format::PlcopenXml:
       return load_plcopen_xml(text, path, budget);
@@ -55,6 +88,10 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
       return load_g7(text, path, budget);
     case Format::AgrafeXmi:
       return load_agrafe_xmi(text, path, budget);
+    case Format::TwinCat:
+      return load_twincat(text, path, budget);
+    case Format::TwinCatProject:
+      return load_twincat_project(path, budget);
     case Format::Auto:
       break;
   }

@@ -12,7 +12,7 @@
 
 namespace sfcv::io {
 
-enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi };
+enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi, TwinCat, TwinCatProject };
 
 struct LoadResult {
   std::optional<model::Project> project;  ///< empty when an error prevented building a model
@@ -21,8 +21,8 @@ struct LoadResult {
   bool ok() const { return project.has_value() && !model::has_errors(diagnostics); }
 };
 
-/// The format a file is in, from its extension (.xml, .st/.sfc/.txt, .g7, .grafcet) and, for
-/// XML, its root element.
+/// The format a file is in, from its extension (.xml, .st/.sfc/.txt, .g7, .grafcet, .TcPOU/
+/// .TcGVL/.TcDUT, .plcproj) and, for XML, its root element.
 Format detect_format(const std::string& path, std::string_view text);
 
 /// Reads and parses `path`. A missing or unreadable file is an error diagnostic, not an
@@ -39,5 +39,16 @@ LoadResult load_g7(std::string_view text, const std::string& file,
                    const model::Budget* budget = nullptr);
 LoadResult load_agrafe_xmi(std::string_view text, const std::string& file,
                            const model::Budget* budget = nullptr);
+/// One TwinCAT 3 object file (.TcPOU, .TcGVL, .TcDUT); docs/formats.md.
+LoadResult load_twincat(std::string_view text, const std::string& file,
+                        const model::Budget* budget = nullptr);
+/// A TwinCAT 3 PLC project: a .plcproj (the object files it compiles) or a folder (every
+/// .TcPOU/.TcGVL/.TcDUT under it), read into one project. load_file reads a folder so only
+/// with Format::TwinCat.
+LoadResult load_twincat_project(const std::string& path, const model::Budget* budget = nullptr);
+
+/// Vendor formats sfcv recognises but does not read (CODESYS native .export, SimaticML,
+/// Rockwell L5X): the reason naming the format, or nullopt.
+std::optional<std::string> unread_vendor_format(const std::string& path, std::string_view text);
 
 }  // namespace sfcv::io

@@ -55,7 +55,8 @@ std::string XmlContext::element_path(pugi::xml_node node) const {
   std::vector<std::string> parts;
   for (auto n = node; n && n.type() == pugi::node_element; n = n.parent()) {
     std::string part(local_name(n));
-    const auto name = n.attribute("name");
+    // TwinCAT object files spell it `Name`.
+    const auto name = n.attribute("name") ? n.attribute("name") : n.attribute("Name");
     const auto id = n.attribute("localId");
     const auto formal = n.attribute("formalParameter");
     if (name && *name.value()) {
@@ -131,9 +132,8 @@ void collect_text(pugi::xml_node node, std::string& out, std::ptrdiff_t& first_o
     if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
       if (first) {
         first = false;
-        const auto off = c.offset_debug();
-        // A CDATA node starts at "<![CDATA["; its text 9 characters later.
-        first_offset = off < 0 ? -1 : off + (c.type() == pugi::node_cdata ? 9 : 0);
+        // pugixml's offset of a CDATA node is already that of its text, past "<![CDATA[".
+        first_offset = c.offset_debug();
       }
       out += c.value();
     } else if (c.type() == pugi::node_element) {
