@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 #include "model/names.hpp"
@@ -15,11 +16,22 @@ bool starts_with_ci(std::string_view s, std::string_view prefix) {
   return s.size() >= prefix.size() && model::iequals(s.substr(0, prefix.size()), prefix);
 }
 
+/// A compared signal that its side never writes is a free input of the product, not kept in
+/// the state: shown as "?".
+constexpr std::uint32_t kNotObserved = ~std::uint32_t{0};
+constexpr std::int64_t kUnknownValue = std::numeric_limits<std::int64_t>::min();
+
 std::uint32_t observable(const semantics::TransitionSystem& ts, const std::string& name) {
-  std::string why;
-  const auto index = semantics::find_observable(ts, name, &why);
-  if (!index) throw std::logic_error("equivalence trace: " + why);
-  return *index;
+  return semantics::find_observable(ts, name).value_or(kNotObserved);
+}
+
+std::int64_t value(const semantics::TransitionSystem& ts, semantics::StateView state,
+                   std::uint32_t index) {
+  return index == kNotObserved ? kUnknownValue : ts.observe(state, index);
+}
+
+std::string value_text(std::int64_t v) {
+  return v == kUnknownValue ? "?" : std::to_string(v);
 }
 
 /// One cycle of a counterexample as the side-by-side views show it.
@@ -57,8 +69,8 @@ std::vector<Row> rows(const logic::Trace& trace, const semantics::EquivalencePro
         row.new_steps.push_back(obs[i].name.substr(new_prefix.size()));
     }
     for (std::size_t s = 0; s < p.compared.size(); ++s) {
-      row.values.emplace_back(ts.observe(step.state, old_ix[s]), ts.observe(step.state, new_ix[s]));
-      row.differs.push_back(ts.observe(step.state, flag_ix[s]) != 0);
+      row.values.emplace_back(value(ts, step.state, old_ix[s]), value(ts, step.state, new_ix[s]));
+      row.differs.push_back(value(ts, step.state, flag_ix[s]) == 1);
     }
     out.push_back(std::move(row));
   }
@@ -127,7 +139,7 @@ std::string equivalence_trace_table(const logic::Trace& trace,
                                      r.old_steps.empty() ? "-" : join(r.old_steps, ","),
                                      r.new_steps.empty() ? "-" : join(r.new_steps, ",")};
     for (std::size_t s = 0; s < r.values.size(); ++s)
-      line.push_back(std::to_string(r.values[s].first) + "/" + std::to_string(r.values[s].second) +
+      line.push_back(value_text(r.values[s].first) + "/" + value_text(r.values[s].second) +
                      (r.differs[s] ? " *" : ""));
     cells.push_back(std::move(line));
   }
@@ -160,8 +172,11 @@ nlohmann::json equivalence_trace_json(const logic::Trace& trace,
     nlohmann::json old_values = nlohmann::json::object(), new_values = nlohmann::json::object();
     auto differs = nlohmann::json::array();
     for (std::size_t s = 0; s < p.compared.size(); ++s) {
-      old_values[p.compared[s].name] = r.values[s].first;
-      new_values[p.compared[s].new_name] = r.values[s].second;
+      const auto json_value = [](std::int64_t v) {
+        return v == kUnknownValue ? nlohmann::json() : nlohmann::json(v);
+      };
+      old_values[p.compared[s].name] = json_value(r.values[s].first);
+      new_values[p.compared[s].new_name] = json_value(r.values[s].second);
       if (r.differs[s]) differs.push_back(p.compared[s].name);
     }
     old_side["signals"] = old_values;
@@ -181,7 +196,8 @@ std::string equivalence_trace_vcd(const logic::Trace& trace, const semantics::Eq
   for (const auto& s : p.compared)
     for (const auto* name : {&s.old_ref, &s.new_ref, &s.differs}) {
       const auto ix = observable(ts, *name);
-      if (std::find(marked.marked.begin(), marked.marked.end(), ix) == marked.marked.end())
+      if (ix != kNotObserved &&
+          std::find(marked.marked.begin(), marked.marked.end(), ix) == marked.marked.end())
         marked.marked.push_back(ix);
     }
   return trace_vcd(marked, ts, {cycle_ms});

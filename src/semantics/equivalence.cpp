@@ -168,9 +168,18 @@ bool is_input(const model::Variable& v) {
 
 /// Program variables that no POU of the run writes and that are free inputs: they become
 /// VAR_INPUTs so that the two sides share them by name.
-void free_variables_to_inputs(Side& side, std::vector<std::string>& notes) {
-  for (const auto& u : unwritten_variables(*side.system)) {
+void free_variables_to_inputs(Side& side, const std::vector<ComparedSignal>& compared,
+                              const EquivalenceOptions::Map* map, std::vector<std::string>& notes) {
+  for (auto u : unwritten_variables(*side.system)) {
     if (!u.free) continue;
+    // NEW's names as the product has them after --map.
+    if (map)
+      for (const auto& [old_name, new_name] : *map) {
+        if (model::iequals(u.name, new_name)) u.name = old_name;
+        const auto dot = u.name.rfind('.');
+        if (dot != std::string::npos && model::iequals(u.name.substr(dot + 1), new_name))
+          u.name = u.name.substr(0, dot + 1) + old_name;
+      }
     bool shared = false;
     for (const auto& prog : side.programs) {
       auto* pou = find_pou(side.project, prog);
@@ -178,10 +187,20 @@ void free_variables_to_inputs(Side& side, std::vector<std::string>& notes) {
         if (v.direction == model::VarDirection::Global ||
             v.direction == model::VarDirection::External)
           continue;
-        if (model::iequals(u.name, v.name) || model::iequals(u.name, prog + "." + v.name)) {
-          v.direction = model::VarDirection::Input;
+        if (!model::iequals(u.name, v.name) && !model::iequals(u.name, prog + "." + v.name))
+          continue;
+        // A compared signal that its side never writes stays that side's own free value.
+        const auto ref = side.prefix + prog + "." + v.name;
+        if (std::any_of(compared.begin(), compared.end(), [&](const ComparedSignal& c) {
+              return model::iequals(c.old_ref, ref) || model::iequals(c.new_ref, ref);
+            })) {
+          notes.push_back(std::string(side.label) + " never writes the compared " + v.name +
+                          ": it is free there (any value each cycle)");
           shared = true;
+          continue;
         }
+        v.direction = model::VarDirection::Input;
+        shared = true;
       }
     }
     // An instance's or a global's free variable stays one input per side: the two sides may
@@ -520,11 +539,11 @@ EquivalenceProduct make_equivalence_product(const model::Project& old_project,
   out.project.dialect = model::Dialect::Iec61131;
   out.project.source_format = "equiv";
   out.project.data_types_lowered = old_project.data_types_lowered || new_project.data_types_lowered;
-  free_variables_to_inputs(old_side, out.notes);
-  free_variables_to_inputs(new_side, out.notes);
   apply_map(new_side, old_side, options);
-  check_inputs(old_side, new_side, out);
   choose_signals(old_side, new_side, options, out);
+  free_variables_to_inputs(old_side, out.compared, nullptr, out.notes);
+  free_variables_to_inputs(new_side, out.compared, &options.map, out.notes);
+  check_inputs(old_side, new_side, out);
   std::vector<std::pair<std::int64_t, std::int64_t>> initial;
   for (const auto& s : out.compared) {
     const auto program_of = [](const std::string& ref, const char* prefix) {

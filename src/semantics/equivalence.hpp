@@ -26,7 +26,8 @@ inline constexpr const char* kEquivObserver = "Equiv_Observer";
 struct EquivalenceOptions {
   /// `--map old=new`: NEW's variable `new` is OLD's `old` (an input both read, or a compared
   /// signal); NEW's program variable is renamed to `old` in the product.
-  std::vector<std::pair<std::string, std::string>> map;
+  using Map = std::vector<std::pair<std::string, std::string>>;
+  Map map;
   /// `--outputs`: the signals compared; empty = every VAR_OUTPUT (and %Q variable) of OLD's
   /// programs that NEW's programs declare too.
   std::vector<std::string> outputs;
