@@ -25,6 +25,7 @@ namespace {
 struct Renaming {
   std::string from, to;                     ///< variable; empty: none
   std::map<std::string, std::string> pous;  ///< upper-case old name -> new name
+  std::set<std::string>* seen = nullptr;    ///< collects the POU names looked up (upper case)
 };
 
 std::string rename_head(const std::string& path, const Renaming& r) {
@@ -37,6 +38,7 @@ std::string rename_head(const std::string& path, const Renaming& r) {
 }
 
 std::string rename_pou(const std::string& name, const Renaming& r) {
+  if (r.seen) r.seen->insert(model::to_upper(name));
   const auto it = r.pous.find(model::to_upper(name));
   return it == r.pous.end() ? name : it->second;
 }
@@ -65,6 +67,7 @@ model::StmtList rename(const model::StmtList& body, const Renaming& r);
 model::StmtPtr rename(const model::StmtPtr& s, const Renaming& r) {
   if (!s) return s;
   auto copy = std::make_shared<model::Stmt>(*s);
+  if (s->kind == model::StmtKind::FbCall) (void)rename_pou(s->target, r);
   copy->target = rename_head(s->target, r);
   copy->value = rename(s->value, r);
   for (auto& c : copy->conditions) c = rename(c, r);
@@ -120,10 +123,12 @@ struct Side {
 class FirstState : public SuccessorSink {
  public:
   void successor(const Successor& s) override {
+    ++count;
     if (!state.empty()) return;
     state.assign(s.target.begin(), s.target.end());
   }
   std::vector<StateWord> state;
+  std::size_t count = 0;
 };
 
 std::string diagnostics_text(const model::Diagnostics& diags) {
@@ -147,6 +152,11 @@ void build_alone(Side& side, const Iec61131Options& options) {
     if (model::iequals(inst.path, inst.pou)) side.programs.push_back(inst.pou);
   FirstState first;
   side.system->initial_states(first);
+  // The observer's first comparison is of the two initial situations: it needs one on each side.
+  if (first.count != 1)
+    throw UnsupportedConstruct(std::string("sfcv equiv: ") + side.label + " has " +
+                               std::to_string(first.count) +
+                               " initial situations; equiv compares programs with one");
   side.initial = std::move(first.state);
 }
 
@@ -278,7 +288,23 @@ std::set<std::string> global_names(const model::Project& p) {
   return out;
 }
 
+/// The names of the POUs `pou` may use: its instances' types, the functions it calls (and,
+/// conservatively, every call target).
+std::set<std::string> referenced_pous(const model::Pou& pou) {
+  std::set<std::string> seen;
+  Renaming r;
+  r.seen = &seen;
+  model::Pou copy = pou;
+  rename_in_pou(copy, r);
+  return seen;
+}
+
 bool same_pou(const model::Pou& a, const model::Pou& b) {
+  // first_difference ignores type names; an instance of another type is another POU.
+  for (const auto& v : a.variables) {
+    const auto* w = b.find_variable(v.name);
+    if (w && !model::iequals(v.type.name, w->type.name)) return false;
+  }
   model::Project pa, pb;
   pa.pous.push_back(a);
   pb.pous.push_back(b);
@@ -312,18 +338,40 @@ void merge_pous(Side& old_side, Side& new_side, EquivalenceProduct& out) {
   std::vector<model::Pou> new_pous;
   for (auto& pou : old_side.project.pous)
     if (is_run(old_side, pou.name)) pou.name = fresh(old_side.prefix + pou.name);
+  // NEW's POUs that OLD also declares: shared when equal and everything they use is shared
+  // too (a fixpoint: an equal block using a changed function must run NEW's function).
+  std::set<std::string> differing;
+  for (const auto& pou : new_side.project.pous) {
+    if (is_run(new_side, pou.name)) continue;
+    const auto* twin = old_side.project.find_pou(pou.name);
+    if (twin && !same_pou(*twin, pou)) differing.insert(model::to_upper(pou.name));
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const auto& pou : new_side.project.pous) {
+      const auto key = model::to_upper(pou.name);
+      if (is_run(new_side, pou.name) || differing.count(key) ||
+          !old_side.project.find_pou(pou.name))
+        continue;
+      for (const auto& used : referenced_pous(pou))
+        if (differing.count(used)) {
+          differing.insert(key);
+          grew = true;
+          break;
+        }
+    }
+  }
   for (auto& pou : new_side.project.pous) {
     if (is_run(new_side, pou.name)) {
       pou.name = fresh(new_side.prefix + pou.name);
       new_pous.push_back(pou);
       continue;
     }
-    const auto* twin = old_side.project.find_pou(pou.name);
-    if (!twin) {
+    if (!old_side.project.find_pou(pou.name)) {
       new_pous.push_back(pou);
       continue;
     }
-    if (same_pou(*twin, pou)) continue;
+    if (!differing.count(model::to_upper(pou.name))) continue;
     if (is_global_list(pou))
       throw UnsupportedConstruct("sfcv equiv: both programs have a global variable list '" +
                                  pou.name + "', and they differ");
@@ -353,6 +401,15 @@ std::map<std::string, const model::Variable*> side_inputs(Side& side) {
 
 void check_inputs(Side& old_side, Side& new_side, EquivalenceProduct& out) {
   const auto old_in = side_inputs(old_side), new_in = side_inputs(new_side);
+  for (const auto& [key, v] : old_in)
+    if (!new_in.count(key))
+      out.notes.push_back("OLD's input " + v->name +
+                          " is not an input of NEW: each side reads its own (--map " + v->name +
+                          "=...)");
+  for (const auto& [key, v] : new_in)
+    if (!old_in.count(key))
+      out.notes.push_back("NEW's input " + v->name +
+                          " is not an input of OLD: each side reads its own");
   for (const auto& [key, v] : old_in) {
     const auto it = new_in.find(key);
     if (it == new_in.end()) continue;
