@@ -219,3 +219,48 @@ TEST(Equiv, TraceFileInVcdShowsBothSides) {
 
 }  // namespace
 }  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// Function block types: one both sides declare identically is shared (each instance keeps its
+// own state); one that differs runs as NEW's own `New_<type>`, and so does an unchanged type
+// that holds an instance of the changed one (else NEW would run OLD's inner block).
+std::string latch_program(const std::string& latch_body) {
+  return "FUNCTION_BLOCK Latch\n  VAR_INPUT set, reset : BOOL; END_VAR\n"
+         "  VAR_OUTPUT q : BOOL; END_VAR\n  " +
+         latch_body +
+         "\nEND_FUNCTION_BLOCK\n"
+         "FUNCTION_BLOCK Holder\n  VAR_INPUT s, r : BOOL; END_VAR\n"
+         "  VAR_OUTPUT q : BOOL; END_VAR\n  VAR l : Latch; END_VAR\n"
+         "  l(set := s, reset := r, q => q);\nEND_FUNCTION_BLOCK\n"
+         "PROGRAM Main\n  VAR_INPUT a, b : BOOL; END_VAR\n"
+         "  VAR_OUTPUT lamp : BOOL; END_VAR\n  VAR h : Holder; END_VAR\n"
+         "  h(s := a, r := b, q => lamp);\nEND_PROGRAM\n";
+}
+
+TEST(Equiv, ChangedFunctionBlockTypesRunAsNewsOwn) {
+  // Set wins over reset in OLD; reset wins in NEW: they differ when both come at once.
+  const auto a = write_temp(
+      latch_program("IF set THEN q := TRUE; ELSIF reset THEN q := FALSE; END_IF;"), ".st");
+  const auto same = write_temp(
+      latch_program("IF set THEN q := TRUE; ELSIF reset THEN q := FALSE; END_IF;"), ".st");
+  const auto b = write_temp(
+      latch_program("IF reset THEN q := FALSE; ELSIF set THEN q := TRUE; END_IF;"), ".st");
+  auto r = run_sfcv("-q equiv " + a + " " + same + " --engine explicit");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("note: NEW's"), std::string::npos) << r.out;
+  for (const char* engine : {"explicit", "ic3"}) {
+    r = run_sfcv(std::string("-q equiv ") + a + " " + b + " --engine " + engine);
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("differ after 1 cycle(s)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("NEW's Latch differs from OLD's: it runs as New_Latch"), std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("NEW's Holder differs from OLD's: it runs as New_Holder"),
+              std::string::npos)
+        << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
