@@ -160,7 +160,7 @@ int run_equiv(const EquivOptions& o) {
       load_model_or_throw(o.old_model, parse_format(o.format), global_options().quiet, &budget);
   const auto new_project =
       load_model_or_throw(o.new_model, parse_format(o.format), global_options().quiet, &budget);
-  const auto product = semantics::make_equivalence_product(
+  auto product = semantics::make_equivalence_product(
       old_project, new_project, library_options(o, logic::assumption_exprs(assumptions.spec)));
 
   model::Diagnostics diags;
@@ -173,6 +173,9 @@ int run_equiv(const EquivOptions& o) {
       if (d.severity == model::Severity::Error) text += "\n  " + d.str();
     throw InputError(text);
   }
+
+  product.notes.push_back(semantics::abstract_time_note(*system));
+  if (product.notes.back().empty()) product.notes.pop_back();
 
   logic::CheckInputs inputs;
   inputs.spec_text = spec_text(product, o.changed);

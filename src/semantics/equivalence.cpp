@@ -619,4 +619,16 @@ EquivalenceProduct make_equivalence_product(const model::Project& old_project,
   return out;
 }
 
+std::string abstract_time_note(const TransitionSystem& product) {
+  std::size_t count = 0;
+  for (const auto& in : product.inputs())
+    if (in.pseudo && (in.name.rfind("timeout:", 0) == 0 || in.name.rfind("elapse:", 0) == 0))
+      ++count;
+  if (!count) return {};
+  return std::to_string(count) +
+         " timers or step times run on abstract time: each side's expire independently, so a "
+         "difference may come from time alone (the trace shows timeout:...); --time discrete "
+         "--cycle ... compares them in real cycles";
+}
+
 }  // namespace sfcv::semantics

@@ -16,6 +16,7 @@
 
 #include "model/chart.hpp"
 #include "semantics/options.hpp"
+#include "semantics/transition_system.hpp"
 
 namespace sfcv::semantics {
 
@@ -67,5 +68,10 @@ struct EquivalenceProduct {
 EquivalenceProduct make_equivalence_product(const model::Project& old_project,
                                             const model::Project& new_project,
                                             const EquivalenceOptions& options);
+
+/// The note for a product that reads abstract time (`timeout:` or `elapse:` pseudo-inputs): each
+/// side's timers expire independently, so a difference may come from time alone; empty when
+/// the product has none.
+std::string abstract_time_note(const TransitionSystem& product);
 
 }  // namespace sfcv::semantics

@@ -264,3 +264,24 @@ TEST(Equiv, ChangedFunctionBlockTypesRunAsNewsOwn) {
 
 }  // namespace
 }  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// docs/equivalence.md, timers: under abstract time each side's timer expires when it likes, so
+// even a program and its copy "differ" (the note says why); in discrete time they do not.
+TEST(Equiv, TimersCompareInDiscreteTime) {
+  const auto a = write_temp(
+      "PROGRAM Blink\n  VAR_INPUT go : BOOL; END_VAR\n  VAR_OUTPUT out : BOOL; END_VAR\n"
+      "  VAR t : TON; END_VAR\n  t(IN := go, PT := T#30ms);\n  out := t.Q;\nEND_PROGRAM\n",
+      ".st");
+  auto r = run_sfcv("-q equiv " + a + " " + a + " --engine explicit");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("run on abstract time"), std::string::npos) << r.out;
+  r = run_sfcv("-q equiv " + a + " " + a + " --engine explicit --time discrete --cycle 10ms");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("abstract time"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace sfcv::test
