@@ -390,6 +390,11 @@ void merge_pous(Side& old_side, Side& new_side, EquivalenceProduct& out) {
   for (auto& pou : new_pous) out.project.pous.push_back(std::move(pou));
 }
 
+bool is_output(const model::Variable& v) {
+  return v.direction == model::VarDirection::Output ||
+         (v.address.size() > 1 && (v.address[1] == 'Q' || v.address[1] == 'q'));
+}
+
 /// The inputs of a side: name (upper case) -> variable, over its programs.
 std::map<std::string, const model::Variable*> side_inputs(Side& side) {
   std::map<std::string, const model::Variable*> out;
@@ -419,15 +424,15 @@ void check_inputs(Side& old_side, Side& new_side, EquivalenceProduct& out) {
                        " in NEW; both programs must read the same inputs (--map pairs others)");
     out.shared_inputs.push_back(v->name);
   }
-  // An input of one side with the name of a variable the other side writes would read that
-  // variable (docs/semantics.md 1.8, plant models): the sides would no longer be apart.
+  // An input of one side with the name of an output of the other would read that output
+  // (docs/semantics.md 1.8, plant models): the sides would no longer be apart.
   auto clash = [](Side& reader, Side& writer,
                   const std::map<std::string, const model::Variable*>& inputs) {
     for (const auto& prog : writer.programs)
       for (const auto& v : find_pou(writer.project, prog)->variables)
-        if (!is_input(v) && inputs.count(model::to_upper(v.name)))
+        if (is_output(v) && inputs.count(model::to_upper(v.name)))
           throw InputError(std::string("sfcv equiv: '") + v.name + "' is an input of " +
-                           reader.label + " but a variable of " + writer.label + "'s " + prog +
+                           reader.label + " but an output of " + writer.label + "'s " + prog +
                            "; rename one of them");
   };
   clash(old_side, new_side, old_in);
@@ -438,11 +443,6 @@ std::string sanitize(const std::string& name) {
   std::string s;
   for (const char c : name) s += (std::isalnum(static_cast<unsigned char>(c)) ? c : '_');
   return s;
-}
-
-bool is_output(const model::Variable& v) {
-  return v.direction == model::VarDirection::Output ||
-         (v.address.size() > 1 && (v.address[1] == 'Q' || v.address[1] == 'q'));
 }
 
 std::string mapped_name(const EquivalenceOptions& o, const std::string& old_name) {

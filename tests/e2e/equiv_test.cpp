@@ -194,6 +194,16 @@ TEST(Equiv, BadInputsAreRefused) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("the input 'start' is BOOL in OLD and INT in NEW"), std::string::npos)
       << r.err;
+  // An input of NEW named like an output of OLD would read OLD's output in the product.
+  const auto reads_lamp = write_temp(
+      "PROGRAM Panel\n  VAR_INPUT lamp : BOOL; END_VAR\n  VAR_OUTPUT valve : BOOL; END_VAR\n"
+      "  valve := lamp;\nEND_PROGRAM\n",
+      ".st");
+  r = run_sfcv("-q equiv " + a + " " + reads_lamp);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("'lamp' is an input of NEW but an output of OLD's Filler"),
+            std::string::npos)
+      << r.err;
   // A Grafcet side: refused with the reason, never a verdict.
   const auto g = write_temp(g7_chain_text(2), ".g7");
   r = run_sfcv("-q equiv " + g + " " + a);
