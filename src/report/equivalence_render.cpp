@@ -46,8 +46,8 @@ std::vector<Row> rows(const logic::Trace& trace, const semantics::EquivalencePro
                       const semantics::TransitionSystem& ts) {
   std::vector<std::uint32_t> old_ix, new_ix, flag_ix;
   for (const auto& s : p.compared) {
-    old_ix.push_back(observable(ts, s.old_ref));
-    new_ix.push_back(observable(ts, s.new_ref));
+    old_ix.push_back(observable(ts, s.old_seen));
+    new_ix.push_back(observable(ts, s.new_seen));
     flag_ix.push_back(observable(ts, s.differs));
   }
   const std::string old_prefix = semantics::kEquivOldPrefix;
@@ -194,7 +194,7 @@ std::string equivalence_trace_vcd(const logic::Trace& trace, const semantics::Eq
                                   const semantics::TransitionSystem& ts, std::int64_t cycle_ms) {
   logic::Trace marked = trace;
   for (const auto& s : p.compared)
-    for (const auto* name : {&s.old_ref, &s.new_ref, &s.differs}) {
+    for (const auto* name : {&s.old_seen, &s.new_seen, &s.differs}) {
       const auto ix = observable(ts, *name);
       if (ix != kNotObserved &&
           std::find(marked.marked.begin(), marked.marked.end(), ix) == marked.marked.end())

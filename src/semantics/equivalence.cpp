@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "model/compare.hpp"
 #include "model/errors.hpp"
@@ -458,12 +459,16 @@ bool listed(const std::vector<std::string>& list, const std::string& name,
   });
 }
 
-std::int64_t initial_value(const Side& side, const std::string& program, const std::string& var) {
-  const auto index = find_observable(*side.system, program + "." + var);
-  if (!index || side.initial.empty())
-    throw InternalError(std::string("sfcv equiv: no initial value of ") + program + "." + var +
-                        " in " + side.label);
-  return side.system->observe(side.initial, *index);
+/// The signal's value in the side's initial situation; a variable the state does not hold (one
+/// nothing writes) has its declared initial value there.
+/// `var` as the side alone names it, `declared` as the product does (after --map).
+std::int64_t initial_value(Side& side, const std::string& program, const std::string& var,
+                           const std::string& declared) {
+  if (const auto index = find_observable(*side.system, program + "." + var))
+    return side.system->observe(side.initial, *index);
+  const auto* v = find_var(*find_pou(side.project, program), declared);
+  if (!v) throw InternalError("sfcv equiv: no variable " + program + "." + var);
+  return std::clamp<std::int64_t>(v->initial.value_or(0), v->type.lo, v->type.hi);
 }
 
 /// Pairs the signals to compare. Names are resolved on the sides before the product's renaming
@@ -552,15 +557,30 @@ model::Pou observer(EquivalenceProduct& out, std::uint32_t within,
   std::set<std::string> used;
   for (std::size_t i = 0; i < out.compared.size(); ++i) {
     auto& s = out.compared[i];
-    std::string base = "differs_" + sanitize(s.name);
+    std::string base = sanitize(s.name);
     while (!used.insert(model::to_upper(base)).second) base += "_";
-    s.differs = std::string(kEquivObserver) + "." + base;
+    s.differs = std::string(kEquivObserver) + ".differs_" + base;
     model::Variable flag;
-    flag.name = base;
+    flag.name = "differs_" + base;
     flag.type = model::Type::boolean();
     flag.initial = initial[i].first != initial[i].second;
     pou.variables.push_back(flag);
-    model::ExprPtr cond = differ(s, var_ref(s.new_ref), var_ref(s.old_ref));
+    // Copies of both values first: the comparison reads them, and traces show them.
+    s.old_seen = std::string(kEquivObserver) + ".old_" + base;
+    s.new_seen = std::string(kEquivObserver) + ".new_" + base;
+    for (const auto& [name, ref, init] :
+         {std::tuple{"old_" + base, s.old_ref, initial[i].first},
+          std::tuple{"new_" + base, s.new_ref, initial[i].second}}) {
+      model::Variable copy;
+      copy.name = name;
+      copy.type = s.type;
+      copy.initial = init;
+      pou.variables.push_back(copy);
+      pou.body.push_back(model::make_assign(name, var_ref(ref)));
+    }
+    const auto old_value = model::make_name("old_" + base);
+    const auto new_value = model::make_name("new_" + base);
+    model::ExprPtr cond = differ(s, new_value, old_value);
     std::vector<std::string> history;
     for (std::uint32_t d = 1; d <= within; ++d) {
       model::Variable h;
@@ -570,9 +590,9 @@ model::Pou observer(EquivalenceProduct& out, std::uint32_t within,
       pou.variables.push_back(h);
       history.push_back(h.name);
       cond = model::make_nary(model::ExprKind::And,
-                              {cond, differ(s, var_ref(s.new_ref), model::make_name(h.name))});
+                              {cond, differ(s, new_value, model::make_name(h.name))});
     }
-    pou.body.push_back(model::make_assign(base, cond));
+    pou.body.push_back(model::make_assign("differs_" + base, cond));
     for (std::size_t d = history.size(); d-- > 0;)
       pou.body.push_back(model::make_assign(
           history[d], d == 0 ? var_ref(s.old_ref) : model::make_name(history[d - 1])));
@@ -607,8 +627,8 @@ EquivalenceProduct make_equivalence_product(const model::Project& old_project,
       return ref.substr(std::string(prefix).size(), ref.find('.') - std::string(prefix).size());
     };
     initial.emplace_back(
-        initial_value(old_side, program_of(s.old_ref, kEquivOldPrefix), s.name),
-        initial_value(new_side, program_of(s.new_ref, kEquivNewPrefix), s.new_name));
+        initial_value(old_side, program_of(s.old_ref, kEquivOldPrefix), s.name, s.name),
+        initial_value(new_side, program_of(s.new_ref, kEquivNewPrefix), s.new_name, s.name));
   }
   merge_pous(old_side, new_side, out);
   out.project.pous.push_back(observer(out, options.within, initial));

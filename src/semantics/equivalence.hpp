@@ -48,6 +48,9 @@ struct ComparedSignal {
   std::string old_ref;   ///< the product variable: "Old_Main.q"
   std::string new_ref;   ///< "New_Main.q"
   std::string differs;   ///< the observer's flag: "Equiv_Observer.differs_q"
+  /// The observer's copies of the two values at the end of the cycle ("Equiv_Observer.old_q"):
+  /// fields of the state even where a side never writes the signal (a free value), for traces.
+  std::string old_seen, new_seen;
   model::Type type;
   bool internal = false;  ///< named by --compare (not an output)
 };

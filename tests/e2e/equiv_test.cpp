@@ -295,3 +295,29 @@ TEST(Equiv, TimersCompareInDiscreteTime) {
 
 }  // namespace
 }  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// A compared output that one side never writes is that side's free value (any value in each
+// cycle, its declared value before the first): the difference shows in the initial situation,
+// with both values in the trace.
+TEST(Equiv, AnOutputOneSideNeverWritesIsItsFreeValue) {
+  std::string silent = old_filler();
+  silent.replace(silent.find("lamp(N);"), 8, "");
+  // Read but never written: free (docs/semantics.md 1.8).
+  silent.replace(silent.find("start AND NOT stop"), 18, "start AND NOT stop AND NOT lamp");
+  const auto a = write_temp(silent, ".st");
+  const auto b = write_temp(old_filler(), ".st");
+  for (const char* engine : {"explicit", "bmc"}) {
+    const auto r = run_sfcv(std::string("-q equiv ") + a + " " + b +
+                            " --outputs lamp --depth 3 --engine " + engine);
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("OLD never writes the compared lamp"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("differ after 0 cycle(s)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("0/1 *"), std::string::npos) << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
