@@ -526,6 +526,7 @@ void choose_signals(Side& old_side, Side& new_side, const EquivalenceOptions& o,
     // --map renamed NEW's variable to OLD's name in the product.
     s.new_ref = new_side.prefix + new_at->program + "." + old_at->variable->name;
     s.type = ot;
+    s.new_type = nt;
     s.internal = internal;
     out.compared.push_back(std::move(s));
   }
@@ -568,12 +569,14 @@ model::Pou observer(EquivalenceProduct& out, std::uint32_t within,
     // Copies of both values first: the comparison reads them, and traces show them.
     s.old_seen = std::string(kEquivObserver) + ".old_" + base;
     s.new_seen = std::string(kEquivObserver) + ".new_" + base;
-    for (const auto& [name, ref, init] :
-         {std::tuple{"old_" + base, s.old_ref, initial[i].first},
-          std::tuple{"new_" + base, s.new_ref, initial[i].second}}) {
+    // Each copy has its side's type: a value outside the other side's range must show as a
+    // difference, not raise a range error that ends the run.
+    for (const auto& [name, ref, init, type] :
+         {std::tuple{"old_" + base, s.old_ref, initial[i].first, s.type},
+          std::tuple{"new_" + base, s.new_ref, initial[i].second, s.new_type}}) {
       model::Variable copy;
       copy.name = name;
-      copy.type = s.type;
+      copy.type = type;
       copy.initial = init;
       pou.variables.push_back(copy);
       pou.body.push_back(model::make_assign(name, var_ref(ref)));

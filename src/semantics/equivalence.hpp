@@ -51,7 +51,8 @@ struct ComparedSignal {
   /// The observer's copies of the two values at the end of the cycle ("Equiv_Observer.old_q"):
   /// fields of the state even where a side never writes the signal (a free value), for traces.
   std::string old_seen, new_seen;
-  model::Type type;
+  model::Type type;       ///< OLD's
+  model::Type new_type;   ///< NEW's (an integer's range may differ)
   bool internal = false;  ///< named by --compare (not an output)
 };
 

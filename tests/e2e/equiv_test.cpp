@@ -321,3 +321,33 @@ TEST(Equiv, AnOutputOneSideNeverWritesIsItsFreeValue) {
 
 }  // namespace
 }  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// Integer outputs of different ranges: NEW's value outside OLD's range is a difference (the
+// observer keeps each side's value in that side's type), never a range error that would end
+// the run and hide it.
+TEST(Equiv, IntegerOutputsOfDifferentRangesCompareByValue) {
+  const auto program = [](const std::string& type) {
+    return "PROGRAM Count\n  VAR_INPUT up : BOOL; END_VAR\n  VAR_OUTPUT n : " + type +
+           "; END_VAR\n  IF up AND n < 12 THEN n := n + 1; END_IF;\nEND_PROGRAM\n";
+  };
+  const auto a = write_temp(program("INT(0..12)"), ".st");
+  const auto b = write_temp(program("INT(0..20)"), ".st");
+  auto r = run_sfcv("-q equiv " + a + " " + b + " --engine explicit");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto c = write_temp(
+      "PROGRAM Count\n  VAR_INPUT up : BOOL; END_VAR\n  VAR_OUTPUT n : INT(0..20); END_VAR\n"
+      "  IF up AND n < 13 THEN n := n + 1; END_IF;\nEND_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    r = run_sfcv(std::string("-q equiv ") + a + " " + c + " --engine " + engine);
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("differ after 13 cycle(s)"), std::string::npos) << engine << r.out;
+    EXPECT_NE(r.out.find("12/13 *"), std::string::npos) << engine << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace sfcv::test
