@@ -42,6 +42,7 @@ int run(int argc, char** argv) {
   add_export_command(app, selected);
   add_report_command(app, selected);
   add_patterns_command(app, selected);
+  add_equiv_command(app, selected);
 
   try {
     app.parse(argc, argv);
