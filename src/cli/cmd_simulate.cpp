@@ -40,7 +40,6 @@ struct SimulateOptions {
   std::string inputs;
   std::string vcd;
   SystemOptions system;
-  std::string action_order = "declaration";
   std::vector<std::string> assumptions;
   long long max_cycles = -1;
 };
@@ -287,12 +286,6 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
 int run_simulate(const SimulateOptions& o) {
   check_output_paths({{o.vcd, "--vcd"}});
   auto project = load_model_or_throw(o.model, parse_format(o.format));
-  semantics::ActionOrder action_order = semantics::ActionOrder::Declaration;
-  if (o.action_order == "alphabetical")
-    action_order = semantics::ActionOrder::Alphabetical;
-  else if (o.action_order != "declaration")
-    throw InputError("bad --action-order '" + o.action_order +
-                     "' (expected declaration or alphabetical)");
   std::vector<model::ExprPtr> assumptions;
   for (const auto& a : o.assumptions) {
     model::Diagnostics d;
@@ -305,9 +298,7 @@ int run_simulate(const SimulateOptions& o) {
     assumptions.push_back(e);
   }
   const bool grafcet = chosen_semantics(project, o.system) == "grafcet";
-  if (grafcet && o.action_order != "declaration")
-    throw InputError("sfcv simulate: --action-order applies to the IEC 61131-3 semantics only");
-  const auto built = build_system(project, o.system, assumptions, "sfcv simulate", action_order);
+  const auto built = build_system(project, o.system, assumptions, "sfcv simulate");
   const auto& ts = built.system;
   const std::int64_t cycle_ms = parse_cycle_ms(o.system.cycle);
 
@@ -396,7 +387,6 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
                   "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
   add_system_options(*sub, opts->system);
-  sub->add_option("--action-order", opts->action_order, "declaration (default) or alphabetical");
   sub->add_option("--assume", opts->assumptions,
                   "Assumption on inputs and state (ST expression), repeatable");
   sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");

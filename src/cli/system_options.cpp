@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/action_order.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
@@ -25,6 +26,9 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
   sub.add_option("--unwritten", o.unwritten,
                  "IEC variables that the run reads and no POU of it writes: free (default: "
                  "inputs, any value each cycle) or keep (their initial values)");
+  sub.add_option("--action-order", o.action_order,
+                 "IEC actions within a cycle: declaration (default), alphabetical, unordered "
+                 "(actions writing a common variable in any order) or FILE of pairs 'A < B'");
 }
 
 std::string chosen_semantics(const model::Project& project, const SystemOptions& o) {
@@ -44,10 +48,10 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
   if (built.semantics == "grafcet") {
     // An IEC option on a Grafcet would be silently ignored: say so instead.
     if (!o.pous.empty() || o.priority != "standard" || o.time != "abstract" || o.cycle != "10ms" ||
-        o.unwritten != "free")
+        o.unwritten != "free" || (!o.action_order.empty() && o.action_order != "declaration"))
       throw InputError(command +
-                       ": --pou, --priority, --time, --cycle and --unwritten apply to the IEC "
-                       "61131-3 semantics only");
+                       ": --pou, --priority, --time, --cycle, --unwritten and --action-order "
+                       "apply to the IEC 61131-3 semantics only");
     semantics::GrafcetOptions g;
     g.single_input_change = !o.multi_input_change;
     g.assumptions = assumptions;
@@ -63,6 +67,7 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     i.unwritten = parse_unwritten(o.unwritten);
     i.pous = o.pous;
     i.action_order = action_order;
+    if (!o.action_order.empty()) parse_action_order(o.action_order, i);
     i.assumptions = assumptions;
     if (budget) i.deadline = budget->deadline;
     built.system = semantics::make_iec61131_system(project, i, diags);

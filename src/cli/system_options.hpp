@@ -25,6 +25,9 @@ struct SystemOptions {
   std::string cycle = "10ms";
   std::string unwritten = "free";  ///< variables no POU of the run writes: free or keep
   bool multi_input_change = false;
+  /// declaration, alphabetical, unordered or a FILE of pairs (cli/action_order.hpp); empty:
+  /// the subcommand's default
+  std::string action_order;
 };
 
 /// Which semantics a subcommand offers: the circuit exports run IEC 61131-3 only.

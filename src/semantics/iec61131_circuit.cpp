@@ -319,6 +319,7 @@ class SymbolicMachine {
   /// `guard`: the path condition of a called instance's cycle (a Call under an IF); a program
   /// runs under the inputs' constraint only, and its state updates are unconditional.
   void cycle_pou(const Pou& pou, AigLit guard);
+  void run_slot(const Pou& pou, std::size_t i, AigLit run);
   void call_instance(const Pou& pou, AigLit guard);
   void fire_chart(const Chart& c, AigLit guard);
   void fire(const Transition& t, AigLit when);
@@ -994,8 +995,12 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
     }
   }
   const AigLit run = aig_.make_and(guard, aig_.make_not(init));
-  for (auto a : pou.exec_order) {
-    const auto& act = p_.actions[a];
+  for (std::size_t i = 0; i < pou.exec_order.size(); ++i) {
+    if (!pou.exec_group.empty() && pou.exec_group[i] != kNone) {
+      run_slot(pou, i, run);
+      continue;
+    }
+    const auto& act = p_.actions[pou.exec_order[i]];
     if (act.kind == model::ActionBodyKind::Statements)
       exec_body(act.body, aig_.make_and(run, cur_truth(act.active)));
   }
@@ -1009,6 +1014,23 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
   update_pou(pou, run);
   for (std::size_t i = 0; i < held.size(); ++i)
     nxt_[pou.chart_fields[i]] = mux(init, held[i], nxt_[pou.chart_fields[i]]);
+}
+
+void SymbolicMachine::run_slot(const Pou& pou, std::size_t i, AigLit run) {
+  // Machine::run_ordered_actions: the slot runs the member that the order picked by the
+  // group's input puts there (the input's range is constrained to the orders).
+  const auto& g = pou.order_groups[static_cast<std::size_t>(pou.exec_group[i])];
+  const auto slot = static_cast<std::size_t>(pou.exec_slot[i]);
+  const Value choice = input_value(g.choice_input);
+  for (auto a : g.members) {
+    AigLit here = Aig::kFalse;
+    for (std::size_t l = 0; l < g.orders.size(); ++l)
+      if (g.orders[l][slot] == a)
+        here = aig_.make_or(here, equal(choice, constant(static_cast<std::int64_t>(l))));
+    const auto& act = p_.actions[a];
+    if (here != Aig::kFalse && act.kind == model::ActionBodyKind::Statements)
+      exec_body(act.body, aig_.make_and(run, aig_.make_and(here, cur_truth(act.active))));
+  }
 }
 
 void SymbolicMachine::call_instance(const Pou& pou, AigLit guard) {

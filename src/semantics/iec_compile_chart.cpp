@@ -300,6 +300,8 @@ void Compiler::actions_and_transitions() {
 }
 
 void Compiler::orders() {
+  const auto& pairs = p.options.action_pairs;
+  std::vector<std::uint32_t> pair_used(pairs.size(), 0);
   for (auto& sc : scopes) {
     auto& cp = p.pous[sc.index];
     std::vector<std::uint32_t> acts;
@@ -310,6 +312,9 @@ void Compiler::orders() {
       std::stable_sort(cp.exec_order.begin(), cp.exec_order.end(), [&](auto a, auto b) {
         return model::to_upper(p.actions[a].name) < model::to_upper(p.actions[b].name);
       });
+    if (p.options.action_order == ActionOrder::Partial ||
+        p.options.action_order == ActionOrder::Unordered)
+      action_order(sc, pair_used);
     // Topological order: an action after the actions holding the charts of its steps.
     std::vector<int> mark(p.actions.size(), 0);
     std::function<void(std::uint32_t)> visit = [&](std::uint32_t a) {
@@ -328,6 +333,24 @@ void Compiler::orders() {
       cp.topo_order.push_back(a);
     };
     for (auto a : acts) visit(a);
+  }
+  // Every pair names two actions of one POU (of some instance, for a function block's).
+  auto known = [&](const std::string& name) {
+    const auto up = model::to_upper(name);
+    for (const auto& a : p.actions) {
+      const auto full = model::to_upper(a.name);
+      if (full == up || full.ends_with("." + up)) return true;
+    }
+    return false;
+  };
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (p.options.action_order != ActionOrder::Partial || (pair_used[k] & 1)) continue;
+    const auto& pr = pairs[k];
+    if (!known(pr.before) || !known(pr.after))
+      error(pr.where, "the action order names an unknown action '" +
+                          (known(pr.before) ? pr.after : pr.before) + "'");
+    else
+      error(pr.where, "'" + pr.before + "' and '" + pr.after + "' are not actions of one POU");
   }
 }
 

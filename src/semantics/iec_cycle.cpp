@@ -118,15 +118,45 @@ void Machine::cycle_pou(const Pou& pou) {
   // SFCInit/SFCReset: the charts restart from their initial situation; under SFCInit they stay
   // there, running no action.
   if ((pou.sfc_init != kNone || pou.sfc_reset != kNone) && sfc_flags(pou)) return;
-  for (auto a : pou.exec_order) {
-    const auto& act = p_.actions[a];
-    if (act.kind == model::ActionBodyKind::Statements && cur_[act.active]) exec_block(act.body);
+  if (pou.order_groups.empty()) {
+    for (auto a : pou.exec_order) {
+      const auto& act = p_.actions[a];
+      if (act.kind == model::ActionBodyKind::Statements && cur_[act.active]) exec_block(act.body);
+    }
+  } else {
+    run_ordered_actions(pou);
   }
   // Phase 3: guards see the new inputs, the current activity, the variables as actions left them.
   for (auto c : pou.charts)
     if (chart_active_cur(c)) fire_chart(p_.charts[c]);
   // Phase 4.
   update_pou(pou);
+}
+
+std::uint32_t Machine::order_of(const OrderGroup& g) {
+  // The order matters only when two members run: otherwise the choice input stays free.
+  int running = 0;
+  for (auto a : g.members)
+    if (cur_[p_.actions[a].active]) ++running;
+  if (running < 2) return 0;
+  const auto last = static_cast<std::int64_t>(g.orders.size()) - 1;
+  return static_cast<std::uint32_t>(std::clamp<std::int64_t>(read_input(g.choice_input), 0, last));
+}
+
+void Machine::run_ordered_actions(const Pou& pou) {
+  // Each group's order is chosen once per run of the POU, at its first slot.
+  std::vector<std::uint32_t> chosen(pou.order_groups.size(), 0);
+  for (std::size_t i = 0; i < pou.exec_order.size(); ++i) {
+    auto a = pou.exec_order[i];
+    if (const auto gi = pou.exec_group[i]; gi != kNone) {
+      const auto& g = pou.order_groups[static_cast<std::size_t>(gi)];
+      const auto slot = static_cast<std::size_t>(pou.exec_slot[i]);
+      if (slot == 0) chosen[static_cast<std::size_t>(gi)] = order_of(g);
+      a = g.orders[chosen[static_cast<std::size_t>(gi)]][slot];
+    }
+    const auto& act = p_.actions[a];
+    if (act.kind == model::ActionBodyKind::Statements && cur_[act.active]) exec_block(act.body);
+  }
 }
 
 void Machine::call_instance(const Pou& pou) {

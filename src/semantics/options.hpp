@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/expr.hpp"
+#include "model/source_location.hpp"
 
 namespace sfcv::semantics {
 
@@ -30,14 +31,26 @@ enum class UnwrittenMode {
   Keep,  ///< held at their initial values (the reading before issue 53)
 };
 
-/// The order in which active actions execute within a cycle.
-enum class ActionOrder { Declaration, Alphabetical };
+/// The order in which active actions execute within a cycle: seed 000's partial order on
+/// actions (docs/semantics.md §1.2a). Declaration and Alphabetical are total orders; Partial is
+/// the user's pairs (Iec61131Options::action_pairs, declaration order between the rest);
+/// Unordered is the empty order. Under a partial order, actions that write a common variable
+/// and that the order leaves unordered run in any order consistent with it, each cycle.
+enum class ActionOrder { Declaration, Alphabetical, Partial, Unordered };
+
+/// One pair `before < after` of a user's action order (`--action-order FILE`), where it is
+/// written (errors name it). Names are an action's ("Fill") or its full name ("Main.Fill").
+struct ActionPair {
+  std::string before, after;
+  model::SourceLocation where;
+};
 
 struct Iec61131Options {
   PriorityMode priority = PriorityMode::Standard;
   TimeMode time = TimeMode::Abstract;
   std::int64_t cycle_ms = 10;  ///< TimeMode::Discrete only
   ActionOrder action_order = ActionOrder::Declaration;
+  std::vector<ActionPair> action_pairs;  ///< ActionOrder::Partial
   UnwrittenMode unwritten = UnwrittenMode::Free;
   /// POUs run one after the other in each cycle (a controller and plant models); empty = the
   /// single POU with an SFC body (PROGRAMs preferred), several candidates being an error.

@@ -316,6 +316,10 @@ struct Compiler {
   void actions_and_transitions();
 
   void orders();
+  /// A partial action order (ActionOrder::Partial, Unordered) on one POU: base exec_order and
+  /// the groups whose order a pseudo-input chooses (iec_compile_order.cpp). `pair_used` marks
+  /// the user's pairs this POU's actions name (1 both, 2 one).
+  void action_order(PouScope& sc, std::vector<std::uint32_t>& pair_used);
 
   void step_timers();
 

@@ -231,6 +231,18 @@ struct Action {
   std::vector<std::uint32_t> assocs;
 };
 
+/// Actions of one POU that write a common variable (a connected group) and whose order the
+/// action order leaves open (docs/semantics.md §1.2a). They run at `slots`, the positions of
+/// exec_order they hold in the base order; the pseudo-input `choice_input` (`order:...`, an
+/// enumeration naming each order) picks which of `orders` fills the slots in this cycle.
+/// Members not active are skipped, so the machine decides only when two are active.
+struct OrderGroup {
+  std::vector<std::uint32_t> members;              ///< actions, in the base order
+  std::vector<std::uint32_t> slots;                ///< positions in Pou::exec_order, ascending
+  std::vector<std::vector<std::uint32_t>> orders;  ///< admissible orders; [0] the base order
+  std::uint32_t choice_input = 0;
+};
+
 struct Pou {
   std::string name;  ///< a program "Main", or an instance of a user FB "Main.Crane"
   std::string type;  ///< the POU of the project it runs ("Main", "Crane")
@@ -249,6 +261,9 @@ struct Pou {
   Block body;
   std::vector<std::uint32_t> charts;
   std::vector<std::uint32_t> exec_order;  ///< actions, in execution order
+  std::vector<OrderGroup> order_groups;   ///< empty under a total action order
+  /// Per position of exec_order: the group whose slot it is and the slot's index, or kNone.
+  std::vector<std::int32_t> exec_group, exec_slot;
   std::vector<std::uint32_t> topo_order;  ///< actions, parents before nested ones
   /// CODESYS/TwinCAT implicit flags (nodes, read after the body): while TRUE, chart_fields take
   /// their initial values; under SFCInit the charts then neither run actions nor evolve.
@@ -369,6 +384,9 @@ class Machine {
   void age_step(std::uint32_t step);
 
   void cycle_pou(const Pou& pou);
+  /// Phase 2 under a partial action order: each group's members in the order its input picks.
+  void run_ordered_actions(const Pou& pou);
+  std::uint32_t order_of(const OrderGroup& g);
   /// SFCInit/SFCReset read after the body: restores the POU's chart fields; true under SFCInit.
   bool sfc_flags(const Pou& pou);
   void initial_configuration();
