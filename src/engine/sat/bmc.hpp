@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "engine/sat/reachability.hpp"
+#include <functional>
+
 #include "engine/sat/sat_solver.hpp"
 
 namespace sfcv::engine::sat {
@@ -14,6 +16,8 @@ namespace sfcv::engine::sat {
 struct BoundOptions {
   std::uint32_t max_depth = 200;  ///< the deepest frame tried (BMC) or k bound (k-induction)
   Deadline deadline;
+  /// Called with each depth as it starts (the progress line); may be empty.
+  std::function<void(std::uint32_t)> on_depth;
 };
 
 /// Per target: Reached (with a shortest run) or Unknown (no run up to the bound, or the
