@@ -9,8 +9,8 @@
 namespace sfcv::cli {
 
 namespace {
-constexpr std::size_t kNotesShown = 3;     ///< notes in short before the rest are counted
-constexpr std::size_t kNoteLength = 200;   ///< characters of a note's line in short
+constexpr std::size_t kNotesShown = 3;    ///< notes in short before the rest are counted
+constexpr std::size_t kNoteLength = 200;  ///< characters of a note's line in short
 }  // namespace
 
 void print_diagnostic_lines(const model::Diagnostics& diagnostics, bool quiet, std::ostream& err) {

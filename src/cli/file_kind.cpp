@@ -32,8 +32,8 @@ bool looks_like_json(std::string_view text) {
   if (text.empty() || (text.front() != '{' && text.front() != '[')) return false;
   const auto rest = skip_space(text.substr(1));
   if (text.front() == '{') return !rest.empty() && (rest.front() == '"' || rest.front() == '}');
-  return !rest.empty() && (rest.front() == '{' || rest.front() == '"' || rest.front() == ']' ||
-                           rest.front() == '[');
+  return !rest.empty() &&
+         (rest.front() == '{' || rest.front() == '"' || rest.front() == ']' || rest.front() == '[');
 }
 
 }  // namespace

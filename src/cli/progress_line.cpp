@@ -129,7 +129,8 @@ std::string ProgressLine::racer_text(const std::string& name, const Racer& r) co
     text += " " + r.phase;
   const auto on_step = Clock::now() - r.since;
   if (on_step >= kSlowStep)
-    text += " (" + std::to_string(std::chrono::duration_cast<std::chrono::seconds>(on_step).count()) +
+    text += " (" +
+            std::to_string(std::chrono::duration_cast<std::chrono::seconds>(on_step).count()) +
             " s)";
   return text;
 }
@@ -165,7 +166,8 @@ std::string ProgressLine::render(int width) const {
   }
   // The last column is left free: a line that fills it wraps on some terminals.
   const auto limit = static_cast<std::size_t>(width > 1 ? width - 1 : 1);
-  if (text.size() > limit) text = text.substr(0, limit > 3 ? limit - 3 : limit) + (limit > 3 ? "..." : "");
+  if (text.size() > limit)
+    text = text.substr(0, limit > 3 ? limit - 3 : limit) + (limit > 3 ? "..." : "");
   return text;
 }
 

@@ -29,8 +29,8 @@ struct ProgressOutput {
   std::FILE* stream = stderr;
   bool terminal = false;  ///< a refreshing line; else one line per interval
   int fd = 2;             ///< asked for its width at each refresh (a terminal may be resized)
-  std::chrono::milliseconds quiet_start{2000};  ///< short runs print nothing
-  std::chrono::milliseconds refresh{500};       ///< on a terminal
+  std::chrono::milliseconds quiet_start{2000};    ///< short runs print nothing
+  std::chrono::milliseconds refresh{500};         ///< on a terminal
   std::chrono::milliseconds log_interval{10000};  ///< off a terminal
   static ProgressOutput standard_error();
 };

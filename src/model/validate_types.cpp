@@ -16,9 +16,9 @@
 
 #include "model/detail/validator.hpp"
 #include "model/names.hpp"
-#include "model/suggest.hpp"
 #include "model/nesting.hpp"
 #include "model/networks.hpp"
+#include "model/suggest.hpp"
 
 namespace sfcv::model::detail {
 

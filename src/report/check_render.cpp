@@ -36,7 +36,9 @@ std::string stuck_diagnosis(const logic::CheckReport& report,
     if (!in.pseudo) inputs.push_back(in.name);
   std::string out = "diagnosis: the chart never moves: every one of its " +
                     counted(transitions.size(), "transition") + " is dead";
-  if (report.states_known) out += " and only " + counted(report.states.str(), "state") + " are reachable";
+  if (report.states_known)
+    out += " and only " + counted(report.states.str(), "state") +
+           (report.states.str() == "1" ? " is" : " are") + " reachable";
   out += ".\n";
   if (inputs.empty()) {
     out +=
@@ -69,16 +71,16 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
   std::string out;
   out += (report.states_known ? counted(report.states.str(), "state") + ", " : std::string()) +
          (report.edges_known ? counted(report.edges.str(), "edge") + ", " : std::string()) +
-         "depth " +
-         std::to_string(report.depth) + " (" + report.engine + " engine, " +
+         "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete)
     out += report.limit == "interrupted"
                ? std::string(" -- INCOMPLETE: interrupted (SIGINT or SIGTERM)")
                : " -- INCOMPLETE: the " + report.limit + " limit was reached";
   if (report.stopped_early)
-    out += " -- stopped early: every invariant is violated (the counts are those explored up to "
-           "the violations)";
+    out +=
+        " -- stopped early: every invariant is violated (the counts are those explored up to "
+        "the violations)";
   out += "\n";
   if (const auto& c = report.coverage) {
     out += "coverage: " + std::to_string(c->steps_visited) + "/" + std::to_string(c->steps) +

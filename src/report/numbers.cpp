@@ -5,8 +5,8 @@
 namespace sfcv::report {
 
 std::string count_text(std::string_view decimal) {
-  if (decimal.empty() || !std::all_of(decimal.begin(), decimal.end(),
-                                      [](char c) { return c >= '0' && c <= '9'; }))
+  if (decimal.empty() ||
+      !std::all_of(decimal.begin(), decimal.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::string(decimal);
   while (decimal.size() > 1 && decimal.front() == '0') decimal.remove_prefix(1);
   if (decimal.size() <= 4) return std::string(decimal);  // 1024, not 1,024: short enough
@@ -36,8 +36,7 @@ std::string count_text(std::uint64_t n) {
   return count_text(std::to_string(n));
 }
 
-std::string counted(std::string_view decimal, std::string_view singular,
-                    std::string_view plural) {
+std::string counted(std::string_view decimal, std::string_view singular, std::string_view plural) {
   const bool one = decimal == "1";
   std::string word(one ? singular : plural);
   if (!one && plural.empty()) word = std::string(singular) + "s";

@@ -102,7 +102,8 @@ TEST(CliHabits, FilesOfTheWrongKindAreNamedByTheirContent) {
        "this is a JSON result of 'sfcv check --json'"},
       {"$date today $end\n$timescale 1ms $end\n$scope module top $end\n", ".st",
        "this is a VCD waveform, not a model"},
-      {"<!DOCTYPE html>\n<html><body></body></html>\n", ".xml", "this is an HTML page, not a model"},
+      {"<!DOCTYPE html>\n<html><body></body></html>\n", ".xml",
+       "this is an HTML page, not a model"},
       {"<?xml version=\"1.0\"?>\n<testsuites name=\"sfcv\"></testsuites>\n", ".xml",
        "this is a JUnit XML report, not a model"},
   };
@@ -154,11 +155,10 @@ TEST(CliHabits, EachSubcommandsHelpSaysWhatItsExitCodesMean) {
     const char* sub;
     const char* meaning;
   };
-  for (const auto& c : {Case{"info", "0 the model was read"}, Case{"lint", "0 no error"},
-                        Case{"export", "0 the model was written"},
-                        Case{"report", "0 the report was written"},
-                        Case{"rsg", "1 it has an anomaly"},
-                        Case{"query", "every query was answered"}}) {
+  for (const auto& c :
+       {Case{"info", "0 the model was read"}, Case{"lint", "0 no error"},
+        Case{"export", "0 the model was written"}, Case{"report", "0 the report was written"},
+        Case{"rsg", "1 it has an anomaly"}, Case{"query", "every query was answered"}}) {
     const auto r = run_sfcv(std::string(c.sub) + " --help");
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_TRUE(has(r.out, c.meaning)) << c.sub << ":\n" << r.out;
@@ -168,6 +168,92 @@ TEST(CliHabits, EachSubcommandsHelpSaysWhatItsExitCodesMean) {
   EXPECT_TRUE(has(check.out, "some property is violated")) << check.out;
   // --ltl is decided by the bdd engine too.
   EXPECT_TRUE(has(check.out, "engines explicit, bdd")) << check.out;
+}
+
+}  // namespace
+
+namespace {
+
+using sfcv::test::run_sfcv;
+using sfcv::test::write_temp;
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Nothing can move: the only condition reads a variable that no POU writes, held at its initial
+// value by --unwritten keep (corpus 07's situation, in small).
+const std::string kStuck = R"(PROGRAM P
+  VAR start : BOOL; END_VAR
+  VAR_OUTPUT lamp : BOOL; END_VAR
+  INITIAL_STEP S0: END_STEP
+  STEP S1: lamp(N); END_STEP
+  TRANSITION FROM S0 TO S1 := start; END_TRANSITION
+  TRANSITION FROM S1 TO S0 := NOT start; END_TRANSITION
+END_PROGRAM
+)";
+
+TEST(CliDiagnosis, AChartThatNeverMovesIsDiagnosed) {
+  const auto chart = write_temp(kStuck, ".st");
+  const auto r = run_sfcv("check " + chart + " --unwritten keep --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(contains(r.out,
+                       "diagnosis: the chart never moves: every one of its 2 transitions "
+                       "is dead and only 1 state is reachable"))
+      << r.out;
+  EXPECT_TRUE(contains(r.out, "why: no input ever changes")) << r.out;
+  EXPECT_TRUE(contains(r.out, "what to do:")) << r.out;
+  // Free, `start` is an input: the chart moves and nothing is diagnosed.
+  const auto free = run_sfcv("check " + chart + " --quiet");
+  EXPECT_FALSE(contains(free.out, "diagnosis:")) << free.out;
+}
+
+TEST(CliDiagnosis, Corpus07WithHeldSensorsIsDiagnosed) {
+  const auto corpus = sfcv::test::corpus_dir();
+  if (!corpus) GTEST_SKIP() << "SFCV_CORPUS not set";
+  const auto r = run_sfcv("check '" + (*corpus / "07_codesys_ppu_scenario3v1.xml").string() +
+                          "' --unwritten keep --engine explicit --quiet");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(contains(r.out, "diagnosis: the chart never moves")) << r.out;
+  // Findings are short: no XML element path without --verbose.
+  EXPECT_FALSE(contains(r.out, "/project/types")) << r.out.substr(0, 2000);
+  const auto v =
+      run_sfcv("--verbose check '" + (*corpus / "07_codesys_ppu_scenario3v1.xml").string() +
+               "' --unwritten keep --engine explicit --quiet --checks reachable");
+  EXPECT_TRUE(contains(v.out, "(/project/types/pous/pou[@name='Magazin']"))
+      << v.out.substr(0, 2000);
+}
+
+TEST(CliNumbers, OneSituationIsSingularAndAnEarlyStopIsNotComplete) {
+  const auto chart = sfcv::test::source_path("examples/chemical_plant/chemical_plant.st");
+  // A violation in the initial situation: a counterexample of one situation.
+  const auto r = run_sfcv("check " + chart + " --ctl 'AG !s9' --quiet");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_TRUE(contains(r.out, "counterexample (1 situation):")) << r.out;
+  // Invariants alone stop at their violations: the counts are not the system's.
+  const auto j = run_sfcv("check " + chart + " --ctl 'AG !s9' --json --quiet --engine explicit");
+  EXPECT_TRUE(contains(j.out, "\"complete\": false")) << j.out.substr(0, 600);
+  EXPECT_TRUE(contains(j.out, "\"stopped_early\": true")) << j.out.substr(0, 600);
+  const auto t = run_sfcv("check " + chart + " --ctl 'AG !s9' --quiet --engine explicit");
+  EXPECT_TRUE(contains(t.out, "stopped early")) << t.out;
+}
+
+TEST(CliNotes, FewNotesInShortTheRestCountedAndAllUnderVerbose) {
+  // Five programs each reading a variable nobody writes: one note per ... is not guaranteed; use
+  // the model's own notes: corpus 01 printed 8 long notes before every output.
+  const auto corpus = sfcv::test::corpus_dir();
+  if (!corpus) GTEST_SKIP() << "SFCV_CORPUS not set";
+  const auto file = "'" + (*corpus / "01_beremiz_traffic_light.xml").string() + "'";
+  const auto r = run_sfcv("info " + file);
+  for (std::size_t from = 0; from < r.err.size();) {
+    auto to = r.err.find('\n', from);
+    if (to == std::string::npos) to = r.err.size();
+    EXPECT_LE(to - from, 200u) << r.err.substr(from, to - from);
+    from = to + 1;
+  }
+  EXPECT_FALSE(contains(r.err, "(/project")) << r.err;
+  const auto v = run_sfcv("--verbose info " + file);
+  EXPECT_GE(v.err.size(), r.err.size());
 }
 
 }  // namespace

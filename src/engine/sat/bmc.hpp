@@ -4,11 +4,10 @@
 // at frame k); then the transition out of frame k is added for good. Depths are tried in
 // order, so the first run found is a shortest one.
 
+#include <functional>
 #include <vector>
 
 #include "engine/sat/reachability.hpp"
-#include <functional>
-
 #include "engine/sat/sat_solver.hpp"
 
 namespace sfcv::engine::sat {

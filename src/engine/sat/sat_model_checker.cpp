@@ -432,8 +432,8 @@ class Run {
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
-    bounds.on_depth = level_reporter(options_.algorithm == SatAlgorithm::KInduction ? "k-induction"
-                                                                                    : "bmc");
+    bounds.on_depth =
+        level_reporter(options_.algorithm == SatAlgorithm::KInduction ? "k-induction" : "bmc");
     // Every proof is re-checked by fresh solvers before it may read as "holds".
     auto recheck = [&](std::size_t t, ReachResult& r) {
       if (r.kind != ReachResult::Kind::Unreachable) return;
