@@ -20,18 +20,15 @@ std::size_t element_path_end(std::string_view text, std::size_t open) {
       if (c == quote) quote = 0;
       continue;
     }
+    // A space outside quotes: words or a file location ("/a/b.xml:3:4 (/project...)"), not
+    // an element path (which has spaces only inside its quoted names).
+    if (c == ' ' || c == '\n') return std::string_view::npos;
     if (c == '\'' || c == '"') {
       quote = c;
     } else if (c == '(') {
       ++depth;
     } else if (c == ')' && --depth == 0) {
-      // An XPath has an element step with a predicate or a slash after the root: "(/project)".
-      const auto inside = text.substr(open + 1, i - open - 1);
-      if (inside.find(' ') != std::string_view::npos && inside.find('[') == std::string_view::npos)
-        return std::string_view::npos;  // words in parentheses, not a path
       return i + 1;
-    } else if (c == '\n') {
-      return std::string_view::npos;
     }
   }
   return std::string_view::npos;
