@@ -3,8 +3,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/exit_footers.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/output_file.hpp"
+#include "cli/usage_hint.hpp"
 
 // SFCV_VERSION comes from the CMake project version.
 
@@ -27,10 +29,10 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   app.add_flag("-q,--quiet", g_options.quiet,
                "No progress, notes or warnings on standard error (errors still)");
+  app.add_flag("-v,--verbose", g_options.verbose,
+               "Findings and diagnostics in full: absolute paths, XML element paths, every note");
   app.fallthrough();  // `sfcv check m.g7 --quiet` as well as `sfcv --quiet check m.g7`
-  app.footer(
-      "Exit codes: 0 every property holds, 1 some property is violated, 2 bad usage or input, "
-      "3 unknown (a resource limit was reached), 4 internal error (a bug: please report it).");
+  app.footer(top_level_exit_codes());
 
   CommandRunner selected;
   add_check_command(app, selected);
@@ -43,6 +45,7 @@ int run(int argc, char** argv) {
   add_report_command(app, selected);
   add_patterns_command(app, selected);
   add_equiv_command(app, selected);
+  set_exit_code_footers(app);  // each subcommand's exit codes in its own words
 
   try {
     app.parse(argc, argv);
@@ -53,6 +56,11 @@ int run(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // An unknown word: name it and the closest known one, instead of CLI11's generic message.
+    if (const auto hint = usage_hint(app, std::vector<std::string>(argv + 1, argv + argc))) {
+      std::cerr << "sfcv: error: " << *hint << "\n";
+      return kBadInput;
+    }
     app.exit(e);
     return kBadInput;  // CLI11 uses its own codes; ours are a contract
   }

@@ -20,6 +20,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/load_model.hpp"
 #include "cli/memory_watchdog.hpp"
+#include "cli/name_hints.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/run_limits.hpp"
@@ -277,6 +278,7 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
       parse_priority(o.system.priority) == semantics::PriorityMode::Standard;
   model::Diagnostics resolve_diags;
   logic::resolve_into(parsed.spec, *ts, task, resolve_diags);
+  explain_left_out_names(resolve_diags, project);
   print_diagnostics(resolve_diags, "errors in the properties");
   if (o.deadlock_paths != "stutter" && o.deadlock_paths != "drop")
     throw UsageError("bad --deadlock-paths '" + o.deadlock_paths + "' (expected stutter or drop)");
@@ -328,6 +330,7 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   render.model = o.model;
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
+  render.verbose = global_options().verbose;
   // Every requested file is written, even when another could not be. The files come before
   // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed
   // whatever happened to them: a report that cannot be written, or a renderer's bug, must not
@@ -401,7 +404,8 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
   sub->add_option(
       "--ltl", opts->ltl,
-      "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; explicit engine)");
+      "An LTL property (X F G U R W), e.g. 'G (V1 -> F !V1)' (repeatable; engines explicit, "
+      "bdd (IEC 61131-3) and auto)");
   sub->add_option("--pattern", opts->patterns,
                   "A requirement pattern, e.g. 'response(start, V1, within 5 cycles)' or "
                   "'absence(V1 & V3, after start)' (repeatable; list: sfcv patterns)");

@@ -15,6 +15,9 @@ using CommandRunner = std::function<int()>;
 /// Options of every subcommand alike, given before or after the subcommand's name.
 struct GlobalOptions {
   bool quiet = false;  ///< --quiet: no progress, notes or warnings on standard error
+  /// --verbose: findings and diagnostics with absolute paths and XML element paths, every note
+  /// in full (else relative paths, line:col, notes in short).
+  bool verbose = false;
 };
 /// The options of this run (set while parsing argv).
 const GlobalOptions& global_options();

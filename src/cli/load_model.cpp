@@ -3,13 +3,16 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/diagnostic_lines.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/file_kind.hpp"
 #include "model/validate.hpp"
 
 namespace sfcv::cli {
 
 CheckedModel load_and_validate(const std::string& path, io::Format format,
                                const model::Budget* budget) {
+  refuse_foreign_file(path);  // a report or a trace is no model: say so, not 50 lexer errors
   auto loaded = io::load_file(path, format, budget);
   CheckedModel result{std::move(loaded.project), std::move(loaded.diagnostics)};
   // Validating a half-built model would only repeat the importer's errors in other words.
@@ -25,11 +28,8 @@ model::Project load_model_or_throw(const std::string& path, io::Format format, b
                                    const model::Budget* budget) {
   auto result = load_and_validate(path, format, budget);
   std::size_t errors = 0;
-  for (const auto& d : result.diagnostics) {
-    const bool is_error = d.severity == model::Severity::Error;
-    if (is_error) ++errors;
-    if (is_error || !(quiet || global_options().quiet)) std::cerr << d.str() << "\n";
-  }
+  for (const auto& d : result.diagnostics) errors += d.severity == model::Severity::Error;
+  print_diagnostic_lines(result.diagnostics, quiet || global_options().quiet, std::cerr);
   if (!result.project)
     throw InputError(path + ": " + std::to_string(errors ? errors : 1) +
                      (errors > 1 ? " errors" : " error") + ", no model loaded");

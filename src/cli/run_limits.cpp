@@ -12,8 +12,9 @@ namespace sfcv::cli {
 void add_limit_options(CLI::App& sub, LimitOptions& o, const std::string& what_stops,
                        MemoryLimit memory) {
   sub.add_option("--max-states", o.max_states, "Stop after N states (N > 0): " + what_stops);
-  sub.add_option("--timeout", o.timeout,
-                 "Stop after S seconds (S > 0), whatever the phase: " + what_stops);
+  sub.add_option(
+      "--timeout", o.timeout,
+      "Stop after a duration (seconds, or 500ms, 10s, 2m, 1h), whatever the phase: " + what_stops);
   if (memory == MemoryLimit::Offered)
     sub.add_option("--memory", o.memory,
                    "Memory budget, e.g. 2G: the explicit graph, or the bdd engine's node table; "
@@ -53,8 +54,22 @@ double parse_timeout(const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != text.size() || !std::isfinite(value) || !(value > 0) || value > 1e9)
-    throw UsageError("bad --timeout '" + text + "' (expected seconds > 0, e.g. 60 or 0.5)");
+  // A unit as --cycle and --memory take one: seconds when left out.
+  const std::string unit = used == 0 ? std::string() : text.substr(used);
+  double factor = 1;
+  if (unit == "ms")
+    factor = 0.001;
+  else if (unit == "m" || unit == "min")
+    factor = 60;
+  else if (unit == "h")
+    factor = 3600;
+  else if (!unit.empty() && unit != "s")
+    used = 0;
+  value *= factor;
+  if (used == 0 || !std::isfinite(value) || !(value > 0) || value > 1e9)
+    throw UsageError("bad --timeout '" + text +
+                     "' (expected a duration > 0: seconds such as 60 or 0.5, or 10s, 2m, 1h, "
+                     "500ms)");
   return value;
 }
 

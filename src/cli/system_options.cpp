@@ -4,6 +4,7 @@
 
 #include "cli/action_order.hpp"
 #include "cli/commands.hpp"
+#include "cli/diagnostic_lines.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
 #include "semantics/grafcet_system.hpp"
@@ -73,11 +74,15 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     built.system = semantics::make_iec61131_system(project, i, diags);
   }
   bool errors = false;
+  bool bad_pou = false;
+  print_diagnostic_lines(diags, global_options().quiet, std::cerr);
   for (const auto& d : diags) {
     const bool error = d.severity == model::Severity::Error;
-    if (error || !global_options().quiet) std::cerr << d.str() << "\n";
     errors = errors || error;
+    bad_pou = bad_pou || (error && d.message.rfind("no POU named", 0) == 0);
   }
+  // A misspelled --pou is a usage error, not a chart the semantics cannot model.
+  if (bad_pou) throw UsageError(command + ": bad --pou (the error above names the POUs)");
   if (errors || !built.system)
     throw InputError(command + ": the " + built.semantics + " semantics cannot model this chart");
   return built;

@@ -26,6 +26,9 @@ struct Progress {
   const char* phase = "";   ///< "explore", "checks", "build", ...
   std::uint64_t done = 0;   ///< checks (or items) done in this phase
   std::uint64_t total = 0;  ///< out of; 0 = not counted
+  /// The engine reporting, when several race (--engine auto: "bdd", "ic3", "bmc"); "" alone.
+  /// Phase "done": that engine has finished.
+  const char* engine = "";
 };
 
 struct Budget {

@@ -18,6 +18,7 @@
 #include "model/names.hpp"
 #include "model/nesting.hpp"
 #include "model/networks.hpp"
+#include "model/suggest.hpp"
 
 namespace sfcv::model::detail {
 
@@ -267,8 +268,17 @@ Ty Validator::resolve_name(const Expr& e, const SourceLocation& here) {
   if (grafcet() && e.name.size() > 1 && (e.name[0] == 'X' || e.name[0] == 'x') &&
       step_exists(std::string_view(e.name).substr(1)))
     return Ty::Bool;
+  // A typo ("Boing" for "Boin") gets the closest name of the POU, its globals and steps.
+  std::vector<std::string> known;
+  for (const auto& v : pou_->variables) known.push_back(v.name);
+  for (const auto& q : project_.pous)
+    for (const auto& v : q.variables)
+      if (v.direction == VarDirection::Global) known.push_back(v.name);
+  for (const auto& c : pou_->charts)
+    for (const auto& s : c.steps) known.push_back(s.name);
   error(here, "unknown name " + quoted(e.name) + " (not a variable" +
-                  (grafcet() ? ", step or step variable Xi)" : " or step)"));
+                  (grafcet() ? ", step or step variable Xi)" : " or step)") +
+                  did_you_mean(e.name, known));
   return Ty::Unknown;
 }
 

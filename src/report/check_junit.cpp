@@ -5,6 +5,7 @@
 #include <pugixml.hpp>
 #include <sstream>
 
+#include "report/numbers.hpp"
 #include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
@@ -28,7 +29,7 @@ std::string details(const logic::PropertyResult& r, const semantics::TransitionS
   if (r.trace) {
     const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
     out += std::string(cex ? "counterexample" : "witness") + " (" +
-           std::to_string(r.trace->steps.size()) + " situations):\n" + trace_table(*r.trace, ts);
+           counted(r.trace->steps.size(), "situation") + "):\n" + trace_table(*r.trace, ts);
   }
   return out;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "report/concise_text.hpp"
+#include "report/numbers.hpp"
 #include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
@@ -16,6 +18,48 @@ std::string seconds(double s) {
 }
 }  // namespace
 
+/// A chart that never moves (corpus 07 with --unwritten keep: 2 states, every step but the
+/// initial ones unreachable, every transition dead): not 110 findings alone, but why and what to
+/// do. Empty unless the dead-transitions check found every transition of the system dead.
+std::string stuck_diagnosis(const logic::CheckReport& report,
+                            const semantics::TransitionSystem& ts) {
+  const auto& transitions = ts.transitions();
+  if (!report.complete || transitions.empty()) return {};
+  const auto dead = std::find_if(report.results.begin(), report.results.end(), [](const auto& r) {
+    return r.check == "dead-transitions" && r.verdict == logic::Verdict::Violated;
+  });
+  if (dead == report.results.end() ||
+      std::max(dead->findings_total, dead->findings.size()) < transitions.size())
+    return {};
+  std::vector<std::string> inputs;
+  for (const auto& in : ts.inputs())
+    if (!in.pseudo) inputs.push_back(in.name);
+  std::string out = "diagnosis: the chart never moves: every one of its " +
+                    counted(transitions.size(), "transition") + " is dead";
+  if (report.states_known)
+    out += " and only " + counted(report.states.str(), "state") +
+           (report.states.str() == "1" ? " is" : " are") + " reachable";
+  out += ".\n";
+  if (inputs.empty()) {
+    out +=
+        "  why: no input ever changes: the run has no free input (with --unwritten keep the "
+        "variables that no POU writes hold their initial values), so no transition condition can "
+        "become true.\n";
+  } else {
+    out += "  why: no transition condition becomes true, whatever the " +
+           counted(inputs.size(), "input") + " (" + inputs.front() +
+           (inputs.size() > 1 ? ", ..." : "") +
+           ") do: the conditions read variables that never change, or the charts belong to "
+           "function block instances that the program never calls.\n";
+  }
+  out +=
+      "  what to do: 'sfcv info' lists the inputs and the variables no POU writes; read the "
+      "sensors as inputs (--unwritten free, the default), call each function block instance "
+      "every cycle in the program (or check its POU alone with --pou), and check that the "
+      "conditions of the initial steps' transitions read inputs.\n";
+  return out;
+}
+
 std::string findings_cut_note(const logic::PropertyResult& r) {
   if (r.findings_total <= r.findings.size()) return {};
   return std::to_string(r.findings.size()) + " of " + std::to_string(r.findings_total) +
@@ -25,15 +69,18 @@ std::string findings_cut_note(const logic::PropertyResult& r) {
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options) {
   std::string out;
-  out += (report.states_known ? report.states.str() + " states, " : std::string()) +
-         (report.edges_known ? report.edges.str() + " edges, " : std::string()) + "depth " +
-         std::to_string(report.depth) + " (" + report.engine + " engine, " +
+  out += (report.states_known ? counted(report.states.str(), "state") + ", " : std::string()) +
+         (report.edges_known ? counted(report.edges.str(), "edge") + ", " : std::string()) +
+         "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
          seconds(report.seconds) + ")";
   if (!report.complete)
     out += report.limit == "interrupted"
                ? std::string(" -- INCOMPLETE: interrupted (SIGINT or SIGTERM)")
                : " -- INCOMPLETE: the " + report.limit + " limit was reached";
-  if (report.stopped_early) out += " -- stopped early: every invariant is violated";
+  if (report.stopped_early)
+    out +=
+        " -- stopped early: every invariant is violated (the counts are those explored up to "
+        "the violations)";
   out += "\n";
   if (const auto& c = report.coverage) {
     out += "coverage: " + std::to_string(c->steps_visited) + "/" + std::to_string(c->steps) +
@@ -64,7 +111,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     if (r.trace && options.trace != TraceFormat::None) {
       const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
       out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
-             std::to_string(r.trace->steps.size()) + " situations):\n";
+             counted(r.trace->steps.size(), "situation") + "):\n";
       switch (options.trace) {
         case TraceFormat::Table:
           out += trace_table(*r.trace, ts);
@@ -83,6 +130,8 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
       }
     }
   }
+  out += stuck_diagnosis(report, ts);
+  if (!options.verbose) out = concise_text(out, working_directory());
   return valid_utf8(out);  // names are bytes; the report is UTF-8
 }
 
@@ -102,7 +151,9 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["states"] = report.states_known ? count_json(report.states) : json(nullptr);
   j["edges"] = report.edges_known ? count_json(report.edges) : json(nullptr);
   j["depth"] = report.depth;
-  j["complete"] = report.complete;
+  // A search that stopped at the violations did not explore every reachable state: its counts
+  // are those explored up to them, not the system's.
+  j["complete"] = report.complete && !report.stopped_early;
   j["stopped_early"] = report.stopped_early;
   j["limit"] = report.complete ? json(nullptr) : json(report.limit);
   j["seconds"] = report.seconds;

@@ -18,11 +18,19 @@ struct RenderOptions {
   std::string model;          ///< the model file, for the JSON header
   std::string semantics;      ///< "iec61131", "grafcet"
   std::int64_t cycle_ms = 1;  ///< IEC 61131-3 scan cycle, the VCD time step
+  /// Text: findings keep their XML element paths and absolute file paths (else relative paths
+  /// and line:col only, report/concise_text.hpp).
+  bool verbose = false;
 };
 
 /// "20 of 137 findings shown; --all for every one" when the engine kept fewer findings than it
 /// made, else empty.
 std::string findings_cut_note(const logic::PropertyResult& r);
+
+/// "diagnosis: the chart never moves ...": why and what to do, when the dead-transitions check
+/// found every transition of the system dead; empty otherwise. check_text ends with it.
+std::string stuck_diagnosis(const logic::CheckReport& report,
+                            const semantics::TransitionSystem& ts);
 
 std::string check_text(const logic::CheckReport& report, const semantics::TransitionSystem& ts,
                        const RenderOptions& options);

@@ -13,6 +13,7 @@
 
 #include "model/errors.hpp"
 #include "model/names.hpp"
+#include "model/suggest.hpp"
 #include "semantics/detail/iec_compiler.hpp"
 
 namespace sfcv::semantics::iec {
@@ -53,8 +54,15 @@ std::vector<const model::Pou*> Compiler::select() {
       const auto* pou = project.find_pou(name);
       if (!pou) {
         std::string avail;
-        for (const auto& q : project.pous) avail += (avail.empty() ? "" : ", ") + q.name;
-        error(project.where, "no POU named '" + name + "' (the model has: " + avail + ")");
+        std::vector<std::string> names;
+        for (const auto& q : project.pous) {
+          avail += (avail.empty() ? "" : ", ") + q.name;
+          names.push_back(q.name);
+        }
+        const auto guess = model::closest_name(name, names);
+        error(project.where, "no POU named '" + name + "'" +
+                                 (guess.empty() ? " (the model has: " + avail + ")"
+                                                : ": did you mean '" + guess + "'?"));
         continue;
       }
       if (pou->kind == model::PouKind::Function) {

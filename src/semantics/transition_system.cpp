@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "model/names.hpp"
+#include "model/suggest.hpp"
 
 namespace sfcv::semantics {
 
@@ -70,7 +71,12 @@ std::optional<std::uint32_t> find_observable(const TransitionSystem& ts, std::st
   if (it != index->by_alias.end() && it->second.size() == 1) return it->second.front();
   if (error) {
     if (it == index->by_alias.end()) {
-      *error = "unknown name '" + std::string(name) + "'";
+      // A typo ("s1X" for "S1.X") or a name without its instance path gets the closest
+      // observable.
+      std::vector<std::string> known;
+      known.reserve(obs.size());
+      for (const auto& o : obs) known.push_back(o.name);
+      *error = "unknown name '" + std::string(name) + "'" + model::did_you_mean(name, known);
     } else {
       *error = "ambiguous name '" + std::string(name) + "': could be";
       for (auto h : it->second) *error += " " + obs[h].name;

@@ -160,7 +160,7 @@ TEST(FbdCorpus, BeremizCounterInStFbdLdAndIlAgree) {
                             " --engine explicit --checks none --ctl 'AG OUT <= 32767' "
                             "--ctl 'AG !(OUT = 18)'");
     EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-    EXPECT_NE(r.out.find("32768 states, 65534 edges"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("32,768 states, 65,534 edges"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("counterexample (3 situations)"), std::string::npos) << r.out;
   }
 }

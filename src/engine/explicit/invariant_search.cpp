@@ -832,6 +832,8 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   // The deepest state stored: the last one, one level below the one expanded when it was found.
   report.depth = store.size() > level_end ? level + 1 : level;
   report.complete = complete || open == 0;
+  // Every invariant met a bad state before the search ended: the counts are those explored.
+  report.stopped_early = !complete && limit.empty() && open == 0;
   report.limit = limit;
   for (std::size_t i = 0; i < n; ++i) {
     const auto& p = task.properties[i];

@@ -212,7 +212,19 @@ class PortfolioModelChecker final : public ModelChecker {
     racers.push_back({"bdd", bdd_.get(), task, {}, {}, {}});
     racers.push_back({"ic3", ic3_.get(), task, {}, {}, {}});
     racers.push_back({"bmc", bmc_.get(), task, {}, {}, {}});
-    for (auto& r : racers) r.task.limits.cancel = cancel;
+    // Each racer reports under its own name (a literal: the pointer outlives the race), so that
+    // the progress line shows every engine of the race and which ones have finished.
+    static constexpr const char* kNames[] = {"bdd", "ic3", "bmc"};
+    for (std::size_t i = 0; i < racers.size(); ++i) {
+      auto& r = racers[i];
+      r.task.limits.cancel = cancel;
+      if (const auto progress = task.limits.progress)
+        r.task.limits.progress = [progress, name = kNames[i]](const logic::Progress& p) {
+          auto tagged = p;
+          tagged.engine = name;
+          progress(tagged);
+        };
+    }
     // One memory budget for the race, not one each: half for the BDD engine (its node table
     // is what grows), a quarter for each SAT engine's circuit.
     if (const auto budget = task.limits.max_memory_bytes; budget > 0) {
@@ -220,9 +232,6 @@ class PortfolioModelChecker final : public ModelChecker {
       racers[1].task.limits.max_memory_bytes = budget / 4;
       racers[2].task.limits.max_memory_bytes = budget / 4;
     }
-    // One progress line, one thread calling it: the BDD engine's (the SAT engines report none).
-    racers[1].task.limits.progress = nullptr;
-    racers[2].task.limits.progress = nullptr;
 
     // Without a probe the questions are the BDD engine's: it answers every one of the task,
     // unknown or not checked where it cannot.
@@ -272,6 +281,9 @@ class PortfolioModelChecker final : public ModelChecker {
           } catch (...) {
             r.error = std::current_exception();
           }
+          logic::Progress finished;
+          finished.phase = "done";
+          r.task.limits.report(finished);
         });
     }  // joined here
     // An engine error is a bug, whoever won: never hidden behind another engine's answer.

@@ -4,6 +4,7 @@
 // at frame k); then the transition out of frame k is added for good. Depths are tried in
 // order, so the first run found is a shortest one.
 
+#include <functional>
 #include <vector>
 
 #include "engine/sat/reachability.hpp"
@@ -14,6 +15,8 @@ namespace sfcv::engine::sat {
 struct BoundOptions {
   std::uint32_t max_depth = 200;  ///< the deepest frame tried (BMC) or k bound (k-induction)
   Deadline deadline;
+  /// Called with each depth as it starts (the progress line); may be empty.
+  std::function<void(std::uint32_t)> on_depth;
 };
 
 /// Per target: Reached (with a shortest run) or Unknown (no run up to the bound, or the

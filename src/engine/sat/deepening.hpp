@@ -31,6 +31,7 @@ void deepen(const ReachQuery& query, const BoundOptions& options, Solver& base, 
       }
   };
   for (std::uint32_t k = 0; open > 0; ++k) {
+    if (options.on_depth) options.on_depth(k);
     if (k > options.max_depth) {
       give_up(options.max_depth, bound_why);
       break;

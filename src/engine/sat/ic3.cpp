@@ -154,6 +154,7 @@ class Ic3 {
   void add_frame() {
     frames_.emplace_back(aig_, frames_.empty(), options_.deadline);
     blocked_.emplace_back();
+    if (options_.on_frame) options_.on_frame(static_cast<std::uint32_t>(frames_.size() - 1));
   }
 
   bool intersects_initial(const Cube& c) const {

@@ -6,6 +6,8 @@
 // literal dropping), propagation of blocked cubes forward, and predecessors lifted by a
 // failed-assumption query before they become obligations.
 
+#include <functional>
+
 #include "engine/sat/reachability.hpp"
 #include "engine/sat/sat_solver.hpp"
 
@@ -14,6 +16,8 @@ namespace sfcv::engine::sat {
 struct Ic3Options {
   Deadline deadline;
   std::uint32_t max_frames = 100000;
+  /// Called with the index of each frame as it is opened (the progress line); may be empty.
+  std::function<void(std::uint32_t)> on_frame;
 };
 
 struct Ic3Stats {

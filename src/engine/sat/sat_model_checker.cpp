@@ -495,6 +495,8 @@ class Run {
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
+    bounds.on_depth =
+        level_reporter(options_.algorithm == SatAlgorithm::KInduction ? "k-induction" : "bmc");
     // Every proof is re-checked by fresh solvers before it may read as "holds".
     auto recheck = [&](std::size_t t, ReachResult& r) {
       if (r.kind != ReachResult::Kind::Unreachable) return;
@@ -528,6 +530,7 @@ class Run {
       sat::BoundOptions shallow;
       shallow.max_depth = std::min<std::uint32_t>(options_.max_depth, kBmcFirstDepth);
       shallow.deadline = part_of_time_left(4);
+      shallow.on_depth = level_reporter("bmc");
       auto first = sat::bmc(query, shallow);
       for (std::size_t t = 0; t < first.size(); ++t)
         if (first[t].kind == ReachResult::Kind::Reached) {
@@ -540,6 +543,7 @@ class Run {
     auto ic3_pass = [&](const sat::ReachQuery& search, sat::Deadline deadline, bool last) {
       sat::Ic3Options io;
       io.deadline = deadline;
+      io.on_frame = level_reporter("ic3");
       for (std::size_t t = 0; t < targets_.size(); ++t) {
         if (decided[t]) continue;
         auto r = sat::ic3(search, t, io);
@@ -615,6 +619,18 @@ class Run {
   sat::ReachQuery without_range_check(const sat::ReachQuery& query, double seconds) {
     if (!iec_ || targets_.empty()) return query;
     return sat::without_range_check(query, *iec_, share_of_time_left(seconds));
+  }
+
+  /// Reports each depth (BMC, k-induction) or frame (IC3) on the progress line, so that a long
+  /// SAT search shows where it is; empty without a progress callback.
+  std::function<void(std::uint32_t)> level_reporter(const char* phase) const {
+    if (!task_.limits.progress) return {};
+    return [this, phase](std::uint32_t level) {
+      logic::Progress p;
+      p.phase = phase;
+      p.depth = level;
+      task_.limits.report(p);
+    };
   }
 
   /// The run's deadline cut to 1 / `parts` of the time left (none without a deadline): for a
