@@ -177,6 +177,14 @@ class StandardCheckRunner {
     PropertyResult r;
     r.name = std::string(logic::to_string(id));
     r.check = r.name;
+    // Without an initial state every other check would hold or fail vacuously ("step X1 is
+    // never active", "no deadlock"): unknown instead; instability names why (a range error of
+    // the first evolution, or an assumption excluding every situation).
+    if (id != StandardCheck::Instability && sp_.complete() && sp_.empty(sp_.initial())) {
+      r.verdict = Verdict::Unknown;
+      r.message = "no initial state (the instability check says why): nothing to check";
+      return r;
+    }
     switch (id) {
       case StandardCheck::Reachable:
         reachable(r);

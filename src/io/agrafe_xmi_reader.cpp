@@ -30,6 +30,10 @@ using model::ExprKind;
 using model::ExprPtr;
 using model::SourceLocation;
 
+/// IEC 61131-3 INT: the default range of AGRAFE's unbounded output and internal integers.
+constexpr std::int64_t kIntLo = -32768;
+constexpr std::int64_t kIntHi = 32767;
+
 struct Failure {
   pugi::xml_node at;
   std::string message;
@@ -327,12 +331,18 @@ class Reader {
       if (sort == "Bool") {
         v.type = model::Type::boolean();
       } else if (sort == "Integer") {
-        v.type = model::Type::integer(g7::range_type_name(g7::kDefaultIntLo, g7::kDefaultIntHi),
-                                      g7::kDefaultIntLo, g7::kDefaultIntHi);
+        // AGRAFE gives no bounds. Outputs and internal variables take INT's range, the type
+        // AGRAFE's own code generator declares them with, so that a situation overflows only
+        // where the file's arithmetic does; inputs keep 0..255, since a computed-with integer
+        // input is enumerated value by value (docs/semantics.md 2.9).
+        const bool input = kind == "input";
+        const std::int64_t lo = input ? g7::kDefaultIntLo : kIntLo;
+        const std::int64_t hi = input ? g7::kDefaultIntHi : kIntHi;
+        v.type = model::Type::integer(g7::range_type_name(lo, hi), lo, hi);
         warn(decl, model::Severity::Note,
              "integer variable '" + name + "' has no bounds in AGRAFE: range " +
-                 std::to_string(g7::kDefaultIntLo) + ".." + std::to_string(g7::kDefaultIntHi) +
-                 " assumed");
+                 std::to_string(lo) + ".." + std::to_string(hi) + " assumed" +
+                 (input ? "" : " (INT, as AGRAFE's generated code declares it)"));
       } else {
         throw Failure{decl,
                       "variable '" + name + "' has unsupported sort '" + std::string(sort) + "'"};
@@ -525,9 +535,29 @@ class Reader {
     for (const auto& [sync, trs] : sync_in_trans)
       for (int tr : trs)
         for (int st : sync_out_steps[sync]) down[static_cast<std::size_t>(tr)].push_back(st);
-    for (auto s : syncs) {
+    int sync_index = 0;
+    for (auto s : pg.children("synchronizations")) {
       const bool steps_in = !sync_in_steps[s].empty(), steps_out = !sync_out_steps[s].empty();
       const bool trans_in = !sync_in_trans[s].empty(), trans_out = !sync_out_trans[s].empty();
+      ++sync_index;
+      if (steps_in && steps_out && !trans_in && !trans_out) {
+        // AGRAFE's own test inputs (stepReachability4) draw steps -> bar -> steps with no
+        // transition: read as a transition whose receptivity is always true (IEC 60848 "=1"),
+        // the only transition such a bar can stand for.
+        model::Transition tr;
+        tr.name = "sync" + std::to_string(sync_index);
+        while (!transition_ids.insert(tr.name).second) tr.name += "_";
+        tr.where = where(s);
+        tr.order = static_cast<int>(c.transitions.size());
+        tr.guard = model::make_bool(true, tr.where);
+        warn(s, model::Severity::Warning,
+             "a synchronization joins steps to steps with no transition: read as transition '" +
+                 tr.name + "' with receptivity =1 (always true)");
+        up.push_back(sync_in_steps[s]);
+        down.push_back(sync_out_steps[s]);
+        c.transitions.push_back(std::move(tr));
+        continue;
+      }
       if ((steps_in && steps_out) || (trans_in && trans_out) || (steps_in && trans_in))
         throw Failure{
             s, "a synchronization joins either steps to transitions or transitions to steps"};
@@ -559,8 +589,12 @@ class Reader {
     model::Chart& c = chart(pg);
     for (auto link : pg.children("actionLinks")) {
       poll_.tick_or_throw("reading the model");
-      if (!link.attribute("step") || !link.attribute("actionType"))
-        throw Failure{link, "action link without a step or an action"};
+      if (!link.attribute("step")) throw Failure{link, "action link without a step"};
+      if (!link.attribute("actionType")) {
+        // AGRAFE's conflictingActions7/9/10: a link that names no action associates nothing.
+        warn(link, model::Severity::Warning, "action link without an action: ignored");
+        continue;
+      }
       const auto step_node = resolve(link, link.attribute("step").value());
       const auto act = resolve(link, link.attribute("actionType").value());
       const auto it = steps_.find(step_node);

@@ -138,8 +138,9 @@ class ChartBuilder {
   // branch offers no source here.
   using SourceSets = std::vector<std::vector<std::string>>;
 
+  // `in_branch`: `n` lies in a branch of a simultaneous convergence being walked.
   bool walk_back(pugi::xml_node n, pugi::xml_node transition, bool join, SourceSets& out,
-                 std::set<std::string>& seen) {
+                 std::set<std::string>& seen, bool in_branch = false) {
     bool ok = true;
     SourceSets acc;
     bool first = true;
@@ -155,8 +156,13 @@ class ChartBuilder {
         SourceSets here;
         if (is_step(k)) {
           here.push_back({trim(src.attribute("name").value())});
-        } else if (k == "jumpStep" && local_name(n) == "selectionConvergence") {
-          // this branch ends in its jump
+        } else if (k == "jumpStep" && (local_name(n) == "selectionConvergence" ||
+                                       local_name(n) == "simultaneousConvergence")) {
+          // This branch ends in its jump (TwinCAT and CODESYS still wire it into the
+          // convergence): it adds no source, whether the branch is alternative or parallel.
+          if (local_name(n) == "simultaneousConvergence" || in_branch)
+            note_parallel_branch_jump(src, n);
+          continue;
         } else if (k == "selectionDivergence" || k == "simultaneousConvergence" ||
                    k == "selectionConvergence") {
           if (!seen.insert(it->first).second) {
@@ -166,8 +172,21 @@ class ChartBuilder {
             ok = false;
             continue;
           }
-          ok = walk_back(src, transition, k == "simultaneousConvergence", here, seen) && ok;
+          ok = walk_back(src, transition, k == "simultaneousConvergence", here, seen,
+                         in_branch || (join && local_name(n) == "simultaneousConvergence")) &&
+               ok;
           seen.erase(it->first);
+          // Every branch of `src` ended in a jump: like a single jump, it adds no source.
+          if (here.empty()) continue;
+        } else if (k == "jumpStep") {
+          ctx_.error(transition,
+                     "transition (localId " + std::string(transition.attribute("localId").value()) +
+                         ") directly follows the jump to '" +
+                         trim(src.attribute("targetName").value()) + "' (localId " + it->first +
+                         "): a jump ends its branch, so no step precedes the "
+                         "transition");
+          ok = false;
+          continue;
         } else {
           ctx_.error(transition, "transition (localId " +
                                      std::string(transition.attribute("localId").value()) +
@@ -197,6 +216,21 @@ class ChartBuilder {
       }
     for (auto& set : acc) out.push_back(std::move(set));
     return ok;
+  }
+
+  // CODESYS: "a parallel branch ends with a double line or with a jump". The convergence then
+  // waits for the other branches only, and the jump's target becomes active even if it already
+  // is (a step is a flag): said once per jump, and recorded so that validate() does not refuse
+  // the resulting "unsafe" structure.
+  void note_parallel_branch_jump(pugi::xml_node jump, pugi::xml_node convergence) {
+    if (!warned_jumps_.insert(jump.attribute("localId").value()).second) return;
+    if (!chart_.parallel_branch_jump.known()) chart_.parallel_branch_jump = ctx_.where(jump);
+    ctx_.warning(jump, "a parallel branch ends in the jump to '" +
+                           trim(jump.attribute("targetName").value()) +
+                           "': " + describe(convergence) +
+                           " waits for the other branches only, and the jump activates its "
+                           "target even while it is active (CODESYS/TwinCAT step flags, "
+                           "docs/semantics.md 1.2b)");
   }
 
   // Target steps reached from the element with localId `id`.
@@ -269,7 +303,15 @@ class ChartBuilder {
       t.guard = condition(n);
       if (!t.guard) ok = false;
       if (ok && source_sets.empty()) {
-        ctx_.error(n, "transition (localId " + id + ") has no source step");
+        const auto in = by_id_.find(
+            child(child(n, "connectionPointIn"), "connection").attribute("refLocalId").value());
+        const bool converges =
+            in != by_id_.end() && (local_name(in->second) == "selectionConvergence" ||
+                                   local_name(in->second) == "simultaneousConvergence");
+        ctx_.error(
+            n, "transition (localId " + id + ") has no source step" +
+                   (converges ? ": every branch into " + describe(in->second) + " ends in a jump"
+                              : std::string()));
         ok = false;
       }
       if (ok && t.targets.empty()) {
@@ -310,6 +352,10 @@ class ChartBuilder {
       guard = named_transition(trim(ref.attribute("name").value()), ref);
     } else if (const auto cpi = child(cond, "connectionPointIn")) {
       guard = net_.condition(cpi);
+    } else if (child(cond, "connection")) {
+      // TC6 v1.0 (Beremiz 2008): the condition holds its connections itself, without a
+      // connectionPointIn around them.
+      guard = net_.condition(cond);
     } else {
       ctx_.error(cond, "condition has neither inline text, a reference nor a connection");
       return nullptr;
@@ -509,6 +555,7 @@ class ChartBuilder {
   Network net_;
   std::map<std::string, pugi::xml_node> by_id_;
   std::map<std::string, std::vector<pugi::xml_node>> successors_;
+  std::set<std::string> warned_jumps_;
 };
 
 }  // namespace

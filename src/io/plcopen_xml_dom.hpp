@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "model/budget.hpp"
+#include "model/chart.hpp"
 #include "model/diagnostic.hpp"
 #include "model/literal.hpp"
 #include "model/source_location.hpp"
@@ -69,6 +70,9 @@ class XmlContext {
   /// Upper-case names of the user FUNCTIONs whose body only computes their result (pure_functions):
   /// a call of one may be left out with the write it feeds.
   std::set<std::string> pure_functions;
+  /// The file's global variable lists (read before the POUs, each a POU of VAR_GLOBALs): a POU
+  /// body is validated with them, since vendor bodies (AGRAFE's generated ST) assign them.
+  std::vector<model::Pou> global_lists;
 
  private:
   std::string file_;

@@ -389,10 +389,6 @@ void read_global_lists(XmlContext& ctx, pugi::xml_node container, model::Project
     pou.kind = model::PouKind::Program;
     pou.where = ctx.where(gv);
     read_section(ctx, gv, model::VarDirection::Global, pou, user_fbs);
-    if (project.find_pou(pou.name)) {
-      ctx.error(gv, "global variable list '" + pou.name + "' has the name of another POU");
-      continue;
-    }
     project.pous.push_back(std::move(pou));
   }
   for (auto r : children(container, "resource")) read_global_lists(ctx, r, project, user_fbs);
@@ -531,6 +527,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
       scope.body = *stmts;
       scope.where = pou.where;
       alone.pous.push_back(std::move(scope));
+      for (const auto& g : ctx.global_lists) alone.pous.push_back(g);
       // The file's user functions by name, so that a call of one as a statement
       // (`F(x := a, q => z);`) is not taken for an undeclared instance; the compiler checks
       // the call against the function itself.
@@ -674,6 +671,14 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     user_fbs.insert(model::to_upper(trim(dt.attribute("name").value())));
   for (auto dt : children(child(child(root, "types"), "dataTypes"), "dataType"))
     read_data_type(ctx, dt, project, user_fbs);
+  // Global lists first, so that POU bodies are validated with them; they join the project
+  // after the POUs, as before.
+  model::Project lists;
+  for (auto conf : children(child(child(root, "instances"), "configurations"), "configuration"))
+    read_global_lists(ctx, conf, lists, user_fbs);
+  for (auto data : children(child(root, "addData"), "data"))
+    read_global_lists(ctx, data, lists, user_fbs);
+  ctx.global_lists = lists.pous;
   std::set<std::string> seen;
   for (auto p : pous) {
     ctx.poll();
@@ -715,10 +720,15 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     std::stable_sort(project.pous.begin(), project.pous.end(),
                      [&](const model::Pou& a, const model::Pou& b) { return rank(a) < rank(b); });
   }
-  for (auto conf : children(child(child(root, "instances"), "configurations"), "configuration"))
-    read_global_lists(ctx, conf, project, user_fbs);
-  for (auto data : children(child(root, "addData"), "data"))
-    read_global_lists(ctx, data, project, user_fbs);
+  for (auto& list : lists.pous) {
+    if (project.find_pou(list.name)) {
+      r.diagnostics.push_back(
+          {model::Severity::Error, list.where,
+           "global variable list '" + list.name + "' has the name of another POU"});
+      continue;
+    }
+    project.pous.push_back(std::move(list));
+  }
   if (!model::has_errors(r.diagnostics)) model::lower_data_types(project, r.diagnostics);
   r.project = std::move(project);
   return r;

@@ -188,6 +188,11 @@ struct Chart {
   std::vector<Step> steps;
   std::vector<Transition> transitions;
   SourceLocation where;
+  /// IEC 61131-3 as CODESYS and TwinCAT run it: where a parallel branch of this chart ends in a
+  /// jump (the convergence then waits for the other branches only); unknown when none does. The
+  /// jump may leave two steps of one sequence active: steps are flags (docs/semantics.md 1.2b),
+  /// so the parallel-structure check of validate() is not applied to such a chart.
+  SourceLocation parallel_branch_jump;
 
   const Step* find_step(std::string_view step_name) const;
   int step_index(std::string_view step_name) const;  ///< -1 when absent

@@ -84,7 +84,9 @@ void Validator::check_chart(const Chart& chart, bool activated_otherwise) {
 
   check_initial_steps(chart, activated_otherwise);
   check_reachability(chart);
-  if (!grafcet()) check_parallel_structure(chart);
+  // A parallel branch ending in a jump is the CODESYS/TwinCAT idiom the reader warned about
+  // (docs/semantics.md 1.2b): "unsafe" by design there, and run with step flags.
+  if (!grafcet() && !chart.parallel_branch_jump.known()) check_parallel_structure(chart);
 }
 
 void Validator::check_step_kind(const Step& s, const SourceLocation& fallback) {

@@ -264,6 +264,10 @@ Ty Validator::resolve_name(const Expr& e, const SourceLocation& here) {
     if (auto t = value_type(g->type)) return *t;
   }
   if (step_exists(e.name)) return Ty::Bool;  // a step used as a Boolean: its activity
+  // A chain kept as one name (`GVL.IsSFCResetting` in a TwinCAT condition network): resolved
+  // as the member chain it is.
+  if (!grafcet() && e.name.find('.') != std::string::npos)
+    return resolve_path(split_path(e.name), *pou_, true, here, e.name);
   // IEC 60848 step variable: X12 is the activity of step 12.
   if (grafcet() && e.name.size() > 1 && (e.name[0] == 'X' || e.name[0] == 'x') &&
       step_exists(std::string_view(e.name).substr(1)))

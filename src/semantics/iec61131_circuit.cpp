@@ -741,7 +741,7 @@ void SymbolicMachine::fb_call(const Stmt& s, AigLit guard) {
       note_start(t, aig_.make_and(guard, aig_.make_and(in, equal(nxt_[t.field], constant(0)))));
       const Value v = timer_next(t, in, Aig::kFalse);
       set(t.field, v, guard);
-      set_bool(q, aig_.make_and(in, timer_expired(t, v)), guard);
+      set_bool(q, s.pt_zero ? in : aig_.make_and(in, timer_expired(t, v)), guard);
       snapshot_et(fb, t, guard);
       return;
     }

@@ -262,6 +262,12 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
         n.a = *s;
         return node(n);
       }
+      if (const auto dot = e.name.rfind('.'); dot != std::string::npos) {
+        // A chain kept as one name (`GVL.IsSFCResetting` in a TwinCAT condition network):
+        // the member chain it is.
+        const auto m = model::make_member(e.name.substr(0, dot), e.name.substr(dot + 1), e.where);
+        return member(sc, *m, context, type);
+      }
       error(e.where, "unknown name '" + e.name + "' in " + sc.pou->name);
       type = VT::Bool;
       return constant(0);

@@ -121,6 +121,16 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
                   "output binding or other POU writes)");
         continue;
       }
+      // TwinCAT's xPPU calls one TON with PT := T#0ms in one place (Q = IN at once) and a
+      // positive PT elsewhere. IEC 61131-3's TON sets Q when ET >= PT, ET counting from the
+      // rise of IN whatever PT the calls give: that call's Q is IN, and the timer runs on
+      // with the positive PT for the other calls (its ET read is refused, finish_timers).
+      if (fb.kind == StandardFb::TON && *pt == 0 && (!fb.pt_set || fb.pt_ms > 0)) {
+        out.pt_zero = true;
+        pt_given = true;
+        zero_pt.emplace(out.target, s.where);
+        continue;
+      }
       // Abstract time only distinguishes PT = 0 (at once) from PT > 0 (some later cycle), so
       // calls with different positive PTs (CODESYS's PPU) share one timer; discrete time
       // counts cycles and needs one PT.
@@ -167,6 +177,18 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
 }
 
 void Compiler::finish_timers() {
+  // ET after a PT := 0 call is 0 (IEC: ET stops at PT), not the running timer's: not modelled.
+  // (A TON whose calls all give PT := 0 is a timer of PT 0; the flag changes nothing there.)
+  for (const auto& [index, where] : zero_pt) {
+    if (!p.fbs[index].pt_set) continue;
+    const bool et_read = std::any_of(p.nodes.begin(), p.nodes.end(), [&](const auto& n) {
+      return n.op == Op::TimerET && n.a == index;
+    });
+    if (et_read)
+      error(where, "'" + p.fbs[index].name +
+                       "' is called with PT := 0 here and a positive PT elsewhere, and its ET is "
+                       "read: ET after such a call is not modelled");
+  }
   for (const auto& [index, where] : omitted_pt) {
     auto& fb = p.fbs[index];
     if (fb.pt_set && fb.pt_ms != 0) {

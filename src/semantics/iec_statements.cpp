@@ -252,7 +252,7 @@ void Machine::fb_call(const Stmt& s) {
       const auto& t = p_.timers[static_cast<std::size_t>(fb.timer)];
       const auto v = timer_next(t, in, false);
       nxt_[t.field] = v;
-      nxt_[q] = in && timer_expired(t, v);
+      nxt_[q] = in && (s.pt_zero || timer_expired(t, v));
       snapshot_et(fb, t);
       return;
     }

@@ -464,5 +464,19 @@ TEST(StandardChecks, SelectionByName) {
   EXPECT_NE(error.find("unknown check 'bogus'"), std::string::npos);
 }
 
+TEST(StandardChecks, NoInitialStateIsNeverAVerdict) {
+  // Issue 45: an AGRAFE file whose first situation overflowed had no initial state, and
+  // "reachable" said every step is never active while "global-deadlock" held, vacuously.
+  auto ts = cycle();
+  ts.set_initial({});
+  for (const auto id :
+       {StandardCheck::Reachable, StandardCheck::DeadTransitions, StandardCheck::GlobalDeadlock,
+        StandardCheck::LocalDeadlock, StandardCheck::Reentry}) {
+    const auto r = run(ts, id);
+    EXPECT_EQ(r.verdict, Verdict::Unknown) << logic::to_string(id);
+    EXPECT_NE(r.message.find("no initial state"), std::string::npos) << r.message;
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::engine

@@ -82,14 +82,18 @@ TEST(AgrafeXmi, VariablesDirectionsAndSorts) {
   EXPECT_EQ(v[1].direction, model::VarDirection::Output);
   EXPECT_EQ(v[2].direction, model::VarDirection::Local);
   EXPECT_EQ(v[2].type.kind, model::TypeKind::Int);
-  EXPECT_EQ(v[2].type.lo, 0);
-  EXPECT_EQ(v[2].type.hi, 255);
+  // Issue 45: an internal (or output) integer takes INT's range, as AGRAFE's generated code
+  // declares it; an input keeps 0..255 (enumerated value by value when computed with).
+  EXPECT_EQ(v[2].type.lo, -32768);
+  EXPECT_EQ(v[2].type.hi, 32767);
+  EXPECT_EQ(v[3].type.lo, 0);
   EXPECT_EQ(v[3].type.hi, 255);
   int notes = 0;
   for (const auto& d : r.diagnostics)
     if (d.severity == model::Severity::Note) {
       ++notes;
-      EXPECT_NE(d.message.find("0..255"), std::string::npos);
+      EXPECT_NE(d.message.find(notes == 1 ? "-32768..32767" : "0..255"), std::string::npos)
+          << d.message;
       EXPECT_FALSE(d.where.element_path.empty());
     }
   EXPECT_EQ(notes, 2);
@@ -419,6 +423,66 @@ TEST(AgrafeXmiErrors, NameTheElement) {
   EXPECT_EQ(first_error("<project/>"),
             "t.grafcet:1:1 (/): not an AGRAFE grafcet: the root element is <project>, expected "
             "<grafcet:Grafcet>");
+}
+
+// ---------------------------------------------------- AGRAFE's own test inputs (issue 45)
+
+std::size_t count_warnings(const LoadResult& r, const std::string& part) {
+  std::size_t n = 0;
+  for (const auto& d : r.diagnostics)
+    if (d.severity == model::Severity::Warning && d.message.find(part) != std::string::npos) ++n;
+  return n;
+}
+
+TEST(AgrafeXmiIdioms, ActionLinkWithoutAnActionIsIgnoredWithAWarning) {
+  // As conflictingActions7/9/10 write it: a second link of step 2 names no actionType.
+  const auto r =
+      load(doc(var("V", "output", "Bool"),
+               "<partialGrafcets xsi:type=\"grafcet:PartialGrafcet\" name=\"G\">" + kTwoSteps +
+                   "<transitions id=\"1\"/>"
+                   "<actionTypes xsi:type=\"grafcet:ContinuousAction\" id=\"1\"><variable " +
+                   vref(0) +
+                   "/></actionTypes>"
+                   "<actionLinks step=\"//@partialGrafcets.0/@steps.1\" "
+                   "actionType=\"//@partialGrafcets.0/@actionTypes.0\"/>"
+                   "<actionLinks step=\"//@partialGrafcets.0/@steps.1\"/></partialGrafcets>"));
+  ASSERT_TRUE(r.ok()) << messages(r);
+  EXPECT_EQ(count_warnings(r, "action link without an action: ignored"), 1u) << messages(r);
+  ASSERT_EQ(r.project->pous[0].associations.size(), 1u);
+  EXPECT_EQ(r.project->pous[0].associations[0].step, "2");
+  // A link without a step is still an error: it cannot be placed.
+  EXPECT_FALSE(load(doc("",
+                        "<partialGrafcets name=\"G\"><steps id=\"1\"/>"
+                        "<actionLinks/></partialGrafcets>"))
+                   .ok());
+}
+
+TEST(AgrafeXmiIdioms, SynchronizationFromStepsToAStepIsAnAlwaysTrueTransition) {
+  // As stepReachability4 writes it: steps 1 and 2 -> bar -> step 3, no transition.
+  const auto r = load(doc("", R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G">
+    <steps xsi:type="grafcet:Step" id="1" initial="true"/>
+    <steps xsi:type="grafcet:Step" id="2"/>
+    <steps xsi:type="grafcet:Step" id="3"/>
+    <synchronizations/>
+    <arcs source="//@partialGrafcets.0/@steps.0" target="//@partialGrafcets.0/@synchronizations.0"/>
+    <arcs source="//@partialGrafcets.0/@steps.1" target="//@partialGrafcets.0/@synchronizations.0"/>
+    <arcs source="//@partialGrafcets.0/@synchronizations.0" target="//@partialGrafcets.0/@steps.2"/>
+  </partialGrafcets>)"));
+  ASSERT_TRUE(r.ok()) << messages(r);
+  EXPECT_EQ(count_warnings(r, "with no transition: read as transition 'sync1'"), 1u) << messages(r);
+  const auto& c = r.project->pous[0].charts[0];
+  ASSERT_EQ(c.transitions.size(), 1u);
+  EXPECT_EQ(c.transitions[0].sources, (std::vector<std::string>{"1", "2"}));
+  EXPECT_EQ(c.transitions[0].targets, std::vector<std::string>{"3"});
+  ASSERT_TRUE(c.transitions[0].guard);
+  EXPECT_EQ(model::to_st(c.transitions[0].guard), "TRUE");
+  // Transitions to transitions through a bar still mean nothing.
+  EXPECT_FALSE(load(doc("", R"(<partialGrafcets name="G"><steps id="1"/>
+    <transitions id="1"/><transitions id="2"/><synchronizations/>
+    <arcs source="//@partialGrafcets.0/@transitions.0" target="//@partialGrafcets.0/@synchronizations.0"/>
+    <arcs source="//@partialGrafcets.0/@synchronizations.0" target="//@partialGrafcets.0/@transitions.1"/>
+  </partialGrafcets>)"))
+                   .ok());
 }
 
 // ------------------------------------------------------------------------------------ corpus

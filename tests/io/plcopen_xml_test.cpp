@@ -12,6 +12,7 @@
 #include "model/chart.hpp"
 #include "model/compare.hpp"
 #include "model/names.hpp"
+#include "model/validate.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::io {
@@ -567,7 +568,163 @@ TEST(PlcopenXml, TransitionAfterAJumpIsAnError) {
                           jump(3, 2, "S0") + transition(4, 3, inline_st("b")) + step(5, "S1", 4);
   const auto r = load_plcopen_xml(project(sfc, kVarA), "afterjump.xml");
   EXPECT_FALSE(r.ok());
-  EXPECT_TRUE(has_message(r, Severity::Error, "follows jumpStep")) << errors_of(r);
+  // Issue 45: named in the chart's words (the jump's target), not as "follows jumpStep".
+  EXPECT_TRUE(has_message(r, Severity::Error,
+                          "transition (localId 4) directly follows the jump to 'S0' (localId 3)"))
+      << errors_of(r);
+}
+
+// ------------------------------------------- jumps ending parallel branches (issue 45, xPPU)
+
+const std::string kVarsAbcd =
+    "<inputVars><variable name=\"a\"><type><BOOL/></type></variable>"
+    "<variable name=\"b\"><type><BOOL/></type></variable>"
+    "<variable name=\"c\"><type><BOOL/></type></variable>"
+    "<variable name=\"d\"><type><BOOL/></type></variable></inputVars>";
+
+std::string sim_div(int id, int from) {
+  return "<simultaneousDivergence localId=\"" + std::to_string(id) +
+         "\"><connectionPointIn><connection refLocalId=\"" + std::to_string(from) +
+         "\"/></connectionPointIn><connectionPointOut/><connectionPointOut/>"
+         "</simultaneousDivergence>\n";
+}
+
+std::string convergence(const std::string& kind, int id, std::vector<int> from) {
+  std::string s = "<" + kind + " localId=\"" + std::to_string(id) + "\">";
+  for (int f : from)
+    s += "<connectionPointIn><connection refLocalId=\"" + std::to_string(f) +
+         "\"/></connectionPointIn>";
+  return s + "<connectionPointOut/></" + kind + ">\n";
+}
+
+std::string count_errors(const model::Diagnostics& ds) {
+  std::string s;
+  for (const auto& d : ds)
+    if (d.severity == Severity::Error) s += d.str() + "\n";
+  return s;
+}
+
+// As TwinCAT writes xPPU 15-23: branch 2 of a parallel sequence ends in a jump out of it, and
+// the jump is still wired into the simultaneous convergence. CODESYS: "a parallel branch ends
+// with a double line or with a jump"; the convergence waits for the other branch only.
+TEST(PlcopenXml, JumpEndingAParallelBranchLeavesTheConvergenceToTheOtherBranches) {
+  const std::string sfc = step(1, "Init", -1, true) + transition(2, 1, inline_st("a")) +
+                          sim_div(3, 2) + step(4, "Sort", 3) + step(5, "Recv", 3) +
+                          transition(6, 5, inline_st("b")) + jump(7, 6, "Init") +
+                          convergence("simultaneousConvergence", 8, {4, 7}) +
+                          transition(9, 8, inline_st("c")) + step(10, "Reduce", 9) +
+                          transition(11, 10, inline_st("d")) + jump(12, 11, "Init");
+  const auto r = load_plcopen_xml(project(sfc, kVarsAbcd), "xppu.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& c = chart0(r);
+  ASSERT_EQ(c.transitions.size(), 4u);
+  EXPECT_EQ(c.transitions[0].targets, (std::vector<std::string>{"Sort", "Recv"}));
+  EXPECT_EQ(c.transitions[1].sources, std::vector<std::string>{"Recv"});
+  EXPECT_EQ(c.transitions[1].targets, std::vector<std::string>{"Init"});
+  EXPECT_EQ(c.transitions[2].sources, std::vector<std::string>{"Sort"});  // not Recv
+  EXPECT_EQ(c.transitions[2].targets, std::vector<std::string>{"Reduce"});
+  const auto* w =
+      find_message(r, Severity::Warning, "a parallel branch ends in the jump to 'Init'");
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/jumpStep[@localId='7']");
+  EXPECT_TRUE(c.parallel_branch_jump.known());
+  // The "unsafe" structure is the vendor's idiom here, not an error of validate().
+  EXPECT_EQ(count_errors(model::validate(*r.project)), "");
+}
+
+// In any nesting: an alternative inside a parallel branch, one way out by a jump (wired into
+// a selection convergence that feeds the simultaneous convergence), the other to the join.
+TEST(PlcopenXml, JumpInsideAnAlternativeOfAParallelBranch) {
+  const std::string sfc =
+      step(1, "Init", -1, true) + transition(2, 1, inline_st("a")) + sim_div(3, 2) +
+      step(4, "P", 3) + step(5, "Q", 3) +
+      R"(<selectionDivergence localId="20"><connectionPointIn><connection refLocalId="5"/></connectionPointIn>
+         <connectionPointOut/><connectionPointOut/></selectionDivergence>)" +
+      transition(21, 20, inline_st("b")) + jump(22, 21, "Init") +
+      transition(23, 20, inline_st("c")) + step(24, "Q2", 23) +
+      convergence("selectionConvergence", 25, {22, 24}) +
+      convergence("simultaneousConvergence", 26, {4, 25}) + transition(27, 26, inline_st("d")) +
+      jump(28, 27, "Init");
+  const auto r = load_plcopen_xml(project(sfc, kVarsAbcd), "nested.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& t = chart0(r).transitions;
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[1].sources, std::vector<std::string>{"Q"});
+  EXPECT_EQ(t[1].targets, std::vector<std::string>{"Init"});
+  EXPECT_EQ(t[3].sources, (std::vector<std::string>{"P", "Q2"}));
+  // The jump leaves the parallel branch as in the test above: the same warning, at the jump.
+  const auto* w =
+      find_message(r, Severity::Warning, "a parallel branch ends in the jump to 'Init'");
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(w->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/jumpStep[@localId='22']");
+  EXPECT_TRUE(chart0(r).parallel_branch_jump.known());
+  EXPECT_EQ(count_errors(model::validate(*r.project)), "");
+}
+
+// A genuine defect: every branch into the convergence ends in a jump, so nothing precedes its
+// transition; the error says so in the chart's terms.
+TEST(PlcopenXml, ConvergenceWhoseEveryBranchJumpsIsAnError) {
+  const std::string sfc = step(1, "Init", -1, true) + transition(2, 1, inline_st("a")) +
+                          sim_div(3, 2) + step(4, "P", 3) + step(5, "Q", 3) +
+                          transition(6, 4, inline_st("b")) + jump(7, 6, "Init") +
+                          transition(8, 5, inline_st("c")) + jump(9, 8, "Init") +
+                          convergence("simultaneousConvergence", 10, {7, 9}) +
+                          transition(11, 10, inline_st("d")) + jump(12, 11, "Init");
+  const auto r = load_plcopen_xml(project(sfc, kVarsAbcd), "alljump.xml");
+  EXPECT_FALSE(r.ok());
+  const auto* d = find_message(r, Severity::Error,
+                               "transition (localId 11) has no source step: every branch into "
+                               "simultaneousConvergence (localId 10) ends in a jump");
+  ASSERT_NE(d, nullptr) << errors_of(r);
+  EXPECT_EQ(d->where.element_path,
+            "/project/types/pous/pou[@name='P']/body/SFC/transition[@localId='11']");
+}
+
+// TC6 v1.0 (Beremiz 2008): the condition holds its connection without a connectionPointIn.
+TEST(PlcopenXml, Tc6V10ConditionWithABareConnection) {
+  const std::string sfc =
+      step(1, "S0", -1, true) +
+      R"(<inVariable localId="7"><connectionPointOut/><expression>a AND NOT b</expression></inVariable>
+         <transition localId="2"><connectionPointIn><connection refLocalId="1"/></connectionPointIn>
+         <condition><connection refLocalId="7"/></condition></transition>)" +
+      step(3, "S1", 2) + transition(4, 3, inline_st("b")) + jump(5, 4, "S0");
+  const auto r = load_plcopen_xml(project(sfc, kVarA, "", kNs10), "tc6v10.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(model::to_st(chart0(r).transitions[0].guard), "a AND NOT b");
+}
+
+// AGRAFE's generated ST (issue 45): the program assigns the variables of a global list that
+// the project keeps in its own addData (`globalVars name="Global_GrafcetVars"`).
+TEST(PlcopenXml, BodiesAssignTheGlobalListOfTheProjectAddData) {
+  const std::string text = std::string(R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns=")") + kNs201 +
+                           R"(" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+<fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+<contentHeader name="g"/>
+<types><dataTypes/><pous>
+<pou name="G1" pouType="program"><interface><inputVars><variable name="go"><type><BOOL/></type></variable></inputVars></interface>
+<body><ST><xhtml:p><![CDATA[IF go THEN actStep_1 := TRUE; Step_1 := NOT Step_1; END_IF;]]></xhtml:p></ST></body></pou>
+</pous></types>
+<instances><configurations/></instances>
+<addData><data name="http://www.3s-software.com/plcopenxml/globalvars" handleUnknown="implementation">
+<globalVars name="Global_GrafcetVars">
+<variable name="actStep_1"><type><BOOL/></type><initialValue><simpleValue value="false"/></initialValue></variable>
+<variable name="Step_1"><type><BOOL/></type></variable>
+</globalVars></data></addData>
+</project>
+)";
+  const auto r = load_plcopen_xml(text, "agrafe_st.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* g1 = r.project->find_pou("G1");
+  ASSERT_NE(g1, nullptr);
+  EXPECT_FALSE(g1->body_unsupported) << g1->unsupported_reason;
+  EXPECT_EQ(g1->body.size(), 1u);
+  // The list stays a POU of its own, after the POUs, as before.
+  ASSERT_EQ(r.project->pous.size(), 2u);
+  EXPECT_EQ(r.project->pous[1].name, "Global_GrafcetVars");
+  EXPECT_EQ(r.project->pous[1].variables.size(), 2u);
 }
 
 TEST(PlcopenXml, PriorityAttribute) {

@@ -120,6 +120,41 @@ TEST(Iec61131CycleTimers, CodesysResetIdiomRestartsTheTimer) {
   EXPECT_EQ(wait, "11110000111100");
 }
 
+// TwinCAT's xPPU 14 (issue 45): one TON called with PT := T#0ms in one step and a positive PT
+// in the next. IEC 61131-3: Q := IN AND ET >= PT, ET counting from the rise of IN whatever PT
+// a call gives. So the PT := 0 call sets Q at once, and the timer, started there, reaches the
+// 30 ms of the next step's call counting from that start: Done in cycle 4, not 5.
+TEST(Iec61131CycleTimers, OneTonWithAZeroAndAPositivePt) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR Timer : TON; END_VAR");
+  b.step("Now", true).step("Wait").step("Done");
+  b.trans("Now", "Wait", "Timer.Q").trans("Wait", "Done", "Timer.Q").trans("Done", "Now", "a");
+  b.action_st("Zero", "Timer(IN := TRUE, PT := T#0ms);").assoc("Now", "Zero", "N");
+  b.action_st("Delay", "Timer(IN := TRUE, PT := T#30ms);").assoc("Wait", "Delay", "N");
+  auto ts = b.build(discrete(10));
+  ASSERT_TRUE(ts);
+  Runner r(*ts);
+  std::string now, done;
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(r.cycle({{"a", 0}}));
+    now += std::to_string(r["Now"]);
+    done += std::to_string(r["Done"]);
+  }
+  EXPECT_EQ(now, "00000");   // left in cycle 1: the PT := 0 call's Q is IN at once
+  EXPECT_EQ(done, "00011");  // cycle 4: 30 ms after the start in cycle 1 (not cycle 5)
+  // Abstract time builds too (it refused "zero and positive" before).
+  auto abstract = b.build();
+  EXPECT_TRUE(abstract);
+  // ET after a PT := 0 call would be 0, not the running timer's: refused by name.
+  IecBuilder c(
+      "VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT et : TIME; END_VAR VAR Timer : TON; END_VAR");
+  c.step("Now", true).step("Wait").trans("Now", "Wait", "Timer.Q").trans("Wait", "Now", "a");
+  c.action_st("Zero", "Timer(IN := TRUE, PT := T#0ms);").assoc("Now", "Zero", "N");
+  c.action_st("Delay", "Timer(IN := TRUE, PT := T#30ms); et := Timer.ET;")
+      .assoc("Wait", "Delay", "N");
+  EXPECT_NE(c.build_error(discrete(10)).find("ET after such a call is not modelled"),
+            std::string::npos);
+}
+
 // (a) A TON in an N action of a step that is left and re-entered: the instance is not called
 // while the step is inactive, and its last call had IN = TRUE, so it keeps running (a PLC keeps
 // its start time); called again, it shows the time since the first start. Q and ET show the

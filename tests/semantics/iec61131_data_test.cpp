@@ -2,6 +2,7 @@
 // statements, integer ranges, standard function blocks, step .T.
 
 #include "io/load.hpp"
+#include "model/validate.hpp"
 #include "semantics/iec_builder.hpp"
 
 namespace sfcv::test {
@@ -252,6 +253,27 @@ TEST(Iec61131Data, AWrittenInputIsSeenUntilTheNextCycleReadsIt) {
 
 // Abstract time only tells PT = 0 from PT > 0: one timer may be called with several positive
 // PTs (CODESYS's PPU reuses `Timer`). Discrete time counts cycles and needs one PT.
+// TwinCAT condition networks (xPPU 22, 23) give `NOT GVL.IsSFCResetting`, whose chain reaches
+// the model as the one name "GVL.IsSFCResetting": it is the global list's variable, as the
+// member chain GVL.IsSFCResetting is (before, "unknown name" refused the file).
+TEST(Iec61131Data, AChainKeptAsOneNameIsItsMemberChain) {
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "TRUE");
+  b.pou().charts.back().transitions[1].guard = model::make_name("GVL.Resetting");
+  b.body("GVL.Resetting := a;");
+  model::Pou gvl;
+  gvl.name = "GVL";
+  model::Variable v;
+  v.name = "Resetting";
+  v.type = model::Type::boolean();
+  v.direction = model::VarDirection::Global;
+  gvl.variables.push_back(v);
+  b.project.pous.push_back(std::move(gvl));
+  EXPECT_FALSE(model::has_errors(model::validate(b.project)));
+  auto ts = b.build();
+  ASSERT_TRUE(ts);
+}
+
 TEST(Iec61131Data, SeveralPositivePtValuesInAbstractTimeOnly) {
   auto make = [] {
     IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR t : TON; END_VAR");

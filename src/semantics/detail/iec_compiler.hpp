@@ -78,6 +78,7 @@ struct Compiler {
   int loop_depth = 0;               // loops around the statement being compiled
   std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
   std::set<std::uint32_t> called_timers;                      // FB indices of called timers
+  std::map<std::uint32_t, model::SourceLocation> zero_pt;     // TON index -> a PT := 0 call
   // Step .T: constants compared with, and nodes to patch once regions are known.
   std::map<std::uint32_t, std::set<std::int64_t>> t_keys;  // step -> keys (2c or 2c+1)
   std::vector<std::uint32_t> t_nodes;

@@ -124,6 +124,9 @@ struct Stmt {
   // the loop ends when it holds: REPEAT ... UNTIL): body, then `step` (FOR's increment).
   Block init, body, step;
   bool test_after = false;
+  /// FbCall of a TON with `PT := T#0ms` while other calls give a positive PT (TwinCAT xPPU):
+  /// this call's Q is IN, the timer itself runs on as the other calls see it.
+  bool pt_zero = false;
 };
 
 /// A user FUNCTION written in ST (IEC 61131-3 2.5.1). Its variables are fields that hold their
