@@ -3,6 +3,8 @@
 // runs it. One file per subcommand: cmd_<name>.cpp.
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -14,7 +16,8 @@ using CommandRunner = std::function<int()>;
 
 /// Options of every subcommand alike, given before or after the subcommand's name.
 struct GlobalOptions {
-  bool quiet = false;  ///< --quiet: no progress, notes or warnings on standard error
+  bool quiet = false;             ///< --quiet: no progress, notes or warnings on standard error
+  std::vector<std::string> argv;  ///< the command line as given, for the reports' provenance
 };
 /// The options of this run (set while parsing argv).
 const GlobalOptions& global_options();
