@@ -228,8 +228,14 @@ report::Provenance check_provenance(const CheckOptions& o, const std::string& se
   s.emplace_back("timeout", o.limits.timeout.empty() ? "none" : o.limits.timeout);
   s.emplace_back("max_states", o.limits.max_states.empty() ? "none" : o.limits.max_states);
   s.emplace_back("memory", o.limits.memory.empty() ? "none" : o.limits.memory);
-  for (const auto& f : o.fair) s.emplace_back("fair", f);
-  for (const auto& a : o.assume) s.emplace_back("assume", a);
+  // One key each (JSON objects): several constraints joined by "; ".
+  auto joined = [](const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& e : v) out += (out.empty() ? "" : "; ") + e;
+    return out;
+  };
+  if (!o.fair.empty()) s.emplace_back("fair", joined(o.fair));
+  if (!o.assume.empty()) s.emplace_back("assume", joined(o.assume));
   return p;
 }
 
