@@ -185,6 +185,8 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
                     : r.verdict == logic::Verdict::NotApplicable ? "none"
                                                                  : "warning";
     if (r.verdict == logic::Verdict::NotApplicable) base["kind"] = "notApplicable";
+    if (r.verdict == logic::Verdict::Violated)  // the engine whose answer this is
+      base["properties"]["decidedBy"] = r.decided_by.empty() ? report.engine : r.decided_by;
     // Where the property was written (a spec file), else the model.
     const bool from_spec = !from_command_line(r);
     // Where the question is located when nothing better is known (an unknown verdict, a
