@@ -58,7 +58,7 @@ TEST(Evidence, TextReportEndsWithItsProvenance) {
   const auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V2 & V4)' --engine bdd");
   ASSERT_EQ(r.exit_code, 1) << r.err;
   EXPECT_TRUE(std::regex_search(
-      r.out, std::regex("\n# sfcv [0-9.]+ \\(commit [^,]+, buddy [^,]+, cadical [^)]+\\)\\), "
+      r.out, std::regex("\n# sfcv [0-9.]+ \\(commit [^,]+, buddy [^,]+, cadical [^\n]+\\), "
                         "[0-9-]+T[0-9:]+Z\n")))
       << r.out;
   EXPECT_NE(r.out.find("\n# command: "), std::string::npos);
@@ -122,6 +122,27 @@ TEST(Evidence, JunitSarifAndHtmlCarryTheProvenance) {
   const auto html = slurp(dir / "r.html");
   EXPECT_NE(html.find(plant_sha256()), std::string::npos);
   EXPECT_NE(html.find("class=\"provenance\""), std::string::npos);
+}
+
+// `sfcv report` renders the saved result's provenance, and refuses a result of another major
+// schema version rather than half reading it.
+TEST(Evidence, ReportKeepsTheSavedProvenanceAndChecksTheSchemaVersion) {
+  TempDir dir;
+  auto r = run_sfcv("check " + kPlant + " --quiet --ctl 'AG !(V1 & V3)' --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ofstream(dir / "r.json") << r.out;
+  r = run_sfcv("report " + (dir / "r.json") + " --html " + (dir / "r.html"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto html = slurp(dir / "r.html");
+  EXPECT_NE(html.find("class=\"provenance\""), std::string::npos);
+  EXPECT_NE(html.find("--ctl 'AG !(V1 &amp; V3)' --json"), std::string::npos)
+      << html.substr(0, 3000);
+  std::ofstream(dir / "v2.json") << R"({"schema_version": "2.0", "model": ")" << kPlant
+                                 << R"(", "properties": []})";
+  r = run_sfcv("report " + (dir / "v2.json") + " --html " + (dir / "v2.html"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("schema_version \"2.0\" is not one this sfcv reads"), std::string::npos)
+      << r.err;
 }
 
 TEST(Evidence, ErrorsUnderJsonAreJsonObjectsWithTheSameExitCode) {
