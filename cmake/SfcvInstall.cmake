@@ -3,7 +3,7 @@
 # completions and the documentation that --help points to.
 include(GNUInstallDirs)
 install(TARGETS sfcv RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(FILES share/sfcv/properties.sfq share/sfcv/patterns.spec
+install(FILES share/sfcv/properties.sfq share/sfcv/patterns.spec share/sfcv/check-result.schema.json
         DESTINATION ${CMAKE_INSTALL_DATADIR}/sfcv)
 install(FILES docs/man/sfcv.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES share/completions/sfcv.bash

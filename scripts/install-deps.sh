@@ -10,6 +10,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz spin berkeley-abc gnuplot-nox
   python3-jsonschema chromium  # tests: SARIF schema validation, the HTML report in a browser
+  libxml2-utils  # tests: xmllint validates the JUnit reports (ctest junit_schema)
   clang libclang-rt-14-dev  # the libFuzzer harnesses of fuzz/ (.ci/run)
   clang-format  # scripts/check-format.sh (ctest clang_format, .ci/run)
   valgrind  # ctest valgrind_grafcet_bdd

@@ -7,5 +7,8 @@
 #include "cli/exit_code.hpp"
 
 int main(int argc, char** argv) {
-  return sfcv::cli::run_with_exit_codes([&] { return sfcv::cli::run(argc, argv); }, std::cerr);
+  // Under --json an error is also a JSON object on standard output.
+  std::ostream* json_errors = sfcv::cli::wants_json(argc, argv) ? &std::cout : nullptr;
+  return sfcv::cli::run_with_exit_codes([&] { return sfcv::cli::run(argc, argv); }, std::cerr,
+                                        json_errors);
 }

@@ -1,14 +1,13 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "cli/build_info.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/exit_footers.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/output_file.hpp"
 #include "cli/usage_hint.hpp"
-
-// SFCV_VERSION comes from the CMake project version.
 
 namespace sfcv::cli {
 
@@ -25,7 +24,11 @@ int run(int argc, char** argv) {
       "sfcv: a verifier for Sequential Function Charts (IEC 61131-3) and Grafcet "
       "(IEC 60848)",
       "sfcv"};
-  app.set_version_flag("--version", std::string("sfcv ") + SFCV_VERSION);
+  g_options.argv.assign(argv, argv + argc);
+  // The first line stays "sfcv VERSION"; then the commit and the BuDDy and CaDiCaL versions.
+  auto version = version_text();
+  version.pop_back();  // CLI11 adds the line break
+  app.set_version_flag("--version", version);
   app.require_subcommand(1);
   app.add_flag("-q,--quiet", g_options.quiet,
                "No progress, notes or warnings on standard error (errors still)");
@@ -62,6 +65,7 @@ int run(int argc, char** argv) {
       return kBadInput;
     }
     app.exit(e);
+    if (wants_json(argc, argv)) write_json_error(std::cout, "usage", e.what(), kBadInput);
     return kBadInput;  // CLI11 uses its own codes; ours are a contract
   }
   if (!selected) return kBadInput;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -14,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/build_info.hpp"
+#include "cli/check_traces.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/iec_options.hpp"
@@ -65,6 +68,8 @@ struct CheckOptions {
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
+  std::string trace_dir;
+  std::string sarif_root;  ///< empty: the enclosing git work tree, else the working directory
   std::string junit;
   std::string sarif;
   std::string html;
@@ -184,26 +189,56 @@ void mark_interrupted(logic::CheckReport& result) {
   }
 }
 
-/// The first counterexample (else witness) in the format of --trace; empty when none.
-std::string trace_file_text(const logic::CheckReport& result, const semantics::TransitionSystem& ts,
-                            report::TraceFormat format, std::int64_t cycle_ms) {
-  const logic::Trace* chosen = nullptr;
-  for (const auto& r : result.results)
-    if (r.trace && (!chosen || r.verdict == logic::Verdict::Violated)) {
-      chosen = &*r.trace;
-      if (r.verdict == logic::Verdict::Violated) break;
-    }
-  if (!chosen) return {};
-  switch (format) {
-    case report::TraceFormat::Json:
-      return report::trace_json(*chosen, ts);
-    case report::TraceFormat::Vcd:
-      return report::trace_vcd(*chosen, ts, {cycle_ms});
-    case report::TraceFormat::Csv:
-      return report::trace_csv(*chosen, ts);
-    default:
-      return report::trace_table(*chosen, ts);
+/// SARIF URIs are relative to --sarif-root, by default the git work tree around the working
+/// directory (code scanning resolves them against the repository), else that directory.
+std::string sarif_root(const CheckOptions& o) {
+  if (!o.sarif_root.empty()) return o.sarif_root;
+  std::error_code ec;
+  const auto cwd = std::filesystem::current_path(ec);
+  if (ec) return ".";
+  for (auto dir = cwd; !dir.empty(); dir = dir.parent_path()) {
+    if (std::filesystem::exists(dir / ".git", ec)) return dir.string();
+    if (dir == dir.parent_path()) break;
   }
+  return cwd.string();
+}
+
+/// Who ran what, when, on which files, with which engine and settings (report/provenance.hpp).
+report::Provenance check_provenance(const CheckOptions& o, const std::string& semantics) {
+  auto p = run_provenance();
+  p.inputs.push_back(report::digest_file(o.model));
+  if (!o.spec.empty()) p.inputs.push_back(report::digest_file(o.spec));
+  p.engine = o.engine;
+  auto& s = p.settings;
+  s.emplace_back("semantics", semantics);
+  if (semantics == "iec61131") {
+    std::string pous;
+    for (const auto& pou : o.system.pous) pous += (pous.empty() ? "" : ",") + pou;
+    s.emplace_back("pou", pous.empty() ? "every PROGRAM" : pous);
+    s.emplace_back("priority", o.system.priority);
+    s.emplace_back("time", o.system.time);
+    if (o.system.time == "discrete") s.emplace_back("cycle", o.system.cycle);
+    s.emplace_back("unwritten", o.system.unwritten);
+  } else {
+    s.emplace_back("input_changes", o.system.multi_input_change ? "multiple" : "single");
+  }
+  s.emplace_back("checks", o.checks.empty() ? "default" : o.checks);
+  s.emplace_back("deadlock_paths", o.deadlock_paths);
+  s.emplace_back("reorder", o.reorder);
+  s.emplace_back("depth", std::to_string(o.depth));
+  s.emplace_back("threads", std::to_string(o.threads));
+  s.emplace_back("timeout", o.limits.timeout.empty() ? "none" : o.limits.timeout);
+  s.emplace_back("max_states", o.limits.max_states.empty() ? "none" : o.limits.max_states);
+  s.emplace_back("memory", o.limits.memory.empty() ? "none" : o.limits.memory);
+  // One key each (JSON objects): several constraints joined by "; ".
+  auto joined = [](const std::vector<std::string>& v) {
+    std::string out;
+    for (const auto& e : v) out += (out.empty() ? "" : "; ") + e;
+    return out;
+  };
+  if (!o.fair.empty()) s.emplace_back("fair", joined(o.fair));
+  if (!o.assume.empty()) s.emplace_back("assume", joined(o.assume));
+  return p;
 }
 
 /// The process went past --memory: what is undecided is unknown for that reason.
@@ -249,6 +284,9 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
       o.checks.empty() ? (has_properties ? "none" : "all") : o.checks, &why);
   if (!checks) throw InputError(why);
   const auto trace_format = parse_trace_format(o.trace);
+  const TraceRequest traces{trace_format, o.trace_file, o.trace_dir, o.json,
+                            parse_cycle_ms(o.system.cycle)};
+  check_trace_request(traces);
   static const std::vector<std::string> engines = {"auto", "explicit", "bdd",  "bmc",
                                                    "kind", "ic3",      "nusmv"};
   if (std::find(engines.begin(), engines.end(), o.engine) == engines.end())
@@ -331,6 +369,8 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
   render.verbose = global_options().verbose;
+  render.provenance = check_provenance(o, render.semantics);
+  render.sarif_root = sarif_root(o);
   // Every requested file is written, even when another could not be. The files come before
   // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed
   // whatever happened to them: a report that cannot be written, or a renderer's bug, must not
@@ -347,7 +387,10 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
       render_error = std::current_exception();
     }
   };
-  write(outputs[0], [&] { return trace_file_text(result, *ts, trace_format, render.cycle_ms); });
+  // Every trace, one per property (cli/check_traces.hpp); the report names where each went.
+  auto written = write_traces(result, *ts, traces);
+  render.trace_files = written.where;
+  write_errors.insert(write_errors.end(), written.errors.begin(), written.errors.end());
   write(outputs[1], [&] {
     std::string text;
     for (const auto& r : result.results)
@@ -363,6 +406,12 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   });
   if (o.json) {
     std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
+  } else if (traces_on_standard_output(traces)) {
+    // Standard output holds the trace alone (a VCD file, a CSV for simulate): the report
+    // goes to standard error.
+    progress.clear();
+    std::cerr << report::check_text(result, *ts, render);
+    std::cout << written.standard_output;
   } else {
     std::cout << report::check_text(result, *ts, render);
   }
@@ -445,11 +494,21 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       ->expected(0, 1)
       ->default_str("dynamic")
       ->check(CLI::IsMember({"none", "once", "dynamic"}));
-  sub->add_flag("--json", opts->json, "JSON output (schema: docs/formats.md)");
+  sub->add_flag("--json", opts->json,
+                "JSON output (schema: share/sfcv/check-result.schema.json, docs/formats.md)");
   sub->add_option("--trace", opts->trace,
-                  "Trace format: table (default), json, vcd, csv (sfcv simulate input), none");
+                  "Trace format: table (default), json, vcd, csv (sfcv simulate input), none; "
+                  "vcd and csv without --trace-file or --trace-dir: the trace alone on standard "
+                  "output, the report on standard error");
   sub->add_option("--trace-file", opts->trace_file,
-                  "Write the first counterexample (else witness) there");
+                  "Write the counterexample (else witness) there; several: one file per "
+                  "property beside it, named by the property id (t.vcd -> t.check-reachable.vcd)");
+  sub->add_option("--trace-dir", opts->trace_dir,
+                  "Write every trace into this directory, one file per property named by its id "
+                  "(check-reachable.vcd, property-ctl-3a7bd3e2360a.vcd)");
+  sub->add_option("--sarif-root", opts->sarif_root,
+                  "SARIF URIs relative to this directory (default: the git work tree around the "
+                  "working directory, else the working directory)");
   sub->add_option(
       "--junit", opts->junit,
       "Also write a JUnit XML report there, for CI (violated = failure, unknown = error)");

@@ -32,6 +32,12 @@ int run_report(const ReportOptions& o) {
       read_json_file(o.result, "the result", "not a JSON result of 'sfcv check --json'");
   if (!result.contains("properties") || !result["properties"].is_array())
     throw InputError(o.result + ": not a JSON result of 'sfcv check --json' (no \"properties\")");
+  // A result of a later, incompatible JSON version (share/sfcv/check-result.schema.json) is
+  // refused rather than half read; one without schema_version predates it.
+  if (const auto v = result.find("schema_version");
+      v != result.end() && (!v->is_string() || !v->get<std::string>().starts_with("1.")))
+    throw InputError(o.result + ": schema_version " + v->dump() +
+                     " is not one this sfcv reads (1.x)");
   const std::string model = !o.model.empty() ? o.model : result.value("model", std::string());
   if (model.empty()) throw InputError(o.result + ": names no model: give --model");
   // Before the model is loaded and built (the long part).

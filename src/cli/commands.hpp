@@ -3,6 +3,8 @@
 // runs it. One file per subcommand: cmd_<name>.cpp.
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -18,6 +20,7 @@ struct GlobalOptions {
   /// --verbose: findings and diagnostics with absolute paths and XML element paths, every note
   /// in full (else relative paths, line:col, notes in short).
   bool verbose = false;
+  std::vector<std::string> argv;  ///< the command line as given, for the reports' provenance
 };
 /// The options of this run (set while parsing argv).
 const GlobalOptions& global_options();

@@ -8,6 +8,7 @@
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "report/graphviz_svg.hpp"
 #include "report/markup.hpp"
+#include "report/provenance.hpp"
 #include "report/report_assets.hpp"
 #include "report/situation_graph_dot.hpp"
 #include "report/text_encoding.hpp"
@@ -296,6 +297,19 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
       counts + (report.situation_graph_note.empty() ? "" : "; ") + report.situation_graph_note;
 }
 
+namespace {
+/// Who ran what, when, on which files (the result's "provenance"), folded under the summary;
+/// nothing for a result saved before sfcv recorded it.
+std::string provenance_section(const json& result) {
+  const auto it = result.find("provenance");
+  if (it == result.end() || !it->is_object()) return {};
+  return "<details class=\"provenance\"><summary>Provenance: sfcv " +
+         html_escape(it->value("version", std::string())) + ", " +
+         html_escape(it->value("date", std::string())) + "</summary>\n<pre>" +
+         html_escape(provenance_text(provenance_from_json(*it))) + "</pre></details>\n";
+}
+}  // namespace
+
 std::string check_html(const HtmlReport& report) {
   const auto& r = report.result;
   const std::string model = str(r, "model");
@@ -322,7 +336,7 @@ std::string check_html(const HtmlReport& report) {
 
   std::string out = page_head("sfcv report: " + model);
   out += "<h1>sfcv check: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
-  out += "<h2>Properties and standard checks</h2>\n" + summary(r);
+  out += "<h2>Properties and standard checks</h2>\n" + summary(r) + provenance_section(r);
   out += "<div class=\"layout\">\n" + chart_section(report);
   out += R"html(<section id="player" hidden>
 <h2>Trace player</h2>

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "report/numbers.hpp"
+#include "report/provenance.hpp"
 #include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 
 std::string seconds(double s) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6f", s);
+  std::snprintf(buf, sizeof buf, "%.3f", s);  // Jenkins' junit-10.xsd: at most 3 decimals
   return buf;
 }
 
@@ -46,9 +47,13 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     errors += r.verdict == logic::Verdict::Unknown || r.verdict == logic::Verdict::NotChecked;
     skipped += r.verdict == logic::Verdict::NotApplicable;
   }
-  const std::string suite = options.model.empty()
-                                ? std::string("sfcv")
-                                : std::filesystem::path(options.model).filename().string();
+  // Several runs on one model (other properties, another engine) must not share a suite name:
+  // CI servers merge test cases by suite and name. The run's digest tells them apart.
+  std::string suite = options.model.empty()
+                          ? std::string("sfcv")
+                          : std::filesystem::path(options.model).filename().string();
+  if (options.provenance && options.provenance->command_line.size() > 1)
+    suite += " [" + options.provenance->engine + " " + run_digest(*options.provenance) + "]";
   pugi::xml_document doc;
   auto decl = doc.append_child(pugi::node_declaration);
   decl.append_attribute("version") = "1.0";
@@ -58,7 +63,6 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   suites.append_attribute("tests") = static_cast<unsigned long long>(report.results.size());
   suites.append_attribute("failures") = static_cast<unsigned long long>(failures);
   suites.append_attribute("errors") = static_cast<unsigned long long>(errors);
-  suites.append_attribute("skipped") = static_cast<unsigned long long>(skipped);
   suites.append_attribute("time") = seconds(report.seconds).c_str();
   auto ts_node = suites.append_child("testsuite");
   ts_node.append_attribute("name") = xml_text(suite).c_str();
@@ -67,10 +71,11 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   ts_node.append_attribute("errors") = static_cast<unsigned long long>(errors);
   ts_node.append_attribute("skipped") = static_cast<unsigned long long>(skipped);
   ts_node.append_attribute("time") = seconds(report.seconds).c_str();
+  if (options.provenance) ts_node.append_attribute("timestamp") = options.provenance->date.c_str();
   auto props = ts_node.append_child("properties");
-  auto property = [&props](const char* name, const std::string& value) {
+  auto property = [&props](const std::string& name, const std::string& value) {
     auto p = props.append_child("property");
-    p.append_attribute("name") = name;
+    p.append_attribute("name") = xml_text(name).c_str();
     p.append_attribute("value") = xml_text(value).c_str();
   };
   property("model", options.model);
@@ -79,6 +84,17 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   if (report.states_known) property("states", report.states.str());  // SAT engines count none
   property("complete", report.complete ? "true" : "false");
   if (!report.complete) property("limit", report.limit);
+  if (const auto& p = options.provenance) {
+    property("sfcv.version", p->version);
+    property("sfcv.commit", p->commit);
+    for (const auto& [name, version] : p->libraries) property("sfcv.library." + name, version);
+    property("sfcv.command_line", shell_words(p->command_line));
+    property("sfcv.date", p->date);
+    for (const auto& in : p->inputs)
+      property("sfcv.input." + in.path, in.sha256.empty() ? "unreadable" : "sha256:" + in.sha256);
+    property("sfcv.engine", p->engine);
+    for (const auto& [name, value] : p->settings) property("sfcv.setting." + name, value);
+  }
 
   for (const auto& r : report.results) {
     auto tc = ts_node.append_child("testcase");
@@ -86,23 +102,21 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
         xml_text(suite + (r.check.empty() ? ".properties" : ".standard_checks")).c_str();
     tc.append_attribute("name") = xml_text(r.name).c_str();
     tc.append_attribute("time") = seconds(r.seconds).c_str();
-    // A property from the command line (where.file "--ctl") or a standard check belongs to
-    // the model file; a spec file property to its line there.
-    const bool from_spec =
-        !r.where.file.empty() && r.where.file != "--ctl" && r.where.file != "--pattern";
-    const std::string file = from_spec ? r.where.file : options.model;
-    if (!file.empty()) {
-      tc.append_attribute("file") = xml_text(file).c_str();
-      if (from_spec && r.where.line > 0) tc.append_attribute("line") = r.where.line;
-    }
-    // A vacuous pass is still a pass; CI servers show system-out with the test case.
-    // A pattern's English sentence goes there too, first.
-    const std::string out =
-        r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
-    if (!out.empty())
-      tc.append_child("system-out")
-          .append_child(pugi::node_pcdata)
-          .set_value(xml_text(out).c_str());
+    // Jenkins' junit-10.xsd has no file or line on a test case: where the property was
+    // written (a spec file's line; the model for --ctl and the standard checks) goes to
+    // system-out, with the id, the deciding engine, a pattern's English sentence and whether
+    // a pass is vacuous (still a pass). CI servers show system-out with the test case.
+    std::string out = "id: " + property_id(r) + "\n";
+    if (!from_command_line(r) && r.check.empty())
+      out += "where: " + r.where.str() + "\n";
+    else if (!options.model.empty())
+      out += "where: " + options.model + "\n";
+    const bool definite =
+        r.verdict == logic::Verdict::Holds || r.verdict == logic::Verdict::Violated;
+    if (definite)
+      out += "decided by: " + (r.decided_by.empty() ? report.engine : r.decided_by) + "\n";
+    if (!r.description.empty()) out += r.description + "\n";
+    if (!r.vacuity.empty()) out += r.vacuity + "\n";
     const char* element = nullptr;
     switch (r.verdict) {
       case logic::Verdict::Holds:
@@ -118,15 +132,18 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
         element = "skipped";
         break;
     }
-    if (!element) continue;
-    auto e = tc.append_child(element);
-    const std::string verdict(logic::to_string(r.verdict));
-    e.append_attribute("message") =
-        xml_text(r.message.empty() ? verdict : verdict + ": " + r.message).c_str();
-    if (r.verdict != logic::Verdict::NotApplicable) {
-      e.append_attribute("type") = verdict.c_str();
-      e.append_child(pugi::node_pcdata).set_value(xml_text(details(r, ts)).c_str());
+    // The verdict's element first, then system-out, as Maven Surefire writes them.
+    if (element) {
+      auto e = tc.append_child(element);
+      const std::string verdict(logic::to_string(r.verdict));
+      e.append_attribute("message") =
+          xml_text(r.message.empty() ? verdict : verdict + ": " + r.message).c_str();
+      if (r.verdict != logic::Verdict::NotApplicable) {
+        e.append_attribute("type") = verdict.c_str();
+        e.append_child(pugi::node_pcdata).set_value(xml_text(details(r, ts)).c_str());
+      }
     }
+    tc.append_child("system-out").append_child(pugi::node_pcdata).set_value(xml_text(out).c_str());
   }
   std::ostringstream out;
   doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);

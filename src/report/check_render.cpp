@@ -1,10 +1,12 @@
 #include "report/check_render.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 #include "report/concise_text.hpp"
 #include "report/numbers.hpp"
+#include "report/sha256.hpp"
 #include "report/text_encoding.hpp"
 #include "report/trace_render.hpp"
 
@@ -58,6 +60,31 @@ std::string stuck_diagnosis(const logic::CheckReport& report,
       "every cycle in the program (or check its POU alone with --pou), and check that the "
       "conditions of the initial steps' transitions read inputs.\n";
   return out;
+bool from_command_line(const logic::PropertyResult& r) {
+  const auto& f = r.where.file;
+  return f.empty() || f == "--ctl" || f == "--ltl" || f == "--pattern";
+}
+
+std::string property_id(const logic::PropertyResult& r) {
+  if (!r.check.empty()) return "check/" + r.check;
+  if (!from_command_line(r)) {
+    std::string id;
+    for (char c : r.name)
+      id +=
+          std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ? c : '_';
+    return "property/" + id;
+  }
+  std::string text;
+  for (char c : r.name)
+    if (!std::isspace(static_cast<unsigned char>(c))) text += c;
+  const std::string kind = r.where.file.size() > 2 ? r.where.file.substr(2) : "ctl";
+  return "property/" + kind + "-" + sha256_hex(text).substr(0, 12);
+}
+
+std::string property_file_stem(const logic::PropertyResult& r) {
+  auto id = property_id(r);
+  std::replace(id.begin(), id.end(), '/', '-');
+  return id;
 }
 
 std::string findings_cut_note(const logic::PropertyResult& r) {
@@ -111,7 +138,14 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     if (r.trace && options.trace != TraceFormat::None) {
       const bool cex = r.trace->kind == logic::TraceKind::Counterexample;
       out += std::string("  ") + (cex ? "counterexample" : "witness") + " (" +
-             counted(r.trace->steps.size(), "situation") + "):\n";
+             counted(r.trace->steps.size(), "situation") + ")";
+      const bool inline_trace =
+          options.trace == TraceFormat::Table || options.trace == TraceFormat::Json;
+      const auto file = options.trace_files.find(property_id(r));
+      if (file != options.trace_files.end())
+        out += ": " + file->second + "\n";
+      else
+        out += inline_trace ? ":\n" : ": not written\n";
       switch (options.trace) {
         case TraceFormat::Table:
           out += trace_table(*r.trace, ts);
@@ -120,11 +154,8 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
           out += trace_json(*r.trace, ts);
           break;
         case TraceFormat::Vcd:
-          out += trace_vcd(*r.trace, ts, {options.cycle_ms});
-          break;
         case TraceFormat::Csv:
-          out += trace_csv(*r.trace, ts);
-          break;
+          break;  // files of their own (or standard output alone), never inside the text
         case TraceFormat::None:
           break;
       }
@@ -132,6 +163,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
   }
   out += stuck_diagnosis(report, ts);
   if (!options.verbose) out = concise_text(out, working_directory());
+  if (options.provenance) out += provenance_text(*options.provenance);
   return valid_utf8(out);  // names are bytes; the report is UTF-8
 }
 
@@ -144,6 +176,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
                           const RenderOptions& options) {
   using nlohmann::json;
   json j;
+  j["schema_version"] = kCheckJsonSchemaVersion;
   j["model"] = options.model;
   j["semantics"] = options.semantics;
   j["engine"] = report.engine;
@@ -169,6 +202,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
   j["properties"] = json::array();
   for (const auto& r : report.results) {
     json p;
+    p["id"] = property_id(r);
     p["name"] = r.name;
     p["kind"] = r.check.empty() ? "property" : "standard-check";
     if (!r.check.empty()) p["check"] = r.check;
@@ -189,6 +223,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     p["trace"] = r.trace ? trace_to_json(*r.trace, ts) : json(nullptr);
     j["properties"].push_back(std::move(p));
   }
+  j["provenance"] = options.provenance ? provenance_json(*options.provenance) : json(nullptr);
   make_valid_utf8(j);  // names are bytes; a JSON document is UTF-8 (dump() throws otherwise)
   return j;
 }

@@ -3,10 +3,13 @@
 // traces below) or JSON (schema in docs/formats.md, "sfcv check --json").
 
 #include <cstdint>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "logic/check_result.hpp"
+#include "report/provenance.hpp"
 #include "semantics/transition_system.hpp"
 
 namespace sfcv::report {
@@ -21,7 +24,29 @@ struct RenderOptions {
   /// Text: findings keep their XML element paths and absolute file paths (else relative paths
   /// and line:col only, report/concise_text.hpp).
   bool verbose = false;
+  /// Who ran what, when, on which files (report/provenance.hpp); every report renders it.
+  std::optional<Provenance> provenance;
+  /// Where each trace went (--trace-dir, --trace-file: the file; "standard output"), by
+  /// property_id: the text names it; a VCD or CSV is never printed inside the text.
+  std::map<std::string, std::string> trace_files;
+  /// SARIF: artifact URIs relative to this directory (uriBaseId SRCROOT); empty: as given.
+  std::string sarif_root;
 };
+
+/// The version of the JSON of `sfcv check --json` (share/sfcv/check-result.schema.json):
+/// the major number changes when a key is renamed or removed, the minor when one is added.
+inline constexpr const char* kCheckJsonSchemaVersion = "1.0";
+
+/// A result's id, the same in every report and every run of the same question: "check/<name>"
+/// for a standard check, "property/<name>" for a property named in a spec file, and for one
+/// given on the command line (whose name is its text) its kind and 12 hex digits of the text's
+/// SHA-256, spaces left out: "property/ctl-3a7bd3e2360a". SARIF rule ids, trace file names.
+std::string property_id(const logic::PropertyResult& r);
+/// property_id as a file name stem: "check-reachable", "property-ctl-3a7bd3e2360a".
+std::string property_file_stem(const logic::PropertyResult& r);
+/// Whether the property was given on the command line (--ctl, --ltl, --pattern): it has no
+/// source location of its own.
+bool from_command_line(const logic::PropertyResult& r);
 
 /// "20 of 137 findings shown; --all for every one" when the engine kept fewer findings than it
 /// made, else empty.

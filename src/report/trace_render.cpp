@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/check_render.hpp"
+#include "report/provenance.hpp"
 #include "report/text_encoding.hpp"
 
 namespace sfcv::report {
@@ -243,10 +244,29 @@ std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSyst
       signals.push_back(
           {scope, obs[o].name, obs[o].type.kind == model::TypeKind::Bool, observed(o)});
   }
+  // A lasso's loop point as a signal: 1 from the step the run returns to, so a waveform viewer
+  // shows which part repeats forever.
+  if (trace.loop_start) {
+    const std::size_t loop = *trace.loop_start;
+    const auto* first = trace.steps.empty() ? nullptr : &trace.steps.front();
+    signals.push_back({"trace", "in_loop", true, [loop, first](const logic::TraceStep& st) {
+                         return static_cast<std::int64_t>(static_cast<std::size_t>(&st - first) >=
+                                                          loop);
+                       }});
+  }
   std::string out = "$comment sfcv trace: ";
   out += grafcet ? "one time unit per stable situation (Grafcet has no scan cycle)"
                  : "one scan cycle of " + std::to_string(options.step_ms) + " ms per step";
-  out += " $end\n$version sfcv $end\n$timescale 1 ms $end\n";
+  out += " $end\n";
+  const std::int64_t unit = grafcet ? 1 : std::max<std::int64_t>(1, options.step_ms);
+  if (trace.loop_start)
+    out += "$comment loop: the last step is step " + std::to_string(*trace.loop_start) +
+           " again (time " + std::to_string(static_cast<std::int64_t>(*trace.loop_start) * unit) +
+           "): steps " + std::to_string(*trace.loop_start) + ".." +
+           std::to_string(trace.steps.size() - 1) + " repeat forever (signal trace.in_loop) $end\n";
+  if (trace.ends_in_deadlock)
+    out += "$comment the run ends: the last situation has no successor $end\n";
+  out += "$version sfcv " + build_version() + " $end\n$timescale 1 ms $end\n";
   std::string scope;
   for (std::size_t i = 0; i < signals.size(); ++i) {
     if (signals[i].scope != scope) {
@@ -259,7 +279,6 @@ std::string trace_vcd(const logic::Trace& trace, const semantics::TransitionSyst
   }
   if (!scope.empty()) out += "$upscope $end\n";
   out += "$enddefinitions $end\n";
-  const std::int64_t unit = grafcet ? 1 : std::max<std::int64_t>(1, options.step_ms);
   for (std::size_t i = 0; i < trace.steps.size(); ++i) {
     out += "#" + std::to_string(static_cast<std::int64_t>(i) * unit) + "\n";
     if (i == 0) out += "$dumpvars\n";

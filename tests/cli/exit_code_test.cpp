@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
@@ -66,6 +67,46 @@ TEST(ExitCodes, EverythingElseIsAnInternalErrorWithABugReportRequest) {
     EXPECT_NE(o.err.find("This is a bug in sfcv"), std::string::npos) << o.err;
     EXPECT_EQ(o.err.find("sfcv: error:"), std::string::npos) << o.err;  // not "bad input"
   }
+}
+
+// Issue 48: under --json an error is also one JSON object on standard output, its kind named,
+// the exit code unchanged; without --json nothing is written there.
+TEST(ExitCodes, UnderJsonAnErrorIsAlsoAJsonObject) {
+  struct Case {
+    std::function<int()> command;
+    const char* kind;
+    int code;
+  };
+  const std::vector<Case> cases = {
+      {[]() -> int {
+         throw InputError("no such step", {"a.st", 3, 7, ""});
+       },
+       "input", kBadInput},
+      {[]() -> int { throw UnsupportedConstruct("IL body"); }, "unsupported", kBadInput},
+      {[]() -> int { throw UsageError("bad --engine 'x'"); }, "usage", kBadInput},
+      {[]() -> int { throw LimitReached(Limit::States, "state limit 3 reached"); }, "limit",
+       kUnknown},
+      {[]() -> int { throw std::logic_error("vector::at"); }, "internal", kInternalError}};
+  for (const auto& c : cases) {
+    std::ostringstream err, out;
+    EXPECT_EQ(run_with_exit_codes(c.command, err, &out), c.code);
+    const auto j = nlohmann::json::parse(out.str());  // one document
+    EXPECT_EQ(j["error"]["kind"], c.kind) << out.str();
+    EXPECT_FALSE(j["error"]["message"].get<std::string>().empty());
+    EXPECT_EQ(j["exit_code"], c.code);
+    EXPECT_EQ(j["schema_version"], "1.0");
+    EXPECT_FALSE(err.str().empty());  // the text is still on standard error
+  }
+  std::ostringstream err, out;
+  EXPECT_EQ(run_with_exit_codes([] { return 1; }, err, &out), 1);
+  EXPECT_EQ(out.str(), "");  // no error, no error object
+}
+
+TEST(ExitCodes, WantsJsonOnlyForTheWord) {
+  const char* with[] = {"sfcv", "check", "m.st", "--json"};
+  const char* without[] = {"sfcv", "check", "m.st", "--json-file"};
+  EXPECT_TRUE(wants_json(4, const_cast<char**>(with)));
+  EXPECT_FALSE(wants_json(4, const_cast<char**>(without)));
 }
 
 }  // namespace

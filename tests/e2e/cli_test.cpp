@@ -1,6 +1,7 @@
 // End-to-end: the binary's subcommands, help and exit-code contract.
 
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <utility>
 
 #include "support/sfcv_test.hpp"
@@ -18,10 +19,15 @@ TEST(Cli, HelpListsSubcommands) {
   EXPECT_NE(r.out.find("Exit codes"), std::string::npos);
 }
 
-TEST(Cli, VersionPrintsNameAndProjectVersion) {
+// The first line is unchanged; then the commit and the libraries (issue 48).
+TEST(Cli, VersionPrintsNameProjectVersionCommitAndLibraries) {
   const auto r = run_sfcv("--version");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.out, "sfcv " SFCV_VERSION "\n");
+  EXPECT_EQ(r.out.rfind("sfcv " SFCV_VERSION "\ncommit ", 0), 0u) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("\ncommit ([0-9a-f]{40}(-dirty)?|unknown)\n")))
+      << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("\nBuDDy [0-9]+\\.[0-9]+"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("\nCaDiCaL [^\n]+\n$"))) << r.out;
 }
 
 TEST(Cli, MissingFileIsBadInput) {

@@ -99,12 +99,17 @@ TEST(Info, CountsNestedChartsAndNetworks) {
   EXPECT_EQ(j["pous"][0]["actions"]["by_kind"]["chart"], 1);
 }
 
-TEST(Info, InvalidModelExitsTwoWithNothingOnStdout) {
+// Issue 48: under --json an error is a JSON error object on standard output (it was nothing),
+// the exit code unchanged, the diagnostics on standard error.
+TEST(Info, InvalidModelExitsTwoWithOnlyAJsonErrorOnStdout) {
   const std::string path = write_temp(
       program(kValidLoop + "  TRANSITION FROM S1 TO Nowhere := go; END_TRANSITION\n"), ".st");
   const auto r = run_sfcv("info --json " + q(path));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "");
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["error"]["kind"], "input");
+  EXPECT_EQ(j["exit_code"], 2);
+  EXPECT_FALSE(j.contains("pous"));
   EXPECT_NE(r.err.find(path + ":8:3: error: transition to undeclared step 'Nowhere'"),
             std::string::npos)
       << r.err;

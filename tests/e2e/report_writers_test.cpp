@@ -162,14 +162,14 @@ void run_every_writer(const Scenario& s, const std::string& engine) {
   const auto& run = log["runs"][0];
   EXPECT_EQ(run["tool"]["driver"]["rules"].size(), s.verdicts.size());
   for (const auto& [name, verdict] : s.verdicts) {
-    bool ruled = false;
-    for (const auto& rule : run["tool"]["driver"]["rules"]) ruled = ruled || rule["name"] == name;
-    EXPECT_TRUE(ruled) << name;
+    // Rule ids are stable ids, not names (issue 48): the rule named so gives the id.
+    std::string rule_id;
+    for (const auto& rule : run["tool"]["driver"]["rules"])
+      if (rule["name"] == name) rule_id = rule["id"];
+    EXPECT_FALSE(rule_id.empty()) << name;
     std::string level;
-    for (const auto& r : run["results"]) {
-      const auto id = r["ruleId"].get<std::string>();
-      if (id == "property/" + name || id == "check/" + name) level = r["level"];
-    }
+    for (const auto& r : run["results"])
+      if (r["ruleId"] == rule_id) level = r["level"];
     const std::string expected = verdict == "holds"      ? ""
                                  : verdict == "violated" ? "error"
                                  : verdict == "n/a"      ? "none"

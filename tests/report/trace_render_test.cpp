@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/check_render.hpp"
+#include "report/provenance.hpp"
 #include "support/toy_system.hpp"
 
 namespace sfcv::report {
@@ -82,24 +83,49 @@ TEST(TraceRender, VcdGolden) {
   Fixture f;
   EXPECT_EQ(trace_vcd(f.trace, f.ts, {10}),
             "$comment sfcv trace: one scan cycle of 10 ms per step $end\n"
-            "$version sfcv $end\n"
-            "$timescale 1 ms $end\n"
-            "$scope module inputs $end\n"
-            "$var wire 1 ! go $end\n"
-            "$var wire 1 \" stop $end\n"
-            "$upscope $end\n"
-            "$scope module steps $end\n"
-            "$var wire 1 # A $end\n"
-            "$var wire 1 $ B $end\n"
-            "$upscope $end\n"
-            "$scope module outputs $end\n"
-            "$var wire 1 % Y $end\n"
-            "$upscope $end\n"
-            "$enddefinitions $end\n"
-            "#0\n$dumpvars\n0!\n0\"\n1#\n0$\n0%\n$end\n"
-            "#10\n1!\n0#\n1$\n1%\n"
-            "#20\n0!\n1#\n0$\n0%\n"
-            "#30\n");
+            "$comment loop: the last step is step 0 again (time 0): steps 0..2 repeat forever "
+            "(signal trace.in_loop) $end\n"
+            "$version sfcv " +
+                build_version() +
+                " $end\n"
+                "$timescale 1 ms $end\n"
+                "$scope module inputs $end\n"
+                "$var wire 1 ! go $end\n"
+                "$var wire 1 \" stop $end\n"
+                "$upscope $end\n"
+                "$scope module steps $end\n"
+                "$var wire 1 # A $end\n"
+                "$var wire 1 $ B $end\n"
+                "$upscope $end\n"
+                "$scope module outputs $end\n"
+                "$var wire 1 % Y $end\n"
+                "$upscope $end\n"
+                "$scope module trace $end\n"
+                "$var wire 1 & in_loop $end\n"
+                "$upscope $end\n"
+                "$enddefinitions $end\n"
+                "#0\n$dumpvars\n0!\n0\"\n1#\n0$\n0%\n1&\n$end\n"
+                "#10\n1!\n0#\n1$\n1%\n"
+                "#20\n0!\n1#\n0$\n0%\n"
+                "#30\n");
+}
+
+// Issue 48: a lasso's loop point survives in the VCD: a comment in the header and the signal
+// trace.in_loop, 0 before the step the run returns to and 1 from it on.
+TEST(TraceRender, VcdKeepsALassosLoopPoint) {
+  Fixture f;
+  f.trace.loop_start = 1;
+  const auto v = trace_vcd(f.trace, f.ts, {10});
+  EXPECT_NE(v.find("$comment loop: the last step is step 1 again (time 10): steps 1..2 repeat "
+                   "forever (signal trace.in_loop) $end"),
+            std::string::npos)
+      << v;
+  EXPECT_NE(v.find("$var wire 1 & in_loop $end"), std::string::npos) << v;
+  EXPECT_NE(v.find("0%\n0&\n$end\n"), std::string::npos) << v;  // not in the loop at time 0
+  EXPECT_NE(v.find("#10\n1!\n0#\n1$\n1%\n1&\n"), std::string::npos) << v;
+  // Without a loop there is no such signal.
+  f.trace.loop_start.reset();
+  EXPECT_EQ(trace_vcd(f.trace, f.ts).find("in_loop"), std::string::npos);
 }
 
 TEST(TraceRender, VcdNamesAreIdentifiersAndIntegersBinary) {
