@@ -117,7 +117,9 @@ TEST(PatternErrors, NamesArityScopesAndBoundsWithLocations) {
             "pattern");
   EXPECT_EQ(error("absence(a, between b)"), "--pattern:1:21: error: expected 'between Q and R'");
   EXPECT_EQ(error("absence(a & , before b)"),
-            "--pattern:1:12: error: expected a formula, found end of input");
+            "--pattern:1:12: error: expected a formula, found end of input; operators accepted: ! "
+            "NOT, & AND, | OR, xor XOR, ->, <->, EX AX EF AF EG AG, E[p U q] A[p U q], = <> != < "
+            "<= > >=, + - * / MOD, prev() rise() fall()");
   EXPECT_EQ(error("absence(AG a)"),
             "--pattern:1:9: error: a pattern's arguments are propositional formulas (no temporal "
             "operator): AG a");
