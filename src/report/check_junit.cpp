@@ -96,8 +96,10 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     }
     // A vacuous pass is still a pass; CI servers show system-out with the test case.
     // A pattern's English sentence goes there too, first.
-    const std::string out =
-        r.description + (r.description.empty() || r.vacuity.empty() ? "" : "\n") + r.vacuity;
+    std::string out = r.description;
+    for (const auto& more :
+         {r.justification.empty() ? std::string() : "justification: " + r.justification, r.vacuity})
+      if (!more.empty()) out += (out.empty() ? "" : "\n") + more;
     if (!out.empty())
       tc.append_child("system-out")
           .append_child(pugi::node_pcdata)

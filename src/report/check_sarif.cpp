@@ -79,6 +79,9 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
         !r.description.empty() ? r.description + " (CTL " + r.formula + ")"
         : r.check.empty()      ? "CTL property " + r.formula
                                : std::string(d != descriptions.end() ? d->second : r.name);
+    if (!r.justification.empty())
+      rule["fullDescription"]["text"] = rule["shortDescription"]["text"].get<std::string>() +
+                                        " Justification: " + r.justification;
     rule["defaultConfiguration"]["level"] = "error";
     rules.push_back(std::move(rule));
     if (r.verdict == logic::Verdict::Holds) continue;
