@@ -99,7 +99,8 @@ TEST(PatternTranslation, ArgumentsMayNestParenthesesCommentsAndHistory) {
 TEST(PatternErrors, NamesArityScopesAndBoundsWithLocations) {
   EXPECT_EQ(error("respond(a, b)"),
             "--pattern:1:1: error: unknown pattern 'respond' (known: always, never, "
-            "implies, next_cycle, between_cycles, infinitely_often, never_before, "
+            "implies, next_cycle, between_cycles, statechange_duringcycle, leadsto, "
+            "infinitely_often, never_before, "
             "reachable, repeatable, absence, universality, existence, precedence, response)");
   EXPECT_EQ(error("response(a)"),
             "--pattern:1:1: error: pattern 'response' takes 2 arguments, found 1: "
