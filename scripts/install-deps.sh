@@ -5,7 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake ninja-build ccache  # ccache: .ci/run keeps one cache for its presets
-  libpugixml-dev libcli11-dev nlohmann-json3-dev
+  libpugixml-dev libcli11-dev nlohmann-json3-dev libyaml-cpp-dev
   libbdd-dev libcadical-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   graphviz spin berkeley-abc gnuplot-nox

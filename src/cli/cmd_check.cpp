@@ -35,6 +35,7 @@
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/requirements.hpp"
 #include "logic/vacuity.hpp"
 #include "model/input_file.hpp"
 #include "model/names.hpp"
@@ -55,7 +56,8 @@ struct CheckOptions {
   std::vector<std::string> ltl;
   std::vector<std::string> patterns;
   std::string spec;
-  std::string checks;  ///< empty: all when no property is given, else none
+  std::string requirements;  ///< --requirements: PLCverif JSON or ESBMC-PLC YAML
+  std::string checks;        ///< empty: all when no property is given, else none
   std::vector<std::string> fair;
   std::vector<std::string> assume;
   std::string engine = "auto";
@@ -277,6 +279,13 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   // A bound in time ("within 2 s") counts cycles of --cycle when time is discrete.
   if (o.system.time == "discrete") inputs.pattern_options.cycle_ms = parse_cycle_ms(o.system.cycle);
   auto parsed = logic::parse_check_inputs(inputs);
+  if (!o.requirements.empty()) {
+    auto r =
+        logic::parse_requirements(model::read_input_file(o.requirements, "the requirements file"),
+                                  o.requirements, inputs.pattern_options);
+    parsed.diagnostics.insert(parsed.diagnostics.end(), r.diagnostics.begin(), r.diagnostics.end());
+    for (auto& p : r.spec.properties) parsed.spec.properties.push_back(std::move(p));
+  }
   print_diagnostics(parsed.diagnostics, "errors in the properties");
   const bool has_properties = !parsed.spec.properties.empty();
   std::string why;
@@ -458,6 +467,9 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--pattern", opts->patterns,
                   "A requirement pattern, e.g. 'response(start, V1, within 5 cycles)' or "
                   "'absence(V1 & V3, after start)' (repeatable; list: sfcv patterns)");
+  sub->add_option("--requirements", opts->requirements,
+                  "A requirements file: PLCverif-style JSON or ESBMC-PLC YAML, detected by content "
+                  "(docs/properties.md)");
   sub->add_option("--spec", opts->spec,
                   "A file of 'property name: formula;', 'pattern name: pattern;', "
                   "'ltl name: formula;', 'assume e;', 'fair e;'");

@@ -20,9 +20,17 @@ void add_patterns_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--library", *library,
                 "Print the path of the shipped library of examples (share/sfcv/patterns.spec, a "
                 "spec file for check --spec)");
+  auto as_json = std::make_shared<bool>(false);
+  sub->add_flag("--json", *as_json,
+                "The catalogue as JSON (names, parameters, English, CTL, the PLCverif ids and "
+                "ESBMC-PLC kinds of --requirements), for tools that write requirements");
   sub->footer("Examples on the chemical plant: docs/properties.md and share/sfcv/patterns.spec.");
-  sub->callback([&selected, library] {
-    selected = [library] {
+  sub->callback([&selected, library, as_json] {
+    selected = [library, as_json] {
+      if (*as_json) {
+        std::cout << report::pattern_list_json(logic::pattern_catalogue());
+        return 0;
+      }
       if (*library) {
         const auto path = shipped_file("patterns.spec");
         if (path.empty())

@@ -31,7 +31,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     auto r = parse_formula(text, option_source("--ctl", text));
     append(std::move(r.diagnostics));
     if (r.formula) {
-      NamedFormula nf{text, r.formula, {}, {}};
+      NamedFormula nf{text, r.formula, {}, {}, {}};
       nf.where.file = "--ctl";
       out.spec.properties.push_back(std::move(nf));
     }
@@ -40,7 +40,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     auto r = parse_ltl(text, option_source("--ltl", text));
     append(std::move(r.diagnostics));
     if (r.formula) {
-      NamedFormula nf{text, r.formula, {}, {}};
+      NamedFormula nf{text, r.formula, {}, {}, {}};
       nf.where.file = "--ltl";
       out.spec.properties.push_back(std::move(nf));
     }
@@ -49,7 +49,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
     auto r = parse_pattern(text, option_source("--pattern", text), in.pattern_options);
     append(std::move(r.diagnostics));
     if (r.ok()) {
-      NamedFormula nf{text, r.formula, {}, r.english};
+      NamedFormula nf{text, r.formula, {}, r.english, {}};
       nf.where.file = "--pattern";
       out.spec.properties.push_back(std::move(nf));
     }
@@ -57,7 +57,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
   for (const auto& text : in.fair) {
     auto r = parse_propositional(text, option_source("--fair", text));
     append(std::move(r.diagnostics));
-    if (r.formula) out.spec.fairness.push_back({"", r.formula, {}, {}});
+    if (r.formula) out.spec.fairness.push_back({"", r.formula, {}, {}, {}});
   }
   for (const auto& text : in.assume) {
     auto r = parse_propositional(text, option_source("--assume", text));
@@ -73,7 +73,7 @@ ParsedInputs parse_check_inputs(const CheckInputs& in) {
       out.diagnostics.push_back(std::move(d));
       continue;
     }
-    if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}, {}});
+    if (r.formula) out.spec.assumptions.push_back({"", r.formula, {}, {}, {}});
   }
   return out;
 }
@@ -95,8 +95,9 @@ void describe_results(CheckReport& report, const Spec& spec) {
   for (auto& r : report.results) {
     if (!r.check.empty()) continue;
     for (const auto& p : spec.properties)
-      if (p.name == r.name && !p.description.empty()) {
+      if (p.name == r.name && (!p.description.empty() || !p.justification.empty())) {
         r.description = p.description;
+        r.justification = p.justification;
         break;
       }
   }

@@ -26,10 +26,11 @@ enum class Verdict {
 std::string_view to_string(Verdict v);
 
 struct PropertyResult {
-  std::string name;         ///< property name, or the standard check's name
-  std::string formula;      ///< CTL text; empty for checks that are not one formula
-  std::string description;  ///< a pattern's requirement in English; empty otherwise
-  std::string check;        ///< standard check id ("reachable", ...); empty for user properties
+  std::string name;           ///< property name, or the standard check's name
+  std::string formula;        ///< CTL text; empty for checks that are not one formula
+  std::string description;    ///< a pattern's requirement in English; empty otherwise
+  std::string justification;  ///< a requirement file's justification; empty otherwise
+  std::string check;          ///< standard check id ("reachable", ...); empty for user properties
   Verdict verdict = Verdict::Unknown;
   std::string message;                ///< one readable line (why unknown, what was found)
   std::vector<std::string> findings;  ///< standard checks: one located line per defect

@@ -1,6 +1,7 @@
 #include "logic/formula.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sfcv::logic {
 
@@ -26,6 +27,7 @@ int precedence(Op op) {
     case Op::And:
       return 4;
     case Op::Compare:
+    case Op::Relation:
       return 5;
     case Op::Not:
     case Op::EX:
@@ -92,7 +94,55 @@ void print_name(const Formula& f, std::string& out) {
   out.append(f.prev, ')');
 }
 
+// Terms: + - weakest, then * / mod, then unary minus.
+int term_precedence(Op op) {
+  switch (op) {
+    case Op::Add:
+    case Op::Sub:
+      return 1;
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      return 2;
+    case Op::Neg:
+      return 3;
+    default:
+      return 4;
+  }
+}
+
+void print_term(const Formula& t, int context, std::string& out) {
+  const int p = term_precedence(t.op);
+  const bool parens = p < context;
+  if (parens) out += '(';
+  switch (t.op) {
+    case Op::Value:
+      print_name(t, out);
+      break;
+    case Op::Number:
+      out += t.value_name.empty() ? std::to_string(t.value) : t.value_name;
+      break;
+    case Op::Neg:
+      out += '-';
+      print_term(*t.args[0], p, out);
+      break;
+    default: {
+      const char* text = t.op == Op::Add   ? " + "
+                         : t.op == Op::Sub ? " - "
+                         : t.op == Op::Mul ? " * "
+                         : t.op == Op::Div ? " / "
+                                           : " mod ";
+      print_term(*t.args[0], p, out);  // left associative
+      out += text;
+      print_term(*t.args[1], p + 1, out);
+      break;
+    }
+  }
+  if (parens) out += ')';
+}
+
 void print(const Formula& f, int context, std::string& out) {
+  if (is_term(f.op)) return print_term(f, 0, out);
   const int p = precedence(f.op);
   const bool parens = p < context;
   if (parens) out += '(';
@@ -112,6 +162,13 @@ void print(const Formula& f, int context, std::string& out) {
       out += to_string(f.cmp);
       out += ' ';
       out += f.value_name.empty() ? std::to_string(f.value) : f.value_name;
+      break;
+    case Op::Relation:
+      print_term(*f.args[0], 1, out);
+      out += ' ';
+      out += to_string(f.cmp);
+      out += ' ';
+      print_term(*f.args[1], 1, out);
       break;
     case Op::Not:
     case Op::EX:
@@ -158,14 +215,14 @@ void print(const Formula& f, int context, std::string& out) {
 }
 
 void collect_names(const Formula& f, std::vector<std::string>& out) {
-  if (f.op == Op::Atom || f.op == Op::Compare) {
+  if (names_observable(f.op)) {
     if (std::find(out.begin(), out.end(), f.name) == out.end()) out.push_back(f.name);
   }
   for (const auto& a : f.args) collect_names(*a, out);
 }
 
 void collect_observables(const Formula& f, std::vector<std::uint32_t>& out) {
-  if ((f.op == Op::Atom || f.op == Op::Compare) && f.observable >= 0)
+  if (names_observable(f.op) && f.observable >= 0)
     out.push_back(static_cast<std::uint32_t>(f.observable));
   for (const auto& a : f.args) collect_observables(*a, out);
 }
@@ -216,7 +273,7 @@ FormulaPtr with_observable(const Formula& f, std::int32_t index) {
 }
 
 FormulaPtr shifted_back(const FormulaPtr& f, std::uint32_t n) {
-  if (f->op == Op::Atom || f->op == Op::Compare) {
+  if (names_observable(f->op)) {
     auto copy = std::make_shared<Formula>(*f);
     copy->prev += n;
     return copy;
@@ -236,9 +293,58 @@ FormulaPtr make_fall(const FormulaPtr& p, int line, int column) {
 }
 
 bool reads_previous(const Formula& f) {
-  if ((f.op == Op::Atom || f.op == Op::Compare) && f.prev > 0) return true;
+  if (names_observable(f.op) && f.prev > 0) return true;
   return std::any_of(f.args.begin(), f.args.end(),
                      [](const FormulaPtr& a) { return reads_previous(*a); });
+}
+
+bool is_term(Op op) {
+  switch (op) {
+    case Op::Value:
+    case Op::Number:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool names_observable(Op op) {
+  return op == Op::Atom || op == Op::Compare || op == Op::Value;
+}
+
+std::int64_t evaluate_term(const Formula& t,
+                           const std::function<std::int64_t(std::uint32_t)>& observe) {
+  auto arg = [&](std::size_t i) { return evaluate_term(*t.args[i], observe); };
+  switch (t.op) {
+    case Op::Value:
+      return observe(static_cast<std::uint32_t>(t.observable));
+    case Op::Number:
+      return t.value;
+    case Op::Neg:
+      return -arg(0);
+    case Op::Add:
+      return arg(0) + arg(1);
+    case Op::Sub:
+      return arg(0) - arg(1);
+    case Op::Mul:
+      return arg(0) * arg(1);
+    case Op::Div:
+      return arg(0) / arg(1);  // C++ truncates toward zero, as IEC 61131-3 does
+    case Op::Mod:
+      return arg(0) % arg(1);  // the sign of the dividend, as IEC 61131-3 MOD
+    default:
+      throw std::invalid_argument("evaluate_term: not a term: " + to_string(t));
+  }
+}
+
+bool relation_holds(const Formula& f, const std::function<std::int64_t(std::uint32_t)>& observe) {
+  return compare(f.cmp, evaluate_term(*f.args[0], observe), evaluate_term(*f.args[1], observe));
 }
 
 bool is_temporal(Op op) {

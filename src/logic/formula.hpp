@@ -5,6 +5,7 @@
 // Immutable: constructors return shared nodes; resolution against a system makes new nodes.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,20 @@ enum class Op {
   U,
   R,
   W,
+  // Comparisons of two expressions (`a = b`, `level + 1 <= limit`, docs/properties.md):
+  // Relation compares the integer terms args[0] and args[1] with `cmp`. A term is Value (an
+  // observable's value, `name`, `prev`), Number (`value`), or Neg/Add/Sub/Mul/Div/Mod of terms
+  // (Mul needs a constant factor, Div and Mod a non-zero constant divisor; IEC truncation).
+  // Terms are not formulas: only a Relation holds them.
+  Relation,
+  Value,
+  Number,
+  Neg,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
 };
 
 enum class CompareOp { Eq, Ne, Lt, Le, Gt, Ge };
@@ -80,6 +95,17 @@ FormulaPtr make_rise(const FormulaPtr& p, int line = 0, int column = 0);
 FormulaPtr make_fall(const FormulaPtr& p, int line = 0, int column = 0);
 /// Some atom or comparison below reads a previous value (prev, rise, fall).
 bool reads_previous(const Formula& f);
+
+/// An integer term (Value, Number or arithmetic), the operand of a Relation.
+bool is_term(Op op);
+/// A node that names an observable: Atom, Compare, Value.
+bool names_observable(Op op);
+/// The value of a resolved term in a state, `observe(o)` reading observable o (int64 is exact:
+/// resolve() refuses terms whose range does not fit). Throws std::invalid_argument on a formula.
+std::int64_t evaluate_term(const Formula& t,
+                           const std::function<std::int64_t(std::uint32_t)>& observe);
+/// A resolved Relation in a state.
+bool relation_holds(const Formula& f, const std::function<std::int64_t(std::uint32_t)>& observe);
 
 bool is_temporal(Op op);
 bool is_ltl_op(Op op);

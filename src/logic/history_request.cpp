@@ -1,5 +1,6 @@
 // Which inputs and previous values the properties read (check_inputs.hpp: history_system_for).
 
+#include <deque>
 #include <map>
 
 #include "logic/check_inputs.hpp"
@@ -16,9 +17,19 @@ struct Use {
   std::string source;
 };
 
-void collect(const FormulaPtr& f, const std::string& source, std::vector<Use>& out) {
-  if (f->op == Op::Atom || f->op == Op::Compare) out.push_back({f.get(), source});
-  for (const auto& a : f->args) collect(a, source, out);
+void collect(const FormulaPtr& f, const std::string& source, std::vector<Use>& out,
+             std::deque<Formula>& names) {
+  if (names_observable(f->op)) out.push_back({f.get(), source});
+  // `a = b`: b may be a variable or an input rather than an enumerator (resolve.hpp).
+  if (f->op == Op::Compare && !f->value_name.empty()) {
+    Formula& rhs = names.emplace_back();
+    rhs.op = Op::Value;
+    rhs.name = f->value_name;
+    rhs.line = f->line;
+    rhs.column = f->column;
+    out.push_back({&rhs, source});
+  }
+  for (const auto& a : f->args) collect(a, source, out, names);
 }
 
 std::optional<std::uint32_t> input_named(const semantics::TransitionSystem& ts,
@@ -34,9 +45,11 @@ semantics::TransitionSystemPtr history_system_for(const Spec& spec,
                                                   const semantics::TransitionSystem& ts,
                                                   model::Diagnostics& diagnostics) {
   std::vector<Use> uses;
-  for (const auto& p : spec.properties) collect(p.formula, property_source(p.name, p.where), uses);
+  std::deque<Formula> names;
+  for (const auto& p : spec.properties)
+    collect(p.formula, property_source(p.name, p.where), uses, names);
   for (const auto& f : spec.fairness)
-    collect(f.formula, f.where.file.empty() ? "--fair" : f.where.file, uses);
+    collect(f.formula, f.where.file.empty() ? "--fair" : f.where.file, uses, names);
 
   auto error = [&](const Use& u, std::string message) {
     model::Diagnostic d;

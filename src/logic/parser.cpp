@@ -1,6 +1,7 @@
 #include "logic/parser.hpp"
 
 #include <cctype>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -35,6 +36,10 @@ enum class Tok {
   Ge,
   Semi,
   Colon,
+  Plus,
+  Minus,
+  Star,
+  Slash,
   End,
   Bad,
 };
@@ -110,7 +115,7 @@ std::vector<Token> lex(std::string_view s) {
       sym(Tok::Iff, 3);
     } else if (rest.starts_with("->")) {
       sym(Tok::Implies, 2);
-    } else if (rest.starts_with("!=")) {
+    } else if (rest.starts_with("!=") || rest.starts_with("<>")) {
       sym(Tok::Ne, 2);
     } else if (rest.starts_with("<=")) {
       sym(Tok::Le, 2);
@@ -155,6 +160,18 @@ std::vector<Token> lex(std::string_view s) {
           break;
         case ':':
           sym(Tok::Colon, 1);
+          break;
+        case '+':
+          sym(Tok::Plus, 1);
+          break;
+        case '-':
+          sym(Tok::Minus, 1);
+          break;
+        case '*':
+          sym(Tok::Star, 1);
+          break;
+        case '/':
+          sym(Tok::Slash, 1);
           break;
         default:
           sym(Tok::Bad, 1);
@@ -237,7 +254,8 @@ class Parser {
     auto lhs = implies();
     while (peek().kind == Tok::Iff) {
       const auto& op = next();
-      lhs = bounded(make_op(Op::Iff, {lhs, implies()}, op.line, op.column), op);
+      auto rhs = implies();
+      lhs = bounded(make_op(Op::Iff, {boolean(lhs), boolean(rhs)}, op.line, op.column), op);
     }
     return lhs;
   }
@@ -247,28 +265,38 @@ class Parser {
     auto lhs = disjunction();
     if (peek().kind == Tok::Implies) {
       const auto& op = next();
-      return bounded(make_op(Op::Implies, {lhs, implies()}, op.line, op.column), op);
+      auto rhs = implies();
+      return bounded(make_op(Op::Implies, {boolean(lhs), boolean(rhs)}, op.line, op.column), op);
     }
     return lhs;
   }
-  bool is_xor(const Token& t) const {
-    return t.kind == Tok::Ident && model::iequals(t.text, "xor");
+  // The IEC 61131-3 operators are keywords in every case (`AND`, `and`): reserved words of ST,
+  // so no variable can bear them.
+  static bool keyword(const Token& t, const char* k) {
+    return t.kind == Tok::Ident && model::iequals(t.text, k);
+  }
+  static bool is_xor(const Token& t) { return keyword(t, "xor"); }
+  static bool is_iec_keyword(const Token& t) {
+    return keyword(t, "AND") || keyword(t, "OR") || keyword(t, "XOR") || keyword(t, "NOT") ||
+           keyword(t, "MOD");
   }
   FormulaPtr disjunction() {
     auto lhs = conjunction();
-    while (peek().kind == Tok::Or || is_xor(peek())) {
+    while (peek().kind == Tok::Or || is_xor(peek()) || keyword(peek(), "OR")) {
       const auto& op = next();
+      auto rhs = conjunction();
       lhs = bounded(
-          make_op(op.kind == Tok::Or ? Op::Or : Op::Xor, {lhs, conjunction()}, op.line, op.column),
+          make_op(is_xor(op) ? Op::Xor : Op::Or, {boolean(lhs), boolean(rhs)}, op.line, op.column),
           op);
     }
     return lhs;
   }
   FormulaPtr conjunction() {
     auto lhs = until();
-    while (peek().kind == Tok::And) {
+    while (peek().kind == Tok::And || keyword(peek(), "AND")) {
       const auto& op = next();
-      lhs = bounded(make_op(Op::And, {lhs, until()}, op.line, op.column), op);
+      auto rhs = until();
+      lhs = bounded(make_op(Op::And, {boolean(lhs), boolean(rhs)}, op.line, op.column), op);
     }
     return lhs;
   }
@@ -306,7 +334,8 @@ class Parser {
     Op op;
     if (ltl_binary(peek(), op)) {
       const auto& t = next();
-      return bounded(make_op(op, {lhs, until()}, t.line, t.column), t);
+      auto rhs = until();
+      return bounded(make_op(op, {boolean(lhs), boolean(rhs)}, t.line, t.column), t);
     }
     return lhs;
   }
@@ -314,24 +343,40 @@ class Parser {
     const Token& t = peek();
     const model::NestingLevel level(depth_);
     enter(level, t);
-    if (t.kind == Tok::Not) {
+    if (t.kind == Tok::Not || keyword(t, "NOT")) {
       next();
-      return make_op(Op::Not, {unary()}, t.line, t.column);
+      return make_op(Op::Not, {boolean(unary())}, t.line, t.column);
     }
     Op op;
     if (ltl_ && ltl_unary(t, op)) {
       next();
-      return make_op(op, {unary()}, t.line, t.column);
+      return make_op(op, {boolean(unary())}, t.line, t.column);
     }
     if (t.kind == Tok::Ident && is_temporal_keyword(t.text, op)) {
       if (ltl_)
         throw SyntaxError(t, "CTL operator " + describe(t) + " in an LTL formula (write " +
                                  t.text.substr(1) + "; every LTL path is universal)");
       next();
-      return make_op(op, {unary()}, t.line, t.column);
+      return make_op(op, {boolean(unary())}, t.line, t.column);
     }
-    return primary();
+    return comparison();
   }
+
+ public:
+  /// `f` used as a truth value: a term (a number) is an error located at it.
+  static FormulaPtr boolean(FormulaPtr f) {
+    if (!is_term(f->op)) return f;
+    const Token at{Tok::Ident, "", 0, f->line, f->column};
+    if (f->op == Op::Number)
+      throw SyntaxError(at,
+                        "an integer is not a formula; compare it with a variable, e.g. "
+                        "'level >= " +
+                            to_string(*f) + "'");
+    throw SyntaxError(at, "'" + to_string(*f) + "' is a number, not a formula; compare it, e.g. '" +
+                              to_string(*f) + " > 0'");
+  }
+
+ private:
   /// A number the lexer could not read (Tok::Bad): the checked conversion says why.
   static void bad_number(const Token& t) {
     if (!t.text.empty() &&
@@ -373,25 +418,135 @@ class Parser {
         return c;
     }
   }
-  // An integer operand of a comparison: a literal or TRUE/FALSE.
-  bool constant(const Token& t, std::int64_t& v) const {
-    if (t.kind == Tok::Int) {
-      v = t.value;
+  static FormulaPtr number(std::int64_t v, int line, int column, std::string name = {}) {
+    auto f = std::make_shared<Formula>();
+    f->op = Op::Number;
+    f->value = v;
+    f->value_name = std::move(name);
+    f->line = line;
+    f->column = column;
+    return f;
+  }
+  // An integer literal or TRUE/FALSE as a constant operand of a comparison.
+  static bool literal(const Formula& f, std::int64_t& v) {
+    if (f.op == Op::Number && f.value_name.empty()) {
+      v = f.value;
       return true;
     }
-    if (t.kind == Tok::Ident &&
-        (model::iequals(t.text, "TRUE") || model::iequals(t.text, "FALSE"))) {
-      v = model::iequals(t.text, "TRUE") ? 1 : 0;
+    if (f.op == Op::True || f.op == Op::False) {
+      v = f.op == Op::True ? 1 : 0;
       return true;
     }
     return false;
+  }
+  /// `f` as an operand of arithmetic or of a comparison of values: a name is its value, TRUE
+  /// and FALSE are 1 and 0; a formula (`a & b`) is no number.
+  static FormulaPtr term(const FormulaPtr& f, const Token& op) {
+    if (is_term(f->op)) return f;
+    if (f->op == Op::Atom) {
+      auto v = std::make_shared<Formula>(*f);
+      v->op = Op::Value;
+      return v;
+    }
+    if (f->op == Op::True || f->op == Op::False)
+      return number(f->op == Op::True ? 1 : 0, f->line, f->column,
+                    f->op == Op::True ? "TRUE" : "FALSE");
+    throw SyntaxError(op, "the formula '" + to_string(*f) + "' is no number for " + describe(op) +
+                              ": only = and <> compare truth values");
+  }
+  // lhs cmp rhs: a name with a constant keeps the Compare atom every engine and export reads;
+  // `name = other` is an enumerator or a variable (resolve() decides); two truth values are
+  // <-> or xor; anything else is a Relation of two terms.
+  FormulaPtr relation(const FormulaPtr& lhs, const Token& op, const FormulaPtr& rhs) {
+    const auto c = cmp_of(op.kind);
+    std::int64_t v = 0;
+    auto named = [](const FormulaPtr& atom, CompareOp cmp, std::int64_t value) {
+      auto f = std::make_shared<Formula>(
+          *make_compare(atom->name, cmp, value, atom->line, atom->column));
+      f->prev = atom->prev;
+      return f;
+    };
+    if (lhs->op == Op::Atom && literal(*rhs, v)) return named(lhs, c, v);
+    if (rhs->op == Op::Atom && literal(*lhs, v)) return named(rhs, flip(c), v);
+    if (lhs->op == Op::Atom && rhs->op == Op::Atom && rhs->prev == 0) {
+      auto f = named(lhs, c, 0);
+      f->value_name = rhs->name;
+      return f;
+    }
+    const bool truth_l = !is_term(lhs->op) && lhs->op != Op::Atom;
+    const bool truth_r = !is_term(rhs->op) && rhs->op != Op::Atom;
+    if ((truth_l || truth_r) && (c == CompareOp::Eq || c == CompareOp::Ne) &&
+        !(lhs->op == Op::Number || rhs->op == Op::Number))
+      return make_op(c == CompareOp::Eq ? Op::Iff : Op::Xor, {boolean(lhs), boolean(rhs)}, op.line,
+                     op.column);
+    auto r = make_op(Op::Relation, {term(lhs, op), term(rhs, op)}, lhs->line, lhs->column);
+    auto out = std::make_shared<Formula>(*r);
+    out->cmp = c;
+    return out;
+  }
+  FormulaPtr comparison() {
+    auto lhs = sum();
+    if (!is_cmp(peek().kind)) return lhs;
+    const Token op = next();
+    auto rhs = sum();
+    if (is_cmp(peek().kind))
+      throw SyntaxError(peek(), "comparisons do not chain: write '(a < b) & (b < c)'");
+    return relation(lhs, op, rhs);
+  }
+  FormulaPtr arithmetic(Op op, const Token& t, const FormulaPtr& a, const FormulaPtr& b) {
+    return bounded(make_op(op, {term(a, t), term(b, t)}, t.line, t.column), t);
+  }
+  FormulaPtr sum() {
+    auto lhs = product();
+    for (;;) {
+      const Token t = peek();
+      if (t.kind == Tok::Plus || t.kind == Tok::Minus) {
+        next();
+        lhs = arithmetic(t.kind == Tok::Plus ? Op::Add : Op::Sub, t, lhs, product());
+      } else if (t.kind == Tok::Int && t.text.starts_with("-")) {
+        // `a -1`: the lexer read a negative literal; it is a subtraction here.
+        next();
+        lhs = arithmetic(Op::Add, t, lhs, number(t.value, t.line, t.column));
+      } else {
+        return lhs;
+      }
+    }
+  }
+  FormulaPtr product() {
+    auto lhs = factor();
+    for (;;) {
+      const Token t = peek();
+      Op op;
+      if (t.kind == Tok::Star)
+        op = Op::Mul;
+      else if (t.kind == Tok::Slash)
+        op = Op::Div;
+      else if (keyword(t, "MOD"))
+        op = Op::Mod;
+      else
+        return lhs;
+      next();
+      lhs = arithmetic(op, t, lhs, factor());
+    }
+  }
+  FormulaPtr factor() {
+    const Token t = peek();
+    if (t.kind != Tok::Minus) return primary();
+    const model::NestingLevel level(depth_);
+    enter(level, t);
+    next();
+    auto operand = factor();
+    if (operand->op == Op::Number && operand->value_name.empty() &&
+        operand->value != std::numeric_limits<std::int64_t>::min())
+      return number(-operand->value, t.line, t.column);
+    return make_op(Op::Neg, {term(operand, t)}, t.line, t.column);
   }
   FormulaPtr primary() {
     const Token t = peek();
     if (t.kind == Tok::LParen) {
       next();
       auto f = iff();
-      expect(Tok::RParen, "')'");
+      expect_closing(Tok::RParen, "')'");
       return f;
     }
     if (!ltl_ && t.kind == Tok::Ident && (t.text == "E" || t.text == "A") &&
@@ -404,90 +559,66 @@ class Parser {
                           "expected 'U' in " + t.text + "[ p U q ], found " + describe(peek()));
       next();
       auto rhs = iff();
-      expect(Tok::RBracket, "']'");
-      return make_op(t.text == "E" ? Op::EU : Op::AU, {lhs, rhs}, t.line, t.column);
+      expect_closing(Tok::RBracket, "']'");
+      return make_op(t.text == "E" ? Op::EU : Op::AU, {boolean(lhs), boolean(rhs)}, t.line,
+                     t.column);
     }
-    std::int64_t v = 0;
-    if (constant(t, v)) {
+    if (t.kind == Tok::Int) {
       next();
-      if (is_cmp(peek().kind)) {
-        const auto c = cmp_of(next().kind);
-        const Token& rhs = next();
-        if (rhs.kind != Tok::Ident || constant(rhs, v))
-          throw SyntaxError(rhs,
-                            "expected a variable name in a comparison, found " + describe(rhs));
-        return make_compare(rhs.text, flip(c), t.value, t.line, t.column);
-      }
-      if (t.kind == Tok::Int)
-        throw SyntaxError(t,
-                          "an integer is not a formula; compare it with a variable, e.g. "
-                          "'level >= " +
-                              t.text + "'");
-      return make_const(v != 0, t.line, t.column);
+      return number(t.value, t.line, t.column);
+    }
+    if (t.kind == Tok::Ident &&
+        (model::iequals(t.text, "TRUE") || model::iequals(t.text, "FALSE"))) {
+      next();
+      return make_const(model::iequals(t.text, "TRUE"), t.line, t.column);
     }
     if (t.kind == Tok::Ident && peek(1).kind == Tok::LParen &&
         (t.text == "prev" || t.text == "rise" || t.text == "fall"))
       return history_term(t);
     if (t.kind == Tok::Ident) {
       Op op;
-      if (is_temporal_keyword(t.text, op) || is_xor(t) || t.text == "U" ||
+      if (is_temporal_keyword(t.text, op) || is_iec_keyword(t) || t.text == "U" ||
           (ltl_ && (ltl_unary(t, op) || ltl_binary(t, op))))
         throw SyntaxError(t, "expected an operand, found keyword " + describe(t));
       next();
-      if (is_cmp(peek().kind)) {
-        const auto c = cmp_of(next().kind);
-        const Token& rhs = next();
-        std::int64_t value = 0;
-        if (Op keyword; rhs.kind == Tok::Ident && !constant(rhs, value) &&
-                        !is_temporal_keyword(rhs.text, keyword)) {
-          // An enumerator, `state = Filling`: resolve() gives its value.
-          auto cmp = std::make_shared<Formula>(*make_compare(t.text, c, 0, t.line, t.column));
-          cmp->value_name = rhs.text;
-          return cmp;
-        }
-        if (rhs.kind == Tok::Bad) bad_number(rhs);
-        if (!constant(rhs, value))
-          throw SyntaxError(rhs, "expected an integer constant or an enumerator after '" +
-                                     std::string(to_string(c)) + "', found " + describe(rhs));
-        return make_compare(t.text, c, value, t.line, t.column);
-      }
       return make_atom(t.text, t.line, t.column);
     }
     if (t.kind == Tok::Bad) bad_number(t);
-    if (t.kind == Tok::Bad) throw SyntaxError(t, "unexpected character " + describe(t));
-    throw SyntaxError(t, "expected a formula, found " + describe(t));
+    if (t.kind == Tok::Bad)
+      throw SyntaxError(t, "unexpected character " + describe(t) + "; " + accepted());
+    throw SyntaxError(t, "expected a formula, found " + describe(t) + "; " + accepted());
   }
 
-  // prev(p), rise(p), fall(p) of a propositional p; `prev(level) > 3` compares a previous value.
+  // prev(p), rise(p), fall(p) of a propositional p (prev also of a term: `prev(level) > 3`).
   FormulaPtr history_term(const Token& t) {
     next();
     next();
     auto inner = iff();
-    expect(Tok::RParen, "')'");
+    expect_closing(Tok::RParen, "')'");
     if (const auto* temporal = first_temporal(*inner))
       throw SyntaxError(Token{Tok::Ident, "", 0, temporal->line, temporal->column},
                         t.text + "() takes a propositional formula, not a temporal operator");
-    if (t.text == "rise") return make_rise(inner, t.line, t.column);
-    if (t.text == "fall") return make_fall(inner, t.line, t.column);
-    auto shifted = shifted_back(inner);
-    if (is_cmp(peek().kind)) {
-      if (shifted->op != Op::Atom)
-        throw SyntaxError(peek(),
-                          "a comparison needs a variable on its left, e.g. 'prev(level) > 3'");
-      const auto c = cmp_of(next().kind);
-      const Token& rhs = next();
-      std::int64_t value = 0;
-      if (!constant(rhs, value))
-        throw SyntaxError(rhs, "expected an integer constant after '" + std::string(to_string(c)) +
-                                   "', found " + describe(rhs));
-      auto cmp =
-          std::make_shared<Formula>(*make_compare(shifted->name, c, value, t.line, t.column));
-      cmp->prev = shifted->prev;
-      return cmp;
-    }
-    return shifted;
+    if (t.text == "rise") return make_rise(boolean(inner), t.line, t.column);
+    if (t.text == "fall") return make_fall(boolean(inner), t.line, t.column);
+    return shifted_back(inner);
   }
 
+ public:
+  /// What the language accepts, for error messages.
+  std::string accepted() const {
+    return ltl_ ? "operators accepted: ! NOT, & AND, | OR, xor XOR, ->, <->, X F G, U R W, "
+                  "= <> != < <= > >=, + - * / MOD, prev() rise() fall()"
+                : "operators accepted: ! NOT, & AND, | OR, xor XOR, ->, <->, EX AX EF AF EG AG, "
+                  "E[p U q] A[p U q], = <> != < <= > >=, + - * / MOD, prev() rise() fall()";
+  }
+  void expect_closing(Tok k, const char* what) {
+    if (peek().kind != k)
+      throw SyntaxError(peek(), std::string("expected ") + what + ", found " + describe(peek()) +
+                                    "; " + accepted());
+    next();
+  }
+
+ private:
   const std::vector<Token>& t_;
   std::size_t pos_;
   bool ltl_ = false;
@@ -515,8 +646,9 @@ ParsedFormula parse_one(std::string_view text, std::string source, bool ltl) {
     auto f = p.formula();
     if (p.peek().kind == Tok::Semi && p.peek(1).kind == Tok::End) p.next();
     if (p.peek().kind != Tok::End)
-      throw SyntaxError(p.peek(), "unexpected " + describe(p.peek()) + " after the formula");
-    out.formula = std::move(f);
+      throw SyntaxError(p.peek(),
+                        "unexpected " + describe(p.peek()) + " after the formula; " + p.accepted());
+    out.formula = Parser::boolean(std::move(f));
   } catch (const SyntaxError& e) {
     out.diagnostics.push_back(error_at(source, e.line, e.column, e.what()));
   }
@@ -610,7 +742,7 @@ ParsedSpec parse_spec(std::string_view text, std::string file, const PatternOpti
             head,
             "expected 'property', 'ltl', 'pattern', 'assume' or 'fair', found " + describe(head));
       }
-      nf.formula = p.formula();
+      nf.formula = Parser::boolean(p.formula());
       p.expect(Tok::Semi, "';' at the end of the statement");
       pos = p.pos();
       consumed = true;

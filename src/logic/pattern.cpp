@@ -32,6 +32,12 @@ const std::vector<PatternInfo> kCatalogue = {
      "if {A} is true at the end of a cycle and {B} at the end of the next, {C} is true at the "
      "end of that next cycle",
      "AG (A -> AX (B -> C))", false, false},
+    {"statechange_duringcycle", "A, B",
+     "if {A} is true at the beginning of a cycle, {B} is true at the end of the same cycle",
+     "AG AX (prev(A) -> B)", false, false},
+    {"leadsto", "A, B",
+     "if {A} is true at the end of a cycle, {B} was true at the end of an earlier cycle",
+     "AX !E[!B U A]", false, false},
     {"infinitely_often", "A", "{A} is true at the end of infinitely many cycles of every run",
      "AG AF A", false, false},
     {"never_before", "A, B", "{A} is never true before {B} is", "A[!A W B]", false, false},
@@ -144,6 +150,13 @@ FormulaPtr cycle_template(std::string_view name, const std::vector<FormulaPtr>& 
   if (name == "implies") return AG(imp(a[0], a[1]));
   if (name == "next_cycle") return AG(imp(a[0], AX(a[1])));
   if (name == "between_cycles") return AG(imp(a[0], AX(imp(a[1], a[2]))));
+  // The beginning of a cycle is the state the previous cycle left (docs/semantics.md): A is
+  // judged on the previous values, B on the new ones, for every cycle (every edge: AG AX).
+  if (name == "statechange_duringcycle") return AG(AX(imp(shifted_back(a[0]), a[1])));
+  // Past time without past operators: a violation is a run whose cycles end without B up to
+  // one that ends with A, E[!B U A], from the end of the first cycle on (AX: the initial
+  // state ends no cycle).
+  if (name == "leadsto") return AX(neg(op2(Op::EU, neg(a[1]), a[0])));
   if (name == "infinitely_often") return AG(AF(a[0]));
   if (name == "never_before") return AW(neg(a[0]), a[1]);
   if (name == "reachable") return op1(Op::EF, a[0]);

@@ -20,7 +20,8 @@ struct NamedFormula {
   std::string name;  ///< property name; empty for assumptions and fairness
   FormulaPtr formula;
   model::SourceLocation where;
-  std::string description;  ///< a pattern's English sentence; empty for a formula
+  std::string description;    ///< a pattern's English sentence; empty for a formula
+  std::string justification;  ///< a requirement file's justification (logic/requirements.hpp)
 };
 
 struct Spec {

@@ -31,6 +31,27 @@ model::ExprPtr to_expr(const Formula& f, const std::string& file) {
       return model::make_binary(kinds[static_cast<int>(f.cmp)], name(),
                                 model::make_int(f.value, where), where);
     }
+    case Op::Relation: {
+      static constexpr ExprKind kinds[] = {ExprKind::Eq, ExprKind::Ne, ExprKind::Lt,
+                                           ExprKind::Le, ExprKind::Gt, ExprKind::Ge};
+      return model::make_binary(kinds[static_cast<int>(f.cmp)], arg(0), arg(1), where);
+    }
+    case Op::Value:
+      return name();
+    case Op::Number:
+      return model::make_int(f.value, where);
+    case Op::Neg:
+      return model::make_unary(ExprKind::Neg, arg(0), where);
+    case Op::Add:
+      return model::make_binary(ExprKind::Add, arg(0), arg(1), where);
+    case Op::Sub:
+      return model::make_binary(ExprKind::Sub, arg(0), arg(1), where);
+    case Op::Mul:
+      return model::make_binary(ExprKind::Mul, arg(0), arg(1), where);
+    case Op::Div:
+      return model::make_binary(ExprKind::Div, arg(0), arg(1), where);
+    case Op::Mod:
+      return model::make_binary(ExprKind::Mod, arg(0), arg(1), where);
     case Op::Not:
       return model::make_unary(ExprKind::Not, arg(0), where);
     case Op::And:

@@ -96,10 +96,14 @@ std::string summary(const json& result) {
               html_escape(str(p["trace"], "kind")) + " (" +
               std::to_string(p["trace"]["steps"].size()) + " situations)</a>";
     const std::string description = description_of(p);
+    const std::string justification = str(p, "justification");
     rows += "<tr><td class=\"name\">" + html_escape(str(p, "name")) +
             (description.empty()
                  ? ""
                  : "<div class=\"description\">" + html_escape(description) + "</div>") +
+            (justification.empty() ? ""
+                                   : "<div class=\"description\">justification: " +
+                                         html_escape(justification) + "</div>") +
             "</td><td><span class=\"verdict " + html_escape(cls) + "\">" + html_escape(verdict) +
             "</span></td><td>" + html_escape(engine) + "</td><td class=\"time\">" +
             seconds(p["seconds"]) + "</td><td>" + what +

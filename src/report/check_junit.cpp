@@ -116,6 +116,7 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     if (definite)
       out += "decided by: " + (r.decided_by.empty() ? report.engine : r.decided_by) + "\n";
     if (!r.description.empty()) out += r.description + "\n";
+    if (!r.justification.empty()) out += "justification: " + r.justification + "\n";
     if (!r.vacuity.empty()) out += r.vacuity + "\n";
     const char* element = nullptr;
     switch (r.verdict) {

@@ -131,6 +131,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     if (!r.message.empty()) out += "  " + r.message;
     out += "\n";
     if (!r.description.empty()) out += "  requirement: " + r.description + "\n";
+    if (!r.justification.empty()) out += "  justification: " + r.justification + "\n";
     if (r.check.empty() && r.formula != r.name) out += "  formula: " + r.formula + "\n";
     if (!r.vacuity.empty()) out += "  " + r.vacuity + "\n";
     for (const auto& f : r.findings) out += "  - " + f + "\n";
@@ -208,6 +209,7 @@ nlohmann::json check_json(const logic::CheckReport& report, const semantics::Tra
     if (!r.check.empty()) p["check"] = r.check;
     p["formula"] = r.formula;
     if (!r.description.empty()) p["description"] = r.description;
+    if (!r.justification.empty()) p["justification"] = r.justification;
     p["verdict"] = std::string(logic::to_string(r.verdict));
     const bool definite =
         r.verdict == logic::Verdict::Holds || r.verdict == logic::Verdict::Violated;

@@ -168,6 +168,13 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
     rule["name"] = r.name;
     const auto d = descriptions.find(r.check);
     describe_rule(rule, r, d != descriptions.end() ? d->second : std::string_view());
+    if (!r.justification.empty()) {
+      // A requirement file's justification (--requirements) belongs with the rule's text.
+      const std::string full = rule.contains("fullDescription")
+                                   ? rule["fullDescription"]["text"].get<std::string>()
+                                   : rule["shortDescription"]["text"].get<std::string>();
+      rule["fullDescription"]["text"] = full + " Justification: " + r.justification;
+    }
     rule["defaultConfiguration"]["level"] = "error";
     rule["properties"]["tags"] =
         json::array({"sfcv", r.check.empty() ? (r.description.empty() ? "property" : "pattern")

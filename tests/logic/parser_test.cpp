@@ -159,5 +159,43 @@ TEST(Resolve, BindsNamesAndReportsUnknownOnes) {
   EXPECT_NE(input.diagnostics[0].message.find("is an input"), std::string::npos);
 }
 
+// Issue 49: the IEC 61131-3 operators beside & | !, in any case, and what errors accept.
+TEST(ParserIec, KeywordOperatorsReadAsTheSymbols) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"AG !(V2 AND NOT V4)", "AG !(V2 & !V4)"},
+      {"AG (a or b xor c)", "AG (a | b xor c)"},
+      {"AG (a <> b)", "AG (a != b)"},
+      {"AG (level MOD 2 = 0)", "AG (level mod 2 = 0)"},
+      {"AG (level + 1 <= limit * 2)", "AG (level + 1 <= limit * 2)"},
+      {"AG (inst.x = Main.inst.y)", "AG (inst.x = Main.inst.y)"},
+      {"EF (S.X & Chart.S.X)", "EF (S.X & Chart.S.X)"},
+      {"AG ((a & b) = c)", "AG (a & b <-> c)"},
+      {"AG (level -1 > 0)", "AG (level + -1 > 0)"},
+  };
+  for (const auto& [text, printed] : cases) {
+    const auto r = parse_formula(text);
+    ASSERT_TRUE(r.ok()) << text << ": " << (r.diagnostics.empty() ? "" : r.diagnostics[0].str());
+    EXPECT_EQ(to_string(r.formula), printed) << text;
+  }
+}
+
+TEST(ParserIec, ErrorsSayWhatIsAccepted) {
+  const auto r = parse_formula("AG !(V2 ++ V4)");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.diagnostics[0].message.find("operators accepted: ! NOT, & AND, | OR"),
+            std::string::npos)
+      << r.diagnostics[0].message;
+  const auto unclosed = parse_formula("AG !(V2 & V4");
+  ASSERT_FALSE(unclosed.ok());
+  EXPECT_NE(unclosed.diagnostics[0].message.find("expected ')'"), std::string::npos);
+  EXPECT_NE(unclosed.diagnostics[0].message.find("MOD"), std::string::npos);
+  // The keywords are reserved, as in ST: no operand may bear their name.
+  EXPECT_FALSE(parse_formula("AG and").ok());
+  EXPECT_FALSE(parse_formula("AG (a & MOD)").ok());
+  // A number is no formula; comparisons do not chain.
+  EXPECT_FALSE(parse_formula("AG (level + 1)").ok());
+  EXPECT_FALSE(parse_formula("AG (a < b < c)").ok());
+}
+
 }  // namespace
 }  // namespace sfcv::logic

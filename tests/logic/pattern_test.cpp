@@ -99,7 +99,8 @@ TEST(PatternTranslation, ArgumentsMayNestParenthesesCommentsAndHistory) {
 TEST(PatternErrors, NamesArityScopesAndBoundsWithLocations) {
   EXPECT_EQ(error("respond(a, b)"),
             "--pattern:1:1: error: unknown pattern 'respond' (known: always, never, "
-            "implies, next_cycle, between_cycles, infinitely_often, never_before, "
+            "implies, next_cycle, between_cycles, statechange_duringcycle, leadsto, "
+            "infinitely_often, never_before, "
             "reachable, repeatable, absence, universality, existence, precedence, response)");
   EXPECT_EQ(error("response(a)"),
             "--pattern:1:1: error: pattern 'response' takes 2 arguments, found 1: "
@@ -117,7 +118,9 @@ TEST(PatternErrors, NamesArityScopesAndBoundsWithLocations) {
             "pattern");
   EXPECT_EQ(error("absence(a, between b)"), "--pattern:1:21: error: expected 'between Q and R'");
   EXPECT_EQ(error("absence(a & , before b)"),
-            "--pattern:1:12: error: expected a formula, found end of input");
+            "--pattern:1:12: error: expected a formula, found end of input; operators accepted: ! "
+            "NOT, & AND, | OR, xor XOR, ->, <->, EX AX EF AF EG AG, E[p U q] A[p U q], = <> != < "
+            "<= > >=, + - * / MOD, prev() rise() fall()");
   EXPECT_EQ(error("absence(AG a)"),
             "--pattern:1:9: error: a pattern's arguments are propositional formulas (no temporal "
             "operator): AG a");

@@ -33,6 +33,7 @@ Bdd SymbolicCtl::compute(const logic::Formula& f) {
     case Op::False:
     case Op::Atom:
     case Op::Compare:
+    case Op::Relation:
       return sys_.atom(f);
     case Op::Not:
       return !arg(0);
@@ -72,6 +73,15 @@ Bdd SymbolicCtl::compute(const logic::Formula& f) {
     case Op::R:
     case Op::W:
       break;  // LTL: can_handle refuses it (logic::first_ltl_property)
+    case Op::Value:
+    case Op::Number:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      break;  // terms: only inside a Relation
   }
   throw std::logic_error("symbolic CTL labelling of an LTL operator: " + logic::to_string(f));
 }

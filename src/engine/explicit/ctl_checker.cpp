@@ -76,6 +76,14 @@ StateSet CtlChecker::compute(const Formula& f) {
       }
       return r;
     }
+    case Op::Relation: {
+      StateSet r(n, 0);
+      for (std::uint32_t s = 0; s < n; ++s) {
+        const auto state = g_.states().at(s);
+        r[s] = logic::relation_holds(f, [&](std::uint32_t o) { return ts.observe(state, o); });
+      }
+      return r;
+    }
     case Op::Not:
       return negate(arg(0));
     case Op::And:
@@ -118,6 +126,15 @@ StateSet CtlChecker::compute(const Formula& f) {
     case Op::R:
     case Op::W:
       break;  // LTL: path formulas, checked by ltl_checker.hpp, never labelled on states
+    case Op::Value:
+    case Op::Number:
+    case Op::Neg:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      throw InternalError("CTL labelling of a term: " + logic::to_string(f));
   }
   throw InternalError("CTL labelling of an LTL operator: " + logic::to_string(f));
 }

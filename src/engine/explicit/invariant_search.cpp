@@ -112,6 +112,8 @@ bool holds(const logic::Formula& f, const semantics::TransitionSystem& ts, State
     case Op::Compare:
       return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
                             f.value);
+    case Op::Relation:
+      return logic::relation_holds(f, [&](std::uint32_t o) { return ts.observe(s, o); });
     case Op::Not:
       return !holds(*a[0], ts, s);
     case Op::And:
@@ -162,7 +164,7 @@ class FormulaMemo {
  private:
   static bool collect_bits(const logic::Formula& f, const semantics::TransitionSystem& ts,
                            const StateCodec* codec, std::vector<std::uint32_t>& bits) {
-    if (f.op == Op::Atom || f.op == Op::Compare) {
+    if (logic::names_observable(f.op)) {
       if (f.observable < 0) return false;
       const auto fields = ts.observed_fields(static_cast<std::uint32_t>(f.observable));
       if (!fields) return false;

@@ -108,6 +108,9 @@ class Builder {
         return aig.make_xnor(literal(*f.args[0]), literal(*f.args[1]));
       case Op::Xor:
         return aig.make_xor(literal(*f.args[0]), literal(*f.args[1]));
+      case Op::Relation:
+        throw ExportError("the comparison of two expressions '" + logic::to_string(f) +
+                          "' is not exported yet: check it with the explicit, bdd or SAT engines");
       default:
         throw ExportError("a temporal operator inside a state formula");
     }
@@ -116,6 +119,7 @@ class Builder {
   // The formula with every atom replaced by `{k}`, k the index of its circuit output (NuSMV
   // syntax via to_string): a number, so that no chart name reaches the formula text.
   logic::FormulaPtr with_output_atoms(const logic::Formula& f) {
+    if (f.op == logic::Op::Relation) literal(f);  // refused, by name
     if (f.op == logic::Op::Atom || f.op == logic::Op::Compare) {
       atom(f);
       return logic::make_atom("{" + std::to_string(output_index_.at(output_name(f))) + "}");

@@ -88,6 +88,8 @@ bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
     case Op::Compare:
       return logic::compare(f.cmp, ts.observe(s, static_cast<std::uint32_t>(f.observable)),
                             f.value);
+    case Op::Relation:
+      return logic::relation_holds(f, [&](std::uint32_t o) { return ts.observe(s, o); });
     case Op::Not:
       return !arg(0);
     case Op::And:
