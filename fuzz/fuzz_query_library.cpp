@@ -61,7 +61,8 @@ const Fixture& fixture() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto split = text.find("\n%%\n");
-  const auto library_text = split == std::string_view::npos ? std::string_view{} : text.substr(0, split);
+  const auto library_text =
+      split == std::string_view::npos ? std::string_view{} : text.substr(0, split);
   const auto query_text = split == std::string_view::npos ? text : text.substr(split + 4);
   const auto& f = fixture();
   try {

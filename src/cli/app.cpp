@@ -62,6 +62,7 @@ int run(int argc, char** argv) {
     // An unknown word: name it and the closest known one, instead of CLI11's generic message.
     if (const auto hint = usage_hint(app, std::vector<std::string>(argv + 1, argv + argc))) {
       std::cerr << "sfcv: error: " << *hint << "\n";
+      if (wants_json(argc, argv)) write_json_error(std::cout, "usage", *hint, kBadInput);
       return kBadInput;
     }
     app.exit(e);

@@ -1,5 +1,5 @@
 #pragma once
-// Internal header of sfcv_cli (only src/cli includes it; cmake/CheckInternalHeaders.cmake).
+// Public within sfcv_cli for its tests (tests/cli/progress_line_test.cpp).
 // The progress of a long run on standard error, for every phase: the library reports through
 // model::Budget::progress; a ticker thread prints what was last reported, so that a phase that
 // reports nothing (loading, building) still shows its name and time. Nothing before ~2 s; then

@@ -60,6 +60,8 @@ std::string stuck_diagnosis(const logic::CheckReport& report,
       "every cycle in the program (or check its POU alone with --pou), and check that the "
       "conditions of the initial steps' transitions read inputs.\n";
   return out;
+}
+
 bool from_command_line(const logic::PropertyResult& r) {
   const auto& f = r.where.file;
   return f.empty() || f == "--ctl" || f == "--ltl" || f == "--pattern";

