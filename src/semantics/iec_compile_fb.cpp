@@ -179,7 +179,10 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
 void Compiler::finish_timers() {
   // ET after a PT := 0 call is 0 (IEC: ET stops at PT), not the running timer's: not modelled.
   // (A TON whose calls all give PT := 0 is a timer of PT 0; the flag changes nothing there.)
-  for (const auto& [index, where] : zero_pt) {
+  for (const auto& entry : zero_pt) {
+    // Plain names: clang 15 refuses a lambda capturing a structured binding.
+    const auto& index = entry.first;
+    const auto& where = entry.second;
     if (!p.fbs[index].pt_set) continue;
     const bool et_read = std::any_of(p.nodes.begin(), p.nodes.end(), [&](const auto& n) {
       return n.op == Op::TimerET && n.a == index;
