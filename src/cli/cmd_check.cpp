@@ -174,11 +174,10 @@ std::vector<OutputPath> output_paths(const CheckOptions& o) {
           {o.html, "--html"}};
 }
 
-/// After SIGINT or SIGTERM: what the engines had not decided is unknown for that reason (the
-/// engines saw the signal as a cancel, which they word as a time limit), limit "interrupted".
-void mark_interrupted(logic::CheckReport& result) {
-  const std::string why =
-      std::string("interrupted by ") + interrupt_signal_name() + " before an answer was certain";
+/// The run was stopped from outside the engines (a signal, the memory watchdog), which they saw
+/// as a cancel and word as a time limit: what they had not decided is unknown for `why`, and
+/// the report's limit is `limit`.
+void mark_stopped(logic::CheckReport& result, const std::string& why, const std::string& limit) {
   bool undecided = false;
   for (auto& r : result.results)
     if (r.verdict == logic::Verdict::Unknown) {
@@ -187,8 +186,15 @@ void mark_interrupted(logic::CheckReport& result) {
     }
   if (undecided || !result.complete) {
     result.complete = false;
-    result.limit = "interrupted";
+    result.limit = limit;
   }
+}
+
+/// "memory limit reached (the process held N MiB)": the watchdog's words, in the report and
+/// in the one-line answer of a run stopped while loading.
+std::string memory_limit_text(const MemoryWatchdog& watchdog) {
+  return "memory limit reached (the process held " + std::to_string(watchdog.seen_bytes() >> 20) +
+         " MiB)";
 }
 
 /// SARIF URIs are relative to --sarif-root, by default the git work tree around the working
@@ -241,23 +247,6 @@ report::Provenance check_provenance(const CheckOptions& o, const std::string& se
   if (!o.fair.empty()) s.emplace_back("fair", joined(o.fair));
   if (!o.assume.empty()) s.emplace_back("assume", joined(o.assume));
   return p;
-}
-
-/// The process went past --memory: what is undecided is unknown for that reason.
-void mark_memory_exceeded(logic::CheckReport& result, const MemoryWatchdog& watchdog) {
-  const std::string why = "memory limit reached (the process held " +
-                          std::to_string(watchdog.seen_bytes() >> 20) +
-                          " MiB) before an answer was certain";
-  bool undecided = false;
-  for (auto& r : result.results)
-    if (r.verdict == logic::Verdict::Unknown) {
-      r.message = why;
-      undecided = true;
-    }
-  if (undecided || !result.complete) {
-    result.complete = false;
-    result.limit = to_string(Limit::Memory);
-  }
 }
 
 int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
@@ -359,9 +348,13 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
     result = logic::unknown_report(task, o.engine, e);
   }
   if (interrupted())
-    mark_interrupted(result);
+    mark_stopped(
+        result,
+        std::string("interrupted by ") + interrupt_signal_name() + " before an answer was certain",
+        "interrupted");
   else if (watchdog.tripped())
-    mark_memory_exceeded(result, watchdog);
+    mark_stopped(result, memory_limit_text(watchdog) + " before an answer was certain",
+                 to_string(Limit::Memory));
   progress.phase("render");
   logic::answer_vacuity(result, vacuity, num_properties);
   refuse_if_nothing_decided(result, o.engine);
@@ -443,9 +436,8 @@ int run_check(const CheckOptions& o) {
   } catch (const LimitReached& e) {
     // Interrupted, or out of memory, while loading or building: no question was asked yet.
     if (watchdog.tripped() && !interrupted())
-      throw LimitReached(Limit::Memory, "memory limit reached (the process held " +
-                                            std::to_string(watchdog.seen_bytes() >> 20) +
-                                            " MiB) while loading or building the model");
+      throw LimitReached(Limit::Memory,
+                         memory_limit_text(watchdog) + " while loading or building the model");
     if (!interrupted()) throw;
     throw LimitReached(e.which(), std::string(interrupt_signal_name()) + ": " + e.what());
   }
