@@ -46,8 +46,9 @@ io::Format parse_format(const std::string& name) {
   if (name == "g7") return io::Format::G7;
   if (name == "agrafe" || name == "grafcet") return io::Format::AgrafeXmi;
   if (name == "twincat") return io::Format::TwinCat;
+  if (name == "l5x" || name == "rockwell") return io::Format::L5x;
   throw InputError("unknown format '" + name +
-                   "' (expected auto, xml, iec, g7, agrafe or twincat)");
+                   "' (expected auto, xml, iec, g7, agrafe, twincat or l5x)");
 }
 
 }  // namespace sfcv::cli

@@ -25,8 +25,6 @@ std::optional<std::string> unread_vendor_format(const std::string& path, std::st
   const std::string tail = "; export the program as PLCopen XML (docs/formats.md)";
   if (ends_with(path, ".export") || has("<ExportFile"))
     return "CODESYS native export (<ExportFile>) is not read" + tail;
-  if (ends_with(path, ".l5x") || has("<RSLogix5000Content"))
-    return "Rockwell Studio 5000 L5X is not read" + tail;
   if (has("<SW.Blocks.") || (has("<Document") && has("<Engineering")))
     return "Siemens TIA Portal SimaticML (S7-GRAPH) is not read" + tail;
   return std::nullopt;
@@ -36,6 +34,9 @@ Format detect_format(const std::string& path, std::string_view text) {
   if (ends_with(path, ".tcpou") || ends_with(path, ".tcgvl") || ends_with(path, ".tcdut"))
     return Format::TwinCat;
   if (ends_with(path, ".plcproj")) return Format::TwinCatProject;
+  if (ends_with(path, ".l5x") ||
+      text.substr(0, 4096).find("<RSLogix5000Content") != std::string_view::npos)
+    return Format::L5x;
   if (text.find("<TcPlcObject") != std::string_view::npos) return Format::TwinCat;
   if (ends_with(path, ".g7")) return Format::G7;
   if (ends_with(path, ".grafcet")) return Format::AgrafeXmi;
@@ -92,6 +93,8 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
       return load_twincat(text, path, budget);
     case Format::TwinCatProject:
       return load_twincat_project(path, budget);
+    case Format::L5x:
+      return load_l5x(text, path, budget);
     case Format::Auto:
       break;
   }

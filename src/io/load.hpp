@@ -12,7 +12,7 @@
 
 namespace sfcv::io {
 
-enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi, TwinCat, TwinCatProject };
+enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi, TwinCat, TwinCatProject, L5x };
 
 struct LoadResult {
   std::optional<model::Project> project;  ///< empty when an error prevented building a model
@@ -47,8 +47,12 @@ LoadResult load_twincat(std::string_view text, const std::string& file,
 /// with Format::TwinCat.
 LoadResult load_twincat_project(const std::string& path, const model::Budget* budget = nullptr);
 
-/// Vendor formats sfcv recognises but does not read (CODESYS native .export, SimaticML,
-/// Rockwell L5X): the reason naming the format, or nullopt.
+/// A Rockwell Studio 5000 export (.L5X): its programs with an SFC main routine; docs/formats.md.
+LoadResult load_l5x(std::string_view text, const std::string& file,
+                    const model::Budget* budget = nullptr);
+
+/// Vendor formats sfcv recognises but does not read (CODESYS native .export, SimaticML): the reason
+/// naming the format, or nullopt.
 std::optional<std::string> unread_vendor_format(const std::string& path, std::string_view text);
 
 }  // namespace sfcv::io

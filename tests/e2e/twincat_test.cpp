@@ -53,10 +53,11 @@ TEST(TwinCatE2E, DemoChartAndItsPlcopenTwinGiveTheSameVerdicts) {
 }
 
 TEST(TwinCatE2E, UnreadVendorFormatIsExitTwoNamingIt) {
-  const auto file = write_temp("<?xml version=\"1.0\"?><RSLogix5000Content/>", ".L5X");
+  const auto file = write_temp("<?xml version=\"1.0\"?><ExportFile/>", ".export");
   const auto r = run_sfcv("check " + file);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("Rockwell Studio 5000 L5X is not read"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("CODESYS native export (<ExportFile>) is not read"), std::string::npos)
+      << r.err;
 }
 
 // ---------------------------------------------------------------- the public Fraktal sample
