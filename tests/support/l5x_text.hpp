@@ -1,0 +1,163 @@
+#pragma once
+// A Rockwell Studio 5000 .L5X export written in the vendor's shape for tests (the layout of
+// public exports such as francisboudreau7/l5x_sfc tests/MainProgram.L5X: Step, Transition and
+// Branch elements, then the DirectedLinks), never copied from one; and the demo chart with its
+// IEC 61131-3 text twin.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sfcv::test::rockwell {
+
+inline std::string st(const std::vector<std::string>& lines) {
+  std::string s = "<STContent>\n";
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    s += "<Line Number=\"" + std::to_string(i) + "\">\n<![CDATA[" + lines[i] + "]]>\n</Line>\n";
+  return s + "</STContent>\n";
+}
+
+inline std::string step(int id, const std::string& name, bool initial, int x = 200,
+                        const std::string& actions = "") {
+  return "<Step ID=\"" + std::to_string(id) + "\" X=\"" + std::to_string(x) +
+         "\" Y=\"100\" Operand=\"" + name + "\" HideDesc=\"false\" InitialStep=\"" +
+         (initial ? "true" : "false") + "\" PresetUsesExpr=\"false\" ShowActions=\"true\"" +
+         (actions.empty() ? "/>\n" : ">\n" + actions + "</Step>\n");
+}
+
+inline std::string action(int id, const std::string& name, const std::vector<std::string>& body,
+                          const std::string& qualifier = "NonStored") {
+  return "<Action ID=\"" + std::to_string(id) + "\" Operand=\"" + name + "\" Qualifier=\"" +
+         qualifier + "\" IsBoolean=\"false\" PresetUsesExpr=\"false\">\n<Body>\n" + st(body) +
+         "</Body>\n</Action>\n";
+}
+
+inline std::string transition(int id, const std::string& name, const std::string& condition,
+                              int x = 200) {
+  return "<Transition ID=\"" + std::to_string(id) + "\" X=\"" + std::to_string(x) +
+         "\" Y=\"300\" Operand=\"" + name + "\" HideDesc=\"false\">\n<Condition>\n" +
+         st({condition}) + "</Condition>\n</Transition>\n";
+}
+
+inline std::string branch(int id, const char* type, const char* flow, int leg1, int leg2) {
+  return "<Branch ID=\"" + std::to_string(id) + "\" Y=\"500\" BranchType=\"" + type +
+         "\" BranchFlow=\"" + flow + "\">\n<Leg ID=\"" + std::to_string(leg1) + "\"/>\n<Leg ID=\"" +
+         std::to_string(leg2) + "\"/>\n</Branch>\n";
+}
+
+inline std::string links(const std::vector<std::pair<int, int>>& ls) {
+  std::string s;
+  for (const auto& [from, to] : ls)
+    s += "<DirectedLink FromID=\"" + std::to_string(from) + "\" ToID=\"" + std::to_string(to) +
+         "\" Show=\"true\"/>\n";
+  return s;
+}
+
+inline std::string alias(const std::string& name, const std::string& io) {
+  return "<Tag Name=\"" + name + "\" TagType=\"Alias\" Radix=\"Decimal\" AliasFor=\"" + io +
+         "\" ExternalAccess=\"Read/Write\"/>\n";
+}
+
+inline std::string bool_tag(const std::string& name, int value) {
+  return "<Tag Name=\"" + name +
+         "\" TagType=\"Base\" DataType=\"BOOL\" Radix=\"Decimal\" Constant=\"false\">\n"
+         "<Data Format=\"L5K\">\n<![CDATA[" +
+         std::to_string(value) +
+         "]]>\n</Data>\n<Data Format=\"Decorated\">\n<DataValue DataType=\"BOOL\" "
+         "Radix=\"Decimal\" "
+         "Value=\"" +
+         std::to_string(value) + "\"/>\n</Data>\n</Tag>\n";
+}
+
+inline std::string sfc_tag(const std::string& name, const char* type) {
+  return "<Tag Name=\"" + name + "\" TagType=\"Base\" DataType=\"" + type +
+         "\" Constant=\"false\"/>\n";
+}
+
+inline std::string l5x(
+    const std::string& tags, const std::string& sfc,
+    const std::string& controller_attributes =
+        " SFCExecutionControl=\"CurrentActive\" SFCRestartPosition=\"MostRecent\" "
+        "SFCLastScan=\"DontScan\"") {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n"
+         "<RSLogix5000Content SchemaRevision=\"1.0\" SoftwareRevision=\"32.01\" "
+         "TargetName=\"Press\" TargetType=\"Program\" ContainsContext=\"true\">\n"
+         "<Controller Use=\"Context\" Name=\"Plant\"" +
+         controller_attributes +
+         ">\n<DataTypes Use=\"Context\">\n</DataTypes>\n<Tags Use=\"Context\">\n</Tags>\n"
+         "<Programs Use=\"Context\">\n<Program Use=\"Target\" Name=\"Press\" "
+         "MainRoutineName=\"Chart\" Disabled=\"false\" UseAsFolder=\"false\">\n<Tags>\n" +
+         tags + "</Tags>\n<Routines>\n<Routine Name=\"Chart\" Type=\"SFC\">\n<SFCContent>\n" + sfc +
+         "</SFCContent>\n</Routine>\n</Routines>\n</Program>\n</Programs>\n</Controller>\n"
+         "</RSLogix5000Content>\n";
+}
+
+inline std::string demo_tags() {
+  return alias("start", "Local:1:I.Data.0") + alias("stop", "Local:1:I.Data.1") +
+         alias("a", "Local:1:I.Data.2") + alias("lamp", "Local:1:O.Data.0") +
+         alias("valve", "Local:1:O.Data.1") + bool_tag("m", 0) + sfc_tag("Init", "SFC_STEP") +
+         sfc_tag("A_Init", "SFC_ACTION");
+}
+
+// Init -> (selection) S1 | S2 -> Merge -> (simultaneous) P1 & P2 -> Init.
+inline std::string demo_sfc() {
+  return step(0, "Init", true, 200, action(1, "A_Init", {"lamp := FALSE;", "m := FALSE;"})) +
+         step(2, "S1", false, 100, action(3, "A_S1", {"lamp := TRUE;"})) +
+         step(4, "S2", false, 400, action(5, "A_S2", {"m := TRUE;", ""})) +
+         step(6, "Merge", false) +
+         step(7, "P1", false, 100, action(8, "A_P1", {"valve := TRUE;"})) +
+         step(9, "P2", false, 400) +
+         // the right leg's transition comes first in the file: the left one is still tried first
+         transition(21, "Tran_001", "stop;", 400) + transition(20, "Tran_000", "start AND a", 100) +
+         transition(22, "Tran_002", "NOT a", 100) +
+         transition(23, "Tran_003", "S2.X AND NOT stop;", 400) +
+         transition(24, "Tran_004", "TRUE") + transition(25, "Tran_005", "NOT start") +
+         branch(30, "Selection", "Diverge", 31, 32) + branch(33, "Selection", "Converge", 34, 35) +
+         branch(36, "Simultaneous", "Diverge", 37, 38) +
+         branch(39, "Simultaneous", "Converge", 40, 41) +
+         links({{0, 30},
+                {31, 20},
+                {32, 21},
+                {20, 2},
+                {21, 4},
+                {2, 22},
+                {4, 23},
+                {22, 34},
+                {23, 35},
+                {33, 6},
+                {6, 24},
+                {24, 36},
+                {37, 7},
+                {38, 9},
+                {7, 40},
+                {9, 41},
+                {39, 25},
+                {25, 0}});
+}
+
+inline std::string demo_twin() {
+  return R"(PROGRAM Press
+  VAR_INPUT start, stop, a : BOOL; END_VAR
+  VAR_OUTPUT lamp, valve : BOOL; END_VAR
+  VAR m : BOOL := FALSE; END_VAR
+  INITIAL_STEP Init: A_Init(N); END_STEP
+  STEP S1: A_S1(N); END_STEP
+  STEP S2: A_S2(N); END_STEP
+  STEP Merge: END_STEP
+  STEP P1: A_P1(N); END_STEP
+  STEP P2: END_STEP
+  TRANSITION Tran_000 FROM Init TO S1 := start AND a; END_TRANSITION
+  TRANSITION Tran_001 FROM Init TO S2 := stop; END_TRANSITION
+  TRANSITION Tran_002 FROM S1 TO Merge := NOT a; END_TRANSITION
+  TRANSITION Tran_003 FROM S2 TO Merge := S2.X AND NOT stop; END_TRANSITION
+  TRANSITION Tran_004 FROM Merge TO (P1, P2) := TRUE; END_TRANSITION
+  TRANSITION Tran_005 FROM (P1, P2) TO Init := NOT start; END_TRANSITION
+  ACTION A_Init: lamp := FALSE; m := FALSE; END_ACTION
+  ACTION A_S1: lamp := TRUE; END_ACTION
+  ACTION A_S2: m := TRUE; END_ACTION
+  ACTION A_P1: valve := TRUE; END_ACTION
+END_PROGRAM
+)";
+}
+
+}  // namespace sfcv::test::rockwell
