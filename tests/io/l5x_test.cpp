@@ -138,6 +138,39 @@ TEST(L5x, RockwellConstructsWithoutAModelAreRefusedByName) {
                  "alias tag 'w' for 'Local:1:I.Data'");
 }
 
+TEST(L5x, TagsGiveTypesAndInitialValues) {
+  const auto r = io::load_l5x(l5x(demo_tags() + bool_tag("ready", 1) +
+                                      "<Tag Name=\"count\" TagType=\"Base\" DataType=\"DINT\">\n"
+                                      "<Data Format=\"Decorated\">\n<DataValue DataType=\"DINT\" "
+                                      "Value=\"-7\"/>\n</Data>\n</Tag>\n" +
+                                      "<Tag Name=\"t1\" TagType=\"Base\" DataType=\"TIMER\"/>\n",
+                                  demo_sfc()),
+                              "P.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous[0];
+  ASSERT_NE(pou.find_variable("ready"), nullptr);
+  EXPECT_EQ(pou.find_variable("ready")->initial, 1);
+  ASSERT_NE(pou.find_variable("count"), nullptr);
+  EXPECT_EQ(pou.find_variable("count")->initial, -7);
+  EXPECT_EQ(pou.find_variable("count")->type.lo, -2147483648LL);
+  // A TIMER is left out, said in a note: a use of it would be an error.
+  EXPECT_EQ(pou.find_variable("t1"), nullptr);
+  EXPECT_NE(errors_of(r).find("tag 't1' of type TIMER is not modelled"), std::string::npos);
+}
+
+TEST(L5x, DrawingsWithoutOneReadingAreRefused) {
+  // Two transitions of one selection branch at the same X: no left-to-right order.
+  auto sfc = demo_sfc();
+  sfc.replace(sfc.find("X=\"400\" Y=\"300\" Operand=\"Tran_001\""), 7, "X=\"100\"");
+  expect_refused(l5x(demo_tags(), sfc), "drawn at the same X");
+  // A step with two outgoing links (alternatives without a selection branch).
+  expect_refused(
+      l5x(demo_tags(), demo_sfc() + transition(60, "Tran_060", "a") + links({{6, 60}, {60, 0}})),
+      "step 'Merge' has 2 outgoing links");
+  // A link to an ID that is not in the chart.
+  expect_refused(l5x(demo_tags(), demo_sfc() + links({{9, 99}})), "unknown ID '99'");
+}
+
 TEST(L5x, MissingSfcOptionsAreAssumedAloud) {
   const auto r = io::load_l5x(l5x(demo_tags(), demo_sfc(), ""), "P.L5X");
   ASSERT_TRUE(r.ok()) << errors_of(r);
