@@ -575,7 +575,7 @@ class L5xReader {
         ctx_.note(r, "routine '" + name + "' (" + type + ") is not the main routine: not read");
       }
     }
-    if (!main.empty() && !main_seen && project_.where.file.size() && !is_true(p, "UseAsFolder"))
+    if (!main.empty() && !main_seen)
       ctx_.error(p,
                  "program '" + pou.name + "': its main routine '" + main + "' is not in the file");
     project_.pous.push_back(std::move(pou));
