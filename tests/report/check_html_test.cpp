@@ -33,7 +33,7 @@ TEST(CheckHtml, SummaryChartAndPlayerData) {
   EXPECT_NE(html.find("x &lt; y"), std::string::npos);                   // escaped
   EXPECT_NE(html.find("<summary>1 more</summary>"), std::string::npos);  // f3 folded away
   EXPECT_NE(html.find("3 of 25 findings shown; --all for every one"), std::string::npos);
-  EXPECT_NE(html.find("data-property=\"0\">counterexample (1 situations)</a>"), std::string::npos);
+  EXPECT_NE(html.find("data-property=\"0\">counterexample (1 situation)</a>"), std::string::npos);
   EXPECT_NE(html.find("<svg id=\"chart\"></svg>"), std::string::npos);
   EXPECT_NE(html.find("\"steps\":{\"P.S0\":\"p0c0s0\"}"), std::string::npos);
   // Data inside <script> cannot close it early; nothing is fetched from the network.
