@@ -19,8 +19,8 @@ std::string html_page_nav(const std::vector<std::pair<std::string, std::string>>
 /// slashes as dashes ("not checked" -> not-checked, "n/a" -> n-a).
 std::string html_verdict(const std::string& verdict);
 
-/// The script of the pictures (#chart-svg, #situations-svg), after the page's own: they come fitted to
-/// their boxes, a click toggles the natural size; a picture whose fitted text would be smaller
+/// The script of the pictures (#chart-svg, #situations-svg), after the page's own: they come fitted
+/// to their boxes, a click toggles the natural size; a picture whose fitted text would be smaller
 /// than 9 px (a wide chart on a phone) starts at its natural size, scrolled in its own box.
 std::string html_pictures_script();
 
