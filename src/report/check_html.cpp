@@ -144,6 +144,14 @@ std::string chart_section(const HtmlReport& report) {
 
 /// One query's answer: its value or its set, the elements listed (the first ones shown, the
 /// rest folded away).
+/// "1 situation", "12 situations", "0 steps": a set's count with its sort's noun ("empty": the
+/// empty set's sort, no noun to agree).
+std::string set_count(std::uint64_t n, const std::string& sort) {
+  if (sort.size() > 1 && sort.back() == 's')
+    return counted(n, sort.substr(0, sort.size() - 1), sort);
+  return std::to_string(n) + " " + sort;
+}
+
 std::string query_row(const json& q) {
   constexpr std::size_t kShown = 10, kListed = 200;  // shown, then folded; the JSON has all
   const std::string sort = str(q, "sort");
@@ -151,12 +159,12 @@ std::string query_row(const json& q) {
   if (sort == "test") {
     answer = q.value("value", false) ? "true" : "false";
     if (q.contains("count"))
-      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " +
-                html_escape(str(q, "witness_sort"));
+      answer += ", witness: " +
+                html_escape(set_count(q["count"].get<std::uint64_t>(), str(q, "witness_sort")));
   } else if (sort == "number") {
     answer = std::to_string(q["value"].get<std::int64_t>());
   } else {
-    answer = std::to_string(q.value("count", 0ULL)) + " " + html_escape(sort);
+    answer = html_escape(set_count(q.value("count", 0ULL), sort));
   }
   std::string shown, more;
   std::size_t n = 0;
