@@ -4,6 +4,8 @@
 include(GNUInstallDirs)
 install(TARGETS sfcv RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(FILES share/sfcv/properties.sfq share/sfcv/patterns.spec share/sfcv/check-result.schema.json
+              share/sfcv/info.schema.json share/sfcv/lint.schema.json share/sfcv/query.schema.json
+              share/sfcv/rsg.schema.json
         DESTINATION ${CMAKE_INSTALL_DATADIR}/sfcv)
 install(FILES docs/man/sfcv.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES share/completions/sfcv.bash

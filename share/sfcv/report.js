@@ -7,15 +7,15 @@
 (function () {
   "use strict";
   const data = JSON.parse(document.getElementById("sfcv-data").textContent);
+  // "&test" in the hash asks for the layout probe the browser tests read (html_page.cpp): kept
+  // when the player rewrites the hash.
+  const testing = /(^#|&)test(&|=|$)/.test(location.hash) ? "&test" : "";
   const traces = data.result.properties
     .map((p, i) => ({ property: p, index: i }))
     .filter((x) => x.property.trace && x.property.trace.steps.length > 0);
   const player = document.getElementById("player");
-  // The chart and the situation graph come fitted to their boxes; a click toggles the natural size.
-  ["chart-svg", "situations-svg"].forEach((id) => {
-    const box = document.getElementById(id);
-    if (box) box.addEventListener("click", () => box.classList.toggle("fit"));
-  });
+  // The pictures' zoom (fitted, or natural size when the fitted text would be too small) is the
+  // shared script of every page (html_page.cpp, html_pictures_script).
   const situations = document.getElementById("situations-svg");
   if (traces.length === 0) return;
   player.hidden = false;
@@ -54,18 +54,23 @@
     });
     mark(step.active_steps, data.nodes.steps, "active");
     mark(step.fired, data.nodes.transitions, "fired");
+    const first = document.querySelector("#chart-svg g.active, #chart-svg g.fired");
+    if (first) follow($("chart-svg"), first);
     // Grafcet: the cycle's step situation on the situation graph.
     document.querySelectorAll("#situations-svg g.active").forEach((g) => g.classList.remove("active"));
     const situation = (data.nodes.situations || {})[step.active_steps.slice().sort().join(",")];
     const node = situation && document.getElementById(situation);
     if (node) {
       node.classList.add("active");
-      if (situations.classList.contains("fit")) return;
-      // Scroll the graph's own box (not the page) to the situation.
-      const box = $("situations-svg"), r = node.getBoundingClientRect(), b = box.getBoundingClientRect();
-      if (r.left < b.left || r.right > b.right) box.scrollLeft += r.left - b.left - (b.width - r.width) / 2;
-      if (r.top < b.top || r.bottom > b.bottom) box.scrollTop += r.top - b.top - (b.height - r.height) / 2;
+      follow(situations, node);
     }
+  }
+  // Scroll a picture's own box (not the page) to a node out of its view.
+  function follow(box, node) {
+    if (!box || box.classList.contains("fit")) return;
+    const r = node.getBoundingClientRect(), b = box.getBoundingClientRect();
+    if (r.left < b.left || r.right > b.right) box.scrollLeft += r.left - b.left - (b.width - r.width) / 2;
+    if (r.top < b.top || r.bottom > b.bottom) box.scrollTop += r.top - b.top - (b.height - r.height) / 2;
   }
 
   // A qualified name ("Plant.V2") whose short form ("V2", the property's atom) is also a value
@@ -124,6 +129,8 @@
     const svg = document.createElementNS(svgNS, "svg");
     svg.setAttribute("width", LABEL + n * W + 10);
     svg.setAttribute("height", (sigs.length + 1) * H + 6);
+    // Scales when printed (report.css); on screen the box scrolls instead.
+    svg.setAttribute("viewBox", "0 0 " + (LABEL + n * W + 10) + " " + ((sigs.length + 1) * H + 6));
     svg.id = "waveform-svg";
     const add = (tag, attrs, content) => {
       const el = document.createElementNS(svgNS, tag);
@@ -174,7 +181,7 @@
     $("first").disabled = cycle === 0;
     $("next").disabled = cycle === t.steps.length - 1;
     $("last").disabled = cycle === t.steps.length - 1;
-    history.replaceState(null, "", "#trace=" + current + "&cycle=" + cycle);
+    history.replaceState(null, "", "#trace=" + current + "&cycle=" + cycle + testing);
   }
 
   function load(i, k) {

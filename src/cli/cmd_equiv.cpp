@@ -51,6 +51,7 @@ struct EquivOptions {
   bool json = false;
   std::string trace = "table";
   std::string trace_file;
+  std::string html;
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -145,7 +146,8 @@ int run_equiv(const EquivOptions& o) {
   if (o.trace != "table" && o.trace != "json" && o.trace != "vcd" && o.trace != "none")
     throw UsageError("bad --trace '" + o.trace + "' (expected table, json, vcd or none)");
   const OutputPath trace_out{o.trace_file, "--trace-file"};
-  check_output_paths({trace_out});
+  const OutputPath html_out{o.html, "--html"};
+  check_output_paths({trace_out, html_out});
   model::Budget budget = make_budget(o.limits);
   budget.cancel = interrupt_flag();
 
@@ -227,6 +229,9 @@ int run_equiv(const EquivOptions& o) {
     }
     write_output(trace_out, text);
   }
+  if (!o.html.empty())
+    write_output(html_out,
+                 report::equivalence_html(report::equivalence_json(run, product, *system)));
   if (o.json)
     std::cout << report::equivalence_json(run, product, *system).dump(2) << "\n";
   else
@@ -274,6 +279,8 @@ void add_equiv_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--trace", opts->trace,
                   "Format of --trace-file: table (default), json, vcd or none");
   sub->add_option("--trace-file", opts->trace_file, "Write the first counterexample there");
+  sub->add_option("--html", opts->html,
+                  "Write the result as one HTML page, each counterexample side by side");
   sub->footer(
       "Exit codes: 0 equivalent, 1 some compared signal differs, 2 bad usage or input "
       "(mismatched input types, a Grafcet side, globals both declare), 3 unknown, 4 internal "

@@ -91,7 +91,8 @@ int run_rsg(const RsgOptions& o) {
   if (!o.dot_states.empty()) write_output(dot_states, report::state_graph_dot(g, *ts));
   for (const auto& line : report::anomaly_lines(g, *ts, o.model)) std::cerr << line << "\n";
   if (!g.complete()) {
-    (dot_to_stdout ? std::cerr : std::cout)
+    // Under --json standard output holds the JSON document alone (its "complete" and "limit").
+    (dot_to_stdout || o.json ? std::cerr : std::cout)
         << "unknown: the " << g.limit_reached() << " limit was reached after " << g.num_states()
         << " states; the graph is incomplete\n";
     return kUnknown;

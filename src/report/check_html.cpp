@@ -7,7 +7,9 @@
 
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "report/graphviz_svg.hpp"
+#include "report/html_page.hpp"
 #include "report/markup.hpp"
+#include "report/numbers.hpp"
 #include "report/provenance.hpp"
 #include "report/report_assets.hpp"
 #include "report/situation_graph_dot.hpp"
@@ -68,9 +70,6 @@ std::string summary(const json& result) {
   for (std::size_t i = 0; i < props.size(); ++i) {
     const auto& p = props[i];
     const std::string verdict = str(p, "verdict");
-    std::string cls = verdict;  // "not checked" -> not-checked, "n/a" -> n-a
-    for (auto& c : cls)
-      if (c == ' ' || c == '/') c = '-';
     std::string what = str(p, "message");
     if (p["kind"] == "property" && str(p, "formula") != str(p, "name"))
       what = "<code>" + html_escape(str(p, "formula")) + "</code> " + html_escape(what);
@@ -94,7 +93,7 @@ std::string summary(const json& result) {
     if (p["trace"].is_object())
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
               html_escape(str(p["trace"], "kind")) + " (" +
-              std::to_string(p["trace"]["steps"].size()) + " situations)</a>";
+              counted(p["trace"]["steps"].size(), "situation") + ")</a>";
     const std::string description = description_of(p);
     const std::string justification = str(p, "justification");
     rows += "<tr><td class=\"name\">" + html_escape(str(p, "name")) +
@@ -104,16 +103,15 @@ std::string summary(const json& result) {
             (justification.empty() ? ""
                                    : "<div class=\"description\">justification: " +
                                          html_escape(justification) + "</div>") +
-            "</td><td><span class=\"verdict " + html_escape(cls) + "\">" + html_escape(verdict) +
-            "</span></td><td>" + html_escape(engine) + "</td><td class=\"time\">" +
-            seconds(p["seconds"]) + "</td><td>" + what +
+            "</td><td>" + html_verdict(verdict) + "</td><td>" + html_escape(engine) +
+            "</td><td class=\"time\">" + seconds(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +
             trace + "</td></tr>\n";
   }
-  return "<table class=\"summary\" id=\"summary-table\">\n<tr><th>property or "
-         "check</th><th>verdict</th>"
+  return "<div class=\"scroll\"><table class=\"summary\" id=\"summary-table\">\n<tr><th>property "
+         "or check</th><th>verdict</th>"
          "<th>engine</th><th>time</th><th>what was found</th><th>trace</th></tr>\n" +
-         rows + "</table>\n";
+         rows + "</table></div>\n";
 }
 
 /// The Grafcet situation graph's section; nothing for IEC 61131-3.
@@ -134,13 +132,6 @@ std::string situation_graph_section(const HtmlReport& report) {
   return out + "</section>\n";
 }
 
-std::string page_head(const std::string& title) {
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         html_escape(title) + "</title>\n<style>\n" + std::string(report_style()) +
-         "</style>\n</head>\n<body>\n";
-}
-
 std::string chart_section(const HtmlReport& report) {
   // Fitted to their boxes; a click toggles the natural size (the pages' scripts).
   std::string out =
@@ -153,6 +144,14 @@ std::string chart_section(const HtmlReport& report) {
 
 /// One query's answer: its value or its set, the elements listed (the first ones shown, the
 /// rest folded away).
+/// "1 situation", "12 situations", "0 steps": a set's count with its sort's noun ("empty": the
+/// empty set's sort, no noun to agree).
+std::string set_count(std::uint64_t n, const std::string& sort) {
+  if (sort.size() > 1 && sort.back() == 's')
+    return counted(n, sort.substr(0, sort.size() - 1), sort);
+  return std::to_string(n) + " " + sort;
+}
+
 std::string query_row(const json& q) {
   constexpr std::size_t kShown = 10, kListed = 200;  // shown, then folded; the JSON has all
   const std::string sort = str(q, "sort");
@@ -160,12 +159,12 @@ std::string query_row(const json& q) {
   if (sort == "test") {
     answer = q.value("value", false) ? "true" : "false";
     if (q.contains("count"))
-      answer += ", witness: " + std::to_string(q["count"].get<std::uint64_t>()) + " " +
-                html_escape(str(q, "witness_sort"));
+      answer += ", witness: " +
+                html_escape(set_count(q["count"].get<std::uint64_t>(), str(q, "witness_sort")));
   } else if (sort == "number") {
     answer = std::to_string(q["value"].get<std::int64_t>());
   } else {
-    answer = std::to_string(q.value("count", 0ULL)) + " " + html_escape(sort);
+    answer = html_escape(set_count(q.value("count", 0ULL), sort));
   }
   std::string shown, more;
   std::size_t n = 0;
@@ -185,11 +184,8 @@ std::string query_row(const json& q) {
   const std::string verdict = str(q, "verdict");
   return "<tr class=\"query\"><td class=\"name\"><code>" + html_escape(str(q, "query")) +
          "</code></td><td class=\"answer\">" + answer + "</td><td>" +
-         (verdict.empty() ? ""
-                          : "<span class=\"verdict " + html_escape(verdict) + "\">" +
-                                html_escape(verdict) + "</span>") +
-         "</td><td>" + (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") +
-         "</td></tr>\n";
+         (verdict.empty() ? "" : html_verdict(verdict)) + "</td><td>" +
+         (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") + "</td></tr>\n";
 }
 
 }  // namespace
@@ -338,9 +334,15 @@ std::string check_html(const HtmlReport& report) {
   data["nodes"] = nodes;
   make_valid_utf8(data);  // a result read back by `sfcv report`, names of the chart: bytes
 
-  std::string out = page_head("sfcv report: " + model);
+  std::string out = html_page_head("sfcv report: " + model);
+  std::vector<std::pair<std::string, std::string>> nav = {
+      {"properties", "Properties"}, {"chart", "Chart"}, {"player", "Trace player"}};
+  if (!report.situation_graph_svg.empty() || !report.situation_graph_note.empty())
+    nav.emplace_back("situations", "Situations");
+  out += html_page_nav(nav);
   out += "<h1>sfcv check: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
-  out += "<h2>Properties and standard checks</h2>\n" + summary(r) + provenance_section(r);
+  out += "<h2 id=\"properties\">Properties and standard checks</h2>\n" + summary(r) +
+         provenance_section(r);
   out += "<div class=\"layout\">\n" + chart_section(report);
   out += R"html(<section id="player" hidden>
 <h2>Trace player</h2>
@@ -361,7 +363,9 @@ std::string check_html(const HtmlReport& report) {
 )html";
   out += situation_graph_section(report);
   out += "<script type=\"application/json\" id=\"sfcv-data\">" + script_json(data) + "</script>\n";
-  out += "<script>\n" + std::string(report_script()) + "</script>\n</body>\n</html>\n";
+  out += "<script>\n" + std::string(report_script()) + "</script>\n" + html_pictures_script() +
+         html_layout_probe();
+  out += "</body>\n</html>\n";
   return valid_utf8(out);  // names are bytes; the page says charset=utf-8
 }
 
@@ -370,29 +374,34 @@ std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures
   std::string meta = html_escape(str(answers, "semantics")) + " semantics";
   if (answers.contains("graph")) {
     const auto& g = answers["graph"];
-    meta += " &middot; " + std::to_string(g.value("situations", 0ULL)) + " situations &middot; " +
-            std::to_string(g.value("evolutions", 0ULL)) + " evolutions";
+    meta += " &middot; " + counted(g.value("situations", 0ULL), "situation") + " &middot; " +
+            counted(g.value("evolutions", 0ULL), "evolution");
     if (!g.value("complete", true))
       meta += " &middot; <strong>incomplete: the " + html_escape(str(g, "limit")) +
               " limit was reached; the sets may be wrong in both directions</strong>";
     if (g.value("anomalies", 0ULL) > 0)
-      meta += " &middot; <strong>" + std::to_string(g["anomalies"].get<std::uint64_t>()) +
-              " anomalies: the evolutions they cut are missing</strong>";
+      meta += " &middot; <strong>" +
+              counted(g["anomalies"].get<std::uint64_t>(), "anomaly", "anomalies") +
+              ": the evolutions they cut are missing</strong>";
   }
   std::string rows;
   for (const auto& q : answers["queries"]) rows += query_row(q);
-  std::string out = page_head("sfcv query: " + model);
+  std::string out = html_page_head("sfcv query: " + model);
+  std::vector<std::pair<std::string, std::string>> nav = {{"answers", "Answers"}};
+  if (!pictures.situation_graph_svg.empty() || !pictures.situation_graph_note.empty())
+    nav.emplace_back("situations", "Situations");
+  nav.emplace_back("chart", "Chart");
+  out += html_page_nav(nav);
   out += "<h1>sfcv query: " + html_escape(model) + "</h1>\n<p class=\"meta\">" + meta + "</p>\n";
   out +=
-      "<h2>Query answers</h2>\n<table class=\"summary\" id=\"query-table\">\n<tr><th>query</th>"
+      "<h2 id=\"answers\">Query answers</h2>\n<div class=\"scroll\"><table class=\"summary\" "
+      "id=\"query-table\">\n<tr><th>query</th>"
       "<th>answer</th><th>verdict</th><th>elements</th></tr>\n" +
-      rows + "</table>\n";
+      rows + "</table></div>\n";
   out += situation_graph_section(pictures);
   out += chart_section(pictures);
-  out +=
-      "<script>\ndocument.querySelectorAll(\"#chart-svg, #situations-svg\").forEach((box) =>\n"
-      "  box.addEventListener(\"click\", () => box.classList.toggle(\"fit\")));\n</script>\n";
-  return valid_utf8(out + "</body>\n</html>\n");
+  out += html_pictures_script();
+  return valid_utf8(out + html_layout_probe() + "</body>\n</html>\n");
 }
 
 }  // namespace sfcv::report

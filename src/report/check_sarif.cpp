@@ -310,7 +310,8 @@ json check_sarif(const logic::CheckReport& report, const semantics::TransitionSy
   driver["name"] = "sfcv";
   driver["version"] = build_version();
   driver["semanticVersion"] = build_version();
-  driver["informationUri"] = build_information_uri();
+  // Only a URI the build was given (CMake's SFCV_INFORMATION_URI); none is invented.
+  if (const auto uri = build_information_uri(); !uri.empty()) driver["informationUri"] = uri;
   driver["properties"]["commit"] = build_commit();
   driver["rules"] = rules;
   json run;

@@ -1,6 +1,6 @@
 #pragma once
 // `sfcv equiv` results (docs/equivalence.md): the verdict per question and the counterexample
-// side by side, OLD's and NEW's steps and compared signals per cycle, in text, JSON and VCD.
+// side by side, OLD's and NEW's steps and compared signals per cycle, in text, JSON, VCD and HTML.
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -29,6 +29,9 @@ std::string equivalence_text(const EquivalenceRun& run, const semantics::Equival
                              const semantics::TransitionSystem& ts);
 nlohmann::json equivalence_json(const EquivalenceRun& run, const semantics::EquivalenceProduct& p,
                                 const semantics::TransitionSystem& ts);
+/// `sfcv equiv --html`: one self-contained page from the equivalence_json document: the verdicts
+/// and each counterexample side by side (OLD's and NEW's steps and signals per cycle).
+std::string equivalence_html(const nlohmann::json& result);
 
 /// One counterexample side by side: a row per cycle with the inputs read, OLD's and NEW's active
 /// steps and each compared signal as old/new, `*` where they differ.

@@ -20,7 +20,8 @@ namespace sfcv::report {
 /// Generated at build time (cmake/BuildInfo.cmake).
 std::string build_version();
 std::string build_commit();
-/// Where the tool is described (CMake's SFCV_INFORMATION_URI): SARIF's tool informationUri.
+/// Where the tool is described (CMake's SFCV_INFORMATION_URI): SARIF's tool informationUri;
+/// empty when the build was given none (the SARIF log then leaves it out).
 std::string build_information_uri();
 
 struct InputFileDigest {

@@ -33,7 +33,7 @@ TEST(CheckHtml, SummaryChartAndPlayerData) {
   EXPECT_NE(html.find("x &lt; y"), std::string::npos);                   // escaped
   EXPECT_NE(html.find("<summary>1 more</summary>"), std::string::npos);  // f3 folded away
   EXPECT_NE(html.find("3 of 25 findings shown; --all for every one"), std::string::npos);
-  EXPECT_NE(html.find("data-property=\"0\">counterexample (1 situations)</a>"), std::string::npos);
+  EXPECT_NE(html.find("data-property=\"0\">counterexample (1 situation)</a>"), std::string::npos);
   EXPECT_NE(html.find("<svg id=\"chart\"></svg>"), std::string::npos);
   EXPECT_NE(html.find("\"steps\":{\"P.S0\":\"p0c0s0\"}"), std::string::npos);
   // Data inside <script> cannot close it early; nothing is fetched from the network.
@@ -129,6 +129,45 @@ TEST(CheckHtml, SituationGraphSectionAndQueryPage) {
       std::string::npos);
   EXPECT_NE(page.find("<svg id=\"rsg\"></svg>"), std::string::npos);
   EXPECT_EQ(page.find("src=\"http"), std::string::npos);
+}
+
+TEST(CheckHtml, OneIsSingularOnTheQueryPage) {
+  // Issue 48: "1 situations". A count of one takes the singular noun, in the header and in
+  // the answers (a set, a test's witness).
+  const auto answers = nlohmann::json::parse(R"json({
+    "model": "p.g7", "semantics": "grafcet",
+    "graph": {"situations": 1, "evolutions": 1, "complete": true, "limit": "", "anomalies": 1},
+    "queries": [
+      {"query": "Y0", "sort": "situations", "count": 1, "elements": [{"text": "#0"}]},
+      {"query": "{1}", "sort": "steps", "count": 1, "elements": ["X1"]},
+      {"query": "Y0 != {}", "sort": "test", "value": true, "witness_sort": "situations",
+       "count": 1, "elements": [{"text": "#0"}]}
+    ]})json");
+  const auto page = query_html(answers, HtmlReport{});
+  EXPECT_NE(page.find("1 situation &middot; 1 evolution &middot; <strong>1 anomaly:"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("<td class=\"answer\">1 situation</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"answer\">1 step</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"answer\">true, witness: 1 situation</td>"), std::string::npos);
+  EXPECT_EQ(page.find("1 situations"), std::string::npos);
+}
+
+TEST(CheckHtml, EveryPageIsResponsiveAndCarriesTheLayoutProbe) {
+  // The viewport, the section navigation, the one-column rule and print styles, the probe the
+  // browser test reads (inert without #test), and wide tables in their own scrolling boxes.
+  HtmlReport r;
+  r.result = result();
+  for (const auto& page : {check_html(r), query_html(nlohmann::json::parse(R"json({
+         "model": "p.g7", "semantics": "grafcet", "queries": []})json"),
+                                                     r)}) {
+    EXPECT_NE(page.find("<meta name=\"viewport\" content=\"width=device-width"), std::string::npos);
+    EXPECT_NE(page.find("<nav class=\"sections\""), std::string::npos);
+    EXPECT_NE(page.find("@media (max-width: 1000px)"), std::string::npos);
+    EXPECT_NE(page.find("@media print"), std::string::npos);
+    EXPECT_NE(page.find("doc.dataset.sfcvLayout = "), std::string::npos);
+    EXPECT_NE(page.find("<div class=\"scroll\"><table class=\"summary\""), std::string::npos);
+  }
 }
 
 TEST(CheckHtml, SaysWhyThereIsNoChart) {

@@ -4,7 +4,9 @@
 # coverage, patterns (description, vacuity), a spec file (where), an LTL lasso (loop_start), a
 # Grafcet, an unknown verdict (a state limit), the BDD and IC3 engines (counts null or exact);
 # and the JSON error object of a bad model, a bad formula, a bad option and a bad limit, with the
-# exit code unchanged. Usage: json_schema_test.sh SFCV SOURCE_DIR
+# exit code unchanged. Then `sfcv info`, `lint`, `query` and `rsg --json` against their schemas
+# (a Grafcet, a model with lint warnings, every sort of query answer, an incomplete graph).
+# Usage: json_schema_test.sh SFCV SOURCE_DIR
 set -eu
 sfcv=$1
 src=$2
@@ -52,4 +54,41 @@ while [ "$i" -le "$n" ]; do
   grep -q '"exit_code": 2' "$dir/out$i.json" || { echo "out$i.json: exit_code is not 2"; exit 1; }
   i=$((i + 1))
 done
-exec /usr/bin/python3 "$src/tests/report/validate_json.py" "$src/share/sfcv/check-result.schema.json" "$dir"/out*.json
+/usr/bin/python3 "$src/tests/report/validate_json.py" "$src/share/sfcv/check-result.schema.json" "$dir"/out*.json
+# The other commands' JSON against their schemas (share/sfcv/{info,lint,query,rsg}.schema.json):
+# doc SCHEMA EXPECTED_EXIT ARGS...: sfcv ARGS --json > a file checked against SCHEMA.
+doc() {
+  schema=$1
+  shift
+  mkdir -p "$dir/$schema"
+  run "$@"
+  mv "$dir/out$n.json" "$dir/$schema/$n.json"
+}
+cat >"$dir/lint_me.st" <<'ST'
+PROGRAM P
+  VAR_INPUT a : BOOL; END_VAR
+  VAR_OUTPUT q : BOOL; END_VAR
+  VAR x : BOOL; END_VAR
+  INITIAL_STEP S0: END_STEP
+  STEP S1: q(N); END_STEP
+  STEP S2: END_STEP
+  TRANSITION FROM S0 TO S1 := a AND x; END_TRANSITION
+  TRANSITION FROM S1 TO S0 := NOT a; END_TRANSITION
+END_PROGRAM
+ST
+pistons="$src/examples/pistons/pistons.g7"
+doc info 0 info "$plant"
+doc info 0 info "$pallet"
+doc info 0 info "$dir/lint_me.st"
+doc lint 0 lint "$plant"
+doc lint 0 lint "$dir/lint_me.st"
+grep -q '"severity": "warning"' "$dir/lint/$n.json" || { echo "lint_me.st: no warning in the JSON"; exit 1; }
+doc query 0 query "$pallet" 'Act({10, 25})' 'Y - Pred(Y0, T)' 'Steps - {1}' 'T' '#Y' 'Y0 != {}'
+doc query 1 query "$pallet" 'Act({10, 25}) = {}' --assert
+doc query 0 query "$pistons" --use global_deadlock --assert
+doc rsg 0 rsg "$pistons"
+doc rsg 3 rsg "$pallet" --max-states 50
+grep -q '"complete": false' "$dir/rsg/$n.json" || { echo "rsg --max-states: not incomplete"; exit 1; }
+for schema in info lint query rsg; do
+  /usr/bin/python3 "$src/tests/report/validate_json.py" "$src/share/sfcv/$schema.schema.json" "$dir/$schema"/*.json
+done

@@ -5,10 +5,12 @@
 # check), a Grafcet chart, a spec file, and an unknown verdict (a state limit). URIs are relative
 # to --sarif-root (the source tree, as a repository root would be). Then: the default root is
 # the git work tree or the working directory, and a rule id does not change between runs.
-# Usage: sarif_schema_test.sh SFCV SOURCE_DIR
+# The tool's informationUri is the build's SFCV_INFORMATION_URI, absent when that is empty.
+# Usage: sarif_schema_test.sh SFCV SOURCE_DIR INFORMATION_URI
 set -eu
 sfcv=$1
 src=$2
+information_uri=${3-}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 plant="$src/examples/chemical_plant/chemical_plant.st"
@@ -33,5 +35,5 @@ PY
 mkdir "$dir/work" && cp "$plant" "$dir/work/plant.st"
 (cd "$dir/work" && "$sfcv" check plant.st --quiet --ctl 'AG !(V2 & V4)' --trace none --sarif out.sarif >/dev/null || [ $? -eq 1 ])
 grep -q '"uri": "plant.st"' "$dir/work/out.sarif"
-exec /usr/bin/python3 "$src/tests/report/validate_sarif.py" --github "$src/tests/data/sarif/sarif-2.1.0-subset.schema.json" \
+exec /usr/bin/python3 "$src/tests/report/validate_sarif.py" --github "--information-uri=$information_uri" "$src/tests/data/sarif/sarif-2.1.0-subset.schema.json" \
   "$dir/plant.sarif" "$dir/pallet.sarif" "$dir/spec.sarif" "$dir/unknown.sarif" "$dir/work/out.sarif"

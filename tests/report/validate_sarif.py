@@ -20,6 +20,13 @@ except ImportError:
 args = sys.argv[1:]
 github = "--github" in args
 args = [a for a in args if a != "--github"]
+# --information-uri=URI: the tool's informationUri must be exactly the one the build was given
+# (CMake's SFCV_INFORMATION_URI), and absent when that is empty: never an invented address.
+information_uri = None
+for a in list(args):
+    if a.startswith("--information-uri="):
+        information_uri = a.split("=", 1)[1]
+        args.remove(a)
 
 
 def github_problems(log):
@@ -29,11 +36,14 @@ def github_problems(log):
         out.append("version 2.1.0 and $schema are required")
     for run in log["runs"]:
         driver = run["tool"]["driver"]
-        for key in ("name", "version", "informationUri"):
+        for key in ("name", "version"):
             if not driver.get(key):
                 out.append(f"tool.driver.{key} is missing")
-        if not re.match(r"^https?://", driver.get("informationUri", "")):
+        if "informationUri" in driver and not re.match(r"^https?://", driver["informationUri"]):
             out.append("tool.driver.informationUri is not an absolute http(s) URI")
+        if information_uri is not None and driver.get("informationUri", "") != information_uri:
+            out.append(f"tool.driver.informationUri is {driver.get('informationUri')!r}, "
+                       f"the build's SFCV_INFORMATION_URI {information_uri!r}")
         bases = run.get("originalUriBaseIds", {})
         for name, base in bases.items():
             if not re.match(r"^file:///.*/$", base.get("uri", "")):
