@@ -432,6 +432,7 @@ bool Compiler::run() {
   structure();
   actions_and_transitions();
   finish_timers();
+  timer_reads();
   orders();
   for (const auto& a : p.options.assumptions)
     if (a)
