@@ -182,5 +182,40 @@ END_PROGRAM
   EXPECT_EQ(seen, "11000111");
 }
 
+// TwinCAT writes calls through the absolute instance path (xPPU 17's `MAIN.xPPU();`, PLC
+// Control 3.5.6.1's `Main.XPPU.Crane.ACT_PickUpWP();`, also in another case): the instance, or
+// the action of the instance, that the path names from the program, as the short path would.
+TEST(AbsoluteInstancePaths, CallTheInstanceOrActionThePathNames) {
+  const auto b = build_text(R"(
+FUNCTION_BLOCK Motor
+  VAR_OUTPUT on : BOOL; END_VAR
+  ACTION ACT_On : on := TRUE; END_ACTION
+  ACTION ACT_Off : on := FALSE; END_ACTION
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Cell
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT ticks : INT(0..3); END_VAR
+  VAR m : Motor; END_VAR
+  IF ticks < 3 THEN ticks := ticks + 1; END_IF;
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_OUTPUT on : BOOL; END_VAR
+  VAR cell : Cell; END_VAR
+  MAIN.cell(go := go);
+  IF go THEN Main.CELL.m.ACT_On(); ELSE MAIN.cell.M.act_off(); END_IF;
+  on := cell.m.on;
+END_PROGRAM
+)");
+  ASSERT_TRUE(b.ts) << b.diagnostics;
+  Runner r(*b.ts);
+  ASSERT_TRUE(r.cycle({{"go", 1}})) << r.error;
+  EXPECT_EQ(r["on"], 1);
+  EXPECT_EQ(r["Main.cell.ticks"], 1);
+  ASSERT_TRUE(r.cycle({{"go", 0}})) << r.error;
+  EXPECT_EQ(r["on"], 0);
+  EXPECT_EQ(r["Main.cell.ticks"], 2);
+}
+
 }  // namespace
 }  // namespace sfcv::test
