@@ -217,5 +217,41 @@ END_PROGRAM
   EXPECT_EQ(r["Main.cell.ticks"], 2);
 }
 
+// When the project's program cannot be run and several POUs have an SFC body, the error says
+// why the program is not run before asking for --pou (xPPU 17 said only "several POUs").
+TEST(AbsoluteInstancePaths, TheErrorSaysWhyTheProgramIsNotRun) {
+  auto loaded = io::load_iec_text(R"(
+FUNCTION_BLOCK A
+  VAR_INPUT go : BOOL; END_VAR
+  INITIAL_STEP S0 : END_STEP
+  STEP S1 : END_STEP
+  TRANSITION FROM S0 TO S1 := go; END_TRANSITION
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK B
+  VAR_INPUT go : BOOL; END_VAR
+  INITIAL_STEP S0 : END_STEP
+  STEP S1 : END_STEP
+  TRANSITION FROM S0 TO S1 := go; END_TRANSITION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR a : A; b : B; END_VAR
+  a(go := TRUE);
+END_PROGRAM
+)",
+                                  "select.st");
+  ASSERT_TRUE(loaded.ok());
+  auto& main = loaded.project->pous.back();
+  main.body_unsupported = true;  // as a reader marks a body it cannot read
+  main.unsupported_reason = "call of 'X.y'";
+  model::Diagnostics diags;
+  EXPECT_FALSE(semantics::make_iec61131_system(*loaded.project, {}, diags));
+  ASSERT_FALSE(diags.empty());
+  EXPECT_NE(diags.front().message.find("program 'Main' cannot be run (its body is not modelled: "
+                                       "call of 'X.y'); several POUs have an SFC body (A, B): "
+                                       "choose the one(s) to run with --pou"),
+            std::string::npos)
+      << diags.front().message;
+}
+
 }  // namespace
 }  // namespace sfcv::test
