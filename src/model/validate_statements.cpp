@@ -140,7 +140,18 @@ const Pou* Validator::instance_type(const std::string& owner, bool& unknown_type
   unknown_type = false;
   const Pou* type = nullptr;
   const Pou* scope = pou_;
-  for (std::size_t from = 0; scope;) {
+  std::size_t start = 0;
+  // TwinCAT's absolute instance path `MAIN.XPPU.Crane.ACT_x()`, `MAIN.xPPU()`: from the
+  // program it names.
+  const auto first = owner.substr(0, owner.find('.'));
+  if (!pou_->find_variable(first))
+    if (const Pou* program = project_.find_pou(first);
+        program && program->kind == PouKind::Program) {
+      if (first.size() == owner.size()) return program;
+      scope = program;
+      start = first.size() + 1;
+    }
+  for (std::size_t from = start; scope;) {
     const auto d = owner.find('.', from);
     const Variable* v =
         scope->find_variable(owner.substr(from, d == std::string::npos ? d : d - from));

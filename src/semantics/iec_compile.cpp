@@ -127,10 +127,20 @@ std::vector<const model::Pou*> Compiler::select() {
                              : "no program can be run (" + list +
                                    ": a body sfcv does not model); choose other POU(s) with --pou");
   } else {
-    std::string list;
+    std::string list, why_not;
     for (const auto* q : cands) list += (list.empty() ? "" : ", ") + q->name;
-    error(project.where,
-          "several POUs have an SFC body (" + list + "): choose the one(s) to run with --pou");
+    // The program(s) the project would run, and why they cannot (xPPU 17: MAIN's body was
+    // not modelled), so that the user fixes that rather than picking a POU blindly.
+    for (const auto& [q, why] : not_run)
+      why_not +=
+          "program '" + q->name + "' cannot be run (" +
+          (why == q
+               ? "its body is not modelled" +
+                     (q->unsupported_reason.empty() ? std::string() : ": " + q->unsupported_reason)
+               : "it runs an instance of '" + why->name + "', whose body is not modelled") +
+          "); ";
+    error(project.where, why_not + "several POUs have an SFC body (" + list +
+                             "): choose the one(s) to run with --pou");
   }
   return out;
 }
@@ -432,6 +442,7 @@ bool Compiler::run() {
   structure();
   actions_and_transitions();
   finish_timers();
+  timer_reads();
   orders();
   for (const auto& a : p.options.assumptions)
     if (a)

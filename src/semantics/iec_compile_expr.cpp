@@ -205,6 +205,18 @@ std::uint32_t Compiler::compare(const PouScope& sc, const model::Expr& e, int co
   const auto b = expr(sc, *e.args[1], context, rt);
   if (lt == VT::Bool) rt = bool_if_literal(*e.args[1], rt);
   if (rt == VT::Bool) lt = bool_if_literal(*e.args[0], lt);
+  // `NOT x >= k` with an integer x is `(NOT x) >= k` (NOT binds tighter than a comparison,
+  // IEC 61131-3 table of ST operators): read so, but say so, as `NOT (x >= k)` is often meant.
+  for (std::size_t i = 0; i < 2; ++i)
+    if (e.args[i]->kind == ExprKind::Not && (i == 0 ? lt : rt) == VT::Int) {
+      model::Expr meant = e;
+      meant.args[i] = e.args[i]->args[0];
+      diags.push_back({model::Severity::Warning, e.where,
+                       "'" + model::to_st(e) + "' compares the bitwise complement of " +
+                           model::to_st(*meant.args[i]) +
+                           " (NOT binds tighter than a comparison in IEC 61131-3); write NOT (" +
+                           model::to_st(meant) + ") if the negated comparison is meant"});
+    }
   if (lt != rt)
     error(e.where, "'" + model::to_st(e) + "' compares a BOOL with a number");
   else if (lt == VT::Bool && cmp != Op::Eq && cmp != Op::Ne)
@@ -284,8 +296,7 @@ std::uint32_t Compiler::expr(const PouScope& sc, const model::Expr& e, int conte
       VT t;
       const auto a = expr(sc, *e.args[0], context, t);
       if (e.kind == ExprKind::Not) t = bool_if_literal(*e.args[0], t);
-      if (e.kind == ExprKind::Not && t != VT::Bool)
-        error(e.where, "'" + model::to_st(e) + "': bitwise NOT on integers is not supported");
+      if (e.kind == ExprKind::Not && t != VT::Bool) return integer_not(e, a, type);
       if (e.kind == ExprKind::Neg && t != VT::Int)
         error(e.where, "'" + model::to_st(e) + "': negation of a BOOL");
       type = t;
@@ -407,12 +418,14 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
       n.a = static_cast<std::uint32_t>(fb.cv);
       return node(n);
     }
+    if (mem == "PT" && timer) {
+      type = VT::Int;
+      return timer_read(it->second.index, false, e);
+    }
     if (mem == "ET" && timer) {
       if (p.options.time == TimeMode::Abstract) {
-        error(e.where, "'" + model::to_st(e) +
-                           "': a timer's ET has no value in abstract time "
-                           "(use --time discrete)");
-        return constant(0);
+        type = VT::Int;
+        return timer_read(it->second.index, true, e);
       }
       type = VT::Int;
       Node n;
@@ -457,6 +470,55 @@ std::uint32_t Compiler::member(const PouScope& sc, const model::Expr& e, int con
   }
   error(e.where, "unknown name '" + e.name + "." + e.member + "' in " + sc.pou->name);
   return constant(0);
+}
+
+std::optional<std::pair<std::int64_t, std::int64_t>> Compiler::int_range(std::uint32_t n) const {
+  const Node& x = p.nodes[n];
+  if (x.op == Op::Field) return std::make_pair(p.field_lo[x.a], p.field_hi[x.a]);
+  if (x.op == Op::Input) return std::make_pair(p.inputs[x.a].type.lo, p.inputs[x.a].type.hi);
+  if (x.op == Op::Call) {
+    const auto r = p.functions[x.a].result;
+    return std::make_pair(p.field_lo[r], p.field_hi[r]);
+  }
+  // IEC 61131-3 arithmetic keeps its operands' (common) type: the first typed operand's.
+  if (x.op == Op::Add || x.op == Op::Sub || x.op == Op::Mul || x.op == Op::Div || x.op == Op::Mod ||
+      x.op == Op::Neg)
+    for (std::uint32_t i = 0; i < x.count; ++i)
+      if (auto r = int_range(p.kids[x.first + i])) return r;
+  return std::nullopt;
+}
+
+// IEC 61131-3 NOT on an integer is the bitwise complement at the width of its type: in two's
+// complement ~x = -1 - x for SINT..LINT, and 2^w - 1 - x for USINT..UDINT (the BYTE..DWORD
+// ranges go through bitwise()). Written as a subtraction it needs no new operator in the
+// machine, the circuit or the exports, and never leaves the type's range.
+std::uint32_t Compiler::integer_not(const model::Expr& e, std::uint32_t operand, VT& type) {
+  type = VT::Int;
+  // A range below 0 is a signed type or a subrange of one, whatever its width; an unsigned
+  // value needs its width: the type's full range, or an input's declared type name.
+  std::optional<std::int64_t> all_ones;
+  if (const auto r = int_range(operand)) {
+    const auto [lo, hi] = *r;
+    if (lo < 0) all_ones = -1;
+    for (const std::int64_t top : {255LL, 65535LL, 4294967295LL})
+      if (lo == 0 && hi == top) all_ones = top;
+  }
+  if (const Node& x = p.nodes[operand]; !all_ones && x.op == Op::Input) {
+    const auto name = model::to_upper(p.inputs[x.a].type.name);
+    if (name == "SINT" || name == "INT" || name == "DINT" || name == "LINT") all_ones = -1;
+    if (name == "USINT") all_ones = 255;
+    if (name == "UINT") all_ones = 65535;
+    if (name == "UDINT") all_ones = 4294967295LL;
+  }
+  if (!all_ones) {
+    error(e.where, "'" + model::to_st(e) +
+                       "': bitwise NOT needs an operand whose type sfcv knows to be one of "
+                       "SINT, INT, DINT, LINT, USINT, UINT, UDINT (a variable, input or "
+                       "function result of that type; ULINT, typed literals and subranges of "
+                       "variables of unsigned types are not modelled)");
+    return constant(0);
+  }
+  return node(Node{Op::Sub, Op::Eq, false, 0, 0, 0, 0}, {constant(*all_ones), operand});
 }
 
 std::uint32_t Compiler::bool_expr(const PouScope& sc, const model::ExprPtr& e, int context,

@@ -109,6 +109,12 @@ void Compiler::fb_call(const PouScope& sc, const model::Stmt& s, Stmt& out) {
       continue;
     }
     const auto i = static_cast<std::size_t>(pos - params.begin());
+    if (up == "PT") {
+      // The value this call leaves in the instance's PT (read as `t.PT`, timer_reads()).
+      std::optional<std::int64_t> given = literal(*value);
+      if (!given && value->kind == ExprKind::Name) given = constant_variable(*sc.pou, value->name);
+      out.pt_ms = given ? *given : Stmt::kPtNotConstant;
+    }
     if (up == "PT" && pt_irrelevant) continue;
     if (up == "PT") {
       pt_given = true;

@@ -640,5 +640,34 @@ TEST(Iec61131Circuit, AgreesOnUserFunctions) {
   expect_agreement_in_both_time_modes(kFunctions, 3000, 47);
 }
 
+// NOT on signed and unsigned integers (the bitwise complement, written as a subtraction), and
+// a timer's PT and ET read in both time modes (TwinCAT's blinking lamp, xPPU 19-23).
+const char* const kIntegerNotAndTimerReads = R"(
+FUNCTION Half : UINT
+  VAR_INPUT v : UINT; END_VAR
+  Half := v / 2;
+END_FUNCTION
+PROGRAM Main
+  VAR_INPUT a : BOOL; k : INT(-2..1); END_VAR
+  VAR_OUTPUT n : INT(-8..8); m : INT; s : SINT; u : UINT; green, done : BOOL; et, pt : TIME;
+  END_VAR
+  VAR blink, once : TON; END_VAR
+  n := NOT (n + k);
+  m := NOT k;
+  IF m >= 0 THEN s := NOT s; ELSE s := 127; END_IF;
+  u := NOT Half(u);
+  blink(IN := NOT blink.Q, PT := T#6ms);
+  green := blink.ET < blink.PT / 2;
+  IF a THEN once(IN := TRUE, PT := T#4ms); ELSE once(IN := FALSE, PT := T#0ms); END_IF;
+  et := once.ET;
+  pt := once.PT;
+  done := once.Q AND once.ET = once.PT;
+END_PROGRAM
+)";
+
+TEST(Iec61131Circuit, AgreesOnIntegerNotAndTimerReads) {
+  expect_agreement_in_both_time_modes(kIntegerNotAndTimerReads, 200, 53);
+}
+
 }  // namespace
 }  // namespace sfcv::semantics

@@ -270,6 +270,11 @@ struct Compiler {
   std::uint32_t expr(const PouScope& sc, const model::Expr& e, int context, VT& type);
 
   std::uint32_t member(const PouScope& sc, const model::Expr& e, int context, VT& type);
+  /// The declared range of the integer that node `n` reads (a field, an input, a function's
+  /// result); nullopt for any other node.
+  std::optional<std::pair<std::int64_t, std::int64_t>> int_range(std::uint32_t n) const;
+  /// `NOT x` on an integer `x` compiled as node `operand` (iec_compile_expr.cpp).
+  std::uint32_t integer_not(const model::Expr& e, std::uint32_t operand, VT& type);
 
   // Standard functions, bit strings (iec_compile_call.cpp).
   std::uint32_t call(const PouScope& sc, const model::Expr& e, int context, VT& type);
@@ -307,6 +312,20 @@ struct Compiler {
   /// Discrete time: a field holding ET at the last call for every timer instance whose ET some
   /// expression reads (after every expression is compiled).
   void timer_snapshots();
+
+  /// Reads of a timer's PT (both time modes) and of its ET in abstract time: placeholder nodes
+  /// that timer_reads() fills once every call is compiled (iec_compile_timer_reads.cpp).
+  struct TimerRead {
+    std::uint32_t node = 0, fb = 0;
+    bool et = false;
+    model::SourceLocation where;
+  };
+  std::vector<TimerRead> timer_reads_pending;
+  bool timer_reads_done = false;
+  std::uint32_t timer_read(std::uint32_t fb, bool et, const model::Expr& e);
+  /// A field `<fb>.PT` holding the PT of the last call (T#0s before any), written by every call
+  /// that gives one, and the abstract-time ET of docs/semantics.md 1.6 (before orders()).
+  void timer_reads();
 
   // ----------------------------------------------------------------- charts and actions
   void structure();

@@ -127,6 +127,10 @@ struct Stmt {
   /// FbCall of a TON with `PT := T#0ms` while other calls give a positive PT (TwinCAT xPPU):
   /// this call's Q is IN, the timer itself runs on as the other calls see it.
   bool pt_zero = false;
+  /// FbCall of a timer: the PT this call gives (kPtNotGiven, or kPtNotConstant for the ignored
+  /// PT of a TON called with IN := FALSE), for a program that reads the instance's PT.
+  std::int64_t pt_ms = -1;
+  static constexpr std::int64_t kPtNotGiven = -1, kPtNotConstant = -2;
 };
 
 /// A user FUNCTION written in ST (IEC 61131-3 2.5.1). Its variables are fields that hold their
