@@ -30,7 +30,7 @@ _sfcv() {
     --unwritten) COMPREPLY=($(compgen -W "free keep" -- "$cur")); return ;;
     --reorder) COMPREPLY=($(compgen -W "none once dynamic" -- "$cur")); return ;;
     --deadlock-paths) COMPREPLY=($(compgen -W "stutter drop" -- "$cur")); return ;;
-    --checks) COMPREPLY=($(compgen -W "all none reachable dead-transitions reentry deadlock local-deadlock return conflicts stored-actions output-conflicts instability" -- "$cur")); return ;;
+    --checks) COMPREPLY=($(compgen -W "all none reachable dead-transitions reentry deadlock local-deadlock return conflicts stored-actions output-conflicts order-dependence instability" -- "$cur")); return ;;
     --ctl|--ltl|--pattern|--fair|--assume|--pou|--timeout|--memory|--max-states|--cycle|--depth|--threads|--max-nodes|--max-cycles|--use) return ;;
   esac
   if [[ "$cur" == -* ]]; then

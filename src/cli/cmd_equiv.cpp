@@ -253,7 +253,7 @@ void add_equiv_command(CLI::App& app, CommandRunner& selected) {
                   "repeatable)");
   sub->add_option("--outputs", opts->outputs,
                   "Signals to compare, a,b,... (default: every VAR_OUTPUT and %Q variable of "
-                  "OLD's programs that NEW declares too)");
+                  "OLD's programs that NEW declares too); inst.q names a variable of an instance");
   sub->add_option("--ignore", opts->ignore, "An output not to compare (repeatable)");
   sub->add_option("--compare", opts->compare,
                   "Internal variables to compare as well, x,y,... (repeatable)");

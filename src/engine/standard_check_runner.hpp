@@ -29,6 +29,11 @@
 //                                            the engine cannot enumerate them. Grafcet: only
 //                                            evolutions that clear two transitions i, j with
 //                                            related(i, j) need be visited
+//   bool order_dependent(visit)              calls visit(x, a, b) (OrderEdge) for pairs of
+//                                            evolutions of a reached situation x to different
+//                                            targets, at least one under an `order:` input
+//                                            (IEC 61131-3, docs/semantics.md 1.2a); false when
+//                                            the engine cannot enumerate them
 //   std::vector<Anomaly<Set>> anomalies()    instabilities and range errors, described
 //   std::optional<std::string> failure()     set once a limit ended the engine's work
 //   std::string note_limit(e)                the message of a limit that stopped a check
@@ -84,6 +89,21 @@ inline bool conditions_intersect(const semantics::InputCondition& a,
   for (const auto& x : a.cubes)
     for (const auto& y : b.cubes)
       if (cubes(x, y)) return true;
+  return false;
+}
+
+/// One evolution of a situation, as order_dependent() shows it.
+struct OrderEdge {
+  const semantics::InputCondition& condition;
+  semantics::StateView target;
+  std::span<const std::uint32_t> fired;
+};
+
+/// Whether an evolution's condition names an `order:` input (logic::order_inputs).
+inline bool mentions_input(const semantics::InputCondition& c, const std::vector<bool>& which) {
+  for (const auto& cube : c.cubes)
+    for (const auto& l : cube.literals)
+      if (l.input < which.size() && which[l.input]) return true;
   return false;
 }
 
@@ -212,6 +232,9 @@ class StandardCheckRunner {
         break;
       case StandardCheck::OutputConflicts:
         output_conflicts(r);
+        break;
+      case StandardCheck::OrderDependence:
+        order_dependence(r);
         break;
       case StandardCheck::Instability:
         instability(r);
@@ -1011,6 +1034,115 @@ class StandardCheckRunner {
     finish(r, mixed.empty() ? "no variable is written by both continuous and stored actions"
                             : "the continuous assignation and the stored value of every variable "
                               "written both ways always agree");
+  }
+
+  /// order-dependence (docs/semantics.md 1.2a): a reached situation and plant inputs under
+  /// which two admissible action orders give different next situations. Once every input is
+  /// fixed the semantics is deterministic, so two evolutions of one situation to different
+  /// targets whose conditions share a valuation of every input but the `order:` ones differ by
+  /// the order alone. The trace ends with the evolution under the first order; the finding and
+  /// the trace's note name the second and the variables whose values differ.
+  void order_dependence(PropertyResult& r) {
+    const auto order = logic::order_inputs(ts_);
+    const auto& inputs = ts_.inputs();
+    const auto& layout = ts_.layout();
+    std::set<std::string> seen;
+    std::optional<logic::Trace> first_trace;
+    std::uint32_t first_depth = 0;
+    // The cube of `x` with the literals of `y` on every input but the order ones; nullopt
+    // when they contradict.
+    auto joined = [&](const semantics::InputCube& x, const semantics::InputCube& y) {
+      std::optional<semantics::InputCube> out = x;
+      for (const auto& m : y.literals) {
+        if (m.input < order.size() && order[m.input]) continue;
+        auto it =
+            std::find_if(out->literals.begin(), out->literals.end(),
+                         [&](const semantics::InputLiteral& l) { return l.input == m.input; });
+        if (it == out->literals.end()) {
+          out->literals.push_back(m);
+        } else {
+          it->lo = std::max(it->lo, m.lo);
+          it->hi = std::min(it->hi, m.hi);
+          if (it->lo > it->hi) return std::optional<semantics::InputCube>{};
+        }
+      }
+      std::sort(out->literals.begin(), out->literals.end(),
+                [](const auto& a, const auto& b) { return a.input < b.input; });
+      return out;
+    };
+    // The order literals as the traces show them ("order:motor=Stop<Start"), or the others.
+    auto only = [&](const semantics::InputCube& c, bool orders) {
+      semantics::InputCube out;
+      std::string text;
+      for (const auto& l : c.literals) {
+        if ((l.input < order.size() && order[l.input]) != orders) continue;
+        out.literals.push_back(l);
+        if (!orders) continue;
+        std::string value = std::to_string(l.lo);
+        for (const auto& [name, v] : inputs[l.input].type.enumerators)
+          if (v == l.lo && l.lo == l.hi) value = name;
+        text += (text.empty() ? "" : " & ") + inputs[l.input].name + "=" + value;
+      }
+      if (!orders)
+        return out.literals.empty() ? std::string()
+                                    : semantics::InputCondition{{out}}.to_string(inputs);
+      return text;
+    };
+    const bool visited =
+        sp_.order_dependent([&](const State& x, const OrderEdge& a, const OrderEdge& b) {
+          poll();
+          if (!mentions_input(a.condition, order) && !mentions_input(b.condition, order)) return;
+          for (const auto& ca : a.condition.cubes)
+            for (const auto& cb : b.condition.cubes) {
+              const auto under_a = joined(ca, cb);
+              const auto under_b = joined(cb, ca);
+              if (!under_a || !under_b) continue;
+              std::string diff, values_a, values_b;
+              for (std::uint32_t f = 0; f < layout.fields().size(); ++f) {
+                const auto va = layout.get(a.target, f), vb = layout.get(b.target, f);
+                if (va == vb) continue;
+                const auto& name = layout.fields()[f].name;
+                diff += (diff.empty() ? "" : ", ") + name;
+                values_a += (values_a.empty() ? "" : ", ") + name + " = " + std::to_string(va);
+                values_b += (values_b.empty() ? "" : ", ") + name + " = " + std::to_string(vb);
+              }
+              auto oa = only(*under_a, true), ob = only(*under_b, true);
+              if (ob < oa) {
+                std::swap(oa, ob);
+                std::swap(values_a, values_b);
+              }
+              if (!seen.insert(oa + "|" + ob + "|" + diff).second) return;
+              const auto plant = only(*under_a, false);
+              const std::string text = oa + " gives " + values_a + ", " + ob + " gives " + values_b;
+              add(r, "the next situation depends on the action order: from situation " +
+                         sp_.describe(x) + (plant.empty() ? "" : " under inputs " + plant) + ", " +
+                         text);
+              if (!first_trace || sp_.depth(x) < first_depth) {
+                first_depth = sp_.depth(x);
+                first_trace = sp_.path_to(sp_.singleton(x));
+                // The evolution under the first order closes the trace.
+                const bool a_first = only(*under_a, true) == oa;
+                const auto& e = a_first ? a : b;
+                logic::TraceStep step;
+                step.inputs =
+                    semantics::InputCondition{{a_first ? *under_a : *under_b}}.witness(inputs);
+                step.state.assign(e.target.begin(), e.target.end());
+                step.fired.assign(e.fired.begin(), e.fired.end());
+                first_trace->steps.push_back(std::move(step));
+                first_trace->note = "the last cycle runs " + oa + "; under " + ob +
+                                    " it would end with " + values_b + " instead of " + values_a;
+              }
+              return;
+            }
+        });
+    if (!visited) {
+      r.verdict = Verdict::NotChecked;
+      r.message = "not checked by the " + std::string(sp_.name()) +
+                  " engine (it needs each situation's evolutions); use --engine explicit or bdd";
+      return;
+    }
+    if (first_trace) r.trace = std::move(first_trace);
+    finish(r, "every admissible action order gives the same next situation");
   }
 
   void instability(PropertyResult& r) {

@@ -29,6 +29,8 @@ const std::vector<StandardCheckInfo>& standard_checks() {
        "stored actions: not set and reset together, not set while stored, always reset"},
       {StandardCheck::OutputConflicts, "output-conflicts",
        "no output written with different values by two actions in one cycle"},
+      {StandardCheck::OrderDependence, "order-dependence",
+       "no reachable situation where two admissible action orders give different results"},
       {StandardCheck::Instability, "instability",
        "no endless transient evolution (Grafcet) and no value out of range"},
   };
@@ -60,10 +62,26 @@ std::optional<std::string> not_applicable(StandardCheck c, const semantics::Tran
         return "alternative transitions are resolved by the standard priority (explicit "
                "priority, then document order); run with --priority none to find the conflicts";
       break;
+    case StandardCheck::OrderDependence: {
+      // Under a total order (declaration, alphabetical, a FILE total on every group) no input
+      // chooses an order: the next situation cannot depend on one.
+      const auto order = order_inputs(ts);
+      if (std::find(order.begin(), order.end(), true) == order.end())
+        return "every set of actions writing a common variable runs in one order (no "
+               "order:<variable> input); run with --action-order unordered or a partial FILE "
+               "order to ask";
+      break;
+    }
     default:
       break;
   }
   return std::nullopt;
+}
+
+std::vector<bool> order_inputs(const semantics::TransitionSystem& ts) {
+  std::vector<bool> out;
+  for (const auto& in : ts.inputs()) out.push_back(in.pseudo && in.name.starts_with("order:"));
+  return out;
 }
 
 std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view text,

@@ -26,6 +26,7 @@ enum class StandardCheck {
   Conflicts,        ///< alternative transitions enabled together with no priority
   StoredActions,    ///< S and R together, S while stored, S never reset
   OutputConflicts,  ///< one output written with different values in one cycle
+  OrderDependence,  ///< two admissible action orders give different next situations (1.2a)
   Instability,      ///< Grafcet: endless transient evolutions (and range errors)
 };
 
@@ -51,6 +52,10 @@ std::optional<std::vector<StandardCheck>> parse_check_selection(std::string_view
 /// answer is Verdict::NotApplicable, never "not checked" (which counts as unknown).
 std::optional<std::string> not_applicable(StandardCheck c, const semantics::TransitionSystem& ts,
                                           bool priority_resolves_conflicts);
+
+/// The `order:<variable>` pseudo-inputs of `ts` (docs/semantics.md 1.2a), by input index: the
+/// choice of a linearisation of a partial action order. None under a total order.
+std::vector<bool> order_inputs(const semantics::TransitionSystem& ts);
 
 /// A step of the chart and the observable that shows its activity.
 struct StepRef {

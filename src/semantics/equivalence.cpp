@@ -142,8 +142,12 @@ std::string diagnostics_text(const model::Diagnostics& diags) {
 void build_alone(Side& side, const Iec61131Options& options) {
   if (side.project.dialect != model::Dialect::Iec61131)
     throw UnsupportedConstruct(std::string("sfcv equiv: ") + side.label +
-                               " is a Grafcet (IEC 60848); equiv compares IEC 61131-3 programs "
-                               "only (docs/equivalence.md says why)");
+                               " is a Grafcet (IEC 60848): one of its evolutions is an input "
+                               "event followed by transient evolutions to a stable situation, "
+                               "one of a PLC's a scan crossing one transition per chart; no "
+                               "cycle-by-cycle correspondence between them is sound, so equiv "
+                               "compares IEC 61131-3 programs only (docs/equivalence.md, "
+                               "\"Grafcet against IEC 61131-3 code\")");
   model::Diagnostics diags;
   side.system = make_iec61131_system(side.project, options, diags);
   if (!side.system)
@@ -225,6 +229,8 @@ void free_variables_to_inputs(Side& side, const std::vector<ComparedSignal>& com
 struct Located {
   std::string program;  ///< name in the side's project
   model::Variable* variable = nullptr;
+  /// The variable's path in its program: its name, or `inst.q` for a member of an instance.
+  std::string path;
 };
 
 /// A program variable of the side named `name` or `Program.name`; nullopt when none.
@@ -238,10 +244,69 @@ std::optional<Located> locate(Side& side, const std::string& name) {
           throw InputError(std::string("sfcv equiv: '") + name + "' is ambiguous in " + side.label +
                            " (programs " + found->program + " and " + prog +
                            "); name it Program.variable");
-        found = Located{prog, &v};
+        found = Located{prog, &v, v.name};
       }
   }
   return found;
+}
+
+/// A variable of a function block instance of the side's programs: `inst.q` (`inst.sub.q`
+/// through nested instances) or `Program.inst.q`; nullopt when `name` is not such a path. The
+/// members of standard function blocks are refused (their fields are the semantics' own).
+std::optional<Located> locate_member(Side& side, const std::string& name) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const auto dot = name.find('.', start);
+    parts.push_back(name.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  if (parts.size() < 2) return std::nullopt;
+  std::optional<Located> found;
+  for (const auto& prog : side.programs) {
+    // With or without the program's name in front.
+    for (std::size_t first : {std::size_t{0}, std::size_t{1}}) {
+      if (first == 1 && !model::iequals(parts[0], prog)) continue;
+      if (parts.size() - first < 2) continue;
+      model::Pou* pou = find_pou(side.project, prog);
+      model::Variable* v = nullptr;
+      std::string path;
+      for (std::size_t k = first; k < parts.size() && pou; ++k) {
+        v = find_var(*pou, parts[k]);
+        if (!v) break;
+        path += (path.empty() ? "" : ".") + v->name;
+        if (k + 1 == parts.size()) break;
+        if (v->type.kind != model::TypeKind::FunctionBlock) {
+          v = nullptr;
+          break;
+        }
+        if (v->type.fb != model::StandardFb::None)
+          throw UsageError(std::string("sfcv equiv: '") + name + "' is a member of the standard " +
+                           v->type.name + " instance " + v->name + " in " + side.label +
+                           "; compare a variable it drives");
+        pou = find_pou(side.project, v->type.name);
+        if (!pou) v = nullptr;
+      }
+      if (!v || path.empty() || path.find('.') == std::string::npos) continue;
+      if (found && !model::iequals(found->program, prog))
+        throw InputError(std::string("sfcv equiv: '") + name + "' is ambiguous in " + side.label +
+                         " (programs " + found->program + " and " + prog + "); name it Program." +
+                         name);
+      found = Located{prog, v, path};
+    }
+  }
+  return found;
+}
+
+/// A program variable (locate) or a member of an instance (locate_member).
+std::optional<Located> locate_signal(Side& side, const std::string& name) {
+  if (name.find('.') != std::string::npos)
+    if (auto m = locate_member(side, name)) return m;
+  return locate(side, name);
+}
+
+bool is_member_path(const std::string& name) {
+  return name.find('.') != std::string::npos;
 }
 
 bool same_type(const model::Type& a, const model::Type& b) {
@@ -256,6 +321,17 @@ std::string type_text(const model::Type& t) {
 
 void apply_map(Side& new_side, Side& old_side, const EquivalenceOptions& options) {
   for (const auto& [old_name, new_name] : options.map) {
+    if (is_member_path(old_name) || is_member_path(new_name)) {
+      // A member of an instance is compared where it is (choose_signals pairs the two paths):
+      // the type it belongs to may be shared by both sides, so nothing is renamed.
+      const auto o = locate_signal(old_side, old_name);
+      const auto n = locate_signal(new_side, new_name);
+      if (!o || !n)
+        throw UsageError("sfcv equiv --map " + old_name + "=" + new_name + ": " +
+                         (!o ? "OLD" : "NEW") + " has no variable '" + (!o ? old_name : new_name) +
+                         "' in its programs or their instances");
+      continue;
+    }
     if (!locate(old_side, old_name))
       throw UsageError("sfcv equiv --map " + old_name + "=" + new_name + ": OLD has no variable '" +
                        old_name + "' in its programs");
@@ -466,7 +542,9 @@ std::int64_t initial_value(Side& side, const std::string& program, const std::st
                            const std::string& declared) {
   if (const auto index = find_observable(*side.system, program + "." + var))
     return side.system->observe(side.initial, *index);
-  const auto* v = find_var(*find_pou(side.project, program), declared);
+  const model::Variable* v = find_var(*find_pou(side.project, program), declared);
+  if (!v && is_member_path(var))
+    if (const auto m = locate_member(side, program + "." + var)) v = m->variable;
   if (!v) throw InternalError("sfcv equiv: no variable " + program + "." + var);
   return std::clamp<std::int64_t>(v->initial.value_or(0), v->type.lo, v->type.hi);
 }
@@ -500,13 +578,23 @@ void choose_signals(Side& old_side, Side& new_side, const EquivalenceOptions& o,
 
   std::set<std::string> seen;
   for (const auto& [name, internal] : wanted) {
-    const auto old_at = locate(old_side, name);
+    const auto old_at = locate_signal(old_side, name);
     if (!old_at)
       throw UsageError("sfcv equiv: OLD's programs have no variable '" + name +
-                       "' to compare (instance members are not compared yet)");
-    // apply_map gave NEW's variable OLD's name already.
-    const auto new_name = mapped_name(o, old_at->variable->name);
-    const auto new_at = locate(new_side, old_at->variable->name);
+                       "' to compare (neither a program variable nor a member `inst.q` of an "
+                       "instance)");
+    if (listed(o.ignore, old_at->path, old_at->program)) continue;
+    // apply_map gave NEW's program variable OLD's name already; a member of an instance is
+    // paired by its --map entry (by the whole path, or the program-qualified one), else by its
+    // own path.
+    const bool member = is_member_path(old_at->path);
+    std::string new_name = mapped_name(o, member ? old_at->path : old_at->variable->name);
+    if (member && new_name == old_at->path) {
+      const auto qualified = old_at->program + "." + old_at->path;
+      if (const auto m = mapped_name(o, qualified); m != qualified) new_name = m;
+    }
+    const auto new_at =
+        member ? locate_signal(new_side, new_name) : locate(new_side, old_at->variable->name);
     if (!new_at)
       throw UsageError("sfcv equiv: NEW's programs have no variable '" + new_name +
                        "' to compare with OLD's '" + name + "' (--map " + name + "=...)");
@@ -517,14 +605,14 @@ void choose_signals(Side& old_side, Side& new_side, const EquivalenceOptions& o,
     if ((ot.kind == model::TypeKind::Bool) != (nt.kind == model::TypeKind::Bool))
       throw InputError("sfcv equiv: '" + name + "' is " + type_text(ot) + " in OLD and " +
                        type_text(nt) + " in NEW");
-    if (!seen.insert(model::to_upper(old_at->program + "." + old_at->variable->name)).second)
-      continue;
+    if (!seen.insert(model::to_upper(old_at->program + "." + old_at->path)).second) continue;
     ComparedSignal s;
-    s.name = old_at->variable->name;
-    s.new_name = new_name;
-    s.old_ref = old_side.prefix + old_at->program + "." + old_at->variable->name;
-    // --map renamed NEW's variable to OLD's name in the product.
-    s.new_ref = new_side.prefix + new_at->program + "." + old_at->variable->name;
+    s.name = old_at->path;
+    s.new_name = member ? new_at->path : new_name;
+    s.old_ref = old_side.prefix + old_at->program + "." + old_at->path;
+    // --map renamed NEW's program variable to OLD's name in the product; an instance member
+    // keeps NEW's path.
+    s.new_ref = new_side.prefix + new_at->program + "." + (member ? new_at->path : old_at->path);
     s.type = ot;
     s.new_type = nt;
     s.internal = internal;
@@ -537,7 +625,8 @@ void choose_signals(Side& old_side, Side& new_side, const EquivalenceOptions& o,
 }
 
 model::ExprPtr var_ref(const std::string& path) {
-  const auto dot = path.find('.');
+  // `Old_Main.inst.q` as the parser reads it: the member after the last dot.
+  const auto dot = path.rfind('.');
   return model::make_member(path.substr(0, dot), path.substr(dot + 1));
 }
 

@@ -31,9 +31,9 @@ TEST(CheckCommand, ChemicalPlantPaperResults) {
 TEST(CheckCommand, DefaultRunsTheStandardChecks) {
   const auto r = run_sfcv("check " + kPlant + " --trace none");
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
-  for (const char* name :
-       {"reachable", "dead-transitions", "reentry", "global-deadlock", "local-deadlock",
-        "initial-return", "conflicts", "stored-actions", "output-conflicts", "instability"})
+  for (const char* name : {"reachable", "dead-transitions", "reentry", "global-deadlock",
+                           "local-deadlock", "initial-return", "conflicts", "stored-actions",
+                           "output-conflicts", "order-dependence", "instability"})
     EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name << "\n"
                                                                              << r.out;
   // Conflicts under the standard priority: n/a (was "not checked", which now counts as unknown).

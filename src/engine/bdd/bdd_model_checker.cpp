@@ -541,6 +541,38 @@ class Run {
       return true;
     }
 
+    /// Order-dependence (engine/standard_check_runner.hpp): the situations where the order
+    /// inputs change the next state are found on the BDDs (SymbolicSystem::order_matters), then
+    /// each, ring by ring, is expanded through the system's successor function, so that its
+    /// edges are the explicit graph's. At most kMaxOrderSituations are expanded: the verdict
+    /// needs one, the findings are the first ones (the explicit engine lists every one).
+    template <class Visit>
+    bool order_dependent(Visit&& visit) {
+      static constexpr std::size_t kMaxOrderSituations = 64;
+      const auto& ts = run_.ts_;
+      const auto order = logic::order_inputs(ts);
+      Bdd open = sys_.order_matters(run_.reached_);
+      std::size_t expanded = 0;
+      for (const auto& ring : run_.rings_)
+        for (Bdd here = open & ring; !here.is_false() && expanded < kMaxOrderSituations;
+             here = open & ring, ++expanded) {
+          run_.task_.limits.check_time("looking for order dependence");
+          const State x = sys_.pick(here);
+          open = open & !sys_.singleton(x);
+          MergedEdges edges;
+          ts.successors(x, edges);
+          for (std::size_t a = 0; a < edges.list.size(); ++a)
+            for (std::size_t b = a + 1; b < edges.list.size(); ++b) {
+              const auto& ea = edges.list[a];
+              const auto& eb = edges.list[b];
+              if (mentions_input(ea.condition, order) || mentions_input(eb.condition, order))
+                visit(x, OrderEdge{ea.condition, ea.target, ea.fired},
+                      OrderEdge{eb.condition, eb.target, eb.fired});
+            }
+        }
+      return true;
+    }
+
     /// Range errors (IEC 61131-3); Grafcet (docs/semantics.md 2.11): events whose transient
     /// evolutions never stabilise or raise a range error, from reached situations or at the start.
     std::vector<Anomaly<Set>> anomalies() const {

@@ -974,6 +974,31 @@ Bdd SymbolicSystem::choice_matters(const Bdd& states) {
   return out;
 }
 
+Bdd SymbolicSystem::order_matters(const Bdd& states) {
+  if (grafcet_) throw std::logic_error("order inputs: IEC 61131-3 only");
+  if (!order_cube_) {
+    std::vector<int> order;
+    for (std::size_t i = 0; i < ts_.inputs().size(); ++i) {
+      const auto& in = ts_.inputs()[i];
+      if (!in.pseudo || !in.name.starts_with("order:")) continue;
+      for (auto bit : circuit_.input_bits[i]) {
+        const Bdd v = node_bdd(bit);
+        if (!v.is_true() && !v.is_false()) order.push_back(v.top());
+      }
+    }
+    order_cube_ = Bdd::cube(order);
+  }
+  // A latch whose next value is 1 under one order and 0 under another, the state and the other
+  // inputs fixed: the cycle's result depends on the order.
+  const Bdd ok = ok_ & states;
+  Bdd out = Bdd::constant(false);
+  for (const auto& latch : circuit_.aig.latches()) {
+    const Bdd f = node_bdd(latch.next);
+    out = out | ((ok & f).exist(*order_cube_) & (ok & !f).exist(*order_cube_));
+  }
+  return out.exist(input_cube_);
+}
+
 Bdd SymbolicSystem::pick_point(const Bdd& set) {
   prepare_choice_cubes();
   return set.sat_one(current_cube_ & plant_cube_);

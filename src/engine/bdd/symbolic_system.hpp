@@ -175,6 +175,10 @@ class SymbolicSystem {
   /// The (x, plant inputs) with a fired set (under some choice) that `point` has under no
   /// choice: those whose alternatives `point`'s do not cover.
   Bdd beyond_fired_sets_of(const Bdd& point);
+  /// The states of `states` (over current variables) from which, under some plant inputs, two
+  /// values of the `order:` inputs (docs/semantics.md 1.2a) give different next states (both
+  /// allowed and error-free): the order-dependence check's candidates. IEC 61131-3 only.
+  Bdd order_matters(const Bdd& states);
   /// The state of a point, over current variables.
   Bdd point_state(const Bdd& point) const { return point.exist(input_cube_); }
 
@@ -309,6 +313,7 @@ class SymbolicSystem {
   std::vector<bool> fires_set_;
   std::optional<Bdd> choice_cube_;  ///< the `choice:` input variables (prepare_choice_cubes)
   Bdd plant_cube_;                  ///< every other input variable
+  std::optional<Bdd> order_cube_;   ///< the `order:` input variables (order_matters)
   // Grafcet mode.
   std::unique_ptr<semantics::GrafcetCircuit> grafcet_circuit_;
   std::unique_ptr<GrafcetClosure> grafcet_;

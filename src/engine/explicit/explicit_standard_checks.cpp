@@ -180,6 +180,25 @@ class ExplicitSpace {
     return true;
   }
 
+  /// Every pair of edges out of one state (edges are merged by target: their targets differ)
+  /// where at least one names an `order:` input.
+  template <class Visit>
+  bool order_dependent(Visit&& visit) const {
+    const auto order = logic::order_inputs(ts_);
+    const auto& states = g_.states();
+    for (std::uint32_t s = 0; s < n_; ++s) {
+      if (!g_.expanded(s)) continue;
+      for (auto a = g_.edges_begin(s); a < g_.edges_end(s); ++a) {
+        const bool a_ordered = mentions_input(g_.condition(a), order);
+        for (auto b = a + 1; b < g_.edges_end(s); ++b)
+          if (g_.target(a) != g_.target(b) && (a_ordered || mentions_input(g_.condition(b), order)))
+            visit(s, OrderEdge{g_.condition(a), states.at(g_.target(a)), g_.fired(a)},
+                  OrderEdge{g_.condition(b), states.at(g_.target(b)), g_.fired(b)});
+      }
+    }
+    return true;
+  }
+
   std::vector<Anomaly<Set>> anomalies() const {
     std::vector<Anomaly<Set>> out;
     for (const auto& a : g_.anomalies()) {
