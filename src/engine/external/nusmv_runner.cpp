@@ -11,6 +11,9 @@
 
 namespace sfcv::engine {
 
+const char* const kNusmvCommands =
+    "unset use_coi_size_sorting\ngo\ncheck_ctlspec\ncheck_invar\nquit\n";
+
 std::optional<std::string> find_nusmv() {
   return find_on_path({"NuSMV"});
 }
@@ -222,7 +225,15 @@ class NusmvModelChecker final : public ModelChecker {
       std::ofstream f(dir.path() + "/model.smv");
       write_nusmv(f, exported.model);
     }
-    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.seconds_left());
+    {
+      // NuSMV 2.6 checks (and prints) the properties of one kind ordered by the size of their
+      // cone of influence, not in file order, and its verdict lines carry no property name:
+      // read in file order, the verdicts of two properties could swap (a false "holds").
+      std::ofstream f(dir.path() + "/sfcv.cmd");
+      f << kNusmvCommands;
+    }
+    const auto run = run_tool({nusmv_, "-source", "sfcv.cmd", "model.smv"}, dir.path(),
+                              task.limits.seconds_left());
     const auto verdicts = parse_nusmv_output(run.output);
 
     logic::CheckReport report;
