@@ -111,6 +111,10 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   } catch (const engine::ExportError& e) {
     throw InputError(std::string("sfcv export: ") + e.what());
   }
+  if (exported.loop_limit_latch)
+    std::cerr << "sfcv export: " << exported.circuit.loop_limit_message()
+              << "; such a cycle sets the latch sfcv_loop_limit, where every exported property "
+                 "fails (a counterexample ending there is unknown, docs/exports.md)\n";
   if (o.to != "promela" && !exported.model.ltl.empty())
     throw InputError("sfcv export --to " + o.to + ": LTL properties are exported to promela only");
   if (!smv && !exported.ctl_only.empty()) {

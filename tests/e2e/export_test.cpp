@@ -316,6 +316,42 @@ TEST(Export, HostileNamesKeepEveryFormatWellFormed) {
   for (const auto& f : {file, csv, json_trace, again, sarif, junit}) std::filesystem::remove(f);
 }
 
+// A loop that may run past sfcv's loop bound (issue 53): the circuit exports carry the latch
+// sfcv_loop_limit where every property fails (docs/exports.md), the command says so on
+// standard error, and an LTL property is refused with the loop named.
+TEST(Export, ALoopThatMayMeetTheBoundIsFlaggedNotCut) {
+  const auto file = write_temp(R"(
+PROGRAM Loop
+  VAR_INPUT go : BOOL; END_VAR
+  VAR n : INT; bad : BOOL; END_VAR
+  n := 0;
+  WHILE go AND n < 2000 DO
+    n := n + 1;
+  END_WHILE;
+  IF n >= 2000 THEN
+    bad := TRUE;
+  END_IF;
+END_PROGRAM
+)",
+                               ".st");
+  const auto q = "'" + file + "'";
+  const auto smv = run_sfcv("export " + q + " --to nusmv --ctl 'AG !bad' --ctl 'AG EF !bad'");
+  ASSERT_EQ(smv.exit_code, 0) << smv.err;
+  EXPECT_NE(smv.err.find("sets the latch sfcv_loop_limit"), std::string::npos) << smv.err;
+  EXPECT_NE(smv.out.find("INVARSPEC NAME p_no_loop_limit := !(s_sfcv_loop_limit);"),
+            std::string::npos)
+      << smv.out;
+  EXPECT_NE(smv.out.find(":= (AG !o_sfcv_loop_limit) & (AG EF !o_bad);"), std::string::npos)
+      << smv.out;
+  const auto pml = run_sfcv("export " + q + " --to promela --ctl 'AG !bad'");
+  ASSERT_EQ(pml.exit_code, 0) << pml.err;
+  EXPECT_NE(pml.out.find("bit s_sfcv_loop_limit = 0;"), std::string::npos) << pml.out;
+  const auto ltl = run_sfcv("export " + q + " --to promela --ltl 'G !bad'");
+  EXPECT_EQ(ltl.exit_code, 2);
+  EXPECT_NE(ltl.err.find("may run past the bound"), std::string::npos) << ltl.err;
+  std::filesystem::remove(file);
+}
+
 TEST(CheckNusmv, SaysSoWhenNoNusmvIsFound) {
   const char* old = std::getenv("PATH");
   const std::string saved = old ? old : "";

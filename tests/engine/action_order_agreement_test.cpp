@@ -6,12 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <iostream>
+#include <map>
 
 #include "chart_families.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/export_model.hpp"
+#include "engine/external/nusmv_runner.hpp"
 #include "engine/external/spin_runner.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "io/load.hpp"
@@ -19,6 +22,8 @@
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/ctl_task.hpp"
+#include "support/nusmv_path.hpp"
+#include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -172,7 +177,8 @@ END_PROGRAM
 TEST(ActionOrderAgreement, SpinAgreesOnThePromelaExportOfTheUnorderedChart) {
   const auto spin = find_spin();
   if (!spin) GTEST_SKIP() << "spin not installed";
-  std::cerr << "[ NOTE ] NuSMV is not installed in CI: the NuSMV export is not compared here\n";
+  std::cerr << "[ NOTE ] NuSMV is not installed in CI: the NuSMV export is compared by "
+               "ActionOrderAgreement.NusmvAgreesUnderEveryOrder when SFCV_NUSMV is set\n";
   semantics::Iec61131Options o;
   o.action_order = semantics::ActionOrder::Unordered;
   const auto s = load(kPress, o);
@@ -186,6 +192,62 @@ TEST(ActionOrderAgreement, SpinAgreesOnThePromelaExportOfTheUnorderedChart) {
   const auto e = build_export(*s.ts, request);
   const auto v = check_with_spin(*spin, e.model, 0);
   EXPECT_EQ(v.kind, SpinVerdict::Kind::Violated) << v.log;
+}
+
+// Issue 47: the NuSMV export under every order gives sfcv's verdicts, on the set/reset chart
+// (the property that holds under the declaration order and not when unordered) and on the
+// seed's chemical plant (no shared outputs: the same verdicts under every order). Runs with
+// $SFCV_NUSMV (or NuSMV on PATH); skipped, visibly, without one.
+TEST(ActionOrderAgreement, NusmvAgreesUnderEveryOrder) {
+  REQUIRE_NUSMV(nusmv);
+  std::ifstream f(test::source_path("examples/chemical_plant/chemical_plant.st"));
+  const std::string plant((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  struct Case {
+    std::string name, text;
+    std::vector<std::string> ctl;
+    std::vector<semantics::ActionPair> pairs;
+  };
+  const std::vector<Case> cases = {
+      {"press",
+       kPress,
+       {"AG (Idle -> !motor)", "AG (Halt -> motor)", "AG EF Idle", "EF (Idle & motor)",
+        "AG (Run -> motor)", "AG (Halt -> AF Idle)"},
+       {{"Stop", "Start", {}}}},
+      {"chemical plant",
+       plant,
+       {"AG !(V1 & V3)", "AG !(V2 & V4)", "AG EF s9", "EF (V1 & V2)", "AG (s2 -> AF s3)",
+        "AG (V1 -> s2)"},
+       {}}};
+  int compared = 0, agreed = 0;
+  std::map<std::string, std::vector<logic::Verdict>> press;
+  for (const auto& c : cases)
+    for (auto order : {semantics::ActionOrder::Declaration, semantics::ActionOrder::Alphabetical,
+                       semantics::ActionOrder::Partial, semantics::ActionOrder::Unordered}) {
+      const std::string label = c.name + " order " + std::to_string(static_cast<int>(order));
+      SCOPED_TRACE(label);
+      semantics::Iec61131Options o;
+      o.action_order = order;
+      if (order == semantics::ActionOrder::Partial) o.action_pairs = c.pairs;
+      const auto s = load(c.text, o);
+      ASSERT_TRUE(s.ts);
+      const auto task = test::task_for(s.project, *s.ts, c.ctl, {});
+      const auto expected = make_explicit_model_checker()->check(task);
+      const auto got = make_nusmv_model_checker(*nusmv)->check(task);
+      ASSERT_EQ(got.results.size(), expected.results.size());
+      for (std::size_t p = 0; p < got.results.size(); ++p) {
+        ASSERT_NE(expected.results[p].verdict, logic::Verdict::Unknown);
+        ++compared;
+        agreed += got.results[p].verdict == expected.results[p].verdict;
+        EXPECT_EQ(got.results[p].verdict, expected.results[p].verdict)
+            << c.ctl[p] << ": " << got.results[p].message;
+        if (c.name == "press") press[c.ctl[p]].push_back(got.results[p].verdict);
+      }
+    }
+  // The issue's reading, from NuSMV: holds under the declaration order, violated unordered.
+  EXPECT_EQ(press["AG (Idle -> !motor)"].front(), logic::Verdict::Holds);
+  EXPECT_EQ(press["AG (Idle -> !motor)"].back(), logic::Verdict::Violated);
+  std::cout << "[ nusmv ] action orders: " << agreed << " of " << compared << " verdicts agree\n";
+  EXPECT_EQ(compared, 4 * 12);
 }
 
 }  // namespace

@@ -254,6 +254,102 @@ TEST(Confirmation, GeneratedChartsAgreeWithSpinAndAbc) {
   EXPECT_GT(holds, 0u);
 }
 
+// Issue 53: a cycle whose ST loop meets sfcv's bound (1000 iterations) has no successor in
+// sfcv, which answers unknown (the loop may still end: here it does, after 2000 iterations, and
+// sets bad). The exports once cut that cycle too, and Spin and ABC proved AG !bad. Now the cycle
+// sets the latch sfcv_loop_limit, where every property fails: both tools report a violation
+// whose trace ends in the flag (read back as unknown), and the run before that cycle replays.
+TEST(Confirmation, ALoopLimitCycleIsNeverProvedSafe) {
+  REQUIRE_TOOLS();
+  const auto c = check_text(R"(
+PROGRAM Chart
+  VAR_GLOBAL bad : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Done: END_STEP
+  TRANSITION FROM Idle TO Done := bad; END_TRANSITION
+END_PROGRAM
+PROGRAM Loop
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_EXTERNAL bad : BOOL; END_VAR
+  VAR n : INT; END_VAR
+  n := 0;
+  WHILE go AND n < 2000 DO
+    n := n + 1;
+  END_WHILE;
+  IF n >= 2000 THEN
+    bad := TRUE;
+  END_IF;
+END_PROGRAM
+)",
+                            {"AG !bad"});
+  ASSERT_TRUE(c);
+  for (const auto& r : c->report.results) ASSERT_EQ(r.verdict, logic::Verdict::Unknown) << r.name;
+  ExportRequest request;
+  request.target = ExportTarget::Circuit;
+  request.properties = c->task.properties;
+  const auto e = build_export(*c->ts, request);
+  ASSERT_TRUE(e.loop_limit_latch);
+  const auto aig = aiger_circuit(e.model);
+  auto expect_ends_in_flag = [&](std::vector<std::vector<bool>> frames, const char* tool) {
+    ASSERT_FALSE(frames.empty()) << tool;
+    EXPECT_TRUE(ends_in_loop_limit(e, frames)) << tool;
+    // Every cycle but the last replays; the last one meets the loop bound.
+    auto inputs = frames_to_inputs(*c->ts, e.circuit, frames);
+    EXPECT_THROW(semantics::simulate(*c->ts, semantics::first_initial_state(*c->ts), inputs),
+                 LimitReached)
+        << tool;
+    inputs.pop_back();
+    const auto before = semantics::simulate(*c->ts, semantics::first_initial_state(*c->ts), inputs);
+    EXPECT_TRUE(before.ok) << tool << ": " << before.error;
+  };
+  for (std::size_t b = 0; b < e.bad_property.size(); ++b) {
+    SCOPED_TRACE(e.model.aig.bad()[b].name);
+    if (const auto spin = find_spin()) {
+      const auto v = check_with_spin(*spin, e.model, b);
+      ASSERT_EQ(v.kind, SpinVerdict::Kind::Violated) << v.log;
+      expect_ends_in_flag(v.frames, "spin");
+    }
+    if (const auto abc = find_abc()) {
+      const auto v = check_with_abc(*abc, aig, b, "pdr");
+      ASSERT_EQ(v.kind, AbcVerdict::Kind::Violated) << v.log;
+      auto frames = v.frames;  // the last frame is the bad state's own
+      ASSERT_FALSE(frames.empty());
+      frames.pop_back();
+      expect_ends_in_flag(frames, "abc");
+    }
+  }
+}
+
+// A loop that could meet the bound in an unreachable state: the flag stays unset, and the
+// verdicts are exact (AG !bad holds, AG !alarm is violated with a counterexample that replays).
+TEST(Confirmation, AnUnreachableLoopLimitKeepsTheVerdicts) {
+  REQUIRE_TOOLS();
+  const auto c = check_text(R"(
+PROGRAM Guard
+  VAR_INPUT go : BOOL; END_VAR
+  VAR lock : BOOL; n : INT; bad : BOOL; alarm : BOOL; END_VAR
+  n := 0;
+  WHILE lock AND go AND n < 2000 DO
+    n := n + 1;
+  END_WHILE;
+  IF n >= 2000 THEN
+    bad := TRUE;
+  END_IF;
+  lock := FALSE;
+  alarm := go;
+END_PROGRAM
+)",
+                            {"AG !bad", "AG !alarm"});
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->report.results.at(0).verdict, logic::Verdict::Holds);
+  ASSERT_EQ(c->report.results.at(1).verdict, logic::Verdict::Violated);
+  ExportRequest request;
+  request.target = ExportTarget::Circuit;
+  request.properties = c->task.properties;
+  ASSERT_TRUE(build_export(*c->ts, request).loop_limit_latch);  // the loop is in the circuit
+  confirm(*c);
+}
+
 // Names that once changed the exports' meaning (issue 53): in Promela, "*/" then
 // "#define assert(x) skip" turned every assertion into skip and Spin found no error; a name
 // with a line break split an AIGER symbol line. Each hostile name is an input, a step or a

@@ -170,6 +170,133 @@ TEST(ExportModel, RefusesGrafcet) {
   }
 }
 
+// Issue 53: a cycle whose ST loop meets sfcv's bound (1000 iterations) has no successor in
+// sfcv, which answers unknown; the export once cut it too, so an outside tool proved `AG !bad`
+// here although bad follows that cycle (the loop ends after 2000 iterations on a PLC).
+const char* kLoopChart = R"(
+PROGRAM Chart
+  VAR_GLOBAL bad : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Done: END_STEP
+  TRANSITION FROM Idle TO Done := bad; END_TRANSITION
+END_PROGRAM
+PROGRAM Loop
+  VAR_INPUT go : BOOL; END_VAR
+  VAR_EXTERNAL bad : BOOL; END_VAR
+  VAR n : INT; END_VAR
+  n := 0;
+  WHILE go AND n < 2000 DO
+    n := n + 1;
+  END_WHILE;
+  IF n >= 2000 THEN
+    bad := TRUE;
+  END_IF;
+END_PROGRAM
+)";
+
+TEST(ExportModel, ALoopLimitCycleSetsALatchWhereEveryPropertyFails) {
+  auto s = make(kLoopChart, {"AG !bad", "AG EF !bad"});
+  ExportRequest r;
+  r.properties = s.props;
+  r.reachability = false;
+  const auto e = build_export(*s.ts, r);
+  ASSERT_TRUE(e.loop_limit_latch);
+  const auto& aig = e.model.aig;
+  const auto flag = *e.loop_limit_latch;
+  EXPECT_EQ(aig.latches()[flag].name, "sfcv_loop_limit");
+  EXPECT_FALSE(aig.latches()[flag].initial);
+  EXPECT_FALSE(e.model.latch_comments[flag].empty());
+  // The invariant, then NuSMV's "no_loop_limit" (for reading CTL verdicts back).
+  ASSERT_EQ(aig.bad().size(), 2u);
+  ASSERT_TRUE(e.loop_limit_bad);
+  EXPECT_EQ(aig.bad()[*e.loop_limit_bad].name, "no_loop_limit");
+  EXPECT_EQ(e.bad_property, (std::vector<std::int32_t>{0, -1}));
+  // A loop-limit cycle is not cut: go = 1 sets the flag, which stays set whatever follows.
+  std::vector<bool> latches;
+  for (const auto& l : aig.latches()) latches.push_back(l.initial);
+  for (bool go : {false, true, false}) {
+    const auto v = aig.evaluate({go}, latches);
+    for (const auto& c : aig.constraints()) EXPECT_TRUE(Aig::value_of(v, c.literal));
+    EXPECT_EQ(Aig::value_of(v, aig.bad()[0].literal), latches[flag]);  // bad is never set
+    for (std::size_t l = 0; l < latches.size(); ++l)
+      latches[l] = Aig::value_of(v, aig.latches()[l].next);
+    EXPECT_TRUE(latches[flag] || !go);
+  }
+  EXPECT_TRUE(latches[flag]);
+  const auto v = aig.evaluate({false}, latches);
+  EXPECT_TRUE(Aig::value_of(v, aig.bad()[0].literal));  // AG !bad fails in the flag state
+  EXPECT_TRUE(ends_in_loop_limit(e, {{false}, {true}}));
+  EXPECT_FALSE(ends_in_loop_limit(e, {{false}, {false}}));
+  EXPECT_FALSE(ends_in_loop_limit(e, {}));
+  // CTL text fails wherever the flag is reachable.
+  ASSERT_EQ(e.model.ctl.size(), 1u);
+  const auto& ctl = e.model.ctl[0].second;
+  ASSERT_EQ(ctl.rfind("(AG !{", 0), 0u) << ctl;
+  const auto k = std::stoul(ctl.substr(6));
+  EXPECT_EQ(aig.outputs().at(k).literal, aig.latches()[flag].current);
+  EXPECT_NE(ctl.find("}) & (AG EF "), std::string::npos) << ctl;
+  std::ostringstream out;
+  write_nusmv(out, e.model);
+  EXPECT_NE(out.str().find("INVARSPEC NAME p_no_loop_limit := !(s_sfcv_loop_limit);"),
+            std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("-- sfcv_loop_limit: a loop (at small.st:"), std::string::npos);
+}
+
+TEST(ExportModel, ALoopLimitFlagsReachabilityAndRefusesLtl) {
+  auto s = make(kLoopChart, {});
+  ExportRequest r;
+  r.target = ExportTarget::Circuit;
+  r.reachability = true;
+  const auto e = build_export(*s.ts, r);
+  ASSERT_TRUE(e.loop_limit_latch);
+  EXPECT_FALSE(e.loop_limit_bad);  // AIGER and Promela: each invariant carries the flag
+  // "Done unreachable" fails in the flag state: Done follows the loop-limit cycle only.
+  const auto& aig = e.model.aig;
+  ASSERT_EQ(aig.bad().size(), 2u);
+  EXPECT_EQ(aig.bad()[1].name, "unreachable_Chart.Done");
+  std::vector<bool> latches;
+  for (const auto& l : aig.latches()) latches.push_back(l.initial);
+  EXPECT_FALSE(Aig::value_of(aig.evaluate({false}, latches), aig.bad()[1].literal));
+  latches[*e.loop_limit_latch] = true;
+  EXPECT_TRUE(Aig::value_of(aig.evaluate({false}, latches), aig.bad()[1].literal));
+  logic::CheckInputs in;
+  in.ltl = {"G !bad"};
+  auto parsed = logic::parse_check_inputs(in);
+  logic::CheckTask task;
+  model::Diagnostics diags;
+  logic::resolve_into(parsed.spec, *s.ts, task, diags);
+  ASSERT_TRUE(diags.empty());
+  r.properties = task.properties;
+  try {
+    build_export(*s.ts, r);
+    FAIL() << "no error";
+  } catch (const ExportError& x) {
+    EXPECT_NE(std::string(x.what()).find("may run past the bound"), std::string::npos) << x.what();
+  }
+}
+
+TEST(ExportModel, NoLoopLimitLatchWithoutALoopThatCanMeetTheBound) {
+  auto s = make(R"(
+PROGRAM Bounded
+  VAR_INPUT go : BOOL; END_VAR
+  VAR i : INT; n : INT(0..20); END_VAR
+  n := 0;
+  FOR i := 1 TO 10 DO
+    IF go THEN n := n + 1; END_IF;
+  END_FOR;
+END_PROGRAM
+)",
+                {"AG n <= 10"});
+  ExportRequest r;
+  r.properties = s.props;
+  const auto e = build_export(*s.ts, r);
+  EXPECT_FALSE(e.loop_limit_latch);
+  EXPECT_FALSE(e.loop_limit_bad);
+  EXPECT_EQ(e.model.aig.bad().size(), 1u);
+  for (const auto& l : e.model.aig.latches()) EXPECT_NE(l.name, "sfcv_loop_limit");
+}
+
 TEST(NusmvOutput, ReadsVerdictLinesByKindInFileOrder) {
   // NuSMV 2.6 prints CTL verdicts, then invariants, each with its trace when false.
   const std::string text = R"(*** This is NuSMV 2.6.0 (compiled on Wed Oct 14 15:37:51 2015)

@@ -58,11 +58,15 @@ struct HostileChart {
   std::vector<std::string> inputs, steps, variables;
 };
 
-inline HostileChart hostile_chart() {
+/// `rotate` (0, 1, 2) shifts the roles: over the three rotations every name is once an input,
+/// once a step and once a variable.
+inline HostileChart hostile_chart(std::size_t rotate = 0) {
   HostileChart h;
   const auto& names = hostile_names();
-  for (std::size_t i = 0; i < names.size(); ++i)
-    (i % 3 == 0 ? h.inputs : i % 3 == 1 ? h.steps : h.variables).push_back(names[i]);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto role = (i + rotate) % 3;
+    (role == 0 ? h.inputs : role == 1 ? h.steps : h.variables).push_back(names[i]);
+  }
   PouBuilder b("P");
   for (const auto& in : h.inputs) b.input(in, "BOOL");
   for (const auto& v : h.variables) b.var(v, "BOOL");

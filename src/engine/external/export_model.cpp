@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 #include <map>
+#include <stdexcept>
 
 #include "logic/formula.hpp"
 
@@ -221,6 +222,38 @@ std::string ltl_claim(const logic::Formula& f, Builder& builder, std::vector<Aig
 }
 }  // namespace
 
+namespace {
+// The latch `sfcv_loop_limit` (TransitionCircuit::loop_limit): set by a cycle that meets the ST
+// loop bound, then kept; kFalse when no cycle can meet it. Also an output, for CTL text.
+AigLit add_loop_limit_flag(ExportedModel& out) {
+  if (out.circuit.loop_limit == Aig::kFalse) return Aig::kFalse;
+  CircuitExport& m = out.model;
+  const auto index = static_cast<std::uint32_t>(m.aig.latches().size());
+  const AigLit flag = m.aig.add_latch("sfcv_loop_limit", false);
+  m.aig.set_next(index, m.aig.make_or(flag, out.circuit.loop_limit));
+  m.latch_comments.push_back(
+      "set by a cycle whose ST loop meets the loop bound, then kept: every property fails");
+  m.aig.add_output("sfcv_loop_limit", flag);
+  out.loop_limit_latch = index;
+  m.header.push_back("sfcv_loop_limit: " + out.circuit.loop_limit_message() + ". Such a");
+  m.header.push_back("cycle sets the latch sfcv_loop_limit, and every property fails once it is");
+  m.header.push_back("set (invariants: bad | sfcv_loop_limit; CTL: AG !sfcv_loop_limit & ...): a");
+  m.header.push_back("violation whose trace ends with it set is unknown, not a finding.");
+  return flag;
+}
+
+// CTL text that fails wherever the flag state is reachable (the flag's output is `{k}`).
+std::string guarded_ctl(const ExportedModel& out, const std::string& text) {
+  if (!out.loop_limit_latch) return text;
+  const auto& outputs = out.model.aig.outputs();
+  for (std::size_t k = 0; k < outputs.size(); ++k)
+    if (outputs[k].name == "sfcv_loop_limit" &&
+        outputs[k].literal == out.model.aig.latches()[*out.loop_limit_latch].current)
+      return "(AG !{" + std::to_string(k) + "}) & (" + text + ")";
+  throw std::logic_error("guarded_ctl: no output for sfcv_loop_limit");
+}
+}  // namespace
+
 static bool has_next(const logic::Formula& f) {
   if (f.op == logic::Op::X) return true;
   return std::any_of(f.args.begin(), f.args.end(), [](const auto& a) { return has_next(*a); });
@@ -279,12 +312,20 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
   m.header.push_back("IEC 61131-3 scan cycle of sfcv as a circuit: one Boolean variable per state");
   m.header.push_back("bit of sfcv's transition system, one input per bit of each (pseudo-)input.");
   // Built on the copy `aig`: the circuit's own graph stays as the engines see it.
-  const AigLit cut = aig.make_and(out.circuit.allowed, Aig::make_not(out.circuit.range_error));
+  const AigLit flag = add_loop_limit_flag(out);
+  // A loop-limit cycle is part of range_error but is not cut: it leads to the flag state,
+  // which has every input allowed (so that NuSMV's infinite paths reach it too).
+  const AigLit cut = aig.make_or(
+      flag, aig.make_and(out.circuit.allowed,
+                         Aig::make_not(aig.make_and(out.circuit.range_error,
+                                                    Aig::make_not(out.circuit.loop_limit)))));
   if (cut != Aig::kTrue) {
     m.header.push_back("A cycle whose inputs break the assumptions or the input ranges, or which");
     m.header.push_back("raises a range error, has no successor: the constraint cuts it.");
     aig.add_constraint("assumptions_and_ranges", cut);
   }
+  // Every property fails in the flag state: its bad state or CTL text is rewritten below.
+  auto bad_or_flag = [&](AigLit bad) { return aig.make_or(flag, bad); };
 
   Builder builder(ts, out);
   // Observables as named outputs (steps, actions, Boolean variables).
@@ -304,6 +345,9 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
         throw ExportError("LTL property '" + prop.name + "' is exported to Promela only");
       // Spin extends a run cut inside a cycle (end_excluded) by stuttering there, a path sfcv
       // does not have; and Debian's Spin parses no X in ltl claims.
+      if (flag != Aig::kFalse)
+        throw ExportError("LTL property '" + prop.name + "': not exported for a chart where " +
+                          out.circuit.loop_limit_message());
       if (cut != Aig::kTrue)
         throw ExportError(
             "LTL property '" + prop.name +
@@ -317,10 +361,11 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       continue;
     }
     if (is_invariant(*prop.formula)) {
-      aig.add_bad(prop.name, Aig::make_not(builder.literal(*prop.formula->args[0])));
+      aig.add_bad(prop.name, bad_or_flag(Aig::make_not(builder.literal(*prop.formula->args[0]))));
       out.bad_property.push_back(static_cast<std::int32_t>(p));
     } else {
-      m.ctl.emplace_back(prop.name, logic::to_string(builder.with_output_atoms(*prop.formula)));
+      m.ctl.emplace_back(
+          prop.name, guarded_ctl(out, logic::to_string(builder.with_output_atoms(*prop.formula))));
       out.ctl_property.push_back(static_cast<std::int32_t>(p));
       out.ctl_only.push_back(prop.name);
     }
@@ -331,13 +376,19 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       if (obs.kind != semantics::ObservableKind::Step) continue;
       if (request.target == ExportTarget::Smv) {
         m.ctl.emplace_back("reachable_" + obs.name,
-                           "EF {" + std::to_string(builder.output_of(obs)) + "}");
+                           guarded_ctl(out, "EF {" + std::to_string(builder.output_of(obs)) + "}"));
         out.ctl_property.push_back(-1);
       } else {
-        aig.add_bad("unreachable_" + obs.name, out.circuit.observable_bits[o][0]);
+        aig.add_bad("unreachable_" + obs.name, bad_or_flag(out.circuit.observable_bits[o][0]));
         out.bad_property.push_back(-1);
       }
     }
+  }
+  if (flag != Aig::kFalse && request.target == ExportTarget::Smv) {
+    // NuSMV: whether the flag is reachable at all, to read the CTL verdicts back.
+    out.loop_limit_bad = aig.bad().size();
+    aig.add_bad("no_loop_limit", flag);
+    out.bad_property.push_back(-1);
   }
   if (cut != Aig::kTrue && !m.ctl.empty()) {
     m.header.push_back("CTL: sfcv quantifies over maximal paths (a path may end in a state whose");
@@ -362,6 +413,21 @@ semantics::Aig aiger_circuit(const CircuitExport& model) {
   aig.clear_bad();
   for (const auto& b : bad) aig.add_bad(b.name, aig.make_and(valid, b.literal));
   return aig;
+}
+
+bool ends_in_loop_limit(const ExportedModel& exported,
+                        const std::vector<std::vector<bool>>& frames) {
+  if (!exported.loop_limit_latch) return false;
+  const Aig& aig = exported.model.aig;
+  std::vector<bool> latches;
+  for (const auto& l : aig.latches()) latches.push_back(l.initial);
+  for (auto frame : frames) {
+    frame.resize(aig.inputs().size(), false);
+    const auto values = aig.evaluate(frame, latches);
+    for (std::size_t l = 0; l < latches.size(); ++l)
+      latches[l] = Aig::value_of(values, aig.latches()[l].next);
+  }
+  return latches[*exported.loop_limit_latch];
 }
 
 std::vector<std::vector<std::int64_t>> frames_to_inputs(

@@ -5,10 +5,18 @@
 // - a cycle whose inputs violate the assumptions, or which raises a range error, has no
 //   successor in sfcv: the export cuts it (constraint `allowed & !range_error`: NuSMV TRANS,
 //   Cadence SMV assume, Promela end state). The state itself stays reachable and is checked;
+// - a cycle whose ST loop meets the loop bound (TransitionCircuit::loop_limit: sfcv answers
+//   unknown, the loop may still end) is not cut: it sets the latch `sfcv_loop_limit`, which
+//   stays set, and every exported property fails once it is set (each invariant's bad state
+//   is `sfcv_loop_limit | !p`, each CTL property is `AG !sfcv_loop_limit & (...)`), so that no
+//   outside tool can prove a property that rests on the cut cycle; a violation whose trace
+//   ends with the flag set is unknown (ends_in_loop_limit);
 // - `AG p` with p propositional becomes a bad-state literal `!p` over the latches;
 // - other CTL properties are kept as text for NuSMV / Cadence SMV only.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -49,6 +57,12 @@ struct ExportedModel {
   std::vector<std::int32_t> ctl_property;
   /// Properties that are not invariants (only NuSMV / Cadence SMV can take them).
   std::vector<std::string> ctl_only;
+  /// When a reachable cycle may meet the ST loop bound: the index in model.aig.latches() of
+  /// the latch `sfcv_loop_limit` (set by such a cycle, then kept), else nullopt.
+  std::optional<std::uint32_t> loop_limit_latch;
+  /// NuSMV / Cadence SMV: the index in model.aig.bad() of the invariant `no_loop_limit`
+  /// (AG !sfcv_loop_limit); when it is violated, every false verdict is unknown.
+  std::optional<std::size_t> loop_limit_bad;
 };
 
 /// `AG p` with p propositional.
@@ -64,6 +78,13 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
 /// the latch keeps exactly sfcv's reachable states. Outputs are dropped (ABC would read them as
 /// properties); at least one input is guaranteed (a dummy one when the chart has none).
 semantics::Aig aiger_circuit(const CircuitExport& model);
+
+/// Whether an outside counterexample whose cycles have the input frames `frames` (frames[k] =
+/// circuit inputs of cycle k + 1, as for frames_to_inputs) ends in a state where the latch
+/// `sfcv_loop_limit` is set: its violation rests on a cycle sfcv cannot finish, the verdict is
+/// unknown (TransitionCircuit::loop_limit_message). False without such a latch.
+bool ends_in_loop_limit(const ExportedModel& exported,
+                        const std::vector<std::vector<bool>>& frames);
 
 /// The input frames of an outside counterexample (frames[k] = circuit inputs of cycle k + 1)
 /// as sfcv input valuations (`semantics::simulate`); extra (dummy) inputs are ignored.

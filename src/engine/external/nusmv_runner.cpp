@@ -11,6 +11,9 @@
 
 namespace sfcv::engine {
 
+const char* const kNusmvCommands =
+    "unset use_coi_size_sorting\ngo\ncheck_ctlspec\ncheck_invar\nquit\n";
+
 std::optional<std::string> find_nusmv() {
   return find_on_path({"NuSMV"});
 }
@@ -107,11 +110,8 @@ bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
   }
 }
 
-// NuSMV's trace replayed through the chart, or nullopt with `why` when it does not replay (or,
-// for an invariant AG p, does not end in a state violating p).
-std::optional<logic::Trace> to_sfcv_trace(const semantics::TransitionSystem& ts,
-                                          const ExportedModel& exported, const NusmvTrace& t,
-                                          const logic::Formula& property, std::string& why) {
+// The circuit inputs of each step of NuSMV's trace.
+std::vector<std::vector<bool>> nusmv_frames(const ExportedModel& exported, const NusmvTrace& t) {
   const auto ids = nusmv_input_identifiers(exported.model);
   std::vector<std::vector<bool>> frames;
   for (const auto& values : t.inputs) {
@@ -120,6 +120,15 @@ std::optional<logic::Trace> to_sfcv_trace(const semantics::TransitionSystem& ts,
       if (const auto it = values.find(ids[i]); it != values.end()) frame[i] = it->second;
     frames.push_back(std::move(frame));
   }
+  return frames;
+}
+
+// NuSMV's trace replayed through the chart, or nullopt with `why` when it does not replay (or,
+// for an invariant AG p, does not end in a state violating p).
+std::optional<logic::Trace> to_sfcv_trace(const semantics::TransitionSystem& ts,
+                                          const ExportedModel& exported, const NusmvTrace& t,
+                                          const logic::Formula& property, std::string& why) {
+  const auto frames = nusmv_frames(exported, t);
   if (t.states == 0 || frames.size() + 1 != t.states) {
     why = "NuSMV's trace has " + std::to_string(t.states) + " states and " +
           std::to_string(frames.size()) + " input steps";
@@ -216,7 +225,15 @@ class NusmvModelChecker final : public ModelChecker {
       std::ofstream f(dir.path() + "/model.smv");
       write_nusmv(f, exported.model);
     }
-    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.seconds_left());
+    {
+      // NuSMV 2.6 checks (and prints) the properties of one kind ordered by the size of their
+      // cone of influence, not in file order, and its verdict lines carry no property name:
+      // read in file order, the verdicts of two properties could swap (a false "holds").
+      std::ofstream f(dir.path() + "/sfcv.cmd");
+      f << kNusmvCommands;
+    }
+    const auto run = run_tool({nusmv_, "-source", "sfcv.cmd", "model.smv"}, dir.path(),
+                              task.limits.seconds_left());
     const auto verdicts = parse_nusmv_output(run.output);
 
     logic::CheckReport report;
@@ -230,10 +247,24 @@ class NusmvModelChecker final : public ModelChecker {
       results[p].message =
           run.timed_out ? "NuSMV reached the time limit" : "no verdict in NuSMV's output";
     }
-    auto set = [&](std::int32_t p, bool holds, const std::optional<NusmvTrace>& trace) {
+    // A cycle may meet the ST loop bound (sfcv_loop_limit, export_model.hpp): every property
+    // fails where the flag is set, so such a false verdict is unknown.
+    const bool flag_reached = exported.loop_limit_bad &&
+                              verdicts.invariants.size() > *exported.loop_limit_bad &&
+                              !verdicts.invariants[*exported.loop_limit_bad];
+    auto set = [&](std::int32_t p, bool holds, const std::optional<NusmvTrace>& trace,
+                   bool invariant) {
       if (p < 0) return;
       const auto& prop = task.properties[static_cast<std::size_t>(p)];
       auto& r = results[static_cast<std::size_t>(p)];
+      const bool unknown =
+          !holds && flag_reached &&
+          (!invariant || !trace || ends_in_loop_limit(exported, nusmv_frames(exported, *trace)));
+      if (unknown) {
+        r.verdict = logic::Verdict::Unknown;
+        r.message = "NuSMV: false where " + exported.circuit.loop_limit_message();
+        return;
+      }
       r.verdict = holds ? logic::Verdict::Holds : logic::Verdict::Violated;
       r.message = holds ? "NuSMV: true" : "NuSMV: false";
       if (holds) return;
@@ -248,9 +279,9 @@ class NusmvModelChecker final : public ModelChecker {
                           verdicts.invariants.size() == exported.bad_property.size();
     if (complete && !run.timed_out) {
       for (std::size_t i = 0; i < verdicts.ctl.size(); ++i)
-        set(exported.ctl_property[i], verdicts.ctl[i], verdicts.ctl_traces[i]);
+        set(exported.ctl_property[i], verdicts.ctl[i], verdicts.ctl_traces[i], false);
       for (std::size_t i = 0; i < verdicts.invariants.size(); ++i)
-        set(exported.bad_property[i], verdicts.invariants[i], verdicts.invariant_traces[i]);
+        set(exported.bad_property[i], verdicts.invariants[i], verdicts.invariant_traces[i], true);
     } else {
       report.complete = false;
       report.limit = run.timed_out ? "time" : "";

@@ -14,6 +14,10 @@ namespace sfcv::engine {
 
 std::optional<std::string> find_nusmv();
 
+/// The NuSMV commands the engine runs (`NuSMV -source FILE model.smv`): properties in file
+/// order (NuSMV 2.6 orders them by cone of influence by default), CTL before invariants.
+extern const char* const kNusmvCommands;
+
 /// A trace NuSMV printed after a verdict line (`-> State: 1.k <-` / `-> Input: 1.k <-` blocks).
 struct NusmvTrace {
   std::size_t states = 0;  ///< `-> State:` blocks
@@ -24,8 +28,8 @@ struct NusmvTrace {
 };
 
 struct NusmvVerdicts {
-  std::vector<bool> ctl;         ///< per `-- specification` line, in file order (CTLSPEC)
-  std::vector<bool> invariants;  ///< per `-- invariant` line, in file order (INVARSPEC)
+  std::vector<bool> ctl;         ///< per `-- specification` line, in output order (CTLSPEC)
+  std::vector<bool> invariants;  ///< per `-- invariant` line, in output order (INVARSPEC)
   std::vector<std::optional<NusmvTrace>> ctl_traces;        ///< parallel to ctl
   std::vector<std::optional<NusmvTrace>> invariant_traces;  ///< parallel to invariants
   /// NuSMV's error lines (`file model.smv: line 3: ...`, `ERROR: ...`), when it reported any.
