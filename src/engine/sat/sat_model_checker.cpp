@@ -1059,7 +1059,12 @@ class Run {
       }
       return r;
     }
-    if (q.some_stable && answers_[*q.some_stable].kind != ReachResult::Kind::Reached) {
+    // A step or transition reached shows a stable situation too (its target is one).
+    const auto reached = [&](std::size_t t) {
+      return answers_[t].kind == ReachResult::Kind::Reached;
+    };
+    if (q.some_stable && !reached(*q.some_stable) &&
+        std::none_of(q.targets.begin(), q.targets.end(), reached)) {
       const auto& a = answers_[*q.some_stable];
       r.verdict = Verdict::Unknown;
       r.message = a.kind == ReachResult::Kind::Unreachable
