@@ -415,9 +415,30 @@ class StandardCheckRunner {
     return out;
   }
 
-  /// Per enclosing step (index into steps_): the steps its activation activates (docs/semantics.md
-  /// 2.12 a), of each partial grafcet it encloses the activation-linked steps, else the initial
-  /// ones. Computed once, indexed (charts of thousands of steps); empty without the project.
+  /// The entry step of macro-step `m` whose expansion is `x` (docs/semantics.md 2.12, as the
+  /// semantics builds it): the step the file marks, else E<m> by name, else the initial-marked
+  /// step, else the first.
+  static std::string macro_entry(const model::Chart& x, const model::Step& m) {
+    if (!x.macro_entry.empty()) return x.macro_entry;
+    const std::string number =
+        m.name.size() > 1 && (m.name[0] == 'M' || m.name[0] == 'm') ? m.name.substr(1) : m.name;
+    std::string by_name, initial;  // the last match of each, as grafcet_build.cpp
+    for (const auto& s : x.steps) {
+      if (model::iequals(s.name, "E" + number) || model::iequals(s.name, "E" + m.name))
+        by_name = s.name;
+      if (s.initial) initial = s.name;
+    }
+    if (!by_name.empty()) return by_name;
+    if (!initial.empty()) return initial;
+    return x.steps.empty() ? std::string() : x.steps.front().name;
+  }
+
+  /// Per step (index into steps_) whose activity activates other steps in the same or the next
+  /// evolution (docs/semantics.md 2.5, 2.12): an enclosing step, of each partial grafcet it
+  /// encloses the activation-linked steps, else the initial ones (2.12 a); a macro-step, the
+  /// entry step of its expansion (a transition into M enters E); a step holding a forcing order
+  /// to a situation or to INIT, the steps forced. Computed once, indexed (charts of thousands of
+  /// steps); empty without the project.
   const std::vector<std::pair<std::size_t, std::vector<std::size_t>>>& enclosure_entries() {
     if (enclosure_entries_done_) return enclosure_entries_;
     enclosure_entries_done_ = true;
@@ -432,10 +453,32 @@ class StandardCheckRunner {
     for (const auto& pou : task_.project->pous)
       for (const auto& chart : pou.charts)
         for (const auto& step : chart.steps) {
-          if (step.kind != model::StepKind::Enclosing) continue;
           const auto e = index.find(key(pou.name, chart.name, step.name));
           if (e == index.end()) continue;
           std::vector<std::size_t> entries;
+          auto add = [&](const std::string& c, const std::string& x) {
+            if (const auto s = index.find(key(pou.name, c, x)); s != index.end())
+              entries.push_back(s->second);
+          };
+          if (step.kind == model::StepKind::MacroStep) {
+            if (const model::Chart* c = pou.find_chart(step.expansion))
+              if (const auto entry = macro_entry(*c, step); !entry.empty()) add(c->name, entry);
+          }
+          for (const auto& f : pou.forcing_orders) {
+            if (!model::iequals(f.chart, chart.name) || !model::iequals(f.step, step.name))
+              continue;
+            const model::Chart* c = pou.find_chart(f.target);
+            if (!c) continue;
+            if (f.kind == model::ForcingKind::Situation)
+              for (const auto& x : f.situation) add(c->name, x);
+            if (f.kind == model::ForcingKind::Initial)
+              for (const auto& x : c->steps)
+                if (x.initial) add(c->name, x.name);
+          }
+          if (step.kind != model::StepKind::Enclosing) {
+            if (!entries.empty()) enclosure_entries_.emplace_back(e->second, std::move(entries));
+            continue;
+          }
           for (const auto& name : step.enclosed) {
             const model::Chart* c = pou.find_chart(name);
             if (!c) continue;
@@ -449,6 +492,53 @@ class StandardCheckRunner {
           if (!entries.empty()) enclosure_entries_.emplace_back(e->second, std::move(entries));
         }
     return enclosure_entries_;
+  }
+
+  /// The steps of the initial situation before it stabilises (docs/semantics.md 2.2): the
+  /// initial steps of the top-level partial grafcets (enclosed by no step, expanding no
+  /// macro-step), the entry steps of the macro-steps among them, and for an enclosing step among
+  /// them the initial steps of each grafcet it encloses (its linked ones when it has none),
+  /// recursively. Indices into steps_; empty without the project.
+  std::vector<std::size_t> initial_situation_steps() {
+    std::vector<std::size_t> out;
+    if (!task_.project || ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
+    for (const auto& pou : task_.project->pous) {
+      std::set<std::string> inner;  // charts enclosed or expanding, upper case
+      for (const auto& chart : pou.charts)
+        for (const auto& step : chart.steps) {
+          for (const auto& e : step.enclosed) inner.insert(model::to_upper(e));
+          if (step.kind == model::StepKind::MacroStep)
+            inner.insert(model::to_upper(step.expansion));
+        }
+      std::vector<std::pair<const model::Chart*, const model::Step*>> work;
+      auto enter = [&](const model::Chart& c, bool initial_else_linked) {
+        const bool any_initial = std::any_of(c.steps.begin(), c.steps.end(),
+                                             [](const model::Step& x) { return x.initial; });
+        for (const auto& x : c.steps)
+          if (any_initial || !initial_else_linked ? x.initial : x.activation_link)
+            work.emplace_back(&c, &x);
+      };
+      for (const auto& chart : pou.charts)
+        if (!inner.count(model::to_upper(chart.name))) enter(chart, false);
+      std::set<std::string> seen;
+      while (!work.empty()) {
+        const auto [c, x] = work.back();
+        work.pop_back();
+        if (!seen.insert(model::to_upper(c->name) + "\n" + model::to_upper(x->name)).second)
+          continue;
+        for (std::size_t i = 0; i < steps_.size(); ++i)
+          if (model::iequals(steps_[i].pou, pou.name) && model::iequals(steps_[i].chart, c->name) &&
+              model::iequals(steps_[i].step, x->name))
+            out.push_back(i);
+        if (x->kind == model::StepKind::MacroStep)
+          if (const model::Chart* ex = pou.find_chart(x->expansion))
+            for (const auto& y : ex->steps)
+              if (y.name == macro_entry(*ex, *x)) work.emplace_back(ex, &y);
+        for (const auto& name : x->enclosed)
+          if (const model::Chart* en = pou.find_chart(name)) enter(*en, true);
+      }
+    }
+    return out;
   }
 
   /// Grafcet steps never active in a stable situation nor crossed after an event, but active
@@ -470,6 +560,11 @@ class StandardCheckRunner {
         if (crossed && sp_.empty(step_set(steps_[i]))) out.insert(i);
       }
     }
+    // The steps of the initial situation itself (2.2), before it stabilises: an initial step
+    // that a forcing order deactivates at once is left by no transition (seed 69 of
+    // SatEngineAgreement.RandomGrafcets).
+    for (auto i : initial_situation_steps())
+      if (!transient.count(i) && sp_.empty(step_set(steps_[i]))) out.insert(i);
     // The entry steps of an enclosing step crossed at the start, or entered at the start by a
     // transition (2.12 a), are crossed then too.
     for (bool changed = !enclosure_entries().empty(); changed;) {

@@ -80,6 +80,8 @@ struct Question {
   std::string holds_message, trace_note;
   bool stored_actions = false;  ///< its not-checked wording (else output-conflicts')
   std::string refusal;          ///< Unsupported: the message, when not the generic one
+  /// Grafcet checks: the target "a stable situation" (none reachable: nothing to judge).
+  std::optional<std::size_t> some_stable;
 };
 
 class Run {
@@ -299,20 +301,6 @@ class Run {
     return q;
   }
 
-  /// The Grafcet observers (seen_during_event) are built and tested, but not yet trusted.
-  static constexpr bool kGrafcetObserversAgree = false;
-
-  bool has_forcing_or_enclosure() const {
-    if (!task_.project) return true;
-    for (const auto& pou : task_.project->pous) {
-      if (!pou.forcing_orders.empty()) return true;
-      for (const auto& chart : pou.charts)
-        for (const auto& step : chart.steps)
-          if (!step.enclosed.empty()) return true;
-    }
-    return false;
-  }
-
   /// Grafcet (docs/engines.md): the checks that read the explicit graph's edges, whose events
   /// end in a stable situation, as targets at the machine's stable situations with an
   /// observer of the event (GrafcetMachine::seen_during_event): a step active in a stable
@@ -321,25 +309,6 @@ class Run {
   Question grafcet_check_question(StandardCheck c) {
     Question q;
     auto& m = *machine_;
-    switch (c) {
-      case StandardCheck::Reachable:
-      case StandardCheck::DeadTransitions:
-        // The observers below disagree with the explicit engine's reading of the steps and
-        // transitions crossed during transient evolutions on random grafcets (macro-step
-        // entries, SatEngineAgreement.RandomGrafcets seeds 46 and 90): until they agree, not
-        // checked, never a different answer.
-        if (kGrafcetObserversAgree && !has_forcing_or_enclosure()) break;
-        {
-          q.shape = Question::Shape::Unsupported;
-          q.refusal =
-              "not checked: the " + std::string(algorithm_name(options_.algorithm)) +
-              " engine does not decide the standard checks of an IEC 60848 grafcet yet; use "
-              "--engine explicit, bdd or auto";
-          return q;
-        }
-      default:
-        break;
-    }
     switch (c) {
       case StandardCheck::Reachable:
         for (const auto& s : logic::step_refs(ts_, task_.project)) {
@@ -363,7 +332,12 @@ class Run {
       default:
         return q;
     }
-    q.shape = q.targets.empty() ? Question::Shape::Unsupported : Question::Shape::Check;
+    if (q.targets.empty()) return q;
+    // A finding needs a stable situation to judge (seed 90 of SatEngineAgreement.RandomGrafcets:
+    // every initial valuation's evolutions loop forever, and "never active" was proved of every
+    // step): without one the answer is unknown, as on the explicit engine.
+    q.some_stable = add_machine_target(m.at_stable());
+    q.shape = Question::Shape::Check;
     return q;
   }
   /// A target already over the machine's latches (Grafcet).
@@ -1083,6 +1057,19 @@ class Run {
         r.verdict = Verdict::Unknown;
         r.message = a.why;
       }
+      return r;
+    }
+    // A step or transition reached shows a stable situation too (its target is one).
+    const auto reached = [&](std::size_t t) {
+      return answers_[t].kind == ReachResult::Kind::Reached;
+    };
+    if (q.some_stable && !reached(*q.some_stable) &&
+        std::none_of(q.targets.begin(), q.targets.end(), reached)) {
+      const auto& a = answers_[*q.some_stable];
+      r.verdict = Verdict::Unknown;
+      r.message = a.kind == ReachResult::Kind::Unreachable
+                      ? "no initial state (the instability check says why): nothing to check"
+                      : "no stable situation reached yet: " + a.why;
       return r;
     }
     std::size_t unknown = 0;
