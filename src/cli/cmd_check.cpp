@@ -297,6 +297,8 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckM
     throw UsageError("bad --engine '" + o.engine +
                      "' (expected auto, explicit, bdd, bmc, kind, ic3 or nusmv)");
 
+  if (!o.shard.empty() && !logic::parse_shard(o.shard, &why))
+    throw UsageError(why);  // before the model is loaded
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
   const auto project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
@@ -432,8 +434,8 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckM
   if (o.json) {
     auto json = report::check_json(result, *ts, render);
     if (shard.spec)
-      json["shard"] =
-          report::shard_json(*shard.spec, shard.diversify, shard.units, shard.covered, result);
+      json["shard"] = report::shard_json(*shard.spec, shard.diversify, shard.units, shard.covered,
+                                         result, *render.provenance);
     std::cout << json.dump(2) << "\n";
   } else if (traces_on_standard_output(traces)) {
     // Standard output holds the trace alone (a VCD file, a CSV for simulate): the report

@@ -102,6 +102,9 @@ Shard read_shard(const std::string& file) {
     s.covers = sh->at("covers").get<std::vector<std::string>>();
     s.report = report::report_from_json(sh->at("result"));
     s.provenance = report::provenance_from_json(s.doc.at("provenance"));
+    // In the order the check wrote them (the text report's order), not a JSON object's.
+    s.provenance.settings = sh->at("settings").get<report::Settings>();
+    s.provenance.libraries = sh->at("libraries").get<report::Settings>();
   } catch (const std::exception& e) {
     throw InputError(file + ": a bad \"shard\" object (" + e.what() + ")");
   }
@@ -152,8 +155,8 @@ bool definite(logic::Verdict v) {
 
 /// The report of the whole run: each unit's answer from the shard that ran it (a swarm: the
 /// first definite answer in shard order, else the last shard's), the counts of the shard that
-/// explored most (a single run explores at least what each of its shards did), complete only
-/// if every shard was.
+/// explored most and the deepest depth (a single run explores at least what each of its shards
+/// did), complete only if every shard was.
 logic::CheckReport merged_report(const std::vector<Shard>& shards, const json& units) {
   const Shard* primary = nullptr;
   for (const auto& s : shards)
@@ -166,6 +169,7 @@ logic::CheckReport merged_report(const std::vector<Shard>& shards, const json& u
   for (const auto& s : shards) {
     if (s.covers.empty()) continue;
     out.seconds = std::max(out.seconds, s.report.seconds);
+    out.depth = std::max(out.depth, s.report.depth);  // BMC, IC3: the deepest any shard went
     if (!s.report.complete && out.complete) {
       out.complete = false;
       out.limit = s.report.limit;

@@ -172,12 +172,18 @@ json units_json(const std::vector<logic::WorkUnit>& units, std::uint32_t count) 
 
 json shard_json(const logic::ShardSpec& spec, bool diversify,
                 const std::vector<logic::WorkUnit>& units,
-                const std::vector<logic::WorkUnit>& covered, const logic::CheckReport& report) {
+                const std::vector<logic::WorkUnit>& covered, const logic::CheckReport& report,
+                const Provenance& provenance) {
   json ids = json::array();
   for (const auto& u : covered) ids.push_back(u.id);
-  return {{"index", spec.index},    {"count", spec.count},
-          {"diversify", diversify}, {"units", units_json(units, diversify ? 1 : spec.count)},
-          {"covers", ids},          {"result", report_to_json(report)}};
+  return {{"index", spec.index},
+          {"count", spec.count},
+          {"diversify", diversify},
+          {"units", units_json(units, diversify ? 1 : spec.count)},
+          {"covers", ids},
+          {"result", report_to_json(report)},
+          {"settings", provenance.settings},
+          {"libraries", provenance.libraries}};
 }
 
 }  // namespace sfcv::report

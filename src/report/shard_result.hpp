@@ -11,6 +11,7 @@
 
 #include "logic/check_result.hpp"
 #include "logic/work_units.hpp"
+#include "report/provenance.hpp"
 
 namespace sfcv::report {
 
@@ -24,10 +25,11 @@ nlohmann::json units_json(const std::vector<logic::WorkUnit>& units, std::uint32
 
 /// The "shard" key of a shard's result: {"index", "count", "diversify", "units" (every unit of
 /// the run, units_json), "covers" (the ids this shard ran, or every id when diversified),
-/// "result" (report_to_json of this shard's report, each result's "unit" id beside it)}.
+/// "result" (report_to_json of this shard's report), "settings" and "libraries" (the
+/// provenance's, as [name, value] pairs in their order, which a JSON object does not keep)}.
 nlohmann::json shard_json(const logic::ShardSpec& spec, bool diversify,
                           const std::vector<logic::WorkUnit>& units,
                           const std::vector<logic::WorkUnit>& covered,
-                          const logic::CheckReport& report);
+                          const logic::CheckReport& report, const Provenance& provenance);
 
 }  // namespace sfcv::report
