@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/generate.hpp"
@@ -54,63 +56,83 @@ std::string joined(const std::vector<std::string>& files) {
   return out;
 }
 
-/// The merge of N shards equals the single run (JSON, exit code), for each N.
-void expect_merge_equals_single(const std::string& file, const std::string& args,
-                                std::vector<int> shard_counts = {1, 2, 4, 7}) {
-  const std::string check = "check '" + file + "' " + args;
-  const auto single = run_sfcv(check + " --json --quiet");
-  ASSERT_TRUE(single.exit_code == 0 || single.exit_code == 1) << single.err;
-  const auto expected = without_timings(json::parse(single.out)).dump(1);
-  for (const int n : shard_counts) {
-    SCOPED_TRACE(file + " " + args + ", " + std::to_string(n) + " shards");
-    const auto merged = run_sfcv("merge" + joined(run_shards(check, n)) + " --json --quiet");
-    EXPECT_EQ(merged.exit_code, single.exit_code) << merged.err;
-    ASSERT_FALSE(merged.out.empty()) << merged.err;
-    const auto got = json::parse(merged.out);
-    EXPECT_FALSE(got.contains("shard"));
-    EXPECT_EQ(without_timings(got).dump(1), expected);
+/// The single run of `check` (JSON without timings, exit code), once per command line.
+const sfcv::test::RunResult& single_run(const std::string& check) {
+  static std::map<std::string, sfcv::test::RunResult> runs;
+  auto it = runs.find(check);
+  if (it == runs.end()) {
+    auto r = run_sfcv(check + " --json --quiet");
+    if (r.exit_code == 0 || r.exit_code == 1) r.out = without_timings(json::parse(r.out)).dump(1);
+    it = runs.emplace(check, std::move(r)).first;
   }
+  return it->second;
 }
 
-TEST(Shards, GeneratedTanksMergeAsOneRun) {
-  // Two violated invariants with traces, and every standard check.
-  expect_merge_equals_single(generate("tanks 2 --flawed", ".st"),
-                             "--ctl 'AG !(V2_0 & V4_0)' --ctl 'AG !(V1_1 & V3_1)' --checks all");
+/// The merge of N shards equals the single run (JSON, exit code).
+void expect_merge_equals_single(const std::string& file, const std::string& args, int n) {
+  const std::string check = "check '" + file + "' " + args;
+  const auto& single = single_run(check);
+  ASSERT_TRUE(single.exit_code == 0 || single.exit_code == 1) << single.err;
+  SCOPED_TRACE(file + " " + args + ", " + std::to_string(n) + " shards");
+  const auto merged = run_sfcv("merge" + joined(run_shards(check, n)) + " --json --quiet");
+  EXPECT_EQ(merged.exit_code, single.exit_code) << merged.err;
+  ASSERT_FALSE(merged.out.empty()) << merged.err;
+  const auto got = json::parse(merged.out);
+  EXPECT_FALSE(got.contains("shard"));
+  EXPECT_EQ(without_timings(got).dump(1), single.out);
 }
 
-TEST(Shards, GeneratedParallelMergeAsOneRun) {
-  // Vacuity (AG (a -> f)), LTL with a lasso, a witness, the standard checks.
-  expect_merge_equals_single(
-      generate("parallel 3 --selector", ".st"),
-      "--checks all --ctl 'AG (Parallel.O0 -> EF !Parallel.O0)' --ltl 'G F Parallel.O1' --ctl "
-      "'EF (Parallel.O0 & Parallel.O1 & Parallel.O2)'");
+/// One input: a generated family (sfcv-gen arguments) or a corpus file, and check's arguments.
+struct Input {
+  const char* name;
+  const char* generate;  ///< sfcv-gen arguments, or null for a corpus file
+  const char* file;      ///< the generated file's suffix, or the corpus file
+  const char* args;
+};
+
+const Input kInputs[] = {
+    // Two violated invariants with traces, and every standard check.
+    {"Tanks", "tanks 2 --flawed", ".st",
+     "--ctl 'AG !(V2_0 & V4_0)' --ctl 'AG !(V1_1 & V3_1)' --checks all"},
+    // Vacuity (AG (a -> f)), LTL with a lasso, a witness, the standard checks.
+    {"Parallel", "parallel 3 --selector", ".st",
+     "--checks all --ctl 'AG (Parallel.O0 -> EF !Parallel.O0)' --ltl 'G F Parallel.O1' --ctl "
+     "'EF (Parallel.O0 & Parallel.O1 & Parallel.O2)'"},
+    // Invariants alone: the explicit engine stops at the violations; the merge keeps the counts
+    // of the shard that explored most, as the single run's.
+    {"InvariantsOnTheFly", "tanks 2 --flawed", ".st",
+     "--ctl 'AG !(V2_0 & V4_0)' --ctl 'AG !(V1_1 & V3_1)' --checks none"},
+    {"Grafcet", "transfer 2", ".g7", ""},
+    // One corpus file of each importer: PLCopen XML, IEC text, AGRAFE XMI (small for ASan).
+    {"CorpusPlcopen", nullptr, "03_matiec_SFC_TEST_tc6v1.xml", ""},
+    {"CorpusIecText", nullptr, "04_matiec_sfc_syntax.st", ""},
+    {"CorpusAgrafe", nullptr, "24_agrafe_exclusive_selection.grafcet", ""},
+};
+
+class MergeAsOneRun : public ::testing::TestWithParam<std::tuple<Input, int>> {};
+
+TEST_P(MergeAsOneRun, SameJsonAndExitCode) {
+  const auto& [input, n] = GetParam();
+  std::string file;
+  if (input.generate) {
+    static std::map<std::string, std::string> generated;  // one file per family and size
+    auto& f = generated[input.generate];
+    if (f.empty()) f = generate(input.generate, input.file);
+    file = f;
+  } else {
+    SFCV_REQUIRE_CORPUS(corpus);
+    file = (corpus / input.file).string();
+  }
+  expect_merge_equals_single(file, input.args, n);
 }
 
-TEST(Shards, GeneratedInvariantsOnTheFlyMergeAsOneRun) {
-  // Invariants alone: the explicit engine stops at the violations; the merge keeps the counts
-  // of the shard that explored most, as the single run's.
-  expect_merge_equals_single(generate("tanks 2 --flawed", ".st"),
-                             "--ctl 'AG !(V2_0 & V4_0)' --ctl 'AG !(V1_1 & V3_1)' --checks none");
-}
-
-TEST(Shards, GeneratedGrafcetMergeAsOneRun) {
-  expect_merge_equals_single(generate("transfer 2", ".g7"), "");
-}
-
-TEST(Shards, CorpusMergeAsOneRun) {
-  SFCV_REQUIRE_CORPUS(corpus);
-  // One of each importer: PLCopen XML, IEC text, AGRAFE XMI (small enough for ASan).
-  for (const char* name : {"03_matiec_SFC_TEST_tc6v1.xml", "04_matiec_sfc_syntax.st",
-                           "24_agrafe_exclusive_selection.grafcet"})
-    expect_merge_equals_single((corpus / name).string(), "", {2, 7});
-}
-
-TEST(Shards, CorpusMergeAsOneRunOneAndFourShards) {
-  SFCV_REQUIRE_CORPUS(corpus);
-  for (const char* name : {"03_matiec_SFC_TEST_tc6v1.xml", "04_matiec_sfc_syntax.st",
-                           "24_agrafe_exclusive_selection.grafcet"})
-    expect_merge_equals_single((corpus / name).string(), "", {1, 4});
-}
+INSTANTIATE_TEST_SUITE_P(Shards, MergeAsOneRun,
+                         ::testing::Combine(::testing::ValuesIn(kInputs),
+                                            ::testing::Values(1, 2, 4, 7)),
+                         [](const ::testing::TestParamInfo<std::tuple<Input, int>>& info) {
+                           return std::string(std::get<0>(info.param).name) + "_" +
+                                  std::to_string(std::get<1>(info.param)) + "_shards";
+                         });
 
 TEST(Shards, PlanListsEveryUnitWithItsShard) {
   const auto file = sfcv::test::source_path("examples/chemical_plant/chemical_plant.st");
