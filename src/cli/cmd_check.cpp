@@ -576,6 +576,8 @@ void add_check_like_command(CLI::App& app, CommandRunner& selected, CheckMode mo
       "property is violated, 2 bad usage or input (also: the engine decides nothing that was "
       "asked), 3 unknown (a limit was reached before an answer was certain, or some answer is "
       "'not checked' by the engine), 4 internal error.");
+  if (mode == CheckMode::Plan)
+    sub->footer("Exit codes: 0 the plan was printed, 2 bad usage or input, 4 internal error.");
   sub->add_option("--shard", opts->shard,
                   "Run only shard I of N (1-based, e.g. 2/4): a deterministic part of the "
                   "properties and checks, balanced by cost; sfcv merge joins the --json results "
