@@ -129,9 +129,9 @@ TEST_P(MergeAsOneRun, SameJsonAndExitCode) {
 INSTANTIATE_TEST_SUITE_P(Shards, MergeAsOneRun,
                          ::testing::Combine(::testing::ValuesIn(kInputs),
                                             ::testing::Values(1, 2, 4, 7)),
-                         [](const ::testing::TestParamInfo<std::tuple<Input, int>>& info) {
-                           return std::string(std::get<0>(info.param).name) + "_" +
-                                  std::to_string(std::get<1>(info.param)) + "_shards";
+                         [](const ::testing::TestParamInfo<std::tuple<Input, int>>& p) {
+                           return std::string(std::get<0>(p.param).name) + "_" +
+                                  std::to_string(std::get<1>(p.param)) + "_shards";
                          });
 
 TEST(Shards, PlanListsEveryUnitWithItsShard) {
