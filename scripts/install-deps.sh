@@ -14,6 +14,7 @@ PACKAGES=(
   clang libclang-rt-14-dev  # the libFuzzer harnesses of fuzz/ (.ci/run)
   clang-format  # scripts/check-format.sh (ctest clang_format, .ci/run)
   valgrind  # ctest valgrind_grafcet_bdd
+  parallel python3-yaml  # ctest distributed_examples: GNU parallel, the CI examples' YAML
 )
 
 missing=()

@@ -7,7 +7,7 @@ _sfcv() {
     words=("${COMP_WORDS[@]}")
     cword=$COMP_CWORD
   }
-  local commands="check info lint simulate rsg query export report patterns"
+  local commands="check info lint simulate rsg query export report patterns plan merge"
   local sub="" i
   for ((i = 1; i < cword; i++)); do
     case "${words[i]}" in
@@ -31,7 +31,7 @@ _sfcv() {
     --reorder) COMPREPLY=($(compgen -W "none once dynamic" -- "$cur")); return ;;
     --deadlock-paths) COMPREPLY=($(compgen -W "stutter drop" -- "$cur")); return ;;
     --checks) COMPREPLY=($(compgen -W "all none reachable dead-transitions reentry deadlock local-deadlock return conflicts stored-actions output-conflicts order-dependence instability" -- "$cur")); return ;;
-    --ctl|--ltl|--pattern|--fair|--assume|--pou|--timeout|--memory|--max-states|--cycle|--depth|--threads|--max-nodes|--max-cycles|--use) return ;;
+    --ctl|--ltl|--pattern|--fair|--assume|--pou|--timeout|--memory|--max-states|--cycle|--depth|--threads|--max-nodes|--max-cycles|--use|--shard) return ;;
   esac
   if [[ "$cur" == -* ]]; then
     # The options of the subcommand, read from its own --help.

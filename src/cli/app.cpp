@@ -48,6 +48,8 @@ int run(int argc, char** argv) {
   add_report_command(app, selected);
   add_patterns_command(app, selected);
   add_equiv_command(app, selected);
+  add_plan_command(app, selected);
+  add_merge_command(app, selected);
   set_exit_code_footers(app);  // each subcommand's exit codes in its own words
 
   try {

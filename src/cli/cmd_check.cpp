@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cli/build_info.hpp"
+#include "cli/check_shards.hpp"
 #include "cli/check_traces.hpp"
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
@@ -37,12 +38,14 @@
 #include "logic/check_inputs.hpp"
 #include "logic/requirements.hpp"
 #include "logic/vacuity.hpp"
+#include "logic/work_units.hpp"
 #include "model/input_file.hpp"
 #include "model/names.hpp"
 #include "report/check_html.hpp"
 #include "report/check_junit.hpp"
 #include "report/check_render.hpp"
 #include "report/check_sarif.hpp"
+#include "report/shard_result.hpp"
 #include "report/trace_render.hpp"
 
 namespace sfcv::cli {
@@ -78,6 +81,8 @@ struct CheckOptions {
   bool all_findings = false;
   bool coverage = false;
   std::string deadlock_paths = "stutter";
+  std::string shard;       ///< --shard I/N (docs/distributed.md)
+  bool diversify = false;  ///< --diversify: a swarm, every shard on every unit
 };
 
 report::TraceFormat parse_trace_format(const std::string& s) {
@@ -105,7 +110,7 @@ void print_diagnostics(const model::Diagnostics& diags, const char* what) {
 engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::CheckTask& task,
                                       const engine::BddEngineOptions& bdd_options,
                                       const engine::ExplicitEngineOptions& explicit_options,
-                                      std::uint32_t depth) {
+                                      std::uint32_t depth, std::uint32_t min_depth = 0) {
   std::string why;
   if (name == "nusmv") {
     const auto nusmv = engine::find_nusmv();
@@ -124,6 +129,7 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
                     : name == "kind" ? engine::SatAlgorithm::KInduction
                                      : engine::SatAlgorithm::Ic3;
     sat.max_depth = depth;
+    sat.min_depth = min_depth;
     checker = engine::make_sat_model_checker(sat);
   } else {
     checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
@@ -249,7 +255,7 @@ report::Provenance check_provenance(const CheckOptions& o, const std::string& se
   return p;
 }
 
-int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
+int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckMode mode) {
   // A wrong output path ends the run now, not after the exploration (docs/reliability.md).
   const auto outputs = output_paths(o);
   check_output_paths(outputs);
@@ -291,6 +297,8 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
     throw UsageError("bad --engine '" + o.engine +
                      "' (expected auto, explicit, bdd, bmc, kind, ic3 or nusmv)");
 
+  if (!o.shard.empty() && !logic::parse_shard(o.shard, &why))
+    throw UsageError(why);  // before the model is loaded
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
   const auto project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
@@ -324,6 +332,11 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
                      " engine does not check it; use --engine explicit, bdd or auto");
   logic::set_deadlock_paths(task, o.deadlock_paths == "drop" ? logic::DeadlockPaths::Drop
                                                              : logic::DeadlockPaths::Stutter);
+  // The run's work units; a shard keeps its own (docs/distributed.md).
+  if (mode == CheckMode::Plan) return print_plan(logic::work_units(task), o.shard);
+  const auto shard = plan_shard(logic::work_units(task), o.shard, o.diversify, o.engine, o.depth);
+  logic::restrict_task(task, shard.covered);
+  const auto* stored = stored_run();
   task.max_findings = o.all_findings ? 0 : task.max_findings;
   // AG (a -> f): also ask EF a, to tell a vacuous pass.
   const auto num_properties = task.properties.size();
@@ -339,10 +352,19 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   progress.phase("explore");
   logic::CheckReport result;
   try {
-    result =
-        o.engine == "auto"
-            ? check_auto(task, bdd_options, explicit_options, progress)
-            : choose_engine(o.engine, task, bdd_options, explicit_options, o.depth)->check(task);
+    if (stored) {
+      result = stored->report;  // sfcv merge: the shards' answers, already complete
+      replay_stored_traces(result, *ts);
+    } else if (task.properties.empty() && task.checks.empty()) {
+      result.engine = o.engine;  // a shard without units: nothing to explore
+      result.states_known = result.edges_known = false;
+    } else {
+      result = o.engine == "auto"
+                   ? check_auto(task, bdd_options, explicit_options, progress)
+                   : choose_engine(o.engine, task, bdd_options, explicit_options,
+                                   shard.diversify ? shard.max_depth : o.depth, shard.min_depth)
+                         ->check(task);
+    }
   } catch (const LimitReached& e) {
     // Stopped before it had a report: every question is unknown, and still reported.
     result = logic::unknown_report(task, o.engine, e);
@@ -356,9 +378,12 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
     mark_stopped(result, memory_limit_text(watchdog) + " before an answer was certain",
                  to_string(Limit::Memory));
   progress.phase("render");
-  logic::answer_vacuity(result, vacuity, num_properties);
-  refuse_if_nothing_decided(result, o.engine);
-  logic::describe_results(result, parsed.spec);
+  if (!stored) {
+    logic::answer_vacuity(result, vacuity, num_properties);
+    logic::describe_results(result, parsed.spec);
+  }
+  // A shard may hold only questions its engine leaves open; the merge decides for the run.
+  if (!shard.spec) refuse_if_nothing_decided(result, o.engine);
   if (o.coverage && !result.coverage && !global_options().quiet) {
     progress.clear();
     std::cerr << "sfcv: --coverage: the " << result.engine
@@ -371,7 +396,7 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
   render.verbose = global_options().verbose;
-  render.provenance = check_provenance(o, render.semantics);
+  render.provenance = stored ? stored->provenance : check_provenance(o, render.semantics);
   render.sarif_root = sarif_root(o);
   // Every requested file is written, even when another could not be. The files come before
   // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed
@@ -407,7 +432,11 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
                                                   *ts, picture_limits(budget)));
   });
   if (o.json) {
-    std::cout << report::check_json(result, *ts, render).dump(2) << "\n";
+    auto json = report::check_json(result, *ts, render);
+    if (shard.spec)
+      json["shard"] = report::shard_json(*shard.spec, shard.diversify, shard.units, shard.covered,
+                                         result, *render.provenance);
+    std::cout << json.dump(2) << "\n";
   } else if (traces_on_standard_output(traces)) {
     // Standard output holds the trace alone (a VCD file, a CSV for simulate): the report
     // goes to standard error.
@@ -426,13 +455,13 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog) {
   return logic::exit_code(result);
 }
 
-int run_check(const CheckOptions& o) {
+int run_check(const CheckOptions& o, CheckMode mode) {
   const InterruptScope interrupt;  // the first signal stops the engines, the reports follow
   // Past --memory, the whole process stops as at its deadline (the engines' own counts miss
   // what they share).
   const MemoryWatchdog watchdog(make_budget(o.limits).max_memory_bytes, interrupt_flag());
   try {
-    return run_check_body(o, watchdog);
+    return run_check_body(o, watchdog, mode);
   } catch (const LimitReached& e) {
     // Interrupted, or out of memory, while loading or building: no question was asked yet.
     if (watchdog.tripped() && !interrupted())
@@ -446,8 +475,17 @@ int run_check(const CheckOptions& o) {
 }  // namespace
 
 void add_check_command(CLI::App& app, CommandRunner& selected) {
+  add_check_like_command(app, selected, CheckMode::Check);
+}
+
+void add_check_like_command(CLI::App& app, CommandRunner& selected, CheckMode mode) {
   auto opts = std::make_shared<CheckOptions>();
-  auto* sub = app.add_subcommand("check", "Model-check CTL properties and the standard checks");
+  auto* sub =
+      mode == CheckMode::Plan
+          ? app.add_subcommand("plan",
+                               "The work units of a check (same arguments) and their "
+                               "estimated costs, as JSON (docs/distributed.md)")
+          : app.add_subcommand("check", "Model-check CTL properties and the standard checks");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
@@ -538,7 +576,17 @@ void add_check_command(CLI::App& app, CommandRunner& selected) {
       "property is violated, 2 bad usage or input (also: the engine decides nothing that was "
       "asked), 3 unknown (a limit was reached before an answer was certain, or some answer is "
       "'not checked' by the engine), 4 internal error.");
-  sub->callback([opts, &selected] { selected = [opts] { return run_check(*opts); }; });
+  if (mode == CheckMode::Plan)
+    sub->footer("Exit codes: 0 the plan was printed, 2 bad usage or input, 4 internal error.");
+  sub->add_option("--shard", opts->shard,
+                  "Run only shard I of N (1-based, e.g. 2/4): a deterministic part of the "
+                  "properties and checks, balanced by cost; sfcv merge joins the --json results "
+                  "(docs/distributed.md)");
+  sub->add_flag("--diversify", opts->diversify,
+                "With --shard: every shard asks every question in its own part of the search "
+                "(--engine bmc: depth ranges); sfcv merge keeps the first answer");
+  sub->callback(
+      [opts, &selected, mode] { selected = [opts, mode] { return run_check(*opts, mode); }; });
 }
 
 }  // namespace sfcv::cli

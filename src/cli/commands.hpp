@@ -35,6 +35,8 @@ void add_export_command(CLI::App& app, CommandRunner& selected);
 void add_report_command(CLI::App& app, CommandRunner& selected);
 void add_patterns_command(CLI::App& app, CommandRunner& selected);
 void add_equiv_command(CLI::App& app, CommandRunner& selected);
+void add_plan_command(CLI::App& app, CommandRunner& selected);
+void add_merge_command(CLI::App& app, CommandRunner& selected);
 
 /// Builds the app, parses argv, runs the selected subcommand; returns the exit code.
 int run(int argc, char** argv);

@@ -30,6 +30,8 @@ run() {
     exit 1
   fi
 }
+# A shard's result (sfcv check --shard I/N): the "shard" key (docs/distributed.md).
+run 1 check "$plant" --ctl 'AG !(V2 & V4)' --checks reachable --shard 1/2
 run 1 check "$plant" --checks all --ctl 'AG !(V2 & V4)' --ctl 'EF s13'
 run 1 check "$plant" --checks all --coverage --engine explicit
 run 1 check "$plant" --spec "$src/examples/chemical_plant/requirements.spec"

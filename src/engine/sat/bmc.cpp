@@ -8,9 +8,13 @@ std::vector<ReachResult> bmc(const ReachQuery& query, const BoundOptions& option
   Solver solver(options.deadline);
   Unrolling frames(*query.aig, solver, true);
   std::vector<ReachResult> results(query.targets.size());
-  deepen(query, options, solver, frames, results,
-         "no run reaches it within " + std::to_string(options.max_depth) + " cycles (the bound)",
-         [](std::size_t, std::uint32_t) { return DepthStep::Open; });
+  deepen(
+      query, options, solver, frames, results,
+      options.min_depth == 0
+          ? "no run reaches it within " + std::to_string(options.max_depth) + " cycles (the bound)"
+          : "no run of " + std::to_string(options.min_depth) + " to " +
+                std::to_string(options.max_depth) + " cycles reaches it (this shard's depths)",
+      [](std::size_t, std::uint32_t) { return DepthStep::Open; });
   return results;
 }
 

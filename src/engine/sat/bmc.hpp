@@ -14,6 +14,9 @@ namespace sfcv::engine::sat {
 
 struct BoundOptions {
   std::uint32_t max_depth = 200;  ///< the deepest frame tried (BMC) or k bound (k-induction)
+  /// BMC only: the shallowest frame tried (a swarm shard's depth range, docs/distributed.md);
+  /// the runs it finds are then shortest among those of at least min_depth cycles.
+  std::uint32_t min_depth = 0;
   Deadline deadline;
   /// Called with each depth as it starts (the progress line); may be empty.
   std::function<void(std::uint32_t)> on_depth;

@@ -36,6 +36,10 @@ void deepen(const ReachQuery& query, const BoundOptions& options, Solver& base, 
       give_up(options.max_depth, bound_why);
       break;
     }
+    if (k < options.min_depth) {  // below this shard's depth range: unroll only
+      base.add_clause({frames.literal(query.step_ok, k)});
+      continue;
+    }
     bool interrupted = false;
     for (std::size_t t = 0; t < results.size() && !interrupted; ++t) {
       auto& r = results[t];

@@ -519,6 +519,7 @@ class Run {
     std::vector<ReachResult> out;
     switch (options_.algorithm) {
       case SatAlgorithm::Bmc:
+        bounds.min_depth = options_.min_depth;
         return sat::bmc(query, bounds);
       case SatAlgorithm::KInduction:
         out = sat::k_induction(query, bounds);
@@ -834,6 +835,7 @@ class Run {
     ReachResult r;
     switch (options_.algorithm) {
       case SatAlgorithm::Bmc:
+        bounds.min_depth = options_.min_depth;
         return sat::bmc(query, bounds).front();
       case SatAlgorithm::KInduction:
         r = sat::k_induction(query, bounds).front();

@@ -17,6 +17,8 @@ enum class SatAlgorithm { Bmc, KInduction, Ic3 };
 struct SatEngineOptions {
   SatAlgorithm algorithm = SatAlgorithm::Ic3;
   std::uint32_t max_depth = 200;  ///< bmc and kind: the deepest unrolling
+  /// bmc only: the shallowest depth tried (a swarm shard's range, docs/distributed.md)
+  std::uint32_t min_depth = 0;
 };
 
 ModelCheckerPtr make_sat_model_checker(const SatEngineOptions& options);
