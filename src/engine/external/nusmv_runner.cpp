@@ -216,7 +216,10 @@ class NusmvModelChecker final : public ModelChecker {
       std::ofstream f(dir.path() + "/model.smv");
       write_nusmv(f, exported.model);
     }
-    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.seconds_left());
+    // Under the run's deadline, and killed with its process group when the run is cancelled
+    // (the memory watchdog, a signal).
+    const auto run = run_tool({nusmv_, "model.smv"}, dir.path(), task.limits.seconds_left(),
+                              task.limits.cancel.get());
     const auto verdicts = parse_nusmv_output(run.output);
 
     logic::CheckReport report;
