@@ -2,8 +2,8 @@
 """The table of docs/reliability.md, "Every limit in every subcommand" (issue 52): each
 subcommand (and engine) x {large chart, wide inputs, deep expressions} x {time, memory, states},
 run under one limit at a time, with the outcome (held: exit 0/1 decided in time; exit 3: the
-limit reached, what was decided printed; exit 2: a located error) and the wall time and peak
-resident memory of the run.
+limit reached, what was decided printed; exit 2: a located error), the wall and CPU (user +
+system) seconds and the peak resident memory of the run.
 
     bench/limits/limits_table.py build/release/sfcv [--jobs 2] > table.md
 
@@ -99,12 +99,12 @@ def run(sfcv, args):
     _, status, usage = os.wait4(p.pid, 0)
     wall = time.monotonic() - start
     code = os.waitstatus_to_exitcode(status)
-    return code, wall, usage.ru_maxrss / 1024.0
+    return code, wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0
 
 
-def cell(code, wall, mib):
+def cell(code, wall, cpu, mib):
     word = {0: "held", 1: "held", 2: "exit 2", 3: "exit 3"}.get(code, "exit %d" % code)
-    return "%s %.1f s %d MB" % (word, wall, mib)
+    return "%s %.1f/%.1f s %d MB" % (word, wall, cpu, mib)
 
 
 def main():

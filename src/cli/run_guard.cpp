@@ -42,10 +42,17 @@ RunGuard::RunGuard(const LimitOptions& options, std::shared_ptr<std::atomic<bool
       std::chrono::duration<double>(backstop_grace_seconds(timeout)));
   const auto deadline = budget_.deadline;
   const MemoryWatchdog* watchdog = watchdog_.get();
-  backstop_ = std::jthread([deadline, grace, watchdog](std::stop_token stop) {
+  // Past --memory the watchdog cancels the run, which then stops and prints what it has; a
+  // phase that goes on allocating without reading the cancel flag is ended at 10 % over.
+  const auto ceiling = static_cast<std::uint64_t>(static_cast<double>(budget_.max_memory_bytes) *
+                                                  1.1 * kSanitizerSlowdown);
+  backstop_ = std::jthread([deadline, grace, watchdog, ceiling](std::stop_token stop) {
     std::optional<Clock::time_point> tripped_at;
     while (!stop.stop_requested()) {
       const auto now = Clock::now();
+      if (ceiling > 0)
+        if (const auto held = resident_memory_bytes(); held > ceiling)
+          end_process_now((held_text(held) + ", 10 % over the budget").c_str());
       if (deadline && now > *deadline + grace)
         end_process_now("time limit reached and the run did not stop by itself");
       if (watchdog->tripped() && !tripped_at) tripped_at = now;

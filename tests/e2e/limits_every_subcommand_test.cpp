@@ -78,9 +78,9 @@ std::vector<Measured> run_all(const std::vector<std::string>& commands) {
   return out;
 }
 
-constexpr double kTimeout = 2;
+constexpr double kTimeout = 1;
 constexpr int kMemoryMiB = 400;
-const std::string kLimits = " --quiet --timeout 2 --memory 400M --max-states 100000";
+const std::string kLimits = " --quiet --timeout 1 --memory 400M --max-states 100000";
 
 /// The outcome the issue allows, in the time and memory given.
 void expect_held(const Measured& m, const std::string& model) {
@@ -92,8 +92,9 @@ void expect_held(const Measured& m, const std::string& model) {
   EXPECT_TRUE(m.exit_code == 0 || m.exit_code == 1 || m.exit_code == 3 || located_error)
       << what << ": exit " << m.exit_code << "\n"
       << m.err.substr(0, 1500);
-  if (m.exit_code == 3)
+  if (m.exit_code == 3) {
     EXPECT_NE(m.err.find("limit"), std::string::npos) << what << ": " << m.err.substr(0, 1500);
+  }
   // The timeout, 1 s + 5 % to stop and report, and room for a loaded machine: in CPU time.
   EXPECT_LT(m.cpu, (kTimeout + 1 + 0.05 * kTimeout + 2) * kSlowdown) << what;
   // Wall time only catches a hang (the runs share two cores with each other and CI).
