@@ -48,8 +48,9 @@ std::vector<Measured> run_all(const std::vector<std::string>& commands) {
     out[i].args = commands[i];
     const auto err = fs::temp_directory_path() /
                      ("sfcv-limits-" + std::to_string(::getpid()) + "-" + std::to_string(i));
-    const std::string cmd = std::string("exec '") + SFCV_BINARY + "' " + commands[i] +
-                            " >/dev/null 2>'" + err.string() + "' </dev/null";
+    const std::string cmd =
+        std::string("exec '") + SFCV_BINARY + "' " + commands[i] + " >'" + err.string() +
+        "' 2>&1 </dev/null";  // both streams: rsg and query print the limit on standard output
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = ::fork();
     if (pid == 0) {
