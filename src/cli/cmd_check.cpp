@@ -27,6 +27,7 @@
 #include "cli/name_hints.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/run_limits.hpp"
 #include "cli/system_options.hpp"
 #include "engine/auto_policy.hpp"
@@ -196,13 +197,6 @@ void mark_stopped(logic::CheckReport& result, const std::string& why, const std:
   }
 }
 
-/// "memory limit reached (the process held N MiB)": the watchdog's words, in the report and
-/// in the one-line answer of a run stopped while loading.
-std::string memory_limit_text(const MemoryWatchdog& watchdog) {
-  return "memory limit reached (the process held " + std::to_string(watchdog.seen_bytes() >> 20) +
-         " MiB)";
-}
-
 /// SARIF URIs are relative to --sarif-root, by default the git work tree around the working
 /// directory (code scanning resolves them against the repository), else that directory.
 std::string sarif_root(const CheckOptions& o) {
@@ -255,16 +249,13 @@ report::Provenance check_provenance(const CheckOptions& o, const std::string& se
   return p;
 }
 
-int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckMode mode) {
+int run_check_body(const CheckOptions& o, const RunGuard& guard, CheckMode mode) {
   // A wrong output path ends the run now, not after the exploration (docs/reliability.md).
   const auto outputs = output_paths(o);
   check_output_paths(outputs);
-  // The budget starts now and holds for every phase below; SIGINT/SIGTERM cancel it.
-  const model::Budget budget = [&o] {
-    auto b = make_budget(o.limits);
-    b.cancel = interrupt_flag();
-    return b;
-  }();
+  // The budget holds for every phase below; SIGINT/SIGTERM and the memory watchdog cancel it.
+  const model::Budget& budget = guard.budget();
+  const MemoryWatchdog& watchdog = guard.watchdog();
   // Properties first: a typo in a formula should not wait for the model.
   logic::CheckInputs inputs{
       o.ctl,    o.spec.empty() ? "" : model::read_input_file(o.spec, "the spec file"),
@@ -375,7 +366,7 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckM
         std::string("interrupted by ") + interrupt_signal_name() + " before an answer was certain",
         "interrupted");
   else if (watchdog.tripped())
-    mark_stopped(result, memory_limit_text(watchdog) + " before an answer was certain",
+    mark_stopped(result, guard.memory_text() + " before an answer was certain",
                  to_string(Limit::Memory));
   progress.phase("render");
   if (!stored) {
@@ -458,18 +449,10 @@ int run_check_body(const CheckOptions& o, const MemoryWatchdog& watchdog, CheckM
 int run_check(const CheckOptions& o, CheckMode mode) {
   const InterruptScope interrupt;  // the first signal stops the engines, the reports follow
   // Past --memory, the whole process stops as at its deadline (the engines' own counts miss
-  // what they share).
-  const MemoryWatchdog watchdog(make_budget(o.limits).max_memory_bytes, interrupt_flag());
-  try {
-    return run_check_body(o, watchdog, mode);
-  } catch (const LimitReached& e) {
-    // Interrupted, or out of memory, while loading or building: no question was asked yet.
-    if (watchdog.tripped() && !interrupted())
-      throw LimitReached(Limit::Memory,
-                         memory_limit_text(watchdog) + " while loading or building the model");
-    if (!interrupted()) throw;
-    throw LimitReached(e.which(), std::string(interrupt_signal_name()) + ": " + e.what());
-  }
+  // what they share); a limit reached while loading or building names itself (run_guard.hpp).
+  return run_limited(
+      o.limits, [&o, mode](const RunGuard& guard) { return run_check_body(o, guard, mode); },
+      interrupt_flag());
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/run_limits.hpp"
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
@@ -137,8 +138,7 @@ void shorten_traces(logic::CheckReport& report, const logic::CheckTask& task) {
   }
 }
 
-int run_equiv(const EquivOptions& o) {
-  const InterruptScope interrupt;
+int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   static const std::vector<std::string> engines = {"auto", "explicit", "bdd", "bmc", "kind", "ic3"};
   if (std::find(engines.begin(), engines.end(), o.engine) == engines.end())
     throw UsageError("bad --engine '" + o.engine +
@@ -148,8 +148,7 @@ int run_equiv(const EquivOptions& o) {
   const OutputPath trace_out{o.trace_file, "--trace-file"};
   const OutputPath html_out{o.html, "--html"};
   check_output_paths({trace_out, html_out});
-  model::Budget budget = make_budget(o.limits);
-  budget.cancel = interrupt_flag();
+  const model::Budget& budget = guard.budget();
 
   logic::CheckInputs assume_inputs;
   assume_inputs.assume = o.assume;
@@ -207,7 +206,7 @@ int run_equiv(const EquivOptions& o) {
   try {
     run.report = checker->check(task);
   } catch (const LimitReached& e) {
-    run.report = logic::unknown_report(task, o.engine, e);
+    run.report = logic::unknown_report(task, o.engine, guard.reason(e));
   }
   if (o.engine != "explicit" && o.engine != "bmc") shorten_traces(run.report, task);
 
@@ -285,7 +284,13 @@ void add_equiv_command(CLI::App& app, CommandRunner& selected) {
       "Exit codes: 0 equivalent, 1 some compared signal differs, 2 bad usage or input "
       "(mismatched input types, a Grafcet side, globals both declare), 3 unknown, 4 internal "
       "error.");
-  sub->callback([opts, &selected] { selected = [opts] { return run_equiv(*opts); }; });
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      const InterruptScope interrupt;  // the first signal stops the engines, the report follows
+      return run_limited(
+          opts->limits, [&](const RunGuard& g) { return run_equiv(*opts, g); }, interrupt_flag());
+    };
+  });
 }
 
 }  // namespace sfcv::cli

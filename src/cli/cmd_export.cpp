@@ -18,6 +18,7 @@
 #include "cli/iec_options.hpp"
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/system_options.hpp"
 #include "engine/external/aiger_writer.hpp"
 #include "engine/external/export_model.hpp"
@@ -45,6 +46,7 @@ struct ExportOptions {
   std::vector<std::string> assume;
   std::string checks;  ///< empty: reachability when no property is given
   SystemOptions system;
+  LimitOptions limits;
 };
 
 void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
@@ -57,7 +59,8 @@ void print_or_throw(const model::Diagnostics& diags, const std::string& what) {
 }
 
 // The circuit exports: nusmv, casmv, promela, aiger, aag.
-void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out) {
+void export_circuit(const ExportOptions& o, const model::Project& project, std::ostream& out,
+                    const RunGuard& guard) {
   logic::CheckInputs inputs{
       o.ctl,    o.spec.empty() ? "" : model::read_input_file(o.spec, "the spec file"),
       o.spec,   {},
@@ -71,7 +74,8 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     throw InputError("sfcv export --to " + o.to + ": not supported for Grafcet yet");
 
   const auto built =
-      build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export");
+      build_system(project, o.system, logic::assumption_exprs(parsed.spec), "sfcv export",
+                   semantics::ActionOrder::Declaration, &guard.budget());
   // Inputs and previous values named by a property are kept in the state only then.
   model::Diagnostics history_diags;
   const auto history = logic::history_system_for(parsed.spec, *built.system, history_diags);
@@ -106,6 +110,7 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
     request.header.push_back("assumption: " + logic::to_string(a.formula));
 
   engine::ExportedModel exported;
+  guard.check("building the system");
   try {
     exported = engine::build_export(*ts, request);
   } catch (const engine::ExportError& e) {
@@ -151,7 +156,7 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
   }
 }
 
-int run_export(const ExportOptions& o) {
+int run_export(const ExportOptions& o, const RunGuard& guard) {
   static const std::vector<std::string> kTargets = {"nusmv", "casmv", "promela", "aiger",  "aag",
                                                     "dot",   "iec",   "g7",      "plcopen"};
   if (std::find(kTargets.begin(), kTargets.end(), o.to) == kTargets.end())
@@ -163,7 +168,8 @@ int run_export(const ExportOptions& o) {
         "standard output (--to aag writes ASCII)");
   const OutputPath output{o.output, "-o"};
   check_output_paths({output});
-  const auto project = load_model_or_throw(o.model, parse_format(o.format));
+  const auto project = load_model_or_throw(o.model, parse_format(o.format), false, &guard.budget());
+  guard.check("loading the model");
 
   std::ostringstream text;
   try {
@@ -176,11 +182,13 @@ int run_export(const ExportOptions& o) {
     } else if (o.to == "plcopen") {
       text << io::write_plcopen_xml(project);
     } else {
-      export_circuit(o, project, text);
+      export_circuit(o, project, text, guard);
     }
   } catch (const UnsupportedConstruct& e) {  // the writers' (G7WriteError among them)
     throw UnsupportedConstruct("sfcv export --to " + o.to + ": " + e.what());
   }
+  // A partial export would not mean the chart: past a limit, nothing is written.
+  guard.check("writing the export");
   if (o.output.empty())
     std::cout << text.str();
   else
@@ -210,7 +218,12 @@ void add_export_command(CLI::App& app, CommandRunner& selected) {
                   "reachable (default without properties) or none: EF X per step (SMV), "
                   "invariant AG !X per step (promela/aiger)");
   add_system_options(*sub, opts->system, SemanticsChoice::IecOnly);
-  sub->callback([opts, &selected] { selected = [opts] { return run_export(*opts); }; });
+  add_limit_options(*sub, opts->limits, "nothing is written (exit 3)");
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return run_export(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

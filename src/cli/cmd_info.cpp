@@ -3,11 +3,13 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/run_guard.hpp"
 #include "model/names.hpp"
 #include "model/networks.hpp"
 #include "report/text_encoding.hpp"
@@ -21,6 +23,7 @@ struct InfoOptions {
   std::string format = "auto";
   bool json = false;
   bool quiet = false;
+  LimitOptions limits;
 };
 
 using nlohmann::ordered_json;
@@ -128,9 +131,11 @@ ordered_json pou_info(const model::Pou& pou) {
 
 /// The variables that the run (default options: every PROGRAM) reads and no POU of it writes,
 /// read as inputs (docs/semantics.md 1.8); null when the semantics cannot model the project.
-ordered_json unwritten_info(const model::Project& p) {
+ordered_json unwritten_info(const model::Project& p, const model::Budget& budget) {
   model::Diagnostics ignored;  // `sfcv lint` reports them
-  const auto system = semantics::make_iec61131_system(p, semantics::Iec61131Options{}, ignored);
+  semantics::Iec61131Options options;
+  options.deadline = budget.deadline;
+  const auto system = semantics::make_iec61131_system(p, options, ignored);
   if (!system) return nullptr;
   auto list = ordered_json::array();
   for (const auto& u : semantics::unwritten_variables(*system)) {
@@ -145,7 +150,9 @@ ordered_json unwritten_info(const model::Project& p) {
   return list;
 }
 
-ordered_json project_info(const std::string& file, const model::Project& p) {
+/// `stopped`: set when a limit left the unwritten variables out (then null).
+ordered_json project_info(const std::string& file, const model::Project& p, const RunGuard& guard,
+                          std::optional<LimitReached>& stopped) {
   ordered_json j;
   j["model"] = file;
   j["format"] = p.source_format;
@@ -155,7 +162,14 @@ ordered_json project_info(const std::string& file, const model::Project& p) {
   auto pous = ordered_json::array();
   for (const auto& pou : p.pous) pous.push_back(pou_info(pou));
   j["pous"] = pous;
-  j["unwritten"] = p.dialect == model::Dialect::Grafcet ? ordered_json::array() : unwritten_info(p);
+  try {
+    j["unwritten"] = p.dialect == model::Dialect::Grafcet ? ordered_json::array()
+                                                          : unwritten_info(p, guard.budget());
+    guard.check("finding the unwritten variables");
+  } catch (const LimitReached& e) {
+    j["unwritten"] = nullptr;
+    stopped = guard.reason(e);
+  }
   return j;
 }
 
@@ -167,7 +181,7 @@ std::string nonzero(const ordered_json& counts) {
   return s.empty() ? "none" : s;
 }
 
-void print_text(const ordered_json& j, std::ostream& out) {
+void print_text(const ordered_json& j, std::ostream& out, bool stopped) {
   const bool grafcet = j["dialect"] == "grafcet";
   out << "model: " << j["model"].get<std::string>() << " (" << j["format"].get<std::string>()
       << ", " << (grafcet ? "Grafcet, IEC 60848" : "SFC, IEC 61131-3") << ")\n";
@@ -202,6 +216,10 @@ void print_text(const ordered_json& j, std::ostream& out) {
   if (grafcet) return;
   const auto& u = j["unwritten"];
   out << "\n";
+  if (u.is_null() && stopped) {
+    out << "unwritten variables: not computed (a limit was reached)\n";
+    return;
+  }
   if (u.is_null()) {
     out << "unwritten variables: not computed (the IEC 61131-3 semantics cannot model this "
            "project as a whole: see sfcv lint)\n";
@@ -226,16 +244,21 @@ void add_info_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_flag("--json", opts->json, "Print the summary as JSON (schema: docs/formats.md)");
+  add_limit_options(*sub, opts->limits, "what is not counted is left out (exit 3)");
   sub->callback([opts, &selected] {
     selected = [opts] {
-      const auto project = load_model_or_throw(opts->model, parse_format(opts->format));
-      auto info = project_info(opts->model, project);
-      report::make_valid_utf8(info);  // names are bytes; the JSON is UTF-8
-      if (opts->json)
-        std::cout << info.dump(2) << "\n";
-      else
-        print_text(info, std::cout);
-      return kHolds;
+      return run_limited(opts->limits, [&](const RunGuard& guard) {
+        const auto project =
+            load_model_or_throw(opts->model, parse_format(opts->format), false, &guard.budget());
+        std::optional<LimitReached> stopped;
+        auto info = project_info(opts->model, project, guard, stopped);
+        report::make_valid_utf8(info);  // names are bytes; the JSON is UTF-8
+        if (opts->json)
+          std::cout << info.dump(2) << "\n";
+        else
+          print_text(info, std::cout, stopped.has_value());
+        return stopped ? report_limit(*stopped) : kHolds;
+      });
     };
   });
 }

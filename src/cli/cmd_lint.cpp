@@ -3,11 +3,13 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
+#include "cli/run_guard.hpp"
 #include "report/text_encoding.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -19,6 +21,7 @@ struct LintOptions {
   std::string model;
   std::string format = "auto";
   bool json = false;
+  LimitOptions limits;
 };
 
 std::string_view severity_name(model::Severity s) {
@@ -51,12 +54,15 @@ std::string plural(std::size_t n, const char* word) {
 /// What the semantics refuses (a POU body or an action it does not model, an unknown name):
 /// lint's exit 0 must mean that `check` can model the file, so the system is built exactly as
 /// `check` without `--pou` builds it (its default choice of programs).
-model::Diagnostics semantic_diagnostics(const model::Project& project) {
+model::Diagnostics semantic_diagnostics(const model::Project& project,
+                                        const model::Budget& budget) {
   model::Diagnostics out;
+  semantics::GrafcetOptions grafcet;
+  semantics::Iec61131Options iec;
+  grafcet.deadline = iec.deadline = budget.deadline;
   if (project.dialect == model::Dialect::Grafcet)
-    semantics::make_grafcet_system(project, semantics::GrafcetOptions{}, out);
-  else if (const auto system =
-               semantics::make_iec61131_system(project, semantics::Iec61131Options{}, out))
+    semantics::make_grafcet_system(project, grafcet, out);
+  else if (const auto system = semantics::make_iec61131_system(project, iec, out))
     // One warning per variable that the run reads and nothing writes, at its declaration
     // (docs/semantics.md 1.8): perhaps a sensor whose I/O mapping is not in the file, perhaps
     // a constant not declared CONSTANT, perhaps a forgotten assignment.
@@ -72,11 +78,18 @@ model::Diagnostics semantic_diagnostics(const model::Project& project) {
   return out;
 }
 
-int lint(const LintOptions& opts) {
-  auto checked = load_and_validate(opts.model, parse_format(opts.format));
-  if (checked.project && !model::has_errors(checked.diagnostics))
-    for (auto& d : semantic_diagnostics(*checked.project))
-      checked.diagnostics.push_back(std::move(d));
+int lint(const LintOptions& opts, const RunGuard& guard) {
+  auto checked = load_and_validate(opts.model, parse_format(opts.format), &guard.budget());
+  // A limit in the semantic checks: the diagnostics found so far are printed, then the limit.
+  std::optional<LimitReached> stopped;
+  try {
+    if (checked.project && !model::has_errors(checked.diagnostics))
+      for (auto& d : semantic_diagnostics(*checked.project, guard.budget()))
+        checked.diagnostics.push_back(std::move(d));
+    guard.check("checking the semantics");
+  } catch (const LimitReached& e) {
+    stopped = guard.reason(e);
+  }
   std::size_t errors = 0, warnings = 0;
   for (const auto& d : checked.diagnostics) {
     if (d.severity == model::Severity::Error) ++errors;
@@ -93,7 +106,9 @@ int lint(const LintOptions& opts) {
     for (const auto& d : checked.diagnostics) std::cout << d.str() << "\n";
     std::cout << plural(errors, "error") << ", " << plural(warnings, "warning") << "\n";
   }
-  return errors ? kBadInput : kHolds;
+  if (errors) return kBadInput;  // errors found are errors, whatever was left unchecked
+  if (stopped) return report_limit(*stopped);
+  return kHolds;
 }
 }  // namespace
 
@@ -107,7 +122,12 @@ void add_lint_command(CLI::App& app, CommandRunner& selected) {
   sub->add_flag("--json", opts->json,
                 "Print the diagnostics as a JSON array of {file, line, column, element_path, "
                 "severity, message}");
-  sub->callback([opts, &selected] { selected = [opts] { return lint(*opts); }; });
+  add_limit_options(*sub, opts->limits, "what is not checked is unknown");
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return lint(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

@@ -15,7 +15,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
-#include "cli/run_limits.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/shipped_files.hpp"
 #include "cli/system_options.hpp"
 #include "engine/bdd/symbolic_query_evaluator.hpp"  // SymbolicQueryError
@@ -74,10 +74,10 @@ std::string located(const logic::QueryError& e, const std::string& text,
   return out;
 }
 
-int run_query(const QueryOptions& o) {
+int run_query(const QueryOptions& o, const RunGuard& guard) {
   const OutputPath html{o.html, "--html"};
   check_output_paths({html});
-  const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
+  const model::Budget& budget = guard.budget();  // one budget for every phase
   // Library first: its errors are the user's files, independent of the model.
   logic::QueryLibrary library;
   std::string default_lib;
@@ -160,7 +160,7 @@ int run_query(const QueryOptions& o) {
   } catch (const UnsupportedConstruct& e) {
     throw InputError(std::string("sfcv query --engine bdd: ") + e.what());
   } catch (const LimitReached& e) {
-    std::cerr << "sfcv query: unknown: " << e.what() << "\n";
+    std::cerr << "sfcv query: unknown: " << guard.reason(e).what() << "\n";
     return kUnknown;
   }
   const auto& graph = service->graph();
@@ -189,7 +189,13 @@ int run_query(const QueryOptions& o) {
     } catch (const std::length_error& e) {
       throw InputError(items[i].text + ": the set is too large to list (" + e.what() + ")");
     } catch (const LimitReached& e) {
-      std::cerr << "sfcv query: unknown: " << e.what() << "\n";
+      // The answers so far are printed; the rest is unknown.
+      std::cerr << "sfcv query: unknown: " << guard.reason(e).what() << "\n";
+      if (o.json) {
+        jout["limit"] = guard.reason(e).what();
+        report::make_valid_utf8(jout);
+        std::cout << jout.dump(2) << "\n";
+      }
       return kUnknown;
     }
     // --assert: a test gives its verdict; a set is asserted empty (library properties are the
@@ -206,6 +212,7 @@ int run_query(const QueryOptions& o) {
   report::make_valid_utf8(jout);  // the model's path is bytes too
   if (o.json) std::cout << jout.dump(2) << "\n";
   if (!o.html.empty()) {
+    guard.check("writing the HTML report");
     write_output(html, report::query_html(
                            jout, report::html_pictures(project, *ts, {}, picture_limits(budget))));
   }
@@ -244,9 +251,13 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
                   "explicit (default: the graph), bdd (symbolic, IEC 61131-3 charts) or auto "
                   "(explicit up to " +
                       std::to_string(engine::kAutoProbeStates) + " situations, then bdd)");
-  add_limit_options(*sub, opts->limits, "the graph is incomplete", MemoryLimit::NotOffered);
+  add_limit_options(*sub, opts->limits, "the graph is incomplete");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
-  sub->callback([opts, &selected] { selected = [opts] { return run_query(*opts); }; });
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return run_query(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

@@ -12,6 +12,7 @@
 #include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/system_options.hpp"
 #include "report/check_html.hpp"
 
@@ -25,9 +26,10 @@ struct ReportOptions {
   std::string model;  ///< empty: the result's "model"
   std::string format = "auto";
   SystemOptions system;
+  LimitOptions limits;
 };
 
-int run_report(const ReportOptions& o) {
+int run_report(const ReportOptions& o, const RunGuard& guard) {
   nlohmann::json result =
       read_json_file(o.result, "the result", "not a JSON result of 'sfcv check --json'");
   if (!result.contains("properties") || !result["properties"].is_array())
@@ -43,12 +45,17 @@ int run_report(const ReportOptions& o) {
   // Before the model is loaded and built (the long part).
   const OutputPath html{o.html, "--html"};
   check_output_paths({html});
-  const auto project = load_model_or_throw(model, parse_format(o.format), true);
+  const auto& budget = guard.budget();
+  const auto project = load_model_or_throw(model, parse_format(o.format), true, &budget);
   SystemOptions system = o.system;
   if (system.semantics.empty()) system.semantics = result.value("semantics", std::string());
-  const auto built = build_system(project, system, {}, "sfcv report");
-  write_output(html,
-               report::check_html(report::html_report(std::move(result), project, *built.system)));
+  const auto built = build_system(project, system, {}, "sfcv report",
+                                  semantics::ActionOrder::Declaration, &budget);
+  guard.check("building the system");
+  auto page = report::check_html(
+      report::html_report(std::move(result), project, *built.system, picture_limits(budget)));
+  // The pictures took what was left of the time (a note replaces a layout cut short).
+  write_output(html, page);
   return kHolds;
 }
 
@@ -63,7 +70,12 @@ void add_report_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--model", opts->model, "The chart file (default: the one the result names)");
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   add_system_options(*sub, opts->system);
-  sub->callback([opts, &selected] { selected = [opts] { return run_report(*opts); }; });
+  add_limit_options(*sub, opts->limits, "the report is not written (exit 3)");
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return run_report(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

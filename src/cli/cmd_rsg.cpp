@@ -13,7 +13,7 @@
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
-#include "cli/run_limits.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/system_options.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
 #include "report/situation_graph_dot.hpp"
@@ -36,10 +36,10 @@ struct RsgOptions {
   LimitOptions limits;
 };
 
-int run_rsg(const RsgOptions& o) {
+int run_rsg(const RsgOptions& o, const RunGuard& guard) {
   const OutputPath dot{o.dot, "--dot"}, dot_states{o.dot_states, "--dot-states"};
   check_output_paths({dot, dot_states});
-  const model::Budget budget = make_budget(o.limits);  // one deadline for every phase
+  const model::Budget& budget = guard.budget();  // one budget for every phase
   ProgressLine progress(!global_options().quiet);
   progress.phase("load");
   const model::Project project =
@@ -56,6 +56,8 @@ int run_rsg(const RsgOptions& o) {
   engine::ExplorationOptions eo;
   eo.max_states = budget.max_states;
   eo.deadline = budget.deadline;
+  eo.cancel = budget.cancel.get();  // the memory watchdog
+  eo.max_memory_bytes = budget.max_memory_bytes;
   if (auto report = progress.callback())
     eo.progress = [report](const engine::ExplorationProgress& p) {
       model::Progress q;
@@ -69,6 +71,15 @@ int run_rsg(const RsgOptions& o) {
   eo.progress_interval = 4096;
   const auto g = engine::build_reachable_situation_graph(*ts, eo);
   progress.phase("render");
+  // The limit's name: a cancel is the memory watchdog's.
+  const std::string limit = guard.watchdog().tripped() ? std::string("memory") : g.limit_reached();
+  // Past the deadline or the memory, the listing, the JSON and the pictures (in states times
+  // steps) are not rendered: the summary and the limit are what the run has.
+  if (!g.complete() && budget.expired() &&
+      (o.list || o.json || !o.dot.empty() || !o.dot_states.empty()))
+    throw guard.reason(LimitReached(
+        Limit::Time, "time limit reached while exploring: the graph is incomplete after " +
+                         std::to_string(g.num_states()) + " states and is not written"));
   report::SituationGraphText shown;
   shown.semantics = sem;
   shown.single_input_change = sem == "grafcet" && !o.system.multi_input_change;
@@ -93,7 +104,7 @@ int run_rsg(const RsgOptions& o) {
   if (!g.complete()) {
     // Under --json standard output holds the JSON document alone (its "complete" and "limit").
     (dot_to_stdout || o.json ? std::cerr : std::cout)
-        << "unknown: the " << g.limit_reached() << " limit was reached after " << g.num_states()
+        << "unknown: the " << limit << " limit was reached after " << g.num_states()
         << " states; the graph is incomplete\n";
     return kUnknown;
   }
@@ -119,8 +130,12 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
       "--dot-states", opts->dot_states,
       "Write every stable situation and its input conditions as Graphviz (- for stdout)");
   sub->add_flag("--json", opts->json, "Print the graph as JSON instead of the summary");
-  add_limit_options(*sub, opts->limits, "verdict unknown", MemoryLimit::NotOffered);
-  sub->callback([opts, &selected] { selected = [opts] { return run_rsg(*opts); }; });
+  add_limit_options(*sub, opts->limits, "verdict unknown");
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return run_rsg(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "cli/json_input.hpp"
 #include "cli/load_model.hpp"
 #include "cli/output_file.hpp"
+#include "cli/run_guard.hpp"
 #include "cli/system_options.hpp"
 #include "io/st_parser.hpp"
 #include "logic/trace.hpp"
@@ -42,6 +44,7 @@ struct SimulateOptions {
   SystemOptions system;
   std::vector<std::string> assumptions;
   long long max_cycles = -1;
+  LimitOptions limits;
 };
 
 /// One record of the input CSV from text[pos] on (RFC 4180, which `sfcv check --trace csv`
@@ -283,9 +286,10 @@ void write_vcd(const std::string& path, const semantics::TransitionSystem& ts,
   write_output({path, "--vcd"}, report::trace_vcd(run_as_trace(r, rows), ts, {cycle_ms}));
 }
 
-int run_simulate(const SimulateOptions& o) {
+int run_simulate(const SimulateOptions& o, const RunGuard& guard) {
   check_output_paths({{o.vcd, "--vcd"}});
-  auto project = load_model_or_throw(o.model, parse_format(o.format));
+  const auto& budget = guard.budget();
+  auto project = load_model_or_throw(o.model, parse_format(o.format), false, &budget);
   std::vector<model::ExprPtr> assumptions;
   for (const auto& a : o.assumptions) {
     model::Diagnostics d;
@@ -298,7 +302,9 @@ int run_simulate(const SimulateOptions& o) {
     assumptions.push_back(e);
   }
   const bool grafcet = chosen_semantics(project, o.system) == "grafcet";
-  const auto built = build_system(project, o.system, assumptions, "sfcv simulate");
+  const auto built = build_system(project, o.system, assumptions, "sfcv simulate",
+                                  semantics::ActionOrder::Declaration, &budget);
+  guard.check("building the system");
   const auto& ts = built.system;
   const std::int64_t cycle_ms = parse_cycle_ms(o.system.cycle);
 
@@ -308,6 +314,14 @@ int run_simulate(const SimulateOptions& o) {
   // Grafcet: the first row is the initial inputs, so N events are N + 1 rows.
   const std::size_t keep = static_cast<std::size_t>(o.max_cycles) + (grafcet ? 1 : 0);
   if (o.max_cycles >= 0 && keep < rows.size()) rows.resize(keep);
+  // --max-states: the run stops after that many states (cycles, or events), unknown past them.
+  std::optional<LimitReached> stopped;
+  if (budget.max_states > 0 && rows.size() > budget.max_states) {
+    rows.resize(budget.max_states);
+    stopped = LimitReached(
+        Limit::States, "states limit reached after " + std::to_string(budget.max_states) + " rows");
+  }
+  guard.check("reading the inputs");
   semantics::SimulationResult r;
   if (grafcet) {
     r = semantics::simulate_events(*ts, rows, !o.system.multi_input_change, !assumptions.empty());
@@ -338,7 +352,13 @@ int run_simulate(const SimulateOptions& o) {
   };
   std::cout << (grafcet ? "event" : "cycle")
             << " | inputs | active steps | active actions | outputs\n";
+  model::BudgetPoll poll(budget, 256);
   for (std::size_t c = 0; c < r.states.size(); ++c) {
+    if (poll.tick()) {  // the rows printed so far stand; the rest is unknown
+      stopped = guard.reason(LimitReached(
+          Limit::Time, "time limit reached while printing, after " + std::to_string(c) + " rows"));
+      break;
+    }
     std::string ins;
     if (c == 0 && !grafcet) {
       ins = "(initial)";
@@ -352,6 +372,8 @@ int run_simulate(const SimulateOptions& o) {
               << list(c, semantics::ObservableKind::Action) << " | "
               << list(c, semantics::ObservableKind::Variable) << "\n";
   }
+  if (stopped && r.ok) return report_limit(*stopped);  // a failed row is a finding: exit 2
+  guard.check("writing the VCD waveform");
   if (!o.vcd.empty()) write_vcd(o.vcd, *ts, r, rows, cycle_ms);
   if (!r.ok) {
     std::cerr << "sfcv: error: " << o.inputs << ": " << (grafcet ? "row " : "cycle ")
@@ -390,12 +412,17 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--assume", opts->assumptions,
                   "Assumption on inputs and state (ST expression), repeatable");
   sub->add_option("--max-cycles", opts->max_cycles, "Run at most N cycles of the trace");
+  add_limit_options(*sub, opts->limits, "the rows so far are printed, exit 3");
   sub->footer(
       "Exit codes: 0 the trace ran to its end; 2 bad usage or input, or a cycle had no "
       "successor (an assumption is violated, or a range error such as an integer overflow; "
       "Grafcet: an instability, or two inputs changing in one row without "
       "--multi-input-change).");
-  sub->callback([opts, &selected] { selected = [opts] { return run_simulate(*opts); }; });
+  sub->callback([opts, &selected] {
+    selected = [opts] {
+      return run_limited(opts->limits, [&](const RunGuard& g) { return run_simulate(*opts, g); });
+    };
+  });
 }
 
 }  // namespace sfcv::cli

@@ -1,5 +1,7 @@
 #include "cli/file_kind.hpp"
 
+#include <sys/stat.h>
+
 #include <cctype>
 #include <fstream>
 
@@ -73,6 +75,10 @@ std::optional<std::string> foreign_file_kind(std::string_view head) {
 }
 
 void refuse_foreign_file(const std::string& path) {
+  // Regular files only: reading a pipe's head would take it from the loader, and opening a
+  // FIFO without a writer blocks (the loader refuses those, model/input_file.hpp).
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
   std::ifstream in(path, std::ios::binary);
   if (!in) return;
   std::string head(4096, '\0');

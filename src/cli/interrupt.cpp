@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "cli/exit_code.hpp"
+#include "engine/external/external_tool.hpp"
 
 namespace sfcv::cli {
 
@@ -34,6 +35,7 @@ void on_signal(int sig) {
     return;
   }
   if (char* temporary = g_temporary.load()) ::unlink(temporary);
+  engine::kill_running_tools();
   say(sig == SIGINT ? "\nsfcv: SIGINT: stopped; verdict unknown\n"
                     : "\nsfcv: SIGTERM: stopped; verdict unknown\n");
   ::_exit(kUnknown);
@@ -84,6 +86,15 @@ InterruptScope::~InterruptScope() {
 
 void guard_temporary_file(char* path) {
   g_temporary.store(path);
+}
+
+void end_process_now(const char* why) {
+  if (char* temporary = g_temporary.load()) ::unlink(temporary);
+  engine::kill_running_tools();
+  say("sfcv: ");
+  say(why);
+  say("; stopped; verdict unknown\n");
+  ::_exit(kUnknown);
 }
 
 void release_temporary_file() {

@@ -39,6 +39,10 @@ class InterruptScope {
 /// `path` must stay valid and unchanged until release_temporary_file(); mkstemp may fill in its
 /// XXXXXX after the call (the handler reads it only when it runs).
 void guard_temporary_file(char* path);
+/// Ends the process at once with exit 3 (cli/run_guard.hpp's backstop): removes the temporary
+/// file being written, kills the outside tool running (engine/external), says `why` on
+/// standard error.
+[[noreturn]] void end_process_now(const char* why);
 void release_temporary_file();
 
 }  // namespace sfcv::cli

@@ -9,16 +9,17 @@
 
 namespace sfcv::cli {
 
-void add_limit_options(CLI::App& sub, LimitOptions& o, const std::string& what_stops,
-                       MemoryLimit memory) {
-  sub.add_option("--max-states", o.max_states, "Stop after N states (N > 0): " + what_stops);
-  sub.add_option(
-      "--timeout", o.timeout,
-      "Stop after a duration (seconds, or 500ms, 10s, 2m, 1h), whatever the phase: " + what_stops);
-  if (memory == MemoryLimit::Offered)
-    sub.add_option("--memory", o.memory,
-                   "Memory budget, e.g. 2G: the explicit graph, or the bdd engine's node table; "
-                   "past it answers become unknown");
+void add_limit_options(CLI::App& sub, LimitOptions& o, const std::string& what_stops) {
+  sub.add_option("--max-states", o.max_states,
+                 "Stop after N states (N > 0; the bdd engine: reached states): " + what_stops)
+      ->group("Limits (exit 3 when reached)");
+  sub.add_option("--timeout", o.timeout,
+                 "Stop after a duration (seconds, or 500ms, 10s, 2m, 1h), whatever the phase: " +
+                     what_stops)
+      ->group("Limits (exit 3 when reached)");
+  sub.add_option("--memory", o.memory,
+                 "Memory budget of the whole process, e.g. 2G (K, M, G): past it, " + what_stops)
+      ->group("Limits (exit 3 when reached)");
 }
 
 std::uint64_t parse_memory(const std::string& text) {

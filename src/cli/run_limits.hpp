@@ -19,11 +19,9 @@ struct LimitOptions {
   std::string memory;      ///< e.g. 2G, 512M, 64K; empty: none
 };
 
-/// Which limits a subcommand offers (rsg and query have no --memory).
-enum class MemoryLimit { Offered, NotOffered };
-
-void add_limit_options(CLI::App& sub, LimitOptions& options, const std::string& what_stops,
-                       MemoryLimit memory = MemoryLimit::Offered);
+/// The one group of limit options every subcommand offers (group "Limits" in its help); a
+/// subcommand runs under them through run_limited (cli/run_guard.hpp).
+void add_limit_options(CLI::App& sub, LimitOptions& options, const std::string& what_stops);
 
 /// The budget of a run starting now; throws UsageError for a bad value.
 model::Budget make_budget(const LimitOptions& options);

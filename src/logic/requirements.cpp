@@ -87,7 +87,18 @@ class Reader {
   void read_json() {
     json doc;
     try {
-      doc = json::parse(text_.begin(), text_.end());
+      // Bounded depth (docs/reliability.md): a document nested deeper than any requirement
+      // would be is refused before its tree (destroyed recursively) is built.
+      constexpr int kMaxDepth = 256;
+      bool too_deep = false;
+      doc = json::parse(text_.begin(), text_.end(),
+                        [&too_deep](int depth, json::parse_event_t, json&) {
+                          if (depth > kMaxDepth) too_deep = true;
+                          return !too_deep;
+                        });
+      if (too_deep)
+        fail(at_offset(0),
+             "the JSON is nested more than " + std::to_string(kMaxDepth) + " levels deep");
     } catch (const json::parse_error& e) {
       fail(at_offset(e.byte > 0 ? e.byte - 1 : 0), std::string("malformed JSON: ") + e.what());
     }

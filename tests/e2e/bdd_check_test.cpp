@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/generate.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -161,6 +162,23 @@ TEST(BddCheck, CorpusReachableStateCounts) {
                  " --pou PPU --ctl TRUE --checks none --quiet");
     EXPECT_EQ(r.exit_code, 2) << engine << r.out << r.err;
     EXPECT_NE(r.err.find("error"), std::string::npos);
+  }
+}
+
+TEST(BddCheck, MaxStatesBoundsTheReachedStates) {
+  // The bdd engine explores ring by ring; --max-states was read before each ring, so a run
+  // stopped with up to a whole ring more (4,096 states past --max-states 1000). A ring that
+  // would pass the bound is not kept: the states explored are at most the bound.
+  const auto chart = generate("parallel 16", ".st");
+  for (const char* bound : {"1000", "5000"}) {
+    const auto r = run_sfcv("check '" + chart + "' --engine bdd --max-states " +
+                            std::string(bound) + " --quiet --json");
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j["states"].is_number()) << r.out.substr(0, 500);
+    EXPECT_LE(j["states"].get<double>(), std::stod(bound)) << bound;
+    EXPECT_GT(j["states"].get<double>(), 0);
+    EXPECT_EQ(j["limit"], "states") << r.out.substr(0, 500);
   }
 }
 

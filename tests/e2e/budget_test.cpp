@@ -66,9 +66,13 @@ TEST(Budget, InvalidLimitValuesAreUsageErrors) {
     const auto check = run_sfcv("check " + pistons + " " + bad);
     EXPECT_EQ(check.exit_code, 2) << bad << "\n" << check.err;
     EXPECT_NE(check.err.find("bad --"), std::string::npos) << bad << "\n" << check.err;
-    if (bad.rfind("--memory", 0) == 0) continue;  // rsg and query have no --memory
-    EXPECT_EQ(run_sfcv("rsg " + pistons + " " + bad).exit_code, 2) << bad;
-    EXPECT_EQ(run_sfcv("query " + pistons + " Y0 " + bad).exit_code, 2) << bad;
+    // Every subcommand takes the same three limits (issue 52), checked alike.
+    for (const std::string& sub : {"rsg " + pistons, "query " + pistons + " Y0", "lint " + pistons,
+                                   "info " + pistons, "export " + pistons + " --to dot"}) {
+      const auto r = run_sfcv(sub + " " + bad);
+      EXPECT_EQ(r.exit_code, 2) << sub << " " << bad;
+      EXPECT_NE(r.err.find("bad --"), std::string::npos) << sub << " " << bad << "\n" << r.err;
+    }
   }
   // Valid values still work.
   EXPECT_EQ(run_sfcv("check " + pistons + " --timeout 60 --max-states 100000 --memory 1G --quiet")

@@ -182,6 +182,15 @@ class Run {
         break;
       }
       auto step = sys_.step(frontier_, reached_);
+      // --max-states bounds the reached set: a ring that would take it past the bound is not
+      // kept (it held up to 4,096 states more before), so the states explored are at most
+      // max_states (unless the initial states alone are more).
+      if (limits.max_states > 0 && !step.ring.is_false() &&
+          sys_.count_exact(step.reached).to_double() > static_cast<double>(limits.max_states)) {
+        report.complete = false;
+        report.limit = "states";
+        break;
+      }
       imaged_edges_ =
           imaged_edges_ && step.edges ? std::optional(*imaged_edges_ + *step.edges) : std::nullopt;
       const Bdd next = std::move(step.ring);

@@ -14,6 +14,33 @@
 
 namespace sfcv::engine {
 
+namespace {
+
+// The process groups of the tools running now (several engines may run one each under
+// --engine auto); 0 = a free slot. Lock-free, so that a signal handler may read them.
+constexpr std::size_t kToolSlots = 16;
+std::atomic<pid_t> g_tool_groups[kToolSlots];
+static_assert(std::atomic<pid_t>::is_always_lock_free);
+
+std::size_t register_tool(pid_t group) {
+  for (std::size_t i = 0; i < kToolSlots; ++i) {
+    pid_t expected = 0;
+    if (g_tool_groups[i].compare_exchange_strong(expected, group)) return i;
+  }
+  return kToolSlots;  // all taken: the tool still dies at its timeout and with sfcv
+}
+
+void release_tool(std::size_t slot) {
+  if (slot < kToolSlots) g_tool_groups[slot].store(0);
+}
+
+}  // namespace
+
+void kill_running_tools() noexcept {
+  for (auto& group : g_tool_groups)
+    if (const pid_t g = group.load(); g > 0) ::kill(-g, SIGKILL);
+}
+
 std::optional<std::string> find_on_path(const std::vector<std::string>& names) {
   const char* path = std::getenv("PATH");
   if (!path) return std::nullopt;
@@ -36,7 +63,7 @@ std::optional<std::string> find_on_path(const std::vector<std::string>& names) {
 }
 
 ToolRun run_tool(const std::vector<std::string>& argv, const std::string& working_dir,
-                 double timeout_seconds) {
+                 double timeout_seconds, const std::atomic<bool>* cancel) {
   if (argv.empty()) throw std::invalid_argument("run_tool: empty command");
   const auto log = std::filesystem::path(working_dir) / ".tool-output";
   const pid_t parent = ::getpid();
@@ -61,6 +88,9 @@ ToolRun run_tool(const std::vector<std::string>& argv, const std::string& workin
     ::execv(args[0], args.data());
     ::_exit(127);
   }
+  // The parent sets the group too, so that a kill right after fork reaches it.
+  ::setpgid(pid, pid);
+  const std::size_t slot = register_tool(pid);
   ToolRun run;
   const auto start = std::chrono::steady_clock::now();
   int status = 0;
@@ -69,7 +99,8 @@ ToolRun run_tool(const std::vector<std::string>& argv, const std::string& workin
     if (done == pid) break;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (timeout_seconds > 0 && elapsed > timeout_seconds) {
+    if ((timeout_seconds > 0 && elapsed > timeout_seconds) ||
+        (cancel && cancel->load(std::memory_order_relaxed))) {
       ::kill(-pid, SIGKILL);
       ::kill(pid, SIGKILL);
       ::waitpid(pid, &status, 0);
@@ -78,6 +109,9 @@ ToolRun run_tool(const std::vector<std::string>& argv, const std::string& workin
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  // The group may outlive its leader (a shell script's children): it ends with the tool.
+  ::kill(-pid, SIGKILL);
+  release_tool(slot);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   if (FILE* f = std::fopen(log.c_str(), "rb")) {
     char buf[4096];

@@ -232,8 +232,10 @@ class NusmvModelChecker final : public ModelChecker {
       std::ofstream f(dir.path() + "/sfcv.cmd");
       f << kNusmvCommands;
     }
+    // Under the run's deadline, and killed with its process group when the run is cancelled
+    // (the memory watchdog, a signal).
     const auto run = run_tool({nusmv_, "-source", "sfcv.cmd", "model.smv"}, dir.path(),
-                              task.limits.seconds_left());
+                              task.limits.seconds_left(), task.limits.cancel.get());
     const auto verdicts = parse_nusmv_output(run.output);
 
     logic::CheckReport report;
