@@ -35,6 +35,7 @@ std::uint64_t check_weight(StandardCheck c) {
     case StandardCheck::StoredActions:
     case StandardCheck::OutputConflicts:
     case StandardCheck::Conflicts:
+    case StandardCheck::OrderDependence:
       return 2;  // one pass over the reached states or edges
     case StandardCheck::GlobalDeadlock:
     case StandardCheck::InitialReturn:
