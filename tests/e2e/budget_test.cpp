@@ -281,7 +281,11 @@ TEST(Budget, MemoryHoldsInsideOneWideSituation) {
     const auto t = timed_run("check " + wide + " --engine explicit --memory 100M" + what +
                              " --trace none --quiet");
     EXPECT_EQ(t.run.exit_code, 3) << t.run.out << t.run.err;
-    EXPECT_NE(t.run.out.find("memory"), std::string::npos) << t.run.out;
+    // Named in the report, or, when a growth of the engine's tables passed 110 % of the budget
+    // before the engine read the cancel flag, by the guard's backstop on standard error
+    // (docs/reliability.md: the instant ceiling; seen once under a loaded ctest -j2).
+    EXPECT_NE((t.run.out + t.run.err).find("memory limit reached"), std::string::npos)
+        << t.run.out << t.run.err;
     EXPECT_EQ(t.run.out.find("holds"), std::string::npos) << t.run.out;
     EXPECT_LT(t.seconds, 60.0);
   }
