@@ -366,11 +366,28 @@ class StandardCheckRunner {
     return out;
   }
 
+  /// Whether the partial grafcet of `step` can be emptied within an evolution: it is enclosed
+  /// by a step (docs/semantics.md 2.12 c). A forced grafcet does not evolve while forced, so a
+  /// transition that fires in it did enter its target.
+  bool may_be_emptied(const StepRef& step) {
+    if (!task_.project) return true;
+    for (const auto& pou : task_.project->pous) {
+      if (!model::iequals(pou.name, step.pou)) continue;
+      for (const auto& chart : pou.charts)
+        for (const auto& x : chart.steps)
+          if (x.kind == model::StepKind::Enclosing)
+            for (const auto& name : x.enclosed)
+              if (model::iequals(name, step.chart)) return true;
+    }
+    return false;
+  }
+
   /// Grafcet steps never active in a stable situation but entered by a transition that fires
   /// (they are crossed during transient evolutions): index into steps_ -> the situations with
   /// an evolution entering the step. Empty for IEC 61131-3.
   std::map<std::size_t, Set> transient_steps() {
     std::map<std::size_t, Set> out;
+    entered_by_transition_.clear();
     if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
     const auto matched = chart_transitions();
     if (matched.empty()) return out;
@@ -385,7 +402,10 @@ class StandardCheckRunner {
           enters = enters || model::iequals(d, steps_[i].step);
         if (enters) entry = sp_.join(entry, sp_.fires(t));
       }
-      if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
+      if (!sp_.empty(entry)) {
+        out.emplace(i, std::move(entry));
+        entered_by_transition_.insert(i);
+      }
     }
     // A step entered with its enclosing step (docs/semantics.md 2.12 a) is crossed when the
     // enclosing step is entered: crossed itself, or entered by a transition that fires. To a
@@ -631,6 +651,29 @@ class StandardCheckRunner {
       r.message = std::to_string(missing) + " of " + std::to_string(steps_.size()) +
                   " steps not reached before the limit; " + limit_message();
       return;
+    }
+    // A step of an enclosed grafcet that a transition enters only during a transient evolution
+    // may be emptied in that same evolution (its enclosing step left, docs/semantics.md 2.12 c):
+    // "entered by a firing transition" does not show it active. Those steps are left open,
+    // never counted as reached (the SAT engines observe the evolution). A step activated with
+    // its enclosing step (2.12 a) is active in that micro-step: counted as before.
+    if (!missing) {
+      std::size_t open = 0;
+      std::string first;
+      for (std::size_t i = 0; i < steps_.size(); ++i)
+        if (!seen[i] && !at_start.count(i) && entered_by_transition_.count(i) &&
+            may_be_emptied(steps_[i]))
+          if (open++ == 0) first = logic::describe_step(steps_[i]);
+      if (open) {
+        r.verdict = Verdict::Unknown;
+        r.message = std::to_string(open) + " step" + (open == 1 ? "" : "s") + " (" + first +
+                    (open == 1 ? "" : ", ...") +
+                    ") of an enclosed grafcet entered only during transient "
+                    "evolutions, which this engine does not follow to their end (an enclosing "
+                    "step left in the same evolution empties its grafcet); the ic3 and kind "
+                    "engines decide it";
+        return;
+      }
     }
     std::string apart;
     if (!transient.empty())
@@ -1259,6 +1302,9 @@ class StandardCheckRunner {
   /// enclosure_entries(), once computed.
   std::vector<std::pair<std::size_t, std::vector<std::size_t>>> enclosure_entries_;
   bool enclosure_entries_done_ = false;
+  /// The steps of transient_steps() entered by a transition that fires (not only with their
+  /// enclosing step).
+  std::set<std::size_t> entered_by_transition_;
   bool bottoms_tried_ = false;
   std::optional<std::vector<Set>> bottoms_;  ///< bottom_components(), once tried
 };

@@ -197,8 +197,23 @@ TEST(GrafcetCrossedSteps, StepEnteredAsItsEnclosingStepEndsIsNeverActiveOnTheSat
   }
 }
 
-// Known wrong (docs/engines.md): the explicit and BDD engines count a step entered by a
-// transition that fires as crossed, and say "reachable holds" here. Enable once fixed.
+// The explicit and BDD engines counted a step entered by a transition that fires as crossed, and
+// said "reachable holds" here: a false "holds". They cannot see the end of the evolution, so a
+// step of an enclosed grafcet entered only transiently is left open: unknown, never holds.
+TEST(GrafcetCrossedSteps, StepEnteredAsItsEnclosingStepEndsIsNeverHeldReachable) {
+  const auto built = enclosed_entered_as_its_enclosing_step_ends();
+  ASSERT_TRUE(built.ts);
+  for (const auto& [engine, r] : every_engine(built, {logic::StandardCheck::Reachable})) {
+    if (engine == "bmc") continue;
+    SCOPED_TRACE(engine);
+    EXPECT_NE(r.results[0].verdict, logic::Verdict::Holds) << r.results[0].message;
+    if (engine == "explicit" || engine == "bdd") {
+      EXPECT_EQ(r.results[0].verdict, logic::Verdict::Unknown) << r.results[0].message;
+    }
+  }
+}
+
+// Enable once the explicit and BDD engines follow a transient evolution to its end.
 TEST(GrafcetCrossedSteps, DISABLED_StepEnteredAsItsEnclosingStepEndsIsNeverActiveEverywhere) {
   const auto built = enclosed_entered_as_its_enclosing_step_ends();
   ASSERT_TRUE(built.ts);
