@@ -32,9 +32,9 @@ END_PROGRAM
 ST
 sed 's/TO Done := full;/TO Done := full AND start;/' "$dir/old.st" >"$dir/new.st"
 "$sfcv" -q equiv "$dir/old.st" "$dir/new.st" --engine explicit --html "$out/equiv.html" >/dev/null || [ $? -eq 1 ]
-"$sfcv" query "$src/examples/pallet_transfer/pallet_transfer.g7" 'Act({10, 25})' --html "$out/query.html" >/dev/null
+"$sfcv" query "$src/examples/pallet_transfer/pallet_transfer.g7" 'Act({10, 25})' --html "$out/responsive-query.html" >/dev/null
 frames=""
-for f in responsive.html:390 responsive.html:800 responsive.html:1400 equiv.html:390 query.html:390; do
+for f in responsive.html:390 responsive.html:800 responsive.html:1400 equiv.html:390 responsive-query.html:390; do
   page=${f%:*}
   width=${f#*:}
   frames="$frames<iframe src=\"$page#trace=0&amp;test\" data-page=\"$page\" style=\"width:${width}px;height:900px;border:0\"></iframe>"
@@ -134,7 +134,7 @@ for f in parser.found:
     if m["plays"] != [i for i, _ in violated]:
         problems.append(f"{at}: summary links to traces {m['plays']} != {[i for i, _ in violated]}")
 for want in [("responsive.html", 390), ("responsive.html", 800), ("responsive.html", 1400),
-             ("equiv.html", 390), ("query.html", 390)]:
+             ("equiv.html", 390), ("responsive-query.html", 390)]:
     if want not in seen:
         problems.append(f"{want[0]} at {want[1]} px: no measures (the page's probe did not run)")
 for p in problems:
