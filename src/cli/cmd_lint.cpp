@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -10,6 +9,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/run_guard.hpp"
+#include "report/project_summary.hpp"
 #include "report/text_encoding.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -23,33 +23,6 @@ struct LintOptions {
   bool json = false;
   LimitOptions limits;
 };
-
-std::string_view severity_name(model::Severity s) {
-  switch (s) {
-    case model::Severity::Error:
-      return "error";
-    case model::Severity::Warning:
-      return "warning";
-    case model::Severity::Note:
-      break;
-  }
-  return "note";
-}
-
-nlohmann::ordered_json to_json(const model::Diagnostic& d) {
-  nlohmann::ordered_json j;
-  j["file"] = d.where.file;
-  j["line"] = d.where.line;
-  j["column"] = d.where.column;
-  j["element_path"] = d.where.element_path;
-  j["severity"] = severity_name(d.severity);
-  j["message"] = d.message;
-  return j;
-}
-
-std::string plural(std::size_t n, const char* word) {
-  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-}
 
 /// What the semantics refuses (a POU body or an action it does not model, an unknown name):
 /// lint's exit 0 must mean that `check` can model the file, so the system is built exactly as
@@ -98,13 +71,11 @@ int lint(const LintOptions& opts, const RunGuard& guard) {
   // An importer that fails without saying why still fails.
   if (!checked.project && errors == 0) ++errors;
   if (opts.json) {
-    auto list = nlohmann::ordered_json::array();
-    for (const auto& d : checked.diagnostics) list.push_back(to_json(d));
-    report::make_valid_utf8(list);  // names are bytes; the JSON is UTF-8
-    std::cout << list.dump(2) << "\n";
+    auto doc = report::diagnostics_json(checked.diagnostics, errors, warnings);
+    report::make_valid_utf8(doc);  // names are bytes; the JSON is UTF-8
+    std::cout << doc.dump(2) << "\n";
   } else {
-    for (const auto& d : checked.diagnostics) std::cout << d.str() << "\n";
-    std::cout << plural(errors, "error") << ", " << plural(warnings, "warning") << "\n";
+    report::print_diagnostics(checked.diagnostics, errors, warnings, std::cout);
   }
   if (errors) return kBadInput;  // errors found are errors, whatever was left unchecked
   if (stopped) return report_limit(*stopped);
@@ -120,8 +91,8 @@ void add_lint_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
   sub->add_flag("--json", opts->json,
-                "Print the diagnostics as a JSON array of {file, line, column, element_path, "
-                "severity, message}");
+                "Print the diagnostics as JSON: {schema_version, diagnostics: [{file, line, "
+                "column, element_path, severity, message}], errors, warnings}");
   add_limit_options(*sub, opts->limits, "what is not checked is unknown");
   sub->callback([opts, &selected] {
     selected = [opts] {

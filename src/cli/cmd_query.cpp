@@ -24,6 +24,7 @@
 #include "logic/query_compile.hpp"
 #include "report/check_html.hpp"
 #include "report/query_render.hpp"
+#include "report/schema_versions.hpp"
 #include "report/text_encoding.hpp"
 
 #ifndef SFCV_SHARE_DIR
@@ -170,6 +171,7 @@ int run_query(const QueryOptions& o, const RunGuard& guard) {
   nlohmann::json jout;
   const bool want_json = o.json || !o.html.empty();  // --html renders the JSON answers
   if (want_json) {
+    jout["schema_version"] = report::kSummaryJsonSchemaVersion;
     jout["model"] = o.model;
     jout["semantics"] = kind;
     jout["graph"] = pr.graph_json(graph);

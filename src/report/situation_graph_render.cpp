@@ -6,6 +6,7 @@
 
 #include "engine/bdd/condition_simplifier.hpp"
 #include "report/markup.hpp"
+#include "report/schema_versions.hpp"
 #include "report/text_encoding.hpp"
 
 namespace sfcv::report {
@@ -143,6 +144,7 @@ nlohmann::json situation_graph_json(const engine::ReachableSituationGraph& g,
   const auto& inputs = ts.inputs();
   auto state = [&g](std::uint32_t s) { return g.states().at(s); };
   nlohmann::json j;
+  j["schema_version"] = kSummaryJsonSchemaVersion;
   j["semantics"] = options.semantics;
   if (options.semantics == "grafcet") j["single_input_change"] = options.single_input_change;
   j["complete"] = g.complete();

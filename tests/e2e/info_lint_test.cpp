@@ -193,12 +193,16 @@ TEST(Lint, ErrorsExitTwoWithEveryDiagnosticLocated) {
   EXPECT_NE(r.out.find("3 errors, 2 warnings\n"), std::string::npos) << r.out;
 }
 
-TEST(Lint, JsonIsAnArrayOfLocatedDiagnostics) {
+TEST(Lint, JsonListsLocatedDiagnosticsUnderItsSchemaVersion) {
   const std::string path = write_temp(
       program(kValidLoop + "  TRANSITION FROM S1 TO Nowhere := go; END_TRANSITION\n"), ".st");
   const auto r = run_sfcv("lint --json " + q(path));
   EXPECT_EQ(r.exit_code, 2);
-  const auto j = nlohmann::json::parse(r.out);
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["schema_version"], "1.0");
+  EXPECT_EQ(doc["errors"], 1);
+  EXPECT_EQ(doc["warnings"], 0);
+  const auto& j = doc["diagnostics"];
   ASSERT_TRUE(j.is_array());
   ASSERT_EQ(j.size(), 1u) << r.out;
   EXPECT_EQ(j[0]["file"], path);
@@ -209,7 +213,9 @@ TEST(Lint, JsonIsAnArrayOfLocatedDiagnostics) {
 
   const auto clean = run_sfcv("lint --json " + q(source_path(kPump)));
   EXPECT_EQ(clean.exit_code, 0);
-  EXPECT_EQ(nlohmann::json::parse(clean.out), nlohmann::json::array());
+  const auto clean_doc = nlohmann::json::parse(clean.out);
+  EXPECT_EQ(clean_doc["diagnostics"], nlohmann::json::array());
+  EXPECT_EQ(clean_doc["errors"], 0);
 }
 
 TEST(Lint, MissingFileExitsTwo) {
@@ -239,7 +245,7 @@ TEST(LintCorpus, IllFormedDelayGivesOneLocatedErrorPerDefect) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   const auto j = nlohmann::json::parse(r.out);
   std::vector<std::pair<int, std::string>> errors, warnings;
-  for (const auto& d : j)
+  for (const auto& d : j["diagnostics"])
     (d["severity"] == "error" ? errors : warnings)
         .emplace_back(d["line"].get<int>(), d["message"].get<std::string>());
   const std::vector<std::pair<int, std::string>> expected_errors{
@@ -256,7 +262,7 @@ TEST(LintCorpus, IllFormedDelayGivesOneLocatedErrorPerDefect) {
   ASSERT_FALSE(warnings.empty()) << r.out;
   EXPECT_EQ(warnings[0].first, 24);
   EXPECT_NE(warnings[0].second.find("step 'I' is unreachable"), std::string::npos);
-  for (const auto& d : j) EXPECT_EQ(d["column"], 5) << d.dump();
+  for (const auto& d : j["diagnostics"]) EXPECT_EQ(d["column"], 5) << d.dump();
 
   const auto text = run_sfcv("lint " + q(path));
   EXPECT_EQ(text.exit_code, 2);
