@@ -15,6 +15,7 @@ PACKAGES=(
   clang-format  # scripts/check-format.sh (ctest clang_format, .ci/run)
   valgrind  # ctest valgrind_grafcet_bdd
   parallel python3-yaml  # ctest distributed_examples: GNU parallel, the CI examples' YAML
+  tmux  # ctest progress_tmux: the progress line in an 80-column terminal
 )
 
 missing=()
