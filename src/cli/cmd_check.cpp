@@ -34,8 +34,7 @@
 #include "engine/bdd/bdd_model_checker.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
-#include "engine/portfolio/portfolio_model_checker.hpp"
-#include "engine/sat/sat_model_checker.hpp"
+#include "engine/portfolio/engine_by_name.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/requirements.hpp"
 #include "logic/vacuity.hpp"
@@ -123,19 +122,12 @@ engine::ModelCheckerPtr choose_engine(const std::string& name, const logic::Chec
     if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
     return checker;
   }
-  engine::ModelCheckerPtr checker;
-  if (name == "bmc" || name == "kind" || name == "ic3") {
-    engine::SatEngineOptions sat;
-    sat.algorithm = name == "bmc"    ? engine::SatAlgorithm::Bmc
-                    : name == "kind" ? engine::SatAlgorithm::KInduction
-                                     : engine::SatAlgorithm::Ic3;
-    sat.max_depth = depth;
-    sat.min_depth = min_depth;
-    checker = engine::make_sat_model_checker(sat);
-  } else {
-    checker = name == "bdd" ? engine::make_bdd_model_checker(bdd_options)
-                            : engine::make_explicit_model_checker(explicit_options);
-  }
+  engine::EngineSelection selection;
+  selection.bdd = bdd_options;
+  selection.explicit_engine = explicit_options;
+  selection.max_depth = depth;
+  selection.min_depth = min_depth;
+  auto checker = engine::make_engine_by_name(name, selection);
   if (!checker->can_handle(task, &why)) throw InputError("sfcv check: " + why);
   return checker;
 }
@@ -161,15 +153,15 @@ logic::CheckReport check_auto(const logic::CheckTask& task,
                               const engine::BddEngineOptions& bdd_options,
                               const engine::ExplicitEngineOptions& explicit_options,
                               ProgressLine& progress) {
-  engine::PortfolioOptions options;
-  options.bdd = bdd_options;
-  options.explicit_engine = explicit_options;
-  options.note = [&progress](const std::string& text) {
+  engine::EngineSelection selection;
+  selection.bdd = bdd_options;
+  selection.explicit_engine = explicit_options;
+  selection.note = [&progress](const std::string& text) {
     if (global_options().quiet) return;
     progress.clear();
     std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
-  return engine::make_portfolio_model_checker(options)->check(task);
+  return engine::make_engine_by_name("auto", selection)->check(task);
 }
 
 /// The files `sfcv check` writes, with their options.

@@ -18,10 +18,7 @@
 #include "cli/output_file.hpp"
 #include "cli/run_guard.hpp"
 #include "cli/run_limits.hpp"
-#include "engine/bdd/bdd_model_checker.hpp"
-#include "engine/explicit/explicit_model_checker.hpp"
-#include "engine/portfolio/portfolio_model_checker.hpp"
-#include "engine/sat/sat_model_checker.hpp"
+#include "engine/portfolio/engine_by_name.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/errors.hpp"
 #include "report/equivalence_render.hpp"
@@ -100,21 +97,12 @@ std::string spec_text(const semantics::EquivalenceProduct& p, bool per_signal) {
 }
 
 engine::ModelCheckerPtr make_engine(const std::string& name, std::uint32_t depth) {
-  if (name == "bmc" || name == "kind" || name == "ic3") {
-    engine::SatEngineOptions sat;
-    sat.algorithm = name == "bmc"    ? engine::SatAlgorithm::Bmc
-                    : name == "kind" ? engine::SatAlgorithm::KInduction
-                                     : engine::SatAlgorithm::Ic3;
-    sat.max_depth = depth;
-    return engine::make_sat_model_checker(sat);
-  }
-  if (name == "bdd") return engine::make_bdd_model_checker({});
-  if (name == "explicit") return engine::make_explicit_model_checker({});
-  engine::PortfolioOptions options;
-  options.note = [](const std::string& text) {
+  engine::EngineSelection selection;
+  selection.max_depth = depth;
+  selection.note = [](const std::string& text) {
     if (!global_options().quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
-  return engine::make_portfolio_model_checker(options);
+  return engine::make_engine_by_name(name, selection);
 }
 
 /// The counterexample is the shortest input sequence: BMC up to the length found (which

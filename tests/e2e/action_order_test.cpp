@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "support/press_chart.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
@@ -19,26 +20,10 @@ std::string q(const std::string& s) {
   return "'" + s + "'";
 }
 
-// Start sets the motor, Stop resets it; in Halt both run, and Halt returns to Idle at once.
-constexpr const char* kPress = R"(
-PROGRAM Press
-  VAR_INPUT go : BOOL; stop : BOOL; END_VAR
-  VAR_OUTPUT motor : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Run: Start(N); END_STEP
-  STEP Halt: Start(N); Stop(N); END_STEP
-  TRANSITION FROM Idle TO Run := go; END_TRANSITION
-  TRANSITION FROM Run TO Halt := stop; END_TRANSITION
-  TRANSITION FROM Halt TO Idle := TRUE; END_TRANSITION
-  ACTION Start: motor := TRUE; END_ACTION
-  ACTION Stop: motor := FALSE; END_ACTION
-END_PROGRAM
-)";
-
 const std::string kProperty = " --checks none --ctl 'AG (Idle -> !motor)' --quiet";
 
 TEST(ActionOrder, SetAndResetOfOneOutputDependOnTheOrder) {
-  const auto chart = write_temp(kPress, ".st");
+  const auto chart = write_temp(kPressChart, ".st");
   // Declaration order: Stop runs last in Halt, the motor is off when Idle is entered.
   auto r = run_sfcv("check " + q(chart) + kProperty);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -70,7 +55,7 @@ TEST(ActionOrder, SetAndResetOfOneOutputDependOnTheOrder) {
 }
 
 TEST(ActionOrder, OrderFileErrorsAreLocated) {
-  const auto chart = write_temp(kPress, ".st");
+  const auto chart = write_temp(kPressChart, ".st");
   struct Case {
     std::string text, where, what;
   };
@@ -121,7 +106,7 @@ TEST(ActionOrder, TheChemicalPlantHasTheSameVerdictsUnderEveryOrder) {
 }
 
 TEST(ActionOrder, EverySubcommandThatBuildsTheSystemTakesTheOption) {
-  const auto chart = write_temp(kPress, ".st");
+  const auto chart = write_temp(kPressChart, ".st");
   // export: the choice is an input of the NuSMV, Promela and AIGER models.
   for (const std::string to : {"nusmv", "promela", "aag"}) {
     SCOPED_TRACE(to);

@@ -6,28 +6,14 @@
 
 #include <string>
 
+#include "support/press_chart.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::test {
 namespace {
 
-constexpr const char* kPress = R"(
-PROGRAM Press
-  VAR_INPUT go : BOOL; stop : BOOL; END_VAR
-  VAR_OUTPUT motor : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Run: Start(N); END_STEP
-  STEP Halt: Start(N); Stop(N); END_STEP
-  TRANSITION FROM Idle TO Run := go; END_TRANSITION
-  TRANSITION FROM Run TO Halt := stop; END_TRANSITION
-  TRANSITION FROM Halt TO Idle := TRUE; END_TRANSITION
-  ACTION Start: motor := TRUE; END_ACTION
-  ACTION Stop: motor := FALSE; END_ACTION
-END_PROGRAM
-)";
-
 TEST(OrderDependenceCli, ExitCodesAndTheTwoOrders) {
-  const auto chart = "'" + write_temp(kPress, ".st") + "'";
+  const auto chart = "'" + write_temp(kPressChart, ".st") + "'";
   const std::string checks = " --checks order-dependence --quiet";
   for (const std::string engine : {"explicit", "bdd", "auto"}) {
     SCOPED_TRACE(engine);

@@ -23,6 +23,7 @@
 #include "semantics/simulate.hpp"
 #include "support/ctl_task.hpp"
 #include "support/nusmv_path.hpp"
+#include "support/press_chart.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
@@ -157,22 +158,6 @@ TEST(ActionOrderAgreement, RandomChartsWithSharedOutputsUnderThreeOrders) {
   EXPECT_GT(tally.differs_from_declaration, 1) << tally.differs_from_declaration;
 }
 
-// One output set by Start and reset by Stop, both active in Halt; Halt returns to Idle.
-constexpr const char* kPress = R"(
-PROGRAM Press
-  VAR_INPUT go : BOOL; stop : BOOL; END_VAR
-  VAR_OUTPUT motor : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Run: Start(N); END_STEP
-  STEP Halt: Start(N); Stop(N); END_STEP
-  TRANSITION FROM Idle TO Run := go; END_TRANSITION
-  TRANSITION FROM Run TO Halt := stop; END_TRANSITION
-  TRANSITION FROM Halt TO Idle := TRUE; END_TRANSITION
-  ACTION Start: motor := TRUE; END_ACTION
-  ACTION Stop: motor := FALSE; END_ACTION
-END_PROGRAM
-)";
-
 // The unordered set/reset chart (one Spin run: compiling Spin's verifier takes a second).
 TEST(ActionOrderAgreement, SpinAgreesOnThePromelaExportOfTheUnorderedChart) {
   const auto spin = find_spin();
@@ -181,7 +166,7 @@ TEST(ActionOrderAgreement, SpinAgreesOnThePromelaExportOfTheUnorderedChart) {
                "ActionOrderAgreement.NusmvAgreesUnderEveryOrder when SFCV_NUSMV is set\n";
   semantics::Iec61131Options o;
   o.action_order = semantics::ActionOrder::Unordered;
-  const auto s = load(kPress, o);
+  const auto s = load(test::kPressChart, o);
   ASSERT_TRUE(s.ts);
   auto task = test::task_for(s.project, *s.ts, {"AG (Idle -> !motor)"}, {});
   const auto report = make_explicit_model_checker()->check(task);
@@ -209,7 +194,7 @@ TEST(ActionOrderAgreement, NusmvAgreesUnderEveryOrder) {
   };
   const std::vector<Case> cases = {
       {"press",
-       kPress,
+       test::kPressChart,
        {"AG (Idle -> !motor)", "AG (Halt -> motor)", "AG EF Idle", "EF (Idle & motor)",
         "AG (Run -> motor)", "AG (Halt -> AF Idle)"},
        {{"Stop", "Start", {}}}},

@@ -21,6 +21,7 @@
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/hostile_names.hpp"
+#include "support/loop_limit_chart.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
@@ -261,27 +262,7 @@ TEST(Confirmation, GeneratedChartsAgreeWithSpinAndAbc) {
 // whose trace ends in the flag (read back as unknown), and the run before that cycle replays.
 TEST(Confirmation, ALoopLimitCycleIsNeverProvedSafe) {
   REQUIRE_TOOLS();
-  const auto c = check_text(R"(
-PROGRAM Chart
-  VAR_GLOBAL bad : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Done: END_STEP
-  TRANSITION FROM Idle TO Done := bad; END_TRANSITION
-END_PROGRAM
-PROGRAM Loop
-  VAR_INPUT go : BOOL; END_VAR
-  VAR_EXTERNAL bad : BOOL; END_VAR
-  VAR n : INT; END_VAR
-  n := 0;
-  WHILE go AND n < 2000 DO
-    n := n + 1;
-  END_WHILE;
-  IF n >= 2000 THEN
-    bad := TRUE;
-  END_IF;
-END_PROGRAM
-)",
-                            {"AG !bad"});
+  const auto c = check_text(test::kLoopLimitChart, {"AG !bad"});
   ASSERT_TRUE(c);
   for (const auto& r : c->report.results) ASSERT_EQ(r.verdict, logic::Verdict::Unknown) << r.name;
   ExportRequest request;

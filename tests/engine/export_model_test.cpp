@@ -13,6 +13,7 @@
 #include "logic/check_inputs.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
+#include "support/loop_limit_chart.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::engine {
@@ -173,26 +174,7 @@ TEST(ExportModel, RefusesGrafcet) {
 // Issue 53: a cycle whose ST loop meets sfcv's bound (1000 iterations) has no successor in
 // sfcv, which answers unknown; the export once cut it too, so an outside tool proved `AG !bad`
 // here although bad follows that cycle (the loop ends after 2000 iterations on a PLC).
-const char* kLoopChart = R"(
-PROGRAM Chart
-  VAR_GLOBAL bad : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Done: END_STEP
-  TRANSITION FROM Idle TO Done := bad; END_TRANSITION
-END_PROGRAM
-PROGRAM Loop
-  VAR_INPUT go : BOOL; END_VAR
-  VAR_EXTERNAL bad : BOOL; END_VAR
-  VAR n : INT; END_VAR
-  n := 0;
-  WHILE go AND n < 2000 DO
-    n := n + 1;
-  END_WHILE;
-  IF n >= 2000 THEN
-    bad := TRUE;
-  END_IF;
-END_PROGRAM
-)";
+const char* const kLoopChart = test::kLoopLimitChart;
 
 TEST(ExportModel, ALoopLimitCycleSetsALatchWhereEveryPropertyFails) {
   auto s = make(kLoopChart, {"AG !bad", "AG EF !bad"});

@@ -14,6 +14,7 @@
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
 #include "support/ctl_task.hpp"
+#include "support/press_chart.hpp"
 
 namespace sfcv::engine {
 namespace {
@@ -44,22 +45,6 @@ logic::CheckTask checks_task(const Setup& s) {
   task.checks = {StandardCheck::OrderDependence, StandardCheck::OutputConflicts};
   return task;
 }
-
-// Start sets the motor, Stop resets it; both run in Halt: the order decides the motor.
-constexpr const char* kPress = R"(
-PROGRAM Press
-  VAR_INPUT go : BOOL; stop : BOOL; END_VAR
-  VAR_OUTPUT motor : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Run: Start(N); END_STEP
-  STEP Halt: Start(N); Stop(N); END_STEP
-  TRANSITION FROM Idle TO Run := go; END_TRANSITION
-  TRANSITION FROM Run TO Halt := stop; END_TRANSITION
-  TRANSITION FROM Halt TO Idle := TRUE; END_TRANSITION
-  ACTION Start: motor := TRUE; END_ACTION
-  ACTION Stop: motor := FALSE; END_ACTION
-END_PROGRAM
-)";
 
 // Two latches of one lamp, both active in Watch: `lamp OR go` then `lamp OR stop` is the same
 // as the other way round. Clear (in Reset) resets it alone.
@@ -97,7 +82,7 @@ TEST(OrderDependence, WritersThatCommuteHoldWhileOutputConflictsWarns) {
 }
 
 TEST(OrderDependence, SetAndResetDependOnTheOrderAndTheTraceShowsBothOrders) {
-  const auto s = load(kPress, semantics::ActionOrder::Unordered);
+  const auto s = load(test::kPressChart, semantics::ActionOrder::Unordered);
   const auto task = checks_task(s);
   for (const bool bdd : {false, true}) {
     SCOPED_TRACE(bdd ? "bdd" : "explicit");
@@ -136,7 +121,7 @@ TEST(OrderDependence, SetAndResetDependOnTheOrderAndTheTraceShowsBothOrders) {
 
 TEST(OrderDependence, NotApplicableUnderATotalOrder) {
   for (auto order : {semantics::ActionOrder::Declaration, semantics::ActionOrder::Alphabetical}) {
-    const auto s = load(kPress, order);
+    const auto s = load(test::kPressChart, order);
     const auto report = make_explicit_model_checker()->check(checks_task(s));
     EXPECT_EQ(report.results.at(0).verdict, Verdict::NotApplicable);
   }

@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sfcv::test {
@@ -116,6 +117,25 @@ inline void expect_on_every_engine(const std::string& file, const std::vector<Ve
       const auto r = run_sfcv(check_command(file, engine, v.options));
       EXPECT_EQ(r.exit_code, v.exit_code) << v.options << "\n" << r.out << r.err;
     }
+  }
+}
+
+/// Each CTL property with its verdict word ("holds", "violated"), read from its own line of one
+/// `sfcv check` run of `file` on `engine` (one run for all: the vendor-format tests compare a
+/// native file with its twin and stay fast under sanitizers). Some verdict is violated: exit 1.
+inline void expect_ctl_verdicts_in_one_run(
+    const std::string& file, const std::string& engine,
+    const std::vector<std::pair<std::string, const char*>>& verdicts) {
+  SCOPED_TRACE(file + " " + engine);
+  std::string options = "--checks none";
+  for (const auto& [ctl, verdict] : verdicts) options += " --ctl '" + ctl + "'";
+  const auto r = run_sfcv(check_command(file, engine, options));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  for (const auto& [ctl, verdict] : verdicts) {
+    const auto at = r.out.find(ctl + " ");
+    ASSERT_NE(at, std::string::npos) << ctl << "\n" << r.out;
+    const auto line = r.out.substr(at, r.out.find('\n', at) - at);
+    EXPECT_NE(line.find(verdict), std::string::npos) << line;
   }
 }
 
