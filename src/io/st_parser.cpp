@@ -42,17 +42,13 @@ std::string upper(std::string_view s) {
   return model::to_upper(s);
 }
 
-// A flat n-ary node for associative operators, so that `a AND b AND c` and `(a AND b) AND c`
-// give one model and printing then re-parsing is the identity.
-ExprPtr nary(ExprKind kind, ExprPtr lhs, ExprPtr rhs, const model::SourceLocation& where) {
-  std::vector<ExprPtr> args;
-  for (auto* side : {&lhs, &rhs}) {
-    if ((*side)->kind == kind)
-      args.insert(args.end(), (*side)->args.begin(), (*side)->args.end());
-    else
-      args.push_back(*side);
-  }
-  return model::make_nary(kind, std::move(args), where);
+// The operands of an associative operator's chain, flattened, so that `a AND b AND c` and
+// `(a AND b) AND c` give one model and printing then re-parsing is the identity.
+void append_flat(std::vector<ExprPtr>& args, ExprKind kind, ExprPtr e) {
+  if (e->kind == kind)
+    args.insert(args.end(), e->args.begin(), e->args.end());
+  else
+    args.push_back(std::move(e));
 }
 
 }  // namespace
@@ -128,31 +124,53 @@ ExprPtr Parser::expression() {
   return or_expr();
 }
 
+// A chain `a OR b OR c` is one node, its operands collected first and the node made once (a
+// node rebuilt at each operator copied the operands so far: a 100,000-term AND took 110 s of
+// CPU). The node is located at the last operator.
 ExprPtr Parser::or_expr() {
-  ExprPtr e = xor_expr();
+  ExprPtr first = xor_expr();
+  if (!at_word("OR")) return first;
+  std::vector<ExprPtr> args;
+  append_flat(args, ExprKind::Or, std::move(first));
+  const Token* op = nullptr;
   while (at_word("OR")) {
-    const Token& op = next();
-    e = nary(ExprKind::Or, e, xor_expr(), where(op));
+    op = &next();
+    append_flat(args, ExprKind::Or, xor_expr());
   }
-  return e;
+  return model::make_nary(ExprKind::Or, std::move(args), where(*op));
 }
 
 ExprPtr Parser::xor_expr() {
-  ExprPtr e = and_expr();
+  ExprPtr first = and_expr();
+  if (!at_word("XOR")) return first;
+  std::vector<ExprPtr> args;
+  append_flat(args, ExprKind::Xor, std::move(first));
+  const Token* op = nullptr;
   while (at_word("XOR")) {
-    const Token& op = next();
-    e = nary(ExprKind::Xor, e, and_expr(), where(op));
+    op = &next();
+    append_flat(args, ExprKind::Xor, and_expr());
   }
-  return e;
+  return model::make_nary(ExprKind::Xor, std::move(args), where(*op));
 }
 
 ExprPtr Parser::and_expr() {
-  ExprPtr e = eq_expr();
-  while (at_word("AND") || at(TokenKind::Ampersand)) {
-    const Token& op = next();
-    e = bounded(nary(ExprKind::And, e, eq_expr(), where(op)), op);
+  ExprPtr first = eq_expr();
+  auto at_and = [this] { return at_word("AND") || at(TokenKind::Ampersand); };
+  if (!at_and()) return first;
+  std::vector<ExprPtr> args;
+  append_flat(args, ExprKind::And, std::move(first));
+  std::uint32_t height = 0;  // of the operands so far: the node is one level above them
+  for (const auto& a : args) height = std::max(height, a->height);
+  const Token* op = nullptr;
+  while (at_and()) {
+    op = &next();
+    const auto before = args.size();
+    append_flat(args, ExprKind::And, eq_expr());
+    for (auto i = before; i < args.size(); ++i) height = std::max(height, args[i]->height);
+    if (height + 1 > static_cast<std::uint32_t>(model::kMaxNesting))
+      fail(*op, "expression nested deeper than " + std::to_string(model::kMaxNesting) + " levels");
   }
-  return e;
+  return model::make_nary(ExprKind::And, std::move(args), where(*op));
 }
 
 ExprPtr Parser::eq_expr() {

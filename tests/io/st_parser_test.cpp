@@ -83,6 +83,24 @@ TEST(StExpression, AssociativeOperatorsAreFlat) {
   EXPECT_FALSE(model::equal(expr("(a OR b) AND c"), expr("a OR b AND c")));
 }
 
+// A chain is one node located at its last operator, however long (issue 52: a node rebuilt at
+// each operator copied the operands so far, and a 100,000-term AND took 110 s of CPU to parse).
+TEST(StExpression, ALongChainIsOneNodeAtItsLastOperator) {
+  std::string text = "a";
+  for (int i = 1; i < 100000; ++i) text += i % 3 == 0 ? " AND (b AND c)" : " AND a";
+  const auto e = expr(text);
+  ASSERT_EQ(e->kind, ExprKind::And);
+  EXPECT_EQ(e->args.size(), 100000u + 33333u);
+  EXPECT_EQ(e->height, 2u);
+  EXPECT_EQ(e->where.column,
+            static_cast<int>(text.rfind(" AND (")) + 2);  // the last term is (b AND c)
+  const auto x = expr("a XOR b XOR (c XOR d) OR e OR f");
+  ASSERT_EQ(x->kind, ExprKind::Or);
+  ASSERT_EQ(x->args.size(), 3u);
+  EXPECT_EQ(x->args[0]->kind, ExprKind::Xor);
+  EXPECT_EQ(x->args[0]->args.size(), 4u);
+}
+
 TEST(StExpression, Literals) {
   EXPECT_EQ(expr("16#FF")->value, 255);
   EXPECT_EQ(expr("2#1010")->value, 10);
