@@ -297,6 +297,18 @@ TEST(SfcActionUnits, ANestedChartOfTheBodyCalledByNameIsRefused) {
                        "which step 'Feed' of the SFC body of Feeder runs as its nested chart"),
             std::string::npos)
       << r.err;
+  // From inside the block: an ST action of the body calling `ACT_Run();`.
+  auto inside = feeder +
+                "  ACTION Kick: ACT_Run(); END_ACTION\nEND_FUNCTION_BLOCK\nPROGRAM Main\n"
+                "  VAR f : Feeder; END_VAR\n  f();\nEND_PROGRAM\n";
+  inside.replace(inside.find("INITIAL_STEP Idle: END_STEP"), 27,
+                 "INITIAL_STEP Idle: Kick; END_STEP");
+  r = run_sfcv("check " + write_temp(inside, ".st") + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":9:16: error: call of action 'ACT_Run' of Feeder: step 'Feed' of the SFC "
+                       "body of Feeder runs it as its nested chart"),
+            std::string::npos)
+      << r.err;
 }
 
 // A unit whose steps call, through another unit and an ST action, the unit itself would run
