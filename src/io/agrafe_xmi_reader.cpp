@@ -472,7 +472,7 @@ class Reader {
     for (auto s : pg.children("synchronizations")) syncs.insert(s);
     std::map<pugi::xml_node, int> transitions;
     std::unordered_set<std::string> transition_ids;
-    for (const auto& other : c.transitions) transition_ids.insert(other.name);
+    for (const auto& other : c.transitions) transition_ids.insert(model::to_upper(other.name));
     for (auto t : pg.children("transitions")) {
       poll_.tick_or_throw("reading the model");
       model::Transition tr;
@@ -484,9 +484,17 @@ class Reader {
       ExprPtr guard =
           t.child("term") ? condition(t.child("term")) : model::make_bool(true, tr.where);
       tr.guard = timed(t, guard, {});
-      if (!transition_ids.insert(tr.name).second)
+      if (!transition_ids.insert(model::to_upper(tr.name)).second) {
+        // AGRAFE's own test inputs (conflictingActions9) copy a transition with its id. Arcs
+        // name transitions by position, so the two are distinct: the copy gets its own name.
+        std::string renamed = tr.name + "_2";
+        for (int k = 3; !transition_ids.insert(model::to_upper(renamed)).second; ++k)
+          renamed = tr.name + "_" + std::to_string(k);
         warn(t, model::Severity::Warning,
-             "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name + "'");
+             "transition id '" + tr.name + "' is used twice in partial grafcet '" + c.name +
+                 "': this one is named '" + renamed + "'");
+        tr.name = renamed;
+      }
       transitions[t] = static_cast<int>(c.transitions.size());
       c.transitions.push_back(std::move(tr));
     }
@@ -546,7 +554,7 @@ class Reader {
         // the only transition such a bar can stand for.
         model::Transition tr;
         tr.name = "sync" + std::to_string(sync_index);
-        while (!transition_ids.insert(tr.name).second) tr.name += "_";
+        while (!transition_ids.insert(model::to_upper(tr.name)).second) tr.name += "_";
         tr.where = where(s);
         tr.order = static_cast<int>(c.transitions.size());
         tr.guard = model::make_bool(true, tr.where);

@@ -181,6 +181,9 @@ ExprPtr Network::edge_of(pugi::xml_node node, const std::string& edge, ExprPtr v
                 "unsupported: " + std::string(local_name(node)) + " with edge '" + edge + "'");
   const std::string name = "SFCV_EDGE_" + (edge_prefix_.empty() ? "" : edge_prefix_ + "_") +
                            node.attribute("localId").value();
+  // A contact read by several outputs is one element, evaluated once per cycle: the later
+  // statements read the Q of the first one's call (a second R_TRIG would also clash by name).
+  if (!edges_.insert(name).second) return model::make_member(name, "Q", ctx_.where(node));
   model::Variable v;
   v.name = name;
   v.direction = model::VarDirection::Local;
@@ -735,6 +738,14 @@ std::optional<model::StmtList> Network::statements() {
   std::vector<pugi::xml_node> outputs;
   for (auto n : element_children(container_)) {
     const auto kind = local_name(n);
+    if (kind == "rung") {
+      // ESBMC's LD benchmarks list contacts and coils inside <rung>: no TC6 element, and
+      // skipping it would leave an empty body (every invariant on its coils would "hold").
+      fail(n,
+           "unsupported: <rung> (ESBMC's LD rung shorthand) is not a PLCopen TC6 element: "
+           "TC6 LD wires contacts, coils and blocks by localId and connectionPointIn");
+      return std::nullopt;
+    }
     if (!is_output_element(kind)) continue;
     const auto cpi = child(n, "connectionPointIn");
     if (!cpi || !child(cpi, "connection")) continue;

@@ -113,6 +113,7 @@ class Network {
   model::ExprPtr enable_;
   model::StmtList calls_;
   std::vector<model::Variable> edge_instances_;
+  std::set<std::string> edges_;  ///< edge instances already called (one per element)
   std::string edge_prefix_;
   std::map<std::string, model::Type> declared_types_;  ///< upper-case name -> type
   std::map<std::string, int> fan_out_;                 ///< localId -> connections reading it

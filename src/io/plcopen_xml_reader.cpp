@@ -654,6 +654,12 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
 
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
+  if (const auto loose = child(root, "pous"))
+    // ESBMC's LD benchmarks (`.ld`) put <pous> straight under <project>; TC6 has them in
+    // <types>. Read, they would be skipped and the file found empty.
+    ctx.error(loose,
+              "unsupported: <pous> directly under <project> (the layout of ESBMC's LD "
+              "benchmarks; PLCopen TC6 puts POUs in <types><pous>): not read");
   std::set<std::string> user_fbs;
   for (auto p : pous) {
     const std::string_view kind = p.attribute("pouType").value();

@@ -165,11 +165,9 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         }
         if (si != sc.owner && refuse_in_out_action(si, s)) break;
         if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
-          error(s.where, "call of action '" + s.target + "': " +
-                             (act->body_unsupported
-                                  ? std::string("its body is not modelled")
-                                  : std::string("calling an SFC action of an instance (one step "
-                                                "of its chart per call) is not modelled")));
+          error(s.where, act->body_unsupported
+                             ? "call of action '" + s.target + "': its body is not modelled"
+                             : sfc_action_call_error(*scopes[si].pou, *act, s.target));
           break;
         }
         const auto key = scopes[si].name + "." + model::to_upper(act->name);
@@ -200,10 +198,10 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         // allows calling an action of the same POU): an IF TRUE around them.
         out.op = SOp::If;
         if (act->kind != model::ActionBodyKind::Statements || act->body_unsupported) {
-          error(s.where,
-                "call of action '" + act->name + "' of " + sc.pou->name + ": " +
-                    (act->body_unsupported ? "its body is not modelled"
-                                           : "only actions with an ST/FBD/LD body can be called"));
+          const auto& owner = sc.unit ? *scopes[sc.owner].pou : *sc.pou;
+          error(s.where, act->body_unsupported ? "call of action '" + act->name + "' of " +
+                                                     sc.pou->name + ": its body is not modelled"
+                                               : sfc_action_call_error(owner, *act, act->name));
           break;
         }
         if (!inlining.insert(model::to_upper(act->name)).second) {

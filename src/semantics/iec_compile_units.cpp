@@ -1,7 +1,7 @@
-// The IEC compiler's SFC actions called by name (TwinCAT, CODESYS): a function block whose body
-// is not SFC but whose actions are runs each SFC action as a unit, one cycle of its chart per
-// call (docs/semantics.md 1.3b). A unit is an instance Pou: the machine and the circuit run it
-// with their instance call (body, flags, actions, transitions, next configuration, commit).
+// The IEC compiler's SFC actions called by name (TwinCAT, CODESYS): a function block's SFC
+// actions that its own SFC body does not drive run as units, one cycle of their chart per call
+// (docs/semantics.md 1.3b). A unit is an instance Pou: the machine and the circuit run it with
+// their instance call (body, flags, actions, transitions, next configuration, commit).
 
 #include <algorithm>
 #include <functional>
@@ -14,12 +14,64 @@
 
 namespace sfcv::semantics::iec::detail {
 
-bool Compiler::runs_sfc_actions_as_units(const model::Pou& type) {
-  if (type.kind != model::PouKind::FunctionBlock) return false;
+namespace {
+
+/// Whether association `as` belongs to a chart whose upper-case name is in `charts` (an
+/// association without a chart name: a step of that name in one of them).
+bool in_charts(const model::Pou& type, const model::ActionAssociation& as,
+               const std::set<std::string>& charts) {
+  if (!as.chart.empty()) return charts.count(model::to_upper(as.chart)) > 0;
   for (const auto& ch : type.charts)
-    if (ch.parent_action.empty()) return false;  // an SFC body: its steps activate the actions
+    if (charts.count(model::to_upper(ch.name)) && ch.step_index(as.step) >= 0) return true;
+  return false;
+}
+
+}  // namespace
+
+const model::ActionAssociation* Compiler::driving_association(const model::Pou& type,
+                                                              const std::string& action) {
+  // IEC 61131-3 nested charts (1.3): an SFC action that a step of the SFC body names, or a
+  // step of a chart nested in it, evolves while that association keeps it active.
+  std::set<std::string> charts, driven;
+  for (const auto& ch : type.charts)
+    if (ch.parent_action.empty()) charts.insert(model::to_upper(ch.name));
+  const model::ActionAssociation* found = nullptr;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const auto& as : type.associations) {
+      const auto* a = type.find_action(as.action);
+      if (!a || a->kind != model::ActionBodyKind::Chart || !in_charts(type, as, charts)) continue;
+      if (!driven.insert(model::to_upper(a->name)).second) continue;
+      grew = true;
+      if (!found && model::iequals(a->name, action)) found = &as;
+      for (const auto& ch : type.charts)
+        if (model::iequals(ch.parent_action, a->name)) charts.insert(model::to_upper(ch.name));
+    }
+  }
+  return found;
+}
+
+bool Compiler::is_unit_action(const model::Pou& type, const model::Action& a) {
+  return type.kind == model::PouKind::FunctionBlock && a.kind == model::ActionBodyKind::Chart &&
+         !driving_association(type, a.name);
+}
+
+std::string Compiler::sfc_action_call_error(const model::Pou& type, const model::Action& act,
+                                            const std::string& target) const {
+  const std::string head = "call of action '" + target + "' of " + type.name + ": ";
+  if (const auto* d = driving_association(type, act.name))
+    return head + "step '" + d->step + "' of the SFC body of " + type.name +
+           " runs it as its nested chart; " + nested_and_called;
+  if (type.kind != model::PouKind::FunctionBlock)
+    return head + "calling an SFC action of a " +
+           (type.kind == model::PouKind::Program ? "program" : "function") +
+           " (one cycle of its chart per call) is not modelled";
+  return head + "calling it by name is not modelled";
+}
+
+bool Compiler::runs_sfc_actions_as_units(const model::Pou& type) {
   for (const auto& a : type.actions)
-    if (a.kind == model::ActionBodyKind::Chart) return true;
+    if (is_unit_action(type, a)) return true;
   return false;
 }
 
@@ -27,11 +79,38 @@ const model::Pou* Compiler::instance_view(const model::Pou* type) {
   if (!type || !runs_sfc_actions_as_units(*type)) return type;
   auto [it, fresh] = instance_views.try_emplace(type, nullptr);
   if (fresh) {
+    // Without the units' charts, the associations of their steps and the units themselves;
+    // an SFC body and the SFC actions it drives stay (an ST body: nothing of that).
     model::Pou view = *type;
+    std::set<std::string> unit_charts;
     view.charts.clear();
-    view.associations.clear();
-    std::erase_if(view.actions,
-                  [](const model::Action& a) { return a.kind == model::ActionBodyKind::Chart; });
+    for (const auto& ch : type->charts) {
+      const auto* a = ch.parent_action.empty() ? nullptr : type->find_action(ch.parent_action);
+      if (a && is_unit_action(*type, *a))
+        unit_charts.insert(model::to_upper(ch.name));
+      else
+        view.charts.push_back(ch);
+    }
+    std::erase_if(view.associations, [&](const model::ActionAssociation& as) {
+      if (!as.chart.empty()) return unit_charts.count(model::to_upper(as.chart)) > 0;
+      return std::none_of(view.charts.begin(), view.charts.end(),
+                          [&](const model::Chart& ch) { return ch.step_index(as.step) >= 0; });
+    });
+    std::erase_if(view.actions, [&](const model::Action& a) { return is_unit_action(*type, a); });
+    // A Boolean variable that only the units' steps drive: the body's action control would
+    // write its (never active) action to it every cycle, over the units' writes.
+    if (!view.charts.empty())
+      std::erase_if(view.actions, [&](const model::Action& a) {
+        return a.kind == model::ActionBodyKind::Variable &&
+               std::none_of(view.associations.begin(), view.associations.end(),
+                            [&](const auto& as) { return model::iequals(as.action, a.name); });
+      });
+    for (auto& a : view.actions)
+      if (a.kind == model::ActionBodyKind::Chart) {
+        a.chart = -1;
+        for (std::size_t i = 0; i < view.charts.size(); ++i)
+          if (model::iequals(view.charts[i].parent_action, a.name)) a.chart = static_cast<int>(i);
+      }
     synthetic_pous.push_back(std::move(view));
     it->second = &synthetic_pous.back();
   }
@@ -41,7 +120,7 @@ const model::Pou* Compiler::instance_view(const model::Pou* type) {
 void Compiler::make_units(std::uint32_t inst, const model::Pou& type) {
   if (!runs_sfc_actions_as_units(type)) return;
   for (const auto& a : type.actions) {
-    if (a.kind != model::ActionBodyKind::Chart) continue;
+    if (!is_unit_action(type, a)) continue;
     int ci = a.chart;
     if (ci < 0 || static_cast<std::size_t>(ci) >= type.charts.size() ||
         !model::iequals(type.charts[static_cast<std::size_t>(ci)].parent_action, a.name)) {
@@ -70,6 +149,12 @@ void Compiler::make_units(std::uint32_t inst, const model::Pou& type) {
       const bool here =
           as.chart.empty() ? chart.step_index(as.step) >= 0 : model::iequals(as.chart, chart.name);
       if (!here) continue;
+      if (const auto* d = driving_association(type, as.action)) {
+        error(as.where, "step '" + as.step + "' of SFC action '" + a.name + "' names SFC action '" +
+                            as.action + "', which step '" + d->step + "' of the SFC body of " +
+                            type.name + " runs as its nested chart: " + nested_and_called);
+        continue;
+      }
       unit.associations.push_back(as);
       named.insert(model::to_upper(as.action));
     }

@@ -178,6 +178,36 @@ TEST(Programs, LadderRungIsPowerFlow) {
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
 }
 
+// An edge contact that feeds two coils (the OpenPLC stairs light of ESBMC's LD benchmarks) is
+// one element, evaluated once per cycle: both coils see the same one-cycle pulse. Before, the
+// second coil made a second R_TRIG of the same name ("duplicate variable"); calling the one
+// instance twice would leave the second coil without a pulse.
+TEST(Programs, AnEdgeContactFeedingTwoCoilsIsOneElement) {
+  auto element = [](const char* kind, int id, const char* var, int from, const char* extra) {
+    return std::string("<") + kind + " localId=\"" + std::to_string(id) + "\"" + extra +
+           "><position x=\"0\" y=\"0\"/><connectionPointIn><connection refLocalId=\"" +
+           std::to_string(from) + "\"/></connectionPointIn><connectionPointOut/><variable>" + var +
+           "</variable></" + kind + ">";
+  };
+  const std::string ld =
+      "<leftPowerRail localId=\"1\"><position x=\"0\" y=\"0\"/><connectionPointOut "
+      "formalParameter=\"\"/></leftPowerRail>" +
+      element("contact", 2, "start", 1, " edge=\"rising\"") +
+      element("contact", 3, "enable", 2, "") + element("coil", 4, "pulse1", 2, "") +
+      element("coil", 5, "pulse2", 3, "");
+  const auto file = write_temp(plcopen("<pou name=\"Stairs\" pouType=\"program\"><interface>" +
+                                       bool_vars("inputVars", {"start", "enable"}) +
+                                       bool_vars("outputVars", {"pulse1", "pulse2"}) +
+                                       "</interface><body><LD>" + ld + "</LD></body></pou>\n"),
+                               ".xml");
+  auto r = run_sfcv("check " + file +
+                    " --trace none --ctl 'AG (pulse2 -> pulse1)' --ctl 'EF pulse2'"
+                    " --ctl 'AG (pulse1 -> AX !pulse1)'");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  r = run_sfcv("check " + file + " --trace none --ctl 'AG (pulse1 -> pulse2)'");
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+}
+
 // CODESYS: `T(IN := FALSE, PT := T#0MS)` resets a TON called elsewhere with PT := T#5S; a
 // CTU's reset input is RESET. TwinCAT: a timer called without PT has PT = T#0s.
 TEST(Programs, VendorTimerAndCounterIdioms) {

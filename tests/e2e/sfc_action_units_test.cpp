@@ -1,8 +1,8 @@
 // SFC actions of function block instances called by name (issue 18, the TwinCAT idiom of the
-// xPPU projects): a function block with no SFC body whose actions are SFC runs each of them as
-// its own chart, one cycle per call, called from ST (`cyl.ACT_Extend(SFCReset := reset);`) or
-// by a step's association (`STEP Run: cyl.ACT_Extend; END_STEP`); its `AT %I` variables are
-// inputs of the plant (docs/semantics.md 1.3b). Every engine gives the same verdicts.
+// xPPU projects): a function block's SFC actions that its own SFC body (if any) does not name
+// run each as its own chart, one cycle per call, called from ST (`cyl.ACT_Extend(SFCReset :=
+// reset);`) or by a step's association (`STEP Run: cyl.ACT_Extend; END_STEP`); its `AT %I`
+// variables are inputs of the plant (docs/semantics.md 1.3b). Every engine gives the same verdicts.
 
 #include <gtest/gtest.h>
 
@@ -177,6 +177,137 @@ TEST(SfcActionUnits, CallsOfMissingActionsAndInputsAreLocatedErrors) {
   r = run_sfcv("check " + write_temp(text, ".st") + " --checks none --ctl 'AG TRUE'");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("error: function block Cylinder has no input 'Speed'"), std::string::npos)
+      << r.err;
+}
+
+// TwinCAT PLC Control 3.5.6.1 (the VerifAPS `ppu.xml`): function blocks whose own body is SFC
+// (here a one-step loop) still run their SFC actions that no step of that body names as units,
+// called from another function block's step action (`crane.ACT_Init();`), from an action of
+// one of the unit's steps (`ACT_MoveToStamp();`, the same instance) and from the body of the
+// caller itself (`ACT_Lamp();`); the instance is a VAR_INPUT of its caller, as in the export.
+const std::string kSfcBodyWithUnits = R"(FUNCTION_BLOCK Crane
+  VAR_INPUT SFCReset : BOOL; END_VAR
+  VAR_OUTPUT turning : BOOL; there : BOOL; END_VAR
+  VAR atStamp AT %IX1 : BOOL; END_VAR
+  INITIAL_STEP Init: END_STEP
+  TRANSITION FROM Init TO Init := TRUE; END_TRANSITION
+  ACTION ACT_Init:
+    INITIAL_STEP Start: END_STEP
+    STEP ToStamp: Go; END_STEP
+    STEP Ready: END_STEP
+    TRANSITION FROM Start TO ToStamp := NOT SFCReset; END_TRANSITION
+    TRANSITION FROM ToStamp TO Ready := there; END_TRANSITION
+  END_ACTION
+  ACTION Go: ACT_MoveToStamp(); END_ACTION
+  ACTION ACT_MoveToStamp:
+    INITIAL_STEP Idle: END_STEP
+    STEP Turning: turning; END_STEP
+    STEP Arrived: there; END_STEP
+    TRANSITION FROM Idle TO Turning := TRUE; END_TRANSITION
+    TRANSITION FROM Turning TO Arrived := atStamp; END_TRANSITION
+  END_ACTION
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Cell
+  VAR_INPUT crane : Crane; go : BOOL; END_VAR
+  VAR_OUTPUT lamp : BOOL; END_VAR
+  INITIAL_STEP Wait: END_STEP
+  STEP Run: CallInit; END_STEP
+  TRANSITION FROM Wait TO Run := go; END_TRANSITION
+  TRANSITION FROM Run TO Wait := crane.there; END_TRANSITION
+  ACTION CallInit: crane.ACT_Init(); ACT_Lamp(); END_ACTION
+  ACTION ACT_Lamp:
+    INITIAL_STEP Off: END_STEP
+    STEP On: lamp; END_STEP
+    TRANSITION FROM Off TO On := TRUE; END_TRANSITION
+  END_ACTION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT go : BOOL; END_VAR
+  VAR cell : Cell; END_VAR
+  cell(go := go);
+END_PROGRAM
+)";
+
+// The crane reaches the stamp only through the chain of calls (Run -> ACT_Init at ToStamp ->
+// Go -> ACT_MoveToStamp), its move chart stays at Idle in every cycle where ACT_Init is not at
+// ToStamp, and keeps Arrived (history). A model that ran none of the calls would claim
+// `AG !cell.crane.there`; one that ran the move chart every cycle would break the AX property.
+TEST(SfcActionUnits, SfcActionsOfAnSfcBodiedBlockThatItsBodyDoesNotNameAreUnits) {
+  const auto file = write_temp(kSfcBodyWithUnits, ".st");
+  const std::string only_through_init =
+      "--ctl 'AG ((cell.crane.ACT_MoveToStamp.Idle & !cell.crane.ACT_Init.ToStamp) -> "
+      "AX cell.crane.ACT_MoveToStamp.Idle)' "
+      "--ctl 'AG ((cell.Wait & cell.ACT_Lamp.Off) -> AX cell.ACT_Lamp.Off)'";
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r = run_sfcv(check(file, engine, "--ctl 'AG !cell.crane.there' --ctl 'AG !cell.lamp'"));
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_EQ(r.out.find("holds"), std::string::npos) << r.out;
+    r = run_sfcv(check(file, engine, only_through_init));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_EQ(r.out.find("VACUOUS"), std::string::npos) << r.out;
+  }
+  for (const char* engine : {"explicit", "bdd"}) {
+    SCOPED_TRACE(engine);
+    const auto r = run_sfcv(check(file, engine,
+                                  "--ctl 'AG (cell.crane.ACT_MoveToStamp.Arrived -> AG "
+                                  "cell.crane.ACT_MoveToStamp.Arrived)'"));
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+  // The shortest way to the stamp: go, ACT_Init leaves Start, the move chart leaves Idle, the
+  // sensor; a call too many or too few per cycle changes the length.
+  const auto r =
+      run_sfcv("check " + file + " --engine explicit --checks none --ctl 'AG !cell.crane.there'");
+  EXPECT_NE(r.out.find("counterexample (5 situations)"), std::string::npos) << r.out;
+}
+
+// An SFC action that a step of the block's own SFC body names is that step's nested chart
+// (1.3); calling it by name as well, from ST or from a unit's step, would run one chart from two
+// places: refused at the call, naming the step.
+TEST(SfcActionUnits, ANestedChartOfTheBodyCalledByNameIsRefused) {
+  const std::string feeder = R"(FUNCTION_BLOCK Feeder
+  VAR_OUTPUT out : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Feed: ACT_Run; END_STEP
+  TRANSITION FROM Idle TO Feed := TRUE; END_TRANSITION
+  ACTION ACT_Run:
+    INITIAL_STEP R0: out; END_STEP
+  END_ACTION
+)";
+  auto r =
+      run_sfcv("check " +
+               write_temp(feeder + "END_FUNCTION_BLOCK\nPROGRAM Main\n  VAR f : Feeder; END_VAR\n"
+                                   "  f();\n  f.ACT_Run();\nEND_PROGRAM\n",
+                          ".st") +
+               " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":13:3: error: call of action 'f.ACT_Run' of Feeder: step 'Feed' of the "
+                       "SFC body of Feeder runs it as its nested chart"),
+            std::string::npos)
+      << r.err;
+  r = run_sfcv("check " +
+               write_temp(feeder +
+                              "  ACTION ACT_Other:\n    INITIAL_STEP O0: ACT_Run; END_STEP\n"
+                              "  END_ACTION\nEND_FUNCTION_BLOCK\nPROGRAM Main\n"
+                              "  VAR f : Feeder; END_VAR\n  f();\n  f.ACT_Other();\nEND_PROGRAM\n",
+                          ".st") +
+               " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("error: step 'O0' of SFC action 'ACT_Other' names SFC action 'ACT_Run', "
+                       "which step 'Feed' of the SFC body of Feeder runs as its nested chart"),
+            std::string::npos)
+      << r.err;
+  // From inside the block: an ST action of the body calling `ACT_Run();`.
+  auto inside = feeder +
+                "  ACTION Kick: ACT_Run(); END_ACTION\nEND_FUNCTION_BLOCK\nPROGRAM Main\n"
+                "  VAR f : Feeder; END_VAR\n  f();\nEND_PROGRAM\n";
+  inside.replace(inside.find("INITIAL_STEP Idle: END_STEP"), 27,
+                 "INITIAL_STEP Idle: Kick; END_STEP");
+  r = run_sfcv("check " + write_temp(inside, ".st") + " --checks none --ctl 'AG TRUE'");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find(":9:16: error: call of action 'ACT_Run' of Feeder: step 'Feed' of the SFC "
+                       "body of Feeder runs it as its nested chart"),
+            std::string::npos)
       << r.err;
 }
 

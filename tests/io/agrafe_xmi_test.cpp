@@ -8,6 +8,7 @@
 #include "io/g7_writer.hpp"
 #include "io/grafcet_compare.hpp"
 #include "io/load.hpp"
+#include "model/validate.hpp"
 #include "support/sfcv_test.hpp"
 
 namespace sfcv::io {
@@ -455,6 +456,48 @@ TEST(AgrafeXmiIdioms, ActionLinkWithoutAnActionIsIgnoredWithAWarning) {
                         "<partialGrafcets name=\"G\"><steps id=\"1\"/>"
                         "<actionLinks/></partialGrafcets>"))
                    .ok());
+}
+
+TEST(AgrafeXmiIdioms, TransitionIdUsedTwiceNamesTheCopyApart) {
+  // As conflictingActions9 writes it: from the AND divergence after 1, step 3 -(b)-> 4 and step
+  // 2 -(a)-> 5, both transitions with id "3". Arcs name transitions by position, so they are
+  // two transitions; the second gets its own name (validate refused the duplicate name).
+  const auto r = load(doc(var("a", "", "Bool") + var("b", "", "Bool"),
+                          R"(<partialGrafcets xsi:type="grafcet:PartialGrafcet" name="G1">
+    <steps id="1" initial="true"/><steps id="2"/><steps id="3"/><steps id="4"/><steps id="5"/>
+    <transitions id="1"/>
+    <transitions id="3"><term xsi:type="terms:Variable" )" +
+                              vref(1) + R"(/></transitions>
+    <transitions id="3"><term xsi:type="terms:Variable" )" +
+                              vref(0) + R"(/></transitions>
+    <synchronizations/>
+    <arcs source="//@partialGrafcets.0/@steps.0" target="//@partialGrafcets.0/@transitions.0"/>
+    <arcs source="//@partialGrafcets.0/@transitions.0" target="//@partialGrafcets.0/@synchronizations.0"/>
+    <arcs source="//@partialGrafcets.0/@synchronizations.0" target="//@partialGrafcets.0/@steps.1"/>
+    <arcs source="//@partialGrafcets.0/@synchronizations.0" target="//@partialGrafcets.0/@steps.2"/>
+    <arcs source="//@partialGrafcets.0/@steps.2" target="//@partialGrafcets.0/@transitions.1"/>
+    <arcs source="//@partialGrafcets.0/@transitions.1" target="//@partialGrafcets.0/@steps.3"/>
+    <arcs source="//@partialGrafcets.0/@steps.1" target="//@partialGrafcets.0/@transitions.2"/>
+    <arcs source="//@partialGrafcets.0/@transitions.2" target="//@partialGrafcets.0/@steps.4"/>
+  </partialGrafcets>)"));
+  ASSERT_TRUE(r.ok()) << messages(r);
+  EXPECT_EQ(count_warnings(r,
+                           "transition id '3' is used twice in partial grafcet 'G1': this one "
+                           "is named '3_2'"),
+            1u)
+      << messages(r);
+  const auto& c = r.project->pous[0].charts[0];
+  ASSERT_EQ(c.transitions.size(), 3u);
+  EXPECT_EQ(c.transitions[1].name, "3");
+  EXPECT_EQ(c.transitions[1].sources, std::vector<std::string>{"3"});
+  EXPECT_EQ(c.transitions[1].targets, std::vector<std::string>{"4"});
+  EXPECT_EQ(model::to_st(c.transitions[1].guard), "b");
+  EXPECT_EQ(c.transitions[2].name, "3_2");
+  EXPECT_EQ(c.transitions[2].sources, std::vector<std::string>{"2"});
+  EXPECT_EQ(c.transitions[2].targets, std::vector<std::string>{"5"});
+  EXPECT_EQ(model::to_st(c.transitions[2].guard), "a");
+  for (const auto& d : model::validate(*r.project))
+    EXPECT_NE(d.severity, model::Severity::Error) << d.str();
 }
 
 TEST(AgrafeXmiIdioms, SynchronizationFromStepsToAStepIsAnAlwaysTrueTransition) {

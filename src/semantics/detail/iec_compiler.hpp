@@ -217,6 +217,21 @@ struct Compiler {
   // action control for the actions its steps name, reading and writing the instance's
   // variables (docs/semantics.md 1.3b).
   static bool runs_sfc_actions_as_units(const model::Pou& type);
+  /// An FB's SFC action runs as a unit unless the FB's SFC body drives it as a nested chart:
+  /// a step of the body (or of a chart nested in it) names it (docs/semantics.md 1.3b).
+  static bool is_unit_action(const model::Pou& type, const model::Action& a);
+  /// The association of a step of `type`'s SFC body (or of a chart nested in it) that makes
+  /// SFC action `action` a nested chart; null when none does.
+  static const model::ActionAssociation* driving_association(const model::Pou& type,
+                                                             const std::string& action);
+  /// Why an SFC action both nested in the body and called by name is refused.
+  static constexpr const char* nested_and_called =
+      "one chart both evolving as a nested chart while that step is active (1.3) and run "
+      "one more cycle at each call by name (1.3b) is not modelled";
+  /// The error for a call of SFC action `act` of `type` (`target` as written), which is not a
+  /// unit: the body's nested chart, or a program's SFC action.
+  std::string sfc_action_call_error(const model::Pou& type, const model::Action& act,
+                                    const std::string& target) const;
   /// The type as its instance scope sees it: without the SFC actions (they are units).
   const model::Pou* instance_view(const model::Pou* type);
   /// Creates the unit scopes of instance scope `inst` (after its variables).
