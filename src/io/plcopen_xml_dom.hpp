@@ -99,6 +99,11 @@ struct BodyText {
   model::SourceLocation start;
 };
 BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx);
+/// The text of `lines` (vendor files write one element per line of ST: L5X `<Line>`, CODESYS
+/// `TextLines`), each ending a line, placed at their line and column in the file so that the
+/// parser's diagnostics point into it; `start` is where the text begins.
+BodyText lines_text(pugi::xml_node start, const std::vector<pugi::xml_node>& lines,
+                    const XmlContext& ctx);
 
 /// IEC literals, as written in attributes: `T#2s`, `TIME#1h2m`, `t#500ms`; `TRUE`, `FALSE`;
 /// `42`, `-3`, `16#FF`, `INT#5`, `1_000`, through the one checked conversion (model/literal.hpp):
