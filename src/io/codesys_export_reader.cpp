@@ -79,13 +79,7 @@ const std::map<std::string_view, std::string_view>& refused_objects() {
   return m;
 }
 
-std::string guid_of(std::string_view s) {
-  std::string r;
-  for (char c : s)
-    if (c != '{' && c != '}' && c != ' ' && c != '\n' && c != '\r' && c != '\t')
-      r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return r;
-}
+using sfc_archive::guid_key;
 
 // One entry of the export: an object of the project tree.
 struct Entry {
@@ -150,10 +144,10 @@ class ExportReader {
     Entry e;
     e.node = n;
     e.object = f_.object(n, "Object");
-    e.guid = guid_of(f_.value(meta, "Guid"));
-    e.parent = guid_of(f_.value(meta, "ParentGuid"));
+    e.guid = guid_key(f_.value(meta, "Guid"));
+    e.parent = guid_key(f_.value(meta, "ParentGuid"));
     e.name = trim(f_.value(meta, "Name"));
-    e.type = guid_of(f_.value(meta, "TypeGuid"));
+    e.type = guid_key(f_.value(meta, "TypeGuid"));
     for (auto p : element_children(f_.list(n, "Path"))) e.path += trim(p.text().get()) + "/";
     e.path += e.name;
     if (!meta || !e.object || e.name.empty()) {
@@ -216,7 +210,7 @@ class ExportReader {
   pugi::xml_node implementation(const Entry& e) { return f_.object(e.object, "Implementation"); }
 
   static std::string kind_of(pugi::xml_node impl, const sfc_archive::Format& f) {
-    const std::string type = guid_of(impl.attribute("Type").value());
+    const std::string type = guid_key(impl.attribute("Type").value());
     if (type == kStImplementation) return "ST";
     if (type == kSfcImplementation) return "SFC";
     if (type == kNetworkImplementation) {
@@ -426,13 +420,7 @@ LoadResult load_codesys_export(std::string_view text, const std::string& file,
   model::Diagnostics diags;
   XmlContext ctx(file, text, diags, budget);
   pugi::xml_document doc;
-  const auto parsed =
-      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!parsed) {
-    diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                     std::string("XML parse error: ") + parsed.description()});
-    return LoadResult{std::nullopt, std::move(diags)};
-  }
+  if (!plcopen::load_document(doc, text, ctx)) return LoadResult{std::nullopt, std::move(diags)};
   const auto root = doc.document_element();
   if (local_name(root) != "ExportFile") {
     ctx.error(root, "not a CODESYS export: the root element is <" + std::string(root.name()) +

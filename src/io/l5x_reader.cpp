@@ -673,14 +673,8 @@ LoadResult load_l5x(std::string_view text, const std::string& file, const model:
   {
     XmlContext ctx(file, text, diags, budget);
     pugi::xml_document doc;
-    const auto parsed =
-        doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-    if (!parsed) {
-      diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                       std::string("XML parse error: ") + parsed.description()});
-    } else {
+    if (plcopen::load_document(doc, text, ctx))
       L5xReader(ctx, project).read(doc.document_element());
-    }
   }
   bool program = false;
   for (const auto& pou : project.pous) program = program || pou.has_sfc() || pou.body_unsupported;

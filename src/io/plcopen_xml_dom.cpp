@@ -160,6 +160,15 @@ BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx) {
   return r;
 }
 
+bool load_document(pugi::xml_document& doc, std::string_view text, XmlContext& ctx) {
+  const auto parsed =
+      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+  if (parsed) return true;
+  ctx.add({model::Severity::Error, ctx.where_offset(parsed.offset),
+           std::string("XML parse error: ") + parsed.description()});
+  return false;
+}
+
 BodyText lines_text(pugi::xml_node start, const std::vector<pugi::xml_node>& lines,
                     const XmlContext& ctx) {
   BodyText r;

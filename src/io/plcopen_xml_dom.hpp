@@ -92,6 +92,9 @@ class XmlContext {
   mutable std::unordered_map<const void*, SiblingPositions> siblings_;
 };
 
+/// Parses `text` into `doc`; a broken document is an error located at its offset (false).
+bool load_document(pugi::xml_document& doc, std::string_view text, XmlContext& ctx);
+
 /// Text of a textual body element (`ST`, `IL`, `inline/ST`): raw text, CDATA, `xhtml:p` or an
 /// `xhtml` element; `start` is set to where the text begins.
 struct BodyText {

@@ -24,15 +24,6 @@ using plcopen::element_children;
 using plcopen::trim;
 using plcopen::XmlContext;
 
-// The archive writes GUIDs with braces in records and without them as dictionary keys.
-std::string guid_key(std::string_view s) {
-  std::string r;
-  for (char c : s)
-    if (c != '{' && c != '}' && c != ' ' && c != '\n' && c != '\r' && c != '\t')
-      r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return r;
-}
-
 // Compact archive string values are quoted: `"N000"`.
 std::string unquote(std::string_view s) {
   if (s.size() >= 2 && s.front() == '"' && s.back() == '"')
@@ -59,6 +50,15 @@ const std::map<std::string, std::string>& sfc_classes() {
 }
 
 }  // namespace
+
+// The archive writes GUIDs with braces in records and without them as dictionary keys.
+std::string guid_key(std::string_view s) {
+  std::string r;
+  for (char c : s)
+    if (c != '{' && c != '}' && c != ' ' && c != '\n' && c != '\r' && c != '\t')
+      r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return r;
+}
 
 // ------------------------------------------------------------------------------------ Format
 

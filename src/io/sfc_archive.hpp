@@ -18,6 +18,9 @@
 
 namespace sfcv::io::sfc_archive {
 
+/// A GUID as a lookup key: lower case, without braces or spaces (archives write both forms).
+std::string guid_key(std::string_view s);
+
 /// How an archive writes its objects.
 enum class Encoding {
   /// TwinCAT `<XmlArchive>`: `<o n="member" t="Type">`, `<v n="member">"text"</v>`,

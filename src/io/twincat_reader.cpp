@@ -272,13 +272,7 @@ void read_native_text(std::string_view text, const std::string& file, model::Pro
                       model::Diagnostics& diags, const model::Budget* budget) {
   XmlContext ctx(file, text, diags, budget);
   pugi::xml_document doc;
-  const auto parsed =
-      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!parsed) {
-    diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                     std::string("XML parse error: ") + parsed.description()});
-    return;
-  }
+  if (!plcopen::load_document(doc, text, ctx)) return;
   const auto root = doc.document_element();
   if (local_name(root) != "TcPlcObject") {
     ctx.error(root, "not a TwinCAT 3 object file: the root element is <" +
@@ -314,13 +308,7 @@ std::vector<std::string> plcproj_files(const std::string& path, std::string_view
   std::vector<std::string> files;
   XmlContext ctx(path, text, diags, budget);
   pugi::xml_document doc;
-  const auto parsed =
-      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!parsed) {
-    diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                     std::string("XML parse error: ") + parsed.description()});
-    return files;
-  }
+  if (!plcopen::load_document(doc, text, ctx)) return files;
   const auto dir = std::filesystem::path(path).parent_path();
   for (auto group : children(doc.document_element(), "ItemGroup"))
     for (auto c : children(group, "Compile")) {
