@@ -258,7 +258,7 @@ class ExportReader {
     auto p = declaration_parser(e);
     if (!p) return;
     if (!native::parse(ctx_, [&] { native::pou_declaration(*p, pou); })) return;
-    refuse_sfc_flags(e);
+    refuse_sfc_flags(e, pou);
     plcopen::PouContext pc{ctx_, e.node, pou, {}, {}, {}, 0};
     std::map<std::string, const Entry*> transitions;
     std::vector<const Entry*> actions;
@@ -376,20 +376,23 @@ class ExportReader {
     return sfc_archive::transition_body_condition(*body, t.name, ctx_, impl);
   }
 
-  // The SFC settings of a POU (MetaObject Properties): implicit flag variables such as SFCReset
-  // or SFCPause, when used, act on the chart from outside the model.
-  void refuse_sfc_flags(const Entry& e) {
+  // The SFC settings of a POU (MetaObject Properties) mark the implicit flag variables it uses
+  // (SFCReset, SFCPause, ...). A used flag the POU declares is a variable of the model, read as
+  // docs/semantics.md 1.3a says (SFCInit/SFCReset modelled, the others refused there); one CODESYS
+  // declares implicitly is not, and the runtime acts on the chart through it: refused.
+  void refuse_sfc_flags(const Entry& e, const model::Pou& pou) {
     std::vector<pugi::xml_node> flags;
     find_named(f_.object(e.node, "MetaObject"), "Flags", 0, flags);
-    for (auto d : flags) {
+    for (auto d : flags)
       for (const auto& [key, value] : f_.entries(d)) {
-        if (model::iequals(trim(f_.value(value, "Use")), "True"))
-          ctx_.error(value, "unsupported: SFC flag '" + trim(key.text().get()) + "' of POU '" +
-                                e.name +
-                                "' is used (the implicit SFC flag variables are not "
-                                "modelled)");
+        if (!model::iequals(trim(f_.value(value, "Use")), "True")) continue;
+        std::string flag = trim(key.text().get());
+        if (model::to_upper(flag).rfind("SFC", 0) != 0) flag = "SFC" + flag;
+        if (!pou.find_variable(flag))
+          ctx_.error(value, "unsupported: SFC flag '" + flag + "' of POU '" + e.name +
+                                "' is used but not declared in the POU (an implicit flag "
+                                "variable is not modelled; docs/semantics.md 1.3a)");
       }
-    }
   }
 
   // The elements named `name` under `n` (the SFC settings sit a few levels down).

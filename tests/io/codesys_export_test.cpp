@@ -156,7 +156,8 @@ TEST(CodesysExport, ObjectOrientedAndUnknownObjectsAreRefusedByName) {
 }
 
 TEST(CodesysExport, UsedSfcFlagsAreRefused) {
-  // SFCReset & co. act on the chart from outside: a POU that uses one is refused.
+  // SFCReset & co. act on the chart from outside: a POU that uses one CODESYS declares
+  // implicitly (not in the POU's declaration) is refused.
   auto text = demo_export();
   const std::string flags =
       "<Dictionary Type=\"{2c41fa04-1834-41c1-816e-303c7aa2c05b}\" Name=\"Properties\"><Entry>"
@@ -172,9 +173,17 @@ TEST(CodesysExport, UsedSfcFlagsAreRefused) {
   text.insert(at + name.size(), flags);
   const auto r = io::load_codesys_export(text, "Demo.export");
   EXPECT_FALSE(r.ok());
-  EXPECT_NE(errors_of(r).find("unsupported: SFC flag 'Reset' of POU 'PLC_SEQ' is used"),
+  EXPECT_NE(errors_of(r).find("unsupported: SFC flag 'SFCReset' of POU 'PLC_SEQ' is used but "
+                              "not declared in the POU"),
             std::string::npos)
       << errors_of(r);
+  // Declared in the POU, the flag is a variable the semantics models (docs/semantics.md 1.3a).
+  const std::string decl = "m1, m2, lamp, busy : BOOL;";
+  const auto d = text.find(decl);
+  ASSERT_NE(d, std::string::npos);
+  text.insert(d + decl.size(), " SFCReset : BOOL;");
+  const auto declared = io::load_codesys_export(text, "Demo.export");
+  EXPECT_TRUE(declared.ok()) << errors_of(declared);
 }
 
 TEST(CodesysExport, GraphicalBodiesLoadAsNotModelled) {
