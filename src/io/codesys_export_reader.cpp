@@ -10,10 +10,10 @@
 // body is the same SFCImplementationObject archive TwinCAT writes, read by io/sfc_archive. What
 // the model cannot say is refused with the file, the element path and the object's name.
 
-#include <cctype>
 #include <map>
 #include <optional>
 #include <pugixml.hpp>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -104,9 +104,9 @@ class ExportReader {
       ctx_.error(root, "CODESYS export without objects (no StructuredView EntryList entry)");
       return;
     }
-    std::map<std::string, bool> pous;
+    std::set<std::string> pous;
     for (const auto& e : entries_)
-      if (e.type == kPou) pous[e.guid] = true;
+      if (e.type == kPou) pous.insert(e.guid);
     // Lists and types first: POU declarations name them.
     for (const auto& e : entries_) {
       ctx_.poll();
@@ -280,6 +280,10 @@ class ExportReader {
         continue;
       }
       const auto impl = implementation(*a);
+      if (!impl) {
+        ctx_.error(a->node, "action '" + act.name + "' (" + a->path + ") has no implementation");
+        continue;
+      }
       const std::string kind = kind_of(impl, f_);
       if (kind == "SFC") {
         act.kind = model::ActionBodyKind::Chart;

@@ -153,6 +153,13 @@ TEST(CodesysExport, ObjectOrientedAndUnknownObjectsAreRefusedByName) {
   const auto u = io::load_codesys_export(demo_export(export_guids(), "", odd), "Demo.export");
   EXPECT_FALSE(u.ok());
   EXPECT_NE(errors_of(u).find("unsupported: object 'Odd'"), std::string::npos) << errors_of(u);
+  // An action object without an implementation is an error, not an empty action.
+  const auto empty = entry("33333333-0000-4000-8000-000000000004", kPouGuid, "A_None", kAction, "");
+  const auto n = io::load_codesys_export(demo_export(export_guids(), "", empty), "Demo.export");
+  EXPECT_FALSE(n.ok());
+  EXPECT_NE(errors_of(n).find("action 'A_None' (Device/Application/A_None) has no implementation"),
+            std::string::npos)
+      << errors_of(n);
 }
 
 TEST(CodesysExport, UsedSfcFlagsAreRefused) {
