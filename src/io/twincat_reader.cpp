@@ -8,24 +8,19 @@
 // network archives as conditions, object-oriented POUs) is refused with the file and element path.
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <pugixml.hpp>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "io/load.hpp"
 #include "io/native_pou.hpp"
 #include "io/plcopen_pou.hpp"
-#include "io/plcopen_st.hpp"
 #include "io/plcopen_xml_dom.hpp"
 #include "io/sfc_archive.hpp"
-#include "io/st_lexer.hpp"
 #include "io/st_parser.hpp"
-#include "model/data_types.hpp"
 #include "model/input_file.hpp"
 #include "model/names.hpp"
 
@@ -33,7 +28,6 @@ namespace sfcv::io {
 
 namespace {
 
-using plcopen::BodyText;
 using plcopen::child;
 using plcopen::children;
 using plcopen::element_children;
