@@ -42,47 +42,9 @@ bool is_true(pugi::xml_node n, const char* attribute) {
   return model::iequals(trim(n.attribute(attribute).value()), "true");
 }
 
-// The ST text of an `<STContent>`: its `<Line>` CDATA placed at their line and column in the
-// file, so that the parser's diagnostics point into the file.
+// The ST text of an `<STContent>`: its `<Line>` CDATA, at their place in the file.
 BodyText st_content(pugi::xml_node st, const XmlContext& ctx) {
-  BodyText r;
-  r.start = ctx.where(st);
-  int line = r.start.line, column = r.start.column;
-  bool first = true;
-  for (auto l : children(st, "Line")) {
-    if (!first) {  // each Line ends a line of text, wherever the next one is
-      r.text += '\n';
-      ++line;
-      column = 1;
-    }
-    first = false;
-    for (auto c = l.first_child(); c; c = c.next_sibling()) {
-      if (c.type() != pugi::node_cdata && c.type() != pugi::node_pcdata) continue;
-      const auto at = ctx.where_offset(c.offset_debug());
-      if (at.line > line || (at.line == line && at.column >= column)) {
-        while (line < at.line) {
-          r.text += '\n';
-          ++line;
-          column = 1;
-        }
-        while (column < at.column) {
-          r.text += ' ';
-          ++column;
-        }
-      }
-      const std::string v = c.value();
-      r.text += v;
-      for (char ch : v) {
-        if (ch == '\n') {
-          ++line;
-          column = 1;
-        } else {
-          ++column;
-        }
-      }
-    }
-  }
-  return r;
+  return plcopen::lines_text(st, children(st, "Line"), ctx);
 }
 
 bool ident_char(char c) {
@@ -711,14 +673,8 @@ LoadResult load_l5x(std::string_view text, const std::string& file, const model:
   {
     XmlContext ctx(file, text, diags, budget);
     pugi::xml_document doc;
-    const auto parsed =
-        doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-    if (!parsed) {
-      diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                       std::string("XML parse error: ") + parsed.description()});
-    } else {
+    if (plcopen::load_document(doc, text, ctx))
       L5xReader(ctx, project).read(doc.document_element());
-    }
   }
   bool program = false;
   for (const auto& pou : project.pous) program = program || pou.has_sfc() || pou.body_unsupported;

@@ -160,6 +160,57 @@ BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx) {
   return r;
 }
 
+bool load_document(pugi::xml_document& doc, std::string_view text, XmlContext& ctx) {
+  const auto parsed =
+      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+  if (parsed) return true;
+  ctx.add({model::Severity::Error, ctx.where_offset(parsed.offset),
+           std::string("XML parse error: ") + parsed.description()});
+  return false;
+}
+
+BodyText lines_text(pugi::xml_node start, const std::vector<pugi::xml_node>& lines,
+                    const XmlContext& ctx) {
+  BodyText r;
+  r.start = ctx.where(start);
+  int line = r.start.line, column = r.start.column;
+  bool first = true;
+  for (auto l : lines) {
+    if (!first) {  // each Line ends a line of text, wherever the next one is
+      r.text += '\n';
+      ++line;
+      column = 1;
+    }
+    first = false;
+    for (auto c = l.first_child(); c; c = c.next_sibling()) {
+      if (c.type() != pugi::node_cdata && c.type() != pugi::node_pcdata) continue;
+      const auto at = ctx.where_offset(c.offset_debug());
+      if (at.line > line || (at.line == line && at.column >= column)) {
+        while (line < at.line) {
+          r.text += '\n';
+          ++line;
+          column = 1;
+        }
+        while (column < at.column) {
+          r.text += ' ';
+          ++column;
+        }
+      }
+      const std::string v = c.value();
+      r.text += v;
+      for (char ch : v) {
+        if (ch == '\n') {
+          ++line;
+          column = 1;
+        } else {
+          ++column;
+        }
+      }
+    }
+  }
+  return r;
+}
+
 // ------------------------------------------------------------------------------------- literals
 
 std::string trim(std::string_view s) {

@@ -92,6 +92,9 @@ class XmlContext {
   mutable std::unordered_map<const void*, SiblingPositions> siblings_;
 };
 
+/// Parses `text` into `doc`; a broken document is an error located at its offset (false).
+bool load_document(pugi::xml_document& doc, std::string_view text, XmlContext& ctx);
+
 /// Text of a textual body element (`ST`, `IL`, `inline/ST`): raw text, CDATA, `xhtml:p` or an
 /// `xhtml` element; `start` is set to where the text begins.
 struct BodyText {
@@ -99,6 +102,11 @@ struct BodyText {
   model::SourceLocation start;
 };
 BodyText body_text(pugi::xml_node language_element, const XmlContext& ctx);
+/// The text of `lines` (vendor files write one element per line of ST: L5X `<Line>`, CODESYS
+/// `TextLines`), each ending a line, placed at their line and column in the file so that the
+/// parser's diagnostics point into it; `start` is where the text begins.
+BodyText lines_text(pugi::xml_node start, const std::vector<pugi::xml_node>& lines,
+                    const XmlContext& ctx);
 
 /// IEC literals, as written in attributes: `T#2s`, `TIME#1h2m`, `t#500ms`; `TRUE`, `FALSE`;
 /// `42`, `-3`, `16#FF`, `INT#5`, `1_000`, through the one checked conversion (model/literal.hpp):
