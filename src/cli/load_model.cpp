@@ -47,8 +47,9 @@ io::Format parse_format(const std::string& name) {
   if (name == "agrafe" || name == "grafcet") return io::Format::AgrafeXmi;
   if (name == "twincat") return io::Format::TwinCat;
   if (name == "l5x" || name == "rockwell") return io::Format::L5x;
+  if (name == "simatic" || name == "siemens") return io::Format::SimaticGraph;
   throw InputError("unknown format '" + name +
-                   "' (expected auto, xml, iec, g7, agrafe, twincat or l5x)");
+                   "' (expected auto, xml, iec, g7, agrafe, twincat, l5x or simatic)");
 }
 
 }  // namespace sfcv::cli

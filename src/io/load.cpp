@@ -25,8 +25,6 @@ std::optional<std::string> unread_vendor_format(const std::string& path, std::st
   const std::string tail = "; export the program as PLCopen XML (docs/formats.md)";
   if (ends_with(path, ".export") || has("<ExportFile"))
     return "CODESYS native export (<ExportFile>) is not read" + tail;
-  if (has("<SW.Blocks.") || (has("<Document") && has("<Engineering")))
-    return "Siemens TIA Portal SimaticML (S7-GRAPH) is not read" + tail;
   return std::nullopt;
 }
 
@@ -38,6 +36,10 @@ Format detect_format(const std::string& path, std::string_view text) {
       text.substr(0, 4096).find("<RSLogix5000Content") != std::string_view::npos)
     return Format::L5x;
   if (text.find("<TcPlcObject") != std::string_view::npos) return Format::TwinCat;
+  if (const auto head = text.substr(0, 4096); head.find("<SW.Blocks.") != std::string_view::npos ||
+                                              (head.find("<Document") != std::string_view::npos &&
+                                               head.find("<Engineering") != std::string_view::npos))
+    return Format::SimaticGraph;
   if (ends_with(path, ".g7")) return Format::G7;
   if (ends_with(path, ".grafcet")) return Format::AgrafeXmi;
   if (ends_with(path, ".st") || ends_with(path, ".sfc") || ends_with(path, ".txt") ||
@@ -95,6 +97,8 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
       return load_twincat_project(path, budget);
     case Format::L5x:
       return load_l5x(text, path, budget);
+    case Format::SimaticGraph:
+      return load_simatic_graph(text, path, budget);
     case Format::Auto:
       break;
   }

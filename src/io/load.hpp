@@ -12,7 +12,17 @@
 
 namespace sfcv::io {
 
-enum class Format { Auto, PlcopenXml, IecText, G7, AgrafeXmi, TwinCat, TwinCatProject, L5x };
+enum class Format {
+  Auto,
+  PlcopenXml,
+  IecText,
+  G7,
+  AgrafeXmi,
+  TwinCat,
+  TwinCatProject,
+  L5x,
+  SimaticGraph
+};
 
 struct LoadResult {
   std::optional<model::Project> project;  ///< empty when an error prevented building a model
@@ -51,7 +61,12 @@ LoadResult load_twincat_project(const std::string& path, const model::Budget* bu
 LoadResult load_l5x(std::string_view text, const std::string& file,
                     const model::Budget* budget = nullptr);
 
-/// Vendor formats sfcv recognises but does not read (CODESYS native .export, SimaticML): the reason
+/// A Siemens TIA Portal SimaticML export (<Document> with <SW.Blocks.FB>): its S7-GRAPH function
+/// blocks; docs/formats.md.
+LoadResult load_simatic_graph(std::string_view text, const std::string& file,
+                              const model::Budget* budget = nullptr);
+
+/// Vendor formats sfcv recognises but does not read (CODESYS native .export): the reason
 /// naming the format, or nullopt.
 std::optional<std::string> unread_vendor_format(const std::string& path, std::string_view text);
 
