@@ -1100,6 +1100,8 @@ void GraphBlockReader::topology(pugi::xml_node seq) {
                                     "with an AltBegin branch)");
   struct Read {
     model::Transition t;
+    std::string branch;  ///< the AltBegin it leaves, if any
+    int anchor = 0;      ///< its number, or the smallest number of its branch's transitions
     int leg = 0;
     int number = 0;
   };
@@ -1133,8 +1135,10 @@ void GraphBlockReader::topology(pugi::xml_node seq) {
       continue;
     }
     const std::string& before = ins[0].to;
-    if (before[0] == 'B' && branch_of(before).type == "AltBegin")
+    if (before[0] == 'B' && branch_of(before).type == "AltBegin") {
       r.leg = std::atoi(before.c_str() + before.find(":o") + 2);
+      r.branch = before.substr(0, before.find(':'));
+    }
     if (!sources(before, r.t.sources, 0) || !targets(outs[0].to, r.t.targets, 0)) {
       ctx_.error(node, "unsupported: the branches around transition '" + r.t.name +
                            "' are not drawn as S7-GRAPH draws them (a step before it, through "
@@ -1158,7 +1162,13 @@ void GraphBlockReader::topology(pugi::xml_node seq) {
   }
   // An alternative branch's transitions are read left to right (Out 0 first), as drawn: the
   // model's document order, which decides when several hold (docs/semantics.md 1.13).
+  std::map<std::string, int> first;
+  for (const auto& r : read)
+    if (!r.branch.empty())
+      first[r.branch] = first.count(r.branch) ? std::min(first[r.branch], r.number) : r.number;
+  for (auto& r : read) r.anchor = r.branch.empty() ? r.number : first[r.branch];
   std::sort(read.begin(), read.end(), [](const Read& a, const Read& b) {
+    if (a.anchor != b.anchor) return a.anchor < b.anchor;
     return a.leg != b.leg ? a.leg < b.leg : a.number < b.number;
   });
   for (auto& r : read) {

@@ -11,8 +11,10 @@
 #include <string>
 
 #include "io/load.hpp"
+#include "model/compare.hpp"
 #include "model/expr.hpp"
 #include "model/validate.hpp"
+#include "round_trip.hpp"
 #include "support/simatic_text.hpp"
 
 namespace sfcv::test {
@@ -64,6 +66,17 @@ TEST(SimaticGraph, DetectedByItsRootAndReadAsAProgramWithOneChart) {
   EXPECT_FALSE(model::has_errors(model::validate(p)));
 }
 
+TEST(SimaticGraph, DemoGivesTheModelOfItsIecTwinAndRoundTrips) {
+  const auto native = load(demo());
+  ASSERT_TRUE(native.ok()) << errors_of(native);
+  const auto twin = io::load_iec_text(demo_twin(), "tank.st");
+  ASSERT_TRUE(twin.ok()) << errors_of(twin);
+  const auto diff = model::first_difference(*native.project, *twin.project);
+  EXPECT_FALSE(diff.has_value()) << *diff;
+  iec_round_trip(*native.project);
+  plcopen_round_trip(*native.project);
+}
+
 TEST(SimaticGraph, BranchesAndJumpsGiveTheSourcesAndTargetsAsDrawn) {
   const auto r = load(demo());
   ASSERT_TRUE(r.ok()) << errors_of(r);
@@ -100,6 +113,44 @@ TEST(SimaticGraph, LadConditionsSeriesParallelAndNormallyClosed) {
   ASSERT_TRUE(r2.ok()) << errors_of(r2);
   EXPECT_EQ(model::to_st(find(r2.project->pous[0].charts[0], "T_Full")->guard),
             "a AND NOT b OR c OR NOT d AND e");
+}
+
+TEST(SimaticGraph, LadPowerFlowFanningOutOfAContactIntoParallelContacts) {
+  // a AND NOT b, then three parallel contacts joined by an O box (the shape of a stop network
+  // in the public LAD twin): one wire takes b's out to the three contacts' in.
+  auto acc = [](int uid, const char* name) {
+    return "<Access Scope=\"GlobalVariable\" UId=\"" + std::to_string(uid) +
+           "\"><Symbol><Component Name=\"" + name + "\" /></Symbol></Access>";
+  };
+  auto con = [](int from, const char* pin, int to, const char* to_pin) {
+    return "<Wire UId=\"" + std::to_string(100 + from * 10 + to) + "\"><NameCon UId=\"" +
+           std::to_string(from) + "\" Name=\"" + pin + "\" /><NameCon UId=\"" + std::to_string(to) +
+           "\" Name=\"" + to_pin + "\" /></Wire>";
+  };
+  auto op = [](int a, int p) {
+    return "<Wire UId=\"" + std::to_string(200 + a) + "\"><IdentCon UId=\"" + std::to_string(a) +
+           "\" /><NameCon UId=\"" + std::to_string(p) + "\" Name=\"operand\" /></Wire>";
+  };
+  const std::string net =
+      "<FlgNet><Parts>" + acc(1, "a") + acc(2, "b") + acc(3, "c") + acc(4, "d") + acc(5, "e") +
+      "<Part Name=\"Contact\" UId=\"11\" /><Part Name=\"Contact\" UId=\"12\"><Negated "
+      "Name=\"operand\" /></Part><Part Name=\"Contact\" UId=\"13\" /><Part Name=\"Contact\" "
+      "UId=\"14\" /><Part Name=\"Contact\" UId=\"15\" /><Part Name=\"O\" UId=\"16\"><TemplateValue "
+      "Name=\"Card\" Type=\"Cardinality\">3</TemplateValue></Part><Part Name=\"TrCoil\" "
+      "UId=\"17\" /></Parts><Wires><Wire UId=\"99\"><Powerrail /><NameCon UId=\"11\" "
+      "Name=\"in\" /></Wire>" +
+      op(1, 11) + op(2, 12) + op(3, 13) + op(4, 14) + op(5, 15) + con(11, "out", 12, "in") +
+      "<Wire UId=\"98\"><NameCon UId=\"12\" Name=\"out\" /><NameCon UId=\"13\" Name=\"in\" "
+      "/><NameCon UId=\"14\" Name=\"in\" /><NameCon UId=\"15\" Name=\"in\" /></Wire>" +
+      con(13, "out", 16, "in1") + con(14, "out", 16, "in2") + con(15, "out", 16, "in3") +
+      con(16, "out", 17, "in") + "</Wires></FlgNet>\n";
+  auto text = demo();
+  const auto old_net = lad({{"ack"}});
+  text.replace(text.find(old_net), old_net.size(), net);
+  const auto r = load(text);
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(model::to_st(find(r.project->pous[0].charts[0], "T_Ack")->guard),
+            "a AND NOT b AND c OR a AND NOT b AND d OR a AND NOT b AND e");
 }
 
 TEST(SimaticGraph, ActionRowsBecomeAssociationsWithTheirQualifiers) {

@@ -216,13 +216,14 @@ inline std::string demo(const std::string& pre = "") {
   return document("Tank", statics, steps, transitions, branches, links, pre);
 }
 
-/// The demo's IEC 61131-3 text twin, written from the drawing.
+/// The demo's IEC 61131-3 text twin, written from the drawing (the PLC tags declared in the
+/// order the block first names them: its action tables, then its transitions).
 inline std::string demo_twin() {
   return R"(PROGRAM Tank
 VAR
   full : BOOL := FALSE;
-  start, stop, level_hi, busy, ack : BOOL;
   motor, valve, mixer, heater, lamp : BOOL;
+  start, stop, level_hi, busy, ack : BOOL;
 END_VAR
 INITIAL_STEP Idle : motor(R); END_STEP
 STEP Fill : motor(S); valve(N); END_STEP
