@@ -23,7 +23,7 @@ _sfcv() {
     --engine) COMPREPLY=($(compgen -W "auto explicit bdd bmc kind ic3 nusmv" -- "$cur")); return ;;
     --trace) COMPREPLY=($(compgen -W "table json vcd csv none" -- "$cur")); return ;;
     --to) COMPREPLY=($(compgen -W "nusmv casmv promela aiger aag dot iec g7 plcopen" -- "$cur")); return ;;
-    --format) COMPREPLY=($(compgen -W "auto xml iec g7 agrafe" -- "$cur")); return ;;
+    --format) COMPREPLY=($(compgen -W "auto xml iec g7 agrafe twincat l5x codesys simatic" -- "$cur")); return ;;
     --semantics) COMPREPLY=($(compgen -W "grafcet iec61131" -- "$cur")); return ;;
     --priority) COMPREPLY=($(compgen -W "standard none" -- "$cur")); return ;;
     --time) COMPREPLY=($(compgen -W "abstract discrete" -- "$cur")); return ;;

@@ -463,7 +463,7 @@ void add_check_like_command(CLI::App& app, CommandRunner& selected, CheckMode mo
           : app.add_subcommand("check", "Model-check CTL properties and the standard checks");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   sub->add_option("--ctl", opts->ctl, "A CTL property, e.g. 'AG !(V1 & V3)' (repeatable)");
   sub->add_option(
       "--ltl", opts->ltl,

@@ -208,7 +208,7 @@ void add_export_command(CLI::App& app, CommandRunner& selected) {
                   "nusmv, casmv, promela, aiger (binary), aag, dot, iec, g7, plcopen")
       ->required();
   sub->add_option("-o,--output", opts->output, "Output file (default: standard output)");
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   sub->add_option("--ctl", opts->ctl,
                   "A CTL property (repeatable); promela/aiger: invariants AG p");
   sub->add_option("--ltl", opts->ltl, "An LTL property (repeatable); promela only: an ltl claim");

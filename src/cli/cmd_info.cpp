@@ -44,7 +44,7 @@ void add_info_command(CLI::App& app, CommandRunner& selected) {
       app.add_subcommand("info", "Summarise a chart: POUs, steps, transitions, actions, variables");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   sub->add_flag("--json", opts->json, "Print the summary as JSON (schema: docs/formats.md)");
   add_limit_options(*sub, opts->limits, "what is not counted is left out (exit 3)");
   sub->callback([opts, &selected] {

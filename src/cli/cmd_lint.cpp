@@ -89,7 +89,7 @@ void add_lint_command(CLI::App& app, CommandRunner& selected) {
       "lint", "Validate a chart's structure, names and types (exit 2 on errors, 0 otherwise)");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   sub->add_flag("--json", opts->json,
                 "Print the diagnostics as JSON: {schema_version, diagnostics: [{file, line, "
                 "column, element_path, severity, message}], errors, warnings}");

@@ -254,7 +254,7 @@ void add_query_command(CLI::App& app, CommandRunner& selected) {
                   "(explicit up to " +
                       std::to_string(engine::kAutoProbeStates) + " situations, then bdd)");
   add_limit_options(*sub, opts->limits, "the graph is incomplete");
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   sub->callback([opts, &selected] {
     selected = [opts] {
       return run_limited(opts->limits, [&](const RunGuard& g) { return run_query(*opts, g); });

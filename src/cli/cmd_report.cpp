@@ -68,7 +68,7 @@ void add_report_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("result", opts->result, "The JSON result of 'sfcv check --json'")->required();
   sub->add_option("--html", opts->html, "The HTML file to write")->required();
   sub->add_option("--model", opts->model, "The chart file (default: the one the result names)");
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   add_system_options(*sub, opts->system);
   add_limit_options(*sub, opts->limits, "the report is not written (exit 3)");
   sub->callback([opts, &selected] {

@@ -119,7 +119,7 @@ void add_rsg_command(CLI::App& app, CommandRunner& selected) {
       "rsg", "Build the reachable situations graph (Grafcet) or the cycle state graph (IEC)");
   sub->add_option("model", opts->model, "Chart file (PLCopen XML, IEC text, .g7, AGRAFE .grafcet)")
       ->required();
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec, g7, agrafe");
+  sub->add_option("--format", opts->format, kFormatHelp);
   add_system_options(*sub, opts->system);
   sub->add_flag("--list", opts->list, "List every situation and evolution");
   sub->add_option("--dot", opts->dot,

@@ -407,7 +407,7 @@ void add_simulate_command(CLI::App& app, CommandRunner& selected) {
       ->required();
   sub->add_option("--vcd", opts->vcd,
                   "Also write a VCD waveform (GTKWave) of steps, actions, outputs, inputs");
-  sub->add_option("--format", opts->format, "Input format: auto, xml, iec");
+  sub->add_option("--format", opts->format, kFormatHelp);
   add_system_options(*sub, opts->system);
   sub->add_option("--assume", opts->assumptions,
                   "Assumption on inputs and state (ST expression), repeatable");

@@ -48,8 +48,9 @@ io::Format parse_format(const std::string& name) {
   if (name == "twincat") return io::Format::TwinCat;
   if (name == "l5x" || name == "rockwell") return io::Format::L5x;
   if (name == "codesys") return io::Format::CodesysExport;
+  if (name == "simatic" || name == "siemens") return io::Format::SimaticGraph;
   throw InputError("unknown format '" + name +
-                   "' (expected auto, xml, iec, g7, agrafe, twincat, l5x or codesys)");
+                   "' (expected auto, xml, iec, g7, agrafe, twincat, l5x, codesys or simatic)");
 }
 
 }  // namespace sfcv::cli

@@ -28,7 +28,11 @@ CheckedModel load_and_validate(const std::string& path, io::Format format = io::
 model::Project load_model_or_throw(const std::string& path, io::Format format = io::Format::Auto,
                                    bool quiet = false, const model::Budget* budget = nullptr);
 
-/// Parses a --format value ("auto", "xml", "iec", "g7", "agrafe").
+/// The --format values parse_format() takes, for every subcommand's help.
+inline constexpr const char* kFormatHelp =
+    "Input format: auto, xml, iec, g7, agrafe, twincat, l5x, codesys, simatic";
+
+/// Parses a --format value (kFormatHelp).
 io::Format parse_format(const std::string& name);
 
 }  // namespace sfcv::cli

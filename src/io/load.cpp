@@ -19,16 +19,6 @@ bool ends_with(const std::string& s, std::string_view suffix) {
 }
 }  // namespace
 
-std::optional<std::string> unread_vendor_format([[maybe_unused]] const std::string& path,
-                                                std::string_view text) {
-  const auto head = text.substr(0, 4096);
-  const auto has = [&](std::string_view s) { return head.find(s) != std::string_view::npos; };
-  const std::string tail = "; export the program as PLCopen XML (docs/formats.md)";
-  if (has("<SW.Blocks.") || (has("<Document") && has("<Engineering")))
-    return "Siemens TIA Portal SimaticML (S7-GRAPH) is not read" + tail;
-  return std::nullopt;
-}
-
 Format detect_format(const std::string& path, std::string_view text) {
   if (ends_with(path, ".tcpou") || ends_with(path, ".tcgvl") || ends_with(path, ".tcdut"))
     return Format::TwinCat;
@@ -40,6 +30,10 @@ Format detect_format(const std::string& path, std::string_view text) {
   if (ends_with(path, ".export") ||
       text.substr(0, 4096).find("<ExportFile") != std::string_view::npos)
     return Format::CodesysExport;
+  if (const auto head = text.substr(0, 4096); head.find("<SW.Blocks.") != std::string_view::npos ||
+                                              (head.find("<Document") != std::string_view::npos &&
+                                               head.find("<Engineering") != std::string_view::npos))
+    return Format::SimaticGraph;
   if (ends_with(path, ".g7")) return Format::G7;
   if (ends_with(path, ".grafcet")) return Format::AgrafeXmi;
   if (ends_with(path, ".st") || ends_with(path, ".sfc") || ends_with(path, ".txt") ||
@@ -72,16 +66,7 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
     r.diagnostics.push_back({model::Severity::Error, where, *reason});
     return r;
   }
-  if (format == Format::Auto) {
-    if (auto reason = unread_vendor_format(path, text)) {
-      LoadResult r;
-      model::SourceLocation where;
-      where.file = path;
-      r.diagnostics.push_back({model::Severity::Error, where, "unsupported: " + *reason});
-      return r;
-    }
-    format = detect_format(path, text);
-  }
+  if (format == Format::Auto) format = detect_format(path, text);
   switch (format) {
     case Format::PlcopenXml:
       return load_plcopen_xml(text, path, budget);
@@ -99,6 +84,8 @@ LoadResult load_file(const std::string& path, Format format, const model::Budget
       return load_l5x(text, path, budget);
     case Format::CodesysExport:
       return load_codesys_export(text, path, budget);
+    case Format::SimaticGraph:
+      return load_simatic_graph(text, path, budget);
     case Format::Auto:
       break;
   }

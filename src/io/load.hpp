@@ -22,6 +22,7 @@ enum class Format {
   TwinCatProject,
   L5x,
   CodesysExport,
+  SimaticGraph,
 };
 
 struct LoadResult {
@@ -66,8 +67,9 @@ LoadResult load_l5x(std::string_view text, const std::string& file,
 LoadResult load_codesys_export(std::string_view text, const std::string& file,
                                const model::Budget* budget = nullptr);
 
-/// Vendor formats sfcv recognises but does not read (SimaticML): the reason
-/// naming the format, or nullopt.
-std::optional<std::string> unread_vendor_format(const std::string& path, std::string_view text);
+/// A Siemens TIA Portal SimaticML export (<Document> with <SW.Blocks.FB>): its S7-GRAPH function
+/// blocks; docs/formats.md.
+LoadResult load_simatic_graph(std::string_view text, const std::string& file,
+                              const model::Budget* budget = nullptr);
 
 }  // namespace sfcv::io

@@ -279,7 +279,7 @@ TEST_F(TwinCatFiles, APlcprojOrAFolderLoadsEveryPouListAndType) {
   EXPECT_NE(errors_of(r).find("GVL_IO.TcGVL"), std::string::npos) << errors_of(r);
 }
 
-TEST_F(TwinCatFiles, VendorFormatsNotReadAreRefusedByName) {
+TEST_F(TwinCatFiles, VendorFilesGoToTheirReaders) {
   const std::pair<const char*, const char*> cases[] = {
       {"Seq.xml",
        "<?xml version=\"1.0\"?><Document><Engineering version=\"V17\"/><SW.Blocks.FB ID=\"0\"/>"
