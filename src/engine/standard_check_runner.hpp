@@ -13,8 +13,16 @@
 //   Set observable(o)                        reached situations where observable o is non-zero
 //   Set field_nonzero(f)                     reached situations where layout field f is non-zero
 //   bool can_fire(t); Set fires(t), fires_any()   reached situations where t (any) fires
+//                                            (Grafcet: on an evolution, one back to the
+//                                            situation itself included)
 //   bool fires_initially(t)                  t is cleared while an initial situation
 //                                            stabilises (Grafcet; IEC 61131-3: false)
+//   Set enters(o)                            Grafcet: reached situations, o inactive there,
+//                                            with an evolution that has step observable o
+//                                            active in one of its situations (transient or
+//                                            the stable end; IEC 61131-3: none)
+//   bool enters_initially(o)                 Grafcet: o active in a situation an initial
+//                                            situation crosses while it stabilises or ends in
 //   Set stuck()                              reached situations without any successor
 //   Set pre(s), post(s)                      reached predecessors / successors of s
 //   Set backward(s)                          the reached situations from which s is reachable
@@ -50,7 +58,6 @@
 #include <set>
 #include <span>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -366,246 +373,34 @@ class StandardCheckRunner {
     return out;
   }
 
-  /// Whether the partial grafcet of `step` can be emptied within an evolution: it is enclosed
-  /// by a step (docs/semantics.md 2.12 c). A forced grafcet does not evolve while forced, so a
-  /// transition that fires in it did enter its target.
-  bool may_be_emptied(const StepRef& step) {
-    if (!task_.project) return true;
-    for (const auto& pou : task_.project->pous) {
-      if (!model::iequals(pou.name, step.pou)) continue;
-      for (const auto& chart : pou.charts)
-        for (const auto& x : chart.steps)
-          if (x.kind == model::StepKind::Enclosing)
-            for (const auto& name : x.enclosed)
-              if (model::iequals(name, step.chart)) return true;
-    }
-    return false;
-  }
-
-  /// Grafcet steps never active in a stable situation but entered by a transition that fires
-  /// (they are crossed during transient evolutions): index into steps_ -> the situations with
-  /// an evolution entering the step. Empty for IEC 61131-3.
+  /// Grafcet steps never active in a stable situation but active in a transient situation of
+  /// an evolution (docs/semantics.md 2.5: entered by a clearing, with their enclosing step, by
+  /// a forcing order, and not emptied in the same evolution by an enclosing step's
+  /// deactivation, 2.12 c): index into steps_ -> the situations with such an evolution. The
+  /// engine follows each evolution to its end (Space::enters). Empty for IEC 61131-3.
   std::map<std::size_t, Set> transient_steps() {
     std::map<std::size_t, Set> out;
-    entered_by_transition_.clear();
     if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
-    const auto matched = chart_transitions();
-    if (matched.empty()) return out;
     for (std::size_t i = 0; i < steps_.size(); ++i) {
       poll();
       if (!sp_.empty(step_set(steps_[i]))) continue;
-      Set entry = sp_.none();
-      for (std::uint32_t t = 0; t < matched.size(); ++t) {
-        if (!model::iequals(ts_.transitions()[t].chart, steps_[i].chart)) continue;
-        bool enters = false;
-        for (const auto& d : matched[t]->targets)
-          enters = enters || model::iequals(d, steps_[i].step);
-        if (enters) entry = sp_.join(entry, sp_.fires(t));
-      }
-      if (!sp_.empty(entry)) {
-        out.emplace(i, std::move(entry));
-        entered_by_transition_.insert(i);
-      }
-    }
-    // A step entered with its enclosing step (docs/semantics.md 2.12 a) is crossed when the
-    // enclosing step is entered: crossed itself, or entered by a transition that fires. To a
-    // fixpoint, for nested enclosures.
-    for (bool changed = !enclosure_entries().empty(); changed;) {
-      changed = false;
-      for (const auto& [e, entries] : enclosure_entries()) {
-        poll();
-        Set entry = sp_.none();
-        if (const auto it = out.find(e); it != out.end()) {
-          entry = it->second;
-        } else {
-          for (std::uint32_t t = 0; t < matched.size(); ++t) {
-            if (!model::iequals(ts_.transitions()[t].chart, steps_[e].chart)) continue;
-            for (const auto& d : matched[t]->targets)
-              if (model::iequals(d, steps_[e].step)) entry = sp_.join(entry, sp_.fires(t));
-          }
-        }
-        if (sp_.empty(entry)) continue;
-        for (auto s : entries)
-          if (!out.count(s) && sp_.empty(step_set(steps_[s]))) {
-            out.emplace(s, entry);
-            changed = true;
-          }
-      }
-    }
-    return out;
-  }
-
-  /// The entry step of macro-step `m` whose expansion is `x` (docs/semantics.md 2.12, as the
-  /// semantics builds it): the step the file marks, else E<m> by name, else the initial-marked
-  /// step, else the first.
-  static std::string macro_entry(const model::Chart& x, const model::Step& m) {
-    if (!x.macro_entry.empty()) return x.macro_entry;
-    const std::string number =
-        m.name.size() > 1 && (m.name[0] == 'M' || m.name[0] == 'm') ? m.name.substr(1) : m.name;
-    std::string by_name, initial;  // the last match of each, as grafcet_build.cpp
-    for (const auto& s : x.steps) {
-      if (model::iequals(s.name, "E" + number) || model::iequals(s.name, "E" + m.name))
-        by_name = s.name;
-      if (s.initial) initial = s.name;
-    }
-    if (!by_name.empty()) return by_name;
-    if (!initial.empty()) return initial;
-    return x.steps.empty() ? std::string() : x.steps.front().name;
-  }
-
-  /// Per step (index into steps_) whose activity activates other steps in the same or the next
-  /// evolution (docs/semantics.md 2.5, 2.12): an enclosing step, of each partial grafcet it
-  /// encloses the activation-linked steps, else the initial ones (2.12 a); a macro-step, the
-  /// entry step of its expansion (a transition into M enters E); a step holding a forcing order
-  /// to a situation or to INIT, the steps forced. Computed once, indexed (charts of thousands of
-  /// steps); empty without the project.
-  const std::vector<std::pair<std::size_t, std::vector<std::size_t>>>& enclosure_entries() {
-    if (enclosure_entries_done_) return enclosure_entries_;
-    enclosure_entries_done_ = true;
-    if (!task_.project || ts_.kind() != semantics::SemanticsKind::Grafcet)
-      return enclosure_entries_;
-    auto key = [](const std::string& pou, const std::string& chart, const std::string& step) {
-      return model::to_upper(pou) + "\n" + model::to_upper(chart) + "\n" + model::to_upper(step);
-    };
-    std::unordered_map<std::string, std::size_t> index;
-    for (std::size_t i = 0; i < steps_.size(); ++i)
-      index.emplace(key(steps_[i].pou, steps_[i].chart, steps_[i].step), i);
-    for (const auto& pou : task_.project->pous)
-      for (const auto& chart : pou.charts)
-        for (const auto& step : chart.steps) {
-          const auto e = index.find(key(pou.name, chart.name, step.name));
-          if (e == index.end()) continue;
-          std::vector<std::size_t> entries;
-          auto add = [&](const std::string& c, const std::string& x) {
-            if (const auto s = index.find(key(pou.name, c, x)); s != index.end())
-              entries.push_back(s->second);
-          };
-          if (step.kind == model::StepKind::MacroStep) {
-            if (const model::Chart* c = pou.find_chart(step.expansion))
-              if (const auto entry = macro_entry(*c, step); !entry.empty()) add(c->name, entry);
-          }
-          for (const auto& f : pou.forcing_orders) {
-            if (!model::iequals(f.chart, chart.name) || !model::iequals(f.step, step.name))
-              continue;
-            const model::Chart* c = pou.find_chart(f.target);
-            if (!c) continue;
-            if (f.kind == model::ForcingKind::Situation)
-              for (const auto& x : f.situation) add(c->name, x);
-            if (f.kind == model::ForcingKind::Initial)
-              for (const auto& x : c->steps)
-                if (x.initial) add(c->name, x.name);
-          }
-          if (step.kind != model::StepKind::Enclosing) {
-            if (!entries.empty()) enclosure_entries_.emplace_back(e->second, std::move(entries));
-            continue;
-          }
-          for (const auto& name : step.enclosed) {
-            const model::Chart* c = pou.find_chart(name);
-            if (!c) continue;
-            const bool linked = std::any_of(c->steps.begin(), c->steps.end(),
-                                            [](const model::Step& x) { return x.activation_link; });
-            for (const auto& x : c->steps)
-              if (linked ? x.activation_link : x.initial)
-                if (const auto s = index.find(key(pou.name, name, x.name)); s != index.end())
-                  entries.push_back(s->second);
-          }
-          if (!entries.empty()) enclosure_entries_.emplace_back(e->second, std::move(entries));
-        }
-    return enclosure_entries_;
-  }
-
-  /// The steps of the initial situation before it stabilises (docs/semantics.md 2.2): the
-  /// initial steps of the top-level partial grafcets (enclosed by no step, expanding no
-  /// macro-step), the entry steps of the macro-steps among them, and for an enclosing step among
-  /// them the initial steps of each grafcet it encloses (its linked ones when it has none),
-  /// recursively. Indices into steps_; empty without the project.
-  std::vector<std::size_t> initial_situation_steps() {
-    std::vector<std::size_t> out;
-    if (!task_.project || ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
-    for (const auto& pou : task_.project->pous) {
-      std::set<std::string> inner;  // charts enclosed or expanding, upper case
-      for (const auto& chart : pou.charts)
-        for (const auto& step : chart.steps) {
-          for (const auto& e : step.enclosed) inner.insert(model::to_upper(e));
-          if (step.kind == model::StepKind::MacroStep)
-            inner.insert(model::to_upper(step.expansion));
-        }
-      std::vector<std::pair<const model::Chart*, const model::Step*>> work;
-      auto enter = [&](const model::Chart& c, bool initial_else_linked) {
-        const bool any_initial = std::any_of(c.steps.begin(), c.steps.end(),
-                                             [](const model::Step& x) { return x.initial; });
-        for (const auto& x : c.steps)
-          if (any_initial || !initial_else_linked ? x.initial : x.activation_link)
-            work.emplace_back(&c, &x);
-      };
-      for (const auto& chart : pou.charts)
-        if (!inner.count(model::to_upper(chart.name))) enter(chart, false);
-      std::set<std::string> seen;
-      while (!work.empty()) {
-        const auto [c, x] = work.back();
-        work.pop_back();
-        if (!seen.insert(model::to_upper(c->name) + "\n" + model::to_upper(x->name)).second)
-          continue;
-        for (std::size_t i = 0; i < steps_.size(); ++i)
-          if (model::iequals(steps_[i].pou, pou.name) && model::iequals(steps_[i].chart, c->name) &&
-              model::iequals(steps_[i].step, x->name))
-            out.push_back(i);
-        if (x->kind == model::StepKind::MacroStep)
-          if (const model::Chart* ex = pou.find_chart(x->expansion))
-            for (const auto& y : ex->steps)
-              if (y.name == macro_entry(*ex, *x)) work.emplace_back(ex, &y);
-        for (const auto& name : x->enclosed)
-          if (const model::Chart* en = pou.find_chart(name)) enter(*en, true);
-      }
+      Set entry = sp_.enters(steps_[i].observable);
+      if (!sp_.empty(entry)) out.emplace(i, std::move(entry));
     }
     return out;
   }
 
   /// Grafcet steps never active in a stable situation nor crossed after an event, but active
-  /// while an initial situation stabilises: the sources and targets of the transitions cleared
-  /// then (docs/semantics.md 2.11).
+  /// in a situation an initial situation crosses while it stabilises (2.2, 2.11: the initial
+  /// steps, and those the start runs through).
   std::set<std::size_t> initially_crossed_steps(const std::map<std::size_t, Set>& transient) {
     std::set<std::size_t> out;
     if (ts_.kind() != semantics::SemanticsKind::Grafcet) return out;
-    const auto matched = chart_transitions();
-    for (std::uint32_t t = 0; t < matched.size(); ++t) {
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
       poll();
-      if (!sp_.fires_initially(t)) continue;
-      for (std::size_t i = 0; i < steps_.size(); ++i) {
-        if (transient.count(i) || !model::iequals(ts_.transitions()[t].chart, steps_[i].chart))
-          continue;
-        bool crossed = false;
-        for (const auto* list : {&matched[t]->sources, &matched[t]->targets})
-          for (const auto& d : *list) crossed = crossed || model::iequals(d, steps_[i].step);
-        if (crossed && sp_.empty(step_set(steps_[i]))) out.insert(i);
-      }
-    }
-    // The steps of the initial situation itself (2.2), before it stabilises: an initial step
-    // that a forcing order deactivates at once is left by no transition (seed 69 of
-    // SatEngineAgreement.RandomGrafcets).
-    for (auto i : initial_situation_steps())
-      if (!transient.count(i) && sp_.empty(step_set(steps_[i]))) out.insert(i);
-    // The entry steps of an enclosing step crossed at the start, or entered at the start by a
-    // transition (2.12 a), are crossed then too.
-    for (bool changed = !enclosure_entries().empty(); changed;) {
-      changed = false;
-      for (const auto& [e, entries] : enclosure_entries()) {
-        poll();
-        bool entered = out.count(e) > 0;
-        for (std::uint32_t t = 0; !entered && t < matched.size(); ++t) {
-          if (!sp_.fires_initially(t) ||
-              !model::iequals(ts_.transitions()[t].chart, steps_[e].chart))
-            continue;
-          for (const auto& d : matched[t]->targets)
-            entered = entered || model::iequals(d, steps_[e].step);
-        }
-        if (!entered) continue;
-        for (auto s : entries)
-          if (!transient.count(s) && !out.count(s) && sp_.empty(step_set(steps_[s]))) {
-            out.insert(s);
-            changed = true;
-          }
-      }
+      if (!transient.count(i) && sp_.empty(step_set(steps_[i])) &&
+          sp_.enters_initially(steps_[i].observable))
+        out.insert(i);
     }
     return out;
   }
@@ -651,29 +446,6 @@ class StandardCheckRunner {
       r.message = std::to_string(missing) + " of " + std::to_string(steps_.size()) +
                   " steps not reached before the limit; " + limit_message();
       return;
-    }
-    // A step of an enclosed grafcet that a transition enters only during a transient evolution
-    // may be emptied in that same evolution (its enclosing step left, docs/semantics.md 2.12 c):
-    // "entered by a firing transition" does not show it active. Those steps are left open,
-    // never counted as reached (the SAT engines observe the evolution). A step activated with
-    // its enclosing step (2.12 a) is active in that micro-step: counted as before.
-    if (!missing) {
-      std::size_t open = 0;
-      std::string first;
-      for (std::size_t i = 0; i < steps_.size(); ++i)
-        if (!seen[i] && !at_start.count(i) && entered_by_transition_.count(i) &&
-            may_be_emptied(steps_[i]))
-          if (open++ == 0) first = logic::describe_step(steps_[i]);
-      if (open) {
-        r.verdict = Verdict::Unknown;
-        r.message = std::to_string(open) + " step" + (open == 1 ? "" : "s") + " (" + first +
-                    (open == 1 ? "" : ", ...") +
-                    ") of an enclosed grafcet entered only during transient "
-                    "evolutions, which this engine does not follow to their end (an enclosing "
-                    "step left in the same evolution empties its grafcet); the ic3 and kind "
-                    "engines decide it";
-        return;
-      }
     }
     std::string apart;
     if (!transient.empty())
@@ -1299,12 +1071,6 @@ class StandardCheckRunner {
   const semantics::TransitionSystem& ts_;
   const logic::CheckTask& task_;
   std::vector<StepRef> steps_;
-  /// enclosure_entries(), once computed.
-  std::vector<std::pair<std::size_t, std::vector<std::size_t>>> enclosure_entries_;
-  bool enclosure_entries_done_ = false;
-  /// The steps of transient_steps() entered by a transition that fires (not only with their
-  /// enclosing step).
-  std::set<std::size_t> entered_by_transition_;
   bool bottoms_tried_ = false;
   std::optional<std::vector<Set>> bottoms_;  ///< bottom_components(), once tried
 };

@@ -160,6 +160,11 @@ void GrafcetSystem::build_step_fields() {
     if (gs.kind == model::StepKind::MacroStep) continue;
     gs.field = static_cast<int>(
         layout_.add_field(charts_[gs.chart].name + "." + gs.name, FieldKind::StepActive));
+    const auto bit = layout_.fields()[static_cast<std::size_t>(gs.field)].offset;
+    if (step_mask_.size() <= bit / 64) step_mask_.resize(bit / 64 + 1, 0);
+    step_mask_[bit / 64] |= StateWord{1} << (bit % 64);
+    if (step_field_at_bit_.size() <= bit) step_field_at_bit_.resize(bit + 1, 0);
+    step_field_at_bit_[bit] = static_cast<std::uint32_t>(gs.field);
   }
 }
 

@@ -1,6 +1,7 @@
 #include "semantics/grafcet_system.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -525,6 +526,9 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
   std::vector<std::vector<StateWord>> trajectory{cur};
   std::map<std::vector<StateWord>, std::size_t> seen;  // (prev, cur) -> index in trajectory
   r.fired.clear();
+  r.entered.clear();
+  // The step bits of every situation of the run, ORed (Successor::entered).
+  std::vector<StateWord> crossed(step_mask_.size(), 0);
 
   std::vector<int> forced(charts_.size(), -1);
   std::vector<std::uint32_t> cleared;
@@ -535,6 +539,7 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
     if (options_.deadline && (k & 7U) == 7U &&
         std::chrono::steady_clock::now() > *options_.deadline)
       throw LimitReached(Limit::Time, "time limit reached during a transient evolution");
+    for (std::size_t w = 0; w < crossed.size(); ++w) crossed[w] |= cur[w] & step_mask_[w];
     const Ctx ctx{cur, &v, prev, prev_in};
     auto need_split = [&](const Ctx& c) {
       r.split = c.wanted;
@@ -717,16 +722,33 @@ GrafcetSystem::Status GrafcetSystem::evolve(StateView source, const Partial& v, 
   }
   std::sort(r.fired.begin(), r.fired.end());
   r.fired.erase(std::unique(r.fired.begin(), r.fired.end()), r.fired.end());
+  // Steps active in a situation of the run but in neither its source nor its target: what a
+  // transition entered and the same evolution left (2.5), or an enclosing step's deactivation
+  // emptied (2.12 c) is not here, as no situation holds it.
+  for (std::size_t w = 0; w < crossed.size(); ++w) {
+    StateWord only = crossed[w] & ~cur[w];
+    if (!initial) only &= ~source[w];
+    for (; only != 0; only &= only - 1)
+      r.entered.push_back(
+          step_field_at_bit_[w * 64 + static_cast<std::size_t>(std::countr_zero(only))]);
+  }
   r.target = std::move(cur);
   return Status::Stable;
 }
 
 void GrafcetSystem::emit(StateView source, const Partial& v, const Result& r,
                          SuccessorSink& sink) const {
-  if (!source.empty() && std::equal(r.target.begin(), r.target.end(), source.begin(), source.end()))
-    return;  // no evolution and no change of memorised input: stutter is implicit
+  const bool back =
+      !source.empty() && std::equal(r.target.begin(), r.target.end(), source.begin(), source.end());
+  // Back to the source: stutter is implicit (no edge), but what the run fired or crossed on
+  // the way is still told.
+  if (back && r.fired.empty() && r.entered.empty()) return;
   const InputCondition cond{{cube_of(v)}};
-  sink.successor(Successor{StateView(r.target), cond, r.fired});
+  const Successor out{StateView(r.target), cond, r.fired, r.entered};
+  if (back)
+    sink.returning(out);
+  else
+    sink.successor(out);
 }
 
 /// Splits the partial valuation on demand: each leaf decides the whole evolution, so the

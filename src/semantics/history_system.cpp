@@ -46,6 +46,10 @@ class HistorySink final : public SuccessorSink {
     split_from(s, s.condition, 0, split);
   }
   void anomaly(const Anomaly& a) override { out_.anomaly(a); }
+  /// Back to the base source: the history source itself (its recorded values unchanged).
+  void returning(const Successor& s) override {
+    out_.returning(Successor{source_, s.condition, s.fired, s.entered});
+  }
 
  private:
   void split_from(const Successor& s, const InputCondition& cond, std::size_t k, bool split) {
@@ -67,7 +71,7 @@ class HistorySink final : public SuccessorSink {
     // source's own, or the initial state's just computed).
     for (std::size_t k = 0; k < h_.request_.previous.size(); ++k)
       h_.layout_.set(target_, h_.previous_fields_[k], h_.observe(from, h_.request_.previous[k]));
-    out_.successor(Successor{StateView(target_), cond, s.fired});
+    out_.successor(Successor{StateView(target_), cond, s.fired, s.entered});
   }
 
   const HistorySystem& h_;

@@ -65,6 +65,11 @@ struct Successor {
   StateView target;
   const InputCondition& condition;       ///< inputs under which this evolution happens
   std::span<const std::uint32_t> fired;  ///< indices into transitions(), sorted
+  /// Grafcet (docs/semantics.md 2.5): the layout fields of the steps active in some situation
+  /// of this evolution (transient, or the stable one) but in neither its source nor its target,
+  /// sorted. An initial evolution has no source: the steps of the initial situation left before
+  /// it stabilises are here. Empty for IEC 61131-3.
+  std::span<const std::uint32_t> entered = {};
 };
 
 /// A defect found while computing successors (e.g. a Grafcet instability: transient evolutions
@@ -80,6 +85,10 @@ class SuccessorSink {
  public:
   virtual ~SuccessorSink() = default;
   virtual void successor(const Successor& s) = 0;
+  /// Grafcet: an evolution of the state that ends in the state itself, so no successor (2.1:
+  /// stuttering is not an edge), but that clears s.fired or crosses s.entered on the way (an
+  /// elapse that runs `2 -> 1 -> 2`). Called only when one of them is not empty.
+  virtual void returning(const Successor&) {}
   virtual void anomaly(const Anomaly&) {}
   /// Called by a semantics that enumerates input valuations one by one (IEC 61131-3: the leaves
   /// of the scan cycle's input decisions) every so many of them, with the count for this state

@@ -420,6 +420,12 @@ class Run {
     bool fires_initially(std::uint32_t t) const { return sys_.fires_initially(t); }
     Set fires(std::uint32_t t) { return run_.reached_ & sys_.fires(t); }
     Set fires_any() { return run_.reached_ & sys_.fires_any(); }
+    Set enters(std::uint32_t o) {
+      return run_.reached_ & sys_.enters(sys_.atom(*logic::observable_atom(run_.ts_, o)));
+    }
+    bool enters_initially(std::uint32_t o) {
+      return sys_.enters_initially(sys_.atom(*logic::observable_atom(run_.ts_, o)));
+    }
     Set stuck() const { return run_.reached_ & !sys_.has_successor(); }
     Set pre(const Set& to) const { return run_.reached_ & sys_.preimage(to); }
     Set post(const Set& from) const { return run_.reached_ & sys_.image(from); }

@@ -214,7 +214,7 @@ void GrafcetClosure::set_sources(const Bdd& sources) {
   if (have_sources_ && sources == sources_) return;
   sources_ = sources;
   have_sources_ = true;
-  have_relation_ = have_good_ = false;
+  have_relation_ = false;
   fires_set_.assign(fires_set_.size(), false);
 }
 
@@ -239,12 +239,12 @@ void GrafcetClosure::compute_relation() {
   relation_ = emitted(ends_ne_);
   has_successor_ = relation_.exist(n_cube_);
   // Anomalies: starts from which no end is reachable.
-  const Bdd good = backward(ends, reach_);
+  good_ = backward(ends, reach_);
   const Bdd errors = backward(reach_ & error_, reach_);
   auto sources = [&](const Bdd& configs) {
     return configs.exist(n_cube_).exist(q_cube_).exist(kept_inputs_cube_);
   };
-  unstable_ = sources(st & !good & !errors);
+  unstable_ = sources(st & !good_ & !errors);
   range_ = sources(st & errors);
   have_relation_ = true;
 }
@@ -305,15 +305,24 @@ Bdd GrafcetClosure::has_successor() {
 
 Bdd GrafcetClosure::fires(std::uint32_t t) {
   compute_relation();
-  if (!have_good_) {
-    good_ = backward(ends_ne_, reach_);
-    have_good_ = true;
-  }
   if (!fires_set_[t]) {
     fires_[t] = (good_ & cleared_[t]).exist(n_cube_).exist(q_cube_).exist(kept_inputs_cube_);
     fires_set_[t] = true;
   }
   return fires_[t];
+}
+
+Bdd GrafcetClosure::enters(const Bdd& step) {
+  compute_relation();
+  // A configuration carries its source C, and N is one situation of its run (the first, each
+  // transient one, the stable end): the run stabilises from it iff it lies in good_.
+  const Bdd during = (good_ & step.replace(*c_to_n_)).exist(n_cube_).exist(q_cube_);
+  return during.exist(kept_inputs_cube_) & !step;
+}
+
+bool GrafcetClosure::enters_initially(const Bdd& step) {
+  compute_initial();
+  return !(initial_good_ & step.replace(*c_to_n_)).is_false();
 }
 
 Bdd GrafcetClosure::fires_on_one_edge(std::uint32_t i, std::uint32_t j) {

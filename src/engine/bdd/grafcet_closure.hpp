@@ -55,7 +55,16 @@ class GrafcetClosure {
   Bdd image(const Bdd& states);     ///< over C; exact (stutter removed)
   Bdd preimage(const Bdd& states);  ///< over C
   Bdd has_successor();
+  /// Sources (over C) with an event whose run clears the transition and stabilises, in
+  /// another situation or back in the source (no edge, but the transition fires: 2.5).
   Bdd fires(std::uint32_t transition);
+  /// Sources (over C) where `step` (a predicate over C: a step's activity) does not hold,
+  /// with an event whose run stabilises and has it hold in one of its situations (transient,
+  /// or the stable end; docs/semantics.md 2.5).
+  Bdd enters(const Bdd& step);
+  /// Whether `step` holds in a situation of a run from an initial valuation that stabilises
+  /// (the initial situation itself included).
+  bool enters_initially(const Bdd& step);
   /// Sources (over C) with an edge that fires both transitions: some stable situation D is
   /// reached from C by a run that clears i and by a run that clears j (the explicit graph
   /// merges the events from C to D into one edge, its fired set the union of theirs).
@@ -104,8 +113,9 @@ class GrafcetClosure {
 
   bool have_relation_ = false, have_sources_ = false;
   Bdd sources_;
-  Bdd reach_, ends_ne_, relation_, has_successor_, good_, unstable_, range_;
-  bool have_good_ = false, have_anomalies_ = false;
+  Bdd reach_, ends_ne_, relation_, has_successor_, unstable_, range_;
+  Bdd good_;  ///< configurations of reach_ whose run stabilises (its end stutters or not)
+  bool have_anomalies_ = false;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
   std::vector<Bdd> edges_clearing_;  ///< per transition: R(C, N) of the runs that clear it

@@ -1022,6 +1022,14 @@ Bdd SymbolicSystem::beyond_fired_sets_of(const Bdd& point) {
   return (ok_ & outside).exist(*choice_cube_);
 }
 
+Bdd SymbolicSystem::enters(const Bdd& step) {
+  return grafcet_ ? grafcet_->enters(step) : Bdd::constant(false);
+}
+
+bool SymbolicSystem::enters_initially(const Bdd& step) const {
+  return grafcet_ && grafcet_->enters_initially(step);
+}
+
 Bdd SymbolicSystem::fires_any() {
   Bdd any = Bdd::constant(false);
   for (std::uint32_t t = 0; t < circuit_.fired.size(); ++t) any = any | fires(t);

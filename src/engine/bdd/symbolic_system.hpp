@@ -122,6 +122,12 @@ class SymbolicSystem {
   Bdd fires_on_one_edge(std::uint32_t i, std::uint32_t j);
   /// States that fire at least one transition under some allowed, error-free input.
   Bdd fires_any();
+  /// Grafcet: states where `step` (a state predicate: a step's activity) does not hold, with an
+  /// event during whose evolutions it holds in some situation (GrafcetClosure::enters); IEC
+  /// 61131-3: none.
+  Bdd enters(const Bdd& step);
+  /// Grafcet: `step` holds in a situation crossed while an initial situation stabilises.
+  bool enters_initially(const Bdd& step) const;
 
   /// Number of states in `states` (exact below 2^64, else an approximation).
   double count(const Bdd& states) const;

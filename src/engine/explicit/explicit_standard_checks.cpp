@@ -69,15 +69,44 @@ class ExplicitSpace {
   }
   bool can_fire(std::uint32_t t) const { return g_.fired_somewhere()[t]; }
   bool fires_initially(std::uint32_t t) const { return g_.fired_initially()[t]; }
+  /// An evolution back to the situation itself clears transitions too (docs/semantics.md 2.5).
   Set fires(std::uint32_t t) const {
-    return edge_sources([&](std::uint64_t e) {
+    Set r = edge_sources([&](std::uint64_t e) {
       for (auto x : g_.fired(e))
         if (x == t) return true;
       return false;
     });
+    const auto& back = g_.returning_states();
+    for (std::size_t i = 0; i < back.size(); ++i)
+      for (auto x : g_.returning_fired(i)) r[back[i]] = r[back[i]] || x == t;
+    return r;
   }
   Set fires_any() const {
-    return edge_sources([&](std::uint64_t e) { return !g_.fired(e).empty(); });
+    Set r = edge_sources([&](std::uint64_t e) { return !g_.fired(e).empty(); });
+    for (auto s : g_.returning_states()) r[s] = 1;
+    return r;
+  }
+  /// The situations with an evolution in a situation of which step observable o is active,
+  /// o being inactive in the situation itself: at the evolution's end (an edge's target), or
+  /// in between (the crossed steps, Successor::entered). A step's activity is an OR of step
+  /// fields (a macro-step's, of its expansion's), so it holds in some situation of a set of
+  /// evolutions iff it holds on the union of their crossed fields.
+  Set enters(std::uint32_t o) const {
+    Set r = edge_sources(
+        [&](std::uint64_t e) { return ts_.observe(g_.states().at(g_.target(e)), o) != 0; });
+    const auto& states = g_.crossing_states();
+    for (std::size_t i = 0; i < states.size(); ++i)
+      if (!r[states[i]] && on_fields(g_.crossed(i), o)) r[states[i]] = 1;
+    for (std::uint32_t s = 0; s < n_; ++s)
+      if (r[s] && ts_.observe(g_.states().at(s), o)) r[s] = 0;
+    return r;
+  }
+  /// Whether step observable o is active in a situation an initial situation crosses while it
+  /// stabilises (the initial situation itself included) or ends in.
+  bool enters_initially(std::uint32_t o) const {
+    for (auto s : g_.initial_states())
+      if (ts_.observe(g_.states().at(s), o)) return true;
+    return on_fields(g_.entered_initially(), o);
   }
   Set stuck() const {
     Set r(n_, 0);
@@ -217,6 +246,13 @@ class ExplicitSpace {
   std::string note_limit(const LimitReached& e) const { return e.what(); }
 
  private:
+  /// Observable o on the situation whose only non-zero fields are the (one-bit) `fields`.
+  bool on_fields(std::span<const std::uint32_t> fields, std::uint32_t o) const {
+    if (fields.empty()) return false;
+    std::vector<semantics::StateWord> x(ts_.layout().words(), 0);
+    for (auto f : fields) ts_.layout().set(x, f, 1);
+    return ts_.observe(x, o) != 0;
+  }
   std::uint32_t first_of(const Set& a) const {
     for (std::uint32_t s = 0; s < n_; ++s)
       if (a[s]) return s;

@@ -42,6 +42,14 @@ struct StopExploring {
   const char* which;
 };
 
+/// `into` := into ∪ from (both sorted).
+void merge(std::vector<std::uint32_t>& into, std::span<const std::uint32_t> from) {
+  if (from.empty() || std::includes(into.begin(), into.end(), from.begin(), from.end())) return;
+  std::vector<std::uint32_t> merged;
+  std::set_union(into.begin(), into.end(), from.begin(), from.end(), std::back_inserter(merged));
+  into = std::move(merged);
+}
+
 class Collector final : public semantics::SuccessorSink {
  public:
   Collector(StateStore& store, const ExplorationOptions& limits,
@@ -51,6 +59,8 @@ class Collector final : public semantics::SuccessorSink {
   /// Before the successors of a state: `graph_bytes` is what the graph holds besides its store.
   void begin(std::uint64_t graph_bytes) {
     pending.clear();
+    crossed.clear();
+    returned.clear();
     pending_bytes_ = 0;
     graph_bytes_ = graph_bytes;
     ++generation_;
@@ -76,6 +86,7 @@ class Collector final : public semantics::SuccessorSink {
       slot_[index] = static_cast<std::uint32_t>(pending.size());
       pending.push_back({index, {}, {}});
     }
+    merge(crossed, s.entered);
     PendingEdge& e = pending[slot_[index]];
     const auto before = e.condition.memory_bytes();
     e.condition.add(s.condition.cubes);
@@ -91,6 +102,10 @@ class Collector final : public semantics::SuccessorSink {
   }
 
   void anomaly(const semantics::Anomaly& a) override { anomalies.push_back(a); }
+  void returning(const semantics::Successor& s) override {
+    merge(crossed, s.entered);
+    merge(returned, s.fired);
+  }
 
   /// Inside one state's enumeration (the semantics calls it every few thousand valuations): the
   /// valuation bound, and the deadline, which successor() reads only once the state is done.
@@ -114,6 +129,9 @@ class Collector final : public semantics::SuccessorSink {
 
   std::vector<PendingEdge> pending;
   std::vector<semantics::Anomaly> anomalies;
+  /// The state's evolutions: the steps they crossed (Successor::entered), and the transitions
+  /// cleared by those back to the state itself; unions, sorted.
+  std::vector<std::uint32_t> crossed, returned;
   std::uint64_t pending_bytes() const { return pending_bytes_; }
 
  private:
@@ -223,7 +241,11 @@ std::size_t ReachableSituationGraph::memory_bytes() const {
          fired_.capacity() * 4 + parent_edge_.capacity() * 8 + parent_edge_state_.capacity() * 4 +
          depth_.capacity() * 4 + condition_table_.capacity() * 4 +
          condition_hashes_.capacity() * 8 + conditions_.capacity() * sizeof(InputCondition) +
-         condition_bytes_;
+         condition_bytes_ +
+         (crossing_states_.capacity() + crossed_.capacity() + returning_states_.capacity() +
+          returning_fired_.capacity()) *
+             4 +
+         (crossed_offsets_.capacity() + returning_offsets_.capacity()) * 8;
 }
 
 ReachableSituationGraph build_reachable_situation_graph(const semantics::TransitionSystem& ts,
@@ -246,6 +268,7 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
       g.limit_ = to_string(stop.which());
     }
     for (auto& a : init.anomalies) g.anomalies_.push_back(std::move(a));
+    g.entered_initially_ = std::move(init.crossed);
     for (auto& p : init.pending) {
       for (auto t : p.fired) g.fired_initially_[t] = true;
       g.initial_.push_back(p.target);
@@ -328,6 +351,18 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
       }
     }
     g.offsets_.push_back(g.targets_.size());
+    if (!collect.crossed.empty()) {
+      g.crossing_states_.push_back(s);
+      g.crossed_.insert(g.crossed_.end(), collect.crossed.begin(), collect.crossed.end());
+      g.crossed_offsets_.push_back(g.crossed_.size());
+    }
+    if (!collect.returned.empty()) {
+      for (auto t : collect.returned) g.fired_somewhere_[t] = true;
+      g.returning_states_.push_back(s);
+      g.returning_fired_.insert(g.returning_fired_.end(), collect.returned.begin(),
+                                collect.returned.end());
+      g.returning_offsets_.push_back(g.returning_fired_.size());
+    }
 
     progress.depth = g.depth_[s];
     if (options.progress && s + 1 >= next_report) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,25 @@ class ReachableSituationGraph {
   /// Transitions cleared while an initial situation stabilised (Grafcet), by TS index.
   const std::vector<bool>& fired_initially() const { return fired_initially_; }
 
+  // Grafcet, what the evolutions crossed (docs/semantics.md 2.5; semantics::Successor::entered):
+  // records for the few states that have any, in state order.
+  /// The states with steps crossed by one of their evolutions (edges, and evolutions back to
+  /// the state itself) and active neither in the state nor at that evolution's end, and, for
+  /// the i-th of them, those steps' layout fields (the union over its evolutions, sorted).
+  const std::vector<std::uint32_t>& crossing_states() const { return crossing_states_; }
+  std::span<const std::uint32_t> crossed(std::size_t i) const {
+    return {crossed_.data() + crossed_offsets_[i], crossed_offsets_[i + 1] - crossed_offsets_[i]};
+  }
+  /// The states with an evolution back to themselves that clears transitions (no edge: 2.1),
+  /// and, for the i-th of them, those transitions (sorted).
+  const std::vector<std::uint32_t>& returning_states() const { return returning_states_; }
+  std::span<const std::uint32_t> returning_fired(std::size_t i) const {
+    return {returning_fired_.data() + returning_offsets_[i],
+            returning_offsets_[i + 1] - returning_offsets_[i]};
+  }
+  /// The step fields active while an initial situation stabilised and not at its end (sorted).
+  const std::vector<std::uint32_t>& entered_initially() const { return entered_initially_; }
+
   const std::vector<semantics::Anomaly>& anomalies() const { return anomalies_; }
 
   /// True when every reachable state was expanded; false when a limit stopped exploration.
@@ -135,6 +155,11 @@ class ReachableSituationGraph {
   std::vector<std::uint32_t> depth_;
   std::vector<bool> fired_somewhere_;
   std::vector<bool> fired_initially_;
+  std::vector<std::uint32_t> crossing_states_, crossed_;
+  std::vector<std::uint64_t> crossed_offsets_{0};
+  std::vector<std::uint32_t> returning_states_, returning_fired_;
+  std::vector<std::uint64_t> returning_offsets_{0};
+  std::vector<std::uint32_t> entered_initially_;
   std::vector<semantics::Anomaly> anomalies_;
   mutable std::vector<std::uint64_t> pred_offsets_, pred_edges_;
   bool complete_ = false;

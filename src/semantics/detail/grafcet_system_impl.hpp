@@ -276,6 +276,7 @@ class GrafcetSystem final : public TransitionSystem {
   struct Result {
     std::vector<StateWord> target;
     std::vector<std::uint32_t> fired;
+    std::vector<std::uint32_t> entered;  ///< Successor::entered
     int split = -1;
     Anomaly anomaly;
   };
@@ -324,6 +325,9 @@ class GrafcetSystem final : public TransitionSystem {
   std::vector<GInput> gin_;
   std::vector<GDelay> delays_;
   std::vector<int> enclosing_;  ///< ids of enclosing steps
+  /// The bits of the step fields, and the field of each such bit (Successor::entered).
+  std::vector<StateWord> step_mask_;
+  std::vector<std::uint32_t> step_field_at_bit_;
 
   std::map<std::string, int> var_index_;      ///< upper "POU.NAME" -> vars_
   std::map<std::string, int> input_by_name_;  ///< upper "POU.NAME" -> gin_
