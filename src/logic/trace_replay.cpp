@@ -12,10 +12,12 @@ struct Finder final : semantics::SuccessorSink {
   const std::vector<semantics::StateWord>* target = nullptr;
   const std::vector<std::int64_t>* inputs = nullptr;
   bool found = false;
+  std::vector<std::uint32_t> fired;  ///< of the successor found
   void successor(const semantics::Successor& s) override {
     if (found || !std::equal(s.target.begin(), s.target.end(), target->begin(), target->end()))
       return;
     found = !inputs || s.condition.holds(*inputs);
+    if (found) fired.assign(s.fired.begin(), s.fired.end());
   }
 };
 
@@ -41,6 +43,20 @@ std::optional<std::string> replay_failure(const semantics::TransitionSystem& ts,
       return "row " + std::to_string(k) + ": no successor under its inputs reaches its state";
   }
   return std::nullopt;
+}
+
+void fire_as_replayed(const semantics::TransitionSystem& ts, Trace& trace) {
+  const auto words = ts.layout().words();
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+    const auto& before = trace.steps[k - 1];
+    auto& row = trace.steps[k];
+    if (before.state.size() != words || row.inputs.size() != ts.inputs().size()) continue;
+    Finder next;
+    next.target = &row.state;
+    next.inputs = &row.inputs;
+    ts.successors(before.state, next);
+    if (next.found) row.fired = std::move(next.fired);
+  }
 }
 
 }  // namespace sfcv::logic

@@ -18,4 +18,14 @@ namespace sfcv::logic {
 std::optional<std::string> replay_failure(const semantics::TransitionSystem& ts,
                                           const Trace& trace);
 
+/// Sets the fired transitions of each row after the first to those of the successor that the
+/// row's inputs take from the row before to the row's state: the transitions `sfcv simulate`
+/// lists for that row. An engine whose graph keeps one edge per pair of states (the explicit
+/// RSG merges their conditions and unions their fired sets, docs/semantics.md 2.1) would
+/// otherwise list transitions that only another valuation of the edge clears (issue 53: with
+/// `--multi-input-change`, c rising from {1,21} kept the situation's steps with nothing cleared
+/// while a valuation where X21 -> X22 -> X23 -> X21 cycle transiently reached the same node).
+/// A row that no successor explains is left as it is (replay_failure reports it).
+void fire_as_replayed(const semantics::TransitionSystem& ts, Trace& trace);
+
 }  // namespace sfcv::logic
