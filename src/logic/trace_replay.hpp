@@ -28,4 +28,14 @@ std::optional<std::string> replay_failure(const semantics::TransitionSystem& ts,
 /// A row that no successor explains is left as it is (replay_failure reports it).
 void fire_as_replayed(const semantics::TransitionSystem& ts, Trace& trace);
 
+/// Keeps each input of each row after the first at the row before's value wherever a successor
+/// from the row before's state to the row's state still takes the valuation so changed, then
+/// lists the transitions that the final valuation clears (fire_as_replayed). An engine that reads
+/// a row's valuation off a model (the SAT engines) may move an input within values the system
+/// does not tell apart (an integer input inside one region, docs/semantics.md 2.9) together with
+/// the input the event changes: two inputs changing in one row, which `sfcv simulate` refuses
+/// under the single-input-change hypothesis (issue 53: bmc on random grafcet 153, b falling
+/// while n went from 9 to 7 inside its region n >= 5).
+void minimise_input_changes(const semantics::TransitionSystem& ts, Trace& trace);
+
 }  // namespace sfcv::logic
