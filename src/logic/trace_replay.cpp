@@ -12,10 +12,22 @@ struct Finder final : semantics::SuccessorSink {
   const std::vector<semantics::StateWord>* target = nullptr;
   const std::vector<std::int64_t>* inputs = nullptr;
   bool found = false;
+  std::vector<std::uint32_t> fired;  ///< of the successor found
   void successor(const semantics::Successor& s) override {
     if (found || !std::equal(s.target.begin(), s.target.end(), target->begin(), target->end()))
       return;
     found = !inputs || s.condition.holds(*inputs);
+    if (found) fired.assign(s.fired.begin(), s.fired.end());
+  }
+};
+
+/// The conditions and fired sets of every successor that reaches `target`.
+struct Collect final : semantics::SuccessorSink {
+  const std::vector<semantics::StateWord>* target = nullptr;
+  std::vector<std::pair<semantics::InputCondition, std::vector<std::uint32_t>>> found;
+  void successor(const semantics::Successor& s) override {
+    if (std::equal(s.target.begin(), s.target.end(), target->begin(), target->end()))
+      found.emplace_back(s.condition, std::vector<std::uint32_t>(s.fired.begin(), s.fired.end()));
   }
 };
 
@@ -41,6 +53,46 @@ std::optional<std::string> replay_failure(const semantics::TransitionSystem& ts,
       return "row " + std::to_string(k) + ": no successor under its inputs reaches its state";
   }
   return std::nullopt;
+}
+
+void fire_as_replayed(const semantics::TransitionSystem& ts, Trace& trace) {
+  const auto words = ts.layout().words();
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+    const auto& before = trace.steps[k - 1];
+    auto& row = trace.steps[k];
+    if (before.state.size() != words || row.inputs.size() != ts.inputs().size()) continue;
+    Finder next;
+    next.target = &row.state;
+    next.inputs = &row.inputs;
+    ts.successors(before.state, next);
+    if (next.found) row.fired = std::move(next.fired);
+  }
+}
+
+void minimise_input_changes(const semantics::TransitionSystem& ts, Trace& trace) {
+  const auto words = ts.layout().words();
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+    const auto& before = trace.steps[k - 1];
+    auto& row = trace.steps[k];
+    if (before.state.size() != words || row.inputs.size() != ts.inputs().size() ||
+        before.inputs.size() != row.inputs.size())
+      continue;
+    Collect next;
+    next.target = &row.state;
+    ts.successors(before.state, next);
+    const auto reaches = [&](const std::vector<std::int64_t>& v) {
+      return std::find_if(next.found.begin(), next.found.end(),
+                          [&](const auto& c) { return c.first.holds(v); });
+    };
+    if (reaches(row.inputs) == next.found.end()) continue;  // replay_failure reports it
+    for (std::size_t i = 0; i < row.inputs.size(); ++i) {
+      if (row.inputs[i] == before.inputs[i]) continue;
+      auto kept = row.inputs;
+      kept[i] = before.inputs[i];
+      if (reaches(kept) != next.found.end()) row.inputs = std::move(kept);
+    }
+    row.fired = reaches(row.inputs)->second;
+  }
 }
 
 }  // namespace sfcv::logic

@@ -24,8 +24,10 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
+#include "io/g7_writer.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
+#include "logic/trace_replay.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
@@ -135,7 +137,12 @@ std::optional<bool> evaluate(const semantics::TransitionSystem& ts, const logic:
 /// Replays the trace's rows as `sfcv simulate` reads them: every row reaches the trace's
 /// situation with the trace's fired transitions.
 void expect_rows_replay(const Chart& c, const logic::Trace& trace) {
-  ASSERT_FALSE(trace.steps.empty());
+  // Failures here are not fatal: a long run (REPLAY_GRAFCET_SEEDS=300) lists every trace that
+  // does not replay instead of stopping at the first.
+  if (trace.steps.empty()) {
+    ADD_FAILURE() << "a trace without rows";
+    return;
+  }
   semantics::SimulationResult run;
   std::vector<std::vector<std::int64_t>> rows;
   if (c.grafcet) {
@@ -143,16 +150,42 @@ void expect_rows_replay(const Chart& c, const logic::Trace& trace) {
     for (const auto& s : trace.steps) rows.push_back(s.inputs);
     run = semantics::simulate_events(*c.ts, rows, c.single);
   } else {
-    ASSERT_EQ(semantics::first_initial_state(*c.ts), trace.steps.front().state);
+    if (semantics::first_initial_state(*c.ts) != trace.steps.front().state) {
+      ADD_FAILURE() << "the first row is not the initial configuration";
+      return;
+    }
     for (std::size_t k = 1; k < trace.steps.size(); ++k) rows.push_back(trace.steps[k].inputs);
     run = semantics::simulate(*c.ts, trace.steps.front().state, rows);
   }
-  ASSERT_TRUE(run.ok) << "row " << run.failed_cycle << ": " << run.error;
-  ASSERT_EQ(run.states.size(), trace.steps.size());
+  // On a failure, the grafcet and the trace's rows, to reproduce it with `sfcv simulate`.
+  const auto dump = [&] {
+    if (!c.grafcet) return std::string();
+    std::string out = "\n";
+    try {
+      out += io::write_g7(c.project);
+    } catch (const std::exception& e) {
+      out += std::string("(no .g7: ") + e.what() + ")\n";
+    }
+    for (const auto& in : c.ts->inputs()) out += in.name + ",";
+    out += "\n";
+    for (const auto& s : trace.steps) {
+      for (auto v : s.inputs) out += std::to_string(v) + ",";
+      out += " state";
+      for (auto w : s.state) out += " " + std::to_string(w);
+      out += " fired";
+      for (auto t : s.fired) out += " " + c.ts->transitions()[t].name;
+      out += "\n";
+    }
+    return out;
+  };
+  if (!run.ok || run.states.size() != trace.steps.size()) {
+    ADD_FAILURE() << "row " << run.failed_cycle << ": " << run.error << dump();
+    return;
+  }
   for (std::size_t k = 0; k < trace.steps.size(); ++k) {
     EXPECT_EQ(run.states[k], trace.steps[k].state) << "row " << k;
     if (k > 0) {
-      EXPECT_EQ(run.fired[k - 1], trace.steps[k].fired) << "row " << k;
+      EXPECT_EQ(run.fired[k - 1], trace.steps[k].fired) << "row " << k << dump();
     }
   }
 }
@@ -172,7 +205,6 @@ void replay_all(const Chart& c, const logic::CheckTask& task, const logic::Check
     if (!r.trace) continue;
     SCOPED_TRACE(r.name + " " + r.formula);
     expect_rows_replay(c, *r.trace);
-    if (testing::Test::HasFatalFailure()) return;
     ++count.traces;
     if (i >= task.properties.size()) continue;  // a standard check
     const auto& f = *task.properties[i].formula;
@@ -249,8 +281,152 @@ void check_chart(const Chart& c, std::uint64_t seed, Tally& tally) {
   }
 }
 
+Chart g7_chart(const char* text, bool single) {
+  Chart c;
+  c.grafcet = true;
+  c.single = single;
+  auto loaded = io::load_g7(text, "hand.g7");
+  EXPECT_TRUE(loaded.ok());
+  c.project = std::move(*loaded.project);
+  semantics::GrafcetOptions o;
+  o.single_input_change = single;
+  model::Diagnostics d;
+  c.ts = semantics::make_grafcet_system(c.project, o, d);
+  EXPECT_TRUE(c.ts) << (d.empty() ? "" : d.front().str());
+  return c;
+}
+
+std::uint32_t transition_named(const semantics::TransitionSystem& ts, const std::string& name) {
+  for (std::uint32_t t = 0; t < ts.transitions().size(); ++t)
+    if (ts.transitions()[t].name.find(name) != std::string::npos) return t;
+  ADD_FAILURE() << "no transition " << name;
+  return 0;
+}
+
+// docs/semantics.md 2.15: a trace row lists the transitions that its own inputs clear, the ones
+// `sfcv simulate` lists for it. Under --multi-input-change, from {1,20} with a and b false, a
+// rising reaches the node {3,20} (a memorised) whether b is true (20 -> 21 -> 20 is crossed
+// transiently: transitions 1, 2 and 3 fire) or false (only 1 fires). The explicit RSG keeps one
+// edge per pair of nodes with the union of the fired sets, and its witness of EF X3 listed 1, 2
+// and 3 for the row a = 1, b = 0 (issue 53: random grafcets 31 and 85, --multi-input-change).
+TEST(EveryTraceReplays, ExplicitGrafcetRowListsWhatItsOwnInputsClear) {
+  const char* text =
+      "project p;\ninput a;\ninput b;\n"
+      "grafcet G1 { step 1 initial; step 3; transition 1: 1 -> 3 when RE a; }\n"
+      "grafcet G2 { step 20 initial; step 21; transition 2: 20 -> 21 when RE a & b;\n"
+      "  transition 3: 21 -> 20 when 1; }\n";
+  const auto c = g7_chart(text, false);
+  ASSERT_TRUE(c.ts);
+  const auto t1 = transition_named(*c.ts, "1"), t2 = transition_named(*c.ts, "2"),
+             t3 = transition_named(*c.ts, "3");
+  auto task = test::task_for(c.project, *c.ts, {"EF X3"}, {});
+  const auto report = make_explicit_model_checker()->check(task);
+  ASSERT_EQ(report.results.size(), 1U);
+  ASSERT_EQ(report.results[0].verdict, Verdict::Holds);
+  ASSERT_TRUE(report.results[0].trace);
+  const auto& trace = *report.results[0].trace;
+  expect_rows_replay(c, trace);
+  const auto a = 0U, b = 1U;  // inputs in declaration order
+  ASSERT_EQ(c.ts->inputs()[a].name, "a");
+  ASSERT_EQ(c.ts->inputs()[b].name, "b");
+  bool entered = false;
+  for (std::size_t k = 1; k < trace.steps.size(); ++k) {
+    const auto& row = trace.steps[k];
+    if (trace.steps[k - 1].inputs[a] != 0 || row.inputs[a] != 1) continue;  // not a rise of a
+    entered = true;
+    const std::vector<std::uint32_t> expected =
+        row.inputs[b] ? std::vector<std::uint32_t>{t1, t2, t3} : std::vector<std::uint32_t>{t1};
+    EXPECT_EQ(row.fired, expected) << "row " << k << ", b = " << row.inputs[b];
+  }
+  EXPECT_TRUE(entered) << "the witness does not go through a rise of a";
+}
+
+std::size_t input_named(const semantics::TransitionSystem& ts, const std::string& name) {
+  for (std::size_t i = 0; i < ts.inputs().size(); ++i)
+    if (ts.inputs()[i].name == name) return i;
+  ADD_FAILURE() << "no input " << name;
+  return 0;
+}
+
+// docs/semantics.md 2.9 and 2.15: under the single-input-change hypothesis a trace row differs
+// from the row before in one input; an integer input compared only with constants is kept as
+// its region, so a value moving inside its region is no event of the RSG, yet a row that moves
+// it while another input changes is two changes for `sfcv simulate`. With n : 0..9 read only
+// as n >= 5 and `1 --n >= 5--> 2 --↑b--> 3`, the rows (b, n) = (0, 0) (0, 9) (1, 7) reach
+// {1} {2} {3} but change b and n at once in the last row; minimise_input_changes keeps n at 9
+// there (the bmc engine wrote such a row: issue 53, random grafcet 153).
+const char* kRegionChart =
+    "project p;\ninput b;\ninput n : 0..9;\n"
+    "grafcet G { step 1 initial; step 2; step 3; transition 1: 1 -> 2 when n >= 5;\n"
+    "  transition 2: 2 -> 3 when RE b; transition 3: 3 -> 1 when !b; }\n";
+
+TEST(EveryTraceReplays, RowKeepsAnIntegerInputInsideItsRegionWhileAnotherChanges) {
+  const auto c = g7_chart(kRegionChart, true);
+  ASSERT_TRUE(c.ts);
+  const auto b = input_named(*c.ts, "b"), n = input_named(*c.ts, "n");
+  auto row = [&](std::int64_t bv, std::int64_t nv) {
+    std::vector<std::int64_t> v(c.ts->inputs().size(), 0);
+    v[b] = bv;
+    v[n] = nv;
+    return v;
+  };
+  const std::vector<std::vector<std::int64_t>> one_event = {row(0, 0), row(0, 9), row(1, 9)};
+  const auto run = semantics::simulate_events(*c.ts, one_event, true);
+  ASSERT_TRUE(run.ok) << run.error;
+  logic::Trace trace;
+  for (std::size_t k = 0; k < one_event.size(); ++k)
+    trace.steps.push_back(
+        {one_event[k], run.states[k], k ? run.fired[k - 1] : std::vector<std::uint32_t>{}});
+  trace.steps[2].inputs = row(1, 7);  // the same region of n, the same situation {3}
+  std::vector<std::vector<std::int64_t>> rows;
+  for (const auto& s : trace.steps) rows.push_back(s.inputs);
+  EXPECT_FALSE(semantics::simulate_events(*c.ts, rows, true).ok) << "b and n change at once";
+  logic::minimise_input_changes(*c.ts, trace);
+  EXPECT_EQ(trace.steps[2].inputs, row(1, 9));
+  EXPECT_EQ(trace.steps[1].inputs, row(0, 9)) << "n must leave its region to reach {2}";
+  expect_rows_replay(c, trace);
+}
+
+// The same chart on every engine: each row after the first changes one input (2.15). Whether a
+// SAT model moves n inside its region is the solver's choice; the test above is the
+// deterministic one.
+TEST(EveryTraceReplays, GrafcetRowsChangeOneInputOnEveryEngine) {
+  const auto c = g7_chart(kRegionChart, true);
+  ASSERT_TRUE(c.ts);
+  auto task = test::task_for(c.project, *c.ts, {"AG !X3", "AG !(X3 & n >= 5)"}, {});
+  std::vector<std::pair<std::string, std::unique_ptr<ModelChecker>>> engines;
+  engines.emplace_back("explicit", make_explicit_model_checker());
+  engines.emplace_back("bdd", make_bdd_model_checker());
+  for (auto [name, algorithm] :
+       {std::pair{"bmc", SatAlgorithm::Bmc}, std::pair{"kind", SatAlgorithm::KInduction},
+        std::pair{"ic3", SatAlgorithm::Ic3}}) {
+    SatEngineOptions options;
+    options.algorithm = algorithm;
+    options.max_depth = 12;
+    engines.emplace_back(name, make_sat_model_checker(options));
+  }
+  for (const auto& [name, engine] : engines) {
+    SCOPED_TRACE(name);
+    const auto report = engine->check(task);
+    ASSERT_EQ(report.results.size(), 2U);
+    for (const auto& r : report.results) {
+      ASSERT_TRUE(r.trace) << r.formula;
+      EXPECT_GE(r.trace->steps.size(), 2U) << r.formula;  // b rises at least
+      expect_rows_replay(c, *r.trace);
+      for (std::size_t k = 1; k < r.trace->steps.size(); ++k) {
+        int changed = 0;
+        for (std::size_t i = 0; i < c.ts->inputs().size(); ++i)
+          changed += !c.ts->inputs()[i].pseudo &&
+                     r.trace->steps[k].inputs[i] != r.trace->steps[k - 1].inputs[i];
+        EXPECT_EQ(changed, 1) << r.formula << " row " << k;
+      }
+    }
+  }
+}
+
 // REPLAY_SEEDS=N runs N IEC charts and N grafcets (each under both hypotheses) instead of CI's
-// 12 and 16, REPLAY_FIRST=K from seed K (docs/exports.md records a run with 500).
+// 12 and 16, REPLAY_FIRST=K from seed K (docs/exports.md records a run with 500);
+// REPLAY_IEC_SEEDS and REPLAY_GRAFCET_SEEDS set one kind's count (0: none of that kind).
 std::uint64_t env_or(const char* name, std::uint64_t fallback) {
   const char* v = std::getenv(name);
   return v && *v ? std::stoull(v) : fallback;
@@ -260,8 +436,8 @@ TEST(EveryTraceReplays, EveryEngineOnRandomChartsAndGrafcets) {
   const auto start = std::chrono::steady_clock::now();
   Tally tally;
   const auto first = env_or("REPLAY_FIRST", 1);
-  const auto iec_last = first - 1 + env_or("REPLAY_SEEDS", 12);
-  const auto grafcet_last = first - 1 + env_or("REPLAY_SEEDS", 16);
+  const auto iec_last = first - 1 + env_or("REPLAY_IEC_SEEDS", env_or("REPLAY_SEEDS", 12));
+  const auto grafcet_last = first - 1 + env_or("REPLAY_GRAFCET_SEEDS", env_or("REPLAY_SEEDS", 16));
   for (std::uint64_t seed = first; seed <= iec_last; ++seed) {
     SCOPED_TRACE("iec seed " + std::to_string(seed));
     const auto c = iec_chart(seed);
@@ -287,6 +463,7 @@ TEST(EveryTraceReplays, EveryEngineOnRandomChartsAndGrafcets) {
     total += n.traces;
   }
   for (const std::string kind : {"iec", "grafcet", "grafcet --multi-input-change"}) {
+    if ((kind == "iec" ? iec_last : grafcet_last) < first) continue;  // none of that kind run
     for (const std::string engine : {"explicit", "bdd", "bmc", "kind", "ic3", "auto"}) {
       const auto& n = tally[engine + " / " + kind];
       EXPECT_GE(n.traces, 20) << engine << " / " << kind;
@@ -294,8 +471,12 @@ TEST(EveryTraceReplays, EveryEngineOnRandomChartsAndGrafcets) {
     }
     EXPECT_GE(tally["explicit LTL / " + kind].traces, 5) << kind;
   }
-  EXPECT_GE(tally["bdd LTL / iec"].traces, 5);
-  EXPECT_GE(total, 800);
+  if (iec_last >= first) {
+    EXPECT_GE(tally["bdd LTL / iec"].traces, 5);
+  }
+  if (iec_last >= first && grafcet_last >= first) {
+    EXPECT_GE(total, 800);
+  }
   std::cout << "[ replayed ] " << total << " traces in "
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
             << " s\n";

@@ -9,6 +9,7 @@
 #include "engine/explicit/ltl_checker.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "logic/trace_replay.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine {
@@ -67,6 +68,16 @@ logic::Coverage measure_coverage(const ReachableSituationGraph& graph) {
   return c;
 }
 
+/// A Grafcet trace row lists what its own inputs clear, as `sfcv simulate` does: an edge of the
+/// graph carries the union of the fired sets of every valuation between its two nodes
+/// (logic::fire_as_replayed).
+logic::CheckReport fired_as_replayed(const logic::CheckTask& task, logic::CheckReport report) {
+  if (task.system->kind() != semantics::SemanticsKind::Grafcet) return report;
+  for (auto& r : report.results)
+    if (r.trace) logic::fire_as_replayed(*task.system, *r.trace);
+  return report;
+}
+
 }  // namespace
 
 logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) const {
@@ -82,7 +93,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
       // process table): the request is capped at the cores available.
       const unsigned cores = std::max(1U, std::thread::hardware_concurrency());
       const unsigned threads = options_.threads > 0 ? std::min(options_.threads, cores) : cores;
-      return check_invariants(task, compiled.get(), threads);
+      return fired_as_replayed(task, check_invariants(task, compiled.get(), threads));
     } catch (const LimitReached& stop) {
       auto report = all_unknown(task, stop);
       report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -150,6 +161,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   }
   for (auto& r : run_standard_checks(graph, checker, task)) report.results.push_back(std::move(r));
   if (task.coverage) report.coverage = measure_coverage(graph);
+  report = fired_as_replayed(task, std::move(report));
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return report;
 }

@@ -18,6 +18,7 @@
 #include "logic/circuit_atom.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
+#include "logic/trace_replay.hpp"
 #include "model/names.hpp"
 #include "semantics/grafcet_circuit.hpp"
 #include "semantics/iec61131_circuit.hpp"
@@ -767,6 +768,9 @@ class Run {
     }
     if (t.steps.empty())
       throw std::logic_error("sat engine: a Grafcet run without a stable situation");
+    // The model's values of an integer input may move inside its region while another input
+    // changes: one event per row, as `sfcv simulate` reads it (docs/semantics.md 2.15).
+    logic::minimise_input_changes(ts_, t);
     return t;
   }
 
