@@ -112,9 +112,10 @@ class Run {
   /// interrupted: the pair relation may be far larger than the reached set (an ST loop unrolled
   /// 900 times: one and_exist ran 2.8 s past --timeout 10 in --engine auto's race, and the
   /// backstop ended the run without its report). Under a deadline they are counted only while
-  /// at least the time this run has taken is left.
+  /// a quarter of the time this run has taken is left (a count costs about one image, and a
+  /// long exploration under a generous limit keeps its count).
   bool time_for_edges(Clock::time_point start) const {
-    return !task_.limits.deadline || task_.limits.seconds_left() > since(start);
+    return !task_.limits.deadline || 4 * task_.limits.seconds_left() > since(start);
   }
 
   template <class F>
