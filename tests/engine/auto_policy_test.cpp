@@ -4,12 +4,13 @@
 // the probe's forecast that hands a hopeless exploration over before its deadline; and the
 // estimate itself (GrafcetSystem::estimate_initial_states) against the enumeration it forecasts.
 
+#include "engine/auto_policy.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "engine/auto_policy.hpp"
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "io/load.hpp"
 #include "semantics/grafcet_system.hpp"
