@@ -5,6 +5,7 @@
 // evaluator). Header only: engine/query and engine/portfolio both read it.
 
 #include <cstdint>
+#include <optional>
 
 #include "model/budget.hpp"
 
@@ -39,6 +40,40 @@ inline AutoProbe auto_probe(const model::Budget& budget,
                             std::uint64_t probe_states = kAutoProbeStates) {
   if (budget.max_states > 0 && budget.max_states <= probe_states) return {budget.max_states, true};
   return {probe_states, false};
+}
+
+/// A Grafcet whose initial situations are estimated (TransitionSystem::estimate_initial_states,
+/// before any engine runs) at more than this many times the probe's state bound skips the probe:
+/// the probe would spend its share enumerating initial situations and stop at its bound before
+/// expanding any (AGRAFE's production-system grafcets: hundreds of thousands; corpus 22: 524 799).
+/// A factor above 1 because the estimate is a sample mean.
+inline constexpr double kAutoSkipProbeFactor = 2.0;
+
+/// Which engines `--engine auto` starts with.
+enum class AutoStart {
+  Probe,  ///< the explicit probe, then (if it hands over) the race
+  Race,   ///< the bdd, ic3 and bmc race at once: the probe could not finish
+};
+
+/// auto's first choice from what is known of the model before any engine runs: the probe,
+/// unless the estimated initial states alone are past its bound (and the bound is auto's own:
+/// under the user's --max-states the probe is the only engine).
+inline AutoStart auto_start(const AutoProbe& probe, std::optional<double> initial_states) {
+  if (probe.user_bound || !initial_states) return AutoStart::Probe;
+  return *initial_states > kAutoSkipProbeFactor * static_cast<double>(probe.max_states)
+             ? AutoStart::Race
+             : AutoStart::Probe;
+}
+
+/// The probe's forecast (ExplorationOptions::forecast): `expanded` states took `spent` seconds,
+/// `found - expanded` wait; at that rate they alone need more than the `left` seconds of the
+/// probe's share, so the probe cannot finish and hands over now rather than at its deadline.
+/// Only once the rate is measured (32 states and a tenth of a second).
+inline bool exploration_cannot_finish(std::uint64_t expanded, std::uint64_t found, double spent,
+                                      double left) {
+  if (expanded < 32 || spent < 0.1 || found <= expanded) return false;
+  const double waiting = static_cast<double>(found - expanded);
+  return waiting * (spent / static_cast<double>(expanded)) > left;
 }
 
 }  // namespace sfcv::engine

@@ -800,6 +800,45 @@ void GrafcetSystem::initial_states(SuccessorSink& sink) const {
   explore(initial_template_, p, true, sink, nullptr);
 }
 
+/// Knuth's estimate of the leaves of the tree initial_states() walks (each leaf one initial
+/// situation, or an anomaly): random descents from the root, each multiplying the branching
+/// factors it meets; their mean is an unbiased estimate of the leaf count. A fixed seed keeps
+/// it deterministic; the cost is kSamples descents of at most one split per input.
+std::optional<double> GrafcetSystem::estimate_initial_states() const {
+  constexpr int kSamples = 64;
+  std::uint64_t seed = 0x9E3779B97F4A7C15ULL;
+  auto next = [&seed] {
+    seed ^= seed << 13;
+    seed ^= seed >> 7;
+    seed ^= seed << 17;
+    return seed;
+  };
+  Partial root;
+  root.val.assign(gin_.size(), 0);
+  root.known.assign(gin_.size(), 0);
+  for (std::size_t i = 0; i < gin_.size(); ++i)
+    if (gin_[i].pseudo) root.known[i] = 1;
+  double total = 0;
+  Result r;
+  for (int k = 0; k < kSamples; ++k) {
+    Partial p = root;
+    double weight = 1;
+    // At most one split per input: a descent ends at a leaf within gin_.size() + 1 evolutions.
+    for (std::size_t guard = 0; guard <= gin_.size(); ++guard) {
+      r.split = -1;
+      if (evolve(initial_template_, p, true, r) != Status::Split) break;
+      r.anomaly = {};
+      const auto i = static_cast<std::size_t>(r.split);
+      const auto n = gin_[i].regions();
+      weight *= static_cast<double>(n);
+      p.known[i] = 1;
+      p.val[i] = static_cast<std::int64_t>(next() % static_cast<std::uint64_t>(n));
+    }
+    total += weight;
+  }
+  return total / kSamples;
+}
+
 void GrafcetSystem::successors(StateView stored_state, SuccessorSink& sink) const {
   // The sink may store new states and move the memory `stored_state` points into: work on a copy.
   const std::vector<StateWord> copy(stored_state.begin(), stored_state.end());

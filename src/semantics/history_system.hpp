@@ -52,6 +52,9 @@ class HistorySystem final : public TransitionSystem {
   // The base layout's fields keep their indices here (the history fields come after).
   std::vector<MixedVariable> mixed_variables() const override { return base_.mixed_variables(); }
   void initial_states(SuccessorSink& sink) const override;
+  std::optional<double> estimate_initial_states() const override {
+    return base_.estimate_initial_states();
+  }
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;
   std::string describe(StateView state) const override;

@@ -116,6 +116,11 @@ class TransitionSystem {
 
   /// The initial states, each with the condition on the initial inputs that yields it.
   virtual void initial_states(SuccessorSink& sink) const = 0;
+  /// An estimate of how many initial states initial_states() would enumerate, computed without
+  /// enumerating them (a Grafcet's initial situations split on the initial inputs, up to
+  /// millions); nullopt when the system does not estimate (few initial states). Deterministic.
+  /// Only a forecast for choosing an engine (--engine auto), never used for a verdict.
+  virtual std::optional<double> estimate_initial_states() const { return std::nullopt; }
   /// Every successor of `state`; the conditions of the successors partition the input
   /// valuations allowed by the assumptions (several may hold at once only when the semantics is
   /// nondeterministic, e.g. conflicts with no priority order).

@@ -106,6 +106,7 @@ logic::CheckReport ExplicitModelChecker::check(const logic::CheckTask& task) con
   opts.cancel = task.limits.cancel.get();
   opts.max_memory_bytes = task.limits.max_memory_bytes;
   opts.max_valuations = task.limits.max_valuations;
+  opts.forecast = options_.forecast;
   if (task.limits.progress) {
     opts.progress_interval = 4096;
     opts.progress = [cb = task.limits.progress](const ExplorationProgress& p) {

@@ -14,6 +14,9 @@ struct ExplicitEngineOptions {
   /// Threads generating successors in the on-the-fly invariant search (the only phase that
   /// runs in parallel; 0: one per core). Results do not depend on it.
   unsigned threads = 1;
+  /// Under a deadline, stop exploring once the states waiting cannot be expanded in the time
+  /// left (ExplorationOptions::forecast): set for the probe of --engine auto only.
+  bool forecast = false;
 };
 
 class ExplicitModelChecker final : public ModelChecker {

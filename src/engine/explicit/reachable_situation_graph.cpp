@@ -4,6 +4,7 @@
 #include <chrono>
 #include <unordered_map>
 
+#include "engine/auto_policy.hpp"
 #include "model/errors.hpp"
 
 namespace sfcv::engine {
@@ -286,7 +287,16 @@ ReachableSituationGraph build_reachable_situation_graph(const semantics::Transit
   std::uint64_t next_report = options.progress_interval;
   g.complete_ = g.limit_.empty();
   const std::uint32_t poll_mask = clock_poll_mask(ts.layout().words());
+  const auto expand_start = Clock::now();
   for (std::uint32_t s = 0; g.complete_ && s < g.states_.size(); ++s) {
+    if (options.forecast && options.deadline && (s & 15U) == 0 &&
+        exploration_cannot_finish(
+            s, g.states_.size(), std::chrono::duration<double>(Clock::now() - expand_start).count(),
+            std::chrono::duration<double>(*options.deadline - Clock::now()).count())) {
+      g.limit_ = "time";
+      g.complete_ = false;
+      break;
+    }
     if ((s & poll_mask) == 0) {
       if ((options.timeout_seconds > 0 && elapsed() > options.timeout_seconds) ||
           (options.deadline && Clock::now() > *options.deadline) ||

@@ -38,6 +38,10 @@ struct ExplorationOptions {
   /// model::Budget::max_valuations: input valuations one state's successors may take (0 =
   /// unlimited); past it the state stays unexpanded and the limit is "valuations".
   std::uint64_t max_valuations = 0;
+  /// With a deadline: stop (limit "time") as soon as the states found but not yet expanded
+  /// would take longer than the time left at the rate measured so far, so that an exploration
+  /// that cannot finish hands over early (the probe of --engine auto) instead of at its deadline.
+  bool forecast = false;
   bool keep_conditions = true;  ///< store each edge's input condition (RSG listing, traces)
   bool keep_fired = true;       ///< store each edge's fired transitions
   /// Called about every `progress_interval` states; may be empty.

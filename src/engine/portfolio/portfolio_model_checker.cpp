@@ -114,6 +114,7 @@ class PortfolioModelChecker final : public ModelChecker {
   explicit PortfolioModelChecker(PortfolioOptions options)
       : options_(std::move(options)),
         explicit_(make_explicit_model_checker(options_.explicit_engine)),
+        probe_(make_explicit_model_checker(probe_options(options_.explicit_engine))),
         bdd_(make_bdd_model_checker(options_.bdd)),
         ic3_(make_sat_model_checker({SatAlgorithm::Ic3, 200})),
         bmc_(make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}
@@ -140,11 +141,17 @@ class PortfolioModelChecker final : public ModelChecker {
       return report;
     }
     std::optional<CheckReport> probe;
+    const auto policy = auto_probe(task.limits, options_.probe_states);
+    const auto initial_states = estimate_initial_states(task);
     if (options_.probe_states == 0) {
       note("the bdd, ic3 and bmc engines race (no explicit probe)");
+    } else if (auto_start(policy, initial_states) == AutoStart::Race) {
+      note("about " + count_text(*initial_states) +
+           " initial situations (estimated), more than the explicit probe's " +
+           std::to_string(policy.max_states) +
+           " states: the bdd, ic3 and bmc engines race (no explicit probe)");
     } else if (explicit_->can_handle(task, &why)) {
       logic::CheckTask bounded = task;
-      const auto policy = auto_probe(task.limits, options_.probe_states);
       bounded.limits.max_states = policy.max_states;
       // Too wide: a state whose successors take more input valuations than the probe may
       // enumerate stops it at once. Too slow: under --timeout the probe has a share of the time
@@ -157,7 +164,7 @@ class PortfolioModelChecker final : public ModelChecker {
         bounded.limits.deadline = Clock::now() + share;
         probe_deadline = bounded.limits.deadline < task.limits.deadline;
       }
-      probe = explicit_->check(bounded);
+      probe = probe_->check(bounded);
       const bool too_many = probe->limit == to_string(Limit::States) && !policy.user_bound;
       const bool not_enumerable = probe->limit == to_string(Limit::Enumeration);
       const bool too_wide = probe->limit == to_string(Limit::Valuations);
@@ -165,9 +172,11 @@ class PortfolioModelChecker final : public ModelChecker {
       for (const auto& r : probe->results) all_decided = all_decided && decided(r);
       // Its share spent, in the exploration or in the checks after it (both read its deadline),
       // with time left in the run.
+      // Or foreseen: the probe stops on "time" before its deadline when the states waiting
+      // cannot be expanded in the rest of its share (ExplorationOptions::forecast).
       const bool too_slow = probe_deadline && !all_decided && !task.limits.expired() &&
-                            Clock::now() >= *bounded.limits.deadline &&
-                            (probe->complete || probe->limit == to_string(Limit::Time));
+                            (probe->limit == to_string(Limit::Time) ||
+                             (probe->complete && Clock::now() >= *bounded.limits.deadline));
       if (all_decided || task.limits.expired() ||
           !(too_many || not_enumerable || too_wide || too_slow)) {
         note("using the explicit engine");
@@ -180,8 +189,8 @@ class PortfolioModelChecker final : public ModelChecker {
           : too_wide ? "a state has more than " + std::to_string(options_.probe_valuations) +
                            " input valuations (the explicit probe stopped after " +
                            probe->states.str() + (probe->states == 1 ? " state)" : " states)")
-          : too_slow ? "the explicit engine used its share of the time (" + probe->states.str() +
-                           " states in " + seconds_text(probe->seconds) + ")"
+          : too_slow ? "the explicit engine would not finish in its share of the time (" +
+                           probe->states.str() + " states in " + seconds_text(probe->seconds) + ")"
                      : (probe->results.empty() ? std::string("the explicit engine cannot enumerate")
                                                : probe->results.front().message);
       note(reason + ": the bdd, ic3 and bmc engines race on the rest");
@@ -194,6 +203,27 @@ class PortfolioModelChecker final : public ModelChecker {
  private:
   void note(const std::string& text) const {
     if (options_.note) options_.note(text);
+  }
+
+  static ExplicitEngineOptions probe_options(ExplicitEngineOptions o) {
+    o.forecast = true;
+    return o;
+  }
+
+  /// The system's estimate of its initial states (a Grafcet's initial situations); none when
+  /// it has none or the estimate meets a limit (then the probe runs as before).
+  static std::optional<double> estimate_initial_states(const logic::CheckTask& task) {
+    try {
+      return task.system ? task.system->estimate_initial_states() : std::nullopt;
+    } catch (const LimitReached&) {
+      return std::nullopt;
+    }
+  }
+
+  static std::string count_text(double n) {
+    char text[32];
+    std::snprintf(text, sizeof text, n < 1e7 ? "%.0f" : "%.2g", n);
+    return text;
   }
 
   bool bdd_can(const logic::CheckTask& task, std::string* why) const {
@@ -375,7 +405,9 @@ class PortfolioModelChecker final : public ModelChecker {
   /// bound, so that BMC's thread ends on a chart without bugs instead of sharing the two cores
   /// with the engines that prove.
   static constexpr std::uint32_t kBmcDepth = 200;
-  ModelCheckerPtr explicit_, bdd_, ic3_, bmc_;
+  /// explicit_ runs alone when the symbolic engines cannot; probe_ is the same engine with the
+  /// forecast that hands a hopeless exploration over early.
+  ModelCheckerPtr explicit_, probe_, bdd_, ic3_, bmc_;
 };
 
 }  // namespace

@@ -215,6 +215,7 @@ class GrafcetSystem final : public TransitionSystem {
   }
 
   void initial_states(SuccessorSink& sink) const override;
+  std::optional<double> estimate_initial_states() const override;
   void successors(StateView state, SuccessorSink& sink) const override;
   std::int64_t observe(StateView state, std::uint32_t index) const override;
   std::string describe(StateView state) const override;
