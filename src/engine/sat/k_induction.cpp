@@ -16,8 +16,8 @@ class StepCase {
   StepCase(const ReachQuery& q, semantics::AigLit target, Deadline deadline)
       : query_(q),
         target_(target),
-        solver_(deadline),
-        frames_(*q.aig, solver_, false),
+        solver_(deadline, SolverProfile::Deepening),
+        frames_(*q.aig, solver_, false, true),
         cone_(cone_latches(*q.aig, {target, q.step_ok})) {}
 
   /// Is there such a run with n = depth non-target frames followed by a target frame?
@@ -43,8 +43,8 @@ class StepCase {
 }  // namespace
 
 std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions& options) {
-  Solver base(options.deadline);
-  Unrolling frames(*query.aig, base, true);
+  Solver base(options.deadline, SolverProfile::Deepening);
+  Unrolling frames(*query.aig, base, true, true);
   std::vector<ReachResult> results(query.targets.size());
   std::vector<std::unique_ptr<StepCase>> steps(query.targets.size());
   deepen(query, options, base, frames, results,
