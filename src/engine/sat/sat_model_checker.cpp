@@ -522,9 +522,9 @@ class Run {
         bounds.min_depth = options_.min_depth;
         return sat::bmc(query, bounds);
       case SatAlgorithm::KInduction:
-        out = sat::k_induction(query, bounds);
-        for (std::size_t t = 0; t < out.size(); ++t) recheck(t, out[t]);
-        return out;
+        // Re-checked by k_induction as each proof is found (a re-check here, after the
+        // deadline that ends the deepening, would fail for lack of time).
+        return sat::k_induction(query, bounds);
       case SatAlgorithm::Ic3:
         break;
     }
