@@ -61,7 +61,7 @@ std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions
                steps[t].reset();
                // Re-checked by fresh solvers at once: the deepening goes on for the other
                // targets until the deadline, and a re-check left for after it would lose
-               // every proof (random 80 --seed 1: 61 proofs found, none reported).
+               // every proof (random 80 --seed 1, default checks: 37 proofs found, none reported).
                const auto check = recheck(query, t, r.certificate, options.deadline);
                if (check.ok) {
                  r.kind = ReachResult::Kind::Unreachable;
