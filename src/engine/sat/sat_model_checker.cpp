@@ -499,6 +499,7 @@ class Run {
     query.aig = &engine_aig();
     query.step_ok = step_ok_;
     query.targets = targets_;
+    query.simplify = !machine_;
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
@@ -828,7 +829,7 @@ class Run {
 
   /// One target of `aig` (step_ok: the machine's) by the run's algorithm, its proof re-checked.
   ReachResult reach_one(const Aig& aig, AigLit target) {
-    sat::ReachQuery query{&aig, machine_->step_ok(), {target}};
+    sat::ReachQuery query{&aig, machine_->step_ok(), {target}, false};  // a Grafcet machine
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
