@@ -5,8 +5,8 @@
 namespace sfcv::engine::sat {
 
 std::vector<ReachResult> bmc(const ReachQuery& query, const BoundOptions& options) {
-  Solver solver(options.deadline);
-  Unrolling frames(*query.aig, solver, true);
+  Solver solver(options.deadline, SolverProfile::Deepening);
+  Unrolling frames(*query.aig, solver, true, query.simplify);
   std::vector<ReachResult> results(query.targets.size());
   deepen(
       query, options, solver, frames, results,

@@ -12,7 +12,8 @@
 
 namespace sfcv::engine::sat {
 
-/// What the algorithm did with an open target at depth k, after its base case found no run.
+/// What the algorithm did with an open target at depth k, after its base case found no run
+/// (Decided: reached, unreachable, or left unknown with its `why` set for good).
 enum class DepthStep { Open, Decided, Interrupted };
 
 /// Runs the loop over `results` (one per target of `query`) in `base`/`frames`. `after_base(t,
@@ -43,7 +44,7 @@ void deepen(const ReachQuery& query, const BoundOptions& options, Solver& base, 
     bool interrupted = false;
     for (std::size_t t = 0; t < results.size() && !interrupted; ++t) {
       auto& r = results[t];
-      if (r.kind != ReachResult::Kind::Unknown) continue;
+      if (r.kind != ReachResult::Kind::Unknown || !r.why.empty()) continue;  // decided
       switch (base.solve({frames.literal(query.targets[t], k)})) {
         case SatResult::Sat:
           r.kind = ReachResult::Kind::Reached;

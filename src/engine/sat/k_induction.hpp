@@ -13,7 +13,7 @@
 namespace sfcv::engine::sat {
 
 /// Per target: Reached (a shortest run), Unreachable (a KInduction certificate, already
-/// re-checked by certificate.hpp), or Unknown (bound or deadline).
+/// re-checked by certificate.hpp as soon as it was found), or Unknown (bound or deadline).
 std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions& options);
 
 }  // namespace sfcv::engine::sat

@@ -17,6 +17,11 @@ struct ReachQuery {
   const semantics::Aig* aig = nullptr;
   semantics::AigLit step_ok = semantics::Aig::kTrue;
   std::vector<semantics::AigLit> targets;
+  /// BMC and k-induction: a simplifying unrolling (unrolling.hpp). Off for the Grafcet machine:
+  /// its traces read the inputs of every event frame, and the simplified encoding leaves inputs
+  /// that the folded gates no longer read free in the model (a trace with two inputs changing
+  /// at once, EveryTraceReplays grafcet seed 10).
+  bool simplify = true;
 };
 
 /// A clause over latches: latch index and the value that satisfies the literal.

@@ -500,6 +500,7 @@ class Run {
     query.aig = &engine_aig();
     query.step_ok = step_ok_;
     query.targets = targets_;
+    query.simplify = !machine_;
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
@@ -523,9 +524,9 @@ class Run {
         bounds.min_depth = options_.min_depth;
         return sat::bmc(query, bounds);
       case SatAlgorithm::KInduction:
-        out = sat::k_induction(query, bounds);
-        for (std::size_t t = 0; t < out.size(); ++t) recheck(t, out[t]);
-        return out;
+        // Re-checked by k_induction as each proof is found (a re-check here, after the
+        // deadline that ends the deepening, would fail for lack of time).
+        return sat::k_induction(query, bounds);
       case SatAlgorithm::Ic3:
         break;
     }
@@ -832,7 +833,7 @@ class Run {
 
   /// One target of `aig` (step_ok: the machine's) by the run's algorithm, its proof re-checked.
   ReachResult reach_one(const Aig& aig, AigLit target) {
-    sat::ReachQuery query{&aig, machine_->step_ok(), {target}};
+    sat::ReachQuery query{&aig, machine_->step_ok(), {target}, false};  // a Grafcet machine
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;

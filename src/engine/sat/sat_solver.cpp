@@ -37,6 +37,10 @@ struct Solver::Impl {
       solver.set("reduce", 0);
     }
     if (d.set()) solver.connect_terminator(&terminator);
+    if (profile == SolverProfile::Deepening) {
+      solver.set("reduce", 0);
+      solver.set("shrink", 0);
+    }
   }
   ~Impl() {
     if (deadline.set()) solver.disconnect_terminator();
@@ -59,10 +63,10 @@ int Solver::true_lit() {
   return true_;
 }
 
-void Solver::add_clause(const std::vector<int>& lits) {
-  for (int l : lits) {
-    if (l == 0) throw std::logic_error("sat::Solver::add_clause: literal 0");
-    impl_->solver.add(l);
+void Solver::add_clause(const int* lits, std::size_t size) {
+  for (std::size_t i = 0; i < size; ++i) {
+    if (lits[i] == 0) throw std::logic_error("sat::Solver::add_clause: literal 0");
+    impl_->solver.add(lits[i]);
   }
   impl_->solver.add(0);
 }
