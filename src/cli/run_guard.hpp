@@ -58,7 +58,8 @@ int run_limited(const LimitOptions& options, const std::function<int(const RunGu
 int report_limit(const LimitReached& e);
 
 /// How long past its deadline (or past --memory) a run may go before the backstop ends it:
-/// 2 s + 10 % of the timeout (4x under AddressSanitizer, whose runs are several times slower).
+/// 2 s + 10 % of the timeout (4x under AddressSanitizer, whose runs are several times slower),
+/// in CPU seconds of the process past the deadline (ten times that in wall time).
 double backstop_grace_seconds(double timeout_seconds);
 
 }  // namespace sfcv::cli

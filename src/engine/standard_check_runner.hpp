@@ -549,8 +549,9 @@ class StandardCheckRunner {
     const auto shown = sp_.first(dead, kMaxSituations + 1);
     for (std::size_t i = 0; i < shown.size() && i < kMaxSituations; ++i) {
       const auto& s = shown[i];
-      add(r, "situation " + sp_.describe(s) + " (after " + std::to_string(sp_.depth(s)) +
-                 " evolutions): " +
+      const auto depth = sp_.depth(s);
+      add(r, "situation " + sp_.describe(s) + " (after " + std::to_string(depth) +
+                 (depth == 1 ? " evolution): " : " evolutions): ") +
                  (contains(stuck, s)
                       ? (ts_.kind() == semantics::SemanticsKind::Grafcet
                              ? "no successor at all (no input event leads to an evolution)"

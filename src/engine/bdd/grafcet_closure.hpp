@@ -115,7 +115,6 @@ class GrafcetClosure {
   Bdd sources_;
   Bdd reach_, ends_ne_, relation_, has_successor_, unstable_, range_;
   Bdd good_;  ///< configurations of reach_ whose run stabilises (its end stutters or not)
-  bool have_anomalies_ = false;
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;
   std::vector<Bdd> edges_clearing_;  ///< per transition: R(C, N) of the runs that clear it

@@ -701,6 +701,32 @@ class Run {
     return r;
   }
 
+  /// Puts back each bit of `row` that differs from `before` where the step from `latches` then
+  /// still happens, fires the same transitions and reaches the same latches (`nodes`: the
+  /// circuit's values under `row`, updated).
+  void keep_unneeded_input_bits(const std::vector<bool>& before, std::vector<bool>& row,
+                                const std::vector<bool>& latches, std::vector<bool>& nodes) const {
+    const auto& iec = *iec_;
+    const Aig& aig = iec.aig;
+    const auto same_step = [&](const std::vector<bool>& a, const std::vector<bool>& b) {
+      if (!Aig::value_of(b, step_ok_)) return false;
+      for (const auto f : iec.fired)
+        if (Aig::value_of(a, f) != Aig::value_of(b, f)) return false;
+      for (const auto& l : aig.latches())
+        if (Aig::value_of(a, l.next) != Aig::value_of(b, l.next)) return false;
+      return true;
+    };
+    for (std::size_t b = 0; b < row.size() && b < before.size(); ++b) {
+      if (row[b] == before[b]) continue;
+      auto kept = row;
+      kept[b] = before[b];
+      auto kept_nodes = aig.evaluate(kept, latches);
+      if (!same_step(nodes, kept_nodes)) continue;
+      row = std::move(kept);
+      nodes = std::move(kept_nodes);
+    }
+  }
+
   logic::Trace trace_of(const ReachResult& r, logic::TraceKind kind) const {
     if (machine_) return grafcet_trace_of(r, kind);
     const auto& iec = *iec_;
@@ -713,12 +739,18 @@ class Run {
                        semantics::state_from_latches(ts_, iec, latches),
                        {}});
     // The run is replayed on the circuit itself: a model that is not a run is an engine bug.
+    // An input bit the step does not need to change keeps the step before's value: the
+    // solver's model leaves the bits it does not read free (the simplified unrolling reads
+    // fewer), and a row that toggles them says an input changed for nothing (and a program and
+    // its IL twin gave different traces of one run).
+    auto inputs = r.inputs;
     for (std::uint32_t j = 0; j < r.depth; ++j) {
-      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      auto nodes = aig.evaluate(inputs[j], latches);
       if (!Aig::value_of(nodes, step_ok_))
         throw std::logic_error("sat engine: a run without a step");
+      if (j > 0) keep_unneeded_input_bits(inputs[j - 1], inputs[j], latches, nodes);
       logic::TraceStep step;
-      step.inputs = semantics::inputs_from_bits(ts_, iec, r.inputs[j]);
+      step.inputs = semantics::inputs_from_bits(ts_, iec, inputs[j]);
       for (std::uint32_t tr = 0; tr < iec.fired.size(); ++tr)
         if (Aig::value_of(nodes, iec.fired[tr])) step.fired.push_back(tr);
       for (std::size_t l = 0; l < latches.size(); ++l)
