@@ -353,7 +353,9 @@ TEST(Budget, AutoKeepsAViolationItsExplicitPhaseFound) {
   EXPECT_EQ(t.run.exit_code, 1) << t.run.out << t.run.err;
   EXPECT_NE(t.run.out.find("stored-actions  violated    "), std::string::npos) << t.run.out;
   EXPECT_NE(t.run.out.find("[explicit]"), std::string::npos) << t.run.out;
-  EXPECT_NE(t.run.err.find("--engine auto: more than 200000 states"), std::string::npos)
+  // The explicit phase hands over (past its state bound, or, slower under a sanitizer, once
+  // it forecasts that it cannot finish in its share), and its violation is kept.
+  EXPECT_NE(t.run.err.find(": the bdd, ic3 and bmc engines race on the rest"), std::string::npos)
       << t.run.err;
   EXPECT_LT(t.seconds, 80.0);
 }

@@ -108,8 +108,9 @@ std::vector<AigLit> Unrolling::tree_leaves(std::uint32_t node, std::size_t frame
     todo.pop_back();
     const auto c = Aig::node_of(l);
     const auto& cn = aig_.nodes()[c];
-    if (!Aig::is_negated(l) && cn.kind == Aig::NodeKind::And && fanout_[c] == 1 &&
-        literal_if_encoded(l, frame) == 0 && leaves.size() + todo.size() + 2 <= kMaxLeaves) {
+    if (!Aig::is_negated(l) && cn.kind == Aig::NodeKind::And && c < fanout_.size() &&
+        fanout_[c] == 1 && literal_if_encoded(l, frame) == 0 &&
+        leaves.size() + todo.size() + 2 <= kMaxLeaves) {
       todo.push_back(cn.right);
       todo.push_back(cn.left);
     } else {
