@@ -84,8 +84,9 @@ bool Unrolling::ite_shape(std::uint32_t node, AigLit& s, AigLit& a, AigLit& b) c
   const auto x = Aig::node_of(n.left), y = Aig::node_of(n.right);
   const auto& nx = aig_.nodes()[x];
   const auto& ny = aig_.nodes()[y];
-  if (nx.kind != Aig::NodeKind::And || ny.kind != Aig::NodeKind::And || fanout_[x] != 1 ||
-      fanout_[y] != 1)
+  // A node made after the unrolling (x or y past fanout_) has an unknown fan-out: not merged.
+  if (nx.kind != Aig::NodeKind::And || ny.kind != Aig::NodeKind::And || x >= fanout_.size() ||
+      y >= fanout_.size() || fanout_[x] != 1 || fanout_[y] != 1)
     return false;
   const AigLit xs[2] = {nx.left, nx.right}, ys[2] = {ny.left, ny.right};
   for (int i = 0; i < 2; ++i)
