@@ -308,7 +308,7 @@ class ExportReader {
       const std::string name = pou.actions[index].name;
       pou.actions[index].chart = chart(pc, transitions, sfc, name, name);
     }
-    native::add_variable_actions(pou);
+    model::add_boolean_variable_actions(pou);
     add_pou(e, std::move(pou));
   }
 

@@ -84,20 +84,6 @@ void dut_declaration(st::Parser& p, std::vector<model::DataType>& types) {
   if (!p.at(st::TokenKind::End)) p.fail_unexpected("the end of the type declaration");
 }
 
-void add_variable_actions(model::Pou& pou) {
-  for (const auto& as : pou.associations) {
-    if (pou.find_action(as.action)) continue;
-    const auto* var = pou.find_variable(as.action);
-    if (!var || var->type.kind != model::TypeKind::Bool) continue;
-    model::Action act;
-    act.name = var->name;
-    act.kind = model::ActionBodyKind::Variable;
-    act.variable = var->name;
-    act.where = var->where;
-    pou.actions.push_back(std::move(act));
-  }
-}
-
 LoadResult finish(model::Project project, model::Diagnostics diags) {
   if (project.pous.empty() && !model::has_errors(diags)) {
     model::SourceLocation where = project.where;

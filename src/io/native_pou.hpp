@@ -47,10 +47,6 @@ void refuse_non_globals(const model::Pou& pou, plcopen::XmlContext& ctx, pugi::x
 /// `TYPE ... END_TYPE` into `types`. Throws st::ParseError.
 void dut_declaration(st::Parser& p, std::vector<model::DataType>& types);
 
-/// An action associated with a step that is no action of the POU but one of its BOOL variables
-/// is that variable (IEC 61131-3 Boolean action): such actions are added.
-void add_variable_actions(model::Pou& pou);
-
 /// The load result of a vendor project: an error when nothing was read; named after its first
 /// chart or program when it has no name yet; data types lowered; no project after errors.
 LoadResult finish(model::Project project, model::Diagnostics diags);

@@ -598,17 +598,7 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
   }
 
   // An action named after a Boolean variable is that variable (IEC 61131-3 "Boolean action").
-  for (const auto& as : pou.associations) {
-    if (pou.find_action(as.action)) continue;
-    const auto* var = pou.find_variable(as.action);
-    if (!var || var->type.kind != model::TypeKind::Bool) continue;
-    model::Action act;
-    act.name = var->name;
-    act.kind = model::ActionBodyKind::Variable;
-    act.variable = var->name;
-    act.where = var->where;
-    pou.actions.push_back(std::move(act));
-  }
+  model::add_boolean_variable_actions(pou);
 
   project.pous.push_back(std::move(pou));
 }

@@ -1049,9 +1049,18 @@ void GraphBlockReader::topology(pugi::xml_node seq) {
     std::sort(r.begin(), r.end());
     return r;
   };
-  // The steps a transition leaves and enters, through the branches around it.
-  std::function<bool(const std::string&, std::vector<std::string>&, int)> sources =
-      [&](const std::string& key, std::vector<std::string>& r, int depth) -> bool {
+  // The steps a transition leaves (walking its inputs back through an AltBegin or a SimEnd)
+  // and enters (walking its outputs on through an AltEnd or a SimBegin).
+  struct Side {
+    const std::map<std::string, std::vector<Link>>& links;
+    const char* pin;
+    const char* alternative;   ///< one pin, followed
+    const char* simultaneous;  ///< every pin, followed
+  };
+  const Side leaving{in, ":i", "AltBegin", "SimEnd"}, entering{out, ":o", "AltEnd", "SimBegin"};
+  std::function<bool(const Side&, const std::string&, std::vector<std::string>&, int)> walk =
+      [&](const Side& side, const std::string& key, std::vector<std::string>& r,
+          int depth) -> bool {
     if (depth > model::kMaxNesting) return false;
     if (key[0] == 'S') {
       r.push_back(step_names_.at(key.substr(1)));
@@ -1059,39 +1068,24 @@ void GraphBlockReader::topology(pugi::xml_node seq) {
     }
     if (key[0] != 'B') return false;
     const auto& b = branch_of(key);
-    if (b.type == "AltBegin") {
-      const auto ins = pins(key, in, ":i");
-      if (ins.size() != 1 || in.at(ins[0].second).size() != 1) return false;
-      return sources(in.at(ins[0].second)[0].to, r, depth + 1);
+    if (b.type == side.alternative) {
+      const auto ps = pins(key, side.links, side.pin);
+      if (ps.size() != 1 || side.links.at(ps[0].second).size() != 1) return false;
+      return walk(side, side.links.at(ps[0].second)[0].to, r, depth + 1);
     }
-    if (b.type == "SimEnd") {
-      for (const auto& [index, pin] : pins(key, in, ":i")) {
-        if (in.at(pin).size() != 1 || !sources(in.at(pin)[0].to, r, depth + 1)) return false;
-      }
+    if (b.type == side.simultaneous) {
+      for (const auto& [index, pin] : pins(key, side.links, side.pin))
+        if (side.links.at(pin).size() != 1 || !walk(side, side.links.at(pin)[0].to, r, depth + 1))
+          return false;
       return true;
     }
     return false;
   };
-  std::function<bool(const std::string&, std::vector<std::string>&, int)> targets =
-      [&](const std::string& key, std::vector<std::string>& r, int depth) -> bool {
-    if (depth > model::kMaxNesting) return false;
-    if (key[0] == 'S') {
-      r.push_back(step_names_.at(key.substr(1)));
-      return true;
-    }
-    if (key[0] != 'B') return false;
-    const auto& b = branch_of(key);
-    if (b.type == "AltEnd") {
-      const auto outs = pins(key, out, ":o");
-      if (outs.size() != 1 || out.at(outs[0].second).size() != 1) return false;
-      return targets(out.at(outs[0].second)[0].to, r, depth + 1);
-    }
-    if (b.type == "SimBegin") {
-      for (const auto& [index, pin] : pins(key, out, ":o"))
-        if (out.at(pin).size() != 1 || !targets(out.at(pin)[0].to, r, depth + 1)) return false;
-      return true;
-    }
-    return false;
+  const auto sources = [&](const std::string& key, std::vector<std::string>& r, int depth) {
+    return walk(leaving, key, r, depth);
+  };
+  const auto targets = [&](const std::string& key, std::vector<std::string>& r, int depth) {
+    return walk(entering, key, r, depth);
   };
   for (const auto& [key, links] : out)
     if (key[0] == 'S' && links.size() > 1)
@@ -1189,12 +1183,7 @@ LoadResult load_simatic_graph(std::string_view text, const std::string& file,
   {
     XmlContext ctx(file, text, diags, budget);
     pugi::xml_document doc;
-    const auto parsed =
-        doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-    if (!parsed) {
-      diags.push_back({model::Severity::Error, ctx.where_offset(parsed.offset),
-                       std::string("XML parse error: ") + parsed.description()});
-    } else {
+    if (plcopen::load_document(doc, text, ctx)) {
       const auto root = doc.document_element();
       if (local_name(root) != "Document") {
         ctx.error(root, "not a SimaticML export: the root element is <" + std::string(root.name()) +

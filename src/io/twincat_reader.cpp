@@ -170,7 +170,7 @@ class NativeFileReader {
       pou.actions[index].chart = chart(pc, named, sfc, name, name);
     }
     // An action named after a Boolean variable is that variable (IEC 61131-3 Boolean action).
-    native::add_variable_actions(pou);
+    model::add_boolean_variable_actions(pou);
     add_pou(n, std::move(pou));
   }
 

@@ -80,6 +80,20 @@ const Pou* Project::find_pou(std::string_view n) const {
   return find(pous, n);
 }
 
+void add_boolean_variable_actions(Pou& pou) {
+  for (const auto& as : pou.associations) {
+    if (pou.find_action(as.action)) continue;
+    const auto* var = pou.find_variable(as.action);
+    if (!var || var->type.kind != TypeKind::Bool) continue;
+    Action act;
+    act.name = var->name;
+    act.kind = ActionBodyKind::Variable;
+    act.variable = var->name;
+    act.where = var->where;
+    pou.actions.push_back(std::move(act));
+  }
+}
+
 std::size_t count_steps(const Project& p) {
   std::size_t n = 0;
   for (const auto& pou : p.pous)

@@ -254,6 +254,10 @@ std::vector<std::string> in_out_bindings(const Project* project, std::string_vie
                                          const Stmt& call);
 
 // Counting helpers (sfcv info, tests against the corpus MANIFEST).
+/// An action associated with a step that is no action of the POU but one of its BOOL variables
+/// is that variable (IEC 61131-3 Boolean action): adds such actions to `pou`.
+void add_boolean_variable_actions(Pou& pou);
+
 std::size_t count_steps(const Project& p);
 std::size_t count_transitions(const Project& p);
 

@@ -32,12 +32,9 @@ TEST(L5xE2E, DemoChartAndItsIecTwinGiveTheSameVerdicts) {
       {"AG (S1 -> lamp)", "violated"},
       {"AG (Merge -> valve)", "violated"},
   };
-  auto expect_verdicts = [&](const std::string& file, const char* engine) {
-    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
-  };
   for (const char* engine : {"explicit", "bdd"}) {
-    expect_verdicts(native, engine);
-    expect_verdicts(twin, engine);
+    expect_ctl_verdicts_in_one_run(native, engine, verdicts);
+    expect_ctl_verdicts_in_one_run(twin, engine, verdicts);
   }
   const auto r = run_sfcv("info " + native);
   EXPECT_EQ(r.exit_code, 0) << r.err;
