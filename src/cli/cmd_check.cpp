@@ -35,6 +35,7 @@
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/external/nusmv_runner.hpp"
 #include "engine/portfolio/engine_by_name.hpp"
+#include "engine/portfolio/portfolio_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "logic/requirements.hpp"
 #include "logic/vacuity.hpp"
@@ -161,6 +162,10 @@ logic::CheckReport check_auto(const logic::CheckTask& task,
     progress.clear();
     std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
+  // A racer that does not stop (one long BDD operation on a loaded machine) must not hold the
+  // report back until the backstop ends the process without one.
+  selection.abandon_after =
+      race_grace_seconds(task.limits.deadline ? task.limits.seconds_left() : 0.0);
   return engine::make_engine_by_name("auto", selection)->check(task);
 }
 
@@ -429,13 +434,19 @@ int run_check_body(const CheckOptions& o, const RunGuard& guard, CheckMode mode)
   } else {
     std::cout << report::check_text(result, *ts, render);
   }
-  if (render_error) std::rethrow_exception(render_error);
+  if (render_error) {
+    if (engine::abandoned_racers() == 0) std::rethrow_exception(render_error);
+    // As run_with_exit_codes would say it, before the process ends here.
+    return end_here_if_racers_left_behind(run_with_exit_codes(
+        [&]() -> int { std::rethrow_exception(render_error); }, std::cerr,
+        o.json ? &std::cout : nullptr));
+  }
   if (!write_errors.empty()) {
     progress.clear();
     for (const auto& e : write_errors) std::cerr << "sfcv: error: " << e << "\n";
-    return kBadInput;
+    return end_here_if_racers_left_behind(kBadInput);
   }
-  return logic::exit_code(result);
+  return end_here_if_racers_left_behind(logic::exit_code(result));
 }
 
 int run_check(const CheckOptions& o, CheckMode mode) {

@@ -1,10 +1,12 @@
 #include "cli/run_guard.hpp"
 
+#include <cstdlib>
 #include <ctime>
 #include <iostream>
 
 #include "cli/exit_code.hpp"
 #include "cli/interrupt.hpp"
+#include "engine/portfolio/portfolio_model_checker.hpp"
 
 namespace sfcv::cli {
 
@@ -33,6 +35,17 @@ std::string held_text(std::uint64_t bytes) {
 
 double backstop_grace_seconds(double timeout_seconds) {
   return (2.0 + 0.1 * timeout_seconds) * kSanitizerSlowdown;
+}
+
+double race_grace_seconds(double timeout_seconds) {
+  return (0.5 + 0.02 * timeout_seconds) * kSanitizerSlowdown;
+}
+
+int end_here_if_racers_left_behind(int code) {
+  if (engine::abandoned_racers() == 0) return code;
+  std::cout.flush();
+  std::cerr.flush();
+  std::_Exit(code);
 }
 
 RunGuard::RunGuard(const LimitOptions& options, std::shared_ptr<std::atomic<bool>> cancel)

@@ -62,4 +62,15 @@ int report_limit(const LimitReached& e);
 /// in CPU seconds of the process past the deadline (ten times that in wall time).
 double backstop_grace_seconds(double timeout_seconds);
 
+/// How long past its deadline `--engine auto` waits for a racer that has not stopped before it
+/// reports without it (engine::PortfolioOptions::abandon_after): 0.5 s + 2 % of the timeout,
+/// well inside the backstop's grace, so that the report is out before the backstop would end
+/// the process without one.
+double race_grace_seconds(double timeout_seconds);
+
+/// When the engines left a racer behind (engine::abandoned_racers()), it still reads the
+/// system this run built: the process ends here with `code`, its report already printed, before
+/// the system is freed. Otherwise returns `code`.
+int end_here_if_racers_left_behind(int code);
+
 }  // namespace sfcv::cli

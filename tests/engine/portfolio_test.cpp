@@ -252,5 +252,81 @@ TEST(Portfolio, AWinnerCancelsTheOtherEngine) {
   EXPECT_TRUE(report.complete);
 }
 
+/// A racer that does not stop: it ignores the deadline and the cancel flag until the test
+/// releases it (as one long BDD operation on a loaded machine once did, corpus 02).
+class StuckEngine final : public ModelChecker {
+ public:
+  std::string_view name() const override { return "stuck"; }
+  bool can_handle(const logic::CheckTask&, std::string*) const override { return true; }
+  logic::CheckReport check(const logic::CheckTask& task) const override {
+    running = true;
+    const auto give_up = Clock::now() + std::chrono::seconds(120);
+    while (!released && Clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    running = false;
+    return logic::unknown_report(task, "stuck", LimitReached(Limit::Time, "released"));
+  }
+  mutable std::atomic<bool> running{false}, released{false};
+};
+
+/// Releases the stuck racer and waits until its thread has ended, so that the system it reads
+/// outlives it (the CLI ends the process instead).
+void release(StuckEngine& stuck) {
+  stuck.released = true;
+  const auto give_up = Clock::now() + std::chrono::seconds(60);
+  while (abandoned_racers() > 0 && Clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(abandoned_racers(), 0u);
+}
+
+TEST(Portfolio, ARacerThatDoesNotStopIsLeftBehindOnceEveryQuestionIsDecided) {
+  // IC3 proves the invariant at once and cancels the race; the BDD slot never stops. With
+  // abandon_after the report comes without it, and IC3's answer stands.
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  const auto top = (std::uint64_t{1} << 30) - 1;
+  auto task = test::task_for(s.project, *s.ts, {"AG c <= " + std::to_string(top - 1)}, {});
+  auto stuck = std::make_shared<StuckEngine>();
+  PortfolioOptions options;
+  options.probe_states = 0;
+  options.abandon_after = 0.2;
+  options.bdd_racer = stuck;
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  EXPECT_TRUE(stuck->running) << "the race waited for the racer that does not stop";
+  EXPECT_EQ(abandoned_racers(), 1u);
+  ASSERT_EQ(report.results.size(), 1u);
+  EXPECT_EQ(report.results[0].verdict, Verdict::Holds) << report.results[0].message;
+  EXPECT_EQ(report.results[0].decided_by, "ic3");
+  release(*stuck);
+}
+
+TEST(Portfolio, ARacerThatDoesNotStopPastTheDeadlineLeavesItsQuestionsUnknown) {
+  // Only the BDD slot checks these; it does not stop at the deadline: past it and the grace,
+  // the report comes with the questions unknown and says why, never with a verdict.
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {}, {});
+  task.checks = bdd_only_checks();
+  task.limits.set_timeout(0.3);
+  auto stuck = std::make_shared<StuckEngine>();
+  PortfolioOptions options;
+  options.probe_states = 0;
+  options.abandon_after = 0.2;
+  options.bdd_racer = stuck;
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  EXPECT_TRUE(stuck->running) << "the race waited for the racer that does not stop";
+  EXPECT_FALSE(report.complete);
+  EXPECT_EQ(report.limit, "time");
+  ASSERT_EQ(report.results.size(), 3u);
+  for (const auto& r : report.results) {
+    SCOPED_TRACE(r.name);
+    EXPECT_EQ(r.verdict, Verdict::Unknown);
+    EXPECT_NE(r.message.find("the bdd engine had not stopped 0.2 s after the time limit"),
+              std::string::npos)
+        << r.message;
+  }
+  release(*stuck);
+}
+
 }  // namespace
 }  // namespace sfcv::engine

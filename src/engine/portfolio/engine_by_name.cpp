@@ -31,6 +31,7 @@ ModelCheckerPtr make_engine_by_name(std::string_view name, const EngineSelection
     options.bdd = selection.bdd;
     options.explicit_engine = selection.explicit_engine;
     options.note = selection.note;
+    options.abandon_after = selection.abandon_after;
     return make_portfolio_model_checker(options);
   }
   throw std::invalid_argument("no engine called '" + std::string(name) + "'");

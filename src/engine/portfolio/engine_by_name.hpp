@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,6 +21,8 @@ struct EngineSelection {
   std::uint32_t min_depth = 0;    ///< bmc: the shallowest depth tried (a swarm shard's range)
   /// auto: how it decided, one line each; may be empty.
   std::function<void(const std::string&)> note;
+  /// auto: PortfolioOptions::abandon_after.
+  std::optional<double> abandon_after;
 };
 
 /// True for the names make_engine_by_name() knows.

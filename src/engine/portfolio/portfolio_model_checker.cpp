@@ -1,6 +1,8 @@
 #include "engine/portfolio/portfolio_model_checker.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -58,12 +60,16 @@ const PropertyResult* find_result(const CheckReport& report, std::size_t index,
 /// threw), the limit that stopped it, and what it threw.
 struct Racer {
   std::string name;
-  const ModelChecker* engine = nullptr;
+  std::shared_ptr<const ModelChecker> engine;
   logic::CheckTask task;
   std::optional<CheckReport> report;
   std::string stopped;
   std::exception_ptr error;
 };
+
+/// Racer threads the portfolio stopped waiting for (PortfolioOptions::abandon_after) that have
+/// not ended yet.
+std::atomic<std::size_t> g_abandoned_racers{0};
 
 /// The winners so far, one slot per result of the probe's report (the task's questions).
 class Scoreboard {
@@ -115,7 +121,7 @@ class PortfolioModelChecker final : public ModelChecker {
       : options_(std::move(options)),
         explicit_(make_explicit_model_checker(options_.explicit_engine)),
         probe_(make_explicit_model_checker(probe_options(options_.explicit_engine))),
-        bdd_(make_bdd_model_checker(options_.bdd)),
+        bdd_(options_.bdd_racer ? options_.bdd_racer : make_bdd_model_checker(options_.bdd)),
         ic3_(make_sat_model_checker({SatAlgorithm::Ic3, 200})),
         bmc_(make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}
 
@@ -235,13 +241,28 @@ class PortfolioModelChecker final : public ModelChecker {
     }
   }
 
+  /// What the race's threads share with it. Owned jointly, so that a racer the race stops
+  /// waiting for (PortfolioOptions::abandon_after) still writes into memory that exists; once
+  /// the race is `closed`, a racer's answers and progress are dropped.
+  struct RaceState {
+    std::vector<Racer> racers;
+    std::optional<Scoreboard> board;
+    std::mutex mutex;
+    std::condition_variable ended;
+    std::vector<bool> done, abandoned;
+    std::shared_ptr<std::atomic<bool>> closed = std::make_shared<std::atomic<bool>>(false);
+  };
+
   CheckReport race(const logic::CheckTask& task, const std::optional<CheckReport>& probe,
                    Clock::time_point start) const {
     auto cancel = std::make_shared<std::atomic<bool>>(false);
-    std::vector<Racer> racers;
-    racers.push_back({"bdd", bdd_.get(), task, {}, {}, {}});
-    racers.push_back({"ic3", ic3_.get(), task, {}, {}, {}});
-    racers.push_back({"bmc", bmc_.get(), task, {}, {}, {}});
+    auto state = std::make_shared<RaceState>();
+    auto& racers = state->racers;
+    racers.push_back({"bdd", bdd_, task, {}, {}, {}});
+    racers.push_back({"ic3", ic3_, task, {}, {}, {}});
+    racers.push_back({"bmc", bmc_, task, {}, {}, {}});
+    state->done.assign(racers.size(), false);
+    state->abandoned.assign(racers.size(), false);
     // Each racer reports under its own name (a literal: the pointer outlives the race), so that
     // the progress line shows every engine of the race and which ones have finished.
     static constexpr const char* kNames[] = {"bdd", "ic3", "bmc"};
@@ -249,7 +270,9 @@ class PortfolioModelChecker final : public ModelChecker {
       auto& r = racers[i];
       r.task.limits.cancel = cancel;
       if (const auto progress = task.limits.progress)
-        r.task.limits.progress = [progress, name = kNames[i]](const logic::Progress& p) {
+        r.task.limits.progress = [progress, name = kNames[i],
+                                  closed = state->closed](const logic::Progress& p) {
+          if (closed->load()) return;  // the caller's progress line may be gone
           auto tagged = p;
           tagged.engine = name;
           progress(tagged);
@@ -265,9 +288,8 @@ class PortfolioModelChecker final : public ModelChecker {
 
     // Without a probe the questions are the BDD engine's: it answers every one of the task,
     // unknown or not checked where it cannot.
-    std::optional<Scoreboard> board;
-    if (probe) board.emplace(*probe, cancel);
-    if (!board) {
+    if (probe) state->board.emplace(*probe, cancel);
+    if (!state->board) {
       // The BDD engine's questions, read before the race from a report of unknowns.
       CheckReport questions;
       for (const auto& p : task.properties) {
@@ -282,9 +304,10 @@ class PortfolioModelChecker final : public ModelChecker {
         r.check = r.name;
         questions.results.push_back(std::move(r));
       }
-      board.emplace(questions, cancel);
+      state->board.emplace(questions, cancel);
     }
 
+    std::vector<Racer> finished;
     {
       // The race has its own flag (a winner raises it); a cancel of the whole run from outside
       // (a portfolio inside another, a test) must still reach the racers.
@@ -299,27 +322,100 @@ class PortfolioModelChecker final : public ModelChecker {
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
           }
         });
-      std::vector<std::jthread> threads;
-      for (auto& r : racers)
-        threads.emplace_back([&r, &board] {
-          try {
-            r.report = r.engine->check(r.task);
-            board->offer(*r.report, r.name);
-          } catch (const LimitReached& e) {
-            // Out of budget (or cancelled) before a report: no answer from this engine.
-            r.stopped = e.what();
-          } catch (...) {
-            r.error = std::current_exception();
-          }
-          logic::Progress finished;
-          finished.phase = "done";
-          r.task.limits.report(finished);
-        });
-    }  // joined here
+      std::vector<std::thread> threads;
+      for (std::size_t i = 0; i < racers.size(); ++i)
+        threads.emplace_back([state, i] { run_racer(*state, i); });
+      finished = wait_for_racers(*state, task.limits, *cancel);
+      cancel->store(true);  // a racer left behind stops at its next poll
+      for (std::size_t i = 0; i < threads.size(); ++i) {
+        if (state->abandoned[i])
+          threads[i].detach();
+        else
+          threads[i].join();
+      }
+    }
     // An engine error is a bug, whoever won: never hidden behind another engine's answer.
-    for (const auto& r : racers)
+    for (const auto& r : finished)
       if (r.error) std::rethrow_exception(r.error);
-    return merge(task, *board, racers, probe, start);
+    return merge(task, *state->board, finished, probe, start);
+  }
+
+  static void run_racer(RaceState& state, std::size_t i) {
+    auto& r = state.racers[i];  // its engine and task: this thread's alone while it runs
+    std::optional<CheckReport> report;
+    std::string stopped;
+    std::exception_ptr error;
+    try {
+      report = r.engine->check(r.task);
+    } catch (const LimitReached& e) {
+      // Out of budget (or cancelled) before a report: no answer from this engine.
+      stopped = e.what();
+    } catch (...) {
+      error = std::current_exception();
+    }
+    logic::Progress done;
+    done.phase = "done";
+    r.task.limits.report(done);
+    bool abandoned = false;
+    {
+      const std::lock_guard lock(state.mutex);
+      if (!state.closed->load()) {
+        if (report) state.board->offer(*report, r.name);
+        r.report = std::move(report);
+        r.stopped = std::move(stopped);
+        r.error = error;
+      }
+      state.done[i] = true;
+      abandoned = state.abandoned[i];
+    }
+    state.ended.notify_all();
+    if (abandoned) --g_abandoned_racers;
+  }
+
+  /// Waits until every racer has ended, or (with PortfolioOptions::abandon_after) until that
+  /// many seconds past the deadline or past the moment every question was decided: a racer
+  /// still running then is left behind, its questions unknown, so that a phase that does not
+  /// poll (one long BDD operation on a loaded machine) cannot hold back the report. Closes the
+  /// race and returns the racers as they ended.
+  std::vector<Racer> wait_for_racers(RaceState& state, const logic::CheckLimits& limits,
+                                     const std::atomic<bool>& cancel) const {
+    std::unique_lock lock(state.mutex);
+    const auto all_done = [&state] {
+      return std::all_of(state.done.begin(), state.done.end(), [](bool d) { return d; });
+    };
+    if (!options_.abandon_after) {
+      state.ended.wait(lock, all_done);
+    } else {
+      const auto grace = std::chrono::duration_cast<Clock::duration>(
+          std::chrono::duration<double>(*options_.abandon_after));
+      std::optional<Clock::time_point> give_up;
+      while (!all_done()) {
+        const auto now = Clock::now();
+        if (!give_up && limits.deadline && now > *limits.deadline) give_up = *limits.deadline + grace;
+        if (!give_up && cancel.load()) give_up = now + grace;
+        if (give_up && now >= *give_up) break;
+        state.ended.wait_for(lock, std::chrono::milliseconds(20));
+      }
+    }
+    state.closed->store(true);
+    std::vector<Racer> finished;
+    for (std::size_t i = 0; i < state.racers.size(); ++i) {
+      auto& r = state.racers[i];
+      Racer out{r.name, nullptr, {}, {}, {}, {}};
+      if (state.done[i]) {
+        out.report = std::move(r.report);
+        out.stopped = std::move(r.stopped);
+        out.error = r.error;
+      } else {
+        state.abandoned[i] = true;
+        ++g_abandoned_racers;
+        out.stopped = "the " + r.name + " engine had not stopped " +
+                      seconds_text(*options_.abandon_after) +
+                      " after the time limit or the last answer; the report does not wait for it";
+      }
+      finished.push_back(std::move(out));
+    }
+    return finished;
   }
 
   CheckReport merge(const logic::CheckTask& task, const Scoreboard& board,
@@ -406,11 +502,17 @@ class PortfolioModelChecker final : public ModelChecker {
   /// with the engines that prove.
   static constexpr std::uint32_t kBmcDepth = 200;
   /// explicit_ runs alone when the symbolic engines cannot; probe_ is the same engine with the
-  /// forecast that hands a hopeless exploration over early.
-  ModelCheckerPtr explicit_, probe_, bdd_, ic3_, bmc_;
+  /// forecast that hands a hopeless exploration over early. The racers are shared with their
+  /// threads, which may outlive this object when the race leaves them behind.
+  ModelCheckerPtr explicit_, probe_;
+  std::shared_ptr<const ModelChecker> bdd_, ic3_, bmc_;
 };
 
 }  // namespace
+
+std::size_t abandoned_racers() {
+  return g_abandoned_racers.load();
+}
 
 ModelCheckerPtr make_portfolio_model_checker(PortfolioOptions options) {
   return std::make_unique<PortfolioModelChecker>(std::move(options));

@@ -7,7 +7,10 @@
 // are cancelled (model::Budget::cancel). Verdicts do not depend on which engine wins: each engine
 // is sound, and one that is cancelled or runs out of budget answers unknown, never holds.
 
+#include <cstddef>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "engine/auto_policy.hpp"
@@ -28,7 +31,18 @@ struct PortfolioOptions {
   /// Input valuations per state the probe may enumerate: kAutoProbeValuations; tests set a
   /// smaller one (0: unbounded).
   std::uint64_t probe_valuations = kAutoProbeValuations;
+  /// Seconds a racer may run past the deadline, or past the moment every question is decided,
+  /// before the race reports without it (its questions unknown); none: wait for every racer.
+  /// A racer left behind runs on in its thread and reads the task's system and project: while
+  /// abandoned_racers() > 0 the caller keeps them alive, or ends the process once its report is
+  /// out (the CLI does).
+  std::optional<double> abandon_after;
+  /// The race's BDD slot (null: the BDD engine); tests put an engine there that does not stop.
+  std::shared_ptr<const ModelChecker> bdd_racer;
 };
+
+/// Racer threads that a race left behind (PortfolioOptions::abandon_after) and that still run.
+std::size_t abandoned_racers();
 
 ModelCheckerPtr make_portfolio_model_checker(PortfolioOptions options = {});
 
