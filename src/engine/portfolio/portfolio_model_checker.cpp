@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -391,7 +391,8 @@ class PortfolioModelChecker final : public ModelChecker {
       std::optional<Clock::time_point> give_up;
       while (!all_done()) {
         const auto now = Clock::now();
-        if (!give_up && limits.deadline && now > *limits.deadline) give_up = *limits.deadline + grace;
+        if (!give_up && limits.deadline && now > *limits.deadline)
+          give_up = *limits.deadline + grace;
         if (!give_up && cancel.load()) give_up = now + grace;
         if (give_up && now >= *give_up) break;
         state.ended.wait_for(lock, std::chrono::milliseconds(20));
