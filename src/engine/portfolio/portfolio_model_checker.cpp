@@ -324,7 +324,13 @@ class PortfolioModelChecker final : public ModelChecker {
         });
       std::vector<std::thread> threads;
       for (std::size_t i = 0; i < racers.size(); ++i)
-        threads.emplace_back([state, i] { run_racer(*state, i); });
+        threads.emplace_back([state, i]() mutable {
+          const bool abandoned = run_racer(*state, i);
+          // Counted out only once its share of the race is freed: at zero, nothing of a race
+          // left behind is still in use (a test may then free the system).
+          state.reset();
+          if (abandoned) --g_abandoned_racers;
+        });
       finished = wait_for_racers(*state, task.limits, *cancel);
       cancel->store(true);  // a racer left behind stops at its next poll
       for (std::size_t i = 0; i < threads.size(); ++i) {
@@ -340,7 +346,8 @@ class PortfolioModelChecker final : public ModelChecker {
     return merge(task, *state->board, finished, probe, start);
   }
 
-  static void run_racer(RaceState& state, std::size_t i) {
+  /// Runs racer `i` and offers its report; true when the race had left it behind by then.
+  static bool run_racer(RaceState& state, std::size_t i) {
     auto& r = state.racers[i];  // its engine and task: this thread's alone while it runs
     std::optional<CheckReport> report;
     std::string stopped;
@@ -369,7 +376,7 @@ class PortfolioModelChecker final : public ModelChecker {
       abandoned = state.abandoned[i];
     }
     state.ended.notify_all();
-    if (abandoned) --g_abandoned_racers;
+    return abandoned;
   }
 
   /// Waits until every racer has ended, or (with PortfolioOptions::abandon_after) until that
