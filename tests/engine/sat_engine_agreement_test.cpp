@@ -33,6 +33,7 @@
 #include "semantics/simulate.hpp"
 #include "support/ctl_task.hpp"
 #include "support/random_grafcet.hpp"
+#include "support/sweep.hpp"
 #include "support/trace_replay.hpp"
 
 namespace sfcv::engine {
@@ -205,7 +206,8 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
 TEST(SatEngineAgreement, RandomCharts) {
   Tally tally;
   int charts = 0;
-  const std::uint64_t last = std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : 500;
+  const std::uint64_t last =
+      std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : test::sweep_last(500);
   for (std::uint64_t seed = 1; seed <= last; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     bench::RandomChartFeatures features;
@@ -223,13 +225,13 @@ TEST(SatEngineAgreement, RandomCharts) {
     ++charts;
     if (HasFatalFailure()) return;
   }
-  EXPECT_EQ(charts, 500);
-  // Enough of every kind of answer was compared.
-  EXPECT_GT(tally.decided, 6000);
-  EXPECT_GT(tally.holds, 3000);
-  EXPECT_GT(tally.violated, 2000);
-  EXPECT_GT(tally.traces, 2000);
-  EXPECT_GT(tally.certificates, 1000);
+  EXPECT_EQ(charts, static_cast<int>(last));
+  // Enough of every kind of answer was compared (the full sweep's floors, in proportion).
+  EXPECT_GT(tally.decided, test::sweep_floor(6000, last, 500));
+  EXPECT_GT(tally.holds, test::sweep_floor(3000, last, 500));
+  EXPECT_GT(tally.violated, test::sweep_floor(2000, last, 500));
+  EXPECT_GT(tally.traces, test::sweep_floor(2000, last, 500));
+  EXPECT_GT(tally.certificates, test::sweep_floor(1000, last, 500));
 }
 
 /// `ts`'s circuit query with step_ok = allowed & !range_error and no target.
@@ -354,7 +356,8 @@ END_PROGRAM
 TEST(SatEngineAgreement, RandomGrafcets) {
   Tally tally;
   int charts = 0;
-  const std::uint64_t last = std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : 100;
+  const std::uint64_t last =
+      std::getenv("SAT_SEEDS") ? std::stoull(std::getenv("SAT_SEEDS")) : test::sweep_last(100);
   const std::uint64_t first = std::getenv("SAT_FIRST") ? std::stoull(std::getenv("SAT_FIRST")) : 1;
   for (std::uint64_t seed = first; seed <= last; ++seed) {
     for (bool single : {true, false}) {
@@ -371,12 +374,13 @@ TEST(SatEngineAgreement, RandomGrafcets) {
       if (HasFatalFailure()) return;
     }
   }
-  EXPECT_EQ(charts, 200);
-  EXPECT_GT(tally.decided, 1000);
-  EXPECT_GT(tally.holds, 250);
-  EXPECT_GT(tally.violated, 300);
-  EXPECT_GT(tally.traces, 500);
-  EXPECT_GT(tally.certificates, 200);
+  const auto seeds_run = last - first + 1;
+  EXPECT_EQ(charts, static_cast<int>(2 * seeds_run));
+  EXPECT_GT(tally.decided, test::sweep_floor(1000, seeds_run, 100));
+  EXPECT_GT(tally.holds, test::sweep_floor(250, seeds_run, 100));
+  EXPECT_GT(tally.violated, test::sweep_floor(300, seeds_run, 100));
+  EXPECT_GT(tally.traces, test::sweep_floor(500, seeds_run, 100));
+  EXPECT_GT(tally.certificates, test::sweep_floor(200, seeds_run, 100));
 }
 
 }  // namespace
