@@ -1,5 +1,6 @@
 #include "cli/run_guard.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
@@ -45,6 +46,7 @@ int end_here_if_racers_left_behind(int code) {
   if (engine::abandoned_racers() == 0) return code;
   std::cout.flush();
   std::cerr.flush();
+  std::fflush(nullptr);  // _Exit does not flush C streams
   std::_Exit(code);
 }
 
