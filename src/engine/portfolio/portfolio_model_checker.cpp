@@ -387,6 +387,7 @@ class PortfolioModelChecker final : public ModelChecker {
   std::vector<Racer> wait_for_racers(RaceState& state, const logic::CheckLimits& limits,
                                      const std::atomic<bool>& cancel) const {
     std::unique_lock lock(state.mutex);
+    std::string why, after;  // what the race waited past, for a racer left behind
     const auto all_done = [&state] {
       return std::all_of(state.done.begin(), state.done.end(), [](bool d) { return d; });
     };
@@ -398,9 +399,16 @@ class PortfolioModelChecker final : public ModelChecker {
       std::optional<Clock::time_point> give_up;
       while (!all_done()) {
         const auto now = Clock::now();
-        if (!give_up && limits.deadline && now > *limits.deadline)
+        if (!give_up && limits.deadline && now > *limits.deadline) {
           give_up = *limits.deadline + grace;
-        if (!give_up && cancel.load()) give_up = now + grace;
+          why = "time limit reached; ";
+          after = "after it";
+        }
+        if (!give_up && cancel.load()) {
+          give_up = now + grace;
+          why = "stopped; ";
+          after = "after the race was stopped";
+        }
         if (give_up && now >= *give_up) break;
         state.ended.wait_for(lock, std::chrono::milliseconds(20));
       }
@@ -417,9 +425,9 @@ class PortfolioModelChecker final : public ModelChecker {
       } else {
         state.abandoned[i] = true;
         ++g_abandoned_racers;
-        out.stopped = "the " + r.name + " engine had not stopped " +
-                      seconds_text(*options_.abandon_after) +
-                      " after the time limit or the last answer; the report does not wait for it";
+        out.stopped = why + "the " + r.name + " engine had not stopped " +
+                      seconds_text(*options_.abandon_after) + " " + after +
+                      ", and the report does not wait for it";
       }
       finished.push_back(std::move(out));
     }
