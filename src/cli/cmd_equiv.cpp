@@ -19,6 +19,7 @@
 #include "cli/run_guard.hpp"
 #include "cli/run_limits.hpp"
 #include "engine/portfolio/engine_by_name.hpp"
+#include "engine/portfolio/portfolio_model_checker.hpp"
 #include "logic/check_inputs.hpp"
 #include "model/errors.hpp"
 #include "report/equivalence_render.hpp"
@@ -96,9 +97,13 @@ std::string spec_text(const semantics::EquivalenceProduct& p, bool per_signal) {
   return text;
 }
 
-engine::ModelCheckerPtr make_engine(const std::string& name, std::uint32_t depth) {
+engine::ModelCheckerPtr make_engine(const std::string& name, std::uint32_t depth,
+                                    const model::Budget* budget = nullptr) {
   engine::EngineSelection selection;
   selection.max_depth = depth;
+  // As in check: a racer that does not stop must not hold the report back (run_guard.hpp).
+  if (budget)
+    selection.abandon_after = race_grace_seconds(budget->deadline ? budget->seconds_left() : 0.0);
   selection.note = [](const std::string& text) {
     if (!global_options().quiet) std::cerr << "sfcv: --engine auto: " << text << "\n";
   };
@@ -125,6 +130,12 @@ void shorten_traces(logic::CheckReport& report, const logic::CheckTask& task) {
     }
   }
 }
+
+/// The counterexamples shortened, then the trace file, the HTML page and the report.
+int write_equivalence_reports(const EquivOptions& o, report::EquivalenceRun& run,
+                              const logic::CheckTask& task,
+                              const semantics::EquivalenceProduct& product,
+                              const semantics::TransitionSystem& system_ref);
 
 int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   static const std::vector<std::string> engines = {"auto", "explicit", "bdd", "bmc", "kind", "ic3"};
@@ -188,7 +199,7 @@ int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   run.new_path = o.new_model;
   run.within = o.within;
   run.per_signal = o.changed;
-  auto checker = make_engine(o.engine, o.depth);
+  auto checker = make_engine(o.engine, o.depth, &budget);
   std::string why;
   if (!checker->can_handle(task, &why)) throw InputError("sfcv equiv: " + why);
   try {
@@ -196,6 +207,25 @@ int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   } catch (const LimitReached& e) {
     run.report = logic::unknown_report(task, o.engine, guard.reason(e));
   }
+  // A racer left behind still reads the system: whatever happens from here, the process ends
+  // in this function once the report is out (end_here_if_racers_left_behind).
+  try {
+    return write_equivalence_reports(o, run, task, product, *system);
+  } catch (...) {
+    if (engine::abandoned_racers() == 0) throw;
+    const auto error = std::current_exception();
+    return end_here_if_racers_left_behind(run_with_exit_codes(
+        [&]() -> int { std::rethrow_exception(error); }, std::cerr, o.json ? &std::cout : nullptr));
+  }
+}
+
+int write_equivalence_reports(const EquivOptions& o, report::EquivalenceRun& run,
+                              const logic::CheckTask& task,
+                              const semantics::EquivalenceProduct& product,
+                              const semantics::TransitionSystem& system_ref) {
+  const auto* system = &system_ref;
+  const OutputPath trace_out{o.trace_file, "--trace-file"};
+  const OutputPath html_out{o.html, "--html"};
   if (o.engine != "explicit" && o.engine != "bmc") shorten_traces(run.report, task);
 
   if (!o.trace_file.empty()) {
@@ -223,7 +253,7 @@ int run_equiv(const EquivOptions& o, const RunGuard& guard) {
     std::cout << report::equivalence_json(run, product, *system).dump(2) << "\n";
   else
     std::cout << report::equivalence_text(run, product, *system);
-  return logic::exit_code(run.report);
+  return end_here_if_racers_left_behind(logic::exit_code(run.report));
 }
 
 }  // namespace
