@@ -434,13 +434,7 @@ int run_check_body(const CheckOptions& o, const RunGuard& guard, CheckMode mode)
   } else {
     std::cout << report::check_text(result, *ts, render);
   }
-  if (render_error) {
-    if (engine::abandoned_racers() == 0) std::rethrow_exception(render_error);
-    // As run_with_exit_codes would say it, before the process ends here.
-    return end_here_if_racers_left_behind(
-        run_with_exit_codes([&]() -> int { std::rethrow_exception(render_error); }, std::cerr,
-                            o.json ? &std::cout : nullptr));
-  }
+  if (render_error) rethrow_unless_racers_left_behind(render_error, o.json ? &std::cout : nullptr);
   if (!write_errors.empty()) {
     progress.clear();
     for (const auto& e : write_errors) std::cerr << "sfcv: error: " << e << "\n";

@@ -135,7 +135,7 @@ void shorten_traces(logic::CheckReport& report, const logic::CheckTask& task) {
 int write_equivalence_reports(const EquivOptions& o, report::EquivalenceRun& run,
                               const logic::CheckTask& task,
                               const semantics::EquivalenceProduct& product,
-                              const semantics::TransitionSystem& system_ref);
+                              const semantics::TransitionSystem& system);
 
 int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   static const std::vector<std::string> engines = {"auto", "explicit", "bdd", "bmc", "kind", "ic3"};
@@ -212,18 +212,14 @@ int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   try {
     return write_equivalence_reports(o, run, task, product, *system);
   } catch (...) {
-    if (engine::abandoned_racers() == 0) throw;
-    const auto error = std::current_exception();
-    return end_here_if_racers_left_behind(run_with_exit_codes(
-        [&]() -> int { std::rethrow_exception(error); }, std::cerr, o.json ? &std::cout : nullptr));
+    rethrow_unless_racers_left_behind(std::current_exception(), o.json ? &std::cout : nullptr);
   }
 }
 
 int write_equivalence_reports(const EquivOptions& o, report::EquivalenceRun& run,
                               const logic::CheckTask& task,
                               const semantics::EquivalenceProduct& product,
-                              const semantics::TransitionSystem& system_ref) {
-  const auto* system = &system_ref;
+                              const semantics::TransitionSystem& system) {
   const OutputPath trace_out{o.trace_file, "--trace-file"};
   const OutputPath html_out{o.html, "--html"};
   if (o.engine != "explicit" && o.engine != "bmc") shorten_traces(run.report, task);
@@ -238,21 +234,21 @@ int write_equivalence_reports(const EquivOptions& o, report::EquivalenceRun& run
     std::string text;
     if (first) {
       if (o.trace == "json")
-        text = report::equivalence_trace_json(*first, product, *system).dump(2) + "\n";
+        text = report::equivalence_trace_json(*first, product, system).dump(2) + "\n";
       else if (o.trace == "vcd")
-        text = report::equivalence_trace_vcd(*first, product, *system, parse_cycle_ms(o.cycle));
+        text = report::equivalence_trace_vcd(*first, product, system, parse_cycle_ms(o.cycle));
       else
-        text = report::equivalence_trace_table(*first, product, *system);
+        text = report::equivalence_trace_table(*first, product, system);
     }
     write_output(trace_out, text);
   }
   if (!o.html.empty())
     write_output(html_out,
-                 report::equivalence_html(report::equivalence_json(run, product, *system)));
+                 report::equivalence_html(report::equivalence_json(run, product, system)));
   if (o.json)
-    std::cout << report::equivalence_json(run, product, *system).dump(2) << "\n";
+    std::cout << report::equivalence_json(run, product, system).dump(2) << "\n";
   else
-    std::cout << report::equivalence_text(run, product, *system);
+    std::cout << report::equivalence_text(run, product, system);
   return end_here_if_racers_left_behind(logic::exit_code(run.report));
 }
 

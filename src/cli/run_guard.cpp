@@ -50,6 +50,13 @@ int end_here_if_racers_left_behind(int code) {
   std::_Exit(code);
 }
 
+void rethrow_unless_racers_left_behind(std::exception_ptr error, std::ostream* json_out) {
+  if (engine::abandoned_racers() == 0) std::rethrow_exception(error);
+  end_here_if_racers_left_behind(
+      run_with_exit_codes([&]() -> int { std::rethrow_exception(error); }, std::cerr, json_out));
+  std::abort();  // not reached: a racer was left behind, so the call above ends the process
+}
+
 RunGuard::RunGuard(const LimitOptions& options, std::shared_ptr<std::atomic<bool>> cancel)
     : budget_(make_budget(options)) {
   budget_.cancel = cancel ? std::move(cancel) : std::make_shared<std::atomic<bool>>(false);

@@ -9,8 +9,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <functional>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <thread>
 
@@ -72,5 +74,11 @@ double race_grace_seconds(double timeout_seconds);
 /// system this run built: the process ends here with `code`, its report already printed, before
 /// the system is freed. Otherwise returns `code`.
 int end_here_if_racers_left_behind(int code);
+
+/// For an error after the engines ran: rethrows `error` when no racer was left behind; else
+/// prints it as run_with_exit_codes does (also as JSON on `json_out` when given) and ends the
+/// process here with its exit code (end_here_if_racers_left_behind).
+[[noreturn]] void rethrow_unless_racers_left_behind(std::exception_ptr error,
+                                                    std::ostream* json_out);
 
 }  // namespace sfcv::cli

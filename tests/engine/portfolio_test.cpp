@@ -279,6 +279,16 @@ void release(StuckEngine& stuck) {
   EXPECT_EQ(abandoned_racers(), 0u);
 }
 
+/// A race without the explicit probe whose BDD slot is `stuck`, left behind 0.2 s after the
+/// deadline or the last answer.
+PortfolioOptions race_with_stuck_bdd(std::shared_ptr<StuckEngine> stuck) {
+  PortfolioOptions options;
+  options.probe_states = 0;
+  options.abandon_after = 0.2;
+  options.bdd_racer = std::move(stuck);
+  return options;
+}
+
 TEST(Portfolio, ARacerThatDoesNotStopIsLeftBehindOnceEveryQuestionIsDecided) {
   // IC3 proves the invariant at once and cancels the race; the BDD slot never stops. With
   // abandon_after the report comes without it, and IC3's answer stands.
@@ -287,11 +297,7 @@ TEST(Portfolio, ARacerThatDoesNotStopIsLeftBehindOnceEveryQuestionIsDecided) {
   const auto top = (std::uint64_t{1} << 30) - 1;
   auto task = test::task_for(s.project, *s.ts, {"AG c <= " + std::to_string(top - 1)}, {});
   auto stuck = std::make_shared<StuckEngine>();
-  PortfolioOptions options;
-  options.probe_states = 0;
-  options.abandon_after = 0.2;
-  options.bdd_racer = stuck;
-  const auto report = make_portfolio_model_checker(options)->check(task);
+  const auto report = make_portfolio_model_checker(race_with_stuck_bdd(stuck))->check(task);
   EXPECT_TRUE(stuck->running) << "the race waited for the racer that does not stop";
   EXPECT_EQ(abandoned_racers(), 1u);
   ASSERT_EQ(report.results.size(), 1u);
@@ -309,11 +315,7 @@ TEST(Portfolio, ARacerThatDoesNotStopPastTheDeadlineLeavesItsQuestionsUnknown) {
   task.checks = bdd_only_checks();
   task.limits.set_timeout(0.3);
   auto stuck = std::make_shared<StuckEngine>();
-  PortfolioOptions options;
-  options.probe_states = 0;
-  options.abandon_after = 0.2;
-  options.bdd_racer = stuck;
-  const auto report = make_portfolio_model_checker(options)->check(task);
+  const auto report = make_portfolio_model_checker(race_with_stuck_bdd(stuck))->check(task);
   EXPECT_TRUE(stuck->running) << "the race waited for the racer that does not stop";
   EXPECT_FALSE(report.complete);
   EXPECT_EQ(report.limit, "time");

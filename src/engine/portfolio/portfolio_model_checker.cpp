@@ -322,7 +322,8 @@ class PortfolioModelChecker final : public ModelChecker {
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
           }
         });
-      std::vector<std::thread> threads;
+      // jthread: if a thread cannot start, those already started are joined, not terminated.
+      std::vector<std::jthread> threads;
       for (std::size_t i = 0; i < racers.size(); ++i)
         threads.emplace_back([state, i]() mutable {
           const bool abandoned = run_racer(*state, i);
