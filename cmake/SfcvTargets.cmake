@@ -29,6 +29,15 @@ function(sfcv_apply_flags target)
   endif()
 endfunction()
 
+# SFCV_UNITY_BUILD: the whole target in one unity file (batch size 0). The files of a layer may
+# not reuse a file-local name (an anonymous-namespace Parser, a static helper), which .ci/run's
+# demo build checks.
+function(sfcv_unity_build target)
+  if(SFCV_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+  endif()
+endfunction()
+
 # sfcv_add_library(<name> <dir> [DEPS ...]): every .cpp below <dir> (not below a nested layer
 # that has its own library) becomes part of sfcv_<name>; headers are included as "<layer>/x.hpp"
 # relative to src/.
@@ -48,6 +57,7 @@ function(sfcv_add_library name dir)
   endif()
   if(sources)
     sfcv_apply_flags(sfcv_${name})
+    sfcv_unity_build(sfcv_${name})
   endif()
 endfunction()
 

@@ -23,6 +23,8 @@
 
 namespace sfcv::io {
 
+// The .g7 text's own lexer and parser, named apart from the ST ones of the same layer.
+namespace g7_syntax {
 namespace {
 
 using model::ExprKind;
@@ -958,13 +960,14 @@ class Parser {
 };
 
 }  // namespace
+}  // namespace g7_syntax
 
 LoadResult load_g7(std::string_view text, const std::string& file, const model::Budget* budget) {
   LoadResult r;
-  std::vector<Token> tokens;
+  std::vector<g7_syntax::Token> tokens;
   try {
-    tokens = Lexer(text, budget).run();
-  } catch (const ParseError& e) {
+    tokens = g7_syntax::Lexer(text, budget).run();
+  } catch (const g7_syntax::ParseError& e) {
     model::SourceLocation l;
     l.file = file;
     l.line = e.line;
@@ -972,7 +975,7 @@ LoadResult load_g7(std::string_view text, const std::string& file, const model::
     r.diagnostics.push_back({model::Severity::Error, l, e.message});
     return r;
   }
-  model::Project p = Parser(std::move(tokens), file, r.diagnostics, budget).run();
+  model::Project p = g7_syntax::Parser(std::move(tokens), file, r.diagnostics, budget).run();
   if (!model::has_errors(r.diagnostics)) r.project = std::move(p);
   return r;
 }

@@ -17,7 +17,7 @@ namespace {
 
 using model::ExprKind;
 
-[[noreturn]] void cannot(const std::string& what) {
+[[noreturn]] void cannot_print(const std::string& what) {
   throw UnsupportedConstruct("cannot print as IEC 61131-3 text: " + what);
 }
 
@@ -26,7 +26,7 @@ bool is_identifier(std::string_view s) {
 }
 
 const std::string& ident(const std::string& s, std::string_view role) {
-  if (!is_identifier(s)) cannot(std::string(role) + " '" + s + "' is not an IEC identifier");
+  if (!is_identifier(s)) cannot_print(std::string(role) + " '" + s + "' is not an IEC identifier");
   return s;
 }
 
@@ -38,7 +38,7 @@ const std::string& address(const std::string& s) {
                       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                       "0123456789.*",
                       1) == std::string::npos;
-  if (!ok) cannot("address '" + s + "' is not a directly represented variable");
+  if (!ok) cannot_print("address '" + s + "' is not a directly represented variable");
   return s;
 }
 
@@ -47,46 +47,14 @@ const std::string& action_ident(const std::string& s) {
   for (std::size_t from = 0;;) {
     const auto dot = s.find('.', from);
     const auto part = s.substr(from, dot == std::string::npos ? dot : dot - from);
-    if (!is_identifier(part)) cannot("action name '" + s + "' is not an IEC identifier");
+    if (!is_identifier(part)) cannot_print("action name '" + s + "' is not an IEC identifier");
     if (dot == std::string::npos) return s;
     from = dot + 1;
   }
 }
 
-void check_expr(const model::ExprPtr& e, std::string_view where) {
-  if (!e) return;
-  switch (e->kind) {
-    case ExprKind::Rising:
-      cannot("rising edge in " + std::string(where));
-    case ExprKind::Falling:
-      cannot("falling edge in " + std::string(where));
-    case ExprKind::Delay:
-      cannot("Grafcet delay in " + std::string(where));
-    default:
-      break;
-  }
-  for (const auto& a : e->args) check_expr(a, where);
-}
-
-// A name of ST text that is no identifier would read back as something else.
-void check_names(const std::string& bad, std::string_view where) {
-  if (!bad.empty())
-    cannot("name '" + bad + "' in " + std::string(where) + " is not an IEC identifier");
-}
-
-void check_body(const model::StmtList& body, std::string_view where) {
-  check_names(first_non_st_name(body), where);
-  for (const auto& s : body) {
-    check_expr(s->value, where);
-    for (const auto& c : s->conditions) check_expr(c, where);
-    for (const auto& b : s->bodies) check_body(b, where);
-    check_body(s->else_body, where);
-    for (const auto& a : s->arguments) check_expr(a.second, where);
-  }
-}
-
-std::string time_literal(std::int64_t ms) {
-  return model::to_st(model::make_time(ms));
+void check_printable(const model::StmtList& body, const std::string& where) {
+  if (auto why = st_text_obstacle(body, where); !why.empty()) cannot_print(why);
 }
 
 std::string type_text(const model::Type& t) {
@@ -134,9 +102,12 @@ class Writer {
   explicit Writer(const model::Pou& pou) : pou_(pou), printed_(pou.associations.size(), false) {}
 
   void write(std::string& out) {
-    if (pou_.body_unsupported) cannot("POU '" + pou_.name + "', whose body sfcv does not model");
-    if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
-    if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
+    if (pou_.body_unsupported)
+      cannot_print("POU '" + pou_.name + "', whose body sfcv does not model");
+    if (!pou_.stored_actions.empty())
+      cannot_print("Grafcet stored actions (POU '" + pou_.name + "')");
+    if (!pou_.forcing_orders.empty())
+      cannot_print("Grafcet forcing orders (POU '" + pou_.name + "')");
     const bool program = pou_.kind == model::PouKind::Program;
     const bool function = pou_.kind == model::PouKind::Function;
     const std::string kind = program ? "PROGRAM" : function ? "FUNCTION" : "FUNCTION_BLOCK";
@@ -145,7 +116,7 @@ class Writer {
       // The result is the variable named like the function (model::PouKind).
       const auto* result = pou_.find_variable(pou_.name);
       if (!result || result->direction != model::VarDirection::Output)
-        cannot("FUNCTION '" + pou_.name + "' without a result");
+        cannot_print("FUNCTION '" + pou_.name + "' without a result");
       out += " : " + type_text(result->type);
     }
     out += "\n";
@@ -153,11 +124,11 @@ class Writer {
     std::vector<std::size_t> top;
     for (std::size_t i = 0; i < pou_.charts.size(); ++i)
       if (pou_.charts[i].parent_action.empty()) top.push_back(i);
-    if (top.size() > 1) cannot("POU '" + pou_.name + "' has several top-level charts");
+    if (top.size() > 1) cannot_print("POU '" + pou_.name + "' has several top-level charts");
     if (!top.empty() && !pou_.body.empty())
-      cannot("POU '" + pou_.name + "' has both an SFC and an ST body");
+      cannot_print("POU '" + pou_.name + "' has both an SFC and an ST body");
     if (!pou_.body.empty()) {
-      check_body(pou_.body, "the body of '" + pou_.name + "'");
+      check_printable(pou_.body, "the body of '" + pou_.name + "'");
       out += "\n" + model::to_st(pou_.body, 2);
     }
     std::vector<bool> chart_printed(pou_.charts.size(), false);
@@ -167,12 +138,13 @@ class Writer {
     }
     for (const auto& a : pou_.actions) action(a, chart_printed, out);
     for (std::size_t i = 0; i < pou_.charts.size(); ++i)
-      if (!chart_printed[i]) cannot("chart '" + pou_.charts[i].name + "' is the body of no action");
+      if (!chart_printed[i])
+        cannot_print("chart '" + pou_.charts[i].name + "' is the body of no action");
     for (std::size_t i = 0; i < printed_.size(); ++i)
       if (!printed_[i]) {
         const auto& a = pou_.associations[i];
-        cannot("association of action '" + a.action + "' to step '" + a.step + "' of chart '" +
-               a.chart + "', which does not exist");
+        cannot_print("association of action '" + a.action + "' to step '" + a.step +
+                     "' of chart '" + a.chart + "', which does not exist");
       }
     out += "END_" + kind + "\n";
   }
@@ -198,12 +170,12 @@ class Writer {
         out += " : " + type_text(v.type);
         if (v.initial) {
           if (v.type.kind == model::TypeKind::FunctionBlock)
-            cannot("initial value of FB instance '" + v.name + "'");
+            cannot_print("initial value of FB instance '" + v.name + "'");
           out += " := ";
           if (v.type.kind == model::TypeKind::Bool)
             out += *v.initial ? "TRUE" : "FALSE";
           else if (v.type.kind == model::TypeKind::Time)
-            out += time_literal(*v.initial);
+            out += model::to_st(model::make_time(*v.initial));
           else
             out += std::to_string(*v.initial);
         }
@@ -219,7 +191,7 @@ class Writer {
     for (std::size_t i = 0; i < c.steps.size(); ++i) {
       const auto& s = c.steps[i];
       if (s.kind != model::StepKind::Normal)
-        cannot("Grafcet macro-step or enclosing step '" + s.name + "'");
+        cannot_print("Grafcet macro-step or enclosing step '" + s.name + "'");
       out +=
           "\n" + pad + (s.initial ? "INITIAL_STEP " : "STEP ") + ident(s.name, "step name") + ":\n";
       // Associations name a step, not one of several steps of that name: print them once, under
@@ -245,19 +217,19 @@ class Writer {
   }
 
   static std::string association(const model::ActionAssociation& a) {
-    if (a.condition) cannot("assignment condition of action '" + a.action + "'");
+    if (a.condition) cannot_print("assignment condition of action '" + a.action + "'");
     std::string s = action_ident(a.action) + "(" + std::string(model::to_string(a.qualifier));
     if (model::is_timed(a.qualifier)) {
       if (a.duration_ms)
-        s += ", " + time_literal(*a.duration_ms);
+        s += ", " + model::to_st(model::make_time(*a.duration_ms));
       else if (!a.duration_variable.empty())
         s += ", " + ident(a.duration_variable, "duration variable");
       else
-        cannot("timed qualifier " + std::string(model::to_string(a.qualifier)) + " of action '" +
-               a.action + "' without a duration");
+        cannot_print("timed qualifier " + std::string(model::to_string(a.qualifier)) +
+                     " of action '" + a.action + "' without a duration");
     } else if (a.duration_ms || !a.duration_variable.empty()) {
-      cannot("duration on qualifier " + std::string(model::to_string(a.qualifier)) +
-             " of action '" + a.action + "'");
+      cannot_print("duration on qualifier " + std::string(model::to_string(a.qualifier)) +
+                   " of action '" + a.action + "'");
     }
     if (!a.indicator.empty()) s += ", " + ident(a.indicator, "indicator variable");
     return s + ");";
@@ -265,7 +237,7 @@ class Writer {
 
   static void transition(const model::Transition& t, const std::string& pad, std::string& out) {
     auto list = [](const std::vector<std::string>& v) {
-      if (v.empty()) cannot("transition without source or target steps");
+      if (v.empty()) cannot_print("transition without source or target steps");
       std::string r;
       for (const auto& x : v) r += (r.empty() ? "" : ", ") + ident(x, "step name");
       return v.size() == 1 ? r : "(" + r + ")";
@@ -273,11 +245,11 @@ class Writer {
     out += "\n" + pad + "TRANSITION";
     if (!t.name.empty()) out += " " + ident(t.name, "transition name");
     if (t.priority) {
-      if (*t.priority < 0) cannot("negative transition priority");
+      if (*t.priority < 0) cannot_print("negative transition priority");
       out += " (PRIORITY := " + std::to_string(*t.priority) + ")";
     }
-    check_expr(t.guard, "a transition condition");
-    check_names(first_non_st_name(t.guard), "a transition condition");
+    if (auto why = st_text_obstacle(t.guard, "a transition condition"); !why.empty())
+      cannot_print(why);
     out += " FROM " + list(t.sources) + " TO " + list(t.targets) + "\n";
     out += pad + "  := " + model::to_st(t.guard) + ";\n";
     out += pad + "END_TRANSITION\n";
@@ -290,19 +262,21 @@ class Writer {
         if (!model::iequals(a.name, a.variable) || !pou_.find_variable(a.variable) ||
             std::none_of(pou_.associations.begin(), pou_.associations.end(),
                          [&](const auto& x) { return model::iequals(x.action, a.name); }))
-          cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
+          cannot_print("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       case model::ActionBodyKind::Statements:
-        if (a.body_unsupported) cannot("action '" + a.name + "', whose body sfcv does not model");
-        check_body(a.body, "action '" + a.name + "'");
+        if (a.body_unsupported)
+          cannot_print("action '" + a.name + "', whose body sfcv does not model");
+        check_printable(a.body, "action '" + a.name + "'");
         out += "\n  ACTION " + ident(a.name, "action name") + ":\n" + model::to_st(a.body, 4) +
                "  END_ACTION\n";
         return;
       case model::ActionBodyKind::Chart: {
         if (a.chart < 0 || static_cast<std::size_t>(a.chart) >= pou_.charts.size())
-          cannot("action '" + a.name + "' without its chart");
+          cannot_print("action '" + a.name + "' without its chart");
         const auto index = static_cast<std::size_t>(a.chart);
-        if (chart_printed[index]) cannot("chart '" + pou_.charts[index].name + "' used twice");
+        if (chart_printed[index])
+          cannot_print("chart '" + pou_.charts[index].name + "' used twice");
         chart_printed[index] = true;
         out += "\n  ACTION " + ident(a.name, "action name") + ":";
         chart(index, 4, out);
@@ -320,9 +294,9 @@ class Writer {
 
 std::string write_iec_text(const model::Project& project) {
   if (project.dialect == model::Dialect::Grafcet)
-    cannot("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
+    cannot_print("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
   if (project.data_types_lowered)
-    cannot(
+    cannot_print(
         "a project with user data types (ARRAY, STRUCT, enumerations): sfcv models them "
         "element by element and does not print them back as declared");
   std::string out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/st_lexer.hpp"
+#include "io/st_names.hpp"
 #include "io/st_parser.hpp"
 #include "model/names.hpp"
 #include "model/nesting.hpp"
@@ -47,13 +48,6 @@ constexpr std::uint32_t kMaxResultHeight = model::kMaxNesting - 20;
 
 model::SourceLocation at(const model::SourceLocation& start, int line, int column) {
   return st::Locator(start).at(line, column);
-}
-
-bool ident_start(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-bool ident_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
 /// Comments, `(* ... *)` and CODESYS/TwinCAT `// ...` to the end of the line, become blanks,
@@ -102,9 +96,9 @@ std::vector<Instruction> split(const plcopen::BodyText& body,
     std::size_t i = line.find_first_not_of(" \t\r");
     if (i == std::string::npos) continue;
     // A label: `name:` (not `name :=`).
-    if (ident_start(line[i])) {
+    if (is_st_identifier_start(line[i])) {
       std::size_t j = i;
-      while (j < line.size() && ident_char(line[j])) ++j;
+      while (j < line.size() && is_st_identifier_char(line[j])) ++j;
       std::size_t k = line.find_first_not_of(" \t", j);
       if (k != std::string::npos && line[k] == ':' &&
           (k + 1 >= line.size() || line[k + 1] != '=')) {
@@ -122,9 +116,9 @@ std::vector<Instruction> split(const plcopen::BodyText& body,
     if (line[i] == ')') {
       j = i + 1;
       in.op = ")";
-    } else if (ident_start(line[i]) || line[i] == '&') {
+    } else if (is_st_identifier_start(line[i]) || line[i] == '&') {
       j = i + 1;
-      while (j < line.size() && ident_char(line[j])) ++j;
+      while (j < line.size() && is_st_identifier_char(line[j])) ++j;
       in.op = model::to_upper(line.substr(i, j - i));
     } else {
       errors.push_back({in.where, "IL: expected an operator, found '" + line.substr(i) + "'"});
@@ -264,7 +258,7 @@ class Translator {
         }
         forget_what_reads(in, state, instance);
         state.current = {nullptr, "undefined after a CAL (load a value first)"};
-      } else if (ident_start(op.front())) {
+      } else if (is_st_identifier_start(op.front())) {
         // A function as an operator: `MAX 10` is CR := MAX(CR, 10); `LIMIT 0, 9` is
         // LIMIT(CR, 0, 9).
         std::vector<ExprPtr> args{result(in, state)};

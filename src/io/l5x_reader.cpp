@@ -47,10 +47,6 @@ BodyText st_content(pugi::xml_node st, const XmlContext& ctx) {
   return plcopen::lines_text(st, children(st, "Line"), ctx);
 }
 
-bool ident_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
 // What an SFC element is, for reading the links around it.
 struct Node {
   enum class Kind { Step, Transition, Branch, Leg } kind = Kind::Step;
@@ -294,20 +290,20 @@ class SfcRoutineReader {
       ok = false;
     }
     for (std::size_t i = 0; i < text.size();) {
-      if (!ident_char(text[i]) || (i > 0 && ident_char(text[i - 1]))) {
+      if (!is_st_identifier_char(text[i]) || (i > 0 && is_st_identifier_char(text[i - 1]))) {
         ++i;
         continue;
       }
       std::size_t j = i;
-      while (j < text.size() && ident_char(text[j])) ++j;
+      while (j < text.size() && is_st_identifier_char(text[j])) ++j;
       const std::string word = model::to_upper(text.substr(i, j - i));
       if (word == "JSR") {
         ctx_.error(where, "unsupported: JSR (subroutine calls are not read)");
         ok = false;
       }
-      if (j + 1 < text.size() && text[j] == '.' && ident_char(text[j + 1])) {
+      if (j + 1 < text.size() && text[j] == '.' && is_st_identifier_char(text[j + 1])) {
         std::size_t m = j + 1;
-        while (m < text.size() && ident_char(text[m])) ++m;
+        while (m < text.size() && is_st_identifier_char(text[m])) ++m;
         const std::string member = model::to_upper(text.substr(j + 1, m - j - 1));
         const bool step = step_operands_.count(word) > 0;
         if ((step && member != "X") || action_operands_.count(word)) {

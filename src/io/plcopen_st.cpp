@@ -4,18 +4,12 @@
 #include <map>
 #include <utility>
 
+#include "io/st_names.hpp"
 #include "io/st_parser.hpp"
 
 namespace sfcv::io::plcopen {
 
 namespace {
-
-bool ident_start(char c) {
-  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-bool ident_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
 
 // CODESYS/TwinCAT conditions read members of members of FB instances
 // (`Table.AtStack.DI_SwitchTrue`), which the ST grammar of the model does not have. Each such
@@ -36,7 +30,8 @@ std::string hide_nested_members(
       i = stop;
       continue;
     }
-    if (!ident_start(c) || (i > 0 && (ident_char(text[i - 1]) || text[i - 1] == '#'))) {
+    if (!is_st_identifier_start(c) ||
+        (i > 0 && (is_st_identifier_char(text[i - 1]) || text[i - 1] == '#'))) {
       out += c;
       ++i;
       continue;
@@ -45,14 +40,14 @@ std::string hide_nested_members(
     std::size_t j = i;
     while (true) {
       std::size_t k = j;
-      while (k < text.size() && ident_char(text[k])) ++k;
+      while (k < text.size() && is_st_identifier_char(text[k])) ++k;
       parts.emplace_back(text.substr(j, k - j));
       if (k < text.size() && text[k] == '#') {  // a typed literal: leave it alone
         parts.clear();
         j = k;
         break;
       }
-      if (k + 1 < text.size() && text[k] == '.' && ident_start(text[k + 1])) {
+      if (k + 1 < text.size() && text[k] == '.' && is_st_identifier_start(text[k + 1])) {
         j = k + 1;
         continue;
       }

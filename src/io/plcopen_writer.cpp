@@ -25,40 +25,12 @@ using model::ExprKind;
 constexpr const char* kNamespace = "http://www.plcopen.org/xml/tc6_0201";
 constexpr const char* kXhtml = "http://www.w3.org/1999/xhtml";
 
-[[noreturn]] void cannot(const std::string& what) {
+[[noreturn]] void cannot_write(const std::string& what) {
   throw UnsupportedConstruct("cannot write as PLCopen XML: " + what);
 }
 
-void check_expr(const model::ExprPtr& e, const std::string& where) {
-  if (!e) return;
-  switch (e->kind) {
-    case ExprKind::Rising:
-      cannot("rising edge in " + where);
-    case ExprKind::Falling:
-      cannot("falling edge in " + where);
-    case ExprKind::Delay:
-      cannot("Grafcet delay in " + where);
-    default:
-      break;
-  }
-  for (const auto& a : e->args) check_expr(a, where);
-}
-
-// ST text names things only by identifiers: a name that is none (declared in an attribute,
-// where XML escapes it, but read in ST) would read back as something else.
-void check_names(const std::string& bad, const std::string& where) {
-  if (!bad.empty()) cannot("name '" + bad + "' in " + where + " is not an IEC identifier");
-}
-
-void check_body(const model::StmtList& body, const std::string& where) {
-  check_names(first_non_st_name(body), where);
-  for (const auto& s : body) {
-    check_expr(s->value, where);
-    for (const auto& c : s->conditions) check_expr(c, where);
-    for (const auto& b : s->bodies) check_body(b, where);
-    check_body(s->else_body, where);
-    for (const auto& a : s->arguments) check_expr(a.second, where);
-  }
+void check_writable(const model::StmtList& body, const std::string& where) {
+  if (auto why = st_text_obstacle(body, where); !why.empty()) cannot_write(why);
 }
 
 // Every graphical element needs a position (the schema requires one); sfcv lays nothing out.
@@ -79,10 +51,6 @@ void text_language(pugi::xml_node parent, const char* language, const std::strin
       .append_child("xhtml:p")
       .append_child(pugi::node_cdata)
       .set_value(text.c_str());
-}
-
-std::string time_literal(std::int64_t ms) {
-  return model::to_st(model::make_time(ms));
 }
 
 void type_element(pugi::xml_node type, const model::Type& t) {
@@ -160,8 +128,10 @@ class PouWriter {
         chart_written_(pou.charts.size(), false) {}
 
   void write(pugi::xml_node pous) {
-    if (!pou_.stored_actions.empty()) cannot("Grafcet stored actions (POU '" + pou_.name + "')");
-    if (!pou_.forcing_orders.empty()) cannot("Grafcet forcing orders (POU '" + pou_.name + "')");
+    if (!pou_.stored_actions.empty())
+      cannot_write("Grafcet stored actions (POU '" + pou_.name + "')");
+    if (!pou_.forcing_orders.empty())
+      cannot_write("Grafcet forcing orders (POU '" + pou_.name + "')");
     auto node = pous.append_child("pou");
     node.append_attribute("name") = pou_.name.c_str();
     node.append_attribute("pouType") = pou_type(pou_.kind);
@@ -175,18 +145,18 @@ class PouWriter {
         if (s.kind == model::StepKind::MacroStep) {
           const int i = pou_.chart_index(s.expansion);
           if (i < 0)
-            cannot("macro-step '" + s.name + "' without its expansion '" + s.expansion + "'");
+            cannot_write("macro-step '" + s.name + "' without its expansion '" + s.expansion + "'");
           // The importer names an expansion after its macro-step.
           if (!model::iequals(s.expansion, s.name))
-            cannot("macro-step '" + s.name + "' expanded by a chart of another name ('" +
-                   s.expansion + "')");
+            cannot_write("macro-step '" + s.name + "' expanded by a chart of another name ('" +
+                         s.expansion + "')");
           expansions.insert(static_cast<std::size_t>(i));
         }
     std::vector<std::size_t> bodies;
     for (std::size_t i = 0; i < pou_.charts.size(); ++i) {
       const auto& c = pou_.charts[i];
       if (!c.macro_entry.empty() || !c.macro_exit.empty())
-        cannot("Grafcet macro-step expansion '" + c.name + "' with entry/exit steps");
+        cannot_write("Grafcet macro-step expansion '" + c.name + "' with entry/exit steps");
       if (c.parent_action.empty() && !expansions.count(i)) bodies.push_back(i);
     }
     // With several top-level charts, charts are told apart by name; the importer names SFC
@@ -195,8 +165,8 @@ class PouWriter {
       for (std::size_t k = 0; k < bodies.size(); ++k) {
         const std::string expected = k == 0 ? pou_.name : pou_.name + "_" + std::to_string(k + 1);
         if (!model::iequals(pou_.charts[bodies[k]].name, expected))
-          cannot("SFC body '" + pou_.charts[bodies[k]].name + "' of POU '" + pou_.name +
-                 "' would be read back as '" + expected + "'");
+          cannot_write("SFC body '" + pou_.charts[bodies[k]].name + "' of POU '" + pou_.name +
+                       "' would be read back as '" + expected + "'");
       }
 
     if (!pou_.actions.empty()) {
@@ -214,23 +184,23 @@ class PouWriter {
       } else {
         pugi::xml_document fragment;
         if (!fragment.load_string(pou_.unsupported_text.c_str()) || !fragment.document_element())
-          cannot("the " + pou_.unsupported_language + " body of POU '" + pou_.name +
-                 "', which sfcv does not model");
+          cannot_write("the " + pou_.unsupported_language + " body of POU '" + pou_.name +
+                       "', which sfcv does not model");
         b.append_copy(fragment.document_element());
       }
     } else if (!pou_.body.empty()) {
-      check_body(pou_.body, "the body of '" + pou_.name + "'");
+      check_writable(pou_.body, "the body of '" + pou_.name + "'");
       text_language(node.append_child("body"), "ST", model::to_st(pou_.body));
     }
     for (std::size_t i = 0; i < pou_.charts.size(); ++i)
       if (!chart_written_[i])
-        cannot("chart '" + pou_.charts[i].name + "' is the body of no action (parent '" +
-               pou_.charts[i].parent_action + "')");
+        cannot_write("chart '" + pou_.charts[i].name + "' is the body of no action (parent '" +
+                     pou_.charts[i].parent_action + "')");
     for (std::size_t i = 0; i < printed_.size(); ++i)
       if (!printed_[i]) {
         const auto& a = pou_.associations[i];
-        cannot("association of action '" + a.action + "' to step '" + a.step + "' of chart '" +
-               a.chart + "', which does not exist");
+        cannot_write("association of action '" + a.action + "' to step '" + a.step +
+                     "' of chart '" + a.chart + "', which does not exist");
       }
   }
 
@@ -266,13 +236,13 @@ class PouWriter {
             text = *v.initial ? "TRUE" : "FALSE";
             break;
           case model::TypeKind::Time:
-            text = time_literal(*v.initial);
+            text = model::to_st(model::make_time(*v.initial));
             break;
           case model::TypeKind::Int:
             text = std::to_string(*v.initial);
             break;
           case model::TypeKind::FunctionBlock:
-            cannot("initial value of FB instance '" + v.name + "'");
+            cannot_write("initial value of FB instance '" + v.name + "'");
         }
         var.append_child("initialValue").append_child("simpleValue").append_attribute("value") =
             text.c_str();
@@ -290,7 +260,7 @@ class PouWriter {
                         [&](const auto& x) { return model::iequals(x.action, a.name); });
         if (!model::iequals(a.name, a.variable) || !v || v->type.kind != model::TypeKind::Bool ||
             !named)
-          cannot("action '" + a.name + "' standing for variable '" + a.variable + "'");
+          cannot_write("action '" + a.name + "' standing for variable '" + a.variable + "'");
         return;
       }
       case model::ActionBodyKind::Statements: {
@@ -299,24 +269,24 @@ class PouWriter {
         auto b = body.append_child("body");
         if (a.body_unsupported) {
           if (a.unsupported_language != "ST" && a.unsupported_language != "IL")
-            cannot("action '" + a.name + "', whose graphical body sfcv does not model");
+            cannot_write("action '" + a.name + "', whose graphical body sfcv does not model");
           // The importer ends a paragraph with a line break: drop it, or every round trip adds one.
           std::string text = a.unsupported_text;
           while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
           text_language(b, a.unsupported_language.c_str(), text);
           return;
         }
-        check_body(a.body, "action '" + a.name + "'");
+        check_writable(a.body, "action '" + a.name + "'");
         text_language(b, "ST", model::to_st(a.body));
         return;
       }
       case model::ActionBodyKind::Chart: {
         if (a.chart < 0 || static_cast<std::size_t>(a.chart) >= pou_.charts.size())
-          cannot("action '" + a.name + "' without its chart");
+          cannot_write("action '" + a.name + "' without its chart");
         const auto index = static_cast<std::size_t>(a.chart);
         if (!model::iequals(pou_.charts[index].parent_action, a.name))
-          cannot("chart '" + pou_.charts[index].name + "' of action '" + a.name +
-                 "' names another parent ('" + pou_.charts[index].parent_action + "')");
+          cannot_write("chart '" + pou_.charts[index].name + "' of action '" + a.name +
+                       "' names another parent ('" + pou_.charts[index].parent_action + "')");
         auto body = actions.append_child("action");
         body.append_attribute("name") = a.name.c_str();
         chart(body.append_child("body").append_child("SFC"), index);
@@ -331,7 +301,7 @@ class PouWriter {
   // wires gathers them in a selection convergence. A transition back to a step at or before
   // its first source ends in a jump. Transitions are written in document order.
   void chart(pugi::xml_node sfc, std::size_t index) {
-    if (chart_written_[index]) cannot("chart '" + pou_.charts[index].name + "' used twice");
+    if (chart_written_[index]) cannot_write("chart '" + pou_.charts[index].name + "' used twice");
     chart_written_[index] = true;
     const model::Chart& c = pou_.charts[index];
     const std::size_t n = c.steps.size();
@@ -340,9 +310,9 @@ class PouWriter {
     auto step_of = [&](const std::string& name, const model::Transition& t) {
       const auto it = by_name.find(model::to_upper(name));
       if (it == by_name.end())
-        cannot("transition " + (t.name.empty() ? std::string() : "'" + t.name + "' ") +
-               "of chart '" + c.name + "' names step '" + name +
-               "', which the chart does not declare");
+        cannot_write("transition " + (t.name.empty() ? std::string() : "'" + t.name + "' ") +
+                     "of chart '" + c.name + "' names step '" + name +
+                     "', which the chart does not declare");
       return it->second;
     };
 
@@ -362,11 +332,11 @@ class PouWriter {
     for (std::size_t k : order) {
       const auto& t = c.transitions[k];
       if (t.sources.empty() || t.targets.empty())
-        cannot("transition without source or target steps in chart '" + c.name + "'");
-      if (t.priority && *t.priority < 0) cannot("negative transition priority");
-      if (!t.guard) cannot("transition without a condition in chart '" + c.name + "'");
-      check_expr(t.guard, "a transition condition");
-      check_names(first_non_st_name(t.guard), "a transition condition");
+        cannot_write("transition without source or target steps in chart '" + c.name + "'");
+      if (t.priority && *t.priority < 0) cannot_write("negative transition priority");
+      if (!t.guard) cannot_write("transition without a condition in chart '" + c.name + "'");
+      if (auto why = st_text_obstacle(t.guard, "a transition condition"); !why.empty())
+        cannot_write(why);
       auto& p = plans[k];
       for (const auto& s : t.sources) {
         const auto i = step_of(s, t);
@@ -418,7 +388,8 @@ class PouWriter {
     std::vector<std::pair<std::size_t, std::vector<std::size_t>>> blocks;
     for (std::size_t i = 0; i < n; ++i) {
       const auto& s = c.steps[i];
-      if (s.kind == model::StepKind::Enclosing) cannot("Grafcet enclosing step '" + s.name + "'");
+      if (s.kind == model::StepKind::Enclosing)
+        cannot_write("Grafcet enclosing step '" + s.name + "'");
       auto e = sfc.append_child(s.kind == model::StepKind::MacroStep ? "macroStep" : "step");
       e.append_attribute("localId") = step_id[i];
       e.append_attribute("name") = s.name.c_str();
@@ -505,17 +476,17 @@ class PouWriter {
   }
 
   void association(pugi::xml_node block, const model::ActionAssociation& a) {
-    if (a.condition) cannot("assignment condition of action '" + a.action + "'");
+    if (a.condition) cannot_write("assignment condition of action '" + a.action + "'");
     auto e = block.append_child("action");
     e.append_attribute("localId") = next_id_++;
     e.append_attribute("qualifier") = std::string(model::to_string(a.qualifier)).c_str();
     if (a.duration_ms)
-      e.append_attribute("duration") = time_literal(*a.duration_ms).c_str();
+      e.append_attribute("duration") = model::to_st(model::make_time(*a.duration_ms)).c_str();
     else if (!a.duration_variable.empty())
       e.append_attribute("duration") = a.duration_variable.c_str();
     else if (model::is_timed(a.qualifier))
-      cannot("timed qualifier " + std::string(model::to_string(a.qualifier)) + " of action '" +
-             a.action + "' without a duration");
+      cannot_write("timed qualifier " + std::string(model::to_string(a.qualifier)) +
+                   " of action '" + a.action + "' without a duration");
     if (!a.indicator.empty()) e.append_attribute("indicator") = a.indicator.c_str();
     position(e, "relPosition");
     e.append_child("reference").append_attribute("name") = a.action.c_str();
@@ -540,9 +511,9 @@ std::string now_utc() {
 
 std::string write_plcopen_xml(const model::Project& project) {
   if (project.dialect == model::Dialect::Grafcet)
-    cannot("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
+    cannot_write("a Grafcet (IEC 60848) project; print it in the native Grafcet format");
   if (project.data_types_lowered)
-    cannot(
+    cannot_write(
         "a project with user data types (ARRAY, STRUCT, enumerations): sfcv models them "
         "element by element and does not print them back as declared");
   pugi::xml_document doc;

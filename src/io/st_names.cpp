@@ -6,6 +6,14 @@
 
 namespace sfcv::io {
 
+bool is_st_identifier_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+}
+
+bool is_st_identifier_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
 bool is_st_identifier(std::string_view s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   for (char c : s) {
@@ -69,6 +77,60 @@ std::string first_non_st_name(const model::StmtList& body) {
     if (auto bad = first_non_st_name(s->else_body); !bad.empty()) return bad;
   }
   return {};
+}
+
+namespace {
+
+// The first Grafcet-only operator in `e`: it has no ST form.
+std::string first_operator_without_st(const model::ExprPtr& e, std::string_view where) {
+  if (!e) return {};
+  switch (e->kind) {
+    case model::ExprKind::Rising:
+      return "rising edge in " + std::string(where);
+    case model::ExprKind::Falling:
+      return "falling edge in " + std::string(where);
+    case model::ExprKind::Delay:
+      return "Grafcet delay in " + std::string(where);
+    default:
+      break;
+  }
+  for (const auto& a : e->args)
+    if (auto why = first_operator_without_st(a, where); !why.empty()) return why;
+  return {};
+}
+
+std::string first_operator_without_st(const model::StmtList& body, std::string_view where) {
+  for (const auto& s : body) {
+    for (const auto* e : {&s->value, &s->limit, &s->step})
+      if (auto why = first_operator_without_st(*e, where); !why.empty()) return why;
+    for (const auto& i : s->target_indices)
+      if (auto why = first_operator_without_st(i, where); !why.empty()) return why;
+    for (const auto& c : s->conditions)
+      if (auto why = first_operator_without_st(c, where); !why.empty()) return why;
+    for (const auto& b : s->bodies)
+      if (auto why = first_operator_without_st(b, where); !why.empty()) return why;
+    if (auto why = first_operator_without_st(s->else_body, where); !why.empty()) return why;
+    for (const auto& a : s->arguments)
+      if (auto why = first_operator_without_st(a.second, where); !why.empty()) return why;
+  }
+  return {};
+}
+
+std::string not_an_identifier(const std::string& name, std::string_view where) {
+  if (name.empty()) return {};
+  return "name '" + name + "' in " + std::string(where) + " is not an IEC identifier";
+}
+
+}  // namespace
+
+std::string st_text_obstacle(const model::ExprPtr& e, std::string_view where) {
+  if (auto why = first_operator_without_st(e, where); !why.empty()) return why;
+  return not_an_identifier(first_non_st_name(e), where);
+}
+
+std::string st_text_obstacle(const model::StmtList& body, std::string_view where) {
+  if (auto why = not_an_identifier(first_non_st_name(body), where); !why.empty()) return why;
+  return first_operator_without_st(body, where);
 }
 
 }  // namespace sfcv::io

@@ -17,6 +17,8 @@ std::string QueryPos::str() const {
          std::to_string(column);
 }
 
+// The query language's own lexer and parser, named apart from the formula parser's.
+namespace query_syntax {
 namespace {
 
 enum class Tok {
@@ -582,17 +584,18 @@ std::string print(const Node& n, int context) {
 }
 
 }  // namespace
+}  // namespace query_syntax
 
 std::string to_string(const Node& n) {
-  return print(n, 0);
+  return query_syntax::print(n, 0);
 }
 
 NodePtr parse_query(std::string_view text, const std::string& source_name) {
-  return Parser(text, source_name).query();
+  return query_syntax::Parser(text, source_name).query();
 }
 
 std::vector<Definition> parse_library(std::string_view text, const std::string& source_name) {
-  return Parser(text, source_name).library();
+  return query_syntax::Parser(text, source_name).library();
 }
 
 }  // namespace sfcv::logic

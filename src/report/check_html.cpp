@@ -21,11 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string str(const json& j, const char* key) {
-  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
-}
-
-std::string seconds(const json& j) {
+std::string seconds_cell(const json& j) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f s", j.is_number() ? j.get<double>() : 0.0);
   return buf;
@@ -60,22 +56,22 @@ std::string script_json(const json& j) {
 /// The one place the summary takes a property's English from: a "description" string of its
 /// result (e.g. a requirement pattern's text), shown under its name; empty when there is none.
 std::string description_of(const json& property) {
-  return str(property, "description");
+  return json_text(property, "description");
 }
 
 std::string summary(const json& result) {
   std::string rows;
-  const std::string engine = str(result, "engine");
+  const std::string engine = json_text(result, "engine");
   const auto& props = result["properties"];
   for (std::size_t i = 0; i < props.size(); ++i) {
     const auto& p = props[i];
-    const std::string verdict = str(p, "verdict");
-    std::string what = str(p, "message");
-    if (p["kind"] == "property" && str(p, "formula") != str(p, "name"))
-      what = "<code>" + html_escape(str(p, "formula")) + "</code> " + html_escape(what);
+    const std::string verdict = json_text(p, "verdict");
+    std::string what = json_text(p, "message");
+    if (p["kind"] == "property" && json_text(p, "formula") != json_text(p, "name"))
+      what = "<code>" + html_escape(json_text(p, "formula")) + "</code> " + html_escape(what);
     else
       what = html_escape(what);
-    if (p.contains("description")) what = html_escape(str(p, "description")) + " " + what;
+    if (p.contains("description")) what = html_escape(json_text(p, "description")) + " " + what;
     // Two findings in the table, the rest folded away.
     std::string findings, more;
     std::size_t n = 0;
@@ -92,11 +88,11 @@ std::string summary(const json& result) {
     std::string trace;
     if (p["trace"].is_object())
       trace = "<a class=\"play\" href=\"#player\" data-property=\"" + std::to_string(i) + "\">" +
-              html_escape(str(p["trace"], "kind")) + " (" +
+              html_escape(json_text(p["trace"], "kind")) + " (" +
               counted(p["trace"]["steps"].size(), "situation") + ")</a>";
     const std::string description = description_of(p);
-    const std::string justification = str(p, "justification");
-    rows += "<tr><td class=\"name\">" + html_escape(str(p, "name")) +
+    const std::string justification = json_text(p, "justification");
+    rows += "<tr><td class=\"name\">" + html_escape(json_text(p, "name")) +
             (description.empty()
                  ? ""
                  : "<div class=\"description\">" + html_escape(description) + "</div>") +
@@ -104,7 +100,7 @@ std::string summary(const json& result) {
                                    : "<div class=\"description\">justification: " +
                                          html_escape(justification) + "</div>") +
             "</td><td>" + html_verdict(verdict) + "</td><td>" + html_escape(engine) +
-            "</td><td class=\"time\">" + seconds(p["seconds"]) + "</td><td>" + what +
+            "</td><td class=\"time\">" + seconds_cell(p["seconds"]) + "</td><td>" + what +
             (findings.empty() ? "" : "<ul class=\"findings\">" + findings + "</ul>") + "</td><td>" +
             trace + "</td></tr>\n";
   }
@@ -154,13 +150,13 @@ std::string set_count(std::uint64_t n, const std::string& sort) {
 
 std::string query_row(const json& q) {
   constexpr std::size_t kShown = 10, kListed = 200;  // shown, then folded; the JSON has all
-  const std::string sort = str(q, "sort");
+  const std::string sort = json_text(q, "sort");
   std::string answer;
   if (sort == "test") {
     answer = q.value("value", false) ? "true" : "false";
     if (q.contains("count"))
-      answer += ", witness: " +
-                html_escape(set_count(q["count"].get<std::uint64_t>(), str(q, "witness_sort")));
+      answer += ", witness: " + html_escape(set_count(q["count"].get<std::uint64_t>(),
+                                                      json_text(q, "witness_sort")));
   } else if (sort == "number") {
     answer = std::to_string(q["value"].get<std::int64_t>());
   } else {
@@ -171,7 +167,7 @@ std::string query_row(const json& q) {
   if (q.contains("elements"))
     for (const auto& e : q["elements"]) {
       if (n == kListed) break;
-      const std::string text = e.is_string() ? e.get<std::string>() : str(e, "text");
+      const std::string text = e.is_string() ? e.get<std::string>() : json_text(e, "text");
       (n++ < kShown ? shown : more) += "<li><code>" + html_escape(text) + "</code></li>";
     }
   const std::size_t total = q.contains("elements") ? q["elements"].size() : 0;
@@ -181,8 +177,8 @@ std::string query_row(const json& q) {
   if (!more.empty())
     shown += "<li><details><summary>" + std::to_string(total - kShown) + " more</summary><ul>" +
              more + "</ul></details></li>";
-  const std::string verdict = str(q, "verdict");
-  return "<tr class=\"query\"><td class=\"name\"><code>" + html_escape(str(q, "query")) +
+  const std::string verdict = json_text(q, "verdict");
+  return "<tr class=\"query\"><td class=\"name\"><code>" + html_escape(json_text(q, "query")) +
          "</code></td><td class=\"answer\">" + answer + "</td><td>" +
          (verdict.empty() ? "" : html_verdict(verdict)) + "</td><td>" +
          (shown.empty() ? "" : "<ul class=\"elements\">" + shown + "</ul>") + "</td></tr>\n";
@@ -220,7 +216,7 @@ std::size_t chart_elements(const model::Project& project) {
   return n;
 }
 
-std::string seconds_text(double s) {
+std::string limit_seconds_text(double s) {
   std::ostringstream out;
   out << (s >= 10 ? static_cast<double>(static_cast<long long>(s)) : s);
   return out.str();
@@ -273,7 +269,7 @@ void add_situation_graph(HtmlReport& report, const semantics::TransitionSystem& 
     report.situation_graph_note = "the reachable situations graph was not drawn: its " +
                                   graph.limit_reached() + " limit (" +
                                   std::to_string(kReportMaxSituations) + " stable situations, " +
-                                  seconds_text(limits.seconds) + " s) was reached";
+                                  limit_seconds_text(limits.seconds) + " s) was reached";
     return;
   }
   SituationGraphOptions so;
@@ -312,17 +308,17 @@ std::string provenance_section(const json& result) {
 
 std::string check_html(const HtmlReport& report) {
   const auto& r = report.result;
-  const std::string model = str(r, "model");
-  std::string meta = html_escape(str(r, "semantics")) + " semantics &middot; " +
-                     html_escape(str(r, "engine")) + " engine";
+  const std::string model = json_text(r, "model");
+  std::string meta = html_escape(json_text(r, "semantics")) + " semantics &middot; " +
+                     html_escape(json_text(r, "engine")) + " engine";
   const auto states = count_text(r, "states");
   meta += " &middot; " + (states ? *states + " states" : std::string("states not counted"));
   if (const auto edges = count_text(r, "edges")) meta += " &middot; " + *edges + " edges";
-  meta += " &middot; " + seconds(r["seconds"]);
+  meta += " &middot; " + seconds_cell(r["seconds"]);
   if (r.contains("complete") && !r["complete"].get<bool>())
-    meta += str(r, "limit") == "interrupted"
+    meta += json_text(r, "limit") == "interrupted"
                 ? std::string(" &middot; <strong>incomplete: interrupted</strong>")
-                : " &middot; <strong>incomplete: the " + html_escape(str(r, "limit")) +
+                : " &middot; <strong>incomplete: the " + html_escape(json_text(r, "limit")) +
                       " limit was reached</strong>";
 
   json nodes;
@@ -370,14 +366,14 @@ std::string check_html(const HtmlReport& report) {
 }
 
 std::string query_html(const nlohmann::json& answers, const HtmlReport& pictures) {
-  const std::string model = str(answers, "model");
-  std::string meta = html_escape(str(answers, "semantics")) + " semantics";
+  const std::string model = json_text(answers, "model");
+  std::string meta = html_escape(json_text(answers, "semantics")) + " semantics";
   if (answers.contains("graph")) {
     const auto& g = answers["graph"];
     meta += " &middot; " + counted(g.value("situations", 0ULL), "situation") + " &middot; " +
             counted(g.value("evolutions", 0ULL), "evolution");
     if (!g.value("complete", true))
-      meta += " &middot; <strong>incomplete: the " + html_escape(str(g, "limit")) +
+      meta += " &middot; <strong>incomplete: the " + html_escape(json_text(g, "limit")) +
               " limit was reached; the sets may be wrong in both directions</strong>";
     if (g.value("anomalies", 0ULL) > 0)
       meta += " &middot; <strong>" +

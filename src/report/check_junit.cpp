@@ -14,7 +14,7 @@ namespace sfcv::report {
 
 namespace {
 
-std::string seconds(double s) {
+std::string junit_time(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", s);  // Jenkins' junit-10.xsd: at most 3 decimals
   return buf;
@@ -63,14 +63,14 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
   suites.append_attribute("tests") = static_cast<unsigned long long>(report.results.size());
   suites.append_attribute("failures") = static_cast<unsigned long long>(failures);
   suites.append_attribute("errors") = static_cast<unsigned long long>(errors);
-  suites.append_attribute("time") = seconds(report.seconds).c_str();
+  suites.append_attribute("time") = junit_time(report.seconds).c_str();
   auto ts_node = suites.append_child("testsuite");
   ts_node.append_attribute("name") = xml_text(suite).c_str();
   ts_node.append_attribute("tests") = static_cast<unsigned long long>(report.results.size());
   ts_node.append_attribute("failures") = static_cast<unsigned long long>(failures);
   ts_node.append_attribute("errors") = static_cast<unsigned long long>(errors);
   ts_node.append_attribute("skipped") = static_cast<unsigned long long>(skipped);
-  ts_node.append_attribute("time") = seconds(report.seconds).c_str();
+  ts_node.append_attribute("time") = junit_time(report.seconds).c_str();
   if (options.provenance) ts_node.append_attribute("timestamp") = options.provenance->date.c_str();
   auto props = ts_node.append_child("properties");
   auto property = [&props](const std::string& name, const std::string& value) {
@@ -101,7 +101,7 @@ std::string check_junit(const logic::CheckReport& report, const semantics::Trans
     tc.append_attribute("classname") =
         xml_text(suite + (r.check.empty() ? ".properties" : ".standard_checks")).c_str();
     tc.append_attribute("name") = xml_text(r.name).c_str();
-    tc.append_attribute("time") = seconds(r.seconds).c_str();
+    tc.append_attribute("time") = junit_time(r.seconds).c_str();
     // Jenkins' junit-10.xsd has no file or line on a test case: where the property was
     // written (a spec file's line; the model for --ctl and the standard checks) goes to
     // system-out, with the id, the deciding engine, a pattern's English sentence and whether

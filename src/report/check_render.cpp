@@ -13,7 +13,7 @@
 namespace sfcv::report {
 
 namespace {
-std::string seconds(double s) {
+std::string run_time_text(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3fs", s);
   return buf;
@@ -101,7 +101,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
   out += (report.states_known ? counted(report.states.str(), "state") + ", " : std::string()) +
          (report.edges_known ? counted(report.edges.str(), "edge") + ", " : std::string()) +
          "depth " + std::to_string(report.depth) + " (" + report.engine + " engine, " +
-         seconds(report.seconds) + ")";
+         run_time_text(report.seconds) + ")";
   if (!report.complete)
     out += report.limit == "interrupted"
                ? std::string(" -- INCOMPLETE: interrupted (SIGINT or SIGTERM)")
@@ -127,7 +127,7 @@ std::string check_text(const logic::CheckReport& report, const semantics::Transi
     if (name.size() < width) name.resize(width, ' ');
     std::string verdict(logic::to_string(r.verdict));
     verdict.resize(11, ' ');
-    out += name + "  " + verdict + " " + seconds(r.seconds);
+    out += name + "  " + verdict + " " + run_time_text(r.seconds);
     // --engine auto past its explicit probe: which engine answered.
     if (!r.decided_by.empty() && r.decided_by != report.engine) out += "  [" + r.decided_by + "]";
     if (!r.message.empty()) out += "  " + r.message;

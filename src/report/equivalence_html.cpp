@@ -20,10 +20,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string str(const json& j, const char* key) {
-  return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
-}
-
 std::string joined(const json& list, const char* sep) {
   std::string out;
   if (list.is_array())
@@ -39,7 +35,7 @@ std::string value_cell(const json& v) {
 }
 
 std::string signal_label(const json& compared) {
-  const std::string o = str(compared, "old"), n = str(compared, "new");
+  const std::string o = json_text(compared, "old"), n = json_text(compared, "new");
   return o == n ? o : o + " / " + n;
 }
 
@@ -69,7 +65,7 @@ std::string side_table(const json& trace, const json& compared, std::size_t resu
                       html_escape(joined(cycle["old"]["steps"], ", ")) + "</td><td>" +
                       html_escape(joined(cycle["new"]["steps"], ", ")) + "</td>";
     for (const auto& c : compared) {
-      const std::string o = str(c, "old"), n = str(c, "new");
+      const std::string o = json_text(c, "old"), n = json_text(c, "new");
       bool differs = false;
       for (const auto& d : cycle["differs"]) differs = differs || d == o;
       const auto& ov = cycle["old"]["signals"];
@@ -92,15 +88,17 @@ std::string side_table(const json& trace, const json& compared, std::size_t resu
 std::string equivalence_html(const nlohmann::json& result_in) {
   json r = result_in;
   make_valid_utf8(r);  // names of the programs: bytes
-  const std::string title = str(r, "old") + " vs " + str(r, "new");
+  const std::string title = json_text(r, "old") + " vs " + json_text(r, "new");
   std::vector<std::pair<std::string, std::string>> nav = {{"verdicts", "Verdicts"}};
   const auto& results = r["results"];
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].contains("trace"))
-      nav.emplace_back("trace-" + std::to_string(i), "Difference: " + str(results[i], "signal"));
+      nav.emplace_back("trace-" + std::to_string(i),
+                       "Difference: " + json_text(results[i], "signal"));
   std::string out = html_page_head("sfcv equiv: " + title) + html_page_nav(nav);
   out += "<h1>sfcv equiv: " + html_escape(title) + "</h1>\n<p class=\"meta\">" +
-         html_verdict(str(r, "verdict")) + " &middot; " + html_escape(str(r, "engine")) + " engine";
+         html_verdict(json_text(r, "verdict")) + " &middot; " +
+         html_escape(json_text(r, "engine")) + " engine";
   if (r.contains("seconds") && r["seconds"].is_number()) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.2f s", r["seconds"].get<double>());
@@ -127,13 +125,14 @@ std::string equivalence_html(const nlohmann::json& result_in) {
     const auto& res = results[i];
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3f s", res.value("seconds", 0.0));
-    std::string what = html_escape(str(res, "message"));
+    std::string what = html_escape(json_text(res, "message"));
     if (res.contains("trace"))
       what = "<a class=\"play\" href=\"#trace-" + std::to_string(i) + "\">differ after " +
              counted(res["trace"].value("length", 0ULL), "cycle") + "</a>";
-    out += "<tr><td class=\"name\">" + html_escape(str(res, "signal")) + "</td><td>" +
-           html_verdict(str(res, "verdict")) + "</td><td>" + html_escape(str(res, "engine")) +
-           "</td><td class=\"time\">" + buf + "</td><td>" + what + "</td></tr>\n";
+    out += "<tr><td class=\"name\">" + html_escape(json_text(res, "signal")) + "</td><td>" +
+           html_verdict(json_text(res, "verdict")) + "</td><td>" +
+           html_escape(json_text(res, "engine")) + "</td><td class=\"time\">" + buf + "</td><td>" +
+           what + "</td></tr>\n";
   }
   out += "</table></div>\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -142,13 +141,13 @@ std::string equivalence_html(const nlohmann::json& result_in) {
     const auto& cycles = res["trace"]["cycles"];
     const std::string first =
         cycles.empty() ? std::string() : joined(cycles.back()["differs"], ", ");
-    out +=
-        "<section id=\"trace-" + std::to_string(i) + "\">\n<h2>" +
-        html_escape(str(res, "signal") == "all" ? std::string("The first difference")
-                                                : "The first difference of " + str(res, "signal")) +
-        ": " + html_escape(first) + " after " +
-        counted(res["trace"].value("length", 0ULL), "cycle") + "</h2>\n" +
-        side_table(res["trace"], r["compared"], i) + "</section>\n";
+    out += "<section id=\"trace-" + std::to_string(i) + "\">\n<h2>" +
+           html_escape(json_text(res, "signal") == "all"
+                           ? std::string("The first difference")
+                           : "The first difference of " + json_text(res, "signal")) +
+           ": " + html_escape(first) + " after " +
+           counted(res["trace"].value("length", 0ULL), "cycle") + "</h2>\n" +
+           side_table(res["trace"], r["compared"], i) + "</section>\n";
   }
   out += html_layout_probe() + "</body>\n</html>\n";
   return valid_utf8(out);

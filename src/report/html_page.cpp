@@ -1,5 +1,7 @@
 #include "report/html_page.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "report/markup.hpp"
 #include "report/report_assets.hpp"
 
@@ -24,6 +26,11 @@ std::string html_verdict(const std::string& verdict) {
   for (auto& c : cls)
     if (c == ' ' || c == '/') c = '-';
   return "<span class=\"verdict " + html_escape(cls) + "\">" + html_escape(verdict) + "</span>";
+}
+
+std::string json_text(const nlohmann::json& object, const char* key) {
+  return object.contains(key) && object[key].is_string() ? object[key].get<std::string>()
+                                                         : std::string();
 }
 
 std::string html_pictures_script() {

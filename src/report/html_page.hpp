@@ -3,6 +3,7 @@
 // The parts every HTML page of sfcv shares (check, query, equiv): the head with the style sheet,
 // the section navigation, a verdict badge, and the layout probe the browser tests read.
 
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,10 @@ std::string html_page_nav(const std::vector<std::pair<std::string, std::string>>
 /// `<span class="verdict violated">violated</span>`; the class is the verdict with spaces and
 /// slashes as dashes ("not checked" -> not-checked, "n/a" -> n-a).
 std::string html_verdict(const std::string& verdict);
+
+/// The string member `key` of an object of a JSON report (the pages are rendered from them), or
+/// "" when it is missing or not a string.
+std::string json_text(const nlohmann::json& object, const char* key);
 
 /// The script of the pictures (#chart-svg, #situations-svg), after the page's own: they come fitted
 /// to their boxes, a click toggles the natural size; a picture whose fitted text would be smaller

@@ -34,7 +34,7 @@ void TargetEnumerator::targets_of(StateView states, std::uint32_t count,
 
 namespace {
 
-constexpr std::uint32_t kNone = ~0U;
+constexpr std::uint32_t kNoState = ~0U;
 
 /// States enumerated together by the serial search: enough for a compiled enumerator to fill
 /// its 64 lanes with several states, few enough that the work done past a stopping state is
@@ -238,7 +238,7 @@ logic::Trace counterexample(const semantics::TransitionSystem& ts, const StateSt
     return state;
   };
   std::vector<std::uint32_t> path;
-  for (auto x = s; x != kNone; x = parent[x]) path.push_back(x);
+  for (auto x = s; x != kNoState; x = parent[x]) path.push_back(x);
   std::reverse(path.begin(), path.end());
   logic::Trace trace;
   trace.kind = logic::TraceKind::Counterexample;
@@ -543,7 +543,7 @@ class EnumerationAhead {
     bool ready = false;  ///< enumerated by a worker
   };
   struct Block {
-    std::uint32_t begin = kNone;
+    std::uint32_t begin = kNoState;
     std::vector<Chunk> chunks;
   };
 
@@ -618,7 +618,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   const StateCodec* codec = enumerator->codec();
   std::vector<StateWord> full(codec ? codec->full_words() : 0), stored;
   const std::size_t n = task.properties.size();
-  std::vector<std::uint32_t> violation(n, kNone);  ///< first violating state per property
+  std::vector<std::uint32_t> violation(n, kNoState);  ///< first violating state per property
   std::vector<double> decided_at(n, 0);
   std::size_t open = n;
   // The search asks the store only whether a target is stored (a new state's index is the
@@ -638,7 +638,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
     auto view = stored_view;
     bool converted = !codec;
     for (std::size_t i = 0; i < n; ++i) {
-      if (violation[i] != kNone) continue;
+      if (violation[i] != kNoState) continue;
       std::uint8_t scratch = FormulaMemo::kUnknown;
       std::uint8_t& verdict = memos[i].usable() ? memos[i].verdict(stored_view.data()) : scratch;
       if (verdict == FormulaMemo::kUnknown) {
@@ -712,7 +712,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   } catch (const StopInitial&) {
   }
   const std::uint32_t initial_count = store.size();
-  parent.assign(initial_count, kNone);
+  parent.assign(initial_count, kNoState);
 
   std::string limit = initial.limit;
   std::uint64_t edges = 0;
@@ -778,7 +778,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       limit = "states";
     if (!limit.empty()) {
       // As in the graph, the state stays unexpanded and what it reached has no known path.
-      for (auto i : just_violated) violation[i] = kNone;
+      for (auto i : just_violated) violation[i] = kNoState;
       open += just_violated.size();
       return false;
     }
@@ -792,7 +792,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
   // or the deadline): that state stays unexpanded, as a state limit leaves it; the states of
   // its chunk before it are expanded first. An integer input too wide to enumerate
   // (Limit::Enumeration) still ends the run: the caller names it.
-  std::uint32_t stopped_at = kNone;  ///< the state whose enumeration threw
+  std::uint32_t stopped_at = kNoState;  ///< the state whose enumeration threw
   Limit stopped_by = Limit::Time;
   WorkerPool pool(*enumerator, threads);
   // Chunks are aligned, so the workers of EnumerationAhead enumerate the chunks the search does.
@@ -853,7 +853,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       r.message =
           "no initial state: the assumptions exclude every initial situation, or none is stable "
           "(see the instability check)";
-    } else if (violation[i] != kNone) {
+    } else if (violation[i] != kNoState) {
       r.verdict = logic::Verdict::Violated;
       r.trace = counterexample(ts, store, codec, parent, violation[i], limits);
       r.trace->marked = logic::atom_observables(*p.formula);
@@ -864,7 +864,7 @@ logic::CheckReport check_invariants(const logic::CheckTask& task, TargetEnumerat
       r.message = "exploration stopped at the " + limit + " limit after " +
                   std::to_string(store.size()) + " states";
     }
-    r.seconds = violation[i] != kNone ? decided_at[i] : elapsed();
+    r.seconds = violation[i] != kNoState ? decided_at[i] : elapsed();
     report.results.push_back(std::move(r));
   }
   report.seconds = elapsed();

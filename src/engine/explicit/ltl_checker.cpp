@@ -13,7 +13,7 @@ namespace sfcv::engine {
 namespace {
 
 constexpr std::uint64_t kStutter = ~std::uint64_t{0};  ///< the self-loop of a deadlock state
-constexpr std::uint32_t kNone = ~0U;
+constexpr std::uint32_t kNoProductState = ~0U;
 
 /// The product of the graph and the automaton, built as far as it is explored.
 class Product {
@@ -128,8 +128,8 @@ std::vector<std::uint32_t> accepting_scc(Product& product, const model::Budget& 
   std::uint32_t counter = 0;
   model::BudgetPoll poll(budget, 1024);
   auto grow = [&] {
-    index.resize(product.size(), kNone);
-    low.resize(product.size(), kNone);
+    index.resize(product.size(), kNoProductState);
+    low.resize(product.size(), kNoProductState);
     on_stack.resize(product.size(), false);
   };
   auto open = [&](std::uint32_t v) {
@@ -142,7 +142,7 @@ std::vector<std::uint32_t> accepting_scc(Product& product, const model::Budget& 
   };
   for (auto root : product.initial()) {
     grow();
-    if (index[root] != kNone) continue;
+    if (index[root] != kNoProductState) continue;
     open(root);
     while (!frames.empty()) {
       if (poll.tick()) budget.check_time("searching the LTL product");
@@ -150,7 +150,7 @@ std::vector<std::uint32_t> accepting_scc(Product& product, const model::Budget& 
       if (f.i < f.next.size()) {
         const auto w = f.next[f.i++].to;
         if (w == f.v) f.self_loop = true;
-        if (index[w] == kNone) {
+        if (index[w] == kNoProductState) {
           open(w);
         } else if (on_stack[w]) {
           low[f.v] = std::min(low[f.v], index[w]);
@@ -299,12 +299,13 @@ logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
   auto any = [](std::uint32_t) { return true; };
   // Prefix: an initial state to the SCC (zero edges when an initial state is in it).
   const auto init = product.initial();
-  std::uint32_t first = kNone;
+  std::uint32_t first = kNoProductState;
   std::vector<Hop> hops;
   for (auto v : init)
     if (inside(v)) first = v;
-  if (first == kNone) hops = bfs(product, init, any, inside, first);
-  if (first == kNone) throw InternalError("check_ltl: the accepting SCC is not reachable");
+  if (first == kNoProductState) hops = bfs(product, init, any, inside, first);
+  if (first == kNoProductState)
+    throw InternalError("check_ltl: the accepting SCC is not reachable");
   const std::size_t loop_start = hops.size();
   const std::uint32_t entry = hops.empty() ? first : hops.back().v;
   // Cycle: from the entry, through a state of every acceptance set, back to the entry.
@@ -314,13 +315,13 @@ logic::PropertyResult check_ltl(CtlChecker& checker, const logic::Property& p,
     for (std::size_t k = loop_start; k < hops.size() && !met; ++k)
       met = product.in_set(hops[k].v, j);
     if (met) continue;
-    std::uint32_t src = kNone;
+    std::uint32_t src = kNoProductState;
     auto leg = bfs(
         product, {at}, inside, [&](std::uint32_t v) { return product.in_set(v, j); }, src);
     hops.insert(hops.end(), leg.begin(), leg.end());
     at = hops.back().v;
   }
-  std::uint32_t src = kNone;
+  std::uint32_t src = kNoProductState;
   auto back = bfs(
       product, {at}, inside, [&](std::uint32_t v) { return v == entry; }, src);
   if (back.empty()) throw InternalError("check_ltl: no cycle in the accepting SCC");
