@@ -32,7 +32,8 @@ inline void load_validate_build(io::LoadResult (*load)(std::string_view, const s
       semantics::make_grafcet_system(*r.project, semantics::GrafcetOptions{}, d);
     } else {
       for (const auto& pou : r.project->pous) {
-        if (!pou.has_sfc()) continue;
+        // Charts, and programs without one (ladder, ST): what `sfcv check` builds.
+        if (!pou.has_sfc() && (pou.kind != model::PouKind::Program || pou.body.empty())) continue;
         semantics::Iec61131Options o;
         o.pous = {pou.name};
         semantics::make_iec61131_system(*r.project, o, d);

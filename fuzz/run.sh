@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-20}"
 shift || true
 harnesses=("$@")
-[ ${#harnesses[@]} -eq 0 ] && harnesses=(plcopen iec_text g7 agrafe ctl query query_library fbd)
+[ ${#harnesses[@]} -eq 0 ] && harnesses=(plcopen iec_text g7 agrafe l5x ctl query query_library fbd)
 
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "${JOBS:-2}" --target $(printf 'fuzz_%s ' "${harnesses[@]}")
@@ -31,6 +31,7 @@ for h in "${harnesses[@]}"; do
     iec_text) seed "$h" -name '*.st' -o -name '*.sfc' ;;
     g7) seed "$h" -name '*.g7' ;;
     agrafe) seed "$h" -name '*.grafcet' ;;
+    l5x) seed "$h" -iname '*.l5x' ;;
     ctl) seed "$h" -name '*.ctl' -o -name '*.spec' ;;
     query) seed "$h" -name '*.sfq' ;;
     query_library) seed "$h" -name '*.sfq' ;;

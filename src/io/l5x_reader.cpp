@@ -1,4 +1,5 @@
-// Rockwell Studio 5000 `.L5X` exports (RSLogix5000Content): programs with an SFC main routine.
+// Rockwell Studio 5000 `.L5X` exports (RSLogix5000Content): programs with an SFC or RLL main
+// routine.
 //
 // A program is a POU; its tags are its variables (controller tags: a global list, as TwinCAT's
 // GVLs). An SFC routine (`<Routine Type="SFC"><SFCContent>`) is not a sequence in document
@@ -6,12 +7,17 @@
 // Simultaneous, Diverge or Converge, with Legs) joined by `DirectedLink FromID ToID`. Each
 // transition's sources and targets are read through the branches around it. Conditions and
 // action bodies are ST, one `<Line>` per line, read with the ST parser at their place in the
-// file. What the model cannot say (qualifiers other than NonStored, Boolean actions, step timer
-// and status bits other than `.X`, non-retentive assignments `[:=]`, JSR, Stop elements, user
-// priorities, SFC execution options other than the modelled ones) is refused with the element
-// path; RLL/FBD main routines load as not modelled (refused when run).
+// file; `[:=]` assigns (its tag starting at 0) and a step's `.DN` leaving it is `.T >= PRE`
+// (docs/semantics.md 1.15). What the model cannot say (qualifiers other than NonStored, Boolean
+// actions, the other step timer and status bits, JSR in ST, Stop elements, user priorities, SFC
+// execution options other than the modelled ones) is refused with the element path. An RLL main
+// routine is read with the RLL routines it calls by JSR (io/l5x_ladder.hpp): a TIMER tag that TON
+// runs is an IEC TON instance, an integer tag the rungs use only bit by bit
+// (`X.3`) is one BOOL per bit used (`X_3`), and S:FS is S_FS, TRUE in the first scan only.
+// ST/FBD main routines load as not modelled (refused when run).
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <map>
 #include <pugixml.hpp>
@@ -19,9 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "io/l5x_ladder.hpp"
 #include "io/load.hpp"
 #include "io/plcopen_st.hpp"
 #include "io/plcopen_xml_dom.hpp"
+#include "io/st_names.hpp"
 #include "model/data_types.hpp"
 #include "model/names.hpp"
 #include "model/types.hpp"
@@ -73,8 +81,13 @@ std::string describe_kind(const Node& n) {
 
 class SfcRoutineReader {
  public:
-  SfcRoutineReader(XmlContext& ctx, model::Pou& pou, model::Chart& chart)
-      : ctx_(ctx), pou_(pou), chart_(chart) {}
+  /// `step_presets`: the PRE (ms) of the program's SFC_STEP tags, by upper-case name.
+  SfcRoutineReader(XmlContext& ctx, model::Pou& pou, model::Chart& chart,
+                   const std::map<std::string, std::int64_t>& step_presets)
+      : ctx_(ctx), pou_(pou), chart_(chart), step_presets_(step_presets) {}
+
+  /// The tags the actions assign with `[:=]`, as written.
+  const std::set<std::string>& non_retentive_targets() const { return non_retentive_; }
 
   void read(pugi::xml_node content) {
     std::size_t doc = 0;
@@ -262,8 +275,9 @@ class SfcRoutineReader {
       ctx_.error(e, "unsupported: action '" + a.name + "' without an ST body");
       return;
     }
-    const auto text = st_content(st, ctx_);
-    if (!rockwell_text_ok(st, text.text)) return;
+    auto text = st_content(st, ctx_);
+    if (!rockwell_text_ok(st, text.text, nullptr)) return;
+    non_retentive_assignments(text.text);
     auto body = plcopen::parse_statements_text(text, ctx_.diagnostics());
     if (!body) return;
     a.body = std::move(*body);
@@ -277,18 +291,12 @@ class SfcRoutineReader {
     pou_.actions.push_back(std::move(a));
   }
 
-  // Rockwell ST the model has no meaning for, refused by name before parsing: the
-  // non-retentive assignment `[:=]` (cleared on the step's last scan, which depends on the
-  // controller's SFC options), JSR, and members of the chart's SFC_STEP / SFC_ACTION tags other
-  // than a step's `.X` (its activity, as IEC 61131-3's S.X).
-  bool rockwell_text_ok(pugi::xml_node where, const std::string& text) {
+  // Rockwell ST the model has no meaning for, refused by name before parsing: JSR, and members
+  // of the chart's SFC_STEP / SFC_ACTION tags other than a step's `.X` (its activity, as IEC
+  // 61131-3's S.X) and, in a condition of a transition leaving the step (`leaving`), its `.DN`.
+  bool rockwell_text_ok(pugi::xml_node where, const std::string& text,
+                        const std::vector<std::string>* leaving) {
     bool ok = true;
-    if (text.find("[:=]") != std::string::npos) {
-      ctx_.error(where,
-                 "unsupported: non-retentive assignment '[:=]' (Rockwell: cleared on the "
-                 "step's last scan, not modelled)");
-      ok = false;
-    }
     for (std::size_t i = 0; i < text.size();) {
       if (!is_st_identifier_char(text[i]) || (i > 0 && is_st_identifier_char(text[i - 1]))) {
         ++i;
@@ -306,7 +314,21 @@ class SfcRoutineReader {
         while (m < text.size() && is_st_identifier_char(text[m])) ++m;
         const std::string member = model::to_upper(text.substr(j + 1, m - j - 1));
         const bool step = step_operands_.count(word) > 0;
-        if ((step && member != "X") || action_operands_.count(word)) {
+        const bool done_bit_read =
+            step && member == "DN" && leaving &&
+            std::any_of(leaving->begin(), leaving->end(),
+                        [&](const std::string& s) { return model::iequals(s, word); }) &&
+            step_presets_.count(word) > 0 && preset_expressions_.count(word) == 0;
+        if (step && member == "DN" && !done_bit_read) {
+          ctx_.error(where, "unsupported: '" + text.substr(i, m - i) +
+                                "' (a step's DN is read in the conditions of the transitions "
+                                "leaving it, with the PRE of its SFC_STEP tag: " +
+                                (step_presets_.count(word) > 0 && !preset_expressions_.count(word)
+                                     ? "this condition does not leave the step"
+                                     : "the step has no constant PRE") +
+                                ")");
+          ok = false;
+        } else if ((step && member != "X" && !done_bit_read) || action_operands_.count(word)) {
           ctx_.error(where, "unsupported: '" + text.substr(i, m - i) + "': member " + member +
                                 " of the " + (step ? "SFC_STEP" : "SFC_ACTION") +
                                 " tag (Rockwell step timers and status bits are not modelled; "
@@ -342,7 +364,7 @@ class SfcRoutineReader {
       const Node* after = only(id, true, "outgoing");
       if (!before || !after) continue;
       if (!sources(*before, r.t.sources, r.anchor) || !targets(*after, r.t.targets)) continue;
-      r.t.guard = condition(n.node, r.t.name);
+      r.t.guard = condition(n.node, r.t.name, r.t.sources);
       if (!r.t.guard) continue;
       read.push_back(std::move(r));
     }
@@ -403,14 +425,15 @@ class SfcRoutineReader {
     return true;
   }
 
-  model::ExprPtr condition(pugi::xml_node e, const std::string& name) {
+  model::ExprPtr condition(pugi::xml_node e, const std::string& name,
+                           const std::vector<std::string>& sources) {
     const auto st = child(child(e, "Condition"), "STContent");
     if (!st) {
       ctx_.error(e, "unsupported: transition '" + name + "' without an ST condition");
       return nullptr;
     }
     auto text = st_content(st, ctx_);
-    if (!rockwell_text_ok(st, text.text)) return nullptr;
+    if (!rockwell_text_ok(st, text.text, &sources)) return nullptr;
     // A condition may end with `;`.
     auto end = text.text.find_last_not_of(" \t\r\n");
     if (end != std::string::npos && text.text[end] == ';') text.text[end] = ' ';
@@ -418,7 +441,45 @@ class SfcRoutineReader {
       ctx_.error(st, "transition '" + name + "' has an empty condition");
       return nullptr;
     }
-    return plcopen::parse_expression_text(text, ctx_.diagnostics());
+    return with_step_done_bits(plcopen::parse_expression_text(text, ctx_.diagnostics()));
+  }
+
+  // `S.DN` (SFC_STEP's done bit: on once the step has been active for its preset PRE, kept
+  // after the step is left until it is entered again, 1756-PM006) in a condition of a
+  // transition leaving S, where S is active: `S.T >= PRE`.
+  model::ExprPtr with_step_done_bits(const model::ExprPtr& e) const {
+    if (!e) return e;
+    if (e->kind == model::ExprKind::Member && model::iequals(e->member, "DN")) {
+      const auto pre = step_presets_.find(model::to_upper(e->name));
+      if (pre != step_presets_.end())
+        return model::make_binary(model::ExprKind::Ge, model::make_member(e->name, "T", e->where),
+                                  model::make_time(pre->second, e->where), e->where);
+    }
+    bool changed = false;
+    std::vector<model::ExprPtr> args;
+    for (const auto& a : e->args) {
+      args.push_back(with_step_done_bits(a));
+      changed = changed || args.back() != a;
+    }
+    if (!changed) return e;
+    auto copy = std::make_shared<model::Expr>(*e);
+    copy->args = std::move(args);
+    return copy;
+  }
+
+  // `tag [:=] value`: Studio 5000's non-retentive assignment. With SFCLastScan DontScan (the
+  // only option read) it assigns as `:=`; the tag is reset to 0 when the controller enters Run
+  // (the model's initial state), which the caller applies to the targets collected here.
+  void non_retentive_assignments(std::string& text) {
+    for (auto at = text.find("[:=]"); at != std::string::npos; at = text.find("[:=]", at)) {
+      auto end = at;
+      while (end > 0 && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+      auto begin = end;
+      while (begin > 0 && (is_st_identifier_char(text[begin - 1]) || text[begin - 1] == '.'))
+        --begin;
+      if (begin < end) non_retentive_.insert(text.substr(begin, end - begin));
+      text.replace(at, 4, "  :=");  // the same width: later columns stay right
+    }
   }
 
  public:
@@ -426,6 +487,8 @@ class SfcRoutineReader {
   void operands(pugi::xml_node content) {
     for (auto s : children(content, "Step")) {
       step_operands_.insert(model::to_upper(trim(s.attribute("Operand").value())));
+      if (is_true(s, "PresetUsesExpr"))  // the preset is an expression, not the tag's PRE
+        preset_expressions_.insert(model::to_upper(trim(s.attribute("Operand").value())));
       for (auto a : children(s, "Action"))
         action_operands_.insert(model::to_upper(trim(a.attribute("Operand").value())));
     }
@@ -440,6 +503,364 @@ class SfcRoutineReader {
   std::map<std::string, std::vector<std::string>> legs_, out_, in_;
   std::vector<pugi::xml_node> links_;
   std::set<std::string> step_names_, action_names_, step_operands_, action_operands_;
+  const std::map<std::string, std::int64_t>& step_presets_;
+  std::set<std::string> non_retentive_;
+  std::set<std::string> preset_expressions_;  ///< steps whose preset is an expression
+};
+
+// A program whose main routine is RLL: the routines it calls by JSR, as ST statements
+// (io/l5x_ladder.hpp), with the tags the rungs need in the form the model has.
+class LadderProgram : public l5x::RungOperands {
+ public:
+  LadderProgram(XmlContext& ctx, model::Pou& pou,
+                const std::map<std::string, pugi::xml_node>& timer_tags)
+      : ctx_(ctx), pou_(pou), timer_tags_(timer_tags) {}
+
+  void read(pugi::xml_node program, pugi::xml_node main) {
+    for (auto r : children(child(program, "Routines"), "Routine"))
+      routines_.emplace(trim(r.attribute("Name").value()), r);
+    const std::string main_name = trim(main.attribute("Name").value());
+    parse(main_name, 0);
+    for (const auto& [name, r] : routines_)
+      if (!parsed_.count(name))
+        ctx_.note(r, "routine '" + name + "' (" + r.attribute("Type").value() +
+                         ") is not called from the main routine '" + main_name + "': not read");
+    if (model::has_errors(ctx_.diagnostics())) return;
+    declare_tags();
+    if (model::has_errors(ctx_.diagnostics())) return;
+    std::string error;
+    auto body = subroutine(main_name, error);
+    if (!body) {
+      if (!error.empty() || !model::has_errors(ctx_.diagnostics()))
+        ctx_.error(main, error.empty() ? "main routine '" + main_name + "' not read" : error);
+      return;
+    }
+    // The temporaries hold nothing from one scan to the next (a state they kept would
+    // multiply the states), and S:FS is TRUE in the first scan only.
+    for (const auto& t : temporaries_) {
+      model::Variable v;
+      v.name = t;
+      v.where = pou_.where;
+      v.direction = model::VarDirection::Local;
+      v.type = model::Type::boolean();
+      v.initial = 0;
+      pou_.variables.push_back(std::move(v));
+      body->push_back(model::make_assign(t, model::make_bool(false, pou_.where), pou_.where));
+    }
+    if (first_scan_)
+      body->push_back(
+          model::make_assign(kFirstScan, model::make_bool(false, pou_.where), pou_.where));
+    pou_.body = std::move(*body);
+  }
+
+  model::ExprPtr bit(const std::string& operand, std::string& error) override {
+    if (model::iequals(operand, "S:FS")) return model::make_name(kFirstScan, at_);
+    if (!plain_operand(operand, error)) return nullptr;
+    const auto dot = operand.find('.');
+    if (dot == std::string::npos) return model::make_name(operand, at_);
+    const std::string base = operand.substr(0, dot), member = operand.substr(dot + 1);
+    const auto key = model::to_upper(base);
+    if (auto b = split_bit(key, member)) return model::make_name(*b, at_);
+    if (timers_.count(key) > 0) {
+      const auto m = model::to_upper(member);
+      if (m == "DN") return model::make_member(base, "Q", at_);
+      if (m == "EN") return model::make_member(base, "IN", at_);
+      if (m == "TT")
+        return model::make_nary(
+            model::ExprKind::And,
+            {model::make_member(base, "IN", at_),
+             model::make_unary(model::ExprKind::Not, model::make_member(base, "Q", at_), at_)},
+            at_);
+      error = "unsupported: '" + operand + "' (of a TIMER, .DN, .EN and .TT are read)";
+      return nullptr;
+    }
+    return model::make_member(base, member, at_);
+  }
+
+  std::string bit_target(const std::string& operand, std::string& error) override {
+    if (!plain_operand(operand, error)) return {};
+    const auto dot = operand.find('.');
+    if (dot == std::string::npos) return operand;
+    if (auto b = split_bit(model::to_upper(operand.substr(0, dot)), operand.substr(dot + 1)))
+      return *b;
+    error = "unsupported: writing '" + operand +
+            "' (a bit of an integer tag is written when the rungs use that tag only bit by bit)";
+    return {};
+  }
+
+  model::ExprPtr value(const std::string& operand, std::string& error) override {
+    if (const auto v = plcopen::parse_int_literal(operand); v.value)
+      return model::make_int(*v.value, at_);
+    const auto name = value_target(operand, error);
+    return name.empty() ? nullptr : model::make_name(name, at_);
+  }
+
+  std::string value_target(const std::string& operand, std::string& error) override {
+    if (!plain_operand(operand, error)) return {};
+    if (operand.find('.') != std::string::npos || split_.count(model::to_upper(operand))) {
+      error = "unsupported: '" + operand + "' as an integer (a tag or a literal is read)";
+      return {};
+    }
+    return operand;
+  }
+
+  std::optional<std::pair<std::string, std::int64_t>> timer(const std::string& operand,
+                                                            std::string& error) override {
+    const auto it = timers_.find(model::to_upper(operand));
+    if (it == timers_.end()) {
+      error = "TON on '" + operand + "', which is not a TIMER tag of the program";
+      return std::nullopt;
+    }
+    return it->second;
+  }
+
+  std::optional<model::StmtList> subroutine(const std::string& routine,
+                                            std::string& error) override {
+    const auto it = parsed_.find(routine);
+    if (it == parsed_.end()) {
+      error = "JSR to '" + routine + "', which is not read";  // reported by parse()
+      return std::nullopt;
+    }
+    if (std::find(calling_.begin(), calling_.end(), routine) != calling_.end()) {
+      error = "recursive JSR: routine '" + routine + "' calls itself (through '" + calling_.back() +
+              "')";
+      return std::nullopt;
+    }
+    if (const auto done = translated_.find(routine); done != translated_.end()) {
+      unfolded_ += done->second.second;
+      if (unfolded_ > kMaxUnfoldedStatements) {
+        error = "the JSR calls unfold into more than " + std::to_string(kMaxUnfoldedStatements) +
+                " statements";
+        return std::nullopt;
+      }
+      return done->second.first;
+    }
+    calling_.push_back(routine);
+    const auto saved_at = at_;
+    const auto unfolded_before = unfolded_;
+    l5x::RungTranslator translator(*this, "SFCV_RLL_" + std::to_string(++translators_) + "_");
+    model::StmtList body;
+    bool ok = true;
+    for (const auto& [rung, seq] : it->second) {
+      ctx_.poll();
+      at_ = ctx_.where(rung);
+      std::vector<std::string> errors;
+      if (!translator.translate(seq, at_, body, errors)) {
+        ok = false;
+        for (const auto& e : errors)
+          ctx_.error(rung, "rung " + std::string(rung.attribute("Number").value()) +
+                               " of routine '" + routine + "': " + e);
+      }
+    }
+    for (const auto& t : translator.temporaries()) temporaries_.push_back(t);
+    at_ = saved_at;
+    calling_.pop_back();
+    if (!ok) return std::nullopt;
+    // A routine called from several places is translated once; its statements are shared.
+    unfolded_ += body.size();
+    translated_[routine] = {body, unfolded_ - unfolded_before};
+    if (unfolded_ > kMaxUnfoldedStatements) {
+      error = "the JSR calls unfold into more than " + std::to_string(kMaxUnfoldedStatements) +
+              " statements";
+      return std::nullopt;
+    }
+    return body;
+  }
+
+ private:
+  static constexpr const char* kFirstScan = "S_FS";
+  /// Statements the JSRs may unfold into (a routine called twice by each of 30 nested
+  /// routines would otherwise be 2^30 copies).
+  static constexpr std::size_t kMaxUnfoldedStatements = 200000;
+  /// JSR nesting read (each level is a recursion of the reader).
+  static constexpr int kMaxCallDepth = 64;
+
+  // An operand the model can name: no module data (`Local:1:I.Data`), no array element.
+  bool plain_operand(const std::string& operand, std::string& error) const {
+    if (operand.find_first_of(":[?") == std::string::npos && !operand.empty()) return true;
+    error = "unsupported: operand '" + operand +
+            "' (tags, their members and bits, S:FS and integer literals are read)";
+    return false;
+  }
+
+  // `X.3` of a tag read bit by bit: its BOOL.
+  std::optional<std::string> split_bit(const std::string& key, const std::string& member) const {
+    const auto it = split_.find(key);
+    if (it == split_.end() || member.empty() || member.size() > 2 ||
+        member.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
+    return it->second + "_" + member;
+  }
+
+  // The routines main calls by JSR, at any depth; located errors for what is not read.
+  void parse(const std::string& name, int depth) {
+    const auto r = routines_.find(name)->second;
+    auto& rungs = parsed_[name];
+    for (auto rung : children(child(r, "RLLContent"), "Rung")) {
+      ctx_.poll();
+      const std::string number = rung.attribute("Number").value();
+      const std::string type = rung.attribute("Type").value();
+      if (!type.empty() && type != "N") {
+        ctx_.error(rung, "unsupported: rung " + number + " of routine '" + name +
+                             "' with pending edits (Type '" + type + "')");
+        continue;
+      }
+      std::string error;
+      auto seq = l5x::parse_rung(child(rung, "Text").text().get(), error);
+      if (!seq) {
+        ctx_.error(rung, "rung " + number + " of routine '" + name + "': " + error);
+        continue;
+      }
+      rungs.emplace_back(rung, *seq);
+      l5x::each_instruction(*seq, [&](const l5x::RungElement& e) {
+        for (std::size_t i = 0; i < e.operands.size(); ++i) use(e, i);
+        if (e.mnemonic != "JSR" || e.operands.empty()) return;
+        const auto& callee = e.operands[0];
+        const auto c = routines_.find(callee);
+        if (c == routines_.end()) {
+          ctx_.error(rung, "rung " + number + " of routine '" + name + "': JSR to '" + callee +
+                               "', which is not in the program");
+        } else if (std::string_view(c->second.attribute("Type").value()) != "RLL") {
+          ctx_.error(rung, "unsupported: rung " + number + " of routine '" + name +
+                               "': JSR to the " + c->second.attribute("Type").value() +
+                               " routine '" + callee + "' (RLL routines are read as subroutines)");
+        } else if (depth >= kMaxCallDepth) {
+          ctx_.error(rung, "rung " + number + " of routine '" + name + "': JSR calls nested " +
+                               "deeper than " + std::to_string(kMaxCallDepth));
+        } else if (!parsed_.count(callee)) {
+          parse(callee, depth + 1);
+        }
+      });
+    }
+  }
+
+  // How the rungs use a tag: bit by bit, as a whole, or as a TON's timer.
+  void use(const l5x::RungElement& e, std::size_t i) {
+    const auto& operand = e.operands[i];
+    if ((e.mnemonic == "JSR") || operand.empty()) return;
+    if (e.mnemonic == "TON") {
+      if (i == 0) ++ton_calls_[model::to_upper(operand)];
+      return;
+    }
+    const auto dot = operand.find('.');
+    const auto key = model::to_upper(operand.substr(0, dot));
+    const bool bit = dot != std::string::npos && dot + 1 < operand.size() &&
+                     operand.size() - dot - 1 <= 2 &&
+                     operand.find_first_not_of("0123456789", dot + 1) == std::string::npos;
+    if (bit)
+      bits_[key].insert(std::stoi(operand.substr(dot + 1)));
+    else
+      whole_.insert(key);
+  }
+
+  void declare_tags() {
+    std::vector<model::Variable> vars;
+    for (auto& v : pou_.variables) {
+      const auto key = model::to_upper(v.name);
+      const auto b = bits_.find(key);
+      if (b == bits_.end() || whole_.count(key) || v.type.kind != model::TypeKind::Int) {
+        vars.push_back(std::move(v));
+        continue;
+      }
+      // Only bits of it are used: one BOOL each, as the model's engines see them best.
+      const int width = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(v.type.hi))) +
+                        (v.type.lo < 0 ? 1 : 0);
+      split_[key] = v.name;
+      for (int n : b->second) {
+        model::Variable bit = v;
+        bit.name = v.name + "_" + std::to_string(n);
+        bit.type = model::Type::boolean();
+        bit.initial = v.initial ? (static_cast<std::uint64_t>(*v.initial) >> n) & 1U : 0;
+        if (n >= width)
+          error_at(v.where, "rungs use bit " + std::to_string(n) + " of tag '" + v.name +
+                                "', which has " + std::to_string(width) + " bits");
+        vars.push_back(std::move(bit));
+      }
+    }
+    pou_.variables = std::move(vars);
+    for (const auto& [key, calls] : ton_calls_) {
+      const auto t = timer_tags_.find(key);
+      if (t == timer_tags_.end()) continue;  // reported where TON names it
+      if (calls > 1) {
+        ctx_.error(t->second, "unsupported: TON runs " + std::to_string(calls) +
+                                  " times on TIMER tag '" + t->second.attribute("Name").value() +
+                                  "' (one TON per TIMER is read)");
+        continue;
+      }
+      model::Variable v;
+      v.name = t->second.attribute("Name").value();
+      v.where = ctx_.where(t->second);
+      v.direction = model::VarDirection::Local;
+      v.type = model::Type::function_block(model::StandardFb::TON);
+      timers_[key] = {v.name, timer_preset(t->second)};
+      pou_.variables.push_back(std::move(v));
+    }
+    for (const auto& [key, t] : timer_tags_)
+      if (!ton_calls_.count(key))
+        ctx_.note(t, "tag '" + std::string(t.attribute("Name").value()) +
+                         "' of type TIMER is not run by a TON: a use of it is an error");
+    first_scan_ = whole_.count("S:FS") > 0;
+    std::set<std::string> names;
+    for (const auto& v : pou_.variables)
+      if (!names.insert(model::to_upper(v.name)).second)
+        error_at(v.where, "the BOOL '" + v.name +
+                              "' that a bit of an integer tag is read as is already a tag");
+    if (first_scan_) {
+      if (names.count(kFirstScan) > 0)
+        error_at(pou_.where, std::string("S:FS is read as the BOOL ") + kFirstScan +
+                                 ", which is already a tag");
+      model::Variable v;
+      v.name = kFirstScan;
+      v.where = pou_.where;
+      v.direction = model::VarDirection::Local;
+      v.type = model::Type::boolean();
+      v.initial = 1;
+      pou_.variables.push_back(std::move(v));
+    }
+  }
+
+  // PRE of the TIMER's decorated data, in milliseconds (Logix timers count milliseconds).
+  std::int64_t timer_preset(pugi::xml_node tag) {
+    std::int64_t pre = 0;
+    for (auto d : children(tag, "Data")) {
+      if (std::string_view(d.attribute("Format").value()) != "Decorated") continue;
+      for (auto m : children(child(d, "Structure"), "DataValueMember")) {
+        const std::string name = m.attribute("Name").value();
+        const auto v = plcopen::parse_int_literal(trim(m.attribute("Value").value()));
+        if (name == "PRE" && v.value) pre = *v.value;
+        if (name == "ACC" && v.value && *v.value != 0)
+          ctx_.warning(m, "TIMER '" + std::string(tag.attribute("Name").value()) +
+                              "': its accumulated value " + std::to_string(*v.value) +
+                              " is read as 0 (an IEC TON starts from 0)");
+      }
+    }
+    if (pre < 0) ctx_.error(tag, "TIMER with a negative preset");
+    return pre;
+  }
+
+  void error_at(const model::SourceLocation& where, std::string message) {
+    ctx_.diagnostics().push_back({model::Severity::Error, where, std::move(message)});
+  }
+
+  XmlContext& ctx_;
+  model::Pou& pou_;
+  const std::map<std::string, pugi::xml_node>& timer_tags_;
+  std::map<std::string, pugi::xml_node> routines_;
+  std::map<std::string, std::vector<std::pair<pugi::xml_node, l5x::RungSequence>>> parsed_;
+  std::map<std::string, std::set<int>> bits_;  ///< upper-case tag -> bits the rungs use
+  std::set<std::string> whole_;                ///< upper-case tags used as a whole
+  std::map<std::string, int> ton_calls_;       ///< upper-case TIMER tag -> TON instructions
+  std::map<std::string, std::string> split_;   ///< upper-case tag -> its name, read by bit
+  /// Upper-case TIMER tag that TON runs -> its name and preset (ms).
+  std::map<std::string, std::pair<std::string, std::int64_t>> timers_;
+  std::vector<std::string> calling_;  ///< the JSR chain being read
+  /// Routine -> its statements and the statements they unfold into, JSRs included.
+  std::map<std::string, std::pair<model::StmtList, std::size_t>> translated_;
+  std::size_t unfolded_ = 0;
+  std::vector<std::string> temporaries_;
+  int translators_ = 0;
+  bool first_scan_ = false;
+  model::SourceLocation at_;
 };
 
 class L5xReader {
@@ -507,8 +928,17 @@ class L5xReader {
     if (is_true(p, "Disabled"))
       ctx_.warning(p,
                    "program '" + pou.name + "' is disabled in the controller; read as if it ran");
+    timer_tags_.clear();
+    step_presets_.clear();
     read_tags(child(p, "Tags"), pou, false);
     const std::string main = trim(p.attribute("MainRoutineName").value());
+    for (auto r : children(child(p, "Routines"), "Routine"))
+      if (trim(r.attribute("Name").value()) == main &&
+          std::string_view(r.attribute("Type").value()) == "RLL") {
+        LadderProgram(ctx_, pou, timer_tags_).read(p, r);
+        project_.pous.push_back(std::move(pou));
+        return;
+      }
     bool main_seen = false;
     for (auto r : children(child(p, "Routines"), "Routine")) {
       const std::string name = trim(r.attribute("Name").value());
@@ -522,17 +952,21 @@ class L5xReader {
                             "' is not the program's main routine (routines called by JSR are "
                             "not read)");
       } else if (is_main) {
-        // RLL, ST or FBD main routine: loads as not modelled, refused when run.
+        // ST or FBD main routine: loads as not modelled, refused when run.
         pou.body_unsupported = true;
-        pou.unsupported_language = type == "RLL" ? "LD" : type;
+        pou.unsupported_language = type;
         pou.unsupported_reason = ctx_.where(r).str() + ": main routine '" + name + "' is " + type +
-                                 ", which is not read (SFC main routines are)";
+                                 ", which is not read (SFC and RLL main routines are)";
         ctx_.warning(r, "program '" + pou.name + "': its main routine '" + name + "' (" + type +
                             ") is not modelled; running it is refused");
       } else {
         ctx_.note(r, "routine '" + name + "' (" + type + ") is not the main routine: not read");
       }
     }
+    for (const auto& [name, t] : timer_tags_)
+      ctx_.note(t, "tag '" + std::string(t.attribute("Name").value()) +
+                       "' of type TIMER is not modelled (a TIMER is read where an RLL rung runs "
+                       "TON on it): a use of it is an error");
     if (!main.empty() && !main_seen)
       ctx_.error(p,
                  "program '" + pou.name + "': its main routine '" + main + "' is not in the file");
@@ -550,10 +984,25 @@ class L5xReader {
     model::Chart c;
     c.name = name;
     c.where = ctx_.where(r);
-    SfcRoutineReader reader(ctx_, pou, c);
+    SfcRoutineReader reader(ctx_, pou, c, step_presets_);
     reader.operands(content);
     reader.read(content);
     pou.charts.push_back(std::move(c));
+    for (const auto& target : reader.non_retentive_targets()) {
+      auto* v = tag_variable(pou, target);
+      for (auto& other : project_.pous) {
+        if (v) break;
+        v = tag_variable(other, target);
+        if (v && v->direction != model::VarDirection::Global) v = nullptr;
+      }
+      if (v && v->initial && *v->initial != 0) {
+        ctx_.warning(r, "tag '" + v->name +
+                            "' is assigned with [:=], which Studio 5000 resets to 0 when the "
+                            "controller enters Run: its initial value " +
+                            std::to_string(*v->initial) + " is read as 0");
+        v->initial = 0;
+      }
+    }
   }
 
   // Tags: BOOL and integer base tags are variables; I/O aliases of one bit (`Local:1:I.Data.4`)
@@ -577,7 +1026,12 @@ class L5xReader {
                   "tag '" + v.name + "' (" + kind + ") is not modelled: a use of it is an error");
         continue;
       } else if (type == "SFC_STEP" || type == "SFC_ACTION" || type == "SFC_STOP") {
+        if (type == "SFC_STEP") step_preset(t);
         continue;  // the chart's own: its steps and actions
+      } else if (type == "TIMER" && !global && t.attribute("Dimensions").empty()) {
+        // A TON instance if a rung runs TON on it (LadderProgram), else left out.
+        timer_tags_[model::to_upper(v.name)] = t;
+        continue;
       } else {
         const auto et = model::elementary_type(type);
         if (!et || et->kind == model::TypeKind::FunctionBlock ||
@@ -634,6 +1088,24 @@ class L5xReader {
     return true;
   }
 
+  static model::Variable* tag_variable(model::Pou& pou, const std::string& name) {
+    for (auto& v : pou.variables)
+      if (model::iequals(v.name, name)) return &v;
+    return nullptr;
+  }
+
+  // The PRE of an SFC_STEP tag's decorated data (its step's timer preset, ms).
+  void step_preset(pugi::xml_node t) {
+    for (auto d : children(t, "Data")) {
+      if (std::string_view(d.attribute("Format").value()) != "Decorated") continue;
+      for (auto m : children(child(d, "Structure"), "DataValueMember"))
+        if (std::string_view(m.attribute("Name").value()) == "PRE")
+          if (const auto v = plcopen::parse_int_literal(trim(m.attribute("Value").value()));
+              v.value && *v.value >= 0)
+            step_presets_[model::to_upper(trim(t.attribute("Name").value()))] = *v.value;
+    }
+  }
+
   void initial_value(pugi::xml_node t, model::Variable& v) {
     for (auto d : children(t, "Data")) {
       if (std::string_view(d.attribute("Format").value()) != "Decorated") continue;
@@ -656,6 +1128,8 @@ class L5xReader {
 
   XmlContext& ctx_;
   model::Project& project_;
+  std::map<std::string, pugi::xml_node> timer_tags_;  ///< the program's, upper-case name
+  std::map<std::string, std::int64_t> step_presets_;  ///< SFC_STEP tag (upper case) -> PRE, ms
 };
 
 }  // namespace
@@ -673,7 +1147,8 @@ LoadResult load_l5x(std::string_view text, const std::string& file, const model:
       L5xReader(ctx, project).read(doc.document_element());
   }
   bool program = false;
-  for (const auto& pou : project.pous) program = program || pou.has_sfc() || pou.body_unsupported;
+  for (const auto& pou : project.pous)
+    program = program || pou.has_sfc() || pou.body_unsupported || !pou.body.empty();
   if (!program && !model::has_errors(diags))
     diags.push_back({model::Severity::Error, project.where, "no program with a routine read"});
   if (project.name.empty() && !project.pous.empty()) project.name = project.pous.back().name;

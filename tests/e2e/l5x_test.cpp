@@ -44,11 +44,56 @@ TEST(L5xE2E, DemoChartAndItsIecTwinGiveTheSameVerdicts) {
 
 TEST(L5xE2E, AStepTimerBitIsExitTwoNamingIt) {
   auto sfc = rockwell::demo_sfc();
-  sfc.replace(sfc.find("NOT a"), 5, "S1.DN");
+  sfc.replace(sfc.find("NOT stop"), 8, "S1.DN");
   const auto file = write_temp(rockwell::l5x(rockwell::demo_tags(), sfc), ".L5X");
   const auto r = run_sfcv("check " + file);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("'S1.DN': member DN of the SFC_STEP tag"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'S1.DN' (a step's DN is read in the conditions of the transitions leaving "
+                       "it"),
+            std::string::npos)
+      << r.err;
+}
+
+// The two-step ladder sequence of tests/support/l5x_text.hpp, checked through the binary on
+// every engine. The verdicts follow from Rockwell's rung rules, not from sfcv: S:FS sets X.0
+// in the first scan; each step bit holds until its transition bit fires, so the two steps
+// exclude each other; OTL(alarm) is never unlatched; motor is written by the Actions routine,
+// which runs before Steps in the same scan, so it lags X.1 by one scan; T1 ends X.1.
+TEST(L5xE2E, LadderSequenceVerdictsFollowFromTheRungRules) {
+  const auto file = write_temp(
+      rockwell::l5x_ladder(rockwell::ladder_tags(), rockwell::ladder_routines()), ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AG !(X_0 & X_1)", "holds"},
+      {"AX AG !S_FS", "holds"},
+      {"AG (alarm -> AG alarm)", "holds"},
+      {"AG (motor -> X_1)", "violated"},
+      {"AG (X_1 -> EF X_0)", "holds"},
+      {"AG !alarm", "violated"},
+      {"EF (X_1 & motor)", "holds"},
+      {"AG (X_0 | X_1)", "violated"},  // the initial situation, before S:FS's first scan
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+  const auto r = run_sfcv("info " + file);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// ONS from its manual text: rung-condition-out is TRUE for one scan when rung-condition-in goes
+// TRUE. So a pulse never lasts two scans, and it does come.
+TEST(L5xE2E, OneShotPulsesForOneScan) {
+  const auto file =
+      write_temp(rockwell::l5x_ladder(
+                     rockwell::alias("go", "Local:1:I.Data.0") + rockwell::bool_tag("mem", 0) +
+                         rockwell::alias("pulse", "Local:1:O.Data.0"),
+                     rockwell::rll_routine("Main", {"XIC(go)ONS(mem)OTE(pulse);"})),
+                 ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AG (pulse -> AX !pulse)", "holds"},
+      {"EF pulse", "holds"},
+      {"AG !pulse", "violated"},
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
 }  // namespace

@@ -104,15 +104,19 @@ void expect_refused(const std::string& text, const std::string& message,
 }
 
 TEST(L5x, RockwellConstructsWithoutAModelAreRefusedByName) {
-  // A step's timer bit: Rockwell's SFC_STEP.DN depends on its preset, not modelled.
+  // A step's done bit where its step may be inactive (it keeps its value after the step is
+  // left), or without a PRE in its SFC_STEP tag; its other timer bits.
   auto sfc = demo_sfc();
-  sfc.replace(sfc.find("NOT a"), 5, "S1.DN");
-  expect_refused(l5x(demo_tags(), sfc), "'S1.DN': member DN of the SFC_STEP tag",
-                 "Routine[@name='Chart']/SFCContent/Transition[3]/Condition/STContent");
-  // The non-retentive assignment.
+  sfc.replace(sfc.find("NOT stop"), 8, "S1.DN");
+  expect_refused(l5x(demo_tags() + step_tag("S1", 300), sfc),
+                 "'S1.DN' (a step's DN is read in the conditions of the transitions leaving it",
+                 "Routine[@name='Chart']/SFCContent/Transition[4]/Condition/STContent");
   sfc = demo_sfc();
-  sfc.replace(sfc.find("lamp := TRUE"), 12, "lamp [:=] TRUE");
-  expect_refused(l5x(demo_tags(), sfc), "non-retentive assignment '[:=]'");
+  sfc.replace(sfc.find("NOT a"), 5, "S1.DN");
+  expect_refused(l5x(demo_tags(), sfc), "'S1.DN' (a step's DN is read", "Transition[3]");
+  sfc = demo_sfc();
+  sfc.replace(sfc.find("NOT a"), 5, "S1.FS");
+  expect_refused(l5x(demo_tags(), sfc), "'S1.FS': member FS of the SFC_STEP tag");
   // Qualifiers other than NonStored.
   sfc = demo_sfc();
   sfc.replace(sfc.find("NonStored"), 9, "Stored");
@@ -185,11 +189,201 @@ TEST(L5x, AnSfcRoutineCalledFromLadderIsRefused) {
                "Type=\"N\">\n<Text>\n<![CDATA[JSR(Chart,0);]]>\n</Text>\n</Rung>\n</RLLContent>\n"
                "</Routine>\n");
   const auto r = io::load_l5x(text, "P.L5X");
-  // The SFC routine is not the main one: called by JSR from ladder, which is not read.
+  // The ladder main routine is read, but where an SFC routine runs within its scan is not.
   EXPECT_FALSE(r.ok());
-  EXPECT_NE(errors_of(r).find("SFC routine 'Chart' is not the program's main routine"),
+  EXPECT_NE(errors_of(r).find("JSR to the SFC routine 'Chart' (RLL routines are read as "
+                              "subroutines)"),
             std::string::npos)
       << errors_of(r);
+}
+
+// 1756-PM006 (SFC programming manual): a step's DN turns on once its timer T reaches PRE, and
+// stays on after the step is left until it is entered again; in a condition of a transition
+// leaving the step, the step is active, so DN is `T >= PRE`.
+TEST(L5x, AStepDoneBitLeavingItsStepIsItsTimeAgainstThePreset) {
+  auto sfc = demo_sfc();
+  sfc.replace(sfc.find("NOT a"), 5, "S1.DN AND NOT a");
+  const auto r = io::load_l5x(l5x(demo_tags() + step_tag("S1", 300), sfc), "P.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  for (const auto& t : r.project->pous[0].charts[0].transitions)
+    if (t.name == "Tran_002") {
+      EXPECT_EQ(model::to_st(t.guard), "S1.T >= T#300ms AND NOT a");
+    }
+}
+
+// Logix 5000 Structured Text manual: the non-retentive assignment `[:=]` assigns, and resets
+// the tag to 0 when the controller enters Run or, with the SFC option Automatic reset (not
+// read), when the step is left. The model's initial state is the entry into Run.
+TEST(L5x, ANonRetentiveAssignmentAssignsAndStartsFromZero) {
+  auto sfc = demo_sfc();
+  sfc.replace(sfc.find("m := TRUE"), 9, "m [:=] TRUE");
+  auto tags = demo_tags();
+  tags.replace(tags.find(bool_tag("m", 0)), bool_tag("m", 0).size(), bool_tag("m", 1));
+  const auto r = io::load_l5x(l5x(tags, sfc), "P.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous[0];
+  EXPECT_EQ(pou.find_variable("m")->initial, 0);
+  EXPECT_NE(errors_of(r).find("tag 'm' is assigned with [:=]"), std::string::npos) << errors_of(r);
+  EXPECT_EQ(model::to_st(pou.find_action("A_S2")->body), "m := TRUE;\n");
+}
+
+// Ladder, read from Logix 5000 Controllers General Instructions (1756-RM003): XIC/XIO AND the
+// tag (or its negation) into the rung condition, each leg of a branch starts from the condition
+// before it and the branch passes on the OR of its legs, OTE writes the condition, OTL/OTU set
+// or reset where it is TRUE, TON runs the TIMER with it, JSR runs the routine where it is.
+std::string ladder_body(const io::LoadResult& r) {
+  return model::to_st(r.project->pous.back().body);
+}
+
+TEST(L5xLadder, RungsReadAsTheStatementsOfTheirRungConditions) {
+  const auto r = io::load_l5x(l5x_ladder(ladder_tags(), ladder_routines()), "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous.back();
+  EXPECT_EQ(pou.name, "Cell");
+  EXPECT_FALSE(pou.body_unsupported);
+  // Main's JSRs run the routines in its order; S:FS is TRUE in the first scan only.
+  EXPECT_EQ(ladder_body(r),
+            "motor := X_1;\n"
+            "T1(IN := X_1, PT := T#1500ms);\n"
+            "IF X_0 AND stop THEN\n  alarm := TRUE;\nEND_IF;\n"
+            "X_0 := S_FS OR Y_1 OR X_0 AND NOT Y_0;\n"
+            "X_1 := Y_0 OR X_1 AND NOT Y_1;\n"
+            "Y_0 := X_0 AND start;\n"
+            "Y_1 := X_1 AND T1.Q;\n"
+            "S_FS := FALSE;\n");
+  // X and Y are used only bit by bit: one BOOL per bit used; T1 is the TON TON runs.
+  EXPECT_EQ(pou.find_variable("X"), nullptr);
+  for (const char* bit : {"X_0", "X_1", "Y_0", "Y_1"}) {
+    ASSERT_NE(pou.find_variable(bit), nullptr) << bit;
+    EXPECT_EQ(pou.find_variable(bit)->type.kind, model::TypeKind::Bool) << bit;
+  }
+  ASSERT_NE(pou.find_variable("T1"), nullptr);
+  EXPECT_EQ(pou.find_variable("T1")->type.fb, model::StandardFb::TON);
+  EXPECT_EQ(pou.find_variable("S_FS")->initial, 1);
+}
+
+TEST(L5xLadder, ABitOfAnIntegerTagKeepsItsInitialValue) {
+  const auto r = io::load_l5x(
+      l5x_ladder(dint_tag("X", 5) + alias("q", "Local:1:O.Data.0"),
+                 rll_routine("Main", {"XIC(X.0)XIO(X.1)XIC(X.2)OTE(q);", "XIC(q)OTU(X.2);"})),
+      "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto& pou = r.project->pous.back();
+  EXPECT_EQ(pou.find_variable("X_0")->initial, 1);
+  EXPECT_EQ(pou.find_variable("X_1")->initial, 0);
+  EXPECT_EQ(pou.find_variable("X_2")->initial, 1);
+}
+
+TEST(L5xLadder, AConditionReadAfterAWriteToWhatItReadsKeepsItsValue) {
+  // XIC(a) OTU(a) OTE(b): b gets the condition as it was before OTU reset a (the rung runs left
+  // to right on one condition); a hidden temporary keeps it, reset at the end of the body.
+  const auto r = io::load_l5x(
+      l5x_ladder(bool_tag("a", 0) + bool_tag("b", 0), rll_routine("Main", {"XIC(a)OTU(a)OTE(b);"})),
+      "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(ladder_body(r),
+            "SFCV_RLL_1_1 := a;\nIF SFCV_RLL_1_1 THEN\n  a := FALSE;\nEND_IF;\n"
+            "b := SFCV_RLL_1_1;\nSFCV_RLL_1_1 := FALSE;\n");
+  // ONS: the condition out is TRUE on the scan the condition in becomes TRUE, the storage bit
+  // keeps the condition in.
+  const auto ons = io::load_l5x(l5x_ladder(alias("go", "Local:1:I.Data.0") + bool_tag("mem", 0) +
+                                               alias("pulse", "Local:1:O.Data.0"),
+                                           rll_routine("Main", {"XIC(go)ONS(mem)OTE(pulse);"})),
+                                "Cell.L5X");
+  ASSERT_TRUE(ons.ok()) << errors_of(ons);
+  EXPECT_EQ(ladder_body(ons),
+            "SFCV_RLL_1_1 := go AND NOT mem;\nmem := go;\npulse := SFCV_RLL_1_1;\n"
+            "SFCV_RLL_1_1 := FALSE;\n");
+}
+
+TEST(L5xLadder, WhatTheModelCannotSayIsRefusedAtItsRung) {
+  const auto tags = ladder_tags() + dint_tag("n", 0);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"XIC(start)CTU(C1,?,?);", "rung 0 of routine 'Main': unsupported: RLL instruction CTU"},
+      {"XIC(start)TON(T1,?,?)OTE(motor);", "unsupported: OTE after TON"},
+      {"XIC(start)JSR(Main,0);", "recursive JSR: routine 'Main'"},
+      {"JSR(Nowhere,0);", "JSR to 'Nowhere', which is not in the program"},
+      {"JSR(Actions,1,start);", "unsupported: JSR with parameters"},
+      {"XIC(start)[OTE(n.3) ,MOV(1,n) ];", "unsupported: writing 'n.3'"},
+      {"XIC(start)TON(motor,?,?);", "TON on 'motor', which is not a TIMER tag"},
+      {"XIC(start)OTE(Local:1:O.Data.3);", "unsupported: operand 'Local:1:O.Data.3'"},
+      {"XIC(T1.ACC)TON(T1,?,?);", "'T1.ACC' (of a TIMER, .DN, .EN and .TT are read)"},
+      {"XIC(start OTE(motor);", "rung 0 of routine 'Main': instruction XIC without its ')'"},
+      {"[XIC(start) ,XIC(stop) OTE(motor);", "';' inside a branch"},
+      {"[XIC(start) ,XIC(stop) OTE(motor)", "a branch '[' without its ']'"},
+  };
+  for (const auto& [text, message] : cases) {
+    SCOPED_TRACE(text);
+    auto routines = rll_routine("Main", {text});
+    routines += rll_routine("Actions", {"XIC(X.1)OTE(motor);"});
+    const auto r = io::load_l5x(l5x_ladder(tags, routines), "Cell.L5X");
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(errors_of(r).find(message), std::string::npos) << errors_of(r);
+    EXPECT_NE(errors_of(r).find("Routine[@name='Main']/RLLContent/Rung"), std::string::npos)
+        << errors_of(r);
+  }
+}
+
+TEST(L5xLadder, RoutinesMainDoesNotCallAreNotReadAndSaySo) {
+  const auto routines =
+      ladder_routines() + "<Routine Name=\"Chart\" Type=\"SFC\">\n<SFCContent>\n" + demo_sfc() +
+      "</SFCContent>\n</Routine>\n" + rll_routine("Spare", {"XIC(start)CTU(C1,?,?);"});
+  const auto r = io::load_l5x(l5x_ladder(ladder_tags(), routines), "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_NE(errors_of(r).find("routine 'Chart' (SFC) is not called from the main routine 'Main': "
+                              "not read"),
+            std::string::npos)
+      << errors_of(r);
+  EXPECT_TRUE(r.project->pous.back().charts.empty());
+  // An SFC routine that main does call is refused: its place in the scan is not read.
+  auto called = routines;
+  called.replace(called.find("JSR(Transitions,0);"), 19, "JSR(Chart,0);");
+  const auto refused = io::load_l5x(l5x_ladder(ladder_tags(), called), "Cell.L5X");
+  EXPECT_FALSE(refused.ok());
+  EXPECT_NE(errors_of(refused).find("JSR to the SFC routine 'Chart'"), std::string::npos)
+      << errors_of(refused);
+}
+
+TEST(L5xLadder, InputsThatWouldExpandOrRecurseWithoutBoundAreRefused) {
+  // 30 routines, each calling the next twice: 2^30 copies of the last one if unfolded.
+  std::string routines = rll_routine("Main", {"JSR(R0,0);", "JSR(R0,0);"});
+  for (int i = 0; i < 30; ++i) {
+    const auto next = "R" + std::to_string(i + 1);
+    routines +=
+        rll_routine("R" + std::to_string(i), {"JSR(" + next + ",0);", "JSR(" + next + ",0);"});
+  }
+  routines += rll_routine("R30", {"XIC(start)OTE(motor);"});
+  auto r = io::load_l5x(l5x_ladder(ladder_tags(), routines), "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("the JSR calls unfold into more than 200000 statements"),
+            std::string::npos)
+      << errors_of(r).substr(0, 2000);
+  // A chain of 100 JSRs.
+  routines = rll_routine("Main", {"JSR(R0,0);"});
+  for (int i = 0; i < 100; ++i)
+    routines += rll_routine("R" + std::to_string(i), {"JSR(R" + std::to_string(i + 1) + ",0);"});
+  routines += rll_routine("R100", {"XIC(start)OTE(motor);"});
+  r = io::load_l5x(l5x_ladder(ladder_tags(), routines), "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("JSR calls nested deeper than 64"), std::string::npos);
+  // Branches nested 10,000 deep, and a rung of 20,000 instructions.
+  r = io::load_l5x(
+      l5x_ladder(ladder_tags(), rll_routine("Main", {std::string(10000, '[') + "XIC(start)" +
+                                                     std::string(10000, ']') + "OTE(motor);"})),
+      "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("branches nested too deep"), std::string::npos);
+  std::string wide;
+  for (int i = 0; i < 20000; ++i) wide += "XIC(start)";
+  r = io::load_l5x(l5x_ladder(ladder_tags(), rll_routine("Main", {wide + "OTE(motor);"})),
+                   "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("more than 10000 instructions in one rung"), std::string::npos);
+  // A bit number no integer has is not a number the reader converts.
+  r = io::load_l5x(
+      l5x_ladder(ladder_tags(), rll_routine("Main", {"XIC(X.99999999999999999999)OTE(motor);"})),
+      "Cell.L5X");
+  EXPECT_TRUE(r.ok()) << errors_of(r);  // loads; the semantics refuses the bit access
 }
 
 }  // namespace

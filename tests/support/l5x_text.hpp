@@ -74,6 +74,17 @@ inline std::string sfc_tag(const std::string& name, const char* type) {
          "\" Constant=\"false\"/>\n";
 }
 
+/// An SFC_STEP tag with its timer preset PRE (ms), as Studio 5000 writes its decorated data.
+inline std::string step_tag(const std::string& name, long preset_ms) {
+  return "<Tag Name=\"" + name +
+         "\" TagType=\"Base\" DataType=\"SFC_STEP\" Constant=\"false\">\n<Data "
+         "Format=\"Decorated\">\n<Structure DataType=\"SFC_STEP\">\n<DataValueMember "
+         "Name=\"X\" DataType=\"BOOL\" Value=\"0\"/>\n<DataValueMember Name=\"DN\" "
+         "DataType=\"BOOL\" Value=\"0\"/>\n<DataValueMember Name=\"PRE\" DataType=\"DINT\" "
+         "Radix=\"Decimal\" Value=\"" +
+         std::to_string(preset_ms) + "\"/>\n</Structure>\n</Data>\n</Tag>\n";
+}
+
 inline std::string l5x(
     const std::string& tags, const std::string& sfc,
     const std::string& controller_attributes =
@@ -158,6 +169,78 @@ inline std::string demo_twin() {
   ACTION A_P1: valve := TRUE; END_ACTION
 END_PROGRAM
 )";
+}
+
+// Ladder (RLL) routines, as Studio 5000 writes them: one <Rung> per line of neutral text.
+inline std::string rung(int number, const std::string& text) {
+  return "<Rung Number=\"" + std::to_string(number) + "\" Type=\"N\">\n<Text>\n<![CDATA[" + text +
+         "]]>\n</Text>\n</Rung>\n";
+}
+
+inline std::string rll_routine(const std::string& name, const std::vector<std::string>& rungs) {
+  std::string out = "<Routine Name=\"" + name + "\" Type=\"RLL\">\n<RLLContent>\n";
+  for (std::size_t i = 0; i < rungs.size(); ++i) out += rung(static_cast<int>(i), rungs[i]);
+  return out + "</RLLContent>\n</Routine>\n";
+}
+
+inline std::string dint_tag(const std::string& name, long value) {
+  return "<Tag Name=\"" + name +
+         "\" TagType=\"Base\" DataType=\"DINT\" Radix=\"Decimal\" Constant=\"false\">\n"
+         "<Data Format=\"L5K\">\n<![CDATA[" +
+         std::to_string(value) +
+         "]]>\n</Data>\n<Data Format=\"Decorated\">\n<DataValue DataType=\"DINT\" "
+         "Radix=\"Decimal\" Value=\"" +
+         std::to_string(value) + "\"/>\n</Data>\n</Tag>\n";
+}
+
+inline std::string timer_tag(const std::string& name, long preset_ms) {
+  const auto pre = std::to_string(preset_ms);
+  return "<Tag Name=\"" + name +
+         "\" TagType=\"Base\" DataType=\"TIMER\" Constant=\"false\">\n<Data Format=\"L5K\">\n"
+         "<![CDATA[[0," +
+         pre +
+         ",0]]]>\n</Data>\n<Data Format=\"Decorated\">\n<Structure DataType=\"TIMER\">\n"
+         "<DataValueMember Name=\"PRE\" DataType=\"DINT\" Radix=\"Decimal\" Value=\"" +
+         pre +
+         "\"/>\n<DataValueMember Name=\"ACC\" DataType=\"DINT\" Radix=\"Decimal\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"EN\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"TT\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"DN\" DataType=\"BOOL\" Value=\"0\"/>\n</Structure>\n</Data>\n"
+         "</Tag>\n";
+}
+
+/// A program whose main routine `Main` is ladder, with `routines` (<Routine> elements) beside it
+/// (the shape of francisboudreau7/l5x_sfc tests/MainProgram.L5X: a main routine of JSRs).
+inline std::string l5x_ladder(const std::string& tags, const std::string& routines) {
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n"
+         "<RSLogix5000Content SchemaRevision=\"1.0\" SoftwareRevision=\"32.01\" "
+         "TargetName=\"Cell\" TargetType=\"Program\" ContainsContext=\"true\">\n"
+         "<Controller Use=\"Context\" Name=\"Plant\" SFCExecutionControl=\"CurrentActive\" "
+         "SFCRestartPosition=\"MostRecent\" SFCLastScan=\"DontScan\">\n"
+         "<Tags Use=\"Context\">\n</Tags>\n<Programs Use=\"Context\">\n<Program Use=\"Target\" "
+         "Name=\"Cell\" MainRoutineName=\"Main\" Disabled=\"false\" UseAsFolder=\"false\">\n"
+         "<Tags>\n" +
+         tags + "</Tags>\n<Routines>\n" + routines +
+         "</Routines>\n</Program>\n</Programs>\n</Controller>\n</RSLogix5000Content>\n";
+}
+
+/// A two-step sequence written in ladder as the French school writes grafcets (step bits X.i
+/// in a DINT, transition bits Y.i, a routine each for actions, steps and transitions, called
+/// in that order; S:FS activates the initial step): X.0 -(start)-> X.1 -(T1.DN)-> X.0, with
+/// `motor` on in X.1, T1 timing X.1, and `alarm` latched by `stop` in X.0.
+inline std::string ladder_tags() {
+  return alias("start", "Local:1:I.Data.0") + alias("stop", "Local:1:I.Data.1") +
+         alias("motor", "Local:1:O.Data.0") + bool_tag("alarm", 0) + dint_tag("X", 0) +
+         dint_tag("Y", 0) + timer_tag("T1", 1500);
+}
+
+inline std::string ladder_routines() {
+  return rll_routine("Main", {"JSR(Actions,0);", "JSR(Steps,0);", "JSR(Transitions,0);"}) +
+         rll_routine("Actions", {"XIC(X.1)OTE(motor);", "XIC(X.1)TON(T1,?,?);",
+                                 "XIC(X.0)XIC(stop)OTL(alarm);"}) +
+         rll_routine("Steps", {"[XIC(S:FS) ,XIC(Y.1) ,XIC(X.0) XIO(Y.0) ]OTE(X.0);",
+                               "[XIC(Y.0) ,XIC(X.1) XIO(Y.1) ]OTE(X.1);"}) +
+         rll_routine("Transitions", {"XIC(X.0)XIC(start)OTE(Y.0);", "XIC(X.1)XIC(T1.DN)OTE(Y.1);"});
 }
 
 }  // namespace sfcv::test::rockwell

@@ -1,0 +1,389 @@
+#include "io/l5x_ladder.hpp"
+
+#include <cctype>
+
+#include "model/names.hpp"
+#include "model/nesting.hpp"
+
+namespace sfcv::io::l5x {
+
+namespace {
+
+using model::ExprKind;
+
+class RungParser {
+ public:
+  explicit RungParser(std::string_view text) : text_(text) {}
+
+  std::optional<RungSequence> run(std::string& error) {
+    RungSequence rung;
+    if (!sequence(rung)) {
+      error = error_;
+      return std::nullopt;
+    }
+    skip_spaces();
+    if (at_ != text_.size() && text_[at_] == ';') ++at_;
+    skip_spaces();
+    if (at_ != text_.size()) {
+      error = "unexpected '" + std::string(1, text_[at_]) + "' at offset " + std::to_string(at_) +
+              " of the rung";
+      return std::nullopt;
+    }
+    return rung;
+  }
+
+ private:
+  void skip_spaces() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+  }
+
+  bool fail(std::string message) {
+    error_ = std::move(message) + " at offset " + std::to_string(at_) + " of the rung";
+    return false;
+  }
+
+  // Instructions and branches up to `]`, `,` or `;` (or the end).
+  bool sequence(RungSequence& out) {
+    for (;;) {
+      skip_spaces();
+      if (at_ == text_.size()) return true;
+      const char c = text_[at_];
+      if (c == ']' || c == ',' || c == ';') return true;
+      if (c == '[') {
+        // Later passes walk expressions recursively: a deeper nesting is refused, not a crash.
+        if (++depth_ > model::kMaxNesting / 4) return fail("branches nested too deep");
+        ++at_;
+        RungElement branch;
+        for (;;) {
+          branch.legs.emplace_back();
+          if (!sequence(branch.legs.back())) return false;
+          if (at_ == text_.size()) return fail("a branch '[' without its ']'");
+          if (text_[at_] == ']') break;
+          if (text_[at_] != ',') return fail("';' inside a branch");
+          ++at_;
+        }
+        ++at_;
+        --depth_;
+        out.push_back(std::move(branch));
+        continue;
+      }
+      if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_'))
+        return fail("unexpected '" + std::string(1, c) + "'");
+      const auto start = at_;
+      while (at_ < text_.size() &&
+             (std::isalnum(static_cast<unsigned char>(text_[at_])) || text_[at_] == '_'))
+        ++at_;
+      if (++instructions_ > kMaxInstructions)
+        return fail("more than " + std::to_string(kMaxInstructions) + " instructions in one rung");
+      RungElement e;
+      e.mnemonic = model::to_upper(text_.substr(start, at_ - start));
+      skip_spaces();
+      if (at_ == text_.size() || text_[at_] != '(')
+        return fail("instruction " + e.mnemonic + " without its '('");
+      ++at_;
+      int depth = 0;
+      std::string operand;
+      for (;; ++at_) {
+        if (at_ == text_.size()) return fail("instruction " + e.mnemonic + " without its ')'");
+        const char d = text_[at_];
+        if (depth == 0 && (d == ',' || d == ')')) {
+          e.operands.push_back(trimmed(operand));
+          operand.clear();
+          if (d == ')') break;
+          continue;
+        }
+        if (d == '(' || d == '[') ++depth;
+        if (d == ')' || d == ']') --depth;
+        operand += d;
+      }
+      ++at_;
+      if (e.operands.size() == 1 && e.operands[0].empty()) e.operands.clear();
+      out.push_back(std::move(e));
+    }
+  }
+
+  static std::string trimmed(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r\n");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+  }
+
+  static constexpr int kMaxInstructions = 10000;
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+  int depth_ = 0;
+  int instructions_ = 0;
+  std::string error_;
+};
+
+// The upper-case names `e` reads: variables, and the instance of a member (`T2.Q` reads T2).
+void names_read(const model::ExprPtr& e, std::set<std::string>& out) {
+  if (!e) return;
+  if (e->kind == ExprKind::Name || e->kind == ExprKind::Member)
+    out.insert(model::to_upper(e->name));
+  for (const auto& a : e->args) names_read(a, out);
+}
+
+// The upper-case names `body` writes (assignment targets, called instances), at any depth.
+void names_written(const model::StmtList& body, std::set<std::string>& out) {
+  for (const auto& s : body) {
+    if (!s->target.empty()) {
+      const auto dot = s->target.find('.');
+      out.insert(model::to_upper(s->target.substr(0, dot)));
+    }
+    for (const auto& b : s->bodies) names_written(b, out);
+    names_written(s->else_body, out);
+  }
+}
+
+bool is_output(const std::string& m) {
+  return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ONS" ||
+         m == "TON" || m == "JSR";
+}
+
+}  // namespace
+
+std::optional<RungSequence> parse_rung(std::string_view text, std::string& error) {
+  return RungParser(text).run(error);
+}
+
+void each_instruction(const RungSequence& rung,
+                      const std::function<void(const RungElement&)>& visit) {
+  for (const auto& e : rung) {
+    if (e.mnemonic.empty()) {
+      for (const auto& leg : e.legs) each_instruction(leg, visit);
+    } else {
+      visit(e);
+    }
+  }
+}
+
+RungTranslator::RungTranslator(RungOperands& operands, std::string temporary_prefix)
+    : operands_(operands), prefix_(std::move(temporary_prefix)) {}
+
+bool RungTranslator::translate(const RungSequence& rung, const model::SourceLocation& where,
+                               model::StmtList& out, std::vector<std::string>& errors) {
+  where_ = where;
+  out_ = &out;
+  errors_ = &errors;
+  live_.clear();
+  const auto before = errors.size();
+  run(rung, Power{}, false);
+  return errors.size() == before;
+}
+
+void RungTranslator::fail(std::string message) {
+  errors_->push_back(std::move(message));
+}
+
+RungTranslator::Power RungTranslator::run(const RungSequence& seq, Power in, bool result_needed) {
+  Power p = std::move(in);
+  for (std::size_t i = 0; i < seq.size(); ++i) {
+    const auto& e = seq[i];
+    // The condition is kept from later writes only where something after this element reads it.
+    const bool needed = i + 1 < seq.size() || result_needed;
+    if (!e.mnemonic.empty()) {
+      if (needed) live_.push_back(&p);
+      instruction(e, p);
+      if (needed) live_.pop_back();
+      continue;
+    }
+    // Every leg starts from the condition before the branch; the branch passes on their OR.
+    Power branch_in = std::move(p);
+    p = Power{};
+    std::vector<Power> outs;
+    outs.reserve(e.legs.size());
+    for (std::size_t j = 0; j < e.legs.size(); ++j) {
+      const bool in_needed = j + 1 < e.legs.size();
+      if (in_needed) live_.push_back(&branch_in);
+      outs.push_back(run(e.legs[j], branch_in, needed));
+      if (in_needed) live_.pop_back();
+      if (needed) live_.push_back(&outs.back());
+    }
+    if (needed) live_.resize(live_.size() - outs.size());
+    std::vector<model::ExprPtr> alternatives;
+    bool always = false;
+    for (auto& o : outs) {
+      if (!o.unknown_after.empty()) {
+        p.unknown_after = o.unknown_after;
+        continue;
+      }
+      p.reads.insert(o.reads.begin(), o.reads.end());
+      if (!o.expr)
+        always = true;
+      else
+        alternatives.push_back(o.expr);
+    }
+    if (!p.unknown_after.empty()) continue;
+    if (always)
+      p.expr = nullptr;
+    else
+      p.expr = alternatives.size() == 1 ? alternatives[0]
+                                        : model::make_nary(ExprKind::Or, alternatives, where_);
+  }
+  return p;
+}
+
+bool RungTranslator::known(const Power& p, const RungElement& e) {
+  if (p.unknown_after.empty()) return true;
+  fail("unsupported: " + e.mnemonic + " after " + p.unknown_after +
+       " in the same rung or branch leg (the rung condition after " + p.unknown_after +
+       " is not read)");
+  return false;
+}
+
+void RungTranslator::and_into(Power& p, model::ExprPtr e) {
+  names_read(e, p.reads);
+  if (!p.expr) {
+    p.expr = std::move(e);
+    return;
+  }
+  // One n-ary AND per run of examine instructions, not a chain as deep as the rung is long.
+  std::vector<model::ExprPtr> args;
+  if (p.expr->kind == ExprKind::And)
+    args = p.expr->args;
+  else
+    args.push_back(p.expr);
+  args.push_back(std::move(e));
+  p.expr = model::make_nary(ExprKind::And, std::move(args), where_);
+}
+
+void RungTranslator::before_write(const std::string& name) {
+  const auto key = model::to_upper(name.substr(0, name.find('.')));
+  for (Power* q : live_) {
+    if (!q->expr || !q->unknown_after.empty() || !q->reads.count(key)) continue;
+    const std::string t = prefix_ + std::to_string(temporaries_.size() + 1);
+    temporaries_.push_back(t);
+    out_->push_back(model::make_assign(t, q->expr, where_));
+    q->expr = model::make_name(t, where_);
+    q->reads = {model::to_upper(t)};
+  }
+}
+
+void RungTranslator::instruction(const RungElement& e, Power& p) {
+  const auto& m = e.mnemonic;
+  const auto& ops = e.operands;
+  auto arity = [&](std::size_t n) {
+    if (ops.size() == n) return true;
+    fail(m + " with " + std::to_string(ops.size()) + " operands (it takes " + std::to_string(n) +
+         ")");
+    return false;
+  };
+  if (!known(p, e)) return;
+  std::string error;
+  auto checked = [&](auto value) {
+    if (!error.empty()) fail(error);
+    return value;
+  };
+  const auto rail = [&] { return p.expr ? p.expr : model::make_bool(true, where_); };
+  if (m == "NOP") return;
+  if (m == "AFI") {
+    p.expr = model::make_bool(false, where_);
+    p.reads.clear();
+    return;
+  }
+  if (m == "XIC" || m == "XIO") {
+    if (!arity(1)) return;
+    auto b = checked(operands_.bit(ops[0], error));
+    if (!b) return;
+    and_into(p, m == "XIC" ? b : model::make_unary(ExprKind::Not, b, where_));
+    return;
+  }
+  static const std::map<std::string, ExprKind> kCompare = {
+      {"EQU", ExprKind::Eq}, {"NEQ", ExprKind::Ne}, {"GRT", ExprKind::Gt},
+      {"GEQ", ExprKind::Ge}, {"LES", ExprKind::Lt}, {"LEQ", ExprKind::Le}};
+  if (const auto c = kCompare.find(m); c != kCompare.end()) {
+    if (!arity(2)) return;
+    auto a = checked(operands_.value(ops[0], error));
+    if (!a) return;
+    auto b = checked(operands_.value(ops[1], error));
+    if (!b) return;
+    and_into(p, model::make_binary(c->second, a, b, where_));
+    return;
+  }
+  if (!is_output(m)) {
+    fail("unsupported: RLL instruction " + m +
+         " (read: XIC XIO OTE OTL OTU ONS TON JSR MOV CLR NOP AFI EQU NEQ GRT GEQ LES LEQ)");
+    return;
+  }
+  if (m == "OTE" || m == "OTL" || m == "OTU") {
+    if (!arity(1)) return;
+    const auto target = checked(operands_.bit_target(ops[0], error));
+    if (target.empty()) return;
+    before_write(target);
+    if (m == "OTE")
+      out_->push_back(model::make_assign(target, rail(), where_));
+    else if (!p.expr)
+      out_->push_back(model::make_assign(target, model::make_bool(m == "OTL", where_), where_));
+    else
+      out_->push_back(make_if(
+          p.expr, {model::make_assign(target, model::make_bool(m == "OTL", where_), where_)}));
+    return;
+  }
+  if (m == "ONS") {
+    // Rung-condition-out is TRUE on the scan the condition in becomes TRUE; the storage bit
+    // keeps the condition in.
+    if (!arity(1)) return;
+    const auto storage = checked(operands_.bit_target(ops[0], error));
+    if (storage.empty()) return;
+    const auto stored = checked(operands_.bit(ops[0], error));
+    if (!stored) return;
+    const auto in = rail();
+    and_into(p, model::make_unary(ExprKind::Not, stored, where_));
+    before_write(storage);
+    out_->push_back(model::make_assign(storage, in, where_));
+    return;
+  }
+  if (m == "MOV" || m == "CLR") {
+    if (!arity(m == "MOV" ? 2 : 1)) return;
+    const auto target = checked(operands_.value_target(ops.back(), error));
+    if (target.empty()) return;
+    auto v = m == "MOV" ? checked(operands_.value(ops[0], error)) : model::make_int(0, where_);
+    if (!v) return;
+    before_write(target);
+    auto assign = model::make_assign(target, v, where_);
+    out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
+    return;
+  }
+  if (m == "TON") {
+    // TON(timer, ?, ?): the preset and accumulator are the TIMER tag's; the two `?` are the
+    // editor's display of them.
+    if (!arity(3)) return;
+    const auto timer = checked(operands_.timer(ops[0], error));
+    if (!timer) return;
+    before_write(timer->first);
+    out_->push_back(model::make_fb_call(
+        timer->first, {{"IN", rail()}, {"PT", model::make_time(timer->second, where_)}}, where_));
+    p.unknown_after = "TON";
+    return;
+  }
+  // JSR(routine, 0): the routine's rungs run where the call is, when the condition is TRUE.
+  if (ops.size() != 2 || ops[1] != "0") {
+    fail("unsupported: JSR with parameters (" + std::to_string(ops.size()) +
+         " operands; JSR(routine, 0) is read)");
+    return;
+  }
+  auto body = checked(operands_.subroutine(ops[0], error));
+  if (!body) return;
+  std::set<std::string> written;
+  names_written(*body, written);
+  for (const auto& w : written) before_write(w);
+  if (!p.expr) {
+    for (auto& s : *body) out_->push_back(std::move(s));
+  } else {
+    out_->push_back(make_if(p.expr, std::move(*body)));
+  }
+  p.unknown_after = "JSR";
+}
+
+model::StmtPtr RungTranslator::make_if(model::ExprPtr condition, model::StmtList body) const {
+  auto s = std::make_shared<model::Stmt>();
+  s->kind = model::StmtKind::If;
+  s->where = where_;
+  s->conditions.push_back(std::move(condition));
+  s->bodies.push_back(std::move(body));
+  return s;
+}
+
+}  // namespace sfcv::io::l5x
