@@ -517,6 +517,7 @@ class LadderProgram : public l5x::RungOperands {
       : ctx_(ctx), pou_(pou), timer_tags_(timer_tags) {}
 
   void read(pugi::xml_node program, pugi::xml_node main) {
+    test_edits_ = is_true(program, "TestEdits");
     for (auto r : children(child(program, "Routines"), "Routine"))
       routines_.emplace(trim(r.attribute("Name").value()), r);
     const std::string main_name = trim(main.attribute("Name").value());
@@ -683,6 +684,22 @@ class LadderProgram : public l5x::RungOperands {
     return false;
   }
 
+  // Rung edit markers (Logix 5000 Import/Export manual, 1756-RM084): N normal; I inserted, IR
+  // inserted to replace R, R replaced, D deleted, pending in the controller; lower case, pending
+  // in the software only (e, er: new rungs; d, rN, rR, rI: the controller's rungs they edit).
+  // The controller runs its original rungs (N, R, D) until the program's edits are tested
+  // (TestEdits), then the edited ones (N, I, IR).
+  bool runs(const std::string& type) const {
+    if (type.empty() || type == "N" || type == "d" || type == "rN") return true;
+    if (test_edits_) return type == "I" || type == "IR" || type == "rI";
+    return type == "R" || type == "D" || type == "rR";
+  }
+  static bool pending_edit(const std::string& type) {
+    for (const char* t : {"I", "IR", "R", "D", "rR", "rI", "e", "er"})
+      if (type == t) return true;
+    return false;
+  }
+
   // `X.3` of a tag read bit by bit: its BOOL.
   std::optional<std::string> split_bit(const std::string& key, const std::string& member) const {
     const auto it = split_.find(key);
@@ -700,9 +717,14 @@ class LadderProgram : public l5x::RungOperands {
       ctx_.poll();
       const std::string number = rung.attribute("Number").value();
       const std::string type = rung.attribute("Type").value();
-      if (!type.empty() && type != "N") {
-        ctx_.error(rung, "unsupported: rung " + number + " of routine '" + name +
-                             "' with pending edits (Type '" + type + "')");
+      if (!runs(type)) {
+        if (!pending_edit(type))
+          ctx_.error(rung, "unsupported: rung " + number + " of routine '" + name + "' of Type '" +
+                               type + "'");
+        else
+          ctx_.note(rung, "rung " + number + " of routine '" + name + "' (Type '" + type +
+                              "') is a pending edit the controller does not run with TestEdits " +
+                              (test_edits_ ? "true" : "false") + ": not read");
         continue;
       }
       std::string error;
@@ -860,6 +882,7 @@ class LadderProgram : public l5x::RungOperands {
   std::vector<std::string> temporaries_;
   int translators_ = 0;
   bool first_scan_ = false;
+  bool test_edits_ = false;  ///< the program's TestEdits: the controller runs its edited rungs
   model::SourceLocation at_;
 };
 
@@ -1077,10 +1100,11 @@ class L5xReader {
         std::all_of(alias.begin() + static_cast<std::ptrdiff_t>(dot + 1), alias.end(),
                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
     if ((in == out) || !bit || global) {
-      ctx_.error(
-          t, "unsupported: alias tag '" + v.name + "' for '" + alias +
-                 (global ? "' in the controller's tags" : "'") +
-                 " (program tags aliasing one bit of a module's input or output data are read)");
+      // A module's whole data, a structure member...: left out, as tags of other types.
+      ctx_.note(t, "alias tag '" + v.name + "' for '" + alias +
+                       (global ? "' in the controller's tags" : "'") +
+                       " is not modelled (program tags aliasing one bit of a module's input or "
+                       "output data are): a use of it is an error");
       return false;
     }
     v.type = model::Type::boolean();

@@ -137,9 +137,12 @@ TEST(L5x, RockwellConstructsWithoutAModelAreRefusedByName) {
   expect_refused(l5x(demo_tags(), demo_sfc(),
                      " SFCExecutionControl=\"CurrentActive\" SFCLastScan=\"AutomaticReset\""),
                  "SFCLastScan 'AutomaticReset'");
-  // An alias the model cannot type.
-  expect_refused(l5x(demo_tags() + alias("w", "Local:1:I.Data"), demo_sfc()),
-                 "alias tag 'w' for 'Local:1:I.Data'");
+  // An alias the model cannot type is left out; a use of it is an error.
+  const auto w = io::load_l5x(l5x(demo_tags() + alias("w", "Local:1:I.Data"), demo_sfc()), "P.L5X");
+  EXPECT_TRUE(w.ok()) << errors_of(w);
+  EXPECT_NE(errors_of(w).find("alias tag 'w' for 'Local:1:I.Data' is not modelled"),
+            std::string::npos);
+  EXPECT_EQ(w.project->pous[0].find_variable("w"), nullptr);
 }
 
 TEST(L5x, TagsGiveTypesAndInitialValues) {
@@ -342,6 +345,29 @@ TEST(L5xLadder, RoutinesMainDoesNotCallAreNotReadAndSaySo) {
   EXPECT_FALSE(refused.ok());
   EXPECT_NE(errors_of(refused).find("JSR to the SFC routine 'Chart'"), std::string::npos)
       << errors_of(refused);
+}
+
+// Online edits (1756-RM084 rung types): with TestEdits false the controller runs the original
+// rungs (R to be replaced, D to be deleted), not the inserted ones (I, IR); with TestEdits true,
+// the edited ones.
+TEST(L5xLadder, PendingEditsRunAsTheControllerRunsThem) {
+  const auto routine =
+      "<Routine Name=\"Main\" Type=\"RLL\">\n<RLLContent>\n" + rung(0, "XIC(start)OTE(motor);") +
+      "<Rung Number=\"1\" Type=\"IR\">\n<Text>\n<![CDATA[XIC(stop)OTE(alarm);]]>\n"
+      "</Text>\n</Rung>\n<Rung Number=\"2\" Type=\"R\">\n<Text>\n<![CDATA[XIO(stop)"
+      "OTE(alarm);]]>\n</Text>\n</Rung>\n</RLLContent>\n</Routine>\n";
+  const auto original = io::load_l5x(l5x_ladder(ladder_tags(), routine), "Cell.L5X");
+  ASSERT_TRUE(original.ok()) << errors_of(original);
+  EXPECT_EQ(ladder_body(original), "motor := start;\nalarm := NOT stop;\n");
+  EXPECT_NE(errors_of(original).find("rung 1 of routine 'Main' (Type 'IR') is a pending edit"),
+            std::string::npos);
+  auto tested_text = l5x_ladder(ladder_tags(), routine);
+  const std::string program = "Name=\"Cell\" MainRoutineName";
+  tested_text.replace(tested_text.find(program), program.size(),
+                      "Name=\"Cell\" TestEdits=\"true\" MainRoutineName");
+  const auto tested = io::load_l5x(tested_text, "Cell.L5X");
+  ASSERT_TRUE(tested.ok()) << errors_of(tested);
+  EXPECT_EQ(ladder_body(tested), "motor := start;\nalarm := stop;\n");
 }
 
 TEST(L5xLadder, InputsThatWouldExpandOrRecurseWithoutBoundAreRefused) {
