@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,6 +97,39 @@ TEST(L5xE2E, OneShotPulsesForOneScan) {
   };
   for (const char* engine : {"explicit", "bdd"})
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
+// SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
+std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
+  const char* root = std::getenv("SFCV_VENDOR_SAMPLES");
+  if (!root || !*root) return std::nullopt;
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(root, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec))
+    if (it->path().filename() == name) return it->path();
+  return std::nullopt;
+}
+
+// francisboudreau7/l5x_sfc tests/MainProgram.L5X, unmodified: a grafcet written in ladder (a
+// main routine of JSRs to the routines Actions, Etapes, Transitions; step bits X.i in a DINT),
+// its SFC routine called by no routine. It loads and is checked with the default options; the
+// grafcet's steps exclude each other and its cycle returns to step 0.
+TEST(L5xE2E, PublicLadderSampleLoadsAndIsChecked) {
+  const auto sample = vendor_sample("MainProgram.L5X");
+  if (!sample) GTEST_SKIP() << "SFCV_VENDOR_SAMPLES holds no MainProgram.L5X: test skipped";
+  const auto r = run_sfcv("check --timeout 60 " + sample->string());
+  // initial-return is violated: the state before the first scan (S:FS TRUE) never recurs.
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("routine 'SFC' (SFC) is not called from the main routine 'MainRoutine'"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("initial-return    violated"), std::string::npos) << r.out;
+  expect_ctl_verdicts_in_one_run(sample->string(), "bdd",
+                                 {{"AG !(X_0 & X_1)", "holds"},
+                                  {"AG (A_plus -> !A_moins)", "holds"},
+                                  {"EF X_19", "holds"},
+                                  {"AG EF X_0", "holds"},
+                                  {"AG !X_19", "violated"}});
 }
 
 }  // namespace
