@@ -268,9 +268,15 @@ void Validator::check_fb_call(const Stmt& s, const SourceLocation& here) {
     }
     return;
   }
-  if (!s.outputs.empty())
-    error(here, "output binding '=>' in the call of standard function block " + quoted(s.target) +
-                    " (read " + s.target + ".Q after the call)");
+  // `Q => y` (IEC 61131-3 formal call with output assignment): y := inst.Q after the call.
+  for (const auto& [out, var] : s.outputs) {
+    const auto m = fb_member(v->type.fb, out);
+    if (!m || m->input) {
+      error(here, "function block " + v->type.name + " has no output " + quoted(out));
+      continue;
+    }
+    assignable(var, here);
+  }
   for (const auto& [param, value] : s.arguments) {
     const auto m = fb_member(v->type.fb, param);
     if (!m) {

@@ -227,8 +227,22 @@ std::uint32_t Compiler::stmt(const PouScope& sc, const model::Stmt& s) {
         break;
       }
       if (!s.outputs.empty()) {
-        error(s.where, "output binding '=>' in the call of '" + s.target +
-                           "', which is not an instance of a user function block");
+        // A standard FB's `Q => y`: the call, then `y := inst.Q`, in one IF TRUE (the
+        // statements made here are kept with the compiler: the program refers to them).
+        model::StmtList expanded;
+        auto call = std::make_shared<model::Stmt>(s);
+        call->outputs.clear();
+        expanded.push_back(std::move(call));
+        for (const auto& [output, variable] : s.outputs)
+          expanded.push_back(
+              model::make_assign(variable, model::make_member(s.target, output, s.where), s.where));
+        const auto& kept = expanded_calls.emplace_back(std::move(expanded));
+        out.op = SOp::If;
+        IfArm arm{constant(1), block(sc, kept)};
+        out.arm_first = static_cast<std::uint32_t>(p.if_arms.size());
+        out.arm_count = 1;
+        p.if_arms.push_back(arm);
+        out.else_body = block(sc, {});
         break;
       }
       out.op = SOp::FbCall;

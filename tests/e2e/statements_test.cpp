@@ -192,5 +192,41 @@ TEST(StatementsE2E, PlcopenStBodyWithLoopAndFunctions) {
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
 }
 
+// IEC 61131-3 (3rd ed., 6.6.1.2 and 7.3.3.4.2): a formal call may assign an output with `=>`,
+// for standard function blocks as for user ones: `r(CLK := a, Q => q)` is the call, then
+// `q := r.Q` (Acabaxi/Simple's `asd(CLK := toolSensor, Q => toolSensorRE)`, issue 45). So q
+// equals r.Q read after the call, on every engine.
+TEST(StatementsE2E, AStandardFunctionBlockOutputBoundWithArrowIsItsOutputAfterTheCall) {
+  const auto file = write_temp(
+      "PROGRAM Edges\n VAR_INPUT a, go : BOOL; END_VAR\n VAR_OUTPUT q, q2, done, done2 : BOOL; "
+      "END_VAR\n VAR r : R_TRIG; t : TON; END_VAR\n"
+      " r(CLK := a, Q => q);\n q2 := r.Q;\n"
+      " t(IN := go, PT := T#1s, Q => done);\n done2 := t.Q;\nEND_PROGRAM\n",
+      ".st");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    SCOPED_TRACE(engine);
+    auto r =
+        run_sfcv("check " + file + " --engine " + engine +
+                 " --checks none --ctl 'AG (q <-> q2)' --ctl 'AG (done <-> done2)' --trace none");
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_sfcv("check " + file + " --engine " + engine +
+                 " --checks none --ctl 'AG !q' --trace none");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    r = run_sfcv("check " + file + " --engine " + engine +
+                 " --checks none --ctl 'AG !done' --trace none");
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  }
+  // An output the block does not have, or an input bound with `=>`, is a located error.
+  for (const char* call : {"r(CLK := a, Z => q);", "r(CLK => q);"}) {
+    const auto bad = write_temp(
+        std::string("PROGRAM P\n VAR_INPUT a : BOOL; END_VAR\n VAR_OUTPUT q : BOOL; END_VAR\n") +
+            " VAR r : R_TRIG; END_VAR\n " + call + "\nEND_PROGRAM\n",
+        ".st");
+    const auto r = run_sfcv("check " + bad);
+    EXPECT_EQ(r.exit_code, 2) << call << r.out << r.err;
+    EXPECT_NE(r.err.find("function block R_TRIG has no output"), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -75,7 +75,10 @@ struct Compiler {
   std::map<std::string, std::uint32_t> global_fields;
   std::uint32_t first_program = 0;  // scopes before it are global variable lists
   std::set<std::string> inlining;   // upper-case actions whose call is being compiled
-  int loop_depth = 0;               // loops around the statement being compiled
+  // Standard FB calls with `=>` outputs, as the call and its assignments (iec_compile_stmt.cpp);
+  // a deque, so that the statements stay where the compiled program saw them.
+  std::deque<model::StmtList> expanded_calls;
+  int loop_depth = 0;  // loops around the statement being compiled
   std::map<std::uint32_t, model::SourceLocation> omitted_pt;  // FB index -> a call without PT
   std::set<std::uint32_t> called_timers;                      // FB indices of called timers
   std::map<std::uint32_t, model::SourceLocation> zero_pt;     // TON index -> a PT := 0 call
