@@ -603,6 +603,21 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
   project.pous.push_back(std::move(pou));
 }
 
+// What wrote the file, for `sfcv info`: the fileHeader's companyName, productName and
+// productVersion as written (" from CODESYS V3.5 SP14 Patch 1", " from Beckhoff Automation GmbH
+// TwinCAT PLC Control 3.5.8.40"); a version that repeats the product name stands for both.
+// Beremiz writes its project's own properties there ("Beremiz Unnamed 1"): shown as they are.
+std::string written_by(pugi::xml_node header) {
+  const std::string company = trim(header.attribute("companyName").value());
+  std::string product = trim(header.attribute("productName").value());
+  const std::string version = trim(header.attribute("productVersion").value());
+  if (!product.empty() && version.rfind(product, 0) == 0) product.clear();
+  std::string out;
+  for (const std::string& part : {company, product, version})
+    if (!part.empty()) out += (out.empty() ? "" : " ") + part;
+  return out.empty() ? out : " from " + out;
+}
+
 }  // namespace
 
 LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
@@ -637,7 +652,7 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
   }
 
   model::Project project;
-  project.source_format = "plcopen-xml";
+  project.source_format = "plcopen-xml" + written_by(child(root, "fileHeader"));
   project.dialect = model::Dialect::Iec61131;
   project.name = trim(child(root, "contentHeader").attribute("name").value());
   project.where = ctx.where(root);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/load.hpp"
@@ -109,6 +110,27 @@ model::ExprPtr guard0(const LoadResult& r) {
   return chart0(r).transitions.at(0).guard;
 }
 
+// `sfcv info` says what wrote the file: the fileHeader's fields as written (TC6: the product
+// and version of the tool), a version that repeats the product standing for both.
+TEST(PlcopenXml, TheFileHeaderSaysWhatWroteTheFile) {
+  const std::string header = "companyName=\"t\" productName=\"t\" productVersion=\"1\"";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"companyName=\"\" productName=\"CODESYS\" productVersion=\"CODESYS V3.5 SP4 Patch 4\"",
+       "plcopen-xml from CODESYS V3.5 SP4 Patch 4"},
+      {"companyName=\"Beckhoff Automation GmbH\" productName=\"TwinCAT PLC Control\" "
+       "productVersion=\"3.5.8.40\"",
+       "plcopen-xml from Beckhoff Automation GmbH TwinCAT PLC Control 3.5.8.40"},
+      {"companyName=\"\" productName=\"\" productVersion=\"\"", "plcopen-xml"},
+  };
+  for (const auto& [attributes, format] : cases) {
+    auto text = project(two_steps(), kVarA);
+    text.replace(text.find(header), header.size(), attributes);
+    const auto r = load_plcopen_xml(text, "h.xml");
+    ASSERT_TRUE(r.ok()) << errors_of(r);
+    EXPECT_EQ(r.project->source_format, format);
+  }
+}
+
 // ------------------------------------------------------------------------------ namespaces, BOM
 
 TEST(PlcopenXml, ReadsTheThreeNamespaces) {
@@ -123,7 +145,7 @@ TEST(PlcopenXml, ReadsTheThreeNamespaces) {
     EXPECT_FALSE(c.steps[1].initial);
     ASSERT_EQ(c.transitions.size(), 2u);
     EXPECT_EQ(c.transitions[1].targets, std::vector<std::string>{"S0"});
-    EXPECT_EQ(r.project->source_format, "plcopen-xml");
+    EXPECT_EQ(r.project->source_format, "plcopen-xml from t t 1");  // the fileHeader's fields
     EXPECT_EQ(r.project->name, "demo");
   }
 }
