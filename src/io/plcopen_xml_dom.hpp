@@ -119,4 +119,9 @@ std::optional<bool> parse_bool_literal(std::string_view text);
 std::string trim(std::string_view s);
 bool attribute_true(pugi::xml_node node, const char* name);
 
+/// The warning for a CODESYS or TwinCAT file whose steps hold IEC actions (`actions`, "POU.A"):
+/// both vendors run every IEC action once more in the cycle after it becomes inactive (its
+/// final call), which sfcv's cycle does not (docs/semantics.md 1.4).
+std::string iec_final_call_warning(const std::vector<std::string>& actions);
+
 }  // namespace sfcv::io::plcopen

@@ -4,6 +4,7 @@
 
 #include "io/sfc_archive.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <string>
@@ -209,6 +210,7 @@ class SfcArchiveReader {
     } else if (end.kind == Flow::Kind::Steps) {
       ctx_.error(root, "the chart's main sequence ends with a step, not a transition or jump");
     }
+    if (!iec_actions_.empty()) ctx_.warning(impl, plcopen::iec_final_call_warning(iec_actions_));
   }
 
  private:
@@ -366,6 +368,11 @@ class SfcArchiveReader {
       as.qualifier = *q;
       as.where = ctx_.where(x);
       pc_.pou.associations.push_back(std::move(as));
+      // An action object, not a Boolean variable of the POU, gets the vendor's final call.
+      const std::string name = pc_.pou.name + "." + action;
+      if (!pc_.pou.find_variable(action) &&
+          std::find(iec_actions_.begin(), iec_actions_.end(), name) == iec_actions_.end())
+        iec_actions_.push_back(name);
     }
   }
 
@@ -523,6 +530,7 @@ class SfcArchiveReader {
   std::string first_step_;
   int depth_ = 0;
   bool failed_ = false;
+  std::vector<std::string> iec_actions_;  ///< "POU.A" of the IEC action associations read
 };
 
 }  // namespace

@@ -83,6 +83,12 @@ TEST(CodesysExport, DemoChartReadsAsDrawn) {
   EXPECT_EQ(pou->find_action("busy")->kind, model::ActionBodyKind::Variable);
   ASSERT_NE(pou->find_action("A_Init"), nullptr);
   EXPECT_EQ(pou->find_action("A_Init")->body.size(), 2u);
+  // CODESYS runs each IEC action once more after it becomes inactive (docs/semantics.md 1.4):
+  // said, naming the IEC action with a body (A_P1), not the Boolean variable busy nor the
+  // step actions (entry, main, exit), which have no final call.
+  const auto final_calls = errors_of(r);
+  EXPECT_NE(final_calls.find("the final calls of PLC_SEQ.A_P1 do"), std::string::npos)
+      << final_calls;
   // The global list and the data type came along.
   const auto* gvl = p.find_pou("GVL_Plant");
   ASSERT_NE(gvl, nullptr);

@@ -1154,6 +1154,43 @@ TEST(PlcopenXml, CodesysEntryActiveAndExitActions) {
   for (const auto& a : as) EXPECT_EQ(a.step, "Run");
 }
 
+// CODESYS and TwinCAT run each IEC action once more in the cycle after it becomes inactive
+// (CODESYS SFC help, "Processing order"; Beckhoff's TwinCAT 3 help), which sfcv's cycle does not
+// (docs/semantics.md 1.4): a file they wrote with IEC actions that have a body says so, naming
+// them. Their step actions (entry, main, exit: addData) have no final call, nor has a Boolean
+// variable action any body to run; other tools' files are read by the seed's cycle.
+TEST(PlcopenXml, AVendorsFinalCallsOfIecActionsAreSaidAloud) {
+  const auto blocks = action_block(20, 3,
+                                   R"(<action localId="0"><reference name="ACT"/></action>
+         <action localId="0" qualifier="S"><reference name="y"/></action>)");
+  const auto actions =
+      "<actions><action name=\"ACT\"><body><ST><xhtml:p><![CDATA[n := n + "
+      "1;]]></xhtml:p></ST></body></action></actions>";
+  const auto text =
+      project(two_steps(inline_st("a"), blocks), std::string(kVarA) + kOutputs, actions);
+  const std::string header = "companyName=\"t\" productName=\"t\" productVersion=\"1\"";
+  auto codesys = text;
+  codesys.replace(codesys.find(header), header.size(),
+                  "companyName=\"\" productName=\"CODESYS\" productVersion=\"CODESYS V3.5 "
+                  "SP14\"");
+  const auto r = load_plcopen_xml(codesys, "codesys.xml");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* w = find_message(r, Severity::Warning, "run each IEC action once more");
+  ASSERT_NE(w, nullptr) << errors_of(r);
+  EXPECT_NE(w->message.find("the final calls of P.ACT do"), std::string::npos) << w->message;
+  // The same chart from another tool: no such warning.
+  const auto other = load_plcopen_xml(text, "other.xml");
+  ASSERT_TRUE(other.ok()) << errors_of(other);
+  EXPECT_FALSE(has_message(other, Severity::Warning, "run each IEC action once more"));
+  // Only a Boolean variable action (y): none either.
+  auto variable_only = codesys;
+  const std::string act = "<reference name=\"ACT\"/>";
+  variable_only.replace(variable_only.find(act), act.size(), "<reference name=\"x\"/>");
+  const auto v = load_plcopen_xml(variable_only, "codesys.xml");
+  ASSERT_TRUE(v.ok()) << errors_of(v);
+  EXPECT_FALSE(has_message(v, Severity::Warning, "run each IEC action once more"));
+}
+
 TEST(PlcopenXml, PousUnderAddDataAreRead) {
   // TwinCAT: types/pous is empty, the POUs live in project/addData/.../data[@name=".../pou"].
   std::string doc = project(two_steps(), kVarA, "", kNs200);
