@@ -891,6 +891,13 @@ class L5xReader {
   L5xReader(XmlContext& ctx, model::Project& project) : ctx_(ctx), project_(project) {}
 
   void read(pugi::xml_node root) {
+    if (local_name(root) == "SFCContent") {
+      ctx_.error(root,
+                 "a bare <SFCContent> (one SFC routine's content, without its program, tags and "
+                 "controller options) is not read: export the program from Studio 5000 "
+                 "(Export Program) to an .L5X holding its tags and routines");
+      return;
+    }
     if (local_name(root) != "RSLogix5000Content") {
       ctx_.error(root, "not a Studio 5000 export: the root element is <" +
                            std::string(root.name()) + ">, not <RSLogix5000Content>");

@@ -23,8 +23,11 @@ Format detect_format(const std::string& path, std::string_view text) {
   if (ends_with(path, ".tcpou") || ends_with(path, ".tcgvl") || ends_with(path, ".tcdut"))
     return Format::TwinCat;
   if (ends_with(path, ".plcproj")) return Format::TwinCatProject;
+  // A bare <SFCContent> is one Studio 5000 SFC routine's content: the L5X reader says what it
+  // lacks rather than the PLCopen reader calling it a PLCopen file with a wrong root.
   if (ends_with(path, ".l5x") ||
-      text.substr(0, 4096).find("<RSLogix5000Content") != std::string_view::npos)
+      text.substr(0, 4096).find("<RSLogix5000Content") != std::string_view::npos ||
+      text.substr(0, 512).find("<SFCContent") != std::string_view::npos)
     return Format::L5x;
   if (text.find("<TcPlcObject") != std::string_view::npos) return Format::TwinCat;
   if (ends_with(path, ".export") ||

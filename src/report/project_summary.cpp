@@ -175,7 +175,11 @@ ordered_json project_summary_json(
 void print_project_summary(const ordered_json& j, std::ostream& out, bool stopped) {
   const bool grafcet = j["dialect"] == "grafcet";
   out << "model: " << j["model"].get<std::string>() << " (" << j["format"].get<std::string>()
-      << ", " << (grafcet ? "Grafcet, IEC 60848" : "SFC, IEC 61131-3") << ")\n";
+      << ", "
+      << (grafcet                     ? "Grafcet, IEC 60848"
+          : j["steps"].get<int>() > 0 ? "SFC, IEC 61131-3"
+                                      : "IEC 61131-3")
+      << ")\n";
   out << "steps: " << j["steps"] << ", transitions: " << j["transitions"] << "\n";
   for (const auto& pou : j["pous"]) {
     out << "\n"

@@ -75,6 +75,17 @@ TEST(L5x, DemoChartGivesTheModelOfItsIecTwin) {
 TEST(L5x, DetectedByContentAndExtension) {
   EXPECT_EQ(io::detect_format("x.L5X", ""), io::Format::L5x);
   EXPECT_EQ(io::detect_format("x.xml", l5x("", "")), io::Format::L5x);
+  // One SFC routine's content alone (as francisboudreau7/l5x_sfc tests/SFCContent.xml): the L5X
+  // reader says what is missing.
+  const std::string fragment =
+      "<?xml version=\"1.0\"?>\n<SFCContent>\n" + demo_sfc() + "</SFCContent>\n";
+  EXPECT_EQ(io::detect_format("SFCContent.xml", fragment), io::Format::L5x);
+  const auto r = io::load_l5x(fragment, "SFCContent.xml");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("a bare <SFCContent> (one SFC routine's content, without its "
+                              "program, tags and controller options) is not read"),
+            std::string::npos)
+      << errors_of(r);
 }
 
 TEST(L5x, ConditionErrorsPointIntoTheFile) {
@@ -263,6 +274,25 @@ TEST(L5xLadder, RungsReadAsTheStatementsOfTheirRungConditions) {
   ASSERT_NE(pou.find_variable("T1"), nullptr);
   EXPECT_EQ(pou.find_variable("T1")->type.fb, model::StandardFb::TON);
   EXPECT_EQ(pou.find_variable("S_FS")->initial, 1);
+}
+
+// issue 46: a native file's model goes through `sfcv export --to plcopen` (and IEC text) and
+// loads back as the same model: the ladder body, its BOOL bits, the TON instance and S_FS.
+TEST(L5xLadder, TheLadderModelRoundTripsThroughPlcopenAndIecText) {
+  auto routines = ladder_routines();
+  const std::string jsr = "JSR(Transitions,0);";
+  routines.replace(routines.find(jsr), jsr.size(),
+                   jsr + "]]>\n</Text>\n</Rung>\n" +
+                       "<Rung Number=\"3\" Type=\"N\">\n<Text>\n"
+                       "<![CDATA[JSR(Pulse,0);");
+  routines += rll_routine("Pulse", {"XIC(start)ONS(mem)OTE(pulse);"});
+  const auto r = io::load_l5x(
+      l5x_ladder(ladder_tags() + bool_tag("mem", 0) + alias("pulse", "Local:1:O.Data.1"), routines),
+      "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  ASSERT_NE(ladder_body(r).find("mem := start;"), std::string::npos) << ladder_body(r);
+  plcopen_round_trip(*r.project);
+  iec_round_trip(*r.project);
 }
 
 TEST(L5xLadder, ABitOfAnIntegerTagKeepsItsInitialValue) {
