@@ -539,13 +539,7 @@ class LadderProgram : public l5x::RungOperands {
     // The temporaries hold nothing from one scan to the next (a state they kept would
     // multiply the states), and S:FS is TRUE in the first scan only.
     for (const auto& t : temporaries_) {
-      model::Variable v;
-      v.name = t;
-      v.where = pou_.where;
-      v.direction = model::VarDirection::Local;
-      v.type = model::Type::boolean();
-      v.initial = 0;
-      pou_.variables.push_back(std::move(v));
+      declare_bool(t, false);
       body->push_back(model::make_assign(t, model::make_bool(false, pou_.where), pou_.where));
     }
     if (first_scan_)
@@ -831,14 +825,19 @@ class LadderProgram : public l5x::RungOperands {
       if (names.count(kFirstScan) > 0)
         error_at(pou_.where, std::string("S:FS is read as the BOOL ") + kFirstScan +
                                  ", which is already a tag");
-      model::Variable v;
-      v.name = kFirstScan;
-      v.where = pou_.where;
-      v.direction = model::VarDirection::Local;
-      v.type = model::Type::boolean();
-      v.initial = 1;
-      pou_.variables.push_back(std::move(v));
+      declare_bool(kFirstScan, true);
     }
+  }
+
+  // A BOOL the reader adds to the program (a hidden temporary, S_FS), located at the program.
+  void declare_bool(const std::string& name, bool initial) {
+    model::Variable v;
+    v.name = name;
+    v.where = pou_.where;
+    v.direction = model::VarDirection::Local;
+    v.type = model::Type::boolean();
+    v.initial = initial ? 1 : 0;
+    pou_.variables.push_back(std::move(v));
   }
 
   // PRE of the TIMER's decorated data, in milliseconds (Logix timers count milliseconds).

@@ -58,15 +58,17 @@ inline std::string alias(const std::string& name, const std::string& io) {
          "\" ExternalAccess=\"Read/Write\"/>\n";
 }
 
-inline std::string bool_tag(const std::string& name, int value) {
-  return "<Tag Name=\"" + name +
-         "\" TagType=\"Base\" DataType=\"BOOL\" Radix=\"Decimal\" Constant=\"false\">\n"
-         "<Data Format=\"L5K\">\n<![CDATA[" +
+// A base tag of an elementary type with its value, in both of Studio 5000's data formats.
+inline std::string base_tag(const std::string& name, const std::string& type, long value) {
+  return "<Tag Name=\"" + name + "\" TagType=\"Base\" DataType=\"" + type +
+         "\" Radix=\"Decimal\" Constant=\"false\">\n<Data Format=\"L5K\">\n<![CDATA[" +
          std::to_string(value) +
-         "]]>\n</Data>\n<Data Format=\"Decorated\">\n<DataValue DataType=\"BOOL\" "
-         "Radix=\"Decimal\" "
-         "Value=\"" +
-         std::to_string(value) + "\"/>\n</Data>\n</Tag>\n";
+         "]]>\n</Data>\n<Data Format=\"Decorated\">\n<DataValue DataType=\"" + type +
+         "\" Radix=\"Decimal\" Value=\"" + std::to_string(value) + "\"/>\n</Data>\n</Tag>\n";
+}
+
+inline std::string bool_tag(const std::string& name, int value) {
+  return base_tag(name, "BOOL", value);
 }
 
 inline std::string sfc_tag(const std::string& name, const char* type) {
@@ -184,13 +186,7 @@ inline std::string rll_routine(const std::string& name, const std::vector<std::s
 }
 
 inline std::string dint_tag(const std::string& name, long value) {
-  return "<Tag Name=\"" + name +
-         "\" TagType=\"Base\" DataType=\"DINT\" Radix=\"Decimal\" Constant=\"false\">\n"
-         "<Data Format=\"L5K\">\n<![CDATA[" +
-         std::to_string(value) +
-         "]]>\n</Data>\n<Data Format=\"Decorated\">\n<DataValue DataType=\"DINT\" "
-         "Radix=\"Decimal\" Value=\"" +
-         std::to_string(value) + "\"/>\n</Data>\n</Tag>\n";
+  return base_tag(name, "DINT", value);
 }
 
 inline std::string timer_tag(const std::string& name, long preset_ms) {
