@@ -61,7 +61,19 @@ class Ic3 {
         options_(o),
         stats_(stats),
         cone_(cone_latches(aig_, {target_, step_ok_})),
-        lift_(aig_, false, o.deadline) {}
+        lift_(aig_, false, o.deadline) {
+    if (!o.known_invariant) return;
+    // All of it, not only the clauses over the cone: a part of an inductive invariant need not
+    // be inductive. Latches outside the cone stay free in the frames, where the invariant then
+    // reads as its projection onto the cone, which is inductive there too.
+    for (const auto& clause : *o.known_invariant) {
+      if (clause.empty()) continue;
+      Cube excluded;  // the states the clause rules out
+      for (const auto& l : clause) excluded.push_back({l.latch, !l.value});
+      std::sort(excluded.begin(), excluded.end());
+      known_.push_back(std::move(excluded));
+    }
+  }
 
   ReachResult run() {
     ReachResult result;
@@ -139,6 +151,11 @@ class Ic3 {
           r.kind = ReachResult::Kind::Unreachable;
           r.depth = static_cast<std::uint32_t>(k);  // the frames it took
           r.certificate.kind = Certificate::Kind::Invariant;
+          for (const auto& c : known_) {
+            LatchClause clause;
+            for (const auto& l : c) clause.push_back({l.latch, !l.value});
+            r.certificate.clauses.push_back(std::move(clause));
+          }
           for (std::size_t j = i + 1; j < blocked_.size(); ++j)
             for (const auto& c : blocked_[j]) {
               LatchClause clause;
@@ -154,6 +171,8 @@ class Ic3 {
   void add_frame() {
     frames_.emplace_back(aig_, frames_.empty(), options_.deadline);
     blocked_.emplace_back();
+    if (frames_.size() > 1)
+      for (const auto& c : known_) frames_.back().block(c);
     if (options_.on_frame) options_.on_frame(static_cast<std::uint32_t>(frames_.size() - 1));
   }
 
@@ -334,6 +353,7 @@ class Ic3 {
   Ic3Options options_;
   Ic3Stats* stats_;
   std::vector<std::uint32_t> cone_;
+  std::vector<Cube> known_;  ///< Ic3Options::known_invariant over the cone, as blocked cubes
   std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;

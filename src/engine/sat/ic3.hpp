@@ -18,6 +18,12 @@ struct Ic3Options {
   std::uint32_t max_frames = 100000;
   /// Called with the index of each frame as it is opened (the progress line); may be empty.
   std::function<void(std::uint32_t)> on_frame;
+  /// Clauses already proved of every reachable state (re-checked invariants of earlier
+  /// targets over the same latches): every frame past the initial one assumes them, and a proof's
+  /// certificate includes them, so that it is inductive alone. The step invariants one target's
+  /// proof learns (one step of a chart active at a time) are then not learned again for each of the
+  /// next hundred targets.
+  const std::vector<LatchClause>* known_invariant = nullptr;
 };
 
 struct Ic3Stats {

@@ -10,6 +10,7 @@
 #include "engine/sat/bmc.hpp"
 #include "engine/sat/certificate.hpp"
 #include "engine/sat/grafcet_machine.hpp"
+#include "engine/sat/houdini.hpp"
 #include "engine/sat/ic3.hpp"
 #include "engine/sat/k_induction.hpp"
 #include "engine/sat/loop_pumping.hpp"
@@ -45,6 +46,14 @@ constexpr double kRangeProbeSeconds = 5.0;
 constexpr double kQuickRangeProbeSeconds = 0.25;
 /// The first, short IC3 pass of `--engine ic3` on IEC charts (Run::solve).
 constexpr double kFirstIc3Seconds = 1.0;
+/// The time of each IC3 run in the first round of a pass over many targets, doubled each round
+/// (Run::solve): the first pass's, and the last pass's.
+constexpr double kFirstIc3Slice = 0.1;
+constexpr double kIc3Slice = 0.5;
+/// Houdini's share of the steps' mutual exclusions (Run::solve): at most this many pairs, for
+/// at most this long (an eighth of the time left when less).
+constexpr std::size_t kMaxStepPairs = 200000;
+constexpr double kHoudiniSeconds = 5.0;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -114,6 +123,12 @@ class Run {
     std::vector<Question> questions;
     for (const auto& p : task_.properties) questions.push_back(property_question(p));
     for (auto c : task_.checks) questions.push_back(check_question(c));
+    for (const auto& q : questions) {
+      std::vector<std::size_t> group = q.targets;
+      for (const auto& f : q.findings)
+        if (f.target) group.push_back(*f.target);
+      if (group.size() > 1) groups_.push_back(std::move(group));
+    }
     std::optional<std::size_t> loop_limit;
     if (iec_ && iec_->loop_limit != Aig::kFalse && !targets_.empty())
       loop_limit = add_target(iec_->loop_limit);
@@ -548,35 +563,129 @@ class Run {
           decided[t] = true;
         }
     }
-    // IC3 on each target, within `deadline`; with `last` false, a target it leaves unknown
-    // stays undecided for the passes after.
-    auto ic3_pass = [&](const sat::ReachQuery& search, sat::Deadline deadline, bool last) {
+    // Every invariant proved so far (re-checked): the IC3 runs after it assume it. First the
+    // steps' mutual exclusions that hold (Houdini, houdini.hpp).
+    std::vector<sat::LatchClause> known =
+        sat::houdini(query, sat::step_exclusion_candidates(step_latch_groups(), kMaxStepPairs),
+                     share_of_time_left(kHoudiniSeconds));
+    auto learn = [&](const sat::Certificate& c) {
+      if (c.kind != sat::Certificate::Kind::Invariant) return;
+      known.insert(known.end(), c.clauses.begin(), c.clauses.end());
+      std::sort(known.begin(), known.end());
+      known.erase(std::unique(known.begin(), known.end()), known.end());
+    };
+    // A run IC3 found to `target` of `search` (over `aig`, the engine's circuit or a copy with
+    // more gates), with its inputs: IC3's own when they replay, else a shortest one by BMC up
+    // to its depth (which double-checks IC3's claim).
+    auto with_inputs = [&](ReachResult r, const Aig& aig, AigLit target) {
+      if (r.kind != ReachResult::Kind::Reached || r.inputs.size() == r.depth + 1) return r;
+      sat::ReachQuery one = query;
+      one.aig = &aig;
+      one.targets = {target};
+      sat::BoundOptions b;
+      b.max_depth = r.depth;
+      b.deadline = deadline_;
+      auto run = sat::bmc(one, b).front();
+      if (run.kind == ReachResult::Kind::Unknown && run.why.find("time") == std::string::npos)
+        throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
+      return run;
+    };
+    // IC3 on target `t` within `deadline`. An unknown stays undecided for a later try unless
+    // `last`, or unless IC3 stopped for another reason than time.
+    auto ic3_target = [&](const sat::ReachQuery& search, std::size_t t, sat::Deadline deadline,
+                          bool last) {
       sat::Ic3Options io;
       io.deadline = deadline;
       io.on_frame = level_reporter("ic3");
-      for (std::size_t t = 0; t < targets_.size(); ++t) {
-        if (decided[t]) continue;
-        auto r = sat::ic3(search, t, io);
-        if (!last && r.kind == ReachResult::Kind::Unknown) continue;
-        if (r.kind == ReachResult::Kind::Reached && r.inputs.size() != r.depth + 1) {
-          // IC3 returns its run's inputs once they replay on the circuit (ic3.hpp); else it
-          // knows only that a run of r.depth cycles exists, and BMC up to that depth rebuilds
-          // a shortest one with its inputs (and double-checks IC3's claim).
-          sat::ReachQuery one = query;
-          one.targets = {targets_[t]};
-          sat::BoundOptions b;
-          b.max_depth = r.depth;
-          b.deadline = deadline_;
-          auto run = sat::bmc(one, b).front();
-          if (run.kind == ReachResult::Kind::Unknown && run.why.find("time") == std::string::npos)
-            throw std::logic_error("ic3: a counterexample that BMC cannot rebuild");
-          r = std::move(run);
+      io.known_invariant = &known;
+      auto r = with_inputs(sat::ic3(search, t, io), engine_aig(), targets_[t]);
+      // At once: a later target that runs out of time must not cost this proof.
+      recheck(t, r);
+      if (!last && r.kind == ReachResult::Kind::Unknown && r.why.find("time") != std::string::npos)
+        return;
+      if (r.kind == ReachResult::Kind::Unreachable) learn(r.certificate);
+      out[t] = std::move(r);
+      decided[t] = true;
+    };
+    // IC3 on the disjunction of a question's undecided targets `members`: one proof for all of
+    // them (513 output-conflict targets of PPU scenario 10 hold for the same few step
+    // invariants), or a run that reaches some, which are then decided.
+    auto ic3_group = [&](const sat::ReachQuery& search, const std::vector<std::size_t>& members,
+                         sat::Deadline deadline) {
+      Aig grouped = engine_aig();  // the same latches and inputs, one gate more
+      std::vector<AigLit> lits;
+      for (auto t : members) lits.push_back(targets_[t]);
+      const AigLit any = grouped.make_or(lits);
+      sat::ReachQuery group_search = search;
+      group_search.aig = &grouped;
+      group_search.targets = {any};
+      sat::Ic3Options io;
+      io.deadline = deadline;
+      io.on_frame = level_reporter("ic3");
+      io.known_invariant = &known;
+      auto r = with_inputs(sat::ic3(group_search, 0, io), grouped, any);
+      if (r.kind == ReachResult::Kind::Unreachable) {
+        sat::ReachQuery group_query = query;
+        group_query.aig = &grouped;
+        group_query.targets = {any};
+        if (!sat::recheck(group_query, 0, r.certificate, deadline_).ok) return;  // each alone
+        learn(r.certificate);
+        for (auto t : members) {
+          out[t] = r;
+          decided[t] = true;
         }
-        // At once: a later target that runs out of time must not cost this proof.
-        recheck(t, r);
-        if (!last && r.kind == ReachResult::Kind::Unknown) continue;
-        out[t] = std::move(r);
-        decided[t] = true;
+      } else if (r.kind == ReachResult::Kind::Reached) {
+        // The run's last frame meets at least one of them.
+        std::vector<bool> latches;
+        for (const auto& l : grouped.latches()) latches.push_back(l.initial);
+        for (std::uint32_t j = 0; j < r.depth; ++j) {
+          const auto nodes = grouped.evaluate(r.inputs[j], latches);
+          for (std::size_t l = 0; l < latches.size(); ++l)
+            latches[l] = Aig::value_of(nodes, grouped.latches()[l].next);
+        }
+        const auto nodes = grouped.evaluate(r.inputs[r.depth], latches);
+        bool met = false;
+        for (auto t : members)
+          if (Aig::value_of(nodes, targets_[t])) {
+            out[t] = r;
+            decided[t] = true;
+            met = true;
+          }
+        if (!met) throw std::logic_error("ic3: a run to a disjunction that meets no target");
+      }
+    };
+    // Rounds over the undecided targets, each IC3 run within `slice` seconds, doubled each
+    // round, and never past `deadline`: a target IC3 cannot decide no longer takes the time of
+    // every target after it (the final pass of main c14329e ran the targets in turn, each to
+    // the deadline: corpus PPU scenario 10 left its 513 output conflicts and its range check
+    // unsearched). Each round first tries every question's undecided targets together.
+    auto ic3_rounds = [&](const sat::ReachQuery& search, sat::Deadline deadline, double slice,
+                          bool last) {
+      const auto seconds = [](double x) {
+        return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(x));
+      };
+      for (;;) {
+        std::size_t left = 0;
+        for (std::size_t t = 0; t < targets_.size(); ++t) left += decided[t] ? 0 : 1;
+        if (left == 0 || deadline.passed()) return;
+        // Without a deadline, one round with no slice: each run to its answer.
+        const bool whole =
+            !deadline.at || left == 1 || Clock::now() + seconds(slice) >= *deadline.at;
+        const auto round_cut = [&] {
+          sat::Deadline d = deadline;
+          if (!whole) d.at = std::min(*deadline.at, Clock::now() + seconds(slice));
+          return d;
+        };
+        for (const auto& group : groups_) {
+          std::vector<std::size_t> members;
+          for (auto t : group)
+            if (!decided[t]) members.push_back(t);
+          if (members.size() > 1) ic3_group(search, members, round_cut());
+        }
+        for (std::size_t t = 0; t < targets_.size() && !deadline.passed(); ++t)
+          if (!decided[t]) ic3_target(search, t, round_cut(), last && whole);
+        if (whole) return;
+        slice *= 2;
       }
     };
     auto undecided = [&] {
@@ -592,7 +701,7 @@ class Run {
       relaxed = search.step_ok != query.step_ok;
       // A short IC3 pass first: what it proves at once (most bounds that hold) needs no
       // pumping, whose frame caps can cost seconds on a counter that never repeats.
-      ic3_pass(search, share_of_time_left(kFirstIc3Seconds), false);
+      ic3_rounds(search, share_of_time_left(kFirstIc3Seconds), kFirstIc3Slice, false);
     }
     if (iec_ && undecided()) {
       // Deep runs that repeat a short loop (an INT counter counting while a step waits), for
@@ -617,8 +726,11 @@ class Run {
         search = query;
       else if (!relaxed)
         search = without_range_check(query, kRangeProbeSeconds);
-      ic3_pass(search, deadline_, true);
+      ic3_rounds(search, deadline_, kIc3Slice, true);
     }
+    for (std::size_t t = 0; t < targets_.size(); ++t)
+      if (!decided[t] && out[t].why.empty())
+        out[t].why = "the time limit passed before IC3 decided it";
     return out;
   }
 
@@ -661,6 +773,29 @@ class Run {
                                         std::chrono::duration<double>(seconds));
     d.at = d.at ? std::min(*d.at, cap) : cap;
     return d;
+  }
+
+  /// The latches of the steps' activity, one group per chart instance (the fields named
+  /// "INSTANCE.STEP" with one prefix).
+  std::vector<std::vector<std::uint32_t>> step_latch_groups() const {
+    const auto& circuit = machine_ ? static_cast<const semantics::TransitionCircuit&>(*grafcet_)
+                                   : static_cast<const semantics::TransitionCircuit&>(*iec_);
+    std::map<std::string, std::vector<std::uint32_t>> by_prefix;
+    const auto& fields = ts_.layout().fields();
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      const auto kind = fields[f].kind;
+      if ((kind != semantics::FieldKind::StepReady && kind != semantics::FieldKind::StepActive) ||
+          circuit.field_latches[f].size() != 1)
+        continue;
+      const auto& name = fields[f].name;
+      const auto dot = name.rfind('.');
+      by_prefix[dot == std::string::npos ? std::string() : name.substr(0, dot)].push_back(
+          circuit.field_latches[f][0]);
+    }
+    std::vector<std::vector<std::uint32_t>> out;
+    for (auto& [prefix, latches] : by_prefix)
+      if (latches.size() > 1) out.push_back(std::move(latches));
+    return out;
   }
 
   /// The latches of fields of two bits or more (integer variables, timers, counters of
@@ -808,10 +943,14 @@ class Run {
   }
 
   std::string certificates(const Question& q) const {
+    // Targets proved together share one certificate: each is printed once.
     std::string out;
+    std::set<std::string> printed;
     for (auto t : q.targets)
-      if (answers_[t].kind == ReachResult::Kind::Unreachable)
-        out += sat::certificate_text(engine_aig(), answers_[t].certificate);
+      if (answers_[t].kind == ReachResult::Kind::Unreachable) {
+        auto text = sat::certificate_text(engine_aig(), answers_[t].certificate);
+        if (printed.insert(text).second) out += text;
+      }
     return out;
   }
 
@@ -1147,6 +1286,9 @@ class Run {
   std::optional<sat::GrafcetMachine> machine_;  ///< over *grafcet_
   AigLit step_ok_ = Aig::kTrue;
   std::vector<AigLit> targets_;
+  /// Per question of two targets or more, its targets (steps, transitions, findings): IC3 tries
+  /// the undecided ones of each together first (Run::solve).
+  std::vector<std::vector<std::size_t>> groups_;
   std::vector<logic::StepRef> steps_;  ///< the chart's steps (stored-actions)
   /// The states without a successor (observers.hpp), built once when a property needs it;
   /// nullopt inside when too many inputs decide it.
