@@ -54,6 +54,11 @@ constexpr double kIc3Slice = 0.5;
 /// at most this long (an eighth of the time left when less).
 constexpr std::size_t kMaxStepPairs = 200000;
 constexpr double kHoudiniSeconds = 5.0;
+/// The AG EF checks' search for a situation that never reaches the goal (Run::find_stuck): how
+/// many situations, how deep BMC looks from each before IC3, how long IC3 tries each goal.
+constexpr std::size_t kMaxStuckSituations = 12;
+constexpr std::uint32_t kStuckBmcDepth = 8;
+constexpr double kStuckSlice = 0.5;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -81,7 +86,14 @@ struct Finding {
 
 /// How a property or check reads the answers for its targets.
 struct Question {
-  enum class Shape { Invariant, Reach, Check, Findings, Unsupported } shape = Shape::Unsupported;
+  enum class Shape {
+    Invariant,
+    Reach,
+    Check,
+    Findings,
+    Stuck,
+    Unsupported
+  } shape = Shape::Unsupported;
   std::vector<std::size_t> targets;  ///< indices into the query's targets
   std::vector<std::string> labels;   ///< Check: per target, the finding when it is unreachable
   // Findings (the explicit engine's messages, engine/standard_check_runner.hpp):
@@ -92,6 +104,27 @@ struct Question {
   std::string refusal;          ///< Unsupported: the message, when not the generic one
   /// Grafcet checks: the target "a stable situation" (none reachable: nothing to judge).
   std::optional<std::size_t> some_stable;
+  /// Stuck (IEC, IC3): AG EF goal for each goal, violated by a situation from which IC3 proves
+  /// the goal unreachable (Run::find_stuck); "holds" is not decided this way.
+  struct Goal {
+    AigLit lit;                               ///< over the circuit's latches and inputs
+    std::string finding;                      ///< the finding, after "from situation ... "
+    std::string note;                         ///< the trace's note
+    std::optional<std::uint32_t> observable;  ///< marked in the trace
+  };
+  std::vector<Goal> goals;
+  std::string formula;  ///< shown with the verdict ("AG EF init")
+  std::string trivial;  ///< Stuck without goals: why it holds (no step on a loop)
+  struct Stuck {
+    std::size_t goal = 0;
+    ReachResult run;  ///< to the situation
+    sat::Certificate proof;
+    std::vector<bool> latches;  ///< the situation (its circuit latches)
+    bool no_successor = false;  ///< no allowed cycle from it at all
+  };
+  std::optional<Stuck> stuck;
+  std::string stuck_certificate;  ///< the proof, over the circuit started in the situation
+  std::string stuck_why;          ///< no violation found: how far the search went
 };
 
 class Run {
@@ -132,8 +165,32 @@ class Run {
     std::optional<std::size_t> loop_limit;
     if (iec_ && iec_->loop_limit != Aig::kFalse && !targets_.empty())
       loop_limit = add_target(iec_->loop_limit);
-    answers_ = solve();
+    const bool any_stuck = std::any_of(questions.begin(), questions.end(), [](const Question& q) {
+      return q.shape == Question::Shape::Stuck && !q.goals.empty();
+    });
+    {
+      // The AG EF checks search after the others, in the third of the time they leave.
+      const auto whole = deadline_;
+      if (any_stuck && deadline_.at) deadline_.at = part_of_time_left_at(2, 3);
+      answers_ = solve();
+      deadline_ = whole;
+    }
     if (loop_limit) distrust_cut_cycles(*loop_limit);
+    if (any_stuck) {
+      const bool cut_cycle_possible =
+          loop_limit && answers_[*loop_limit].kind != ReachResult::Kind::Unreachable;
+      std::size_t left = 0;
+      for (const auto& question : questions)
+        left += question.shape == Question::Shape::Stuck && !question.goals.empty() ? 1 : 0;
+      for (auto& question : questions) {
+        if (question.shape != Question::Shape::Stuck || question.goals.empty()) continue;
+        if (cut_cycle_possible)
+          question.stuck_why = iec_->loop_limit_message();
+        else
+          find_stuck(question, part_of_time_left(static_cast<int>(left)));
+        --left;
+      }
+    }
 
     std::size_t q = 0;
     for (const auto& p : task_.properties) {
@@ -311,10 +368,94 @@ class Run {
       case StandardCheck::OutputConflicts:
         output_conflicts_question(q);
         break;
+      case StandardCheck::Reentry:
+      case StandardCheck::LocalDeadlock:
+      case StandardCheck::InitialReturn:
+      case StandardCheck::GlobalDeadlock:
+        stuck_question(c, q);
+        break;
       default:
         break;
     }
     return q;
+  }
+
+  /// The AG EF checks as goals (the explicit engine's findings, standard_check_runner.hpp): a
+  /// step on a loop that becomes active again (reentry), a step left and re-entered (local
+  /// deadlock), the initial step activity (initial return), a transition that fires (global
+  /// deadlock). IC3 only, without fairness (reentry would read AG AF).
+  void stuck_question(StandardCheck c, Question& q) {
+    if (options_.algorithm != SatAlgorithm::Ic3 || !task_.fairness.empty()) return;
+    auto& iec = *iec_;
+    const auto step_lit = [&](const logic::StepRef& x) {
+      return logic::circuit_literal(iec, *logic::observable_atom(ts_, x.observable));
+    };
+    q.shape = Question::Shape::Stuck;
+    switch (c) {
+      case StandardCheck::Reentry:
+        q.formula = "AG EF X";
+        for (const auto& x : steps_)
+          if (x.on_loop || !task_.project)
+            q.goals.push_back({step_lit(x),
+                               "step " + logic::describe_step(x) +
+                                   ": a reachable situation exists from which it can never "
+                                   "become active again (AG EF " +
+                                   ts_.observables()[x.observable].name + " is violated)",
+                               "after the last situation, " + logic::describe_step(x) +
+                                   " can never become active again",
+                               x.observable});
+        if (q.goals.empty()) q.trivial = "no step lies on a loop";
+        break;
+      case StandardCheck::LocalDeadlock:
+        q.formula = "AG (X -> EF !X) & AG (!X -> EF X)";
+        for (const auto& x : steps_)
+          for (const bool leave : {true, false}) {
+            const char* what =
+                leave ? "once active, is never left" : "once inactive, never becomes active again";
+            q.goals.push_back(
+                {leave ? Aig::make_not(step_lit(x)) : step_lit(x),
+                 "step " + logic::describe_step(x) + ", " + what,
+                 "from the last situation on, " + logic::describe_step(x) + " " + what,
+                 x.observable});
+          }
+        break;
+      case StandardCheck::InitialReturn: {
+        q.formula = "AG EF init";
+        if (steps_.empty()) {  // whole states: the explicit and bdd engines
+          q.shape = Question::Shape::Unsupported;
+          return;
+        }
+        // The step activity of the initial state (the IEC circuit has one).
+        std::vector<bool> inputs(iec.aig.inputs().size(), false), latches;
+        for (const auto& l : iec.aig.latches()) latches.push_back(l.initial);
+        const auto nodes = iec.aig.evaluate(inputs, latches);
+        std::vector<AigLit> same;
+        for (const auto& x : steps_) {
+          const AigLit lit = step_lit(x);
+          same.push_back(Aig::value_of(nodes, lit) ? lit : Aig::make_not(lit));
+        }
+        q.goals.push_back({iec.aig.make_and(same), "",
+                           "from the last situation the initial "
+                           "situation is unreachable",
+                           std::nullopt});
+        break;
+      }
+      case StandardCheck::GlobalDeadlock: {
+        std::vector<AigLit> fires;
+        for (const auto f : iec.fired) fires.push_back(iec.aig.make_and(f, step_ok_));
+        if (fires.empty()) {
+          q.shape = Question::Shape::Unsupported;
+          return;
+        }
+        q.goals.push_back({iec.aig.make_or(fires),
+                           "no transition can ever fire again, whatever "
+                           "the inputs",
+                           "the last situation is a global deadlock", std::nullopt});
+        break;
+      }
+      default:
+        q.shape = Question::Shape::Unsupported;
+    }
   }
 
   /// Grafcet (docs/engines.md): the checks that read the explicit graph's edges, whose events
@@ -565,9 +706,9 @@ class Run {
     }
     // Every invariant proved so far (re-checked): the IC3 runs after it assume it. First the
     // steps' mutual exclusions that hold (Houdini, houdini.hpp).
-    std::vector<sat::LatchClause> known =
-        sat::houdini(query, sat::step_exclusion_candidates(step_latch_groups(), kMaxStepPairs),
-                     share_of_time_left(kHoudiniSeconds));
+    known_ = sat::houdini(query, sat::step_exclusion_candidates(step_latch_groups(), kMaxStepPairs),
+                          share_of_time_left(kHoudiniSeconds));
+    auto& known = known_;
     auto learn = [&](const sat::Certificate& c) {
       if (c.kind != sat::Certificate::Kind::Invariant) return;
       known.insert(known.end(), c.clauses.begin(), c.clauses.end());
@@ -766,6 +907,11 @@ class Run {
     return d;
   }
   sat::Deadline eighth_of_time_left() const { return part_of_time_left(8); }
+  /// The point `num` / `den` of the time left from now (the run's deadline must be set).
+  Clock::time_point part_of_time_left_at(int num, int den) const {
+    const auto now = Clock::now();
+    return now + (*deadline_.at - now) * num / den;
+  }
   /// The same, and at most `seconds` from now.
   sat::Deadline share_of_time_left(double seconds) const {
     sat::Deadline d = eighth_of_time_left();
@@ -773,6 +919,94 @@ class Run {
                                         std::chrono::duration<double>(seconds));
     d.at = d.at ? std::min(*d.at, cap) : cap;
     return d;
+  }
+
+  /// The circuit's latch values after `depth` cycles of run `r`.
+  std::vector<bool> latches_at(const ReachResult& r, std::uint32_t depth) const {
+    const Aig& aig = engine_aig();
+    std::vector<bool> latches;
+    for (const auto& l : aig.latches()) latches.push_back(l.initial);
+    for (std::uint32_t j = 0; j < depth; ++j) {
+      const auto nodes = aig.evaluate(r.inputs[j], latches);
+      for (std::size_t l = 0; l < latches.size(); ++l)
+        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+    }
+    return latches;
+  }
+
+  /// A violation of AG EF goal for some goal of `q`: a situation on a run the engine found
+  /// (the initial one, then the situations of the runs to steps and transitions, shallowest
+  /// first, at most kMaxStuckSituations) from which no goal-reaching run exists: BMC from the
+  /// situation drops the goals it reaches within kStuckBmcDepth cycles, IC3 then tries each
+  /// goal left within kStuckSlice seconds, assuming the invariants proved so far (a reachable
+  /// situation satisfies them, and so does every situation after it), and a fresh solver
+  /// re-checks its proof over the circuit started in the situation. Sets q.stuck, or
+  /// q.stuck_why when none was found: whether the check holds is not decided this way.
+  void find_stuck(Question& q, sat::Deadline deadline) {
+    std::vector<std::pair<std::uint32_t, std::size_t>> frames;  // (depth, answer)
+    for (std::size_t a = 0; a < answers_.size(); ++a)
+      if (answers_[a].kind == ReachResult::Kind::Reached &&
+          answers_[a].inputs.size() == answers_[a].depth + 1)
+        for (std::uint32_t j = 0; j <= answers_[a].depth; ++j) frames.emplace_back(j, a);
+    std::stable_sort(frames.begin(), frames.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<std::pair<ReachResult, std::vector<bool>>> situations;
+    {
+      ReachResult start;  // the initial state, a run of no cycle
+      start.kind = ReachResult::Kind::Reached;
+      start.inputs.assign(1, std::vector<bool>(engine_aig().inputs().size(), false));
+      situations.emplace_back(start, latches_at(start, 0));
+    }
+    std::set<std::vector<bool>> seen{situations.front().second};
+    for (const auto& [depth, a] : frames) {
+      if (situations.size() >= kMaxStuckSituations) break;
+      ReachResult run = answers_[a];
+      run.depth = depth;
+      run.inputs.resize(depth + 1);
+      auto latches = latches_at(run, depth);
+      if (seen.insert(latches).second) situations.emplace_back(std::move(run), std::move(latches));
+    }
+    Aig from = engine_aig();  // the same circuit, started in the situation under test
+    std::size_t tried = 0;
+    for (const auto& [run, latches] : situations) {
+      if (deadline.passed()) break;
+      ++tried;
+      for (std::uint32_t l = 0; l < latches.size(); ++l) from.set_initial(l, latches[l]);
+      sat::ReachQuery query{&from, step_ok_, {}, true};
+      for (const auto& g : q.goals) query.targets.push_back(g.lit);
+      sat::BoundOptions bounds;
+      bounds.max_depth = kStuckBmcDepth;
+      bounds.deadline = deadline;
+      const auto near = sat::bmc(query, bounds);
+      for (std::size_t k = 0; k < q.goals.size() && !deadline.passed(); ++k) {
+        if (near[k].kind == ReachResult::Kind::Reached) continue;
+        sat::Ic3Options io;
+        io.deadline = deadline;
+        const auto slice = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(kStuckSlice));
+        io.deadline.at = io.deadline.at ? std::min(*io.deadline.at, slice) : slice;
+        io.known_invariant = &known_;
+        const auto r = sat::ic3(query, k, io);
+        if (r.kind != ReachResult::Kind::Unreachable ||
+            !sat::recheck(query, k, r.certificate, deadline).ok)
+          continue;
+        q.stuck = Question::Stuck{k, run, r.certificate, latches, false};
+        q.stuck_certificate = sat::certificate_text(from, r.certificate);
+        // No successor at all, or successors that fire nothing (global-deadlock's wording).
+        sat::ReachQuery any_step{&from, step_ok_, {step_ok_}, true};
+        sat::BoundOptions now;
+        now.max_depth = 0;
+        now.deadline = deadline;
+        const auto step = sat::bmc(any_step, now).front();
+        q.stuck->no_successor =
+            step.kind != ReachResult::Kind::Reached && step.why.find("time") == std::string::npos;
+        return;
+      }
+    }
+    q.stuck_why = "no situation found from which the property fails (" + std::to_string(tried) +
+                  " of the situations on the runs found tried" +
+                  (deadline.passed() ? ", then the time limit passed" : "") +
+                  "); whether it holds needs the explicit or bdd engine";
   }
 
   /// The latches of the steps' activity, one group per chart instance (the fields named
@@ -1195,6 +1429,47 @@ class Run {
     return r;
   }
 
+  PropertyResult stuck_result(StandardCheck c, PropertyResult r, const Question& q) {
+    r.formula = q.formula;
+    if (q.goals.empty()) {
+      r.verdict = Verdict::Holds;
+      r.message = q.trivial;
+      return r;
+    }
+    if (!q.stuck) {
+      r.verdict = Verdict::Unknown;
+      r.message = q.stuck_why;
+      return r;
+    }
+    const auto& found = *q.stuck;
+    const auto& goal = q.goals[found.goal];
+    r.verdict = Verdict::Violated;
+    r.trace = trace_of(found.run, logic::TraceKind::Counterexample);
+    r.trace->note = goal.note;
+    if (goal.observable) r.trace->marked = {*goal.observable};
+    const auto situation = ts_.describe(r.trace->steps.back().state);
+    switch (c) {
+      case StandardCheck::InitialReturn:
+        r.findings.push_back("from situation " + situation + " the initial situation " +
+                             ts_.describe(r.trace->steps.front().state) +
+                             " can never be reached again");
+        break;
+      case StandardCheck::GlobalDeadlock:
+        r.findings.push_back(
+            "situation " + situation + " (after " + std::to_string(found.run.depth) +
+            (found.run.depth == 1 ? " evolution): " : " evolutions): ") +
+            (found.no_successor ? "no successor at all (the assumptions exclude every input)"
+                                : goal.finding));
+        break;
+      default:
+        r.findings.push_back(goal.finding);
+        r.message = "the ic3 engine reports the first violation it proves";
+        break;
+    }
+    r.certificate = q.stuck_certificate;
+    return r;
+  }
+
   PropertyResult check_result(StandardCheck c, const Question& q) {
     PropertyResult r;
     r.name = std::string(logic::to_string(c));
@@ -1218,6 +1493,7 @@ class Run {
       return r;
     }
     if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
+    if (q.shape == Question::Shape::Stuck) return stuck_result(c, std::move(r), q);
     if (q.shape == Question::Shape::Invariant) {  // Instability: a reachable range error
       const auto& a = answers_[q.targets.front()];
       if (a.kind == ReachResult::Kind::Reached) {
@@ -1296,6 +1572,9 @@ class Run {
   std::optional<std::size_t> initial_count_;
   std::vector<ReachResult> answers_;
   sat::Deadline deadline_;
+  /// Re-checked invariants of the circuit (Houdini's, then each IC3 proof's): every later IC3
+  /// run assumes them, from the initial state or from a reachable situation.
+  std::vector<sat::LatchClause> known_;
 };
 
 class SatModelChecker final : public ModelChecker {
