@@ -14,6 +14,7 @@
 #include "engine/bdd/symbolic_system.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/explicit/reachable_situation_graph.hpp"
+#include "engine/sat/sat_model_checker.hpp"
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "semantics/grafcet_circuit.hpp"
@@ -304,7 +305,10 @@ TEST(GrafcetBdd, VariableWrittenByContinuousAndStoredActionsIsReadAsEither) {
   const auto e = make_explicit_model_checker()->check(task);
   const auto s = make_bdd_model_checker()->check(task);
   EXPECT_EQ(e.states, s.states);
-  for (const auto* r : {&e, &s}) {
+  // IC3 too: a target per disagreement, read in the stable situations of its machine.
+  const auto c = make_sat_model_checker({SatAlgorithm::Ic3, 200})->check(task);
+  for (const auto* r : {&e, &s, &c}) {
+    SCOPED_TRACE(r->engine);
     ASSERT_EQ(r->results.size(), 5u);
     for (std::size_t i = 0; i < 3; ++i)
       EXPECT_EQ(r->results[i].verdict, logic::Verdict::Holds) << r->results[i].formula;
@@ -333,7 +337,8 @@ TEST(GrafcetBdd, VariableWrittenByContinuousAndStoredActionsIsReadAsEither) {
   auto plain_task = task_for(p.project, *p.ts, {}, {});
   plain_task.checks = {logic::StandardCheck::OutputConflicts};
   for (const auto& r : {make_explicit_model_checker()->check(plain_task),
-                        make_bdd_model_checker()->check(plain_task)}) {
+                        make_bdd_model_checker()->check(plain_task),
+                        make_sat_model_checker({SatAlgorithm::Ic3, 200})->check(plain_task)}) {
     ASSERT_EQ(r.results.size(), 1u);
     EXPECT_EQ(r.results[0].verdict, logic::Verdict::Holds) << r.results[0].message;
   }

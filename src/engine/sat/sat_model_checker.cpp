@@ -486,6 +486,10 @@ class Run {
         }
         break;
       }
+      case StandardCheck::OutputConflicts:
+        grafcet_output_conflicts_question(q);
+        q.some_stable = add_machine_target(m.at_stable());
+        return q;
       default:
         return q;
     }
@@ -614,8 +618,8 @@ class Run {
 
   /// Layout field `f` is non-zero (its latches encode value - lo).
   AigLit field_nonzero(std::uint32_t f) {
-    auto& aig = iec_->aig;
-    const auto& bits = iec_->field_latches[f];
+    auto& aig = circuit().aig;
+    const auto& bits = circuit().field_latches[f];
     const auto lo = ts_.layout().fields()[f].lo;
     semantics::BitVector value;
     for (const auto l : bits) value.push_back(aig.latches()[l].current);
@@ -649,6 +653,38 @@ class Run {
     q.holds_message = conflicts.empty()
                           ? "no variable is written by two actions with different values"
                           : "actions writing the same variable are never active together";
+  }
+
+  /// Grafcet: a variable written by both continuous and stored actions, in a stable situation
+  /// where its continuous assignation and its stored value disagree (the explicit engine's
+  /// findings, standard_check_runner.hpp; docs/semantics.md 2.7).
+  void grafcet_output_conflicts_question(Question& q) {
+    if (!task_.project) {
+      q.refusal = "not checked: needs the chart (no project given)";
+      return;
+    }
+    auto& aig = grafcet_->aig;
+    q.shape = Question::Shape::Findings;
+    q.trace_note = "in the last situation the continuous assignation and the stored value disagree";
+    const auto mixed = logic::grafcet_mixed_writers(ts_, *task_.project);
+    for (const auto& m : mixed) {
+      const AigLit assigned = field_nonzero(m.assigned), stored = field_nonzero(m.stored);
+      const std::pair<AigLit, const char*> disagreements[] = {
+          {aig.make_and(assigned, Aig::make_not(stored)),
+           "a continuous action assigns it 1 while its stored value is 0"},
+          {aig.make_and(stored, Aig::make_not(assigned)),
+           "its stored value is 1 while no continuous action assigns it (the assignation rule "
+           "gives 0)"}};
+      for (const auto& [lit, what] : disagreements)
+        finding_if(q, lit,
+                   [this, head = m.what + ": " + what](const ReachResult&, const logic::Trace& t) {
+                     return head + ", in situation " + describe_at(t, 0);
+                   });
+    }
+    q.holds_message = mixed.empty()
+                          ? "no variable is written by both continuous and stored actions"
+                          : "the continuous assignation and the stored value of every variable "
+                            "written both ways always agree";
   }
 
   std::vector<ReachResult> solve() {
@@ -1412,6 +1448,15 @@ class Run {
       r.verdict = Verdict::Unknown;
       r.message = std::to_string(unknown) + " of " + std::to_string(q.findings.size()) +
                   " undecided: " + why;
+      return r;
+    }
+    if (q.some_stable && answers_[*q.some_stable].kind != ReachResult::Kind::Reached) {
+      // Grafcet: no stable situation reached, nothing judged (as grafcet_check_question).
+      const auto& a = answers_[*q.some_stable];
+      r.verdict = Verdict::Unknown;
+      r.message = a.kind == ReachResult::Kind::Unreachable
+                      ? "no initial state (the instability check says why): nothing to check"
+                      : "no stable situation reached yet: " + a.why;
       return r;
     }
     r.verdict = Verdict::Holds;
