@@ -1,5 +1,6 @@
 #include "engine/sat/observers.hpp"
 
+#include <unordered_map>
 #include <vector>
 
 namespace sfcv::engine::sat {
@@ -7,11 +8,13 @@ namespace sfcv::engine::sat {
 using semantics::Aig;
 using semantics::AigLit;
 
-std::optional<AigLit> no_successor(Aig& aig, AigLit step_ok, std::size_t max_new_ands) {
-  // The inputs in the cone of step_ok.
+namespace {
+
+/// The input literals (positive) in the cone of `root`.
+std::vector<AigLit> input_support(const Aig& aig, AigLit root) {
   std::vector<AigLit> support;
   std::vector<bool> seen(aig.nodes().size(), false);
-  std::vector<std::uint32_t> stack{Aig::node_of(step_ok)};
+  std::vector<std::uint32_t> stack{Aig::node_of(root)};
   while (!stack.empty()) {
     const auto n = stack.back();
     stack.pop_back();
@@ -24,13 +27,75 @@ std::optional<AigLit> no_successor(Aig& aig, AigLit step_ok, std::size_t max_new
       stack.push_back(Aig::node_of(node.right));
     }
   }
-  const std::size_t start = aig.num_ands();
-  AigLit dead = Aig::make_not(step_ok);
-  for (const auto input : support) {
-    dead = aig.make_and(aig.cofactor(dead, input, false), aig.cofactor(dead, input, true));
-    if (aig.num_ands() - start > max_new_ands) return std::nullopt;
+  return support;
+}
+
+/// `root` with every input of its cone universally quantified; nullopt once the expansion has
+/// added more than `budget` AND nodes since `start`.
+std::optional<AigLit> for_all_inputs(Aig& aig, AigLit root, std::size_t start, std::size_t budget) {
+  for (const auto input : input_support(aig, root)) {
+    root = aig.make_and(aig.cofactor(root, input, false), aig.cofactor(root, input, true));
+    if (aig.num_ands() - start > budget) return std::nullopt;
   }
-  return dead;
+  return root;
+}
+
+}  // namespace
+
+std::optional<AigLit> no_successor(Aig& aig, AigLit step_ok, std::size_t max_new_ands) {
+  return for_all_inputs(aig, Aig::make_not(step_ok), aig.num_ands(), max_new_ands);
+}
+
+std::optional<AigLit> at_next_cycle(Aig& aig, AigLit root, std::size_t max_new_ands) {
+  const std::size_t start = aig.num_ands();
+  std::unordered_map<std::uint32_t, AigLit> done;  // node -> its literal one cycle later
+  std::vector<std::uint32_t> stack{Aig::node_of(root)};
+  while (!stack.empty()) {
+    const auto n = stack.back();
+    if (done.count(n)) {
+      stack.pop_back();
+      continue;
+    }
+    const auto node = aig.nodes()[n];  // a copy: make_and may grow the node table
+    switch (node.kind) {
+      case Aig::NodeKind::Constant:
+        done[n] = Aig::kFalse;
+        break;
+      case Aig::NodeKind::Input:
+        done[n] = n * 2;  // this cycle's input, read by the next-state functions too
+        break;
+      case Aig::NodeKind::Latch:
+        done[n] = aig.latches()[node.index].next;
+        break;
+      case Aig::NodeKind::And: {
+        const auto l = Aig::node_of(node.left), r = Aig::node_of(node.right);
+        const auto dl = done.find(l), dr = done.find(r);
+        if (dl == done.end() || dr == done.end()) {
+          if (dl == done.end()) stack.push_back(l);
+          if (dr == done.end()) stack.push_back(r);
+          continue;
+        }
+        done[n] = aig.make_and(dl->second ^ (node.left & 1U), dr->second ^ (node.right & 1U));
+        if (aig.num_ands() - start > max_new_ands) return std::nullopt;
+        break;
+      }
+    }
+    stack.pop_back();
+  }
+  return done.at(Aig::node_of(root)) ^ (root & 1U);
+}
+
+std::optional<AigLit> some_input_satisfies(Aig& aig, const std::vector<AigLit>& lits,
+                                           std::size_t max_new_ands) {
+  // Exists distributes over the disjunction: each literal alone keeps its cone small.
+  const std::size_t start = aig.num_ands();
+  std::vector<AigLit> each;
+  for (const auto lit : lits) {
+    const auto none = for_all_inputs(aig, Aig::make_not(lit), start, max_new_ands);
+    if (!none) return std::nullopt;
+    each.push_back(Aig::make_not(*none));
+  }
+  return aig.make_or(each);
 }
 
 AigLit bounded_response_target(Aig& aig, AigLit p, AigLit s, std::uint32_t n, AigLit dead,

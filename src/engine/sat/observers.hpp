@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "semantics/aig.hpp"
 
@@ -17,6 +18,18 @@ namespace sfcv::engine::sat {
 /// than `max_new_ands` AND nodes (too many inputs decide whether a step exists).
 std::optional<semantics::AigLit> no_successor(semantics::Aig& aig, semantics::AigLit step_ok,
                                               std::size_t max_new_ands = 200000);
+
+/// "Some input valuation makes one of `lits` true": each literal with the inputs of its cone
+/// existentially quantified (Shannon expansion), then their disjunction, a literal over
+/// latches. nullopt when the expansions add more than `max_new_ands` AND nodes in all.
+std::optional<semantics::AigLit> some_input_satisfies(semantics::Aig& aig,
+                                                      const std::vector<semantics::AigLit>& lits,
+                                                      std::size_t max_new_ands = 200000);
+
+/// `root` one cycle later: every latch of its cone replaced by its next-state function (whose
+/// inputs are this cycle's). nullopt when that adds more than `max_new_ands` AND nodes.
+std::optional<semantics::AigLit> at_next_cycle(semantics::Aig& aig, semantics::AigLit root,
+                                               std::size_t max_new_ands = 200000);
 
 /// The target of the violations of AG (p -> W_n) with W_0 = s and
 /// W_k = s | (EX TRUE & AX W_{k-1}), n >= 1, over latches `p` and `s` and the deadlock literal

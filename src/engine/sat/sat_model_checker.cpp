@@ -59,6 +59,10 @@ constexpr double kHoudiniSeconds = 5.0;
 constexpr std::size_t kMaxStuckSituations = 12;
 constexpr std::uint32_t kStuckBmcDepth = 8;
 constexpr double kStuckSlice = 0.5;
+/// The AND nodes global-deadlock's "some input fires a transition" may add to the circuit.
+constexpr std::size_t kMaxQuantifiedAnds = 1000000;
+/// How many cycles ahead global-deadlock's invariant looks for a transition that can fire.
+constexpr std::uint32_t kFireCycles = 4;
 
 double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -186,7 +190,7 @@ class Run {
         if (question.shape != Question::Shape::Stuck || question.goals.empty()) continue;
         if (cut_cycle_possible)
           question.stuck_why = iec_->loop_limit_message();
-        else
+        else if (!holds_at_once(question))
           find_stuck(question, part_of_time_left(static_cast<int>(left)));
         --left;
       }
@@ -235,6 +239,8 @@ class Run {
   /// The circuit the engines unroll: the IEC scan cycle, or the Grafcet machine whose steps
   /// are micro-steps of the stable-situation relation.
   const Aig& engine_aig() const { return machine_ ? machine_->aig() : iec_->aig; }
+  /// The same, to add gates over its latches and inputs (a disjunction of targets).
+  Aig& mutable_engine_aig() { return machine_ ? machine_->mutable_aig() : iec_->aig; }
 
   /// A target read in the situations the property judges: every IEC cycle, Grafcet's stable
   /// situations only (grafcet_machine.hpp).
@@ -451,6 +457,20 @@ class Run {
                            "no transition can ever fire again, whatever "
                            "the inputs",
                            "the last situation is a global deadlock", std::nullopt});
+        // Holds when from every reachable situation some inputs fire a transition within a
+        // few cycles (AG EF fires follows): the invariant "can fire soon", the inputs
+        // quantified out (can_fire_soon); left to the search for a violation when the
+        // expansion is too large. It reads allowed cycles, not step_ok: the range check reads
+        // most inputs, and quantifying them all is what is too large. So the invariant proves
+        // the check only with the proof that no allowed cycle raises a range error (then every
+        // allowed cycle of a reachable state has its successor), a second target.
+        std::vector<AigLit> allowed_fires;
+        for (const auto f : iec.fired) allowed_fires.push_back(iec.aig.make_and(f, iec.allowed));
+        if (const auto can_fire = can_fire_soon(allowed_fires)) {
+          q.targets.push_back(add_target(Aig::make_not(*can_fire)));
+          if (iec.range_error != Aig::kFalse)
+            q.targets.push_back(add_target(iec.range_error_step()));
+        }
         break;
       }
       default:
@@ -789,10 +809,15 @@ class Run {
     // invariants), or a run that reaches some, which are then decided.
     auto ic3_group = [&](const sat::ReachQuery& search, const std::vector<std::size_t>& members,
                          sat::Deadline deadline) {
-      Aig grouped = engine_aig();  // the same latches and inputs, one gate more
+      Aig& grouped = mutable_engine_aig();  // one gate more, read by this search only
       std::vector<AigLit> lits;
       for (auto t : members) lits.push_back(targets_[t]);
-      const AigLit any = grouped.make_or(lits);
+      AigLit any = Aig::kFalse;
+      try {
+        any = grouped.make_or(lits);
+      } catch (const LimitReached&) {
+        return;  // the circuit's deadline or memory: each target alone, as before
+      }
       sat::ReachQuery group_search = search;
       group_search.aig = &grouped;
       group_search.targets = {any};
@@ -957,17 +982,91 @@ class Run {
     return d;
   }
 
-  /// The circuit's latch values after `depth` cycles of run `r`.
-  std::vector<bool> latches_at(const ReachResult& r, std::uint32_t depth) const {
-    const Aig& aig = engine_aig();
-    std::vector<bool> latches;
-    for (const auto& l : aig.latches()) latches.push_back(l.initial);
-    for (std::uint32_t j = 0; j < depth; ++j) {
-      const auto nodes = aig.evaluate(r.inputs[j], latches);
-      for (std::size_t l = 0; l < latches.size(); ++l)
-        latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
+  /// "Some inputs make one of `fires` true within kFireCycles cycles", over latches: F_1 =
+  /// some input valuation fires one now, F_(k+1) = F_k or some allowed cycle (range errors
+  /// aside: the caller proves there are none) leads to a state in F_k (the inputs quantified
+  /// out, observers.hpp); the deepest level built within kMaxQuantifiedAnds new AND nodes and
+  /// an eighth of the time left. A step whose action must run a cycle before its transition
+  /// can fire needs F_2 (PPU scenario 0: F_1, 136 000 new AND nodes, fails at depth 5; F_2,
+  /// 640 000, is proved in 2.3 s). nullopt when not even F_1 can be built.
+  std::optional<AigLit> can_fire_soon(const std::vector<AigLit>& fires) {
+    auto& aig = iec_->aig;
+    const std::size_t start = aig.num_ands();
+    std::optional<AigLit> level;
+    // Within an eighth of the time left: past it the levels built so far stand.
+    aig.set_deadline(eighth_of_time_left().at);
+    struct Clear {
+      Aig& aig;
+      ~Clear() { aig.set_deadline(std::nullopt); }
+    } clear{aig};
+    try {
+      level = sat::some_input_satisfies(aig, fires, kMaxQuantifiedAnds);
+      for (std::uint32_t k = 1; level && k < kFireCycles; ++k) {
+        const std::size_t used = aig.num_ands() - start;
+        if (used >= kMaxQuantifiedAnds) break;
+        const auto later = sat::at_next_cycle(aig, *level, kMaxQuantifiedAnds - used);
+        if (!later) break;
+        const auto via = sat::some_input_satisfies(aig, {aig.make_and(iec_->allowed, *later)},
+                                                   kMaxQuantifiedAnds - (aig.num_ands() - start));
+        if (!via) break;
+        level = aig.make_or(*level, *via);
+      }
+    } catch (const LimitReached&) {
+      // Time or the circuit's memory limit: the levels built so far stand (none: no target).
     }
-    return latches;
+    return level;
+  }
+
+  /// A Stuck question whose sufficient invariant (global-deadlock: a transition can fire
+  /// soon, and no range error) IC3 proved.
+  bool holds_at_once(const Question& q) const {
+    return !q.targets.empty() &&
+           std::all_of(q.targets.begin(), q.targets.end(), [&](std::size_t t) {
+             return answers_[t].kind == ReachResult::Kind::Unreachable;
+           });
+  }
+
+  /// The situations find_stuck tries, each with the run that reaches it: the initial one,
+  /// then those of the runs found (answers_), depth by depth, distinct, at most
+  /// kMaxStuckSituations. Each run is simulated once, one cycle per depth (replaying every
+  /// prefix from the start cost seconds on corpus 11's 200 runs), and the list is built once
+  /// for all the AG EF checks.
+  const std::vector<std::pair<ReachResult, std::vector<bool>>>& stuck_situations(
+      const sat::Deadline& deadline) {
+    if (situations_) return *situations_;
+    auto& out = situations_.emplace();
+    const Aig& aig = engine_aig();
+    std::vector<bool> initial;
+    for (const auto& l : aig.latches()) initial.push_back(l.initial);
+    ReachResult start;  // the initial state, a run of no cycle
+    start.kind = ReachResult::Kind::Reached;
+    start.inputs.assign(1, std::vector<bool>(aig.inputs().size(), false));
+    out.emplace_back(start, initial);
+    std::set<std::vector<bool>> seen{initial};
+    std::vector<std::size_t> runs;
+    for (std::size_t a = 0; a < answers_.size(); ++a)
+      if (answers_[a].kind == ReachResult::Kind::Reached &&
+          answers_[a].inputs.size() == answers_[a].depth + 1 && answers_[a].depth > 0)
+        runs.push_back(a);
+    std::vector<std::vector<bool>> at(runs.size(), initial);  // each run's state at depth j
+    for (std::uint32_t j = 1; out.size() < kMaxStuckSituations && !deadline.passed(); ++j) {
+      bool any = false;
+      for (std::size_t k = 0; k < runs.size() && out.size() < kMaxStuckSituations; ++k) {
+        const auto& r = answers_[runs[k]];
+        if (r.depth < j) continue;
+        any = true;
+        const auto nodes = aig.evaluate(r.inputs[j - 1], at[k]);
+        for (std::size_t l = 0; l < at[k].size(); ++l)
+          at[k][l] = Aig::value_of(nodes, aig.latches()[l].next);
+        if (!seen.insert(at[k]).second) continue;
+        ReachResult run = r;
+        run.depth = j;
+        run.inputs.resize(j + 1);
+        out.emplace_back(std::move(run), at[k]);
+      }
+      if (!any) break;
+    }
+    return out;
   }
 
   /// A violation of AG EF goal for some goal of `q`: a situation on a run the engine found
@@ -979,30 +1078,19 @@ class Run {
   /// re-checks its proof over the circuit started in the situation. Sets q.stuck, or
   /// q.stuck_why when none was found: whether the check holds is not decided this way.
   void find_stuck(Question& q, sat::Deadline deadline) {
-    std::vector<std::pair<std::uint32_t, std::size_t>> frames;  // (depth, answer)
-    for (std::size_t a = 0; a < answers_.size(); ++a)
-      if (answers_[a].kind == ReachResult::Kind::Reached &&
-          answers_[a].inputs.size() == answers_[a].depth + 1)
-        for (std::uint32_t j = 0; j <= answers_[a].depth; ++j) frames.emplace_back(j, a);
-    std::stable_sort(frames.begin(), frames.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
-    std::vector<std::pair<ReachResult, std::vector<bool>>> situations;
-    {
-      ReachResult start;  // the initial state, a run of no cycle
-      start.kind = ReachResult::Kind::Reached;
-      start.inputs.assign(1, std::vector<bool>(engine_aig().inputs().size(), false));
-      situations.emplace_back(start, latches_at(start, 0));
-    }
-    std::set<std::vector<bool>> seen{situations.front().second};
-    for (const auto& [depth, a] : frames) {
-      if (situations.size() >= kMaxStuckSituations) break;
-      ReachResult run = answers_[a];
-      run.depth = depth;
-      run.inputs.resize(depth + 1);
-      auto latches = latches_at(run, depth);
-      if (seen.insert(latches).second) situations.emplace_back(std::move(run), std::move(latches));
-    }
-    Aig from = engine_aig();  // the same circuit, started in the situation under test
+    const auto& situations = stuck_situations(deadline);
+    // The circuit itself, started in the situation under test, and its initial state put
+    // back after (a copy of a large circuit costs its size once more).
+    Aig& from = mutable_engine_aig();
+    std::vector<bool> initial;
+    for (const auto& l : from.latches()) initial.push_back(l.initial);
+    struct Restore {
+      Aig& aig;
+      const std::vector<bool>& values;
+      ~Restore() {
+        for (std::uint32_t l = 0; l < values.size(); ++l) aig.set_initial(l, values[l]);
+      }
+    } restore{from, initial};
     std::size_t tried = 0;
     for (const auto& [run, latches] : situations) {
       if (deadline.passed()) break;
@@ -1481,6 +1569,12 @@ class Run {
       r.message = q.trivial;
       return r;
     }
+    if (holds_at_once(q)) {
+      r.verdict = Verdict::Holds;
+      r.message = "from every reachable situation some transition can still fire";
+      r.certificate = certificates(q);
+      return r;
+    }
     if (!q.stuck) {
       r.verdict = Verdict::Unknown;
       r.message = q.stuck_why;
@@ -1620,6 +1714,7 @@ class Run {
   /// Re-checked invariants of the circuit (Houdini's, then each IC3 proof's): every later IC3
   /// run assumes them, from the initial state or from a reachable situation.
   std::vector<sat::LatchClause> known_;
+  std::optional<std::vector<std::pair<ReachResult, std::vector<bool>>>> situations_;
 };
 
 class SatModelChecker final : public ModelChecker {
