@@ -151,11 +151,9 @@ class Ic3 {
           r.kind = ReachResult::Kind::Unreachable;
           r.depth = static_cast<std::uint32_t>(k);  // the frames it took
           r.certificate.kind = Certificate::Kind::Invariant;
-          for (const auto& c : known_) {
-            LatchClause clause;
-            for (const auto& l : c) clause.push_back({l.latch, !l.value});
-            r.certificate.clauses.push_back(std::move(clause));
-          }
+          if (options_.known_invariant)  // assumed in every frame: part of the invariant
+            for (const auto& clause : *options_.known_invariant)
+              if (!clause.empty()) r.certificate.clauses.push_back(clause);
           for (std::size_t j = i + 1; j < blocked_.size(); ++j)
             for (const auto& c : blocked_[j]) {
               LatchClause clause;
@@ -353,7 +351,7 @@ class Ic3 {
   Ic3Options options_;
   Ic3Stats* stats_;
   std::vector<std::uint32_t> cone_;
-  std::vector<Cube> known_;  ///< Ic3Options::known_invariant over the cone, as blocked cubes
+  std::vector<Cube> known_;                 ///< Ic3Options::known_invariant, as blocked cubes
   std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
   FrameSolver lift_;

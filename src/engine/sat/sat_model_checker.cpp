@@ -121,9 +121,7 @@ struct Question {
   std::string trivial;  ///< Stuck without goals: why it holds (no step on a loop)
   struct Stuck {
     std::size_t goal = 0;
-    ReachResult run;  ///< to the situation
-    sat::Certificate proof;
-    std::vector<bool> latches;  ///< the situation (its circuit latches)
+    ReachResult run;            ///< to the situation
     bool no_successor = false;  ///< no allowed cycle from it at all
   };
   std::optional<Stuck> stuck;
@@ -238,6 +236,9 @@ class Run {
   /// The circuit observables and properties are read on.
   semantics::TransitionCircuit& circuit() {
     return grafcet_ ? static_cast<semantics::TransitionCircuit&>(*grafcet_) : *iec_;
+  }
+  const semantics::TransitionCircuit& circuit() const {
+    return grafcet_ ? static_cast<const semantics::TransitionCircuit&>(*grafcet_) : *iec_;
   }
   /// The circuit the engines unroll: the IEC scan cycle, or the Grafcet machine whose steps
   /// are micro-steps of the stable-situation relation.
@@ -510,7 +511,7 @@ class Run {
         break;
       }
       case StandardCheck::OutputConflicts:
-        grafcet_output_conflicts_question(q);
+        output_conflicts_question(q);
         q.some_stable = add_machine_target(m.at_stable());
         return q;
       default:
@@ -543,7 +544,7 @@ class Run {
   }
   /// The circuit's node values in frame `j` of run `r`.
   std::vector<bool> frame_values(const ReachResult& r, std::uint32_t j) const {
-    const Aig& aig = iec_->aig;
+    const Aig& aig = engine_aig();
     std::vector<bool> latches;
     for (const auto& l : aig.latches()) latches.push_back(l.initial);
     for (std::uint32_t k = 0; k < j; ++k) {
@@ -656,8 +657,12 @@ class Run {
       q.refusal = "not checked: needs the chart (no project given)";
       return;
     }
-    auto& aig = iec_->aig;
     q.shape = Question::Shape::Findings;
+    if (grafcet_) {
+      grafcet_output_conflicts(q);
+      return;
+    }
+    auto& aig = iec_->aig;
     q.trace_note = "in the last cycle both actions are active";
     const auto conflicts = logic::instance_write_conflicts(ts_, *task_.project);
     for (const auto& c : conflicts) {
@@ -681,13 +686,8 @@ class Run {
   /// Grafcet: a variable written by both continuous and stored actions, in a stable situation
   /// where its continuous assignation and its stored value disagree (the explicit engine's
   /// findings, standard_check_runner.hpp; docs/semantics.md 2.7).
-  void grafcet_output_conflicts_question(Question& q) {
-    if (!task_.project) {
-      q.refusal = "not checked: needs the chart (no project given)";
-      return;
-    }
+  void grafcet_output_conflicts(Question& q) {
     auto& aig = grafcet_->aig;
-    q.shape = Question::Shape::Findings;
     q.trace_note = "in the last situation the continuous assignation and the stored value disagree";
     const auto mixed = logic::grafcet_mixed_writers(ts_, *task_.project);
     for (const auto& m : mixed) {
@@ -767,20 +767,17 @@ class Run {
     // steps' mutual exclusions that hold (Houdini, houdini.hpp).
     known_ = sat::houdini(query, sat::step_exclusion_candidates(step_latch_groups(), kMaxStepPairs),
                           share_of_time_left(kHoudiniSeconds));
-    auto& known = known_;
     auto learn = [&](const sat::Certificate& c) {
       if (c.kind != sat::Certificate::Kind::Invariant) return;
-      known.insert(known.end(), c.clauses.begin(), c.clauses.end());
-      std::sort(known.begin(), known.end());
-      known.erase(std::unique(known.begin(), known.end()), known.end());
+      known_.insert(known_.end(), c.clauses.begin(), c.clauses.end());
+      std::sort(known_.begin(), known_.end());
+      known_.erase(std::unique(known_.begin(), known_.end()), known_.end());
     };
-    // A run IC3 found to `target` of `search` (over `aig`, the engine's circuit or a copy with
-    // more gates), with its inputs: IC3's own when they replay, else a shortest one by BMC up
-    // to its depth (which double-checks IC3's claim).
-    auto with_inputs = [&](ReachResult r, const Aig& aig, AigLit target) {
+    // A run IC3 found to `target` (of the engine's circuit), with its inputs: IC3's own when
+    // they replay, else a shortest one by BMC up to its depth (which double-checks IC3's claim).
+    auto with_inputs = [&](ReachResult r, AigLit target) {
       if (r.kind != ReachResult::Kind::Reached || r.inputs.size() == r.depth + 1) return r;
       sat::ReachQuery one = query;
-      one.aig = &aig;
       one.targets = {target};
       sat::BoundOptions b;
       b.max_depth = r.depth;
@@ -797,8 +794,8 @@ class Run {
       sat::Ic3Options io;
       io.deadline = deadline;
       io.on_frame = level_reporter("ic3");
-      io.known_invariant = &known;
-      auto r = with_inputs(sat::ic3(search, t, io), engine_aig(), targets_[t]);
+      io.known_invariant = &known_;
+      auto r = with_inputs(sat::ic3(search, t, io), targets_[t]);
       // At once: a later target that runs out of time must not cost this proof.
       recheck(t, r);
       if (!last && r.kind == ReachResult::Kind::Unknown && r.why.find("time") != std::string::npos)
@@ -812,26 +809,23 @@ class Run {
     // invariants), or a run that reaches some, which are then decided.
     auto ic3_group = [&](const sat::ReachQuery& search, const std::vector<std::size_t>& members,
                          sat::Deadline deadline) {
-      Aig& grouped = mutable_engine_aig();  // one gate more, read by this search only
       std::vector<AigLit> lits;
       for (auto t : members) lits.push_back(targets_[t]);
       AigLit any = Aig::kFalse;
-      try {
-        any = grouped.make_or(lits);
+      try {  // one gate more in the engine's circuit, read by this search only
+        any = mutable_engine_aig().make_or(lits);
       } catch (const LimitReached&) {
         return;  // the circuit's deadline or memory: each target alone, as before
       }
       sat::ReachQuery group_search = search;
-      group_search.aig = &grouped;
       group_search.targets = {any};
       sat::Ic3Options io;
       io.deadline = deadline;
       io.on_frame = level_reporter("ic3");
-      io.known_invariant = &known;
-      auto r = with_inputs(sat::ic3(group_search, 0, io), grouped, any);
+      io.known_invariant = &known_;
+      auto r = with_inputs(sat::ic3(group_search, 0, io), any);
       if (r.kind == ReachResult::Kind::Unreachable) {
         sat::ReachQuery group_query = query;
-        group_query.aig = &grouped;
         group_query.targets = {any};
         if (!sat::recheck(group_query, 0, r.certificate, deadline_).ok) return;  // each alone
         learn(r.certificate);
@@ -841,14 +835,7 @@ class Run {
         }
       } else if (r.kind == ReachResult::Kind::Reached) {
         // The run's last frame meets at least one of them.
-        std::vector<bool> latches;
-        for (const auto& l : grouped.latches()) latches.push_back(l.initial);
-        for (std::uint32_t j = 0; j < r.depth; ++j) {
-          const auto nodes = grouped.evaluate(r.inputs[j], latches);
-          for (std::size_t l = 0; l < latches.size(); ++l)
-            latches[l] = Aig::value_of(nodes, grouped.latches()[l].next);
-        }
-        const auto nodes = grouped.evaluate(r.inputs[r.depth], latches);
+        const auto nodes = frame_values(r, r.depth);
         bool met = false;
         for (auto t : members)
           if (Aig::value_of(nodes, targets_[t])) {
@@ -1117,7 +1104,7 @@ class Run {
         if (r.kind != ReachResult::Kind::Unreachable ||
             !sat::recheck(query, k, r.certificate, deadline).ok)
           continue;
-        q.stuck = Question::Stuck{k, run, r.certificate, latches, false};
+        q.stuck = Question::Stuck{k, run, false};
         q.stuck_certificate = sat::certificate_text(from, r.certificate);
         // No successor at all, or successors that fire nothing (global-deadlock's wording).
         sat::ReachQuery any_step{&from, step_ok_, {step_ok_}, true};
@@ -1139,19 +1126,18 @@ class Run {
   /// The latches of the steps' activity, one group per chart instance (the fields named
   /// "INSTANCE.STEP" with one prefix).
   std::vector<std::vector<std::uint32_t>> step_latch_groups() const {
-    const auto& circuit = machine_ ? static_cast<const semantics::TransitionCircuit&>(*grafcet_)
-                                   : static_cast<const semantics::TransitionCircuit&>(*iec_);
+    const auto& latches_of = circuit().field_latches;
     std::map<std::string, std::vector<std::uint32_t>> by_prefix;
     const auto& fields = ts_.layout().fields();
     for (std::size_t f = 0; f < fields.size(); ++f) {
       const auto kind = fields[f].kind;
       if ((kind != semantics::FieldKind::StepReady && kind != semantics::FieldKind::StepActive) ||
-          circuit.field_latches[f].size() != 1)
+          latches_of[f].size() != 1)
         continue;
       const auto& name = fields[f].name;
       const auto dot = name.rfind('.');
       by_prefix[dot == std::string::npos ? std::string() : name.substr(0, dot)].push_back(
-          circuit.field_latches[f][0]);
+          latches_of[f][0]);
     }
     std::vector<std::vector<std::uint32_t>> out;
     for (auto& [prefix, latches] : by_prefix)
