@@ -48,6 +48,7 @@
 #include "report/check_sarif.hpp"
 #include "report/shard_result.hpp"
 #include "report/trace_render.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::cli {
 
@@ -209,7 +210,8 @@ std::string sarif_root(const CheckOptions& o) {
 }
 
 /// Who ran what, when, on which files, with which engine and settings (report/provenance.hpp).
-report::Provenance check_provenance(const CheckOptions& o, const std::string& semantics) {
+report::Provenance check_provenance(const CheckOptions& o, const std::string& semantics,
+                                    const std::string& dialect) {
   auto p = run_provenance();
   p.inputs.push_back(report::digest_file(o.model));
   if (!o.spec.empty()) p.inputs.push_back(report::digest_file(o.spec));
@@ -224,6 +226,9 @@ report::Provenance check_provenance(const CheckOptions& o, const std::string& se
     s.emplace_back("time", o.system.time);
     if (o.system.time == "discrete") s.emplace_back("cycle", o.system.cycle);
     s.emplace_back("unwritten", o.system.unwritten);
+    s.emplace_back("dialect", dialect);
+    s.emplace_back("action_order",
+                   o.system.action_order.empty() ? "the dialect's default" : o.system.action_order);
   } else {
     s.emplace_back("input_changes", o.system.multi_input_change ? "multiple" : "single");
   }
@@ -384,7 +389,11 @@ int run_check_body(const CheckOptions& o, const RunGuard& guard, CheckMode mode)
   render.semantics = std::string(semantics::to_string(ts->kind()));
   render.cycle_ms = parse_cycle_ms(o.system.cycle);
   render.verbose = global_options().verbose;
-  render.provenance = stored ? stored->provenance : check_provenance(o, render.semantics);
+  render.provenance =
+      stored
+          ? stored->provenance
+          : check_provenance(o, render.semantics,
+                             std::string(semantics::to_string(chosen_dialect(project, o.system))));
   render.sarif_root = sarif_root(o);
   // Every requested file is written, even when another could not be. The files come before
   // standard output (`sfcv check ... | head` ends sfcv by SIGPIPE), and the verdicts are printed

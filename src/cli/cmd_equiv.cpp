@@ -45,6 +45,7 @@ struct EquivOptions {
   std::string time = "abstract";
   std::string cycle = "10ms";
   std::string unwritten = "free";
+  std::string dialect;  ///< empty: the two files' vendor
   std::uint32_t depth = 200;
   LimitOptions limits;
   bool json = false;
@@ -62,8 +63,26 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
+/// --dialect, else the vendor that wrote both files; two vendors must be told apart by hand.
+semantics::VendorDialect equiv_dialect(const EquivOptions& o, const model::Project& old_project,
+                                       const model::Project& new_project) {
+  if (!o.dialect.empty() && o.dialect != "auto") {
+    if (const auto d = semantics::parse_vendor_dialect(o.dialect)) return *d;
+    throw UsageError("bad --dialect '" + o.dialect +
+                     "' (expected iec, codesys, twincat, siemens or rockwell)");
+  }
+  const auto old_dialect = semantics::file_dialect(old_project);
+  const auto new_dialect = semantics::file_dialect(new_project);
+  if (old_dialect != new_dialect)
+    throw UsageError("sfcv equiv: OLD is in " + std::string(semantics::to_string(old_dialect)) +
+                     "'s dialect and NEW in " + std::string(semantics::to_string(new_dialect)) +
+                     "'s (docs/semantics.md 1.4a): say which one runs both with --dialect");
+  return old_dialect;
+}
+
 semantics::EquivalenceOptions library_options(const EquivOptions& o,
-                                              const std::vector<model::ExprPtr>& assumptions) {
+                                              const std::vector<model::ExprPtr>& assumptions,
+                                              semantics::VendorDialect dialect) {
   semantics::EquivalenceOptions e;
   for (const auto& m : o.map) {
     const auto eq = m.find('=');
@@ -80,6 +99,7 @@ semantics::EquivalenceOptions library_options(const EquivOptions& o,
   e.semantics.time = parse_time_mode(o.time);
   e.semantics.cycle_ms = parse_cycle_ms(o.cycle);
   e.semantics.unwritten = parse_unwritten(o.unwritten);
+  semantics::set_dialect(e.semantics, dialect);
   e.semantics.assumptions = assumptions;
   return e;
 }
@@ -161,7 +181,9 @@ int run_equiv(const EquivOptions& o, const RunGuard& guard) {
   const auto new_project =
       load_model_or_throw(o.new_model, parse_format(o.format), global_options().quiet, &budget);
   auto product = semantics::make_equivalence_product(
-      old_project, new_project, library_options(o, logic::assumption_exprs(assumptions.spec)));
+      old_project, new_project,
+      library_options(o, logic::assumption_exprs(assumptions.spec),
+                      equiv_dialect(o, old_project, new_project)));
 
   model::Diagnostics diags;
   auto options = product.options;
@@ -286,6 +308,10 @@ void add_equiv_command(CLI::App& app, CommandRunner& selected) {
   sub->add_option("--cycle", opts->cycle, "The scan cycle of --time discrete (default 10ms)");
   sub->add_option("--unwritten", opts->unwritten,
                   "free (default: shared inputs) or keep (docs/semantics.md 1.8)");
+  sub->add_option("--dialect", opts->dialect,
+                  "iec, codesys, twincat, siemens or rockwell: whose final calls and action order "
+                  "run both sides (default: the vendor that wrote both files; "
+                  "docs/semantics.md 1.4a)");
   sub->add_option("--depth", opts->depth, "bmc and kind: the deepest unrolling (default 200)");
   add_limit_options(*sub, opts->limits, "answers not decided by then become unknown");
   sub->add_flag("--json", opts->json, "JSON output (docs/equivalence.md)");

@@ -9,6 +9,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/run_guard.hpp"
+#include "cli/system_options.hpp"
 #include "report/project_summary.hpp"
 #include "report/text_encoding.hpp"
 #include "semantics/iec61131_system.hpp"
@@ -30,7 +31,7 @@ std::optional<std::vector<semantics::UnwrittenVariable>> unwritten(const model::
                                                                    const model::Budget& budget) {
   if (p.dialect == model::Dialect::Grafcet) return std::vector<semantics::UnwrittenVariable>{};
   model::Diagnostics ignored;  // `sfcv lint` reports them
-  semantics::Iec61131Options options;
+  auto options = default_iec_options(p);
   options.deadline = budget.deadline;
   const auto system = semantics::make_iec61131_system(p, options, ignored);
   if (!system) return std::nullopt;

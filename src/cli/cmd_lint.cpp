@@ -9,6 +9,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/load_model.hpp"
 #include "cli/run_guard.hpp"
+#include "cli/system_options.hpp"
 #include "report/project_summary.hpp"
 #include "report/text_encoding.hpp"
 #include "semantics/grafcet_system.hpp"
@@ -31,7 +32,7 @@ model::Diagnostics semantic_diagnostics(const model::Project& project,
                                         const model::Budget& budget) {
   model::Diagnostics out;
   semantics::GrafcetOptions grafcet;
-  semantics::Iec61131Options iec;
+  auto iec = default_iec_options(project);
   grafcet.deadline = iec.deadline = budget.deadline;
   if (project.dialect == model::Dialect::Grafcet)
     semantics::make_grafcet_system(project, grafcet, out);

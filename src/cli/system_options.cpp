@@ -29,7 +29,25 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
                  "inputs, any value each cycle) or keep (their initial values)");
   sub.add_option("--action-order", o.action_order,
                  "IEC actions within a cycle: declaration (default), alphabetical, unordered "
-                 "(actions writing a common variable in any order) or FILE of pairs 'A < B'");
+                 "(actions writing a common variable in any order) or FILE of pairs 'A < B' "
+                 "(default under --dialect codesys or twincat: the vendor's order)");
+  sub.add_option("--dialect", o.dialect,
+                 "IEC: whose reading of the final call of IEC actions and of the action order: "
+                 "iec, codesys, twincat, siemens or rockwell (default: the vendor that wrote "
+                 "the file)");
+}
+
+semantics::VendorDialect chosen_dialect(const model::Project& project, const SystemOptions& o) {
+  if (o.dialect.empty() || o.dialect == "auto") return semantics::file_dialect(project);
+  if (const auto d = semantics::parse_vendor_dialect(o.dialect)) return *d;
+  throw UsageError("bad --dialect '" + o.dialect +
+                   "' (expected iec, codesys, twincat, siemens or rockwell)");
+}
+
+semantics::Iec61131Options default_iec_options(const model::Project& project) {
+  semantics::Iec61131Options options;
+  semantics::set_dialect(options, semantics::file_dialect(project));
+  return options;
 }
 
 std::string chosen_semantics(const model::Project& project, const SystemOptions& o) {
@@ -49,10 +67,11 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
   if (built.semantics == "grafcet") {
     // An IEC option on a Grafcet would be silently ignored: say so instead.
     if (!o.pous.empty() || o.priority != "standard" || o.time != "abstract" || o.cycle != "10ms" ||
-        o.unwritten != "free" || (!o.action_order.empty() && o.action_order != "declaration"))
+        o.unwritten != "free" || (!o.action_order.empty() && o.action_order != "declaration") ||
+        !o.dialect.empty())
       throw InputError(command +
-                       ": --pou, --priority, --time, --cycle, --unwritten and --action-order "
-                       "apply to the IEC 61131-3 semantics only");
+                       ": --pou, --priority, --time, --cycle, --unwritten, --action-order and "
+                       "--dialect apply to the IEC 61131-3 semantics only");
     semantics::GrafcetOptions g;
     g.single_input_change = !o.multi_input_change;
     g.assumptions = assumptions;
@@ -68,6 +87,7 @@ BuiltSystem build_system(const model::Project& project, const SystemOptions& o,
     i.unwritten = parse_unwritten(o.unwritten);
     i.pous = o.pous;
     i.action_order = action_order;
+    semantics::set_dialect(i, chosen_dialect(project, o));
     if (!o.action_order.empty()) parse_action_order(o.action_order, i);
     i.assumptions = assumptions;
     if (budget) i.deadline = budget->deadline;

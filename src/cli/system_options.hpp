@@ -28,6 +28,8 @@ struct SystemOptions {
   /// declaration, alphabetical, unordered or a FILE of pairs (cli/action_order.hpp); empty:
   /// the subcommand's default
   std::string action_order;
+  /// iec, codesys, twincat, siemens or rockwell; empty: the vendor that wrote the file
+  std::string dialect;
 };
 
 /// Which semantics a subcommand offers: the circuit exports run IEC 61131-3 only.
@@ -39,6 +41,14 @@ void add_system_options(CLI::App& sub, SystemOptions& options,
 /// "grafcet" or "iec61131": --semantics, else the model's dialect. Bad values throw InputError.
 std::string chosen_semantics(const model::Project& project, const SystemOptions& options);
 
+/// --dialect, else the vendor that wrote the file (semantics::file_dialect). Bad values throw
+/// UsageError.
+semantics::VendorDialect chosen_dialect(const model::Project& project,
+                                        const SystemOptions& options);
+
+/// The file's dialect of IEC 61131-3 and the other options' defaults, for subcommands that have
+/// no --dialect (lint, info): the system `check` builds by default.
+semantics::Iec61131Options default_iec_options(const model::Project& project);
 struct BuiltSystem {
   semantics::TransitionSystemPtr system;
   std::string semantics;  ///< "grafcet" or "iec61131"

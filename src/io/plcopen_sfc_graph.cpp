@@ -21,11 +21,6 @@ namespace sfcv::io::plcopen {
 
 namespace {
 
-// CODESYS keeps a step's entry/active/exit actions in addData attributes with these GUIDs.
-constexpr const char* kCodesysActiveGuid = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
-constexpr const char* kCodesysEntryGuid = "a6b08bd8-b696-47e3-9cbf-7408b61c9ff8";
-constexpr const char* kCodesysExitGuid = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
-
 bool is_step(std::string_view k) {
   return k == "step" || k == "macroStep";
 }
@@ -537,6 +532,7 @@ class ChartBuilder {
           as.step = trim(n.attribute("name").value());
           as.action = action;
           as.qualifier = q;
+          as.step_action = true;
           as.where = ctx_.where(attr);
           pc_.pou.associations.push_back(std::move(as));
         }

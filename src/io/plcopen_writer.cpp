@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/plcopen_xml_dom.hpp"
 #include "io/st_names.hpp"
 #include "model/errors.hpp"
 #include "model/names.hpp"
@@ -398,12 +399,12 @@ class PouWriter {
       if (in_port[i]) connect(e, {in_port[i]});
       e.append_child("connectionPointOut");
       // Associations name a step, not one of several steps of that name: the first takes them.
-      std::vector<std::size_t> mine;
+      std::vector<std::size_t> mine, step_actions;
       if (by_name.at(model::to_upper(s.name)) == i)
         for (std::size_t k = 0; k < pou_.associations.size(); ++k) {
           const auto& a = pou_.associations[k];
           if (!model::iequals(a.chart, c.name) || !model::iequals(a.step, s.name)) continue;
-          mine.push_back(k);
+          (a.step_action ? step_actions : mine).push_back(k);
           printed_[k] = true;
         }
       if (s.kind == model::StepKind::MacroStep) {
@@ -413,6 +414,7 @@ class PouWriter {
         e.append_child("connectionPointOutAction").append_attribute("formalParameter") = "";
       }
       if (!mine.empty()) blocks.emplace_back(i, std::move(mine));
+      if (!step_actions.empty()) codesys_step_actions(e, s.name, step_actions);
     }
     for (std::size_t i : diverging) {
       auto e = sfc.append_child("selectionDivergence");
@@ -472,6 +474,32 @@ class PouWriter {
       position(e);
       connect(e, {step_id[step]});
       for (std::size_t k : associations) association(e, pou_.associations[k]);
+    }
+  }
+
+  // CODESYS's entry, main and exit actions (read as P1, N, P0) in the step's addData, where
+  // CODESYS writes them: an action block would make them IEC actions, which the vendor
+  // dialects run otherwise (docs/semantics.md 1.4a).
+  void codesys_step_actions(pugi::xml_node step, const std::string& name,
+                            const std::vector<std::size_t>& associations) {
+    auto attributes = step.append_child("addData").append_child("data");
+    attributes.append_attribute("name") = "http://www.3s-software.com/plcopenxml/sfc/element";
+    attributes.append_attribute("handleUnknown") = "implementation";
+    attributes = attributes.append_child("attributes");
+    std::set<model::Qualifier> roles;
+    for (std::size_t k : associations) {
+      const auto& a = pou_.associations[k];
+      const char* guid = a.qualifier == model::Qualifier::P1   ? plcopen::kCodesysEntryGuid
+                         : a.qualifier == model::Qualifier::N  ? plcopen::kCodesysActiveGuid
+                         : a.qualifier == model::Qualifier::P0 ? plcopen::kCodesysExitGuid
+                                                               : nullptr;
+      if (!guid || !roles.insert(a.qualifier).second)
+        cannot_write("step action '" + a.action + "' of step '" + name + "' (qualifier " +
+                     std::string(model::to_string(a.qualifier)) +
+                     "): a step has one entry (P1), one main (N) and one exit (P0) action");
+      auto attr = attributes.append_child("attribute");
+      attr.append_attribute("guid") = guid;
+      attr.text() = a.action.c_str();
     }
   }
 
@@ -541,6 +569,14 @@ std::string write_plcopen_xml(const model::Project& project) {
   auto pous = types.append_child("pous");
   for (const auto& pou : project.pous) PouWriter(pou).write(pous);
   root.append_child("instances").append_child("configurations");
+  // The vendor whose dialect the model is in (a CODESYS project's final calls): sfcv wrote the
+  // file, so its fileHeader no longer says (docs/formats.md).
+  if (const auto vendor = model::vendor_of(project); !vendor.empty()) {
+    auto data = root.append_child("addData").append_child("data");
+    data.append_attribute("name") = plcopen::kDialectData;
+    data.append_attribute("handleUnknown") = "discard";
+    data.append_child("dialect").append_attribute("vendor") = vendor.c_str();
+  }
   std::ostringstream out;
   doc.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
   return out.str();

@@ -241,19 +241,4 @@ std::optional<bool> parse_bool_literal(std::string_view text) {
   return std::nullopt;
 }
 
-std::string iec_final_call_warning(const std::vector<std::string>& actions) {
-  // CODESYS SFC help, "Processing order": "IEC actions are executed at least two times: the
-  // first time when the step is activated, the second time when the step is deactivated (but
-  // not until the next cycle)"; Beckhoff's TwinCAT 3 help says the same, and its P "precisely
-  // twice: once when the step becomes active and again in the subsequent cycle". Step actions
-  // (entry, main, exit) have no such call.
-  std::string list;
-  for (std::size_t i = 0; i < actions.size() && i < 3; ++i) list += (i ? ", " : "") + actions[i];
-  if (actions.size() > 3) list += " and " + std::to_string(actions.size() - 3) + " more";
-  return "CODESYS and TwinCAT run each IEC action once more in the cycle after it becomes "
-         "inactive (its final call); sfcv runs an action only while it is active "
-         "(docs/semantics.md 1.4), so the verdicts do not cover what the final calls of " +
-         list + " do";
-}
-
 }  // namespace sfcv::io::plcopen

@@ -22,6 +22,14 @@
 
 namespace sfcv::io::plcopen {
 
+/// CODESYS keeps a step's main (active), entry and exit actions in addData attributes with
+/// these GUIDs (read by plcopen_sfc_graph.cpp, written by plcopen_writer.cpp).
+inline constexpr const char* kCodesysActiveGuid = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
+inline constexpr const char* kCodesysEntryGuid = "a6b08bd8-b696-47e3-9cbf-7408b61c9ff8";
+inline constexpr const char* kCodesysExitGuid = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
+/// sfcv's project-level addData naming the vendor whose dialect an exported model is in.
+inline constexpr const char* kDialectData = "urn:sfcv:dialect";
+
 /// The element's name without its namespace prefix ("xhtml:p" -> "p").
 std::string_view local_name(pugi::xml_node node);
 
@@ -118,10 +126,5 @@ std::optional<bool> parse_bool_literal(std::string_view text);
 
 std::string trim(std::string_view s);
 bool attribute_true(pugi::xml_node node, const char* name);
-
-/// The warning for a CODESYS or TwinCAT file whose steps hold IEC actions (`actions`, "POU.A"):
-/// both vendors run every IEC action once more in the cycle after it becomes inactive (its
-/// final call), which sfcv's cycle does not (docs/semantics.md 1.4).
-std::string iec_final_call_warning(const std::vector<std::string>& actions);
 
 }  // namespace sfcv::io::plcopen

@@ -603,28 +603,6 @@ void read_pou(XmlContext& ctx, pugi::xml_node node, model::Project& project,
   project.pous.push_back(std::move(pou));
 }
 
-// The IEC actions (TC6 actionBlocks; CODESYS's step actions come in addData) of a file CODESYS
-// or TwinCAT wrote: the vendors give each a final call (plcopen::iec_final_call_warning).
-void warn_of_iec_final_calls(const model::Project& project, model::Diagnostics& diagnostics) {
-  const auto& format = project.source_format;
-  if (format.find("CODESYS") == std::string::npos && format.find("TwinCAT") == std::string::npos)
-    return;
-  std::vector<std::string> actions;
-  for (const auto& pou : project.pous)
-    for (const auto& as : pou.associations) {
-      const auto* a = pou.find_action(as.action);
-      if (as.where.element_path.find("/actionBlock") == std::string::npos ||
-          (a ? a->kind == model::ActionBodyKind::Variable
-             : pou.find_variable(as.action) != nullptr))
-        continue;
-      const auto name = pou.name + "." + as.action;
-      if (std::find(actions.begin(), actions.end(), name) == actions.end()) actions.push_back(name);
-    }
-  if (!actions.empty())
-    diagnostics.push_back(
-        {model::Severity::Warning, project.where, plcopen::iec_final_call_warning(actions)});
-}
-
 // What wrote the file, for `sfcv info`: the fileHeader's companyName, productName and
 // productVersion as written (" from CODESYS V3.5 SP14 Patch 1", " from Beckhoff Automation GmbH
 // TwinCAT PLC Control 3.5.8.40"); a version that repeats the product name stands for both.
@@ -681,6 +659,9 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
 
   std::vector<pugi::xml_node> pous = children(child(child(root, "types"), "pous"), "pou");
   find_addData_pous(child(root, "addData"), pous);
+  for (auto data : children(child(root, "addData"), "data"))
+    if (std::string_view(data.attribute("name").value()) == plcopen::kDialectData)
+      project.vendor = trim(child(data, "dialect").attribute("vendor").value());
   if (const auto loose = child(root, "pous"))
     // ESBMC's LD benchmarks (`.ld`) put <pous> straight under <project>; TC6 has them in
     // <types>. Read, they would be skipped and the file found empty.
@@ -763,7 +744,6 @@ LoadResult load_plcopen_xml(std::string_view text, const std::string& file,
     project.pous.push_back(std::move(list));
   }
   if (!model::has_errors(r.diagnostics)) model::lower_data_types(project, r.diagnostics);
-  warn_of_iec_final_calls(project, r.diagnostics);
   r.project = std::move(project);
   return r;
 }

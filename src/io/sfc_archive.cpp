@@ -210,7 +210,6 @@ class SfcArchiveReader {
     } else if (end.kind == Flow::Kind::Steps) {
       ctx_.error(root, "the chart's main sequence ends with a step, not a transition or jump");
     }
-    if (!iec_actions_.empty()) ctx_.warning(impl, plcopen::iec_final_call_warning(iec_actions_));
   }
 
  private:
@@ -315,6 +314,7 @@ class SfcArchiveReader {
       as.step = s.name;
       as.action = action;
       as.qualifier = q;
+      as.step_action = true;
       as.where = ctx_.where(a.node(*id));
       pc_.pou.associations.push_back(std::move(as));
     }
@@ -327,8 +327,9 @@ class SfcArchiveReader {
   }
 
   // The IEC action associations a step holds (CODESYS): an action or Boolean variable and its
-  // qualifier. P is refused: CODESYS documents it otherwise than IEC 61131-3 (issue 46); so are
-  // the timed qualifiers, whose duration is not read from the archive.
+  // qualifier. P is read, its vendor meaning coming from the final call (--dialect codesys,
+  // docs/semantics.md 1.4a); the timed qualifiers are refused, their duration not being read
+  // from the archive.
   void read_associations(pugi::xml_node step, const std::string& step_name) {
     for (auto x : f_.inner_list(step)) {
       const std::string where = " in step '" + step_name + "'";
@@ -354,11 +355,9 @@ class SfcArchiveReader {
         fail(at, "action '" + action + "'" + where + " has an unknown qualifier '" + text + "'");
         continue;
       }
-      if (*q == model::Qualifier::P || model::is_timed(*q)) {
-        fail(at,
-             "unsupported: qualifier " + text + " of action '" + action + "'" + where +
-                 (*q == model::Qualifier::P ? " (CODESYS documents P otherwise than IEC 61131-3)"
-                                            : " (its duration is not read from the archive)"));
+      if (model::is_timed(*q)) {
+        fail(at, "unsupported: qualifier " + text + " of action '" + action + "'" + where +
+                     " (its duration is not read from the archive)");
         continue;
       }
       model::ActionAssociation as;
@@ -368,11 +367,6 @@ class SfcArchiveReader {
       as.qualifier = *q;
       as.where = ctx_.where(x);
       pc_.pou.associations.push_back(std::move(as));
-      // An action object, not a Boolean variable of the POU, gets the vendor's final call.
-      const std::string name = pc_.pou.name + "." + action;
-      if (!pc_.pou.find_variable(action) &&
-          std::find(iec_actions_.begin(), iec_actions_.end(), name) == iec_actions_.end())
-        iec_actions_.push_back(name);
     }
   }
 
@@ -530,7 +524,6 @@ class SfcArchiveReader {
   std::string first_step_;
   int depth_ = 0;
   bool failed_ = false;
-  std::vector<std::string> iec_actions_;  ///< "POU.A" of the IEC action associations read
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "model/chart.hpp"
 
 #include <array>
+#include <cctype>
 
 #include "model/names.hpp"
 
@@ -74,6 +75,20 @@ const Chart* Pou::find_chart(std::string_view n) const {
 }
 int Pou::chart_index(std::string_view n) const {
   return index_of(charts, n);
+}
+
+std::string vendor_of(const Project& project) {
+  if (!project.vendor.empty()) {
+    std::string vendor = project.vendor;
+    for (auto& c : vendor) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return vendor;
+  }
+  const auto format = to_upper(project.source_format);
+  if (format.find("TWINCAT") != std::string::npos) return "twincat";
+  if (format.find("CODESYS") != std::string::npos) return "codesys";
+  if (format == "SIMATICML-GRAPH") return "siemens";
+  if (format == "ROCKWELL-L5X") return "rockwell";
+  return "";
 }
 
 const Pou* Project::find_pou(std::string_view n) const {

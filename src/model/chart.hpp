@@ -140,6 +140,10 @@ struct ActionAssociation {
   std::string duration_variable;            ///< timed qualifiers with a TIME variable
   std::string indicator;
   ExprPtr condition;  ///< Grafcet assignment condition of a continuous action; null = none
+  /// A CODESYS/TwinCAT step action (entry, main or exit, read as P1, N, P0), not an IEC action
+  /// block: the vendors give it no final call and run it before the IEC actions
+  /// (docs/semantics.md 1.4a).
+  bool step_action = false;
   SourceLocation where;
 };
 
@@ -232,10 +236,22 @@ struct Pou {
   int chart_index(std::string_view chart_name) const;  ///< -1 when absent
 };
 
+struct Project;
+
+/// The vendor whose dialect of IEC 61131-3 a project's file is in (docs/semantics.md 1.4a):
+/// Project::vendor, else "twincat" or "codesys" for their PLCopen exports (the fileHeader names
+/// the tool) and native files, "siemens" for S7-GRAPH blocks, "rockwell" for L5X files, and ""
+/// (plain IEC 61131-3) for anything else.
+std::string vendor_of(const Project& project);
+
 struct Project {
   std::string name;
   Dialect dialect = Dialect::Iec61131;
   std::string source_format;  ///< "plcopen-xml", "iec-text", "g7", "agrafe-xmi", ...
+  /// The vendor whose dialect the file is in when its format does not say (sfcv's PLCopen
+  /// export of a CODESYS project): "codesys", "twincat", ...; empty: from source_format
+  /// (model::vendor_of).
+  std::string vendor;
   std::vector<Pou> pous;
   /// User data types as read; after model::lower_data_types, kept for reference only.
   std::vector<DataType> data_types;

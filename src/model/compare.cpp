@@ -129,13 +129,15 @@ std::string describe(const ActionAssociation& x) {
   if (!x.duration_variable.empty()) s += ", " + x.duration_variable;
   if (!x.indicator.empty()) s += ", " + x.indicator;
   if (x.condition) s += " if " + to_st(x.condition);
+  if (x.step_action) s += ", step action";
   return s + ")";
 }
 
 bool same_association(const ActionAssociation& a, const ActionAssociation& b) {
   return iequals(a.action, b.action) && a.qualifier == b.qualifier &&
-         a.duration_ms == b.duration_ms && iequals(a.duration_variable, b.duration_variable) &&
-         iequals(a.indicator, b.indicator) && equal(a.condition, b.condition);
+         a.step_action == b.step_action && a.duration_ms == b.duration_ms &&
+         iequals(a.duration_variable, b.duration_variable) && iequals(a.indicator, b.indicator) &&
+         equal(a.condition, b.condition);
 }
 
 Diff compare_associations(const Pou& a, const Pou& b) {

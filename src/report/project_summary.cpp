@@ -147,6 +147,13 @@ ordered_json project_summary_json(
   j["model"] = file;
   j["format"] = p.source_format;
   j["dialect"] = p.dialect == model::Dialect::Grafcet ? "grafcet" : "iec61131";
+  // The vendor whose reading --dialect takes by default (docs/semantics.md 1.4a).
+  if (p.dialect == model::Dialect::Grafcet) {
+    j["vendor_dialect"] = nullptr;
+  } else {
+    const auto vendor = model::vendor_of(p);
+    j["vendor_dialect"] = vendor.empty() ? "iec" : vendor;
+  }
   j["steps"] = model::count_steps(p);
   j["transitions"] = model::count_transitions(p);
   auto pous = ordered_json::array();
@@ -178,8 +185,10 @@ void print_project_summary(const ordered_json& j, std::ostream& out, bool stoppe
       << ", "
       << (grafcet                     ? "Grafcet, IEC 60848"
           : j["steps"].get<int>() > 0 ? "SFC, IEC 61131-3"
-                                      : "IEC 61131-3")
-      << ")\n";
+                                      : "IEC 61131-3");
+  if (j["vendor_dialect"].is_string() && j["vendor_dialect"] != "iec")
+    out << ", read in " << j["vendor_dialect"].get<std::string>() << "'s dialect";
+  out << ")\n";
   out << "steps: " << j["steps"] << ", transitions: " << j["transitions"] << "\n";
   for (const auto& pou : j["pous"]) {
     out << "\n"

@@ -930,6 +930,9 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
       set_bool(f, stored, g);
     }
     const AigLit active = aig_.make_and(aig_.make_or(act, stored), aig_.make_not(reset));
+    if (a.final_call != kNone)
+      set_bool(static_cast<std::uint32_t>(a.final_call),
+               aig_.make_and(cur_truth(a.active), aig_.make_not(active)), g);
     set_bool(a.active, active, g);
     if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, g);
   }
@@ -995,6 +998,13 @@ void SymbolicMachine::cycle_pou(const Pou& pou, AigLit guard) {
     }
   }
   const AigLit run = aig_.make_and(guard, aig_.make_not(init));
+  // Machine::cycle_pou: the vendor dialects' final calls first.
+  for (auto a : pou.exec_order) {
+    const auto& act = p_.actions[a];
+    if (act.final_call != kNone)
+      exec_body(act.body,
+                aig_.make_and(run, cur_truth(static_cast<std::uint32_t>(act.final_call))));
+  }
   for (std::size_t i = 0; i < pou.exec_order.size(); ++i) {
     if (!pou.exec_group.empty() && pou.exec_group[i] != kNone) {
       run_slot(pou, i, run);

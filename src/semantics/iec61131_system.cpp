@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "model/names.hpp"
 #include "semantics/detail/iec_program.hpp"
 #include "semantics/detail/iec_system_impl.hpp"
 
@@ -225,6 +226,43 @@ bool Iec61131System::step_once(StateView state, const std::vector<std::int64_t>&
 }
 
 }  // namespace iec
+
+VendorDialect file_dialect(const model::Project& project) {
+  return parse_vendor_dialect(model::vendor_of(project)).value_or(VendorDialect::Iec);
+}
+
+std::string_view to_string(VendorDialect dialect) {
+  switch (dialect) {
+    case VendorDialect::Iec:
+      return "iec";
+    case VendorDialect::Codesys:
+      return "codesys";
+    case VendorDialect::Twincat:
+      return "twincat";
+    case VendorDialect::Siemens:
+      return "siemens";
+    case VendorDialect::Rockwell:
+      return "rockwell";
+  }
+  return "iec";
+}
+
+std::optional<VendorDialect> parse_vendor_dialect(std::string_view text) {
+  const auto up = model::to_upper(text);
+  for (auto d : {VendorDialect::Iec, VendorDialect::Codesys, VendorDialect::Twincat,
+                 VendorDialect::Siemens, VendorDialect::Rockwell})
+    if (model::to_upper(to_string(d)) == up) return d;
+  return std::nullopt;
+}
+
+void set_dialect(Iec61131Options& options, VendorDialect dialect) {
+  options.dialect = dialect;
+  const bool vendor = dialect == VendorDialect::Codesys || dialect == VendorDialect::Twincat;
+  if (vendor && options.action_order == ActionOrder::Declaration)
+    options.action_order = ActionOrder::Vendor;
+  else if (!vendor && options.action_order == ActionOrder::Vendor)
+    options.action_order = ActionOrder::Declaration;
+}
 
 TransitionSystemPtr make_iec61131_system(const model::Project& project,
                                          const Iec61131Options& options,

@@ -13,8 +13,10 @@
 // exclude and those that raise an Anomaly).
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "model/chart.hpp"
@@ -56,6 +58,19 @@ std::vector<UnwrittenVariable> unwritten_variables(const TransitionSystem& syste
 
 /// The one note that lists them (at most `shown` by name): empty when there are none.
 std::string unwritten_note(const std::vector<UnwrittenVariable>& list, std::size_t shown = 6);
+
+/// The dialect of the vendor whose tool wrote the project's file (model::vendor_of), Iec for
+/// any other tool's.
+VendorDialect file_dialect(const model::Project& project);
+
+/// "iec", "codesys", "twincat", "siemens", "rockwell".
+std::string_view to_string(VendorDialect dialect);
+/// The dialect of one of those names (any case); nullopt for anything else.
+std::optional<VendorDialect> parse_vendor_dialect(std::string_view text);
+
+/// Reads the IEC 61131-3 constructs as `dialect` does: sets options.dialect, and for CODESYS and
+/// TwinCAT the vendor's action order (ActionOrder::Vendor) in place of the declaration order.
+void set_dialect(Iec61131Options& options, VendorDialect dialect);
 
 /// Builds the scan-cycle semantics of the POUs `options.pous` of `project` (all run in one cycle,
 /// in the given order). With `options.pous` empty: the single POU with an SFC body (PROGRAMs

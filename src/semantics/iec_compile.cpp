@@ -25,6 +25,10 @@ void Compiler::error(const model::SourceLocation& where, std::string msg) {
   ok = false;
 }
 
+void Compiler::warning(const model::SourceLocation& where, std::string msg) {
+  diags.push_back({model::Severity::Warning, where, std::move(msg)});
+}
+
 void Compiler::poll_deadline() {
   if ((++polls & 1023U) != 0 || !p.options.deadline) return;
   if (std::chrono::steady_clock::now() > *p.options.deadline)
@@ -441,6 +445,7 @@ bool Compiler::run() {
   if (!ok) return false;
   structure();
   actions_and_transitions();
+  final_calls();
   finish_timers();
   timer_reads();
   orders();

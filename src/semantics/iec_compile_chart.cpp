@@ -10,6 +10,7 @@
 
 #include "model/names.hpp"
 #include "semantics/detail/iec_compiler.hpp"
+#include "semantics/iec61131_system.hpp"
 
 namespace sfcv::semantics::iec::detail {
 
@@ -172,6 +173,7 @@ void Compiler::actions_and_transitions() {
       ca.step = *step;
       ca.action = it->second;
       ca.q = as.qualifier;
+      ca.step_action = as.step_action;
       if (as.qualifier == Qualifier::DL) {
         error(as.where, "qualifier DL is not defined by IEC 61131-3 (use D, L, SD, DS or SL)");
         continue;
@@ -299,6 +301,96 @@ void Compiler::actions_and_transitions() {
   }
 }
 
+// CODESYS SFC help, "Processing order in SFC" (Beckhoff's TwinCAT 3 help, "Processing order in
+// SFC", the same): a cycle runs the exit actions of the steps, then their entry actions, then
+// the step (main) actions, each "from top to bottom, left to right", and then the IEC actions
+// "in alphabetical order". A step action's place is its first role's, by step.
+void Compiler::vendor_order(std::vector<std::uint32_t>& order) const {
+  auto key = [&](std::uint32_t a) {
+    int role = 3;  // an IEC action (or none associated: never active)
+    std::uint32_t step = 0;
+    for (auto x : p.actions[a].assocs) {
+      const auto& as = p.assocs[x];
+      if (!as.step_action) continue;
+      const int r = as.q == Qualifier::P0 ? 0 : as.q == Qualifier::P1 ? 1 : 2;
+      if (role == 3 || std::pair(r, as.step) < std::pair(role, step)) role = r, step = as.step;
+    }
+    return std::tuple(role, step, role == 3 ? model::to_upper(p.actions[a].name) : std::string());
+  };
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return key(a) < key(b); });
+}
+
+void Compiler::final_calls() {
+  const auto dialect = p.options.dialect;
+  const bool vendor = dialect == VendorDialect::Codesys || dialect == VendorDialect::Twincat;
+  const auto written_by = file_dialect(project);
+  std::vector<std::string> without;     // IEC actions whose final call is not run
+  const auto count = p.actions.size();  // twins are appended
+  for (std::size_t ai = 0; ai < count; ++ai) {
+    bool iec = false, step = false;
+    for (auto x : p.actions[ai].assocs) (p.assocs[x].step_action ? step : iec) = true;
+    // A Boolean variable action has no body: its variable is FALSE again either way.
+    if (!iec || p.actions[ai].kind == model::ActionBodyKind::Variable) continue;
+    if (!vendor) {
+      without.push_back(p.actions[ai].name);
+      continue;
+    }
+    // The vendor's help gives no final call of an action whose body is a chart: its chart is
+    // suspended (1.3), and the warning says that what such a call would do is not covered.
+    if (p.actions[ai].kind == model::ActionBodyKind::Chart) {
+      without.push_back(p.actions[ai].name);
+      continue;
+    }
+    if (step) step_action_twin(static_cast<std::uint32_t>(ai));
+    auto& a = p.actions[ai];
+    a.final_call = static_cast<std::int32_t>(
+        add_field(a.name + ".final", FieldKind::ActionStored, 0, 1, 0, true));
+  }
+  if (without.empty() ||
+      (!vendor && written_by != VendorDialect::Codesys && written_by != VendorDialect::Twincat))
+    return;
+  std::string list;
+  for (std::size_t i = 0; i < without.size() && i < 3; ++i) list += (i ? ", " : "") + without[i];
+  if (without.size() > 3) list += " and " + std::to_string(without.size() - 3) + " more";
+  const auto who = std::string(to_string(vendor ? dialect : written_by));
+  warning(project.where,
+          vendor ? who +
+                       " runs each IEC action once more in the cycle after it becomes "
+                       "inactive (its final call); sfcv does not model the final call of an "
+                       "action whose body is a chart (its chart is suspended, docs/semantics.md "
+                       "1.3 and 1.4a), so the verdicts do not cover what the final calls of " +
+                       list + " do"
+                 : who +
+                       " runs each IEC action once more in the cycle after it becomes "
+                       "inactive (its final call); --dialect " +
+                       std::string(to_string(dialect)) +
+                       " does not (docs/semantics.md 1.4a), so the verdicts do not cover what "
+                       "the final calls of " +
+                       list + " do");
+}
+
+void Compiler::step_action_twin(std::uint32_t ai) {
+  // CODESYS calls a step action in the step phase and an IEC action in the IEC phase, apart: an
+  // action in both roles is two actions of one body, the twin holding the step associations
+  // (no final call, the step actions' place in the order). It has no observable of its own.
+  Action twin;
+  twin.name = p.actions[ai].name + " (step action)";
+  twin.pou = p.actions[ai].pou;
+  twin.kind = p.actions[ai].kind;
+  twin.body = p.actions[ai].body;
+  twin.active = add_field(twin.name, FieldKind::ActionActive, 0, 1, 0, true);
+  const auto id = static_cast<std::uint32_t>(p.actions.size());
+  auto& a = p.actions[ai];
+  std::erase_if(a.assocs, [&](std::uint32_t x) {
+    if (!p.assocs[x].step_action) return false;
+    p.assocs[x].action = id;
+    twin.assocs.push_back(x);
+    return true;
+  });
+  scopes[twin.pou].actions[model::to_upper(twin.name)] = id;
+  p.actions.push_back(std::move(twin));
+}
+
 void Compiler::orders() {
   const auto& pairs = p.options.action_pairs;
   std::vector<std::uint32_t> pair_used(pairs.size(), 0);
@@ -312,6 +404,7 @@ void Compiler::orders() {
       std::stable_sort(cp.exec_order.begin(), cp.exec_order.end(), [&](auto a, auto b) {
         return model::to_upper(p.actions[a].name) < model::to_upper(p.actions[b].name);
       });
+    if (p.options.action_order == ActionOrder::Vendor) vendor_order(cp.exec_order);
     if (p.options.action_order == ActionOrder::Partial ||
         p.options.action_order == ActionOrder::Unordered)
       action_order(sc, pair_used);

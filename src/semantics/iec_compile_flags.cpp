@@ -71,6 +71,8 @@ void Compiler::sfc_flags() {
       if (a.pou != sc.index) continue;
       cp.chart_fields.push_back(a.active);
       if (a.stored != kNone) cp.chart_fields.push_back(static_cast<std::uint32_t>(a.stored));
+      if (a.final_call != kNone)
+        cp.chart_fields.push_back(static_cast<std::uint32_t>(a.final_call));
       if (a.variable != kNone) cp.chart_fields.push_back(static_cast<std::uint32_t>(a.variable));
       for (auto x : a.assocs) {
         const auto& as = p.assocs[x];

@@ -446,6 +446,7 @@ void Compiler::instance_commits() {
       if (a.pou != pi) continue;
       pou.commit.push_back(a.active);
       if (a.stored != kNone) pou.commit.push_back(static_cast<std::uint32_t>(a.stored));
+      if (a.final_call != kNone) pou.commit.push_back(static_cast<std::uint32_t>(a.final_call));
       for (auto x : a.assocs) {
         const auto& as = p.assocs[x];
         if (as.latch != kNone) pou.commit.push_back(static_cast<std::uint32_t>(as.latch));

@@ -118,6 +118,12 @@ void Machine::cycle_pou(const Pou& pou) {
   // SFCInit/SFCReset: the charts restart from their initial situation; under SFCInit they stay
   // there, running no action.
   if ((pou.sfc_init != kNone || pou.sfc_reset != kNone) && sfc_flags(pou)) return;
+  // The vendor dialects' first pass: the IEC actions that stopped being active run once more.
+  for (auto a : pou.exec_order) {
+    const auto& act = p_.actions[a];
+    if (act.final_call != kNone && cur_[static_cast<std::uint32_t>(act.final_call)])
+      exec_block(act.body);
+  }
   if (pou.order_groups.empty()) {
     for (auto a : pou.exec_order) {
       const auto& act = p_.actions[a];
@@ -299,6 +305,8 @@ void Machine::update_pou(const Pou& pou) {
       nxt_[f] = stored;
     }
     const bool active = (act || stored) && !reset;
+    if (a.final_call != kNone)
+      nxt_[static_cast<std::uint32_t>(a.final_call)] = cur_[a.active] && !active;
     nxt_[a.active] = active;
     if (a.variable != kNone) nxt_[static_cast<std::uint32_t>(a.variable)] = active;
   }

@@ -36,7 +36,14 @@ enum class UnwrittenMode {
 /// the user's pairs (Iec61131Options::action_pairs, declaration order between the rest);
 /// Unordered is the empty order. Under a partial order, actions that write a common variable
 /// and that the order leaves unordered run in any order consistent with it, each cycle.
-enum class ActionOrder { Declaration, Alphabetical, Partial, Unordered };
+/// Vendor is CODESYS's and TwinCAT's (docs/semantics.md 1.4a): step actions (exit, entry, main,
+/// by step), then the IEC actions alphabetically.
+enum class ActionOrder { Declaration, Alphabetical, Partial, Unordered, Vendor };
+
+/// Whose reading of the constructs where vendors differ from IEC 61131-3 (docs/semantics.md
+/// 1.4a). Codesys and Twincat give every IEC action a final call in the cycle after it stops
+/// being active; Iec, Siemens (S7-GRAPH) and Rockwell (SFCLastScan DontScan) give none.
+enum class VendorDialect { Iec, Codesys, Twincat, Siemens, Rockwell };
 
 /// One pair `before < after` of a user's action order (`--action-order FILE`), where it is
 /// written (errors name it). Names are an action's ("Fill") or its full name ("Main.Fill").
@@ -50,6 +57,7 @@ struct Iec61131Options {
   TimeMode time = TimeMode::Abstract;
   std::int64_t cycle_ms = 10;  ///< TimeMode::Discrete only
   ActionOrder action_order = ActionOrder::Declaration;
+  VendorDialect dialect = VendorDialect::Iec;
   std::vector<ActionPair> action_pairs;  ///< ActionOrder::Partial
   UnwrittenMode unwritten = UnwrittenMode::Free;
   /// POUs run one after the other in each cycle (a controller and plant models); empty = the

@@ -319,8 +319,17 @@ TEST(PlcopenWriter, DottedActionNamesBooleanActionsAndCodesysStepActions) {
   EXPECT_EQ(pou.find_action("x")->kind, model::ActionBodyKind::Variable);
   const std::string xml = plcopen_round_trip(p);
   EXPECT_NE(xml.find("<reference name=\"Motor.ACT_TurnClockwise\""), std::string::npos) << xml;
-  EXPECT_NE(xml.find("qualifier=\"P1\""), std::string::npos) << xml;
-  EXPECT_NE(xml.find("qualifier=\"P0\""), std::string::npos) << xml;
+  // The entry and exit actions go back where CODESYS writes them (not as IEC action blocks,
+  // which CODESYS's dialect would give a final call, docs/semantics.md 1.4a).
+  EXPECT_EQ(xml.find("qualifier=\"P1\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("guid=\"a6b08bd8-b696-47e3-9cbf-7408b61c9ff8\">S1_entry<"), std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("guid=\"a2621e18-7de3-4ea6-ae6d-89e9e0b7befd\">S1_exit<"), std::string::npos)
+      << xml;
+  const auto again = io::load_plcopen_xml(xml, "again.xml");
+  ASSERT_TRUE(again.ok());
+  for (const auto& as : again.project->pous.at(0).associations)
+    EXPECT_EQ(as.step_action, as.action == "S1_entry" || as.action == "S1_exit") << as.action;
 }
 
 TEST(PlcopenWriter, OutputIsAWellFormedTc6Document) {

@@ -216,6 +216,27 @@ TEST(Iec61131Circuit, AgreesOnSfcInitAndSfcReset) {
   }
 }
 
+// CODESYS's and TwinCAT's dialect (docs/semantics.md 1.4a): the final calls of the IEC actions
+// that write Y and count C, in a first pass, and the vendor's action order.
+TEST(Iec61131Circuit, AgreesUnderTheVendorsFinalCalls) {
+  bench::RandomChartFeatures features;
+  features.writing_actions = features.counter = true;
+  int final_calls = 0;
+  for (std::uint64_t seed = 80; seed <= 91; ++seed) {
+    SCOPED_TRACE("random chart seed " + std::to_string(seed));
+    features.timed_qualifiers = seed % 2 == 0;
+    features.sfc_flags = seed % 3 == 0;
+    Iec61131Options options;
+    set_dialect(options, seed % 2 ? VendorDialect::Codesys : VendorDialect::Twincat);
+    options.time = seed % 4 < 2 ? TimeMode::Abstract : TimeMode::Discrete;
+    auto ts = system_for(bench::random_chart_iec(10, 2, seed, features), options);
+    ASSERT_TRUE(ts);
+    for (const auto& f : ts->layout().fields()) final_calls += f.name.ends_with(".final");
+    expect_agreement(*ts, 3000, seed);
+  }
+  EXPECT_GE(final_calls, 24);  // every chart has Up, Clear and W0..W2
+}
+
 TEST(Iec61131Circuit, AgreesOnFamilies) {
   auto tanks = system_for(bench::tanks_iec(2, true));
   ASSERT_TRUE(tanks);

@@ -88,6 +88,7 @@ struct Compiler {
   std::uint32_t polls = 0;  // calls of poll_deadline()
 
   void error(const model::SourceLocation& where, std::string msg);
+  void warning(const model::SourceLocation& where, std::string msg);
   /// Once per step, transition or association compiled: past the run's deadline
   /// (Iec61131Options::deadline), throws LimitReached(Time).
   void poll_deadline();
@@ -354,6 +355,13 @@ struct Compiler {
   void actions_and_transitions();
 
   void orders();
+  /// The vendor dialect's final calls (Action::final_call), or under another dialect a warning
+  /// that a CODESYS/TwinCAT file's IEC actions lose theirs (docs/semantics.md 1.4a).
+  void final_calls();
+  /// Moves the step associations of IEC action `action` to a twin of it (same body).
+  void step_action_twin(std::uint32_t action);
+  /// ActionOrder::Vendor: step actions (exit, entry, main, by step), then IEC actions by name.
+  void vendor_order(std::vector<std::uint32_t>& order) const;
   /// A partial action order (ActionOrder::Partial, Unordered) on one POU: base exec_order and
   /// the groups whose order a pseudo-input chooses (iec_compile_order.cpp). `pair_used` marks
   /// the user's pairs this POU's actions name (1 both, 2 one).

@@ -225,6 +225,7 @@ struct Assoc {
   model::Qualifier q = model::Qualifier::N;
   std::int32_t timer = kNone;  ///< timed qualifiers
   std::int32_t latch = kNone;  ///< SD, SL: field
+  bool step_action = false;    ///< a CODESYS/TwinCAT entry, main or exit action's
 };
 
 struct Action {
@@ -234,6 +235,9 @@ struct Action {
   std::int32_t stored = kNone;  ///< field
   model::ActionBodyKind kind = model::ActionBodyKind::Statements;
   std::int32_t variable = kNone;  ///< field of the Boolean variable
+  /// VendorDialect Codesys/Twincat, an IEC action with a body: field "active in the last
+  /// configuration and not in this one", the cycle of its final call (docs/semantics.md 1.4a)
+  std::int32_t final_call = kNone;
   Block body;
   std::vector<std::uint32_t> assocs;
 };

@@ -1,0 +1,248 @@
+// The vendor dialects (docs/semantics.md 1.4a), each test written from the vendor's help:
+// - CODESYS SFC help, "Processing Order in SFC": "CODESYS executes IEC actions at least two
+//   times. The first time is when the step is activated, and the second time when the step is
+//   deactivated (but not until the next cycle)"; the cycle runs the exit actions, the entry
+//   actions, the step actions, then "the IEC actions in alphabetical order ... in two passes":
+//   first those deactivated in this cycle, then the active ones.
+// - CODESYS, "Qualifiers for Actions in SFC": P "executes the action exactly two times".
+// - Beckhoff TwinCAT 3 help, "Processing order in SFC": the same rules.
+
+#include "semantics/iec_builder.hpp"
+
+namespace sfcv::test {
+namespace {
+
+semantics::Iec61131Options dialect(semantics::VendorDialect d) {
+  semantics::Iec61131Options o;
+  semantics::set_dialect(o, d);
+  return o;
+}
+
+// S1 -a-> S2 -b-> S1; S2 runs Count (`n := n + 1`) with qualifier `q`.
+IecBuilder counting(const std::string& q) {
+  IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR VAR_OUTPUT n : INT (0..7); END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");
+  b.action_st("Count", "IF n < 7 THEN n := n + 1; END_IF;").assoc("S2", "Count", q);
+  return b;
+}
+
+TEST(Iec61131Dialect, AnIecActionRunsOnceMoreInTheCycleAfterItsStepIsLeft) {
+  for (auto d : {semantics::VendorDialect::Codesys, semantics::VendorDialect::Twincat}) {
+    SCOPED_TRACE(std::string(semantics::to_string(d)));
+    auto b = counting("N");
+    auto ts = b.build(dialect(d));
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle({{"a", 1}}));  // enters S2
+    EXPECT_EQ(r["n"], 0);
+    ASSERT_TRUE(r.cycle());  // Count runs
+    EXPECT_EQ(r["n"], 1);
+    ASSERT_TRUE(r.cycle({{"b", 1}}));  // Count runs, S2 is left
+    EXPECT_EQ(r["n"], 2);
+    EXPECT_EQ(r["S1"], 1);
+    ASSERT_TRUE(r.cycle());  // the final call, "not until the next cycle"
+    EXPECT_EQ(r["n"], 3);
+    ASSERT_TRUE(r.cycle());
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["n"], 3);
+  }
+  // IEC 61131-3 (and S7-GRAPH, Rockwell's SFCLastScan DontScan): no final call.
+  for (auto d : {semantics::VendorDialect::Iec, semantics::VendorDialect::Siemens,
+                 semantics::VendorDialect::Rockwell}) {
+    SCOPED_TRACE(std::string(semantics::to_string(d)));
+    auto b = counting("N");
+    auto ts = b.build(dialect(d));
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle({{"a", 1}}));
+    ASSERT_TRUE(r.cycle());
+    ASSERT_TRUE(r.cycle({{"b", 1}}));
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["n"], 2);
+  }
+}
+
+TEST(Iec61131Dialect, PRunsExactlyTwicePerEntry) {
+  // CODESYS: "exactly two times"; TwinCAT: "once when the step becomes active and again in the
+  // subsequent cycle". IEC 61131-3's P (read as P1): once.
+  for (auto [d, runs] : {std::pair{semantics::VendorDialect::Codesys, 2},
+                         std::pair{semantics::VendorDialect::Twincat, 2},
+                         std::pair{semantics::VendorDialect::Iec, 1}}) {
+    SCOPED_TRACE(std::string(semantics::to_string(d)));
+    auto b = counting("P");
+    auto ts = b.build(dialect(d));
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle({{"a", 1}}));
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["n"], 1);
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["n"], runs);
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(r.cycle());  // S2 still active
+    EXPECT_EQ(r["S2"], 1);
+    EXPECT_EQ(r["n"], runs);
+    // A second entry: twice again.
+    ASSERT_TRUE(r.cycle({{"b", 1}}));
+    ASSERT_TRUE(r.cycle({{"a", 1}}));
+    ASSERT_TRUE(r.cycle());
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["n"], 2 * runs);
+  }
+}
+
+TEST(Iec61131Dialect, FinalCallsRunBeforeTheActiveActions) {
+  // Alphabetically B runs before Z; Z's final call, in the first pass, still runs before B.
+  IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR VAR_OUTPUT y : INT (0..3); END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");
+  b.action_st("Z", "y := 1;").assoc("S1", "Z", "N");
+  b.action_st("B", "y := 2;").assoc("S2", "B", "N");
+  auto ts = b.build(dialect(semantics::VendorDialect::Codesys));
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["y"], 1);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));  // Z runs, S1 is left, S2 entered
+  EXPECT_EQ(r["y"], 1);
+  ASSERT_TRUE(r.cycle());  // Z's final call, then B
+  EXPECT_EQ(r["y"], 2);
+}
+
+TEST(Iec61131Dialect, StepActionsRunFirstThenIecActionsAlphabetically) {
+  // Declared Z, B, M: the declaration order ends with M (y = 3); CODESYS runs the step action M
+  // first, then B and Z (y = 1).
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT y : INT (0..3); END_VAR");
+  b.step("S1", true).trans("S1", "S1", "a");
+  b.action_st("Z", "y := 1;").assoc("S1", "Z", "N");
+  b.action_st("B", "y := 2;").assoc("S1", "B", "N");
+  b.action_st("M", "y := 3;").assoc("S1", "M", "N");
+  b.pou().associations.back().step_action = true;
+  {
+    auto ts = b.build();
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["y"], 3);
+  }
+  auto ts = b.build(dialect(semantics::VendorDialect::Twincat));
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["y"], 1);
+  // An explicit --action-order still wins over the vendor's.
+  auto o = dialect(semantics::VendorDialect::Twincat);
+  o.action_order = semantics::ActionOrder::Declaration;
+  auto declared = b.build(o);
+  Runner rd(*declared);
+  ASSERT_TRUE(rd.cycle());
+  EXPECT_EQ(rd["y"], 3);
+}
+
+TEST(Iec61131Dialect, ExitEntryAndMainStepActionsRunInThatOrder) {
+  // S1's exit action X, S2's entry E and main M all run in the cycle after S1 -> S2 fires.
+  IecBuilder b("VAR_INPUT a : BOOL; END_VAR VAR_OUTPUT y : INT (0..7); END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "FALSE");
+  b.action_st("M", "y := y * 2;").assoc("S2", "M", "N");
+  b.pou().associations.back().step_action = true;
+  b.action_st("E", "y := y + 1;").assoc("S2", "E", "P1");
+  b.pou().associations.back().step_action = true;
+  b.action_st("X", "y := 2;").assoc("S1", "X", "P0");
+  b.pou().associations.back().step_action = true;
+  auto ts = b.build(dialect(semantics::VendorDialect::Codesys));
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["y"], 6);  // (2 + 1) * 2; declaration order M, E, X would give 2
+}
+
+TEST(Iec61131Dialect, StepActionsAndBooleanActionsHaveNoFinalCall) {
+  IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR VAR_OUTPUT n : INT (0..7); v : BOOL; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");
+  b.action_st("Count", "IF n < 7 THEN n := n + 1; END_IF;").assoc("S2", "Count", "N");
+  b.pou().associations.back().step_action = true;  // S2's main action
+  b.action_var("V", "v").assoc("S2", "V", "N");
+  auto ts = b.build(dialect(semantics::VendorDialect::Codesys));
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"a", 1}}));
+  EXPECT_EQ(r["v"], 1);
+  ASSERT_TRUE(r.cycle({{"b", 1}}));
+  EXPECT_EQ(r["n"], 1);
+  EXPECT_EQ(r["v"], 0);
+  ASSERT_TRUE(r.cycle());
+  EXPECT_EQ(r["n"], 1);
+  EXPECT_EQ(r["v"], 0);
+}
+
+TEST(Iec61131Dialect, AnActionInBothRolesRunsInEach) {
+  // TwinCAT's xPPU (corpus 11) uses Motor.ACT_Stop as one step's main action and another's IEC
+  // action: the step phase and the IEC phase each call it, so in a cycle with S1's main call
+  // and S2's final call it runs twice; IEC 61131-3 has one action, run once per cycle.
+  for (auto [d, n] : {std::pair{semantics::VendorDialect::Codesys, 6},
+                      std::pair{semantics::VendorDialect::Iec, 5}}) {
+    SCOPED_TRACE(std::string(semantics::to_string(d)));
+    auto b = counting("N");
+    b.assoc("S1", "Count", "N");
+    b.pou().associations.back().step_action = true;
+    auto ts = b.build(dialect(d));
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle());            // S1's main call
+    ASSERT_TRUE(r.cycle({{"a", 1}}));  // again; S2 entered
+    ASSERT_TRUE(r.cycle());            // the IEC action
+    ASSERT_TRUE(r.cycle({{"b", 1}}));  // again; S1 entered
+    EXPECT_EQ(r["n"], 4);
+    ASSERT_TRUE(r.cycle());  // vendor: the final call, then S1's main call
+    EXPECT_EQ(r["n"], n);
+  }
+}
+
+TEST(Iec61131Dialect, TheFinalCallOfAChartActionIsSaidToBeLeftOut) {
+  IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR");
+  b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");
+  b.assoc("S2", "Sub", "N");
+  b.chart("sub", "Sub");
+  b.step("U0", true);
+  model::Diagnostics d;
+  ASSERT_TRUE(
+      semantics::make_iec61131_system(b.project, dialect(semantics::VendorDialect::Twincat), d));
+  std::string all;
+  for (const auto& x : d) all += x.str() + "\n";
+  EXPECT_NE(all.find("sfcv does not model the final call of an action whose body is a chart"),
+            std::string::npos)
+      << all;
+  EXPECT_NE(all.find("the final calls of MAIN.Sub do"), std::string::npos) << all;
+}
+
+TEST(Iec61131Dialect, TheFileSaysWhoseDialectItIs) {
+  model::Project p;
+  const std::pair<const char*, semantics::VendorDialect> formats[] = {
+      {"plcopen-xml from 3S-Smart Software Solutions GmbH CODESYS V3.5 SP16",
+       semantics::VendorDialect::Codesys},
+      {"plcopen-xml from Beckhoff Automation GmbH TwinCAT PLC Control 3.5.8.40",
+       semantics::VendorDialect::Twincat},
+      {"codesys-export", semantics::VendorDialect::Codesys},
+      {"twincat", semantics::VendorDialect::Twincat},
+      {"simaticml-graph", semantics::VendorDialect::Siemens},
+      {"rockwell-l5x", semantics::VendorDialect::Rockwell},
+      {"plcopen-xml from Beremiz", semantics::VendorDialect::Iec},
+      {"iec-text", semantics::VendorDialect::Iec}};
+  for (const auto& [format, expected] : formats) {
+    p.source_format = format;
+    EXPECT_EQ(semantics::file_dialect(p), expected) << format;
+  }
+  p.vendor = "TwinCAT";  // sfcv's own export of a TwinCAT project says so in its addData
+  EXPECT_EQ(semantics::file_dialect(p), semantics::VendorDialect::Twincat);
+  EXPECT_EQ(semantics::parse_vendor_dialect("Rockwell"), semantics::VendorDialect::Rockwell);
+  EXPECT_FALSE(semantics::parse_vendor_dialect("beremiz"));
+}
+
+TEST(Iec61131Dialect, IecOnAVendorsFileSaysWhichFinalCallsItLeavesOut) {
+  auto b = counting("N");
+  b.project.source_format = "plcopen-xml from CODESYS V3.5 SP14";
+  model::Diagnostics d;
+  ASSERT_TRUE(
+      semantics::make_iec61131_system(b.project, dialect(semantics::VendorDialect::Iec), d));
+  std::string all;
+  for (const auto& x : d) all += x.str() + "\n";
+  EXPECT_NE(all.find("codesys runs each IEC action once more"), std::string::npos) << all;
+  EXPECT_NE(all.find("the final calls of MAIN.Count do"), std::string::npos) << all;
+  d.clear();
+  ASSERT_TRUE(
+      semantics::make_iec61131_system(b.project, dialect(semantics::VendorDialect::Codesys), d));
+  for (const auto& x : d) EXPECT_NE(x.severity, model::Severity::Warning) << x.str();
+}
+
+}  // namespace
+}  // namespace sfcv::test
