@@ -933,8 +933,12 @@ void SymbolicMachine::update_pou(const Pou& pou, AigLit guard) {
     if (a.final_call != kNone)
       set_bool(static_cast<std::uint32_t>(a.final_call),
                aig_.make_and(cur_truth(a.active), aig_.make_not(active)), g);
+    // Machine::update_pou: under the vendor dialects only an active or deactivated action writes.
+    if (a.variable != kNone)
+      set_bool(static_cast<std::uint32_t>(a.variable), active,
+               p_.vendor_final_calls() ? aig_.make_and(g, aig_.make_or(active, cur_truth(a.active)))
+                                       : g);
     set_bool(a.active, active, g);
-    if (a.variable != kNone) set_bool(static_cast<std::uint32_t>(a.variable), active, g);
   }
   step_times(pou, g);
 }

@@ -307,8 +307,11 @@ void Machine::update_pou(const Pou& pou) {
     const bool active = (act || stored) && !reset;
     if (a.final_call != kNone)
       nxt_[static_cast<std::uint32_t>(a.final_call)] = cur_[a.active] && !active;
+    // The vendors write a Boolean action's variable when it runs (TRUE) and at its final call
+    // (FALSE) only: an action that stays inactive leaves it to other writers (1.4a).
+    if (a.variable != kNone && (!p_.vendor_final_calls() || active || cur_[a.active]))
+      nxt_[static_cast<std::uint32_t>(a.variable)] = active;
     nxt_[a.active] = active;
-    if (a.variable != kNone) nxt_[static_cast<std::uint32_t>(a.variable)] = active;
   }
   // Step .T: restarts on entry, advances while the step stays active, frozen while suspended.
   for (auto c : pou.charts)

@@ -188,6 +188,30 @@ TEST(Iec61131Dialect, AnActionInBothRolesRunsInEach) {
   }
 }
 
+TEST(Iec61131Dialect, ABooleanActionWritesItsVariableOnlyWhenItRunsOrStops) {
+  // CODESYS: the variable "is toggled between FALSE and TRUE each time the action is executed";
+  // IEC 61131-3: it is the action's activity, written every cycle. B writes v in S1, where the
+  // Boolean action V is inactive: under IEC, V's FALSE wins; under CODESYS, V does not run.
+  for (auto [d, in_s1] : {std::pair{semantics::VendorDialect::Codesys, 1},
+                          std::pair{semantics::VendorDialect::Iec, 0}}) {
+    SCOPED_TRACE(std::string(semantics::to_string(d)));
+    IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR VAR_OUTPUT v : BOOL; END_VAR");
+    b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");
+    b.action_var("V", "v").assoc("S2", "V", "N");
+    b.action_st("B", "v := TRUE;").assoc("S1", "B", "N");
+    auto ts = b.build(dialect(d));
+    Runner r(*ts);
+    ASSERT_TRUE(r.cycle());
+    EXPECT_EQ(r["v"], in_s1);
+    ASSERT_TRUE(r.cycle({{"a", 1}}));  // B runs, S2 entered: V runs
+    EXPECT_EQ(r["v"], 1);
+    ASSERT_TRUE(r.cycle({{"b", 1}}));  // V stops: FALSE in both
+    EXPECT_EQ(r["v"], 0);
+    ASSERT_TRUE(r.cycle());  // B runs again
+    EXPECT_EQ(r["v"], in_s1);
+  }
+}
+
 TEST(Iec61131Dialect, TheFinalCallOfAChartActionIsSaidToBeLeftOut) {
   IecBuilder b("VAR_INPUT a, b : BOOL; END_VAR");
   b.step("S1", true).step("S2").trans("S1", "S2", "a").trans("S2", "S1", "b");

@@ -289,6 +289,11 @@ struct ObservableRef {
 
 struct Program {
   Iec61131Options options;
+  /// CODESYS's or TwinCAT's dialect (docs/semantics.md 1.4a): final calls, and a Boolean action
+  /// writes its variable only while it runs and when it stops.
+  bool vendor_final_calls() const {
+    return options.dialect == VendorDialect::Codesys || options.dialect == VendorDialect::Twincat;
+  }
   StateLayout layout;
   std::vector<std::int64_t> initial;  ///< per field
   std::vector<InputVariable> inputs;
