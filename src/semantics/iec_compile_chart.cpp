@@ -344,7 +344,7 @@ void Compiler::final_calls() {
     if (step) step_action_twin(static_cast<std::uint32_t>(ai));
     auto& a = p.actions[ai];
     a.final_call = static_cast<std::int32_t>(
-        add_field(a.name + ".final", FieldKind::ActionStored, 0, 1, 0, true));
+        add_field(a.name + ".final", FieldKind::ActionFinalCall, 0, 1, 0, true));
   }
   if (without.empty() ||
       (!vendor && written_by != VendorDialect::Codesys && written_by != VendorDialect::Twincat))

@@ -14,14 +14,15 @@ using StateView = std::span<const StateWord>;
 using MutableStateView = std::span<StateWord>;
 
 enum class FieldKind {
-  StepReady,     ///< IEC: the step is ready (active, or history of a suspended nested chart)
-  StepActive,    ///< Grafcet: the step is active (IEC step activity is derived, never stored)
-  ActionActive,  ///< IEC: the action is active
-  ActionStored,  ///< IEC: the action is stored (S without R yet)
-  Variable,      ///< a Boolean or bounded-integer program variable (outputs, locals)
-  InputMemory,   ///< the previous value of an input, kept for edges / the single-change rule
-  Timer,         ///< a timer's phase or cycle counter
-  FbState,       ///< other standard-FB memory (R_TRIG memory, counters, SR/RS latch)
+  StepReady,        ///< IEC: the step is ready (active, or history of a suspended nested chart)
+  StepActive,       ///< Grafcet: the step is active (IEC step activity is derived, never stored)
+  ActionActive,     ///< IEC: the action is active
+  ActionStored,     ///< IEC: the action is stored (S without R yet)
+  ActionFinalCall,  ///< IEC, CODESYS/TwinCAT dialect: the action stopped; its final call is due
+  Variable,         ///< a Boolean or bounded-integer program variable (outputs, locals)
+  InputMemory,      ///< the previous value of an input, kept for edges / the single-change rule
+  Timer,            ///< a timer's phase or cycle counter
+  FbState,          ///< other standard-FB memory (R_TRIG memory, counters, SR/RS latch)
 };
 
 struct StateField {

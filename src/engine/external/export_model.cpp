@@ -28,6 +28,8 @@ std::string field_comment(const semantics::StateField& f) {
       return "action " + f.name + " active";
     case FieldKind::ActionStored:
       return "action " + f.name + " stored (S without R yet)";
+    case FieldKind::ActionFinalCall:
+      return "action " + f.name + " stopped: its final call is due (--dialect codesys|twincat)";
     case FieldKind::Variable:
       return "variable " + f.name;
     case FieldKind::InputMemory:
