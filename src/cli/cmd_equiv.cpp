@@ -18,6 +18,7 @@
 #include "cli/output_file.hpp"
 #include "cli/run_guard.hpp"
 #include "cli/run_limits.hpp"
+#include "cli/system_options.hpp"
 #include "engine/portfolio/engine_by_name.hpp"
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "logic/check_inputs.hpp"
@@ -66,11 +67,7 @@ std::vector<std::string> split_list(const std::string& text) {
 /// --dialect, else the vendor that wrote both files; two vendors must be told apart by hand.
 semantics::VendorDialect equiv_dialect(const EquivOptions& o, const model::Project& old_project,
                                        const model::Project& new_project) {
-  if (!o.dialect.empty() && o.dialect != "auto") {
-    if (const auto d = semantics::parse_vendor_dialect(o.dialect)) return *d;
-    throw UsageError("bad --dialect '" + o.dialect +
-                     "' (expected iec, codesys, twincat, siemens or rockwell)");
-  }
+  if (const auto d = given_dialect(o.dialect)) return *d;
   const auto old_dialect = semantics::file_dialect(old_project);
   const auto new_dialect = semantics::file_dialect(new_project);
   if (old_dialect != new_dialect)

@@ -37,11 +37,15 @@ void add_system_options(CLI::App& sub, SystemOptions& o, SemanticsChoice choice)
                  "the file)");
 }
 
-semantics::VendorDialect chosen_dialect(const model::Project& project, const SystemOptions& o) {
-  if (o.dialect.empty() || o.dialect == "auto") return semantics::file_dialect(project);
-  if (const auto d = semantics::parse_vendor_dialect(o.dialect)) return *d;
-  throw UsageError("bad --dialect '" + o.dialect +
+std::optional<semantics::VendorDialect> given_dialect(const std::string& text) {
+  if (text.empty() || text == "auto") return std::nullopt;
+  if (const auto d = semantics::parse_vendor_dialect(text)) return *d;
+  throw UsageError("bad --dialect '" + text +
                    "' (expected iec, codesys, twincat, siemens or rockwell)");
+}
+
+semantics::VendorDialect chosen_dialect(const model::Project& project, const SystemOptions& o) {
+  return given_dialect(o.dialect).value_or(semantics::file_dialect(project));
 }
 
 semantics::Iec61131Options default_iec_options(const model::Project& project) {

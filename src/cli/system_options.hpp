@@ -6,6 +6,7 @@
 // flags.
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ void add_system_options(CLI::App& sub, SystemOptions& options,
 
 /// "grafcet" or "iec61131": --semantics, else the model's dialect. Bad values throw InputError.
 std::string chosen_semantics(const model::Project& project, const SystemOptions& options);
+
+/// The value of a --dialect option: nullopt when empty or "auto"; a bad value throws UsageError.
+std::optional<semantics::VendorDialect> given_dialect(const std::string& text);
 
 /// --dialect, else the vendor that wrote the file (semantics::file_dialect). Bad values throw
 /// UsageError.

@@ -353,20 +353,17 @@ void Compiler::final_calls() {
   for (std::size_t i = 0; i < without.size() && i < 3; ++i) list += (i ? ", " : "") + without[i];
   if (without.size() > 3) list += " and " + std::to_string(without.size() - 3) + " more";
   const auto who = std::string(to_string(vendor ? dialect : written_by));
-  warning(project.where,
-          vendor ? who +
-                       " runs each IEC action once more in the cycle after it becomes "
-                       "inactive (its final call); sfcv does not model the final call of an "
-                       "action whose body is a chart (its chart is suspended, docs/semantics.md "
-                       "1.3 and 1.4a), so the verdicts do not cover what the final calls of " +
-                       list + " do"
-                 : who +
-                       " runs each IEC action once more in the cycle after it becomes "
-                       "inactive (its final call); --dialect " +
-                       std::string(to_string(dialect)) +
-                       " does not (docs/semantics.md 1.4a), so the verdicts do not cover what "
-                       "the final calls of " +
-                       list + " do");
+  const std::string unmodelled =
+      vendor
+          ? "sfcv does not model the final call of an action whose body is a chart (its "
+            "chart is suspended, docs/semantics.md 1.3 and 1.4a)"
+          : "--dialect " + std::string(to_string(dialect)) + " does not (docs/semantics.md 1.4a)";
+  warning(project.where, who +
+                             " runs each IEC action once more in the cycle after it becomes "
+                             "inactive (its final call); " +
+                             unmodelled +
+                             ", so the verdicts do not cover what the final calls of " + list +
+                             " do");
 }
 
 void Compiler::step_action_twin(std::uint32_t ai) {
