@@ -1,4 +1,5 @@
-// Siemens TIA Portal SimaticML exports (TIA Portal Openness): S7-GRAPH function blocks.
+// Siemens TIA Portal SimaticML exports (TIA Portal Openness): S7-GRAPH function blocks and LAD
+// blocks.
 //
 // A `<SW.Blocks.FB>` whose ProgrammingLanguage is GRAPH holds, in its compile unit's
 // `NetworkSource`, a `<Graph>` (namespace .../NetworkSource/Graph[/vN], matched on local names):
@@ -9,6 +10,10 @@
 // docs/semantics.md 1.13). What S7-GRAPH gives a meaning IEC 61131-3 SFC has not (supervisions,
 // interlocks, permanent instructions, event actions, interlocked qualifiers, skip mode, step
 // supervision times) is refused with the element path unless it is provably empty.
+//
+// A LAD block (FB, FC or OB) is a PROGRAM whose body is its networks, each read by LadNetwork
+// as the statements of its coils and timer boxes (docs/semantics.md 1.13a); LAD permanent
+// instructions before a GRAPH sequencer are read the same way into its POU's body.
 
 #include <algorithm>
 #include <cctype>
@@ -101,6 +106,11 @@ class LadNetwork {
   /// network). Null on error.
   model::ExprPtr read(bool& empty);
 
+  /// A network of a LAD block as statements appended to `out` (docs/semantics.md 1.13a): each
+  /// coil (Coil, SCoil, RCoil) and timer box (TON, TOF, TP) in the order the power flow
+  /// reaches them. False on error.
+  bool statements(model::StmtList& out);
+
  private:
   struct Source {
     enum class Kind { Rail, Pin, Ident } kind = Kind::Rail;
@@ -108,6 +118,10 @@ class LadNetwork {
     pugi::xml_node node;
   };
   bool read_wires();
+  bool output_pin(const std::string& uid, const std::string& pin) const;
+  bool is_timer(const std::string& uid) const;
+  void emit(model::StmtPtr stmt, pugi::xml_node at);
+  model::ExprPtr timer_box(const std::string& uid, pugi::xml_node p);
   model::ExprPtr power(const std::string& uid, pugi::xml_node at);
   model::ExprPtr input(const std::string& uid, const std::string& pin, pugi::xml_node part,
                        bool required = true);
@@ -123,8 +137,14 @@ class LadNetwork {
   pugi::xml_node net_;
   std::string coil_, what_;
   std::map<std::string, pugi::xml_node> parts_, access_;
+  std::vector<std::string> part_order_;  ///< UIds in document order
   std::map<std::pair<std::string, std::string>, Source> inputs_;
   std::set<std::string> visiting_, visited_;
+  // Statements mode: what the network emits, the timer boxes already called (UId -> instance)
+  // and the variables its coils wrote so far.
+  model::StmtList* out_ = nullptr;
+  std::map<std::string, std::string> called_;
+  std::vector<std::string> written_;
   bool ok_ = true;
 };
 
@@ -134,11 +154,14 @@ class GraphBlockReader {
 
   void read(pugi::xml_node fb);
 
+  const model::Pou& pou() const { return pou_; }
+
   /// The variable an `Access` element names, with `type` the type its use needs (null: any).
   model::ExprPtr access(pugi::xml_node a, const model::Type* type, const std::string& what);
 
  private:
   void interface(pugi::xml_node block);
+  void ladder(pugi::xml_node block);
   void member(pugi::xml_node m, model::VarDirection dir, const std::string& section);
   void graph(pugi::xml_node g);
   void operations(pugi::xml_node ops, const char* when);
@@ -158,6 +181,7 @@ class GraphBlockReader {
   XmlContext& ctx_;
   model::Project& project_;
   model::Pou pou_;
+  bool lad_ = false;  ///< a LAD block (its networks are its body), not a GRAPH block
   model::Chart chart_;
   Scope scope_;
   std::map<std::string, pugi::xml_node> step_nodes_;  ///< step number -> element
@@ -186,6 +210,7 @@ bool LadNetwork::read_wires() {
       access_[uid] = p;
     } else if (k == "Part") {
       parts_[uid] = p;
+      part_order_.push_back(uid);
     } else {
       fail(p, "<" + std::string(k) + "> (calls and other elements are not read)");
     }
@@ -202,13 +227,22 @@ bool LadNetwork::read_wires() {
         sources.push_back({Source::Kind::Ident, attr(c, "UId"), {}, c});
       } else if (k == "NameCon") {
         const std::string pin = attr(c, "Name");
-        if (pin.rfind("out", 0) == 0 || pin == "eno")
+        if (output_pin(attr(c, "UId"), pin))
           sources.push_back({Source::Kind::Pin, attr(c, "UId"), pin, c});
         else
           targets.emplace_back(attr(c, "UId"), pin);
+      } else if (k == "OpenCon") {
+        // An output left open (a timer's ET nobody reads): nothing to connect.
       } else {
         fail(c, "wire connection <" + std::string(k) + ">");
       }
+    }
+    if (sources.size() == 2 &&
+        (sources[0].kind == Source::Kind::Pin) != (sources[1].kind == Source::Kind::Pin)) {
+      const auto& pin = sources[0].kind == Source::Kind::Pin ? sources[0] : sources[1];
+      fail(w, "output '" + pin.pin + "' of part " + pin.uid +
+                  " written to an operand (box outputs are read only as power flow)");
+      continue;
     }
     if (sources.size() != 1) {
       fail(w, "a wire with " + std::to_string(sources.size()) + " sources");
@@ -219,6 +253,130 @@ bool LadNetwork::read_wires() {
         fail(w, "two wires into pin '" + t.second + "' of part " + t.first);
   }
   return ok_;
+}
+
+bool LadNetwork::is_timer(const std::string& uid) const {
+  const auto it = parts_.find(uid);
+  if (it == parts_.end()) return false;
+  const auto name = attr(it->second, "Name");
+  return name == "TON" || name == "TOF" || name == "TP";
+}
+
+// A timer box's outputs are Q and ET; every other part's are `out...` and `eno`.
+bool LadNetwork::output_pin(const std::string& uid, const std::string& pin) const {
+  if (is_timer(uid)) return pin == "Q" || pin == "ET" || pin == "eno";
+  return pin.rfind("out", 0) == 0 || pin == "eno";
+}
+
+// A statement of the network, refused when it reads a variable a coil of the same network
+// wrote before it: TIA Portal evaluates a network's power flow once, sfcv's statements one
+// after the other, and the two would differ.
+void LadNetwork::emit(model::StmtPtr stmt, pugi::xml_node at) {
+  std::vector<model::ExprPtr> reads = stmt->conditions;
+  if (stmt->value) reads.push_back(stmt->value);
+  for (const auto& [pin, e] : stmt->arguments) reads.push_back(e);
+  for (const auto& w : written_)
+    for (const auto& e : reads)
+      if (model::reads(*e, w)) {
+        fail(at, "a network that reads '" + w +
+                     "' after one of its coils wrote it (its power flow is evaluated once)");
+        return;
+      }
+  if (stmt->kind == model::StmtKind::Assign) written_.push_back(stmt->target);
+  if (stmt->kind == model::StmtKind::If) written_.push_back(stmt->bodies[0][0]->target);
+  out_->push_back(std::move(stmt));
+}
+
+bool LadNetwork::statements(model::StmtList& out) {
+  out_ = &out;
+  if (!read_wires()) return false;
+  const auto boolean = model::Type::boolean();
+  for (const auto& uid : part_order_) {
+    const auto p = parts_.at(uid);
+    const std::string name = attr(p, "Name");
+    if (is_timer(uid)) {
+      if (!called_.count(uid)) timer_box(uid, p);
+      continue;
+    }
+    if (name != "Coil" && name != "SCoil" && name != "RCoil") continue;
+    visited_.insert(uid);
+    for (auto c : element_children(p))
+      if (!(local_name(c) == "Negated" && attr(c, "Name") == "operand" && name == "Coil")) {
+        fail(c, "<" + std::string(local_name(c)) + "> on part '" + name + "'");
+        return false;
+      }
+    if (inputs_.count({uid, "out"})) {
+      fail(p, "a " + name + " whose output is wired on (a coil inside a rung)");
+      return false;
+    }
+    auto in = input(uid, "in", p);
+    auto op = operand(uid, "operand", p, &boolean);
+    if (!in || !op) return false;
+    if (op->kind != model::ExprKind::Name) {
+      fail(p, "a " + name + " on an operand that is not a variable");
+      return false;
+    }
+    const auto where = ctx_.where(p);
+    if (name == "Coil") {
+      if (child(p, "Negated")) in = model::make_unary(model::ExprKind::Not, in, where);
+      emit(model::make_assign(op->name, in, where), p);
+    } else {
+      auto stmt = std::make_shared<model::Stmt>();
+      stmt->kind = model::StmtKind::If;
+      stmt->where = where;
+      stmt->conditions.push_back(in);
+      stmt->bodies.push_back(
+          {model::make_assign(op->name, model::make_bool(name == "SCoil", where), where)});
+      emit(std::move(stmt), p);
+    }
+    if (!ok_) return false;
+  }
+  for (const auto& uid : part_order_)
+    if (!visited_.count(uid)) {
+      fail(parts_.at(uid),
+           "part '" + attr(parts_.at(uid), "Name") + "' (UId " + uid + ") that reaches no coil");
+      return false;
+    }
+  return ok_;
+}
+
+// A TON/TOF/TP box on its instance (a static member of the block): the call, IN from the power
+// flow and PT from its operand, emitted once; its Q is the power flow out of the box.
+model::ExprPtr LadNetwork::timer_box(const std::string& uid, pugi::xml_node p) {
+  visited_.insert(uid);
+  if (const auto it = called_.find(uid); it != called_.end())
+    return model::make_member(it->second, "Q", ctx_.where(p));
+  const std::string name = attr(p, "Name");
+  for (auto c : element_children(p)) {
+    const auto k = local_name(c);
+    if (k != "Instance" && !(k == "TemplateValue" && attr(c, "Name") == "time_type" &&
+                             model::iequals(trim(c.text().get()), "Time"))) {
+      fail(c, "<" + std::string(k) + "> on a " + name + " box");
+      return nullptr;
+    }
+  }
+  const auto inst = child(p, "Instance");
+  std::vector<std::string> path;
+  for (auto c : children(inst, "Component")) path.push_back(attr(c, "Name"));
+  if (!inst || attr(inst, "Scope") != "LocalVariable" || path.size() != 1) {
+    fail(p, "a " + name + " box whose instance is not a static member of the block (a " +
+                "single-instance data block is not in the file)");
+    return nullptr;
+  }
+  const auto* v = block_.pou().find_variable(path[0]);
+  if (!v || v->type.kind != model::TypeKind::FunctionBlock ||
+      model::to_string(v->type.fb) != name) {
+    fail(inst, "the " + name + " box's instance '" + path[0] + "' is not a static " + name +
+                   " member of the block");
+    return nullptr;
+  }
+  const auto time = model::Type::time();
+  auto in = input(uid, "IN", p);
+  auto pt = operand(uid, "PT", p, &time);
+  if (!in || !pt) return nullptr;
+  called_[uid] = v->name;
+  emit(model::make_fb_call(v->name, {{"IN", in}, {"PT", pt}}, ctx_.where(p)), p);
+  return model::make_member(v->name, "Q", ctx_.where(p));
 }
 
 model::ExprPtr LadNetwork::read(bool& empty) {
@@ -267,6 +425,7 @@ model::ExprPtr LadNetwork::input(const std::string& uid, const std::string& pin,
     case Source::Kind::Rail:
       return model::make_bool(true, ctx_.where(s.node));
     case Source::Kind::Pin:
+      if (out_ && is_timer(s.uid) && s.pin == "Q") return timer_box(s.uid, parts_.at(s.uid));
       if (s.pin != "out") {
         fail(s.node, "power flow from pin '" + s.pin + "'");
         return nullptr;
@@ -521,7 +680,12 @@ void GraphBlockReader::read(pugi::xml_node fb) {
                "unsupported: S7-GRAPH block '" + pou_.name +
                    "' with SkipSteps (a step is skipped when the transitions before and after it "
                    "hold together; sfcv fires one evolution per cycle)");
+  lad_ = block_attribute(fb, "ProgrammingLanguage") == "LAD";
   interface(fb);
+  if (lad_) {
+    ladder(fb);
+    return;
+  }
   pugi::xml_node graph_node;
   for (auto cu : children(child(fb, "ObjectList"), "SW.Blocks.CompileUnit")) {
     const auto src = child(child(cu, "AttributeList"), "NetworkSource");
@@ -551,12 +715,43 @@ void GraphBlockReader::read(pugi::xml_node fb) {
   project_.pous.push_back(std::move(pou_));
 }
 
+// A LAD block (docs/semantics.md 1.13a): a PROGRAM whose body is its networks, one after the
+// other in the order of its compile units.
+void GraphBlockReader::ladder(pugi::xml_node fb) {
+  for (auto cu : children(child(fb, "ObjectList"), "SW.Blocks.CompileUnit")) {
+    ctx_.poll();
+    const auto attrs = child(cu, "AttributeList");
+    const std::string language = trim(child(attrs, "ProgrammingLanguage").text().get());
+    const auto src = child(attrs, "NetworkSource");
+    if (language != "LAD") {
+      ctx_.error(cu, "unsupported: a network in " + language + " in LAD block '" + pou_.name +
+                         "' (LAD networks are read)");
+      continue;
+    }
+    const auto net = child(src, "FlgNet");
+    if (!net) continue;  // an empty network
+    LadNetwork lad(ctx_, *this, net, "", "network " + attr(cu, "ID") + " of " + pou_.name);
+    lad.statements(pou_.body);
+  }
+  if (model::has_errors(ctx_.diagnostics())) return;
+  ctx_.note(fb, "LAD block '" + pou_.name +
+                    "' read as a program run once per cycle; PLC tags it names are declared by "
+                    "their use (their table is not in the file)");
+  project_.pous.push_back(std::move(pou_));
+}
+
 void GraphBlockReader::interface(pugi::xml_node fb) {
   const auto sections = child(child(child(fb, "AttributeList"), "Interface"), "Sections");
   for (auto s : children(sections, "Section")) {
     const std::string name = attr(s, "Name");
     model::VarDirection dir = model::VarDirection::Local;
     if (name == "Base") continue;  // GRAPH_BASE: the system's own
+    if (name == "Return") {        // an FC's return value: read when it has none
+      for (auto m : children(s, "Member"))
+        if (!model::iequals(attr(m, "Datatype"), "Void"))
+          ctx_.error(m, "unsupported: a function's return value (" + attr(m, "Datatype") + ")");
+      continue;
+    }
     if (name == "Input")
       dir = model::VarDirection::Input;
     else if (name == "Output")
@@ -585,6 +780,24 @@ void GraphBlockReader::member(pugi::xml_node m, model::VarDirection dir,
   if (section == "Temp" || section == "InOut") {
     ctx_.error(m, "unsupported: " + section + " member '" + name + "' of a GRAPH block");
     return;
+  }
+  // TIA Portal's IEC timers (TON_TIME, the TIME variant of TON, ...) are IEC 61131-3's TON,
+  // TOF and TP; their members (PT, ET, IN, Q) are listed in the member's own Sections.
+  if (section == "Static") {
+    const auto u = model::to_upper(type);
+    for (const char* fb : {"TON", "TOF", "TP"})
+      if (u == fb || u == std::string(fb) + "_TIME") {
+        if (!is_identifier(name) || pou_.find_variable(name)) {
+          ctx_.error(m, "duplicate or unsupported member name '" + name + "'");
+          return;
+        }
+        model::Variable v;
+        v.name = name;
+        v.type = model::Type::function_block(model::standard_fb(fb));
+        v.where = ctx_.where(m);
+        pou_.variables.push_back(std::move(v));
+        return;
+      }
   }
   const auto et = model::elementary_type(type);
   if (!et || et->kind == model::TypeKind::FunctionBlock || child(m, "Sections")) {
@@ -662,12 +875,22 @@ void GraphBlockReader::graph(pugi::xml_node g) {
   several_sequences_ = sequences_.size() > 1 || initial_steps_ > 1;
 }
 
-// Permanent instructions run before or after the sequencer in every cycle; the model's POU body
-// runs before the chart only, and after it nothing: refused unless there is none.
+// Permanent instructions run before or after the sequencer in every cycle. The model's POU body
+// runs before the chart: LAD ones before it are the body (docs/semantics.md 1.13a); after it
+// the model runs nothing, so those are refused.
 void GraphBlockReader::operations(pugi::xml_node ops, const char* when) {
+  int n = 0;
   for (auto c : element_children(ops)) {
     const auto k = local_name(c);
     if (k == "Title" || k == "Comment") continue;
+    ++n;
+    if (std::string_view(when) == "before" && k == "PermanentOperation" &&
+        attr(c, "ProgrammingLanguage") == "LAD" && child(c, "FlgNet")) {
+      LadNetwork lad(ctx_, *this, child(c, "FlgNet"), "",
+                     "permanent instruction " + std::to_string(n) + " before the sequencer");
+      lad.statements(pou_.body);
+      continue;
+    }
     ctx_.error(c, std::string("unsupported: permanent instruction ") + when + " the sequencer (<" +
                       std::string(k) + ">, " + attr(c, "ProgrammingLanguage") +
                       "): S7-GRAPH runs it in every cycle " + when +
@@ -1180,6 +1403,7 @@ LoadResult load_simatic_graph(std::string_view text, const std::string& file,
   project.dialect = model::Dialect::Iec61131;
   project.where.file = file;
   model::Diagnostics diags;
+  bool any_graph = false;
   {
     XmlContext ctx(file, text, diags, budget);
     pugi::xml_document doc;
@@ -1196,23 +1420,29 @@ LoadResult load_simatic_graph(std::string_view text, const std::string& file,
           const std::string k(local_name(b));
           if (k == "Engineering" || k == "DocumentInfo") continue;
           const std::string language = block_attribute(b, "ProgrammingLanguage");
-          if (k != "SW.Blocks.FB" || language != "GRAPH") {
-            ctx.error(b, "unsupported: Siemens TIA Portal SimaticML (S7-GRAPH): <" + k + "> '" +
+          const bool graph = k == "SW.Blocks.FB" && language == "GRAPH";
+          const bool lad = (k == "SW.Blocks.FB" || k == "SW.Blocks.FC" || k == "SW.Blocks.OB") &&
+                           language == "LAD";
+          if (!graph && !lad) {
+            ctx.error(b, "unsupported: Siemens TIA Portal SimaticML: <" + k + "> '" +
                              block_attribute(b, "Name") + "'" +
                              (language.empty() ? "" : " in " + language) +
-                             " is not read (S7-GRAPH function blocks are)");
+                             " is not read (S7-GRAPH function blocks and LAD blocks are)");
             continue;
           }
           if (const std::string v = block_attribute(b, "GraphVersion"); !v.empty())
             project.source_format += " (GRAPH " + v + ")";
+          any_graph = any_graph || graph;
           GraphBlockReader(ctx, project).read(b);
         }
       }
     }
   }
   if (project.pous.empty() && !model::has_errors(diags))
-    diags.push_back({model::Severity::Error, project.where, "no S7-GRAPH block in the file"});
+    diags.push_back(
+        {model::Severity::Error, project.where, "no S7-GRAPH or LAD block in the file"});
   if (!project.pous.empty()) project.name = project.pous.front().name;
+  if (!any_graph) project.source_format.replace(0, 15, "simaticml-lad");  // "simaticml-graph"
   if (!model::has_errors(diags)) model::lower_data_types(project, diags);
   LoadResult r;
   if (!model::has_errors(diags)) r.project = std::move(project);

@@ -86,8 +86,9 @@ std::string vendor_of(const Project& project) {
   const auto format = to_upper(project.source_format);
   if (format.find("TWINCAT") != std::string::npos) return "twincat";
   if (format.find("CODESYS") != std::string::npos) return "codesys";
-  if (format == "SIMATICML-GRAPH") return "siemens";
-  if (format == "ROCKWELL-L5X") return "rockwell";
+  // The readers append the tool's version ("simaticml-graph V20 (GRAPH 6.0)").
+  if (format.rfind("SIMATICML", 0) == 0) return "siemens";
+  if (format.rfind("ROCKWELL-L5X", 0) == 0) return "rockwell";
   return "";
 }
 

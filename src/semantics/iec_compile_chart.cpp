@@ -87,6 +87,7 @@ std::uint32_t Compiler::add_action(PouScope& sc, const std::string& name,
   a.name = sc.name + "." + name;
   a.pou = sc.index;
   a.kind = kind;
+  a.where = where;
   a.active = add_field(a.name, FieldKind::ActionActive, 0, 1, 0, true);
   p.actions.push_back(std::move(a));
   const auto id = static_cast<std::uint32_t>(p.actions.size() - 1);
@@ -324,7 +325,7 @@ void Compiler::final_calls() {
   const auto dialect = p.options.dialect;
   const bool vendor = dialect == VendorDialect::Codesys || dialect == VendorDialect::Twincat;
   const auto written_by = file_dialect(project);
-  std::vector<std::string> without;     // IEC actions whose final call is not run
+  std::vector<std::string> without;     // --dialect iec: IEC actions whose final call is lost
   const auto count = p.actions.size();  // twins are appended
   for (std::size_t ai = 0; ai < count; ++ai) {
     bool iec = false, step = false;
@@ -335,10 +336,18 @@ void Compiler::final_calls() {
       without.push_back(p.actions[ai].name);
       continue;
     }
-    // The vendor's help gives no final call of an action whose body is a chart: its chart is
-    // suspended (1.3), and the warning says that what such a call would do is not covered.
+    // Neither vendor's help says what the final call of an action whose body is a chart does
+    // (its chart run once more? reset?): a verdict would rest on a guess, so it is refused by
+    // name, and --dialect iec (no final calls, the chart suspended as in 1.3) reads it.
     if (p.actions[ai].kind == model::ActionBodyKind::Chart) {
-      without.push_back(p.actions[ai].name);
+      error(p.actions[ai].where,
+            "action '" + p.actions[ai].name + "' has a chart as its body and is an IEC action: " +
+                std::string(to_string(dialect)) +
+                " runs it once more after it becomes inactive (its final call), and its help "
+                "does not say what that call does to the chart, so sfcv does not read it under "
+                "--dialect " +
+                std::string(to_string(dialect)) +
+                "; --dialect iec reads it without final calls (docs/semantics.md 1.4a)");
       continue;
     }
     if (step) step_action_twin(static_cast<std::uint32_t>(ai));
@@ -346,24 +355,19 @@ void Compiler::final_calls() {
     a.final_call = static_cast<std::int32_t>(
         add_field(a.name + ".final", FieldKind::ActionFinalCall, 0, 1, 0, true));
   }
-  if (without.empty() ||
-      (!vendor && written_by != VendorDialect::Codesys && written_by != VendorDialect::Twincat))
+  if (vendor || without.empty() ||
+      (written_by != VendorDialect::Codesys && written_by != VendorDialect::Twincat))
     return;
   std::string list;
   for (std::size_t i = 0; i < without.size() && i < 3; ++i) list += (i ? ", " : "") + without[i];
   if (without.size() > 3) list += " and " + std::to_string(without.size() - 3) + " more";
-  const auto who = std::string(to_string(vendor ? dialect : written_by));
-  const std::string unmodelled =
-      vendor
-          ? "sfcv does not model the final call of an action whose body is a chart (its "
-            "chart is suspended, docs/semantics.md 1.3 and 1.4a)"
-          : "--dialect " + std::string(to_string(dialect)) + " does not (docs/semantics.md 1.4a)";
-  warning(project.where, who +
+  warning(project.where, std::string(to_string(written_by)) +
                              " runs each IEC action once more in the cycle after it becomes "
-                             "inactive (its final call); " +
-                             unmodelled +
-                             ", so the verdicts do not cover what the final calls of " + list +
-                             " do");
+                             "inactive (its final call); --dialect " +
+                             std::string(to_string(dialect)) +
+                             " does not (docs/semantics.md 1.4a), so the verdicts do not cover "
+                             "what the final calls of " +
+                             list + " do");
 }
 
 void Compiler::step_action_twin(std::uint32_t ai) {

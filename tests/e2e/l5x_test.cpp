@@ -79,7 +79,9 @@ TEST(L5xE2E, LadderSequenceVerdictsFollowFromTheRungRules) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
   const auto r = run_sfcv("info " + file);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("(rockwell-l5x 32.01, IEC 61131-3)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(rockwell-l5x 32.01, IEC 61131-3, read in rockwell's dialect)"),
+            std::string::npos)
+      << r.out;
 }
 
 // ONS from its manual text: rung-condition-out is TRUE for one scan when rung-condition-in goes

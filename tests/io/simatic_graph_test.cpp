@@ -246,10 +246,10 @@ TEST(SimaticGraph, WhatTheModelCannotSayIsRefusedByName) {
       {action("N", q("valve")), action("N", q("motor")), "the operand of N/D/L and of S/R"},
       // Steps of two simultaneous legs on one operand.
       {action("N", q("mixer")), action("N", q("heater")), "steps that may be active together"},
-      {"<PreOperations></PreOperations>",
-       "<PreOperations><PermanentOperation ProgrammingLanguage=\"LAD\">" + lad({{"a"}}, "Coil") +
-           "</PermanentOperation></PreOperations>",
-       "permanent instruction before the sequencer"},
+      {"<PostOperations />",
+       "<PostOperations><PermanentOperation ProgrammingLanguage=\"LAD\">" +
+           rung({{"a"}}, std::nullopt, {{"Coil", "b"}}) + "</PermanentOperation></PostOperations>",
+       "permanent instruction after the sequencer"},
       {"MaximumStepTime=\"T#0ms\"", "MaximumStepTime=\"T#10S\"", "MaximumStepTime of T#10S"},
       {"\"GlobalVariable\" UId=\"21\"><Symbol><Component Name=\"ack\" />",
        "\"LocalVariable\" UId=\"21\"><Symbol><Component Name=\"INIT_SQ\" />",
@@ -282,15 +282,124 @@ TEST(SimaticGraph, ATransitionEndingInABranchStopIsRefused) {
 }
 
 TEST(SimaticGraph, OtherBlocksOfTheFileAreRefusedByName) {
-  const auto lad_block = io::load_simatic_graph(
+  const auto scl_block = io::load_simatic_graph(
       "<?xml version=\"1.0\"?><Document><Engineering version=\"V17\"/><SW.Blocks.FB ID=\"0\">"
-      "<AttributeList><Name>Motor</Name><ProgrammingLanguage>LAD</ProgrammingLanguage>"
+      "<AttributeList><Name>Motor</Name><ProgrammingLanguage>SCL</ProgrammingLanguage>"
       "</AttributeList></SW.Blocks.FB></Document>",
       "Motor.xml");
-  EXPECT_FALSE(lad_block.ok());
-  EXPECT_NE(errors_of(lad_block).find("<SW.Blocks.FB> 'Motor' in LAD is not read"),
+  EXPECT_FALSE(scl_block.ok());
+  EXPECT_NE(errors_of(scl_block).find("<SW.Blocks.FB> 'Motor' in SCL is not read (S7-GRAPH "
+                                      "function blocks and LAD blocks are)"),
             std::string::npos)
-      << errors_of(lad_block);
+      << errors_of(scl_block);
+}
+
+// A permanent instruction before the sequencer runs in every cycle before the chart: the POU's
+// body (docs/semantics.md 1.13a).
+TEST(SimaticGraph, PermanentInstructionsBeforeTheSequencerAreItsBody) {
+  const auto r = load(demo("<PermanentOperation ProgrammingLanguage=\"LAD\">" +
+                           rung({{"start", "!stop"}}, std::nullopt, {{"Coil", "armed"}}) +
+                           "</PermanentOperation>"));
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(model::to_st(r.project->pous[0].body), "armed := start AND NOT stop;\n");
+  EXPECT_EQ(r.project->pous[0].charts.size(), 1u);
+}
+
+io::LoadResult load_lad(const std::string& text) {
+  return io::load_simatic_graph(text, "Starter.xml");
+}
+
+TEST(SimaticLad, DemoGivesTheModelOfItsIecTwinAndRoundTrips) {
+  const auto text = lad_demo();
+  EXPECT_EQ(io::detect_format("Starter.xml", text), io::Format::SimaticGraph);
+  const auto native = load_lad(text);
+  ASSERT_TRUE(native.ok()) << errors_of(native);
+  EXPECT_EQ(native.project->source_format, "simaticml-lad V20");
+  const auto twin = io::load_iec_text(lad_demo_twin(), "starter.st");
+  ASSERT_TRUE(twin.ok()) << errors_of(twin);
+  const auto diff = model::first_difference(*native.project, *twin.project);
+  EXPECT_FALSE(diff.has_value()) << *diff << "\n" << model::to_st(native.project->pous[0].body);
+  iec_round_trip(*native.project);
+  plcopen_round_trip(*native.project);
+}
+
+// TIA Portal's coils: "=" writes the power flow, "S" and "R" write TRUE and FALSE when it flows,
+// a negated coil writes its negation; one wire may feed several coils.
+TEST(SimaticLad, CoilsOfOnePowerFlow) {
+  const auto r =
+      load_lad(lad_block("M", "",
+                         {rung({{"a", "!b"}, {"c"}}, std::nullopt,
+                               {{"Coil", "x"}, {"!Coil", "y"}, {"SCoil", "s"}, {"RCoil", "r"}}),
+                          rung({{"x"}, {"hold"}}, std::nullopt, {{"Coil", "hold"}})},
+                         "SW.Blocks.OB"));
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(model::to_st(r.project->pous[0].body),
+            "x := a AND NOT b OR c;\n"
+            "y := NOT (a AND NOT b OR c);\n"
+            "IF a AND NOT b OR c THEN\n  s := TRUE;\nEND_IF;\n"
+            "IF a AND NOT b OR c THEN\n  r := FALSE;\nEND_IF;\n"
+            "hold := x OR hold;\n");
+}
+
+TEST(SimaticLad, WhatTheModelCannotSayIsRefusedByName) {
+  struct Case {
+    std::string statics, network, message;
+  };
+  const Case cases[] = {
+      // The second coil would read the first one's write: TIA evaluates the flow once.
+      {"", rung({{"a", "x"}}, std::nullopt, {{"Coil", "x"}, {"Coil", "y"}}),
+       "reads 'x' after one of its coils wrote it"},
+      {"", rung({{"a"}}, TimerBox{"TON", "T1", "T#1s"}, {{"Coil", "y"}}),
+       "the TON box's instance 'T1' is not a static TON member"},
+      {timer_member("T1", "TOF_TIME"),
+       rung({{"a"}}, TimerBox{"TON", "T1", "T#1s"}, {{"Coil", "y"}}), "is not a static TON member"},
+      {"", rung({{"a"}}, std::nullopt, {{"Coil", "T#1s"}}), "on an operand that is not a variable"},
+      {timer_member("T1", "IEC_TIMER"), "", "member 'T1' of type IEC_TIMER"},
+  };
+  for (const auto& c : cases) {
+    const auto r = load_lad(
+        lad_block("M", c.statics,
+                  {c.network.empty() ? rung({{"a"}}, std::nullopt, {{"Coil", "y"}}) : c.network}));
+    EXPECT_FALSE(r.ok()) << c.message;
+    const auto e = errors_of(r);
+    EXPECT_NE(e.find(c.message), std::string::npos) << c.message << "\n" << e;
+    EXPECT_NE(e.find("Starter.xml:"), std::string::npos) << e;
+  }
+  // A part that is not read, and a DB member (its data block is not in the file).
+  auto text = lad_demo();
+  const std::string contact = "<Part Name=\"Contact\" UId=\"22\" />";
+  text.replace(text.find(contact), contact.size(), "<Part Name=\"PContact\" UId=\"22\" />");
+  EXPECT_NE(errors_of(load_lad(text)).find("LAD part 'PContact' (UId 22)"), std::string::npos);
+  text = lad_demo();
+  const std::string literal = "Scope=\"LiteralConstant\"";
+  text.replace(text.find(literal), literal.size(), "Scope=\"GlobalVariable\"");
+  const std::string pt =
+      "<Constant><ConstantType>Time</ConstantType><ConstantValue>T#5s</ConstantValue></Constant>";
+  text.replace(text.find(pt), pt.size(),
+               "<Symbol><Component Name=\"Settings\" /><Component Name=\"Delay\" /></Symbol>");
+  EXPECT_NE(errors_of(load_lad(text))
+                .find("a member of a global data block, which is not in the "
+                      "file"),
+            std::string::npos)
+      << errors_of(load_lad(text));
+}
+
+// The public LAD twin of the GRAPH sample, huaruiwh/portal MotorSequenceLAD_export.xml, when
+// SFCV_VENDOR_SAMPLES names a folder holding it: every network is read but the TON presets,
+// which are members of a data block the file does not hold.
+TEST(SimaticLad, PublicSampleWhenPresent) {
+  const char* dir = std::getenv("SFCV_VENDOR_SAMPLES");
+  const auto path = std::filesystem::path(dir ? dir : "") / "MotorSequenceLAD_export.xml";
+  if (!dir || !std::filesystem::exists(path))
+    GTEST_SKIP() << "SFCV_VENDOR_SAMPLES does not hold MotorSequenceLAD_export.xml";
+  const auto r = io::load_file(path.string());
+  int errors = 0;
+  for (const auto& d : r.diagnostics) {
+    if (d.severity != model::Severity::Error) continue;
+    ++errors;
+    EXPECT_NE(d.message.find("\"MotorSequence_Settings\"."), std::string::npos) << d.message;
+  }
+  EXPECT_EQ(errors, 4);
 }
 
 // The public export huaruiwh/portal MotorSequenceGRAPH_export.xml, when SFCV_VENDOR_SAMPLES

@@ -5,73 +5,226 @@
 // tables, Transitions with LAD networks ending in a TrCoil, Branches and Connections), never
 // copied from one; and a demo chart with its IEC 61131-3 text twin.
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sfcv::test::simatic {
 
-/// A LAD network (FlgNet) from a small description: `contacts` is a list of parallel branches,
-/// each a series of contacts "tag", "!tag" (NC) or "#member"; the branches join in an O box
-/// before `coil`.
-inline std::string lad(const std::vector<std::vector<std::string>>& branches,
-                       const std::string& coil = "TrCoil") {
+/// Contacts of a LAD network: `branches` is a list of parallel branches, each a series of
+/// contacts "tag", "!tag" (NC) or "#member"; the branches join in an O box. `end`/`end_pin`
+/// are the part and pin whose power flow leaves them (the rail when there is none).
+struct Contacts {
   std::string parts, wires;
-  int uid = 21;
-  std::vector<std::pair<int, std::string>> accesses;  // uid, operand
-  std::vector<int> branch_ends;
-  std::vector<int> firsts;
-  int wire = 500;
-  auto w = [&](const std::string& body) {
+  int uid = 21, wire = 500;
+  int end = -1;  ///< -1: the power rail
+  std::string end_pin = "out";
+  void w(const std::string& body) {
     wires += "<Wire UId=\"" + std::to_string(wire++) + "\">" + body + "</Wire>\n";
-  };
+  }
+  int access(const std::string& operand) {
+    const int a = uid++;
+    if (operand[0] == '#')
+      parts += "<Access Scope=\"LocalVariable\" UId=\"" + std::to_string(a) +
+               "\"><Symbol><Component Name=\"" + operand.substr(1) + "\" /></Symbol></Access>\n";
+    else if (operand.rfind("T#", 0) == 0)
+      parts += "<Access Scope=\"LiteralConstant\" UId=\"" + std::to_string(a) +
+               "\"><Constant><ConstantType>Time</ConstantType><ConstantValue>" + operand +
+               "</ConstantValue></Constant></Access>\n";
+    else
+      parts += "<Access Scope=\"GlobalVariable\" UId=\"" + std::to_string(a) +
+               "\"><Symbol><Component Name=\"" + operand + "\" /></Symbol></Access>\n";
+    return a;
+  }
+  /// Wires the power flow reaching here into pin `pin` of part `to`.
+  void feed(int to, const std::string& pin) {
+    if (end < 0)
+      w("<Powerrail /><NameCon UId=\"" + std::to_string(to) + "\" Name=\"" + pin + "\" />");
+    else
+      w("<NameCon UId=\"" + std::to_string(end) + "\" Name=\"" + end_pin + "\" /><NameCon UId=\"" +
+        std::to_string(to) + "\" Name=\"" + pin + "\" />");
+  }
+  /// Wires operand `operand` into pin `pin` of part `to`.
+  void operand(int to, const std::string& pin, const std::string& operand) {
+    const int a = access(operand);
+    w("<IdentCon UId=\"" + std::to_string(a) + "\" /><NameCon UId=\"" + std::to_string(to) +
+      "\" Name=\"" + pin + "\" />");
+  }
+};
+
+inline Contacts contacts(const std::vector<std::vector<std::string>>& branches) {
+  Contacts n;
+  std::vector<int> branch_ends, firsts;
   for (const auto& branch : branches) {
     int prev = -1;
     for (const auto& c : branch) {
       const bool nc = c[0] == '!';
       const std::string name = nc ? c.substr(1) : c;
-      const int a = uid++, p = uid++;
-      if (name[0] == '#')
-        parts += "<Access Scope=\"LocalVariable\" UId=\"" + std::to_string(a) +
-                 "\"><Symbol><Component Name=\"" + name.substr(1) + "\" /></Symbol></Access>\n";
-      else
-        parts += "<Access Scope=\"GlobalVariable\" UId=\"" + std::to_string(a) +
-                 "\"><Symbol><Component Name=\"" + name + "\" /></Symbol></Access>\n";
-      parts += "<Part Name=\"Contact\" UId=\"" + std::to_string(p) + "\"" +
-               (nc ? "><Negated Name=\"operand\" /></Part>\n" : " />\n");
-      w("<IdentCon UId=\"" + std::to_string(a) + "\" /><NameCon UId=\"" + std::to_string(p) +
-        "\" Name=\"operand\" />");
+      const int a = n.access(name), p = n.uid++;
+      n.parts += "<Part Name=\"Contact\" UId=\"" + std::to_string(p) + "\"" +
+                 (nc ? "><Negated Name=\"operand\" /></Part>\n" : " />\n");
+      n.w("<IdentCon UId=\"" + std::to_string(a) + "\" /><NameCon UId=\"" + std::to_string(p) +
+          "\" Name=\"operand\" />");
       if (prev < 0)
         firsts.push_back(p);
       else
-        w("<NameCon UId=\"" + std::to_string(prev) + "\" Name=\"out\" /><NameCon UId=\"" +
-          std::to_string(p) + "\" Name=\"in\" />");
+        n.w("<NameCon UId=\"" + std::to_string(prev) + "\" Name=\"out\" /><NameCon UId=\"" +
+            std::to_string(p) + "\" Name=\"in\" />");
       prev = p;
     }
     branch_ends.push_back(prev);
   }
   std::string rail = "<Powerrail />";
   for (int f : firsts) rail += "<NameCon UId=\"" + std::to_string(f) + "\" Name=\"in\" />";
-  if (!firsts.empty()) w(rail);
-  const int coil_uid = uid++;
+  if (!firsts.empty()) n.w(rail);
   if (branch_ends.size() > 1) {
-    const int o = uid++;
-    parts += "<Part Name=\"O\" UId=\"" + std::to_string(o) +
-             "\"><TemplateValue Name=\"Card\" Type=\"Cardinality\">" +
-             std::to_string(branch_ends.size()) + "</TemplateValue></Part>\n";
+    const int o = n.uid++;
+    n.parts += "<Part Name=\"O\" UId=\"" + std::to_string(o) +
+               "\"><TemplateValue Name=\"Card\" Type=\"Cardinality\">" +
+               std::to_string(branch_ends.size()) + "</TemplateValue></Part>\n";
     for (std::size_t i = 0; i < branch_ends.size(); ++i)
-      w("<NameCon UId=\"" + std::to_string(branch_ends[i]) + "\" Name=\"out\" /><NameCon UId=\"" +
-        std::to_string(o) + "\" Name=\"in" + std::to_string(i + 1) + "\" />");
-    w("<NameCon UId=\"" + std::to_string(o) + "\" Name=\"out\" /><NameCon UId=\"" +
-      std::to_string(coil_uid) + "\" Name=\"in\" />");
+      n.w("<NameCon UId=\"" + std::to_string(branch_ends[i]) + "\" Name=\"out\" /><NameCon UId=\"" +
+          std::to_string(o) + "\" Name=\"in" + std::to_string(i + 1) + "\" />");
+    n.end = o;
   } else if (branch_ends.size() == 1) {
-    w("<NameCon UId=\"" + std::to_string(branch_ends[0]) + "\" Name=\"out\" /><NameCon UId=\"" +
-      std::to_string(coil_uid) + "\" Name=\"in\" />");
-  } else {
-    w("<Powerrail /><NameCon UId=\"" + std::to_string(coil_uid) + "\" Name=\"in\" />");
+    n.end = branch_ends[0];
   }
-  parts += "<Part Name=\"" + coil + "\" UId=\"" + std::to_string(coil_uid) + "\" />\n";
-  return "<FlgNet>\n<Parts>\n" + parts + "</Parts>\n<Wires>\n" + wires + "</Wires>\n</FlgNet>\n";
+  return n;
+}
+
+inline std::string flgnet(const Contacts& n) {
+  return "<FlgNet xmlns=\"http://www.siemens.com/automation/Openness/SW/NetworkSource/FlgNet/"
+         "v5\">\n<Parts>\n" +
+         n.parts + "</Parts>\n<Wires>\n" + n.wires + "</Wires>\n</FlgNet>\n";
+}
+
+/// A LAD network (FlgNet) of a GRAPH condition: the contacts of `branches` (as contacts())
+/// into `coil` (TrCoil, SvCoil, IlCoil), which has no operand.
+inline std::string lad(const std::vector<std::vector<std::string>>& branches,
+                       const std::string& coil = "TrCoil") {
+  auto n = contacts(branches);
+  const int coil_uid = n.uid++;
+  n.feed(coil_uid, "in");
+  n.parts += "<Part Name=\"" + coil + "\" UId=\"" + std::to_string(coil_uid) + "\" />\n";
+  return flgnet(n);
+}
+
+/// A timer box on a rung: TON, TOF or TP on the static member `instance`, PT a constant.
+struct TimerBox {
+  std::string kind, instance, pt;
+};
+
+/// A network of a LAD block: the contacts of `branches`, then an optional timer box whose Q
+/// goes on (its ET left open), then every coil of `coils` on that power flow: {"Coil", "y"},
+/// {"SCoil", "y"}, {"RCoil", "y"}, {"!Coil", "y"} (negated), operands as contacts().
+inline std::string rung(const std::vector<std::vector<std::string>>& branches,
+                        const std::optional<TimerBox>& timer,
+                        const std::vector<std::pair<std::string, std::string>>& coils) {
+  auto n = contacts(branches);
+  std::string timer_part;
+  if (timer) {
+    const int t = n.uid++, inst = n.uid++;
+    n.feed(t, "IN");
+    n.operand(t, "PT", timer->pt);
+    timer_part = "<Part Name=\"" + timer->kind + "\" Version=\"1.0\" UId=\"" + std::to_string(t) +
+                 "\"><Instance Scope=\"LocalVariable\" UId=\"" + std::to_string(inst) +
+                 "\"><Component Name=\"" + timer->instance +
+                 "\" /></Instance><TemplateValue Name=\"time_type\" Type=\"Type\">Time"
+                 "</TemplateValue></Part>\n";
+    n.w("<NameCon UId=\"" + std::to_string(t) + "\" Name=\"ET\" /><OpenCon UId=\"" +
+        std::to_string(n.uid++) + "\" />");
+    n.end = t;
+    n.end_pin = "Q";
+  }
+  std::string coil_parts;
+  std::vector<int> coil_uids;
+  for (const auto& [kind, op] : coils) {
+    const int c = n.uid++;
+    coil_uids.push_back(c);
+    const bool negated = kind[0] == '!';
+    coil_parts += "<Part Name=\"" + (negated ? kind.substr(1) : kind) + "\" UId=\"" +
+                  std::to_string(c) + "\"" +
+                  (negated ? "><Negated Name=\"operand\" /></Part>\n" : " />\n");
+    n.operand(c, "operand", op);
+  }
+  // One wire from the power flow into every coil, as TIA Portal writes a fan-out.
+  std::string targets;
+  for (int c : coil_uids) targets += "<NameCon UId=\"" + std::to_string(c) + "\" Name=\"in\" />";
+  if (n.end < 0)
+    n.w("<Powerrail />" + targets);
+  else
+    n.w("<NameCon UId=\"" + std::to_string(n.end) + "\" Name=\"" + n.end_pin + "\" />" + targets);
+  n.parts += timer_part + coil_parts;
+  return flgnet(n);
+}
+
+/// A LAD block (`kind` SW.Blocks.FB, FC or OB) with `statics` (Member elements) and one
+/// compile unit per network.
+inline std::string lad_block(const std::string& name, const std::string& statics,
+                             const std::vector<std::string>& networks,
+                             const std::string& kind = "SW.Blocks.FB") {
+  std::string units;
+  int id = 3;
+  for (const auto& net : networks) {
+    units += "<SW.Blocks.CompileUnit ID=\"" + std::to_string(id++) +
+             "\" CompositionName=\"CompileUnits\">\n<AttributeList>\n<NetworkSource>" + net +
+             "</NetworkSource>\n<ProgrammingLanguage>LAD</ProgrammingLanguage>\n"
+             "</AttributeList>\n</SW.Blocks.CompileUnit>\n";
+  }
+  return "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Document>\n<Engineering version=\"V20\" "
+         "/>\n<" +
+         kind +
+         " ID=\"0\">\n<AttributeList>\n<Interface><Sections "
+         "xmlns=\"http://www.siemens.com/automation/Openness/SW/Interface/v5\">\n"
+         "<Section Name=\"Input\" />\n<Section Name=\"Output\" />\n<Section Name=\"InOut\" />\n"
+         "<Section Name=\"Static\">\n" +
+         statics +
+         "</Section>\n<Section Name=\"Temp\" />\n<Section Name=\"Constant\" />\n"
+         "</Sections></Interface>\n<MemoryLayout>Optimized</MemoryLayout>\n<Name>" +
+         name +
+         "</Name>\n<Number>1</Number>\n<ProgrammingLanguage>LAD</ProgrammingLanguage>\n"
+         "</AttributeList>\n<ObjectList>\n" +
+         units + "</ObjectList>\n</" + kind + ">\n</Document>\n";
+}
+
+/// A static TON_TIME member as TIA Portal writes it (its members in its own Sections).
+inline std::string timer_member(const std::string& name, const std::string& type = "TON_TIME") {
+  return "<Member Name=\"" + name + "\" Datatype=\"" + type +
+         "\" Version=\"1.0\" Remanence=\"NonRetain\" Accessibility=\"Public\">"
+         "<Sections><Section Name=\"None\"><Member Name=\"PT\" Datatype=\"Time\" />"
+         "<Member Name=\"ET\" Datatype=\"Time\" /><Member Name=\"IN\" Datatype=\"Bool\" />"
+         "<Member Name=\"Q\" Datatype=\"Bool\" /></Section></Sections></Member>\n";
+}
+
+/// The LAD demo (the shape of the motor sequence's LAD twin in huaruiwh/portal, never copied):
+/// a start pulse from an edge kept by hand, a run latch set by the pulse and reset by stop
+/// (reset last: stop wins), a second motor after a TON delay, the edge memory last.
+inline std::string lad_demo() {
+  return lad_block("Starter", timer_member("Delay"),
+                   {rung({{"start", "!start_prev"}}, std::nullopt, {{"Coil", "pulse"}}),
+                    rung({{"pulse", "!stop"}}, std::nullopt, {{"SCoil", "running"}}),
+                    rung({{"stop"}}, std::nullopt, {{"RCoil", "running"}}),
+                    rung({{"running"}}, TimerBox{"TON", "Delay", "T#5s"}, {{"Coil", "motor2"}}),
+                    rung({{"start"}}, std::nullopt, {{"Coil", "start_prev"}})});
+}
+
+/// The LAD demo's IEC 61131-3 text twin, written from the networks (the PLC tags declared in
+/// the order the networks first name them).
+inline std::string lad_demo_twin() {
+  return R"(PROGRAM Starter
+VAR
+  Delay : TON;
+  start, start_prev, pulse, stop, running, motor2 : BOOL;
+END_VAR
+pulse := start AND NOT start_prev;
+IF pulse AND NOT stop THEN running := TRUE; END_IF;
+IF stop THEN running := FALSE; END_IF;
+Delay(IN := running, PT := T#5s);
+motor2 := Delay.Q;
+start_prev := start;
+END_PROGRAM
+)";
 }
 
 /// One action row: qualifier and the operand text ("\"Lamp\"", "\"X\", T#2s").

@@ -238,6 +238,7 @@ struct Action {
   /// VendorDialect Codesys/Twincat, an IEC action with a body: field "active in the last
   /// configuration and not in this one", the cycle of its final call (docs/semantics.md 1.4a)
   std::int32_t final_call = kNone;
+  model::SourceLocation where;  ///< the action's declaration
   Block body;
   std::vector<std::uint32_t> assocs;
 };
