@@ -71,6 +71,18 @@
 
 namespace sfcv::engine {
 
+/// Grafcet conflicts: the transitions each event of a situation clears, one list per event
+/// (a successor, or an event that returns to the situation itself). The graphs merge the
+/// events that end in one situation, and the union of their lists would pair transitions
+/// that two different events clear (docs/semantics.md 3.2, `conflicts`).
+struct FiredPerEvent final : semantics::SuccessorSink {
+  std::vector<std::vector<std::uint32_t>> fired;
+  void successor(const semantics::Successor& s) override {
+    fired.emplace_back(s.fired.begin(), s.fired.end());
+  }
+  void returning(const semantics::Successor& s) override { successor(s); }
+};
+
 /// The inputs a conflict ignores: IEC 61131-3's `choice:<step>` pseudo-inputs, which pick one of
 /// the enabled alternatives under --priority none. Two evolutions of one situation conflict when
 /// they happen under the same values of every other input (plant inputs and the abstract-time
@@ -346,31 +358,6 @@ class StandardCheckRunner {
       r.verdict = Verdict::Holds;
       r.message = holds_message;
     }
-  }
-
-  /// The chart transition behind each system transition, matched by location (or name);
-  /// empty when some transition cannot be matched.
-  std::vector<const model::Transition*> chart_transitions() const {
-    std::vector<const model::Transition*> out;
-    if (!task_.project) return out;
-    for (const auto& info : ts_.transitions()) {
-      poll();
-      const model::Transition* hit = nullptr;
-      for (const auto& pou : task_.project->pous) {
-        if (!info.pou.empty() && !model::iequals(pou.name, info.pou)) continue;
-        for (const auto& chart : pou.charts) {
-          if (!info.chart.empty() && !model::iequals(chart.name, info.chart)) continue;
-          for (const auto& t : chart.transitions) {
-            const bool same = info.where.known() ? t.where.str() == info.where.str()
-                                                 : (!t.name.empty() && t.name == info.name);
-            if (same) hit = &t;
-          }
-        }
-      }
-      if (!hit) return {};
-      out.push_back(hit);
-    }
-    return out;
   }
 
   /// Grafcet steps never active in a stable situation but active in a transient situation of
@@ -690,13 +677,8 @@ class StandardCheckRunner {
     } else {
       // Grafcet clears every clearable transition at once: a conflict is two transitions
       // with a common upstream step cleared together.
-      std::vector<std::vector<std::string>> upstream;
-      const auto matched = chart_transitions();
-      for (std::size_t i = 0; i < matched.size(); ++i) {
-        std::vector<std::string> ups;
-        for (const auto& s : matched[i]->sources) ups.push_back(qualify(trs[i].chart, s));
-        upstream.push_back(std::move(ups));
-      }
+      const auto upstream = task_.project ? logic::grafcet_upstream_steps(ts_, *task_.project)
+                                          : std::vector<std::vector<std::string>>{};
       if (upstream.empty()) {
         r.verdict = Verdict::NotChecked;
         r.message =
@@ -705,15 +687,12 @@ class StandardCheckRunner {
         return;
       }
       auto common_upstream = [&](std::uint32_t i, std::uint32_t j) {
-        std::vector<std::string> common;
-        for (const auto& x : upstream[i])
-          for (const auto& y : upstream[j])
-            if (x == y) common.push_back(x);
-        return common;
+        return logic::common_steps(upstream[i], upstream[j]);
       };
       visited = sp_.simultaneous(
           [&](std::span<const std::uint32_t> fired, std::span<const std::uint32_t>,
               const State& s) {
+            poll();  // once per event: a space may expand situations again to list them
             for (std::size_t i = 0; i < fired.size(); ++i)
               for (std::size_t j = i + 1; j < fired.size(); ++j) {
                 poll();
@@ -806,51 +785,33 @@ class StandardCheckRunner {
         }
         // IEC 60848 stored actions: a variable set to 1 and never to 0, or to different values
         // on one evolution.
-        std::map<std::string, std::vector<const model::StoredAction*>> by_var;
-        for (const auto& a : pou.stored_actions) by_var[model::to_upper(a.variable)].push_back(&a);
-        for (const auto& [var, list] : by_var) {
+        for (const auto& v : logic::grafcet_stored_variables(pou)) {
           ++stored;
-          std::set<std::int64_t> values;
-          bool non_constant = false;
-          for (const auto* a : list) {
-            if (a->value && (a->value->kind == model::ExprKind::BoolConst ||
-                             a->value->kind == model::ExprKind::IntConst))
-              values.insert(a->value->value);
-            else
-              non_constant = true;
-          }
-          if (!non_constant && values.size() == 1 && *values.begin() == 1)
-            add(r, "output " + list.front()->variable + " is set to 1 by stored actions (" +
-                       list.front()->where.str() + ") and never reset to 0");
-          for (std::size_t i = 0; i < list.size(); ++i)
-            for (std::size_t j = i + 1; j < list.size(); ++j) {
-              const auto* a = list[i];
-              const auto* b = list[j];
-              if (a->when != model::StoredWhen::Activation ||
-                  b->when != model::StoredWhen::Activation)
-                continue;
-              if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
-              const auto* sa = logic::find_step(steps_, path, a->chart, a->step);
-              const auto* sb = logic::find_step(steps_, path, b->chart, b->step);
-              if (!sa || !sb) {
-                not_checked.push_back("stored actions on " + a->variable +
-                                      " at steps without "
-                                      "an observable");
-                continue;
-              }
-              poll();
-              // Both steps activated by one evolution.
-              const Set both = sp_.meet(step_set(*sa), step_set(*sb));
-              const Set from = sp_.meet(
-                  sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)), sp_.pre(both));
-              if (sp_.empty(from)) continue;
-              const State s = sp_.one(from);
-              add(r, "output " + a->variable +
-                         " is set to different values at once by the "
-                         "activation of " +
-                         sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
-              note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
+          if (v.never_reset)
+            add(r, "output " + v.variable + " is set to 1 by stored actions (" +
+                       v.first->where.str() + ") and never reset to 0");
+          for (const auto& [a, b] : v.different) {
+            const auto* sa = logic::find_step(steps_, path, a->chart, a->step);
+            const auto* sb = logic::find_step(steps_, path, b->chart, b->step);
+            if (!sa || !sb) {
+              not_checked.push_back("stored actions on " + a->variable +
+                                    " at steps without "
+                                    "an observable");
+              continue;
             }
+            poll();
+            // Both steps activated by one evolution.
+            const Set both = sp_.meet(step_set(*sa), step_set(*sb));
+            const Set from = sp_.meet(
+                sp_.minus(sp_.minus(sp_.reached(), step_set(*sa)), step_set(*sb)), sp_.pre(both));
+            if (sp_.empty(from)) continue;
+            const State s = sp_.one(from);
+            add(r, "output " + a->variable +
+                       " is set to different values at once by the "
+                       "activation of " +
+                       sa->step + " and " + sb->step + ", from situation " + sp_.describe(s));
+            note(first, sp_.one(sp_.meet(sp_.post(sp_.singleton(s)), both)));
+          }
           // "Set again while stored" is about IEC 61131-3's stored flag of an action; an
           // IEC 60848 stored action assigns a variable and has no flag: not applicable.
         }

@@ -483,6 +483,94 @@ std::vector<InstanceWriteConflict> instance_write_conflicts(const semantics::Tra
   return out;
 }
 
+std::vector<GrafcetStoredVariable> grafcet_stored_variables(const model::Pou& pou) {
+  std::map<std::string, std::vector<const model::StoredAction*>> by_var;
+  for (const auto& a : pou.stored_actions) by_var[model::to_upper(a.variable)].push_back(&a);
+  std::vector<GrafcetStoredVariable> out;
+  for (const auto& [var, list] : by_var) {
+    GrafcetStoredVariable v;
+    v.variable = list.front()->variable;
+    v.first = list.front();
+    std::set<std::int64_t> values;
+    bool non_constant = false;
+    for (const auto* a : list) {
+      if (a->value && (a->value->kind == model::ExprKind::BoolConst ||
+                       a->value->kind == model::ExprKind::IntConst))
+        values.insert(a->value->value);
+      else
+        non_constant = true;
+    }
+    v.never_reset = !non_constant && values.size() == 1 && *values.begin() == 1;
+    for (std::size_t i = 0; i < list.size(); ++i)
+      for (std::size_t j = i + 1; j < list.size(); ++j) {
+        const auto* a = list[i];
+        const auto* b = list[j];
+        if (a->when != model::StoredWhen::Activation || b->when != model::StoredWhen::Activation)
+          continue;
+        if (!a->value || !b->value || model::equal(a->value, b->value)) continue;
+        v.different.emplace_back(a, b);
+      }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+std::vector<const model::Transition*> chart_transitions(const semantics::TransitionSystem& ts,
+                                                        const model::Project& project) {
+  // Per chart, its transitions by location and by name (the last of a kind wins, as a scan
+  // in document order would): a chart of 6,000 transitions is matched in linear time.
+  struct Index {
+    std::map<std::string, const model::Transition*> by_where, by_name;
+  };
+  std::map<std::pair<std::string, std::string>, Index> charts;  // (POU, chart), upper case
+  for (const auto& pou : project.pous)
+    for (const auto& chart : pou.charts) {
+      auto& index = charts[{model::to_upper(pou.name), model::to_upper(chart.name)}];
+      for (const auto& t : chart.transitions) {
+        index.by_where[t.where.str()] = &t;
+        if (!t.name.empty()) index.by_name[t.name] = &t;
+      }
+    }
+  std::vector<const model::Transition*> out;
+  for (const auto& info : ts.transitions()) {
+    const model::Transition* hit = nullptr;
+    const auto pou = model::to_upper(info.pou), chart = model::to_upper(info.chart);
+    const auto where = info.where.known() ? info.where.str() : std::string();
+    for (const auto& [key, index] : charts) {
+      if ((!pou.empty() && key.first != pou) || (!chart.empty() && key.second != chart)) continue;
+      const auto& by = info.where.known() ? index.by_where : index.by_name;
+      if (const auto it = by.find(info.where.known() ? where : info.name); it != by.end())
+        hit = it->second;
+    }
+    if (!hit) return {};
+    out.push_back(hit);
+  }
+  return out;
+}
+
+std::vector<std::vector<std::string>> grafcet_upstream_steps(const semantics::TransitionSystem& ts,
+                                                             const model::Project& project) {
+  std::vector<std::vector<std::string>> upstream;
+  const auto matched = chart_transitions(ts, project);
+  const auto& trs = ts.transitions();
+  for (std::size_t i = 0; i < matched.size(); ++i) {
+    std::vector<std::string> ups;
+    for (const auto& s : matched[i]->sources)
+      ups.push_back(trs[i].chart.empty() ? s : trs[i].chart + "." + s);
+    upstream.push_back(std::move(ups));
+  }
+  return upstream;
+}
+
+std::vector<std::string> common_steps(const std::vector<std::string>& a,
+                                      const std::vector<std::string>& b) {
+  std::vector<std::string> common;
+  for (const auto& x : a)
+    for (const auto& y : b)
+      if (x == y) common.push_back(x);
+  return common;
+}
+
 std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem& ts,
                                                const model::Project& project) {
   std::vector<MixedWriter> out;

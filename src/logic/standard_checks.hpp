@@ -175,4 +175,32 @@ struct MixedWriter {
 std::vector<MixedWriter> grafcet_mixed_writers(const semantics::TransitionSystem& ts,
                                                const model::Project& project);
 
+/// IEC 60848 stored actions of one POU, as stored-actions judges them (docs/semantics.md
+/// 3.2): per variable they write, `never_reset` when every one stores the constant 1 (a
+/// finding of the chart itself), and the pairs on activation that store different values (a
+/// finding where one evolution activates both steps).
+struct GrafcetStoredVariable {
+  std::string variable;  ///< as the first action writes it
+  const model::StoredAction* first = nullptr;
+  bool never_reset = false;
+  std::vector<std::pair<const model::StoredAction*, const model::StoredAction*>> different;
+};
+std::vector<GrafcetStoredVariable> grafcet_stored_variables(const model::Pou& pou);
+
+/// The chart transition behind each transition of `ts`, matched by location (or name); empty
+/// when some transition cannot be matched.
+std::vector<const model::Transition*> chart_transitions(const semantics::TransitionSystem& ts,
+                                                        const model::Project& project);
+
+/// Grafcet conflicts (IEC 60848 clears every clearable transition at once): per transition of
+/// `ts`, its upstream steps, qualified by chart ("G1.S2"); empty when the transitions cannot
+/// be matched with the chart's (chart_transitions). Two transitions conflict when they share
+/// one and are cleared by one evolution.
+std::vector<std::vector<std::string>> grafcet_upstream_steps(const semantics::TransitionSystem& ts,
+                                                             const model::Project& project);
+
+/// The upstream steps `a` and `b` (grafcet_upstream_steps) have in common.
+std::vector<std::string> common_steps(const std::vector<std::string>& a,
+                                      const std::vector<std::string>& b);
+
 }  // namespace sfcv::logic

@@ -509,12 +509,7 @@ class Run {
       auto expand = [&](const State& x) {
         MergedEdges edges;
         ts.successors(x, edges);
-        for (std::size_t a = 0; a < edges.list.size(); ++a) {
-          if (!iec) {
-            visit(std::span<const std::uint32_t>(edges.list[a].fired),
-                  std::span<const std::uint32_t>{}, x);
-            continue;
-          }
+        for (std::size_t a = 0; a < edges.list.size() && iec; ++a) {
           for (std::size_t b = a + 1; b < edges.list.size(); ++b)
             if (conditions_intersect(edges.list[a].condition, edges.list[b].condition, ignored))
               visit(std::span<const std::uint32_t>(edges.list[a].fired),
@@ -555,13 +550,17 @@ class Run {
           if (here.is_false()) break;
           const State x = sys_.pick(here);
           const Bdd done = !sys_.singleton(x);
-          const auto edges = expand(x);
+          // One event at a time (FiredPerEvent): an edge merges the events ending in its target.
+          FiredPerEvent events;
+          ts.successors(x, events);
+          for (const auto& fired : events.fired)
+            visit(std::span<const std::uint32_t>(fired), std::span<const std::uint32_t>{}, x);
           for (std::size_t p = 0; p < pairs.size(); ++p) {
             bool settled = false;
-            for (const auto& e : edges.list)
+            for (const auto& fired : events.fired)
               settled =
-                  settled || (std::binary_search(e.fired.begin(), e.fired.end(), pairs[p].first) &&
-                              std::binary_search(e.fired.begin(), e.fired.end(), pairs[p].second));
+                  settled || (std::binary_search(fired.begin(), fired.end(), pairs[p].first) &&
+                              std::binary_search(fired.begin(), fired.end(), pairs[p].second));
             open[p] = settled ? Bdd::constant(false) : open[p] & done;
           }
         }

@@ -235,6 +235,7 @@ void GrafcetClosure::compute_relation() {
   const Bdd ends = reach_ & stable_ & !error_;
   Bdd same = Bdd::constant(true);  // the emitted situation is the source itself
   for (std::size_t l = 0; l < num_state_; ++l) same = same & Bdd::variable(v_.c[l]).iff(final_[l]);
+  ends_ = ends;
   ends_ne_ = ends & !same;
   relation_ = emitted(ends_ne_);
   has_successor_ = relation_.exist(n_cube_);
@@ -329,15 +330,16 @@ Bdd GrafcetClosure::fires_on_one_edge(std::uint32_t i, std::uint32_t j) {
   compute_relation();
   // Runs are deterministic and carry their source C, so the configurations reached from one
   // that clears t are exactly those of runs clearing t (a run merging into such a
-  // configuration shares its end, hence its edge); their non-stuttering ends, emitted, are the
-  // edges whose fired set holds t.
+  // configuration shares its end, hence its edge); their ends, emitted, are the edges whose
+  // fired set holds t, and the situations an event clearing t returns to (docs/semantics.md
+  // 3.2: an event that ends where it began clears its transitions too).
   auto edges_clearing = [&](std::uint32_t t) -> const Bdd& {
     if (edges_clearing_.size() != cleared_.size()) {
       edges_clearing_.assign(cleared_.size(), Bdd::constant(false));
       edges_clearing_set_.assign(cleared_.size(), false);
     }
     if (!edges_clearing_set_[t]) {
-      edges_clearing_[t] = emitted(forward(reach_ & cleared_[t]) & ends_ne_);
+      edges_clearing_[t] = emitted(forward(reach_ & cleared_[t]) & ends_);
       edges_clearing_set_[t] = true;
     }
     return edges_clearing_[t];

@@ -113,7 +113,7 @@ class GrafcetClosure {
 
   bool have_relation_ = false, have_sources_ = false;
   Bdd sources_;
-  Bdd reach_, ends_ne_, relation_, has_successor_, unstable_, range_;
+  Bdd reach_, ends_, ends_ne_, relation_, has_successor_, unstable_, range_;
   Bdd good_;  ///< configurations of reach_ whose run stabilises (its end stutters or not)
   std::vector<Bdd> fires_;
   std::vector<bool> fires_set_;

@@ -188,19 +188,30 @@ class ExplicitSpace {
   std::string describe(State s) const { return ts_.describe(g_.states().at(s)); }
 
   /// IEC 61131-3: pairs of edges out of one state under overlapping input conditions;
-  /// Grafcet: every edge, with the transitions it clears (the graph is at hand: no pair is
-  /// left out, `related` is not needed).
+  /// Grafcet: every event, with the transitions it clears. An edge merges the events that end
+  /// in its target, so a state whose edges clear two transitions or more is expanded again and
+  /// its events visited one by one (FiredPerEvent; `visit` pairs them, polling the deadline).
   template <class Visit, class Related>
   bool simultaneous(Visit&& visit, Related&& /*related*/) const {
     const bool iec = ts_.kind() == semantics::SemanticsKind::Iec61131;
     const auto ignored = conflict_ignored_inputs(ts_);
+    std::vector<char> returns_pair(iec ? 0 : n_, 0);  // an event back to s clears two or more
+    for (std::size_t i = 0; i < g_.returning_states().size() && !iec; ++i)
+      if (g_.returning_fired(i).size() > 1) returns_pair[g_.returning_states()[i]] = 1;
     for (std::uint32_t s = 0; s < n_; ++s) {
       if (!g_.expanded(s)) continue;
+      if (!iec) {
+        bool expand = returns_pair[s] != 0;
+        for (auto a = g_.edges_begin(s); a < g_.edges_end(s) && !expand; ++a)
+          expand = g_.fired(a).size() > 1;
+        if (!expand) continue;
+        FiredPerEvent events;
+        ts_.successors(g_.states().at(s), events);
+        for (const auto& fired : events.fired)
+          visit(std::span<const std::uint32_t>(fired), std::span<const std::uint32_t>{}, s);
+        continue;
+      }
       for (auto a = g_.edges_begin(s); a < g_.edges_end(s); ++a) {
-        if (!iec) {
-          visit(g_.fired(a), std::span<const std::uint32_t>{}, s);
-          continue;
-        }
         for (auto b = a + 1; b < g_.edges_end(s); ++b)
           if (conditions_intersect(g_.condition(a), g_.condition(b), ignored))
             visit(g_.fired(a), g_.fired(b), s);

@@ -80,6 +80,13 @@ AigLit GrafcetMachine::seen_during_event(AigLit lit, std::string name, bool also
   return aig_.make_and(stable_, also_stable ? aig_.make_or(seen, lit) : seen);
 }
 
+AigLit GrafcetMachine::held_at_event_source(AigLit lit, std::string name) {
+  const auto latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const AigLit held = aig_.add_latch(std::move(name), false);
+  aig_.set_next(latch, aig_.make_ite(stable_, lit, held));
+  return held;
+}
+
 AigLit GrafcetMachine::at_initial_stable() {
   if (initial_stable_ != 0) return initial_stable_;
   const auto latch = static_cast<std::uint32_t>(aig_.latches().size());

@@ -53,6 +53,10 @@ class GrafcetMachine {
   semantics::Aig& mutable_aig() { return aig_; }
   /// With `also_stable`, `lit` holding in the stable situation itself counts too.
   semantics::AigLit seen_during_event(semantics::AigLit lit, std::string name, bool also_stable);
+  /// "`lit` held in the stable situation the current event started from": an observer latch
+  /// that copies `lit` (a machine literal over N) whenever the machine is in Stable and keeps
+  /// it during the event's micro-steps (FALSE before the first stable situation).
+  semantics::AigLit held_at_event_source(semantics::AigLit lit, std::string name);
   /// `circuit_lit` read on the machine's situation N (in any mode).
   semantics::AigLit in_situation(semantics::AigLit circuit_lit) {
     return translate(circuit_lit, on_n_);

@@ -138,6 +138,7 @@ class Run {
                                                         task.limits.max_memory_bytes));
       machine_.emplace(*grafcet_);
       step_ok_ = machine_->step_ok();
+      steps_ = logic::step_refs(ts_, task_.project);
     } else {
       iec_.emplace(semantics::build_iec61131_circuit(ts_, task.limits.deadline,
                                                      task.limits.max_memory_bytes));
@@ -514,6 +515,18 @@ class Run {
         output_conflicts_question(q);
         q.some_stable = add_machine_target(m.at_stable());
         return q;
+      case StandardCheck::Conflicts:
+      case StandardCheck::StoredActions:
+        if (!task_.project) {
+          q.refusal = "not checked: needs the chart (no project given)";
+          return q;
+        }
+        if (c == StandardCheck::Conflicts)
+          grafcet_conflicts(q);
+        else
+          grafcet_stored_actions(q);
+        q.some_stable = add_machine_target(m.at_stable());
+        return q;
       default:
         return q;
     }
@@ -529,6 +542,115 @@ class Run {
   std::size_t add_machine_target(AigLit machine_lit) {
     targets_.push_back(machine_lit);
     return targets_.size() - 1;
+  }
+
+  AigLit grafcet_observable_lit(std::uint32_t o) {
+    return logic::circuit_literal(*grafcet_, *logic::observable_atom(ts_, o));
+  }
+
+  /// Grafcet conflicts, the explicit engine's findings (standard_check_runner.hpp): two
+  /// transitions with a common upstream step both cleared during one event from a stable
+  /// situation (the start's stabilisation is not an event of the graph), each seen by an
+  /// observer of the event, at the stable situation it ends in.
+  void grafcet_conflicts(Question& q) {
+    auto& m = *machine_;
+    auto& aig = m.mutable_aig();
+    q.shape = Question::Shape::Findings;
+    q.trace_note = "in the last situation conflicting transitions are enabled together";
+    q.holds_message = "no two alternative transitions are enabled together";
+    const auto upstream = logic::grafcet_upstream_steps(ts_, *task_.project);
+    const auto& trs = ts_.transitions();
+    if (upstream.size() != trs.size()) {
+      q.refusal =
+          "not checked: the transitions of the system could not be matched with the chart's "
+          "transitions";
+      q.shape = Question::Shape::Unsupported;
+      return;
+    }
+    std::map<std::uint32_t, AigLit> cleared;  // per transition in some pair: its observer
+    auto cleared_in_event = [&](std::uint32_t t) {
+      auto it = cleared.find(t);
+      if (it == cleared.end())
+        it = cleared.emplace(t, m.seen_during_event(m.fired()[t], "cleared " + trs[t].name, false))
+                 .first;
+      return it->second;
+    };
+    const AigLit after_an_event = Aig::make_not(m.at_initial_stable());
+    // The pairs with a common upstream step, through the transitions of each step (a chart of
+    // thousands of transitions has few such pairs).
+    std::map<std::string, std::vector<std::uint32_t>> downstream;
+    for (std::uint32_t t = 0; t < trs.size(); ++t)
+      for (const auto& step : upstream[t]) downstream[step].push_back(t);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (const auto& [step, list] : downstream)
+      for (std::size_t a = 0; a < list.size(); ++a)
+        for (std::size_t b = a + 1; b < list.size(); ++b)
+          pairs.emplace(std::min(list[a], list[b]), std::max(list[a], list[b]));
+    for (const auto& [i, j] : pairs) {
+      const auto common = logic::common_steps(upstream[i], upstream[j]);
+      const AigLit both =
+          aig.make_and(aig.make_and(cleared_in_event(i), cleared_in_event(j)), after_an_event);
+      q.findings.push_back(
+          {add_machine_target(both),
+           {},
+           [this, text = "transitions " + trs[i].name + " and " + trs[j].name +
+                         " share the upstream step " + common.front() +
+                         " and are cleared together from situation "](
+               const ReachResult&, const logic::Trace& t) { return text + describe_at(t, 1); }});
+    }
+  }
+
+  /// Grafcet stored actions (docs/semantics.md 2.7), the explicit engine's findings: an output
+  /// stored to 1 and never to 0 (a fact of the chart), and two stored actions on activation
+  /// writing different values whose steps are both activated by one event: both active in the
+  /// stable situation it ends in, neither in the one it started from.
+  void grafcet_stored_actions(Question& q) {
+    auto& m = *machine_;
+    auto& aig = m.mutable_aig();
+    q.shape = Question::Shape::Findings;
+    q.stored_actions = true;
+    q.trace_note = "the last situation shows the stored-action defect";
+    std::size_t stored = 0;
+    const AigLit after_an_event = Aig::make_not(m.at_initial_stable());
+    for (const auto& pou : task_.project->pous)
+      for (const auto& instance : logic::instances_of(ts_, pou)) {
+        for (const auto& v : logic::grafcet_stored_variables(pou)) {
+          ++stored;
+          if (v.never_reset)
+            q.findings.push_back({std::nullopt,
+                                  "output " + v.variable + " is set to 1 by stored actions (" +
+                                      v.first->where.str() + ") and never reset to 0",
+                                  {}});
+          for (const auto& [a, b] : v.different) {
+            const auto* sa = logic::find_step(steps_, instance.path, a->chart, a->step);
+            const auto* sb = logic::find_step(steps_, instance.path, b->chart, b->step);
+            if (!sa || !sb) {
+              q.not_checked.push_back("stored actions on " + a->variable +
+                                      " at steps without an observable");
+              continue;
+            }
+            const AigLit xa = m.in_situation(grafcet_observable_lit(sa->observable));
+            const AigLit xb = m.in_situation(grafcet_observable_lit(sb->observable));
+            const AigLit neither_before =
+                m.held_at_event_source(aig.make_and(Aig::make_not(xa), Aig::make_not(xb)),
+                                       "neither " + sa->step + " nor " + sb->step);
+            const AigLit both_now =
+                aig.make_and(aig.make_and(m.at_stable(), aig.make_and(xa, xb)), neither_before);
+            q.findings.push_back(
+                {add_machine_target(aig.make_and(both_now, after_an_event)),
+                 {},
+                 [this, text = "output " + a->variable +
+                               " is set to different values at once by the activation of " +
+                               sa->step + " and " + sb->step +
+                               ", from situation "](const ReachResult&, const logic::Trace& t) {
+                   return text + describe_at(t, 1);
+                 }});
+          }
+        }
+      }
+    q.holds_message =
+        stored == 0 ? "the chart has no stored action" : "stored actions are used correctly";
+    if (stored == 0) q.not_checked.clear();
   }
 
   // ------------------------------------------- stored-actions and output-conflicts (IEC)
@@ -561,8 +683,11 @@ class Run {
       if (Aig::value_of(nodes, lits[i])) return i;
     throw std::logic_error("sat engine: a finding's run does not show it");
   }
+  /// The situation `back` steps before the trace's last. A Grafcet event that returns to its
+  /// own situation adds no step to the trace: it starts from the last one then.
   std::string describe_at(const logic::Trace& t, std::size_t back) const {
-    return ts_.describe(t.steps[t.steps.size() - 1 - back].state);
+    const auto n = t.steps.size();
+    return ts_.describe(t.steps[n > back ? n - 1 - back : 0].state);
   }
   /// A finding when `target` is reached (none when it is FALSE by construction).
   void finding_if(Question& q, AigLit target,
@@ -1523,7 +1648,9 @@ class Run {
       r.trace = trace_of(*shallowest, logic::TraceKind::Counterexample);
       r.trace->note = q.trace_note;
     }
-    if (!r.findings.empty()) {
+    const bool judged =
+        !q.some_stable || shallowest || answers_[*q.some_stable].kind == ReachResult::Kind::Reached;
+    if (!r.findings.empty() && judged) {
       r.verdict = Verdict::Violated;
       if (unknown > 0) r.message = std::to_string(unknown) + " more undecided: " + why;
       if (q.stored_actions && !q.not_checked.empty())
@@ -1536,8 +1663,11 @@ class Run {
                   " undecided: " + why;
       return r;
     }
-    if (q.some_stable && answers_[*q.some_stable].kind != ReachResult::Kind::Reached) {
-      // Grafcet: no stable situation reached, nothing judged (as grafcet_check_question).
+    if (!judged) {
+      // Grafcet: no stable situation reached, nothing judged (as grafcet_check_question); a
+      // finding of the chart itself (an output only ever stored to 1) waits for one too.
+      r.findings.clear();
+      r.findings_total = 0;
       const auto& a = answers_[*q.some_stable];
       r.verdict = Verdict::Unknown;
       r.message = a.kind == ReachResult::Kind::Unreachable
