@@ -83,11 +83,13 @@ TEST(Budget, InvalidLimitValuesAreUsageErrors) {
 TEST(Budget, TimeoutHoldsInTheChecksAfterExploration) {
   // Before the budget, the checks after exploration ran unbounded (a 10,001-step chain with
   // --timeout 10 took 81 s). The checks chosen all hold on the chain (a violation found before
-  // the deadline would make the exit 1); unbounded, `conflicts` takes about 4.7 s after an
-  // exploration of 0.6 s, so even a machine twice as fast reaches the deadline in it. (The
-  // reachable and dead-transitions checks took 3.6 s before they read the steps each
-  // evolution crosses; now 0.1 s.)
-  const auto chain = transient_chain(6000);
+  // the deadline would make the exit 1); unbounded on an idle machine, `conflicts` takes about
+  // 1.8 s (the 40 million pairs of the one event's 9,000 transitions) after an exploration and
+  // reachable of 1.3 s, so a machine half as fast again reaches the deadline in it. (The
+  // reachable and dead-transitions checks took 3.6 s before they read the steps each evolution
+  // crosses; now 0.2 s. At 6,000 steps conflicts took 4.7 s until the chart's transitions were
+  // matched in linear time, 0.7 s since.)
+  const auto chain = transient_chain(9000);
   const auto t = timed_run("check " + chain +
                            " --engine explicit --timeout 2 --trace none "
                            "--checks reachable,dead-transitions,initial-return,conflicts");
