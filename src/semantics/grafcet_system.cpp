@@ -424,6 +424,14 @@ Val GrafcetSystem::eval(const CExpr& e, const Ctx& c) const {
   }
 }
 
+std::int64_t GrafcetSystem::region_of(std::size_t input, std::int64_t value) const {
+  const auto& in = gin_[input];
+  if (in.type.kind != model::TypeKind::Int || in.pseudo) return value;
+  const auto& lo = in.region_lo;
+  const auto above = std::upper_bound(lo.begin(), lo.end(), value);
+  return above == lo.begin() ? 0 : std::distance(lo.begin(), above) - 1;
+}
+
 Partial GrafcetSystem::inputs_of(StateView s) const {
   Partial p;
   p.val.assign(gin_.size(), 0);
@@ -778,6 +786,13 @@ void GrafcetSystem::explore(StateView source, Partial start, bool initial, Succe
       case Status::Split: {
         const auto i = static_cast<std::size_t>(r.split);
         const auto n = gin_[i].regions();
+        if (const auto* only = sink.only_valuation()) {  // the one region the sink wants
+          Partial q = std::move(p);
+          q.known[i] = 1;
+          q.val[i] = region_of(i, (*only)[i]);
+          work.push_back(std::move(q));
+          break;
+        }
         for (std::int64_t x = n - 1; x >= 0; --x) {
           Partial q = p;
           q.known[i] = 1;

@@ -21,6 +21,7 @@ struct Pick : SuccessorSink {
     if (anomaly_message.empty() && valuation && a.condition.holds(*valuation))
       anomaly_message = a.message;
   }
+  const std::vector<std::int64_t>* only_valuation() const override { return valuation; }
 };
 }  // namespace
 

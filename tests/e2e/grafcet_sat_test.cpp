@@ -69,5 +69,105 @@ TEST(GrafcetSat, EfFailsFromOneInitialSituationOnly) {
   EXPECT_EQ(b.out.find("holds"), std::string::npos) << b.out;
 }
 
+// IEC 60848 (docs/semantics.md 2.11): a situation whose evolution leaves a transition enabled
+// (upstream steps active, receptivity true) evolves again at once, and a cycle of such
+// evolutions never reaches a stable situation: the instability check. Here a true `a` clears
+// 1 -> 2 and then 2 -> 1 for ever, both at the start (a true initially) and after `a` rises in
+// {1}. The SAT engines find it as a configuration repeated within one event; with 2 -> 1 on
+// `!a` every evolution stabilises, which ic3 and kind prove.
+TEST(GrafcetSat, AnEventThatNeverStabilisesIsAnInstabilityOnEveryEngine) {
+  const auto unstable = write_temp(
+      "input a;\n"
+      "grafcet G { step 1 initial; step 2;\n"
+      "  transition t1: 1 -> 2 when a; transition t2: 2 -> 1 when a; }\n",
+      ".g7");
+  for (const char* engine : {"explicit", "bdd", "bmc", "kind", "ic3"}) {
+    const auto r = run_sfcv("check " + unstable + " --engine " + engine +
+                            " --checks instability --timeout 20");
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("instability: "), std::string::npos) << engine << r.out;
+  }
+  // A start that never stabilises, whatever the inputs (5 -> 6 -> 5 on TRUE): no stable
+  // situation exists, and the finding names the initial valuation, as `sfcv simulate` reads it.
+  const auto start_file = write_temp(
+      "input a;\n"
+      "grafcet G { step 1 initial; step 2; transition t1: 1 -> 2 when a; }\n"
+      "grafcet H { step 5 initial; step 6;\n"
+      "  transition t5: 5 -> 6 when TRUE; transition t6: 6 -> 5 when TRUE; }\n",
+      ".g7");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    const auto start =
+        run_sfcv("check " + start_file + " --engine " + engine + " --checks instability");
+    EXPECT_EQ(start.exit_code, 1) << engine << start.out << start.err;
+    EXPECT_NE(start.out.find("nstability: "), std::string::npos) << engine << start.out;
+  }
+  const auto start = run_sfcv("check " + start_file + " --engine ic3 --checks instability");
+  EXPECT_NE(start.out.find("under some initial input valuation the transient evolutions never "
+                           "reach a stable situation (initial inputs "),
+            std::string::npos)
+      << start.out;
+
+  const auto stable = write_temp(
+      "input a;\n"
+      "grafcet G { step 1 initial; step 2;\n"
+      "  transition t1: 1 -> 2 when a; transition t2: 2 -> 1 when !a; }\n",
+      ".g7");
+  for (const char* engine : {"explicit", "bdd", "kind", "ic3"}) {
+    const auto r =
+        run_sfcv("check " + stable + " --engine " + engine + " --checks instability --timeout 20");
+    EXPECT_EQ(r.exit_code, 0) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("every evolution reaches a stable situation"), std::string::npos)
+        << engine << r.out;
+  }
+  const auto bmc = run_sfcv("check " + stable + " --engine bmc --checks instability");
+  EXPECT_EQ(bmc.exit_code, 3) << bmc.out << bmc.err;  // BMC proves nothing
+}
+
+// The AG EF checks on a Grafcet by ic3, as on IEC 61131-3: a situation on a run from which
+// IC3 proves the goal unreachable is a violation (the explicit engine's finding); no such
+// situation is unknown, never "holds". Step 1 is left for the loop 2 <-> 3 and never comes
+// back; step 9 of a second grafcet is reached and stops everything there.
+TEST(GrafcetSat, Ic3FindsTheDeadlocksOfAGrafcet) {
+  const auto loop = write_temp(
+      "input a; input b;\n"
+      "grafcet G { step 1 initial; step 2; step 3;\n"
+      "  transition t1: 1 -> 2 when a; transition t2: 2 -> 3 when b;\n"
+      "  transition t3: 3 -> 2 when !b; }\n",
+      ".g7");
+  for (const char* engine : {"explicit", "ic3"}) {
+    const auto r =
+        run_sfcv("check " + loop + " --engine " + engine + " --checks local-deadlock --timeout 20");
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("step X1, once inactive, never becomes active again"), std::string::npos)
+        << engine << r.out;
+  }
+  // Steps 2 and 3 can always be re-entered: the explicit engine proves it, ic3 finds no
+  // violation and says unknown.
+  const auto reentry =
+      run_sfcv("check " + loop + " --engine ic3 --checks reentry,global-deadlock --timeout 20");
+  EXPECT_EQ(reentry.exit_code, 3) << reentry.out << reentry.err;
+  EXPECT_EQ(reentry.out.find("violated"), std::string::npos) << reentry.out;
+  EXPECT_NE(reentry.out.find("no situation found from which the property fails"), std::string::npos)
+      << reentry.out;
+
+  const auto stop = write_temp(
+      "input a; input b;\n"
+      "grafcet G { step 1 initial; step 9;\n"
+      "  transition t1: 1 -> 9 when a; transition t2: 1 -> 1 when b; }\n",
+      ".g7");
+  for (const char* engine : {"explicit", "bdd", "ic3"}) {
+    const auto r = run_sfcv("check " + stop + " --engine " + engine +
+                            " --checks global-deadlock,reentry --timeout 20");
+    EXPECT_EQ(r.exit_code, 1) << engine << r.out << r.err;
+    EXPECT_NE(r.out.find("no transition can ever fire again, whatever the inputs"),
+              std::string::npos)
+        << engine << r.out;
+    EXPECT_NE(r.out.find("step X1: a reachable situation exists from which it can never become "
+                         "active again"),
+              std::string::npos)
+        << engine << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace sfcv::test

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/bdd/condition_simplifier.hpp"
+#include "semantics/simulate.hpp"
 #include "support/grafcet_builder.hpp"
 
 namespace sfcv::test {
@@ -126,6 +127,75 @@ TEST(ConditionSimplifier, KeepsIntegerLiteralsAsAtoms) {
   const auto s = engine::simplify(c, in);
   for (std::int64_t a = 0; a <= 1; ++a)
     for (std::int64_t n = 0; n <= 9; ++n) EXPECT_EQ(c.holds({a, n}), s.holds({a, n}));
+}
+
+}  // namespace
+}  // namespace sfcv::test
+
+namespace sfcv::test {
+namespace {
+
+// `sfcv simulate` on a Grafcet follows the valuation of its rows: the start of 48 charts
+// `1 --aK--> 2` and one `1 --n >= 5--> 2 --n < 3--> 3` has 2^48 * 3 initial situations, and the
+// simulation used to walk them all to pick the one of its first row (an AGRAFE production
+// system with 45 inputs never answered). Now it splits on the row's regions only.
+TEST(GrafcetInputs, SimulationFollowsItsRowsNotEveryInitialSituation) {
+  constexpr int kCharts = 48;
+  GrafcetBuilder b;
+  for (int k = 0; k < kCharts; ++k) b.input("a" + std::to_string(k));
+  b.input("n", model::Type::integer("INT(0..9)", 0, 9));
+  for (int k = 0; k < kCharts; ++k) {
+    const auto id = std::to_string(k);
+    b.chart("G" + id).step("1" + id, true).step("2" + id);
+    b.transition({"1" + id}, {"2" + id}, v("a" + id));
+  }
+  b.chart("H").step("h1", true).step("h2").step("h3");
+  b.transition({"h1"}, {"h2"}, cmp(ExprKind::Ge, v("n"), num(5)));
+  b.transition({"h2"}, {"h3"}, cmp(ExprKind::Lt, v("n"), num(3)));
+  model::Diagnostics d;
+  semantics::GrafcetOptions o;
+  const auto ts = semantics::make_grafcet_system(b.project(), o, d);
+  ASSERT_TRUE(ts);
+  // Every aK true but a0, n = 7: the start stabilises in {10, 2K for K > 0, h2}; then a0 rises,
+  // then n falls to 2 (h2 -> h3).
+  std::vector<std::int64_t> row(ts->inputs().size(), 0);
+  std::size_t a0 = 0, n = 0;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    const auto& name = ts->inputs()[i].name;
+    if (name == "n") n = i;
+    if (name == "a0") a0 = i;
+    if (name.starts_with("a") && name != "a0") row[i] = 1;
+  }
+  row[n] = 7;
+  auto rise = row;
+  rise[a0] = 1;
+  auto fall = rise;
+  fall[n] = 2;
+  const auto run = semantics::simulate_events(*ts, {row, rise, fall}, true);
+  ASSERT_TRUE(run.ok) << run.error;
+  ASSERT_EQ(run.states.size(), 3u);
+  // "{10,21,...,h2}": the step names between '{' or ',' and ',' or '}'.
+  const auto active = [&](std::size_t k, const std::string& step) {
+    const auto text = ts->describe(run.states[k]);
+    const auto end = text.find('}');
+    std::string token;
+    for (std::size_t i = text.find('{') + 1; i <= end; ++i) {
+      if (text[i] == ',' || text[i] == '}') {
+        if (token == step) return true;
+        token.clear();
+      } else {
+        token += text[i];
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(active(0, "10"));
+  EXPECT_TRUE(active(0, "247"));
+  EXPECT_TRUE(active(0, "h2"));
+  EXPECT_FALSE(active(0, "20"));
+  EXPECT_TRUE(active(1, "20"));
+  EXPECT_TRUE(active(1, "h2"));
+  EXPECT_TRUE(active(2, "h3"));
 }
 
 }  // namespace

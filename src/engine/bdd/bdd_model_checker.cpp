@@ -506,18 +506,16 @@ class Run {
       const auto& limits = run_.task_.limits;
       const auto ignored = conflict_ignored_inputs(ts);
       const bool iec = ts.kind() == semantics::SemanticsKind::Iec61131;
-      auto expand = [&](const State& x) {
-        MergedEdges edges;
-        ts.successors(x, edges);
-        for (std::size_t a = 0; a < edges.list.size() && iec; ++a) {
-          for (std::size_t b = a + 1; b < edges.list.size(); ++b)
-            if (conditions_intersect(edges.list[a].condition, edges.list[b].condition, ignored))
-              visit(std::span<const std::uint32_t>(edges.list[a].fired),
-                    std::span<const std::uint32_t>(edges.list[b].fired), x);
-        }
-        return edges;
-      };
       if (iec) {
+        auto expand = [&](const State& x) {
+          MergedEdges edges;
+          ts.successors(x, edges);
+          for (std::size_t a = 0; a < edges.list.size(); ++a)
+            for (std::size_t b = a + 1; b < edges.list.size(); ++b)
+              if (conditions_intersect(edges.list[a].condition, edges.list[b].condition, ignored))
+                visit(std::span<const std::uint32_t>(edges.list[a].fired),
+                      std::span<const std::uint32_t>(edges.list[b].fired), x);
+        };
         Bdd open = sys_.choice_matters(run_.reached_);
         for (const auto& ring : run_.rings_)
           for (Bdd here = open & ring; !here.is_false(); here = open & ring) {

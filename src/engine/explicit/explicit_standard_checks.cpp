@@ -244,8 +244,10 @@ class ExplicitSpace {
     for (const auto& a : g_.anomalies()) {
       const std::string kind =
           a.kind == semantics::Anomaly::Kind::Instability ? "instability" : "range error";
+      // The semantics may name the kind itself (`sfcv simulate` prints its message alone).
+      const bool named = a.message.starts_with(kind + ":");
       out.push_back(
-          {kind + ": " + a.message +
+          {(named ? "" : kind + ": ") + a.message +
                (a.condition.is_false() ? ""
                                        : " (inputs " + a.condition.to_string(ts_.inputs()) + ")"),
            std::nullopt});

@@ -25,9 +25,9 @@ GrafcetMachine::GrafcetMachine(const semantics::GrafcetCircuit& circuit) : circu
     kept.push_back(aig_.add_latch("event " + c.inputs()[i].name));
     input_as_kept[i] = kept.back();
   }
-  const auto boot_latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const auto boot_latch = boot_latch_ = static_cast<std::uint32_t>(aig_.latches().size());
   boot_ = aig_.add_latch("boot", true);
-  const auto stable_latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const auto stable_latch = stable_latch_ = static_cast<std::uint32_t>(aig_.latches().size());
   const AigLit stable_bit = aig_.add_latch("stable", false);
   stable_ = aig_.make_and(Aig::make_not(boot_), stable_bit);
   transient_ = aig_.make_and(Aig::make_not(boot_), Aig::make_not(stable_bit));
@@ -70,11 +70,34 @@ GrafcetMachine::GrafcetMachine(const semantics::GrafcetCircuit& circuit) : circu
   step_ok_ = aig_.make_ite(boot_, translate(circuit_.initial_event, on_boot_),
                            aig_.make_ite(stable_, event, Aig::make_not(error)));
   for (auto f : circuit_.fired) fired_.push_back(translate(f, on_n_));
+  anomaly_ = aig_.make_and(transient_, error);
+  configuration_latches_ = n + prev.size();
+}
+
+AigLit GrafcetMachine::at_repeated_transient() {
+  if (repeated_ != 0) return repeated_;
+  const AigLit save = aig_.add_input("keep this configuration");
+  const auto armed_latch = static_cast<std::uint32_t>(aig_.latches().size());
+  const AigLit armed = aig_.add_latch("a configuration is kept", false);
+  // Armed from the micro-step after the chosen one to the end of the event (a stable
+  // situation disarms it), so a match is a later micro-step of the same event.
+  aig_.set_next(armed_latch, aig_.make_and(transient_, aig_.make_or(armed, save)));
+  std::vector<AigLit> same{armed, transient_};
+  for (std::size_t l = 0; l < configuration_latches_; ++l) {
+    const AigLit now = aig_.latches()[l].current;
+    const auto shadow_latch = static_cast<std::uint32_t>(aig_.latches().size());
+    const AigLit shadow = aig_.add_latch("kept " + aig_.latches()[l].name, false);
+    aig_.set_next(shadow_latch, aig_.make_ite(armed, shadow, now));
+    same.push_back(aig_.make_xnor(shadow, now));
+  }
+  repeated_ = aig_.make_and(same);
+  return repeated_;
 }
 
 AigLit GrafcetMachine::seen_during_event(AigLit lit, std::string name, bool also_stable) {
   const auto latch = static_cast<std::uint32_t>(aig_.latches().size());
   const AigLit seen = aig_.add_latch(std::move(name), false);
+  observers_.push_back(latch);
   const AigLit now = aig_.make_and(transient_, lit);
   aig_.set_next(latch, aig_.make_and(Aig::make_not(stable_), aig_.make_or(seen, now)));
   return aig_.make_and(stable_, also_stable ? aig_.make_or(seen, lit) : seen);

@@ -37,6 +37,10 @@ class GrafcetMachine {
   semantics::AigLit at_boot() const { return boot_; }
   semantics::AigLit at_stable() const { return stable_; }
   semantics::AigLit at_transient() const { return transient_; }
+  /// at_stable() on a valuation of the machine's latches.
+  bool is_stable(const std::vector<bool>& latches) const {
+    return !latches[boot_latch_] && latches[stable_latch_];
+  }
   /// "A stable situation where `circuit_lit` holds": a literal of the Grafcet circuit over its
   /// state latches (an observable, a property) read on the machine's situation N, in Stable.
   semantics::AigLit in_stable_situation(semantics::AigLit circuit_lit);
@@ -61,6 +65,18 @@ class GrafcetMachine {
   semantics::AigLit in_situation(semantics::AigLit circuit_lit) {
     return translate(circuit_lit, on_n_);
   }
+  /// "This transient micro-step raises a range error or a forcing conflict": the event has no
+  /// end (docs/semantics.md 2.11, the instability check).
+  semantics::AigLit at_anomaly() const { return anomaly_; }
+  /// "The event's evolutions are back in a transient configuration they were in before": a
+  /// lasso, so they never stabilise (the evolutions are deterministic under the event's kept
+  /// inputs). A free input chooses the micro-step whose configuration (N and Q) shadow latches
+  /// keep; the target is a later micro-step of the same event in that configuration. Built on
+  /// first use.
+  semantics::AigLit at_repeated_transient();
+  /// The latches seen_during_event made. In a stable situation they describe the event that
+  /// ended there: a search started in that situation clears them.
+  const std::vector<std::uint32_t>& event_observer_latches() const { return observers_; }
   /// Per transition of the system: it is cleared by this micro-step (meaningful in Trans).
   const std::vector<semantics::AigLit>& fired() const { return fired_; }
   /// Machine latches [0, num_state_latches) are the circuit's state latches, same order.
@@ -75,6 +91,10 @@ class GrafcetMachine {
   semantics::Aig aig_;
   std::vector<semantics::AigLit> on_n_, on_source_, on_boot_;  ///< translation memos
   semantics::AigLit boot_ = 0, stable_ = 0, transient_ = 0, step_ok_ = 0, initial_stable_ = 0;
+  semantics::AigLit anomaly_ = 0, repeated_ = 0;
+  std::size_t configuration_latches_ = 0;
+  std::uint32_t boot_latch_ = 0, stable_latch_ = 0;  ///< N and Q: [0, configuration_latches_)
+  std::vector<std::uint32_t> observers_;
   std::vector<semantics::AigLit> fired_;
 };
 

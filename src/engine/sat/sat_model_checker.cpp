@@ -119,6 +119,9 @@ struct Question {
   std::vector<Goal> goals;
   std::string formula;  ///< shown with the verdict ("AG EF init")
   std::string trivial;  ///< Stuck without goals: why it holds (no step on a loop)
+  /// Grafcet initial-return: the goal is built after the solve, from the initial situations'
+  /// step activities (Run::grafcet_initial_goal).
+  bool initial_activities = false;
   struct Stuck {
     std::size_t goal = 0;
     ReachResult run;            ///< to the situation
@@ -168,12 +171,21 @@ class Run {
         if (f.target) group.push_back(*f.target);
       if (group.size() > 1) groups_.push_back(std::move(group));
     }
+    const auto searched = [](const Question& q) {
+      return q.shape == Question::Shape::Stuck && (!q.goals.empty() || q.initial_activities);
+    };
+    // The AG EF checks start from the stable situations of the runs found: on a Grafcet, runs
+    // to each step make sure there are some when reachable is not asked.
+    if (machine_ && std::any_of(questions.begin(), questions.end(), searched))
+      for (const auto& x : steps_) {
+        const AigLit seen = grafcet_step_seen(x);
+        if (std::find(targets_.begin(), targets_.end(), seen) == targets_.end())
+          add_machine_target(seen);
+      }
     std::optional<std::size_t> loop_limit;
     if (iec_ && iec_->loop_limit != Aig::kFalse && !targets_.empty())
       loop_limit = add_target(iec_->loop_limit);
-    const bool any_stuck = std::any_of(questions.begin(), questions.end(), [](const Question& q) {
-      return q.shape == Question::Shape::Stuck && !q.goals.empty();
-    });
+    const bool any_stuck = std::any_of(questions.begin(), questions.end(), searched);
     {
       // The AG EF checks search after the others, in the third of the time they leave.
       const auto whole = deadline_;
@@ -186,14 +198,17 @@ class Run {
       const bool cut_cycle_possible =
           loop_limit && answers_[*loop_limit].kind != ReachResult::Kind::Unreachable;
       std::size_t left = 0;
-      for (const auto& question : questions)
-        left += question.shape == Question::Shape::Stuck && !question.goals.empty() ? 1 : 0;
+      for (const auto& question : questions) left += searched(question) ? 1 : 0;
       for (auto& question : questions) {
-        if (question.shape != Question::Shape::Stuck || question.goals.empty()) continue;
-        if (cut_cycle_possible)
-          question.stuck_why = iec_->loop_limit_message();
-        else if (!holds_at_once(question))
-          find_stuck(question, part_of_time_left(static_cast<int>(left)));
+        if (!searched(question)) continue;
+        if (question.initial_activities)
+          grafcet_initial_goal(question, part_of_time_left(static_cast<int>(left)));
+        if (!question.goals.empty()) {  // else no goal could be built: stuck_why says why
+          if (cut_cycle_possible)
+            question.stuck_why = iec_->loop_limit_message();
+          else if (!holds_at_once(question))
+            find_stuck(question, part_of_time_left(static_cast<int>(left)));
+        }
         --left;
       }
     }
@@ -395,11 +410,23 @@ class Run {
   /// step on a loop that becomes active again (reentry), a step left and re-entered (local
   /// deadlock), the initial step activity (initial return), a transition that fires (global
   /// deadlock). IC3 only, without fairness (reentry would read AG AF).
+  /// Grafcet: goals at the machine's stable situations, each at least what the explicit
+  /// engine reads, so a situation from which no run meets it fails there too: a step active
+  /// in a stable situation or crossed by an event that stabilises (the explicit engine reads
+  /// a transient step's crossing), a stable situation without the step, an event that clears
+  /// a transition and stabilises, a stable situation with the steps of some initial situation
+  /// (they may differ; grafcet_initial_goal lists them after the solve).
   void stuck_question(StandardCheck c, Question& q) {
     if (options_.algorithm != SatAlgorithm::Ic3 || !task_.fairness.empty()) return;
-    auto& iec = *iec_;
     const auto step_lit = [&](const logic::StepRef& x) {
-      return logic::circuit_literal(iec, *logic::observable_atom(ts_, x.observable));
+      return logic::circuit_literal(circuit(), *logic::observable_atom(ts_, x.observable));
+    };
+    const auto active = [&](const logic::StepRef& x) {
+      return machine_ ? grafcet_step_seen(x) : step_lit(x);
+    };
+    const auto inactive = [&](const logic::StepRef& x) {
+      return machine_ ? machine_->in_stable_situation(Aig::make_not(step_lit(x)))
+                      : Aig::make_not(step_lit(x));
     };
     q.shape = Question::Shape::Stuck;
     switch (c) {
@@ -407,7 +434,7 @@ class Run {
         q.formula = "AG EF X";
         for (const auto& x : steps_)
           if (x.on_loop || !task_.project)
-            q.goals.push_back({step_lit(x),
+            q.goals.push_back({active(x),
                                "step " + logic::describe_step(x) +
                                    ": a reachable situation exists from which it can never "
                                    "become active again (AG EF " +
@@ -424,8 +451,7 @@ class Run {
             const char* what =
                 leave ? "once active, is never left" : "once inactive, never becomes active again";
             q.goals.push_back(
-                {leave ? Aig::make_not(step_lit(x)) : step_lit(x),
-                 "step " + logic::describe_step(x) + ", " + what,
+                {leave ? inactive(x) : active(x), "step " + logic::describe_step(x) + ", " + what,
                  "from the last situation on, " + logic::describe_step(x) + " " + what,
                  x.observable});
           }
@@ -436,6 +462,11 @@ class Run {
           q.shape = Question::Shape::Unsupported;
           return;
         }
+        if (machine_) {
+          q.initial_activities = true;
+          break;
+        }
+        auto& iec = *iec_;
         // The step activity of the initial state (the IEC circuit has one).
         std::vector<bool> inputs(iec.aig.inputs().size(), false), latches;
         for (const auto& l : iec.aig.latches()) latches.push_back(l.initial);
@@ -452,6 +483,14 @@ class Run {
         break;
       }
       case StandardCheck::GlobalDeadlock: {
+        if (machine_) {
+          const AigLit clears = machine_->mutable_aig().make_or(machine_->fired());
+          q.goals.push_back({machine_->seen_during_event(clears, "a transition cleared", false),
+                             "no transition can ever fire again, whatever the inputs",
+                             "the last situation is a global deadlock", std::nullopt});
+          break;
+        }
+        auto& iec = *iec_;
         std::vector<AigLit> fires;
         for (const auto f : iec.fired) fires.push_back(iec.aig.make_and(f, step_ok_));
         if (fires.empty()) {
@@ -494,9 +533,7 @@ class Run {
     switch (c) {
       case StandardCheck::Reachable:
         for (const auto& s : logic::step_refs(ts_, task_.project)) {
-          const AigLit x = m.in_situation(
-              logic::circuit_literal(*grafcet_, *logic::observable_atom(ts_, s.observable)));
-          q.targets.push_back(add_machine_target(m.seen_during_event(x, "seen " + s.step, true)));
+          q.targets.push_back(add_machine_target(grafcet_step_seen(s)));
           q.labels.push_back("step " + logic::describe_step(s) + " is never active");
         }
         break;
@@ -514,6 +551,19 @@ class Run {
       case StandardCheck::OutputConflicts:
         output_conflicts_question(q);
         q.some_stable = add_machine_target(m.at_stable());
+        return q;
+      case StandardCheck::Instability:
+        // An event whose evolutions come back to a configuration (they never stabilise), or
+        // raise a range error or a forcing conflict (grafcet_instability_result).
+        q.shape = Question::Shape::Invariant;
+        q.targets.push_back(add_machine_target(m.at_repeated_transient()));
+        q.targets.push_back(add_machine_target(m.at_anomaly()));
+        return q;
+      case StandardCheck::Reentry:
+      case StandardCheck::LocalDeadlock:
+      case StandardCheck::GlobalDeadlock:
+      case StandardCheck::InitialReturn:
+        stuck_question(c, q);
         return q;
       case StandardCheck::Conflicts:
       case StandardCheck::StoredActions:
@@ -538,6 +588,57 @@ class Run {
     q.shape = Question::Shape::Check;
     return q;
   }
+  /// "A stable situation where step `x` is active, or that ends an event which crossed it"
+  /// (docs/semantics.md 2.5): one observer per step, shared by the checks that read it.
+  AigLit grafcet_step_seen(const logic::StepRef& x) {
+    auto [it, fresh] = step_seen_.try_emplace(x.observable, Aig::kFalse);
+    if (fresh)
+      it->second = machine_->seen_during_event(
+          machine_->in_situation(grafcet_observable_lit(x.observable)), "seen " + x.step, true);
+    return it->second;
+  }
+
+  /// Grafcet initial-return: the step activities of the initial situations, one by one (a
+  /// stable situation not yet left whose steps are none of those found, until the engine
+  /// proves there is none; at most kMaxInitialSituations), then the goal "a stable situation
+  /// with one of them", exactly the explicit engine's. Sets q.goals, or q.stuck_why.
+  void grafcet_initial_goal(Question& q, sat::Deadline deadline) {
+    auto& m = *machine_;
+    Aig& aig = m.mutable_aig();
+    std::vector<AigLit> steps;
+    for (const auto& x : steps_)
+      steps.push_back(m.in_situation(grafcet_observable_lit(x.observable)));
+    const AigLit first = m.at_initial_stable();
+    const auto whole = deadline_;
+    deadline_ = deadline;  // reach_one's
+    std::vector<AigLit> activities;
+    for (;;) {
+      const auto a = reach_one(aig, aig.make_and(first, Aig::make_not(aig.make_or(activities))));
+      if (a.kind == ReachResult::Kind::Unreachable) break;
+      if (a.kind == ReachResult::Kind::Unknown || activities.size() == kMaxInitialSituations) {
+        q.stuck_why = "the steps of the initial situations are not known (" +
+                      std::to_string(activities.size()) + " found; " +
+                      (a.kind == ReachResult::Kind::Unknown
+                           ? a.why
+                           : "more remain past the bound kMaxInitialSituations") +
+                      "); whether the initial situation can be reached again needs the "
+                      "explicit or bdd engine";
+        deadline_ = whole;
+        return;
+      }
+      const auto nodes =
+          aig.evaluate(std::vector<bool>(aig.inputs().size(), false), last_latches(aig, a));
+      std::vector<AigLit> same;
+      for (const auto lit : steps)
+        same.push_back(Aig::value_of(nodes, lit) ? lit : Aig::make_not(lit));
+      activities.push_back(aig.make_and(same));
+    }
+    deadline_ = whole;
+    q.goals.push_back({aig.make_and(m.at_stable(), aig.make_or(activities)), "",
+                       "from the last situation the initial situation is unreachable",
+                       std::nullopt});
+  }
+
   /// A target already over the machine's latches (Grafcet).
   std::size_t add_machine_target(AigLit machine_lit) {
     targets_.push_back(machine_lit);
@@ -1156,7 +1257,9 @@ class Run {
     ReachResult start;  // the initial state, a run of no cycle
     start.kind = ReachResult::Kind::Reached;
     start.inputs.assign(1, std::vector<bool>(aig.inputs().size(), false));
-    out.emplace_back(start, initial);
+    // A Grafcet machine starts in Boot and its micro-steps cross transient situations: only
+    // the stable situations on the runs are situations of the explicit graph.
+    if (!machine_) out.emplace_back(start, initial);
     std::set<std::vector<bool>> seen{initial};
     std::vector<std::size_t> runs;
     for (std::size_t a = 0; a < answers_.size(); ++a)
@@ -1173,7 +1276,7 @@ class Run {
         const auto nodes = aig.evaluate(r.inputs[j - 1], at[k]);
         for (std::size_t l = 0; l < at[k].size(); ++l)
           at[k][l] = Aig::value_of(nodes, aig.latches()[l].next);
-        if (!seen.insert(at[k]).second) continue;
+        if ((machine_ && !machine_->is_stable(at[k])) || !seen.insert(at[k]).second) continue;
         ReachResult run = r;
         run.depth = j;
         run.inputs.resize(j + 1);
@@ -1211,6 +1314,11 @@ class Run {
       if (deadline.passed()) break;
       ++tried;
       for (std::uint32_t l = 0; l < latches.size(); ++l) from.set_initial(l, latches[l]);
+      // A stable situation's event observers describe the event that ended there, not a run
+      // from it. Cleared, the start may be a state no run reaches (the observers read nothing
+      // else), so the invariants proved for the machine are not assumed.
+      if (machine_)
+        for (const auto l : machine_->event_observer_latches()) from.set_initial(l, false);
       sat::ReachQuery query{&from, step_ok_, {}, true};
       for (const auto& g : q.goals) query.targets.push_back(g.lit);
       sat::BoundOptions bounds;
@@ -1224,13 +1332,14 @@ class Run {
         const auto slice = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                               std::chrono::duration<double>(kStuckSlice));
         io.deadline.at = io.deadline.at ? std::min(*io.deadline.at, slice) : slice;
-        io.known_invariant = &known_;
+        io.known_invariant = machine_ ? nullptr : &known_;
         const auto r = sat::ic3(query, k, io);
         if (r.kind != ReachResult::Kind::Unreachable ||
             !sat::recheck(query, k, r.certificate, deadline).ok)
           continue;
         q.stuck = Question::Stuck{k, run, false};
         q.stuck_certificate = sat::certificate_text(from, r.certificate);
+        if (machine_) return;  // "no successor" is an edge question of the explicit graph
         // No successor at all, or successors that fire nothing (global-deadlock's wording).
         sat::ReachQuery any_step{&from, step_ok_, {step_ok_}, true};
         sat::BoundOptions now;
@@ -1374,7 +1483,10 @@ class Run {
   /// The machine's run as a run of stable situations: each Stable frame is a row, with the
   /// inputs of the event that left the previous one and every transition cleared on the way;
   /// an event back to the same situation (a stutter, no edge of the explicit graph) is dropped.
-  logic::Trace grafcet_trace_of(const ReachResult& r, logic::TraceKind kind) const {
+  /// With `before_any_situation`, a run that ends before its first stable situation (an
+  /// instability of the start) gives a trace without rows instead of an error.
+  logic::Trace grafcet_trace_of(const ReachResult& r, logic::TraceKind kind,
+                                bool before_any_situation = false) const {
     const Aig& aig = machine_->aig();
     std::vector<bool> latches;
     for (const auto& l : aig.latches()) latches.push_back(l.initial);
@@ -1409,8 +1521,10 @@ class Run {
       for (std::size_t l = 0; l < latches.size(); ++l)
         latches[l] = Aig::value_of(nodes, aig.latches()[l].next);
     }
-    if (t.steps.empty())
+    if (t.steps.empty()) {
+      if (before_any_situation) return t;
       throw std::logic_error("sat engine: a Grafcet run without a stable situation");
+    }
     // The model's values of an integer input may move inside its region while another input
     // changes: one event per row, as `sfcv simulate` reads it (docs/semantics.md 2.15). The
     // replay runs the system, which stops at the deadline: a run found by then is still a run
@@ -1697,6 +1811,11 @@ class Run {
 
   PropertyResult stuck_result(StandardCheck c, PropertyResult r, const Question& q) {
     r.formula = q.formula;
+    if (q.goals.empty() && q.initial_activities) {
+      r.verdict = Verdict::Unknown;
+      r.message = q.stuck_why;
+      return r;
+    }
     if (q.goals.empty()) {
       r.verdict = Verdict::Holds;
       r.message = q.trivial;
@@ -1726,19 +1845,78 @@ class Run {
                              ts_.describe(r.trace->steps.front().state) +
                              " can never be reached again");
         break;
-      case StandardCheck::GlobalDeadlock:
-        r.findings.push_back(
-            "situation " + situation + " (after " + std::to_string(found.run.depth) +
-            (found.run.depth == 1 ? " evolution): " : " evolutions): ") +
-            (found.no_successor ? "no successor at all (the assumptions exclude every input)"
-                                : goal.finding));
+      case StandardCheck::GlobalDeadlock: {
+        // A Grafcet run counts micro-steps; its trace counts the stable situations.
+        const std::size_t depth = machine_ ? r.trace->steps.size() - 1 : found.run.depth;
+        r.findings.push_back("situation " + situation + " (after " + std::to_string(depth) +
+                             (depth == 1 ? " evolution): " : " evolutions): ") +
+                             (found.no_successor
+                                  ? "no successor at all (the assumptions exclude every input)"
+                                  : goal.finding));
         break;
+      }
       default:
         r.findings.push_back(goal.finding);
         r.message = "the ic3 engine reports the first violation it proves";
         break;
     }
     r.certificate = q.stuck_certificate;
+    return r;
+  }
+
+  /// The circuit inputs of a Grafcet run's Boot step, as `sfcv simulate --set` reads them.
+  std::string initial_valuation_text(const std::vector<bool>& bits) const {
+    const auto values = semantics::inputs_from_bits(ts_, *grafcet_, bits);
+    std::string out;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const auto& in = ts_.inputs()[i];
+      out += out.empty() ? "" : " ";
+      out += in.type.kind == model::TypeKind::Bool ? (values[i] ? "" : "!") + in.name
+                                                   : in.name + "=" + std::to_string(values[i]);
+    }
+    return "initial inputs " + out;
+  }
+
+  /// Grafcet instability (docs/semantics.md 2.11), in the BDD engine's words: an event whose
+  /// evolutions repeat a configuration, or raise a range error or a forcing conflict, from a
+  /// stable situation or during the start. Holds when both are proved unreachable.
+  PropertyResult grafcet_instability_result(PropertyResult r, const Question& q) {
+    const std::string what[2] = {"starts transient evolutions that never reach a stable situation",
+                                 "raises a range error or a forcing conflict"};
+    const std::string at_start[2] = {
+        "instability: under some initial input valuation the transient evolutions never reach "
+        "a stable situation",
+        "range error: under some initial input valuation an evolution raises a range error or "
+        "a forcing conflict"};
+    std::string why;
+    bool proved = true;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const auto& a = answers_[q.targets[k]];
+      proved = proved && a.kind == ReachResult::Kind::Unreachable;
+      if (a.kind == ReachResult::Kind::Unknown && why.empty()) why = a.why;
+      if (a.kind != ReachResult::Kind::Reached) continue;
+      r.verdict = Verdict::Violated;
+      auto trace = grafcet_trace_of(a, logic::TraceKind::Counterexample, true);
+      if (trace.steps.empty()) {  // no row to show: the valuation is in the words
+        r.findings.push_back(at_start[k] + " (" + initial_valuation_text(a.inputs.front()) + ")");
+        continue;
+      }
+      r.findings.push_back(std::string(k == 0 ? "instability" : "range error") + ": from " +
+                           ts_.describe(trace.steps.back().state) + " an input event " + what[k]);
+      if (!r.trace) {
+        trace.note = "an input event from the last situation " + what[k];
+        r.trace = std::move(trace);
+      }
+    }
+    if (r.verdict == Verdict::Violated) return r;
+    if (proved) {
+      r.verdict = Verdict::Holds;
+      r.message = "every evolution reaches a stable situation";
+      r.certificate = certificates(q);
+    } else {
+      r.verdict = Verdict::Unknown;
+      r.message = why;
+    }
     return r;
   }
 
@@ -1758,14 +1936,15 @@ class Run {
       r.message =
           !q.refusal.empty() ? q.refusal
           : grafcet_
-              ? "not checked: the " + engine +
-                    " engine does not decide the standard checks of an IEC 60848 grafcet yet; "
-                    "use --engine explicit, bdd or auto"
+              ? "not checked by the " + engine +
+                    " engine on an IEC 60848 grafcet; use --engine explicit, bdd or auto"
               : "not checked by the " + engine + " engine; use --engine explicit, bdd or auto";
       return r;
     }
     if (q.shape == Question::Shape::Findings) return findings_result(std::move(r), q);
     if (q.shape == Question::Shape::Stuck) return stuck_result(c, std::move(r), q);
+    if (q.shape == Question::Shape::Invariant && grafcet_)
+      return grafcet_instability_result(std::move(r), q);
     if (q.shape == Question::Shape::Invariant) {  // Instability: a reachable range error
       const auto& a = answers_[q.targets.front()];
       if (a.kind == ReachResult::Kind::Reached) {
@@ -1832,6 +2011,7 @@ class Run {
   std::optional<semantics::TransitionCircuit> iec_;
   std::optional<semantics::GrafcetCircuit> grafcet_;
   std::optional<sat::GrafcetMachine> machine_;  ///< over *grafcet_
+  std::map<std::uint32_t, AigLit> step_seen_;   ///< grafcet_step_seen, per observable
   AigLit step_ok_ = Aig::kTrue;
   std::vector<AigLit> targets_;
   /// Per question of two targets or more, its targets (steps, transitions, findings): IC3 tries

@@ -271,6 +271,8 @@ class GrafcetSystem final : public TransitionSystem {
   std::int64_t value_of(StateView s, int var) const;
   Val eval(const CExpr& e, const Ctx& c) const;
   Partial inputs_of(StateView s) const;
+  /// The region (Partial::val) of input `input` that holds `value`.
+  std::int64_t region_of(std::size_t input, std::int64_t value) const;
   InputCube cube_of(const Partial& p) const;
 
   enum class Status { Stable, Split, Anomaly };
