@@ -1,6 +1,8 @@
 #include "engine/sat/unrolling.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdlib>
 
 namespace sfcv::engine::sat {
 
@@ -53,72 +55,238 @@ int Unrolling::conjunction(std::vector<int> lits) {
   return r;
 }
 
-int Unrolling::ite(int s, int a, int b) {
+namespace {
+
+// The variables of a 4-input truth table: bit m of kVar[i] is bit i of m.
+constexpr std::uint16_t kVar[4] = {0xAAAA, 0xCCCC, 0xF0F0, 0xFF00};
+
+std::uint16_t u16(unsigned v) {
+  return static_cast<std::uint16_t>(v & 0xFFFFU);
+}
+/// The cofactors of f by variable v (v false, v true), as functions of all four variables.
+std::uint16_t cofactor0(std::uint16_t f, int v) {
+  const unsigned low = f & ~unsigned{kVar[v]};
+  return u16(low | (low << (1U << v)));
+}
+std::uint16_t cofactor1(std::uint16_t f, int v) {
+  const unsigned high = f & unsigned{kVar[v]};
+  return u16(high | (high >> (1U << v)));
+}
+bool depends_on(std::uint16_t f, int v) {
+  return cofactor0(f, v) != cofactor1(f, v);
+}
+
+/// Minato-Morreale: appends an irredundant cover c with on <= c <= upper (cubes as in
+/// Unrolling::cover_of, each extending `cube`) and returns c. Requires on <= upper.
+std::uint16_t isop(std::uint16_t on, std::uint16_t upper, int var, std::uint8_t cube,
+                   std::vector<std::uint8_t>& out) {
+  if (on == 0) return 0;
+  if (upper == 0xFFFF) {
+    out.push_back(cube);
+    return 0xFFFF;
+  }
+  while (!depends_on(on, var) && !depends_on(upper, var)) --var;  // constants returned above
+  const std::uint16_t on0 = cofactor0(on, var), on1 = cofactor1(on, var);
+  const std::uint16_t up0 = cofactor0(upper, var), up1 = cofactor1(upper, var);
+  const auto bit = static_cast<std::uint8_t>(1U << var);
+  const std::uint16_t c0 = isop(u16(on0 & ~unsigned{up1}), up0, var - 1, cube | bit, out);
+  const std::uint16_t c1 = isop(u16(on1 & ~unsigned{up0}), up1, var - 1,
+                                static_cast<std::uint8_t>(cube | bit | bit << 4), out);
+  const std::uint16_t rest =
+      isop(u16((on0 & ~unsigned{c0}) | (on1 & ~unsigned{c1})), u16(up0 & up1), var - 1, cube, out);
+  return u16((c0 & ~unsigned{kVar[var]}) | (c1 & kVar[var]) | rest);
+}
+
+}  // namespace
+
+const std::vector<std::uint8_t>& Unrolling::cover_of(std::uint16_t truth) {
+  auto [it, added] = covers_.try_emplace(truth);
+  if (added) isop(truth, truth, 3, 0, it->second);
+  return it->second;
+}
+
+int Unrolling::clauses_of(std::uint16_t truth) {
+  return static_cast<int>(cover_of(truth).size() + cover_of(u16(~unsigned{truth})).size());
+}
+
+int Unrolling::gate(std::uint16_t truth, const std::vector<int>& lits) {
   const int t = solver_.true_lit();
-  if (s < 0) {
-    s = -s;
-    std::swap(a, b);
-  }
-  if (s == t) return a;
-  if (a == b) return a;
-  if (a == t || a == s) return -conjunction({-s, -b});  // s | b
-  if (a == -t || a == -s) return conjunction({-s, b});
-  if (b == t || b == -s) return -conjunction({s, -a});  // !s | a
-  if (b == -t || b == s) return conjunction({s, a});
-  int& slot = gates_[{0, s, a, b}];
-  if (slot != 0) return slot;
-  const int r = solver_.new_var();
-  solver_.add_clause({-s, -a, r});
-  solver_.add_clause({-s, a, -r});
-  solver_.add_clause({s, -b, r});
-  solver_.add_clause({s, b, -r});
-  solver_.add_clause({-a, -b, r});  // redundant, helps propagation
-  solver_.add_clause({a, b, -r});
-  slot = r;
-  return r;
-}
-
-bool Unrolling::ite_shape(std::uint32_t node, AigLit& s, AigLit& a, AigLit& b) const {
-  const auto& n = aig_.nodes()[node];
-  if (!Aig::is_negated(n.left) || !Aig::is_negated(n.right)) return false;
-  const auto x = Aig::node_of(n.left), y = Aig::node_of(n.right);
-  const auto& nx = aig_.nodes()[x];
-  const auto& ny = aig_.nodes()[y];
-  // A node made after the unrolling (x or y past fanout_) has an unknown fan-out: not merged.
-  if (nx.kind != Aig::NodeKind::And || ny.kind != Aig::NodeKind::And || x >= fanout_.size() ||
-      y >= fanout_.size() || fanout_[x] != 1 || fanout_[y] != 1)
-    return false;
-  const AigLit xs[2] = {nx.left, nx.right}, ys[2] = {ny.left, ny.right};
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 2; ++j)
-      if (xs[i] == (ys[j] ^ 1u)) {
-        s = xs[i];
-        a = xs[1 - i];
-        b = ys[1 - j];
-        return true;
+  // The distinct solver variables the leaves read; constants are cofactored away.
+  std::vector<int> vars;
+  for (int l : lits)
+    if (std::abs(l) != t) vars.push_back(std::abs(l));
+  std::sort(vars.begin(), vars.end());
+  vars.erase(std::unique(vars.begin(), vars.end()), vars.end());
+  // The function of `vars` (at most four), then of the variables it depends on alone.
+  auto rebase = [&](const std::vector<int>& over) {
+    unsigned out = 0;
+    for (unsigned m = 0; m < 16; ++m) {
+      unsigned leaf_minterm = 0;
+      for (std::size_t i = 0; i < lits.size(); ++i) {
+        const int l = lits[i];
+        bool value;
+        if (std::abs(l) == t) {
+          value = l > 0;
+        } else {
+          const auto at = std::lower_bound(over.begin(), over.end(), std::abs(l)) - over.begin();
+          value = at < static_cast<std::ptrdiff_t>(over.size()) && over[at] == std::abs(l) &&
+                  ((m >> at) & 1U);
+          if (l < 0) value = !value;
+        }
+        if (value) leaf_minterm |= 1U << i;
       }
-  return false;
+      if ((truth >> leaf_minterm) & 1U) out |= 1U << m;
+    }
+    return u16(out);
+  };
+  std::uint16_t f = rebase(vars);
+  std::vector<int> support;
+  for (std::size_t i = 0; i < vars.size(); ++i)
+    if (depends_on(f, static_cast<int>(i))) support.push_back(vars[i]);
+  if (support.size() != vars.size()) f = rebase(support);
+  const auto n = support.size();
+  if (n == 0) return f & 1U ? t : -t;
+  // One minterm of f (or of !f) over the support: an AND of literals (or its negation).
+  const auto ones = std::popcount(unsigned{f});
+  const int one_minterm = 16 >> n;
+  if (ones == one_minterm || ones == 16 - one_minterm) {
+    const bool negated = ones != one_minterm;
+    const unsigned g = negated ? ~unsigned{f} : f;
+    const unsigned m = static_cast<unsigned>(std::countr_zero(g));
+    std::vector<int> and_lits;
+    for (std::size_t i = 0; i < n; ++i)
+      and_lits.push_back((m >> i) & 1U ? support[i] : -support[i]);
+    const int r = conjunction(std::move(and_lits));
+    return negated ? -r : r;
+  }
+  // A fresh gate in the polarity false on all-false inputs (f and !f share one variable).
+  const bool negated = f & 1U;
+  if (negated) f = u16(~unsigned{f});
+  std::vector<int> key{0, f};
+  key.insert(key.end(), support.begin(), support.end());
+  int& slot = gates_[key];
+  if (slot == 0) {
+    const int r = solver_.new_var();
+    std::vector<int> clause;
+    for (const bool positive : {true, false})
+      for (const std::uint8_t cube : cover_of(positive ? f : u16(~unsigned{f}))) {
+        clause.assign(1, positive ? r : -r);  // cube -> r (cube of f), cube -> !r (of !f)
+        for (std::size_t i = 0; i < n; ++i)
+          if ((cube >> i) & 1U) clause.push_back((cube >> (i + 4)) & 1U ? -support[i] : support[i]);
+        solver_.add_clause(clause);
+      }
+    slot = r;
+  }
+  return negated ? -slot : slot;
 }
 
-std::vector<AigLit> Unrolling::tree_leaves(std::uint32_t node, std::size_t frame) {
-  constexpr std::size_t kMaxLeaves = 16;  // long clauses propagate poorly
-  const auto& n = aig_.nodes()[node];
-  std::vector<AigLit> leaves, todo{n.right, n.left};
-  while (!todo.empty()) {
-    const AigLit l = todo.back();
-    todo.pop_back();
-    const auto c = Aig::node_of(l);
-    const auto& cn = aig_.nodes()[c];
-    if (!Aig::is_negated(l) && cn.kind == Aig::NodeKind::And && c < fanout_.size() &&
-        fanout_[c] == 1 && literal_if_encoded(l, frame) == 0 &&
-        leaves.size() + todo.size() + 2 <= kMaxLeaves) {
-      todo.push_back(cn.right);
-      todo.push_back(cn.left);
-    } else {
-      leaves.push_back(l);
+const Unrolling::Cut& Unrolling::best_cut(std::uint32_t node) {
+  if (cuts_.size() < aig_.nodes().size()) cuts_.resize(aig_.nodes().size());
+  std::vector<std::uint32_t> stack{node};  // iterative post-order: cones may be deep
+  while (!stack.empty()) {
+    const auto n = stack.back();
+    if (!cuts_[n].empty()) {
+      stack.pop_back();
+      continue;
     }
+    const auto& nd = aig_.nodes()[n];
+    bool missing = false;
+    for (const AigLit in : {nd.left, nd.right}) {
+      const auto c = Aig::node_of(in);
+      if (aig_.nodes()[c].kind == Aig::NodeKind::And && cuts_[c].empty()) {
+        stack.push_back(c);
+        missing = true;
+      }
+    }
+    if (missing) continue;
+    enumerate_cuts(n);
+    stack.pop_back();
   }
-  return leaves;
+  return cuts_[node].front();
+}
+
+void Unrolling::enumerate_cuts(std::uint32_t node) {
+  constexpr std::size_t kCutsPerNode = 6;
+  const auto& nd = aig_.nodes()[node];
+  // A leaf's share of the cone behind it: its best cut's flow over its readers.
+  auto leaf_flow = [this](std::uint32_t c) -> float {
+    if (aig_.nodes()[c].kind != Aig::NodeKind::And) return 0;
+    const auto readers = c < fanout_.size() ? std::max<std::uint32_t>(fanout_[c], 1) : 1;
+    return cuts_[c].front().flow / static_cast<float>(readers);
+  };
+  auto fanin_cuts = [&](AigLit in) {
+    const auto c = Aig::node_of(in);
+    std::vector<Cut> out;
+    if (aig_.nodes()[c].kind == Aig::NodeKind::And) out = cuts_[c];
+    Cut trivial;
+    trivial.leaves[0] = c;
+    trivial.size = 1;
+    trivial.truth = kVar[0];
+    out.push_back(trivial);
+    return out;
+  };
+  // `truth` over `from`'s leaves, as a function of `to`'s (a superset).
+  auto stretch = [](const Cut& from, const Cut& to) {
+    unsigned at[4] = {0, 0, 0, 0};
+    for (unsigned i = 0, j = 0; i < from.size; ++i) {
+      while (to.leaves[j] != from.leaves[i]) ++j;
+      at[i] = j;
+    }
+    unsigned out = 0;
+    for (unsigned m = 0; m < 16; ++m) {
+      unsigned fm = 0;
+      for (unsigned i = 0; i < from.size; ++i) fm |= ((m >> at[i]) & 1U) << i;
+      out |= ((from.truth >> fm) & 1U) << m;
+    }
+    return out;
+  };
+  const auto left = fanin_cuts(nd.left), right = fanin_cuts(nd.right);
+  std::vector<Cut> cuts;
+  for (const auto& a : left)
+    for (const auto& b : right) {
+      Cut c;
+      std::size_t i = 0, j = 0;
+      bool fits = true;
+      while (i < a.size || j < b.size) {
+        std::uint32_t next;
+        if (j == b.size || (i < a.size && a.leaves[i] < b.leaves[j])) {
+          next = a.leaves[i++];
+        } else if (i == a.size || b.leaves[j] < a.leaves[i]) {
+          next = b.leaves[j++];
+        } else {
+          next = a.leaves[i++];
+          ++j;
+        }
+        if (c.size == 4) {
+          fits = false;
+          break;
+        }
+        c.leaves[c.size++] = next;
+      }
+      if (!fits) continue;
+      const unsigned fa = stretch(a, c) ^ (Aig::is_negated(nd.left) ? 0xFFFFU : 0U);
+      const unsigned fb = stretch(b, c) ^ (Aig::is_negated(nd.right) ? 0xFFFFU : 0U);
+      c.truth = u16(fa & fb);
+      c.flow = static_cast<float>(clauses_of(c.truth));
+      for (std::uint8_t k = 0; k < c.size; ++k) c.flow += leaf_flow(c.leaves[k]);
+      cuts.push_back(c);
+    }
+  std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) {
+    if (x.flow != y.flow) return x.flow < y.flow;
+    if (x.size != y.size) return x.size < y.size;
+    return x.leaves < y.leaves;
+  });
+  // One cut per leaf set (the same function): the first, then the best few.
+  auto same_leaves = [](const Cut& x, const Cut& y) {
+    return x.size == y.size && x.leaves == y.leaves;
+  };
+  std::vector<Cut> kept;
+  for (const auto& c : cuts) {
+    if (kept.size() == kCutsPerNode) break;
+    if (std::none_of(kept.begin(), kept.end(), [&](const Cut& k) { return same_leaves(k, c); }))
+      kept.push_back(c);
+  }
+  cuts_[node] = std::move(kept);
 }
 
 int Unrolling::literal(AigLit lit, std::size_t frame) {
@@ -170,24 +338,17 @@ int Unrolling::literal(AigLit lit, std::size_t frame) {
         break;
       case Aig::NodeKind::And: {
         if (simplify_) {
-          AigLit ss = 0, sa = 0, sb = 0;
-          const bool is_ite = ite_shape(it.node, ss, sa, sb);
-          const auto leaves =
-              is_ite ? std::vector<AigLit>{ss, sa, sb} : tree_leaves(it.node, it.frame);
+          const Cut& cut = best_cut(it.node);
           bool missing = false;
-          for (auto l : leaves)
-            if (slot(Aig::node_of(l), it.frame) == 0) {
-              stack.push_back({Aig::node_of(l), it.frame});
+          for (std::uint8_t k = 0; k < cut.size; ++k)
+            if (slot(cut.leaves[k], it.frame) == 0) {
+              stack.push_back({cut.leaves[k], it.frame});
               missing = true;
             }
           if (missing) continue;
           std::vector<int> lits;
-          for (auto l : leaves) {
-            const int v = slot(Aig::node_of(l), it.frame);
-            lits.push_back(Aig::is_negated(l) ? -v : v);
-          }
-          // node = !(s & a) & !(!s & b) = !(s ? a : b)
-          result = is_ite ? -ite(lits[0], lits[1], lits[2]) : conjunction(std::move(lits));
+          for (std::uint8_t k = 0; k < cut.size; ++k) lits.push_back(slot(cut.leaves[k], it.frame));
+          result = gate(cut.truth, lits);
           break;
         }
         const int a = slot(Aig::node_of(node.left), it.frame);

@@ -6,11 +6,16 @@
 // initial value when the unrolling starts in the initial state).
 //
 // Simplifying unrollings (BMC, k-induction) also fold constants (the initial state's values
-// flow through the first frames as constants, no clauses) and hash AND gates on their solver
+// flow through the first frames as constants, no clauses) and hash gates on their solver
 // literals across all frames (a gate whose inputs are the same literals as one encoded before,
 // in any frame, is that gate): on bench/run's levels 8 the first frames cost no clauses and the
-// frames where part of the state stays unchanged share their gates (docs/engines.md).
+// frames where part of the state stays unchanged share their gates (docs/engines.md). They
+// encode a gate with up to four inputs per solver variable, not one per AND node: each node
+// takes the cut of its fan-in cone that costs the fewest clauses (priority cuts with area flow,
+// as in Een, Mishchenko and Sorensson, "Applying logic synthesis for speeding up SAT", 2007),
+// its clauses the irredundant covers of the cut's function and of its negation.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <unordered_map>
@@ -47,24 +52,38 @@ class Unrolling {
  private:
   /// The literal of AND over `lits` (simplified and hashed when simplify_).
   int conjunction(std::vector<int> lits);
-  /// The literal of (s ? a : b), simplified and hashed.
-  int ite(int s, int a, int b);
-  /// Simplify: the fan-in literals of the AND tree at And node `node` at `frame`: non-negated
-  /// And inputs read by this tree alone (fanout 1) and not encoded yet are merged in.
-  std::vector<semantics::AigLit> tree_leaves(std::uint32_t node, std::size_t frame);
-  /// Simplify: node = !(s & a) & !(!s & b), both inner gates read by it alone: {s, a, b}.
-  bool ite_shape(std::uint32_t node, semantics::AigLit& s, semantics::AigLit& a,
-                 semantics::AigLit& b) const;
+  /// A cut of an And node's fan-in cone: its leaves (node ids, ascending) and the node's
+  /// value as a function of theirs (bit m: the value when leaf i has bit i of m).
+  struct Cut {
+    std::array<std::uint32_t, 4> leaves{};
+    std::uint8_t size = 0;
+    std::uint16_t truth = 0;
+    float flow = 0;  ///< area flow: clauses of this cut and its share of the leaves' cones
+  };
+  /// The literal of the function `truth` (a 4-input truth table) of `lits`, simplified and
+  /// hashed: constants and repeated variables folded, ANDs (of literals, or negated) through
+  /// conjunction.
+  int gate(std::uint16_t truth, const std::vector<int>& lits);
+  /// Simplify: the chosen cut of And node `node` (computed with its fan-in's on first use).
+  const Cut& best_cut(std::uint32_t node);
+  void enumerate_cuts(std::uint32_t node);
+  /// Clauses of the encoding of `truth` (its cover and its negation's): the cost of a cut.
+  int clauses_of(std::uint16_t truth);
+  /// The irredundant cover of `truth`: per cube, the bits of its literals' variables
+  /// (low nibble) and their polarities (high nibble).
+  const std::vector<std::uint8_t>& cover_of(std::uint16_t truth);
 
   const semantics::Aig& aig_;
   Solver& solver_;
   bool from_initial_;
   bool simplify_;
-  /// simplify: the gate already encoded for each key (an AND's sorted literals, or 0 and an
-  /// ITE's three).
+  /// simplify: the gate already encoded for each key (an AND's sorted literals, or 0, the
+  /// truth table and its sorted variables).
   std::map<std::vector<int>, int> gates_;
   std::unordered_map<std::uint64_t, int> pairs_;  ///< simplify: two-input ANDs (most gates)
-  std::vector<std::uint32_t> fanout_;  ///< simplify: readers of each node (gates and latches)
+  std::vector<std::uint32_t> fanout_;   ///< simplify: readers of each node (gates and latches)
+  std::vector<std::vector<Cut>> cuts_;  ///< simplify: [node] its priority cuts, best first
+  std::unordered_map<std::uint16_t, std::vector<std::uint8_t>> covers_;
   std::vector<std::vector<int>> lit_of_node_;  ///< [frame][node]: its literal, 0 = none
 };
 
