@@ -307,8 +307,9 @@ TEST(Portfolio, ARacerThatDoesNotStopIsLeftBehindOnceEveryQuestionIsDecided) {
 }
 
 TEST(Portfolio, ARacerThatDoesNotStopPastTheDeadlineLeavesItsQuestionsUnknown) {
-  // Only the BDD slot checks these; it does not stop at the deadline: past it and the grace,
-  // the report comes with the questions unknown and says why, never with a verdict.
+  // The BDD slot does not stop at the deadline (and IC3 does not decide these in the time):
+  // past it and the grace, the report comes with the questions unknown and says why, the BDD
+  // slot's account first, never with a verdict.
   const auto s = load_iec(bench::counter_iec(30));
   ASSERT_TRUE(s.ts);
   auto task = test::task_for(s.project, *s.ts, {}, {});
@@ -323,10 +324,32 @@ TEST(Portfolio, ARacerThatDoesNotStopPastTheDeadlineLeavesItsQuestionsUnknown) {
   for (const auto& r : report.results) {
     SCOPED_TRACE(r.name);
     EXPECT_EQ(r.verdict, Verdict::Unknown);
-    EXPECT_EQ(
-        r.message.rfind("time limit reached; the bdd engine had not stopped 0.2 s after it", 0), 0u)
+    EXPECT_EQ(r.message.rfind(
+                  "bdd: time limit reached; the bdd engine had not stopped 0.2 s after it", 0),
+              0u)
         << r.message;
   }
+  release(*stuck);
+}
+
+TEST(Portfolio, AnUndecidedPropertyGivesEveryEnginesAccount) {
+  // AG c < top - 1 on the 30-bit counter is violated after 2^31 cycles: no racer decides it
+  // in 0.3 s. The answer says what stopped each of them, not the BDD slot's reason alone
+  // (an AGRAFE plant read "time limit reached in a BDD operation" where IC3 had decided 50
+  // of its 64 steps).
+  const auto s = load_iec(bench::counter_iec(30));
+  ASSERT_TRUE(s.ts);
+  auto task = deep_task(s, 30);
+  task.limits.set_timeout(0.3);
+  auto stuck = std::make_shared<StuckEngine>();
+  const auto report = make_portfolio_model_checker(race_with_stuck_bdd(stuck))->check(task);
+  ASSERT_EQ(report.results.size(), 1u);
+  const auto& r = report.results[0];
+  EXPECT_EQ(r.verdict, Verdict::Unknown) << r.message;
+  EXPECT_EQ(r.message.rfind("bdd: time limit reached; the bdd engine had not stopped", 0), 0u)
+      << r.message;
+  EXPECT_NE(r.message.find("; ic3: "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("; bmc: "), std::string::npos) << r.message;
   release(*stuck);
 }
 

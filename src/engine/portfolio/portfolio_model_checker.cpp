@@ -485,31 +485,51 @@ class PortfolioModelChecker final : public ModelChecker {
     return out;
   }
 
-  /// Why `question` is undecided, in the words of an engine that handles it (unknown, and the
-  /// limit that stopped it). The BDD engine and the explicit probe handle every question of
-  /// the race, IC3 and BMC only some: their "not checked by the ic3 engine" is the account
-  /// only when no engine handles the question.
+  /// Why `question` is undecided, in the words of the engines that handle it (unknown, and the
+  /// limit that stopped each: "bdd: time limit reached in a BDD operation; ic3: 14 of 64
+  /// undecided ..."), with the findings of the one that found most. The BDD engine and the
+  /// explicit probe handle every question of the race, IC3 and BMC only some: their "not
+  /// checked by the ic3 engine" is the account only when no engine handles the question.
   static PropertyResult undecided_account(const std::vector<Racer>& racers,
                                           const std::optional<CheckReport>& probe,
                                           std::size_t index, const PropertyResult& question) {
     const auto& bdd = racers[0];
-    std::vector<PropertyResult> accounts;
+    std::vector<std::pair<std::string, PropertyResult>> accounts;  // engine, its answer
     if (bdd.report) {
-      if (const auto* r = find_result(*bdd.report, index, question)) accounts.push_back(*r);
+      if (const auto* r = find_result(*bdd.report, index, question))
+        accounts.emplace_back(bdd.name, *r);
     } else if (!bdd.stopped.empty()) {
       PropertyResult r = question;
       r.verdict = Verdict::Unknown;
       r.message = bdd.stopped;
-      accounts.push_back(std::move(r));
+      accounts.emplace_back(bdd.name, std::move(r));
     }
     if (probe)
-      if (const auto* r = find_result(*probe, index, question)) accounts.push_back(*r);
+      if (const auto* r = find_result(*probe, index, question))
+        accounts.emplace_back("explicit", *r);
     for (std::size_t k = 1; k < racers.size(); ++k)
       if (racers[k].report)
-        if (const auto* r = find_result(*racers[k].report, index, question)) accounts.push_back(*r);
-    for (const auto& a : accounts)
-      if (a.verdict != Verdict::NotChecked) return a;
-    return accounts.empty() ? question : accounts.front();
+        if (const auto* r = find_result(*racers[k].report, index, question))
+          accounts.emplace_back(racers[k].name, *r);
+    if (accounts.empty()) return question;
+    const PropertyResult first = accounts.front().second;
+    std::erase_if(accounts, [](const auto& a) { return a.second.verdict == Verdict::NotChecked; });
+    if (accounts.empty()) return first;  // nobody handles it: the first "not checked" says so
+    if (accounts.size() == 1) return accounts.front().second;
+    const auto most =
+        std::max_element(accounts.begin(), accounts.end(), [](const auto& a, const auto& b) {
+          return a.second.findings_total < b.second.findings_total;
+        });
+    PropertyResult out = most->second;
+    out.message.clear();
+    std::vector<std::string> said;
+    for (const auto& [engine, r] : accounts) {
+      if (r.message.empty() || std::find(said.begin(), said.end(), r.message) != said.end())
+        continue;
+      said.push_back(r.message);
+      out.message += (out.message.empty() ? "" : "; ") + engine + ": " + r.message;
+    }
+    return out;
   }
 
   PortfolioOptions options_;

@@ -132,6 +132,22 @@ struct Question {
   std::string stuck_why;          ///< no violation found: how far the search went
 };
 
+/// A deadline for one scope: the previous one is put back when it ends (a limit that throws
+/// included).
+class ScopedDeadline {
+ public:
+  ScopedDeadline(sat::Deadline& slot, sat::Deadline scoped) : slot_(slot), saved_(slot) {
+    slot_ = scoped;
+  }
+  ~ScopedDeadline() { slot_ = saved_; }
+  ScopedDeadline(const ScopedDeadline&) = delete;
+  ScopedDeadline& operator=(const ScopedDeadline&) = delete;
+
+ private:
+  sat::Deadline& slot_;
+  sat::Deadline saved_;
+};
+
 class Run {
  public:
   Run(const logic::CheckTask& task, const SatEngineOptions& options)
@@ -188,10 +204,10 @@ class Run {
     const bool any_stuck = std::any_of(questions.begin(), questions.end(), searched);
     {
       // The AG EF checks search after the others, in the third of the time they leave.
-      const auto whole = deadline_;
-      if (any_stuck && deadline_.at) deadline_.at = part_of_time_left_at(2, 3);
+      auto first = deadline_;
+      if (any_stuck && first.at) first.at = part_of_time_left_at(2, 3);
+      const ScopedDeadline scope(deadline_, first);
       answers_ = solve();
-      deadline_ = whole;
     }
     if (loop_limit) distrust_cut_cycles(*loop_limit);
     if (any_stuck) {
@@ -609,8 +625,7 @@ class Run {
     for (const auto& x : steps_)
       steps.push_back(m.in_situation(grafcet_observable_lit(x.observable)));
     const AigLit first = m.at_initial_stable();
-    const auto whole = deadline_;
-    deadline_ = deadline;  // reach_one's
+    const ScopedDeadline scope(deadline_, deadline);  // reach_one's
     std::vector<AigLit> activities;
     for (;;) {
       const auto a = reach_one(aig, aig.make_and(first, Aig::make_not(aig.make_or(activities))));
@@ -623,7 +638,6 @@ class Run {
                            : "more remain past the bound kMaxInitialSituations") +
                       "); whether the initial situation can be reached again needs the "
                       "explicit or bdd engine";
-        deadline_ = whole;
         return;
       }
       const auto nodes =
@@ -633,7 +647,6 @@ class Run {
         same.push_back(Aig::value_of(nodes, lit) ? lit : Aig::make_not(lit));
       activities.push_back(aig.make_and(same));
     }
-    deadline_ = whole;
     q.goals.push_back({aig.make_and(m.at_stable(), aig.make_or(activities)), "",
                        "from the last situation the initial situation is unreachable",
                        std::nullopt});
@@ -1864,7 +1877,8 @@ class Run {
     return r;
   }
 
-  /// The circuit inputs of a Grafcet run's Boot step, as `sfcv simulate --set` reads them.
+  /// The inputs of a Grafcet run's Boot step in words (a Boolean by name or `!`name, a number
+  /// as name=value): what the first row of an `sfcv simulate --inputs` CSV would hold.
   std::string initial_valuation_text(const std::vector<bool>& bits) const {
     const auto values = semantics::inputs_from_bits(ts_, *grafcet_, bits);
     std::string out;
