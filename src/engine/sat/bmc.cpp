@@ -6,7 +6,7 @@ namespace sfcv::engine::sat {
 
 std::vector<ReachResult> bmc(const ReachQuery& query, const BoundOptions& options) {
   Solver solver(options.deadline, SolverProfile::Deepening);
-  Unrolling frames(*query.aig, solver, true, query.simplify);
+  Unrolling frames(*query.aig, solver, true, query.simplify, query.cuts);
   std::vector<ReachResult> results(query.targets.size());
   deepen(
       query, options, solver, frames, results,

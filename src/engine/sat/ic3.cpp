@@ -22,9 +22,11 @@ struct TimeUp {};
 struct FrameSolver {
   std::unique_ptr<Solver> solver;
   std::unique_ptr<Unrolling> frames;
-  FrameSolver(const semantics::Aig& aig, bool initial, Deadline d)
+  /// `cuts`: a simplifying encoding (unrolling.hpp) with these cuts; null: a plain one.
+  FrameSolver(const semantics::Aig& aig, bool initial, Deadline d,
+              const std::shared_ptr<CutMapping>& cuts)
       : solver(std::make_unique<Solver>(d, SolverProfile::ManySmallQueries)),
-        frames(std::make_unique<Unrolling>(aig, *solver, initial)) {}
+        frames(std::make_unique<Unrolling>(aig, *solver, initial, cuts != nullptr, cuts)) {}
   int current(const LatchLiteral& l) const {
     const int x = frames->latch(l.latch, 0);
     return l.value ? x : -x;
@@ -61,7 +63,10 @@ class Ic3 {
         options_(o),
         stats_(stats),
         cone_(cone_latches(aig_, {target_, step_ok_})),
-        lift_(aig_, false, o.deadline) {
+        cuts_(!q.simplify ? nullptr
+              : q.cuts    ? q.cuts
+                          : std::make_shared<CutMapping>(aig_)),
+        lift_(aig_, false, o.deadline, cuts_) {
     if (!o.known_invariant) return;
     // All of it, not only the clauses over the cone: a part of an inductive invariant need not
     // be inductive. Latches outside the cone stay free in the frames, where the invariant then
@@ -167,7 +172,7 @@ class Ic3 {
   }
 
   void add_frame() {
-    frames_.emplace_back(aig_, frames_.empty(), options_.deadline);
+    frames_.emplace_back(aig_, frames_.empty(), options_.deadline, cuts_);
     blocked_.emplace_back();
     if (frames_.size() > 1)
       for (const auto& c : known_) frames_.back().block(c);
@@ -354,6 +359,7 @@ class Ic3 {
   std::vector<Cube> known_;                 ///< Ic3Options::known_invariant, as blocked cubes
   std::vector<FrameSolver> frames_;         ///< frames_[i] holds F_i
   std::vector<std::vector<Cube>> blocked_;  ///< cubes blocked up to exactly frame i (delta)
+  std::shared_ptr<CutMapping> cuts_;        ///< the frame solvers' gates (none: plain)
   FrameSolver lift_;
   std::uint32_t cex_depth_ = 0;
   std::size_t cex_link_ = kNone;

@@ -17,7 +17,7 @@ class StepCase {
       : query_(q),
         target_(target),
         solver_(deadline, SolverProfile::Deepening),
-        frames_(*q.aig, solver_, false, q.simplify),
+        frames_(*q.aig, solver_, false, q.simplify, q.cuts),
         cone_(cone_latches(*q.aig, {target, q.step_ok})) {}
 
   /// Is there such a run with n = depth non-target frames followed by a target frame?
@@ -44,7 +44,7 @@ class StepCase {
 
 std::vector<ReachResult> k_induction(const ReachQuery& query, const BoundOptions& options) {
   Solver base(options.deadline, SolverProfile::Deepening);
-  Unrolling frames(*query.aig, base, true, query.simplify);
+  Unrolling frames(*query.aig, base, true, query.simplify, query.cuts);
   std::vector<ReachResult> results(query.targets.size());
   std::vector<std::unique_ptr<StepCase>> steps(query.targets.size());
   deepen(query, options, base, frames, results,

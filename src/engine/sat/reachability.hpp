@@ -6,6 +6,7 @@
 // transition firable, a range error) is one such target.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,15 +14,20 @@
 
 namespace sfcv::engine::sat {
 
+class CutMapping;  // unrolling.hpp
+
 struct ReachQuery {
   const semantics::Aig* aig = nullptr;
   semantics::AigLit step_ok = semantics::Aig::kTrue;
   std::vector<semantics::AigLit> targets;
-  /// BMC and k-induction: a simplifying unrolling (unrolling.hpp). Off for the Grafcet machine:
-  /// its traces read the inputs of every event frame, and the simplified encoding leaves inputs
-  /// that the folded gates no longer read free in the model (a trace with two inputs changing
-  /// at once, EveryTraceReplays grafcet seed 10).
+  /// BMC, k-induction and IC3: a simplifying unrolling (unrolling.hpp). Off for the Grafcet
+  /// machine: its traces read the inputs of every event frame, and the simplified encoding leaves
+  /// inputs that the folded gates no longer read free in the model (a trace with two inputs
+  /// changing at once, EveryTraceReplays grafcet seed 10).
   bool simplify = true;
+  /// simplify: the cut of each gate, shared by the unrollings of `aig` that this query and its
+  /// copies make (IC3 makes two solvers per frame and target); null: each makes its own.
+  std::shared_ptr<CutMapping> cuts;
 };
 
 /// A clause over latches: latch index and the value that satisfies the literal.

@@ -16,6 +16,7 @@
 #include "engine/sat/loop_pumping.hpp"
 #include "engine/sat/observers.hpp"
 #include "engine/sat/range_check.hpp"
+#include "engine/sat/unrolling.hpp"
 #include "logic/circuit_atom.hpp"
 #include "logic/formula.hpp"
 #include "logic/standard_checks.hpp"
@@ -955,6 +956,7 @@ class Run {
     query.step_ok = step_ok_;
     query.targets = targets_;
     query.simplify = !machine_;
+    if (query.simplify) query.cuts = std::make_shared<sat::CutMapping>(*query.aig);
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;
@@ -1332,7 +1334,7 @@ class Run {
       // else), so the invariants proved for the machine are not assumed.
       if (machine_)
         for (const auto l : machine_->event_observer_latches()) from.set_initial(l, false);
-      sat::ReachQuery query{&from, step_ok_, {}, true};
+      sat::ReachQuery query{&from, step_ok_, {}, true, nullptr};
       for (const auto& g : q.goals) query.targets.push_back(g.lit);
       sat::BoundOptions bounds;
       bounds.max_depth = kStuckBmcDepth;
@@ -1354,7 +1356,7 @@ class Run {
         q.stuck_certificate = sat::certificate_text(from, r.certificate);
         if (machine_) return;  // "no successor" is an edge question of the explicit graph
         // No successor at all, or successors that fire nothing (global-deadlock's wording).
-        sat::ReachQuery any_step{&from, step_ok_, {step_ok_}, true};
+        sat::ReachQuery any_step{&from, step_ok_, {step_ok_}, true, nullptr};
         sat::BoundOptions now;
         now.max_depth = 0;
         now.deadline = deadline;
@@ -1611,7 +1613,8 @@ class Run {
 
   /// One target of `aig` (step_ok: the machine's) by the run's algorithm, its proof re-checked.
   ReachResult reach_one(const Aig& aig, AigLit target) {
-    sat::ReachQuery query{&aig, machine_->step_ok(), {target}, false};  // a Grafcet machine
+    sat::ReachQuery query{
+        &aig, machine_->step_ok(), {target}, false, nullptr};  // a Grafcet machine
     sat::BoundOptions bounds;
     bounds.max_depth = options_.max_depth;
     bounds.deadline = deadline_;

@@ -9,9 +9,18 @@ namespace sfcv::engine::sat {
 using semantics::Aig;
 using semantics::AigLit;
 
-Unrolling::Unrolling(const Aig& aig, Solver& solver, bool from_initial, bool simplify)
-    : aig_(aig), solver_(solver), from_initial_(from_initial), simplify_(simplify) {
-  if (!simplify_) return;
+Unrolling::Unrolling(const Aig& aig, Solver& solver, bool from_initial, bool simplify,
+                     std::shared_ptr<CutMapping> mapping)
+    : aig_(aig),
+      solver_(solver),
+      from_initial_(from_initial),
+      simplify_(simplify),
+      mapping_(std::move(mapping)) {
+  if (simplify_ && (!mapping_ || &mapping_->aig() != &aig_))
+    mapping_ = std::make_shared<CutMapping>(aig_);
+}
+
+CutMapping::CutMapping(const Aig& aig) : aig_(aig) {
   fanout_.assign(aig_.nodes().size(), 0);
   for (const auto& n : aig_.nodes())
     if (n.kind == Aig::NodeKind::And) {
@@ -77,7 +86,7 @@ bool depends_on(std::uint16_t f, int v) {
 }
 
 /// Minato-Morreale: appends an irredundant cover c with on <= c <= upper (cubes as in
-/// Unrolling::cover_of, each extending `cube`) and returns c. Requires on <= upper.
+/// CutMapping::cover_of, each extending `cube`) and returns c. Requires on <= upper.
 std::uint16_t isop(std::uint16_t on, std::uint16_t upper, int var, std::uint8_t cube,
                    std::vector<std::uint8_t>& out) {
   if (on == 0) return 0;
@@ -99,13 +108,13 @@ std::uint16_t isop(std::uint16_t on, std::uint16_t upper, int var, std::uint8_t 
 
 }  // namespace
 
-const std::vector<std::uint8_t>& Unrolling::cover_of(std::uint16_t truth) {
+const std::vector<std::uint8_t>& CutMapping::cover_of(std::uint16_t truth) {
   auto [it, added] = covers_.try_emplace(truth);
   if (added) isop(truth, truth, 3, 0, it->second);
   return it->second;
 }
 
-int Unrolling::clauses_of(std::uint16_t truth) {
+int CutMapping::clauses_of(std::uint16_t truth) {
   return static_cast<int>(cover_of(truth).size() + cover_of(u16(~unsigned{truth})).size());
 }
 
@@ -169,7 +178,7 @@ int Unrolling::gate(std::uint16_t truth, const std::vector<int>& lits) {
     const int r = solver_.new_var();
     std::vector<int> clause;
     for (const bool positive : {true, false})
-      for (const std::uint8_t cube : cover_of(positive ? f : u16(~unsigned{f}))) {
+      for (const std::uint8_t cube : mapping_->cover_of(positive ? f : u16(~unsigned{f}))) {
         clause.assign(1, positive ? r : -r);  // cube -> r (cube of f), cube -> !r (of !f)
         for (std::size_t i = 0; i < n; ++i)
           if ((cube >> i) & 1U) clause.push_back((cube >> (i + 4)) & 1U ? -support[i] : support[i]);
@@ -180,7 +189,7 @@ int Unrolling::gate(std::uint16_t truth, const std::vector<int>& lits) {
   return negated ? -slot : slot;
 }
 
-const Unrolling::Cut& Unrolling::best_cut(std::uint32_t node) {
+const CutMapping::Cut& CutMapping::best(std::uint32_t node) {
   if (cuts_.size() < aig_.nodes().size()) cuts_.resize(aig_.nodes().size());
   std::vector<std::uint32_t> stack{node};  // iterative post-order: cones may be deep
   while (!stack.empty()) {
@@ -199,13 +208,13 @@ const Unrolling::Cut& Unrolling::best_cut(std::uint32_t node) {
       }
     }
     if (missing) continue;
-    enumerate_cuts(n);
+    enumerate(n);
     stack.pop_back();
   }
   return cuts_[node].front();
 }
 
-void Unrolling::enumerate_cuts(std::uint32_t node) {
+void CutMapping::enumerate(std::uint32_t node) {
   constexpr std::size_t kCutsPerNode = 6;
   const auto& nd = aig_.nodes()[node];
   // A leaf's share of the cone behind it: its best cut's flow over its readers.
@@ -338,7 +347,7 @@ int Unrolling::literal(AigLit lit, std::size_t frame) {
         break;
       case Aig::NodeKind::And: {
         if (simplify_) {
-          const Cut& cut = best_cut(it.node);
+          const auto& cut = mapping_->best(it.node);
           bool missing = false;
           for (std::uint8_t k = 0; k < cut.size; ++k)
             if (slot(cut.leaves[k], it.frame) == 0) {
