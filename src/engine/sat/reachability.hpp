@@ -26,7 +26,8 @@ struct ReachQuery {
   /// changing at once, EveryTraceReplays grafcet seed 10).
   bool simplify = true;
   /// simplify: the cut of each gate, shared by the unrollings of `aig` that this query and its
-  /// copies make (IC3 makes two solvers per frame and target); null: each makes its own.
+  /// copies make (IC3 makes a solver per frame and one for lifting, per target); null: each
+  /// makes its own.
   std::shared_ptr<CutMapping> cuts;
 };
 
