@@ -138,8 +138,8 @@ void names_written(const model::StmtList& body, std::set<std::string>& out) {
 }
 
 bool is_output(const std::string& m) {
-  return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ONS" ||
-         m == "TON" || m == "JSR";
+  return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ADD" ||
+         m == "SUB" || m == "MUL" || m == "ONS" || m == "TON" || m == "RES" || m == "JSR";
 }
 
 }  // namespace
@@ -302,9 +302,38 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     and_into(p, model::make_binary(c->second, a, b, where_));
     return;
   }
+  if (m == "LIM") {
+    // LIM(low, test, high): low <= test <= high; when low > high, the range wraps: test >= low
+    // or test <= high (1756-RM003, Compare Instructions).
+    if (!arity(3)) return;
+    std::vector<model::ExprPtr> v;
+    for (const auto& o : ops) {
+      v.push_back(checked(operands_.value(o, error)));
+      if (!v.back()) return;
+    }
+    using model::make_binary;
+    const auto within = model::make_nary(ExprKind::And,
+                                         {make_binary(ExprKind::Le, v[0], v[1], where_),
+                                          make_binary(ExprKind::Le, v[1], v[2], where_)},
+                                         where_);
+    const auto wrapped = model::make_nary(ExprKind::Or,
+                                          {make_binary(ExprKind::Ge, v[1], v[0], where_),
+                                           make_binary(ExprKind::Le, v[1], v[2], where_)},
+                                          where_);
+    and_into(
+        p, model::make_nary(
+               ExprKind::Or,
+               {model::make_nary(ExprKind::And,
+                                 {make_binary(ExprKind::Le, v[0], v[2], where_), within}, where_),
+                model::make_nary(ExprKind::And,
+                                 {make_binary(ExprKind::Gt, v[0], v[2], where_), wrapped}, where_)},
+               where_));
+    return;
+  }
   if (!is_output(m)) {
     fail("unsupported: RLL instruction " + m +
-         " (read: XIC XIO OTE OTL OTU ONS TON JSR MOV CLR NOP AFI EQU NEQ GRT GEQ LES LEQ)");
+         " (read: XIC XIO OTE OTL OTU ONS TON RES JSR MOV CLR ADD SUB MUL NOP AFI EQU NEQ GRT "
+         "GEQ LES LEQ LIM)");
     return;
   }
   if (m == "OTE" || m == "OTL" || m == "OTU") {
@@ -344,6 +373,31 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     before_write(target);
     auto assign = model::make_assign(target, v, where_);
     out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
+    return;
+  }
+  if (m == "ADD" || m == "SUB" || m == "MUL") {
+    // Integer arithmetic into the destination when the condition is TRUE. A result out of the
+    // destination's range is the range error of the model's assignment, where Logix wraps and
+    // sets S:V (docs/semantics.md 1.15a).
+    if (!arity(3)) return;
+    const auto target = checked(operands_.value_target(ops[2], error));
+    if (target.empty()) return;
+    auto a = checked(operands_.value(ops[0], error));
+    if (!a) return;
+    auto b = checked(operands_.value(ops[1], error));
+    if (!b) return;
+    const auto kind = m == "ADD" ? ExprKind::Add : m == "SUB" ? ExprKind::Sub : ExprKind::Mul;
+    before_write(target);
+    auto assign = model::make_assign(target, model::make_binary(kind, a, b, where_), where_);
+    out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
+    return;
+  }
+  if (m == "RES") {
+    if (!arity(1)) return;
+    auto reset = checked(operands_.reset(ops[0], error));
+    if (!reset) return;
+    before_write(reset->target);
+    out_->push_back(p.expr ? make_if(p.expr, {reset}) : reset);
     return;
   }
   if (m == "TON") {

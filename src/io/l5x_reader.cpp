@@ -13,19 +13,22 @@
 // execution options other than the modelled ones) is refused with the element path. An RLL main
 // routine is read with the RLL routines it calls by JSR (io/l5x_ladder.hpp): a TIMER tag that TON
 // runs is an IEC TON instance, an integer tag the rungs use only bit by bit
-// (`X.3`) is one BOOL per bit used (`X_3`), and S:FS is S_FS, TRUE in the first scan only.
+// (`X.3`) is one BOOL per bit used (`X_3`), and S:FS is S_FS, TRUE in the first scan only; of
+// tags of a user type and arrays, each part the rungs use is a variable (io/l5x_tags.hpp).
 // ST/FBD main routines load as not modelled (refused when run).
 
 #include <algorithm>
 #include <bit>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <pugixml.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "io/l5x_ladder.hpp"
+#include "io/l5x_tags.hpp"
 #include "io/load.hpp"
 #include "io/plcopen_st.hpp"
 #include "io/plcopen_xml_dom.hpp"
@@ -512,9 +515,20 @@ class SfcRoutineReader {
 // (io/l5x_ladder.hpp), with the tags the rungs need in the form the model has.
 class LadderProgram : public l5x::RungOperands {
  public:
+  /// Where the parts of structured tags the rungs use are declared: the program's in its POU,
+  /// the controller's in `globals`, each once for every program (`global_split`: whether a
+  /// controller tag's integer part is read bit by bit, so that two programs read it alike).
+  struct StructuredTags {
+    const l5x::TagTypes* types = nullptr;
+    const std::map<std::string, l5x::StructuredTag>* program = nullptr;
+    const std::map<std::string, l5x::StructuredTag>* controller = nullptr;
+    model::Pou* globals = nullptr;
+    std::map<std::string, bool>* global_split = nullptr;
+  };
+
   LadderProgram(XmlContext& ctx, model::Pou& pou,
-                const std::map<std::string, pugi::xml_node>& timer_tags)
-      : ctx_(ctx), pou_(pou), timer_tags_(timer_tags) {}
+                const std::map<std::string, pugi::xml_node>& timer_tags, StructuredTags structured)
+      : ctx_(ctx), pou_(pou), timer_tags_(timer_tags), structured_(structured) {}
 
   void read(pugi::xml_node program, pugi::xml_node main) {
     test_edits_ = is_true(program, "TestEdits");
@@ -550,29 +564,32 @@ class LadderProgram : public l5x::RungOperands {
 
   model::ExprPtr bit(const std::string& operand, std::string& error) override {
     if (model::iequals(operand, "S:FS")) return model::make_name(kFirstScan, at_);
+    bool structured = false;
+    if (const auto leaf = leaf_of(operand, error, structured); structured) {
+      if (!leaf) return nullptr;
+      if (leaf->kind == l5x::LeafKind::Timer) {
+        const auto t = timers_.find(model::to_upper(leaf->path));
+        if (t != timers_.end()) return timer_bit(t->second.first, leaf->rest, operand, error);
+        error = "TIMER '" + leaf->path + "' is not run by a TON: its bits are not read";
+        return nullptr;
+      }
+      const auto name = leaf_bit(*leaf, operand, error);
+      return name.empty() ? nullptr : model::make_name(name, at_);
+    }
     if (!plain_operand(operand, error)) return nullptr;
     const auto dot = operand.find('.');
     if (dot == std::string::npos) return model::make_name(operand, at_);
     const std::string base = operand.substr(0, dot), member = operand.substr(dot + 1);
     const auto key = model::to_upper(base);
     if (auto b = split_bit(key, member)) return model::make_name(*b, at_);
-    if (timers_.count(key) > 0) {
-      const auto m = model::to_upper(member);
-      if (m == "DN") return model::make_member(base, "Q", at_);
-      if (m == "EN") return model::make_member(base, "IN", at_);
-      if (m == "TT")
-        return model::make_nary(
-            model::ExprKind::And,
-            {model::make_member(base, "IN", at_),
-             model::make_unary(model::ExprKind::Not, model::make_member(base, "Q", at_), at_)},
-            at_);
-      error = "unsupported: '" + operand + "' (of a TIMER, .DN, .EN and .TT are read)";
-      return nullptr;
-    }
+    if (timers_.count(key) > 0) return timer_bit(base, member, operand, error);
     return model::make_member(base, member, at_);
   }
 
   std::string bit_target(const std::string& operand, std::string& error) override {
+    bool structured = false;
+    if (const auto leaf = leaf_of(operand, error, structured); structured)
+      return leaf ? leaf_bit(*leaf, operand, error) : std::string();
     if (!plain_operand(operand, error)) return {};
     const auto dot = operand.find('.');
     if (dot == std::string::npos) return operand;
@@ -586,11 +603,34 @@ class LadderProgram : public l5x::RungOperands {
   model::ExprPtr value(const std::string& operand, std::string& error) override {
     if (const auto v = plcopen::parse_int_literal(operand); v.value)
       return model::make_int(*v.value, at_);
+    bool structured = false;
+    if (const auto leaf = leaf_of(operand, error, structured); structured && leaf &&
+                                                               leaf->kind == l5x::LeafKind::Timer &&
+                                                               model::iequals(leaf->rest, "PRE")) {
+      // Read as the constant it is: no rung writes a preset (value_target refuses that).
+      if (const auto t = timers_.find(model::to_upper(leaf->path)); t != timers_.end())
+        return model::make_int(t->second.second, at_);
+      error = "TIMER '" + leaf->path + "' is not run by a TON: its preset is not read";
+      return nullptr;
+    }
+    error.clear();
     const auto name = value_target(operand, error);
     return name.empty() ? nullptr : model::make_name(name, at_);
   }
 
   std::string value_target(const std::string& operand, std::string& error) override {
+    bool structured = false;
+    if (const auto leaf = leaf_of(operand, error, structured); structured) {
+      if (!leaf) return {};
+      if (leaf->kind == l5x::LeafKind::Int && leaf->rest.empty()) return leaf->variable;
+      error = leaf->kind == l5x::LeafKind::Timer && model::iequals(leaf->rest, "PRE")
+                  ? "unsupported: writing '" + operand +
+                        "' (a TIMER's preset is read from its tag's data, not written by rungs)"
+                  : "unsupported: '" + operand + "' (" + leaf->type_name +
+                        ") as an integer (integer tags, their integer members and elements, "
+                        "and literals are)";
+      return {};
+    }
     if (!plain_operand(operand, error)) return {};
     if (operand.find('.') != std::string::npos || split_.count(model::to_upper(operand))) {
       error = "unsupported: '" + operand + "' as an integer (a tag or a literal is read)";
@@ -601,12 +641,44 @@ class LadderProgram : public l5x::RungOperands {
 
   std::optional<std::pair<std::string, std::int64_t>> timer(const std::string& operand,
                                                             std::string& error) override {
-    const auto it = timers_.find(model::to_upper(operand));
+    bool structured = false;
+    std::string key = model::to_upper(operand);
+    if (const auto leaf = leaf_of(operand, error, structured); structured) {
+      if (!leaf) return std::nullopt;
+      key = model::to_upper(leaf->path);
+      if (leaf->kind != l5x::LeafKind::Timer || !leaf->rest.empty()) {
+        error = "TON on '" + operand + "', which is not a TIMER (it is " + leaf->type_name + ")";
+        return std::nullopt;
+      }
+    }
+    const auto it = timers_.find(key);
     if (it == timers_.end()) {
       error = "TON on '" + operand + "', which is not a TIMER tag of the program";
       return std::nullopt;
     }
     return it->second;
+  }
+
+  // RES on a TIMER that TON runs: calling the TON with IN FALSE clears its DN, EN, TT and
+  // time, as RES clears .DN, .EN, .TT and .ACC (1756-RM003, RES); the TON then times again
+  // from 0 when its rung is TRUE.
+  model::StmtPtr reset(const std::string& operand, std::string& error) override {
+    const auto t = timer(operand, error);
+    if (!t) {
+      bool structured = false;
+      std::string ignored;
+      const auto leaf = leaf_of(operand, ignored, structured);
+      const bool idle_timer = structured ? leaf && leaf->kind == l5x::LeafKind::Timer
+                                         : timer_tags_.count(model::to_upper(operand)) > 0;
+      error = "unsupported: RES on '" + operand + "' (RES of a TIMER that a TON runs is read" +
+              (idle_timer           ? "; no TON runs this one)"
+               : structured && leaf ? "; it is " + leaf->type_name + ")"
+                                    : "): " + error);
+      return nullptr;
+    }
+    return model::make_fb_call(
+        t->first, {{"IN", model::make_bool(false, at_)}, {"PT", model::make_time(t->second, at_)}},
+        at_);
   }
 
   std::optional<model::StmtList> subroutine(const std::string& routine,
@@ -669,6 +741,58 @@ class LadderProgram : public l5x::RungOperands {
   static constexpr std::size_t kMaxUnfoldedStatements = 200000;
   /// JSR nesting read (each level is a recursion of the reader).
   static constexpr int kMaxCallDepth = 64;
+
+  // The part of a structured tag `operand` addresses; `structured` false when its tag is not one
+  // (then the caller reads it as a plain tag).
+  std::optional<l5x::TagLeaf> leaf_of(const std::string& operand, std::string& error,
+                                      bool& structured) const {
+    structured = false;
+    if (!structured_.types) return std::nullopt;
+    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
+    const l5x::StructuredTag* tag = nullptr;
+    if (const auto p = structured_.program->find(head); p != structured_.program->end())
+      tag = &p->second;
+    else if (pou_.find_variable(head) || timer_tags_.count(head))
+      return std::nullopt;  // a program tag hides a controller tag of its name
+    else if (const auto c = structured_.controller->find(head); c != structured_.controller->end())
+      tag = &c->second;
+    if (!tag) return std::nullopt;
+    structured = true;
+    return structured_.types->resolve(*tag, operand, error);
+  }
+
+  // The BOOL a BOOL part, or a bit of an integer part read bit by bit, is.
+  std::string leaf_bit(const l5x::TagLeaf& leaf, const std::string& operand,
+                       std::string& error) const {
+    if (leaf.kind == l5x::LeafKind::Bool && leaf.rest.empty()) return leaf.variable;
+    if (leaf.kind == l5x::LeafKind::Int && !leaf.rest.empty() && leaf.rest.size() <= 2 &&
+        leaf.rest.find_first_not_of("0123456789") == std::string::npos) {
+      if (split_leaves_.count(model::to_upper(leaf.path))) return leaf.variable + "_" + leaf.rest;
+      error = "unsupported: '" + operand + "' (a bit of '" + leaf.path +
+              "' is read when the rungs use that element only bit by bit)";
+      return {};
+    }
+    error = "unsupported: operand '" + operand + "' ('" + leaf.path + "' is " + leaf.type_name +
+            (leaf.rest.empty() ? "" : ", '" + leaf.rest + "' of it") +
+            "; BOOL parts, bits of integer parts and the .DN, .EN, .TT of TIMERs run by TON are "
+            "read as Booleans)";
+    return {};
+  }
+
+  model::ExprPtr timer_bit(const std::string& base, const std::string& member,
+                           const std::string& operand, std::string& error) const {
+    const auto m = model::to_upper(member);
+    if (m == "DN") return model::make_member(base, "Q", at_);
+    if (m == "EN") return model::make_member(base, "IN", at_);
+    if (m == "TT")
+      return model::make_nary(
+          model::ExprKind::And,
+          {model::make_member(base, "IN", at_),
+           model::make_unary(model::ExprKind::Not, model::make_member(base, "Q", at_), at_)},
+          at_);
+    error = "unsupported: '" + operand + "' (of a TIMER, .DN, .EN and .TT are read)";
+    return nullptr;
+  }
 
   // An operand the model can name: no module data (`Local:1:I.Data`), no array element.
   bool plain_operand(const std::string& operand, std::string& error) const {
@@ -754,6 +878,21 @@ class LadderProgram : public l5x::RungOperands {
   void use(const l5x::RungElement& e, std::size_t i) {
     const auto& operand = e.operands[i];
     if ((e.mnemonic == "JSR") || operand.empty()) return;
+    bool structured = false;
+    std::string error;  // reported where the instruction is translated
+    if (const auto leaf = leaf_of(operand, error, structured); structured) {
+      if (!leaf) return;
+      const auto key = model::to_upper(leaf->path);
+      leaves_.emplace(key, *leaf);
+      if (e.mnemonic == "TON" && i == 0)
+        ++ton_calls_[key];
+      else if (leaf->kind == l5x::LeafKind::Int && leaf->rest.empty())
+        whole_.insert(key);
+      else if (leaf->kind == l5x::LeafKind::Int && leaf->rest.size() <= 2 &&
+               leaf->rest.find_first_not_of("0123456789") == std::string::npos)
+        bits_[key].insert(std::stoi(leaf->rest));
+      return;
+    }
     if (e.mnemonic == "TON") {
       if (i == 0) ++ton_calls_[model::to_upper(operand)];
       return;
@@ -815,6 +954,7 @@ class LadderProgram : public l5x::RungOperands {
       if (!ton_calls_.count(key))
         ctx_.note(t, "tag '" + std::string(t.attribute("Name").value()) +
                          "' of type TIMER is not run by a TON: a use of it is an error");
+    declare_structured();
     first_scan_ = whole_.count("S:FS") > 0;
     std::set<std::string> names;
     for (const auto& v : pou_.variables)
@@ -826,6 +966,104 @@ class LadderProgram : public l5x::RungOperands {
         error_at(pou_.where, std::string("S:FS is read as the BOOL ") + kFirstScan +
                                  ", which is already a tag");
       declare_bool(kFirstScan, true);
+    }
+  }
+
+  // The parts of structured tags the rungs use, each a variable of the program or, for the
+  // controller's tags, of the controller's list (declared once for all its programs).
+  void declare_structured() {
+    for (const auto& entry : leaves_) {
+      // Plain names: clang 15 refuses a lambda capturing a structured binding.
+      const auto& key = entry.first;
+      const auto& leaf = entry.second;
+      const bool global = leaf.tag->global;
+      model::Pou& into = global ? *structured_.globals : pou_;
+      model::Variable v;
+      v.name = leaf.variable;
+      v.where = ctx_.where(leaf.tag->node);
+      v.direction = global ? model::VarDirection::Global : model::VarDirection::Local;
+      auto declare = [&](model::Variable var) {
+        if (const auto* old = into.find_variable(var.name)) {
+          // A controller tag's part another program declared already: the same variable.
+          if (global && old->where.str() == var.where.str() && old->type.name == var.type.name)
+            return;
+          error_at(var.where, "tag '" + leaf.tag->name + "': its part '" + leaf.path +
+                                  "' is read as '" + var.name + "', which is already a tag");
+          return;
+        }
+        into.variables.push_back(std::move(var));
+      };
+      if (leaf.kind == l5x::LeafKind::Timer) {
+        // The TON instance of the one program whose rungs run it, even for a controller TIMER
+        // (the semantics calls instances a POU declares).
+        const auto calls = ton_calls_.count(key) ? ton_calls_.at(key) : 0;
+        if (global && !structured_.global_split->emplace(key, false).second) {
+          error_at(v.where, "unsupported: the controller's TIMER '" + leaf.path +
+                                "' is used by two programs (it is read as the TON of the one "
+                                "program that runs it)");
+          continue;
+        }
+        if (calls == 0) continue;  // a use of its bits is an error where it is read
+        if (calls > 1) {
+          error_at(v.where, "unsupported: TON runs " + std::to_string(calls) + " times on TIMER '" +
+                                leaf.path + "' (one TON per TIMER is read)");
+          continue;
+        }
+        const auto preset = l5x::leaf_timer_preset(leaf);
+        if (preset < 0) error_at(v.where, "TIMER '" + leaf.path + "' with a negative preset");
+        v.type = model::Type::function_block(model::StandardFb::TON);
+        v.direction = model::VarDirection::Local;
+        timers_[key] = {v.name, preset};
+        if (const auto* old = pou_.find_variable(v.name)) {
+          error_at(v.where, "tag '" + leaf.tag->name + "': its part '" + leaf.path +
+                                "' is read as '" + v.name + "', which is already the tag at " +
+                                old->where.str());
+          continue;
+        }
+        pou_.variables.push_back(std::move(v));
+        continue;
+      }
+      if (leaf.kind == l5x::LeafKind::Other) continue;  // refused where it is read
+      const auto initial = l5x::leaf_initial(leaf);
+      if (!initial) {
+        error_at(v.where, "tag '" + leaf.tag->name + "': the initial value of '" + leaf.path +
+                              "' is not read");
+        continue;
+      }
+      v.type = *model::elementary_type(leaf.type_name);
+      const bool split = leaf.kind == l5x::LeafKind::Int && bits_.count(key) && !whole_.count(key);
+      if (global) {
+        const auto [it, fresh] = structured_.global_split->emplace(key, split);
+        if (!fresh && it->second != split) {
+          error_at(v.where, "unsupported: '" + leaf.path +
+                                "' is used bit by bit in one program and as a whole in another");
+          continue;
+        }
+      }
+      if (!split) {
+        if (*initial < v.type.lo || *initial > v.type.hi)
+          error_at(v.where, "tag '" + leaf.tag->name + "': initial value " +
+                                std::to_string(*initial) + " of '" + leaf.path +
+                                "' out of the range of " + v.type.name);
+        v.initial = *initial;
+        declare(std::move(v));
+        continue;
+      }
+      split_leaves_.insert(key);
+      const int width = static_cast<int>(std::bit_width(static_cast<std::uint64_t>(v.type.hi))) +
+                        (v.type.lo < 0 ? 1 : 0);
+      for (int n : bits_.at(key)) {
+        if (n >= width) {
+          error_at(v.where, "rungs use bit " + std::to_string(n) + " of '" + leaf.path +
+                                "', which has " + std::to_string(width) + " bits");
+          continue;
+        }
+        model::Variable bit = v;
+        bit.name = v.name + "_" + std::to_string(n);
+        bit.type = model::Type::boolean();
+        bit.initial = (static_cast<std::uint64_t>(*initial) >> n) & 1U;
+        declare(std::move(bit));
+      }
     }
   }
 
@@ -866,6 +1104,10 @@ class LadderProgram : public l5x::RungOperands {
   XmlContext& ctx_;
   model::Pou& pou_;
   const std::map<std::string, pugi::xml_node>& timer_tags_;
+  StructuredTags structured_;
+  /// Upper-case path -> the part of a structured tag the rungs use.
+  std::map<std::string, l5x::TagLeaf> leaves_;
+  std::set<std::string> split_leaves_;  ///< upper-case paths of integer parts read by bit
   std::map<std::string, pugi::xml_node> routines_;
   std::map<std::string, std::vector<std::pair<pugi::xml_node, l5x::RungSequence>>> parsed_;
   std::map<std::string, std::set<int>> bits_;  ///< upper-case tag -> bits the rungs use
@@ -911,12 +1153,14 @@ class L5xReader {
       return;
     }
     execution_options(controller);
+    types_ = l5x::TagTypes(child(controller, "DataTypes"));
     if (const auto tags = child(controller, "Tags"); !element_children(tags).empty()) {
       model::Pou globals;
       globals.name = trim(controller.attribute("Name").value());
       globals.where = ctx_.where(controller);
       read_tags(tags, globals, true);
       project_.pous.push_back(std::move(globals));
+      globals_index_ = project_.pous.size() - 1;
     }
     for (auto p : children(child(controller, "Programs"), "Program")) {
       ctx_.poll();
@@ -959,12 +1203,17 @@ class L5xReader {
                    "program '" + pou.name + "' is disabled in the controller; read as if it ran");
     timer_tags_.clear();
     step_presets_.clear();
+    program_structured_.clear();
     read_tags(child(p, "Tags"), pou, false);
     const std::string main = trim(p.attribute("MainRoutineName").value());
     for (auto r : children(child(p, "Routines"), "Routine"))
       if (trim(r.attribute("Name").value()) == main &&
           std::string_view(r.attribute("Type").value()) == "RLL") {
-        LadderProgram(ctx_, pou, timer_tags_).read(p, r);
+        // The controller's structured tags come from its <Tags>, so its list exists.
+        LadderProgram::StructuredTags structured{
+            &types_, &program_structured_, &controller_structured_,
+            globals_index_ ? &project_.pous[*globals_index_] : nullptr, &global_split_};
+        LadderProgram(ctx_, pou, timer_tags_, structured).read(p, r);
         project_.pous.push_back(std::move(pou));
         return;
       }
@@ -996,6 +1245,11 @@ class L5xReader {
       ctx_.note(t, "tag '" + std::string(t.attribute("Name").value()) +
                        "' of type TIMER is not modelled (a TIMER is read where an RLL rung runs "
                        "TON on it): a use of it is an error");
+    for (const auto& [name, t] : program_structured_)
+      ctx_.note(t.node, "tag '" + t.name + "' of type " + t.data_type +
+                            (t.dimensions.empty() ? "" : " (an array)") +
+                            " is read part by part in ladder routines only: a use of it here is "
+                            "an error");
     if (!main.empty() && !main_seen)
       ctx_.error(p,
                  "program '" + pou.name + "': its main routine '" + main + "' is not in the file");
@@ -1057,6 +1311,8 @@ class L5xReader {
       } else if (type == "SFC_STEP" || type == "SFC_ACTION" || type == "SFC_STOP") {
         if (type == "SFC_STEP") step_preset(t);
         continue;  // the chart's own: its steps and actions
+      } else if (structured_tag(t, v.name, type, global)) {
+        continue;  // its parts are read where rungs use them (io/l5x_tags.hpp)
       } else if (type == "TIMER" && !global && t.attribute("Dimensions").empty()) {
         // A TON instance if a rung runs TON on it (LadderProgram), else left out.
         timer_tags_[model::to_upper(v.name)] = t;
@@ -1093,6 +1349,24 @@ class L5xReader {
       }
       pou.variables.push_back(std::move(v));
     }
+  }
+
+  // A tag of a user type, an array of BOOL, integers, TIMERs or a user type, or a controller
+  // TIMER: kept for the rungs to use by part (only a ladder program reads them).
+  bool structured_tag(pugi::xml_node t, const std::string& name, const std::string& type,
+                      bool global) {
+    const auto dims = l5x::tag_dimensions(t.attribute("Dimensions").value());
+    const auto et = model::elementary_type(type);
+    const bool part_type = types_.is_user_type(type) || model::iequals(type, "TIMER") ||
+                           (et && (et->kind == model::TypeKind::Bool ||
+                                   (et->kind == model::TypeKind::Int && et->enumerators.empty())));
+    if (!dims || !part_type) return false;
+    if (dims->empty() && !types_.is_user_type(type) && !(global && model::iequals(type, "TIMER")))
+      return false;
+    auto& into = global ? controller_structured_ : program_structured_;
+    if (into.count(model::to_upper(name))) return false;  // reported as a duplicate
+    into[model::to_upper(name)] = l5x::StructuredTag{t, name, type, *dims, global};
+    return true;
   }
 
   // `Local:1:I.Data.4`: bit 4 of an input module's data, a Boolean input; `:O.` an output.
@@ -1160,6 +1434,11 @@ class L5xReader {
   model::Project& project_;
   std::map<std::string, pugi::xml_node> timer_tags_;  ///< the program's, upper-case name
   std::map<std::string, std::int64_t> step_presets_;  ///< SFC_STEP tag (upper case) -> PRE, ms
+  l5x::TagTypes types_;
+  /// Structured tags (upper-case name): the program's at hand, and the controller's.
+  std::map<std::string, l5x::StructuredTag> program_structured_, controller_structured_;
+  std::optional<std::size_t> globals_index_;  ///< the controller's list in project_.pous
+  std::map<std::string, bool> global_split_;  ///< see LadderProgram::StructuredTags
 };
 
 }  // namespace

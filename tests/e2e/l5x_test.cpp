@@ -102,6 +102,37 @@ TEST(L5xE2E, OneShotPulsesForOneScan) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
+// Parts of a controller tag of a user type (tests/support/l5x_text.hpp's Cell_Data), with
+// verdicts that follow from 1756-RM003's text: TON on an element of a TIMER array sets its .DN
+// once the preset has elapsed with the rung TRUE; ADD adds when its rung is TRUE; LIM with a
+// low limit above its high limit is TRUE outside the range between them (7..2: test >= 7 or
+// test <= 2), and with equal limits only at that value.
+TEST(L5xE2E, PartsOfAUserTypeTagFollowTheInstructionRules) {
+  const auto file = write_temp(
+      rockwell::l5x_ladder(
+          rockwell::alias("go", "Local:1:I.Data.0") + rockwell::alias("q", "Local:1:O.Data.0") +
+              rockwell::alias("q2", "Local:1:O.Data.1"),
+          rockwell::rll_routine(
+              "Main", {"XIC(go)TON(Cell1.TMR[3],?,?);", "XIC(Cell1.TMR[3].DN)OTE(Cell1.Flag);",
+                       "XIC(Cell1.Flag)XIO(Cell1.BIT_Logic[1].0)ADD(Cell1.SP[0],1,Cell1.SP[0])"
+                       "OTL(Cell1.BIT_Logic[1].0);",
+                       "LIM(7,Cell1.SP[0],2)OTE(q);", "LIM(0,Cell1.SP[0],0)OTE(q2);"}),
+          rockwell::cell_data_type(), rockwell::cell_tag("Cell1", 0, 7, 1000)),
+      ".L5X");
+  // SP[0] is written by ADD only, once (BIT_Logic[1].0 latches): it stays 0 or 1.
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AG (Cell1_Flag -> go)", "holds"},
+      {"EF Cell1_SP_0 = 1", "holds"},
+      {"AG Cell1_SP_0 <= 1", "holds"},
+      {"AX AG q", "holds"},
+      {"AX AG (q2 <-> Cell1_SP_0 = 0)", "holds"},
+      {"AG !Cell1_Flag", "violated"},
+      {"AG q2", "violated"},
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
 // SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
 std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
   const char* root = std::getenv("SFCV_VENDOR_SAMPLES");
@@ -133,6 +164,26 @@ TEST(L5xE2E, PublicLadderSampleLoadsAndIsChecked) {
                                   {"EF X_19", "holds"},
                                   {"AG EF X_0", "holds"},
                                   {"AG !X_19", "violated"}});
+}
+
+// reh3376/acd-l5x-tool-lib docs/exports/Cooker_1_AutoLogic_Program.L5X, unmodified: a real
+// plant's ladder program (2.2 MB) whose rungs address parts of controller tags of user types
+// (`Cooker1.BIT_Logic[0].2`, `Cooker1.TMR_Logic[3].DN`). Those parts are read; it stays exit 2
+// for what the model has no meaning for, each located: REAL parts, elements chosen by a tag,
+// add-on instructions and their members, TIMER presets written by rungs.
+TEST(L5xE2E, PublicPlantProgramIsRefusedOnlyAtWhatIsNotRead) {
+  const auto sample = vendor_sample("Cooker_1_AutoLogic_Program.L5X");
+  if (!sample)
+    GTEST_SKIP() << "SFCV_VENDOR_SAMPLES holds no Cooker_1_AutoLogic_Program.L5X: test skipped";
+  const auto r = run_sfcv("check --timeout 60 " + sample->string());
+  EXPECT_EQ(r.exit_code, 2) << r.err.substr(0, 2000);
+  EXPECT_EQ(r.err.find("unsupported: operand 'Cooker1.BIT_Logic["), std::string::npos);
+  EXPECT_EQ(r.err.find("which is not a TIMER"), std::string::npos);
+  for (const char* reason :
+       {"(REAL) as an integer", "(an element chosen by 'Cooker1.Index' is not read",
+        "unsupported: RLL instruction ANALOG_INPUT", "a TIMER's preset is read from its tag's data",
+        "RES on 'Cooker1.TMR_Logic[13]' (RES of a TIMER that a TON runs is read; no TON runs"})
+    EXPECT_NE(r.err.find(reason), std::string::npos) << reason;
 }
 
 }  // namespace

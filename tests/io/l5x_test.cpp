@@ -400,6 +400,89 @@ TEST(L5xLadder, PendingEditsRunAsTheControllerRunsThem) {
   EXPECT_EQ(ladder_body(tested), "motor := start;\nalarm := stop;\n");
 }
 
+// Parts of tags of a user type: each part the rungs use is a variable of its own, named by its
+// path, with the initial value of the tag's decorated data; the other parts are left out. The
+// controller's tag's parts go to the controller's list.
+TEST(L5xLadder, PartsOfStructuredTagsTheRungsUseAreVariables) {
+  const auto r = io::load_l5x(
+      l5x_ladder(dint_tag("n", 0),
+                 rll_routine("Main", {"XIC(Cell1.BIT_Logic[1].0)XIO(Cell1.BIT_Logic[1].1)"
+                                      "TON(Cell1.TMR[3],?,?);",
+                                      "XIC(Cell1.TMR[3].DN)OTE(Cell1.Flag);",
+                                      "XIC(Cell1.Flag)ADD(Cell1.SP[2],1,Cell1.SP[0]);",
+                                      "XIC(Cell1.BIT_Logic[1].2)RES(Cell1.TMR[3]);",
+                                      "XIC(cell1.bit_logic[1].3)SUB(Cell1.SP[0],Cell1.TMR[3].PRE,n)"
+                                      "MUL(n,2,n);"}),
+                 cell_data_type(), cell_tag("Cell1", 0b0101, 7, 2000)),
+      "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(ladder_body(r),
+            "Cell1_TMR_3(IN := Cell1_BIT_Logic_1_0 AND NOT Cell1_BIT_Logic_1_1, PT := T#2s);\n"
+            "Cell1_Flag := Cell1_TMR_3.Q;\n"
+            "IF Cell1_Flag THEN\n  Cell1_SP_0 := Cell1_SP_2 + 1;\nEND_IF;\n"
+            "IF Cell1_BIT_Logic_1_2 THEN\n  Cell1_TMR_3(IN := FALSE, PT := T#2s);\nEND_IF;\n"
+            "IF Cell1_BIT_Logic_1_3 THEN\n  n := Cell1_SP_0 - 2000;\nEND_IF;\n"
+            "IF Cell1_BIT_Logic_1_3 THEN\n  n := n * 2;\nEND_IF;\n");
+  const auto* globals = r.project->find_pou("Plant");
+  ASSERT_NE(globals, nullptr);
+  const std::vector<std::pair<const char*, std::int64_t>> initial = {
+      {"Cell1_BIT_Logic_1_0", 1}, {"Cell1_BIT_Logic_1_1", 0}, {"Cell1_BIT_Logic_1_2", 1},
+      {"Cell1_BIT_Logic_1_3", 0}, {"Cell1_SP_0", 0},          {"Cell1_SP_2", 7},
+      {"Cell1_Flag", 0}};
+  for (const auto& [name, value] : initial) {
+    const auto* v = globals->find_variable(name);
+    ASSERT_NE(v, nullptr) << name;
+    EXPECT_EQ(v->direction, model::VarDirection::Global) << name;
+    EXPECT_EQ(v->initial, value) << name;
+  }
+  EXPECT_EQ(globals->find_variable("Cell1_SP_2")->type.name, "DINT");
+  // A TIMER is the TON instance of the program that runs it (the semantics calls the instances
+  // a POU declares), even the controller's.
+  EXPECT_EQ(globals->find_variable("Cell1_TMR_3"), nullptr);
+  const auto* timer = r.project->pous.back().find_variable("Cell1_TMR_3");
+  ASSERT_NE(timer, nullptr);
+  EXPECT_EQ(timer->type.fb, model::StandardFb::TON);
+  // Only what the rungs use: BIT_Logic[1] is read bit by bit, SP[1], TMR[0] and Level not at all.
+  for (const char* absent : {"Cell1_BIT_Logic_1", "Cell1_SP_1", "Cell1_TMR_0", "Cell1_Level"})
+    EXPECT_EQ(globals->find_variable(absent), nullptr) << absent;
+}
+
+TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"XIC(go)MOV(1,Cell1.SP[n]);", "(an element chosen by 'n' is not read: constant indices"},
+      {"XIC(go)MOV(Cell1.Level,n);", "'Cell1.Level' (REAL) as an integer"},
+      {"XIC(go)MOV(1,Cell1.SP[3]);", "index 3 is out of the bounds of 'Cell1.SP' (0..2)"},
+      {"XIC(go)MOV(1,Cell1.Nope);", "'Cell1' (of type Cell_Data) has no member 'Nope'"},
+      {"XIC(go)MOV(1,Cell1.SP);", "a whole array, 'Cell1.SP', is not read"},
+      {"XIC(go)MOV(Cell1,n);", "a whole structure, 'Cell1' of type Cell_Data, is not read"},
+      {"XIC(go)TON(Cell1.TMR[2],?,?);XIC(go)MOV(5,Cell1.TMR[2].PRE);",
+       "a TIMER's preset is read from its tag's data"},
+      {"XIC(Cell1.TMR[4].DN)OTE(q);", "TIMER 'Cell1.TMR[4]' is not run by a TON"},
+      {"XIC(Cell1.SP[1].2)MOV(1,Cell1.SP[1]);",
+       "a bit of 'Cell1.SP[1]' is read when the rungs use that element only bit by bit"},
+      {"XIC(go)TON(Cell1.TMR[1],?,?);XIC(q)TON(Cell1.TMR[1],?,?);",
+       "TON runs 2 times on TIMER 'Cell1.TMR[1]'"},
+      {"XIC(go)RES(n);", "unsupported: RES on 'n'"},
+      {"XIC(go)DIV(4,2,n);", "unsupported: RLL instruction DIV"},
+  };
+  for (const auto& [text, message] : cases) {
+    SCOPED_TRACE(text);
+    std::vector<std::string> rungs;
+    for (std::size_t from = 0; from < text.size();) {
+      const auto end = text.find(';', from);
+      rungs.push_back(text.substr(from, end - from + 1));
+      from = end + 1;
+    }
+    const auto r = io::load_l5x(
+        l5x_ladder(
+            dint_tag("n", 0) + alias("go", "Local:1:I.Data.0") + alias("q", "Local:1:O.Data.0"),
+            rll_routine("Main", rungs), cell_data_type(), cell_tag("Cell1", 0, 0, 100)),
+        "Cell.L5X");
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(errors_of(r).find(message), std::string::npos) << errors_of(r);
+  }
+}
+
 TEST(L5xLadder, InputsThatWouldExpandOrRecurseWithoutBoundAreRefused) {
   // 30 routines, each calling the next twice: 2^30 copies of the last one if unfolded.
   std::string routines = rll_routine("Main", {"JSR(R0,0);", "JSR(R0,0);"});

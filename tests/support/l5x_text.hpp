@@ -207,17 +207,80 @@ inline std::string timer_tag(const std::string& name, long preset_ms) {
 
 /// A program whose main routine `Main` is ladder, with `routines` (<Routine> elements) beside it
 /// (the shape of francisboudreau7/l5x_sfc tests/MainProgram.L5X: a main routine of JSRs).
-inline std::string l5x_ladder(const std::string& tags, const std::string& routines) {
+/// With the controller's user data types (<DataType> elements) and tags beside the program.
+inline std::string l5x_ladder(const std::string& tags, const std::string& routines,
+                              const std::string& data_types, const std::string& controller_tags) {
   return "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"yes\"?>\n"
          "<RSLogix5000Content SchemaRevision=\"1.0\" SoftwareRevision=\"32.01\" "
          "TargetName=\"Cell\" TargetType=\"Program\" ContainsContext=\"true\">\n"
          "<Controller Use=\"Context\" Name=\"Plant\" SFCExecutionControl=\"CurrentActive\" "
          "SFCRestartPosition=\"MostRecent\" SFCLastScan=\"DontScan\">\n"
-         "<Tags Use=\"Context\">\n</Tags>\n<Programs Use=\"Context\">\n<Program Use=\"Target\" "
+         "<DataTypes Use=\"Context\">\n" +
+         data_types + "</DataTypes>\n<Tags Use=\"Context\">\n" + controller_tags +
+         "</Tags>\n<Programs Use=\"Context\">\n<Program Use=\"Target\" "
          "Name=\"Cell\" MainRoutineName=\"Main\" Disabled=\"false\" UseAsFolder=\"false\">\n"
          "<Tags>\n" +
          tags + "</Tags>\n<Routines>\n" + routines +
          "</Routines>\n</Program>\n</Programs>\n</Controller>\n</RSLogix5000Content>\n";
+}
+
+/// A user data type as Studio 5000 exports it (reh3376/acd-l5x-tool-lib's
+/// Cooker_1_AutoLogic_Program.L5X has this shape: arrays of DINT bit words, TIMERs and REALs
+/// in one structure, BOOL members as BITs of a hidden SINT).
+inline std::string cell_data_type() {
+  return "<DataType Name=\"Cell_Data\" Family=\"NoFamily\" Class=\"User\">\n<Members>\n"
+         "<Member Name=\"BIT_Logic\" DataType=\"DINT\" Dimension=\"4\" Radix=\"Decimal\" "
+         "Hidden=\"false\"/>\n"
+         "<Member Name=\"TMR\" DataType=\"TIMER\" Dimension=\"5\" Radix=\"NullType\" "
+         "Hidden=\"false\"/>\n"
+         "<Member Name=\"SP\" DataType=\"DINT\" Dimension=\"3\" Radix=\"Decimal\" "
+         "Hidden=\"false\"/>\n"
+         "<Member Name=\"ZZZZZZZZZZCell_Data4\" DataType=\"SINT\" Dimension=\"0\" "
+         "Radix=\"Decimal\" Hidden=\"true\"/>\n"
+         "<Member Name=\"Flag\" DataType=\"BIT\" Dimension=\"0\" Radix=\"Decimal\" "
+         "Hidden=\"false\" Target=\"ZZZZZZZZZZCell_Data4\" BitNumber=\"0\"/>\n"
+         "<Member Name=\"Level\" DataType=\"REAL\" Dimension=\"0\" Radix=\"Float\" "
+         "Hidden=\"false\"/>\n"
+         "</Members>\n</DataType>\n";
+}
+
+/// A controller tag `name` of Cell_Data: BIT_Logic[1] = bits, SP[2] = sp, TMR[3].PRE = pre.
+inline std::string cell_tag(const std::string& name, long bits, long sp, long pre) {
+  auto timer = [](long p) {
+    return "<Structure DataType=\"TIMER\">\n<DataValueMember Name=\"PRE\" DataType=\"DINT\" "
+           "Radix=\"Decimal\" Value=\"" +
+           std::to_string(p) +
+           "\"/>\n<DataValueMember Name=\"ACC\" DataType=\"DINT\" Radix=\"Decimal\" "
+           "Value=\"0\"/>\n<DataValueMember Name=\"DN\" DataType=\"BOOL\" Value=\"0\"/>\n"
+           "</Structure>\n";
+  };
+  std::string out = "<Tag Name=\"" + name +
+                    "\" Class=\"Standard\" TagType=\"Base\" DataType=\"Cell_Data\" "
+                    "Constant=\"false\">\n<Data Format=\"Decorated\">\n"
+                    "<Structure DataType=\"Cell_Data\">\n"
+                    "<ArrayMember Name=\"BIT_Logic\" DataType=\"DINT\" Dimensions=\"4\" "
+                    "Radix=\"Decimal\">\n";
+  for (int i = 0; i < 4; ++i)
+    out += "<Element Index=\"[" + std::to_string(i) + "]\" Value=\"" +
+           std::to_string(i == 1 ? bits : 0) + "\"/>\n";
+  out += "</ArrayMember>\n<ArrayMember Name=\"TMR\" DataType=\"TIMER\" Dimensions=\"5\">\n";
+  for (int i = 0; i < 5; ++i)
+    out += "<Element Index=\"[" + std::to_string(i) + "]\">\n" + timer(i == 3 ? pre : 0) +
+           "</Element>\n";
+  out +=
+      "</ArrayMember>\n<ArrayMember Name=\"SP\" DataType=\"DINT\" Dimensions=\"3\" "
+      "Radix=\"Decimal\">\n";
+  for (int i = 0; i < 3; ++i)
+    out += "<Element Index=\"[" + std::to_string(i) + "]\" Value=\"" +
+           std::to_string(i == 2 ? sp : 0) + "\"/>\n";
+  return out +
+         "</ArrayMember>\n<DataValueMember Name=\"Flag\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"Level\" DataType=\"REAL\" Radix=\"Float\" "
+         "Value=\"0.0\"/>\n</Structure>\n</Data>\n</Tag>\n";
+}
+
+inline std::string l5x_ladder(const std::string& tags, const std::string& routines) {
+  return l5x_ladder(tags, routines, "", "");
 }
 
 /// A two-step sequence written in ladder as the French school writes grafcets (step bits X.i
