@@ -139,7 +139,8 @@ void names_written(const model::StmtList& body, std::set<std::string>& out) {
 
 bool is_output(const std::string& m) {
   return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ADD" ||
-         m == "SUB" || m == "MUL" || m == "ONS" || m == "TON" || m == "RES" || m == "JSR";
+         m == "SUB" || m == "MUL" || m == "ONS" || m == "TON" || m == "CTU" || m == "CTD" ||
+         m == "RES" || m == "JSR";
 }
 
 }  // namespace
@@ -332,8 +333,8 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
   }
   if (!is_output(m)) {
     fail("unsupported: RLL instruction " + m +
-         " (read: XIC XIO OTE OTL OTU ONS TON RES JSR MOV CLR ADD SUB MUL NOP AFI EQU NEQ GRT "
-         "GEQ LES LEQ LIM)");
+         " (read: XIC XIO OTE OTL OTU ONS TON CTU CTD RES JSR MOV CLR ADD SUB MUL NOP AFI EQU "
+         "NEQ GRT GEQ LES LEQ LIM)");
     return;
   }
   if (m == "OTE" || m == "OTL" || m == "OTU") {
@@ -396,8 +397,47 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     if (!arity(1)) return;
     auto reset = checked(operands_.reset(ops[0], error));
     if (!reset) return;
-    before_write(reset->target);
-    out_->push_back(p.expr ? make_if(p.expr, {reset}) : reset);
+    for (const auto& s : *reset) before_write(s->target);
+    if (p.expr)
+      out_->push_back(make_if(p.expr, std::move(*reset)));
+    else
+      for (auto& s : *reset) out_->push_back(std::move(s));
+    return;
+  }
+  if (m == "CTU" || m == "CTD") {
+    // 1756-RM003, CTU (CTD): with the rung TRUE and .CU (.CD) clear, .ACC goes up (down) by 1;
+    // with the rung TRUE, .CU (.CD) is set and .DN becomes .ACC >= .PRE; with the rung FALSE,
+    // .CU (.CD) is cleared and .DN kept. CTU(counter, ?, ?): the `?` are the editor's display.
+    if (!arity(3)) return;
+    const auto c = checked(operands_.counter(ops[0], error));
+    if (!c) return;
+    const bool up = m == "CTU";
+    const auto& enable = up ? c->up : c->down;
+    for (const auto* name : {&c->accumulated, &enable, &c->done}) before_write(*name);
+    using model::make_name;
+    const auto acc = make_name(c->accumulated, where_);
+    model::StmtList counting = {
+        make_if(model::make_unary(ExprKind::Not, make_name(enable, where_), where_),
+                {model::make_assign(c->accumulated,
+                                    model::make_binary(up ? ExprKind::Add : ExprKind::Sub, acc,
+                                                       model::make_int(1, where_), where_),
+                                    where_)}),
+        model::make_assign(enable, model::make_bool(true, where_), where_),
+        model::make_assign(
+            c->done,
+            model::make_binary(ExprKind::Ge, acc, model::make_int(c->preset, where_), where_),
+            where_)};
+    if (!p.expr) {
+      for (auto& s : counting) out_->push_back(std::move(s));
+      return;
+    }
+    auto s = std::make_shared<model::Stmt>();
+    s->kind = model::StmtKind::If;
+    s->where = where_;
+    s->conditions.push_back(p.expr);
+    s->bodies.push_back(std::move(counting));
+    s->else_body = {model::make_assign(enable, model::make_bool(false, where_), where_)};
+    out_->push_back(std::move(s));
     return;
   }
   if (m == "TON") {

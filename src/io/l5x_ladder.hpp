@@ -7,8 +7,8 @@
 // The rung condition flows as in Logix 5000 Controllers General Instructions (1756-RM003): an
 // examine instruction (XIC, XIO, comparisons) ANDs into it, each leg of a branch starts from the
 // condition before the branch and the branch's result is the OR of its legs, and an output
-// instruction (OTE, OTL, OTU, MOV, CLR, ADD, SUB, MUL, ONS, TON, RES, JSR) acts on the
-// condition reaching it.
+// instruction (OTE, OTL, OTU, MOV, CLR, ADD, SUB, MUL, ONS, TON, CTU, CTD, RES, JSR) acts on
+// the condition reaching it.
 // Instructions run in the order they are written, so a value written by one is what the next
 // reads. Where a condition already formed reads a tag that a later instruction writes, its
 // value is kept in a hidden BOOL temporary first (reset at the end of the body, so it holds no
@@ -60,8 +60,15 @@ class RungOperands {
   /// The TON instance a TIMER tag is, and its preset in milliseconds.
   virtual std::optional<std::pair<std::string, std::int64_t>> timer(const std::string& operand,
                                                                     std::string& error) = 0;
-  /// What `RES(operand)` does: the TON call that clears a TIMER's bits and time.
-  virtual model::StmtPtr reset(const std::string& operand, std::string& error) = 0;
+  /// The variables a COUNTER tag is, and its preset.
+  struct Counter {
+    std::string accumulated, up, down, done;  ///< .ACC (DINT), .CU, .CD, .DN (BOOL)
+    std::int64_t preset = 0;
+  };
+  virtual std::optional<Counter> counter(const std::string& operand, std::string& error) = 0;
+  /// What `RES(operand)` does: for a TIMER, the TON call that clears its bits and time; for a
+  /// COUNTER, .ACC, .CU, .CD and .DN cleared.
+  virtual std::optional<model::StmtList> reset(const std::string& operand, std::string& error) = 0;
   /// The statements of the routine `JSR(routine, 0)` runs.
   virtual std::optional<model::StmtList> subroutine(const std::string& routine,
                                                     std::string& error) = 0;

@@ -604,14 +604,17 @@ class LadderProgram : public l5x::RungOperands {
     if (const auto v = plcopen::parse_int_literal(operand); v.value)
       return model::make_int(*v.value, at_);
     bool structured = false;
-    if (const auto leaf = leaf_of(operand, error, structured); structured && leaf &&
-                                                               leaf->kind == l5x::LeafKind::Timer &&
-                                                               model::iequals(leaf->rest, "PRE")) {
-      // Read as the constant it is: no rung writes a preset (value_target refuses that).
-      if (const auto t = timers_.find(model::to_upper(leaf->path)); t != timers_.end())
-        return model::make_int(t->second.second, at_);
-      error = "TIMER '" + leaf->path + "' is not run by a TON: its preset is not read";
-      return nullptr;
+    const auto leaf = leaf_of(operand, error, structured);
+    // A preset reads as the constant it is: no rung writes one (value_target refuses that).
+    if (structured && leaf && model::iequals(leaf->rest, "PRE")) {
+      if (leaf->kind == l5x::LeafKind::Counter)
+        return model::make_int(counters_.at(model::to_upper(leaf->path)).preset, at_);
+      if (leaf->kind == l5x::LeafKind::Timer) {
+        if (const auto t = timers_.find(model::to_upper(leaf->path)); t != timers_.end())
+          return model::make_int(t->second.second, at_);
+        error = "TIMER '" + leaf->path + "' is not run by a TON: its preset is not read";
+        return nullptr;
+      }
     }
     error.clear();
     const auto name = value_target(operand, error);
@@ -623,9 +626,13 @@ class LadderProgram : public l5x::RungOperands {
     if (const auto leaf = leaf_of(operand, error, structured); structured) {
       if (!leaf) return {};
       if (leaf->kind == l5x::LeafKind::Int && leaf->rest.empty()) return leaf->variable;
-      error = leaf->kind == l5x::LeafKind::Timer && model::iequals(leaf->rest, "PRE")
+      if (leaf->kind == l5x::LeafKind::Counter && model::iequals(leaf->rest, "ACC"))
+        return counters_.at(model::to_upper(leaf->path)).accumulated;
+      error = (leaf->kind == l5x::LeafKind::Timer || leaf->kind == l5x::LeafKind::Counter) &&
+                      model::iequals(leaf->rest, "PRE")
                   ? "unsupported: writing '" + operand +
-                        "' (a TIMER's preset is read from its tag's data, not written by rungs)"
+                        "' (a TIMER's or COUNTER's preset is read from its tag's data, not "
+                        "written by rungs)"
                   : "unsupported: '" + operand + "' (" + leaf->type_name +
                         ") as an integer (integer tags, their integer members and elements, "
                         "and literals are)";
@@ -662,7 +669,20 @@ class LadderProgram : public l5x::RungOperands {
   // RES on a TIMER that TON runs: calling the TON with IN FALSE clears its DN, EN, TT and
   // time, as RES clears .DN, .EN, .TT and .ACC (1756-RM003, RES); the TON then times again
   // from 0 when its rung is TRUE.
-  model::StmtPtr reset(const std::string& operand, std::string& error) override {
+  std::optional<model::StmtList> reset(const std::string& operand, std::string& error) override {
+    bool is_structured = false;
+    if (const auto leaf = leaf_of(operand, error, is_structured);
+        is_structured && leaf && leaf->kind == l5x::LeafKind::Counter) {
+      // RES clears the COUNTER's .ACC and status bits (1756-RM003, RES).
+      const auto c = counter(operand, error);
+      if (!c) return std::nullopt;
+      model::StmtList out;
+      out.push_back(model::make_assign(c->accumulated, model::make_int(0, at_), at_));
+      for (const auto* bit : {&c->up, &c->down, &c->done})
+        out.push_back(model::make_assign(*bit, model::make_bool(false, at_), at_));
+      return out;
+    }
+    error.clear();
     const auto t = timer(operand, error);
     if (!t) {
       bool structured = false;
@@ -670,15 +690,28 @@ class LadderProgram : public l5x::RungOperands {
       const auto leaf = leaf_of(operand, ignored, structured);
       const bool idle_timer = structured ? leaf && leaf->kind == l5x::LeafKind::Timer
                                          : timer_tags_.count(model::to_upper(operand)) > 0;
-      error = "unsupported: RES on '" + operand + "' (RES of a TIMER that a TON runs is read" +
+      error = "unsupported: RES on '" + operand +
+              "' (RES of a COUNTER, or of a TIMER that a TON runs, is read" +
               (idle_timer           ? "; no TON runs this one)"
                : structured && leaf ? "; it is " + leaf->type_name + ")"
                                     : "): " + error);
-      return nullptr;
+      return std::nullopt;
     }
-    return model::make_fb_call(
+    return model::StmtList{model::make_fb_call(
         t->first, {{"IN", model::make_bool(false, at_)}, {"PT", model::make_time(t->second, at_)}},
-        at_);
+        at_)};
+  }
+
+  std::optional<Counter> counter(const std::string& operand, std::string& error) override {
+    bool structured = false;
+    const auto leaf = leaf_of(operand, error, structured);
+    if (!structured || !leaf || leaf->kind != l5x::LeafKind::Counter || !leaf->rest.empty()) {
+      if (error.empty())
+        error = "'" + operand + "' is not a COUNTER tag" +
+                (structured && leaf ? " (it is " + leaf->type_name + ")" : std::string());
+      return std::nullopt;
+    }
+    return counters_.at(model::to_upper(leaf->path));
   }
 
   std::optional<model::StmtList> subroutine(const std::string& routine,
@@ -765,6 +798,16 @@ class LadderProgram : public l5x::RungOperands {
   std::string leaf_bit(const l5x::TagLeaf& leaf, const std::string& operand,
                        std::string& error) const {
     if (leaf.kind == l5x::LeafKind::Bool && leaf.rest.empty()) return leaf.variable;
+    if (leaf.kind == l5x::LeafKind::Counter) {
+      const auto& c = counters_.at(model::to_upper(leaf.path));
+      const auto m = model::to_upper(leaf.rest);
+      if (m == "DN") return c.done;
+      if (m == "CU") return c.up;
+      if (m == "CD") return c.down;
+      error =
+          "unsupported: '" + operand + "' (of a COUNTER, .DN, .CU, .CD, .ACC and .PRE are read)";
+      return {};
+    }
     if (leaf.kind == l5x::LeafKind::Int && !leaf.rest.empty() && leaf.rest.size() <= 2 &&
         leaf.rest.find_first_not_of("0123456789") == std::string::npos) {
       if (split_leaves_.count(model::to_upper(leaf.path))) return leaf.variable + "_" + leaf.rest;
@@ -1009,7 +1052,7 @@ class LadderProgram : public l5x::RungOperands {
                                 leaf.path + "' (one TON per TIMER is read)");
           continue;
         }
-        const auto preset = l5x::leaf_timer_preset(leaf);
+        const auto preset = l5x::leaf_member(leaf, "PRE");
         if (preset < 0) error_at(v.where, "TIMER '" + leaf.path + "' with a negative preset");
         v.type = model::Type::function_block(model::StandardFb::TON);
         v.direction = model::VarDirection::Local;
@@ -1021,6 +1064,26 @@ class LadderProgram : public l5x::RungOperands {
           continue;
         }
         pou_.variables.push_back(std::move(v));
+        continue;
+      }
+      if (leaf.kind == l5x::LeafKind::Counter) {
+        // .CU and .CD start set: the prescan sets them so that the first scan does not count
+        // (1756-RM003, CTU and CTD).
+        Counter c{v.name + "_ACC", v.name + "_CU", v.name + "_CD", v.name + "_DN",
+                  l5x::leaf_member(leaf, "PRE")};
+        model::Variable acc = v;
+        acc.name = c.accumulated;
+        acc.type = *model::elementary_type("DINT");
+        acc.initial = l5x::leaf_member(leaf, "ACC");
+        declare(std::move(acc));
+        for (const auto* bit : {&c.up, &c.down, &c.done}) {
+          model::Variable b = v;
+          b.name = *bit;
+          b.type = model::Type::boolean();
+          b.initial = bit == &c.done ? (l5x::leaf_member(leaf, "DN") != 0 ? 1 : 0) : 1;
+          declare(std::move(b));
+        }
+        counters_[key] = std::move(c);
         continue;
       }
       if (leaf.kind == l5x::LeafKind::Other) continue;  // refused where it is read
@@ -1107,7 +1170,8 @@ class LadderProgram : public l5x::RungOperands {
   StructuredTags structured_;
   /// Upper-case path -> the part of a structured tag the rungs use.
   std::map<std::string, l5x::TagLeaf> leaves_;
-  std::set<std::string> split_leaves_;  ///< upper-case paths of integer parts read by bit
+  std::set<std::string> split_leaves_;       ///< upper-case paths of integer parts read by bit
+  std::map<std::string, Counter> counters_;  ///< upper-case path of a COUNTER -> its variables
   std::map<std::string, pugi::xml_node> routines_;
   std::map<std::string, std::vector<std::pair<pugi::xml_node, l5x::RungSequence>>> parsed_;
   std::map<std::string, std::set<int>> bits_;  ///< upper-case tag -> bits the rungs use
@@ -1358,10 +1422,12 @@ class L5xReader {
     const auto dims = l5x::tag_dimensions(t.attribute("Dimensions").value());
     const auto et = model::elementary_type(type);
     const bool part_type = types_.is_user_type(type) || model::iequals(type, "TIMER") ||
+                           model::iequals(type, "COUNTER") ||
                            (et && (et->kind == model::TypeKind::Bool ||
                                    (et->kind == model::TypeKind::Int && et->enumerators.empty())));
     if (!dims || !part_type) return false;
-    if (dims->empty() && !types_.is_user_type(type) && !(global && model::iequals(type, "TIMER")))
+    if (dims->empty() && !types_.is_user_type(type) && !model::iequals(type, "COUNTER") &&
+        !(global && model::iequals(type, "TIMER")))
       return false;
     auto& into = global ? controller_structured_ : program_structured_;
     if (into.count(model::to_upper(name))) return false;  // reported as a duplicate

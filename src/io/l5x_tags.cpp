@@ -208,7 +208,7 @@ std::optional<TagLeaf> TagTypes::resolve(const StructuredTag& tag, const std::st
   }
   if (segs->size() > i + 1 || (i < segs->size() && (*segs)[i].index)) {
     error = "unsupported: operand '" + operand + "' (below '" + leaf.path + "' of type " + type +
-            " only a bit or a TIMER member is read)";
+            " only a bit or a TIMER or COUNTER member is read)";
     return std::nullopt;
   }
   if (i < segs->size()) leaf.rest = (*segs)[i].name;
@@ -217,6 +217,8 @@ std::optional<TagLeaf> TagTypes::resolve(const StructuredTag& tag, const std::st
   const auto et = model::elementary_type(type);
   if (model::iequals(type, "TIMER"))
     leaf.kind = LeafKind::Timer;
+  else if (model::iequals(type, "COUNTER"))
+    leaf.kind = LeafKind::Counter;
   else if (et && et->kind == model::TypeKind::Bool)
     leaf.kind = LeafKind::Bool;
   else if (et && et->kind == model::TypeKind::Int && et->enumerators.empty())
@@ -229,8 +231,8 @@ std::optional<std::int64_t> leaf_initial(const TagLeaf& leaf) {
   return plcopen::parse_int_literal(trim(leaf.value.attribute("Value").value())).value;
 }
 
-std::int64_t leaf_timer_preset(const TagLeaf& leaf) {
-  const auto pre = member_value(leaf.value, "PRE");
+std::int64_t leaf_member(const TagLeaf& leaf, const char* member) {
+  const auto pre = member_value(leaf.value, member);
   if (!pre) return 0;
   const auto v = plcopen::parse_int_literal(trim(pre.attribute("Value").value()));
   return v.value ? *v.value : 0;

@@ -25,15 +25,16 @@ struct StructuredTag {
   bool global = false;          ///< a controller tag
 };
 
-enum class LeafKind { Bool, Int, Timer, Other };
+enum class LeafKind { Bool, Int, Timer, Counter, Other };
 
-/// The part of a structured tag an operand addresses, down to a BOOL, an integer or a TIMER.
+/// The part of a structured tag an operand addresses, down to a BOOL, an integer, a TIMER or a
+/// COUNTER.
 struct TagLeaf {
   const StructuredTag* tag = nullptr;
   std::string path;      ///< members spelled as declared: `Cooker1.BIT_Logic[0]`
   std::string variable;  ///< the model's name for it: `Cooker1_BIT_Logic_0`
   LeafKind kind = LeafKind::Other;
-  std::string type_name;  ///< BOOL, DINT, TIMER, REAL...
+  std::string type_name;  ///< BOOL, DINT, TIMER, COUNTER, REAL...
   std::string rest;       ///< what the operand names below the leaf: a bit (`2`), `DN`, or ""
   pugi::xml_node value;   ///< its decorated data: a node with a Value, or a TIMER's structure
 };
@@ -63,7 +64,8 @@ std::optional<std::vector<int>> tag_dimensions(const std::string& text);
 /// nullopt when the value is not an integer literal.
 std::optional<std::int64_t> leaf_initial(const TagLeaf& leaf);
 
-/// The PRE of a TIMER leaf's decorated data (0 when none is written).
-std::int64_t leaf_timer_preset(const TagLeaf& leaf);
+/// A member (PRE, ACC, DN...) of a TIMER or COUNTER leaf's decorated data (0 when none is
+/// written).
+std::int64_t leaf_member(const TagLeaf& leaf, const char* member);
 
 }  // namespace sfcv::io::l5x

@@ -133,6 +133,33 @@ TEST(L5xE2E, PartsOfAUserTypeTagFollowTheInstructionRules) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
+// A COUNTER from 1756-RM003's text: CTU counts a rising rung (it adds 1 when the rung is TRUE
+// and .CU clear, then sets .CU; a FALSE rung clears .CU); .DN is .ACC >= .PRE where CTU runs;
+// the prescan sets .CU, so a rung TRUE in the first scan does not count; RES clears .ACC and
+// .CU, so a rung still TRUE counts again in the next scan (the "reset to 1" engineers meet).
+TEST(L5xE2E, CounterFollowsTheInstructionRules) {
+  const auto file = write_temp(
+      rockwell::l5x_ladder(
+          rockwell::counter_tag("C1", 3) + rockwell::alias("go", "Local:1:I.Data.0") +
+              rockwell::alias("down", "Local:1:I.Data.1") +
+              rockwell::alias("rst", "Local:1:I.Data.2") + rockwell::alias("q", "Local:1:O.Data.0"),
+          rockwell::rll_routine(
+              "Main", {"XIC(go)XIO(C1.DN)CTU(C1,?,?);", "XIC(down)GRT(C1.ACC,0)CTD(C1,?,?);",
+                       "XIC(rst)RES(C1);", "XIC(C1.DN)OTE(q);"})),
+      ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AX C1_ACC = 0", "holds"},
+      {"AG (C1_ACC >= 0 & C1_ACC <= 3)", "holds"},
+      {"AG (q -> C1_ACC >= 3)", "holds"},
+      {"EF q", "holds"},
+      {"AG ((rst & go) -> AX ((go & !rst & !down) -> C1_ACC = 1))", "holds"},
+      {"AG ((go & !rst & !down & C1_ACC = 1) -> AX ((go & !rst & !down) -> C1_ACC = 1))", "holds"},
+      {"AG !q", "violated"},
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
 // SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
 std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
   const char* root = std::getenv("SFCV_VENDOR_SAMPLES");
@@ -181,8 +208,10 @@ TEST(L5xE2E, PublicPlantProgramIsRefusedOnlyAtWhatIsNotRead) {
   EXPECT_EQ(r.err.find("which is not a TIMER"), std::string::npos);
   for (const char* reason :
        {"(REAL) as an integer", "(an element chosen by 'Cooker1.Index' is not read",
-        "unsupported: RLL instruction ANALOG_INPUT", "a TIMER's preset is read from its tag's data",
-        "RES on 'Cooker1.TMR_Logic[13]' (RES of a TIMER that a TON runs is read; no TON runs"})
+        "unsupported: RLL instruction ANALOG_INPUT",
+        "a TIMER's or COUNTER's preset is read from its tag's data",
+        "RES on 'Cooker1.TMR_Logic[13]' (RES of a COUNTER, or of a TIMER that a TON runs, is read; "
+        "no TON runs"})
     EXPECT_NE(r.err.find(reason), std::string::npos) << reason;
 }
 

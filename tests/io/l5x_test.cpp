@@ -332,7 +332,7 @@ TEST(L5xLadder, AConditionReadAfterAWriteToWhatItReadsKeepsItsValue) {
 TEST(L5xLadder, WhatTheModelCannotSayIsRefusedAtItsRung) {
   const auto tags = ladder_tags() + dint_tag("n", 0);
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"XIC(start)CTU(C1,?,?);", "rung 0 of routine 'Main': unsupported: RLL instruction CTU"},
+      {"XIC(start)RTO(T1,?,?);", "rung 0 of routine 'Main': unsupported: RLL instruction RTO"},
       {"XIC(start)TON(T1,?,?)OTE(motor);", "unsupported: OTE after TON"},
       {"XIC(start)JSR(Main,0);", "recursive JSR: routine 'Main'"},
       {"JSR(Nowhere,0);", "JSR to 'Nowhere', which is not in the program"},
@@ -447,6 +447,33 @@ TEST(L5xLadder, PartsOfStructuredTagsTheRungsUseAreVariables) {
     EXPECT_EQ(globals->find_variable(absent), nullptr) << absent;
 }
 
+// CTU, CTD and RES of a COUNTER as 1756-RM003 writes them: with the rung TRUE and .CU clear,
+// .ACC goes up; with the rung TRUE, .CU is set and .DN is .ACC >= .PRE; with the rung FALSE,
+// .CU is cleared. RES clears .ACC and the status bits; the prescan sets .CU and .CD.
+TEST(L5xLadder, CountersAreTheirAccumulatorAndStatusBits) {
+  const auto r = io::load_l5x(
+      l5x_ladder(counter_tag("C1", 3) + alias("go", "Local:1:I.Data.0") +
+                     alias("down", "Local:1:I.Data.1") + alias("rst", "Local:1:I.Data.2") +
+                     alias("q", "Local:1:O.Data.0"),
+                 rll_routine("Main", {"XIC(go)CTU(C1,?,?);", "CTD(C1,?,?);", "XIC(rst)RES(C1);",
+                                      "XIC(C1.DN)GEQ(C1.ACC,C1.PRE)OTE(q);"})),
+      "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(ladder_body(r),
+            "IF go THEN\n  IF NOT C1_CU THEN\n    C1_ACC := C1_ACC + 1;\n  END_IF;\n"
+            "  C1_CU := TRUE;\n  C1_DN := C1_ACC >= 3;\nELSE\n  C1_CU := FALSE;\nEND_IF;\n"
+            "IF NOT C1_CD THEN\n  C1_ACC := C1_ACC - 1;\nEND_IF;\nC1_CD := TRUE;\n"
+            "C1_DN := C1_ACC >= 3;\n"
+            "IF rst THEN\n  C1_ACC := 0;\n  C1_CU := FALSE;\n  C1_CD := FALSE;\n"
+            "  C1_DN := FALSE;\nEND_IF;\n"
+            "q := C1_DN AND C1_ACC >= 3;\n");
+  const auto& pou = r.project->pous.back();
+  EXPECT_EQ(pou.find_variable("C1_CU")->initial, 1);
+  EXPECT_EQ(pou.find_variable("C1_CD")->initial, 1);
+  EXPECT_EQ(pou.find_variable("C1_DN")->initial, 0);
+  EXPECT_EQ(pou.find_variable("C1_ACC")->type.name, "DINT");
+}
+
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"XIC(go)MOV(1,Cell1.SP[n]);", "(an element chosen by 'n' is not read: constant indices"},
@@ -456,13 +483,15 @@ TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
       {"XIC(go)MOV(1,Cell1.SP);", "a whole array, 'Cell1.SP', is not read"},
       {"XIC(go)MOV(Cell1,n);", "a whole structure, 'Cell1' of type Cell_Data, is not read"},
       {"XIC(go)TON(Cell1.TMR[2],?,?);XIC(go)MOV(5,Cell1.TMR[2].PRE);",
-       "a TIMER's preset is read from its tag's data"},
+       "a TIMER's or COUNTER's preset is read from its tag's data"},
       {"XIC(Cell1.TMR[4].DN)OTE(q);", "TIMER 'Cell1.TMR[4]' is not run by a TON"},
       {"XIC(Cell1.SP[1].2)MOV(1,Cell1.SP[1]);",
        "a bit of 'Cell1.SP[1]' is read when the rungs use that element only bit by bit"},
       {"XIC(go)TON(Cell1.TMR[1],?,?);XIC(q)TON(Cell1.TMR[1],?,?);",
        "TON runs 2 times on TIMER 'Cell1.TMR[1]'"},
       {"XIC(go)RES(n);", "unsupported: RES on 'n'"},
+      {"XIC(go)CTU(n,?,?);", "'n' is not a COUNTER tag"},
+      {"XIC(go)CTU(Cell1.SP[1],?,?);", "'Cell1.SP[1]' is not a COUNTER tag (it is DINT)"},
       {"XIC(go)DIV(4,2,n);", "unsupported: RLL instruction DIV"},
   };
   for (const auto& [text, message] : cases) {

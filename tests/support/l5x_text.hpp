@@ -205,6 +205,21 @@ inline std::string timer_tag(const std::string& name, long preset_ms) {
          "</Tag>\n";
 }
 
+inline std::string counter_tag(const std::string& name, long preset) {
+  return "<Tag Name=\"" + name +
+         "\" TagType=\"Base\" DataType=\"COUNTER\" Constant=\"false\">\n"
+         "<Data Format=\"Decorated\">\n<Structure DataType=\"COUNTER\">\n"
+         "<DataValueMember Name=\"PRE\" DataType=\"DINT\" Radix=\"Decimal\" Value=\"" +
+         std::to_string(preset) +
+         "\"/>\n<DataValueMember Name=\"ACC\" DataType=\"DINT\" Radix=\"Decimal\" "
+         "Value=\"0\"/>\n<DataValueMember Name=\"CU\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"CD\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"DN\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"OV\" DataType=\"BOOL\" Value=\"0\"/>\n"
+         "<DataValueMember Name=\"UN\" DataType=\"BOOL\" Value=\"0\"/>\n</Structure>\n"
+         "</Data>\n</Tag>\n";
+}
+
 /// A program whose main routine `Main` is ladder, with `routines` (<Routine> elements) beside it
 /// (the shape of francisboudreau7/l5x_sfc tests/MainProgram.L5X: a main routine of JSRs).
 /// With the controller's user data types (<DataType> elements) and tags beside the program.
