@@ -137,10 +137,135 @@ void names_written(const model::StmtList& body, std::set<std::string>& out) {
   }
 }
 
+// CPT's expression (1756-RM003, Compute/Math Instructions): integer operands and literals,
+// parentheses, unary -, * / MOD, + -, ABS(); other operators and functions are refused by name.
+class ComputeExpression {
+ public:
+  ComputeExpression(std::string_view text, RungOperands& operands, model::SourceLocation where)
+      : text_(text), operands_(operands), where_(std::move(where)) {}
+
+  model::ExprPtr run(std::string& error) {
+    auto e = sum();
+    skip_spaces();
+    if (e && at_ != text_.size()) fail("unexpected '" + std::string(text_.substr(at_, 1)) + "'");
+    error = error_;
+    return error_.empty() ? e : nullptr;
+  }
+
+ private:
+  void skip_spaces() {
+    while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+  }
+  model::ExprPtr fail(std::string message) {
+    if (error_.empty())
+      error_ = "CPT expression '" + std::string(text_) + "': " + std::move(message);
+    return nullptr;
+  }
+  bool take(char c) {
+    skip_spaces();
+    if (at_ < text_.size() && text_[at_] == c) return ++at_, true;
+    return false;
+  }
+  // A word (operand, MOD, a function name) at the cursor, without moving it.
+  std::string word() const {
+    auto end = at_;
+    int depth = 0;
+    while (end < text_.size()) {
+      const char c = text_[end];
+      if (c == '[') ++depth;
+      if (c == ']') --depth;
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == ':' ||
+            c == '[' || c == ']' || c == '#' || (depth > 0 && c == ',')))
+        break;
+      ++end;
+    }
+    return std::string(text_.substr(at_, end - at_));
+  }
+  model::ExprPtr sum() {
+    if (++depth_ > model::kMaxNesting / 4) return fail("nested too deep");
+    auto e = product();
+    while (e) {
+      const auto kind = take('+') ? ExprKind::Add : take('-') ? ExprKind::Sub : ExprKind::Name;
+      if (kind == ExprKind::Name) break;
+      auto rhs = product();
+      if (!rhs) return nullptr;
+      e = model::make_binary(kind, e, rhs, where_);
+    }
+    --depth_;
+    return e;
+  }
+  model::ExprPtr product() {
+    auto e = unary();
+    while (e) {
+      skip_spaces();
+      ExprKind kind = ExprKind::Name;
+      if (take('*')) {
+        if (at_ < text_.size() && text_[at_] == '*') return fail("'**' is not read");
+        kind = ExprKind::Mul;
+      } else if (take('/')) {
+        kind = ExprKind::Div;
+      } else if (model::to_upper(word()) == "MOD") {
+        at_ += 3;
+        kind = ExprKind::Mod;
+      } else {
+        break;
+      }
+      auto rhs = unary();
+      if (!rhs) return nullptr;
+      e = model::make_binary(kind, e, rhs, where_);
+    }
+    return e;
+  }
+  model::ExprPtr unary() {
+    if (++depth_ > model::kMaxNesting / 4) return fail("nested too deep");
+    model::ExprPtr e;
+    if (take('-')) {
+      auto arg = unary();
+      e = arg ? model::make_unary(ExprKind::Neg, arg, where_) : nullptr;
+    } else if (take('(')) {
+      e = sum();
+      if (e && !take(')')) e = fail("a '(' without its ')'");
+    } else {
+      skip_spaces();
+      const auto w = word();
+      if (w.empty())
+        return fail(at_ == text_.size() ? "ends too early"
+                                        : "unexpected '" + std::string(text_.substr(at_, 1)) + "'");
+      at_ += w.size();
+      const auto up = model::to_upper(w);
+      if (take('(')) {
+        if (up != "ABS") return fail("the function " + up + " is not read (ABS is)");
+        auto arg = sum();
+        if (arg && !take(')')) return fail("a '(' without its ')'");
+        if (!arg) return nullptr;
+        e = model::make_call("ABS", {arg}, where_);  // the standard function
+      } else if (up == "AND" || up == "OR" || up == "XOR" || up == "NOT") {
+        return fail("the operator " + up + " is not read");
+      } else if (w.find('.') != std::string::npos &&
+                 std::isdigit(static_cast<unsigned char>(w[0]))) {
+        return fail("the REAL literal " + w + " is not read");
+      } else {
+        std::string error;
+        e = operands_.value(w, error);
+        if (!e) return fail(error);
+      }
+    }
+    --depth_;
+    return e;
+  }
+
+  std::string_view text_;
+  RungOperands& operands_;
+  model::SourceLocation where_;
+  std::size_t at_ = 0;
+  int depth_ = 0;
+  std::string error_;
+};
+
 bool is_output(const std::string& m) {
   return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ADD" ||
-         m == "SUB" || m == "MUL" || m == "ONS" || m == "TON" || m == "CTU" || m == "CTD" ||
-         m == "RES" || m == "JSR";
+         m == "DIV" || m == "MOD" || m == "NEG" || m == "CPT" || m == "SUB" || m == "MUL" ||
+         m == "ONS" || m == "TON" || m == "CTU" || m == "CTD" || m == "RES" || m == "JSR";
 }
 
 }  // namespace
@@ -333,8 +458,8 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
   }
   if (!is_output(m)) {
     fail("unsupported: RLL instruction " + m +
-         " (read: XIC XIO OTE OTL OTU ONS TON CTU CTD RES JSR MOV CLR ADD SUB MUL NOP AFI EQU "
-         "NEQ GRT GEQ LES LEQ LIM)");
+         " (read: XIC XIO OTE OTL OTU ONS TON CTU CTD RES JSR MOV CLR ADD SUB MUL DIV MOD NEG "
+         "CPT NOP AFI EQU NEQ GRT GEQ LES LEQ LIM)");
     return;
   }
   if (m == "OTE" || m == "OTL" || m == "OTU") {
@@ -376,20 +501,38 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
     return;
   }
-  if (m == "ADD" || m == "SUB" || m == "MUL") {
+  if (m == "ADD" || m == "SUB" || m == "MUL" || m == "DIV" || m == "MOD" || m == "NEG" ||
+      m == "CPT") {
     // Integer arithmetic into the destination when the condition is TRUE. A result out of the
-    // destination's range is the range error of the model's assignment, where Logix wraps and
-    // sets S:V (docs/semantics.md 1.15a).
-    if (!arity(3)) return;
-    const auto target = checked(operands_.value_target(ops[2], error));
+    // destination's range, and a division by zero, are the range error of the model's
+    // assignment, where Logix wraps and sets S:V, or faults (docs/semantics.md 1.14). With
+    // integer operands DIV truncates toward zero and MOD is A - TRN(A / B) * B: the model's
+    // `/` and MOD.
+    const bool cpt = m == "CPT";
+    if (!arity(m == "NEG" || cpt ? 2 : 3)) return;
+    const auto target = checked(operands_.value_target(cpt ? ops[0] : ops.back(), error));
     if (target.empty()) return;
-    auto a = checked(operands_.value(ops[0], error));
-    if (!a) return;
-    auto b = checked(operands_.value(ops[1], error));
-    if (!b) return;
-    const auto kind = m == "ADD" ? ExprKind::Add : m == "SUB" ? ExprKind::Sub : ExprKind::Mul;
+    model::ExprPtr value;
+    if (cpt) {
+      value = checked(ComputeExpression(ops[1], operands_, where_).run(error));
+    } else if (m == "NEG") {
+      auto a = checked(operands_.value(ops[0], error));
+      if (a) value = model::make_unary(ExprKind::Neg, a, where_);
+    } else {
+      auto a = checked(operands_.value(ops[0], error));
+      if (!a) return;
+      auto b = checked(operands_.value(ops[1], error));
+      if (!b) return;
+      static const std::map<std::string, ExprKind> kArithmetic = {{"ADD", ExprKind::Add},
+                                                                  {"SUB", ExprKind::Sub},
+                                                                  {"MUL", ExprKind::Mul},
+                                                                  {"DIV", ExprKind::Div},
+                                                                  {"MOD", ExprKind::Mod}};
+      value = model::make_binary(kArithmetic.at(m), a, b, where_);
+    }
+    if (!value) return;
     before_write(target);
-    auto assign = model::make_assign(target, model::make_binary(kind, a, b, where_), where_);
+    auto assign = model::make_assign(target, value, where_);
     out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
     return;
   }

@@ -160,6 +160,26 @@ TEST(L5xE2E, CounterFollowsTheInstructionRules) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
+// Integer arithmetic from 1756-RM003's text: DIV of integers truncates (-7 / 2 is -3), MOD is
+// Source A - TRN(Source A / Source B) * Source B (-7 MOD 2 is -1), NEG negates; CPT computes its
+// expression with * / MOD before + -.
+TEST(L5xE2E, IntegerArithmeticFollowsTheInstructionRules) {
+  const auto file = write_temp(
+      rockwell::l5x_ladder(
+          rockwell::dint_tag("d", 0) + rockwell::dint_tag("m", 0) + rockwell::dint_tag("e", 0) +
+              rockwell::dint_tag("c", 0) + rockwell::alias("go", "Local:1:I.Data.0"),
+          rockwell::rll_routine("Main", {"XIC(go)DIV(-7,2,d)MOD(-7,2,m);", "NEG(d,e);",
+                                         "CPT(c,(d - 1) * 2 + ABS(m) MOD 2);"})),
+      ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AG (go -> d = -3 & m = -1 & e = 3 & c = -7)", "holds"},
+      {"AG (d = 0 | d = -3)", "holds"},
+      {"AG !(d = -3 & m = -1)", "violated"},
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
 // SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
 std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
   const char* root = std::getenv("SFCV_VENDOR_SAMPLES");

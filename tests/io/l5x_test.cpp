@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -474,6 +475,76 @@ TEST(L5xLadder, CountersAreTheirAccumulatorAndStatusBits) {
   EXPECT_EQ(pou.find_variable("C1_ACC")->type.name, "DINT");
 }
 
+// Two programs of one file read a controller tag's part as one global variable, and must read
+// it alike (bit by bit in both, or whole in both).
+TEST(L5xLadder, ProgramsShareTheControllerTagsParts) {
+  auto two_programs = [](const std::string& first, const std::string& second) {
+    auto text = l5x_ladder(alias("go", "Local:1:I.Data.0"), rll_routine("Main", {first}),
+                           cell_data_type(), cell_tag("Cell1", 0, 0, 100));
+    const auto from = text.find("<Program Use=");
+    const auto to = text.find("</Program>") + std::string("</Program>\n").size();
+    auto copy = text.substr(from, to - from);
+    copy.replace(copy.find("Name=\"Cell\""), 11, "Name=\"Cell2\"");
+    const auto rung = copy.find(first);
+    copy.replace(rung, first.size(), second);
+    return text.insert(to, copy);
+  };
+  auto r = io::load_l5x(two_programs("XIC(go)OTE(Cell1.BIT_Logic[1].0);",
+                                     "XIC(Cell1.BIT_Logic[1].0)MOV(1,Cell1.SP[0]);"),
+                        "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* globals = r.project->find_pou("Plant");
+  ASSERT_NE(globals, nullptr);
+  EXPECT_EQ(std::count_if(globals->variables.begin(), globals->variables.end(),
+                          [](const auto& v) { return v.name == "Cell1_BIT_Logic_1_0"; }),
+            1);
+  EXPECT_NE(globals->find_variable("Cell1_SP_0"), nullptr);
+  r = io::load_l5x(
+      two_programs("XIC(go)OTE(Cell1.BIT_Logic[1].0);", "XIC(go)MOV(1,Cell1.BIT_Logic[1]);"),
+      "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("'Cell1.BIT_Logic[1]' is used bit by bit in one program and as a "
+                              "whole in another"),
+            std::string::npos)
+      << errors_of(r);
+  r = io::load_l5x(
+      two_programs("XIC(go)TON(Cell1.TMR[3],?,?);", "XIC(Cell1.TMR[3].DN)OTE(Cell1.Flag);"),
+      "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("the controller's TIMER 'Cell1.TMR[3]' is used by two programs"),
+            std::string::npos)
+      << errors_of(r);
+}
+
+TEST(L5xLadder, ArithmeticAndComputeAssignWhereTheRungIsTrue) {
+  const auto r =
+      io::load_l5x(l5x_ladder(dint_tag("d", 0) + dint_tag("m", 0) + dint_tag("e", 0) +
+                                  dint_tag("c", 0) + alias("go", "Local:1:I.Data.0"),
+                              rll_routine("Main", {"XIC(go)DIV(-7,2,d)MOD(-7,2,m);", "NEG(d,e);",
+                                                   "CPT(c,(d - 1) * 2 + ABS(m) MOD 2);"})),
+                   "Cell.L5X");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(ladder_body(r),
+            "IF go THEN\n  d := -7 / 2;\nEND_IF;\nIF go THEN\n  m := -7 MOD 2;\nEND_IF;\n"
+            "e := -d;\nc := (d - 1) * 2 + ABS(m) MOD 2;\n");
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"CPT(c,d ** 2);", "CPT expression 'd ** 2': '**' is not read"},
+      {"CPT(c,SQRT(d));", "CPT expression 'SQRT(d)': the function SQRT is not read (ABS is)"},
+      {"CPT(c,d AND 3);", "unexpected 'A'"},
+      {"CPT(c,(d + 1);", "without its ')'"},
+      {"CPT(c,d * 1.5);", "the REAL literal 1.5 is not read"},
+      {"CPT(c,Local:1:I.Data + 1);",
+       "CPT expression 'Local:1:I.Data + 1': unsupported: operand 'Local:1:I.Data'"},
+  };
+  for (const auto& [text, message] : refused) {
+    SCOPED_TRACE(text);
+    const auto bad = io::load_l5x(
+        l5x_ladder(dint_tag("d", 0) + dint_tag("c", 0), rll_routine("Main", {text})), "Cell.L5X");
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(errors_of(bad).find(message), std::string::npos) << errors_of(bad);
+  }
+}
+
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"XIC(go)MOV(1,Cell1.SP[n]);", "(an element chosen by 'n' is not read: constant indices"},
@@ -492,7 +563,7 @@ TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
       {"XIC(go)RES(n);", "unsupported: RES on 'n'"},
       {"XIC(go)CTU(n,?,?);", "'n' is not a COUNTER tag"},
       {"XIC(go)CTU(Cell1.SP[1],?,?);", "'Cell1.SP[1]' is not a COUNTER tag (it is DINT)"},
-      {"XIC(go)DIV(4,2,n);", "unsupported: RLL instruction DIV"},
+      {"XIC(go)COP(Cell1.SP[0],n,1);", "unsupported: RLL instruction COP"},
   };
   for (const auto& [text, message] : cases) {
     SCOPED_TRACE(text);
