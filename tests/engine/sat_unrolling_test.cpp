@@ -1,7 +1,7 @@
-// The simplifying unrolling of BMC and k-induction (constant folding, structural hashing,
-// gates of up to four inputs mapped from cuts; engine/sat/unrolling.hpp) against the plain one
-// IC3 uses and against simulation, and k-induction's simple-path constraints on a property
-// that needs them.
+// The simplifying unrolling of BMC, k-induction and IC3 on IEC 61131-3 charts (constant
+// folding, structural hashing, gates of up to four inputs mapped from cuts;
+// engine/sat/unrolling.hpp) against the plain one the certificate re-checks use and against
+// simulation, and k-induction's simple-path constraints on a property that needs them.
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,7 @@
 #include "engine/sat/unrolling.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdlib>
 
@@ -223,15 +224,24 @@ void CutMapping::enumerate(std::uint32_t node) {
     const auto readers = c < fanout_.size() ? std::max<std::uint32_t>(fanout_[c], 1) : 1;
     return cuts_[c].front().flow / static_cast<float>(readers);
   };
+  // A fan-in's stored cuts and its trivial cut, in place (no copy of the stored vector).
+  struct FaninCuts {
+    std::array<Cut, kCutsPerNode + 1> cut;
+    std::size_t size = 0;
+    const Cut* begin() const { return cut.data(); }
+    const Cut* end() const { return cut.data() + size; }
+  };
   auto fanin_cuts = [&](AigLit in) {
     const auto c = Aig::node_of(in);
-    std::vector<Cut> out;
-    if (aig_.nodes()[c].kind == Aig::NodeKind::And) out = cuts_[c];
-    Cut trivial;
+    FaninCuts out;
+    if (aig_.nodes()[c].kind == Aig::NodeKind::And)
+      for (const auto& k : cuts_[c])
+        if (out.size < kCutsPerNode) out.cut[out.size++] = k;
+    Cut& trivial = out.cut[out.size++];
+    trivial = Cut{};
     trivial.leaves[0] = c;
     trivial.size = 1;
     trivial.truth = kVar[0];
-    out.push_back(trivial);
     return out;
   };
   // `truth` over `from`'s leaves, as a function of `to`'s (a superset).

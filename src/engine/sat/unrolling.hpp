@@ -67,7 +67,7 @@ class Unrolling {
   /// `from_initial`: latches at frame 0 take their initial values. `simplify`: fold constants
   /// and hash gates (a literal may then be the solver's true literal or its negation, and two
   /// nodes may share a literal); the plain one keeps a fresh variable per latch and gate (the
-  /// Grafcet machine's engines, the certificate re-checks).
+  /// Grafcet machine's engines, the certificate re-checks, Houdini, loop pumping).
   /// `mapping`: the cuts to share (made here when null or of another Aig).
   Unrolling(const semantics::Aig& aig, Solver& solver, bool from_initial, bool simplify = false,
             std::shared_ptr<CutMapping> mapping = nullptr);
