@@ -524,6 +524,7 @@ class LadderProgram : public l5x::RungOperands {
     const std::map<std::string, l5x::StructuredTag>* controller = nullptr;
     model::Pou* globals = nullptr;
     std::map<std::string, bool>* global_split = nullptr;
+    const std::set<std::string>* consumed = nullptr;  ///< consumed tags that are not structured
   };
 
   LadderProgram(XmlContext& ctx, model::Pou& pou,
@@ -587,6 +588,7 @@ class LadderProgram : public l5x::RungOperands {
   }
 
   std::string bit_target(const std::string& operand, std::string& error) override {
+    if (consumed_write(operand, error)) return {};
     bool structured = false;
     if (const auto leaf = leaf_of(operand, error, structured); structured)
       return leaf ? leaf_bit(*leaf, operand, error) : std::string();
@@ -617,11 +619,17 @@ class LadderProgram : public l5x::RungOperands {
       }
     }
     error.clear();
-    const auto name = value_target(operand, error);
+    const auto name = integer_name(operand, error);
     return name.empty() ? nullptr : model::make_name(name, at_);
   }
 
   std::string value_target(const std::string& operand, std::string& error) override {
+    if (consumed_write(operand, error)) return {};
+    return integer_name(operand, error);
+  }
+
+  // The integer variable an operand names, read or written.
+  std::string integer_name(const std::string& operand, std::string& error) {
     bool structured = false;
     if (const auto leaf = leaf_of(operand, error, structured); structured) {
       if (!leaf) return {};
@@ -648,6 +656,7 @@ class LadderProgram : public l5x::RungOperands {
 
   std::optional<std::pair<std::string, std::int64_t>> timer(const std::string& operand,
                                                             std::string& error) override {
+    if (consumed_write(operand, error)) return std::nullopt;
     bool structured = false;
     std::string key = model::to_upper(operand);
     if (const auto leaf = leaf_of(operand, error, structured); structured) {
@@ -703,6 +712,7 @@ class LadderProgram : public l5x::RungOperands {
   }
 
   std::optional<Counter> counter(const std::string& operand, std::string& error) override {
+    if (consumed_write(operand, error)) return std::nullopt;
     bool structured = false;
     const auto leaf = leaf_of(operand, error, structured);
     if (!structured || !leaf || leaf->kind != l5x::LeafKind::Counter || !leaf->rest.empty()) {
@@ -792,6 +802,22 @@ class LadderProgram : public l5x::RungOperands {
     if (!tag) return std::nullopt;
     structured = true;
     return structured_.types->resolve(*tag, operand, error);
+  }
+
+  // A consumed tag is written by the controller producing it, never by these rungs: it is an
+  // input of the model (docs/semantics.md 1.14).
+  bool consumed_write(const std::string& operand, std::string& error) const {
+    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
+    bool structured = false;
+    std::string ignored;
+    const auto leaf = leaf_of(operand, ignored, structured);
+    const bool consumed = structured ? leaf && leaf->tag->consumed
+                                     : structured_.consumed && structured_.consumed->count(head) &&
+                                           !pou_.find_variable(head);
+    if (!consumed) return false;
+    error = "unsupported: writing '" + operand +
+            "', a consumed tag (the controller producing it writes it; it is read as an input)";
+    return true;
   }
 
   // The BOOL a BOOL part, or a bit of an integer part read bit by bit, is.
@@ -1275,8 +1301,12 @@ class L5xReader {
           std::string_view(r.attribute("Type").value()) == "RLL") {
         // The controller's structured tags come from its <Tags>, so its list exists.
         LadderProgram::StructuredTags structured{
-            &types_, &program_structured_, &controller_structured_,
-            globals_index_ ? &project_.pous[*globals_index_] : nullptr, &global_split_};
+            &types_,
+            &program_structured_,
+            &controller_structured_,
+            globals_index_ ? &project_.pous[*globals_index_] : nullptr,
+            &global_split_,
+            &consumed_plain_};
         LadderProgram(ctx_, pou, timer_tags_, structured).read(p, r);
         project_.pous.push_back(std::move(pou));
         return;
@@ -1368,7 +1398,9 @@ class L5xReader {
       const std::string type = trim(t.attribute("DataType").value());
       if (kind == "Alias") {
         if (!io_alias(t, v, global)) continue;
-      } else if (kind != "Base") {
+      } else if (kind == "Consumed" && structured_tag(t, v.name, type, global)) {
+        continue;  // read part by part, as inputs (another controller writes it)
+      } else if (kind != "Base" && kind != "Produced" && kind != "Consumed") {
         ctx_.note(t,
                   "tag '" + v.name + "' (" + kind + ") is not modelled: a use of it is an error");
         continue;
@@ -1406,6 +1438,7 @@ class L5xReader {
           }
         }
         initial_value(t, v);
+        if (kind == "Consumed") consumed_plain_.insert(model::to_upper(v.name));
       }
       if (pou.find_variable(v.name)) {
         ctx_.error(t, "duplicate tag '" + v.name + "'");
@@ -1431,7 +1464,9 @@ class L5xReader {
       return false;
     auto& into = global ? controller_structured_ : program_structured_;
     if (into.count(model::to_upper(name))) return false;  // reported as a duplicate
-    into[model::to_upper(name)] = l5x::StructuredTag{t, name, type, *dims, global};
+    into[model::to_upper(name)] = l5x::StructuredTag{
+        t,     name,   type,
+        *dims, global, std::string_view(t.attribute("TagType").value()) == "Consumed"};
     return true;
   }
 
@@ -1505,6 +1540,7 @@ class L5xReader {
   std::map<std::string, l5x::StructuredTag> program_structured_, controller_structured_;
   std::optional<std::size_t> globals_index_;  ///< the controller's list in project_.pous
   std::map<std::string, bool> global_split_;  ///< see LadderProgram::StructuredTags
+  std::set<std::string> consumed_plain_;      ///< upper-case consumed BOOL and integer tags
 };
 
 }  // namespace

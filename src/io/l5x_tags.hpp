@@ -23,6 +23,7 @@ struct StructuredTag {
   std::string data_type;        ///< DINT, TIMER, a user type...
   std::vector<int> dimensions;  ///< empty: not an array
   bool global = false;          ///< a controller tag
+  bool consumed = false;        ///< TagType Consumed: another controller writes it
 };
 
 enum class LeafKind { Bool, Int, Timer, Counter, Other };

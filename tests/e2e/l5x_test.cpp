@@ -180,6 +180,23 @@ TEST(L5xE2E, IntegerArithmeticFollowsTheInstructionRules) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
+// A consumed tag's part (another controller writes it, nothing in the file does) is an input:
+// its bit is TRUE in the tag's data, and still q can fall and rise at any time.
+TEST(L5xE2E, ConsumedTagPartsAreInputs) {
+  auto consumed = rockwell::cell_tag("Still", 0b10, 0, 100);
+  const std::string base = "TagType=\"Base\"";
+  consumed.replace(consumed.find(base), base.size(), "TagType=\"Consumed\"");
+  const auto file = write_temp(
+      rockwell::l5x_ladder(rockwell::alias("q", "Local:1:O.Data.0"),
+                           rockwell::rll_routine("Main", {"XIC(Still.BIT_Logic[1].1)OTE(q);"}),
+                           rockwell::cell_data_type(), consumed),
+      ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AG EF q", "holds"}, {"AG EF !q", "holds"}, {"AX AG q", "violated"}};
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
 // SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
 std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
   const char* root = std::getenv("SFCV_VENDOR_SAMPLES");

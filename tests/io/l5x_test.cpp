@@ -545,6 +545,42 @@ TEST(L5xLadder, ArithmeticAndComputeAssignWhereTheRungIsTrue) {
   }
 }
 
+// A consumed tag is written by the controller producing it: its parts are read like a base
+// tag's (globals nothing in the file writes: inputs, docs/semantics.md 1.8), and a rung writing
+// one is refused.
+TEST(L5xLadder, ConsumedTagsAreReadAndNeverWritten) {
+  auto consumed = cell_tag("Still", 0b10, 0, 100);
+  const std::string base = "TagType=\"Base\"";
+  consumed.replace(consumed.find(base), base.size(), "TagType=\"Consumed\"");
+  const auto plain =
+      "<Tag Name=\"Level\" TagType=\"Consumed\" DataType=\"DINT\">\n"
+      "<Data Format=\"Decorated\">\n<DataValue DataType=\"DINT\" Value=\"4\"/>\n"
+      "</Data>\n</Tag>\n";
+  auto load = [&](const std::string& rung) {
+    return io::load_l5x(l5x_ladder(alias("q", "Local:1:O.Data.0"), rll_routine("Main", {rung}),
+                                   cell_data_type(), consumed + plain),
+                        "Cell.L5X");
+  };
+  const auto r = load("XIC(Still.BIT_Logic[1].1)GRT(Level,3)OTE(q);");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  const auto* globals = r.project->find_pou("Plant");
+  ASSERT_NE(globals, nullptr);
+  ASSERT_NE(globals->find_variable("Still_BIT_Logic_1_1"), nullptr);
+  EXPECT_EQ(globals->find_variable("Still_BIT_Logic_1_1")->initial, 1);
+  EXPECT_EQ(globals->find_variable("Level")->initial, 4);
+  for (const auto& [rung, operand] : std::vector<std::pair<std::string, std::string>>{
+           {"XIC(q)OTE(Still.BIT_Logic[1].1);", "Still.BIT_Logic[1].1"},
+           {"XIC(q)MOV(1,Level);", "Level"},
+           {"XIC(q)ADD(Still.SP[0],1,Still.SP[0]);", "Still.SP[0]"}}) {
+    SCOPED_TRACE(rung);
+    const auto bad = load(rung);
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(errors_of(bad).find("unsupported: writing '" + operand + "', a consumed tag"),
+              std::string::npos)
+        << errors_of(bad);
+  }
+}
+
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"XIC(go)MOV(1,Cell1.SP[n]);", "(an element chosen by 'n' is not read: constant indices"},
