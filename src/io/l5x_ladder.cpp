@@ -166,12 +166,15 @@ class ComputeExpression {
     if (at_ < text_.size() && text_[at_] == c) return ++at_, true;
     return false;
   }
-  // A word (operand, MOD, a function name) at the cursor, without moving it.
-  std::string word() const {
-    auto end = at_;
+  std::string word() const { return word_at(text_, at_); }
+
+ public:
+  // A word (operand, MOD, a function name) at `at`: an operand may hold indices and members.
+  static std::string word_at(std::string_view text, std::size_t at) {
+    auto end = at;
     int depth = 0;
-    while (end < text_.size()) {
-      const char c = text_[end];
+    while (end < text.size()) {
+      const char c = text[end];
       if (c == '[') ++depth;
       if (c == ']') --depth;
       if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == ':' ||
@@ -179,8 +182,10 @@ class ComputeExpression {
         break;
       ++end;
     }
-    return std::string(text_.substr(at_, end - at_));
+    return std::string(text.substr(at, end - at));
   }
+
+ private:
   model::ExprPtr sum() {
     if (++depth_ > model::kMaxNesting / 4) return fail("nested too deep");
     auto e = product();
@@ -261,6 +266,35 @@ class ComputeExpression {
   int depth_ = 0;
   std::string error_;
 };
+
+}  // namespace
+
+std::vector<std::string> compute_operands(std::string_view expression) {
+  std::vector<std::string> out;
+  for (std::size_t at = 0; at < expression.size();) {
+    const char c = expression[at];
+    if (!(std::isalpha(static_cast<unsigned char>(c)) || c == '_')) {
+      // Numbers (with their digits and letters, 16#FF) are no operands.
+      if (std::isdigit(static_cast<unsigned char>(c)))
+        at += ComputeExpression::word_at(expression, at).size();
+      else
+        ++at;
+      continue;
+    }
+    const auto w = ComputeExpression::word_at(expression, at);
+    at += w.size();
+    auto next = at;
+    while (next < expression.size() && std::isspace(static_cast<unsigned char>(expression[next])))
+      ++next;
+    const auto up = model::to_upper(w);
+    const bool function = next < expression.size() && expression[next] == '(';
+    if (!function && up != "MOD" && up != "AND" && up != "OR" && up != "XOR" && up != "NOT")
+      out.push_back(w);
+  }
+  return out;
+}
+
+namespace {
 
 bool is_output(const std::string& m) {
   return m == "OTE" || m == "OTL" || m == "OTU" || m == "MOV" || m == "CLR" || m == "ADD" ||

@@ -45,6 +45,9 @@ std::optional<RungSequence> parse_rung(std::string_view text, std::string& error
 void each_instruction(const RungSequence& rung,
                       const std::function<void(const RungElement&)>& visit);
 
+/// The operands (tags and their parts) a CPT expression reads, in order.
+std::vector<std::string> compute_operands(std::string_view expression);
+
 /// What the operands of a program's rungs are (the L5X reader knows its tags). Each returns
 /// null / "" / nullopt after setting `error`.
 class RungOperands {

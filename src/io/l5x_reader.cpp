@@ -566,6 +566,9 @@ class LadderProgram : public l5x::RungOperands {
   model::ExprPtr bit(const std::string& operand, std::string& error) override {
     if (model::iequals(operand, "S:FS")) return model::make_name(kFirstScan, at_);
     bool structured = false;
+    if (const auto ix = indexed_of(operand, error, structured); ix)
+      return chosen(*ix, error, [&](const std::string& o) { return bit(o, error); });
+    if (!error.empty()) return nullptr;
     if (const auto leaf = leaf_of(operand, error, structured); structured) {
       if (!leaf) return nullptr;
       if (leaf->kind == l5x::LeafKind::Timer) {
@@ -606,6 +609,9 @@ class LadderProgram : public l5x::RungOperands {
     if (const auto v = plcopen::parse_int_literal(operand); v.value)
       return model::make_int(*v.value, at_);
     bool structured = false;
+    if (const auto ix = indexed_of(operand, error, structured); ix)
+      return chosen(*ix, error, [&](const std::string& o) { return value(o, error); });
+    if (!error.empty()) return nullptr;
     const auto leaf = leaf_of(operand, error, structured);
     // A preset reads as the constant it is: no rung writes one (value_target refuses that).
     if (structured && leaf && model::iequals(leaf->rest, "PRE")) {
@@ -820,6 +826,39 @@ class LadderProgram : public l5x::RungOperands {
     return true;
   }
 
+  // `operand` with a tag for index (`Recipe.Step[Index].Heat`), in a structured tag.
+  std::optional<l5x::TagTypes::Indexed> indexed_of(const std::string& operand, std::string& error,
+                                                   bool& structured) const {
+    structured = false;
+    if (!structured_.types) return std::nullopt;
+    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
+    const l5x::StructuredTag* tag = nullptr;
+    if (const auto p = structured_.program->find(head); p != structured_.program->end())
+      tag = &p->second;
+    else if (pou_.find_variable(head) || timer_tags_.count(head))
+      return std::nullopt;
+    else if (const auto c = structured_.controller->find(head); c != structured_.controller->end())
+      tag = &c->second;
+    if (!tag) return std::nullopt;
+    structured = true;
+    return structured_.types->indexed(*tag, operand, error);
+  }
+
+  // The element a tag chooses (`Recipe.Step[Index].Heat`), read: MUX(index, element 0, ...),
+  // an index out of the array's bounds being a range error as the controller's major fault.
+  // `read` reads one element.
+  template <typename Read>
+  model::ExprPtr chosen(const l5x::TagTypes::Indexed& ix, std::string& error, Read read) {
+    std::vector<model::ExprPtr> args;
+    args.push_back(value(ix.index, error));
+    if (!args.back()) return nullptr;
+    for (const auto& element : ix.elements) {
+      args.push_back(read(element));
+      if (!args.back()) return nullptr;
+    }
+    return model::make_call("MUX", std::move(args), at_);
+  }
+
   // The BOOL a BOOL part, or a bit of an integer part read bit by bit, is.
   std::string leaf_bit(const l5x::TagLeaf& leaf, const std::string& operand,
                        std::string& error) const {
@@ -947,13 +986,27 @@ class LadderProgram : public l5x::RungOperands {
   void use(const l5x::RungElement& e, std::size_t i) {
     const auto& operand = e.operands[i];
     if ((e.mnemonic == "JSR") || operand.empty()) return;
+    if (e.mnemonic == "CPT" && i == 1) {
+      for (const auto& o : l5x::compute_operands(operand)) use_operand("CPT", false, o);
+      return;
+    }
+    use_operand(e.mnemonic, i == 0, operand);
+  }
+
+  void use_operand(const std::string& mnemonic, bool first, const std::string& operand) {
     bool structured = false;
     std::string error;  // reported where the instruction is translated
+    if (const auto ix = indexed_of(operand, error, structured); structured && ix) {
+      use_operand(mnemonic, false, ix->index);
+      for (const auto& element : ix->elements) use_operand(mnemonic, false, element);
+      return;
+    }
+    error.clear();
     if (const auto leaf = leaf_of(operand, error, structured); structured) {
       if (!leaf) return;
       const auto key = model::to_upper(leaf->path);
       leaves_.emplace(key, *leaf);
-      if (e.mnemonic == "TON" && i == 0)
+      if (mnemonic == "TON" && first)
         ++ton_calls_[key];
       else if (leaf->kind == l5x::LeafKind::Int && leaf->rest.empty())
         whole_.insert(key);
@@ -962,8 +1015,8 @@ class LadderProgram : public l5x::RungOperands {
         bits_[key].insert(std::stoi(leaf->rest));
       return;
     }
-    if (e.mnemonic == "TON") {
-      if (i == 0) ++ton_calls_[model::to_upper(operand)];
+    if (mnemonic == "TON") {
+      if (first) ++ton_calls_[model::to_upper(operand)];
       return;
     }
     const auto dot = operand.find('.');

@@ -48,7 +48,7 @@ std::optional<std::vector<Segment>> segments(const std::string& operand, std::si
         const std::string one = trim(list.substr(from, comma - from));
         if (!all_digits(one) || one.size() > 6) {
           error = "unsupported: operand '" + operand + "' (an element chosen by '" + one +
-                  "' is not read: constant indices are)";
+                  "' is read only where the operand is read and has no other such index)";
           return std::nullopt;
         }
         s.indices.push_back(std::stoi(one));
@@ -132,8 +132,57 @@ std::optional<std::vector<int>> tag_dimensions(const std::string& text) {
   return dims;
 }
 
+std::optional<TagTypes::Indexed> TagTypes::indexed(const StructuredTag& tag,
+                                                   const std::string& operand,
+                                                   std::string& error) const {
+  // The first index (at bracket depth 0) that is not a list of constants.
+  std::size_t open = std::string::npos, close = std::string::npos;
+  int depth = 0;
+  for (std::size_t at = 0; at < operand.size(); ++at) {
+    if (operand[at] == '[' && depth++ == 0) open = at;
+    if (operand[at] == ']' && --depth == 0) {
+      const auto inside = operand.substr(open + 1, at - open - 1);
+      if (inside.find_first_not_of("0123456789, \t") != std::string::npos) {
+        close = at;
+        break;
+      }
+    }
+  }
+  if (close == std::string::npos) return std::nullopt;
+  Indexed out;
+  out.index = trim(operand.substr(open + 1, close - open - 1));
+  if (out.index.find(',') != std::string::npos) {
+    error = "unsupported: operand '" + operand + "' (an index list with a tag in it: '" +
+            out.index + "')";
+    return std::nullopt;
+  }
+  const auto prefix = operand.substr(0, open), suffix = operand.substr(close + 1);
+  std::vector<int> dims;
+  std::string whole_error;
+  resolve(tag, prefix, whole_error, &dims);
+  if (dims.size() != 1) {
+    error = dims.empty()
+                ? "operand '" + operand + "': '" + prefix + "' is not an array" +
+                      (whole_error.empty() ? "" : " (" + whole_error + ")")
+                : "unsupported: operand '" + operand + "' (a tag chooses an element of '" + prefix +
+                      "', which has " + std::to_string(dims.size()) + " dimensions)";
+    return std::nullopt;
+  }
+  if (dims[0] > kMaxIndexedElements) {
+    error = "unsupported: operand '" + operand + "' (a tag chooses among the " +
+            std::to_string(dims[0]) + " elements of '" + prefix + "'; at most " +
+            std::to_string(kMaxIndexedElements) + " are read)";
+    return std::nullopt;
+  }
+  for (int k = 0; k < dims[0]; ++k) {
+    out.elements.push_back(prefix + "[" + std::to_string(k) + "]" + suffix);
+    if (!resolve(tag, out.elements.back(), error)) return std::nullopt;
+  }
+  return out;
+}
+
 std::optional<TagLeaf> TagTypes::resolve(const StructuredTag& tag, const std::string& operand,
-                                         std::string& error) const {
+                                         std::string& error, std::vector<int>* whole_array) const {
   std::size_t head = 0;
   while (head < operand.size() && operand[head] != '.' && operand[head] != '[') ++head;
   const auto segs = segments(operand, head, error);
@@ -149,6 +198,10 @@ std::optional<TagLeaf> TagTypes::resolve(const StructuredTag& tag, const std::st
   std::size_t i = 0;
   for (;;) {
     if (!dims.empty()) {
+      if (i == segs->size() && whole_array) {
+        *whole_array = dims;
+        return std::nullopt;
+      }
       if (i == segs->size() || !(*segs)[i].index) {
         error = "unsupported: operand '" + operand + "' (a whole array, '" + leaf.path +
                 "', is not read: its elements are)";

@@ -51,12 +51,26 @@ class TagTypes {
 
   /// The leaf `operand` (which starts with `tag.name`) addresses; nullopt with `error` set when
   /// it is not one this reader models (a whole array or structure, an index that is a tag).
+  /// `whole_array`: when `operand` names a whole array, its dimensions go there (no error).
   std::optional<TagLeaf> resolve(const StructuredTag& tag, const std::string& operand,
+                                 std::string& error, std::vector<int>* whole_array = nullptr) const;
+
+  /// `operand` with one index that is not a constant (`Recipe.Step[Index].Heat`), read as the
+  /// element that index chooses: the index's operand and each element's (`Recipe.Step[3].Heat`).
+  /// nullopt with `error` empty when every index is a constant.
+  struct Indexed {
+    std::string index;
+    std::vector<std::string> elements;
+  };
+  std::optional<Indexed> indexed(const StructuredTag& tag, const std::string& operand,
                                  std::string& error) const;
 
  private:
   std::map<std::string, pugi::xml_node> types_;  ///< upper-case name -> <DataType>
 };
+
+/// Elements an operand with a tag for index may choose among (each is a variable of the model).
+inline constexpr int kMaxIndexedElements = 1024;
 
 /// The dimensions of a tag (`Dimensions="10"`, `"4 3"`); nullopt if not read.
 std::optional<std::vector<int>> tag_dimensions(const std::string& text);

@@ -197,6 +197,32 @@ TEST(L5xE2E, ConsumedTagPartsAreInputs) {
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
 }
 
+// Indirect addressing (1756-RM003, "Index through arrays"): `Cell1.SP[n]` is the element n
+// chooses when the instruction runs. n cycles 0, 1, 2; the elements hold 3, 5, 7 and the bits
+// FALSE, TRUE, TRUE; CPT reads parts of the tag too.
+TEST(L5xE2E, AnElementChosenByATagIsTheOneItsValueNames) {
+  const auto file = write_temp(
+      rockwell::l5x_ladder(
+          rockwell::dint_tag("n", 0) + rockwell::dint_tag("m", 0) + rockwell::dint_tag("c", 0) +
+              rockwell::alias("go", "Local:1:I.Data.0") + rockwell::alias("q", "Local:1:O.Data.0"),
+          rockwell::rll_routine(
+              "Main", {"MOV(3,Cell1.SP[0])MOV(5,Cell1.SP[1])MOV(7,Cell1.SP[2]);",
+                       "OTU(Cell1.BIT_Logic[0].1)OTL(Cell1.BIT_Logic[1].1)OTL(Cell1.BIT_Logic[2].1)"
+                       "OTU(Cell1.BIT_Logic[3].1);",
+                       "XIC(go)ADD(n,1,n);", "GRT(n,2)CLR(n);", "MOV(Cell1.SP[n],m);",
+                       "XIC(Cell1.BIT_Logic[n].1)OTE(q);", "CPT(c,Cell1.SP[n] + n);"}),
+          rockwell::cell_data_type(), rockwell::cell_tag("Cell1", 0, 0, 100)),
+      ".L5X");
+  const std::vector<std::pair<std::string, const char*>> verdicts = {
+      {"AX AG ((n = 0 -> m = 3 & !q) & (n = 1 -> m = 5 & q) & (n = 2 -> m = 7 & q))", "holds"},
+      {"AX AG ((n = 0 -> c = 3) & (n = 1 -> c = 6) & (n = 2 -> c = 9))", "holds"},
+      {"EF n = 2", "holds"},
+      {"AG n <= 1", "violated"},
+  };
+  for (const char* engine : {"explicit", "bdd"})
+    expect_ctl_verdicts_in_one_run(file, engine, verdicts);
+}
+
 // SFCV_VENDOR_SAMPLES: a folder holding public vendor files, read in place, never copied.
 std::optional<std::filesystem::path> vendor_sample(const std::string& name) {
   const char* root = std::getenv("SFCV_VENDOR_SAMPLES");
@@ -243,8 +269,11 @@ TEST(L5xE2E, PublicPlantProgramIsRefusedOnlyAtWhatIsNotRead) {
   EXPECT_EQ(r.exit_code, 2) << r.err.substr(0, 2000);
   EXPECT_EQ(r.err.find("unsupported: operand 'Cooker1.BIT_Logic["), std::string::npos);
   EXPECT_EQ(r.err.find("which is not a TIMER"), std::string::npos);
+  // Elements chosen by a tag and read (`XIC(Cooker1.Startup_Step_Conf_Needed[Cooker1.Index])`).
+  EXPECT_EQ(r.err.find("'Cooker1.Startup_Step_Conf_Needed[Cooker1.Index]'"), std::string::npos);
   for (const char* reason :
-       {"(REAL) as an integer", "(an element chosen by 'Cooker1.Index' is not read",
+       {"(REAL) as an integer",
+        "(an element chosen by 'Cooker1.Index' is read only where the operand is read",
         "unsupported: RLL instruction ANALOG_INPUT",
         "a TIMER's or COUNTER's preset is read from its tag's data",
         "RES on 'Cooker1.TMR_Logic[13]' (RES of a COUNTER, or of a TIMER that a TON runs, is read; "

@@ -581,9 +581,40 @@ TEST(L5xLadder, ConsumedTagsAreReadAndNeverWritten) {
   }
 }
 
+// An element chosen by a tag, read: MUX over the elements (each a variable), the index out of
+// the array's bounds being MUX's range error; written: refused.
+TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
+  auto load = [](const std::string& rung) {
+    return io::load_l5x(
+        l5x_ladder(dint_tag("n", 0) + dint_tag("m", 0) + alias("q", "Local:1:O.Data.0"),
+                   rll_routine("Main", {rung}), cell_data_type(), cell_tag("Cell1", 0, 7, 100)),
+        "Cell.L5X");
+  };
+  const auto r = load("XIC(Cell1.BIT_Logic[n].1)MOV(Cell1.SP[n],m)OTE(q);");
+  ASSERT_TRUE(r.ok()) << errors_of(r);
+  EXPECT_EQ(ladder_body(r),
+            "IF MUX(n, Cell1_BIT_Logic_0_1, Cell1_BIT_Logic_1_1, Cell1_BIT_Logic_2_1, "
+            "Cell1_BIT_Logic_3_1) THEN\n  m := MUX(n, Cell1_SP_0, Cell1_SP_1, Cell1_SP_2);\n"
+            "END_IF;\nq := MUX(n, Cell1_BIT_Logic_0_1, Cell1_BIT_Logic_1_1, Cell1_BIT_Logic_2_1, "
+            "Cell1_BIT_Logic_3_1);\n");
+  EXPECT_EQ(r.project->find_pou("Plant")->find_variable("Cell1_SP_2")->initial, 7);
+  for (const auto& [rung, message] : std::vector<std::pair<std::string, std::string>>{
+           {"XIC(q)MOV(1,Cell1.SP[n]);",
+            "operand 'Cell1.SP[n]' (an element chosen by 'n' is read only where"},
+           {"XIC(Cell1.SP[n].TMR)OTE(q);", "'Cell1.SP[0]' is DINT, 'TMR' of it"},
+           {"XIC(Cell1[n].Flag)OTE(q);", "'Cell1' is not an array"},
+           {"XIC(Cell1.TMR[Cell1.SP[n]].DN)OTE(q);", "TIMER 'Cell1.TMR[0]' is not run by a TON"}}) {
+    SCOPED_TRACE(rung);
+    const auto bad = load(rung);
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(errors_of(bad).find(message), std::string::npos) << errors_of(bad);
+  }
+}
+
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"XIC(go)MOV(1,Cell1.SP[n]);", "(an element chosen by 'n' is not read: constant indices"},
+      {"XIC(go)MOV(1,Cell1.SP[n]);",
+       "(an element chosen by 'n' is read only where the operand is read"},
       {"XIC(go)MOV(Cell1.Level,n);", "'Cell1.Level' (REAL) as an integer"},
       {"XIC(go)MOV(1,Cell1.SP[3]);", "index 3 is out of the bounds of 'Cell1.SP' (0..2)"},
       {"XIC(go)MOV(1,Cell1.Nope);", "'Cell1' (of type Cell_Data) has no member 'Nope'"},
