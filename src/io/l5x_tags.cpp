@@ -157,6 +157,17 @@ std::optional<TagTypes::Indexed> TagTypes::indexed(const StructuredTag& tag,
     return std::nullopt;
   }
   const auto prefix = operand.substr(0, open), suffix = operand.substr(close + 1);
+  // One such index per operand: two would multiply the elements read.
+  for (auto at = suffix.find('['); at != std::string::npos; at = suffix.find('[', at + 1)) {
+    const auto end = suffix.find(']', at);
+    if (end == std::string::npos ||
+        suffix.substr(at + 1, end - at - 1).find_first_not_of("0123456789, \t") !=
+            std::string::npos) {
+      error = "unsupported: operand '" + operand + "' (an element chosen by '" + out.index +
+              "' is read only where the operand is read and has no other such index)";
+      return std::nullopt;
+    }
+  }
   std::vector<int> dims;
   std::string whole_error;
   resolve(tag, prefix, whole_error, &dims);

@@ -584,10 +584,18 @@ TEST(L5xLadder, ConsumedTagsAreReadAndNeverWritten) {
 // An element chosen by a tag, read: MUX over the elements (each a variable), the index out of
 // the array's bounds being MUX's range error; written: refused.
 TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
-  auto load = [](const std::string& rung) {
+  const std::string row_type =
+      "<DataType Name=\"Row\" Family=\"NoFamily\" Class=\"User\">\n<Members>\n"
+      "<Member Name=\"Cols\" DataType=\"DINT\" Dimension=\"4\" Radix=\"Decimal\" "
+      "Hidden=\"false\"/>\n</Members>\n</DataType>\n";
+  const std::string arrays =
+      "<Tag Name=\"Grid\" TagType=\"Base\" DataType=\"DINT\" Dimensions=\"3 2\"/>\n"
+      "<Tag Name=\"Rows\" TagType=\"Base\" DataType=\"Row\" Dimensions=\"3\"/>\n";
+  auto load = [&](const std::string& rung) {
     return io::load_l5x(
-        l5x_ladder(dint_tag("n", 0) + dint_tag("m", 0) + alias("q", "Local:1:O.Data.0"),
-                   rll_routine("Main", {rung}), cell_data_type(), cell_tag("Cell1", 0, 7, 100)),
+        l5x_ladder(dint_tag("n", 0) + dint_tag("m", 0) + alias("q", "Local:1:O.Data.0") + arrays,
+                   rll_routine("Main", {rung}), cell_data_type() + row_type,
+                   cell_tag("Cell1", 0, 7, 100)),
         "Cell.L5X");
   };
   const auto r = load("XIC(Cell1.BIT_Logic[n].1)MOV(Cell1.SP[n],m)OTE(q);");
@@ -598,11 +606,20 @@ TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
             "END_IF;\nq := MUX(n, Cell1_BIT_Logic_0_1, Cell1_BIT_Logic_1_1, Cell1_BIT_Logic_2_1, "
             "Cell1_BIT_Logic_3_1);\n");
   EXPECT_EQ(r.project->find_pou("Plant")->find_variable("Cell1_SP_2")->initial, 7);
+  // Program tags: an element of two dimensions, and a tag choosing an array of structures.
+  const auto grid = load("MOV(Grid[2,1],m)MOV(Rows[n].Cols[2],m);");
+  ASSERT_TRUE(grid.ok()) << errors_of(grid);
+  EXPECT_EQ(ladder_body(grid),
+            "m := Grid_2_1;\nm := MUX(n, Rows_0_Cols_2, Rows_1_Cols_2, Rows_2_Cols_2);\n");
   for (const auto& [rung, message] : std::vector<std::pair<std::string, std::string>>{
            {"XIC(q)MOV(1,Cell1.SP[n]);",
             "operand 'Cell1.SP[n]' (an element chosen by 'n' is read only where"},
            {"XIC(Cell1.SP[n].TMR)OTE(q);", "'Cell1.SP[0]' is DINT, 'TMR' of it"},
            {"XIC(Cell1[n].Flag)OTE(q);", "'Cell1' is not an array"},
+           {"MOV(Grid[n,1],m);", "(an index list with a tag in it: 'n,1')"},
+           {"XIC(Rows[n].Cols[m])OTE(q);",
+            "operand 'Rows[n].Cols[m]' (an element chosen by 'n' is read only where the operand is "
+            "read and has no other such index)"},
            {"XIC(Cell1.TMR[Cell1.SP[n]].DN)OTE(q);", "TIMER 'Cell1.TMR[0]' is not run by a TON"}}) {
     SCOPED_TRACE(rung);
     const auto bad = load(rung);
