@@ -1104,7 +1104,19 @@ class LadderProgram : public l5x::RungOperands {
       v.name = leaf.variable;
       v.where = ctx_.where(leaf.tag->node);
       v.direction = global ? model::VarDirection::Global : model::VarDirection::Local;
+      // A part of the program's and a tag of the controller's of one name (or the other way
+      // round) would hide one another: which one a rung reads would depend on the scope.
+      auto hides = [&](const std::string& name) {
+        const model::Pou* other = global ? &pou_ : structured_.globals;
+        if (!other || !other->find_variable(name)) return false;
+        error_at(v.where, "tag '" + leaf.tag->name + "': its part '" + leaf.path +
+                              "' is read as '" + name + "', which is already a tag of the " +
+                              (global ? "program '" + pou_.name + "'" : std::string("controller")) +
+                              " (one would hide the other)");
+        return true;
+      };
       auto declare = [&](model::Variable var) {
+        if (hides(var.name)) return;
         if (const auto* old = into.find_variable(var.name)) {
           // A controller tag's part another program declared already: the same variable.
           if (global && old->where.str() == var.where.str() && old->type.name == var.type.name)
@@ -1136,6 +1148,13 @@ class LadderProgram : public l5x::RungOperands {
         v.type = model::Type::function_block(model::StandardFb::TON);
         v.direction = model::VarDirection::Local;
         timers_[key] = {v.name, preset};
+        if (structured_.globals && structured_.globals->find_variable(v.name)) {
+          error_at(v.where, "tag '" + leaf.tag->name + "': its part '" + leaf.path +
+                                "' is read as '" + v.name +
+                                "', which is already a tag of the controller (one would hide the "
+                                "other)");
+          continue;
+        }
         if (const auto* old = pou_.find_variable(v.name)) {
           error_at(v.where, "tag '" + leaf.tag->name + "': its part '" + leaf.path +
                                 "' is read as '" + v.name + "', which is already the tag at " +

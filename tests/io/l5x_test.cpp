@@ -628,6 +628,28 @@ TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
   }
 }
 
+// A part's name that is also a tag in the other scope would hide one of them: refused.
+TEST(L5xLadder, APartNamedLikeATagOfTheOtherScopeIsRefused) {
+  auto r = io::load_l5x(
+      l5x_ladder(dint_tag("Cell1_SP_0", 0), rll_routine("Main", {"MOV(1,Cell1.SP[0]);"}),
+                 cell_data_type(), cell_tag("Cell1", 0, 0, 100)),
+      "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("its part 'Cell1.SP[0]' is read as 'Cell1_SP_0', which is already a "
+                              "tag of the program 'Cell' (one would hide the other)"),
+            std::string::npos)
+      << errors_of(r);
+  r = io::load_l5x(
+      l5x_ladder(cell_tag("Mine", 0, 0, 100), rll_routine("Main", {"MOV(1,Mine.SP[0]);"}),
+                 cell_data_type(), dint_tag("Mine_SP_0", 0)),
+      "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(
+      errors_of(r).find("which is already a tag of the controller (one would hide the other)"),
+      std::string::npos)
+      << errors_of(r);
+}
+
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"XIC(go)MOV(1,Cell1.SP[n]);",
