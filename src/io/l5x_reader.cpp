@@ -1051,6 +1051,10 @@ class LadderProgram : public l5x::RungOperands {
         if (n >= width)
           error_at(v.where, "rungs use bit " + std::to_string(n) + " of tag '" + v.name +
                                 "', which has " + std::to_string(width) + " bits");
+        if (structured_.globals && structured_.globals->find_variable(bit.name))
+          error_at(v.where, "the BOOL '" + bit.name +
+                                "' that a bit of an integer tag is read as is already a tag of "
+                                "the controller (one would hide the other)");
         vars.push_back(std::move(bit));
       }
     }

@@ -648,6 +648,15 @@ TEST(L5xLadder, APartNamedLikeATagOfTheOtherScopeIsRefused) {
       errors_of(r).find("which is already a tag of the controller (one would hide the other)"),
       std::string::npos)
       << errors_of(r);
+  // The same for a plain integer tag read bit by bit (X.3 is X_3).
+  r = io::load_l5x(l5x_ladder(dint_tag("X", 0), rll_routine("Main", {"XIC(X.3)OTE(X.4);"}),
+                              cell_data_type(), bool_tag("X_3", 0)),
+                   "Cell.L5X");
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(errors_of(r).find("the BOOL 'X_3' that a bit of an integer tag is read as is already "
+                              "a tag of the controller"),
+            std::string::npos)
+      << errors_of(r);
 }
 
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
