@@ -498,16 +498,11 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
   }
   if (m == "OTE" || m == "OTL" || m == "OTU") {
     if (!arity(1)) return;
-    const auto target = checked(operands_.bit_target(ops[0], error));
-    if (target.empty()) return;
-    before_write(target);
-    if (m == "OTE")
-      out_->push_back(model::make_assign(target, rail(), where_));
-    else if (!p.expr)
-      out_->push_back(model::make_assign(target, model::make_bool(m == "OTL", where_), where_));
-    else
-      out_->push_back(make_if(
-          p.expr, {model::make_assign(target, model::make_bool(m == "OTL", where_), where_)}));
+    write(ops[0], true, [&](const std::string& target) -> model::StmtPtr {
+      if (m == "OTE") return model::make_assign(target, rail(), where_);
+      const auto set = model::make_assign(target, model::make_bool(m == "OTL", where_), where_);
+      return p.expr ? make_if(p.expr, {set}) : set;
+    });
     return;
   }
   if (m == "ONS") {
@@ -526,13 +521,12 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
   }
   if (m == "MOV" || m == "CLR") {
     if (!arity(m == "MOV" ? 2 : 1)) return;
-    const auto target = checked(operands_.value_target(ops.back(), error));
-    if (target.empty()) return;
     auto v = m == "MOV" ? checked(operands_.value(ops[0], error)) : model::make_int(0, where_);
     if (!v) return;
-    before_write(target);
-    auto assign = model::make_assign(target, v, where_);
-    out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
+    write(ops.back(), false, [&](const std::string& target) -> model::StmtPtr {
+      const auto assign = model::make_assign(target, v, where_);
+      return p.expr ? make_if(p.expr, {assign}) : assign;
+    });
     return;
   }
   if (m == "ADD" || m == "SUB" || m == "MUL" || m == "DIV" || m == "MOD" || m == "NEG" ||
@@ -544,8 +538,6 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     // `/` and MOD.
     const bool cpt = m == "CPT";
     if (!arity(m == "NEG" || cpt ? 2 : 3)) return;
-    const auto target = checked(operands_.value_target(cpt ? ops[0] : ops.back(), error));
-    if (target.empty()) return;
     model::ExprPtr value;
     if (cpt) {
       value = checked(ComputeExpression(ops[1], operands_, where_).run(error));
@@ -565,9 +557,10 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
       value = model::make_binary(kArithmetic.at(m), a, b, where_);
     }
     if (!value) return;
-    before_write(target);
-    auto assign = model::make_assign(target, value, where_);
-    out_->push_back(p.expr ? make_if(p.expr, {assign}) : assign);
+    write(cpt ? ops[0] : ops.back(), false, [&](const std::string& target) -> model::StmtPtr {
+      const auto assign = model::make_assign(target, value, where_);
+      return p.expr ? make_if(p.expr, {assign}) : assign;
+    });
     return;
   }
   if (m == "RES") {
@@ -646,6 +639,39 @@ void RungTranslator::instruction(const RungElement& e, Power& p) {
     out_->push_back(make_if(p.expr, std::move(*body)));
   }
   p.unknown_after = "JSR";
+}
+
+void RungTranslator::write(const std::string& operand, bool bit,
+                           const std::function<model::StmtPtr(const std::string&)>& make) {
+  std::string error;
+  const auto chosen = operands_.chosen_target(operand, bit, error);
+  if (!error.empty()) return fail(error);
+  if (!chosen) {
+    const auto target =
+        bit ? operands_.bit_target(operand, error) : operands_.value_target(operand, error);
+    if (target.empty()) return fail(error);
+    before_write(target);
+    out_->push_back(make(target));
+    return;
+  }
+  // The element the index chooses when the instruction runs: a CASE over the elements, whose
+  // ELSE (an index out of the array's bounds, where the controller faults) assigns MUX's range
+  // error, as model::lower_data_types writes `a[i] := v`.
+  for (const auto& t : chosen->targets) before_write(t);
+  auto c = std::make_shared<model::Stmt>();
+  c->kind = model::StmtKind::Case;
+  c->where = where_;
+  c->value = chosen->index;
+  std::vector<model::ExprPtr> mux{chosen->index};
+  for (std::size_t k = 0; k < chosen->targets.size(); ++k) {
+    const auto v = static_cast<std::int64_t>(k);
+    c->labels.push_back({model::CaseLabel{v, v, {}, {}}});
+    c->bodies.push_back({make(chosen->targets[k])});
+    mux.push_back(model::make_name(chosen->targets[k], where_));
+  }
+  c->else_body.push_back(model::make_assign(
+      chosen->targets.front(), model::make_call("MUX", std::move(mux), where_), where_));
+  out_->push_back(std::move(c));
 }
 
 model::StmtPtr RungTranslator::make_if(model::ExprPtr condition, model::StmtList body) const {

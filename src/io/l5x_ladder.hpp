@@ -60,6 +60,15 @@ class RungOperands {
   /// An integer operand (a tag or a literal) and an integer variable written.
   virtual model::ExprPtr value(const std::string& operand, std::string& error) = 0;
   virtual std::string value_target(const std::string& operand, std::string& error) = 0;
+  /// An element chosen by a tag as a write target (`Step[i].X`): the index, read, and each
+  /// element's target (a BOOL's when `bit`). nullopt with `error` empty when `operand` is not
+  /// one; `error` set when it is not read.
+  struct Chosen {
+    model::ExprPtr index;
+    std::vector<std::string> targets;
+  };
+  virtual std::optional<Chosen> chosen_target(const std::string& operand, bool bit,
+                                              std::string& error) = 0;
   /// The TON instance a TIMER tag is, and its preset in milliseconds.
   virtual std::optional<std::pair<std::string, std::int64_t>> timer(const std::string& operand,
                                                                     std::string& error) = 0;
@@ -107,6 +116,10 @@ class RungTranslator {
   /// Keeps every live condition that reads `name` in a temporary before `name` is written.
   void before_write(const std::string& name);
   void and_into(Power& p, model::ExprPtr e);
+  /// Appends `make(target)` for the target `operand` names (a BOOL's when `bit`), after
+  /// before_write; for an element a tag chooses, a CASE over the elements.
+  void write(const std::string& operand, bool bit,
+             const std::function<model::StmtPtr(const std::string&)>& make);
   model::StmtPtr make_if(model::ExprPtr condition, model::StmtList body) const;
   void fail(std::string message);
 

@@ -717,6 +717,21 @@ class LadderProgram : public l5x::RungOperands {
         at_)};
   }
 
+  std::optional<Chosen> chosen_target(const std::string& operand, bool bit,
+                                      std::string& error) override {
+    bool structured = false;
+    const auto ix = indexed_of(operand, error, structured);
+    if (!ix) return std::nullopt;
+    Chosen out;
+    out.index = value(ix->index, error);
+    if (!out.index) return std::nullopt;
+    for (const auto& element : ix->elements) {
+      out.targets.push_back(bit ? bit_target(element, error) : value_target(element, error));
+      if (out.targets.back().empty()) return std::nullopt;
+    }
+    return out;
+  }
+
   std::optional<Counter> counter(const std::string& operand, std::string& error) override {
     if (consumed_write(operand, error)) return std::nullopt;
     bool structured = false;

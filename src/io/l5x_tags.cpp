@@ -48,7 +48,7 @@ std::optional<std::vector<Segment>> segments(const std::string& operand, std::si
         const std::string one = trim(list.substr(from, comma - from));
         if (!all_digits(one) || one.size() > 6) {
           error = "unsupported: operand '" + operand + "' (an element chosen by '" + one +
-                  "' is read only where the operand is read and has no other such index)";
+                  "' is read where it is a BOOL or an integer and the operand's only such index)";
           return std::nullopt;
         }
         s.indices.push_back(std::stoi(one));
@@ -164,7 +164,7 @@ std::optional<TagTypes::Indexed> TagTypes::indexed(const StructuredTag& tag,
         suffix.substr(at + 1, end - at - 1).find_first_not_of("0123456789, \t") !=
             std::string::npos) {
       error = "unsupported: operand '" + operand + "' (an element chosen by '" + out.index +
-              "' is read only where the operand is read and has no other such index)";
+              "' is read where it is a BOOL or an integer and the operand's only such index)";
       return std::nullopt;
     }
   }

@@ -198,8 +198,8 @@ TEST(L5xE2E, ConsumedTagPartsAreInputs) {
 }
 
 // Indirect addressing (1756-RM003, "Index through arrays"): `Cell1.SP[n]` is the element n
-// chooses when the instruction runs. n cycles 0, 1, 2; the elements hold 3, 5, 7 and the bits
-// FALSE, TRUE, TRUE; CPT reads parts of the tag too.
+// chooses when the instruction runs, read or written. n cycles 0, 1, 2; the elements hold 3, 5,
+// 7 and the bits FALSE, TRUE, TRUE; CPT reads parts of the tag too.
 TEST(L5xE2E, AnElementChosenByATagIsTheOneItsValueNames) {
   const auto file = write_temp(
       rockwell::l5x_ladder(
@@ -210,7 +210,8 @@ TEST(L5xE2E, AnElementChosenByATagIsTheOneItsValueNames) {
                        "OTU(Cell1.BIT_Logic[0].1)OTL(Cell1.BIT_Logic[1].1)OTL(Cell1.BIT_Logic[2].1)"
                        "OTU(Cell1.BIT_Logic[3].1);",
                        "XIC(go)ADD(n,1,n);", "GRT(n,2)CLR(n);", "MOV(Cell1.SP[n],m);",
-                       "XIC(Cell1.BIT_Logic[n].1)OTE(q);", "CPT(c,Cell1.SP[n] + n);"}),
+                       "XIC(Cell1.BIT_Logic[n].1)OTE(q);", "CPT(c,Cell1.SP[n] + n);",
+                       "XIC(go)ADD(n,10,Cell1.SP[n]);"}),
           rockwell::cell_data_type(), rockwell::cell_tag("Cell1", 0, 0, 100)),
       ".L5X");
   const std::vector<std::pair<std::string, const char*>> verdicts = {
@@ -218,6 +219,9 @@ TEST(L5xE2E, AnElementChosenByATagIsTheOneItsValueNames) {
       {"AX AG ((n = 0 -> c = 3) & (n = 1 -> c = 6) & (n = 2 -> c = 9))", "holds"},
       {"EF n = 2", "holds"},
       {"AG n <= 1", "violated"},
+      // Written through the index: SP[n] := n + 10 with go, after the rung that reads it.
+      {"AX AG ((go & n = 1) -> Cell1_SP_1 = 11 & Cell1_SP_0 = 3 & Cell1_SP_2 = 7)", "holds"},
+      {"AX AG ((!go & n = 1) -> Cell1_SP_1 = 5)", "holds"},
   };
   for (const char* engine : {"explicit", "bdd"})
     expect_ctl_verdicts_in_one_run(file, engine, verdicts);
@@ -272,8 +276,7 @@ TEST(L5xE2E, PublicPlantProgramIsRefusedOnlyAtWhatIsNotRead) {
   // Elements chosen by a tag and read (`XIC(Cooker1.Startup_Step_Conf_Needed[Cooker1.Index])`).
   EXPECT_EQ(r.err.find("'Cooker1.Startup_Step_Conf_Needed[Cooker1.Index]'"), std::string::npos);
   for (const char* reason :
-       {"(REAL) as an integer",
-        "(an element chosen by 'Cooker1.Index' is read only where the operand is read",
+       {"(REAL) as an integer", "'Cooker1_Recipe.Step[0].Step_Ing_1_Actual' (REAL) as an integer",
         "unsupported: RLL instruction ANALOG_INPUT",
         "a TIMER's or COUNTER's preset is read from its tag's data",
         "RES on 'Cooker1.TMR_Logic[13]' (RES of a COUNTER, or of a TIMER that a TON runs, is read; "

@@ -606,20 +606,35 @@ TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
             "END_IF;\nq := MUX(n, Cell1_BIT_Logic_0_1, Cell1_BIT_Logic_1_1, Cell1_BIT_Logic_2_1, "
             "Cell1_BIT_Logic_3_1);\n");
   EXPECT_EQ(r.project->find_pou("Plant")->find_variable("Cell1_SP_2")->initial, 7);
+  // Written: a CASE over the elements, its ELSE MUX's range error (lower_data_types' form).
+  const auto written = load("XIC(q)OTL(Cell1.BIT_Logic[n].1)MOV(4,Cell1.SP[n]);");
+  ASSERT_TRUE(written.ok()) << errors_of(written);
+  EXPECT_EQ(ladder_body(written),
+            "CASE n OF\n  0:\n    IF q THEN\n      Cell1_BIT_Logic_0_1 := TRUE;\n    END_IF;\n"
+            "  1:\n    IF q THEN\n      Cell1_BIT_Logic_1_1 := TRUE;\n    END_IF;\n"
+            "  2:\n    IF q THEN\n      Cell1_BIT_Logic_2_1 := TRUE;\n    END_IF;\n"
+            "  3:\n    IF q THEN\n      Cell1_BIT_Logic_3_1 := TRUE;\n    END_IF;\n"
+            "ELSE\n    Cell1_BIT_Logic_0_1 := MUX(n, Cell1_BIT_Logic_0_1, Cell1_BIT_Logic_1_1, "
+            "Cell1_BIT_Logic_2_1, Cell1_BIT_Logic_3_1);\nEND_CASE;\n"
+            "CASE n OF\n  0:\n    IF q THEN\n      Cell1_SP_0 := 4;\n    END_IF;\n"
+            "  1:\n    IF q THEN\n      Cell1_SP_1 := 4;\n    END_IF;\n"
+            "  2:\n    IF q THEN\n      Cell1_SP_2 := 4;\n    END_IF;\n"
+            "ELSE\n    Cell1_SP_0 := MUX(n, Cell1_SP_0, Cell1_SP_1, Cell1_SP_2);\nEND_CASE;\n");
   // Program tags: an element of two dimensions, and a tag choosing an array of structures.
   const auto grid = load("MOV(Grid[2,1],m)MOV(Rows[n].Cols[2],m);");
   ASSERT_TRUE(grid.ok()) << errors_of(grid);
   EXPECT_EQ(ladder_body(grid),
             "m := Grid_2_1;\nm := MUX(n, Rows_0_Cols_2, Rows_1_Cols_2, Rows_2_Cols_2);\n");
   for (const auto& [rung, message] : std::vector<std::pair<std::string, std::string>>{
-           {"XIC(q)MOV(1,Cell1.SP[n]);",
-            "operand 'Cell1.SP[n]' (an element chosen by 'n' is read only where"},
+           {"XIC(q)TON(Cell1.TMR[n],?,?);",
+            "operand 'Cell1.TMR[n]' (an element chosen by 'n' is read where it is a BOOL or an "
+            "integer"},
            {"XIC(Cell1.SP[n].TMR)OTE(q);", "'Cell1.SP[0]' is DINT, 'TMR' of it"},
            {"XIC(Cell1[n].Flag)OTE(q);", "'Cell1' is not an array"},
            {"MOV(Grid[n,1],m);", "(an index list with a tag in it: 'n,1')"},
            {"XIC(Rows[n].Cols[m])OTE(q);",
-            "operand 'Rows[n].Cols[m]' (an element chosen by 'n' is read only where the operand is "
-            "read and has no other such index)"},
+            "operand 'Rows[n].Cols[m]' (an element chosen by 'n' is read where it is a BOOL or an "
+            "integer and the operand's only such index)"},
            {"XIC(Cell1.TMR[Cell1.SP[n]].DN)OTE(q);", "TIMER 'Cell1.TMR[0]' is not run by a TON"}}) {
     SCOPED_TRACE(rung);
     const auto bad = load(rung);
@@ -661,8 +676,8 @@ TEST(L5xLadder, APartNamedLikeATagOfTheOtherScopeIsRefused) {
 
 TEST(L5xLadder, PartsTheModelCannotSayAreRefusedAtTheirRung) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"XIC(go)MOV(1,Cell1.SP[n]);",
-       "(an element chosen by 'n' is read only where the operand is read"},
+      {"XIC(go)TON(Cell1.TMR[n],?,?);",
+       "(an element chosen by 'n' is read where it is a BOOL or an integer"},
       {"XIC(go)MOV(Cell1.Level,n);", "'Cell1.Level' (REAL) as an integer"},
       {"XIC(go)MOV(1,Cell1.SP[3]);", "index 3 is out of the bounds of 'Cell1.SP' (0..2)"},
       {"XIC(go)MOV(1,Cell1.Nope);", "'Cell1' (of type Cell_Data) has no member 'Nope'"},
