@@ -810,31 +810,32 @@ class LadderProgram : public l5x::RungOperands {
   // (then the caller reads it as a plain tag).
   std::optional<l5x::TagLeaf> leaf_of(const std::string& operand, std::string& error,
                                       bool& structured) const {
-    structured = false;
-    if (!structured_.types) return std::nullopt;
-    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
-    const l5x::StructuredTag* tag = nullptr;
-    if (const auto p = structured_.program->find(head); p != structured_.program->end())
-      tag = &p->second;
-    else if (pou_.find_variable(head) || timer_tags_.count(head))
-      return std::nullopt;  // a program tag hides a controller tag of its name
-    else if (const auto c = structured_.controller->find(head); c != structured_.controller->end())
-      tag = &c->second;
+    const auto* tag = structured_tag_of(operand);
+    structured = tag != nullptr;
     if (!tag) return std::nullopt;
-    structured = true;
     return structured_.types->resolve(*tag, operand, error);
+  }
+
+  // The structured tag `operand` starts with, or null: a program tag hides a controller tag of
+  // its name.
+  const l5x::StructuredTag* structured_tag_of(const std::string& operand) const {
+    if (!structured_.types) return nullptr;
+    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
+    if (const auto p = structured_.program->find(head); p != structured_.program->end())
+      return &p->second;
+    if (pou_.find_variable(head) || timer_tags_.count(head)) return nullptr;
+    const auto c = structured_.controller->find(head);
+    return c != structured_.controller->end() ? &c->second : nullptr;
   }
 
   // A consumed tag is written by the controller producing it, never by these rungs: it is an
   // input of the model (docs/semantics.md 1.14).
   bool consumed_write(const std::string& operand, std::string& error) const {
     const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
-    bool structured = false;
-    std::string ignored;
-    const auto leaf = leaf_of(operand, ignored, structured);
-    const bool consumed = structured ? leaf && leaf->tag->consumed
-                                     : structured_.consumed && structured_.consumed->count(head) &&
-                                           !pou_.find_variable(head);
+    const auto* tag = structured_tag_of(operand);
+    const bool consumed = tag ? tag->consumed
+                              : structured_.consumed && structured_.consumed->count(head) &&
+                                    !pou_.find_variable(head);
     if (!consumed) return false;
     error = "unsupported: writing '" + operand +
             "', a consumed tag (the controller producing it writes it; it is read as an input)";
@@ -844,18 +845,9 @@ class LadderProgram : public l5x::RungOperands {
   // `operand` with a tag for index (`Recipe.Step[Index].Heat`), in a structured tag.
   std::optional<l5x::TagTypes::Indexed> indexed_of(const std::string& operand, std::string& error,
                                                    bool& structured) const {
-    structured = false;
-    if (!structured_.types) return std::nullopt;
-    const auto head = model::to_upper(operand.substr(0, operand.find_first_of(".[")));
-    const l5x::StructuredTag* tag = nullptr;
-    if (const auto p = structured_.program->find(head); p != structured_.program->end())
-      tag = &p->second;
-    else if (pou_.find_variable(head) || timer_tags_.count(head))
-      return std::nullopt;
-    else if (const auto c = structured_.controller->find(head); c != structured_.controller->end())
-      tag = &c->second;
+    const auto* tag = structured_tag_of(operand);
+    structured = tag != nullptr;
     if (!tag) return std::nullopt;
-    structured = true;
     return structured_.types->indexed(*tag, operand, error);
   }
 
