@@ -205,6 +205,24 @@ class PouWriter {
       }
   }
 
+  /// A global variable list (only VAR_GLOBALs, nothing to run): a `configuration` holding them,
+  /// which the importer reads back as a list of this name that every POU sees.
+  void write_global_list(pugi::xml_node configurations) {
+    auto configuration = configurations.append_child("configuration");
+    configuration.append_attribute("name") = pou_.name.c_str();
+    variables(configuration);
+    for (auto list : configuration.children("globalVars"))
+      list.prepend_attribute("name") = pou_.name.c_str();
+  }
+
+  static bool is_global_list(const model::Pou& pou) {
+    return pou.kind == model::PouKind::Program && pou.charts.empty() && pou.body.empty() &&
+           pou.actions.empty() && !pou.body_unsupported &&
+           std::all_of(pou.variables.begin(), pou.variables.end(), [](const model::Variable& v) {
+             return v.direction == model::VarDirection::Global;
+           });
+  }
+
  private:
   void variables(pugi::xml_node interface) {
     // A function's result (the variable named like it) is its returnType.
@@ -567,8 +585,13 @@ std::string write_plcopen_xml(const model::Project& project) {
   auto types = root.append_child("types");
   types.append_child("dataTypes");
   auto pous = types.append_child("pous");
-  for (const auto& pou : project.pous) PouWriter(pou).write(pous);
-  root.append_child("instances").append_child("configurations");
+  auto configurations = root.append_child("instances").append_child("configurations");
+  for (const auto& pou : project.pous) {
+    if (PouWriter::is_global_list(pou) && !pou.variables.empty())
+      PouWriter(pou).write_global_list(configurations);
+    else
+      PouWriter(pou).write(pous);
+  }
   // The vendor whose dialect the model is in (a CODESYS project's final calls): sfcv wrote the
   // file, so its fileHeader no longer says (docs/formats.md).
   if (const auto vendor = model::vendor_of(project); !vendor.empty()) {

@@ -446,6 +446,9 @@ TEST(L5xLadder, PartsOfStructuredTagsTheRungsUseAreVariables) {
   // Only what the rungs use: BIT_Logic[1] is read bit by bit, SP[1], TMR[0] and Level not at all.
   for (const char* absent : {"Cell1_BIT_Logic_1", "Cell1_SP_1", "Cell1_TMR_0", "Cell1_Level"})
     EXPECT_EQ(globals->find_variable(absent), nullptr) << absent;
+  // The controller's list goes through PLCopen as a configuration's global variables.
+  EXPECT_NE(plcopen_round_trip(*r.project).find("<globalVars name=\"Plant\">"), std::string::npos);
+  iec_round_trip(*r.project);
 }
 
 // CTU, CTD and RES of a COUNTER as 1756-RM003 writes them: with the rung TRUE and .CU clear,
@@ -473,6 +476,8 @@ TEST(L5xLadder, CountersAreTheirAccumulatorAndStatusBits) {
   EXPECT_EQ(pou.find_variable("C1_CD")->initial, 1);
   EXPECT_EQ(pou.find_variable("C1_DN")->initial, 0);
   EXPECT_EQ(pou.find_variable("C1_ACC")->type.name, "DINT");
+  plcopen_round_trip(*r.project);
+  iec_round_trip(*r.project);
 }
 
 // Two programs of one file read a controller tag's part as one global variable, and must read
@@ -609,6 +614,8 @@ TEST(L5xLadder, AnElementChosenByATagIsReadAsAMux) {
   // Written: a CASE over the elements, its ELSE MUX's range error (lower_data_types' form).
   const auto written = load("XIC(q)OTL(Cell1.BIT_Logic[n].1)MOV(4,Cell1.SP[n]);");
   ASSERT_TRUE(written.ok()) << errors_of(written);
+  plcopen_round_trip(*written.project);
+  iec_round_trip(*written.project);
   EXPECT_EQ(ladder_body(written),
             "CASE n OF\n  0:\n    IF q THEN\n      Cell1_BIT_Logic_0_1 := TRUE;\n    END_IF;\n"
             "  1:\n    IF q THEN\n      Cell1_BIT_Logic_1_1 := TRUE;\n    END_IF;\n"
