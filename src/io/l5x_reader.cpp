@@ -685,9 +685,10 @@ class LadderProgram : public l5x::RungOperands {
   // time, as RES clears .DN, .EN, .TT and .ACC (1756-RM003, RES); the TON then times again
   // from 0 when its rung is TRUE.
   std::optional<model::StmtList> reset(const std::string& operand, std::string& error) override {
-    bool is_structured = false;
-    if (const auto leaf = leaf_of(operand, error, is_structured);
-        is_structured && leaf && leaf->kind == l5x::LeafKind::Counter) {
+    bool structured = false;
+    std::string leaf_error;  // reported by counter() or timer() below
+    const auto leaf = leaf_of(operand, leaf_error, structured);
+    if (structured && leaf && leaf->kind == l5x::LeafKind::Counter) {
       // RES clears the COUNTER's .ACC and status bits (1756-RM003, RES).
       const auto c = counter(operand, error);
       if (!c) return std::nullopt;
@@ -697,12 +698,8 @@ class LadderProgram : public l5x::RungOperands {
         out.push_back(model::make_assign(*bit, model::make_bool(false, at_), at_));
       return out;
     }
-    error.clear();
     const auto t = timer(operand, error);
     if (!t) {
-      bool structured = false;
-      std::string ignored;
-      const auto leaf = leaf_of(operand, ignored, structured);
       const bool idle_timer = structured ? leaf && leaf->kind == l5x::LeafKind::Timer
                                          : timer_tags_.count(model::to_upper(operand)) > 0;
       error = "unsupported: RES on '" + operand +
@@ -880,8 +877,7 @@ class LadderProgram : public l5x::RungOperands {
           "unsupported: '" + operand + "' (of a COUNTER, .DN, .CU, .CD, .ACC and .PRE are read)";
       return {};
     }
-    if (leaf.kind == l5x::LeafKind::Int && !leaf.rest.empty() && leaf.rest.size() <= 2 &&
-        leaf.rest.find_first_not_of("0123456789") == std::string::npos) {
+    if (leaf.kind == l5x::LeafKind::Int && bit_number(leaf.rest)) {
       if (split_leaves_.count(model::to_upper(leaf.path))) return leaf.variable + "_" + leaf.rest;
       error = "unsupported: '" + operand + "' (a bit of '" + leaf.path +
               "' is read when the rungs use that element only bit by bit)";
@@ -933,12 +929,16 @@ class LadderProgram : public l5x::RungOperands {
     return false;
   }
 
+  // `3` in `X.3`: the member a bit of an integer is (one or two digits).
+  static bool bit_number(const std::string& member) {
+    return !member.empty() && member.size() <= 2 &&
+           member.find_first_not_of("0123456789") == std::string::npos;
+  }
+
   // `X.3` of a tag read bit by bit: its BOOL.
   std::optional<std::string> split_bit(const std::string& key, const std::string& member) const {
     const auto it = split_.find(key);
-    if (it == split_.end() || member.empty() || member.size() > 2 ||
-        member.find_first_not_of("0123456789") != std::string::npos)
-      return std::nullopt;
+    if (it == split_.end() || !bit_number(member)) return std::nullopt;
     return it->second + "_" + member;
   }
 
@@ -1017,8 +1017,7 @@ class LadderProgram : public l5x::RungOperands {
         ++ton_calls_[key];
       else if (leaf->kind == l5x::LeafKind::Int && leaf->rest.empty())
         whole_.insert(key);
-      else if (leaf->kind == l5x::LeafKind::Int && leaf->rest.size() <= 2 &&
-               leaf->rest.find_first_not_of("0123456789") == std::string::npos)
+      else if (leaf->kind == l5x::LeafKind::Int && bit_number(leaf->rest))
         bits_[key].insert(std::stoi(leaf->rest));
       return;
     }
@@ -1028,10 +1027,7 @@ class LadderProgram : public l5x::RungOperands {
     }
     const auto dot = operand.find('.');
     const auto key = model::to_upper(operand.substr(0, dot));
-    const bool bit = dot != std::string::npos && dot + 1 < operand.size() &&
-                     operand.size() - dot - 1 <= 2 &&
-                     operand.find_first_not_of("0123456789", dot + 1) == std::string::npos;
-    if (bit)
+    if (dot != std::string::npos && bit_number(operand.substr(dot + 1)))
       bits_[key].insert(std::stoi(operand.substr(dot + 1)));
     else
       whole_.insert(key);
