@@ -144,13 +144,15 @@ void export_circuit(const ExportOptions& o, const model::Project& project, std::
       comment +=
           "A latch sfcv_valid (initially 1) records that every cycle so far kept the\n"
           "constraint; each bad output is `sfcv_valid & bad`.\n";
+    const auto circuit = engine::aiger_circuit(exported.model);
+    const auto symbols = engine::aiger_symbols(circuit);  // as the symbol table names them
     for (std::size_t l = 0; l < m.latch_comments.size(); ++l)
-      comment += "l" + std::to_string(l) + " " + m.aig.latches()[l].name + ": " +
-                 m.latch_comments[l] + "\n";
+      comment +=
+          "l" + std::to_string(l) + " " + symbols.latches[l] + ": " + m.latch_comments[l] + "\n";
     for (std::size_t i = 0; i < m.input_comments.size(); ++i)
-      comment += "i" + std::to_string(i) + " " + m.aig.inputs()[i].name + ": " +
-                 m.input_comments[i] + "\n";
-    engine::write_aiger(out, engine::aiger_circuit(exported.model),
+      comment +=
+          "i" + std::to_string(i) + " " + symbols.inputs[i] + ": " + m.input_comments[i] + "\n";
+    engine::write_aiger(out, circuit,
                         o.to == "aiger" ? engine::AigerMode::Binary : engine::AigerMode::Ascii,
                         comment);
   }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -119,6 +120,54 @@ TEST(Export, IecTextAndPromelaAndAag) {
   const auto aig = run_sfcv("export " + plant + " --to aiger --ctl 'AG !(V2 & V4)'");
   ASSERT_EQ(aig.exit_code, 0) << aig.err;
   EXPECT_EQ(aig.out.rfind("aig ", 0), 0u);
+}
+
+// A Boolean action of an instance and its variable are two latches of one name: the AIGER
+// file `sfcv export` writes names them apart (its comment lines too), so ABC reads it and
+// finds the violation sfcv finds. Before, ABC refused every xPPU export: "Repeated CI names".
+TEST(Export, AigerOfABooleanActionAndItsVariableReadsInAbc) {
+  const auto st = write_temp(R"(
+FUNCTION_BLOCK Cylinder
+  VAR_INPUT Go : BOOL; END_VAR
+  VAR_OUTPUT Extend : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Out: Extend(N); END_STEP
+  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
+  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT Button : BOOL; END_VAR
+  VAR Lift : Cylinder; END_VAR
+  Lift(Go := Button);
+END_PROGRAM
+)",
+                             ".st");
+  const auto aag = run_sfcv("export '" + st + "' --to aag --checks none -q");
+  ASSERT_EQ(aag.exit_code, 0) << aag.err;
+  EXPECT_NE(aag.out.find("\nl1 Main.Lift.Extend\n"), std::string::npos) << aag.out;
+  EXPECT_NE(aag.out.find("\nl4 Main.Lift.Extend#2\n"), std::string::npos) << aag.out;
+  EXPECT_NE(aag.out.find("\nl4 Main.Lift.Extend#2: action Main.Lift.Extend active\n"),
+            std::string::npos)
+      << aag.out;
+  if (std::system("command -v berkeley-abc >/dev/null 2>&1") != 0) {
+    std::filesystem::remove(st);
+    GTEST_SKIP() << "berkeley-abc not installed";
+  }
+  const auto aig = st + ".aig";
+  ASSERT_EQ(run_sfcv("export '" + st + "' --to aiger --ctl 'AG !Lift.Extend' -q -o '" + aig + "'")
+                .exit_code,
+            0);
+  std::string abc;
+  if (FILE* p =
+          ::popen(("berkeley-abc -c 'read_aiger " + aig + "; fold; pdr' 2>&1").c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) abc += buf;
+    ::pclose(p);
+  }
+  std::filesystem::remove(st);
+  std::filesystem::remove(aig);
+  EXPECT_EQ(abc.find("Repeated"), std::string::npos) << abc;
+  EXPECT_NE(abc.find("was asserted in frame"), std::string::npos) << abc;
 }
 
 TEST(Export, PlcopenXmlReadsBackToTheSameChart) {

@@ -57,6 +57,26 @@ TEST(AigerWriter, InitialValueOneIsWritten) {
   EXPECT_NE(out.str().find("\n4 4 1\n"), std::string::npos) << out.str();
 }
 
+// A name borne by two bits (an input and the variable that keeps it, a Boolean action of an
+// instance and its variable) names one of them: the later ones get #2, #3, and a name that
+// already ends so stays apart. ABC refused the files ("Repeated CI names") before.
+TEST(AigerWriter, EverySymbolOfTheTableIsUnique) {
+  Aig aig;
+  const auto x = aig.add_input("Lift.Extend");
+  aig.add_latch("Lift.Extend");
+  aig.add_latch("Lift.Extend");
+  aig.add_latch("Lift.Extend#2");
+  aig.add_output("Lift.Extend", x);
+  const auto symbols = aiger_symbols(aig);
+  EXPECT_EQ(symbols.inputs, std::vector<std::string>{"Lift.Extend"});
+  EXPECT_EQ(symbols.latches,
+            (std::vector<std::string>{"Lift.Extend#2", "Lift.Extend#3", "Lift.Extend#2#2"}));
+  EXPECT_EQ(symbols.outputs, std::vector<std::string>{"Lift.Extend#4"});
+  std::ostringstream out;
+  write_aiger(out, aig, AigerMode::Ascii);
+  EXPECT_NE(out.str().find("\nl1 Lift.Extend#3\n"), std::string::npos) << out.str();
+}
+
 TEST(AigerWriter, RefusesCircuitsWithoutInputs) {
   Aig aig;
   aig.add_latch("q");

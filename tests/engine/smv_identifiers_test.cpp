@@ -234,6 +234,33 @@ TEST(SmvIdentifiers, RandomChartsWithNestedActionsDeclareEveryIdentifierOnce) {
   EXPECT_GE(nested, 15u) << "too few charts had a nested action";
 }
 
+// A Boolean action of a function block instance and the variable it drives bear one name
+// ("Main.Lift.Extend": the action's activity and the variable are two latches). The exports
+// once gave both one identifier, declared twice (every xPPU scenario, 22 to 113 times).
+TEST(SmvIdentifiers, ABooleanActionAndItsVariableAreDeclaredApart) {
+  const auto e = export_chart(R"(
+FUNCTION_BLOCK Cylinder
+  VAR_INPUT Go : BOOL; END_VAR
+  VAR_OUTPUT Extend : BOOL; END_VAR
+  INITIAL_STEP Idle: END_STEP
+  STEP Out: Extend(N); END_STEP
+  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
+  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT Button : BOOL; END_VAR
+  VAR Lift : Cylinder; END_VAR
+  Lift(Go := Button);
+END_PROGRAM
+)",
+                              "cylinder.st", {"AG (Lift.Out -> Lift.Extend)"});
+  const auto m = read_smv(e.nusmv);
+  EXPECT_TRUE(m.vars.count("s_Main_Lift_Extend")) << e.nusmv;
+  EXPECT_TRUE(m.vars.count("s_Main_Lift_Extend_2")) << e.nusmv;
+  expect_well_declared(e.nusmv, "Boolean action of an instance, NuSMV");
+  expect_casmv_declared_once(e.casmv, "Boolean action of an instance, Cadence SMV");
+}
+
 // Hostile names (tests/support/hostile_names.hpp) as inputs, steps and variables: every name
 // reaches the export only inside a comment, so the SMV reader above sees exactly the model
 // (a name's "\nINIT FALSE" once became a live INIT section), and no line of the file starts

@@ -301,8 +301,11 @@ const SymbolicSystem::Relation& SymbolicSystem::relation() const {
               [&](auto a, auto b) { return current_var_[a] < current_var_[b]; });
     for (const std::size_t l : latch_order) {
       const Bdd conjunct = Bdd::variable(next_var_[l]).iff(node_bdd(aig.latches()[l].next));
-      const Bdd merged = cluster & conjunct;
-      if (merged.node_count() > cluster_nodes_ && !cluster.is_true()) {
+      // A conjunct already past the bound starts a cluster of its own without trying the
+      // product (xPPU scenario 2: 17.9 s for one product of 148,897 nodes that was dropped).
+      const bool alone = static_cast<int>(conjunct.node_count()) > cluster_nodes_;
+      const Bdd merged = alone ? conjunct : cluster & conjunct;
+      if ((alone || merged.node_count() > cluster_nodes_) && !cluster.is_true()) {
         parts.push_back(cluster);
         part_support.push_back(cluster_support);
         part_next_vars.push_back(cluster_next);

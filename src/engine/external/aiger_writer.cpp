@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <unordered_set>
 #include <vector>
 
 #include "engine/external/identifiers.hpp"
@@ -37,6 +38,24 @@ std::string aiger_symbol(const std::string& name) {
     r += hex;
   }
   return r;
+}
+
+AigerSymbols aiger_symbols(const Aig& aig) {
+  AigerSymbols s;
+  std::unordered_set<std::string> used;
+  auto unique = [&used](const std::string& name) {
+    const std::string symbol = aiger_symbol(name);
+    std::string candidate = symbol;
+    for (int k = 2; !used.insert(candidate).second; ++k)
+      candidate = symbol + "#" + std::to_string(k);
+    return candidate;
+  };
+  for (const auto& i : aig.inputs()) s.inputs.push_back(unique(i.name));
+  for (const auto& l : aig.latches()) s.latches.push_back(unique(l.name));
+  for (const auto& o : aig.outputs()) s.outputs.push_back(unique(o.name));
+  for (const auto& b : aig.bad()) s.bad.push_back(unique(b.name));
+  for (const auto& c : aig.constraints()) s.constraints.push_back(unique(c.name));
+  return s;
 }
 
 void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::string& comment,
@@ -90,19 +109,21 @@ void write_aiger(std::ostream& out, const Aig& aig, AigerMode mode, const std::s
       write_varint(out, r0 - r1);
     }
   }
-  auto symbol = [positional_names](const std::string& name, const char* tag, std::size_t k) {
-    return positional_names ? tag + std::to_string(k) : aiger_symbol(name);
+  const AigerSymbols symbols = positional_names ? AigerSymbols{} : aiger_symbols(aig);
+  auto symbol = [positional_names](const std::vector<std::string>& names, const char* tag,
+                                   std::size_t k) {
+    return positional_names ? tag + std::to_string(k) : names[k];
   };
   for (std::uint32_t i = 0; i < num_inputs; ++i)
-    out << 'i' << i << ' ' << symbol(aig.inputs()[i].name, "in", i) << '\n';
+    out << 'i' << i << ' ' << symbol(symbols.inputs, "in", i) << '\n';
   for (std::uint32_t l = 0; l < num_latches; ++l)
-    out << 'l' << l << ' ' << symbol(aig.latches()[l].name, "la", l) << '\n';
+    out << 'l' << l << ' ' << symbol(symbols.latches, "la", l) << '\n';
   for (std::size_t o = 0; o < aig.outputs().size(); ++o)
-    out << 'o' << o << ' ' << symbol(aig.outputs()[o].name, "out", o) << '\n';
+    out << 'o' << o << ' ' << symbol(symbols.outputs, "out", o) << '\n';
   for (std::size_t b = 0; b < aig.bad().size(); ++b)
-    out << 'b' << b << ' ' << symbol(aig.bad()[b].name, "bad", b) << '\n';
+    out << 'b' << b << ' ' << symbol(symbols.bad, "bad", b) << '\n';
   for (std::size_t c = 0; c < aig.constraints().size(); ++c)
-    out << 'c' << c << ' ' << symbol(aig.constraints()[c].name, "con", c) << '\n';
+    out << 'c' << c << ' ' << symbol(symbols.constraints, "con", c) << '\n';
   if (!comment.empty()) out << "c\n" << comment << (comment.back() == '\n' ? "" : "\n");
 }
 

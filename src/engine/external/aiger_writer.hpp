@@ -5,6 +5,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "semantics/aig.hpp"
 
@@ -17,6 +18,15 @@ enum class AigerMode { Binary, Ascii };
 /// line nor end the table; reversible, so distinct names stay distinct. ABC's counterexample
 /// names inputs this way (abc_runner.cpp).
 std::string aiger_symbol(const std::string& name);
+
+/// The symbol table's names, section by section: aiger_symbol() of each name, and where two
+/// entries of the table would read alike (a TwinCAT Boolean action and the variable it drives,
+/// an input and the variable that keeps it) the later one gets `#2`, `#3`: ABC refuses a file
+/// whose inputs and latches repeat a name, and a name must say which bit it is.
+struct AigerSymbols {
+  std::vector<std::string> inputs, latches, outputs, bad, constraints;
+};
+AigerSymbols aiger_symbols(const semantics::Aig& aig);
 
 /// Writes `aig` with a symbol table and `comment` (one or more lines) in the comment section.
 /// Precondition (asserted): the Aig has at least one input, since ABC's `int` and `dprove` crash

@@ -32,9 +32,11 @@ struct Naming {
   Naming(const Aig& aig, std::unordered_set<std::string> reserved)
       : node(aig.nodes().size()), ids(std::move(reserved)) {
     for (const auto& in : aig.inputs())
-      node[Aig::node_of(in.literal)] = ids.get(kInputPrefix, in.name);
+      node[Aig::node_of(in.literal)] = ids.fresh(kInputPrefix, in.name);
+    // fresh, not get: two bits may bear one chart name (a TwinCAT Boolean action's activity
+    // and the variable it drives are both "MAIN.Valve"), and each needs its own identifier.
     for (const auto& l : aig.latches())
-      node[Aig::node_of(l.current)] = ids.get(kLatchPrefix, l.name);
+      node[Aig::node_of(l.current)] = ids.fresh(kLatchPrefix, l.name);
     for (std::size_t n = 1; n < aig.nodes().size(); ++n)
       if (aig.nodes()[n].kind == Aig::NodeKind::And)
         node[n] = ids.get(kGatePrefix, std::to_string(n));
@@ -77,7 +79,7 @@ const std::unordered_set<std::string> kPromelaReserved = {
 // exactly a latch.
 std::vector<std::string> output_identifiers(const Aig& aig, Naming& names) {
   std::vector<std::string> ids;
-  for (const auto& o : aig.outputs()) ids.push_back(names.ids.get(kOutputPrefix, o.name));
+  for (const auto& o : aig.outputs()) ids.push_back(names.ids.fresh(kOutputPrefix, o.name));
   return ids;
 }
 
