@@ -34,8 +34,10 @@ struct Checked {
   logic::CheckReport report;  ///< sfcv's own verdicts (explicit engine)
 };
 
-std::unique_ptr<Checked> check_project(model::Project project, const std::vector<std::string>& ctl,
-                                       const std::vector<std::string>& assume = {}) {
+std::unique_ptr<Checked> check_project(
+    model::Project project, const std::vector<std::string>& ctl,
+    const std::vector<std::string>& assume = {},
+    semantics::VendorDialect dialect = semantics::VendorDialect::Iec) {
   auto c = std::make_unique<Checked>();
   c->project = std::move(project);
   logic::CheckInputs in;
@@ -44,6 +46,7 @@ std::unique_ptr<Checked> check_project(model::Project project, const std::vector
   auto parsed = logic::parse_check_inputs(in);
   EXPECT_TRUE(parsed.diagnostics.empty());
   semantics::Iec61131Options opts;
+  semantics::set_dialect(opts, dialect);
   opts.assumptions = logic::assumption_exprs(parsed.spec);
   model::Diagnostics diags;
   c->ts = semantics::make_iec61131_system(c->project, opts, diags);
@@ -57,12 +60,14 @@ std::unique_ptr<Checked> check_project(model::Project project, const std::vector
   return c;
 }
 
-std::unique_ptr<Checked> check_text(const std::string& text, const std::vector<std::string>& ctl,
-                                    const std::vector<std::string>& assume = {}) {
+std::unique_ptr<Checked> check_text(
+    const std::string& text, const std::vector<std::string>& ctl,
+    const std::vector<std::string>& assume = {},
+    semantics::VendorDialect dialect = semantics::VendorDialect::Iec) {
   auto loaded = io::load_iec_text(text, "chart.st");
   EXPECT_TRUE(loaded.ok());
   if (!loaded.ok()) return nullptr;
-  return check_project(std::move(*loaded.project), ctl, assume);
+  return check_project(std::move(*loaded.project), ctl, assume, dialect);
 }
 
 bool holds_in(const semantics::TransitionSystem& ts, const logic::Formula& f,
@@ -328,6 +333,37 @@ END_PROGRAM
   request.target = ExportTarget::Circuit;
   request.properties = c->task.properties;
   ASSERT_TRUE(build_export(*c->ts, request).loop_limit_latch);  // the loop is in the circuit
+  confirm(*c);
+}
+
+// A Boolean action of an instance and the variable it drives are two observables of one name,
+// "Main.Lift.Extend". Under TwinCAT's reading the variable keeps what action Hold wrote while
+// the Boolean action is inactive, so `Lift.Extend` (the variable) is TRUE in Idle. The export
+// once cached its outputs by name and gave the variable's atom the action's latch: ABC proved
+// `AG (Lift.Idle -> !Lift.Extend)`, which sfcv's every engine refutes.
+TEST(Confirmation, ABooleanActionAndItsVariableAgreeWithSpinAndAbc) {
+  REQUIRE_TOOLS();
+  const auto c = check_text(R"(
+FUNCTION_BLOCK Cylinder
+  VAR_INPUT Go : BOOL; Force : BOOL; END_VAR
+  VAR_OUTPUT Extend : BOOL; END_VAR
+  INITIAL_STEP Idle: Hold(N); END_STEP
+  STEP Out: Extend(N); END_STEP
+  ACTION Hold: IF Force THEN Extend := TRUE; END_IF; END_ACTION
+  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
+  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT Button : BOOL; F : BOOL; END_VAR
+  VAR Lift : Cylinder; END_VAR
+  Lift(Go := Button, Force := F);
+END_PROGRAM
+)",
+                            {"AG (Lift.Idle -> !Lift.Extend)", "AG (Lift.Out -> Lift.Extend)"}, {},
+                            semantics::VendorDialect::Twincat);
+  ASSERT_TRUE(c);
+  ASSERT_EQ(c->report.results.at(0).verdict, logic::Verdict::Violated);
+  ASSERT_EQ(c->report.results.at(1).verdict, logic::Verdict::Holds);
   confirm(*c);
 }
 

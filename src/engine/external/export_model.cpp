@@ -4,6 +4,7 @@
 #include <climits>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 
 #include "logic/formula.hpp"
 
@@ -125,7 +126,7 @@ class Builder {
     if (f.op == logic::Op::Relation) literal(f);  // refused, by name
     if (f.op == logic::Op::Atom || f.op == logic::Op::Compare) {
       atom(f);
-      return logic::make_atom("{" + std::to_string(output_index_.at(output_name(f))) + "}");
+      return logic::make_atom("{" + std::to_string(output_index_.at(key_of(f))) + "}");
     }
     auto copy = std::make_shared<logic::Formula>(f);
     for (auto& a : copy->args) a = with_output_atoms(*a);
@@ -139,12 +140,22 @@ class Builder {
     return obs.name + " " + std::string(logic::to_string(f.cmp)) + " " + std::to_string(f.value);
   }
 
+  // An output per observable and comparison, never per name: two observables may bear one
+  // name (a Boolean action of an instance and the variable it drives, "Main.Lift.Extend"),
+  // and a cache by name once gave the variable's atom the action's latch.
+  using OutputKey = std::tuple<std::int32_t, bool, int, std::int64_t>;
+  static OutputKey key_of(const logic::Formula& f) {
+    const bool compare = f.op != logic::Op::Atom;
+    return {f.observable, compare, compare ? static_cast<int>(f.cmp) : 0, compare ? f.value : 0};
+  }
+
   AigLit atom(const logic::Formula& f) {
     if (f.observable < 0) throw ExportError("unresolved atom '" + f.name + "'");
     const auto o = static_cast<std::size_t>(f.observable);
     const auto& bits = out_.circuit.observable_bits.at(o);
     const auto name = output_name(f);
-    if (const auto it = outputs_.find(name); it != outputs_.end()) return it->second;
+    const auto key = key_of(f);
+    if (const auto it = outputs_.find(key); it != outputs_.end()) return it->second;
     Aig& aig = out_.model.aig;
     AigLit l;
     if (f.op == logic::Op::Atom) {
@@ -154,23 +165,23 @@ class Builder {
     } else {
       l = compare_bits(aig, bits, out_.circuit.observable_lo.at(o), f.cmp, f.value);
     }
-    output_index_.emplace(name, aig.outputs().size());
+    output_index_.emplace(key, aig.outputs().size());
     aig.add_output(name, l);
-    outputs_.emplace(name, l);
+    outputs_.emplace(key, l);
     return l;
   }
 
  public:
-  /// The circuit output of a one-bit observable (after literal() of its atom).
-  std::size_t output_of(const semantics::Observable& obs) const {
-    return output_index_.at(obs.name);
+  /// The circuit output of one-bit observable `o` (after literal() of its atom).
+  std::size_t output_of(std::size_t o) const {
+    return output_index_.at(OutputKey{static_cast<std::int32_t>(o), false, 0, 0});
   }
 
  private:
   const semantics::TransitionSystem& ts_;
   ExportedModel& out_;
-  std::map<std::string, AigLit> outputs_;
-  std::map<std::string, std::size_t> output_index_;
+  std::map<OutputKey, AigLit> outputs_;
+  std::map<OutputKey, std::size_t> output_index_;
 };
 
 }  // namespace
@@ -378,7 +389,7 @@ ExportedModel build_export(const semantics::TransitionSystem& ts, const ExportRe
       if (obs.kind != semantics::ObservableKind::Step) continue;
       if (request.target == ExportTarget::Smv) {
         m.ctl.emplace_back("reachable_" + obs.name,
-                           guarded_ctl(out, "EF {" + std::to_string(builder.output_of(obs)) + "}"));
+                           guarded_ctl(out, "EF {" + std::to_string(builder.output_of(o)) + "}"));
         out.ctl_property.push_back(-1);
       } else {
         aig.add_bad("unreachable_" + obs.name, bad_or_flag(out.circuit.observable_bits[o][0]));
