@@ -249,9 +249,13 @@ std::vector<StepRef> step_refs(const semantics::TransitionSystem& ts,
 std::vector<std::uint32_t> action_observables(const semantics::TransitionSystem& ts,
                                               const semantics::PouInstance& instance,
                                               const std::string& action) {
+  // A Boolean action's activity is "<name>.A" when its variable bears the name (the IEC
+  // compiler's name_boolean_action_activities).
   auto find = [&](const std::string& name) -> std::optional<std::uint32_t> {
-    const auto hit = semantics::find_observable(ts, name);
-    if (hit && ts.observables()[*hit].kind == semantics::ObservableKind::Action) return hit;
+    for (const auto& candidate : {name, name + ".A"}) {
+      const auto hit = semantics::find_observable(ts, candidate);
+      if (hit && ts.observables()[*hit].kind == semantics::ObservableKind::Action) return hit;
+    }
     return std::nullopt;
   };
   std::vector<std::uint32_t> out;

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "model/errors.hpp"
 #include "model/names.hpp"
@@ -477,7 +478,29 @@ bool Compiler::run() {
   }
   p.observables = std::move(obs);
   p.observable_refs = std::move(refs);
+  name_boolean_action_activities();
   return ok;
+}
+
+// A Boolean action of an instance is named like the variable it drives ("Main.Lift.Extend"):
+// two observables, which differ where the action does not write its variable every cycle
+// (TwinCAT's reading, docs/semantics.md 1.4a). The variable keeps the name, as the instance's
+// alias "Lift.Extend" already resolved; the activity is "Main.Lift.Extend.A", IEC 61131-3's
+// name for an action's activity flag. Before, the full name meant the action and the alias the
+// variable, so that one property read two ways.
+void Compiler::name_boolean_action_activities() {
+  std::unordered_set<std::string> taken;
+  for (const auto& o : p.observables)
+    if (o.kind != ObservableKind::Action) taken.insert(model::to_upper(o.name));
+  for (auto& o : p.observables) {
+    if (o.kind != ObservableKind::Action || !taken.count(model::to_upper(o.name))) continue;
+    o.name += ".A";
+    // Its bare alias ("Extend") is the variable's name inside the instance: only "Extend.A"
+    // stays.
+    std::erase_if(o.aliases, [](const std::string& a) {
+      return a.size() < 2 || model::to_upper(a.substr(a.size() - 2)) != ".A";
+    });
+  }
 }
 
 }  // namespace detail

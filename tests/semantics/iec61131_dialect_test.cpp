@@ -7,6 +7,10 @@
 // - CODESYS, "Qualifiers for Actions in SFC": P "executes the action exactly two times".
 // - Beckhoff TwinCAT 3 help, "Processing order in SFC": the same rules.
 
+#include <set>
+
+#include "io/load.hpp"
+#include "model/names.hpp"
 #include "semantics/iec_builder.hpp"
 
 namespace sfcv::test {
@@ -210,6 +214,55 @@ TEST(Iec61131Dialect, ABooleanActionWritesItsVariableOnlyWhenItRunsOrStops) {
     ASSERT_TRUE(r.cycle());  // B runs again
     EXPECT_EQ(r["v"], in_s1);
   }
+}
+
+// A Boolean action of an instance is named like the variable it drives: "Main.Lift.Extend" is
+// the variable, whichever way it is written, and "Main.Lift.Extend.A" the action's activity
+// (IEC 61131-3's A output of an action control block). Under TwinCAT's reading the two differ:
+// Hold writes the variable in Idle, where the Boolean action does not run. Before, the full
+// name meant the action and the instance's alias the variable.
+TEST(Iec61131Dialect, ABooleanActionOfAnInstanceAndItsVariableHaveNamesOfTheirOwn) {
+  auto loaded = io::load_iec_text(R"(FUNCTION_BLOCK Cylinder
+  VAR_INPUT Go : BOOL; Force : BOOL; END_VAR
+  VAR_OUTPUT Extend : BOOL; END_VAR
+  INITIAL_STEP Idle: Hold(N); END_STEP
+  STEP Out: Extend(N); END_STEP
+  ACTION Hold: IF Force THEN Extend := TRUE; END_IF; END_ACTION
+  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
+  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
+END_FUNCTION_BLOCK
+PROGRAM Main
+  VAR_INPUT Button : BOOL; F : BOOL; END_VAR
+  VAR Lift : Cylinder; END_VAR
+  Lift(Go := Button, Force := F);
+END_PROGRAM
+)",
+                                  "cylinder.st");
+  ASSERT_TRUE(loaded.ok());
+  model::Diagnostics diags;
+  auto ts = semantics::make_iec61131_system(*loaded.project,
+                                            dialect(semantics::VendorDialect::Twincat), diags);
+  ASSERT_TRUE(ts) << (diags.empty() ? "" : diags.front().str());
+  std::set<std::string> names;
+  for (const auto& o : ts->observables())
+    EXPECT_TRUE(names.insert(model::to_upper(o.name)).second) << "two observables " << o.name;
+  const auto full = semantics::find_observable(*ts, "Main.Lift.Extend");
+  ASSERT_TRUE(full);
+  EXPECT_EQ(full, semantics::find_observable(*ts, "Lift.Extend"));
+  EXPECT_EQ(ts->observables()[*full].kind, semantics::ObservableKind::Variable);
+  const auto activity = semantics::find_observable(*ts, "Main.Lift.Extend.A");
+  ASSERT_TRUE(activity);
+  EXPECT_EQ(ts->observables()[*activity].kind, semantics::ObservableKind::Action);
+  EXPECT_EQ(activity, semantics::find_observable(*ts, "Extend.A"));
+  EXPECT_FALSE(semantics::find_observable(*ts, "Extend"));  // the variable's own bare name
+  Runner r(*ts);
+  ASSERT_TRUE(r.cycle({{"F", 1}}));  // Idle: Hold writes the variable, the action is inactive
+  EXPECT_EQ(r["Main.Lift.Extend"], 1);
+  EXPECT_EQ(r["Main.Lift.Extend.A"], 0);
+  ASSERT_TRUE(r.cycle({{"Button", 1}}));  // Out entered: the Boolean action runs
+  ASSERT_TRUE(r.cycle({{"Button", 1}}));
+  EXPECT_EQ(r["Main.Lift.Extend.A"], 1);
+  EXPECT_EQ(r["Main.Lift.Extend"], 1);
 }
 
 // Neither help says what the final call of an action whose body is a chart does: under the

@@ -370,6 +370,7 @@ struct Compiler {
   void step_timers();
 
   void step_observables();
+  void name_boolean_action_activities();
 
   /// CODESYS/TwinCAT implicit SFC flags: SFCInit and SFCReset attached to their compiled Pou,
   /// the other vendor flags refused (iec_compile_flags.cpp).
