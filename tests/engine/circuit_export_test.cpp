@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "engine/external/spin_runner.hpp"
@@ -139,6 +140,41 @@ TEST(PromelaExport, AvoidsTheNamesOfSpinsGeneratedVerifier) {
   if (!spin) GTEST_SKIP() << "spin not installed";
   const auto v = check_with_spin(*spin, m, 0);
   EXPECT_EQ(v.kind, SpinVerdict::Kind::Violated) << v.log;
+}
+
+// Spin refuses a d_step of more than 2048 statements (MAXDSTEP; 1024 in older Spins): "d_step
+// sequence too long", on the export of every xPPU scenario (about 16,000 gates). The cycle is
+// written as d_steps of at most 1000 statements, and Spin verifies it.
+TEST(PromelaExport, ALongCycleIsSplitIntoDStepsSpinAccepts) {
+  CircuitExport m;
+  const auto x = m.aig.add_input("x");
+  const auto y = m.aig.add_input("y");
+  const auto q = m.aig.add_latch("q");
+  const auto r = m.aig.add_latch("r");
+  m.aig.set_next(0, x);
+  m.aig.set_next(1, y);
+  auto chain = r;  // q & r, 2,500 gates deep: each gate reads the previous one
+  for (int k = 0; k < 2500; ++k) chain = m.aig.make_and(chain, k % 2 ? q : m.aig.make_or(q, r));
+  ASSERT_GT(m.aig.nodes().size(), 2500u);
+  m.aig.add_bad("deep", chain);
+  std::ostringstream out;
+  write_promela(out, m, 0);
+  std::istringstream lines(out.str());
+  std::size_t in_step = 0, largest = 0, d_steps = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("d_step {") != std::string::npos) {
+      ++d_steps;
+      in_step = 0;
+    } else if (line.find(" = ") != std::string::npos && line.find("bit ") == std::string::npos) {
+      largest = std::max(largest, ++in_step);
+    }
+  }
+  EXPECT_LE(largest, 1000u);
+  EXPECT_GE(d_steps, 6u);  // the gates before the assertion, then the cycle: 3 + 3
+  const auto spin = find_spin();
+  if (!spin) GTEST_SKIP() << "spin not installed";
+  const auto v = check_with_spin(*spin, m, 0);
+  EXPECT_EQ(v.kind, SpinVerdict::Kind::Violated) << v.log;  // x and y, then q and r
 }
 
 TEST(SpinRunner, ConfirmsAndRefutesInvariants) {

@@ -1,6 +1,9 @@
 #include "engine/external/circuit_export.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "engine/external/identifiers.hpp"
 #include "model/errors.hpp"
@@ -334,20 +337,28 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
   if (!m.ltl.empty()) write_ltl_atoms(out, m, names);
   out << "\nactive proctype cycle()\n{\n"
       << (m.ltl.empty() ? "" : "sfcv_cycle:\n") << "  do\n  :: atomic {\n";
-  bool has_gates = false;
-  for (std::size_t n = 1; n < aig.nodes().size() && !has_gates; ++n)
-    has_gates = aig.nodes()[n].kind == Aig::NodeKind::And;
-  for (std::size_t b = 0; b < aig.bad().size() && has_gates; ++b)  // Spin rejects empty d_steps
+  std::vector<std::string> gates;  // one statement per gate, in topological order
+  for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
+    const auto& node = aig.nodes()[n];
+    if (node.kind == Aig::NodeKind::And)
+      gates.push_back(names.node[n] + " = " + lit(node.left) + " && " + lit(node.right) + ";");
+  }
+  // Spin refuses a d_step of more than MAXDSTEP statements (1024 in older versions, 2048 in
+  // Debian's: "d_step sequence too long", on every xPPU scenario): consecutive d_steps of at
+  // most 1000 inside the cycle's atomic sequence compute the same.
+  auto write_d_steps = [&out](const std::vector<std::string>& statements) {
+    constexpr std::size_t kMaxDStep = 1000;
+    for (std::size_t i = 0; i < statements.size(); i += kMaxDStep) {
+      out << "       d_step {\n";
+      for (std::size_t k = i; k < std::min(statements.size(), i + kMaxDStep); ++k)
+        out << "         " << statements[k] << "\n";
+      out << "       }\n";
+    }
+  };
+  for (std::size_t b = 0; b < aig.bad().size() && !gates.empty(); ++b)
     if (!only_bad || *only_bad == b) {
       // The bad literal may read gates; evaluate them on the current state first.
-      out << "       d_step {\n";
-      for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
-        const auto& node = aig.nodes()[n];
-        if (node.kind == Aig::NodeKind::And)
-          out << "         " << names.node[n] << " = " << lit(node.left) << " && "
-              << lit(node.right) << ";\n";
-      }
-      out << "       }\n";
+      write_d_steps(gates);
       break;
     }
   for (std::size_t b = 0; b < aig.bad().size(); ++b)
@@ -358,35 +369,31 @@ void write_promela(std::ostream& out, const CircuitExport& m, std::optional<std:
     const auto& id = names.node[Aig::node_of(in.literal)];
     out << "       if :: " << id << " = 0 :: " << id << " = 1 fi;\n";
   }
-  out << "       d_step {\n";
-  for (std::size_t n = 1; n < aig.nodes().size(); ++n) {
-    const auto& node = aig.nodes()[n];
-    if (node.kind == Aig::NodeKind::And)
-      out << "         " << names.node[n] << " = " << lit(node.left) << " && " << lit(node.right)
-          << ";\n";
-  }
+  std::vector<std::string> cycle = gates;
   if (!aig.constraints().empty()) {
     // A jump may not leave a d_step: decide inside, cut the run outside.
-    out << "         assumed = ";
+    std::string assumed = "assumed = ";
     for (std::size_t c = 0; c < aig.constraints().size(); ++c)
-      out << (c ? " && " : "") << lit(aig.constraints()[c].literal);
-    out << ";\n       }\n"
-           "       if :: assumed -> skip :: else -> goto end_excluded fi;\n"
-           "       d_step {\n";
+      assumed += (c ? " && " : "") + lit(aig.constraints()[c].literal);
+    cycle.push_back(assumed + ";");
+    write_d_steps(cycle);
+    out << "       if :: assumed -> skip :: else -> goto end_excluded fi;\n";
+    cycle.clear();
   }
   // The identifiers, not the chart names, go into the format string: a name holding '"', '%'
   // or '\\' would change the statement (spin_runner.cpp reads the values by position).
-  out << "         printf(\"@cycle";
-  for (const auto& in : aig.inputs()) out << " " << names.node[Aig::node_of(in.literal)] << "=%d";
-  out << "\\n\"";
-  for (const auto& in : aig.inputs()) out << ", " << names.node[Aig::node_of(in.literal)];
-  out << ");\n";
+  std::string print = "printf(\"@cycle";
+  for (const auto& in : aig.inputs()) print += " " + names.node[Aig::node_of(in.literal)] + "=%d";
+  print += "\\n\"";
+  for (const auto& in : aig.inputs()) print += ", " + names.node[Aig::node_of(in.literal)];
+  cycle.push_back(print + ");");
   for (std::size_t l = 0; l < aig.latches().size(); ++l)
-    out << "         next_" << l << " = " << lit(aig.latches()[l].next) << ";\n";
+    cycle.push_back("next_" + std::to_string(l) + " = " + lit(aig.latches()[l].next) + ";");
   for (std::size_t l = 0; l < aig.latches().size(); ++l)
-    out << "         " << names.node[Aig::node_of(aig.latches()[l].current)] << " = next_" << l
-        << ";\n";
-  out << "       }\n     }\n  od;\n";
+    cycle.push_back(names.node[Aig::node_of(aig.latches()[l].current)] + " = next_" +
+                    std::to_string(l) + ";");
+  write_d_steps(cycle);
+  out << "     }\n  od;\n";
   if (!aig.constraints().empty())
     out << "end_excluded:  /* an assumption excludes these inputs: the run is cut here */\n"
            "  false\n";
