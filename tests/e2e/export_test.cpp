@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "support/boolean_action_chart.hpp"
 #include "support/hostile_names.hpp"
 #include "support/sfcv_test.hpp"
 
@@ -126,22 +127,7 @@ TEST(Export, IecTextAndPromelaAndAag) {
 // file `sfcv export` writes names them apart (its comment lines too), so ABC reads it and
 // finds the violation sfcv finds. Before, ABC refused every xPPU export: "Repeated CI names".
 TEST(Export, AigerOfABooleanActionAndItsVariableReadsInAbc) {
-  const auto st = write_temp(R"(
-FUNCTION_BLOCK Cylinder
-  VAR_INPUT Go : BOOL; END_VAR
-  VAR_OUTPUT Extend : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Out: Extend(N); END_STEP
-  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
-  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
-END_FUNCTION_BLOCK
-PROGRAM Main
-  VAR_INPUT Button : BOOL; END_VAR
-  VAR Lift : Cylinder; END_VAR
-  Lift(Go := Button);
-END_PROGRAM
-)",
-                             ".st");
+  const auto st = write_temp(kCylinderChart, ".st");
   const auto aag = run_sfcv("export '" + st + "' --to aag --checks none -q");
   ASSERT_EQ(aag.exit_code, 0) << aag.err;
   EXPECT_NE(aag.out.find("\nl1 Main.Lift.Extend\n"), std::string::npos) << aag.out;

@@ -20,6 +20,7 @@
 #include "logic/formula.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "semantics/simulate.hpp"
+#include "support/boolean_action_chart.hpp"
 #include "support/hostile_names.hpp"
 #include "support/loop_limit_chart.hpp"
 #include "support/sfcv_test.hpp"
@@ -343,22 +344,7 @@ END_PROGRAM
 // `AG (Lift.Idle -> !Lift.Extend)`, which sfcv's every engine refutes.
 TEST(Confirmation, ABooleanActionAndItsVariableAgreeWithSpinAndAbc) {
   REQUIRE_TOOLS();
-  const auto c = check_text(R"(
-FUNCTION_BLOCK Cylinder
-  VAR_INPUT Go : BOOL; Force : BOOL; END_VAR
-  VAR_OUTPUT Extend : BOOL; END_VAR
-  INITIAL_STEP Idle: Hold(N); END_STEP
-  STEP Out: Extend(N); END_STEP
-  ACTION Hold: IF Force THEN Extend := TRUE; END_IF; END_ACTION
-  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
-  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
-END_FUNCTION_BLOCK
-PROGRAM Main
-  VAR_INPUT Button : BOOL; F : BOOL; END_VAR
-  VAR Lift : Cylinder; END_VAR
-  Lift(Go := Button, Force := F);
-END_PROGRAM
-)",
+  const auto c = check_text(test::kCylinderWithHoldChart,
                             {"AG (Lift.Idle -> !Lift.Extend)", "AG (Lift.Out -> Lift.Extend)"}, {},
                             semantics::VendorDialect::Twincat);
   ASSERT_TRUE(c);

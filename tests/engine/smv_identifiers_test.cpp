@@ -24,6 +24,7 @@
 #include "io/load.hpp"
 #include "logic/check_inputs.hpp"
 #include "semantics/iec61131_system.hpp"
+#include "support/boolean_action_chart.hpp"
 #include "support/hostile_names.hpp"
 #include "support/sfcv_test.hpp"
 
@@ -238,22 +239,8 @@ TEST(SmvIdentifiers, RandomChartsWithNestedActionsDeclareEveryIdentifierOnce) {
 // ("Main.Lift.Extend": the action's activity and the variable are two latches). The exports
 // once gave both one identifier, declared twice (every xPPU scenario, 22 to 113 times).
 TEST(SmvIdentifiers, ABooleanActionAndItsVariableAreDeclaredApart) {
-  const auto e = export_chart(R"(
-FUNCTION_BLOCK Cylinder
-  VAR_INPUT Go : BOOL; END_VAR
-  VAR_OUTPUT Extend : BOOL; END_VAR
-  INITIAL_STEP Idle: END_STEP
-  STEP Out: Extend(N); END_STEP
-  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
-  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
-END_FUNCTION_BLOCK
-PROGRAM Main
-  VAR_INPUT Button : BOOL; END_VAR
-  VAR Lift : Cylinder; END_VAR
-  Lift(Go := Button);
-END_PROGRAM
-)",
-                              "cylinder.st", {"AG (Lift.Out -> Lift.Extend)"});
+  const auto e =
+      export_chart(test::kCylinderChart, "cylinder.st", {"AG (Lift.Out -> Lift.Extend)"});
   const auto m = read_smv(e.nusmv);
   EXPECT_TRUE(m.vars.count("s_Main_Lift_Extend")) << e.nusmv;
   EXPECT_TRUE(m.vars.count("s_Main_Lift_Extend_2")) << e.nusmv;

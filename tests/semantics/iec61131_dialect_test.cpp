@@ -12,6 +12,7 @@
 #include "io/load.hpp"
 #include "model/names.hpp"
 #include "semantics/iec_builder.hpp"
+#include "support/boolean_action_chart.hpp"
 
 namespace sfcv::test {
 namespace {
@@ -222,22 +223,7 @@ TEST(Iec61131Dialect, ABooleanActionWritesItsVariableOnlyWhenItRunsOrStops) {
 // Hold writes the variable in Idle, where the Boolean action does not run. Before, the full
 // name meant the action and the instance's alias the variable.
 TEST(Iec61131Dialect, ABooleanActionOfAnInstanceAndItsVariableHaveNamesOfTheirOwn) {
-  auto loaded = io::load_iec_text(R"(FUNCTION_BLOCK Cylinder
-  VAR_INPUT Go : BOOL; Force : BOOL; END_VAR
-  VAR_OUTPUT Extend : BOOL; END_VAR
-  INITIAL_STEP Idle: Hold(N); END_STEP
-  STEP Out: Extend(N); END_STEP
-  ACTION Hold: IF Force THEN Extend := TRUE; END_IF; END_ACTION
-  TRANSITION FROM Idle TO Out := Go; END_TRANSITION
-  TRANSITION FROM Out TO Idle := NOT Go; END_TRANSITION
-END_FUNCTION_BLOCK
-PROGRAM Main
-  VAR_INPUT Button : BOOL; F : BOOL; END_VAR
-  VAR Lift : Cylinder; END_VAR
-  Lift(Go := Button, Force := F);
-END_PROGRAM
-)",
-                                  "cylinder.st");
+  auto loaded = io::load_iec_text(kCylinderWithHoldChart, "cylinder.st");
   ASSERT_TRUE(loaded.ok());
   model::Diagnostics diags;
   auto ts = semantics::make_iec61131_system(*loaded.project,
