@@ -29,6 +29,13 @@ inline constexpr std::uint64_t kAutoProbeValuations = 65'536;
 /// states need 40 s) and the symbolic engines get the other half.
 inline constexpr double kAutoProbeTimeShare = 0.5;
 
+/// Under --timeout: the share of the time left when the race starts by which the BDD engine
+/// must have built its transition relation, else it stops and leaves the two cores to IC3 and
+/// BMC (BddEngineOptions::relation_share). Measured on xPPU scenario 2 at --timeout 60: the
+/// relation is never built, and IC3 alone proves `instability` and BMC alone reaches every
+/// step, which neither did while sharing the cores with it.
+inline constexpr double kRaceRelationShare = 0.5;
+
 /// The probe's state bound: the user's --max-states when it is tighter (then nothing follows
 /// the probe: the user asked for no more states than that), else kAutoProbeStates.
 struct AutoProbe {

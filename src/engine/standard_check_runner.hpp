@@ -423,9 +423,12 @@ class StandardCheckRunner {
     const auto transient = sp_.complete() ? transient_steps() : std::map<std::size_t, Set>{};
     const auto at_start = initially_crossed_steps(transient);
     std::size_t missing = 0;
+    r.target_answers.assign(steps_.size(), logic::TargetAnswer::Clear);
     for (std::size_t i = 0; i < steps_.size(); ++i)
       if (!seen[i] && !transient.count(i) && !at_start.count(i)) {
         ++missing;
+        r.target_answers[i] =
+            sp_.complete() ? logic::TargetAnswer::Defect : logic::TargetAnswer::Undecided;
         if (sp_.complete()) add(r, "step " + logic::describe_step(steps_[i]) + " is never active");
       }
     if (missing && !sp_.complete()) {
@@ -447,11 +450,15 @@ class StandardCheckRunner {
   void dead_transitions(PropertyResult& r) {
     const auto& trs = ts_.transitions();
     std::size_t dead = 0;
+    r.target_answers.assign(trs.size(), logic::TargetAnswer::Undecided);
     for (std::uint32_t t = 0; t < trs.size(); ++t) {
       poll();
+      r.target_answers[t] = logic::TargetAnswer::Clear;
       // Cleared while an initial situation stabilises counts as firing (docs/semantics.md 2.11).
       if (!sp_.can_fire(t) && !sp_.fires_initially(t)) {
         ++dead;
+        r.target_answers[t] =
+            sp_.complete() ? logic::TargetAnswer::Defect : logic::TargetAnswer::Undecided;
         if (sp_.complete())
           add(r, "transition " + trs[t].name +
                      (trs[t].where.known() ? " (" + trs[t].where.str() + ")" : "") +

@@ -25,6 +25,11 @@ enum class Verdict {
 };
 std::string_view to_string(Verdict v);
 
+/// What an engine decided of one target of a check judged target by target (reachable: a
+/// step; dead-transitions: a transition): no defect (reached, fired), a defect proved (never
+/// active, never fires), or nothing yet.
+enum class TargetAnswer : std::uint8_t { Undecided, Clear, Defect };
+
 struct PropertyResult {
   std::string name;           ///< property name, or the standard check's name
   std::string formula;        ///< CTL text; empty for checks that are not one formula
@@ -36,6 +41,11 @@ struct PropertyResult {
   std::vector<std::string> findings;  ///< standard checks: one located line per defect
   /// Every finding the check made; more than findings.size() when CheckTask::max_findings cut them.
   std::size_t findings_total = 0;
+  /// reachable and dead-transitions: each target's answer, one per step of logic::step_refs or
+  /// per transition of the system in its order, so that --engine auto can join what different
+  /// engines decided (a step the explicit probe reached, another that BMC reached deeper);
+  /// empty when the engine does not say.
+  std::vector<TargetAnswer> target_answers;
   std::optional<Trace> trace;  ///< counterexample (Violated) or witness (Holds)
   /// SAT engines: the re-checked proof of a Holds (an inductive invariant as readable clauses
   /// over latch names, or a k-induction depth); empty otherwise.

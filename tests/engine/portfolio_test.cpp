@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -16,6 +17,7 @@
 #include "engine/portfolio/portfolio_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
 #include "io/load.hpp"
+#include "logic/standard_checks.hpp"
 #include "semantics/grafcet_system.hpp"
 #include "semantics/iec61131_system.hpp"
 #include "support/ctl_task.hpp"
@@ -351,6 +353,120 @@ TEST(Portfolio, AnUndecidedPropertyGivesEveryEnginesAccount) {
   EXPECT_NE(r.message.find("; ic3: "), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("; bmc: "), std::string::npos) << r.message;
   release(*stuck);
+}
+
+TEST(Portfolio, TheBddEngineStopsWhenItsRelationIsNotBuiltInItsShare) {
+  // In the race the BDD engine has kRaceRelationShare of the time left to build its system's
+  // BDDs and relation (xPPU: never built, while it held one of the two cores to the end). A
+  // share no build fits in (a microsecond of 10 s) stops it at once, every answer unknown and
+  // saying why; without a share of its own the same run decides everything.
+  const auto s = load_iec(bench::parallel_branches_iec(3, false));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {"AG !(Init & A0)"}, {});
+  task.checks = bdd_only_checks();
+  task.limits.set_timeout(10.0);
+  BddEngineOptions options;
+  options.relation_share = 1e-7;
+  const auto t0 = Clock::now();
+  const auto stopped = make_bdd_model_checker(options)->check(task);
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 5.0);
+  EXPECT_FALSE(stopped.complete);
+  EXPECT_EQ(stopped.limit, "time");
+  ASSERT_EQ(stopped.results.size(), 1 + task.checks.size());
+  for (const auto& r : stopped.results) {
+    SCOPED_TRACE(r.name);
+    EXPECT_EQ(r.verdict, Verdict::Unknown);
+    EXPECT_EQ(r.message.rfind("the transition relation was not built in the bdd engine's share", 0),
+              0u)
+        << r.message;
+  }
+  options.relation_share = 0;
+  const auto whole = make_bdd_model_checker(options)->check(task);
+  EXPECT_TRUE(whole.complete);
+  for (const auto& r : whole.results) EXPECT_TRUE(definite(r.verdict)) << r.name << r.message;
+}
+
+/// A racer that decides part of `reachable`: its answer is unknown, with the steps it reached
+/// (`clear`, by index of logic::step_refs).
+class PartlyReachingEngine final : public ModelChecker {
+ public:
+  PartlyReachingEngine(std::string name, std::vector<bool> clear)
+      : name_(std::move(name)), clear_(std::move(clear)) {}
+  std::string_view name() const override { return name_; }
+  bool can_handle(const logic::CheckTask&, std::string*) const override { return true; }
+  logic::CheckReport check(const logic::CheckTask& task) const override {
+    auto report = logic::unknown_report(task, name_, LimitReached(Limit::Time, "the test's"));
+    for (auto& r : report.results) {
+      if (r.check != "reachable") continue;
+      for (bool c : clear_)
+        r.target_answers.push_back(c ? logic::TargetAnswer::Clear : logic::TargetAnswer::Undecided);
+    }
+    return report;
+  }
+
+ private:
+  std::string name_;
+  std::vector<bool> clear_;
+};
+
+/// The race's answer to `reachable` on `s` when the BDD, IC3 and BMC slots reach the steps
+/// `by_bdd`, `by_ic3` and `by_bmc` (by step index).
+logic::PropertyResult joined_reachable(const Setup& s, const std::vector<bool>& by_bdd,
+                                       const std::vector<bool>& by_ic3,
+                                       const std::vector<bool>& by_bmc) {
+  auto task = test::task_for(s.project, *s.ts, {}, {});
+  task.checks = {logic::StandardCheck::Reachable};
+  PortfolioOptions options;
+  options.probe_states = 0;
+  options.bdd_racer = std::make_shared<PartlyReachingEngine>("bdd", by_bdd);
+  options.ic3_racer = std::make_shared<PartlyReachingEngine>("ic3", by_ic3);
+  options.bmc_racer = std::make_shared<PartlyReachingEngine>("bmc", by_bmc);
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  EXPECT_EQ(report.results.size(), 1u);
+  return report.results.empty() ? logic::PropertyResult{} : report.results.front();
+}
+
+TEST(Portfolio, StepsReachedByDifferentEnginesJoinIntoReachable) {
+  // xPPU scenario 2: the explicit probe reached 99 of 102 steps, BMC 101, IC3 90; each alone
+  // left `reachable` unknown. Every step reached by some engine is reachable: once every step
+  // is, the check holds, and the answer says who reached how many.
+  const auto s = load_iec(bench::parallel_branches_iec(3, false));
+  ASSERT_TRUE(s.ts);
+  const auto n = logic::step_refs(*s.ts, &s.project).size();
+  ASSERT_GE(n, 4u);
+  std::vector<bool> by_bdd(n), by_ic3(n), by_bmc(n, false);
+  std::size_t bdd_steps = 0;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    by_bdd[k] = k % 2 == 0;
+    by_ic3[k] = k % 2 == 1;
+    bdd_steps += by_bdd[k] ? 1 : 0;
+  }
+  by_bmc[n - 1] = true;
+  const auto r = joined_reachable(s, by_bdd, by_ic3, by_bmc);
+  EXPECT_EQ(r.verdict, Verdict::Holds) << r.message;
+  EXPECT_EQ(r.message.rfind("all " + std::to_string(n) +
+                                " steps are reachable (the engines "
+                                "together: ",
+                            0),
+            0u)
+      << r.message;
+  EXPECT_NE(r.message.find("bdd " + std::to_string(bdd_steps)), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("bmc 1"), std::string::npos) << r.message;
+  std::vector<std::string> engines;
+  for (std::size_t from = 0; from <= r.decided_by.size();) {
+    const auto plus = std::min(r.decided_by.find('+', from), r.decided_by.size());
+    engines.push_back(r.decided_by.substr(from, plus - from));
+    from = plus + 1;
+  }
+  std::sort(engines.begin(), engines.end());
+  EXPECT_EQ(engines, (std::vector<std::string>{"bdd", "bmc", "ic3"})) << r.decided_by;
+  EXPECT_TRUE(r.findings.empty());
+
+  // One step no engine reached: unknown, never holds.
+  by_bmc[n - 1] = false;
+  const auto open = joined_reachable(s, by_bdd, by_ic3, by_bmc);
+  EXPECT_EQ(open.verdict, Verdict::Unknown) << open.message;
+  EXPECT_TRUE(open.decided_by.empty());
 }
 
 }  // namespace

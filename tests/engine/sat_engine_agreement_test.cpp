@@ -108,6 +108,8 @@ struct Tally {
   std::size_t grafcet_findings = 0;  ///< Grafcet conflicts and stored-actions findings agreed
   int grafcet_instability = 0;       ///< Grafcet instability violations, same kinds
   int grafcet_stuck = 0;             ///< Grafcet AG EF violations found by IC3, same verdict
+  /// Steps and transitions whose answer a SAT engine gave target by target, the explicit one's
+  std::size_t target_answers = 0;
 };
 
 // Findings up to the situation they start from (" from situation ..."), in order.
@@ -209,6 +211,20 @@ void compare(const Setup& s, std::uint64_t seed, Tally& tally) {
               << r.findings[0];
         }
         continue;
+      }
+      if ((e.check == "reachable" || e.check == "dead-transitions") &&
+          e.verdict != logic::Verdict::Unknown) {
+        // What --engine auto joins target by target (PropertyResult::target_answers): each
+        // engine's answer for a step or transition is the explicit engine's, at the same index.
+        EXPECT_EQ(symbolic.results[i].target_answers, e.target_answers);
+        if (!r.target_answers.empty()) {
+          ASSERT_EQ(r.target_answers.size(), e.target_answers.size());
+          for (std::size_t k = 0; k < r.target_answers.size(); ++k) {
+            if (r.target_answers[k] == logic::TargetAnswer::Undecided) continue;
+            EXPECT_EQ(r.target_answers[k], e.target_answers[k]) << "target " << k;
+            ++tally.target_answers;
+          }
+        }
       }
       if (r.verdict == logic::Verdict::Unknown && e.verdict == logic::Verdict::Unknown) {
         EXPECT_TRUE(grafcet);  // no initial situation: nothing to judge
@@ -322,6 +338,7 @@ TEST(SatEngineAgreement, RandomCharts) {
   EXPECT_GT(tally.certificates, test::sweep_floor(1000, last, 500));
   EXPECT_GT(tally.stuck, test::sweep_floor(300, last, 500));        // 482 on the full sweep
   EXPECT_GT(tally.stuck_holds, test::sweep_floor(300, last, 500));  // 425 on the full sweep
+  EXPECT_GT(static_cast<double>(tally.target_answers), test::sweep_floor(10000, last, 500));
 }
 
 /// `ts`'s circuit query with step_ok = allowed & !range_error and no target.
@@ -472,6 +489,7 @@ TEST(SatEngineAgreement, RandomGrafcets) {
   EXPECT_GT(tally.traces, test::sweep_floor(500, seeds_run, 100));
   EXPECT_GT(tally.certificates, test::sweep_floor(200, seeds_run, 100));
   EXPECT_GT(static_cast<double>(tally.grafcet_findings), test::sweep_floor(500, seeds_run, 100));
+  EXPECT_GT(static_cast<double>(tally.target_answers), test::sweep_floor(1000, seeds_run, 100));
   std::printf(
       "grafcet conflicts and stored-actions findings agreed: %zu; instability violations: %d; "
       "AG EF violations: %d\n",

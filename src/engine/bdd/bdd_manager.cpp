@@ -177,6 +177,19 @@ void set_deadline(std::optional<std::chrono::steady_clock::time_point> deadline,
   }
 }
 
+EarlierDeadlineScope::EarlierDeadlineScope(std::chrono::steady_clock::time_point earlier)
+    : had_deadline_(g_has_deadline), deadline_(g_deadline) {
+  if (!g_has_deadline || earlier < g_deadline) {
+    g_has_deadline = true;
+    g_deadline = earlier;
+  }
+}
+
+EarlierDeadlineScope::~EarlierDeadlineScope() {
+  g_has_deadline = had_deadline_;
+  g_deadline = deadline_;
+}
+
 bool deadline_passed() {
   return past_deadline();
 }

@@ -54,6 +54,20 @@ class DeadlineScope {
   DeadlineScope& operator=(const DeadlineScope&) = delete;
 };
 
+/// Brings the deadline forward to `earlier` for its lifetime when that is sooner (a phase's
+/// share of the run's time), keeping the cancel flag; then restores the run's deadline.
+class EarlierDeadlineScope {
+ public:
+  explicit EarlierDeadlineScope(std::chrono::steady_clock::time_point earlier);
+  ~EarlierDeadlineScope();
+  EarlierDeadlineScope(const EarlierDeadlineScope&) = delete;
+  EarlierDeadlineScope& operator=(const EarlierDeadlineScope&) = delete;
+
+ private:
+  bool had_deadline_;
+  std::chrono::steady_clock::time_point deadline_;
+};
+
 /// Whether the deadline set_deadline() gave has passed (or the cancel flag is raised).
 bool deadline_passed();
 /// Throws LimitReached(Time) once deadline_passed(): for the long loops between BDD operations

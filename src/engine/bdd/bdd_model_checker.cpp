@@ -720,6 +720,10 @@ class BddModelChecker final : public ModelChecker {
     }
     so.timeout_seconds = task.limits.seconds_left();
     so.deadline = task.limits.deadline;
+    if (options_.relation_share > 0 && task.limits.deadline)
+      so.relation_deadline =
+          Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                             task.limits.seconds_left() * options_.relation_share));
     so.max_circuit_bytes = task.limits.max_memory_bytes;
     // The run's one deadline, in every BDD operation (the fixpoints are loops of them).
     const bdd::DeadlineScope deadline(task.limits.deadline, task.limits.cancel.get());

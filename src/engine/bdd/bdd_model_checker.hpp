@@ -14,6 +14,10 @@ struct BddEngineOptions {
   /// Initial node table (0: sized from the circuit). Dynamic reordering first sifts when this
   /// many nodes are live: tests set it small to make sifting run on small charts.
   int initial_nodes = 0;
+  /// Under a deadline: the share of the time left when a check starts by which the system's
+  /// BDDs and transition relation must be built, else every answer is unknown (SymbolicOptions::
+  /// relation_deadline). 0: no share of its own (the deadline only).
+  double relation_share = 0;
 };
 
 /// The node table is sized from CheckTask::limits.max_memory_bytes (`--memory`): when it is

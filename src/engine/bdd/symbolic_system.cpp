@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <numeric>
@@ -88,6 +89,23 @@ void start_reordering_on_blowup(int peak, const Bdd& operand, const Bdd& result)
   if (peak < kBlowupNodes) return;
   const int ends = std::max(operand.node_count(), result.node_count());
   if (peak >= kBlowupRatio * static_cast<std::int64_t>(ends)) bdd::start_automatic_reordering();
+}
+
+/// Runs `build` (the system's BDDs, its transition relation) by `share_end` when one is set:
+/// past it, LimitReached(Time) saying that the BDD engine gave up its share of the race.
+template <class Build>
+decltype(auto) within_share(const std::optional<std::chrono::steady_clock::time_point>& share_end,
+                            Build&& build) {
+  if (!share_end) return build();
+  const bdd::EarlierDeadlineScope scope(*share_end);
+  try {
+    return build();
+  } catch (const LimitReached& e) {
+    if (e.which() != Limit::Time || std::chrono::steady_clock::now() < *share_end) throw;
+    throw LimitReached(Limit::Time,
+                       "the transition relation was not built in the bdd engine's share of the "
+                       "time; the bdd engine stopped, leaving the cores to ic3 and bmc");
+  }
 }
 
 }  // namespace
@@ -177,6 +195,7 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
   fires_.resize(circuit_.fired.size());
   fires_set_.assign(circuit_.fired.size(), false);
   cluster_nodes_ = options.cluster_nodes;
+  relation_deadline_ = options.relation_deadline;
   max_simulation_bytes_ = options.max_circuit_bytes / 4;
   // Automatic reordering waits for a full table; sift once for the relation, built now.
   if (options.reorder == ReorderMode::Once) {
@@ -267,6 +286,10 @@ SymbolicSystem::SymbolicSystem(const semantics::TransitionSystem& ts,
 
 const SymbolicSystem::Relation& SymbolicSystem::relation() const {
   if (relation_) return *relation_;
+  return within_share(relation_deadline_, [this]() -> const Relation& { return build_relation(); });
+}
+
+const SymbolicSystem::Relation& SymbolicSystem::build_relation() const {
   const Aig& aig = circuit_.aig;
   const std::size_t num_latches = aig.latches().size(), num_inputs = aig.inputs().size();
   auto built = std::make_unique<Relation>();
@@ -1144,7 +1167,9 @@ std::unique_ptr<SymbolicSystem> make_symbolic_system(const semantics::Transition
   }
   auto circuit = semantics::build_iec61131_circuit(ts, options.deadline, options.max_circuit_bytes);
   configure(circuit.aig);
-  return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
+  return within_share(options.relation_deadline, [&] {
+    return std::make_unique<SymbolicSystem>(ts, std::move(circuit), options);
+  });
 }
 
 }  // namespace sfcv::engine

@@ -29,6 +29,10 @@ struct SymbolicOptions {
   double timeout_seconds = 0;
   /// The run's deadline (model::Budget): building the circuit stops there (LimitReached).
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// The system's BDDs and its transition relation are built by then or not at all
+  /// (LimitReached(Time) saying so): the BDD engine's share of --engine auto's race, after
+  /// which it leaves the cores to the SAT engines. None: the run's deadline only.
+  std::optional<std::chrono::steady_clock::time_point> relation_deadline;
   /// The run's --memory: building the circuit stops past it (LimitReached(Memory)); 0: none.
   std::uint64_t max_circuit_bytes = 0;
   int max_nodes = 0;  ///< node table limit (0 = none): past it operations throw BddError
@@ -240,6 +244,7 @@ class SymbolicSystem {
     std::vector<Bdd> inputs_after;
   };
   const Relation& relation() const;
+  const Relation& build_relation() const;  ///< relation()'s work, within its share of the time
   /// A set count_edges and image may simulate: an IEC 61131-3 system of at most 12 inputs, a
   /// set of fewer than 2^64 states costing at most `max_work` node words (and within a
   /// quarter of --memory), and when `near_explicit_only`, at most a few states per BDD node
@@ -305,6 +310,7 @@ class SymbolicSystem {
   Bdd current_cube_, next_cube_, input_cube_;
   Bdd initial_, ok_, has_successor_, range_error_states_, loop_limit_states_;
   int cluster_nodes_;
+  std::optional<std::chrono::steady_clock::time_point> relation_deadline_;
   mutable std::unique_ptr<Relation> relation_;         // relation(): null until first used
   mutable std::unique_ptr<ReachedKeys> reached_keys_;  // step(): the reached states as keys
   /// Images of small sets simulated before the relation was built, and their work

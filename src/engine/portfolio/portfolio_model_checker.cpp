@@ -16,6 +16,7 @@
 #include "engine/auto_policy.hpp"
 #include "engine/explicit/explicit_model_checker.hpp"
 #include "engine/sat/sat_model_checker.hpp"
+#include "logic/standard_checks.hpp"
 
 namespace sfcv::engine {
 
@@ -75,12 +76,18 @@ std::atomic<std::size_t> g_abandoned_racers{0};
 class Scoreboard {
  public:
   Scoreboard(const CheckReport& probe, std::shared_ptr<std::atomic<bool>> cancel)
-      : questions_(probe.results), winners_(probe.results.size()), cancel_(std::move(cancel)) {
-    // What the probe decided on its partial graph (a violation it met) stands.
+      : questions_(probe.results),
+        winners_(probe.results.size()),
+        joined_(probe.results.size()),
+        cancel_(std::move(cancel)) {
+    // What the probe decided on its partial graph (a violation it met) stands; the steps and
+    // transitions it reached count towards the join.
     for (std::size_t i = 0; i < questions_.size(); ++i)
       if (decided(questions_[i])) {
         winners_[i] = questions_[i];
         winners_[i]->decided_by = "explicit";
+      } else {
+        join(i, questions_[i], "explicit");
       }
   }
 
@@ -100,6 +107,8 @@ class Scoreboard {
       if (r && decided(*r)) {
         winners_[i] = *r;
         winners_[i]->decided_by = engine;
+      } else if (r) {
+        join(i, *r, engine);
       }
     }
     if (all_decided()) cancel_->store(true);
@@ -109,9 +118,59 @@ class Scoreboard {
   const std::optional<PropertyResult>& winner(std::size_t i) const { return winners_[i]; }
 
  private:
+  /// A check judged target by target (PropertyResult::target_answers) that no engine decided
+  /// alone: the targets the engines cleared so far, and how many each cleared first.
+  struct Joined {
+    std::vector<logic::TargetAnswer> answers;
+    std::vector<std::pair<std::string, std::size_t>> cleared_by;
+  };
+
+  /// Adds what `engine` cleared of question `i`'s targets; once every target is clear by one
+  /// engine or another, the check holds. Every engine implements the same check (the
+  /// differential tests hold them to it), so a step one engine reached is reachable whichever
+  /// engine asked. Defects are not joined: an engine that proves one answers "violated" alone.
+  void join(std::size_t i, const PropertyResult& r, const std::string& engine) {
+    if (r.target_answers.empty()) return;
+    auto& j = joined_[i];
+    if (j.answers.empty())
+      j.answers.assign(r.target_answers.size(), logic::TargetAnswer::Undecided);
+    if (j.answers.size() != r.target_answers.size()) return;  // other targets: nothing to join
+    std::size_t cleared = 0;
+    for (std::size_t k = 0; k < j.answers.size(); ++k)
+      if (j.answers[k] == logic::TargetAnswer::Undecided &&
+          r.target_answers[k] == logic::TargetAnswer::Clear) {
+        j.answers[k] = logic::TargetAnswer::Clear;
+        ++cleared;
+      }
+    if (cleared > 0) j.cleared_by.emplace_back(engine, cleared);
+    if (std::any_of(j.answers.begin(), j.answers.end(),
+                    [](auto a) { return a != logic::TargetAnswer::Clear; }))
+      return;
+    PropertyResult holds = questions_[i];
+    holds.verdict = Verdict::Holds;
+    holds.findings.clear();
+    holds.findings_total = 0;
+    holds.trace.reset();
+    holds.certificate.clear();
+    holds.target_answers = j.answers;
+    const auto n = std::to_string(j.answers.size());
+    holds.message = (holds.check == logic::to_string(logic::StandardCheck::Reachable)
+                         ? "all " + n + " steps are reachable"
+                         : "all " + n + " transitions can fire") +
+                    " (the engines together:";
+    holds.decided_by.clear();
+    for (const auto& [name, count] : j.cleared_by) {
+      holds.message += (holds.decided_by.empty() ? " " : ", ") + name + " " + std::to_string(count);
+      holds.decided_by += (holds.decided_by.empty() ? "" : "+") + name;
+    }
+    holds.message += ")";
+    winners_[i] = std::move(holds);
+  }
+
   std::mutex mutex_;
   std::vector<PropertyResult> questions_;
   std::vector<std::optional<PropertyResult>> winners_;
+  std::vector<Joined> joined_;
   std::shared_ptr<std::atomic<bool>> cancel_;
 };
 
@@ -121,9 +180,11 @@ class PortfolioModelChecker final : public ModelChecker {
       : options_(std::move(options)),
         explicit_(make_explicit_model_checker(options_.explicit_engine)),
         probe_(make_explicit_model_checker(probe_options(options_.explicit_engine))),
-        bdd_(options_.bdd_racer ? options_.bdd_racer : make_bdd_model_checker(options_.bdd)),
-        ic3_(make_sat_model_checker({SatAlgorithm::Ic3, 200})),
-        bmc_(make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}
+        bdd_(options_.bdd_racer ? options_.bdd_racer : make_bdd_model_checker(race_bdd_options())),
+        ic3_(options_.ic3_racer ? options_.ic3_racer
+                                : make_sat_model_checker({SatAlgorithm::Ic3, 200})),
+        bmc_(options_.bmc_racer ? options_.bmc_racer
+                                : make_sat_model_checker({SatAlgorithm::Bmc, kBmcDepth})) {}
 
   std::string_view name() const override { return "auto"; }
 
@@ -209,6 +270,12 @@ class PortfolioModelChecker final : public ModelChecker {
  private:
   void note(const std::string& text) const {
     if (options_.note) options_.note(text);
+  }
+
+  BddEngineOptions race_bdd_options() const {
+    auto o = options_.bdd;
+    o.relation_share = kRaceRelationShare;
+    return o;
   }
 
   static ExplicitEngineOptions probe_options(ExplicitEngineOptions o) {

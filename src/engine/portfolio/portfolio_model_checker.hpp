@@ -39,6 +39,9 @@ struct PortfolioOptions {
   std::optional<double> abandon_after;
   /// The race's BDD slot (null: the BDD engine); tests put an engine there that does not stop.
   std::shared_ptr<const ModelChecker> bdd_racer;
+  /// The race's IC3 and BMC slots (null: those engines); tests put engines there whose partial
+  /// answers they choose.
+  std::shared_ptr<const ModelChecker> ic3_racer, bmc_racer;
 };
 
 /// Racer threads that a race left behind (PortfolioOptions::abandon_after) and that still run.

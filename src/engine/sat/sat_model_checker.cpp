@@ -1996,12 +1996,17 @@ class Run {
     }
     std::size_t unknown = 0;
     std::string why;
+    r.target_answers.assign(q.targets.size(), logic::TargetAnswer::Clear);
     for (std::size_t k = 0; k < q.targets.size(); ++k) {
       const auto& a = answers_[q.targets[k]];
-      if (a.kind == ReachResult::Kind::Unreachable) r.findings.push_back(q.labels[k]);
+      if (a.kind == ReachResult::Kind::Unreachable) {
+        r.findings.push_back(q.labels[k]);
+        r.target_answers[k] = logic::TargetAnswer::Defect;
+      }
       if (a.kind == ReachResult::Kind::Unknown) {
         ++unknown;
         why = a.why;
+        r.target_answers[k] = logic::TargetAnswer::Undecided;
       }
     }
     if (!r.findings.empty()) {
