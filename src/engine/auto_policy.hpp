@@ -31,9 +31,9 @@ inline constexpr double kAutoProbeTimeShare = 0.5;
 
 /// Under --timeout: the share of the time left when the race starts by which the BDD engine
 /// must have built its transition relation, else it stops and leaves the two cores to IC3 and
-/// BMC (BddEngineOptions::relation_share). Measured on xPPU scenario 2 at --timeout 60: the
-/// relation is never built, and IC3 alone proves `instability` and BMC alone reaches every
-/// step, which neither did while sharing the cores with it.
+/// BMC (BddEngineOptions::relation_share). On the xPPU scenarios the relation is never built
+/// while the engine held a core to the end (scenario 2 at --timeout 60: BMC reaches depth 50
+/// with the share, 46 without); on the PPU scenarios it is built in 0.01-0.04 s.
 inline constexpr double kRaceRelationShare = 0.5;
 
 /// The probe's state bound: the user's --max-states when it is tighter (then nothing follows

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <mutex>
 #include <thread>
 
 #include "chart_families.hpp"
@@ -384,6 +385,52 @@ TEST(Portfolio, TheBddEngineStopsWhenItsRelationIsNotBuiltInItsShare) {
   const auto whole = make_bdd_model_checker(options)->check(task);
   EXPECT_TRUE(whole.complete);
   for (const auto& r : whole.results) EXPECT_TRUE(definite(r.verdict)) << r.name << r.message;
+}
+
+/// A racer that decides nothing and records the checks it was asked.
+class AskedChecksRecorder final : public ModelChecker {
+ public:
+  std::string_view name() const override { return "recorder"; }
+  bool can_handle(const logic::CheckTask&, std::string*) const override { return true; }
+  logic::CheckReport check(const logic::CheckTask& task) const override {
+    const std::lock_guard lock(mutex_);
+    asked_ = task.checks;
+    return logic::unknown_report(task, "recorder", LimitReached(Limit::Time, "the test's"));
+  }
+  std::vector<logic::StandardCheck> asked() const {
+    const std::lock_guard lock(mutex_);
+    return asked_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::vector<logic::StandardCheck> asked_;
+};
+
+TEST(Portfolio, TheRacersAskOnlyWhatTheProbeLeftOpen) {
+  // `conflicts` is n/a under the standard priority, which the probe decides at once; `reachable`
+  // stays open when the probe stops at its bound (9 states, a bound of 3). The racers get only
+  // `reachable` (xPPU: IC3 worked through the hundreds of output-conflict targets the probe had
+  // already decided), and the report still answers both.
+  const auto s = load_iec(bench::parallel_branches_iec(3, false));
+  ASSERT_TRUE(s.ts);
+  auto task = test::task_for(s.project, *s.ts, {}, {});
+  task.checks = {logic::StandardCheck::Reachable, logic::StandardCheck::Conflicts};
+  auto bdd = std::make_shared<AskedChecksRecorder>(), ic3 = std::make_shared<AskedChecksRecorder>(),
+       bmc = std::make_shared<AskedChecksRecorder>();
+  PortfolioOptions options;
+  options.probe_states = 3;
+  options.bdd_racer = bdd;
+  options.ic3_racer = ic3;
+  options.bmc_racer = bmc;
+  const auto report = make_portfolio_model_checker(options)->check(task);
+  for (const auto& racer : {bdd, ic3, bmc})
+    EXPECT_EQ(racer->asked(), std::vector<logic::StandardCheck>{logic::StandardCheck::Reachable});
+  ASSERT_EQ(report.results.size(), 2u);
+  EXPECT_EQ(report.results[0].check, "reachable");
+  EXPECT_EQ(report.results[0].verdict, Verdict::Unknown) << report.results[0].message;
+  EXPECT_EQ(report.results[1].check, "conflicts");
+  EXPECT_EQ(report.results[1].verdict, Verdict::NotApplicable) << report.results[1].message;
 }
 
 /// A racer that decides part of `reachable`: its answer is unknown, with the steps it reached
